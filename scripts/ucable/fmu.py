@@ -1,0 +1,217 @@
+"""CableFMU: a thin, name-based wrapper around fmpy's FMU2Slave for the UnderwaterCable FMU.
+
+    from ucable.fmu import CableFMU
+    with CableFMU(parameters={"nElements": 20}) as cable:
+        cable.initialize(inputs={"tow.vx": 0.566})
+        cable.do_step(0.5)
+        print(cable.get("towTension"))
+
+The FMU is extracted once per process (per file and modification time) and every CableFMU
+instantiates from that directory: fmpy dlopens the same .so, which also exercises the FMU's
+"no global state" promise when several instances are alive.
+"""
+
+from __future__ import annotations
+
+import atexit
+import shutil
+from ctypes import byref
+from pathlib import Path
+
+import numpy as np
+from fmpy import extract, read_model_description
+from fmpy.fmi1 import FMICallException  # noqa: F401  (re-exported for tests)
+from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
+                       fmi2CallbackFunctions, fmi2CallbackLoggerTYPE)
+from fmpy import calloc, free
+
+from .paths import require_fmu
+
+NUM_STATIONS = 21
+STATUS_LABELS = ["OK", "WARNING", "DISCARD", "ERROR", "FATAL", "PENDING"]
+
+_extracted: dict = {}  # (path, mtime) -> (unzip dir, model description)
+
+
+def _cleanup() -> None:
+    for unzipdir, _ in _extracted.values():
+        shutil.rmtree(unzipdir, ignore_errors=True)
+
+
+atexit.register(_cleanup)
+
+
+def load(path: str | Path | None = None):
+    """(unzip directory, model description) of the FMU, extracted once per process."""
+    path = Path(path) if path is not None else require_fmu()
+    key = (str(path.resolve()), path.stat().st_mtime_ns)
+    if key not in _extracted:
+        md = read_model_description(str(path))
+        _extracted[key] = (extract(str(path)), md)
+    return _extracted[key]
+
+
+class CableFMU:
+    """One instance of the UnderwaterCable FMU, addressed by variable names.
+
+    Log messages of the FMU are collected in `self.messages` as (status label, category, text)
+    and, if `echo_log` is true, printed as well.
+    """
+
+    def __init__(self, path: str | Path | None = None, parameters: dict | None = None,
+                 instance_name: str = "cable", logging_on: bool = False, echo_log: bool = False):
+        self.unzipdir, self.model_description = load(path)
+        md = self.model_description
+        self.variables = {v.name: v for v in md.modelVariables}
+        self.messages: list = []
+        self._echo = echo_log
+        self.time = None
+        self._initialized = False
+
+        # Callbacks must outlive the instance (the FMU keeps the pointers): keep references.
+        self._logger = fmi2CallbackLoggerTYPE(self._log)
+        self._callbacks = fmi2CallbackFunctions()
+        self._callbacks.logger = self._logger
+        self._callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
+        self._callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
+        try:  # fmpy's C proxy formats the printf-style message before it reaches Python
+            from fmpy.logging import addLoggerProxy
+            addLoggerProxy(byref(self._callbacks))
+        except Exception:  # pragma: no cover - proxy missing on exotic platforms
+            pass
+
+        self.slave = FMU2Slave(guid=md.guid, unzipDirectory=self.unzipdir,
+                               modelIdentifier=md.coSimulation.modelIdentifier,
+                               instanceName=instance_name)
+        self.slave.instantiate(callbacks=self._callbacks, loggingOn=logging_on)
+        self._pending_parameters = dict(parameters or {})
+        self._freed = False
+
+    # ------------------------------------------------------------------ logging
+    def _log(self, _env, _instance, status, category, message):
+        text = message.decode("utf-8", "replace") if message else ""
+        label = STATUS_LABELS[status] if 0 <= status < len(STATUS_LABELS) else str(status)
+        cat = category.decode("utf-8", "replace") if category else ""
+        self.messages.append((label, cat, text))
+        if self._echo:
+            print(f"[{label}] {cat}: {text}")
+
+    def log_text(self) -> str:
+        return "\n".join(f"[{s}] {c}: {m}" for s, c, m in self.messages)
+
+    # ------------------------------------------------------------------ set/get by name
+    def _var(self, name: str):
+        try:
+            return self.variables[name]
+        except KeyError:
+            raise KeyError(f"the FMU has no variable named {name!r}") from None
+
+    def set(self, values: dict) -> None:
+        """Set parameters or inputs by name (Real, Integer, Boolean), one fmi2Set call per type."""
+        groups: dict = {"Real": ([], []), "Integer": ([], []), "Boolean": ([], []),
+                        "Enumeration": ([], [])}
+        for name, value in values.items():
+            v = self._var(name)
+            vrs, vals = groups[v.type]
+            vrs.append(v.valueReference)
+            vals.append(value)
+        if groups["Real"][0]:
+            self.slave.setReal(groups["Real"][0], [float(x) for x in groups["Real"][1]])
+        ints = groups["Integer"][0] + groups["Enumeration"][0]
+        if ints:
+            self.slave.setInteger(ints, [int(x) for x in groups["Integer"][1] + groups["Enumeration"][1]])
+        if groups["Boolean"][0]:
+            self.slave.setBoolean(groups["Boolean"][0], [bool(x) for x in groups["Boolean"][1]])
+
+    def get(self, name: str):
+        """One output/parameter by name."""
+        v = self._var(name)
+        if v.type == "Real":
+            return self.slave.getReal([v.valueReference])[0]
+        if v.type in ("Integer", "Enumeration"):
+            return self.slave.getInteger([v.valueReference])[0]
+        if v.type == "Boolean":
+            return self.slave.getBoolean([v.valueReference])[0]
+        raise TypeError(f"{name}: unsupported type {v.type}")
+
+    def get_reals(self, names) -> np.ndarray:
+        """Several Real variables with one fmi2GetReal call."""
+        vrs = [self._var(n).valueReference for n in names]
+        return np.array(self.slave.getReal(vrs))
+
+    def shape(self) -> dict:
+        """shape.x/y/z[k] and tension[k], k = 1..21 (index 0 = tow point), as numpy arrays."""
+        out = {}
+        for key in ("shape.x", "shape.y", "shape.z", "tension"):
+            out[key] = self.get_reals([f"{key}[{k}]" for k in range(1, NUM_STATIONS + 1)])
+        return out
+
+    # ------------------------------------------------------------------ life cycle
+    def initialize(self, start_time: float = 0.0, stop_time: float | None = None,
+                   parameters: dict | None = None, inputs: dict | None = None,
+                   tolerance: float | None = None) -> None:
+        """setupExperiment, parameters, initial inputs, enter/exit initialization mode."""
+        self.slave.setupExperiment(tolerance=tolerance, startTime=start_time, stopTime=stop_time)
+        params = dict(self._pending_parameters)
+        params.update(parameters or {})
+        if params:
+            self.set(params)
+        if inputs:
+            self.set(inputs)
+        self.slave.enterInitializationMode()
+        self.slave.exitInitializationMode()
+        self.time = start_time
+        self._initialized = True
+
+    def do_step(self, h: float, t: float | None = None) -> None:
+        """One communication step from t (default: the current time) to t + h."""
+        t0 = self.time if t is None else t
+        self.slave.doStep(currentCommunicationPoint=t0, communicationStepSize=h)
+        self.time = t0 + h
+
+    def set_input_derivatives(self, names, order: int, values) -> None:
+        vrs = [self._var(n).valueReference for n in names]
+        self.slave.setRealInputDerivatives(vrs, [order] * len(vrs), [float(v) for v in values])
+
+    @property
+    def can_interpolate_inputs(self) -> bool:
+        cs = self.model_description.coSimulation
+        return bool(getattr(cs, "canInterpolateInputs", False))
+
+    # ------------------------------------------------------------------ FMU state
+    def get_state(self):
+        return self.slave.getFMUstate()
+
+    def set_state(self, state, time: float | None = None) -> None:
+        self.slave.setFMUstate(state)
+        if time is not None:
+            self.time = time
+
+    def free_state(self, state) -> None:
+        self.slave.freeFMUstate(state)
+
+    def serialize_state(self, state) -> bytes:
+        return self.slave.serializeFMUstate(state)
+
+    def deserialize_state(self, data: bytes):
+        return self.slave.deSerializeFMUstate(data)
+
+    # ------------------------------------------------------------------ teardown
+    def terminate(self) -> None:
+        self.slave.terminate()
+
+    def free(self) -> None:
+        if not self._freed:
+            self._freed = True
+            self.slave.freeInstance()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        try:
+            if self._initialized and exc[0] is None:
+                self.terminate()
+        finally:
+            self.free()
+        return False

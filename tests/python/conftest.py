@@ -1,0 +1,36 @@
+"""pytest set-up: makes scripts/ importable (the `ucable` package) and provides the FMU path.
+
+Tests that need the FMU use the `fmu_file` fixture. When the FMU has not been built they FAIL in
+CI (CI=true) and are skipped elsewhere, both with the message "build first: scripts/build".
+"""
+
+import os
+import sys
+from pathlib import Path
+
+import pytest
+
+REPO_ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(REPO_ROOT / "scripts"))
+
+from ucable.paths import MissingFMUError, require_fmu  # noqa: E402
+
+
+def _in_ci() -> bool:
+    return os.environ.get("CI", "").lower() in ("1", "true", "yes")
+
+
+@pytest.fixture(scope="session")
+def fmu_file() -> Path:
+    try:
+        return require_fmu()
+    except MissingFMUError as e:
+        if _in_ci():
+            pytest.fail(str(e), pytrace=False)
+        pytest.skip(str(e))
+
+
+@pytest.fixture(scope="session")
+def venv_python() -> str:
+    """The interpreter running the tests (the .venv one when run through scripts/test)."""
+    return sys.executable
