@@ -34,3 +34,23 @@ def fmu_file() -> Path:
 def venv_python() -> str:
     """The interpreter running the tests (the .venv one when run through scripts/test)."""
     return sys.executable
+
+
+@pytest.fixture
+def make_cable(fmu_file):
+    """Factory for CableFMU instances that are all freed at the end of the test; on failure the
+    FMU's log is printed (pytest shows it with the failure)."""
+    from ucable.fmu import CableFMU
+
+    made = []
+
+    def factory(**kwargs):
+        cable = CableFMU(fmu_file, **kwargs)
+        made.append(cable)
+        return cable
+
+    yield factory
+    for cable in made:
+        if cable.messages:
+            print(f"--- FMU log of {cable.slave.instanceName}:\n{cable.log_text()}")
+        cable.free()

@@ -47,7 +47,7 @@ def test_critical_angle_balances_normal_drag_and_weight(kn):
 def test_extensible_with_drag_per_unstretched_length_matches_closed_form(kn):
     cable = CableProperties()  # Hopland EA
     V = kn * KNOT
-    sol = solve_steady_tow(V, cable, drag_per_stretched_length=False)
+    sol = solve_steady_tow(V, cable)  # drag per unstretched length: the default
     exact = free_end_closed_form(V, cable)
     assert sol.top_tension == pytest.approx(exact["top_tension"], rel=1e-9)
     assert sol.end_x == pytest.approx(exact["end_x"], rel=1e-9)
@@ -80,14 +80,15 @@ def test_global_force_balance_with_end_load(end_load):
     """T t(0) = F_end + integral of the distributed load (weight + drag) over the cable."""
     cable = CableProperties()
     V = 2.4 * KNOT
-    sol = solve_steady_tow(V, cable, end_load=end_load, n_stations=4001)
+    sol = solve_steady_tow(V, cable, end_load=end_load, n_stations=4001,
+                           drag_per_stretched_length=True)
     # end condition: T t = F at the end
     t_end = np.array([-math.cos(sol.angle[-1]), -math.sin(sol.angle[-1])])
     assert np.allclose(sol.tension[-1] * t_end, end_load, rtol=1e-10, atol=1e-8)
     w = cable.submerged_weight
     fx, fz = [], []
     for T, phi in zip(sol.tension, sol.angle):
-        e = 1.0 + T / cable.axial_stiffness  # drag per stretched length (the default)
+        e = 1.0 + T / cable.axial_stiffness  # drag per stretched length (the option used here)
         t = np.array([-math.cos(phi), -math.sin(phi)])
         n = np.array([-math.sin(phi), math.cos(phi)])
         f = e * (cable.normal_drag(V, phi) * n + cable.tangential_drag(V, phi) * t)

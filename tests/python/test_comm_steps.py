@@ -1,0 +1,50 @@
+"""The communication step must not change the answer (DESIGN.md section 3: the driven end must
+never jump). The accelerating Hopland tow is sampled by a master at 0.5 s, 0.1 s and 0.01 s over
+its first 80 s (the 60 s ramp and 20 s after it); towTension at the common points t = 0, 0.5, ...
+must agree within 0.5 % of the tension range of the run.
+
+Why 0.5 % of the range: with an end trajectory that is continuous in position and velocity, a
+0.5 s step changes the tow point path by at most ~a h^2/2 = 1.4 mm (a = 1.3 kn / 60 s) spread
+smoothly over the step, i.e. tow-point accelerations of a few 0.01 m/s^2 on a cable of ~800 kg,
+a few newtons of tension. A position jump of the same 1.4 mm on a 15 m element would instead
+give EA delta / l ~ 6 kN, more than the whole tension, and an excess tension of
+EA a dt^2 / (4 l) at every step (DESIGN.md section 3), i.e. many times the range.
+"""
+
+import numpy as np
+import pytest
+
+from ucable.manoeuvre import hopland_accelerate, run_tow
+
+T_END = 80.0
+STEPS = [0.5, 0.1, 0.01]
+REL_RANGE = 0.005
+
+
+def tension_on_half_seconds(make_cable, step):
+    """towTension at t = 0, 0.5, 1, ... of the Hopland tow sampled at communication step `step`."""
+    profile, _ = hopland_accelerate()
+    cable = make_cable(instance_name=f"h{step:g}", parameters={"nElements": 20})
+    run = run_tow(cable, profile, T_END, step, record_shape=False)
+    T = run["towTension"]
+    assert np.all(np.isfinite(T)), f"non-finite towTension at step {step} s"
+    keep = np.isclose(np.mod(run.time + 1e-9, 0.5), 0.0, atol=1e-6)
+    assert np.sum(keep) == int(T_END / 0.5) + 1
+    return run.time[keep], T[keep], T.max() - T.min()
+
+
+def test_tow_tension_does_not_depend_on_the_communication_step(make_cable):
+    t_ref, T_ref, span = tension_on_half_seconds(make_cable, STEPS[-1])
+    assert span > 0
+    tolerance = REL_RANGE * span
+    report, worst = [], 0.0
+    for h in STEPS[:-1]:
+        t, T, _ = tension_on_half_seconds(make_cable, h)
+        assert np.allclose(t, t_ref)
+        diff = np.abs(T - T_ref)
+        i = int(np.argmax(diff))
+        worst = max(worst, diff[i])
+        report.append(f"h = {h:g} s: max |dT| = {diff[i]:.2f} N at t = {t[i]:g} s")
+    assert worst <= tolerance, (
+        f"tension range {T_ref.min():.1f}..{T_ref.max():.1f} N, tolerance {tolerance:.2f} N; "
+        + "; ".join(report))
