@@ -1,0 +1,35 @@
+// band_solver.h - a banded matrix with its LU solve (SUNDIALS band matrix + band linear solver),
+// for the static Newton iterations and consistent initial accelerations. Never dense.
+#pragma once
+
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_matrix.h>
+#include <sundials/sundials_nvector.h>
+
+namespace uc {
+
+class BandSolver {
+public:
+    BandSolver(SUNContext context, int n, int bandwidth);
+    ~BandSolver();
+    BandSolver(const BandSolver&) = delete;
+    BandSolver& operator=(const BandSolver&) = delete;
+
+    int size() const { return n_; }
+    void clear();
+    void add(int row, int col, double value);  // |row - col| <= bandwidth
+    // Factorizes and solves A x = b in place (b becomes x). False if the matrix is singular.
+    bool factor_and_solve(double* b);
+    // Solves with the last factorization.
+    bool solve(double* b);
+
+private:
+    void release();
+    int n_;
+    SUNMatrix A_ = nullptr;
+    SUNLinearSolver solver_ = nullptr;
+    N_Vector x_ = nullptr, b_ = nullptr;
+};
+
+}  // namespace uc

@@ -1,0 +1,101 @@
+// cable_api.cpp - the C boundary: every call is wrapped so that no exception escapes.
+#include "cable_api.h"
+
+#include <cstdio>
+#include <exception>
+#include <new>
+#include <string>
+
+#include "params.h"
+#include "simulation.h"
+
+struct UCCable {
+    explicit UCCable(const UCParams& p) : simulation(p) {}
+    uc::CableSimulation simulation;
+};
+
+namespace {
+
+void write_message(char* msg, size_t size, const std::string& text) {
+    if (msg && size) std::snprintf(msg, size, "%s", text.c_str());
+}
+
+// Runs f (returning bool, filling std::string error); converts exceptions into messages.
+template <class F>
+int guarded(char* msg, size_t size, F&& f) {
+    std::string error;
+    try {
+        if (f(error)) return 0;
+    } catch (const std::bad_alloc&) {
+        error = "out of memory";
+    } catch (const std::exception& e) {
+        error = std::string("internal error: ") + e.what();
+    } catch (...) {
+        error = "internal error";
+    }
+    write_message(msg, size, error.empty() ? std::string("unknown error") : error);
+    return 1;
+}
+
+}  // namespace
+
+extern "C" UCCable* uc_create(const UCParams* p, char* msg, size_t msgSize) {
+    UCCable* cable = nullptr;
+    guarded(msg, msgSize, [&](std::string& error) {
+        if (p == nullptr) {
+            error = "parameters: NULL pointer";
+            return false;
+        }
+        error = uc::check_params(*p);
+        if (!error.empty()) return false;
+        cable = new UCCable(*p);
+        return true;
+    });
+    return cable;
+}
+
+extern "C" void uc_free(UCCable* c) { delete c; }
+
+extern "C" int uc_initialize(UCCable* c, double t0, const UCInputs* in, char* msg, size_t msgSize) {
+    return guarded(msg, msgSize, [&](std::string& error) {
+        if (!c || !in) {
+            error = "uc_initialize: NULL pointer";
+            return false;
+        }
+        return c->simulation.initialize(t0, *in, error);
+    });
+}
+
+extern "C" int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, char* msg, size_t msgSize) {
+    return guarded(msg, msgSize, [&](std::string& error) {
+        if (!c || !in) {
+            error = "uc_do_step: NULL pointer";
+            return false;
+        }
+        return c->simulation.step(t, h, *in, error);
+    });
+}
+
+extern "C" double uc_time(const UCCable* c) { return c ? c->simulation.time() : 0.0; }
+
+extern "C" void uc_get_outputs(const UCCable* c, UCOutputs* out) {
+    if (c && out) *out = c->simulation.outputs();
+}
+
+extern "C" size_t uc_state_size(const UCCable* c) { return c ? c->simulation.state_size() : 0; }
+
+extern "C" int uc_state_save(UCCable* c, void* buffer, size_t size) {
+    if (!c || !buffer || size < c->simulation.state_size()) return 1;
+    c->simulation.save_state(buffer);
+    return 0;
+}
+
+extern "C" int uc_state_restore(UCCable* c, const void* buffer, size_t size, char* msg, size_t msgSize) {
+    return guarded(msg, msgSize, [&](std::string& error) {
+        if (!c || !buffer) {
+            error = "uc_state_restore: NULL pointer";
+            return false;
+        }
+        return c->simulation.restore_state(buffer, size, error);
+    });
+}

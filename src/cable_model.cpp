@@ -1,0 +1,225 @@
+// cable_model.cpp - DOF map, prescribed motion and assembly of the cable equations.
+#include "cable_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace uc {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kLoadQuadraturePoints = 3;
+
+Vec3 unit(const double v[3]) {
+    Vec3 d(v[0], v[1], v[2]);
+    return d / d.norm();
+}
+
+}  // namespace
+
+TowTrajectory TowTrajectory::at_rest_in_time(const Vec3& p, const Vec3& v, const Vec3& a, double t) {
+    TowTrajectory traj;
+    traj.t0 = t;
+    traj.h = 0.0;
+    traj.p0 = traj.p1 = p;
+    traj.v0 = traj.v1 = v;
+    traj.a0 = a;
+    return traj;
+}
+
+void TowTrajectory::evaluate(double t, Vec3& p, Vec3& v, Vec3& a) const {
+    const double dt = t - t0;
+    if (h <= 0.0) {
+        p = p0 + v0 * dt + 0.5 * a0 * dt * dt;
+        v = v0 + a0 * dt;
+        a = a0;
+        return;
+    }
+    // Cubic Hermite in time: p(tau) = h00 p0 + h10 h v0 + h01 p1 + h11 h v1, tau = dt/h.
+    const double s = dt / h, s2 = s * s, s3 = s2 * s;
+    const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+    const double d00 = 6 * s2 - 6 * s, d10 = 3 * s2 - 4 * s + 1, d01 = -6 * s2 + 6 * s, d11 = 3 * s2 - 2 * s;
+    const double e00 = 12 * s - 6, e10 = 6 * s - 4, e01 = -12 * s + 6, e11 = 6 * s - 2;
+    p = h00 * p0 + (h10 * h) * v0 + h01 * p1 + (h11 * h) * v1;
+    v = (d00 / h) * p0 + d10 * v0 + (d01 / h) * p1 + d11 * v1;
+    a = (e00 / (h * h)) * p0 + (e10 / h) * v0 + (e01 / (h * h)) * p1 + (e11 / h) * v1;
+}
+
+CableModel::CableModel(const UCParams& params)
+    : params_(params), nElements_(params.nElements) {
+    tables_ = make_element_tables(params.length / nElements_, kLoadQuadraturePoints);
+    fluid_.rho = params.waterDensity;
+    fluid_.gravity = params.gravity;
+    fluid_.massPerLength = params.massPerLength;
+    fluid_.diameter = params.diameter;
+    fluid_.area = kPi * params.diameter * params.diameter / 4.0;
+    fluid_.Cdn = params.Cdn;
+    fluid_.Cdt = params.Cdt;
+    fluid_.Can = params.Can;
+    fluid_.Cat = params.Cat;
+    fluid_.addedMass = params.enableAddedMass != 0;
+    axial_.EA = params.EA;
+    axial_.damping = params.axialDamping;
+    EI_ = params.enableBending ? params.EI : 0.0;
+    topTangent_ = params.topEnd == UC_TOP_CLAMPED ? unit(params.topTangent) : Vec3(0, 0, -1);
+    anchor_ = Vec3(params.anchor[0], params.anchor[1], params.anchor[2]);
+
+    // DOF map, in global order so that the free Jacobian stays banded.
+    free_.assign(n_global(), -1);
+    coef_.assign(n_global(), 1.0);
+    int next = 0;
+    for (int i = 0; i <= nElements_; ++i) {
+        for (int k = 0; k < 6; ++k) {
+            const int g = 6 * i + k;
+            const bool position = k < 3;
+            if (i == 0 && position) continue;  // tow point: prescribed
+            if (i == nElements_ && position && params.bottomEnd == UC_BOTTOM_ANCHORED) continue;
+            if (i == 0 && params.topEnd == UC_TOP_CLAMPED) {
+                // r'_0 = a * topTangent: one free stretch shared by the three components.
+                if (k == 3) ++next;
+                free_[g] = next - 1;
+                coef_[g] = topTangent_[k - 3];
+                continue;
+            }
+            free_[g] = next++;
+        }
+    }
+    nFree_ = next;
+    bandwidth_ = 0;
+    for (int e = 0; e < nElements_; ++e) {
+        int lo = nFree_, hi = -1;
+        for (int a = 0; a < 12; ++a) {
+            const int j = free_[6 * e + a];
+            if (j < 0) continue;
+            lo = std::min(lo, j);
+            hi = std::max(hi, j);
+        }
+        if (hi >= lo) bandwidth_ = std::max(bandwidth_, hi - lo);
+    }
+}
+
+void CableModel::expand(const double* q, const double* v, const double* a, const Loads& loads, double t,
+                        double* X, double* Xd, double* Xdd) const {
+    const int n = n_global();
+    for (int g = 0; g < n; ++g) {
+        const int j = free_[g];
+        if (j < 0) continue;
+        X[g] = coef_[g] * q[j];
+        Xd[g] = coef_[g] * v[j];
+        Xdd[g] = coef_[g] * a[j];
+    }
+    Vec3 p, pv, pa;
+    loads.tow.evaluate(t, p, pv, pa);
+    for (int k = 0; k < 3; ++k) {
+        X[k] = p[k];
+        Xd[k] = pv[k];
+        Xdd[k] = pa[k];
+    }
+    if (params_.bottomEnd == UC_BOTTOM_ANCHORED) {
+        const int gN = 6 * nElements_;
+        for (int k = 0; k < 3; ++k) {
+            X[gN + k] = anchor_[k];
+            Xd[gN + k] = 0.0;
+            Xdd[gN + k] = 0.0;
+        }
+    }
+}
+
+void CableModel::restrict_to_free(const double* X, double* q) const {
+    const bool clamped = params_.topEnd == UC_TOP_CLAMPED;
+    const int n = n_global();
+    for (int g = 0; g < n; ++g) {
+        const int j = free_[g];
+        if (j < 0) continue;
+        if (clamped && g >= 3 && g < 6) {
+            // The three components share one unknown a: r'_0 = a * topTangent.
+            if (g == 3) q[j] = Eigen::Map<const Vec3>(X + 3).dot(topTangent_);
+            continue;
+        }
+        q[j] = X[g];
+    }
+}
+
+void CableModel::element_residual(int e, const double* X, const double* Xd, const double* Xdd,
+                                  const Loads& loads, double* R) const {
+    const int g0 = 6 * e;
+    for (int a = 0; a < 12; ++a) R[a] = 0.0;
+    add_mass_force(tables_, params_.massPerLength, Xdd + g0, R);
+    add_axial_force(tables_, axial_, X + g0, Xd + g0, R);
+    if (EI_ > 0.0) add_bending_force(tables_, EI_, X + g0, R);
+    add_hydro_force(tables_, fluid_, loads.current, X + g0, Xd + g0, Xdd + g0, R);
+}
+
+void CableModel::element_jacobian(int e, const double* X, const double* Xd, const double* Xdd,
+                                  const Loads& loads, Mat12& K, Mat12& C, Mat12& M) const {
+    const int g0 = 6 * e;
+    K.setZero();
+    C.setZero();
+    M.setZero();
+    add_mass_jacobian(tables_, params_.massPerLength, M);
+    add_axial_jacobian(tables_, axial_, X + g0, Xd + g0, K, C);
+    if (EI_ > 0.0) add_bending_jacobian(tables_, EI_, K);
+    add_hydro_jacobian(tables_, fluid_, loads.current, X + g0, Xd + g0, Xdd + g0, K, C, M);
+}
+
+Vec3 CableModel::end_node_residual(const double* /*X*/, const double* Xd, const double* Xdd,
+                                   const Loads& loads) const {
+    Vec3 R = -loads.endLoad;
+    if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return R;
+    const int gN = 6 * nElements_;
+    const Vec3 rd = Eigen::Map<const Vec3>(Xd + gN);
+    const Vec3 rdd = Eigen::Map<const Vec3>(Xdd + gN);
+    const Vec3 u = loads.current - rd;
+    const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
+    const double wet = (params_.bodyMass - fluid_.rho * params_.bodyVolume) * fluid_.gravity;
+    R += (params_.bodyMass + params_.bodyAddedMass) * rdd;
+    R -= 0.5 * fluid_.rho * params_.bodyCdA * speed * u;
+    R.z() += wet;
+    return R;
+}
+
+void CableModel::end_node_jacobian(const double* /*X*/, const double* Xd, const double* /*Xdd*/,
+                                   const Loads& loads, Mat3& K, Mat3& C, Mat3& M) const {
+    K.setZero();
+    C.setZero();
+    M.setZero();
+    if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return;
+    const Vec3 u = loads.current - Eigen::Map<const Vec3>(Xd + 6 * nElements_);
+    const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
+    C = 0.5 * fluid_.rho * params_.bodyCdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
+    M = (params_.bodyMass + params_.bodyAddedMass) * Mat3::Identity();
+}
+
+void CableModel::residual(const double* X, const double* Xd, const double* Xdd, const Loads& loads,
+                          double* Rfree, ElementForces* forces) const {
+    for (int j = 0; j < nFree_; ++j) Rfree[j] = 0.0;
+    if (forces) forces->element.resize(nElements_);
+    double Re[12];
+    for (int e = 0; e < nElements_; ++e) {
+        element_residual(e, X, Xd, Xdd, loads, Re);
+        const int g0 = 6 * e;
+        for (int a = 0; a < 12; ++a) {
+            const int j = free_[g0 + a];
+            if (j >= 0) Rfree[j] += coef_[g0 + a] * Re[a];
+        }
+        if (forces) forces->element[e] = Eigen::Map<const Vec12>(Re);
+    }
+    const Vec3 end = end_node_residual(X, Xd, Xdd, loads);
+    const int gN = 6 * nElements_;
+    for (int k = 0; k < 3; ++k) {
+        const int j = free_[gN + k];
+        if (j >= 0) Rfree[j] += end[k];
+    }
+    if (forces) forces->endNodeTerms = end;
+}
+
+void CableModel::straight_line(const Vec3& p, const Vec3& direction, double* X) const {
+    const Vec3 d = direction.normalized();
+    for (int i = 0; i <= nElements_; ++i) {
+        Eigen::Map<Vec3>(X + 6 * i) = p + d * (tables_.length * i);
+        Eigen::Map<Vec3>(X + 6 * i + 3) = d;
+    }
+    if (params_.topEnd == UC_TOP_CLAMPED) Eigen::Map<Vec3>(X + 3) = topTangent_;
+}
+
+}  // namespace uc

@@ -1,0 +1,141 @@
+// cable_model.h - the immutable cable model (element tables, DOF map, properties) and the
+// assembly of the residual and banded Jacobian over the free DOFs (DESIGN.md section 3).
+//
+// Global nodal coordinates X: node i holds [r_i, r'_i] at X[6i .. 6i+5], i = 0..N (node 0 = tow
+// point). Free DOFs q are what the integrator and the static solver see; every global DOF is
+// either free, X[g] = coef[g] * q[free[g]] (coef is 1 except for a clamped top tangent, where
+// r'_0 = a * topTangent with one free stretch a), or prescribed (tow point, anchor).
+// The equations of prescribed DOFs are not solved: their residuals are the reaction forces.
+#pragma once
+
+#include <vector>
+
+#include "cable_api.h"
+#include "hermite_element.h"
+#include "hydrodynamics.h"
+
+namespace uc {
+
+// Motion of the tow point over one communication step [t0, t0 + h]: a cubic in time from
+// (p0, v0) to (p1, v1), so the prescribed end never jumps in position or velocity.
+struct TowTrajectory {
+    double t0 = 0.0, h = 0.0;
+    Vec3 p0 = Vec3::Zero(), v0 = Vec3::Zero(), p1 = Vec3::Zero(), v1 = Vec3::Zero();
+    Vec3 a0 = Vec3::Zero();  // used only when h == 0 (a point in time: position, velocity, acceleration)
+
+    static TowTrajectory at_rest_in_time(const Vec3& p, const Vec3& v, const Vec3& a, double t);
+    void evaluate(double t, Vec3& p, Vec3& v, Vec3& a) const;
+};
+
+// Everything the residual needs besides the state: prescribed motion and environment.
+struct Loads {
+    TowTrajectory tow;
+    Vec3 current = Vec3::Zero();
+    Vec3 endLoad = Vec3::Zero();
+};
+
+// Residual contributions of one element and of the far-end node terms, kept for outputs.
+struct ElementForces {
+    std::vector<Vec12> element;  // per element, residual over its 12 DOFs
+    Vec3 endNodeTerms = Vec3::Zero();  // body + end load residual at the far-end position
+};
+
+class CableModel {
+public:
+    explicit CableModel(const UCParams& params);
+
+    const UCParams& params() const { return params_; }
+    int n_elements() const { return nElements_; }
+    int n_nodes() const { return nElements_ + 1; }
+    int n_global() const { return 6 * (nElements_ + 1); }
+    int n_free() const { return nFree_; }
+    int free_bandwidth() const { return bandwidth_; }  // max |i - j| of coupled free DOFs
+    double element_length() const { return tables_.length; }
+    const ElementTables& tables() const { return tables_; }
+    const FluidProps& fluid() const { return fluid_; }
+    double EI() const { return EI_; }
+    const AxialProps& axial() const { return axial_; }
+
+    int free_index(int g) const { return free_[g]; }
+    double coefficient(int g) const { return coef_[g]; }
+
+    // Global X, Xdot, Xddot from free q, v, a and the prescribed motion at time t.
+    void expand(const double* q, const double* v, const double* a, const Loads& loads, double t,
+                double* X, double* Xd, double* Xdd) const;
+    // Free q, v from a global configuration (prescribed entries are ignored).
+    void restrict_to_free(const double* X, double* q) const;
+
+    // Residual of one element (12 values): mass, axial, bending, hydrodynamics.
+    void element_residual(int e, const double* X, const double* Xd, const double* Xdd,
+                          const Loads& loads, double* R) const;
+    // Far-end node terms (towed body inertia, drag, weight; minus the end load) at node N.
+    Vec3 end_node_residual(const double* X, const double* Xd, const double* Xdd, const Loads& loads) const;
+
+    // Free residual R_free[j] = sum_g coef[g] R[g]; fills forces (may be null) for outputs.
+    void residual(const double* X, const double* Xd, const double* Xdd, const Loads& loads,
+                  double* Rfree, ElementForces* forces) const;
+
+    // Jacobian blocks of the free residual with respect to q, v and a, delivered through
+    // add(row, col, dq, dv, da) with free indices row, col.
+    template <class Sink>
+    void jacobian(const double* X, const double* Xd, const double* Xdd, const Loads& loads,
+                  Sink&& add) const;
+
+    // Element Jacobians (dR/dX, dR/dXdot, dR/dXddot) for tests and assembly.
+    void element_jacobian(int e, const double* X, const double* Xd, const double* Xdd,
+                          const Loads& loads, Mat12& K, Mat12& C, Mat12& M) const;
+    void end_node_jacobian(const double* X, const double* Xd, const double* Xdd, const Loads& loads,
+                           Mat3& K, Mat3& C, Mat3& M) const;
+
+    // Straight line from p along `direction` (unstretched), as global X.
+    void straight_line(const Vec3& p, const Vec3& direction, double* X) const;
+
+private:
+    UCParams params_;
+    int nElements_;
+    ElementTables tables_;
+    FluidProps fluid_;
+    AxialProps axial_;
+    double EI_;
+    Vec3 topTangent_;
+    Vec3 anchor_;
+    std::vector<int> free_;
+    std::vector<double> coef_;
+    int nFree_ = 0;
+    int bandwidth_ = 0;
+};
+
+template <class Sink>
+void CableModel::jacobian(const double* X, const double* Xd, const double* Xdd, const Loads& loads,
+                          Sink&& add) const {
+    Mat12 K, C, M;
+    for (int e = 0; e < nElements_; ++e) {
+        element_jacobian(e, X, Xd, Xdd, loads, K, C, M);
+        const int g0 = 6 * e;
+        for (int a = 0; a < 12; ++a) {
+            const int ja = free_[g0 + a];
+            if (ja < 0) continue;
+            const double ca = coef_[g0 + a];
+            for (int b = 0; b < 12; ++b) {
+                const int jb = free_[g0 + b];
+                if (jb < 0) continue;
+                const double cab = ca * coef_[g0 + b];
+                add(ja, jb, cab * K(a, b), cab * C(a, b), cab * M(a, b));
+            }
+        }
+    }
+    Mat3 Kn, Cn, Mn;
+    end_node_jacobian(X, Xd, Xdd, loads, Kn, Cn, Mn);
+    const int gN = 6 * nElements_;
+    for (int a = 0; a < 3; ++a) {
+        const int ja = free_[gN + a];
+        if (ja < 0) continue;
+        for (int b = 0; b < 3; ++b) {
+            const int jb = free_[gN + b];
+            if (jb < 0) continue;
+            if (Kn(a, b) != 0.0 || Cn(a, b) != 0.0 || Mn(a, b) != 0.0) add(ja, jb, Kn(a, b), Cn(a, b), Mn(a, b));
+        }
+    }
+}
+
+}  // namespace uc

@@ -1,0 +1,174 @@
+// hermite_element.cpp - cubic Hermite element: shape functions, quadrature, axial and bending terms.
+#include "hermite_element.h"
+
+#include <cmath>
+
+namespace uc {
+
+ShapeValues hermite_shape(double xi, double l) {
+    const double x2 = xi * xi, x3 = x2 * xi;
+    ShapeValues s;
+    // H1 = 1 - 3x^2 + 2x^3, H2 = x - 2x^2 + x^3 (times l), H3 = 3x^2 - 2x^3, H4 = x^3 - x^2 (times l).
+    s.N[0] = 1.0 - 3.0 * x2 + 2.0 * x3;
+    s.N[1] = l * (xi - 2.0 * x2 + x3);
+    s.N[2] = 3.0 * x2 - 2.0 * x3;
+    s.N[3] = l * (x3 - x2);
+    // d/ds = (1/l) d/dxi
+    s.dN[0] = (-6.0 * xi + 6.0 * x2) / l;
+    s.dN[1] = 1.0 - 4.0 * xi + 3.0 * x2;
+    s.dN[2] = (6.0 * xi - 6.0 * x2) / l;
+    s.dN[3] = 3.0 * x2 - 2.0 * xi;
+    s.d2N[0] = (-6.0 + 12.0 * xi) / (l * l);
+    s.d2N[1] = (-4.0 + 6.0 * xi) / l;
+    s.d2N[2] = (6.0 - 12.0 * xi) / (l * l);
+    s.d2N[3] = (6.0 * xi - 2.0) / l;
+    return s;
+}
+
+GaussRule gauss_rule(int n) {
+    // Points and weights on [-1, 1], mapped to [0, 1].
+    static constexpr double p1[] = {0.0};
+    static constexpr double w1[] = {2.0};
+    static constexpr double p2[] = {-0.57735026918962576451, 0.57735026918962576451};
+    static constexpr double w2[] = {1.0, 1.0};
+    static constexpr double p3[] = {-0.77459666924148337704, 0.0, 0.77459666924148337704};
+    static constexpr double w3[] = {0.55555555555555555556, 0.88888888888888888889, 0.55555555555555555556};
+    static constexpr double p4[] = {-0.86113631159405257522, -0.33998104358485626480,
+                                    0.33998104358485626480, 0.86113631159405257522};
+    static constexpr double w4[] = {0.34785484513745385737, 0.65214515486254614263,
+                                    0.65214515486254614263, 0.34785484513745385737};
+    static constexpr double p5[] = {-0.90617984593866399280, -0.53846931010568309104, 0.0,
+                                    0.53846931010568309104, 0.90617984593866399280};
+    static constexpr double w5[] = {0.23692688505618908751, 0.47862867049936646804,
+                                    0.56888888888888888889, 0.47862867049936646804,
+                                    0.23692688505618908751};
+    const double* const points[] = {p1, p2, p3, p4, p5};
+    const double* const weights[] = {w1, w2, w3, w4, w5};
+    if (n < 1) n = 1;
+    if (n > 5) n = 5;
+    GaussRule rule{};
+    rule.n = n;
+    for (int i = 0; i < n; ++i) {
+        rule.xi[i] = 0.5 * (points[n - 1][i] + 1.0);
+        rule.w[i] = 0.5 * weights[n - 1][i];
+    }
+    return rule;
+}
+
+ElementTables make_element_tables(double length, int loadPoints) {
+    ElementTables e;
+    e.length = length;
+    const GaussRule axial = gauss_rule(3);
+    for (int g = 0; g < 3; ++g) {
+        e.axial[g].shape = hermite_shape(axial.xi[g], length);
+        e.axial[g].weight = axial.w[g] * length;
+    }
+    const GaussRule load = gauss_rule(loadPoints);
+    e.nLoad = load.n;
+    for (int g = 0; g < load.n; ++g) {
+        e.load[g].shape = hermite_shape(load.xi[g], length);
+        e.load[g].weight = load.w[g] * length;
+    }
+    // N_a N_b is degree 6 and N''_a N''_b degree 2: 4 points integrate both exactly.
+    const GaussRule exact = gauss_rule(4);
+    e.mass.setZero();
+    e.bending.setZero();
+    for (int g = 0; g < exact.n; ++g) {
+        const ShapeValues s = hermite_shape(exact.xi[g], length);
+        const double w = exact.w[g] * length;
+        for (int a = 0; a < 4; ++a) {
+            for (int b = 0; b < 4; ++b) {
+                e.mass(a, b) += w * s.N[a] * s.N[b];
+                e.bending(a, b) += w * s.d2N[a] * s.d2N[b];
+            }
+        }
+    }
+    return e;
+}
+
+void add_axial_force(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
+                     double* R) {
+    for (int g = 0; g < e.nAxial; ++g) {
+        const QuadPoint& q = e.axial[g];
+        const Vec3 rp = interpolate(q.shape.dN, X);
+        const Vec3 rpd = interpolate(q.shape.dN, Xd);
+        const double stretch = rp.norm();
+        const Vec3 t = rp / stretch;
+        const double tension = p.EA * (stretch - 1.0) + p.damping * t.dot(rpd);
+        const Vec3 f = (q.weight * tension) * t;
+        for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += q.shape.dN[a] * f;
+    }
+}
+
+void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
+                        Mat12& K, Mat12& C) {
+    for (int g = 0; g < e.nAxial; ++g) {
+        const QuadPoint& q = e.axial[g];
+        const Vec3 rp = interpolate(q.shape.dN, X);
+        const Vec3 rpd = interpolate(q.shape.dN, Xd);
+        const double stretch = rp.norm();
+        const Vec3 t = rp / stretch;
+        const double strainRate = t.dot(rpd);
+        const double tension = p.EA * (stretch - 1.0) + p.damping * strainRate;
+        const Mat3 tt = t * t.transpose();
+        const Mat3 normal = Mat3::Identity() - tt;
+        // d(T t)/dr' = EA t t^T + (T/|r'|)(I - t t^T) + (c/|r'|) t ((I - t t^T) r'dot)^T
+        const Mat3 dForce_drp = p.EA * tt + (tension / stretch) * normal +
+                                (p.damping / stretch) * t * (normal * rpd).transpose();
+        const Mat3 dForce_drpd = p.damping * tt;
+        for (int a = 0; a < 4; ++a) {
+            for (int b = 0; b < 4; ++b) {
+                const double w = q.weight * q.shape.dN[a] * q.shape.dN[b];
+                K.block<3, 3>(3 * a, 3 * b) += w * dForce_drp;
+                if (p.damping != 0.0) C.block<3, 3>(3 * a, 3 * b) += w * dForce_drpd;
+            }
+        }
+    }
+}
+
+double axial_energy(const ElementTables& e, double EA, const double* X) {
+    double energy = 0.0;
+    for (int g = 0; g < e.nAxial; ++g) {
+        const double strain = interpolate(e.axial[g].shape.dN, X).norm() - 1.0;
+        energy += 0.5 * EA * strain * strain * e.axial[g].weight;
+    }
+    return energy;
+}
+
+void add_bending_force(const ElementTables& e, double EI, const double* X, double* R) {
+    for (int a = 0; a < 4; ++a) {
+        Vec3 f = Vec3::Zero();
+        for (int b = 0; b < 4; ++b) f += e.bending(a, b) * Eigen::Map<const Vec3>(X + 3 * b);
+        Eigen::Map<Vec3>(R + 3 * a) += EI * f;
+    }
+}
+
+void add_bending_jacobian(const ElementTables& e, double EI, Mat12& K) {
+    for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) K.block<3, 3>(3 * a, 3 * b).diagonal().array() += EI * e.bending(a, b);
+}
+
+double bending_energy(const ElementTables& e, double EI, const double* X) {
+    double energy = 0.0;
+    for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b)
+            energy += 0.5 * EI * e.bending(a, b) *
+                      Eigen::Map<const Vec3>(X + 3 * a).dot(Eigen::Map<const Vec3>(X + 3 * b));
+    return energy;
+}
+
+void add_mass_force(const ElementTables& e, double massPerLength, const double* Xdd, double* R) {
+    for (int a = 0; a < 4; ++a) {
+        Vec3 f = Vec3::Zero();
+        for (int b = 0; b < 4; ++b) f += e.mass(a, b) * Eigen::Map<const Vec3>(Xdd + 3 * b);
+        Eigen::Map<Vec3>(R + 3 * a) += massPerLength * f;
+    }
+}
+
+void add_mass_jacobian(const ElementTables& e, double massPerLength, Mat12& M) {
+    for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b)
+            M.block<3, 3>(3 * a, 3 * b).diagonal().array() += massPerLength * e.mass(a, b);
+}
+
+}  // namespace uc

@@ -1,0 +1,90 @@
+// hermite_element.h - cubic Hermite cable element: shape functions, quadrature, and the
+// internal forces (axial, bending) with their exact Jacobians (DESIGN.md section 3).
+//
+// Element DOF order (12): [r_i, r'_i, r_j, r'_j], each a 3-vector; block a = 0..3.
+// r(xi) = H1 r_i + l H2 r'_i + H3 r_j + l H4 r'_j,  xi = (s - s_i)/l in [0, 1].
+// Every force here is a *residual* contribution: R = M r'' + f_internal - f_external.
+#pragma once
+
+#include <Eigen/Dense>
+
+namespace uc {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using Mat4 = Eigen::Matrix4d;
+using Vec12 = Eigen::Matrix<double, 12, 1>;
+using Mat12 = Eigen::Matrix<double, 12, 12>;
+
+// Scalar shape functions N_a and their arc-length derivatives dN_a/ds, d2N_a/ds2 at one point.
+struct ShapeValues {
+    double N[4];
+    double dN[4];
+    double d2N[4];
+};
+
+ShapeValues hermite_shape(double xi, double length);
+
+// Gauss-Legendre rule mapped to [0, 1]; weights sum to 1. n = 1..5.
+struct GaussRule {
+    int n;
+    double xi[5];
+    double w[5];
+};
+
+GaussRule gauss_rule(int n);
+
+// A quadrature point of an element: shape values and weight * element length.
+struct QuadPoint {
+    ShapeValues shape;
+    double weight;  // w * l: integrates over unstretched arc length
+};
+
+// Precomputed, immutable element tables (all elements have the same length).
+struct ElementTables {
+    double length = 0.0;
+    // Axial strain is integrated with 3 Gauss points: r' is quadratic, so 3 points let the
+    // axial displacement cancel the stretching produced by bending (no membrane locking) while
+    // still constraining every axial mode (no zero-energy modes).
+    int nAxial = 3;
+    QuadPoint axial[3];
+    int nLoad = 0;
+    QuadPoint load[5];
+    Mat4 mass;     // int N_a N_b ds (exact)
+    Mat4 bending;  // int N''_a N''_b ds (exact)
+};
+
+ElementTables make_element_tables(double length, int loadPoints);
+
+// Interpolates a 3-vector field from the element's 12 nodal values.
+inline Vec3 interpolate(const double (&N)[4], const double* X) {
+    Vec3 r = Vec3::Zero();
+    for (int a = 0; a < 4; ++a) r += N[a] * Eigen::Map<const Vec3>(X + 3 * a);
+    return r;
+}
+
+// Axial tension T = EA (|r'| - 1) + c d|r'|/dt (two-sided: compression allowed).
+struct AxialProps {
+    double EA;
+    double damping;
+};
+
+// Adds int T t dN_a ds (t = r'/|r'|) to R (12 values).
+void add_axial_force(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
+                     double* R);
+// Adds dR/dX to K and dR/dXdot to C.
+void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
+                        Mat12& K, Mat12& C);
+// Axial strain energy 0.5 EA int (|r'| - 1)^2 ds (for tests).
+double axial_energy(const ElementTables& e, double EA, const double* X);
+
+// Bending: R_a += EI sum_b B_ab X_b with B = int N''_a N''_b ds, energy 0.5 EI int |r''|^2 ds.
+void add_bending_force(const ElementTables& e, double EI, const double* X, double* R);
+void add_bending_jacobian(const ElementTables& e, double EI, Mat12& K);
+double bending_energy(const ElementTables& e, double EI, const double* X);
+
+// Structural (consistent) mass: R_a += m sum_b M_ab Xdd_b.
+void add_mass_force(const ElementTables& e, double massPerLength, const double* Xdd, double* R);
+void add_mass_jacobian(const ElementTables& e, double massPerLength, Mat12& M);
+
+}  // namespace uc

@@ -1,0 +1,105 @@
+// hydrodynamics.cpp - weight/buoyancy, Morison drag and added mass at quadrature points.
+#include "hydrodynamics.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace uc {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// d(phi)/dz of the submerged fraction.
+double submerged_fraction_slope(double z, double diameter) {
+    const double x = 0.5 - z / diameter;
+    return (x > 0.0 && x < 1.0) ? -1.0 / diameter : 0.0;
+}
+
+}  // namespace
+
+double submerged_fraction(double z, double diameter) {
+    return std::clamp(0.5 - z / diameter, 0.0, 1.0);
+}
+
+Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd,
+                const Vec3& current, PointLoadJacobian* J) {
+    const double phi = submerged_fraction(r.z(), p.diameter);
+    const double stretch = rp.norm();
+    const Vec3 t = rp / stretch;
+    const Vec3 u = current - rd;
+    const double a = t.dot(u);
+    const Vec3 un = u - a * t;
+    const double sn = std::sqrt(un.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
+    const double sa = std::sqrt(a * a + kDragVelocityFloor * kDragVelocityFloor);
+    const double cn = 0.5 * p.rho * p.Cdn * p.diameter;
+    const double ct = 0.5 * p.rho * p.Cdt * kPi * p.diameter;
+    const Vec3 drag = cn * sn * un + ct * sa * a * t;
+    const double rhoA = p.rho * p.area;
+    const Vec3 weight(0.0, 0.0, -(p.massPerLength - phi * rhoA) * p.gravity);
+
+    Vec3 inertia = Vec3::Zero();
+    const double ta = t.dot(rdd);
+    if (p.addedMass) inertia = rhoA * (p.Can * (rdd - ta * t) + p.Cat * ta * t);
+
+    const Vec3 F = phi * inertia - weight - phi * drag;
+    if (J == nullptr) return F;
+
+    const Mat3 I = Mat3::Identity();
+    const Mat3 tt = t * t.transpose();
+    const Mat3 P = I - tt;
+    // Drag: d/du and d/dt (t a unit vector), then dt/dr' = P/|r'|.
+    const Mat3 dFn_dun = cn * (sn * I + un * un.transpose() / sn);
+    const double dsaa = sa + a * a / sa;  // d(sa a)/da
+    const Mat3 dDrag_du = dFn_dun * P + ct * dsaa * tt;
+    const Mat3 dDrag_dt = -dFn_dun * (t * u.transpose() + a * I) + ct * (dsaa * t * u.transpose() + sa * a * I);
+    Mat3 dInertia_dt = Mat3::Zero();
+    Mat3 dInertia_drdd = Mat3::Zero();
+    if (p.addedMass) {
+        dInertia_drdd = rhoA * (p.Can * P + p.Cat * tt);
+        dInertia_dt = rhoA * (p.Cat - p.Can) * (t * rdd.transpose() + ta * I);
+    }
+    const Mat3 dt_drp = P / stretch;
+    // u = U - r_dot: dF/dr_dot = + phi dDrag/du.
+    J->drd = phi * dDrag_du;
+    J->drp = phi * (dInertia_dt - dDrag_dt) * dt_drp;
+    J->drdd = phi * dInertia_drdd;
+    J->dr.setZero();
+    const double dphi = submerged_fraction_slope(r.z(), p.diameter);
+    if (dphi != 0.0) {
+        Vec3 dF_dphi = inertia - drag;
+        dF_dphi.z() += -rhoA * p.gravity;  // -d(weight)/dphi: weight_z = -(m - phi rho A) g
+        J->dr.col(2) = dF_dphi * dphi;
+    }
+    return F;
+}
+
+void add_hydro_force(const ElementTables& e, const FluidProps& p, const Vec3& current, const double* X,
+                     const double* Xd, const double* Xdd, double* R) {
+    for (int g = 0; g < e.nLoad; ++g) {
+        const QuadPoint& q = e.load[g];
+        const Vec3 F = point_load(p, interpolate(q.shape.N, X), interpolate(q.shape.dN, X),
+                                  interpolate(q.shape.N, Xd), interpolate(q.shape.N, Xdd), current, nullptr);
+        for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += (q.weight * q.shape.N[a]) * F;
+    }
+}
+
+void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const Vec3& current,
+                        const double* X, const double* Xd, const double* Xdd, Mat12& K, Mat12& C,
+                        Mat12& M) {
+    PointLoadJacobian J;
+    for (int g = 0; g < e.nLoad; ++g) {
+        const QuadPoint& q = e.load[g];
+        point_load(p, interpolate(q.shape.N, X), interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd),
+                   interpolate(q.shape.N, Xdd), current, &J);
+        for (int a = 0; a < 4; ++a) {
+            const double wa = q.weight * q.shape.N[a];
+            for (int b = 0; b < 4; ++b) {
+                K.block<3, 3>(3 * a, 3 * b) += wa * (q.shape.N[b] * J.dr + q.shape.dN[b] * J.drp);
+                C.block<3, 3>(3 * a, 3 * b) += (wa * q.shape.N[b]) * J.drd;
+                if (p.addedMass) M.block<3, 3>(3 * a, 3 * b) += (wa * q.shape.N[b]) * J.drdd;
+            }
+        }
+    }
+}
+
+}  // namespace uc

@@ -1,0 +1,46 @@
+// hydrodynamics.h - distributed external loads per unit unstretched length: submerged weight,
+// Morison drag on the relative velocity, added mass (DESIGN.md section 3).
+//
+// Residual sign: the load enters R = M r'' + f_int - f_ext as
+//   F = m_a r'' - f_weight - f_drag,   m_a = phi rho A (Can (I - t t^T) + Cat t t^T),
+// f_weight = -(m - phi rho A) g e_z, f_drag = phi (0.5 rho Cdn d |u_n| u_n + 0.5 rho Cdt pi d |u_t| u_t),
+// u = U - r_dot, t = r'/|r'|, and phi(z) the submerged fraction of the cross-section (a linear
+// ramp over one diameter around z = 0, so weight and drag are continuous across the surface).
+#pragma once
+
+#include "hermite_element.h"
+
+namespace uc {
+
+struct FluidProps {
+    double rho;           // water density [kg/m3]
+    double gravity;       // [m/s2]
+    double massPerLength; // [kg/m]
+    double area;          // pi d^2 / 4 [m2]
+    double diameter;      // [m]
+    double Cdn, Cdt, Can, Cat;
+    bool addedMass;
+};
+
+// Derivatives of the per-length load F with respect to r, r', r_dot, r_ddot.
+struct PointLoadJacobian {
+    Mat3 dr, drp, drd, drdd;
+};
+
+// Regularisation of |w| in the quadratic drag (m/s): keeps the Jacobian smooth at zero relative flow.
+constexpr double kDragVelocityFloor = 1e-6;
+
+double submerged_fraction(double z, double diameter);
+
+// Per-length load F at one point; fills J when non-null.
+Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd,
+                const Vec3& current, PointLoadJacobian* J);
+
+// Element integrals: R_a += int N_a F ds; K, C, M get dR/dX, dR/dXdot, dR/dXddot.
+void add_hydro_force(const ElementTables& e, const FluidProps& p, const Vec3& current, const double* X,
+                     const double* Xd, const double* Xdd, double* R);
+void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const Vec3& current,
+                        const double* X, const double* Xd, const double* Xdd, Mat12& K, Mat12& C,
+                        Mat12& M);
+
+}  // namespace uc

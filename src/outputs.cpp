@@ -1,0 +1,83 @@
+// outputs.cpp - reactions, stations, extremes.
+#include "outputs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace uc {
+namespace {
+
+Vec3 at(const double* X, int g) { return Eigen::Map<const Vec3>(X + g); }
+
+double curvature(const Vec3& rp, const Vec3& rpp) {
+    const double n = rp.norm();
+    return rp.cross(rpp).norm() / (n * n * n);
+}
+
+}  // namespace
+
+void nodal_tensions(const CableModel& model, const double* X, const ElementForces& forces, double* T) {
+    const int N = model.n_elements();
+    // Node 0: the cable pulls the tow point along +t_0 with the force -R_0 (reaction).
+    T[0] = (-forces.element[0].segment<3>(0)).dot(at(X, 3).normalized());
+    for (int i = 1; i <= N; ++i) T[i] = forces.element[i - 1].segment<3>(6).dot(at(X, 6 * i + 3).normalized());
+}
+
+void compute_outputs(const CableModel& model, const double* X, const double* Xd, const ElementForces& forces,
+                     UCOutputs& out) {
+    const int N = model.n_elements();
+    const int gN = 6 * N;
+    const Vec3 towForce = -forces.element[0].segment<3>(0);
+    const Vec3 endForce = -forces.element[N - 1].segment<3>(6);
+    for (int k = 0; k < 3; ++k) {
+        out.towForce[k] = towForce[k];
+        out.endForce[k] = endForce[k];
+        out.endPosition[k] = X[gN + k];
+        out.endVelocity[k] = Xd[gN + k];
+    }
+    out.towTension = towForce.norm();
+    out.endTension = endForce.norm();
+
+    std::vector<double> T(N + 1);
+    nodal_tensions(model, X, forces, T.data());
+
+    const double l = model.element_length();
+    const ElementTables& tables = model.tables();
+    for (int k = 0; k < UC_NUM_STATIONS; ++k) {
+        const double s = model.params().length * k / (UC_NUM_STATIONS - 1);
+        const int e = std::min(N - 1, static_cast<int>(s / l));
+        const double xi = std::clamp(s / l - e, 0.0, 1.0);
+        const ShapeValues sv = hermite_shape(xi, l);
+        const Vec3 r = interpolate(sv.N, X + 6 * e);
+        out.shapeX[k] = r.x();
+        out.shapeY[k] = r.y();
+        out.shapeZ[k] = r.z();
+        out.tension[k] = (1.0 - xi) * T[e] + xi * T[e + 1];
+    }
+
+    double minTension = *std::min_element(T.begin(), T.end());
+    double maxCurvature = 0.0;
+    const AxialProps& axial = model.axial();
+    for (int e = 0; e < N; ++e) {
+        const double* Xe = X + 6 * e;
+        const double* Xde = Xd + 6 * e;
+        for (int g = 0; g < tables.nAxial; ++g) {
+            const ShapeValues& sv = tables.axial[g].shape;
+            const Vec3 rp = interpolate(sv.dN, Xe);
+            const double stretch = rp.norm();
+            const double tension = axial.EA * (stretch - 1.0) + axial.damping * rp.dot(interpolate(sv.dN, Xde)) / stretch;
+            minTension = std::min(minTension, tension);
+            maxCurvature = std::max(maxCurvature, curvature(rp, interpolate(sv.d2N, Xe)));
+        }
+        for (double xi : {0.0, 1.0}) {
+            const ShapeValues sv = hermite_shape(xi, l);
+            maxCurvature = std::max(maxCurvature, curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe)));
+        }
+    }
+    out.minTension = minTension;
+    out.maxCurvature = maxCurvature;
+    out.maxBendingMoment = model.EI() * maxCurvature;
+}
+
+}  // namespace uc

@@ -1,0 +1,351 @@
+// simulation.cpp - initialization, stepping, outputs and exact state save/restore of one cable.
+#include "simulation.h"
+
+#include <sunmatrix/sunmatrix_band.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <new>
+
+#include "outputs.h"
+#include "statics.h"
+
+namespace uc {
+namespace {
+
+constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
+constexpr std::uint32_t kStateVersion = 1;
+
+// Fixed-layout header of a saved state; followed by UCOutputs, y and y'.
+struct StateHeader {
+    std::uint32_t magic;
+    std::uint32_t version;
+    std::int32_t nFree;
+    std::int32_t nElements;
+    double time;
+    double towPosition[3];
+    double towVelocity[3];
+    double stats[5];
+};
+
+IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
+    IntegratorStats s;
+    s.steps = a.steps + b.steps;
+    s.residualEvals = a.residualEvals + b.residualEvals;
+    s.jacobianEvals = a.jacobianEvals + b.jacobianEvals;
+    s.nonlinearFailures = a.nonlinearFailures + b.nonlinearFailures;
+    s.errorTestFailures = a.errorTestFailures + b.errorTestFailures;
+    return s;
+}
+
+Vec3 vec(const double v[3]) { return Vec3(v[0], v[1], v[2]); }
+
+}  // namespace
+
+CableSimulation::CableSimulation(const UCParams& params) : model_(params) {
+    if (SUNContext_Create(nullptr, &context_) != 0 || context_ == nullptr) throw std::bad_alloc();
+    const int n = model_.n_free();
+    const int bandwidth = model_.free_bandwidth();
+    try {
+        // IDA unknowns interleave q_j and v_j: coupled free DOFs i, j are 2|i - j| + 1 apart at most.
+        integrator_ = std::make_unique<Integrator>(context_, 2 * n, 2 * bandwidth + 1, params.relTol,
+                                                   params.absTol, this);
+        staticSolver_ = std::make_unique<BandSolver>(context_, n, bandwidth);
+    } catch (...) {
+        integrator_.reset();
+        staticSolver_.reset();
+        SUNContext_Free(&context_);
+        throw;
+    }
+    y_.assign(2 * n, 0.0);
+    yp_.assign(2 * n, 0.0);
+    q_.assign(n, 0.0);
+    v_.assign(n, 0.0);
+    a_.assign(n, 0.0);
+    R_.assign(n, 0.0);
+    X_.assign(model_.n_global(), 0.0);
+    Xd_.assign(model_.n_global(), 0.0);
+    Xdd_.assign(model_.n_global(), 0.0);
+    forces_.element.resize(model_.n_elements());
+}
+
+CableSimulation::~CableSimulation() {
+    integrator_.reset();
+    staticSolver_.reset();
+    if (context_) SUNContext_Free(&context_);
+}
+
+void CableSimulation::set_environment(const UCInputs& in) {
+    loads_.current = Vec3(in.current[0], in.current[1], 0.0);
+    loads_.endLoad = vec(in.endLoad);
+}
+
+void CableSimulation::initial_guess(const Vec3& towPoint, std::vector<double>& q) const {
+    const UCParams& p = model_.params();
+    std::vector<double> X(model_.n_global());
+    model_.straight_line(towPoint, vec(p.initialDirection), X.data());
+    if (p.bottomEnd == UC_BOTTOM_ANCHORED) {
+        // Chord from the tow point to the anchor, sagging in its vertical plane when the line is slack
+        // (a parabola whose length is about the cable length).
+        const Vec3 chord = vec(p.anchor) - towPoint;
+        const double D = chord.norm(), L = p.length;
+        Vec3 sagDirection = Vec3(0, 0, -1) - chord.normalized() * chord.normalized().z();
+        if (sagDirection.norm() < 1e-6) sagDirection = Vec3(1, 0, 0);
+        sagDirection.normalize();
+        const double sag = D < L ? D * std::sqrt(0.375 * (L / D - 1.0)) : 0.0;
+        const int N = model_.n_elements();
+        for (int i = 0; i <= N; ++i) {
+            const double xi = static_cast<double>(i) / N;
+            Eigen::Map<Vec3>(X.data() + 6 * i) = towPoint + xi * chord + 4.0 * sag * xi * (1.0 - xi) * sagDirection;
+            const Vec3 drdxi = chord + 4.0 * sag * (1.0 - 2.0 * xi) * sagDirection;
+            Eigen::Map<Vec3>(X.data() + 6 * i + 3) = drdxi.normalized() * std::max(D / L, 1.0);
+        }
+    }
+    model_.restrict_to_free(X.data(), q.data());
+}
+
+bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& error) {
+    const UCParams& p = model_.params();
+    for (double v : {in.tow[0], in.tow[1], in.tow[2], in.towVelocity[0], in.towVelocity[1], in.towVelocity[2],
+                     in.towAcceleration[0], in.towAcceleration[1], in.towAcceleration[2], in.endLoad[0],
+                     in.endLoad[1], in.endLoad[2], in.current[0], in.current[1]}) {
+        if (!std::isfinite(v)) {
+            error = "inputs must be finite numbers";
+            return false;
+        }
+    }
+    set_environment(in);
+    towPosition_ = vec(in.tow);
+    towVelocity_ = vec(in.towVelocity);
+    loads_.tow = TowTrajectory::at_rest_in_time(towPosition_, towVelocity_, vec(in.towAcceleration), t0);
+
+    if (p.bottomEnd == UC_BOTTOM_ANCHORED) {
+        const double distance = (vec(p.anchor) - towPosition_).norm();
+        if (distance > 1.1 * p.length) {
+            char buffer[300];
+            std::snprintf(buffer, sizeof buffer,
+                          "anchor.x/y/z is %.6g m from the tow point but the cable is only %.6g m long: "
+                          "reaching it needs a strain of %.3g (more than 10 %%), which no cable survives",
+                          distance, p.length, distance / p.length - 1.0);
+            error = buffer;
+            return false;
+        }
+    }
+
+    const int n = model_.n_free();
+    initial_guess(towPosition_, q_);
+    std::vector<double> v(n, 0.0);
+    if (p.initMode == UC_INIT_EQUILIBRIUM && p.bottomEnd != UC_BOTTOM_ANCHORED) {
+        // Steady tow: every node moves with the tow point, tangents do not turn.
+        for (int g = 0; g < model_.n_global(); ++g) {
+            const int j = model_.free_index(g);
+            if (j >= 0 && g % 6 < 3) v[j] = towVelocity_[g % 6];
+        }
+    }
+    if (p.initMode == UC_INIT_EQUILIBRIUM) {
+        const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_);
+        if (!statics.converged) {
+            error = statics.message;
+            return false;
+        }
+    }
+    if (!solve_consistent_acceleration(model_, *staticSolver_, loads_, t0, q_, v, a_)) {
+        error = "the mass matrix is singular: check massPerLength and the end conditions";
+        return false;
+    }
+    for (int j = 0; j < n; ++j) {
+        y_[2 * j] = q_[j];
+        y_[2 * j + 1] = v[j];
+        yp_[2 * j] = v[j];
+        yp_[2 * j + 1] = a_[j];
+    }
+    time_ = t0;
+    statsBase_ = IntegratorStats();
+    integratorStarted_ = false;
+    restartPending_ = true;
+    update_outputs();
+    return true;
+}
+
+bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::string& error) {
+    for (double v : {in.tow[0], in.tow[1], in.tow[2], in.towVelocity[0], in.towVelocity[1], in.towVelocity[2],
+                     in.towAcceleration[0], in.towAcceleration[1], in.towAcceleration[2], in.endLoad[0],
+                     in.endLoad[1], in.endLoad[2], in.current[0], in.current[1], h}) {
+        if (!std::isfinite(v)) {
+            error = "inputs and the step size must be finite numbers";
+            return false;
+        }
+    }
+    if (!(h > 0.0)) {
+        error = "the communication step size must be positive";
+        return false;
+    }
+    set_environment(in);
+    // The end trajectory starts from where the previous step left the tow point (never jumps) and
+    // reaches the master's extrapolated target at t + h.
+    const Vec3 a = vec(in.towAcceleration);
+    TowTrajectory& tow = loads_.tow;
+    tow.t0 = time_;
+    tow.h = h;
+    tow.p0 = towPosition_;
+    tow.v0 = towVelocity_;
+    tow.p1 = vec(in.tow) + vec(in.towVelocity) * h + 0.5 * a * h * h;
+    tow.v1 = vec(in.towVelocity) + a * h;
+    tow.a0.setZero();
+
+    if (restartPending_) {
+        statsBase_ = total_stats();
+        if (!integrator_->restart(time_, y_.data(), yp_.data(), error)) return false;
+        integratorStarted_ = true;
+        restartPending_ = false;
+    }
+    const double tEnd = time_ + h;
+    if (!integrator_->advance(tEnd, error)) {
+        restartPending_ = true;  // the state stays at the last communication point
+        return false;
+    }
+    const double* y = integrator_->y();
+    const double* yp = integrator_->yp();
+    for (size_t i = 0; i < y_.size(); ++i) {
+        y_[i] = y[i];
+        yp_[i] = yp[i];
+    }
+    time_ = tEnd;
+    towPosition_ = tow.p1;
+    towVelocity_ = tow.v1;
+    update_outputs();
+    return true;
+}
+
+int CableSimulation::residual(double t, const double* y, const double* yp, double* r) {
+    const int n = model_.n_free();
+    for (int j = 0; j < n; ++j) {
+        q_[j] = y[2 * j];
+        v_[j] = y[2 * j + 1];
+        a_[j] = yp[2 * j + 1];
+    }
+    model_.expand(q_.data(), v_.data(), a_.data(), loads_, t, X_.data(), Xd_.data(), Xdd_.data());
+    model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), nullptr);
+    bool finite = true;
+    for (int j = 0; j < n; ++j) {
+        r[2 * j] = yp[2 * j] - y[2 * j + 1];
+        r[2 * j + 1] = R_[j];
+        finite = finite && std::isfinite(R_[j]);
+    }
+    return finite ? 0 : 1;  // non-finite: recoverable, IDA retries with a smaller step
+}
+
+int CableSimulation::jacobian(double t, double cj, const double* y, const double* yp, SUNMatrix J) {
+    const int n = model_.n_free();
+    for (int j = 0; j < n; ++j) {
+        q_[j] = y[2 * j];
+        v_[j] = y[2 * j + 1];
+        a_[j] = yp[2 * j + 1];
+    }
+    model_.expand(q_.data(), v_.data(), a_.data(), loads_, t, X_.data(), Xd_.data(), Xdd_.data());
+    SUNMatZero(J);
+    for (int j = 0; j < n; ++j) {
+        SM_ELEMENT_B(J, 2 * j, 2 * j) = cj;       // d(q' - v)/dq'
+        SM_ELEMENT_B(J, 2 * j, 2 * j + 1) = -1.0;  // d(q' - v)/dv
+    }
+    model_.jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_, [&](int i, int k, double dq, double dv, double da) {
+        SM_ELEMENT_B(J, 2 * i + 1, 2 * k) += dq;
+        SM_ELEMENT_B(J, 2 * i + 1, 2 * k + 1) += dv + cj * da;
+    });
+    return 0;
+}
+
+IntegratorStats CableSimulation::total_stats() const {
+    return integratorStarted_ ? statsBase_ + integrator_->stats() : statsBase_;
+}
+
+void CableSimulation::free_state(std::vector<double>& q, std::vector<double>& v, std::vector<double>& a) const {
+    const int n = model_.n_free();
+    q.resize(n);
+    v.resize(n);
+    a.resize(n);
+    for (int j = 0; j < n; ++j) {
+        q[j] = y_[2 * j];
+        v[j] = y_[2 * j + 1];
+        a[j] = yp_[2 * j + 1];
+    }
+}
+
+void CableSimulation::update_outputs() {
+    free_state(q_, v_, a_);
+    model_.expand(q_.data(), v_.data(), a_.data(), loads_, time_, X_.data(), Xd_.data(), Xdd_.data());
+    model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), &forces_);
+    compute_outputs(model_, X_.data(), Xd_.data(), forces_, outputs_);
+    const IntegratorStats s = total_stats();
+    outputs_.nSteps = s.steps;
+    outputs_.nResidualEvals = s.residualEvals;
+    outputs_.nJacobianEvals = s.jacobianEvals;
+    outputs_.nNonlinearFailures = s.nonlinearFailures;
+    outputs_.nErrorTestFailures = s.errorTestFailures;
+}
+
+size_t CableSimulation::state_size() const {
+    return sizeof(StateHeader) + sizeof(UCOutputs) + 2 * y_.size() * sizeof(double);
+}
+
+void CableSimulation::save_state(void* buffer) {
+    StateHeader header{};
+    header.magic = kStateMagic;
+    header.version = kStateVersion;
+    header.nFree = model_.n_free();
+    header.nElements = model_.n_elements();
+    header.time = time_;
+    const IntegratorStats s = total_stats();
+    const double stats[5] = {s.steps, s.residualEvals, s.jacobianEvals, s.nonlinearFailures, s.errorTestFailures};
+    for (int k = 0; k < 3; ++k) {
+        header.towPosition[k] = towPosition_[k];
+        header.towVelocity[k] = towVelocity_[k];
+    }
+    std::memcpy(header.stats, stats, sizeof stats);
+    auto* out = static_cast<unsigned char*>(buffer);
+    std::memcpy(out, &header, sizeof header);
+    out += sizeof header;
+    std::memcpy(out, &outputs_, sizeof outputs_);
+    out += sizeof outputs_;
+    std::memcpy(out, y_.data(), y_.size() * sizeof(double));
+    out += y_.size() * sizeof(double);
+    std::memcpy(out, yp_.data(), yp_.size() * sizeof(double));
+    // The continuation from here restarts the integrator, exactly as a restored copy will.
+    restartPending_ = true;
+}
+
+bool CableSimulation::restore_state(const void* buffer, size_t size, std::string& error) {
+    if (size != state_size()) {
+        error = "saved state has the wrong size for this cable (different nElements or end conditions)";
+        return false;
+    }
+    StateHeader header;
+    const auto* in = static_cast<const unsigned char*>(buffer);
+    std::memcpy(&header, in, sizeof header);
+    if (header.magic != kStateMagic || header.version != kStateVersion || header.nFree != model_.n_free() ||
+        header.nElements != model_.n_elements()) {
+        error = "saved state does not belong to this cable model (magic, version or sizes differ)";
+        return false;
+    }
+    in += sizeof header;
+    std::memcpy(&outputs_, in, sizeof outputs_);
+    in += sizeof outputs_;
+    std::memcpy(y_.data(), in, y_.size() * sizeof(double));
+    in += y_.size() * sizeof(double);
+    std::memcpy(yp_.data(), in, yp_.size() * sizeof(double));
+    time_ = header.time;
+    towPosition_ = vec(header.towPosition);
+    towVelocity_ = vec(header.towVelocity);
+    statsBase_.steps = header.stats[0];
+    statsBase_.residualEvals = header.stats[1];
+    statsBase_.jacobianEvals = header.stats[2];
+    statsBase_.nonlinearFailures = header.stats[3];
+    statsBase_.errorTestFailures = header.stats[4];
+    integratorStarted_ = false;
+    restartPending_ = true;
+    return true;
+}
+
+}  // namespace uc

@@ -1,0 +1,69 @@
+// simulation.h - one cable in time: the immutable CableModel plus the mutable state (time,
+// IDA vectors, prescribed-end state, statistics, outputs) and the workspace, allocated once.
+// Save/restore of the state is a plain byte copy (the MuJoCo mjModel/mjData split).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <sundials/sundials_context.h>
+
+#include "band_solver.h"
+#include "cable_api.h"
+#include "cable_model.h"
+#include "integrator.h"
+
+namespace uc {
+
+class CableSimulation : public DaeSystem {
+public:
+    explicit CableSimulation(const UCParams& params);
+    ~CableSimulation() override;
+    CableSimulation(const CableSimulation&) = delete;
+    CableSimulation& operator=(const CableSimulation&) = delete;
+
+    const CableModel& model() const { return model_; }
+    double time() const { return time_; }
+    const UCOutputs& outputs() const { return outputs_; }
+
+    bool initialize(double t0, const UCInputs& in, std::string& error);
+    bool step(double t, double h, const UCInputs& in, std::string& error);
+
+    size_t state_size() const;
+    void save_state(void* buffer);
+    bool restore_state(const void* buffer, size_t size, std::string& error);
+
+    // Free positions q and velocities v of the current state (for tests).
+    void free_state(std::vector<double>& q, std::vector<double>& v, std::vector<double>& a) const;
+
+private:
+    int residual(double t, const double* y, const double* yp, double* r) override;
+    int jacobian(double t, double cj, const double* y, const double* yp, SUNMatrix J) override;
+
+    void set_environment(const UCInputs& in);
+    void initial_guess(const Vec3& towPoint, std::vector<double>& q) const;
+    void update_outputs();
+    IntegratorStats total_stats() const;
+
+    CableModel model_;
+    SUNContext context_ = nullptr;
+    std::unique_ptr<Integrator> integrator_;
+    std::unique_ptr<BandSolver> staticSolver_;
+
+    // --- state (what save/restore copies) ---
+    double time_ = 0.0;
+    Vec3 towPosition_ = Vec3::Zero(), towVelocity_ = Vec3::Zero();  // prescribed end at time_
+    std::vector<double> y_, yp_;  // IDA vectors at time_: y = [q_0, v_0, q_1, v_1, ...]
+    IntegratorStats statsBase_;   // statistics folded in at integrator restarts
+    bool integratorStarted_ = false;  // the integrator's own counters belong to this state
+    UCOutputs outputs_{};
+    bool restartPending_ = true;
+
+    // --- per-step environment and workspace ---
+    Loads loads_;
+    std::vector<double> q_, v_, a_, X_, Xd_, Xdd_, R_;
+    ElementForces forces_;
+};
+
+}  // namespace uc
