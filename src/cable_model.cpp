@@ -10,6 +10,14 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kLoadQuadraturePoints = 3;
 
+}  // namespace
+
+AxialProps CableModel::scaled_axial(const Loads& loads) const {
+    return AxialProps{axial_.EA * loads.axialStiffnessScale, axial_.damping};
+}
+
+namespace {
+
 Vec3 unit(const double v[3]) {
     Vec3 d(v[0], v[1], v[2]);
     return d / d.norm();
@@ -145,7 +153,7 @@ void CableModel::element_residual(int e, const double* X, const double* Xd, cons
     const int g0 = 6 * e;
     for (int a = 0; a < 12; ++a) R[a] = 0.0;
     add_mass_force(tables_, params_.massPerLength, Xdd + g0, R);
-    add_axial_force(tables_, axial_, X + g0, Xd + g0, R);
+    add_axial_force(tables_, scaled_axial(loads), X + g0, Xd + g0, R);
     if (EI_ > 0.0) add_bending_force(tables_, EI_, X + g0, R);
     add_hydro_force(tables_, fluid_, loads.current, X + g0, Xd + g0, Xdd + g0, R);
 }
@@ -157,7 +165,7 @@ void CableModel::element_jacobian(int e, const double* X, const double* Xd, cons
     C.setZero();
     M.setZero();
     add_mass_jacobian(tables_, params_.massPerLength, M);
-    add_axial_jacobian(tables_, axial_, X + g0, Xd + g0, K, C);
+    add_axial_jacobian(tables_, scaled_axial(loads), X + g0, Xd + g0, K, C);
     if (EI_ > 0.0) add_bending_jacobian(tables_, EI_, K);
     add_hydro_jacobian(tables_, fluid_, loads.current, X + g0, Xd + g0, Xdd + g0, K, C, M);
 }

@@ -32,6 +32,9 @@ struct Loads {
     TowTrajectory tow;
     Vec3 current = Vec3::Zero();
     Vec3 endLoad = Vec3::Zero();
+    // Multiplies EA (static solver only: equilibrium is first found with a soft cable, whose
+    // large rotations do not turn into huge axial residuals, then stiffened to the real EA).
+    double axialStiffnessScale = 1.0;
 };
 
 // Residual contributions of one element and of the far-end node terms, kept for outputs.
@@ -91,6 +94,8 @@ public:
     void straight_line(const Vec3& p, const Vec3& direction, double* X) const;
 
 private:
+    AxialProps scaled_axial(const Loads& loads) const;
+
     UCParams params_;
     int nElements_;
     ElementTables tables_;

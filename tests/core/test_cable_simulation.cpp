@@ -1,0 +1,298 @@
+// Whole-cable checks through the core: steady tow against the closed form, equilibrium closure,
+// the elastica, assembled Jacobian, and exact state save/restore.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "cable_api.h"
+#include "cable_model.h"
+#include "simulation.h"
+
+using namespace uc;
+
+namespace {
+
+constexpr double kKnot = 1852.0 / 3600.0;
+constexpr double kPi = 3.14159265358979323846;
+
+UCInputs tow_inputs(double speed) {
+    UCInputs in{};
+    in.towVelocity[0] = speed;
+    return in;
+}
+
+UCParams hopland() {
+    UCParams p;
+    uc_params_default(&p);
+    return p;
+}
+
+// Free-end towed cable in still water (DESIGN.md section 5): a straight line at the angle theta
+// below the horizontal where normal drag balances the normal weight component,
+// cn V^2 sin^2(theta) = w cos(theta); the tension grows linearly, T(0) = L (w sin + ct V^2 cos^2).
+struct SteadyTow {
+    double theta, topTension;
+};
+
+SteadyTow closed_form_tow(const UCParams& p, double V) {
+    const double A = kPi * p.diameter * p.diameter / 4;
+    const double w = (p.massPerLength - p.waterDensity * A) * p.gravity;
+    const double cn = 0.5 * p.waterDensity * p.Cdn * p.diameter * V * V;
+    const double ct = 0.5 * p.waterDensity * p.Cdt * kPi * p.diameter * V * V;
+    // cn (1 - c^2) = w c  ->  c = cos(theta)
+    const double c = (-w + std::sqrt(w * w + 4 * cn * cn)) / (2 * cn);
+    const double theta = std::acos(c);
+    return {theta, p.length * (w * std::sin(theta) + ct * c * c)};
+}
+
+}  // namespace
+
+class SteadyTowTest : public ::testing::TestWithParam<double> {};
+
+TEST_P(SteadyTowTest, FreeEndTowIsStraightAtTheCriticalAngle) {
+    const double V = GetParam() * kKnot;
+    UCParams p = hopland();
+    CableSimulation sim(p);
+    std::string error;
+    ASSERT_TRUE(sim.initialize(0.0, tow_inputs(V), error)) << error;
+    const SteadyTow exact = closed_form_tow(p, V);
+    const UCOutputs& out = sim.outputs();
+    // The only modelling difference from the closed form is the submerged-fraction ramp over one
+    // diameter at the surface: a load deficit of about d/(8 sin theta) of cable, ~1e-4 relative.
+    EXPECT_NEAR(out.towTension, exact.topTension, 1e-4 * exact.topTension);
+    const double angle = std::atan2(-out.endPosition[2], -out.endPosition[0]);
+    EXPECT_NEAR(angle, exact.theta, 1e-4);
+    // Straight: every station on the chord.
+    for (int k = 0; k < UC_NUM_STATIONS; ++k) {
+        const double along = std::hypot(out.shapeX[k], out.shapeZ[k]);
+        EXPECT_NEAR(std::atan2(-out.shapeZ[k], -out.shapeX[k]), exact.theta, k == 0 ? 10.0 : 1e-4 * 300 / along);
+    }
+    // Tension linear along the cable, zero at the free end.
+    EXPECT_NEAR(out.tension[UC_NUM_STATIONS - 1], 0.0, 1e-6 * exact.topTension);
+    EXPECT_NEAR(out.tension[10], 0.5 * exact.topTension, 2e-4 * exact.topTension);
+}
+
+INSTANTIATE_TEST_SUITE_P(HoplandSpeeds, SteadyTowTest, ::testing::Values(1.1, 2.4));
+
+TEST(SteadyTow, StaysSteadyWhenTowedAtConstantSpeed) {
+    const double V = 2.4 * kKnot;
+    CableSimulation sim(hopland());
+    std::string error;
+    UCInputs in = tow_inputs(V);
+    ASSERT_TRUE(sim.initialize(0.0, in, error)) << error;
+    const double T0 = sim.outputs().towTension;
+    for (int k = 0; k < 40; ++k) {
+        in.tow[0] = V * 0.5 * k;
+        ASSERT_TRUE(sim.step(0.5 * k, 0.5, in, error)) << error;
+    }
+    // relTol 1e-6 on positions of O(300 m): tension drift bounded by EA * 1e-6 * 300 / 15 / 300 ~ 1e-4 T
+    EXPECT_NEAR(sim.outputs().towTension, T0, 1e-3 * T0);
+}
+
+TEST(Equilibrium, TowReactionEqualsTotalExternalLoadToRoundOff) {
+    const double V = 1.1 * kKnot;
+    UCParams p = hopland();
+    p.bottomEnd = UC_BOTTOM_TOWED_BODY;
+    p.bodyMass = 500;
+    p.bodyVolume = 0.1;
+    p.bodyCdA = 0.5;
+    CableSimulation sim(p);
+    std::string error;
+    UCInputs in = tow_inputs(V);
+    in.current[1] = 0.2;  // cross current: a 3D shape
+    ASSERT_TRUE(sim.initialize(0.0, in, error)) << error;
+
+    // Residual of all external loads on the cable (hydro and inertia terms of every element's
+    // position blocks, since the position shape functions sum to one) plus the body's terms.
+    // The residual carries -f_external, and the free rows vanish at equilibrium, so the
+    // reaction left at the tow point balances it: towForce + loadResidual = 0.
+    const CableModel& m = sim.model();
+    std::vector<double> q, v, a;
+    sim.free_state(q, v, a);
+    std::vector<double> X(m.n_global()), Xd(m.n_global()), Xdd(m.n_global());
+    Loads loads;
+    loads.tow = TowTrajectory::at_rest_in_time(Vec3::Zero(), Vec3(V, 0, 0), Vec3::Zero(), 0.0);
+    loads.current = Vec3(0, 0.2, 0);
+    m.expand(q.data(), v.data(), a.data(), loads, 0.0, X.data(), Xd.data(), Xdd.data());
+    Vec3 loadResidual = m.end_node_residual(X.data(), Xd.data(), Xdd.data(), loads);
+    for (int e = 0; e < m.n_elements(); ++e) {
+        Vec12 R = Vec12::Zero();
+        add_hydro_force(m.tables(), m.fluid(), loads.current, X.data() + 6 * e, Xd.data() + 6 * e,
+                        Xdd.data() + 6 * e, R.data());
+        add_mass_force(m.tables(), p.massPerLength, Xdd.data() + 6 * e, R.data());
+        loadResidual += R.segment<3>(0) + R.segment<3>(6);
+    }
+    const UCOutputs& out = sim.outputs();
+    const Vec3 towForce(out.towForce[0], out.towForce[1], out.towForce[2]);
+    // Internal forces cancel exactly (translation invariance); what is left is round-off of
+    // sums of O(EA eps) terms: 1e-10 of the tension is ~1e3 times machine epsilon.
+    EXPECT_LT((towForce + loadResidual).norm(), 1e-10 * towForce.norm());
+    EXPECT_GT(std::abs(out.towForce[1]), 1.0);  // the cross current really acts
+}
+
+namespace {
+
+// Jacobian of the assembled free residual against central finite differences.
+void check_assembled_jacobian(const UCParams& p) {
+    CableModel m(p);
+    const int n = m.n_free();
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<double> X(m.n_global());
+    m.straight_line(Vec3(0, 0, -5), Vec3(-0.5, 0.1, -1), X.data());
+    std::vector<double> q(n), v(n), a(n);
+    m.restrict_to_free(X.data(), q.data());
+    for (int j = 0; j < n; ++j) {
+        q[j] += 0.05 * u(rng);
+        v[j] = 0.5 * u(rng);
+        a[j] = 0.2 * u(rng);
+    }
+    Loads loads;
+    loads.tow = TowTrajectory::at_rest_in_time(Vec3(0, 0, -5), Vec3(1, 0, 0), Vec3(0.1, 0, 0), 0.0);
+    loads.current = Vec3(0.2, -0.3, 0);
+    loads.endLoad = Vec3(10, 0, -20);
+    std::vector<double> Xd(m.n_global()), Xdd(m.n_global()), R(n), Rp(n), Rm(n);
+    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n), C = K, M = K;
+    m.expand(q.data(), v.data(), a.data(), loads, 0.0, X.data(), Xd.data(), Xdd.data());
+    m.jacobian(X.data(), Xd.data(), Xdd.data(), loads, [&](int i, int j, double dq, double dv, double da) {
+        ASSERT_LE(std::abs(i - j), m.free_bandwidth());
+        K(i, j) += dq;
+        C(i, j) += dv;
+        M(i, j) += da;
+    });
+    auto residual = [&](std::vector<double>& qq, std::vector<double>& vv, std::vector<double>& aa,
+                        std::vector<double>& out) {
+        m.expand(qq.data(), vv.data(), aa.data(), loads, 0.0, X.data(), Xd.data(), Xdd.data());
+        m.residual(X.data(), Xd.data(), Xdd.data(), loads, out.data(), nullptr);
+    };
+    for (auto [which, J] : {std::pair<int, Eigen::MatrixXd*>{0, &K}, {1, &C}, {2, &M}}) {
+        Eigen::MatrixXd numeric(n, n);
+        // Positions: h = 1e-6 of O(1) coordinates. Velocities and accelerations enter only drag
+        // (smooth, quadratic) and inertia (linear): h = 1e-4 and 1e-3 keep the truncation error
+        // below 1e-6 relative while the cancellation error of O(EA eps) residuals stays negligible.
+        const double h = which == 0 ? 1e-6 : which == 1 ? 1e-4 : 1e-3;
+        for (int j = 0; j < n; ++j) {
+            std::vector<double>* x = which == 0 ? &q : which == 1 ? &v : &a;
+            const double x0 = (*x)[j];
+            (*x)[j] = x0 + h;
+            residual(q, v, a, Rp);
+            (*x)[j] = x0 - h;
+            residual(q, v, a, Rm);
+            (*x)[j] = x0;
+            for (int i = 0; i < n; ++i) numeric(i, j) = (Rp[i] - Rm[i]) / (2 * h);
+        }
+        // Truncation ~h^2 times third derivatives; cancellation ~1e-16 |R| / h with |R| ~ EA * 0.05.
+        EXPECT_LT((*J - numeric).norm(), 1e-6 * J->norm()) << "block " << which;
+    }
+}
+
+}  // namespace
+
+TEST(AssembledJacobian, MatchesFiniteDifferencesFreeEndHinged) {
+    UCParams p = hopland();
+    p.nElements = 5;
+    p.length = 20;
+    p.axialDamping = 1e4;
+    check_assembled_jacobian(p);
+}
+
+TEST(AssembledJacobian, MatchesFiniteDifferencesTowedBodyClamped) {
+    UCParams p = hopland();
+    p.nElements = 4;
+    p.length = 20;
+    p.topEnd = UC_TOP_CLAMPED;
+    p.topTangent[0] = 0.3;
+    p.bottomEnd = UC_BOTTOM_TOWED_BODY;
+    p.bodyMass = 100;
+    p.bodyVolume = 0.02;
+    p.bodyAddedMass = 20;
+    p.bodyCdA = 0.3;
+    check_assembled_jacobian(p);
+}
+
+TEST(AssembledJacobian, MatchesFiniteDifferencesAnchored) {
+    UCParams p = hopland();
+    p.nElements = 4;
+    p.length = 20;
+    p.bottomEnd = UC_BOTTOM_ANCHORED;
+    p.anchor[0] = -10;
+    p.anchor[2] = -20;
+    check_assembled_jacobian(p);
+}
+
+namespace {
+
+// Paper Table 1 cantilever; exact tips from shared/reference/elastica.json.
+struct ElasticaCase {
+    double P, xTip, yTip;
+};
+constexpr ElasticaCase kElastica[] = {{20, 9.16015744189, -3.65103793133},
+                                      {40, 7.85696019238, -5.60624938203},
+                                      {60, 6.83193067184, -6.60032424241},
+                                      {80, 6.0756744513, -7.1710085355}};
+
+double elastica_tip_error(const ElasticaCase& c, int nElements) {
+    UCParams p;
+    uc_params_default(&p);
+    p.length = 10;
+    p.diameter = 0.02;
+    const double A = kPi * p.diameter * p.diameter / 4;
+    p.waterDensity = 1000;
+    p.massPerLength = 1000 * A;  // neutrally buoyant
+    p.EA = 2e11 * A;
+    p.EI = 2e11 * kPi * std::pow(p.diameter, 4) / 64;
+    p.nElements = nElements;
+    p.topEnd = UC_TOP_CLAMPED;
+    p.topTangent[0] = 1;
+    p.topTangent[2] = 0;
+    p.initialDirection[0] = 1;
+    p.initialDirection[2] = 0;
+    CableSimulation sim(p);
+    UCInputs in{};
+    in.tow[2] = -50;  // fully submerged
+    in.endLoad[2] = -c.P;
+    std::string error;
+    if (!sim.initialize(0.0, in, error)) ADD_FAILURE() << error;
+    const UCOutputs& out = sim.outputs();
+    // The exact elastica is inextensible; the axial strain P/EA ~ 1e-6 shifts the tip by < 1e-5 m.
+    return std::hypot(out.endPosition[0] - c.xTip, out.endPosition[2] + 50 - c.yTip) / p.length;
+}
+
+}  // namespace
+
+TEST(Elastica, TipWithin1e4LengthWithTenElements) {
+    for (const ElasticaCase& c : kElastica) EXPECT_LT(elastica_tip_error(c, 10), 1e-4) << "P = " << c.P;
+}
+
+TEST(Elastica, TipWithin1e5LengthWithFortyElements) {
+    for (const ElasticaCase& c : kElastica) EXPECT_LT(elastica_tip_error(c, 40), 1e-5) << "P = " << c.P;
+}
+
+TEST(StateSaveRestore, ContinuationIsBitIdentical) {
+    UCParams p = hopland();
+    p.nElements = 10;
+    CableSimulation a(p), b(p);
+    std::string error;
+    UCInputs in = tow_inputs(1.1 * kKnot);
+    ASSERT_TRUE(a.initialize(0.0, in, error)) << error;
+    ASSERT_TRUE(b.initialize(0.0, in, error)) << error;
+    auto advance = [&](CableSimulation& s, int from, int count) {
+        for (int k = from; k < from + count; ++k) {
+            UCInputs step = in;
+            step.towVelocity[0] = (1.1 + 0.02 * k) * kKnot;  // accelerating: a non-trivial history
+            step.tow[0] = s.outputs().shapeX[0];
+            ASSERT_TRUE(s.step(s.time(), 0.5, step, error)) << error;
+        }
+    };
+    advance(a, 0, 10);
+    std::vector<unsigned char> saved(a.state_size());
+    a.save_state(saved.data());
+    advance(a, 10, 10);
+    ASSERT_TRUE(b.restore_state(saved.data(), saved.size(), error)) << error;
+    advance(b, 10, 10);
+    EXPECT_EQ(std::memcmp(&a.outputs(), &b.outputs(), sizeof(UCOutputs)), 0);
+    EXPECT_EQ(a.time(), b.time());
+}

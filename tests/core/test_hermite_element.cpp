@@ -1,0 +1,241 @@
+// Shape functions, quadrature, and each element term against the finite difference of its
+// energy (forces) or of its force (Jacobians).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "hermite_element.h"
+#include "hydrodynamics.h"
+
+using namespace uc;
+
+namespace {
+
+// A bent, stretched, twisted element configuration: nodal r and r' of a helix-like curve.
+Vec12 curved_element(double l, double stretch) {
+    Vec12 X;
+    auto curve = [&](double s) { return Vec3(stretch * s, 0.3 * std::sin(s / 3.0), -0.2 * s * s / 10.0); };
+    auto tangent = [&](double s) { return Vec3(stretch, 0.1 * std::cos(s / 3.0), -0.04 * s); };
+    X.segment<3>(0) = curve(1.0);
+    X.segment<3>(3) = tangent(1.0);
+    X.segment<3>(6) = curve(1.0 + l);
+    X.segment<3>(9) = tangent(1.0 + l);
+    return X;
+}
+
+Vec12 random_vector(std::mt19937& rng, double scale) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Vec12 v;
+    for (int i = 0; i < 12; ++i) v[i] = scale * u(rng);
+    return v;
+}
+
+// Central difference; the error is O(h^2) times third derivatives: relative 1e-6 is the bound
+// for h = 1e-6 relative perturbations of smooth functions of O(1) curvature.
+template <class F>
+Vec12 numerical_gradient(F&& energy, Vec12 X, double h) {
+    Vec12 g;
+    for (int i = 0; i < 12; ++i) {
+        const double xi = X[i];
+        X[i] = xi + h;
+        const double ep = energy(X);
+        X[i] = xi - h;
+        const double em = energy(X);
+        X[i] = xi;
+        g[i] = (ep - em) / (2 * h);
+    }
+    return g;
+}
+
+}  // namespace
+
+TEST(HermiteShape, InterpolatesNodalValuesAndSlopes) {
+    const double l = 2.5;
+    const ShapeValues a = hermite_shape(0.0, l), b = hermite_shape(1.0, l);
+    const double expectA[4] = {1, 0, 0, 0}, expectB[4] = {0, 0, 1, 0};
+    const double slopeA[4] = {0, 1, 0, 0}, slopeB[4] = {0, 0, 0, 1};
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_NEAR(a.N[k], expectA[k], 1e-15);
+        EXPECT_NEAR(b.N[k], expectB[k], 1e-15);
+        EXPECT_NEAR(a.dN[k], slopeA[k], 1e-15);
+        EXPECT_NEAR(b.dN[k], slopeB[k], 1e-15);
+    }
+}
+
+TEST(HermiteShape, ReproducesCubicsExactly) {
+    // r(s) = s^3 - 2 s^2 + s + 1 on [0.5, 0.5 + l]: cubic Hermite interpolation is exact.
+    const double s0 = 0.5, l = 1.7;
+    auto f = [](double s) { return s * s * s - 2 * s * s + s + 1; };
+    auto df = [](double s) { return 3 * s * s - 4 * s + 1; };
+    auto d2f = [](double s) { return 6 * s - 4; };
+    const double X[4] = {f(s0), df(s0), f(s0 + l), df(s0 + l)};
+    for (double xi : {0.1, 0.37, 0.5, 0.8}) {
+        const ShapeValues sv = hermite_shape(xi, l);
+        double v = 0, dv = 0, d2v = 0;
+        for (int a = 0; a < 4; ++a) {
+            v += sv.N[a] * X[a];
+            dv += sv.dN[a] * X[a];
+            d2v += sv.d2N[a] * X[a];
+        }
+        const double s = s0 + xi * l;
+        EXPECT_NEAR(v, f(s), 1e-13);
+        EXPECT_NEAR(dv, df(s), 1e-13);
+        EXPECT_NEAR(d2v, d2f(s), 1e-12);
+    }
+}
+
+TEST(GaussRule, IntegratesPolynomialsOfDegree2nMinus1) {
+    for (int n = 1; n <= 5; ++n) {
+        const GaussRule rule = gauss_rule(n);
+        for (int degree = 0; degree <= 2 * n - 1; ++degree) {
+            double sum = 0;
+            for (int g = 0; g < n; ++g) sum += rule.w[g] * std::pow(rule.xi[g], degree);
+            EXPECT_NEAR(sum, 1.0 / (degree + 1), 1e-15) << "n = " << n << ", degree = " << degree;
+        }
+    }
+}
+
+TEST(ElementTables, MassMatrixIntegratesToTotalMass) {
+    // Rigid translation: sum over position shape functions is 1, so 1^T M_pos 1 = l.
+    const double l = 3.0;
+    const ElementTables e = make_element_tables(l, 3);
+    EXPECT_NEAR(e.mass(0, 0) + e.mass(0, 2) + e.mass(2, 0) + e.mass(2, 2), l, 1e-13);
+    // Classical consistent beam mass: M_11 = 13 l / 35.
+    EXPECT_NEAR(e.mass(0, 0), 13.0 * l / 35.0, 1e-13);
+    // Classical beam stiffness: K_11 = 12 / l^3.
+    EXPECT_NEAR(e.bending(0, 0), 12.0 / (l * l * l), 1e-12);
+}
+
+TEST(AxialTerm, ForceIsGradientOfStrainEnergy) {
+    const double l = 2.0, EA = 1e5;
+    const ElementTables e = make_element_tables(l, 3);
+    const Vec12 X = curved_element(l, 1.01);
+    Vec12 R = Vec12::Zero();
+    const Vec12 zero = Vec12::Zero();
+    add_axial_force(e, AxialProps{EA, 0.0}, X.data(), zero.data(), R.data());
+    const Vec12 g = numerical_gradient([&](const Vec12& x) { return axial_energy(e, EA, x.data()); }, X, 1e-6);
+    EXPECT_LT((R - g).norm(), 1e-6 * R.norm());
+}
+
+TEST(BendingTerm, ForceIsGradientOfBendingEnergy) {
+    const double l = 2.0, EI = 300.0;
+    const ElementTables e = make_element_tables(l, 3);
+    const Vec12 X = curved_element(l, 1.0);
+    Vec12 R = Vec12::Zero();
+    add_bending_force(e, EI, X.data(), R.data());
+    const Vec12 g = numerical_gradient([&](const Vec12& x) { return bending_energy(e, EI, x.data()); }, X, 1e-6);
+    EXPECT_LT((R - g).norm(), 1e-7 * R.norm());
+}
+
+TEST(AxialTerm, StraightStretchedElementCarriesEAEpsilon) {
+    // Hand calculation: uniform strain eps gives T = EA eps; the nodal forces are -T t and +T t.
+    const double l = 5.0, EA = 2e6, eps = 1e-3;
+    const ElementTables e = make_element_tables(l, 3);
+    const Vec3 t = Vec3(1, 2, 2) / 3.0;
+    Vec12 X;
+    X << 0, 0, 0, (1 + eps) * t, (1 + eps) * l * t, (1 + eps) * t;
+    Vec12 R = Vec12::Zero();
+    const Vec12 zero = Vec12::Zero();
+    add_axial_force(e, AxialProps{EA, 0.0}, X.data(), zero.data(), R.data());
+    const Vec3 expectedEnd = EA * eps * t;
+    EXPECT_LT((R.segment<3>(6) - expectedEnd).norm(), 1e-9 * EA * eps);
+    EXPECT_LT((R.segment<3>(0) + expectedEnd).norm(), 1e-9 * EA * eps);
+    EXPECT_LT(R.segment<3>(3).norm(), 1e-9 * EA * eps);  // no moment at the nodes
+    EXPECT_LT(R.segment<3>(9).norm(), 1e-9 * EA * eps);
+}
+
+namespace {
+
+// Finite-difference check of a 12x12 Jacobian: column by column, central differences.
+template <class F>
+void expect_jacobian_matches(F&& force, const Vec12& X, const Mat12& J, double h, double relTol,
+                             const char* what) {
+    Mat12 numeric;
+    for (int i = 0; i < 12; ++i) {
+        Vec12 xp = X, xm = X;
+        xp[i] += h;
+        xm[i] -= h;
+        numeric.col(i) = (force(xp) - force(xm)) / (2 * h);
+    }
+    const double scale = std::max(J.norm(), 1e-300);
+    EXPECT_LT((J - numeric).norm(), relTol * scale) << what << "\nanalytic\n" << J << "\nnumeric\n" << numeric;
+}
+
+}  // namespace
+
+TEST(AxialTerm, JacobianMatchesFiniteDifferences) {
+    const double l = 2.0;
+    const AxialProps props{1e5, 3e3};
+    const ElementTables e = make_element_tables(l, 3);
+    std::mt19937 rng(7);
+    const Vec12 X = curved_element(l, 1.02);
+    const Vec12 Xd = random_vector(rng, 0.5);
+    Mat12 K = Mat12::Zero(), C = Mat12::Zero();
+    add_axial_jacobian(e, props, X.data(), Xd.data(), K, C);
+    auto forceX = [&](const Vec12& x) {
+        Vec12 R = Vec12::Zero();
+        add_axial_force(e, props, x.data(), Xd.data(), R.data());
+        return R;
+    };
+    auto forceV = [&](const Vec12& v) {
+        Vec12 R = Vec12::Zero();
+        add_axial_force(e, props, X.data(), v.data(), R.data());
+        return R;
+    };
+    expect_jacobian_matches(forceX, X, K, 1e-6, 1e-6, "dR/dX");
+    expect_jacobian_matches(forceV, Xd, C, 1e-6, 1e-8, "dR/dXdot");
+}
+
+TEST(HydroTerm, JacobianMatchesFiniteDifferences) {
+    const double l = 2.0, d = 0.05;
+    FluidProps p{1025.0, 9.81, 4.0, 3.14159265358979 * d * d / 4, d, 1.4, 0.3, 1.0, 0.2, true};
+    const ElementTables e = make_element_tables(l, 3);
+    std::mt19937 rng(11);
+    Vec12 X = curved_element(l, 1.0);
+    for (int a : {0, 2}) X[3 * a + 2] -= 10.0;  // submerged
+    const Vec12 Xd = random_vector(rng, 1.0), Xdd = random_vector(rng, 0.3);
+    const Vec3 current(0.4, -0.2, 0.0);
+    Mat12 K = Mat12::Zero(), C = Mat12::Zero(), M = Mat12::Zero();
+    add_hydro_jacobian(e, p, current, X.data(), Xd.data(), Xdd.data(), K, C, M);
+    auto force = [&](const Vec12& x, const Vec12& v, const Vec12& a) {
+        Vec12 R = Vec12::Zero();
+        add_hydro_force(e, p, current, x.data(), v.data(), a.data(), R.data());
+        return R;
+    };
+    expect_jacobian_matches([&](const Vec12& x) { return force(x, Xd, Xdd); }, X, K, 1e-6, 1e-6, "dR/dX");
+    expect_jacobian_matches([&](const Vec12& v) { return force(X, v, Xdd); }, Xd, C, 1e-6, 1e-6, "dR/dXdot");
+    expect_jacobian_matches([&](const Vec12& a) { return force(X, Xd, a); }, Xdd, M, 1e-6, 1e-8, "dR/dXddot");
+}
+
+TEST(HydroTerm, JacobianAcrossTheSurfaceMatchesFiniteDifferences) {
+    // Element crossing z = 0 within the one-diameter ramp of the submerged fraction.
+    const double l = 0.04, d = 0.05;
+    FluidProps p{1025.0, 9.81, 4.0, 3.14159265358979 * d * d / 4, d, 1.4, 0.3, 1.0, 0.2, true};
+    const ElementTables e = make_element_tables(l, 3);
+    std::mt19937 rng(5);
+    Vec12 X;
+    X << 0, 0, 0.01, 0.6, 0, -0.8, 0.6 * l, 0, 0.01 - 0.8 * l, 0.6, 0.1, -0.8;
+    const Vec12 Xd = random_vector(rng, 1.0), Xdd = random_vector(rng, 0.3);
+    Mat12 K = Mat12::Zero(), C = Mat12::Zero(), M = Mat12::Zero();
+    const Vec3 current = Vec3::Zero();
+    add_hydro_jacobian(e, p, current, X.data(), Xd.data(), Xdd.data(), K, C, M);
+    auto force = [&](const Vec12& x) {
+        Vec12 R = Vec12::Zero();
+        add_hydro_force(e, p, current, x.data(), Xd.data(), Xdd.data(), R.data());
+        return R;
+    };
+    expect_jacobian_matches(force, X, K, 1e-8, 1e-5, "dR/dX across the surface");
+}
+
+TEST(HydroTerm, DragOpposesRelativeMotionWithMorisonMagnitudes) {
+    // A horizontal cable element moving down at 1 m/s in still water: pure normal drag
+    // 0.5 rho Cdn d V^2 upward; moving along itself: tangential drag 0.5 rho Cdt pi d V^2.
+    const double d = 0.0332, rho = 1025;
+    FluidProps p{rho, 0.0, 2.7, 3.14159265358979 * d * d / 4, d, 1.649, 0.12, 0.0, 0.0, false};
+    const Vec3 r(0, 0, -10), t(1, 0, 0), zero = Vec3::Zero();
+    const Vec3 normal = point_load(p, r, t, Vec3(0, 0, -1), zero, zero, nullptr);
+    EXPECT_NEAR(-normal.z(), 0.5 * rho * 1.649 * d, 1e-9);  // residual F = -f_drag: drag up, F down
+    const Vec3 tangential = point_load(p, r, t, Vec3(1, 0, 0), zero, zero, nullptr);
+    EXPECT_NEAR(tangential.x(), 0.5 * rho * 0.12 * 3.14159265358979 * d, 1e-9);
+}
