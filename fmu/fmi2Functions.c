@@ -1,0 +1,336 @@
+/*
+ * fmi2Functions.c - the exported FMI 2.0 Co-Simulation functions. Each one checks the machine state
+ * against the set of states it may be called in (FMI 2.0 section 4.2.4), delegates, and applies the
+ * worst-status rule (an fmi2Error puts the instance into the error state) in uc_instance_finish.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "fmi2Functions.h"
+#include "instance.h"
+#include "simulation.h"
+#include "state_serialization.h"
+#include "uc_guid.h"
+#include "value_access.h"
+
+/* Sets of states in which each function may be called (FMI-CHECKLIST 2.3). */
+#define ANY_AFTER_INSTANTIATE                                                                                \
+    (UC_STATE_INSTANTIATED | UC_STATE_INIT_MODE | UC_STATE_STEP_COMPLETE | UC_STATE_STEP_IN_PROGRESS |      \
+     UC_STATE_STEP_FAILED | UC_STATE_STEP_CANCELED | UC_STATE_TERMINATED | UC_STATE_ERROR)
+#define MASK_SET_DEBUG_LOGGING ANY_AFTER_INSTANTIATE
+#define MASK_SETUP_EXPERIMENT UC_STATE_INSTANTIATED
+#define MASK_ENTER_INIT UC_STATE_INSTANTIATED
+#define MASK_EXIT_INIT UC_STATE_INIT_MODE
+#define MASK_TERMINATE (UC_STATE_STEP_COMPLETE | UC_STATE_STEP_FAILED)
+#define MASK_RESET (ANY_AFTER_INSTANTIATE & ~UC_STATE_STEP_IN_PROGRESS)
+#define MASK_GET                                                                                             \
+    (UC_STATE_INIT_MODE | UC_STATE_STEP_COMPLETE | UC_STATE_STEP_FAILED | UC_STATE_STEP_CANCELED |          \
+     UC_STATE_TERMINATED | UC_STATE_ERROR)
+#define MASK_SET (UC_STATE_INSTANTIATED | UC_STATE_INIT_MODE | UC_STATE_STEP_COMPLETE)
+#define MASK_FMU_STATE (ANY_AFTER_INSTANTIATE & ~UC_STATE_STEP_IN_PROGRESS)
+#define MASK_DIRECTIONAL_DERIVATIVE MASK_GET
+#define MASK_INPUT_DERIVATIVES MASK_SET
+#define MASK_OUTPUT_DERIVATIVES (UC_STATE_STEP_COMPLETE | UC_STATE_STEP_FAILED | UC_STATE_STEP_CANCELED | \
+                                 UC_STATE_TERMINATED | UC_STATE_ERROR)
+#define MASK_DO_STEP UC_STATE_STEP_COMPLETE
+#define MASK_CANCEL_STEP UC_STATE_STEP_IN_PROGRESS
+#define MASK_GET_STATUS \
+    (UC_STATE_STEP_COMPLETE | UC_STATE_STEP_IN_PROGRESS | UC_STATE_STEP_FAILED | UC_STATE_TERMINATED)
+
+/* Runs `body` (an expression yielding fmi2Status) if the instance may call `function` now. */
+#define GUARDED(c, mask, function, body)                                                                    \
+    do {                                                                                                     \
+        UCInstance* inst = (UCInstance*)(c);                                                                 \
+        fmi2Status status = uc_instance_check(inst, (mask), (function));                                     \
+        if (status == fmi2OK) status = (body);                                                               \
+        return uc_instance_finish(inst, status);                                                             \
+    } while (0)
+
+/* ---- common functions ------------------------------------------------------------------------------- */
+
+const char* fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
+
+const char* fmi2GetVersion(void) { return fmi2Version; }
+
+fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
+                               const fmi2String categories[]) {
+    GUARDED(c, MASK_SET_DEBUG_LOGGING, "fmi2SetDebugLogging",
+            uc_log_configure(&inst->log, loggingOn, nCategories, categories));
+}
+
+static int reject_instantiation(const fmi2CallbackFunctions* functions, fmi2String instanceName,
+                                const char* reason) {
+    if (functions != NULL) {
+        uc_log_raw(functions->logger, functions->componentEnvironment, instanceName, fmi2Error,
+                   UC_LOG_STATUS_ERROR, reason);
+    }
+    return 1;
+}
+
+/* Non-zero (logged) if the arguments of fmi2Instantiate are not for this FMU. */
+static int instantiation_rejected(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
+                                  const fmi2CallbackFunctions* functions) {
+    if (functions == NULL || functions->logger == NULL) return 1; /* nobody to tell */
+    if (instanceName == NULL || instanceName[0] == '\0') {
+        return reject_instantiation(functions, instanceName, "fmi2Instantiate: instanceName is NULL or empty");
+    }
+    if (fmuType != fmi2CoSimulation) {
+        return reject_instantiation(functions, instanceName,
+                                    "fmi2Instantiate: fmuType must be fmi2CoSimulation (this FMU has no Model "
+                                    "Exchange interface)");
+    }
+    if (fmuGUID == NULL || strcmp(fmuGUID, UC_GUID) != 0) {
+        return reject_instantiation(functions, instanceName,
+                                    "fmi2Instantiate: fmuGUID does not match the guid " UC_GUID
+                                    " of this binary (modelDescription.xml from another build?)");
+    }
+    return 0;
+}
+
+fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
+                              fmi2String fmuResourceLocation, const fmi2CallbackFunctions* functions,
+                              fmi2Boolean visible, fmi2Boolean loggingOn) {
+    (void)visible; /* no user interface */
+    if (instantiation_rejected(instanceName, fmuType, fmuGUID, functions)) return NULL;
+    UCInstance* inst = uc_instance_new(instanceName, fmuResourceLocation, functions->logger,
+                                       functions->componentEnvironment, loggingOn);
+    if (inst == NULL) {
+        reject_instantiation(functions, instanceName, "fmi2Instantiate: out of memory");
+        return NULL;
+    }
+    uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "fmi2Instantiate: %s, guid %s, resources %s", instanceName, UC_GUID,
+           fmuResourceLocation ? fmuResourceLocation : "(none)");
+    return inst;
+}
+
+void fmi2FreeInstance(fmi2Component c) { uc_instance_free((UCInstance*)c); }
+
+static fmi2Status setup_experiment(UCInstance* inst, fmi2Boolean toleranceDefined, fmi2Real tolerance,
+                                   fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
+    if (!isfinite(startTime) || (stopTimeDefined && !(stopTime >= startTime && isfinite(stopTime)))) {
+        uc_log_status(&inst->log, fmi2Error,
+                      "fmi2SetupExperiment: startTime = %g, stopTime = %g: need finite startTime <= stopTime",
+                      startTime, stopTime);
+        return fmi2Error;
+    }
+    if (toleranceDefined) {
+        uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS,
+               "fmi2SetupExperiment: tolerance %g not used; the integrator uses the parameters relTol and absTol",
+               tolerance);
+    }
+    uc_instance_drop_core(inst);
+    inst->startTime = startTime;
+    inst->time = startTime;
+    inst->lastSuccessfulTime = startTime;
+    inst->stopTimeDefined = stopTimeDefined != fmi2False;
+    inst->stopTime = stopTimeDefined ? stopTime : 0.0;
+    return fmi2OK;
+}
+
+fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
+                               fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
+    GUARDED(c, MASK_SETUP_EXPERIMENT, "fmi2SetupExperiment",
+            setup_experiment(inst, toleranceDefined, tolerance, startTime, stopTimeDefined, stopTime));
+}
+
+static fmi2Status enter_initialization_mode(UCInstance* inst) {
+    inst->state = UC_STATE_INIT_MODE;
+    return fmi2OK;
+}
+
+fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
+    GUARDED(c, MASK_ENTER_INIT, "fmi2EnterInitializationMode", enter_initialization_mode(inst));
+}
+
+static fmi2Status exit_initialization_mode(UCInstance* inst) {
+    fmi2Status status = uc_sim_ensure_initialized(inst, "fmi2ExitInitializationMode");
+    if (status == fmi2OK) inst->state = UC_STATE_STEP_COMPLETE;
+    return status;
+}
+
+fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
+    GUARDED(c, MASK_EXIT_INIT, "fmi2ExitInitializationMode", exit_initialization_mode(inst));
+}
+
+static fmi2Status terminate(UCInstance* inst) {
+    inst->state = UC_STATE_TERMINATED; /* the core is kept: values stay readable */
+    return fmi2OK;
+}
+
+fmi2Status fmi2Terminate(fmi2Component c) { GUARDED(c, MASK_TERMINATE, "fmi2Terminate", terminate(inst)); }
+
+static fmi2Status reset(UCInstance* inst) {
+    uc_instance_reset(inst);
+    return fmi2OK;
+}
+
+fmi2Status fmi2Reset(fmi2Component c) { GUARDED(c, MASK_RESET, "fmi2Reset", reset(inst)); }
+
+/* ---- getting and setting values -------------------------------------------------------------------- */
+
+fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[]) {
+    GUARDED(c, MASK_GET, "fmi2GetReal", uc_get_values(inst, vr, nvr, value, UC_TYPE_REAL, "fmi2GetReal"));
+}
+
+fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
+    GUARDED(c, MASK_GET, "fmi2GetInteger",
+            uc_get_values(inst, vr, nvr, value, UC_TYPE_INTEGER, "fmi2GetInteger"));
+}
+
+fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[]) {
+    GUARDED(c, MASK_GET, "fmi2GetBoolean",
+            uc_get_values(inst, vr, nvr, value, UC_TYPE_BOOLEAN, "fmi2GetBoolean"));
+}
+
+/* This FMU has no String variables: any value reference is unknown. */
+static fmi2Status no_string_variables(UCInstance* inst, const fmi2ValueReference vr[], size_t nvr,
+                                      const char* function) {
+    if (nvr == 0) return fmi2OK;
+    uc_log_status(&inst->log, fmi2Error, "%s: unknown value reference %u for type String (there are none)",
+                  function, vr != NULL ? vr[0] : 0u);
+    return fmi2Error;
+}
+
+fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
+    (void)value;
+    GUARDED(c, MASK_GET, "fmi2GetString", no_string_variables(inst, vr, nvr, "fmi2GetString"));
+}
+
+fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
+    GUARDED(c, MASK_SET, "fmi2SetReal", uc_set_values(inst, vr, nvr, value, UC_TYPE_REAL, "fmi2SetReal"));
+}
+
+fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Integer value[]) {
+    GUARDED(c, MASK_SET, "fmi2SetInteger",
+            uc_set_values(inst, vr, nvr, value, UC_TYPE_INTEGER, "fmi2SetInteger"));
+}
+
+fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Boolean value[]) {
+    GUARDED(c, MASK_SET, "fmi2SetBoolean",
+            uc_set_values(inst, vr, nvr, value, UC_TYPE_BOOLEAN, "fmi2SetBoolean"));
+}
+
+fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
+    (void)value;
+    GUARDED(c, MASK_SET, "fmi2SetString", no_string_variables(inst, vr, nvr, "fmi2SetString"));
+}
+
+/* ---- FMU states ----------------------------------------------------------------------------------- */
+
+fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
+    GUARDED(c, MASK_FMU_STATE, "fmi2GetFMUstate", uc_state_get(inst, FMUstate));
+}
+
+fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
+    GUARDED(c, MASK_FMU_STATE, "fmi2SetFMUstate", uc_state_set(inst, FMUstate));
+}
+
+fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
+    GUARDED(c, MASK_FMU_STATE, "fmi2FreeFMUstate", uc_state_free(inst, FMUstate));
+}
+
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t* size) {
+    GUARDED(c, MASK_FMU_STATE, "fmi2SerializedFMUstateSize", uc_state_serialized_size(inst, FMUstate, size));
+}
+
+fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte serializedState[],
+                                 size_t size) {
+    GUARDED(c, MASK_FMU_STATE, "fmi2SerializeFMUstate", uc_state_serialize(inst, FMUstate, serializedState, size));
+}
+
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size,
+                                   fmi2FMUstate* FMUstate) {
+    GUARDED(c, MASK_FMU_STATE, "fmi2DeSerializeFMUstate",
+            uc_state_deserialize(inst, serializedState, size, FMUstate));
+}
+
+/* ---- derivatives ---------------------------------------------------------------------------------- */
+
+static fmi2Status not_provided(UCInstance* inst, const char* function, const char* why) {
+    uc_log_status(&inst->log, fmi2Error, "%s: not provided (%s)", function, why);
+    return fmi2Error;
+}
+
+fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown_ref[], size_t nUnknown,
+                                        const fmi2ValueReference vKnown_ref[], size_t nKnown,
+                                        const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
+    (void)vUnknown_ref, (void)nUnknown, (void)vKnown_ref, (void)nKnown, (void)dvKnown, (void)dvUnknown;
+    GUARDED(c, MASK_DIRECTIONAL_DERIVATIVE, "fmi2GetDirectionalDerivative",
+            not_provided(inst, "fmi2GetDirectionalDerivative", "providesDirectionalDerivative = false"));
+}
+
+fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                                       const fmi2Integer order[], const fmi2Real value[]) {
+    GUARDED(c, MASK_INPUT_DERIVATIVES, "fmi2SetRealInputDerivatives",
+            uc_set_input_derivatives(inst, vr, nvr, order, value));
+}
+
+fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                                        const fmi2Integer order[], fmi2Real value[]) {
+    (void)vr, (void)nvr, (void)order, (void)value;
+    GUARDED(c, MASK_OUTPUT_DERIVATIVES, "fmi2GetRealOutputDerivatives",
+            not_provided(inst, "fmi2GetRealOutputDerivatives", "maxOutputDerivativeOrder = 0"));
+}
+
+/* ---- stepping ------------------------------------------------------------------------------------- */
+
+fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2Real communicationStepSize,
+                      fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
+    (void)noSetFMUStatePriorToCurrentPoint; /* states are independent copies: nothing to release */
+    GUARDED(c, MASK_DO_STEP, "fmi2DoStep", uc_sim_do_step(inst, currentCommunicationPoint, communicationStepSize));
+}
+
+fmi2Status fmi2CancelStep(fmi2Component c) {
+    /* fmi2DoStep is synchronous, so there is never a step in progress to cancel. */
+    GUARDED(c, MASK_CANCEL_STEP, "fmi2CancelStep", fmi2OK);
+}
+
+/* ---- status --------------------------------------------------------------------------------------- */
+
+static fmi2Status status_not_available(UCInstance* inst, const char* function, fmi2StatusKind kind) {
+    uc_log_status(&inst->log, fmi2Discard, "%s: status kind %d is not available", function, (int)kind);
+    return fmi2Discard;
+}
+
+static fmi2Status check_status_pointer(UCInstance* inst, const void* value, const char* function) {
+    if (value != NULL) return fmi2OK;
+    uc_log_status(&inst->log, fmi2Error, "%s: value is NULL", function);
+    return fmi2Error;
+}
+
+static fmi2Status get_real_status(UCInstance* inst, fmi2StatusKind s, fmi2Real* value) {
+    if (check_status_pointer(inst, value, "fmi2GetRealStatus") != fmi2OK) return fmi2Error;
+    if (s != fmi2LastSuccessfulTime) return status_not_available(inst, "fmi2GetRealStatus", s);
+    *value = inst->lastSuccessfulTime;
+    return fmi2OK;
+}
+
+static fmi2Status get_boolean_status(UCInstance* inst, fmi2StatusKind s, fmi2Boolean* value) {
+    if (check_status_pointer(inst, value, "fmi2GetBooleanStatus") != fmi2OK) return fmi2Error;
+    if (s != fmi2Terminated) return status_not_available(inst, "fmi2GetBooleanStatus", s);
+    *value = inst->terminateRequested ? fmi2True : fmi2False;
+    return fmi2OK;
+}
+
+fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status* value) {
+    (void)value;
+    GUARDED(c, MASK_GET_STATUS, "fmi2GetStatus", status_not_available(inst, "fmi2GetStatus", s));
+}
+
+fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real* value) {
+    GUARDED(c, MASK_GET_STATUS, "fmi2GetRealStatus", get_real_status(inst, s, value));
+}
+
+fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer* value) {
+    (void)value;
+    GUARDED(c, MASK_GET_STATUS, "fmi2GetIntegerStatus", status_not_available(inst, "fmi2GetIntegerStatus", s));
+}
+
+fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean* value) {
+    GUARDED(c, MASK_GET_STATUS, "fmi2GetBooleanStatus", get_boolean_status(inst, s, value));
+}
+
+fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String* value) {
+    (void)value;
+    GUARDED(c, MASK_GET_STATUS, "fmi2GetStringStatus", status_not_available(inst, "fmi2GetStringStatus", s));
+}

@@ -1,0 +1,95 @@
+/* instance.c - see instance.h. */
+#include "instance.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static char* copy_string(const char* s) {
+    if (s == NULL) return NULL;
+    size_t n = strlen(s) + 1;
+    char* copy = malloc(n);
+    if (copy != NULL) memcpy(copy, s, n);
+    return copy;
+}
+
+UCInstance* uc_instance_new(const char* instanceName, const char* resourceLocation, fmi2CallbackLogger logger,
+                            fmi2ComponentEnvironment environment, int loggingOn) {
+    UCInstance* inst = calloc(1, sizeof *inst);
+    if (inst == NULL) return NULL;
+    inst->instanceName = copy_string(instanceName);
+    inst->resourceLocation = copy_string(resourceLocation);
+    if (inst->instanceName == NULL || (resourceLocation != NULL && inst->resourceLocation == NULL)) {
+        uc_instance_free(inst);
+        return NULL;
+    }
+    inst->log.callback = logger;
+    inst->log.environment = environment;
+    inst->log.instanceName = inst->instanceName;
+    uc_log_configure(&inst->log, loggingOn, 0, NULL);
+    uc_instance_reset(inst);
+    return inst;
+}
+
+void uc_instance_free(UCInstance* inst) {
+    if (inst == NULL) return;
+    uc_instance_drop_core(inst);
+    free(inst->instanceName);
+    free(inst->resourceLocation);
+    free(inst);
+}
+
+void uc_instance_drop_core(UCInstance* inst) {
+    uc_free(inst->cable);
+    inst->cable = NULL;
+    inst->coreReady = 0;
+}
+
+void uc_instance_reset(UCInstance* inst) {
+    uc_instance_drop_core(inst);
+    inst->state = UC_STATE_INSTANTIATED;
+    inst->startTime = 0.0;
+    inst->stopTimeDefined = 0;
+    inst->stopTime = 0.0;
+    inst->time = 0.0;
+    inst->lastSuccessfulTime = 0.0;
+    inst->terminateRequested = 0;
+    memset(&inst->params, 0, sizeof inst->params); /* deterministic padding bytes in saved states */
+    uc_params_default(&inst->params);
+    memset(&inst->inputs, 0, sizeof inst->inputs);
+    memset(&inst->outputs, 0, sizeof inst->outputs);
+    inst->msg[0] = '\0';
+}
+
+const char* uc_state_name(UCMachineState state) {
+    switch (state) {
+        case UC_STATE_INSTANTIATED: return "instantiated";
+        case UC_STATE_INIT_MODE: return "initializationMode";
+        case UC_STATE_STEP_COMPLETE: return "stepComplete";
+        case UC_STATE_STEP_IN_PROGRESS: return "stepInProgress";
+        case UC_STATE_STEP_FAILED: return "stepFailed";
+        case UC_STATE_STEP_CANCELED: return "stepCanceled";
+        case UC_STATE_TERMINATED: return "terminated";
+        case UC_STATE_ERROR: return "error";
+        default: return "fatal";
+    }
+}
+
+fmi2Status uc_instance_check(UCInstance* inst, unsigned int allowedStates, const char* function) {
+    if (inst == NULL) return fmi2Error;
+    if ((inst->state & allowedStates) != 0) return fmi2OK;
+    uc_log_status(&inst->log, fmi2Error, "%s: illegal call sequence (called in state %s)", function,
+                  uc_state_name(inst->state));
+    return fmi2Error;
+}
+
+fmi2Status uc_worst(fmi2Status a, fmi2Status b) { return a > b ? a : b; }
+
+fmi2Status uc_instance_finish(UCInstance* inst, fmi2Status status) {
+    if (inst == NULL) return status;
+    if (status == fmi2Fatal) {
+        inst->state = UC_STATE_FATAL;
+    } else if (status == fmi2Error && inst->state != UC_STATE_FATAL) {
+        inst->state = UC_STATE_ERROR;
+    }
+    return status;
+}

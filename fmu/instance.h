@@ -1,0 +1,72 @@
+/*
+ * instance.h - one FMU instance: everything it owns (no globals), its state machine (FMI 2.0 section
+ * 4.2.4, FMI-CHECKLIST 2.3) and the worst-status-wins rule.
+ */
+#ifndef UNDERWATERCABLE_FMU_INSTANCE_H
+#define UNDERWATERCABLE_FMU_INSTANCE_H
+
+#include "cable_api.h"
+#include "fmi2FunctionTypes.h"
+#include "logging.h"
+
+/* Machine states as bits, so that each function declares the set of states it may be called in. */
+typedef enum {
+    UC_STATE_INSTANTIATED = 1 << 0,
+    UC_STATE_INIT_MODE = 1 << 1,
+    UC_STATE_STEP_COMPLETE = 1 << 2,
+    UC_STATE_STEP_IN_PROGRESS = 1 << 3,
+    UC_STATE_STEP_FAILED = 1 << 4,
+    UC_STATE_STEP_CANCELED = 1 << 5,
+    UC_STATE_TERMINATED = 1 << 6,
+    UC_STATE_ERROR = 1 << 7,
+    UC_STATE_FATAL = 1 << 8
+} UCMachineState;
+
+#define UC_MSG_SIZE 512
+
+typedef struct UCInstance {
+    char* instanceName;          /* copied in fmi2Instantiate */
+    char* resourceLocation;      /* copied; may be NULL */
+    UCLogger log;                /* the callback pointers copied from fmi2CallbackFunctions */
+    UCMachineState state;
+
+    double startTime;            /* from fmi2SetupExperiment */
+    int stopTimeDefined;
+    double stopTime;
+    double time;                 /* the FMU's own time: startTime, then the end of the last step */
+    double lastSuccessfulTime;
+    int terminateRequested;      /* fmi2GetBooleanStatus(fmi2Terminated) */
+
+    UCParams params;
+    UCInputs inputs;
+    UCOutputs outputs;           /* valid when coreReady */
+
+    UCCable* cable;              /* NULL until initialization is computed */
+    int coreReady;               /* cable is initialized from the current params/inputs (or stepped since) */
+
+    char msg[UC_MSG_SIZE];       /* scratch for messages of the core */
+} UCInstance;
+
+UCInstance* uc_instance_new(const char* instanceName, const char* resourceLocation, fmi2CallbackLogger logger,
+                            fmi2ComponentEnvironment environment, int loggingOn);
+void uc_instance_free(UCInstance* inst);
+
+/* Back to "instantiated" with all start values (frees the core); logging settings are kept. */
+void uc_instance_reset(UCInstance* inst);
+
+/* Frees the core and marks the initialization as not computed (a value it depends on has changed). */
+void uc_instance_drop_core(UCInstance* inst);
+
+/* fmi2OK if inst->state is in allowedStates; otherwise logs "<function>: illegal call sequence ..." and
+ * returns fmi2Error. Also rejects a NULL instance (fmi2Error, nothing to log to). */
+fmi2Status uc_instance_check(UCInstance* inst, unsigned int allowedStates, const char* function);
+
+/* The worst of two statuses. */
+fmi2Status uc_worst(fmi2Status a, fmi2Status b);
+
+/* Applies the status to the machine: fmi2Error -> error state, fmi2Fatal -> fatal. Returns status. */
+fmi2Status uc_instance_finish(UCInstance* inst, fmi2Status status);
+
+const char* uc_state_name(UCMachineState state);
+
+#endif /* UNDERWATERCABLE_FMU_INSTANCE_H */

@@ -1,0 +1,85 @@
+/* simulation.c - see simulation.h. */
+#include "simulation.h"
+
+#include <math.h>
+#include <string.h>
+
+static double time_tolerance(double t) { return UC_TIME_TOLERANCE * fmax(1.0, fabs(t)); }
+
+static void log_solver_statistics(const UCInstance* inst, const char* when) {
+    const UCOutputs* o = &inst->outputs;
+    uc_log(&inst->log, fmi2OK, UC_LOG_SOLVER,
+           "%s t = %.9g: steps %.0f, residual evaluations %.0f, Jacobian evaluations %.0f, "
+           "nonlinear failures %.0f, error test failures %.0f",
+           when, inst->time, o->nSteps, o->nResidualEvals, o->nJacobianEvals, o->nNonlinearFailures,
+           o->nErrorTestFailures);
+}
+
+static fmi2Status fail_with_core_message(UCInstance* inst, const char* function, const char* what) {
+    uc_log_status(&inst->log, fmi2Error, "%s: %s: %s", function, what,
+                  inst->msg[0] != '\0' ? inst->msg : "(no reason given)");
+    uc_instance_drop_core(inst);
+    return fmi2Error;
+}
+
+fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function) {
+    if (inst->coreReady) return fmi2OK;
+    uc_instance_drop_core(inst);
+    inst->msg[0] = '\0';
+    if (uc_params_check(&inst->params, inst->msg, sizeof inst->msg) != 0) {
+        return fail_with_core_message(inst, function, "invalid parameter");
+    }
+    inst->cable = uc_create(&inst->params, inst->msg, sizeof inst->msg);
+    if (inst->cable == NULL) return fail_with_core_message(inst, function, "cannot create the cable model");
+    if (uc_initialize(inst->cable, inst->startTime, &inst->inputs, inst->msg, sizeof inst->msg) != 0) {
+        return fail_with_core_message(inst, function, "initialization failed");
+    }
+    uc_get_outputs(inst->cable, &inst->outputs);
+    inst->time = inst->startTime;
+    inst->lastSuccessfulTime = inst->startTime;
+    inst->coreReady = 1;
+    uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: initialized at t = %.9g, towTension = %.6g N", function,
+           inst->time, inst->outputs.towTension);
+    log_solver_statistics(inst, "initialization");
+    return fmi2OK;
+}
+
+static fmi2Status check_step_arguments(UCInstance* inst, double tc, double h) {
+    if (!(fabs(tc - inst->time) <= time_tolerance(inst->time))) {
+        uc_log_status(&inst->log, fmi2Error,
+                      "fmi2DoStep: currentCommunicationPoint = %.17g but the FMU is at t = %.17g "
+                      "(tolerance %g)",
+                      tc, inst->time, time_tolerance(inst->time));
+        return fmi2Error;
+    }
+    if (!(h > 0.0) || !isfinite(h)) {
+        uc_log_status(&inst->log, fmi2Error, "fmi2DoStep: communicationStepSize = %g must be positive and finite",
+                      h);
+        return fmi2Error;
+    }
+    if (inst->stopTimeDefined && tc + h > inst->stopTime + time_tolerance(inst->stopTime)) {
+        uc_log_status(&inst->log, fmi2Error, "fmi2DoStep: step to t = %.17g goes past stopTime = %.17g", tc + h,
+                      inst->stopTime);
+        return fmi2Error;
+    }
+    return fmi2OK;
+}
+
+fmi2Status uc_sim_do_step(UCInstance* inst, double tc, double h) {
+    fmi2Status status = check_step_arguments(inst, tc, h);
+    if (status != fmi2OK) return status;
+    inst->msg[0] = '\0';
+    /* The FMU's own time, not tc: the master's tc carries its round-off (FMI-CHECKLIST 2.3). */
+    if (uc_do_step(inst->cable, inst->time, h, &inst->inputs, inst->msg, sizeof inst->msg) != 0) {
+        uc_log_status(&inst->log, fmi2Error, "fmi2DoStep: step from t = %.17g to %.17g failed: %s", inst->time,
+                      inst->time + h, inst->msg[0] != '\0' ? inst->msg : "(no reason given)");
+        return fmi2Error;
+    }
+    inst->time = uc_time(inst->cable);
+    inst->lastSuccessfulTime = inst->time;
+    uc_get_outputs(inst->cable, &inst->outputs);
+    /* Input derivatives apply to one step only (fmi2SetRealInputDerivatives before each fmi2DoStep). */
+    memset(inst->inputs.towAcceleration, 0, sizeof inst->inputs.towAcceleration);
+    log_solver_statistics(inst, "fmi2DoStep");
+    return fmi2OK;
+}

@@ -1,0 +1,21 @@
+/*
+ * simulation.h - the adapter's calls into the physics core (cable_api.h): computing the initialization
+ * from the current parameters and inputs, and one communication step with the FMI time checks.
+ */
+#ifndef UNDERWATERCABLE_FMU_SIMULATION_H
+#define UNDERWATERCABLE_FMU_SIMULATION_H
+
+#include "instance.h"
+
+/* Relative/absolute tolerance on communication points, as in the Reference FMUs (masters accumulate
+ * round-off in tc; FMI-CHECKLIST 2.3). */
+#define UC_TIME_TOLERANCE 1e-5
+
+/* Computes the initialization (uc_params_check, uc_create, uc_initialize at startTime, outputs) unless it
+ * is already cached for the current parameters and inputs. Errors are logged naming `function`. */
+fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function);
+
+/* fmi2DoStep after the state check: time checks, uc_do_step from the FMU's own time, outputs. */
+fmi2Status uc_sim_do_step(UCInstance* inst, double currentCommunicationPoint, double communicationStepSize);
+
+#endif /* UNDERWATERCABLE_FMU_SIMULATION_H */

@@ -1,0 +1,138 @@
+/* value_access.c - see value_access.h. */
+#include "value_access.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "simulation.h"
+
+static const UCVariable* find_or_log(UCInstance* inst, fmi2ValueReference vr, UCVarType type,
+                                     const char* function) {
+    const UCVariable* v = uc_variable_find(vr, type);
+    if (v == NULL) {
+        uc_log_status(&inst->log, fmi2Error, "%s: unknown value reference %u for type %s", function, vr,
+                      uc_type_name(type));
+    }
+    return v;
+}
+
+static fmi2Status check_arrays(UCInstance* inst, const void* vr, size_t nvr, const void* values,
+                               const char* function) {
+    if (nvr > 0 && (vr == NULL || values == NULL)) {
+        uc_log_status(&inst->log, fmi2Error, "%s: vr or value is NULL with nvr = %zu", function, nvr);
+        return fmi2Error;
+    }
+    return fmi2OK;
+}
+
+static size_t value_size(UCVarType type) { return type == UC_TYPE_REAL ? sizeof(fmi2Real) : sizeof(fmi2Integer); }
+
+/* Outputs during initialization mode are the InitialUnknowns: compute the initialization on demand. */
+static fmi2Status ensure_readable(UCInstance* inst, const UCVariable* v, const char* function) {
+    if (v->causality != UC_CAUSALITY_OUTPUT || inst->state != UC_STATE_INIT_MODE) return fmi2OK;
+    return uc_sim_ensure_initialized(inst, function);
+}
+
+fmi2Status uc_get_values(UCInstance* inst, const fmi2ValueReference vr[], size_t nvr, void* values, UCVarType type,
+                         const char* function) {
+    if (check_arrays(inst, vr, nvr, values, function) != fmi2OK) return fmi2Error;
+    for (size_t i = 0; i < nvr; ++i) {
+        const UCVariable* v = find_or_log(inst, vr[i], type, function);
+        if (v == NULL || ensure_readable(inst, v, function) != fmi2OK) return fmi2Error;
+        memcpy((char*)values + i * value_size(type),
+               uc_variable_address_const(v, &inst->params, &inst->inputs, &inst->outputs), value_size(type));
+    }
+    return fmi2OK;
+}
+
+static fmi2Status check_settable(UCInstance* inst, const UCVariable* v, const char* function) {
+    if (v->causality == UC_CAUSALITY_OUTPUT) {
+        uc_log_status(&inst->log, fmi2Error, "%s: %s is an output and cannot be set", function, v->name);
+        return fmi2Error;
+    }
+    if (v->causality == UC_CAUSALITY_PARAMETER && inst->state == UC_STATE_STEP_COMPLETE) {
+        uc_log_status(&inst->log, fmi2Error,
+                      "%s: %s is a fixed parameter and cannot be changed after initialization", function, v->name);
+        return fmi2Error;
+    }
+    return fmi2OK;
+}
+
+static fmi2Status check_real_value(UCInstance* inst, const UCVariable* v, double value, const char* function) {
+    if (isfinite(value)) return fmi2OK;
+    uc_log_status(&inst->log, fmi2Error, "%s: %s = %g is not a finite number", function, v->name, value);
+    return fmi2Error;
+}
+
+/* Stores one value; a changed parameter or input before initialization invalidates the cached one. */
+static void store_value(UCInstance* inst, const UCVariable* v, const void* value) {
+    void* target = uc_variable_address(v, &inst->params, &inst->inputs, &inst->outputs);
+    if (memcmp(target, value, value_size(v->type)) == 0) return;
+    memcpy(target, value, value_size(v->type));
+    if (inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
+}
+
+fmi2Status uc_set_values(UCInstance* inst, const fmi2ValueReference vr[], size_t nvr, const void* values,
+                         UCVarType type, const char* function) {
+    if (check_arrays(inst, vr, nvr, values, function) != fmi2OK) return fmi2Error;
+    for (size_t i = 0; i < nvr; ++i) {
+        const void* value = (const char*)values + i * value_size(type);
+        const UCVariable* v = find_or_log(inst, vr[i], type, function);
+        if (v == NULL || check_settable(inst, v, function) != fmi2OK) return fmi2Error;
+        if (type == UC_TYPE_REAL) {
+            if (check_real_value(inst, v, *(const fmi2Real*)value, function) != fmi2OK) return fmi2Error;
+            store_value(inst, v, value);
+        } else if (type == UC_TYPE_BOOLEAN) {
+            fmi2Integer normalized = *(const fmi2Boolean*)value != fmi2False; /* any non-zero is true */
+            store_value(inst, v, &normalized);
+        } else {
+            store_value(inst, v, value);
+        }
+    }
+    return fmi2OK;
+}
+
+/* Component 0..2 if offset lies in the double[3] at base, else -1. */
+static int component_of(size_t offset, size_t base) {
+    if (offset < base || offset >= base + 3 * sizeof(double)) return -1;
+    return (int)((offset - base) / sizeof(double));
+}
+
+static fmi2Status set_one_derivative(UCInstance* inst, const UCVariable* v, int order, double value) {
+    const char* function = "fmi2SetRealInputDerivatives";
+    int velocity = component_of(v->offset, offsetof(UCInputs, towVelocity));
+    int position = component_of(v->offset, offsetof(UCInputs, tow));
+    if (v->causality != UC_CAUSALITY_INPUT) {
+        uc_log_status(&inst->log, fmi2Error, "%s: %s is not an input", function, v->name);
+        return fmi2Error;
+    }
+    if (check_real_value(inst, v, value, function) != fmi2OK) return fmi2Error;
+    if ((velocity >= 0 && order == 1) || (position >= 0 && order == 2)) {
+        inst->inputs.towAcceleration[velocity >= 0 ? velocity : position] = value;
+        return fmi2OK;
+    }
+    if (order == 1) {
+        uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: derivative of %s ignored (held constant over a step%s)",
+               function, v->name, position >= 0 ? "; the tow velocity is the input tow.v*" : "");
+        return fmi2OK;
+    }
+    uc_log_status(&inst->log, fmi2Error,
+                  "%s: derivative of order %d of %s is not supported (order 1 of tow.vx/vy/vz, order 2 of "
+                  "tow.x/y/z, order 1 of other inputs)",
+                  function, order, v->name);
+    return fmi2Error;
+}
+
+fmi2Status uc_set_input_derivatives(UCInstance* inst, const fmi2ValueReference vr[], size_t nvr,
+                                    const fmi2Integer order[], const fmi2Real values[]) {
+    const char* function = "fmi2SetRealInputDerivatives";
+    if (check_arrays(inst, vr, nvr, values, function) != fmi2OK ||
+        check_arrays(inst, vr, nvr, order, function) != fmi2OK) {
+        return fmi2Error;
+    }
+    for (size_t i = 0; i < nvr; ++i) {
+        const UCVariable* v = find_or_log(inst, vr[i], UC_TYPE_REAL, function);
+        if (v == NULL || set_one_derivative(inst, v, order[i], values[i]) != fmi2OK) return fmi2Error;
+    }
+    return fmi2OK;
+}

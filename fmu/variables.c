@@ -1,0 +1,148 @@
+/* variables.c - the value-reference table (see variables.h). Keep it in the order of modelDescription.xml. */
+#include "variables.h"
+
+#include <stdlib.h>
+
+#define PAR(vr, name, type, field) {vr, name, UC_TYPE_##type, UC_CAUSALITY_PARAMETER, offsetof(UCParams, field)}
+#define INP(vr, name, field) {vr, name, UC_TYPE_REAL, UC_CAUSALITY_INPUT, offsetof(UCInputs, field)}
+#define OUT(vr, name, field) {vr, name, UC_TYPE_REAL, UC_CAUSALITY_OUTPUT, offsetof(UCOutputs, field)}
+
+/* One output per station k = 1..UC_NUM_STATIONS with consecutive value references from vr0. */
+#define STATION(vr0, prefix, field, k) OUT((vr0) + (k)-1, prefix "[" #k "]", field[(k)-1])
+#define STATIONS(vr0, prefix, field)                                                                         \
+    STATION(vr0, prefix, field, 1), STATION(vr0, prefix, field, 2), STATION(vr0, prefix, field, 3),          \
+        STATION(vr0, prefix, field, 4), STATION(vr0, prefix, field, 5), STATION(vr0, prefix, field, 6),      \
+        STATION(vr0, prefix, field, 7), STATION(vr0, prefix, field, 8), STATION(vr0, prefix, field, 9),      \
+        STATION(vr0, prefix, field, 10), STATION(vr0, prefix, field, 11), STATION(vr0, prefix, field, 12),   \
+        STATION(vr0, prefix, field, 13), STATION(vr0, prefix, field, 14), STATION(vr0, prefix, field, 15),   \
+        STATION(vr0, prefix, field, 16), STATION(vr0, prefix, field, 17), STATION(vr0, prefix, field, 18),   \
+        STATION(vr0, prefix, field, 19), STATION(vr0, prefix, field, 20), STATION(vr0, prefix, field, 21)
+
+#if UC_NUM_STATIONS != 21
+#error "STATIONS() and modelDescription.xml are written for UC_NUM_STATIONS == 21"
+#endif
+
+static const UCVariable kVariables[] = {
+    PAR(1, "length", REAL, length),
+    PAR(2, "diameter", REAL, diameter),
+    PAR(3, "massPerLength", REAL, massPerLength),
+    PAR(4, "EA", REAL, EA),
+    PAR(5, "EI", REAL, EI),
+    PAR(6, "axialDamping", REAL, axialDamping),
+    PAR(7, "Cdn", REAL, Cdn),
+    PAR(8, "Cdt", REAL, Cdt),
+    PAR(9, "Can", REAL, Can),
+    PAR(10, "Cat", REAL, Cat),
+    PAR(11, "waterDensity", REAL, waterDensity),
+    PAR(12, "gravity", REAL, gravity),
+    PAR(13, "nElements", INTEGER, nElements),
+    PAR(14, "relTol", REAL, relTol),
+    PAR(15, "absTol", REAL, absTol),
+    PAR(16, "bottomEnd", INTEGER, bottomEnd),
+    PAR(17, "topEnd", INTEGER, topEnd),
+    PAR(18, "topTangent.x", REAL, topTangent[0]),
+    PAR(19, "topTangent.y", REAL, topTangent[1]),
+    PAR(20, "topTangent.z", REAL, topTangent[2]),
+    PAR(21, "anchor.x", REAL, anchor[0]),
+    PAR(22, "anchor.y", REAL, anchor[1]),
+    PAR(23, "anchor.z", REAL, anchor[2]),
+    PAR(24, "body.mass", REAL, bodyMass),
+    PAR(25, "body.volume", REAL, bodyVolume),
+    PAR(26, "body.addedMass", REAL, bodyAddedMass),
+    PAR(27, "body.CdA", REAL, bodyCdA),
+    PAR(28, "initMode", INTEGER, initMode),
+    PAR(29, "initialDirection.x", REAL, initialDirection[0]),
+    PAR(30, "initialDirection.y", REAL, initialDirection[1]),
+    PAR(31, "initialDirection.z", REAL, initialDirection[2]),
+    PAR(32, "enableBending", BOOLEAN, enableBending),
+    PAR(33, "enableAddedMass", BOOLEAN, enableAddedMass),
+
+    INP(101, "tow.x", tow[0]),
+    INP(102, "tow.y", tow[1]),
+    INP(103, "tow.z", tow[2]),
+    INP(104, "tow.vx", towVelocity[0]),
+    INP(105, "tow.vy", towVelocity[1]),
+    INP(106, "tow.vz", towVelocity[2]),
+    INP(107, "endLoad.x", endLoad[0]),
+    INP(108, "endLoad.y", endLoad[1]),
+    INP(109, "endLoad.z", endLoad[2]),
+    INP(110, "current.x", current[0]),
+    INP(111, "current.y", current[1]),
+
+    OUT(201, "towForce.x", towForce[0]),
+    OUT(202, "towForce.y", towForce[1]),
+    OUT(203, "towForce.z", towForce[2]),
+    OUT(204, "towTension", towTension),
+    OUT(205, "endForce.x", endForce[0]),
+    OUT(206, "endForce.y", endForce[1]),
+    OUT(207, "endForce.z", endForce[2]),
+    OUT(208, "endTension", endTension),
+    OUT(209, "endPosition.x", endPosition[0]),
+    OUT(210, "endPosition.y", endPosition[1]),
+    OUT(211, "endPosition.z", endPosition[2]),
+    OUT(212, "endVelocity.x", endVelocity[0]),
+    OUT(213, "endVelocity.y", endVelocity[1]),
+    OUT(214, "endVelocity.z", endVelocity[2]),
+    STATIONS(301, "shape.x", shapeX),
+    STATIONS(401, "shape.y", shapeY),
+    STATIONS(501, "shape.z", shapeZ),
+    STATIONS(601, "tension", tension),
+    OUT(701, "minTension", minTension),
+    OUT(702, "maxCurvature", maxCurvature),
+    OUT(703, "maxBendingMoment", maxBendingMoment),
+    OUT(801, "solver.nSteps", nSteps),
+    OUT(802, "solver.nResidualEvals", nResidualEvals),
+    OUT(803, "solver.nJacobianEvals", nJacobianEvals),
+    OUT(804, "solver.nNonlinearFailures", nNonlinearFailures),
+    OUT(805, "solver.nErrorTestFailures", nErrorTestFailures),
+};
+
+#define N_VARIABLES (sizeof(kVariables) / sizeof(kVariables[0]))
+
+const UCVariable* uc_variables(size_t* count) {
+    *count = N_VARIABLES;
+    return kVariables;
+}
+
+static int compare_vr(const void* key, const void* element) {
+    unsigned int vr = *(const unsigned int*)key;
+    unsigned int other = ((const UCVariable*)element)->vr;
+    return (vr > other) - (vr < other);
+}
+
+/* Value references are unique over all types (a stricter rule than FMI's per-type uniqueness). */
+const UCVariable* uc_variable_find(unsigned int vr, UCVarType type) {
+    const UCVariable* v = bsearch(&vr, kVariables, N_VARIABLES, sizeof(kVariables[0]), compare_vr);
+    return (v != NULL && v->type == type) ? v : NULL;
+}
+
+void* uc_variable_address(const UCVariable* v, UCParams* p, UCInputs* in, UCOutputs* out) {
+    return (void*)uc_variable_address_const(v, p, in, out);
+}
+
+const void* uc_variable_address_const(const UCVariable* v, const UCParams* p, const UCInputs* in,
+                                      const UCOutputs* out) {
+    switch (v->causality) {
+        case UC_CAUSALITY_PARAMETER: return (const char*)p + v->offset;
+        case UC_CAUSALITY_INPUT: return (const char*)in + v->offset;
+        default: return (const char*)out + v->offset;
+    }
+}
+
+const char* uc_type_name(UCVarType t) {
+    switch (t) {
+        case UC_TYPE_REAL: return "Real";
+        case UC_TYPE_INTEGER: return "Integer";
+        default: return "Boolean";
+    }
+}
+
+const char* uc_causality_name(UCCausality c) {
+    switch (c) {
+        case UC_CAUSALITY_PARAMETER: return "parameter";
+        case UC_CAUSALITY_INPUT: return "input";
+        default: return "output";
+    }
+}
+
+const char* uc_variability_name(UCCausality c) { return c == UC_CAUSALITY_PARAMETER ? "fixed" : "continuous"; }

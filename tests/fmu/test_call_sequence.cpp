@@ -1,0 +1,150 @@
+// Calls outside the states the FMI 2.0 state machine allows them in (section 4.2.4) return fmi2Error and
+// log "illegal call sequence"; rejected arguments name the variable. After an error the instance only
+// accepts reset, free, state restore and debug calls (FMI-CHECKLIST 2.3, 2.4).
+#include <gtest/gtest.h>
+
+#include "fmu_harness.h"
+
+TEST(CallSequence, DoStepBeforeInitializationIsIllegal) {
+    Instance inst;
+    EXPECT_EQ(fmi().DoStep(inst.c, 0.0, 0.5, fmi2True), fmi2Error);
+    EXPECT_TRUE(inst.log.contains("illegal call sequence")) << inst.log.all();
+}
+
+TEST(CallSequence, ExitInitializationWithoutEnterIsIllegal) {
+    Instance inst;
+    ASSERT_EQ(inst.setup(), fmi2OK);
+    EXPECT_EQ(fmi().ExitInitializationMode(inst.c), fmi2Error);
+    EXPECT_TRUE(inst.log.contains("illegal call sequence")) << inst.log.all();
+}
+
+TEST(CallSequence, SetupExperimentAfterInitializationIsIllegal) {
+    Instance inst;
+    ASSERT_EQ(inst.initialize(), fmi2OK);
+    EXPECT_EQ(inst.setup(), fmi2Error);
+    EXPECT_TRUE(inst.log.contains("illegal call sequence")) << inst.log.all();
+}
+
+TEST(CallSequence, FixedParameterCannotBeSetAfterInitialization) {
+    Instance inst;
+    ASSERT_EQ(inst.initialize(), fmi2OK);
+    EXPECT_EQ(inst.setReal("length", 200.0), fmi2Error);
+    EXPECT_TRUE(inst.log.contains("length")) << inst.log.all();
+}
+
+TEST(CallSequence, FixedIntegerParameterCannotBeSetAfterInitialization) {
+    Instance inst;
+    ASSERT_EQ(inst.initialize(), fmi2OK);
+    EXPECT_EQ(inst.setInteger("nElements", 10), fmi2Error);
+    EXPECT_TRUE(inst.log.contains("nElements")) << inst.log.all();
+}
+
+TEST(CallSequence, InputsCanBeSetBetweenSteps) {
+    Instance inst;
+    ASSERT_EQ(inst.initialize(), fmi2OK);
+    EXPECT_EQ(inst.setReal("tow.vx", 1.2), fmi2OK);
+    double t = 0.0;
+    EXPECT_EQ(inst.steps(1, 0.5, &t), fmi2OK) << inst.log.all();
+}
+
+TEST(CallSequence, DoStepAtTheWrongTimeIsAnError) {
+    Instance inst;
+    ASSERT_EQ(inst.initialize(), fmi2OK);
+    EXPECT_EQ(fmi().DoStep(inst.c, 1.0, 0.5, fmi2True), fmi2Error);
+    EXPECT_TRUE(inst.log.contains("currentCommunicationPoint")) << inst.log.all();
+}
+
+TEST(CallSequence, NonPositiveStepSizeIsAnError) {
+    for (double h : {0.0, -0.5}) {
+        Instance inst;
+        ASSERT_EQ(inst.initialize(), fmi2OK);
+        EXPECT_EQ(fmi().DoStep(inst.c, 0.0, h, fmi2True), fmi2Error);
+        EXPECT_TRUE(inst.log.contains("communicationStepSize")) << inst.log.all();
+    }
+}
+
+TEST(CallSequence, UnknownValueReferenceIsAnError) {
+    Instance inst;
+    const fmi2ValueReference vr = 424242;
+    double value = 1.0;
+    EXPECT_EQ(fmi().SetReal(inst.c, &vr, 1, &value), fmi2Error);
+    EXPECT_TRUE(inst.log.contains("424242")) << inst.log.all();
+}
+
+TEST(CallSequence, ValueReferenceOfAnotherTypeIsAnError) {
+    Instance inst;
+    const fmi2ValueReference vr = vr_of("nElements");
+    double value = 1.0;
+    EXPECT_EQ(fmi().SetReal(inst.c, &vr, 1, &value), fmi2Error);
+}
+
+TEST(CallSequence, OutputsCannotBeSet) {
+    Instance inst;
+    EXPECT_EQ(inst.setReal("towTension", 1.0), fmi2Error);
+    EXPECT_TRUE(inst.log.contains("towTension")) << inst.log.all();
+}
+
+TEST(CallSequence, TerminateIsOnlyAllowedAfterInitialization) {
+    Instance inst;
+    EXPECT_EQ(fmi().Terminate(inst.c), fmi2Error);
+    EXPECT_TRUE(inst.log.contains("illegal call sequence")) << inst.log.all();
+}
+
+TEST(CallSequence, DoStepAfterTerminateIsIllegal) {
+    Instance inst;
+    ASSERT_EQ(inst.initialize(), fmi2OK);
+    ASSERT_EQ(fmi().Terminate(inst.c), fmi2OK);
+    EXPECT_EQ(fmi().DoStep(inst.c, 0.0, 0.5, fmi2True), fmi2Error);
+    EXPECT_TRUE(inst.log.contains("illegal call sequence")) << inst.log.all();
+}
+
+TEST(CallSequence, ErrorStateAcceptsOnlyResetFreeAndStateRestore) {
+    Instance inst;
+    set_tow_inputs(inst);
+    ASSERT_EQ(inst.initialize(), fmi2OK);
+    fmi2FMUstate state = nullptr;
+    ASSERT_EQ(fmi().GetFMUstate(inst.c, &state), fmi2OK);
+    ASSERT_EQ(fmi().DoStep(inst.c, 7.0, 0.5, fmi2True), fmi2Error);  // into the error state
+    EXPECT_EQ(fmi().DoStep(inst.c, 0.0, 0.5, fmi2True), fmi2Error);
+    EXPECT_EQ(fmi().Terminate(inst.c), fmi2Error);
+    EXPECT_EQ(fmi().SetDebugLogging(inst.c, fmi2True, 0, nullptr), fmi2OK);
+    EXPECT_EQ(fmi().SetFMUstate(inst.c, state), fmi2OK) << inst.log.all();
+    double t = 0.0;
+    EXPECT_EQ(inst.steps(1, 0.5, &t), fmi2OK) << inst.log.all();
+    EXPECT_EQ(fmi().FreeFMUstate(inst.c, &state), fmi2OK);
+    EXPECT_EQ(state, nullptr);
+    ASSERT_EQ(fmi().DoStep(inst.c, 9.0, 0.5, fmi2True), fmi2Error);
+    EXPECT_EQ(fmi().Reset(inst.c), fmi2OK);
+    EXPECT_EQ(inst.initialize(), fmi2OK) << inst.log.all();
+}
+
+TEST(CallSequence, UnknownLogCategoryIsAnError) {
+    Instance inst;
+    const fmi2String categories[] = {"logEvents", "logNonsense"};
+    EXPECT_EQ(fmi().SetDebugLogging(inst.c, fmi2True, 2, categories), fmi2Error);
+    EXPECT_TRUE(inst.log.contains("logNonsense")) << inst.log.all();
+}
+
+TEST(Logging, DebugCategoriesOnlyWhenEnabled) {
+    Instance quiet("quiet", false);
+    ASSERT_EQ(quiet.initialize(), fmi2OK);
+    EXPECT_TRUE(quiet.log.lines.empty()) << quiet.log.all();
+    EXPECT_EQ(fmi().DoStep(quiet.c, 5.0, 0.5, fmi2True), fmi2Error);
+    EXPECT_TRUE(quiet.log.contains("logStatusError: ")) << "errors are always logged";
+
+    Instance selective("selective", true);
+    const fmi2String categories[] = {"logSolver"};
+    ASSERT_EQ(fmi().SetDebugLogging(selective.c, fmi2True, 1, categories), fmi2OK);
+    selective.log.lines.clear();  // fmi2Instantiate logged under logEvents while all categories were on
+    ASSERT_EQ(selective.initialize(), fmi2OK);
+    EXPECT_TRUE(selective.log.contains("logSolver: ")) << selective.log.all();
+    EXPECT_FALSE(selective.log.contains("logEvents: ")) << selective.log.all();
+}
+
+TEST(Logging, PercentAndHashAreEscapedForTheImportersFormatting) {
+    Instance inst("100% #1 cable");
+    const fmi2String categories[] = {"log%s#"};
+    EXPECT_EQ(fmi().SetDebugLogging(inst.c, fmi2True, 1, categories), fmi2Error);
+    // After printf formatting "%%" is "%"; "##" stays for importers that expand "#<vr>#" references.
+    EXPECT_TRUE(inst.log.contains("\"log%s##\"")) << inst.log.all();
+}
