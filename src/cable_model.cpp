@@ -13,10 +13,20 @@ constexpr int kLoadQuadraturePoints = 3;
 }  // namespace
 
 AxialProps CableModel::scaled_axial(const Loads& loads) const {
-    return AxialProps{axial_.EA * loads.axialStiffnessScale, axial_.damping};
+    return AxialProps{axial_.EA, axial_.damping, loads.axialStiffnessScale};
 }
 
 namespace {
+
+// Membrane locking (DESIGN.md section 3): the axial strain of an element is projected onto
+// Legendre modes (mean, linear, quadratic) in the element. The mean mode carries the full EA.
+// At full EA the linear and quadratic modes compete with bending and lock (elastica tip error
+// 1e-3 L at 10 elements); without any stiffness they leave the element's axial modes free
+// (singular without bending) and cannot carry a tension gradient. At 1 % of EA they carry the
+// distributed axial loads (the strain variation inside an element is then 100 times the
+// physical one, a sub-millimetre effect on the shape of a tow cable; the mean strain and every
+// force stay exact) and the elastica tip error at 10 elements is ~5e-5 L.
+constexpr double kHigherStrainModeWeight = 0.01;
 
 Vec3 unit(const double v[3]) {
     Vec3 d(v[0], v[1], v[2]);
@@ -55,7 +65,9 @@ void TowTrajectory::evaluate(double t, Vec3& p, Vec3& v, Vec3& a) const {
 
 CableModel::CableModel(const UCParams& params)
     : params_(params), nElements_(params.nElements) {
-    tables_ = make_element_tables(params.length / nElements_, kLoadQuadraturePoints);
+    EI_ = params.enableBending ? params.EI : 0.0;
+    tables_ = make_element_tables(params.length / nElements_, kLoadQuadraturePoints, 3);
+    tables_.axialModeWeight[1] = tables_.axialModeWeight[2] = kHigherStrainModeWeight;
     fluid_.rho = params.waterDensity;
     fluid_.gravity = params.gravity;
     fluid_.massPerLength = params.massPerLength;
@@ -68,7 +80,6 @@ CableModel::CableModel(const UCParams& params)
     fluid_.addedMass = params.enableAddedMass != 0;
     axial_.EA = params.EA;
     axial_.damping = params.axialDamping;
-    EI_ = params.enableBending ? params.EI : 0.0;
     topTangent_ = params.topEnd == UC_TOP_CLAMPED ? unit(params.topTangent) : Vec3(0, 0, -1);
     anchor_ = Vec3(params.anchor[0], params.anchor[1], params.anchor[2]);
 

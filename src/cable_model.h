@@ -32,8 +32,9 @@ struct Loads {
     TowTrajectory tow;
     Vec3 current = Vec3::Zero();
     Vec3 endLoad = Vec3::Zero();
-    // Multiplies EA (static solver only: equilibrium is first found with a soft cable, whose
-    // large rotations do not turn into huge axial residuals, then stiffened to the real EA).
+    // Caps the axial stiffness factor of every strain mode (static solver only: equilibrium is
+    // first found on a soft cable, whose large rotations do not turn into huge axial residuals,
+    // then stiffened to the real EA).
     double axialStiffnessScale = 1.0;
 };
 

@@ -1,6 +1,7 @@
 // hermite_element.cpp - cubic Hermite element: shape functions, quadrature, axial and bending terms.
 #include "hermite_element.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace uc {
@@ -55,13 +56,18 @@ GaussRule gauss_rule(int n) {
     return rule;
 }
 
-ElementTables make_element_tables(double length, int loadPoints) {
+ElementTables make_element_tables(double length, int loadPoints, int axialModes) {
     ElementTables e;
     e.length = length;
-    const GaussRule axial = gauss_rule(3);
-    for (int g = 0; g < 3; ++g) {
-        e.axial[g].shape = hermite_shape(axial.xi[g], length);
+    e.axialModes = axialModes < 1 ? 1 : (axialModes > 3 ? 3 : axialModes);
+    const GaussRule axial = gauss_rule(ElementTables::nAxial);
+    for (int g = 0; g < axial.n; ++g) {
+        const double xi = axial.xi[g];
+        e.axial[g].shape = hermite_shape(xi, length);
         e.axial[g].weight = axial.w[g] * length;
+        e.legendre[0][g] = 1.0;
+        e.legendre[1][g] = std::sqrt(3.0) * (2.0 * xi - 1.0);
+        e.legendre[2][g] = std::sqrt(5.0) * (6.0 * xi * xi - 6.0 * xi + 1.0);
     }
     const GaussRule load = gauss_rule(loadPoints);
     e.nLoad = load.n;
@@ -86,52 +92,114 @@ ElementTables make_element_tables(double length, int loadPoints) {
     return e;
 }
 
-void add_axial_force(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
-                     double* R) {
-    for (int g = 0; g < e.nAxial; ++g) {
+namespace {
+
+// Strain state at the axial sampling points of one element.
+struct AxialSamples {
+    Vec3 t[ElementTables::nAxial];
+    double stretch[ElementTables::nAxial];
+    Vec3 rpd[ElementTables::nAxial];
+    double strainMode[3] = {0, 0, 0};  // Legendre coefficients of the strain (1/l int eps phi_k ds)
+    double rateMode[3] = {0, 0, 0};    // ... and of the strain rate
+};
+
+AxialSamples sample_axial(const ElementTables& e, const double* X, const double* Xd) {
+    AxialSamples s;
+    const double l = e.length;
+    for (int g = 0; g < ElementTables::nAxial; ++g) {
         const QuadPoint& q = e.axial[g];
         const Vec3 rp = interpolate(q.shape.dN, X);
-        const Vec3 rpd = interpolate(q.shape.dN, Xd);
-        const double stretch = rp.norm();
-        const Vec3 t = rp / stretch;
-        const double tension = p.EA * (stretch - 1.0) + p.damping * t.dot(rpd);
-        const Vec3 f = (q.weight * tension) * t;
+        s.rpd[g] = interpolate(q.shape.dN, Xd);
+        s.stretch[g] = rp.norm();
+        s.t[g] = rp / s.stretch[g];
+        const double strain = s.stretch[g] - 1.0, rate = s.t[g].dot(s.rpd[g]);
+        for (int k = 0; k < e.axialModes; ++k) {
+            s.strainMode[k] += q.weight / l * e.legendre[k][g] * strain;
+            s.rateMode[k] += q.weight / l * e.legendre[k][g] * rate;
+        }
+    }
+    return s;
+}
+
+double mode_weight(const ElementTables& e, const AxialProps& p, int k) {
+    return std::min(e.axialModeWeight[k], p.modeCap);
+}
+
+// Projected tension at sampling point g.
+double projected_tension(const ElementTables& e, const AxialProps& p, const AxialSamples& s, int g) {
+    double T = 0.0;
+    for (int k = 0; k < e.axialModes; ++k)
+        T += mode_weight(e, p, k) * e.legendre[k][g] * (p.EA * s.strainMode[k] + p.damping * s.rateMode[k]);
+    return T;
+}
+
+}  // namespace
+
+void add_axial_force(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
+                     double* R) {
+    const AxialSamples s = sample_axial(e, X, Xd);
+    for (int g = 0; g < ElementTables::nAxial; ++g) {
+        const QuadPoint& q = e.axial[g];
+        const Vec3 f = (q.weight * projected_tension(e, p, s, g)) * s.t[g];
         for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += q.shape.dN[a] * f;
     }
 }
 
 void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
                         Mat12& K, Mat12& C) {
-    for (int g = 0; g < e.nAxial; ++g) {
+    const AxialSamples s = sample_axial(e, X, Xd);
+    const double l = e.length;
+    // Geometric part: the projected tension times the rotation of t at each point.
+    for (int g = 0; g < ElementTables::nAxial; ++g) {
         const QuadPoint& q = e.axial[g];
-        const Vec3 rp = interpolate(q.shape.dN, X);
-        const Vec3 rpd = interpolate(q.shape.dN, Xd);
-        const double stretch = rp.norm();
-        const Vec3 t = rp / stretch;
-        const double strainRate = t.dot(rpd);
-        const double tension = p.EA * (stretch - 1.0) + p.damping * strainRate;
-        const Mat3 tt = t * t.transpose();
-        const Mat3 normal = Mat3::Identity() - tt;
-        // d(T t)/dr' = EA t t^T + (T/|r'|)(I - t t^T) + (c/|r'|) t ((I - t t^T) r'dot)^T
-        const Mat3 dForce_drp = p.EA * tt + (tension / stretch) * normal +
-                                (p.damping / stretch) * t * (normal * rpd).transpose();
-        const Mat3 dForce_drpd = p.damping * tt;
+        const Mat3 geometric = (projected_tension(e, p, s, g) / s.stretch[g]) *
+                               (Mat3::Identity() - s.t[g] * s.t[g].transpose());
+        for (int a = 0; a < 4; ++a)
+            for (int b = 0; b < 4; ++b)
+                K.block<3, 3>(3 * a, 3 * b) += (q.weight * q.shape.dN[a] * q.shape.dN[b]) * geometric;
+    }
+    // Material part: d(mode k)/dX_b = G_kb / l, with G_kb = sum_g w_g l phi_k dN_b t_g, and for the
+    // strain rate additionally H_kb = sum_g w_g l phi_k dN_b (I - t t^T) r'dot / |r'|.
+    for (int k = 0; k < e.axialModes; ++k) {
+        Vec3 G[4], H[4];
+        for (int a = 0; a < 4; ++a) {
+            G[a].setZero();
+            H[a].setZero();
+        }
+        for (int g = 0; g < ElementTables::nAxial; ++g) {
+            const QuadPoint& q = e.axial[g];
+            const double wphi = q.weight * e.legendre[k][g];
+            const Vec3 rotationRate = (s.rpd[g] - s.t[g] * s.t[g].dot(s.rpd[g])) / s.stretch[g];
+            for (int a = 0; a < 4; ++a) {
+                G[a] += (wphi * q.shape.dN[a]) * s.t[g];
+                H[a] += (wphi * q.shape.dN[a]) * rotationRate;
+            }
+        }
+        const double weight = mode_weight(e, p, k) / l;
         for (int a = 0; a < 4; ++a) {
             for (int b = 0; b < 4; ++b) {
-                const double w = q.weight * q.shape.dN[a] * q.shape.dN[b];
-                K.block<3, 3>(3 * a, 3 * b) += w * dForce_drp;
-                if (p.damping != 0.0) C.block<3, 3>(3 * a, 3 * b) += w * dForce_drpd;
+                K.block<3, 3>(3 * a, 3 * b) += (weight * p.EA) * G[a] * G[b].transpose();
+                if (p.damping != 0.0) {
+                    K.block<3, 3>(3 * a, 3 * b) += (weight * p.damping) * G[a] * H[b].transpose();
+                    C.block<3, 3>(3 * a, 3 * b) += (weight * p.damping) * G[a] * G[b].transpose();
+                }
             }
         }
     }
 }
 
-double axial_energy(const ElementTables& e, double EA, const double* X) {
+void axial_tensions(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
+                    double* T) {
+    const AxialSamples s = sample_axial(e, X, Xd);
+    for (int g = 0; g < ElementTables::nAxial; ++g) T[g] = projected_tension(e, p, s, g);
+}
+
+double axial_energy(const ElementTables& e, const AxialProps& p, const double* X) {
+    const Vec12 zero = Vec12::Zero();
+    const AxialSamples s = sample_axial(e, X, zero.data());
     double energy = 0.0;
-    for (int g = 0; g < e.nAxial; ++g) {
-        const double strain = interpolate(e.axial[g].shape.dN, X).norm() - 1.0;
-        energy += 0.5 * EA * strain * strain * e.axial[g].weight;
-    }
+    for (int k = 0; k < e.axialModes; ++k)
+        energy += 0.5 * p.EA * mode_weight(e, p, k) * e.length * s.strainMode[k] * s.strainMode[k];
     return energy;
 }
 

@@ -43,18 +43,21 @@ struct QuadPoint {
 // Precomputed, immutable element tables (all elements have the same length).
 struct ElementTables {
     double length = 0.0;
-    // Axial strain is integrated with 3 Gauss points: r' is quadratic, so 3 points let the
-    // axial displacement cancel the stretching produced by bending (no membrane locking) while
-    // still constraining every axial mode (no zero-energy modes).
-    int nAxial = 3;
-    QuadPoint axial[3];
+    // Axial strain: sampled at 5 Gauss points and projected (L2, per element) onto the first
+    // `axialModes` Legendre polynomials; the tension is the projected field. Projecting onto
+    // fewer modes than the strain has removes membrane locking (DESIGN.md section 3).
+    static constexpr int nAxial = 5;
+    QuadPoint axial[nAxial];
+    int axialModes = 3;
+    double axialModeWeight[3] = {1.0, 1.0, 1.0};  // stiffness factor of each projected strain mode
+    double legendre[3][nAxial];  // orthonormal Legendre polynomials on [0, 1] at the axial points
     int nLoad = 0;
     QuadPoint load[5];
     Mat4 mass;     // int N_a N_b ds (exact)
     Mat4 bending;  // int N''_a N''_b ds (exact)
 };
 
-ElementTables make_element_tables(double length, int loadPoints);
+ElementTables make_element_tables(double length, int loadPoints, int axialModes);
 
 // Interpolates a 3-vector field from the element's 12 nodal values.
 inline Vec3 interpolate(const double (&N)[4], const double* X) {
@@ -67,16 +70,21 @@ inline Vec3 interpolate(const double (&N)[4], const double* X) {
 struct AxialProps {
     double EA;
     double damping;
+    // Caps every strain mode's stiffness factor (the static solver starts on a soft cable).
+    double modeCap = 1.0;
 };
 
-// Adds int T t dN_a ds (t = r'/|r'|) to R (12 values).
+// Adds int T t dN_a ds (t = r'/|r'|, T the projected tension) to R (12 values).
 void add_axial_force(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
                      double* R);
 // Adds dR/dX to K and dR/dXdot to C.
 void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
                         Mat12& K, Mat12& C);
-// Axial strain energy 0.5 EA int (|r'| - 1)^2 ds (for tests).
-double axial_energy(const ElementTables& e, double EA, const double* X);
+// Projected tension at the ElementTables::nAxial sampling points.
+void axial_tensions(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
+                    double* T);
+// Axial strain energy 0.5 EA int (projected strain)^2 ds (for tests).
+double axial_energy(const ElementTables& e, const AxialProps& p, const double* X);
 
 // Bending: R_a += EI sum_b B_ab X_b with B = int N''_a N''_b ds, energy 0.5 EI int |r''|^2 ds.
 void add_bending_force(const ElementTables& e, double EI, const double* X, double* R);

@@ -58,17 +58,14 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
 
     double minTension = *std::min_element(T.begin(), T.end());
     double maxCurvature = 0.0;
-    const AxialProps& axial = model.axial();
     for (int e = 0; e < N; ++e) {
         const double* Xe = X + 6 * e;
-        const double* Xde = Xd + 6 * e;
-        for (int g = 0; g < tables.nAxial; ++g) {
+        double axialTension[ElementTables::nAxial];
+        axial_tensions(tables, model.axial(), Xe, Xd + 6 * e, axialTension);
+        for (int g = 0; g < ElementTables::nAxial; ++g) {
             const ShapeValues& sv = tables.axial[g].shape;
-            const Vec3 rp = interpolate(sv.dN, Xe);
-            const double stretch = rp.norm();
-            const double tension = axial.EA * (stretch - 1.0) + axial.damping * rp.dot(interpolate(sv.dN, Xde)) / stretch;
-            minTension = std::min(minTension, tension);
-            maxCurvature = std::max(maxCurvature, curvature(rp, interpolate(sv.d2N, Xe)));
+            minTension = std::min(minTension, axialTension[g]);
+            maxCurvature = std::max(maxCurvature, curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe)));
         }
         for (double xi : {0.0, 1.0}) {
             const ShapeValues sv = hermite_shape(xi, l);

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 
 namespace uc {
@@ -72,7 +71,7 @@ bool newton(const CableModel& model, BandSolver& solver, const Loads& loads, dou
     double coordinate = length;
     for (int g = 0; g < model.n_global(); g += 6) coordinate = std::max(coordinate, Eigen::Map<const Vec3>(w.X.data() + g).norm());
     const double roundOff = std::max(1e-12 * force_scale(model, loads),
-                                     64.0 * p.EA * loads.axialStiffnessScale * std::numeric_limits<double>::epsilon() *
+                                     64.0 * p.EA * std::min(1.0, loads.axialStiffnessScale) * std::numeric_limits<double>::epsilon() *
                                          (1.0 + coordinate / model.element_length()));
     std::vector<double> dq(n), trial(n);
     double dtau = 0.1 * std::sqrt(length / std::max(p.gravity, 0.1));
@@ -89,7 +88,6 @@ bool newton(const CableModel& model, BandSolver& solver, const Loads& loads, dou
         for (int j = 0; j < n; ++j) dq[j] = -w.R[j];
         if (!solver.factor_and_solve(dq.data())) return false;
         ++result.newtonIterations;
-        if (std::getenv("UC_DEBUG_STATICS")) std::fprintf(stderr, "it %d norm %.3e dq %.3e dtau %.3e\n", it, norm, max_abs(dq), dtau);
         if (inertia == 0.0 && max_abs(dq) <= 1e-11 * length) {
             for (int j = 0; j < n; ++j) q[j] += dq[j];
             result.residualNorm = residual_norm(model, loads, t, q, w);

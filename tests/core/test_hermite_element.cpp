@@ -99,7 +99,7 @@ TEST(GaussRule, IntegratesPolynomialsOfDegree2nMinus1) {
 TEST(ElementTables, MassMatrixIntegratesToTotalMass) {
     // Rigid translation: sum over position shape functions is 1, so 1^T M_pos 1 = l.
     const double l = 3.0;
-    const ElementTables e = make_element_tables(l, 3);
+    const ElementTables e = make_element_tables(l, 3, 3);
     EXPECT_NEAR(e.mass(0, 0) + e.mass(0, 2) + e.mass(2, 0) + e.mass(2, 2), l, 1e-13);
     // Classical consistent beam mass: M_11 = 13 l / 35.
     EXPECT_NEAR(e.mass(0, 0), 13.0 * l / 35.0, 1e-13);
@@ -109,18 +109,18 @@ TEST(ElementTables, MassMatrixIntegratesToTotalMass) {
 
 TEST(AxialTerm, ForceIsGradientOfStrainEnergy) {
     const double l = 2.0, EA = 1e5;
-    const ElementTables e = make_element_tables(l, 3);
+    const ElementTables e = make_element_tables(l, 3, 3);
     const Vec12 X = curved_element(l, 1.01);
     Vec12 R = Vec12::Zero();
     const Vec12 zero = Vec12::Zero();
     add_axial_force(e, AxialProps{EA, 0.0}, X.data(), zero.data(), R.data());
-    const Vec12 g = numerical_gradient([&](const Vec12& x) { return axial_energy(e, EA, x.data()); }, X, 1e-6);
+    const Vec12 g = numerical_gradient([&](const Vec12& x) { return axial_energy(e, AxialProps{EA, 0.0}, x.data()); }, X, 1e-6);
     EXPECT_LT((R - g).norm(), 1e-6 * R.norm());
 }
 
 TEST(BendingTerm, ForceIsGradientOfBendingEnergy) {
     const double l = 2.0, EI = 300.0;
-    const ElementTables e = make_element_tables(l, 3);
+    const ElementTables e = make_element_tables(l, 3, 3);
     const Vec12 X = curved_element(l, 1.0);
     Vec12 R = Vec12::Zero();
     add_bending_force(e, EI, X.data(), R.data());
@@ -131,7 +131,7 @@ TEST(BendingTerm, ForceIsGradientOfBendingEnergy) {
 TEST(AxialTerm, StraightStretchedElementCarriesEAEpsilon) {
     // Hand calculation: uniform strain eps gives T = EA eps; the nodal forces are -T t and +T t.
     const double l = 5.0, EA = 2e6, eps = 1e-3;
-    const ElementTables e = make_element_tables(l, 3);
+    const ElementTables e = make_element_tables(l, 3, 3);
     const Vec3 t = Vec3(1, 2, 2) / 3.0;
     Vec12 X;
     X << 0, 0, 0, (1 + eps) * t, (1 + eps) * l * t, (1 + eps) * t;
@@ -167,7 +167,7 @@ void expect_jacobian_matches(F&& force, const Vec12& X, const Mat12& J, double h
 TEST(AxialTerm, JacobianMatchesFiniteDifferences) {
     const double l = 2.0;
     const AxialProps props{1e5, 3e3};
-    const ElementTables e = make_element_tables(l, 3);
+    const ElementTables e = make_element_tables(l, 3, 3);
     std::mt19937 rng(7);
     const Vec12 X = curved_element(l, 1.02);
     const Vec12 Xd = random_vector(rng, 0.5);
@@ -187,10 +187,43 @@ TEST(AxialTerm, JacobianMatchesFiniteDifferences) {
     expect_jacobian_matches(forceV, Xd, C, 1e-6, 1e-8, "dR/dXdot");
 }
 
+TEST(AxialTerm, ProjectedStrainJacobianMatchesFiniteDifferences) {
+    // The cable's own setting: mean strain at full EA, higher modes softened, and a mode cap
+    // as used by the static solver.
+    const double l = 3.0;
+    ElementTables e = make_element_tables(l, 3, 3);
+    e.axialModeWeight[1] = e.axialModeWeight[2] = 0.01;
+    std::mt19937 rng(9);
+    const Vec12 X = curved_element(l, 1.03);
+    const Vec12 Xd = random_vector(rng, 0.5);
+    for (double cap : {1.0, 0.05}) {
+        const AxialProps props{1e5, 2e3, cap};
+        Mat12 K = Mat12::Zero(), C = Mat12::Zero();
+        add_axial_jacobian(e, props, X.data(), Xd.data(), K, C);
+        auto forceX = [&](const Vec12& x) {
+            Vec12 R = Vec12::Zero();
+            add_axial_force(e, props, x.data(), Xd.data(), R.data());
+            return R;
+        };
+        auto forceV = [&](const Vec12& v) {
+            Vec12 R = Vec12::Zero();
+            add_axial_force(e, props, X.data(), v.data(), R.data());
+            return R;
+        };
+        expect_jacobian_matches(forceX, X, K, 1e-6, 1e-6, "dR/dX");
+        expect_jacobian_matches(forceV, Xd, C, 1e-6, 1e-8, "dR/dXdot");
+        Vec12 R = Vec12::Zero();
+        const Vec12 zero = Vec12::Zero();
+        add_axial_force(e, props, X.data(), zero.data(), R.data());
+        const Vec12 g = numerical_gradient([&](const Vec12& x) { return axial_energy(e, props, x.data()); }, X, 1e-6);
+        EXPECT_LT((R - g).norm(), 1e-6 * R.norm());
+    }
+}
+
 TEST(HydroTerm, JacobianMatchesFiniteDifferences) {
     const double l = 2.0, d = 0.05;
     FluidProps p{1025.0, 9.81, 4.0, 3.14159265358979 * d * d / 4, d, 1.4, 0.3, 1.0, 0.2, true};
-    const ElementTables e = make_element_tables(l, 3);
+    const ElementTables e = make_element_tables(l, 3, 3);
     std::mt19937 rng(11);
     Vec12 X = curved_element(l, 1.0);
     for (int a : {0, 2}) X[3 * a + 2] -= 10.0;  // submerged
@@ -212,7 +245,7 @@ TEST(HydroTerm, JacobianAcrossTheSurfaceMatchesFiniteDifferences) {
     // Element crossing z = 0 within the one-diameter ramp of the submerged fraction.
     const double l = 0.04, d = 0.05;
     FluidProps p{1025.0, 9.81, 4.0, 3.14159265358979 * d * d / 4, d, 1.4, 0.3, 1.0, 0.2, true};
-    const ElementTables e = make_element_tables(l, 3);
+    const ElementTables e = make_element_tables(l, 3, 3);
     std::mt19937 rng(5);
     Vec12 X;
     X << 0, 0, 0.01, 0.6, 0, -0.8, 0.6 * l, 0, 0.01 - 0.8 * l, 0.6, 0.1, -0.8;
