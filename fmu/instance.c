@@ -82,8 +82,6 @@ fmi2Status uc_instance_check(UCInstance* inst, unsigned int allowedStates, const
     return fmi2Error;
 }
 
-fmi2Status uc_worst(fmi2Status a, fmi2Status b) { return a > b ? a : b; }
-
 fmi2Status uc_instance_finish(UCInstance* inst, fmi2Status status) {
     if (inst == NULL) return status;
     if (status == fmi2Fatal) {

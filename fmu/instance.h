@@ -1,6 +1,7 @@
 /*
  * instance.h - one FMU instance: everything it owns (no globals), its state machine (FMI 2.0 section
- * 4.2.4, FMI-CHECKLIST 2.3) and the worst-status-wins rule.
+ * 4.2.4, FMI-CHECKLIST 2.3) and what a returned status does to it. Every function stops at its first
+ * error, so the status it returns is the worst of what happened; uc_instance_finish applies it.
  */
 #ifndef UNDERWATERCABLE_FMU_INSTANCE_H
 #define UNDERWATERCABLE_FMU_INSTANCE_H
@@ -60,9 +61,6 @@ void uc_instance_drop_core(UCInstance* inst);
 /* fmi2OK if inst->state is in allowedStates; otherwise logs "<function>: illegal call sequence ..." and
  * returns fmi2Error. Also rejects a NULL instance (fmi2Error, nothing to log to). */
 fmi2Status uc_instance_check(UCInstance* inst, unsigned int allowedStates, const char* function);
-
-/* The worst of two statuses. */
-fmi2Status uc_worst(fmi2Status a, fmi2Status b);
 
 /* Applies the status to the machine: fmi2Error -> error state, fmi2Fatal -> fatal. Returns status. */
 fmi2Status uc_instance_finish(UCInstance* inst, fmi2Status status);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <thread>
 
 #include "fmu_harness.h"
 
@@ -181,4 +182,19 @@ TEST(Simulation, TwoInstancesWithDifferentParametersAreIndependent) {
     EXPECT_TRUE(bitwise_equal(a.outputs(), expectedLong));
     EXPECT_TRUE(bitwise_equal(b.outputs(), expectedShort));
     EXPECT_NE(a.getReal("towTension"), b.getReal("towTension"));
+}
+
+TEST(Simulation, InstancesInSeparateThreadsGiveTheSequentialResults) {
+    Instance sequentialLong("long"), sequentialShort("short");
+    const std::vector<double> expectedLong = tow_run(sequentialLong, 3, 300.0);
+    const std::vector<double> expectedShort = tow_run(sequentialShort, 3, 100.0);
+
+    Instance a("a"), b("b");
+    std::vector<double> resultLong, resultShort;
+    std::thread first([&] { resultLong = tow_run(a, 3, 300.0); });
+    std::thread second([&] { resultShort = tow_run(b, 3, 100.0); });
+    first.join();
+    second.join();
+    EXPECT_TRUE(bitwise_equal(resultLong, expectedLong));
+    EXPECT_TRUE(bitwise_equal(resultShort, expectedShort));
 }
