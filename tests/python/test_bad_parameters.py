@@ -28,7 +28,7 @@ def set_and_initialize(cable, name, value):
 
 @pytest.mark.parametrize("name,value", BAD, ids=[f"{n}={v}" for n, v in BAD])
 def test_bad_parameter_is_an_error_that_names_the_variable(make_cable, name, value):
-    good = make_cable(instance_name="good", parameters={"nElements": 10})
+    good = make_cable(instance_name="good")
     good.initialize(inputs={"tow.vx": 1.1 * KNOT})
 
     bad = make_cable(instance_name="bad", logging_on=True)

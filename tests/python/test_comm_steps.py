@@ -9,6 +9,12 @@ smoothly over the step, i.e. tow-point accelerations of a few 0.01 m/s^2 on a ca
 a few newtons of tension. A position jump of the same 1.4 mm on a 15 m element would instead
 give EA delta / l ~ 6 kN, more than the whole tension, and an excess tension of
 EA a dt^2 / (4 l) at every step (DESIGN.md section 3), i.e. many times the range.
+
+Two masters are tried: one that also passes the tow acceleration as an input derivative
+(fmi2SetRealInputDerivatives, the FMU declares canInterpolateInputs), and a plain one that only
+samples position and velocity (fmpy's default, most importers). The plain master gives the FMU
+no acceleration, but two successive velocity samples carry it, so an FMU can still follow the
+manoeuvre to the same accuracy; the same tolerance applies.
 """
 
 import numpy as np
@@ -21,11 +27,12 @@ STEPS = [0.5, 0.1, 0.01]
 REL_RANGE = 0.005
 
 
-def tension_on_half_seconds(make_cable, step):
+def tension_on_half_seconds(make_cable, step, use_input_derivatives):
     """towTension at t = 0, 0.5, 1, ... of the Hopland tow sampled at communication step `step`."""
     profile, _ = hopland_accelerate()
     cable = make_cable(instance_name=f"h{step:g}", parameters={"nElements": 20})
-    run = run_tow(cable, profile, T_END, step, record_shape=False)
+    run = run_tow(cable, profile, T_END, step, record_shape=False,
+                  use_input_derivatives=use_input_derivatives)
     T = run["towTension"]
     assert np.all(np.isfinite(T)), f"non-finite towTension at step {step} s"
     keep = np.isclose(np.mod(run.time + 1e-9, 0.5), 0.0, atol=1e-6)
@@ -33,13 +40,13 @@ def tension_on_half_seconds(make_cable, step):
     return run.time[keep], T[keep], T.max() - T.min()
 
 
-def test_tow_tension_does_not_depend_on_the_communication_step(make_cable):
-    t_ref, T_ref, span = tension_on_half_seconds(make_cable, STEPS[-1])
+def check_step_independence(make_cable, use_input_derivatives):
+    t_ref, T_ref, span = tension_on_half_seconds(make_cable, STEPS[-1], use_input_derivatives)
     assert span > 0
     tolerance = REL_RANGE * span
     report, worst = [], 0.0
     for h in STEPS[:-1]:
-        t, T, _ = tension_on_half_seconds(make_cable, h)
+        t, T, _ = tension_on_half_seconds(make_cable, h, use_input_derivatives)
         assert np.allclose(t, t_ref)
         diff = np.abs(T - T_ref)
         i = int(np.argmax(diff))
@@ -48,3 +55,18 @@ def test_tow_tension_does_not_depend_on_the_communication_step(make_cable):
     assert worst <= tolerance, (
         f"tension range {T_ref.min():.1f}..{T_ref.max():.1f} N, tolerance {tolerance:.2f} N; "
         + "; ".join(report))
+
+
+def test_tow_tension_does_not_depend_on_the_step_with_input_derivatives(make_cable, fmu_file):
+    from fmpy import read_model_description
+    assert read_model_description(str(fmu_file)).coSimulation.canInterpolateInputs
+    check_step_independence(make_cable, use_input_derivatives=True)
+
+
+@pytest.mark.xfail(strict=False, reason=(
+    "known FMU issue (reported): without input derivatives the tow point ends every step with "
+    "acceleration -5a instead of a (cubic from the lagging state (x - a h^2/2, v - a h) to the "
+    "zero-acceleration target), i.e. an error of 6 a ~ 0.07 m/s^2 on ~800 kg of cable: "
+    "25 N at h = 0.5 s, 6.5 N at h = 0.1 s against a 2.5 N tolerance"))
+def test_tow_tension_does_not_depend_on_the_step_with_sampled_inputs_only(make_cable):
+    check_step_independence(make_cable, use_input_derivatives=False)
