@@ -98,7 +98,9 @@ bool Integrator::advance(double tEnd, std::string& error) {
     double tReached = 0.0;
     while (flag >= 0) {
         flag = IDASolve(ida_, tEnd, &tReached, y_, yp_, IDA_NORMAL);
-        if (flag == IDA_TSTOP_RETURN || (flag == IDA_SUCCESS && tReached >= tEnd)) return true;
+        if (flag == IDA_TSTOP_RETURN || (flag == IDA_SUCCESS && tReached >= tEnd)) {
+            return true;
+        }
     }
     char buffer[900];
     std::snprintf(buffer, sizeof buffer, "integrator failed with %s at t = %.9g s (target %.9g s): %s",

@@ -27,6 +27,8 @@ struct StateHeader {
     double time;
     double towPosition[3];
     double towVelocity[3];
+    double lastVelocityInput[3];
+    double lastStepSize;
     double stats[5];
 };
 
@@ -162,6 +164,8 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         yp_[2 * j + 1] = a_[j];
     }
     time_ = t0;
+    lastVelocityInput_ = towVelocity_;
+    lastStepSize_ = 0.0;
     statsBase_ = IntegratorStats();
     integratorStarted_ = false;
     restartPending_ = true;
@@ -184,8 +188,13 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     }
     set_environment(in);
     // The end trajectory starts from where the previous step left the tow point (never jumps) and
-    // reaches the master's extrapolated target at t + h.
-    const Vec3 a = vec(in.towAcceleration);
+    // reaches the master's extrapolated target at t + h. Without input derivatives the
+    // acceleration is estimated from the last two velocity inputs, so that an accelerating tow
+    // sampled at communication points is followed smoothly (with a = 0 the cubic would have
+    // to correct a lag of a h^2/2 every step, an acceleration zigzag of +7a/-5a).
+    const Vec3 velocityInput = vec(in.towVelocity);
+    Vec3 a = vec(in.towAcceleration);
+    if (a.isZero(0.0) && lastStepSize_ > 0.0) a = (velocityInput - lastVelocityInput_) / lastStepSize_;
     TowTrajectory& tow = loads_.tow;
     tow.t0 = time_;
     tow.h = h;
@@ -215,6 +224,8 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     time_ = tEnd;
     towPosition_ = tow.p1;
     towVelocity_ = tow.v1;
+    lastVelocityInput_ = velocityInput;
+    lastStepSize_ = h;
     update_outputs();
     return true;
 }
@@ -302,7 +313,9 @@ void CableSimulation::save_state(void* buffer) {
     for (int k = 0; k < 3; ++k) {
         header.towPosition[k] = towPosition_[k];
         header.towVelocity[k] = towVelocity_[k];
+        header.lastVelocityInput[k] = lastVelocityInput_[k];
     }
+    header.lastStepSize = lastStepSize_;
     std::memcpy(header.stats, stats, sizeof stats);
     auto* out = static_cast<unsigned char*>(buffer);
     std::memcpy(out, &header, sizeof header);
@@ -338,6 +351,8 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     time_ = header.time;
     towPosition_ = vec(header.towPosition);
     towVelocity_ = vec(header.towVelocity);
+    lastVelocityInput_ = vec(header.lastVelocityInput);
+    lastStepSize_ = header.lastStepSize;
     statsBase_.steps = header.stats[0];
     statsBase_.residualEvals = header.stats[1];
     statsBase_.jacobianEvals = header.stats[2];

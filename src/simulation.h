@@ -54,6 +54,8 @@ private:
     // --- state (what save/restore copies) ---
     double time_ = 0.0;
     Vec3 towPosition_ = Vec3::Zero(), towVelocity_ = Vec3::Zero();  // prescribed end at time_
+    Vec3 lastVelocityInput_ = Vec3::Zero();  // tow velocity input of the previous step ...
+    double lastStepSize_ = 0.0;              // ... and its step size (0: no history yet)
     std::vector<double> y_, yp_;  // IDA vectors at time_: y = [q_0, v_0, q_1, v_1, ...]
     IntegratorStats statsBase_;   // statistics folded in at integrator restarts
     bool integratorStarted_ = false;  // the integrator's own counters belong to this state
