@@ -80,6 +80,7 @@ fmi2Status uc_sim_do_step(UCInstance* inst, double tc, double h) {
     uc_get_outputs(inst->cable, &inst->outputs);
     /* Input derivatives apply to one step only (fmi2SetRealInputDerivatives before each fmi2DoStep). */
     memset(inst->inputs.towAcceleration, 0, sizeof inst->inputs.towAcceleration);
+    inst->inputs.towAccelerationGiven = 0;
     log_solver_statistics(inst, "fmi2DoStep");
     return fmi2OK;
 }

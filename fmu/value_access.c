@@ -109,6 +109,7 @@ static fmi2Status set_one_derivative(UCInstance* inst, const UCVariable* v, int 
     if (check_real_value(inst, v, value, function) != fmi2OK) return fmi2Error;
     if ((velocity >= 0 && order == 1) || (position >= 0 && order == 2)) {
         inst->inputs.towAcceleration[velocity >= 0 ? velocity : position] = value;
+        inst->inputs.towAccelerationGiven = 1;
         return fmi2OK;
     }
     if (order == 1) {

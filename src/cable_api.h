@@ -74,6 +74,8 @@ typedef struct UCInputs {
     double towAcceleration[3]; /* [m/s2] from fmi2SetRealInputDerivatives (der(tow.v*) or der(tow.*,2)); 0 if not given */
     double endLoad[3];         /* endLoad.x/y/z [N]  extra point force at the far end */
     double current[2];         /* current.x/y [m/s]  uniform current */
+    int towAccelerationGiven;  /* 1 when towAcceleration came from the master for this step; 0: the
+                                  core estimates it from the last two tow velocity inputs */
 } UCInputs;
 
 /* Outputs, valid after uc_initialize and after every uc_do_step. */
@@ -114,7 +116,9 @@ int uc_initialize(UCCable* c, double t0, const UCInputs* in, char* msg, size_t m
 /* Integrates from t to exactly t + h (h > 0, t must equal the current time of the cable).
  * The tow point follows a cubic in time from the cable's current end state (position,
  * velocity) to in->tow + v h + a h^2/2 with velocity v + a h at t + h; when the inputs
- * agree with the current end state this is exactly tow + v (t' - t) + a (t' - t)^2 / 2. */
+ * agree with the current end state this is exactly tow + v (t' - t) + a (t' - t)^2 / 2.
+ * a is in->towAcceleration when in->towAccelerationGiven, otherwise the difference of the
+ * last two tow velocity inputs over the last step size (0 on the first step). */
 int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, char* msg, size_t msgSize);
 
 double uc_time(const UCCable* c);

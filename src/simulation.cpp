@@ -194,7 +194,8 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     // to correct a lag of a h^2/2 every step, an acceleration zigzag of +7a/-5a).
     const Vec3 velocityInput = vec(in.towVelocity);
     Vec3 a = vec(in.towAcceleration);
-    if (a.isZero(0.0) && lastStepSize_ > 0.0) a = (velocityInput - lastVelocityInput_) / lastStepSize_;
+    if (!in.towAccelerationGiven)
+        a = lastStepSize_ > 0.0 ? Vec3((velocityInput - lastVelocityInput_) / lastStepSize_) : Vec3::Zero();
     TowTrajectory& tow = loads_.tow;
     tow.t0 = time_;
     tow.h = h;
