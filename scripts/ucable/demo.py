@@ -36,6 +36,9 @@ def parse_args(argv):
     p.add_argument("--v1", type=float, default=2.4, help="final tow speed [kn] (default 2.4)")
     p.add_argument("--ramp", type=float, default=60.0, help="ramp duration [s] (default 60)")
     p.add_argument("--hold", type=float, default=600.0, help="time after the ramp [s] (default 600)")
+    p.add_argument("--input-derivatives", action=argparse.BooleanOptionalAction, default=True,
+                   help="also pass the tow acceleration via fmi2SetRealInputDerivatives (default on; "
+                        "with --no-input-derivatives only position and velocity are sampled)")
     p.add_argument("--fmu", type=Path, default=None,
                    help="FMU file (default build/UnderwaterCable.fmu or $UC_FMU)")
     return p.parse_args(argv)
@@ -118,7 +121,8 @@ def main(argv=None) -> int:
     cable = CableFMU(fmu, parameters={"nElements": args.nElements})
     bar = ProgressBar(t_end, label="hopland")
     try:
-        run = run_tow(cable, profile, t_end, args.step, progress=bar)
+        run = run_tow(cable, profile, t_end, args.step, progress=bar,
+                      use_input_derivatives=args.input_derivatives)
     except Exception:
         if cable.messages:
             print(cable.log_text(), file=sys.stderr)
