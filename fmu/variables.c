@@ -95,6 +95,11 @@ static const UCVariable kVariables[] = {
     OUT(803, "solver.nJacobianEvals", nJacobianEvals),
     OUT(804, "solver.nNonlinearFailures", nNonlinearFailures),
     OUT(805, "solver.nErrorTestFailures", nErrorTestFailures),
+
+    /* Added later: appended (value references 901 on) so that existing indices and references stay. */
+    INP(901, "endCouple.x", endCouple[0]),
+    INP(902, "endCouple.y", endCouple[1]),
+    INP(903, "endCouple.z", endCouple[2]),
 };
 
 #define N_VARIABLES (sizeof(kVariables) / sizeof(kVariables[0]))

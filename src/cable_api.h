@@ -73,6 +73,7 @@ typedef struct UCInputs {
     double towVelocity[3];     /* tow.vx/vy/vz [m/s] tow point velocity */
     double towAcceleration[3]; /* [m/s2] from fmi2SetRealInputDerivatives (der(tow.v*) or der(tow.*,2)); 0 if not given */
     double endLoad[3];         /* endLoad.x/y/z [N]  extra point force at the far end */
+    double endCouple[3];       /* endCouple.x/y/z [N.m] point couple at the far end (Earth frame) */
     double current[2];         /* current.x/y [m/s]  uniform current */
     int towAccelerationGiven;  /* 1 when towAcceleration came from the master for this step; 0: the
                                   core estimates it from the last two tow velocity inputs */

@@ -181,32 +181,52 @@ void CableModel::element_jacobian(int e, const double* X, const double* Xd, cons
     add_hydro_jacobian(tables_, fluid_, loads.current, X + g0, Xd + g0, Xdd + g0, K, C, M);
 }
 
-Vec3 CableModel::end_node_residual(const double* /*X*/, const double* Xd, const double* Xdd,
+namespace {
+
+Mat3 cross_matrix(const Vec3& v) {
+    Mat3 m;
+    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+    return m;
+}
+
+}  // namespace
+
+Vec6 CableModel::end_node_residual(const double* X, const double* Xd, const double* Xdd,
                                    const Loads& loads) const {
-    Vec3 R = -loads.endLoad;
-    if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return R;
     const int gN = 6 * nElements_;
+    Vec6 R = Vec6::Zero();
+    R.head<3>() = -loads.endLoad;
+    // End couple M: virtual work M . (t x dr')/|r'| = (M x r')/|r'|^2 . dr' on the end tangent.
+    const Vec3 rp = Eigen::Map<const Vec3>(X + gN + 3);
+    R.tail<3>() = -loads.endCouple.cross(rp) / rp.squaredNorm();
+    if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return R;
     const Vec3 rd = Eigen::Map<const Vec3>(Xd + gN);
     const Vec3 rdd = Eigen::Map<const Vec3>(Xdd + gN);
     const Vec3 u = loads.current - rd;
     const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
     const double wet = (params_.bodyMass - fluid_.rho * params_.bodyVolume) * fluid_.gravity;
-    R += (params_.bodyMass + params_.bodyAddedMass) * rdd;
-    R -= 0.5 * fluid_.rho * params_.bodyCdA * speed * u;
+    R.head<3>() += (params_.bodyMass + params_.bodyAddedMass) * rdd;
+    R.head<3>() -= 0.5 * fluid_.rho * params_.bodyCdA * speed * u;
     R.z() += wet;
     return R;
 }
 
-void CableModel::end_node_jacobian(const double* /*X*/, const double* Xd, const double* /*Xdd*/,
-                                   const Loads& loads, Mat3& K, Mat3& C, Mat3& M) const {
+void CableModel::end_node_jacobian(const double* X, const double* Xd, const double* /*Xdd*/,
+                                   const Loads& loads, Mat6& K, Mat6& C, Mat6& M) const {
+    const int gN = 6 * nElements_;
     K.setZero();
     C.setZero();
     M.setZero();
+    if (!loads.endCouple.isZero(0.0)) {
+        const Vec3 rp = Eigen::Map<const Vec3>(X + gN + 3);
+        const double n2 = rp.squaredNorm();
+        K.block<3, 3>(3, 3) = -cross_matrix(loads.endCouple) * (Mat3::Identity() / n2 - 2.0 * rp * rp.transpose() / (n2 * n2));
+    }
     if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return;
-    const Vec3 u = loads.current - Eigen::Map<const Vec3>(Xd + 6 * nElements_);
+    const Vec3 u = loads.current - Eigen::Map<const Vec3>(Xd + gN);
     const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
-    C = 0.5 * fluid_.rho * params_.bodyCdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
-    M = (params_.bodyMass + params_.bodyAddedMass) * Mat3::Identity();
+    C.block<3, 3>(0, 0) = 0.5 * fluid_.rho * params_.bodyCdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
+    M.block<3, 3>(0, 0) = (params_.bodyMass + params_.bodyAddedMass) * Mat3::Identity();
 }
 
 void CableModel::residual(const double* X, const double* Xd, const double* Xdd, const Loads& loads,
@@ -223,9 +243,9 @@ void CableModel::residual(const double* X, const double* Xd, const double* Xdd, 
         }
         if (forces) forces->element[e] = Eigen::Map<const Vec12>(Re);
     }
-    const Vec3 end = end_node_residual(X, Xd, Xdd, loads);
+    const Vec6 end = end_node_residual(X, Xd, Xdd, loads);
     const int gN = 6 * nElements_;
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < 6; ++k) {
         const int j = free_[gN + k];
         if (j >= 0) Rfree[j] += end[k];
     }

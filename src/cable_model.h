@@ -32,6 +32,7 @@ struct Loads {
     TowTrajectory tow;
     Vec3 current = Vec3::Zero();
     Vec3 endLoad = Vec3::Zero();
+    Vec3 endCouple = Vec3::Zero();
     // Caps the axial stiffness factor of every strain mode (static solver only: equilibrium is
     // first found on a soft cable, whose large rotations do not turn into huge axial residuals,
     // then stiffened to the real EA).
@@ -41,7 +42,7 @@ struct Loads {
 // Residual contributions of one element and of the far-end node terms, kept for outputs.
 struct ElementForces {
     std::vector<Vec12> element;  // per element, residual over its 12 DOFs
-    Vec3 endNodeTerms = Vec3::Zero();  // body + end load residual at the far-end position
+    Vec6 endNodeTerms = Vec6::Zero();  // body, end load and end couple residual at node N
 };
 
 class CableModel {
@@ -72,8 +73,9 @@ public:
     // Residual of one element (12 values): mass, axial, bending, hydrodynamics.
     void element_residual(int e, const double* X, const double* Xd, const double* Xdd,
                           const Loads& loads, double* R) const;
-    // Far-end node terms (towed body inertia, drag, weight; minus the end load) at node N.
-    Vec3 end_node_residual(const double* X, const double* Xd, const double* Xdd, const Loads& loads) const;
+    // Far-end node terms at node N ([r_N, r'_N] rows): towed body inertia, drag and weight minus
+    // the end load; minus the generalized force of the end couple on r'_N.
+    Vec6 end_node_residual(const double* X, const double* Xd, const double* Xdd, const Loads& loads) const;
 
     // Free residual R_free[j] = sum_g coef[g] R[g]; fills forces (may be null) for outputs.
     void residual(const double* X, const double* Xd, const double* Xdd, const Loads& loads,
@@ -89,7 +91,7 @@ public:
     void element_jacobian(int e, const double* X, const double* Xd, const double* Xdd,
                           const Loads& loads, Mat12& K, Mat12& C, Mat12& M) const;
     void end_node_jacobian(const double* X, const double* Xd, const double* Xdd, const Loads& loads,
-                           Mat3& K, Mat3& C, Mat3& M) const;
+                           Mat6& K, Mat6& C, Mat6& M) const;
 
     // Straight line from p along `direction` (unstretched), as global X.
     void straight_line(const Vec3& p, const Vec3& direction, double* X) const;
@@ -130,13 +132,13 @@ void CableModel::jacobian(const double* X, const double* Xd, const double* Xdd, 
             }
         }
     }
-    Mat3 Kn, Cn, Mn;
+    Mat6 Kn, Cn, Mn;
     end_node_jacobian(X, Xd, Xdd, loads, Kn, Cn, Mn);
     const int gN = 6 * nElements_;
-    for (int a = 0; a < 3; ++a) {
+    for (int a = 0; a < 6; ++a) {
         const int ja = free_[gN + a];
         if (ja < 0) continue;
-        for (int b = 0; b < 3; ++b) {
+        for (int b = 0; b < 6; ++b) {
             const int jb = free_[gN + b];
             if (jb < 0) continue;
             if (Kn(a, b) != 0.0 || Cn(a, b) != 0.0 || Mn(a, b) != 0.0) add(ja, jb, Kn(a, b), Cn(a, b), Mn(a, b));

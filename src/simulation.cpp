@@ -82,6 +82,7 @@ CableSimulation::~CableSimulation() {
 void CableSimulation::set_environment(const UCInputs& in) {
     loads_.current = Vec3(in.current[0], in.current[1], 0.0);
     loads_.endLoad = vec(in.endLoad);
+    loads_.endCouple = vec(in.endCouple);
 }
 
 void CableSimulation::initial_guess(const Vec3& towPoint, std::vector<double>& q) const {
@@ -112,7 +113,8 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     const UCParams& p = model_.params();
     for (double v : {in.tow[0], in.tow[1], in.tow[2], in.towVelocity[0], in.towVelocity[1], in.towVelocity[2],
                      in.towAcceleration[0], in.towAcceleration[1], in.towAcceleration[2], in.endLoad[0],
-                     in.endLoad[1], in.endLoad[2], in.current[0], in.current[1]}) {
+                     in.endLoad[1], in.endLoad[2], in.endCouple[0], in.endCouple[1], in.endCouple[2],
+                     in.current[0], in.current[1]}) {
         if (!std::isfinite(v)) {
             error = "inputs must be finite numbers";
             return false;
@@ -176,7 +178,8 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
 bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::string& error) {
     for (double v : {in.tow[0], in.tow[1], in.tow[2], in.towVelocity[0], in.towVelocity[1], in.towVelocity[2],
                      in.towAcceleration[0], in.towAcceleration[1], in.towAcceleration[2], in.endLoad[0],
-                     in.endLoad[1], in.endLoad[2], in.current[0], in.current[1], h}) {
+                     in.endLoad[1], in.endLoad[2], in.endCouple[0], in.endCouple[1], in.endCouple[2],
+                     in.current[0], in.current[1], h}) {
         if (!std::isfinite(v)) {
             error = "inputs and the step size must be finite numbers";
             return false;

@@ -32,6 +32,7 @@ Loads scaled_loads(const Loads& loads, double lambda) {
     Loads s = loads;
     s.current *= lambda;
     s.endLoad *= lambda;
+    s.endCouple *= lambda;
     s.tow.v0 *= lambda;
     s.tow.v1 *= lambda;
     s.tow.a0.setZero();
@@ -51,7 +52,7 @@ double residual_norm(const CableModel& model, const Loads& loads, double t, cons
 double force_scale(const CableModel& model, const Loads& loads) {
     const UCParams& p = model.params();
     const double weight = p.massPerLength * p.gravity * p.length;
-    return std::max({weight, loads.endLoad.norm(), p.bodyMass * p.gravity, 1.0});
+    return std::max({weight, loads.endLoad.norm(), loads.endCouple.norm() / p.length, p.bodyMass * p.gravity, 1.0});
 }
 
 // Pseudo-transient continuation (implicit steps of a fictitious motion from rest, SER rule):
