@@ -5,6 +5,7 @@ after the ramp, so over the last 60 s (t = 600..660 s, 540 s after the ramp) the
 the steady 2.4 kn value. 1 %: the steady free-end state itself matches to 0.5 % (test_steady_tow);
 the other 0.5 % covers the remaining slow decay of the transient, whose slowest mode (the cable
 swinging up at constant length against drag) decays with a time constant of order a minute.
+Not marked slow: it is the foundation acceptance run (< 1 s CPU with 20 elements), so CI runs it.
 """
 
 import numpy as np
@@ -14,7 +15,6 @@ from ucable.manoeuvre import SCALAR_OUTPUTS, hopland_accelerate, run_tow
 from ucable.steady_tow import KNOT, CableProperties, solve_steady_tow
 
 
-@pytest.mark.slow
 def test_hopland_manoeuvre_runs_to_the_end_and_settles_at_the_2p4_knot_tension(make_cable):
     profile, t_end = hopland_accelerate()
     cable = make_cable(parameters={"nElements": 20})
