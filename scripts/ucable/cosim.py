@@ -101,7 +101,7 @@ class SceneResult:
     tow: np.ndarray  # (n, 3) tow point position
     cable: dict  # name -> (n,) for CABLE_OUTPUTS
     body: np.ndarray | None  # (n, 6) external body state
-    shape: np.ndarray  # (n, 4, 21)
+    shape: np.ndarray | None  # (n, 4, 21): x, y, z, tension (None if not recorded)
     cpu: float  # process time of the run [s]
     iterations: np.ndarray  # corrector iterations per step
     scene: Scene = None
@@ -252,8 +252,33 @@ class Master:
         if self.body is not None:
             self.body.step(h, F0_end, self.end_force(out))
 
+    # ------------------------------------------------------------------ co-simulation state
+    def snapshot(self) -> dict:
+        """Everything needed to continue the co-simulation from now, the FMU part serialized
+        (fmi2GetFMUstate + fmi2SerializeFMUstate): can be restored into another Master."""
+        state = self.cable.get_state()
+        try:
+            data = self.cable.serialize_state(state)
+        finally:
+            self.cable.free_state(state)
+        return {"t": self.t, "fmu": data, "out": self.out.copy(),
+                "vessel": self.vessel.get_state(),
+                "body": self.body.get_state() if self.body is not None else None}
+
+    def restore(self, snap: dict) -> None:
+        state = self.cable.deserialize_state(snap["fmu"])
+        try:
+            self.cable.set_state(state, time=snap["t"])
+        finally:
+            self.cable.free_state(state)
+        self.t = snap["t"]
+        self.out = snap["out"].copy()
+        self.vessel.set_state(snap["vessel"])
+        if self.body is not None:
+            self.body.set_state(snap["body"])
+
     # ------------------------------------------------------------------ whole run
-    def run(self, progress=None) -> SceneResult:
+    def run(self, progress=None, record_shape: bool = True) -> SceneResult:
         sc = self.scene
         n = int(math.ceil(sc.t_end / sc.step - 1e-9))
         times = np.array([min(k * sc.step, sc.t_end) for k in range(n + 1)])
@@ -262,7 +287,7 @@ class Master:
         tow = np.zeros((n + 1, 3))
         cab = np.zeros((n + 1, len(CABLE_OUTPUTS)))
         body = np.zeros((n + 1, TowedBody.N)) if self.body is not None else None
-        shape = np.zeros((n + 1, 4, NUM_STATIONS))
+        shape = np.zeros((n + 1, 4, NUM_STATIONS)) if record_shape else None
         iters = np.zeros(n + 1, dtype=int)
 
         def record(k):
@@ -272,7 +297,8 @@ class Master:
             cab[k] = self.out
             if body is not None:
                 body[k] = self.body.x
-            shape[k] = self.cable.get_reals(SHAPE_OUTPUTS).reshape(4, NUM_STATIONS)
+            if record_shape:
+                shape[k] = self.cable.get_reals(SHAPE_OUTPUTS).reshape(4, NUM_STATIONS)
 
         cpu0 = time.process_time()
         record(0)
@@ -291,10 +317,10 @@ class Master:
         self.cable.free()
 
 
-def run_scene(scene: Scene, fmu=None, progress=None) -> SceneResult:
+def run_scene(scene: Scene, fmu=None, progress=None, record_shape: bool = True) -> SceneResult:
     master = Master(scene, fmu)
     try:
-        return master.run(progress)
+        return master.run(progress, record_shape)
     except Exception:
         if master.cable.messages:
             print(master.cable.log_text())
