@@ -1,0 +1,641 @@
+"""Work-precision benchmark: UnderwaterCable FMU against MoorDyn v2 (issue 7), run via
+scripts/bench_work_precision.
+
+For every case, both codes fly the same prescribed fairlead/tow-point trajectory:
+  * our FMU over a grid of nElements x relTol (absTol = 100 relTol: positions are O(100 m), so the
+    relative part dominates and absTol only guards components near zero), inputs set at every
+    communication point with the exact acceleration passed as der(tow.v*) (fmi2SetRealInputDerivatives);
+  * MoorDyn (PyPI `moordyn`, its default RK2 scheme) from an input file, the tow point a coupled
+    Point moved by this script with moordyn.Step at every MoorDyn time step, over a grid of segment
+    counts and time steps; its stable limit is found by bisection on dt (a run blows up when it
+    returns NaN/inf, an error, or a force above 100x the expected scale).
+Each run's error is measured against a converged reference (our finest run); the table gives CPU
+(time.process_time of the stepping loop, including the Python/fmpy overhead each code pays when
+driven from Python), real-time factor and errors; the CPU ratio MoorDyn/ours at matched error comes
+from log-log interpolation of each code's Pareto front (error vs CPU).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import sys
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .fmu import CableFMU
+from .manoeuvre import hopland_accelerate
+from .paths import REPO_ROOT, require_fmu
+from .progress import ProgressBar
+from .steady_tow import KNOT
+
+OUT_DIR = REPO_ROOT / "out" / "bench_work_precision"
+DOC = REPO_ROOT / "docs" / "performance.md"
+MD_BA_ZETA = 0.8  # MoorDyn BA/-zeta = -0.8: damping ratio of the segment axial mode (its docs' example)
+BLOWUP_FACTOR = 100.0  # a force above 100x the case's force scale (or NaN) is a blown-up run
+
+
+# ----------------------------------------------------------------------------- trajectories
+class HoplandTow:
+    """Tow point along +x at the surface: 1.1 kn, linear ramp to 2.4 kn in 60 s, 600 s more."""
+
+    def __init__(self):
+        self.profile, self.t_end = hopland_accelerate()
+
+    def state(self, t):
+        p = self.profile
+        return (np.array([p.distance(t), 0.0, 0.0]), np.array([p.speed(t), 0.0, 0.0]),
+                np.array([p.acceleration(t), 0.0, 0.0]))
+
+
+class RampedSurge:
+    """Fairlead surge x0 + A r(t) sin(2 pi t / T) along x, r = 3 tau^2 - 2 tau^3 (tau = t / t_ramp)
+    ramps the amplitude in smoothly (position, velocity and acceleration start at rest)."""
+
+    def __init__(self, x0, amplitude, period, t_ramp, t_end):
+        self.x0, self.A, self.w, self.tr, self.t_end = (np.asarray(x0, float), amplitude,
+                                                        2 * math.pi / period, t_ramp, t_end)
+
+    def state(self, t):
+        tau = min(max(t / self.tr, 0.0), 1.0)
+        r = 3 * tau**2 - 2 * tau**3
+        dr = (6 * tau - 6 * tau**2) / self.tr if t < self.tr else 0.0
+        ddr = (6 - 12 * tau) / self.tr**2 if t < self.tr else 0.0
+        s, c, w = math.sin(self.w * t), math.cos(self.w * t), self.w
+        x = self.A * r * s
+        v = self.A * (dr * s + r * w * c)
+        a = self.A * (ddr * s + 2 * dr * w * c - r * w * w * s)
+        e = np.array([1.0, 0.0, 0.0])
+        return self.x0 + x * e, v * e, a * e
+
+
+# ----------------------------------------------------------------------------- cases
+@dataclass
+class Case:
+    name: str
+    title: str
+    traj: object
+    t_end: float
+    comm_step: float  # FMU communication step [s]; also the output sampling of both codes
+    line: dict  # length, diameter, massPerLength, EA, EI, Cdn, Cdt, Can, Cat
+    fmu_params: dict  # extra FMU parameters (ends)
+    anchor: tuple | None  # None: free lower end
+    force_scale: float  # [N] for the blow-up check
+    frame_speed: float = 0.0  # MoorDyn runs in a frame moving at this speed along x (Galilean)
+    metrics: tuple = ("tension", "end")
+    description: str = ""
+    fmu_grid: dict = field(default_factory=dict)
+    md_grid: dict = field(default_factory=dict)
+    reference: dict = field(default_factory=lambda: dict(full=(80, 1e-10), quick=(40, 1e-8)))
+
+
+HOPLAND_LINE = dict(length=300.0, diameter=0.0332, massPerLength=2.7018, EA=6.709e7, EI=1000.0,
+                    Cdn=1.649, Cdt=0.12, Can=1.0, Cat=0.0)
+STIFF_LINE = dict(length=250.0, diameter=0.2, massPerLength=60.0, EA=7e8, EI=2e4,
+                  Cdn=1.2, Cdt=0.008, Can=1.0, Cat=0.0)
+STIFF_FAIRLEAD = (0.0, 0.0, -10.0)
+STIFF_ANCHOR = (-228.0, 0.0, -100.0)
+
+
+def make_cases():
+    hop = HoplandTow()
+    hopland = Case(
+        name="hopland", title="Hopland tow manoeuvre (300 m, free end, 1.1 -> 2.4 kn in 60 s, 660 s)",
+        traj=hop, t_end=hop.t_end, comm_step=0.5, line=HOPLAND_LINE, fmu_params={"bottomEnd": 0},
+        anchor=None, force_scale=1e4, frame_speed=1.1 * KNOT, metrics=("tension", "end"),
+        description=(
+            "Default FMU cable, free lower end, tow point at the surface along +x. Errors: max |T - "
+            "T_ref| over the run relative to the range of T_ref (T = tow-point force magnitude); "
+            "RMS and max over the run of the 3-D far-end position difference."),
+        fmu_grid=dict(full=[(n, tol) for n in (5, 10, 20, 40) for tol in (1e-4, 1e-6, 1e-8)],
+                      quick=[(10, 1e-6)]),
+        md_grid=dict(full=[(n, f) for n in (10, 20, 40, 80) for f in (0.9,)] + [(20, 0.45)],
+                     quick=[(10, 0.9)]),
+    )
+    stiff = Case(
+        name="stiff", title="Stiff power cable (250 m, EA 7e8 N, EI 2e4 N m2, surge 3 m at 8 s, 120 s)",
+        traj=RampedSurge(STIFF_FAIRLEAD, 3.0, 8.0, 8.0, 120.0), t_end=120.0, comm_step=0.05,
+        line=STIFF_LINE, fmu_params={"bottomEnd": 1, "anchor.x": STIFF_ANCHOR[0],
+                                     "anchor.y": STIFF_ANCHOR[1], "anchor.z": STIFF_ANCHOR[2]},
+        anchor=STIFF_ANCHOR, force_scale=1e6, metrics=("tension", "mid"),
+        description=(
+            "No seabed yet (neither code has contact here): anchor at (-228, 0, -100) m, fairlead at "
+            "(0, 0, -10) m, so the 250 m line (wet weight 273 N/m) rises monotonically from the "
+            "anchor (static top tension 108 kN, anchor 84 kN) and hangs clear of a 100 m bottom. Cdn 1.2, Cdt 0.008 (on pi d), Can 1. "
+            "Fairlead surge 3 m at 8 s along x, amplitude ramped in smoothly over the first period. "
+            "Errors: max |T - T_ref| relative to the range of T_ref at the fairlead; RMS and max of "
+            "the mid-length position difference (station 11 of 21 / MoorDyn node N/2)."),
+        fmu_grid=dict(full=[(n, tol) for n in (5, 10, 20) for tol in (1e-4, 1e-6, 1e-8)],
+                      quick=[(10, 1e-6)]),
+        md_grid=dict(full=[(n, 0.9) for n in (10, 20, 40, 80)], quick=[(10, 0.9)]),
+        reference=dict(full=(40, 1e-8), quick=(20, 1e-8)),
+    )
+    return {"hopland": hopland, "stiff": stiff}
+
+
+# ----------------------------------------------------------------------------- runs
+@dataclass
+class Run:
+    code: str
+    resolution: int
+    setting: str  # tolerance or time step
+    cpu: float
+    t: np.ndarray
+    force: np.ndarray  # (n, 3) force of the cable on the tow point
+    end: np.ndarray  # (n, 3) far-end position
+    mid: np.ndarray  # (n, 3) mid-length position
+    stats: dict = field(default_factory=dict)
+    errors: dict = field(default_factory=dict)
+    label: str = ""
+
+
+def sample_times(case):
+    n = int(round(case.t_end / case.comm_step))
+    return np.arange(n + 1) * case.comm_step
+
+
+FMU_OUT = ["towForce.x", "towForce.y", "towForce.z", "endPosition.x", "endPosition.y",
+           "endPosition.z", "shape.x[11]", "shape.y[11]", "shape.z[11]"]
+FMU_STATS = ["solver.nSteps", "solver.nResidualEvals", "solver.nJacobianEvals",
+             "solver.nNonlinearFailures", "solver.nErrorTestFailures"]
+
+
+def run_fmu(fmu, case, n_elements, rel_tol, extra=None, label=""):
+    params = dict(case.line)
+    params.update(case.fmu_params)
+    params.update(nElements=n_elements, relTol=rel_tol, absTol=100.0 * rel_tol)
+    params.update(extra or {})
+    times = sample_times(case)
+    out = np.zeros((len(times), len(FMU_OUT)))
+    cable = CableFMU(fmu, parameters=params, instance_name=f"{case.name}_{n_elements}")
+    try:
+        def inputs(t):
+            x, v, a = case.traj.state(t)
+            return {"tow.x": x[0], "tow.y": x[1], "tow.z": x[2],
+                    "tow.vx": v[0], "tow.vy": v[1], "tow.vz": v[2]}, a
+
+        cpu0 = time.process_time()
+        inp, a = inputs(0.0)
+        cable.initialize(0.0, case.t_end, inputs=inp)
+        out[0] = cable.get_reals(FMU_OUT)
+        sh = cable.shape()
+        shape0 = np.array([sh["shape.x"], sh["shape.y"], sh["shape.z"]])
+        for k in range(len(times) - 1):
+            inp, a = inputs(times[k])
+            cable.set(inp)
+            cable.set_input_derivatives(["tow.vx", "tow.vy", "tow.vz"], 1, a)
+            cable.do_step(times[k + 1] - times[k], t=times[k])
+            out[k + 1] = cable.get_reals(FMU_OUT)
+        cpu = time.process_time() - cpu0
+        stats = dict(zip(FMU_STATS, cable.get_reals(FMU_STATS)))
+        stats["shape0"] = shape0
+    finally:
+        cable.free()
+    tags = ",".join(f"{k}={v:g}" for k, v in (extra or {}).items())
+    return Run("ours", n_elements, f"relTol {rel_tol:.0e}", cpu, times, out[:, 0:3], out[:, 3:6],
+               out[:, 6:9], stats, label=label or (f"ours N={n_elements} tol={rel_tol:.0e}" + (f" {tags}" if tags else "")))
+
+
+# ----------------------------------------------------------------------------- MoorDyn
+def moordyn_input(case, n_seg, dt, workdir: Path, end_guess) -> Path:
+    ln = case.line
+    ba = -MD_BA_ZETA
+    if case.anchor is None:
+        e = end_guess[:, -1]
+        p1 = f"1     Free      {e[0]:.10g} {e[1]:.10g} {e[2]:.10g}  0  0  0  0"
+    else:
+        a = case.anchor
+        p1 = f"1     Fixed     {a[0]:.10g} {a[1]:.10g} {a[2]:.10g}  0  0  0  0"
+    x0, _, _ = case.traj.state(0.0)
+    text = f"""--------------------- MoorDyn Input File ------------------------------------
+UnderwaterCable work-precision benchmark, case {case.name}
+---------------------- LINE TYPES ------------------------------------------
+TypeName   Diam    Mass/m     EA     BA/-zeta    EI    Cd     Ca     CdAx    CaAx
+(name)     (m)     (kg/m)     (N)    (N-s/-)     (N-m^2) (-)  (-)    (-)     (-)
+cable  {ln['diameter']:.10g} {ln['massPerLength']:.10g} {ln['EA']:.10g} {ba:g} {ln['EI']:.10g} {ln['Cdn']:.10g} {ln['Can']:.10g} {ln['Cdt']:.10g} {ln['Cat']:.10g}
+---------------------- POINTS --------------------------------
+ID   Attachment  X       Y     Z      Mass   Volume  CdA    CA
+(#)   (-)        (m)     (m)   (m)    (kg)   (m^3)   (m^2)  (-)
+{p1}
+2     Coupled   {x0[0]:.10g} {x0[1]:.10g} {x0[2]:.10g}  0  0  0  0
+---------------------- LINES --------------------------------------
+ID    LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)   (name)     (#)      (#)      (m)       (-)      (-)
+1     cable      1        2        {ln['length']:.10g}  {n_seg}  -
+---------------------- OPTIONS -----------------------------------------
+{dt:.10g}   dtM
+9.81     g
+1025     rho
+5000     WtrDpth
+{1 if case.frame_speed else 0}        Currents
+0        writeLog
+1        disableOutput
+1        disableOutTime
+------------------------- need this line -------------------------------------
+"""
+    path = workdir / "lines.txt"
+    path.write_text(text)
+    if case.frame_speed:
+        with open(workdir / "current_profile.txt", "w") as f:
+            f.write("--------------------- MoorDyn steady currents File -----------------\n"
+                    "uniform current -V0 along x: the benchmark runs in the frame of the steady tow\n"
+                    "z (m), ux (m/s), uy (m/s), uz (m/s)\n")
+            for z in (-5000.0, -1000.0, 0.0, 10.0):
+                f.write(f"{z} {-case.frame_speed:.15g} 0.0 0.0\n")
+    return path
+
+
+def set_line_nodes(system, line, n_seg, shape):
+    """Start MoorDyn's line at rest in the given shape (3, 21 stations, k = 0 at the tow point).
+
+    MoorDyn 2.7 has no API to set node positions and its initial-condition solver ignores
+    currents; moordyn.Init_NoIC places a uniformly stretched straight line whose axial snap at the
+    free end (~c eps = 0.3 m/s) excites a drag-damped mode with a 240 s time constant (measured:
+    1.2 m end-position error after 300 s). So the node positions are written into MoorDyn's own
+    serialized state (each internal node's coordinates replaced where they occur) and read back
+    through moordyn.Deserialize; the result is checked with GetLineNodePos."""
+    import moordyn
+
+    data = np.frombuffer(bytes(moordyn.Serialize(system)), dtype=np.float64).copy()
+    stations = np.linspace(0.0, 1.0, shape.shape[1])
+    targets = {}
+    for i in range(1, n_seg):
+        u = 1.0 - i / n_seg  # MoorDyn node 0 is the free end (our s = L), node N the tow point
+        q = np.array(moordyn.GetLineNodePos(line, i))
+        new = np.array([np.interp(u, stations, shape[d]) for d in range(3)])
+        hit = np.where((data[:-2] == q[0]) & (data[1:-1] == q[1]) & (data[2:] == q[2]))[0]
+        if len(hit) == 0:
+            raise RuntimeError("MoorDyn state layout not recognized (node position not found)")
+        for j in hit:
+            data[j:j + 3] = new
+        targets[i] = new
+    moordyn.Deserialize(system, data.tobytes())
+    for i, new in targets.items():
+        got = np.array(moordyn.GetLineNodePos(line, i))
+        if np.max(np.abs(got - new)) > 1e-9:
+            raise RuntimeError(f"MoorDyn node {i} not set from the serialized state: {got} != {new}")
+
+
+class _Quiet:
+    """Silence MoorDyn's C-level console output (it prints to the process's stdout and stderr)."""
+
+    def __enter__(self):
+        sys.stdout.flush()
+        sys.stderr.flush()
+        self.saved = (os.dup(1), os.dup(2))
+        self.null = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(self.null, 1)
+        os.dup2(self.null, 2)
+
+    def __exit__(self, *exc):
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os.dup2(self.saved[0], 1)
+        os.dup2(self.saved[1], 2)
+        os.close(self.null)
+        for fd in self.saved:
+            os.close(fd)
+
+
+def run_moordyn(case, n_seg, dt, steady_shape, t_stop=None, label=""):
+    """One MoorDyn run with time step dt (adjusted so that comm_step / dt is an integer).
+    Returns a Run, or None when it blew up. In a case with frame_speed (the Hopland tow) MoorDyn
+    runs in the frame moving at that speed with a uniform current -frame_speed: the steady tow at
+    t = 0 is then a state at rest, which MoorDyn can start from (its initial-condition solver does
+    not apply currents, and in the Earth frame a tow from rest needs > 2000 s to settle).
+    steady_shape (3, 21): the steady-tow shape at the 21 stations (from the reference run), set
+    as MoorDyn's initial node positions (see set_line_nodes); None for anchored cases, which
+    start from MoorDyn's own static initial condition (moordyn.Init)."""
+    import moordyn
+
+    sub = int(math.ceil(case.comm_step / dt - 1e-9))
+    dt = case.comm_step / sub
+    t_stop = case.t_end if t_stop is None else t_stop
+    times = sample_times(case)
+    times = times[times <= t_stop + 1e-9]
+    V0 = case.frame_speed
+    with tempfile.TemporaryDirectory() as tmp, _Quiet():
+        cwd = os.getcwd()
+        os.chdir(tmp)  # MoorDyn reads current_profile.txt from the working directory
+        try:
+            path = moordyn_input(case, n_seg, dt, Path(tmp), steady_shape)
+            system = moordyn.Create(str(path))
+            x0, v0, _ = case.traj.state(0.0)
+            xf = [x0[0], x0[1], x0[2]]
+            vf = [v0[0] - V0, v0[1], v0[2]]
+            if V0:
+                moordyn.Init_NoIC(system, xf, vf)
+                set_line_nodes(system, moordyn.GetLine(system, 1), n_seg, steady_shape)
+            else:
+                moordyn.Init(system, xf, vf)
+            line = moordyn.GetLine(system, 1)
+            end_point = moordyn.GetPoint(system, 1)
+            force = np.zeros((len(times), 3))
+            end = np.zeros((len(times), 3))
+            mid = np.zeros((len(times), 3))
+            tt = 0.0
+            ok = True
+            # pre-computed coupled-point trajectory in MoorDyn's frame, one entry per MoorDyn step
+            nsteps = (len(times) - 1) * sub
+            traj_x, traj_v = [], []
+            for i in range(nsteps):
+                t = i * dt
+                x, v, _ = case.traj.state(t)
+                traj_x.append([x[0] - V0 * t, x[1], x[2]])
+                traj_v.append([v[0] - V0, v[1], v[2]])
+            limit = BLOWUP_FACTOR * case.force_scale
+
+            def record(k, f):
+                t = times[k]
+                force[k] = f
+                e = moordyn.GetPointPos(end_point) if case.anchor is None else moordyn.GetLineNodePos(line, 0)
+                m = moordyn.GetLineNodePos(line, n_seg // 2)
+                end[k] = (e[0] + V0 * t, e[1], e[2])
+                mid[k] = (m[0] + V0 * t, m[1], m[2])
+
+            step = moordyn.Step
+            cpu0 = time.process_time()
+            i = 0
+            for k in range(len(times) - 1):
+                for _ in range(sub):
+                    f = step(system, traj_x[i], traj_v[i], tt, dt)
+                    tt += dt
+                    i += 1
+                if not (np.all(np.isfinite(f)) and max(abs(c) for c in f) < limit):
+                    ok = False
+                    break
+                record(k + 1, f)
+            cpu = time.process_time() - cpu0
+            # row 0 (t = 0) stays empty: moordyn.Step returns forces at the end of each call and
+            # the error metrics compare t > 0 only
+            moordyn.Close(system)
+        except Exception:  # MoorDyn reports NaN states as errors
+            ok = False
+            cpu = math.nan
+        finally:
+            os.chdir(cwd)
+    if not ok:
+        return None
+    return Run("MoorDyn", n_seg, f"dt {dt:.3g} s", cpu, times, force, end, mid,
+               {"dt": dt, "steps": (len(times) - 1) * sub},
+               label=label or f"MoorDyn N={n_seg} dt={dt:.2e}")
+
+
+def moordyn_stable_dt(case, n_seg, steady_shape, t_trial=None, rel=0.03):
+    """Largest stable dt (bisection between a stable and an unstable dt, to `rel`), judged on a
+    trial run of t_trial s (default 30 s: RK2's limit is set by the axial waves, which grow within
+    a few hundred steps when unstable; a run that still blows up later is retried at 0.8 dt)."""
+    ln = case.line
+    c = math.sqrt(ln["EA"] / ln["massPerLength"])
+    seg = ln["length"] / n_seg
+    lo, hi = 0.1 * seg / c, 4.0 * seg / c
+    t_trial = min(case.t_end, 30.0) if t_trial is None else t_trial
+    while run_moordyn(case, n_seg, lo, steady_shape, t_stop=t_trial) is None:
+        hi, lo = lo, lo / 3
+        if lo < 1e-3 * seg / c:
+            raise RuntimeError(f"MoorDyn unstable even at dt = {lo:g} s (N = {n_seg})")
+    while hi / lo > 1 + rel:
+        mid = math.sqrt(lo * hi)
+        if run_moordyn(case, n_seg, mid, steady_shape, t_stop=t_trial) is None:
+            hi = mid
+        else:
+            lo = mid
+    return lo, lo * c / seg
+
+
+# ----------------------------------------------------------------------------- errors
+def errors(run, ref):
+    """Error metrics of `run` against `ref` on the common samples (t > 0)."""
+    sl = slice(1, None)
+    T = np.linalg.norm(run.force, axis=1)[sl]
+    Tr = np.linalg.norm(ref.force, axis=1)[sl]
+    rng = Tr.max() - Tr.min()
+    de = np.linalg.norm(run.end - ref.end, axis=1)[sl]
+    dm = np.linalg.norm(run.mid - ref.mid, axis=1)[sl]
+    return {"tension": float(np.max(np.abs(T - Tr)) / rng),
+            "tension_rms": float(np.sqrt(np.mean((T - Tr) ** 2)) / rng),
+            "end_rms": float(np.sqrt(np.mean(de**2))), "end_max": float(de.max()),
+            "mid_rms": float(np.sqrt(np.mean(dm**2))), "mid_max": float(dm.max())}
+
+
+def pareto(points):
+    """(cpu, err) pairs -> Pareto front sorted by cpu (each point better in error than all cheaper)."""
+    front, best = [], math.inf
+    for cpu, err in sorted(points):
+        if err < best and err > 0:
+            front.append((cpu, err))
+            best = err
+    return front
+
+
+def cpu_at_error(front, err):
+    """CPU of a Pareto front at error `err` by log-log interpolation; None outside its range."""
+    if not front:
+        return None
+    errs = [e for _, e in front]
+    if err > errs[0] or err < errs[-1]:
+        return None
+    for (c0, e0), (c1, e1) in zip(front, front[1:]):
+        if e1 <= err <= e0:
+            if e0 == e1:
+                return c0
+            w = (math.log(err) - math.log(e0)) / (math.log(e1) - math.log(e0))
+            return math.exp(math.log(c0) + w * (math.log(c1) - math.log(c0)))
+    return front[0][0]
+
+
+def matched_ratios(runs, metric):
+    ours = pareto([(r.cpu, r.errors[metric]) for r in runs if r.code == "ours"])
+    md = pareto([(r.cpu, r.errors[metric]) for r in runs if r.code == "MoorDyn"])
+    rows = []
+    for r in runs:
+        if r.code != "MoorDyn":
+            continue
+        e = r.errors[metric]
+        c_ours = cpu_at_error(ours, e)
+        c_md = cpu_at_error(md, e)
+        rows.append((r.label, e, c_md if c_md is not None else r.cpu, c_ours))
+    return rows
+
+
+# ----------------------------------------------------------------------------- main
+def parse_args(argv):
+    p = argparse.ArgumentParser(prog="scripts/bench_work_precision", description=__doc__.split("\n")[0])
+    p.add_argument("--quick", action="store_true",
+                   help="CI size: one small grid point per code and a cheaper reference")
+    p.add_argument("--cases", nargs="+", default=None, help="cases to run (default: all)")
+    p.add_argument("--out", type=Path, default=OUT_DIR, help="output directory (CSV-like log, PNG)")
+    p.add_argument("--doc", type=Path, default=None,
+                   help="write the markdown report here (full mode default: docs/performance.md)")
+    p.add_argument("--fmu", type=Path, default=None)
+    return p.parse_args(argv)
+
+
+def run_case(fmu, case, quick, progress_label=""):
+    mode = "quick" if quick else "full"
+    ref_n, ref_tol = case.reference[mode]
+    jobs = ([("ours", n, tol) for n, tol in case.fmu_grid[mode]]
+            + [("MoorDyn", n, f) for n, f in case.md_grid[mode]])
+    bar = ProgressBar(len(jobs) + 1, label=f"{progress_label}{case.name}")
+    bar.update(0, "reference")
+    ref = run_fmu(fmu, case, ref_n, ref_tol, label=f"ours N={ref_n} tol={ref_tol:.0e} (reference)")
+    shape0 = ref.stats.pop("shape0") if case.frame_speed else None  # steady tow at t = 0
+    end_guess = shape0
+    runs, limits = [], {}
+    for j, (code, n, setting) in enumerate(jobs):
+        bar.update(j + 1, f"{code} N={n}")
+        if code == "ours":
+            runs.append(run_fmu(fmu, case, n, setting))
+        else:
+            if n not in limits:
+                limits[n] = moordyn_stable_dt(case, n, end_guess)
+            dt = setting * limits[n][0]
+            run = run_moordyn(case, n, dt, end_guess)
+            while run is None and dt > 0.2 * limits[n][0]:  # unstable over the full run: back off
+                dt *= 0.8
+                run = run_moordyn(case, n, dt, end_guess)
+            if run is not None:
+                run.stats["dt_limit"] = limits[n][0]
+                run.stats["cfl_limit"] = limits[n][1]
+                runs.append(run)
+    bar.update(len(jobs) + 1, "done")
+    bar.close(f"{case.name}: {len(runs)} runs")
+    for r in runs + [ref]:
+        r.errors = errors(r, ref)
+    return ref, runs, limits
+
+
+def fmt_table(case, ref, runs):
+    pos = "end" if "end" in case.metrics else "mid"
+    head = (f"| code | resolution | step / tolerance | CPU [s] | CPU s per simulated s | real-time factor "
+            f"| tension error (max, rel. to range) | {pos} position RMS [m] | {pos} position max [m] "
+            f"| steps | residual evals | Jacobian evals |")
+    lines = [head, "|" + "---|" * 12]
+    for r in runs + [ref]:
+        st = r.stats
+        steps = int(st.get("solver.nSteps", st.get("steps", 0)))
+        res = st.get("solver.nResidualEvals")
+        jac = st.get("solver.nJacobianEvals")
+        resolution = f"{r.resolution} {'elements' if r.code == 'ours' else 'segments'}"
+        lines.append(
+            f"| {r.code}{' (reference)' if r is ref else ''} | {resolution} | {r.setting} | {r.cpu:.3f} | "
+            f"{r.cpu / case.t_end:.2e} | {case.t_end / r.cpu:.0f} | {r.errors['tension']:.2e} | "
+            f"{r.errors[pos + '_rms']:.2e} | {r.errors[pos + '_max']:.2e} | {steps} | "
+            f"{'' if res is None else int(res)} | {'' if jac is None else int(jac)} |")
+    return "\n".join(lines)
+
+
+def fmt_ratios(case, runs):
+    pos = "end_rms" if "end" in case.metrics else "mid_rms"
+    out = []
+    for metric, name in (("tension", "tension error"), (pos, pos.replace("_rms", " position RMS error"))):
+        rows = matched_ratios(runs, metric)
+        out.append(f"\nAt matched {name} (each MoorDyn run; our CPU interpolated log-log on our "
+                   f"Pareto front of error vs CPU):\n")
+        out.append("| MoorDyn run | error | MoorDyn CPU [s] | our CPU at that error [s] | ratio MoorDyn/ours |")
+        out.append("|---|---|---|---|---|")
+        for label, e, c_md, c_ours in rows:
+            ratio = f"{c_md / c_ours:.1f}" if c_ours else "outside our measured range"
+            c_o = f"{c_ours:.3f}" if c_ours else "-"
+            out.append(f"| {label} | {e:.2e} | {c_md:.3f} | {c_o} | {ratio} |")
+    return "\n".join(out)
+
+
+def plot(case, ref, runs, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    pos = "end_rms" if "end" in case.metrics else "mid_rms"
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for ax, metric, ylabel in ((axes[0], "tension", "max tension error / range"),
+                               (axes[1], pos, f"{pos.split('_')[0]} position RMS error [m]")):
+        for code, marker in (("ours", "o"), ("MoorDyn", "s")):
+            rs = [r for r in runs if r.code == code and r.errors[metric] > 0]
+            if not rs:
+                continue
+            ax.loglog([r.cpu for r in rs], [r.errors[metric] for r in rs], marker, label=code)
+            for r in rs:
+                ax.annotate(f"{r.resolution}", (r.cpu, r.errors[metric]), fontsize=7,
+                            textcoords="offset points", xytext=(3, 3))
+            front = pareto([(r.cpu, r.errors[metric]) for r in rs])
+            ax.loglog([c for c, _ in front], [e for _, e in front], "-", alpha=0.5)
+        ax.set_xlabel("CPU time [s]")
+        ax.set_ylabel(ylabel)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend()
+    fig.suptitle(case.title, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def main(argv=None) -> int:
+    args = parse_args(sys.argv[1:] if argv is None else argv)
+    fmu = args.fmu if args.fmu is not None else require_fmu()
+    cases = make_cases()
+    names = args.cases or list(cases)
+    args.out.mkdir(parents=True, exist_ok=True)
+    doc = args.doc if args.doc is not None else (None if args.quick else DOC)
+    sections = []
+    for name in names:
+        case = cases[name]
+        ref, runs, limits = run_case(fmu, case, args.quick)
+        table = fmt_table(case, ref, runs)
+        ratios = fmt_ratios(case, runs)
+        png = args.out / f"{case.name}_work_precision.png"
+        plot(case, ref, runs, png)
+        lim = "; ".join(f"N = {n}: dt_max = {d:.3g} s = {c:.2f} x segment / axial wave speed"
+                        for n, (d, c) in sorted(limits.items()))
+        text = (f"## {case.title}\n\n{case.description}\n\nMoorDyn stable limit (bisection, RK2): {lim}."
+                f"\n\n{table}\n{ratios}\n\n![work-precision {case.name}]({png.name})\n")
+        print(text, flush=True)
+        sections.append((case, ref, runs, text, png))
+    if doc is not None:
+        write_doc(doc, sections, args)
+    return 0
+
+
+def write_doc(doc, sections, args):
+    import shutil
+    doc.parent.mkdir(parents=True, exist_ok=True)
+    parts = [DOC_HEADER]
+    for case, ref, runs, text, png in sections:
+        shutil.copy(png, doc.parent / png.name)
+        parts.append(text)
+    extra = doc.parent / "performance_profile.md"
+    if extra.is_file():
+        parts.append(extra.read_text())
+    doc.write_text("\n".join(parts))
+    print(f"wrote {doc}")
+
+
+DOC_HEADER = """# Performance: work-precision against MoorDyn
+
+Generated by `bash scripts/bench_work_precision` (do not edit by hand; the profile section comes
+from `docs/performance_profile.md`, written by `bash scripts/profile_callgrind`).
+CPU is `time.process_time()` of the stepping loop of each code driven from Python on the same
+machine in one run (our FMU through fmpy, MoorDyn through its `moordyn` Python module calling
+`moordyn.Step` every MoorDyn time step); absolute times vary on this shared machine, ratios much
+less. Errors are measured against our finest run (the reference row).
+
+How the two models are matched: same line properties; Morison drag normal on d and tangential on
+pi d in both codes (MoorDyn's CdAx is defined on pi d); normal added mass Can on the displaced
+volume, no tangential added mass; gravity 9.81, water 1025 kg/m3; bending stiffness EI given to
+MoorDyn as well (its v2 lines have bending). Internal axial damping differs on purpose: each code
+runs as its users run it: ours with its default axialDamping = 0.01 s x EA, MoorDyn with
+BA/-zeta = -0.8 (80 % of critical damping of the segment axial mode, resolution dependent). Both
+only damp the axial vibrations; their effect on the slow outputs compared here is below the
+errors shown (see the switch table: axialDamping). MoorDyn applies drag per stretched length,
+ours per unstretched length (strain < 1e-4 here). MoorDyn lumps mass and loads at nodes, so its
+tow-point force includes the half-segment node's weight, drag and inertia: this is part of its
+discretization error and converges to the rod-end force as N grows.
+"""
+
+
+if __name__ == "__main__":
+    sys.exit(main())
