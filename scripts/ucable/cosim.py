@@ -219,6 +219,7 @@ class Master:
         self._step_partners(h, out, F0_tow, F0_end)
 
         iterations = 0
+        self.last_change = np.nan  # force change of the last correction (iterative master)
         if iterative:
             try:
                 for iterations in range(1, self.scene.max_iter + 1):
@@ -239,6 +240,7 @@ class Master:
                     change = max(np.max(np.abs(self.tow_force(new) - self.tow_force(out))),
                                  np.max(np.abs(self.end_force(new) - self.end_force(out))))
                     out = new
+                    self.last_change = change
                     if change < self.scene.tol:
                         break
             finally:
