@@ -27,6 +27,10 @@ extern "C" {
 #define UC_BOTTOM_FREE 0
 #define UC_BOTTOM_ANCHORED 1
 #define UC_BOTTOM_TOWED_BODY 2
+#define UC_BOTTOM_EXTERNAL 3
+
+/* Rows of the depth profile of the current (currentProfile.*[1..10]). */
+#define UC_CURRENT_PROFILE_ROWS 10
 
 /* topEnd values */
 #define UC_TOP_HINGED 0
@@ -65,6 +69,17 @@ typedef struct UCParams {
     double initialDirection[3]; /* initialDirection.x/y/z   straight initial line (and statics first guess) */
     int enableBending;        /* enableBending (Boolean)    EI term on/off */
     int enableAddedMass;      /* enableAddedMass (Boolean)  Can/Cat terms on/off */
+    /* seabed (flat, at z = -waterDepth) */
+    int enableSeabed;         /* enableSeabed (Boolean) */
+    double waterDepth;        /* waterDepth [m] */
+    double seabedStiffness;   /* seabedStiffness [N/m2]     force per length per metre of penetration */
+    double seabedDamping;     /* seabedDamping [N.s/m2]     per length per m/s of penetration rate */
+    double seabedFriction;    /* seabedFriction [1]         Coulomb coefficient (axial and lateral) */
+    /* depth profile of the current, added to the uniform current.* inputs */
+    int currentProfileRows;   /* currentProfileRows         rows in use, 0..10 (0: no profile) */
+    double currentProfileDepth[UC_CURRENT_PROFILE_ROWS]; /* currentProfile.depth[k] [m], positive down, increasing */
+    double currentProfileX[UC_CURRENT_PROFILE_ROWS];     /* currentProfile.x[k] [m/s] */
+    double currentProfileY[UC_CURRENT_PROFILE_ROWS];     /* currentProfile.y[k] [m/s] */
 } UCParams;
 
 /* Inputs, held constant (or extrapolated, see uc_do_step) over a communication step. */
@@ -77,6 +92,8 @@ typedef struct UCInputs {
     double current[2];         /* current.x/y [m/s]  uniform current */
     int towAccelerationGiven;  /* 1 when towAcceleration came from the master for this step; 0: the
                                   core estimates it from the last two tow velocity inputs */
+    double end[3];             /* end.x/y/z [m]      far-end position when bottomEnd = 3 */
+    double endVelocity[3];     /* end.vx/vy/vz [m/s] far-end velocity when bottomEnd = 3 */
 } UCInputs;
 
 /* Outputs, valid after uc_initialize and after every uc_do_step. */
@@ -94,6 +111,9 @@ typedef struct UCOutputs {
     double minTension;         /* minTension [N]        over the cable (quadrature points and stations) */
     double maxCurvature;       /* maxCurvature [1/m] */
     double maxBendingMoment;   /* maxBendingMoment [N.m] = EI * maxCurvature */
+    double touchdownArcLength; /* touchdownArcLength [m] unstretched arc length from the tow point to the
+                                  first seabed contact; the length when none */
+    double minSeabedClearance; /* minSeabedClearance [m] min over the cable of z + waterDepth (< 0: penetration) */
     /* integrator statistics since uc_initialize (debug outputs) */
     double nSteps, nResidualEvals, nJacobianEvals, nNonlinearFailures, nErrorTestFailures;
 } UCOutputs;

@@ -82,6 +82,18 @@ CableModel::CableModel(const UCParams& params)
     axial_.damping = params.axialDamping;
     topTangent_ = params.topEnd == UC_TOP_CLAMPED ? unit(params.topTangent) : Vec3(0, 0, -1);
     anchor_ = Vec3(params.anchor[0], params.anchor[1], params.anchor[2]);
+    seabed_.enabled = params.enableSeabed != 0;
+    seabed_.depth = params.waterDepth;
+    seabed_.stiffness = params.seabedStiffness;
+    seabed_.damping = params.seabedDamping;
+    seabed_.friction = params.seabedFriction;
+    seabed_.smoothing = 0.05 * params.diameter;
+    profile_.rows = params.currentProfileRows;
+    for (int k = 0; k < kCurrentProfileRows; ++k) {
+        profile_.depth[k] = params.currentProfileDepth[k];
+        profile_.ux[k] = params.currentProfileX[k];
+        profile_.uy[k] = params.currentProfileY[k];
+    }
 
     // DOF map, in global order so that the free Jacobian stays banded.
     free_.assign(n_global(), -1);
@@ -92,7 +104,9 @@ CableModel::CableModel(const UCParams& params)
             const int g = 6 * i + k;
             const bool position = k < 3;
             if (i == 0 && position) continue;  // tow point: prescribed
-            if (i == nElements_ && position && params.bottomEnd == UC_BOTTOM_ANCHORED) continue;
+            if (i == nElements_ && position &&
+                (params.bottomEnd == UC_BOTTOM_ANCHORED || params.bottomEnd == UC_BOTTOM_EXTERNAL))
+                continue;  // far end: prescribed
             if (i == 0 && params.topEnd == UC_TOP_CLAMPED) {
                 // r'_0 = a * topTangent: one free stretch shared by the three components.
                 if (k == 3) ++next;
@@ -134,12 +148,19 @@ void CableModel::expand(const double* q, const double* v, const double* a, const
         Xd[k] = pv[k];
         Xdd[k] = pa[k];
     }
+    const int gN = 6 * nElements_;
     if (params_.bottomEnd == UC_BOTTOM_ANCHORED) {
-        const int gN = 6 * nElements_;
         for (int k = 0; k < 3; ++k) {
             X[gN + k] = anchor_[k];
             Xd[gN + k] = 0.0;
             Xdd[gN + k] = 0.0;
+        }
+    } else if (params_.bottomEnd == UC_BOTTOM_EXTERNAL) {
+        loads.end.evaluate(t, p, pv, pa);
+        for (int k = 0; k < 3; ++k) {
+            X[gN + k] = p[k];
+            Xd[gN + k] = pv[k];
+            Xdd[gN + k] = pa[k];
         }
     }
 }
@@ -167,6 +188,7 @@ void CableModel::element_residual(int e, const double* X, const double* Xd, cons
     add_axial_force(tables_, scaled_axial(loads), X + g0, Xd + g0, R);
     if (EI_ > 0.0) add_bending_force(tables_, EI_, X + g0, R);
     add_hydro_force(tables_, fluid_, loads.current, X + g0, Xd + g0, Xdd + g0, R);
+    if (seabed_.enabled) add_seabed_force(tables_, seabed_, X + g0, Xd + g0, R);
 }
 
 void CableModel::element_jacobian(int e, const double* X, const double* Xd, const double* Xdd,
@@ -179,6 +201,11 @@ void CableModel::element_jacobian(int e, const double* X, const double* Xd, cons
     add_axial_jacobian(tables_, scaled_axial(loads), X + g0, Xd + g0, K, C);
     if (EI_ > 0.0) add_bending_jacobian(tables_, EI_, K);
     add_hydro_jacobian(tables_, fluid_, loads.current, X + g0, Xd + g0, Xdd + g0, K, C, M);
+    if (seabed_.enabled) add_seabed_jacobian(tables_, seabed_, X + g0, Xd + g0, K, C);
+}
+
+bool CableModel::far_end_prescribed() const {
+    return params_.bottomEnd == UC_BOTTOM_ANCHORED || params_.bottomEnd == UC_BOTTOM_EXTERNAL;
 }
 
 namespace {
@@ -202,7 +229,7 @@ Vec6 CableModel::end_node_residual(const double* X, const double* Xd, const doub
     if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return R;
     const Vec3 rd = Eigen::Map<const Vec3>(Xd + gN);
     const Vec3 rdd = Eigen::Map<const Vec3>(Xdd + gN);
-    const Vec3 u = loads.current - rd;
+    const Vec3 u = loads.current.at(X[gN + 2], nullptr) - rd;
     const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
     const double wet = (params_.bodyMass - fluid_.rho * params_.bodyVolume) * fluid_.gravity;
     R.head<3>() += (params_.bodyMass + params_.bodyAddedMass) * rdd;
@@ -223,8 +250,11 @@ void CableModel::end_node_jacobian(const double* X, const double* Xd, const doub
         K.block<3, 3>(3, 3) = -cross_matrix(loads.endCouple) * (Mat3::Identity() / n2 - 2.0 * rp * rp.transpose() / (n2 * n2));
     }
     if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return;
-    const Vec3 u = loads.current - Eigen::Map<const Vec3>(Xd + gN);
+    Vec3 slope;
+    const Vec3 u = loads.current.at(X[gN + 2], &slope) - Eigen::Map<const Vec3>(Xd + gN);
     const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
+    const Mat3 dDrag_du = 0.5 * fluid_.rho * params_.bodyCdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
+    K.block<3, 3>(0, 0).col(2) -= dDrag_du * slope;  // drag of the body in a sheared current
     C.block<3, 3>(0, 0) = 0.5 * fluid_.rho * params_.bodyCdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
     M.block<3, 3>(0, 0) = (params_.bodyMass + params_.bodyAddedMass) * Mat3::Identity();
 }

@@ -13,6 +13,7 @@
 #include "cable_api.h"
 #include "hermite_element.h"
 #include "hydrodynamics.h"
+#include "seabed.h"
 
 namespace uc {
 
@@ -30,7 +31,8 @@ struct TowTrajectory {
 // Everything the residual needs besides the state: prescribed motion and environment.
 struct Loads {
     TowTrajectory tow;
-    Vec3 current = Vec3::Zero();
+    TowTrajectory end;  // far end when bottomEnd = 3 (external body)
+    CurrentField current;
     Vec3 endLoad = Vec3::Zero();
     Vec3 endCouple = Vec3::Zero();
     // Caps the axial stiffness factor of every strain mode (static solver only: equilibrium is
@@ -60,6 +62,9 @@ public:
     const FluidProps& fluid() const { return fluid_; }
     double EI() const { return EI_; }
     const AxialProps& axial() const { return axial_; }
+    const SeabedProps& seabed() const { return seabed_; }
+    const CurrentProfile& current_profile() const { return profile_; }
+    bool far_end_prescribed() const;  // anchored or external
 
     int free_index(int g) const { return free_[g]; }
     double coefficient(int g) const { return coef_[g]; }
@@ -107,6 +112,8 @@ private:
     double EI_;
     Vec3 topTangent_;
     Vec3 anchor_;
+    SeabedProps seabed_;
+    CurrentProfile profile_;
     std::vector<int> free_;
     std::vector<double> coef_;
     int nFree_ = 0;

@@ -17,12 +17,31 @@ double submerged_fraction_slope(double z, double diameter) {
 
 }  // namespace
 
+Vec3 CurrentField::at(double z, Vec3* slope) const {
+    Vec3 u = uniform;
+    if (slope) slope->setZero();
+    if (profile == nullptr || profile->rows == 0) return u;
+    const CurrentProfile& p = *profile;
+    const double depth = -z;
+    int i = 0;
+    while (i + 1 < p.rows && p.depth[i + 1] < depth) ++i;
+    if (p.rows == 1 || depth <= p.depth[0] || depth >= p.depth[p.rows - 1]) {
+        const int k = depth <= p.depth[0] ? 0 : p.rows - 1;
+        return u + profileScale * Vec3(p.ux[k], p.uy[k], 0.0);
+    }
+    const double span = p.depth[i + 1] - p.depth[i];
+    const double w = (depth - p.depth[i]) / span;
+    const Vec3 lo(p.ux[i], p.uy[i], 0.0), hi(p.ux[i + 1], p.uy[i + 1], 0.0);
+    if (slope) *slope = -profileScale * (hi - lo) / span;  // d/dz = -d/d(depth)
+    return u + profileScale * ((1.0 - w) * lo + w * hi);
+}
+
 double submerged_fraction(double z, double diameter) {
     return std::clamp(0.5 - z / diameter, 0.0, 1.0);
 }
 
 Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd,
-                const Vec3& current, PointLoadJacobian* J) {
+                const Vec3& current, const Vec3& currentSlope, PointLoadJacobian* J) {
     const double phi = submerged_fraction(r.z(), p.diameter);
     const double stretch = rp.norm();
     const Vec3 t = rp / stretch;
@@ -63,34 +82,42 @@ Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& 
     J->drd = phi * dDrag_du;
     J->drp = phi * (dInertia_dt - dDrag_dt) * dt_drp;
     J->drdd = phi * dInertia_drdd;
+    // F depends on z through the current: dF/dz = -phi dDrag/du dU/dz.
     J->dr.setZero();
+    J->dr.col(2) = -phi * dDrag_du * currentSlope;
     const double dphi = submerged_fraction_slope(r.z(), p.diameter);
     if (dphi != 0.0) {
         Vec3 dF_dphi = inertia - drag;
         dF_dphi.z() += -rhoA * p.gravity;  // -d(weight)/dphi: weight_z = -(m - phi rho A) g
-        J->dr.col(2) = dF_dphi * dphi;
+        J->dr.col(2) += dF_dphi * dphi;
     }
     return F;
 }
 
-void add_hydro_force(const ElementTables& e, const FluidProps& p, const Vec3& current, const double* X,
+void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentField& current, const double* X,
                      const double* Xd, const double* Xdd, double* R) {
     for (int g = 0; g < e.nLoad; ++g) {
         const QuadPoint& q = e.load[g];
-        const Vec3 F = point_load(p, interpolate(q.shape.N, X), interpolate(q.shape.dN, X),
-                                  interpolate(q.shape.N, Xd), interpolate(q.shape.N, Xdd), current, nullptr);
+        const Vec3 r = interpolate(q.shape.N, X);
+        Vec3 slope;
+        const Vec3 U = current.at(r.z(), &slope);
+        const Vec3 F = point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd),
+                                  interpolate(q.shape.N, Xdd), U, slope, nullptr);
         for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += (q.weight * q.shape.N[a]) * F;
     }
 }
 
-void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const Vec3& current,
+void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const CurrentField& current,
                         const double* X, const double* Xd, const double* Xdd, Mat12& K, Mat12& C,
                         Mat12& M) {
     PointLoadJacobian J;
     for (int g = 0; g < e.nLoad; ++g) {
         const QuadPoint& q = e.load[g];
-        point_load(p, interpolate(q.shape.N, X), interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd),
-                   interpolate(q.shape.N, Xdd), current, &J);
+        const Vec3 r = interpolate(q.shape.N, X);
+        Vec3 slope;
+        const Vec3 U = current.at(r.z(), &slope);
+        point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd), interpolate(q.shape.N, Xdd), U,
+                   slope, &J);
         for (int a = 0; a < 4; ++a) {
             const double wa = q.weight * q.shape.N[a];
             for (int b = 0; b < 4; ++b) {

@@ -22,6 +22,26 @@ struct FluidProps {
     bool addedMass;
 };
 
+// Number of rows of the depth profile of the current (parameters currentProfile.*[1..10]).
+constexpr int kCurrentProfileRows = 10;
+
+// Current velocity as a function of depth: a uniform part (the current.* inputs) plus a profile
+// interpolated linearly in depth between the rows (depths increasing, constant beyond the ends).
+struct CurrentProfile {
+    int rows = 0;
+    double depth[kCurrentProfileRows] = {};  // [m], positive down
+    double ux[kCurrentProfileRows] = {};
+    double uy[kCurrentProfileRows] = {};
+};
+
+struct CurrentField {
+    Vec3 uniform = Vec3::Zero();
+    const CurrentProfile* profile = nullptr;
+    double profileScale = 1.0;  // load continuation of the static solver
+    // Velocity at height z; slope = dU/dz when non-null.
+    Vec3 at(double z, Vec3* slope) const;
+};
+
 // Derivatives of the per-length load F with respect to r, r', r_dot, r_ddot.
 struct PointLoadJacobian {
     Mat3 dr, drp, drd, drdd;
@@ -32,14 +52,14 @@ constexpr double kDragVelocityFloor = 1e-6;
 
 double submerged_fraction(double z, double diameter);
 
-// Per-length load F at one point; fills J when non-null.
+// Per-length load F at one point in a current U with dU/dz = currentSlope; fills J when non-null.
 Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd,
-                const Vec3& current, PointLoadJacobian* J);
+                const Vec3& current, const Vec3& currentSlope, PointLoadJacobian* J);
 
 // Element integrals: R_a += int N_a F ds; K, C, M get dR/dX, dR/dXdot, dR/dXddot.
-void add_hydro_force(const ElementTables& e, const FluidProps& p, const Vec3& current, const double* X,
+void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentField& current, const double* X,
                      const double* Xd, const double* Xdd, double* R);
-void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const Vec3& current,
+void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const CurrentField& current,
                         const double* X, const double* Xd, const double* Xdd, Mat12& K, Mat12& C,
                         Mat12& M);
 

@@ -6,7 +6,9 @@
 #include <sunlinsol/sunlinsol_band.h>
 #include <sunmatrix/sunmatrix_band.h>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <new>
 
 namespace uc {

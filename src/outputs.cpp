@@ -15,6 +15,34 @@ double curvature(const Vec3& rp, const Vec3& rpp) {
     return rp.cross(rpp).norm() / (n * n * n);
 }
 
+// Samples per element for the seabed outputs (the contact is resolved to l/8 in arc length).
+constexpr int kSeabedSamples = 8;
+
+void seabed_outputs(const CableModel& model, const double* X, UCOutputs& out) {
+    const UCParams& p = model.params();
+    const double l = model.element_length();
+    out.touchdownArcLength = p.length;
+    out.minSeabedClearance = INFINITY;
+    bool touched = false;
+    double previousS = 0.0, previousClearance = X[2] + p.waterDepth;
+    for (int e = 0; e < model.n_elements(); ++e) {
+        for (int k = e == 0 ? 0 : 1; k <= kSeabedSamples; ++k) {
+            const double xi = static_cast<double>(k) / kSeabedSamples;
+            const double s = (e + xi) * l;
+            const double clearance = interpolate(hermite_shape(xi, l).N, X + 6 * e).z() + p.waterDepth;
+            out.minSeabedClearance = std::min(out.minSeabedClearance, clearance);
+            if (p.enableSeabed && !touched && clearance <= 0.0) {
+                touched = true;
+                out.touchdownArcLength = s > 0.0 && previousClearance > 0.0
+                                             ? previousS + (s - previousS) * previousClearance / (previousClearance - clearance)
+                                             : s;
+            }
+            previousS = s;
+            previousClearance = clearance;
+        }
+    }
+}
+
 }  // namespace
 
 void nodal_tensions(const CableModel& model, const double* X, const ElementForces& forces, double* T) {
@@ -72,6 +100,7 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
             maxCurvature = std::max(maxCurvature, curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe)));
         }
     }
+    seabed_outputs(model, X, out);
     out.minTension = minTension;
     out.maxCurvature = maxCurvature;
     out.maxBendingMoment = model.EI() * maxCurvature;

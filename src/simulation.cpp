@@ -16,7 +16,7 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 1;
+constexpr std::uint32_t kStateVersion = 2;
 
 // Fixed-layout header of a saved state; followed by UCOutputs, y and y'.
 struct StateHeader {
@@ -29,6 +29,9 @@ struct StateHeader {
     double towVelocity[3];
     double lastVelocityInput[3];
     double lastStepSize;
+    double endPosition[3];
+    double endVelocity[3];
+    double lastEndVelocityInput[3];
     double stats[5];
 };
 
@@ -80,19 +83,20 @@ CableSimulation::~CableSimulation() {
 }
 
 void CableSimulation::set_environment(const UCInputs& in) {
-    loads_.current = Vec3(in.current[0], in.current[1], 0.0);
+    loads_.current.uniform = Vec3(in.current[0], in.current[1], 0.0);
+    loads_.current.profile = &model_.current_profile();
     loads_.endLoad = vec(in.endLoad);
     loads_.endCouple = vec(in.endCouple);
 }
 
-void CableSimulation::initial_guess(const Vec3& towPoint, std::vector<double>& q) const {
+void CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const {
     const UCParams& p = model_.params();
     std::vector<double> X(model_.n_global());
     model_.straight_line(towPoint, vec(p.initialDirection), X.data());
-    if (p.bottomEnd == UC_BOTTOM_ANCHORED) {
-        // Chord from the tow point to the anchor, sagging in its vertical plane when the line is slack
-        // (a parabola whose length is about the cable length).
-        const Vec3 chord = vec(p.anchor) - towPoint;
+    if (model_.far_end_prescribed()) {
+        // Chord from the tow point to the far end, sagging in its vertical plane when the line is
+        // slack (a parabola whose length is about the cable length).
+        const Vec3 chord = farPoint - towPoint;
         const double D = chord.norm(), L = p.length;
         Vec3 sagDirection = Vec3(0, 0, -1) - chord.normalized() * chord.normalized().z();
         if (sagDirection.norm() < 1e-6) sagDirection = Vec3(1, 0, 0);
@@ -106,7 +110,46 @@ void CableSimulation::initial_guess(const Vec3& towPoint, std::vector<double>& q
             Eigen::Map<Vec3>(X.data() + 6 * i + 3) = drdxi.normalized() * std::max(D / L, 1.0);
         }
     }
+    if (p.enableSeabed) {
+        // Start on or above the seabed: the guessed line lies on it where it would pass below.
+        for (int i = 0; i <= model_.n_elements(); ++i) X[6 * i + 2] = std::max(X[6 * i + 2], -p.waterDepth);
+    }
     model_.restrict_to_free(X.data(), q.data());
+}
+
+bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) const {
+    const UCParams& p = model_.params();
+    char buffer[400];
+    const char* farName = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor.x/y/z" : "end.x/y/z";
+    if (model_.far_end_prescribed()) {
+        const double distance = (farPoint - towPosition_).norm();
+        if (distance > 1.1 * p.length) {
+            std::snprintf(buffer, sizeof buffer,
+                          "%s is %.6g m from the tow point but the cable is only %.6g m long: "
+                          "reaching it needs a strain of %.3g (more than 10 %%), which no cable survives",
+                          farName, distance, p.length, distance / p.length - 1.0);
+            error = buffer;
+            return false;
+        }
+    }
+    if (!p.enableSeabed) return true;
+    const double tolerance = 0.5 * p.diameter;  // a point resting on the seabed sinks in slightly
+    if (towPosition_.z() < -p.waterDepth - tolerance) {
+        std::snprintf(buffer, sizeof buffer,
+                      "tow.z = %.6g m is below the seabed at z = -waterDepth = %.6g m: the tow point must be in the water",
+                      towPosition_.z(), -p.waterDepth);
+        error = buffer;
+        return false;
+    }
+    if (model_.far_end_prescribed() && farPoint.z() < -p.waterDepth - tolerance) {
+        std::snprintf(buffer, sizeof buffer,
+                      "%s: z = %.6g m is below the seabed at z = -waterDepth = %.6g m: an anchor lies on the seabed, "
+                      "not under it",
+                      farName, farPoint.z(), -p.waterDepth);
+        error = buffer;
+        return false;
+    }
+    return true;
 }
 
 bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& error) {
@@ -114,7 +157,8 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     for (double v : {in.tow[0], in.tow[1], in.tow[2], in.towVelocity[0], in.towVelocity[1], in.towVelocity[2],
                      in.towAcceleration[0], in.towAcceleration[1], in.towAcceleration[2], in.endLoad[0],
                      in.endLoad[1], in.endLoad[2], in.endCouple[0], in.endCouple[1], in.endCouple[2],
-                     in.current[0], in.current[1]}) {
+                     in.current[0], in.current[1], in.end[0], in.end[1], in.end[2], in.endVelocity[0],
+                     in.endVelocity[1], in.endVelocity[2]}) {
         if (!std::isfinite(v)) {
             error = "inputs must be finite numbers";
             return false;
@@ -125,21 +169,15 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     towVelocity_ = vec(in.towVelocity);
     loads_.tow = TowTrajectory::at_rest_in_time(towPosition_, towVelocity_, vec(in.towAcceleration), t0);
 
-    if (p.bottomEnd == UC_BOTTOM_ANCHORED) {
-        const double distance = (vec(p.anchor) - towPosition_).norm();
-        if (distance > 1.1 * p.length) {
-            char buffer[300];
-            std::snprintf(buffer, sizeof buffer,
-                          "anchor.x/y/z is %.6g m from the tow point but the cable is only %.6g m long: "
-                          "reaching it needs a strain of %.3g (more than 10 %%), which no cable survives",
-                          distance, p.length, distance / p.length - 1.0);
-            error = buffer;
-            return false;
-        }
-    }
+    endPosition_ = vec(in.end);
+    endVelocity_ = vec(in.endVelocity);
+    lastEndVelocityInput_ = endVelocity_;
+    loads_.end = TowTrajectory::at_rest_in_time(endPosition_, endVelocity_, Vec3::Zero(), t0);
+    const Vec3 farPoint = p.bottomEnd == UC_BOTTOM_EXTERNAL ? endPosition_ : vec(p.anchor);
+    if (!check_geometry(farPoint, error)) return false;
 
     const int n = model_.n_free();
-    initial_guess(towPosition_, q_);
+    initial_guess(towPosition_, farPoint, q_);
     std::vector<double> v(n, 0.0);
     if (p.initMode == UC_INIT_EQUILIBRIUM && p.bottomEnd != UC_BOTTOM_ANCHORED) {
         // Steady tow: every node moves with the tow point, tangents do not turn.
@@ -179,7 +217,8 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     for (double v : {in.tow[0], in.tow[1], in.tow[2], in.towVelocity[0], in.towVelocity[1], in.towVelocity[2],
                      in.towAcceleration[0], in.towAcceleration[1], in.towAcceleration[2], in.endLoad[0],
                      in.endLoad[1], in.endLoad[2], in.endCouple[0], in.endCouple[1], in.endCouple[2],
-                     in.current[0], in.current[1], h}) {
+                     in.current[0], in.current[1], in.end[0], in.end[1], in.end[2], in.endVelocity[0],
+                     in.endVelocity[1], in.endVelocity[2], h}) {
         if (!std::isfinite(v)) {
             error = "inputs and the step size must be finite numbers";
             return false;
@@ -207,6 +246,20 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     tow.p1 = vec(in.tow) + vec(in.towVelocity) * h + 0.5 * a * h * h;
     tow.v1 = vec(in.towVelocity) + a * h;
     tow.a0.setZero();
+    if (model_.params().bottomEnd == UC_BOTTOM_EXTERNAL) {
+        // The far end follows end.* the same way (acceleration from the last two velocity samples).
+        const Vec3 endVelocityInput = vec(in.endVelocity);
+        const Vec3 aEnd = lastStepSize_ > 0.0 ? Vec3((endVelocityInput - lastEndVelocityInput_) / lastStepSize_)
+                                              : Vec3::Zero();
+        TowTrajectory& end = loads_.end;
+        end.t0 = time_;
+        end.h = h;
+        end.p0 = endPosition_;
+        end.v0 = endVelocity_;
+        end.p1 = vec(in.end) + endVelocityInput * h + 0.5 * aEnd * h * h;
+        end.v1 = endVelocityInput + aEnd * h;
+        end.a0.setZero();
+    }
 
     if (restartPending_) {
         statsBase_ = total_stats();
@@ -230,6 +283,11 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     towVelocity_ = tow.v1;
     lastVelocityInput_ = velocityInput;
     lastStepSize_ = h;
+    if (model_.params().bottomEnd == UC_BOTTOM_EXTERNAL) {
+        endPosition_ = loads_.end.p1;
+        endVelocity_ = loads_.end.v1;
+        lastEndVelocityInput_ = vec(in.endVelocity);
+    }
     update_outputs();
     return true;
 }
@@ -318,6 +376,9 @@ void CableSimulation::save_state(void* buffer) {
         header.towPosition[k] = towPosition_[k];
         header.towVelocity[k] = towVelocity_[k];
         header.lastVelocityInput[k] = lastVelocityInput_[k];
+        header.endPosition[k] = endPosition_[k];
+        header.endVelocity[k] = endVelocity_[k];
+        header.lastEndVelocityInput[k] = lastEndVelocityInput_[k];
     }
     header.lastStepSize = lastStepSize_;
     std::memcpy(header.stats, stats, sizeof stats);
@@ -356,6 +417,9 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     towPosition_ = vec(header.towPosition);
     towVelocity_ = vec(header.towVelocity);
     lastVelocityInput_ = vec(header.lastVelocityInput);
+    endPosition_ = vec(header.endPosition);
+    endVelocity_ = vec(header.endVelocity);
+    lastEndVelocityInput_ = vec(header.lastEndVelocityInput);
     lastStepSize_ = header.lastStepSize;
     statsBase_.steps = header.stats[0];
     statsBase_.residualEvals = header.stats[1];

@@ -42,7 +42,8 @@ private:
     int jacobian(double t, double cj, const double* y, const double* yp, SUNMatrix J) override;
 
     void set_environment(const UCInputs& in);
-    void initial_guess(const Vec3& towPoint, std::vector<double>& q) const;
+    void initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
+    bool check_geometry(const Vec3& farPoint, std::string& error) const;
     void update_outputs();
     IntegratorStats total_stats() const;
 
@@ -56,6 +57,8 @@ private:
     Vec3 towPosition_ = Vec3::Zero(), towVelocity_ = Vec3::Zero();  // prescribed end at time_
     Vec3 lastVelocityInput_ = Vec3::Zero();  // tow velocity input of the previous step ...
     double lastStepSize_ = 0.0;              // ... and its step size (0: no history yet)
+    Vec3 endPosition_ = Vec3::Zero(), endVelocity_ = Vec3::Zero();  // prescribed far end (bottomEnd 3)
+    Vec3 lastEndVelocityInput_ = Vec3::Zero();
     std::vector<double> y_, yp_;  // IDA vectors at time_: y = [q_0, v_0, q_1, v_1, ...]
     IntegratorStats statsBase_;   // statistics folded in at integrator restarts
     bool integratorStarted_ = false;  // the integrator's own counters belong to this state

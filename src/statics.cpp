@@ -30,7 +30,11 @@ double max_abs(const std::vector<double>& x) {
 // Loads with the relative flow and end load scaled by lambda.
 Loads scaled_loads(const Loads& loads, double lambda) {
     Loads s = loads;
-    s.current *= lambda;
+    s.current.uniform *= lambda;
+    s.current.profileScale *= lambda;
+    s.end.v0 *= lambda;
+    s.end.v1 *= lambda;
+    s.end.a0.setZero();
     s.endLoad *= lambda;
     s.endCouple *= lambda;
     s.tow.v0 *= lambda;

@@ -115,7 +115,7 @@ TEST(Equilibrium, TowReactionEqualsTotalExternalLoadToRoundOff) {
     std::vector<double> X(m.n_global()), Xd(m.n_global()), Xdd(m.n_global());
     Loads loads;
     loads.tow = TowTrajectory::at_rest_in_time(Vec3::Zero(), Vec3(V, 0, 0), Vec3::Zero(), 0.0);
-    loads.current = Vec3(0, 0.2, 0);
+    loads.current.uniform = Vec3(0, 0.2, 0);
     m.expand(q.data(), v.data(), a.data(), loads, 0.0, X.data(), Xd.data(), Xdd.data());
     Vec3 loadResidual = m.end_node_residual(X.data(), Xd.data(), Xdd.data(), loads).head<3>();
     for (int e = 0; e < m.n_elements(); ++e) {
@@ -152,7 +152,7 @@ void check_assembled_jacobian(const UCParams& p) {
     }
     Loads loads;
     loads.tow = TowTrajectory::at_rest_in_time(Vec3(0, 0, -5), Vec3(1, 0, 0), Vec3(0.1, 0, 0), 0.0);
-    loads.current = Vec3(0.2, -0.3, 0);
+    loads.current.uniform = Vec3(0.2, -0.3, 0);
     loads.endLoad = Vec3(10, 0, -20);
     loads.endCouple = Vec3(3, -40, 7);
     std::vector<double> Xd(m.n_global()), Xdd(m.n_global()), R(n), Rp(n), Rm(n);

@@ -7,6 +7,7 @@
 
 #include "hermite_element.h"
 #include "hydrodynamics.h"
+#include "seabed.h"
 
 using namespace uc;
 
@@ -228,7 +229,8 @@ TEST(HydroTerm, JacobianMatchesFiniteDifferences) {
     Vec12 X = curved_element(l, 1.0);
     for (int a : {0, 2}) X[3 * a + 2] -= 10.0;  // submerged
     const Vec12 Xd = random_vector(rng, 1.0), Xdd = random_vector(rng, 0.3);
-    const Vec3 current(0.4, -0.2, 0.0);
+    CurrentField current;
+    current.uniform = Vec3(0.4, -0.2, 0.0);
     Mat12 K = Mat12::Zero(), C = Mat12::Zero(), M = Mat12::Zero();
     add_hydro_jacobian(e, p, current, X.data(), Xd.data(), Xdd.data(), K, C, M);
     auto force = [&](const Vec12& x, const Vec12& v, const Vec12& a) {
@@ -251,7 +253,7 @@ TEST(HydroTerm, JacobianAcrossTheSurfaceMatchesFiniteDifferences) {
     X << 0, 0, 0.01, 0.6, 0, -0.8, 0.6 * l, 0, 0.01 - 0.8 * l, 0.6, 0.1, -0.8;
     const Vec12 Xd = random_vector(rng, 1.0), Xdd = random_vector(rng, 0.3);
     Mat12 K = Mat12::Zero(), C = Mat12::Zero(), M = Mat12::Zero();
-    const Vec3 current = Vec3::Zero();
+    const CurrentField current;
     add_hydro_jacobian(e, p, current, X.data(), Xd.data(), Xdd.data(), K, C, M);
     auto force = [&](const Vec12& x) {
         Vec12 R = Vec12::Zero();
@@ -267,8 +269,50 @@ TEST(HydroTerm, DragOpposesRelativeMotionWithMorisonMagnitudes) {
     const double d = 0.0332, rho = 1025;
     FluidProps p{rho, 0.0, 2.7, 3.14159265358979 * d * d / 4, d, 1.649, 0.12, 0.0, 0.0, false};
     const Vec3 r(0, 0, -10), t(1, 0, 0), zero = Vec3::Zero();
-    const Vec3 normal = point_load(p, r, t, Vec3(0, 0, -1), zero, zero, nullptr);
+    const Vec3 normal = point_load(p, r, t, Vec3(0, 0, -1), zero, zero, zero, nullptr);
     EXPECT_NEAR(-normal.z(), 0.5 * rho * 1.649 * d, 1e-9);  // residual F = -f_drag: drag up, F down
-    const Vec3 tangential = point_load(p, r, t, Vec3(1, 0, 0), zero, zero, nullptr);
+    const Vec3 tangential = point_load(p, r, t, Vec3(1, 0, 0), zero, zero, zero, nullptr);
     EXPECT_NEAR(tangential.x(), 0.5 * rho * 0.12 * 3.14159265358979 * d, 1e-9);
+}
+
+TEST(SeabedTerm, JacobianMatchesFiniteDifferences) {
+    // Element lying partly in the contact band and partly below the seabed, sliding sideways.
+    const double l = 2.0;
+    const ElementTables e = make_element_tables(l, 3, 3);
+    SeabedProps p;
+    p.enabled = true;
+    p.depth = 100.0;
+    p.stiffness = 2e5;
+    p.damping = 3e3;
+    p.friction = 0.6;
+    p.smoothing = 0.01;
+    std::mt19937 rng(17);
+    Vec12 X;
+    X << 0, 0, -100.005, 1, 0, -0.004, l, 0.1, -100.012, 1, 0.05, -0.003;
+    const Vec12 Xd = random_vector(rng, 0.05);
+    Mat12 K = Mat12::Zero(), C = Mat12::Zero();
+    add_seabed_jacobian(e, p, X.data(), Xd.data(), K, C);
+    auto force = [&](const Vec12& x, const Vec12& v) {
+        Vec12 R = Vec12::Zero();
+        add_seabed_force(e, p, x.data(), v.data(), R.data());
+        return R;
+    };
+    // h = 1e-7: well inside the 1 cm contact band, so the C1 blend is smooth at this scale.
+    expect_jacobian_matches([&](const Vec12& x) { return force(x, Xd); }, X, K, 1e-7, 1e-6, "dR/dX");
+    expect_jacobian_matches([&](const Vec12& v) { return force(X, v); }, Xd, C, 1e-7, 1e-6, "dR/dXdot");
+}
+
+TEST(SeabedTerm, RestingCableCarriesItsWeightAndFrictionOpposesSliding) {
+    SeabedProps p;
+    p.enabled = true;
+    p.depth = 50.0;
+    p.stiffness = 1e5;
+    p.damping = 0.0;
+    p.friction = 0.5;
+    p.smoothing = 0.001;
+    // 1 cm penetration: 1000 N/m up; sliding at 1 m/s along x: friction 500 N/m against it.
+    const Vec3 F = seabed_load(p, Vec3(0, 0, -50.01), Vec3(1, 0, 0), nullptr);
+    EXPECT_NEAR(-F.z(), 1000.0, 1e-9);
+    EXPECT_NEAR(F.x(), 500.0 / std::sqrt(1.0 + kFrictionVelocity * kFrictionVelocity), 1e-9);
+    EXPECT_EQ(seabed_load(p, Vec3(0, 0, -49.9), Vec3(1, 0, 0), nullptr), Vec3::Zero());
 }

@@ -1,0 +1,84 @@
+// seabed.cpp - penalty contact, damping and regularized friction on a flat seabed.
+#include "seabed.h"
+
+#include <cmath>
+
+namespace uc {
+namespace {
+
+// C1 blend of max(p, 0) over |p| < delta, and its derivative (the contact fraction).
+double contact_ramp(double p, double delta, double* slope) {
+    if (p <= -delta) {
+        *slope = 0.0;
+        return 0.0;
+    }
+    if (p >= delta) {
+        *slope = 1.0;
+        return p;
+    }
+    *slope = (p + delta) / (2.0 * delta);
+    return (p + delta) * (p + delta) / (4.0 * delta);
+}
+
+}  // namespace
+
+Vec3 seabed_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJacobian* J) {
+    if (J) {
+        J->dr.setZero();
+        J->drd.setZero();
+    }
+    const double penetration = -p.depth - r.z();
+    double fraction = 0.0;
+    const double ramp = contact_ramp(penetration, p.smoothing, &fraction);
+    if (fraction == 0.0) return Vec3::Zero();
+    // d(fraction)/dp inside the blend band
+    const double fractionSlope = std::abs(penetration) < p.smoothing ? 1.0 / (2.0 * p.smoothing) : 0.0;
+    const double spring = p.stiffness * ramp;
+    const double normal = spring - p.damping * fraction * rd.z();
+    const Vec3 vh(rd.x(), rd.y(), 0.0);
+    const double speed = std::sqrt(vh.squaredNorm() + kFrictionVelocity * kFrictionVelocity);
+    // f = normal e_z - mu spring vh / speed; residual F = -f.
+    Vec3 F = -normal * Vec3::UnitZ() + (p.friction * spring / speed) * vh;
+    if (J) {
+        // dp/dz = -1
+        const double dNormal_dz = -(p.stiffness * fraction) + p.damping * fractionSlope * rd.z();
+        J->dr(2, 2) = -dNormal_dz;
+        const double dSpring_dz = -p.stiffness * fraction;
+        J->dr.col(2) += (p.friction * dSpring_dz / speed) * vh;
+        J->drd(2, 2) = p.damping * fraction;
+        if (p.friction != 0.0) {
+            Mat3 dvh = Mat3::Zero();
+            dvh(0, 0) = dvh(1, 1) = 1.0;
+            J->drd += (p.friction * spring / speed) * (dvh - vh * vh.transpose() / (speed * speed));
+        }
+    }
+    return F;
+}
+
+void add_seabed_force(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd, double* R) {
+    for (int g = 0; g < ElementTables::nAxial; ++g) {
+        const QuadPoint& q = e.axial[g];
+        const Vec3 F = seabed_load(p, interpolate(q.shape.N, X), interpolate(q.shape.N, Xd), nullptr);
+        if (F.isZero(0.0)) continue;
+        for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += (q.weight * q.shape.N[a]) * F;
+    }
+}
+
+void add_seabed_jacobian(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd,
+                         Mat12& K, Mat12& C) {
+    SeabedJacobian J;
+    for (int g = 0; g < ElementTables::nAxial; ++g) {
+        const QuadPoint& q = e.axial[g];
+        const Vec3 F = seabed_load(p, interpolate(q.shape.N, X), interpolate(q.shape.N, Xd), &J);
+        if (F.isZero(0.0) && J.dr.isZero(0.0)) continue;
+        for (int a = 0; a < 4; ++a) {
+            for (int b = 0; b < 4; ++b) {
+                const double w = q.weight * q.shape.N[a] * q.shape.N[b];
+                K.block<3, 3>(3 * a, 3 * b) += w * J.dr;
+                C.block<3, 3>(3 * a, 3 * b) += w * J.drd;
+            }
+        }
+    }
+}
+
+}  // namespace uc

@@ -1,0 +1,40 @@
+// seabed.h - flat seabed at z = -waterDepth: penalty contact per unit length with damping and
+// regularized Coulomb friction (DESIGN.md section 3, issue 4). Residual sign: F = -f_seabed.
+//
+// Penetration p = -waterDepth - z. The normal force per length is k g(p) with g a C1 blend of
+// the ramp max(p, 0) over |p| < delta (delta = 5 % of the diameter), so that Newton and BDF
+// see a smooth contact; the damping c (-z_dot) acts with the same contact fraction g'(p) in
+// [0, 1]. Friction opposes the horizontal velocity v_h with magnitude mu k g(p) |v_h| /
+// sqrt(|v_h|^2 + v_eps^2): regularized Coulomb, the same coefficient axially and laterally.
+#pragma once
+
+#include "hermite_element.h"
+
+namespace uc {
+
+struct SeabedProps {
+    bool enabled = false;
+    double depth = 0.0;      // waterDepth [m]
+    double stiffness = 0.0;  // [N/m2]: force per length per metre of penetration
+    double damping = 0.0;    // [N.s/m2]
+    double friction = 0.0;   // Coulomb coefficient
+    double smoothing = 0.0;  // delta [m]
+};
+
+// Friction regularization velocity [m/s]: below it friction grows linearly with sliding speed.
+constexpr double kFrictionVelocity = 0.01;
+
+struct SeabedJacobian {
+    Mat3 dr, drd;  // dF/dr, dF/dr_dot
+};
+
+// Per-length residual contribution at a point; fills J when non-null. Zero above the seabed.
+Vec3 seabed_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJacobian* J);
+
+// Element integrals over the 5 axial sampling points (contact is sampled more finely than the
+// hydrodynamic loads because it switches on and off along the cable).
+void add_seabed_force(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd, double* R);
+void add_seabed_jacobian(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd,
+                         Mat12& K, Mat12& C);
+
+}  // namespace uc
