@@ -472,8 +472,13 @@ def parse_args(argv):
     p.add_argument("--out", type=Path, default=OUT_DIR, help="output directory (CSV-like log, PNG)")
     p.add_argument("--doc", type=Path, default=None,
                    help="write the markdown report here (full mode default: docs/performance.md)")
+    p.add_argument("--switches", action=argparse.BooleanOptionalAction, default=None,
+                   help="also tabulate the cost of each model switch (default: on in full mode)")
     p.add_argument("--fmu", type=Path, default=None)
-    return p.parse_args(argv)
+    args = p.parse_args(argv)
+    if args.switches is None:
+        args.switches = not args.quick
+    return args
 
 
 def run_case(fmu, case, quick, progress_label=""):
@@ -574,6 +579,36 @@ def plot(case, ref, runs, path):
     plt.close(fig)
 
 
+SWITCHES = [("default (20 elements, relTol 1e-8)", 20, {}),
+             ("enableBending = 0", 20, {"enableBending": 0}),
+             ("enableAddedMass = 0", 20, {"enableAddedMass": 0}),
+             ("axialDamping = 1e-3 s x EA", 20, "damping"),
+             ("nElements = 10", 10, {}), ("nElements = 40", 40, {})]
+
+
+def switch_table(fmu, case, ref):
+    """Part 3 of issue 7: what each model switch costs and how much it changes the answer."""
+    pos = "end" if "end" in case.metrics else "mid"
+    lines = [f"| model (ours) | CPU [s] | real-time factor | tension error (max / range) "
+             f"| {pos} position RMS error [m] | steps | residual evals | Jacobian evals |",
+             "|---|---|---|---|---|---|---|---|"]
+    for label, n, extra in SWITCHES:
+        if extra == "damping":
+            extra = {"axialDamping": 1e-3 * case.line["EA"]}
+        try:
+            r = run_fmu(fmu, case, n, 1e-8, extra=extra)
+        except Exception as exc:  # a switch the FMU rejects is reported, not hidden
+            lines.append(f"| {label} | failed: {exc} | | | | | | |")
+            continue
+        r.stats.pop("shape0", None)
+        e = errors(r, ref)
+        st = r.stats
+        lines.append(f"| {label} | {r.cpu:.3f} | {case.t_end / r.cpu:.0f} | {e['tension']:.2e} | "
+                     f"{e[pos + '_rms']:.2e} | {int(st['solver.nSteps'])} | "
+                     f"{int(st['solver.nResidualEvals'])} | {int(st['solver.nJacobianEvals'])} |")
+    return "\n".join(lines)
+
+
 def main(argv=None) -> int:
     args = parse_args(sys.argv[1:] if argv is None else argv)
     fmu = args.fmu if args.fmu is not None else require_fmu()
@@ -593,6 +628,9 @@ def main(argv=None) -> int:
                         for n, (d, c) in sorted(limits.items()))
         text = (f"## {case.title}\n\n{case.description}\n\nMoorDyn stable limit (bisection, RK2): {lim}."
                 f"\n\n{table}\n{ratios}\n\n![work-precision {case.name}]({png.name})\n")
+        if args.switches:
+            text += ("\n### What each switch costs (ours; errors against the reference above)\n\n"
+                     + switch_table(fmu, case, ref) + "\n")
         print(text, flush=True)
         sections.append((case, ref, runs, text, png))
     if doc is not None:
@@ -605,7 +643,8 @@ def write_doc(doc, sections, args):
     doc.parent.mkdir(parents=True, exist_ok=True)
     parts = [DOC_HEADER]
     for case, ref, runs, text, png in sections:
-        shutil.copy(png, doc.parent / png.name)
+        if png.resolve() != (doc.parent / png.name).resolve():
+            shutil.copy(png, doc.parent / png.name)
         parts.append(text)
     extra = doc.parent / "performance_profile.md"
     if extra.is_file():
