@@ -42,14 +42,15 @@ def along(profile: PiecewiseLinearSpeed, direction=(1.0, 0.0, 0.0), origin=(0.0,
 
 
 def with_heave(base: Trajectory, amplitude: float, period: float) -> Trajectory:
-    """base + amplitude * sin(2 pi t / period) on z."""
+    """base + amplitude * (cos(2 pi t / period) - 1) on z: the heave starts at rest at its top (so an
+    equilibrium start is the steady state of `base`) and first goes down."""
     w = 2.0 * math.pi / period
 
     def traj(t):
         p, v, a = (np.array(x, float) for x in base(t))
-        p[2] += amplitude * math.sin(w * t)
-        v[2] += amplitude * w * math.cos(w * t)
-        a[2] -= amplitude * w * w * math.sin(w * t)
+        p[2] += amplitude * (math.cos(w * t) - 1.0)
+        v[2] -= amplitude * w * math.sin(w * t)
+        a[2] -= amplitude * w * w * math.cos(w * t)
         return p, v, a
     return traj
 
