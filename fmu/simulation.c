@@ -81,6 +81,8 @@ fmi2Status uc_sim_do_step(UCInstance* inst, double tc, double h) {
     /* Input derivatives apply to one step only (fmi2SetRealInputDerivatives before each fmi2DoStep). */
     memset(inst->inputs.towAcceleration, 0, sizeof inst->inputs.towAcceleration);
     inst->inputs.towAccelerationGiven = 0;
+    memset(inst->inputs.endAcceleration, 0, sizeof inst->inputs.endAcceleration);
+    inst->inputs.endAccelerationGiven = 0;
     log_solver_statistics(inst, "fmi2DoStep");
     return fmi2OK;
 }

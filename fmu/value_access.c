@@ -60,7 +60,8 @@ static fmi2Status check_settable(UCInstance* inst, const UCVariable* v, const ch
 
 static fmi2Status check_real_value(UCInstance* inst, const UCVariable* v, double value, const char* function) {
     if (isfinite(value)) return fmi2OK;
-    uc_log_status(&inst->log, fmi2Error, "%s: %s = %g is not a finite number", function, v->name, value);
+    uc_log_status(&inst->log, fmi2Error, "%s: %s = %g is outside (-inf, inf): it must be a finite number", function,
+                  v->name, value);
     return fmi2Error;
 }
 
@@ -102,6 +103,8 @@ static fmi2Status set_one_derivative(UCInstance* inst, const UCVariable* v, int 
     const char* function = "fmi2SetRealInputDerivatives";
     int velocity = component_of(v->offset, offsetof(UCInputs, towVelocity));
     int position = component_of(v->offset, offsetof(UCInputs, tow));
+    int endVelocity = component_of(v->offset, offsetof(UCInputs, endVelocity));
+    int endPosition = component_of(v->offset, offsetof(UCInputs, end));
     if (v->causality != UC_CAUSALITY_INPUT) {
         uc_log_status(&inst->log, fmi2Error, "%s: %s is not an input", function, v->name);
         return fmi2Error;
@@ -110,6 +113,11 @@ static fmi2Status set_one_derivative(UCInstance* inst, const UCVariable* v, int 
     if ((velocity >= 0 && order == 1) || (position >= 0 && order == 2)) {
         inst->inputs.towAcceleration[velocity >= 0 ? velocity : position] = value;
         inst->inputs.towAccelerationGiven = 1;
+        return fmi2OK;
+    }
+    if ((endVelocity >= 0 && order == 1) || (endPosition >= 0 && order == 2)) {
+        inst->inputs.endAcceleration[endVelocity >= 0 ? endVelocity : endPosition] = value;
+        inst->inputs.endAccelerationGiven = 1;
         return fmi2OK;
     }
     if (order == 1) {

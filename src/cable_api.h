@@ -94,6 +94,8 @@ typedef struct UCInputs {
                                   core estimates it from the last two tow velocity inputs */
     double end[3];             /* end.x/y/z [m]      far-end position when bottomEnd = 3 */
     double endVelocity[3];     /* end.vx/vy/vz [m/s] far-end velocity when bottomEnd = 3 */
+    double endAcceleration[3]; /* [m/s2] der(end.v*) from fmi2SetRealInputDerivatives */
+    int endAccelerationGiven;  /* as towAccelerationGiven, for the far end */
 } UCInputs;
 
 /* Outputs, valid after uc_initialize and after every uc_do_step. */

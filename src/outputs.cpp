@@ -86,15 +86,21 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
 
     double minTension = *std::min_element(T.begin(), T.end());
     double maxCurvature = 0.0;
+    // Minimum tension over the nodes (exact reactions of the discrete equations) and the element
+    // means (the projected strain's mean mode). The pointwise projected tension also carries the
+    // softened higher strain modes, whose strain is 100 times the physical variation inside an
+    // element: not a tension to report (it dips to -23 N at a free end that carries none).
     for (int e = 0; e < N; ++e) {
         const double* Xe = X + 6 * e;
         double axialTension[ElementTables::nAxial];
         axial_tensions(tables, model.axial(), Xe, Xd + 6 * e, axialTension);
+        double mean = 0.0;
         for (int g = 0; g < ElementTables::nAxial; ++g) {
             const ShapeValues& sv = tables.axial[g].shape;
-            minTension = std::min(minTension, axialTension[g]);
+            mean += tables.axial[g].weight / l * axialTension[g];
             maxCurvature = std::max(maxCurvature, curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe)));
         }
+        minTension = std::min(minTension, mean);
         for (double xi : {0.0, 1.0}) {
             const ShapeValues sv = hermite_shape(xi, l);
             maxCurvature = std::max(maxCurvature, curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe)));

@@ -122,12 +122,21 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
     char buffer[400];
     const char* farName = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor.x/y/z" : "end.x/y/z";
     if (model_.far_end_prescribed()) {
-        const double distance = (farPoint - towPosition_).norm();
-        if (distance > 1.1 * p.length) {
+        const Vec3 d = farPoint - towPosition_;
+        const double reach = 1.1 * p.length;
+        if (d.norm() > reach) {
+            // Name the coordinate that is farthest off, with the range the others leave it.
+            int k = 0;
+            d.cwiseAbs().maxCoeff(&k);
+            const double others = d.squaredNorm() - d[k] * d[k];
+            const double half = std::sqrt(std::max(0.0, reach * reach - others));
+            const char* prefix = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor" : "end";
             std::snprintf(buffer, sizeof buffer,
-                          "%s is %.6g m from the tow point but the cable is only %.6g m long: "
-                          "reaching it needs a strain of %.3g (more than 10 %%), which no cable survives",
-                          farName, distance, p.length, distance / p.length - 1.0);
+                          "%s.%c = %.17g is outside [%.6g, %.6g]: the far end must lie within the reach of the "
+                          "stretched cable, 1.1 x length = %.6g m from the tow point (it is %.6g m away; more than "
+                          "10 %% strain, which no cable survives)",
+                          prefix, "xyz"[k], farPoint[k], towPosition_[k] - half, towPosition_[k] + half, reach,
+                          d.norm());
             error = buffer;
             return false;
         }
@@ -247,10 +256,11 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     tow.v1 = vec(in.towVelocity) + a * h;
     tow.a0.setZero();
     if (model_.params().bottomEnd == UC_BOTTOM_EXTERNAL) {
-        // The far end follows end.* the same way (acceleration from the last two velocity samples).
+        // The far end follows end.* the same way (acceleration from der(end.v*) or estimated).
         const Vec3 endVelocityInput = vec(in.endVelocity);
-        const Vec3 aEnd = lastStepSize_ > 0.0 ? Vec3((endVelocityInput - lastEndVelocityInput_) / lastStepSize_)
-                                              : Vec3::Zero();
+        Vec3 aEnd = vec(in.endAcceleration);
+        if (!in.endAccelerationGiven)
+            aEnd = lastStepSize_ > 0.0 ? Vec3((endVelocityInput - lastEndVelocityInput_) / lastStepSize_) : Vec3::Zero();
         TowTrajectory& end = loads_.end;
         end.t0 = time_;
         end.h = h;

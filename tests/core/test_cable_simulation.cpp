@@ -70,6 +70,8 @@ TEST_P(SteadyTowTest, FreeEndTowIsStraightAtTheCriticalAngle) {
         const double along = std::hypot(out.shapeX[k], out.shapeZ[k]);
         EXPECT_NEAR(std::atan2(-out.shapeZ[k], -out.shapeX[k]), exact.theta, k == 0 ? 10.0 : 1e-4 * 300 / along);
     }
+    // A free end carries no tension and nothing along the cable is in compression.
+    EXPECT_GE(out.minTension, -1e-6 * exact.topTension);
     // Tension linear along the cable, zero at the free end.
     EXPECT_NEAR(out.tension[UC_NUM_STATIONS - 1], 0.0, 1e-6 * exact.topTension);
     EXPECT_NEAR(out.tension[10], 0.5 * exact.topTension, 2e-4 * exact.topTension);

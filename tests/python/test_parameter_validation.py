@@ -114,10 +114,6 @@ def test_out_of_range_parameter_is_rejected_with_the_one_message_format(make_cab
     _expect_rejected_at_initialization(make_cable, name, value, extra, named)
 
 
-@pytest.mark.xfail(strict=True, reason="rejected with fmi2Error, but by the initialization (it depends on the tow "
-                   "input), not by check_params, and not in the one format: 'initialization failed: anchor.x/y/z is "
-                   "1044.03 m from the tow point but the cable is only 300 m long: reaching it needs a strain of "
-                   "2.48 (more than 10 %), which no cable survives'")
 @pytest.mark.parametrize("name,value,extra,named", _flat(UNREACHABLE_ANCHOR),
                          ids=[f"{n}={v}" for n, v, _, _ in _flat(UNREACHABLE_ANCHOR)])
 def test_unreachable_anchor_is_rejected(make_cable, name, value, extra, named):
@@ -146,9 +142,6 @@ def test_non_finite_real_parameters_are_rejected_by_the_setter_naming_the_variab
         cable.free()
 
 
-@pytest.mark.xfail(strict=True, reason="fmi2SetReal reports non-finite values as '<name> = nan is not a finite "
-                   "number' (fmu/value_access.c check_real_value), not in the format of src/params.cpp "
-                   "'<variable> = <value> is outside <range>: <why>'")
 def test_non_finite_real_parameter_message_has_the_one_format(make_cable):
     cable = make_cable(instance_name="nonfinite", logging_on=True)
     with pytest.raises(FMICallException):
