@@ -111,3 +111,82 @@ def beam_string_frequencies(length: float, mass_per_length: float, tension: floa
     f = string_frequencies(length, mass_per_length, tension, strain, modes)
     return np.array([fn * math.sqrt(1.0 + (n * math.pi) ** 2 * EI / (tension * Ls**2))
                      for fn, n in zip(f, modes)])
+
+
+@dataclass
+class TouchdownCatenary:
+    """Elastic catenary from an anchor on a flat, frictionless, rigid seabed to a fairlead at
+    horizontal distance X and height h above the seabed: unstretched length L, submerged weight w
+    [N per unstretched metre], axial stiffness EA, no bending.
+
+    A grounded part of unstretched length Lb carries the horizontal tension H (no friction) and is
+    stretched to Lb (1 + H/EA); the suspended part Ls = L - Lb leaves the seabed with zero slope.
+    With q the unstretched arc length from the touchdown point, V(q) = w q and
+        x(q) = H q / EA + H / w asinh(w q / H),   z(q) = w q^2 / (2 EA) + H / w (sqrt(1 + (w q/H)^2) - 1).
+    Unknowns (Ls, H): z(Ls) = h fixes H for a given Ls (z decreases monotonically in H), then the
+    span Lb (1 + H/EA) + x(Ls) = X fixes Ls (outer root). When even the fully suspended line
+    (Ls = L) is too short for the span, the line lifts off the anchor: then Irvine's catenary
+    between the two points (`ElasticCatenary`) with a positive vertical anchor force is the answer
+    (`lifted` is True and `grounded` 0).
+    """
+
+    L: float
+    w: float
+    EA: float
+    X: float
+    h: float
+
+    def __post_init__(self):
+        from scipy.optimize import brentq
+
+        L, w, EA, X, h = self.L, self.w, self.EA, self.X, self.h
+        if math.hypot(X, h) >= L * (1.0 + 1e3 * w * L / EA):
+            raise ValueError("anchor out of reach")
+
+        def height(q, H):
+            a = w * q / H
+            return w * q * q / (2.0 * EA) + H / w * (math.hypot(1.0, a) - 1.0)
+
+        def H_for(q):
+            # height(q, H) decreases from q (1 + w q/(2 EA)) at H -> 0 to w q^2/(2 EA) at H -> inf
+            lo, hi = 1e-9 * w * L, 1e9 * w * L
+            return math.exp(brentq(lambda u: height(q, math.exp(u)) - h, math.log(lo), math.log(hi),
+                                   xtol=1e-15, rtol=1e-15, maxiter=500))
+
+        def span_mismatch(q):
+            H = H_for(q)
+            return (L - q) * (1.0 + H / EA) + H * q / EA + H / w * math.asinh(w * q / H) - X
+
+        q_min = h * (1.0 + 1e-12)  # the suspended part must at least reach the fairlead height
+        if span_mismatch(L) < 0.0:  # even fully suspended with zero slope at the anchor: lifts off
+            self.lifted = True
+            self._free = ElasticCatenary(L, w, EA, X, h)
+            self.H, self.suspended, self.grounded = self._free.H, L, 0.0
+            self.fairlead_tension = self._free.top_tension
+            self.anchor_vertical = self._free.V
+            return
+        self.lifted = False
+        self.suspended = brentq(span_mismatch, q_min, L, xtol=1e-13 * L, rtol=1e-15, maxiter=500)
+        self.H = H_for(self.suspended)
+        self.grounded = L - self.suspended
+        self.fairlead_tension = math.hypot(self.H, w * self.suspended)
+        self.anchor_vertical = 0.0
+
+    def position(self, p):
+        """(x, z) of the material point at unstretched arc length p from the anchor, relative to
+        the anchor (z measured up from the seabed)."""
+        p = np.asarray(p, dtype=float)
+        if self.lifted:
+            return self._free.position(p)
+        w, EA, H, Lb = self.w, self.EA, self.H, self.grounded
+        q = np.clip(p - Lb, 0.0, None)
+        xg = np.minimum(p, Lb) * (1.0 + H / EA)
+        x = xg + H * q / EA + H / w * np.arcsinh(w * q / H)
+        z = w * q**2 / (2.0 * EA) + H / w * (np.hypot(1.0, w * q / H) - 1.0)
+        return x, z
+
+    def tension(self, p):
+        p = np.asarray(p, dtype=float)
+        if self.lifted:
+            return self._free.tension(p)
+        return np.hypot(self.H, self.w * np.clip(p - self.grounded, 0.0, None))
