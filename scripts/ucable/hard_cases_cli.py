@@ -70,7 +70,7 @@ def row_for(ref: hc.Refinement, case: hc.Case, threshold: float) -> dict:
         "stats": fmt_stats(b.stats),
         "peak": f"{b.peak_tension / 1e3:.2f}" if math.isfinite(b.peak_tension) else "-",
         "min": f"{b.min_tension / 1e3:.2f}" if math.isfinite(b.min_tension) else "-",
-        "converged": "-" if conv is None else (f"{'yes' if conv else 'NO'} (spread {100 * ref.spread:.2f} %; "
+        "converged": "-" if conv is None else (f"{'yes' if conv else 'NO'} (spread {100 * ref.spread:.2g} %; "
                                                 + ", ".join(refined) + ")"),
     }
 
