@@ -1,0 +1,216 @@
+"""Issue 4 through the FMU: the chain on the seabed against the elastic catenary with touchdown
+(ucable.exact.TouchdownCatenary) and MoorPy, the surging fairlead, impossible geometry, the current
+profile against an independent steady ODE, and the external far end (bottomEnd 3)."""
+
+import math
+
+import numpy as np
+import pytest
+from ucable.fmu import FMICallException
+
+from ucable import mooring as m
+from ucable.fmu import CableFMU
+
+
+# ------------------------------------------------------------------ 1. catenary with touchdown
+def test_closed_form_is_consistent():
+    # The closed form's own checks: the fairlead lands where asked, the lifted-off branch takes
+    # over continuously (a slack reference would make every comparison below meaningless).
+    c = m.closed_form()
+    x, z = c.position(m.CHAIN["length"])
+    assert abs(x - (-m.ANCHOR_X)) < 1e-9 and abs(z - (m.FAIRLEAD_Z + m.DEPTH)) < 1e-9
+    assert 0.0 < c.grounded < m.CHAIN["length"]
+
+
+@pytest.mark.parametrize("n, grounded_bound", [(20, None), (40, 5e-3)])
+def test_touchdown_catenary(fmu_file, n, grounded_bound):
+    # Issue 4 bounds: fairlead tension within 0.1 %, grounded length within 0.5 % of the line
+    # "with a reasonable mesh": 40 elements of 22.5 m. Measured: tension 5e-6 (20) / 3e-5 (40),
+    # grounded length -1.06 % L (20) / -0.22 % L (40): the curvature jumps to zero at touchdown
+    # inside an element, so the touchdown point converges at second order, not h^4.
+    r = m.catenary_comparison(fmu_file, n)
+    assert abs(r["tension_rel"]) < 1e-3
+    assert abs(r["H_rel"]) < 1e-3
+    if grounded_bound is not None:
+        assert abs(r["grounded_rel"]) < grounded_bound
+    # Shape: the 21 stations against the exact material points. The penalty seabed lets the
+    # grounded chain sink w/k = 1.06 mm; the touchdown-length error times the small slope near
+    # touchdown adds a few cm at most at 20 elements (measured 13 mm / 2.9 mm). Bound: 0.1 m,
+    # 1e-4 of the line.
+    assert r["shape_error"] < 0.1
+    # the grounded chain rests on the seabed: penetration w/k ~ 1 mm (+ smoothing over 5 % of d)
+    assert -0.01 < r["clearance"] < 0.0
+
+
+def test_touchdown_converges(fmu_file):
+    coarse, fine = (m.catenary_comparison(fmu_file, n) for n in (20, 40))
+    # second order at least in the touchdown point: halving h must divide the error by ~4 (> 2)
+    assert abs(fine["grounded_rel"]) < abs(coarse["grounded_rel"]) / 2
+    assert fine["shape_error"] < coarse["shape_error"] / 2
+
+
+# ------------------------------------------------------------------ 2. MoorPy
+def test_moorpy_second_opinion(fmu_file):
+    pytest.importorskip("moorpy")
+    ref = m.moorpy_catenary()
+    exact = m.closed_form()
+    # two closed forms of the same problem: agree to their solver tolerances
+    assert abs(ref["fairlead_tension"] / exact.fairlead_tension - 1) < 1e-6
+    assert abs(ref["grounded"] - exact.grounded) < 1e-4 * m.CHAIN["length"]
+    r = m.catenary_comparison(fmu_file, 40)
+    # the same bounds as against the closed form (issue 4): 0.1 % tension, 0.5 % L grounded
+    assert abs(r["tension"] / ref["fairlead_tension"] - 1) < 1e-3
+    assert abs(r["grounded"] - ref["grounded"]) < 5e-3 * m.CHAIN["length"]
+
+
+# ------------------------------------------------------------------ 3. surging fairlead
+def test_surge_follows_the_fairlead_short(fmu_file):
+    # CI version: 30 s with 20 elements. With tow.vx and der(tow.vx) the FMU extrapolates the
+    # inputs to the end of the step with position, velocity and acceleration (README: tow point
+    # motion), so it misses the sine by the jerk term A w^3 h^3 / 6 = 2.07e-4 m at h = 0.1 s; the
+    # next term is smaller by w h / 4 = 0.16, hence the factor 1.2.
+    step, n = 0.1, 300
+    w = 2 * math.pi / m.SURGE_PERIOD
+    with CableFMU(fmu_file, parameters=m.chain_params(20)) as c:
+        c.initialize(0.0, n * step, inputs=m.surge_inputs(0.0))
+        worst, T = 0.0, []
+        for k in range(n):
+            t = k * step
+            c.set(m.surge_inputs(t))
+            c.set_input_derivatives(["tow.vx"], 1, [m.surge_acceleration(t)])
+            c.do_step(step, t=t)
+            worst = max(worst, abs(c.get("shape.x[1]") - m.SURGE_AMPLITUDE * math.sin(w * (t + step))))
+            T.append(c.get("towTension"))
+        end = c.get_reals(["endPosition.x", "endPosition.z"])
+    assert worst < 1.2 * m.SURGE_AMPLITUDE * (w * step) ** 3 / 6
+    assert abs(end[0] - m.ANCHOR_X) < 1e-9 and abs(end[1] + m.DEPTH) < 1e-9
+    # the tension swings around the static value (quasi-static range 1.34..1.85 MN at -5..+5 m)
+    T = np.array(T[100:])
+    assert T.max() > m.closed_form(5.0).fairlead_tension * 0.98
+    assert T.min() < m.closed_form(-5.0).fairlead_tension
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason=(
+    "measured (20 elements, defaults, seabedStiffness 1e6): dynamic mean fairlead tension over "
+    "100-300 s 1.6157 MN, quasi-static cycle mean 1.5816 MN (closed form at 40 phases; FMU statics "
+    "1.5816 MN), +2.2 % > the 0.5 % of issue 4: the nearly taut chain nearly lifts off its anchor at "
+    "+5 m (grounded 1.6 m) and drag plus the convex tension-offset curve raise the dynamic mean; "
+    "not tuned, for the lead to decide"))
+def test_surge_mean_tension_is_quasi_static(fmu_file):
+    r = m.surge_run(fmu_file, 300.0)
+    dyn = r["tension"][r["t"] >= 100.0].mean()
+    qs = m.quasi_static_mean(40)
+    assert abs(dyn / qs - 1) < 5e-3  # issue 4 criterion
+
+
+# ------------------------------------------------------------------ 4. impossible input
+@pytest.mark.parametrize("params, inputs, names", [
+    ({"anchor.x": -1000.0}, {}, ("anchor.x", "reach")),            # 1000 m > 1.1 x 900 m
+    ({}, {"tow.z": -330.0}, ("tow.z", "seabed")),                   # fairlead 10 m under the seabed
+    ({"waterDepth": -10.0}, {}, ("waterDepth",)),
+])
+def test_impossible_mooring_is_an_error(fmu_file, params, inputs, names):
+    c = CableFMU(fmu_file, parameters=m.chain_params(20, **params))
+    try:
+        with pytest.raises(FMICallException):
+            c.initialize(inputs={"tow.z": m.FAIRLEAD_Z, **inputs})
+        errors = [text for status, _, text in c.messages if status == "ERROR"]
+        assert errors, c.log_text()
+        for name in names:
+            assert any(name in text for text in errors), c.log_text()
+    finally:
+        c.free()
+
+
+# ------------------------------------------------------------------ 5. current profile
+def test_sheared_current_matches_steady_ode(fmu_file):
+    # The cable hangs with a 2 kN end weight in 0.1 m/s uniform + a profile from (0.5, 0) m/s at
+    # the surface to (0, 0.2) m/s at 250 m, constant below: a 3-D shape (~15 m x, ~10 m y offset).
+    # The profile's kink at 250 m makes the curvature jump, so convergence is ~h^2: measured shape
+    # errors 2.9 / 1.2 / 0.25 mm at 10 / 20 / 40 elements, top tension 2e-7 / 8e-8 / 2e-8.
+    # Bounds at 20 elements: h^2 from the 10-element value (2.9 mm / 4) with a 4x margin: 3 mm
+    # (1e-5 of the 300 m line); tension 1e-5.
+    r = m.hanging_comparison(fmu_file, 20)
+    assert r["shape_error"] < 3e-3
+    assert abs(r["top_tension_rel"]) < 1e-5
+    # the shear matters: without the profile the end would be 20 m elsewhere
+    assert abs(r["end_offset_ref"][1]) > 5.0
+
+
+def test_profile_rows_zero_is_the_uniform_case_bit_for_bit(fmu_file):
+    # currentProfileRows = 0 must ignore the rows entirely (values set, not used): identical
+    # bits over a short dynamic run with a time-varying uniform current.
+    def run(extra):
+        p = dict(m.HANG, **extra)
+        out = []
+        with CableFMU(fmu_file, parameters=p) as c:
+            c.initialize(inputs={"endLoad.z": m.HANG_END_LOAD, "current.x": 0.1})
+            for k in range(20):
+                c.set({"current.x": 0.1 + 0.05 * math.sin(0.5 * k), "current.y": 0.02 * k})
+                c.do_step(0.5)
+                out.append(c.get_reals(["towTension", "shape.x[21]", "shape.y[21]", "shape.z[21]",
+                                        "solver.nSteps"]))
+        return np.array(out)
+
+    rows = {k: v for k, v in m.SHEAR.items() if k != "currentProfileRows"}
+    a = run({})
+    b = run({**rows, "currentProfileRows": 0})
+    assert np.array_equal(a, b)
+    assert not np.array_equal(a, run(m.SHEAR))  # and the rows do act when switched on
+
+
+# ------------------------------------------------------------------ 6. external far end
+def test_external_end_at_the_anchor_equals_the_anchored_line(fmu_file):
+    # bottomEnd 3 with end.* held at the anchor solves the same equations as bottomEnd 1.
+    # Statics: identical bits (measured). Dynamics (0.5 m surge from rest, 10 s): IDA takes a
+    # different step sequence (2216 vs 2217 steps), so they agree to the integration tolerance,
+    # not round-off: positions within relTol |x| + absTol ~ 1e-5 m per step (bound 1e-4 m), forces
+    # within EA (that error) / element length = 7.5e8 x 1e-5 / 45 ~ 170 N, 1.1e-4 of the tension
+    # (bound 3e-4 of the largest tension). Measured: 6e-6 and 2e-6 m. The 5 m surge of the scene
+    # snaps the chain (minTension < 0, see the report), where the two paths diverge by %.
+    names = ["towTension", "towForce.x", "towForce.z", "endForce.x", "endForce.z", "minTension"]
+    where = ["shape.x[11]", "shape.z[11]", "shape.x[5]", "shape.z[5]"]
+    w, A = 2 * math.pi / m.SURGE_PERIOD, 0.5
+
+    def surge_from_rest(t):
+        return {"tow.x": -A * math.cos(w * t), "tow.vx": w * A * math.sin(w * t), "tow.z": m.FAIRLEAD_Z}
+
+    def run(extra, inputs):
+        out = []
+        with CableFMU(fmu_file, parameters=m.chain_params(20, **extra)) as c:
+            c.initialize(0.0, 10.0, inputs={**surge_from_rest(0.0), **inputs})
+            statics = c.get_reals(names + where)
+            for k in range(50):
+                t = 0.2 * k
+                c.set(surge_from_rest(t))
+                c.set_input_derivatives(["tow.vx"], 1, [w * w * A * math.cos(w * t)])
+                c.do_step(0.2, t=t)
+                out.append(c.get_reals(names + where))
+        return statics, np.array(out)
+
+    s1, anchored = run({}, {})
+    s3, external = run({"bottomEnd": 3}, {"end.x": m.ANCHOR_X, "end.y": 0.0, "end.z": -m.DEPTH})
+    assert np.array_equal(s1, s3)
+    k = len(names)
+    scale = np.max(np.abs(anchored[:, 0]))
+    assert np.max(np.abs(external[:, :k] - anchored[:, :k])) < 3e-4 * scale
+    assert np.max(np.abs(external[:, k:] - anchored[:, k:])) < 1e-4
+    # endForce is the force on the external body: the chain pulls the anchor towards the fairlead
+    assert s1[3] > 0.5e6
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "core: initMode 0 with bottomEnd 3 applies the steady-tow initial velocity (every node moves "
+    "with tow.v*, src/simulation.cpp 'bottomEnd != UC_BOTTOM_ANCHORED') even though end.v* = 0: "
+    "with tow.vx = 3.1416 at initialization towTension is 1.52361 MN against 1.56807 MN anchored "
+    "and endForce.x 1.0701 vs 1.3002 MN (equal to 1e-15 when tow.vx = 0)"))
+def test_external_end_at_rest_with_a_moving_fairlead_initializes_like_the_anchor(fmu_file):
+    names = ["towTension", "endForce.x", "endForce.z"]
+    out = []
+    for extra, inputs in (({}, {}), ({"bottomEnd": 3}, {"end.x": m.ANCHOR_X, "end.z": -m.DEPTH})):
+        with CableFMU(fmu_file, parameters=m.chain_params(20, **extra)) as c:
+            c.initialize(inputs={**m.surge_inputs(0.0), **inputs})
+            out.append(c.get_reals(names))
+    # the same equations and initial state: round-off (1e-9 relative on MN forces)
+    assert np.max(np.abs(out[1] - out[0])) < 1e-9 * np.max(np.abs(out[0]))
