@@ -1,6 +1,7 @@
 """Sanity of the work-precision benchmark (scripts/bench_work_precision --quick, issue 7).
 
-One small grid point per code on the Hopland tow manoeuvre (660 s): our FMU with 10 elements
+One small grid point per code on the Hopland tow manoeuvre (660 s; the chain mooring on the
+seabed behind the slow marker): our FMU with 10 elements
 (relTol 1e-6) and MoorDyn with 10 segments at 0.9 x its stable step, both against our 40-element
 reference. Only sanity is asserted here; speed targets live in the benchmark output, never in
 timed tests.
@@ -47,3 +48,34 @@ def test_quick_benchmark_hopland(fmu_file):
     # The force of the cable on the tow point has the same sign convention in both codes.
     assert (md[0].force[1:, 0] * ref.force[1:, 0] > 0).all()
     assert (md[0].force[1:, 2] * ref.force[1:, 2] > 0).all()
+
+
+@pytest.mark.slow
+def test_quick_benchmark_mooring_seabed(fmu_file):
+    """Chain mooring on the seabed (issue 7), quick size: our 10 elements and MoorDyn 10 segments
+    against our 20-element reference, both with the matched seabed (seabedStiffness = kBot d)."""
+    from ucable import work_precision as wp
+
+    case = wp.make_cases()["mooring"]
+    ref, runs, limits = wp.run_case(fmu_file, case, quick=True)
+    md = [r for r in runs if r.code == "MoorDyn"]
+    assert len(md) == 1, "MoorDyn blew up even below its bisected stable step"
+
+    # MoorDyn's RK2 step is capped by the seabed, not by the axial waves (l/c = 33 ms at N = 10):
+    # a resting node is an overdamped oscillator, mass m = (117 + Can rho pi d^2/4) per metre,
+    # k = kBot d, c = cBot d per metre; its fast rate lambda = c/(2m) + sqrt((c/(2m))^2 - k/m) and
+    # RK2 is stable for lambda dt <= 2. The bisection (3 % steps) must land within 25 % of that.
+    d, rho = case.line["diameter"], 1025.0
+    m = case.line["massPerLength"] + rho * math.pi * d * d / 4
+    k, c = wp.MD_KBOT * d, wp.MD_CBOT * d
+    lam = c / (2 * m) + math.sqrt((c / (2 * m)) ** 2 - k / m)
+    dt_lim, _ = limits[10]
+    assert 0.75 * 2 / lam < dt_lim < 1.25 * 2 / lam, (dt_lim, 2 / lam)
+
+    # The issue measured MoorDyn's fairlead tension RMS error at N = 10 independently: 5.6 %;
+    # twice that separates discretization error from a modelling mismatch (seabed units, drag
+    # convention, a missing weight term each move the snap peaks by far more).
+    assert md[0].errors["tension_rmsrel"] < 0.112
+    # Mid-line position: the lumped-mass error scale is l^2 kappa / 8 with l = 83.5 m and
+    # kappa ~ w / H ~ 1000 N/m / 1 MN: 0.9 m; 2 m allows the factor of the snap phases.
+    assert md[0].errors["mid_rms"] < 2.0
