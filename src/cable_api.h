@@ -29,6 +29,11 @@ extern "C" {
 #define UC_BOTTOM_TOWED_BODY 2
 #define UC_BOTTOM_EXTERNAL 3
 
+/* torqueMode values */
+#define UC_TORQUE_FREE 0
+#define UC_TORQUE_PRESCRIBED 1
+#define UC_TORQUE_ROTATION 2
+
 /* Rows of the depth profile of the current (currentProfile.*[1..10]). */
 #define UC_CURRENT_PROFILE_ROWS 10
 
@@ -80,6 +85,10 @@ typedef struct UCParams {
     double currentProfileDepth[UC_CURRENT_PROFILE_ROWS]; /* currentProfile.depth[k] [m], positive down, increasing */
     double currentProfileX[UC_CURRENT_PROFILE_ROWS];     /* currentProfile.x[k] [m/s] */
     double currentProfileY[UC_CURRENT_PROFILE_ROWS];     /* currentProfile.y[k] [m/s] */
+    /* torsion */
+    int enableTorsion;        /* enableTorsion (Boolean)    torque term of the equation of motion */
+    double GJ;                /* GJ [N.m2]                  torsional stiffness */
+    int torqueMode;           /* torqueMode                 UC_TORQUE_*: 0 swivel, 1 torque input, 2 twist input */
 } UCParams;
 
 /* Inputs, held constant (or extrapolated, see uc_do_step) over a communication step. */
@@ -96,6 +105,8 @@ typedef struct UCInputs {
     double endVelocity[3];     /* end.vx/vy/vz [m/s] far-end velocity when bottomEnd = 3 */
     double endAcceleration[3]; /* [m/s2] der(end.v*) from fmi2SetRealInputDerivatives */
     int endAccelerationGiven;  /* as towAccelerationGiven, for the far end */
+    double torque;             /* torque [N.m]       cable torque when torqueMode = 1 */
+    double twist;              /* twist [rad]        end-to-end rotation of the material frame when torqueMode = 2 */
 } UCInputs;
 
 /* Outputs, valid after uc_initialize and after every uc_do_step. */
@@ -116,6 +127,11 @@ typedef struct UCOutputs {
     double touchdownArcLength; /* touchdownArcLength [m] unstretched arc length from the tow point to the
                                   first seabed contact; the length when none */
     double minSeabedClearance; /* minSeabedClearance [m] min over the cable of z + waterDepth (< 0: penetration) */
+    double cableTorque;        /* cableTorque [N.m]     torque H, constant along the cable */
+    double twistAngle[UC_NUM_STATIONS]; /* twist[k] [rad] material twist from the tow point, relative to
+                                  the parallel-transported (twist-free) frame: H s / GJ */
+    double towMoment[3];       /* towMoment.x/y/z [N.m] moment of the cable on the tow point */
+    double endMoment[3];       /* endMoment.x/y/z [N.m] moment of the cable on the far-end attachment */
     /* integrator statistics since uc_initialize (debug outputs) */
     double nSteps, nResidualEvals, nJacobianEvals, nNonlinearFailures, nErrorTestFailures;
 } UCOutputs;

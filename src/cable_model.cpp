@@ -80,6 +80,10 @@ CableModel::CableModel(const UCParams& params)
     fluid_.addedMass = params.enableAddedMass != 0;
     axial_.EA = params.EA;
     axial_.damping = params.axialDamping;
+    // The material's Kelvin-Voigt time constant axialDamping / EA damps bending as well: it
+    // removes the element-scale bending waves (periods of milliseconds, which quadratic drag cannot
+    // damp at small amplitude) that a torque keeps exciting, and is negligible for the slow modes.
+    bendingDamping_ = EI_ * params.axialDamping / params.EA;
     topTangent_ = params.topEnd == UC_TOP_CLAMPED ? unit(params.topTangent) : Vec3(0, 0, -1);
     anchor_ = Vec3(params.anchor[0], params.anchor[1], params.anchor[2]);
     seabed_.enabled = params.enableSeabed != 0;
@@ -187,6 +191,8 @@ void CableModel::element_residual(int e, const double* X, const double* Xd, cons
     add_mass_force(tables_, params_.massPerLength, Xdd + g0, R);
     add_axial_force(tables_, scaled_axial(loads), X + g0, Xd + g0, R);
     if (EI_ > 0.0) add_bending_force(tables_, EI_, X + g0, R);
+    if (bendingDamping_ > 0.0) add_bending_force(tables_, bendingDamping_, Xd + g0, R);
+    if (loads.torque != 0.0) add_torque_force(tables_, loads.torque, X + g0, R);
     add_hydro_force(tables_, fluid_, loads.current, X + g0, Xd + g0, Xdd + g0, R);
     if (seabed_.enabled) add_seabed_force(tables_, seabed_, X + g0, Xd + g0, R);
 }
@@ -200,6 +206,8 @@ void CableModel::element_jacobian(int e, const double* X, const double* Xd, cons
     add_mass_jacobian(tables_, params_.massPerLength, M);
     add_axial_jacobian(tables_, scaled_axial(loads), X + g0, Xd + g0, K, C);
     if (EI_ > 0.0) add_bending_jacobian(tables_, EI_, K);
+    if (bendingDamping_ > 0.0) add_bending_jacobian(tables_, bendingDamping_, C);
+    if (loads.torque != 0.0) add_torque_jacobian(tables_, loads.torque, X + g0, K);
     add_hydro_jacobian(tables_, fluid_, loads.current, X + g0, Xd + g0, Xdd + g0, K, C, M);
     if (seabed_.enabled) add_seabed_jacobian(tables_, seabed_, X + g0, Xd + g0, K, C);
 }

@@ -35,6 +35,7 @@ struct Loads {
     CurrentField current;
     Vec3 endLoad = Vec3::Zero();
     Vec3 endCouple = Vec3::Zero();
+    double torque = 0.0;  // H [N.m] (0 unless torsion is enabled)
     // Caps the axial stiffness factor of every strain mode (static solver only: equilibrium is
     // first found on a soft cable, whose large rotations do not turn into huge axial residuals,
     // then stiffened to the real EA).
@@ -110,6 +111,7 @@ private:
     FluidProps fluid_;
     AxialProps axial_;
     double EI_;
+    double bendingDamping_ = 0.0;  // EI * axialDamping / EA [N.m2.s]
     Vec3 topTangent_;
     Vec3 anchor_;
     SeabedProps seabed_;

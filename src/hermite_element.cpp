@@ -225,6 +225,38 @@ double bending_energy(const ElementTables& e, double EI, const double* X) {
     return energy;
 }
 
+namespace {
+
+Mat3 skew(const Vec3& v) {
+    Mat3 m;
+    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+    return m;
+}
+
+}  // namespace
+
+void add_torque_force(const ElementTables& e, double H, const double* X, double* R) {
+    // (r' x r'') dN_a is a polynomial of degree 5: the 5 axial points integrate it exactly.
+    for (int g = 0; g < ElementTables::nAxial; ++g) {
+        const QuadPoint& q = e.axial[g];
+        const Vec3 f = (-H * q.weight) * interpolate(q.shape.dN, X).cross(interpolate(q.shape.d2N, X));
+        for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += q.shape.dN[a] * f;
+    }
+}
+
+void add_torque_jacobian(const ElementTables& e, double H, const double* X, Mat12& K) {
+    for (int g = 0; g < ElementTables::nAxial; ++g) {
+        const QuadPoint& q = e.axial[g];
+        // d(a x b) = -[b]x da + [a]x db with a = r', b = r''.
+        const Mat3 dA = -skew(interpolate(q.shape.d2N, X));
+        const Mat3 dB = skew(interpolate(q.shape.dN, X));
+        for (int a = 0; a < 4; ++a)
+            for (int b = 0; b < 4; ++b)
+                K.block<3, 3>(3 * a, 3 * b) +=
+                    (-H * q.weight * q.shape.dN[a]) * (q.shape.dN[b] * dA + q.shape.d2N[b] * dB);
+    }
+}
+
 void add_mass_force(const ElementTables& e, double massPerLength, const double* Xdd, double* R) {
     for (int a = 0; a < 4; ++a) {
         Vec3 f = Vec3::Zero();

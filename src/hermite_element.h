@@ -93,6 +93,13 @@ void add_bending_force(const ElementTables& e, double EI, const double* X, doubl
 void add_bending_jacobian(const ElementTables& e, double EI, Mat12& K);
 double bending_energy(const ElementTables& e, double EI, const double* X);
 
+// Torque H (constant along the cable, Garrett's rod; DESIGN.md section 3, the paper's eq. 9):
+// the strong-form term -(H r' x r'')' gives, after integration by parts, the residual
+// R_a -= H int (r' x r'') dN_a ds. Its Jacobian is not symmetric (a constant torque is not
+// conservative under general end conditions).
+void add_torque_force(const ElementTables& e, double H, const double* X, double* R);
+void add_torque_jacobian(const ElementTables& e, double H, const double* X, Mat12& K);
+
 // Structural (consistent) mass: R_a += m sum_b M_ab Xdd_b.
 void add_mass_force(const ElementTables& e, double massPerLength, const double* Xdd, double* R);
 void add_mass_jacobian(const ElementTables& e, double massPerLength, Mat12& M);

@@ -52,8 +52,17 @@ void nodal_tensions(const CableModel& model, const double* X, const ElementForce
     for (int i = 1; i <= N; ++i) T[i] = forces.element[i - 1].segment<3>(6).dot(at(X, 6 * i + 3).normalized());
 }
 
+// Internal moment at an element end: bending EI r' x r'' / |r'|^3 plus the torque along t. It is
+// the moment that the cable beyond the point exerts on the cable before it.
+Vec3 internal_moment(const CableModel& model, const double* Xe, double xi, double torque) {
+    const ShapeValues sv = hermite_shape(xi, model.element_length());
+    const Vec3 rp = interpolate(sv.dN, Xe);
+    const double n = rp.norm();
+    return model.EI() * rp.cross(interpolate(sv.d2N, Xe)) / (n * n * n) + torque * rp / n;
+}
+
 void compute_outputs(const CableModel& model, const double* X, const double* Xd, const ElementForces& forces,
-                     UCOutputs& out) {
+                     double torque, UCOutputs& out) {
     const int N = model.n_elements();
     const int gN = 6 * N;
     const Vec3 towForce = -forces.element[0].segment<3>(0);
@@ -107,6 +116,18 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
         }
     }
     seabed_outputs(model, X, out);
+    out.cableTorque = torque;
+    const double GJ = model.params().GJ;
+    for (int k = 0; k < UC_NUM_STATIONS; ++k)
+        out.twistAngle[k] = GJ > 0.0 ? torque * model.params().length * k / (UC_NUM_STATIONS - 1) / GJ : 0.0;
+    // The cable pulls on the tow fitting with the internal moment at s = 0 and on the far-end
+    // fitting with minus the internal moment at s = L.
+    const Vec3 towMoment = internal_moment(model, X, 0.0, torque);
+    const Vec3 endMoment = -internal_moment(model, X + 6 * (N - 1), 1.0, torque);
+    for (int k = 0; k < 3; ++k) {
+        out.towMoment[k] = towMoment[k];
+        out.endMoment[k] = endMoment[k];
+    }
     out.minTension = minTension;
     out.maxCurvature = maxCurvature;
     out.maxBendingMoment = model.EI() * maxCurvature;

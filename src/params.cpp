@@ -90,12 +90,19 @@ std::string check_params(const UCParams& p) {
         non_negative(m, "seabedFriction", p.seabedFriction, "a friction coefficient cannot be negative") ||
         in_range(m, "currentProfileRows", p.currentProfileRows, 0, UC_CURRENT_PROFILE_ROWS, "[0, 10]",
                  "the profile has at most 10 rows") ||
+        in_range(m, "enableTorsion", p.enableTorsion, 0, 1, "{0, 1}", "a switch is on or off") ||
+        non_negative(m, "GJ", p.GJ, "a torsional stiffness cannot be negative") ||
+        in_range(m, "torqueMode", p.torqueMode, 0, 2, "{0 swivel, 1 prescribed torque, 2 prescribed rotation}",
+                 "unknown torque mode") ||
         unit_direction(m, "initialDirection", p.initialDirection) ||
         finite(m, "anchor.x", p.anchor[0]) || finite(m, "anchor.y", p.anchor[1]) ||
         finite(m, "anchor.z", p.anchor[2])) {
         return m;
     }
     if (p.topEnd == UC_TOP_CLAMPED && unit_direction(m, "topTangent", p.topTangent)) return m;
+    if (p.enableTorsion && p.torqueMode == UC_TORQUE_ROTATION &&
+        positive(m, "GJ", p.GJ, "a prescribed end rotation makes a torque only through GJ"))
+        return m;
     if (p.enableSeabed && positive(m, "seabedStiffness", p.seabedStiffness, "an enabled seabed needs a contact stiffness"))
         return m;
     for (int k = 0; k < UC_CURRENT_PROFILE_ROWS; ++k) {
@@ -173,6 +180,10 @@ extern "C" void uc_params_default(UCParams* p) {
     p->seabedDamping = 1e3;
     p->seabedFriction = 0.0;
     p->currentProfileRows = 0;
+    p->enableTorsion = 0;
+    // Typical of an armoured cable: GJ of the same order as EI.
+    p->GJ = 1000.0;
+    p->torqueMode = UC_TORQUE_FREE;
 }
 
 extern "C" int uc_params_check(const UCParams* p, char* msg, size_t msgSize) {

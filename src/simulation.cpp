@@ -16,7 +16,7 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 2;
+constexpr std::uint32_t kStateVersion = 3;
 
 // Fixed-layout header of a saved state; followed by UCOutputs, y and y'.
 struct StateHeader {
@@ -32,6 +32,8 @@ struct StateHeader {
     double endPosition[3];
     double endVelocity[3];
     double lastEndVelocityInput[3];
+    double twistRef[12];
+    double lastBeta;
     double stats[5];
 };
 
@@ -117,6 +119,19 @@ void CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
     model_.restrict_to_free(X.data(), q.data());
 }
 
+double CableSimulation::cable_torque(const UCInputs& in) {
+    const UCParams& p = model_.params();
+    if (!p.enableTorsion || p.torqueMode == UC_TORQUE_FREE) return 0.0;
+    if (p.torqueMode == UC_TORQUE_PRESCRIBED) return in.torque;
+    // Mode 2: H = GJ (Phi - beta) / L with beta from the current shape, unwrapped continuously.
+    free_state(q_, v_, a_);
+    model_.expand(q_.data(), v_.data(), a_.data(), loads_, time_, X_.data(), Xd_.data(), Xdd_.data());
+    const double raw = geometric_twist(model_, X_.data(), twistRef_);
+    const double kTwoPi = 6.28318530717958647692;
+    lastBeta_ += std::remainder(raw - lastBeta_, kTwoPi);
+    return p.GJ * (in.twist - lastBeta_) / p.length;
+}
+
 bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) const {
     const UCParams& p = model_.params();
     char buffer[400];
@@ -187,8 +202,28 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
 
     const int n = model_.n_free();
     initial_guess(towPosition_, farPoint, q_);
+    {
+        // Twist reference frames from the initial guess (planar: no geometric twist).
+        std::vector<double> zero(n, 0.0);
+        model_.expand(q_.data(), zero.data(), zero.data(), loads_, t0, X_.data(), Xd_.data(), Xdd_.data());
+        twistRef_ = make_twist_reference(model_, X_.data());
+        lastBeta_ = 0.0;
+        if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
+            error = "torque and twist inputs must be finite numbers";
+            return false;
+        }
+        const UCParams& pp = model_.params();
+        loads_.torque = !pp.enableTorsion ? 0.0
+                        : pp.torqueMode == UC_TORQUE_PRESCRIBED ? in.torque
+                        : pp.torqueMode == UC_TORQUE_ROTATION   ? pp.GJ * in.twist / pp.length
+                                                                : 0.0;
+    }
     std::vector<double> v(n, 0.0);
-    if (p.initMode == UC_INIT_EQUILIBRIUM && p.bottomEnd != UC_BOTTOM_ANCHORED) {
+    // A steady tow only when nothing holds the far end back: free end, internal body, or an
+    // external end moving with the tow point. Otherwise the equilibrium is at rest.
+    const bool steadyTow = p.bottomEnd == UC_BOTTOM_FREE || p.bottomEnd == UC_BOTTOM_TOWED_BODY ||
+                           (p.bottomEnd == UC_BOTTOM_EXTERNAL && (endVelocity_ - towVelocity_).norm() <= 1e-12);
+    if (p.initMode == UC_INIT_EQUILIBRIUM && steadyTow) {
         // Steady tow: every node moves with the tow point, tangents do not turn.
         for (int g = 0; g < model_.n_global(); ++g) {
             const int j = model_.free_index(g);
@@ -270,6 +305,12 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         end.v1 = endVelocityInput + aEnd * h;
         end.a0.setZero();
     }
+
+    if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
+        error = "torque and twist inputs must be finite numbers";
+        return false;
+    }
+    loads_.torque = cable_torque(in);
 
     if (restartPending_) {
         statsBase_ = total_stats();
@@ -360,7 +401,7 @@ void CableSimulation::update_outputs() {
     free_state(q_, v_, a_);
     model_.expand(q_.data(), v_.data(), a_.data(), loads_, time_, X_.data(), Xd_.data(), Xdd_.data());
     model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), &forces_);
-    compute_outputs(model_, X_.data(), Xd_.data(), forces_, outputs_);
+    compute_outputs(model_, X_.data(), Xd_.data(), forces_, loads_.torque, outputs_);
     const IntegratorStats s = total_stats();
     outputs_.nSteps = s.steps;
     outputs_.nResidualEvals = s.residualEvals;
@@ -391,6 +432,10 @@ void CableSimulation::save_state(void* buffer) {
         header.lastEndVelocityInput[k] = lastEndVelocityInput_[k];
     }
     header.lastStepSize = lastStepSize_;
+    const Vec3* frames[4] = {&twistRef_.topTangent, &twistRef_.topNormal, &twistRef_.endTangent, &twistRef_.endNormal};
+    for (int f = 0; f < 4; ++f)
+        for (int k = 0; k < 3; ++k) header.twistRef[3 * f + k] = (*frames[f])[k];
+    header.lastBeta = lastBeta_;
     std::memcpy(header.stats, stats, sizeof stats);
     auto* out = static_cast<unsigned char*>(buffer);
     std::memcpy(out, &header, sizeof header);
@@ -430,6 +475,9 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     endPosition_ = vec(header.endPosition);
     endVelocity_ = vec(header.endVelocity);
     lastEndVelocityInput_ = vec(header.lastEndVelocityInput);
+    Vec3* frames[4] = {&twistRef_.topTangent, &twistRef_.topNormal, &twistRef_.endTangent, &twistRef_.endNormal};
+    for (int f = 0; f < 4; ++f) *frames[f] = vec(header.twistRef + 3 * f);
+    lastBeta_ = header.lastBeta;
     lastStepSize_ = header.lastStepSize;
     statsBase_.steps = header.stats[0];
     statsBase_.residualEvals = header.stats[1];

@@ -13,6 +13,7 @@
 #include "cable_api.h"
 #include "cable_model.h"
 #include "integrator.h"
+#include "torsion.h"
 
 namespace uc {
 
@@ -45,6 +46,7 @@ private:
     void initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
     bool check_geometry(const Vec3& farPoint, std::string& error) const;
     void update_outputs();
+    double cable_torque(const UCInputs& in);
     IntegratorStats total_stats() const;
 
     CableModel model_;
@@ -59,6 +61,8 @@ private:
     double lastStepSize_ = 0.0;              // ... and its step size (0: no history yet)
     Vec3 endPosition_ = Vec3::Zero(), endVelocity_ = Vec3::Zero();  // prescribed far end (bottomEnd 3)
     Vec3 lastEndVelocityInput_ = Vec3::Zero();
+    TwistReference twistRef_;  // end frames at initialization (torqueMode 2)
+    double lastBeta_ = 0.0;    // geometric twist at the last evaluation, for unwrapping past +-pi
     std::vector<double> y_, yp_;  // IDA vectors at time_: y = [q_0, v_0, q_1, v_1, ...]
     IntegratorStats statsBase_;   // statistics folded in at integrator restarts
     bool integratorStarted_ = false;  // the integrator's own counters belong to this state

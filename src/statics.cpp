@@ -37,6 +37,7 @@ Loads scaled_loads(const Loads& loads, double lambda) {
     s.end.a0.setZero();
     s.endLoad *= lambda;
     s.endCouple *= lambda;
+    s.torque *= lambda;
     s.tow.v0 *= lambda;
     s.tow.v1 *= lambda;
     s.tow.a0.setZero();

@@ -157,6 +157,7 @@ void check_assembled_jacobian(const UCParams& p) {
     loads.current.uniform = Vec3(0.2, -0.3, 0);
     loads.endLoad = Vec3(10, 0, -20);
     loads.endCouple = Vec3(3, -40, 7);
+    loads.torque = 25.0;
     std::vector<double> Xd(m.n_global()), Xdd(m.n_global()), R(n), Rp(n), Rm(n);
     Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n), C = K, M = K;
     m.expand(q.data(), v.data(), a.data(), loads, 0.0, X.data(), Xd.data(), Xdd.data());

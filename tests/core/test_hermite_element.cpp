@@ -316,3 +316,27 @@ TEST(SeabedTerm, RestingCableCarriesItsWeightAndFrictionOpposesSliding) {
     EXPECT_NEAR(F.x(), 500.0 / std::sqrt(1.0 + kFrictionVelocity * kFrictionVelocity), 1e-9);
     EXPECT_EQ(seabed_load(p, Vec3(0, 0, -49.9), Vec3(1, 0, 0), nullptr), Vec3::Zero());
 }
+
+TEST(TorqueTerm, JacobianMatchesFiniteDifferences) {
+    const double l = 2.0, H = 35.0;
+    const ElementTables e = make_element_tables(l, 3, 3);
+    const Vec12 X = curved_element(l, 1.01);
+    Mat12 K = Mat12::Zero();
+    add_torque_jacobian(e, H, X.data(), K);
+    auto force = [&](const Vec12& x) {
+        Vec12 R = Vec12::Zero();
+        add_torque_force(e, H, x.data(), R.data());
+        return R;
+    };
+    expect_jacobian_matches(force, X, K, 1e-6, 1e-7, "dR/dX");
+}
+
+TEST(TorqueTerm, StraightElementCarriesNoTorqueForce) {
+    // r' x r'' = 0 on a straight line: a torque alone does not move a straight cable.
+    const ElementTables e = make_element_tables(3.0, 3, 3);
+    Vec12 X;
+    X << 0, 0, 0, 0.6, 0.8, 0, 1.8, 2.4, 0, 0.6, 0.8, 0;
+    Vec12 R = Vec12::Zero();
+    add_torque_force(e, 100.0, X.data(), R.data());
+    EXPECT_LT(R.norm(), 1e-12);
+}

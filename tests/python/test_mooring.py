@@ -200,11 +200,6 @@ def test_external_end_at_the_anchor_equals_the_anchored_line(fmu_file):
     assert s1[3] > 0.5e6
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "core: initMode 0 with bottomEnd 3 applies the steady-tow initial velocity (every node moves "
-    "with tow.v*, src/simulation.cpp 'bottomEnd != UC_BOTTOM_ANCHORED') even though end.v* = 0: "
-    "with tow.vx = 3.1416 at initialization towTension is 1.52361 MN against 1.56807 MN anchored "
-    "and endForce.x 1.0701 vs 1.3002 MN (equal to 1e-15 when tow.vx = 0)"))
 def test_external_end_at_rest_with_a_moving_fairlead_initializes_like_the_anchor(fmu_file):
     names = ["towTension", "endForce.x", "endForce.z"]
     out = []
