@@ -53,6 +53,8 @@ CASES = {
     "seabedDamping": [(-1.0, {}, None)],
     "seabedFriction": [(-0.1, {}, None)],
     "currentProfileRows": [(-1, {}, None), (11, {}, None)],
+    "GJ": [(-1.0, {}, None), (0.0, {"enableTorsion": True, "torqueMode": 2}, None)],
+    "torqueMode": [(-1, {}, None), (3, {}, None)],
 }
 # Profile depths must increase row by row: all 10 rows in use, 10 m apart, row k repeats row k - 1.
 for _k in range(2, 11):
@@ -74,6 +76,7 @@ NO_OUT_OF_RANGE_VALUE = {
     "enableBending": "Boolean: fmi2SetBoolean maps any non-zero value to true",
     "enableAddedMass": "Boolean: fmi2SetBoolean maps any non-zero value to true",
     "enableSeabed": "Boolean: fmi2SetBoolean maps any non-zero value to true",
+    "enableTorsion": "Boolean: fmi2SetBoolean maps any non-zero value to true",
     # the first row has no row above it; a depth above the surface (< 0) is not rejected
     "currentProfile.depth[1]": "any finite value is accepted (no lower bound, e.g. -50 m above the surface)",
     **{f"currentProfile.{c}[{k}]": "any finite current velocity is admissible"

@@ -33,7 +33,7 @@ def readme_rows():
                 default = cells[2] if section != "output" else None
                 if default is not None and len(names) == 3:
                     default = re.findall(r"[-+0-9.e]+", default.split("(")[-1])[k]
-                rows[name.replace("[k]", "")] = (section, cells[1], default)
+                rows[name] = (section, cells[1], default)
     return rows
 
 
@@ -46,7 +46,7 @@ def model_variables():
 def test_every_variable_is_documented_with_its_unit_and_default(model_variables):
     rows = readme_rows()
     for v in model_variables:
-        name = re.sub(r"\[\d+\]$", "", v.name)
+        name = re.sub(r"\[\d+\]$", "[k]", v.name)  # arrays are documented as name[k]
         assert name in rows, f"{v.name} is missing from the README interface tables"
         section, unit, default = rows[name]
         assert section == v.causality, f"{v.name}: README lists it under {section}s"
