@@ -6,7 +6,6 @@ parameters and a communication step. `run_case` flies it and returns a CaseResul
 FMU's error message, CPU time, integrator statistics, peak and minimum tension. `refine` repeats a case
 with twice the elements and with relTol / 100 and reports the spread of the peak tension.
 
-Seabed impact is not here: it waits for the seabed (issue 8 part 1, "pending seabed").
 """
 
 from __future__ import annotations
@@ -325,6 +324,21 @@ def tow_jerk(g_level: float = 10.0, duration: float = 0.1, speed_kn: float = 2.0
                 along(profile), t_end, step)
 
 
+def seabed_impact(length: float = 100.0, depth: float = 50.0, top_depth: float = 20.0, t_end: float = 60.0,
+                  step: float = 0.1) -> Case:
+    """A chain (117 kg/m, d = 0.137 m volume-equivalent, EA 7.5e8 N, no bending stiffness) released at
+    rest from a horizontal straight line 30 m above the seabed, top fixed: it swings down and its
+    far part strikes the seabed at about sqrt(2 g' 30 m) ~ 20 m/s, then lies on it (seabed stiffness
+    1e6 N/m2, default damping)."""
+    params = {"length": length, "diameter": 0.137, "massPerLength": 117.0, "EA": 7.5e8, "axialDamping": 7.5e6,
+              "enableBending": 0, "Cdn": 2.4, "Cdt": 0.2, "initMode": 1, "initialDirection.x": 1.0,
+              "initialDirection.y": 0.0, "initialDirection.z": 0.0, "enableSeabed": 1, "waterDepth": depth,
+              "seabedStiffness": 1e6}
+    traj = along(PiecewiseLinearSpeed([0.0], [0.0]), origin=(0.0, 0.0, -top_depth))
+    return Case("seabed impact", f"{length:.0f} m chain released horizontal {depth - top_depth:g} m above the seabed",
+                params, traj, t_end, step)
+
+
 def long_run(hours: float = 24.0, speed_kn: float = 2.0, heave: float = 1.0, period: float = 10.0,
              step: float = 1.0) -> Case:
     """Steady tow of the Hopland cable at 2 kn with +-1 m / 10 s heave, 1 s steps, for `hours`."""
@@ -336,7 +350,7 @@ def long_run(hours: float = 24.0, speed_kn: float = 2.0, heave: float = 1.0, per
 
 def all_cases() -> list:
     return [slack_snap(), free_fall_horizontal(), vessel_stops_dead(), compression(), stiff_steel(), turn_180(),
-            tow_jerk()]
+            tow_jerk(), seabed_impact()]
 
 
 def hourly_drift(result: CaseResult, period: float = 10.0) -> dict:

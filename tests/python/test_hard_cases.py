@@ -100,3 +100,25 @@ def test_absurd_tow_jerk_fails_cleanly_and_the_last_good_state_is_restorable(fmu
     assert not r.completed, "a 1e6 g jerk is expected to defeat the integrator"
     assert "IDA_" in r.message and "t = " in r.message, r.message  # SUNDIALS flag name and time
     assert r.state_restored, "fmi2SetFMUstate to the state before the failing step"
+
+
+def test_chain_dropped_onto_the_seabed_comes_to_rest_on_it(fmu_file):
+    # A chain released horizontal 30 m above the seabed strikes it and lies on it.
+    from ucable.fmu import CableFMU
+
+    case = hc.seabed_impact()
+    w = (117.0 - 1025.0 * math.pi * 0.137 ** 2 / 4) * hc.G  # submerged weight, 1000 N/m
+    with CableFMU(fmu_file, parameters={**case.parameters, "nElements": 10}) as cable:
+        cable.initialize(inputs={"tow.z": -20.0})
+        t = 0.0
+        while t < 40.0 - 1e-9:
+            cable.do_step(0.1, t=t)
+            t += 0.1
+            assert math.isfinite(cable.get("towTension"))
+        grounded_from = cable.get("touchdownArcLength")
+        assert grounded_from < 0.5 * case.parameters["length"]  # most of the chain lies on the seabed
+        # Static penetration w/k = 1 mm; an impact may dig in a few cm, never metres.
+        assert cable.get("minSeabedClearance") > -0.05
+        # Nearly at rest on a frictionless seabed the top carries the suspended chain: at least the
+        # 30 m vertical drop, at most the whole suspended length (5 % for the remaining motion).
+        assert 0.99 * w * 30.0 < cable.get("towTension") < 1.05 * w * grounded_from
