@@ -45,6 +45,18 @@ TowTrajectory TowTrajectory::at_rest_in_time(const Vec3& p, const Vec3& v, const
     return traj;
 }
 
+TowTrajectory TowTrajectory::towards(double t0, double h, const Vec3& p0, const Vec3& v0, const Vec3& position,
+                                     const Vec3& velocity, const Vec3& a) {
+    TowTrajectory traj;
+    traj.t0 = t0;
+    traj.h = h;
+    traj.p0 = p0;
+    traj.v0 = v0;
+    traj.p1 = position + velocity * h + 0.5 * a * h * h;
+    traj.v1 = velocity + a * h;
+    return traj;
+}
+
 void TowTrajectory::evaluate(double t, Vec3& p, Vec3& v, Vec3& a) const {
     const double dt = t - t0;
     if (h <= 0.0) {

@@ -25,6 +25,10 @@ struct TowTrajectory {
     Vec3 a0 = Vec3::Zero();  // used only when h == 0 (a point in time: position, velocity, acceleration)
 
     static TowTrajectory at_rest_in_time(const Vec3& p, const Vec3& v, const Vec3& a, double t);
+    // From the current end state (p0, v0) at t0 to the inputs extrapolated to t0 + h:
+    // position + velocity h + a h^2/2 with velocity + a h.
+    static TowTrajectory towards(double t0, double h, const Vec3& p0, const Vec3& v0, const Vec3& position,
+                                 const Vec3& velocity, const Vec3& a);
     void evaluate(double t, Vec3& p, Vec3& v, Vec3& a) const;
 };
 

@@ -49,6 +49,14 @@ IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
 
 Vec3 vec(const double v[3]) { return Vec3(v[0], v[1], v[2]); }
 
+// Acceleration of a driven end over the next step: the master's input derivative when given,
+// otherwise the difference of the last two velocity inputs (0 before there are two).
+Vec3 input_acceleration(const double given[3], int isGiven, const Vec3& velocity, const Vec3& lastVelocity,
+                        double lastStep) {
+    if (isGiven) return vec(given);
+    return lastStep > 0.0 ? Vec3((velocity - lastVelocity) / lastStep) : Vec3::Zero();
+}
+
 }  // namespace
 
 CableSimulation::CableSimulation(const UCParams& params) : model_(params) {
@@ -279,31 +287,15 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     // sampled at communication points is followed smoothly (with a = 0 the cubic would have
     // to correct a lag of a h^2/2 every step, an acceleration zigzag of +7a/-5a).
     const Vec3 velocityInput = vec(in.towVelocity);
-    Vec3 a = vec(in.towAcceleration);
-    if (!in.towAccelerationGiven)
-        a = lastStepSize_ > 0.0 ? Vec3((velocityInput - lastVelocityInput_) / lastStepSize_) : Vec3::Zero();
-    TowTrajectory& tow = loads_.tow;
-    tow.t0 = time_;
-    tow.h = h;
-    tow.p0 = towPosition_;
-    tow.v0 = towVelocity_;
-    tow.p1 = vec(in.tow) + vec(in.towVelocity) * h + 0.5 * a * h * h;
-    tow.v1 = vec(in.towVelocity) + a * h;
-    tow.a0.setZero();
+    const Vec3 a = input_acceleration(in.towAcceleration, in.towAccelerationGiven, velocityInput,
+                                      lastVelocityInput_, lastStepSize_);
+    loads_.tow = TowTrajectory::towards(time_, h, towPosition_, towVelocity_, vec(in.tow), velocityInput, a);
     if (model_.params().bottomEnd == UC_BOTTOM_EXTERNAL) {
-        // The far end follows end.* the same way (acceleration from der(end.v*) or estimated).
+        // The far end follows end.* the same way.
         const Vec3 endVelocityInput = vec(in.endVelocity);
-        Vec3 aEnd = vec(in.endAcceleration);
-        if (!in.endAccelerationGiven)
-            aEnd = lastStepSize_ > 0.0 ? Vec3((endVelocityInput - lastEndVelocityInput_) / lastStepSize_) : Vec3::Zero();
-        TowTrajectory& end = loads_.end;
-        end.t0 = time_;
-        end.h = h;
-        end.p0 = endPosition_;
-        end.v0 = endVelocity_;
-        end.p1 = vec(in.end) + endVelocityInput * h + 0.5 * aEnd * h * h;
-        end.v1 = endVelocityInput + aEnd * h;
-        end.a0.setZero();
+        const Vec3 aEnd = input_acceleration(in.endAcceleration, in.endAccelerationGiven, endVelocityInput,
+                                             lastEndVelocityInput_, lastStepSize_);
+        loads_.end = TowTrajectory::towards(time_, h, endPosition_, endVelocity_, vec(in.end), endVelocityInput, aEnd);
     }
 
     if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
@@ -330,8 +322,8 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         yp_[i] = yp[i];
     }
     time_ = tEnd;
-    towPosition_ = tow.p1;
-    towVelocity_ = tow.v1;
+    towPosition_ = loads_.tow.p1;
+    towVelocity_ = loads_.tow.v1;
     lastVelocityInput_ = velocityInput;
     lastStepSize_ = h;
     if (model_.params().bottomEnd == UC_BOTTOM_EXTERNAL) {
