@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstdlib>
 #include <new>
 
 namespace uc {
@@ -23,6 +24,14 @@ int jacobian_callback(double t, double cj, N_Vector y, N_Vector yp, N_Vector /*r
                       void* user, N_Vector, N_Vector, N_Vector) {
     auto* system = static_cast<DaeSystem*>(user);
     return system->jacobian(t, cj, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), J);
+}
+
+// IDAGetReturnFlagName returns a string allocated with malloc that the caller must free.
+std::string flag_name(int flag) {
+    char* name = IDAGetReturnFlagName(flag);
+    std::string copy = name ? name : "IDA_UNKNOWN_FLAG";
+    std::free(name);
+    return copy;
 }
 
 // Steps per communication interval before IDA gives up (a 1 s step of a stiff cable needs < 1000).
@@ -75,7 +84,7 @@ void Integrator::release() {
 void Integrator::error_handler(int code, const char* /*module*/, const char* function, char* msg, void* self) {
     auto* integrator = static_cast<Integrator*>(self);
     char buffer[600];
-    std::snprintf(buffer, sizeof buffer, "%s (%s): %s", IDAGetReturnFlagName(code), function ? function : "IDA",
+    std::snprintf(buffer, sizeof buffer, "%s (%s): %s", flag_name(code).c_str(), function ? function : "IDA",
                   msg ? msg : "");
     integrator->lastMessage_ = buffer;
 }
@@ -89,7 +98,7 @@ bool Integrator::restart(double t, const double* y, const double* yp, std::strin
     }
     const int flag = IDAReInit(ida_, t, y_, yp_);
     if (flag != IDA_SUCCESS) {
-        error = std::string("IDAReInit failed: ") + IDAGetReturnFlagName(flag);
+        error = "IDAReInit failed: " + flag_name(flag);
         return false;
     }
     return true;
@@ -106,7 +115,7 @@ bool Integrator::advance(double tEnd, std::string& error) {
     }
     char buffer[900];
     std::snprintf(buffer, sizeof buffer, "integrator failed with %s at t = %.9g s (target %.9g s): %s",
-                  IDAGetReturnFlagName(flag), tReached, tEnd, lastMessage_.c_str());
+                  flag_name(flag).c_str(), tReached, tEnd, lastMessage_.c_str());
     error = buffer;
     return false;
 }
