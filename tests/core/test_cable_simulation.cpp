@@ -238,7 +238,9 @@ constexpr ElasticaCase kElastica[] = {{20, 9.16015744189, -3.65103793133},
                                       {60, 6.83193067184, -6.60032424241},
                                       {80, 6.0756744513, -7.1710085355}};
 
-double elastica_tip_error(const ElasticaCase& c, int nElements) {
+// The paper's cantilever (section 3.2): L = 10 m, d = 20 mm, E = 2e11 Pa, neutrally buoyant,
+// clamped horizontally along +x; the tow point is put 50 m deep so the rod is fully submerged.
+UCParams cantilever(int nElements) {
     UCParams p;
     uc_params_default(&p);
     p.length = 10;
@@ -254,6 +256,11 @@ double elastica_tip_error(const ElasticaCase& c, int nElements) {
     p.topTangent[2] = 0;
     p.initialDirection[0] = 1;
     p.initialDirection[2] = 0;
+    return p;
+}
+
+double elastica_tip_error(const ElasticaCase& c, int nElements) {
+    const UCParams p = cantilever(nElements);
     CableSimulation sim(p);
     UCInputs in{};
     in.tow[2] = -50;  // fully submerged
@@ -307,21 +314,7 @@ namespace {
 // is a circular arc of radius EI/M. Returns the largest distance of the 21 output stations from
 // the arc, relative to the length.
 double end_couple_arc_error(double turns, int nElements) {
-    UCParams p;
-    uc_params_default(&p);
-    p.length = 10;
-    p.diameter = 0.02;
-    const double A = kPi * p.diameter * p.diameter / 4;
-    p.waterDensity = 1000;
-    p.massPerLength = 1000 * A;
-    p.EA = 2e11 * A;
-    p.EI = 2e11 * kPi * std::pow(p.diameter, 4) / 64;
-    p.nElements = nElements;
-    p.topEnd = UC_TOP_CLAMPED;
-    p.topTangent[0] = 1;
-    p.topTangent[2] = 0;
-    p.initialDirection[0] = 1;
-    p.initialDirection[2] = 0;
+    const UCParams p = cantilever(nElements);
     CableSimulation sim(p);
     UCInputs in{};
     in.tow[2] = -50;
