@@ -52,13 +52,15 @@ void nodal_tensions(const CableModel& model, const double* X, const ElementForce
     for (int i = 1; i <= N; ++i) T[i] = forces.element[i - 1].segment<3>(6).dot(at(X, 6 * i + 3).normalized());
 }
 
-// Internal moment at an element end: bending EI r' x r'' / |r'|^3 plus the torque along t. It is
+// Internal moment at an element end: bending EI r' x r'' / |r'|^3 minus the torque along t. The
+// sign follows from the residual: its torque term +(H r' x r'')' puts -H r' x r'' into the internal
+// force n, and the moment balance M' + r' x n = 0 then needs M = EI r' x r'' - H t. It is
 // the moment that the cable beyond the point exerts on the cable before it.
 Vec3 internal_moment(const CableModel& model, const double* Xe, double xi, double torque) {
     const ShapeValues sv = hermite_shape(xi, model.element_length());
     const Vec3 rp = interpolate(sv.dN, Xe);
     const double n = rp.norm();
-    return model.EI() * rp.cross(interpolate(sv.d2N, Xe)) / (n * n * n) + torque * rp / n;
+    return model.EI() * rp.cross(interpolate(sv.d2N, Xe)) / (n * n * n) - torque * rp / n;
 }
 
 void compute_outputs(const CableModel& model, const double* X, const double* Xd, const ElementForces& forces,
