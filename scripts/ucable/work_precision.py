@@ -94,6 +94,7 @@ class Case:
     md_grid: dict = field(default_factory=dict)
     reference: dict = field(default_factory=lambda: dict(full=(80, 1e-10), quick=(40, 1e-8)))
     seabed: dict | None = None  # MoorDyn-style flat seabed: depth [m], kBot [Pa/m], cBot [Pa s/m]
+    md_ba: float | None = None  # MoorDyn BA [N s] (axial damping, as our axialDamping); None: -MD_BA_ZETA
 
 
 HOPLAND_LINE = dict(length=300.0, diameter=0.0332, massPerLength=2.7018, EA=6.709e7, EI=1000.0,
@@ -265,7 +266,7 @@ def run_fmu(fmu, case, n_elements, rel_tol, extra=None, label=""):
 # ----------------------------------------------------------------------------- MoorDyn
 def moordyn_input(case, n_seg, dt, workdir: Path, end_guess) -> Path:
     ln = case.line
-    ba = -MD_BA_ZETA
+    ba = -MD_BA_ZETA if case.md_ba is None else case.md_ba
     if case.anchor is None:
         e = end_guess[:, -1]
         p1 = f"1     Free      {e[0]:.10g} {e[1]:.10g} {e[2]:.10g}  0  0  0  0"
