@@ -177,6 +177,7 @@ static const UCVariable kVariables[] = {
     OUT(978, "endMoment.x", endMoment[0]),
     OUT(979, "endMoment.y", endMoment[1]),
     OUT(980, "endMoment.z", endMoment[2]),
+    PAR(981, "enableCompression", BOOLEAN, enableCompression),
 };
 
 #define N_VARIABLES (sizeof(kVariables) / sizeof(kVariables[0]))

@@ -89,6 +89,8 @@ typedef struct UCParams {
     int enableTorsion;        /* enableTorsion (Boolean)    torque term of the equation of motion */
     double GJ;                /* GJ [N.m2]                  torsional stiffness */
     int torqueMode;           /* torqueMode                 UC_TORQUE_*: 0 swivel, 1 torque input, 2 twist input */
+    /* axial law */
+    int enableCompression;    /* enableCompression (Boolean) true: T = EA e + c de/dt both ways; false: tension only (chains, ropes) */
 } UCParams;
 
 /* Inputs, held constant (or extrapolated, see uc_do_step) over a communication step. */

@@ -13,7 +13,8 @@ constexpr int kLoadQuadraturePoints = 3;
 }  // namespace
 
 AxialProps CableModel::scaled_axial(const Loads& loads) const {
-    return AxialProps{axial_.EA, axial_.damping, loads.axialStiffnessScale};
+    return AxialProps{axial_.EA, axial_.damping, loads.axialStiffnessScale,
+                      axial_.tensionOnly && !loads.twoSidedAxial};
 }
 
 namespace {
@@ -92,6 +93,7 @@ CableModel::CableModel(const UCParams& params)
     fluid_.addedMass = params.enableAddedMass != 0;
     axial_.EA = params.EA;
     axial_.damping = params.axialDamping;
+    axial_.tensionOnly = params.enableCompression == 0;
     // The material's Kelvin-Voigt time constant axialDamping / EA damps bending as well: it
     // removes the element-scale bending waves (periods of milliseconds, which quadratic drag cannot
     // damp at small amplitude) that a torque keeps exciting, and is negligible for the slow modes.

@@ -44,6 +44,10 @@ struct Loads {
     // first found on a soft cable, whose large rotations do not turn into huge axial residuals,
     // then stiffened to the real EA).
     double axialStiffnessScale = 1.0;
+    // Static solver only: use the two-sided axial law even when the cable is tension-only (the
+    // continuation starts from a guess that may be slack, where a tension-only cable without
+    // bending stiffness has no stiffness at all).
+    bool twoSidedAxial = false;
 };
 
 // Residual contributions of one element and of the far-end node terms, kept for outputs.

@@ -68,13 +68,31 @@ inline Vec3 interpolate(const double (&N)[4], const double* X) {
     return r;
 }
 
-// Axial tension T = EA (|r'| - 1) + c d|r'|/dt (two-sided: compression allowed).
+// Axial tension P = EA (|r'| - 1) + c d|r'|/dt, projected (see ElementTables). Two-sided
+// (compression allowed) by default; tension-only (a chain or rope that goes slack) when
+// tensionOnly is set: T = slack_law(P), a C1 ramp that equals P above kSlackStrain EA and 0 below
+// -kSlackStrain EA, so the law changes the stretch by at most kSlackStrain, never the tension.
 struct AxialProps {
     double EA;
     double damping;
     // Caps every strain mode's stiffness factor (the static solver starts on a soft cable).
     double modeCap = 1.0;
+    bool tensionOnly = false;
 };
+
+constexpr double kSlackStrain = 1e-5;
+
+// The tension-only law T(P) and its slope dT/dP, for the half-width `width` of the ramp:
+// 0 below -width, (P + width)^2 / (4 width) inside, P above.
+struct SlackLaw {
+    double tension, slope;
+};
+inline SlackLaw slack_law(double P, double width) {
+    if (P >= width) return {P, 1.0};
+    if (P <= -width) return {0.0, 0.0};
+    const double u = P + width;
+    return {u * u / (4.0 * width), u / (2.0 * width)};
+}
 
 // Adds int T t dN_a ds (t = r'/|r'|, T the projected tension) to R (12 values).
 void add_axial_force(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,

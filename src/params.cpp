@@ -92,6 +92,7 @@ std::string check_params(const UCParams& p) {
                  "the profile has at most 10 rows") ||
         in_range(m, "enableTorsion", p.enableTorsion, 0, 1, "{0, 1}", "a switch is on or off") ||
         non_negative(m, "GJ", p.GJ, "a torsional stiffness cannot be negative") ||
+        in_range(m, "enableCompression", p.enableCompression, 0, 1, "{0, 1}", "a switch is on or off") ||
         in_range(m, "torqueMode", p.torqueMode, 0, 2, "{0 swivel, 1 prescribed torque, 2 prescribed rotation}",
                  "unknown torque mode") ||
         unit_direction(m, "initialDirection", p.initialDirection) ||
@@ -184,6 +185,7 @@ extern "C" void uc_params_default(UCParams* p) {
     // Typical of an armoured cable: GJ of the same order as EI.
     p->GJ = 1000.0;
     p->torqueMode = UC_TORQUE_FREE;
+    p->enableCompression = 1;
 }
 
 extern "C" int uc_params_check(const UCParams* p, char* msg, size_t msgSize) {

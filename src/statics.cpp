@@ -160,6 +160,7 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
     bool first = true;
     Loads staged = loads;
     staged.axialStiffnessScale = stiffness;
+    staged.twoSidedAxial = true;  // a tension-only cable switches to its law at the end
     // Load continuation on the soft cable: lambda scales the relative flow and the end load.
     while (result.continuationSteps < kMaxContinuationSteps) {
         const double target = first ? 1.0 : std::min(1.0, lambda + step);
@@ -198,6 +199,22 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
                           "static equilibrium not found: stiffening the cable to %.3g of EA failed "
                           "(residual %.3g N after %d iterations)",
                           stiffness, result.residualNorm, result.newtonIterations);
+            result.message = buffer;
+            return result;
+        }
+    }
+    if (model.axial().tensionOnly) {
+        // The tension-only law differs only where the two-sided equilibrium is in compression or
+        // within 1e-5 strain of it: start from that equilibrium.
+        staged.twoSidedAxial = false;
+        ++result.continuationSteps;
+        if (!newton(model, solver, staged, t, q, w, result)) {
+            char buffer[300];
+            std::snprintf(buffer, sizeof buffer,
+                          "static equilibrium not found with the tension-only law (enableCompression = false): "
+                          "residual %.3g N after %d iterations; part of the line is slack at rest: use "
+                          "enableCompression = true or initMode = 1",
+                          result.residualNorm, result.newtonIterations);
             result.message = buffer;
             return result;
         }

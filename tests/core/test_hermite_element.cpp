@@ -221,6 +221,97 @@ TEST(AxialTerm, ProjectedStrainJacobianMatchesFiniteDifferences) {
     }
 }
 
+namespace {
+
+// A straight element along t whose stretch |r'| runs from 1 + e0 at node 0 to 1 + e1 at node 1
+// (nodal tangents of those lengths, the node distance their mean), slightly bent.
+Vec12 graded_element(double l, double e0, double e1) {
+    const Vec3 t = Vec3(1, 2, 2) / 3.0, n = Vec3(2, 1, -2) / 3.0;
+    Vec12 X;
+    X << 0, 0, 0, (1 + e0) * t + 1e-3 * n, (1 + 0.5 * (e0 + e1)) * l * t, (1 + e1) * t - 1e-3 * n;
+    return X;
+}
+
+}  // namespace
+
+TEST(AxialTerm, TensionOnlyLawIsAC1RampBetweenSlackAndTheTwoSidedLaw) {
+    const double w = 2.0;
+    EXPECT_EQ(slack_law(-5.0, w).tension, 0.0);
+    EXPECT_EQ(slack_law(-5.0, w).slope, 0.0);
+    EXPECT_EQ(slack_law(7.0, w).tension, 7.0);
+    EXPECT_EQ(slack_law(7.0, w).slope, 1.0);
+    EXPECT_DOUBLE_EQ(slack_law(0.0, w).tension, w / 4.0);  // the largest change of the law: w / 4
+    EXPECT_DOUBLE_EQ(slack_law(0.0, w).slope, 0.5);
+    for (double P : {-w, w}) {  // value and slope continuous at both ends of the ramp
+        const double d = 1e-9 * w;
+        EXPECT_NEAR(slack_law(P - d, w).tension, slack_law(P + d, w).tension, 2.001 * d);  // slope <= 1
+        EXPECT_NEAR(slack_law(P - d, w).slope, slack_law(P + d, w).slope, 1e-8);
+    }
+}
+
+TEST(AxialTerm, TensionOnlyElementCarriesNoCompressionAndAllTension) {
+    const double l = 5.0, EA = 2e6;
+    const ElementTables e = make_element_tables(l, 3, 3);
+    const Vec12 zero = Vec12::Zero();
+    AxialProps props{EA, 0.0};
+    props.tensionOnly = true;
+    for (double eps : {-1e-3, 1e-3}) {
+        const Vec12 X = graded_element(l, eps, eps);
+        Vec12 R = Vec12::Zero(), R2 = Vec12::Zero();
+        add_axial_force(e, props, X.data(), zero.data(), R.data());
+        add_axial_force(e, AxialProps{EA, 0.0}, X.data(), zero.data(), R2.data());
+        if (eps < 0)
+            EXPECT_EQ(R.norm(), 0.0);  // 1e-3 compression is 100 ramp widths below zero: slack
+        else
+            EXPECT_EQ((R - R2).norm(), 0.0);  // above the ramp the law is the two-sided one, bit for bit
+    }
+}
+
+TEST(AxialTerm, TensionOnlyJacobianMatchesFiniteDifferences) {
+    // Stretch graded from slack through the ramp to taut, so that the sampling points see all three
+    // branches (the grading enters through the higher strain modes, at 1 % of EA: it spans 3 ramp
+    // widths either side); strain rates of the same size as the ramp (damping 2 % of EA per 1/s). The law is
+    // piecewise quadratic: central differences are exact up to round-off unless a perturbation
+    // crosses a ramp end, so h = 1e-9 (round-off ~ eps F / h = 1e-7 of the entries).
+    const double l = 3.0;
+    ElementTables e = make_element_tables(l, 3, 3);
+    e.axialModeWeight[1] = e.axialModeWeight[2] = 0.01;
+    std::mt19937 rng(11);
+    const Vec12 Xd = random_vector(rng, 2e-5);
+    for (double cap : {1.0, 0.05}) {
+        AxialProps props{1e5, 2e3, cap};
+        props.tensionOnly = true;
+        const double width = kSlackStrain * props.EA * cap;
+        const double grading = 3.0 * kSlackStrain * std::min(1.0, cap) / 0.01;
+        const Vec12 X = graded_element(l, -grading, grading);
+        double T[ElementTables::nAxial];
+        axial_tensions(e, props, X.data(), Xd.data(), T);
+        int slack = 0, ramp = 0, taut = 0;
+        for (double Tg : T) {
+            if (Tg == 0.0) ++slack;
+            else if (Tg < 2.0 * width) ++ramp;
+            else ++taut;
+        }
+        EXPECT_GT(slack, 0);
+        EXPECT_GT(ramp, 0);
+        EXPECT_GT(taut, 0);
+        Mat12 K = Mat12::Zero(), C = Mat12::Zero();
+        add_axial_jacobian(e, props, X.data(), Xd.data(), K, C);
+        auto forceX = [&](const Vec12& x) {
+            Vec12 R = Vec12::Zero();
+            add_axial_force(e, props, x.data(), Xd.data(), R.data());
+            return R;
+        };
+        auto forceV = [&](const Vec12& v) {
+            Vec12 R = Vec12::Zero();
+            add_axial_force(e, props, X.data(), v.data(), R.data());
+            return R;
+        };
+        expect_jacobian_matches(forceX, X, K, 1e-9, 1e-5, "dR/dX (tension only)");
+        expect_jacobian_matches(forceV, Xd, C, 1e-9, 1e-5, "dR/dXdot (tension only)");
+    }
+}
+
 TEST(HydroTerm, JacobianMatchesFiniteDifferences) {
     const double l = 2.0, d = 0.05;
     FluidProps p{1025.0, 9.81, 4.0, 3.14159265358979 * d * d / 4, d, 1.4, 0.3, 1.0, 0.2, true};

@@ -77,6 +77,7 @@ NO_OUT_OF_RANGE_VALUE = {
     "enableAddedMass": "Boolean: fmi2SetBoolean maps any non-zero value to true",
     "enableSeabed": "Boolean: fmi2SetBoolean maps any non-zero value to true",
     "enableTorsion": "Boolean: fmi2SetBoolean maps any non-zero value to true",
+    "enableCompression": "Boolean: fmi2SetBoolean maps any non-zero value to true",
     # the first row has no row above it; a depth above the surface (< 0) is not rejected
     "currentProfile.depth[1]": "any finite value is accepted (no lower bound, e.g. -50 m above the surface)",
     **{f"currentProfile.{c}[{k}]": "any finite current velocity is admissible"

@@ -1,0 +1,90 @@
+"""enableCompression = false: the tension-only axial law of chains and ropes, through the FMU.
+
+A hanging chain whose top is driven downward faster than the chain can fall cannot be pushed: once
+the unloading wave has passed, it falls freely (no drag, no added mass here), so its free end
+accelerates at the buoyancy-reduced gravity g (1 - rho A / m), while the two-sided law pushes it
+down with the top. Where the cable stays taut the two laws agree to the ramp's strain, 1e-5.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+RHO, G = 1025.0, 9.81
+CHAIN = {"length": 100.0, "diameter": 0.0332, "massPerLength": 2.7018, "EA": 6.709e7,
+         "enableBending": False, "enableAddedMass": False, "Cdn": 0.0, "Cdt": 0.0,
+         "nElements": 10, "bottomEnd": 0, "initMode": 0}
+TOP_Z = -10.0  # below the free-surface ramp
+PUSH = 2.0 * G  # downward acceleration of the top: faster than the chain can fall
+
+
+def top_share(p=CHAIN) -> float:
+    l = p["length"] / p["nElements"]
+    return (PUSH + free_fall_acceleration(p)) * p["massPerLength"] * l / 2.0
+
+
+def free_fall_acceleration(p=CHAIN) -> float:
+    return G * (1.0 - RHO * math.pi * p["diameter"] ** 2 / 4.0 / p["massPerLength"])
+
+
+def drive_down(make_cable, compression: bool, t_end=0.6, h=0.01):
+    """Top at rest at TOP_Z until t = 0, then z = TOP_Z - PUSH t^2 / 2 (inputs with their derivative).
+    Returns time, far-end z and tow tension."""
+    c = make_cable(parameters=dict(CHAIN, enableCompression=compression))
+    c.initialize(0.0, t_end, inputs={"tow.x": 0.0, "tow.y": 0.0, "tow.z": TOP_Z})
+    n = int(round(t_end / h))
+    t = np.arange(n + 1) * h
+    z = np.empty(n + 1)
+    T = np.empty(n + 1)
+    z[0], T[0] = c.get("endPosition.z"), c.get("towTension")
+    for k in range(n):
+        tk = t[k]
+        c.set({"tow.z": TOP_Z - 0.5 * PUSH * tk * tk, "tow.vz": -PUSH * tk})
+        c.set_input_derivatives(["tow.vz"], 1, [-PUSH])
+        c.do_step(h, t=tk)
+        z[k + 1], T[k + 1] = c.get("endPosition.z"), c.get("towTension")
+    return t, z, T
+
+
+def end_acceleration(t, z, t0, t1):
+    """Second derivative of a quadratic fitted to z(t) on [t0, t1]."""
+    m = (t >= t0) & (t <= t1)
+    return 2.0 * np.polyfit(t[m], z[m], 2)[0]
+
+
+def test_a_chain_driven_down_faster_than_it_can_fall_falls_freely(make_cable):
+    t, z, T = drive_down(make_cable, compression=False)
+    # The unloading wave needs L / c = 100 m / 4983 m/s = 0.02 s to reach the free end and
+    # return; from 0.2 s on the chain is slack everywhere and falls freely. The fit over 0.2-0.6 s
+    # is exact for free fall; axial ringing left from the unloading is damped in ~0.01 s
+    # (Kelvin-Voigt): 0.5 % of g_eff is far below the 2g the two-sided law gives (test below).
+    a = end_acceleration(t, z, 0.2, 0.6)
+    assert a == pytest.approx(-free_fall_acceleration(), rel=5e-3)
+    # Slack: no tension reaches the tow point; it carries only the inertia and weight of the mass
+    # its shape functions attach to it, at most half an element: (2g + g_eff) m l / 2 = 354 N,
+    # against 1780 N of weight before and 3518 N of push with the two-sided law.
+    assert np.max(np.abs(T[t >= 0.2])) < top_share()
+    assert T[0] == pytest.approx(free_fall_acceleration() * CHAIN["massPerLength"] * CHAIN["length"], rel=1e-4)
+
+
+def test_the_two_sided_law_pushes_the_chain_down_with_the_top(make_cable):
+    t, z, T = drive_down(make_cable, compression=True)
+    # A 100 m column under 2g: the axial wave keeps the far end with the top (strain ~ m a L / EA
+    # = 5e-5), so the end accelerates at the top's 2g, not at g_eff, and the top is in compression.
+    a = end_acceleration(t, z, 0.2, 0.6)
+    assert a == pytest.approx(-PUSH, rel=5e-3)
+    assert np.all(T[t >= 0.2] > 0.5 * (PUSH - free_fall_acceleration()) * CHAIN["massPerLength"] * CHAIN["length"])
+
+
+def test_where_the_chain_stays_taut_the_two_laws_agree(fmu_file):
+    """Static catenary of the mooring chain with touchdown (everywhere in tension, 1.3 MN and more):
+    the tension-only law equals the two-sided one above 1e-5 EA = 7.5 kN, so the equilibria agree
+    to the static solver's convergence."""
+    from ucable import mooring
+
+    a = mooring.fmu_statics(fmu_file, 20, enableCompression=True)
+    b = mooring.fmu_statics(fmu_file, 20, enableCompression=False)
+    assert np.min(b["tension"]) > 1e-5 * mooring.CHAIN["EA"]
+    assert b["towTension"] == pytest.approx(a["towTension"], rel=1e-9)
+    assert np.max(np.abs(b["shape.z"] - a["shape.z"])) < 1e-6
