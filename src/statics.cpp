@@ -144,6 +144,15 @@ void polish(const CableModel& model, BandSolver& solver, const Loads& loads, dou
     result.residualNorm = norm;
 }
 
+// Sets the failure message (printf format) and returns the result.
+template <class... Args>
+StaticsResult failed(StaticsResult& result, const char* format, Args... args) {
+    char buffer[400];
+    std::snprintf(buffer, sizeof buffer, format, args...);
+    result.message = buffer;
+    return result;
+}
+
 }  // namespace
 
 StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solver, const Loads& loads,
@@ -180,13 +189,9 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
         first = false;
     }
     if (lambda < 1.0) {
-        char buffer[300];
-        std::snprintf(buffer, sizeof buffer,
-                      "static equilibrium not found: load continuation stalled at %.4g of the full loads "
-                      "(residual %.3g N after %d iterations); try initMode = 1 or another initialDirection",
+        return failed(result, "static equilibrium not found: load continuation stalled at %.4g of the full loads "
+                              "(residual %.3g N after %d iterations); try initMode = 1 or another initialDirection",
                       lambda, result.residualNorm, result.newtonIterations);
-        result.message = buffer;
-        return result;
     }
     for (int j = 0; j < model.n_free(); ++j) w.v[j] = vSteady[j];
     while (stiffness < 1.0) {
@@ -194,13 +199,9 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
         staged.axialStiffnessScale = stiffness;
         ++result.continuationSteps;
         if (!newton(model, solver, staged, t, q, w, result)) {
-            char buffer[300];
-            std::snprintf(buffer, sizeof buffer,
-                          "static equilibrium not found: stiffening the cable to %.3g of EA failed "
-                          "(residual %.3g N after %d iterations)",
+            return failed(result, "static equilibrium not found: stiffening the cable to %.3g of EA failed "
+                                  "(residual %.3g N after %d iterations)",
                           stiffness, result.residualNorm, result.newtonIterations);
-            result.message = buffer;
-            return result;
         }
     }
     if (model.axial().tensionOnly) {
@@ -209,14 +210,10 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
         staged.twoSidedAxial = false;
         ++result.continuationSteps;
         if (!newton(model, solver, staged, t, q, w, result)) {
-            char buffer[300];
-            std::snprintf(buffer, sizeof buffer,
-                          "static equilibrium not found with the tension-only law (enableCompression = false): "
-                          "residual %.3g N after %d iterations; part of the line is slack at rest: use "
-                          "enableCompression = true or initMode = 1",
+            return failed(result, "static equilibrium not found with the tension-only law (enableCompression = "
+                                  "false): residual %.3g N after %d iterations; part of the line is slack at rest: "
+                                  "use enableCompression = true or initMode = 1",
                           result.residualNorm, result.newtonIterations);
-            result.message = buffer;
-            return result;
         }
     }
     polish(model, solver, loads, t, q, w, result);

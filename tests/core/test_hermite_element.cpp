@@ -163,15 +163,9 @@ void expect_jacobian_matches(F&& force, const Vec12& X, const Mat12& J, double h
     EXPECT_LT((J - numeric).norm(), relTol * scale) << what << "\nanalytic\n" << J << "\nnumeric\n" << numeric;
 }
 
-}  // namespace
-
-TEST(AxialTerm, JacobianMatchesFiniteDifferences) {
-    const double l = 2.0;
-    const AxialProps props{1e5, 3e3};
-    const ElementTables e = make_element_tables(l, 3, 3);
-    std::mt19937 rng(7);
-    const Vec12 X = curved_element(l, 1.02);
-    const Vec12 Xd = random_vector(rng, 0.5);
+// The axial term's Jacobians dR/dX and dR/dXdot against central differences of its force.
+void expect_axial_jacobian_matches(const ElementTables& e, const AxialProps& props, const Vec12& X,
+                                   const Vec12& Xd, double h, double tolX, double tolV) {
     Mat12 K = Mat12::Zero(), C = Mat12::Zero();
     add_axial_jacobian(e, props, X.data(), Xd.data(), K, C);
     auto forceX = [&](const Vec12& x) {
@@ -184,8 +178,20 @@ TEST(AxialTerm, JacobianMatchesFiniteDifferences) {
         add_axial_force(e, props, X.data(), v.data(), R.data());
         return R;
     };
-    expect_jacobian_matches(forceX, X, K, 1e-6, 1e-6, "dR/dX");
-    expect_jacobian_matches(forceV, Xd, C, 1e-6, 1e-8, "dR/dXdot");
+    expect_jacobian_matches(forceX, X, K, h, tolX, "dR/dX");
+    expect_jacobian_matches(forceV, Xd, C, h, tolV, "dR/dXdot");
+}
+
+}  // namespace
+
+TEST(AxialTerm, JacobianMatchesFiniteDifferences) {
+    const double l = 2.0;
+    const AxialProps props{1e5, 3e3};
+    const ElementTables e = make_element_tables(l, 3, 3);
+    std::mt19937 rng(7);
+    const Vec12 X = curved_element(l, 1.02);
+    const Vec12 Xd = random_vector(rng, 0.5);
+    expect_axial_jacobian_matches(e, props, X, Xd, 1e-6, 1e-6, 1e-8);
 }
 
 TEST(AxialTerm, ProjectedStrainJacobianMatchesFiniteDifferences) {
@@ -199,20 +205,7 @@ TEST(AxialTerm, ProjectedStrainJacobianMatchesFiniteDifferences) {
     const Vec12 Xd = random_vector(rng, 0.5);
     for (double cap : {1.0, 0.05}) {
         const AxialProps props{1e5, 2e3, cap};
-        Mat12 K = Mat12::Zero(), C = Mat12::Zero();
-        add_axial_jacobian(e, props, X.data(), Xd.data(), K, C);
-        auto forceX = [&](const Vec12& x) {
-            Vec12 R = Vec12::Zero();
-            add_axial_force(e, props, x.data(), Xd.data(), R.data());
-            return R;
-        };
-        auto forceV = [&](const Vec12& v) {
-            Vec12 R = Vec12::Zero();
-            add_axial_force(e, props, X.data(), v.data(), R.data());
-            return R;
-        };
-        expect_jacobian_matches(forceX, X, K, 1e-6, 1e-6, "dR/dX");
-        expect_jacobian_matches(forceV, Xd, C, 1e-6, 1e-8, "dR/dXdot");
+        expect_axial_jacobian_matches(e, props, X, Xd, 1e-6, 1e-6, 1e-8);
         Vec12 R = Vec12::Zero();
         const Vec12 zero = Vec12::Zero();
         add_axial_force(e, props, X.data(), zero.data(), R.data());
@@ -295,20 +288,7 @@ TEST(AxialTerm, TensionOnlyJacobianMatchesFiniteDifferences) {
         EXPECT_GT(slack, 0);
         EXPECT_GT(ramp, 0);
         EXPECT_GT(taut, 0);
-        Mat12 K = Mat12::Zero(), C = Mat12::Zero();
-        add_axial_jacobian(e, props, X.data(), Xd.data(), K, C);
-        auto forceX = [&](const Vec12& x) {
-            Vec12 R = Vec12::Zero();
-            add_axial_force(e, props, x.data(), Xd.data(), R.data());
-            return R;
-        };
-        auto forceV = [&](const Vec12& v) {
-            Vec12 R = Vec12::Zero();
-            add_axial_force(e, props, X.data(), v.data(), R.data());
-            return R;
-        };
-        expect_jacobian_matches(forceX, X, K, 1e-9, 1e-5, "dR/dX (tension only)");
-        expect_jacobian_matches(forceV, Xd, C, 1e-9, 1e-5, "dR/dXdot (tension only)");
+        expect_axial_jacobian_matches(e, props, X, Xd, 1e-9, 1e-5, 1e-5);
     }
 }
 
