@@ -125,27 +125,27 @@ double mode_weight(const ElementTables& e, const AxialProps& p, int k) {
     return std::min(e.axialModeWeight[k], p.modeCap);
 }
 
-// Projected (two-sided) tension P at sampling point g.
-double projected_stress(const ElementTables& e, const AxialProps& p, const AxialSamples& s, int g) {
-    double T = 0.0;
-    for (int k = 0; k < e.axialModes; ++k)
-        T += mode_weight(e, p, k) * e.legendre[k][g] * (p.EA * s.strainMode[k] + p.damping * s.rateMode[k]);
-    return T;
-}
-
 // Half-width of the tension-only ramp: kSlackStrain of the (continuation-scaled) mean-mode EA.
 double slack_width(const ElementTables& e, const AxialProps& p) {
     return kSlackStrain * p.EA * mode_weight(e, p, 0);
 }
 
-// The tension at sampling point g and its slope dT/dP (1 for the two-sided law).
-SlackLaw point_tension(const ElementTables& e, const AxialProps& p, const AxialSamples& s, int g) {
-    const double P = projected_stress(e, p, s, g);
-    return p.tensionOnly ? slack_law(P, slack_width(e, p)) : SlackLaw{P, 1.0};
+// Tension of strain mode k (its Legendre coefficient) and its slope with respect to the mode's
+// two-sided value: the tension-only law acts on the element's mean tension (mode 0), the force the
+// element transmits, like a lumped-mass line's segment; the softened higher modes, which only
+// shape the strain inside the element, stay two-sided, so a slack element keeps its shape
+// stiffness (without it a slack element without bending stiffness has free tangents: the
+// snapping chain's response then changes by 20 % of its tension between integrator tolerances).
+SlackLaw mode_tension(const ElementTables& e, const AxialProps& p, const AxialSamples& s, int k) {
+    const double P = mode_weight(e, p, k) * (p.EA * s.strainMode[k] + p.damping * s.rateMode[k]);
+    return p.tensionOnly && k == 0 ? slack_law(P, slack_width(e, p)) : SlackLaw{P, 1.0};
 }
 
+// Projected tension at sampling point g.
 double projected_tension(const ElementTables& e, const AxialProps& p, const AxialSamples& s, int g) {
-    return point_tension(e, p, s, g).tension;
+    double T = 0.0;
+    for (int k = 0; k < e.axialModes; ++k) T += e.legendre[k][g] * mode_tension(e, p, s, k).tension;
+    return T;
 }
 
 }  // namespace
@@ -173,13 +173,6 @@ void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const doubl
             for (int b = 0; b < 4; ++b)
                 K.block<3, 3>(3 * a, 3 * b) += (q.weight * q.shape.dN[a] * q.shape.dN[b]) * geometric;
     }
-    Vec3 dPdX[ElementTables::nAxial][4], dPdXd[ElementTables::nAxial][4];  // used when tension-only
-    if (p.tensionOnly)
-        for (int g = 0; g < ElementTables::nAxial; ++g)
-            for (int b = 0; b < 4; ++b) {
-                dPdX[g][b].setZero();
-                dPdXd[g][b].setZero();
-            }
     // Material part: d(mode k)/dX_b = G_kb / l, with G_kb = sum_g w_g l phi_k dN_b t_g, and for the
     // strain rate additionally H_kb = sum_g w_g l phi_k dN_b (I - t t^T) r'dot / |r'|.
     for (int k = 0; k < e.axialModes; ++k) {
@@ -197,17 +190,8 @@ void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const doubl
                 H[a] += (wphi * q.shape.dN[a]) * rotationRate;
             }
         }
-        const double weight = mode_weight(e, p, k) / l;
-        if (p.tensionOnly) {
-            // dT_g/dX = slope_g dP_g/dX with dP_g/dX_b = sum_k weight_k phi_k(g) (EA G_kb + c H_kb):
-            // collect the modes' derivatives per sampling point, then apply the point slopes.
-            for (int g = 0; g < ElementTables::nAxial; ++g)
-                for (int b = 0; b < 4; ++b) {
-                    dPdX[g][b] += (weight * e.legendre[k][g]) * (p.EA * G[b] + p.damping * H[b]);
-                    dPdXd[g][b] += (weight * e.legendre[k][g] * p.damping) * G[b];
-                }
-            continue;
-        }
+        // d(mode tension)/d(two-sided mode value): 1, or the tension-only law's slope for mode 0.
+        const double weight = mode_weight(e, p, k) / l * mode_tension(e, p, s, k).slope;
         for (int a = 0; a < 4; ++a) {
             for (int b = 0; b < 4; ++b) {
                 K.block<3, 3>(3 * a, 3 * b) += (weight * p.EA) * G[a] * G[b].transpose();
@@ -215,20 +199,6 @@ void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const doubl
                     K.block<3, 3>(3 * a, 3 * b) += (weight * p.damping) * G[a] * H[b].transpose();
                     C.block<3, 3>(3 * a, 3 * b) += (weight * p.damping) * G[a] * G[b].transpose();
                 }
-            }
-        }
-    }
-    if (!p.tensionOnly) return;
-    // The force is sum_g w_g T_g dN_a t_g; its material part is sum_g w_g dN_a t_g slope_g dP_g/dX.
-    for (int g = 0; g < ElementTables::nAxial; ++g) {
-        const double slope = point_tension(e, p, s, g).slope;
-        if (slope == 0.0) continue;
-        const QuadPoint& q = e.axial[g];
-        for (int a = 0; a < 4; ++a) {
-            const Vec3 A = (q.weight * q.shape.dN[a] * slope) * s.t[g];
-            for (int b = 0; b < 4; ++b) {
-                K.block<3, 3>(3 * a, 3 * b) += A * dPdX[g][b].transpose();
-                C.block<3, 3>(3 * a, 3 * b) += A * dPdXd[g][b].transpose();
             }
         }
     }

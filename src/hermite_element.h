@@ -70,8 +70,9 @@ inline Vec3 interpolate(const double (&N)[4], const double* X) {
 
 // Axial tension P = EA (|r'| - 1) + c d|r'|/dt, projected (see ElementTables). Two-sided
 // (compression allowed) by default; tension-only (a chain or rope that goes slack) when
-// tensionOnly is set: T = slack_law(P), a C1 ramp that equals P above kSlackStrain EA and 0 below
-// -kSlackStrain EA, so the law changes the stretch by at most kSlackStrain, never the tension.
+// tensionOnly is set: the element's mean tension is slack_law(P mean), a C1 ramp that equals it
+// above kSlackStrain EA and is 0 below -kSlackStrain EA (so the law shifts the stretch by at most
+// kSlackStrain where it matters); the softened higher strain modes stay two-sided.
 struct AxialProps {
     double EA;
     double damping;
