@@ -36,10 +36,9 @@ void BandSolver::clear() { SUNMatZero(A_); }
 
 void BandSolver::add(int row, int col, double value) { SM_ELEMENT_B(A_, row, col) += value; }
 
-bool BandSolver::factor_and_solve(double* b) {
-    if (SUNLinSolSetup(solver_, A_) != SUNLS_SUCCESS) return false;
-    return solve(b);
-}
+bool BandSolver::factor() { return SUNLinSolSetup(solver_, A_) == SUNLS_SUCCESS; }
+
+bool BandSolver::factor_and_solve(double* b) { return factor() && solve(b); }
 
 bool BandSolver::solve(double* b) {
     double* bb = N_VGetArrayPointer(b_);

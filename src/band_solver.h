@@ -19,6 +19,8 @@ public:
     int size() const { return n_; }
     void clear();
     void add(int row, int col, double value);  // |row - col| <= bandwidth
+    // Factorizes A (LU with partial pivoting). False if the matrix is singular.
+    bool factor();
     // Factorizes and solves A x = b in place (b becomes x). False if the matrix is singular.
     bool factor_and_solve(double* b);
     // Solves with the last factorization.

@@ -3,8 +3,6 @@
 
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
-#include <sunlinsol/sunlinsol_band.h>
-#include <sunmatrix/sunmatrix_band.h>
 
 #include <cmath>
 #include <cstdio>
@@ -15,14 +13,21 @@ namespace uc {
 namespace {
 
 int residual_callback(double t, N_Vector y, N_Vector yp, N_Vector r, void* user) {
-    auto* system = static_cast<DaeSystem*>(user);
+    auto* system = static_cast<SecondOrderSystem*>(user);
     return system->residual(t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), N_VGetArrayPointer(r));
 }
 
-int jacobian_callback(double t, double cj, N_Vector y, N_Vector yp, N_Vector /*r*/, SUNMatrix J,
-                      void* user, N_Vector, N_Vector, N_Vector) {
-    auto* system = static_cast<DaeSystem*>(user);
-    return system->jacobian(t, cj, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), J);
+// The shells handed to IDA: the matrix only carries a pointer to the Integrator (IDA zeroes it
+// before each Jacobian evaluation: a no-op), the linear solver factors and solves the reduced form.
+SUNMatrix_ID shell_matrix_id(SUNMatrix) { return SUNMATRIX_CUSTOM; }
+int shell_matrix_zero(SUNMatrix) { return 0; }
+void shell_matrix_destroy(SUNMatrix A) { SUNMatFreeEmpty(A); }
+SUNLinearSolver_Type shell_solver_type(SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; }
+SUNLinearSolver_ID shell_solver_id(SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; }
+int shell_solver_initialize(SUNLinearSolver) { return SUNLS_SUCCESS; }
+int shell_solver_free(SUNLinearSolver S) {
+    SUNLinSolFreeEmpty(S);
+    return SUNLS_SUCCESS;
 }
 
 // IDAGetReturnFlagName returns a string allocated with malloc that the caller must free.
@@ -39,26 +44,40 @@ constexpr long kMaxStepsPerCall = 100000;
 }  // namespace
 
 Integrator::Integrator(SUNContext context, int n, int bandwidth, double relTol, double absTol,
-                       DaeSystem* system)
-    : n_(n), system_(system) {
-    y_ = N_VNew_Serial(n, context);
-    yp_ = N_VNew_Serial(n, context);
-    J_ = SUNBandMatrix(n, bandwidth, bandwidth, context);
+                       SecondOrderSystem* system)
+    : n_(n), bandwidth_(bandwidth), system_(system) {
+    schur_ = std::make_unique<BandSolver>(context, n, bandwidth);
+    D_.assign(static_cast<size_t>(n) * (2 * bandwidth + 1), 0.0);
+    rhs_.assign(n, 0.0);
+    y_ = N_VNew_Serial(2 * n, context);
+    yp_ = N_VNew_Serial(2 * n, context);
+    J_ = SUNMatNewEmpty(context);
+    solver_ = SUNLinSolNewEmpty(context);
     ida_ = IDACreate(context);
-    if (!y_ || !yp_ || !J_ || !ida_) {
+    if (!y_ || !yp_ || !J_ || !solver_ || !ida_) {
         release();
         throw std::bad_alloc();
     }
+    J_->content = this;
+    J_->ops->getid = shell_matrix_id;
+    J_->ops->zero = shell_matrix_zero;
+    J_->ops->destroy = shell_matrix_destroy;
+    solver_->content = this;
+    solver_->ops->gettype = shell_solver_type;
+    solver_->ops->getid = shell_solver_id;
+    solver_->ops->initialize = shell_solver_initialize;
+    solver_->ops->setup = &Integrator::ls_setup;
+    solver_->ops->solve = &Integrator::ls_solve;
+    solver_->ops->free = shell_solver_free;
     N_VConst(0.0, y_);
     N_VConst(0.0, yp_);
-    solver_ = SUNLinSol_Band(y_, J_, context);
-    bool ok = solver_ != nullptr;
+    bool ok = true;
     ok = ok && IDASetErrHandlerFn(ida_, &Integrator::error_handler, this) == IDA_SUCCESS;
     ok = ok && IDAInit(ida_, residual_callback, 0.0, y_, yp_) == IDA_SUCCESS;
     ok = ok && IDASStolerances(ida_, relTol, absTol) == IDA_SUCCESS;
     ok = ok && IDASetUserData(ida_, system_) == IDA_SUCCESS;
     ok = ok && IDASetLinearSolver(ida_, solver_, J_) == IDA_SUCCESS;
-    ok = ok && IDASetJacFn(ida_, jacobian_callback) == IDA_SUCCESS;
+    ok = ok && IDASetJacFn(ida_, &Integrator::jacobian_callback) == IDA_SUCCESS;
     ok = ok && IDASetMaxNumSteps(ida_, kMaxStepsPerCall) == IDA_SUCCESS;
     if (!ok) {
         release();
@@ -80,6 +99,52 @@ void Integrator::release() {
     y_ = yp_ = nullptr;
 }
 
+// Fills the reduced matrices: A = K + cj D = dR/dq + cj dR/dv + cj^2 dR/da and D = dR/dv + cj dR/da.
+int Integrator::jacobian_callback(double t, double cj, N_Vector y, N_Vector yp, N_Vector /*r*/, SUNMatrix J,
+                                  void* /*user*/, N_Vector, N_Vector, N_Vector) {
+    auto* self = static_cast<Integrator*>(J->content);
+    self->schur_->clear();
+    std::fill(self->D_.begin(), self->D_.end(), 0.0);
+    self->cj_ = cj;
+    const int w = 2 * self->bandwidth_ + 1, bandwidth = self->bandwidth_;
+    double* D = self->D_.data();
+    BandSolver& A = *self->schur_;
+    return self->system_->jacobian(t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp),
+                                   [&](int i, int k, double dq, double dv, double da) {
+                                       const double d = dv + cj * da;
+                                       D[i * w + k - i + bandwidth] += d;
+                                       A.add(i, k, dq + cj * d);
+                                   });
+}
+
+int Integrator::ls_setup(SUNLinearSolver S, SUNMatrix /*A*/) {
+    auto* self = static_cast<Integrator*>(S->content);
+    return self->schur_->factor() ? SUNLS_SUCCESS : SUNLS_LUFACT_FAIL;  // > 0: IDA retries smaller
+}
+
+// Solves [cj I, -I; K, D] (x_q, x_v) = (b_q, b_v) (interleaved): x_v = cj x_q - b_q, and
+// (K + cj D) x_q = b_v + D b_q.
+int Integrator::ls_solve(SUNLinearSolver S, SUNMatrix /*A*/, N_Vector x, N_Vector b, double /*tol*/) {
+    auto* self = static_cast<Integrator*>(S->content);
+    const int n = self->n_, bandwidth = self->bandwidth_, w = 2 * bandwidth + 1;
+    const double* bb = N_VGetArrayPointer(b);
+    double* xx = N_VGetArrayPointer(x);
+    const double* D = self->D_.data();
+    double* rhs = self->rhs_.data();
+    for (int i = 0; i < n; ++i) {
+        double s = bb[2 * i + 1];
+        const int k0 = std::max(0, i - bandwidth), k1 = std::min(n - 1, i + bandwidth);
+        for (int k = k0; k <= k1; ++k) s += D[i * w + k - i + bandwidth] * bb[2 * k];
+        rhs[i] = s;
+    }
+    if (!self->schur_->solve(rhs)) return SUNLS_PACKAGE_FAIL_UNREC;
+    for (int i = 0; i < n; ++i) {
+        xx[2 * i + 1] = self->cj_ * rhs[i] - bb[2 * i];
+        xx[2 * i] = rhs[i];
+    }
+    return SUNLS_SUCCESS;
+}
+
 void Integrator::error_handler(int code, const char* /*module*/, const char* function, char* msg, void* self) {
     auto* integrator = static_cast<Integrator*>(self);
     char buffer[600];
@@ -94,7 +159,7 @@ void Integrator::error_handler(int code, const char* /*module*/, const char* fun
 bool Integrator::restart(double t, const double* y, const double* yp, std::string& error) {
     double* yy = N_VGetArrayPointer(y_);
     double* yyp = N_VGetArrayPointer(yp_);
-    for (int i = 0; i < n_; ++i) {
+    for (int i = 0; i < 2 * n_; ++i) {
         yy[i] = y[i];
         yyp[i] = yp[i];
     }

@@ -1,7 +1,6 @@
 // simulation.cpp - initialization, stepping, outputs and exact state save/restore of one cable.
 #include "simulation.h"
 
-#include <sunmatrix/sunmatrix_band.h>
 
 #include <cmath>
 #include <cstdint>
@@ -64,9 +63,7 @@ CableSimulation::CableSimulation(const UCParams& params) : model_(params) {
     const int n = model_.n_free();
     const int bandwidth = model_.free_bandwidth();
     try {
-        // IDA unknowns interleave q_j and v_j: coupled free DOFs i, j are 2|i - j| + 1 apart at most.
-        integrator_ = std::make_unique<Integrator>(context_, 2 * n, 2 * bandwidth + 1, params.relTol,
-                                                   params.absTol, this);
+        integrator_ = std::make_unique<Integrator>(context_, n, bandwidth, params.relTol, params.absTol, this);
         staticSolver_ = std::make_unique<BandSolver>(context_, n, bandwidth);
     } catch (...) {
         integrator_.reset();
@@ -353,7 +350,7 @@ int CableSimulation::residual(double t, const double* y, const double* yp, doubl
     return finite ? 0 : 1;  // non-finite: recoverable, IDA retries with a smaller step
 }
 
-int CableSimulation::jacobian(double t, double cj, const double* y, const double* yp, SUNMatrix J) {
+int CableSimulation::jacobian(double t, const double* y, const double* yp, const EntrySink& sink) {
     const int n = model_.n_free();
     for (int j = 0; j < n; ++j) {
         q_[j] = y[2 * j];
@@ -361,15 +358,8 @@ int CableSimulation::jacobian(double t, double cj, const double* y, const double
         a_[j] = yp[2 * j + 1];
     }
     model_.expand(q_.data(), v_.data(), a_.data(), loads_, t, X_.data(), Xd_.data(), Xdd_.data());
-    SUNMatZero(J);
-    for (int j = 0; j < n; ++j) {
-        SM_ELEMENT_B(J, 2 * j, 2 * j) = cj;       // d(q' - v)/dq'
-        SM_ELEMENT_B(J, 2 * j, 2 * j + 1) = -1.0;  // d(q' - v)/dv
-    }
-    model_.jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_, [&](int i, int k, double dq, double dv, double da) {
-        SM_ELEMENT_B(J, 2 * i + 1, 2 * k) += dq;
-        SM_ELEMENT_B(J, 2 * i + 1, 2 * k + 1) += dv + cj * da;
-    });
+    model_.jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_,
+                    [&](int i, int k, double dq, double dv, double da) { sink(i, k, dq, dv, da); });
     return 0;
 }
 

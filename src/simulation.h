@@ -17,7 +17,7 @@
 
 namespace uc {
 
-class CableSimulation : public DaeSystem {
+class CableSimulation : public SecondOrderSystem {
 public:
     explicit CableSimulation(const UCParams& params);
     ~CableSimulation() override;
@@ -40,7 +40,7 @@ public:
 
 private:
     int residual(double t, const double* y, const double* yp, double* r) override;
-    int jacobian(double t, double cj, const double* y, const double* yp, SUNMatrix J) override;
+    int jacobian(double t, const double* y, const double* yp, const EntrySink& sink) override;
 
     void set_environment(const UCInputs& in);
     void initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
