@@ -141,14 +141,16 @@ def make_cases():
         traj=RampedSurge(CHAIN_FAIRLEAD, 5.0, 12.0, 12.0, 120.0), t_end=120.0, comm_step=0.05,
         line=CHAIN_LINE,
         fmu_params={"bottomEnd": 1, "anchor.x": CHAIN_ANCHOR[0], "anchor.y": CHAIN_ANCHOR[1],
-                    "anchor.z": CHAIN_ANCHOR[2], "enableBending": 0,
+                    "anchor.z": CHAIN_ANCHOR[2], "enableBending": 0, "enableCompression": 0,
                     **seabed_params(CHAIN_LINE, 200.0)},
         anchor=CHAIN_ANCHOR, force_scale=3e6, metrics=("tension_rmsrel", "mid_rms"),
         columns=("tension_rmsrel", "tension", "mid_rms", "mid_max"),
         seabed=dict(depth=200.0, kBot=MD_KBOT, cBot=MD_CBOT),
         description=(
             "Chain (issue 7): 835 m, 117 kg/m, volume-equivalent diameter 0.137 m (wet weight 999.6 N/m), "
-            "EA 7.5e8 N, no bending stiffness (ours: enableBending = 0; MoorDyn: EI = 0), Cdn 2.4, "
+            "EA 7.5e8 N, no bending stiffness (ours: enableBending = 0; MoorDyn: EI = 0), tension only "
+            "(ours: enableCompression = 0, the chain goes slack as MoorDyn's does; the switch table "
+            "shows the two-sided law), Cdn 2.4, "
             "Cdt 0.2 (on pi d), Can 1, Cat 0. Anchor on the seabed at (-800, 0, -200) m, fairlead at "
             "(0, 0, -20) m; 200 m depth. Fairlead surge 5 m amplitude at 12 s along x, amplitude "
             "ramped in smoothly over the first 12 s. Seabed in both codes, matched: MoorDyn kBot = "
@@ -778,6 +780,8 @@ def switch_table(fmu, case, ref):
     switches = list(SWITCHES)
     if case.seabed is not None:
         switches.insert(3, ("enableSeabed = 0", 20, {"enableSeabed": 0}))
+    if case.fmu_params.get("enableCompression", 1) == 0:
+        switches.insert(1, ("enableCompression = 1 (two-sided)", 20, {"enableCompression": 1}))
     for label, n, extra in switches:
         if extra == "damping":
             extra = {"axialDamping": 1e-3 * case.line["EA"]}
