@@ -2,6 +2,8 @@
 // for the static Newton iterations and consistent initial accelerations. Never dense.
 #pragma once
 
+#include <vector>
+
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
@@ -32,6 +34,27 @@ private:
     SUNMatrix A_ = nullptr;
     SUNLinearSolver solver_ = nullptr;
     N_Vector x_ = nullptr, b_ = nullptr;
+};
+
+// A banded matrix in row-major band storage with an LU factorization without pivoting, for the
+// integrator's Newton matrices (mass-dominated: K + cj D with D ~ cj M). factor() refuses, and the
+// caller falls back to the pivoting BandSolver, when a pivot is below kPivotTolerance times its
+// row's largest entry; the band is then left unusable until the next clear().
+class UnpivotedBandLU {
+public:
+    UnpivotedBandLU(int n, int bandwidth);
+    int size() const { return n_; }
+    void clear();
+    void add(int row, int col, double value) { a_[row * w_ + col - row + b_] += value; }
+    double get(int row, int col) const { return a_[row * w_ + col - row + b_]; }
+    bool factor();
+    void solve(double* x) const;  // in place
+
+    static constexpr double kPivotTolerance = 1e-10;
+
+private:
+    int n_, b_, w_;
+    std::vector<double> a_;
 };
 
 }  // namespace uc

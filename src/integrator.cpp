@@ -4,6 +4,7 @@
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -45,8 +46,8 @@ constexpr long kMaxStepsPerCall = 100000;
 
 Integrator::Integrator(SUNContext context, int n, int bandwidth, double relTol, double absTol,
                        SecondOrderSystem* system)
-    : n_(n), bandwidth_(bandwidth), system_(system) {
-    schur_ = std::make_unique<BandSolver>(context, n, bandwidth);
+    : n_(n), bandwidth_(bandwidth), schur_(n, bandwidth), schurLU_(n, bandwidth), system_(system) {
+    pivoted_ = std::make_unique<BandSolver>(context, n, bandwidth);
     D_.assign(static_cast<size_t>(n) * (2 * bandwidth + 1), 0.0);
     rhs_.assign(n, 0.0);
     y_ = N_VNew_Serial(2 * n, context);
@@ -103,12 +104,12 @@ void Integrator::release() {
 int Integrator::jacobian_callback(double t, double cj, N_Vector y, N_Vector yp, N_Vector /*r*/, SUNMatrix J,
                                   void* /*user*/, N_Vector, N_Vector, N_Vector) {
     auto* self = static_cast<Integrator*>(J->content);
-    self->schur_->clear();
+    self->schur_.clear();
     std::fill(self->D_.begin(), self->D_.end(), 0.0);
     self->cj_ = cj;
     const int w = 2 * self->bandwidth_ + 1, bandwidth = self->bandwidth_;
     double* D = self->D_.data();
-    BandSolver& A = *self->schur_;
+    UnpivotedBandLU& A = self->schur_;
     return self->system_->jacobian(t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp),
                                    [&](int i, int k, double dq, double dv, double da) {
                                        const double d = dv + cj * da;
@@ -119,7 +120,14 @@ int Integrator::jacobian_callback(double t, double cj, N_Vector y, N_Vector yp, 
 
 int Integrator::ls_setup(SUNLinearSolver S, SUNMatrix /*A*/) {
     auto* self = static_cast<Integrator*>(S->content);
-    return self->schur_->factor() ? SUNLS_SUCCESS : SUNLS_LUFACT_FAIL;  // > 0: IDA retries smaller
+    self->schurLU_ = self->schur_;
+    self->usePivoted_ = !self->schurLU_.factor();
+    if (!self->usePivoted_) return SUNLS_SUCCESS;
+    const int n = self->n_, b = self->bandwidth_;
+    self->pivoted_->clear();
+    for (int i = 0; i < n; ++i)
+        for (int k = std::max(0, i - b); k <= std::min(n - 1, i + b); ++k) self->pivoted_->add(i, k, self->schur_.get(i, k));
+    return self->pivoted_->factor() ? SUNLS_SUCCESS : SUNLS_LUFACT_FAIL;  // > 0: IDA retries smaller
 }
 
 // Solves [cj I, -I; K, D] (x_q, x_v) = (b_q, b_v) (interleaved): x_v = cj x_q - b_q, and
@@ -137,7 +145,11 @@ int Integrator::ls_solve(SUNLinearSolver S, SUNMatrix /*A*/, N_Vector x, N_Vecto
         for (int k = k0; k <= k1; ++k) s += D[i * w + k - i + bandwidth] * bb[2 * k];
         rhs[i] = s;
     }
-    if (!self->schur_->solve(rhs)) return SUNLS_PACKAGE_FAIL_UNREC;
+    if (self->usePivoted_) {
+        if (!self->pivoted_->solve(rhs)) return SUNLS_PACKAGE_FAIL_UNREC;
+    } else {
+        self->schurLU_.solve(rhs);
+    }
     for (int i = 0; i < n; ++i) {
         xx[2 * i + 1] = self->cj_ * rhs[i] - bb[2 * i];
         xx[2 * i] = rhs[i];

@@ -72,7 +72,9 @@ private:
     // SUNLinearSolver handed to IDA are shells around them.
     SUNMatrix J_ = nullptr;
     SUNLinearSolver solver_ = nullptr;
-    std::unique_ptr<BandSolver> schur_;
+    UnpivotedBandLU schur_, schurLU_;      // assembled A, and its LU (without pivoting) ...
+    std::unique_ptr<BandSolver> pivoted_;  // ... or with partial pivoting when a pivot is too small
+    bool usePivoted_ = false;
     std::vector<double> D_;  // row i, column k at i * (2 bandwidth + 1) + k - i + bandwidth
     std::vector<double> rhs_;
     double cj_ = 0.0;  // of the stored matrices
