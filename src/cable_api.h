@@ -134,6 +134,7 @@ typedef struct UCOutputs {
                                   the parallel-transported (twist-free) frame: H s / GJ */
     double towMoment[3];       /* towMoment.x/y/z [N.m] moment of the cable on the tow point */
     double endMoment[3];       /* endMoment.x/y/z [N.m] moment of the cable on the far-end attachment */
+    double curvature[UC_NUM_STATIONS]; /* curvature[k] [1/m] |r' x r''| / |r'|^3 at the stations */
     /* integrator statistics since uc_initialize (debug outputs) */
     double nSteps, nResidualEvals, nJacobianEvals, nNonlinearFailures, nErrorTestFailures;
 } UCOutputs;

@@ -93,6 +93,7 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
         out.shapeY[k] = r.y();
         out.shapeZ[k] = r.z();
         out.tension[k] = (1.0 - xi) * T[e] + xi * T[e + 1];
+        out.curvature[k] = curvature(interpolate(sv.dN, X + 6 * e), interpolate(sv.d2N, X + 6 * e));
     }
 
     double minTension = *std::min_element(T.begin(), T.end());

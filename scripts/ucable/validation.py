@@ -96,13 +96,17 @@ def end_couple(fmu, turns: float, n_elements: int) -> dict:
         cable.initialize(inputs={"tow.z": -ELASTICA_DEPTH, "endCouple.y": M})
         cpu = time.process_time() - cpu
         shape = cable.shape()
+        kappa = cable.get_reals([f"curvature[{k}]" for k in range(1, NUM_STATIONS + 1)])
     finally:
         cable.free()
     s = np.linspace(0.0, params["length"], NUM_STATIONS)
     x, z = circular_arc(s, params["EI"] / M)
     dist = np.hypot(shape["shape.x"] - x, shape["shape.z"] + ELASTICA_DEPTH - z)
+    exact_kappa = M / params["EI"]
     return {"turns": turns, "N": n_elements, "error": float(dist.max()) / params["length"],
-            "cpu": cpu, "tip_error": float(dist[-1]) / params["length"]}
+            "cpu": cpu, "tip_error": float(dist[-1]) / params["length"],
+            "curvature_error": float(np.max(np.abs(kappa / exact_kappa - 1.0))),
+            "kappa_h": exact_kappa * params["length"] / n_elements}
 
 
 # ---------------------------------------------------------------------------------------- catenary
