@@ -120,15 +120,18 @@ def dynamic_mean(run: wp.Run, average_from: float):
 
 def ours(fmu, n_elements: int, rel_tol: float = 1e-8, period: float = m.SURGE_PERIOD,
          drag: bool = True, t_end: float = 300.0, average_from: float = 100.0,
-         qs_mean: float | None = None) -> MeanResult:
+         qs_mean: float | None = None, compression: bool = True) -> MeanResult:
     """Our FMU on the scene (absTol = 100 relTol as in ucable.work_precision.run_fmu; relTol 1e-8
-    gives the FMU defaults 1e-8 / 1e-6 of ucable.mooring.surge_run)."""
+    gives the FMU defaults 1e-8 / 1e-6 of ucable.mooring.surge_run). compression=False: the
+    tension-only axial law (enableCompression = 0), MoorDyn's."""
     case = scene_case(period, drag, t_end)
-    run = wp.run_fmu(fmu, case, n_elements, rel_tol)
+    run = wp.run_fmu(fmu, case, n_elements, rel_tol,
+                     extra=None if compression else {"enableCompression": 0})
     mean, lo, hi = dynamic_mean(run, average_from)
     qs = m.quasi_static_mean(40) if qs_mean is None else qs_mean
-    return MeanResult("ours", n_elements, f"relTol {rel_tol:.0e}", period, drag, mean, lo, hi,
-                      run.cpu, qs, run.stats["minTension"])
+    setting = f"relTol {rel_tol:.0e}" + ("" if compression else ", tension-only")
+    return MeanResult("ours", n_elements, setting, period, drag, mean, lo, hi, run.cpu, qs,
+                      run.stats["minTension"])
 
 
 def moordyn_dt(n_seg: int, period: float = m.SURGE_PERIOD, drag: bool = True,
@@ -194,12 +197,14 @@ class Study:
     t_end: float
 
 
-def run_study(fmu, elements=(20, 40, 80), tol_check=1e-10, segments=(20, 40, 80, 160),
+def run_study(fmu, elements=(20, 40, 80), tension_only=(20, 40, 80), tol_check=1e-10,
+              segments=(20, 40, 80, 160),
               variant_elements=(20, 40), variant_segments=(40, 80), t_end=300.0,
               average_from=100.0, progress=None) -> Study:
     """All runs of scripts/mooring_dynamic_mean. progress(done, total, label) after each job."""
     qs = m.quasi_static_mean(40)
     jobs = [("ours", n, 1e-8, m.SURGE_PERIOD, True) for n in elements]
+    jobs += [("ours tension-only", n, 1e-8, m.SURGE_PERIOD, True) for n in tension_only]
     if tol_check:
         jobs.append(("ours", min(elements), tol_check, m.SURGE_PERIOD, True))
     jobs += [("MoorDyn", n, "zeta", m.SURGE_PERIOD, True) for n in segments]
@@ -213,8 +218,8 @@ def run_study(fmu, elements=(20, 40, 80), tol_check=1e-10, segments=(20, 40, 80,
     for j, (code, n, setting, period, drag) in enumerate(jobs):
         if progress is not None:
             progress(j, len(jobs), f"{code} N={n} {setting or ''} T={period} drag={drag}")
-        if code == "ours":
-            r = ours(fmu, n, setting, period, drag, **kw)
+        if code.startswith("ours"):
+            r = ours(fmu, n, setting, period, drag, compression=code == "ours", **kw)
         elif code == "MoorDyn" and setting == "matched":
             r = moordyn(n, matched_dt(n), period, drag, md_damping="matched", **kw)
         else:
@@ -253,7 +258,7 @@ def load_study(path) -> Study:
 def finest(results, code, period, drag):
     """The finest-mesh result of `code` for (period, drag) (MoorDyn: its usual damping), or None."""
     rs = [r for r in results if r.code == code and r.period == period and r.drag == drag
-          and "matched" not in r.setting and "1e-10" not in r.setting]
+          and "matched" not in r.setting and "1e-10" not in r.setting and "tension-only" not in r.setting]
     return max(rs, key=lambda r: r.resolution) if rs else None
 
 
@@ -316,7 +321,8 @@ def _finest_two(rs):
 def _reading(s: Study) -> list:
     """Statements computed from the runs (each one states the numbers it rests on)."""
     out = []
-    groups = {"ours": [r for r in s.scene if r.code == "ours" and "1e-08" in r.setting],
+    groups = {"ours": [r for r in s.scene if r.code == "ours" and r.setting == "relTol 1e-08"],
+              "ours (tension-only)": [r for r in s.scene if "tension-only" in r.setting],
               "MoorDyn (BA/-zeta -0.8)": [r for r in s.scene if "zeta" in r.setting],
               "MoorDyn (BA matched)": [r for r in s.scene if "matched" in r.setting]}
     devs = [r.deviation for r in s.scene]
@@ -333,14 +339,15 @@ def _reading(s: Study) -> list:
         last = f"; last refinement {c.resolution} -> {f.resolution}: {100 * (f.deviation - c.deviation):+.3f} points" if c else ""
         out.append(f"  - {name}, {res}: {seq}{last}.")
     tol = [(a, b) for a in groups["ours"] for b in s.scene
-           if b.code == "ours" and b.resolution == a.resolution and b.setting != a.setting]
+           if b.code == "ours" and b.resolution == a.resolution and b.setting.startswith("relTol")
+           and b.setting != a.setting and "tension-only" not in b.setting]
     for a, b in tol:
         out.append(f"  - our relTol {b.setting.split()[-1]} instead of 1e-8 at {a.resolution} elements: "
                    f"{100 * (b.deviation - a.deviation):+.3f} points (the integrator is not what limits it).")
     if "ours" in best and len(best) > 1:
         o = best["ours"]
         for name, f in best.items():
-            if name != "ours":
+            if name.startswith("MoorDyn"):
                 out.append(f"  - finest runs, {name} {f.resolution} segments minus ours {o.resolution} "
                            f"elements: {100 * (f.deviation - o.deviation):+.3f} points.")
         rs = sorted(groups["ours"], key=lambda r: r.resolution)
@@ -349,6 +356,13 @@ def _reading(s: Study) -> list:
                        "cable " + " / ".join(f"{r.min_axial / 1e3:.0f}" for r in rs) + " kN at "
                        + " / ".join(str(r.resolution) for r in rs) + " elements; no bending stiffness), "
                        "MoorDyn's segments cannot (tension-only).")
+        if "ours (tension-only)" in best:
+            t = best["ours (tension-only)"]
+            for name, f in best.items():
+                if name.startswith("MoorDyn"):
+                    out.append(f"  - with our tension-only law (enableCompression = 0, MoorDyn's): {name} "
+                               f"{f.resolution} segments minus ours {t.resolution} elements: "
+                               f"{100 * (f.deviation - t.deviation):+.3f} points.")
     verdict = "is" if min(devs) > 5e-3 else "is not"
     out.append(f"- Every run {verdict} above the 0.5 % of issue 4 for this scene.")
     slow = [f for T in sorted({r.period for r in s.variants if r.period >= 50.0})
@@ -405,8 +419,9 @@ def plot(s: Study, path) -> None:
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.2))
     groups = {}
     for r in s.scene:
-        key = r.code + ("" if r.code == "ours" else (" BA/-zeta -0.8" if "zeta" in r.setting else " BA matched"))
-        if r.code == "ours" and not r.setting.endswith("1e-08"):
+        key = r.code + (("" if "tension-only" not in r.setting else " tension-only") if r.code == "ours"
+                        else (" BA/-zeta -0.8" if "zeta" in r.setting else " BA matched"))
+        if r.code == "ours" and "1e-10" in r.setting:
             continue
         groups.setdefault(key, []).append(r)
     for key, rs in groups.items():
@@ -445,6 +460,8 @@ def main(argv=None) -> int:
         "quasi-static mean, with mesh/tolerance convergence and a drag / period decomposition."))
     p.add_argument("--elements", type=int, nargs="+", default=[20, 40, 80],
                    help="our element counts for the issue scene (default 20 40 80; 160 takes ~10 min)")
+    p.add_argument("--tension-only", type=int, nargs="*", default=[20, 40, 80],
+                   help="our element counts with enableCompression = 0 (MoorDyn's law; default 20 40 80)")
     p.add_argument("--segments", type=int, nargs="+", default=[20, 40, 80, 160],
                    help="MoorDyn segment counts for the issue scene (default 20 40 80 160)")
     p.add_argument("--tol-check", type=float, default=1e-10,
@@ -470,7 +487,8 @@ def main(argv=None) -> int:
     if args.from_json is not None:
         s = load_study(args.from_json)
     else:
-        s = run_study(fmu, elements=tuple(args.elements), segments=tuple(args.segments),
+        s = run_study(fmu, elements=tuple(args.elements), tension_only=tuple(args.tension_only),
+                      segments=tuple(args.segments),
                       tol_check=args.tol_check or None,
                       variant_elements=() if args.no_variants else (20, 40),
                       variant_segments=() if args.no_variants else (40, 80), progress=progress)
