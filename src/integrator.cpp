@@ -110,12 +110,12 @@ int Integrator::jacobian_callback(double t, double cj, N_Vector y, N_Vector yp, 
     const int w = 2 * self->bandwidth_ + 1, bandwidth = self->bandwidth_;
     double* D = self->D_.data();
     UnpivotedBandLU& A = self->schur_;
-    return self->system_->jacobian(t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp),
-                                   [&](int i, int k, double dq, double dv, double da) {
-                                       const double d = dv + cj * da;
-                                       D[i * w + k - i + bandwidth] += d;
-                                       A.add(i, k, dq + cj * d);
-                                   });
+    auto add = [&](int i, int k, double dq, double dv, double da) {
+        const double d = dv + cj * da;
+        D[i * w + k - i + bandwidth] += d;
+        A.add(i, k, dq + cj * d);
+    };
+    return self->system_->jacobian(t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), SecondOrderSystem::EntrySink(add));
 }
 
 int Integrator::ls_setup(SUNLinearSolver S, SUNMatrix /*A*/) {

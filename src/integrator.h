@@ -5,7 +5,6 @@
 // 2n x 2n iteration matrix, about 8 times fewer operations.
 #pragma once
 
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,8 +26,20 @@ public:
     virtual ~SecondOrderSystem() = default;
     // Return 0 on success, > 0 for a recoverable failure (IDA retries with a smaller step).
     virtual int residual(double t, const double* y, const double* yp, double* r) = 0;
-    // Receives dR_i/dq_k, dR_i/dv_k, dR_i/da_k for |i - k| <= the bandwidth (repeated (i, k) add up).
-    using EntrySink = std::function<void(int i, int k, double dq, double dv, double da)>;
+    // Receives dR_i/dq_k, dR_i/dv_k, dR_i/da_k for |i - k| <= the bandwidth (repeated (i, k) add
+    // up). A non-owning reference to a callable (never allocates, unlike std::function).
+    class EntrySink {
+    public:
+        template <class F>
+        explicit EntrySink(F& f) : object_(&f), call_([](void* o, int i, int k, double dq, double dv, double da) {
+              (*static_cast<F*>(o))(i, k, dq, dv, da);
+          }) {}
+        void operator()(int i, int k, double dq, double dv, double da) const { call_(object_, i, k, dq, dv, da); }
+
+    private:
+        void* object_;
+        void (*call_)(void*, int, int, double, double, double);
+    };
     virtual int jacobian(double t, const double* y, const double* yp, const EntrySink& sink) = 0;
 };
 

@@ -64,7 +64,7 @@ Vec3 internal_moment(const CableModel& model, const double* Xe, double xi, doubl
 }
 
 void compute_outputs(const CableModel& model, const double* X, const double* Xd, const ElementForces& forces,
-                     double torque, UCOutputs& out) {
+                     double torque, std::vector<double>& T, UCOutputs& out) {
     const int N = model.n_elements();
     const int gN = 6 * N;
     const Vec3 towForce = -forces.element[0].segment<3>(0);
@@ -78,7 +78,7 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
     out.towTension = towForce.norm();
     out.endTension = endForce.norm();
 
-    std::vector<double> T(N + 1);
+    T.resize(N + 1);  // the caller's workspace: no allocation after the first call
     nodal_tensions(model, X, forces, T.data());
 
     const double l = model.element_length();

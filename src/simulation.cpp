@@ -81,6 +81,7 @@ CableSimulation::CableSimulation(const UCParams& params) : model_(params) {
     Xd_.assign(model_.n_global(), 0.0);
     Xdd_.assign(model_.n_global(), 0.0);
     forces_.element.resize(model_.n_elements());
+    nodeTension_.resize(model_.n_elements() + 1);
 }
 
 CableSimulation::~CableSimulation() {
@@ -383,7 +384,7 @@ void CableSimulation::update_outputs() {
     free_state(q_, v_, a_);
     model_.expand(q_.data(), v_.data(), a_.data(), loads_, time_, X_.data(), Xd_.data(), Xdd_.data());
     model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), &forces_);
-    compute_outputs(model_, X_.data(), Xd_.data(), forces_, loads_.torque, outputs_);
+    compute_outputs(model_, X_.data(), Xd_.data(), forces_, loads_.torque, nodeTension_, outputs_);
     const IntegratorStats s = total_stats();
     outputs_.nSteps = s.steps;
     outputs_.nResidualEvals = s.residualEvals;

@@ -73,6 +73,7 @@ private:
     Loads loads_;
     std::vector<double> q_, v_, a_, X_, Xd_, Xdd_, R_;
     ElementForces forces_;
+    std::vector<double> nodeTension_;  // output workspace
 };
 
 }  // namespace uc
