@@ -120,9 +120,13 @@ int Integrator::jacobian_callback(double t, double cj, N_Vector y, N_Vector yp, 
 
 int Integrator::ls_setup(SUNLinearSolver S, SUNMatrix /*A*/) {
     auto* self = static_cast<Integrator*>(S->content);
-    self->schurLU_ = self->schur_;
-    self->usePivoted_ = !self->schurLU_.factor();
-    if (!self->usePivoted_) return SUNLS_SUCCESS;
+    if (!self->alwaysPivot_) {
+        self->schurLU_ = self->schur_;
+        self->usePivoted_ = !self->schurLU_.factor();
+        if (!self->usePivoted_) return SUNLS_SUCCESS;
+    }
+    self->usePivoted_ = true;
+    ++self->pivotedFactorizations_;
     const int n = self->n_, b = self->bandwidth_;
     self->pivoted_->clear();
     for (int i = 0; i < n; ++i)

@@ -66,6 +66,10 @@ public:
     int size() const { return 2 * n_; }
     // Statistics since the last restart.
     IntegratorStats stats() const;
+    // Always factor with partial pivoting (the fallback path; for tests).
+    void always_pivot(bool on) { alwaysPivot_ = on; }
+    // Factorizations that fell back to (or were forced onto) the pivoting LU since construction.
+    long pivoted_factorizations() const { return pivotedFactorizations_; }
 
 private:
     static void error_handler(int code, const char* module, const char* function, char* msg, void* self);
@@ -85,7 +89,8 @@ private:
     SUNLinearSolver solver_ = nullptr;
     UnpivotedBandLU schur_, schurLU_;      // assembled A, and its LU (without pivoting) ...
     std::unique_ptr<BandSolver> pivoted_;  // ... or with partial pivoting when a pivot is too small
-    bool usePivoted_ = false;
+    bool usePivoted_ = false, alwaysPivot_ = false;
+    long pivotedFactorizations_ = 0;
     std::vector<double> D_;  // row i, column k at i * (2 bandwidth + 1) + k - i + bandwidth
     std::vector<double> rhs_;
     double cj_ = 0.0;  // of the stored matrices

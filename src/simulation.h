@@ -37,6 +37,8 @@ public:
 
     // Free positions q and velocities v of the current state (for tests).
     void free_state(std::vector<double>& q, std::vector<double>& v, std::vector<double>& a) const;
+    // The time integrator (for tests of its linear algebra paths).
+    Integrator& integrator() { return *integrator_; }
 
 private:
     int residual(double t, const double* y, const double* yp, double* r) override;
