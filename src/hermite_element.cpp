@@ -136,15 +136,23 @@ double slack_width(const ElementTables& e, const AxialProps& p) {
 // shape the strain inside the element, stay two-sided, so a slack element keeps its shape
 // stiffness (without it a slack element without bending stiffness has free tangents: the
 // snapping chain's response then changes by 20 % of its tension between integrator tolerances).
-SlackLaw mode_tension(const ElementTables& e, const AxialProps& p, const AxialSamples& s, int k) {
-    const double P = mode_weight(e, p, k) * (p.EA * s.strainMode[k] + p.damping * s.rateMode[k]);
-    return p.tensionOnly && k == 0 ? slack_law(P, slack_width(e, p)) : SlackLaw{P, 1.0};
+struct ModeTensions {
+    SlackLaw mode[3];
+};
+
+ModeTensions mode_tensions(const ElementTables& e, const AxialProps& p, const AxialSamples& s) {
+    ModeTensions m;
+    for (int k = 0; k < e.axialModes; ++k) {
+        const double P = mode_weight(e, p, k) * (p.EA * s.strainMode[k] + p.damping * s.rateMode[k]);
+        m.mode[k] = p.tensionOnly && k == 0 ? slack_law(P, slack_width(e, p)) : SlackLaw{P, 1.0};
+    }
+    return m;
 }
 
 // Projected tension at sampling point g.
-double projected_tension(const ElementTables& e, const AxialProps& p, const AxialSamples& s, int g) {
+double projected_tension(const ElementTables& e, const ModeTensions& m, int g) {
     double T = 0.0;
-    for (int k = 0; k < e.axialModes; ++k) T += e.legendre[k][g] * mode_tension(e, p, s, k).tension;
+    for (int k = 0; k < e.axialModes; ++k) T += e.legendre[k][g] * m.mode[k].tension;
     return T;
 }
 
@@ -153,9 +161,10 @@ double projected_tension(const ElementTables& e, const AxialProps& p, const Axia
 void add_axial_force(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
                      double* R) {
     const AxialSamples s = sample_axial(e, X, Xd);
+    const ModeTensions m = mode_tensions(e, p, s);
     for (int g = 0; g < ElementTables::nAxial; ++g) {
         const QuadPoint& q = e.axial[g];
-        const Vec3 f = (q.weight * projected_tension(e, p, s, g)) * s.t[g];
+        const Vec3 f = (q.weight * projected_tension(e, m, g)) * s.t[g];
         for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += q.shape.dN[a] * f;
     }
 }
@@ -163,11 +172,12 @@ void add_axial_force(const ElementTables& e, const AxialProps& p, const double* 
 void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
                         Mat12& K, Mat12& C) {
     const AxialSamples s = sample_axial(e, X, Xd);
+    const ModeTensions m = mode_tensions(e, p, s);
     const double l = e.length;
     // Geometric part: the projected tension times the rotation of t at each point.
     for (int g = 0; g < ElementTables::nAxial; ++g) {
         const QuadPoint& q = e.axial[g];
-        const Mat3 geometric = (projected_tension(e, p, s, g) / s.stretch[g]) *
+        const Mat3 geometric = (projected_tension(e, m, g) / s.stretch[g]) *
                                (Mat3::Identity() - s.t[g] * s.t[g].transpose());
         for (int a = 0; a < 4; ++a)
             for (int b = 0; b < 4; ++b)
@@ -191,7 +201,7 @@ void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const doubl
             }
         }
         // d(mode tension)/d(two-sided mode value): 1, or the tension-only law's slope for mode 0.
-        const double weight = mode_weight(e, p, k) / l * mode_tension(e, p, s, k).slope;
+        const double weight = mode_weight(e, p, k) / l * m.mode[k].slope;
         for (int a = 0; a < 4; ++a) {
             for (int b = 0; b < 4; ++b) {
                 K.block<3, 3>(3 * a, 3 * b) += (weight * p.EA) * G[a] * G[b].transpose();
@@ -207,7 +217,8 @@ void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const doubl
 void axial_tensions(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
                     double* T) {
     const AxialSamples s = sample_axial(e, X, Xd);
-    for (int g = 0; g < ElementTables::nAxial; ++g) T[g] = projected_tension(e, p, s, g);
+    const ModeTensions m = mode_tensions(e, p, s);
+    for (int g = 0; g < ElementTables::nAxial; ++g) T[g] = projected_tension(e, m, g);
 }
 
 double axial_energy(const ElementTables& e, const AxialProps& p, const double* X) {
