@@ -51,14 +51,14 @@ bool BandSolver::solve(double* b) {
     return true;
 }
 
-UnpivotedBandLU::UnpivotedBandLU(int n, int bandwidth)
+BandMatrix::BandMatrix(int n, int bandwidth)
     : n_(n), b_(bandwidth), w_(2 * bandwidth + 1), a_(static_cast<size_t>(n) * (2 * bandwidth + 1), 0.0) {}
 
-void UnpivotedBandLU::clear() { std::fill(a_.begin(), a_.end(), 0.0); }
+void BandMatrix::clear() { std::fill(a_.begin(), a_.end(), 0.0); }
 
 bool UnpivotedBandLU::factor() {
     for (int p = 0; p < n_; ++p) {
-        double* rowP = &a_[static_cast<size_t>(p) * w_ + b_ - p];  // rowP[k] = A(p, k)
+        double* rowP = row(p);
         double scale = 0.0;
         const int kEnd = std::min(n_ - 1, p + b_);
         for (int k = std::max(0, p - b_); k <= kEnd; ++k) scale = std::max(scale, std::fabs(rowP[k]));
@@ -66,7 +66,7 @@ bool UnpivotedBandLU::factor() {
         if (!(std::fabs(pivot) > kPivotTolerance * scale)) return false;
         const double inverse = 1.0 / pivot;
         for (int i = p + 1; i <= kEnd; ++i) {
-            double* rowI = &a_[static_cast<size_t>(i) * w_ + b_ - i];
+            double* rowI = row(i);
             const double l = rowI[p] * inverse;
             rowI[p] = l;
             if (l == 0.0) continue;
@@ -78,17 +78,17 @@ bool UnpivotedBandLU::factor() {
 
 void UnpivotedBandLU::solve(double* x) const {
     for (int i = 0; i < n_; ++i) {  // L y = b (unit diagonal)
-        const double* row = &a_[static_cast<size_t>(i) * w_ + b_ - i];
+        const double* r = row(i);
         double s = x[i];
-        for (int k = std::max(0, i - b_); k < i; ++k) s -= row[k] * x[k];
+        for (int k = std::max(0, i - b_); k < i; ++k) s -= r[k] * x[k];
         x[i] = s;
     }
     for (int i = n_ - 1; i >= 0; --i) {  // U x = y
-        const double* row = &a_[static_cast<size_t>(i) * w_ + b_ - i];
+        const double* r = row(i);
         double s = x[i];
         const int kEnd = std::min(n_ - 1, i + b_);
-        for (int k = i + 1; k <= kEnd; ++k) s -= row[k] * x[k];
-        x[i] = s / row[i];
+        for (int k = i + 1; k <= kEnd; ++k) s -= r[k] * x[k];
+        x[i] = s / r[i];
     }
 }
 

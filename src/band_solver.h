@@ -36,25 +36,34 @@ private:
     N_Vector x_ = nullptr, b_ = nullptr;
 };
 
-// A banded matrix in row-major band storage with an LU factorization without pivoting, for the
-// integrator's Newton matrices (mass-dominated: K + cj D with D ~ cj M). factor() refuses, and the
-// caller falls back to the pivoting BandSolver, when a pivot is below kPivotTolerance times its
-// row's largest entry; the band is then left unusable until the next clear().
-class UnpivotedBandLU {
+// An n x n matrix with entries only for |row - col| <= bandwidth, in row-major band storage.
+class BandMatrix {
 public:
-    UnpivotedBandLU(int n, int bandwidth);
+    BandMatrix(int n, int bandwidth);
     int size() const { return n_; }
+    int bandwidth() const { return b_; }
     void clear();
     void add(int row, int col, double value) { a_[row * w_ + col - row + b_] += value; }
     double get(int row, int col) const { return a_[row * w_ + col - row + b_]; }
+
+protected:
+    double* row(int i) { return &a_[static_cast<size_t>(i) * w_ + b_ - i]; }  // row(i)[k] = A(i, k)
+    const double* row(int i) const { return &a_[static_cast<size_t>(i) * w_ + b_ - i]; }
+    int n_, b_, w_;
+    std::vector<double> a_;
+};
+
+// A band matrix factored in place by LU without pivoting, for the integrator's Newton matrices
+// (mass-dominated: K + cj D with D ~ cj M). factor() refuses, and the caller falls back to the
+// pivoting BandSolver, when a pivot is below kPivotTolerance times its row's largest entry; the
+// band is then left unusable until the next clear().
+class UnpivotedBandLU : public BandMatrix {
+public:
+    using BandMatrix::BandMatrix;
     bool factor();
     void solve(double* x) const;  // in place
 
     static constexpr double kPivotTolerance = 1e-10;
-
-private:
-    int n_, b_, w_;
-    std::vector<double> a_;
 };
 
 }  // namespace uc

@@ -46,9 +46,8 @@ constexpr long kMaxStepsPerCall = 100000;
 
 Integrator::Integrator(SUNContext context, int n, int bandwidth, double relTol, double absTol,
                        SecondOrderSystem* system)
-    : n_(n), bandwidth_(bandwidth), schur_(n, bandwidth), schurLU_(n, bandwidth), system_(system) {
+    : n_(n), bandwidth_(bandwidth), schur_(n, bandwidth), schurLU_(n, bandwidth), D_(n, bandwidth), system_(system) {
     pivoted_ = std::make_unique<BandSolver>(context, n, bandwidth);
-    D_.assign(static_cast<size_t>(n) * (2 * bandwidth + 1), 0.0);
     rhs_.assign(n, 0.0);
     y_ = N_VNew_Serial(2 * n, context);
     yp_ = N_VNew_Serial(2 * n, context);
@@ -105,14 +104,13 @@ int Integrator::jacobian_callback(double t, double cj, N_Vector y, N_Vector yp, 
                                   void* /*user*/, N_Vector, N_Vector, N_Vector) {
     auto* self = static_cast<Integrator*>(J->content);
     self->schur_.clear();
-    std::fill(self->D_.begin(), self->D_.end(), 0.0);
+    self->D_.clear();
     self->cj_ = cj;
-    const int w = 2 * self->bandwidth_ + 1, bandwidth = self->bandwidth_;
-    double* D = self->D_.data();
     UnpivotedBandLU& A = self->schur_;
+    BandMatrix& D = self->D_;
     auto add = [&](int i, int k, double dq, double dv, double da) {
         const double d = dv + cj * da;
-        D[i * w + k - i + bandwidth] += d;
+        D.add(i, k, d);
         A.add(i, k, dq + cj * d);
     };
     return self->system_->jacobian(t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), SecondOrderSystem::EntrySink(add));
@@ -138,15 +136,15 @@ int Integrator::ls_setup(SUNLinearSolver S, SUNMatrix /*A*/) {
 // (K + cj D) x_q = b_v + D b_q.
 int Integrator::ls_solve(SUNLinearSolver S, SUNMatrix /*A*/, N_Vector x, N_Vector b, double /*tol*/) {
     auto* self = static_cast<Integrator*>(S->content);
-    const int n = self->n_, bandwidth = self->bandwidth_, w = 2 * bandwidth + 1;
+    const int n = self->n_, bandwidth = self->bandwidth_;
     const double* bb = N_VGetArrayPointer(b);
     double* xx = N_VGetArrayPointer(x);
-    const double* D = self->D_.data();
+    const BandMatrix& D = self->D_;
     double* rhs = self->rhs_.data();
     for (int i = 0; i < n; ++i) {
         double s = bb[2 * i + 1];
         const int k0 = std::max(0, i - bandwidth), k1 = std::min(n - 1, i + bandwidth);
-        for (int k = k0; k <= k1; ++k) s += D[i * w + k - i + bandwidth] * bb[2 * k];
+        for (int k = k0; k <= k1; ++k) s += D.get(i, k) * bb[2 * k];
         rhs[i] = s;
     }
     if (self->usePivoted_) {

@@ -91,7 +91,7 @@ private:
     std::unique_ptr<BandSolver> pivoted_;  // ... or with partial pivoting when a pivot is too small
     bool usePivoted_ = false, alwaysPivot_ = false;
     long pivotedFactorizations_ = 0;
-    std::vector<double> D_;  // row i, column k at i * (2 bandwidth + 1) + k - i + bandwidth
+    BandMatrix D_;
     std::vector<double> rhs_;
     double cj_ = 0.0;  // of the stored matrices
     SecondOrderSystem* system_;
