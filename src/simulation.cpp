@@ -359,8 +359,7 @@ int CableSimulation::jacobian(double t, const double* y, const double* yp, const
         a_[j] = yp[2 * j + 1];
     }
     model_.expand(q_.data(), v_.data(), a_.data(), loads_, t, X_.data(), Xd_.data(), Xdd_.data());
-    model_.jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_,
-                    [&](int i, int k, double dq, double dv, double da) { sink(i, k, dq, dv, da); });
+    model_.jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_, sink);
     return 0;
 }
 
