@@ -1,7 +1,8 @@
 /*
  * variables.h - the value-reference table: every FMU variable of modelDescription.xml with its
  * value reference, name, type, causality and its place in UCParams / UCInputs / UCOutputs.
- * modelDescription.xml is the source of truth; tests/fmu checks this table against it both ways.
+ * Both this table and modelDescription.xml are generated from the variable schema
+ * (schema/variables.toml); tests/fmu still checks them against each other both ways.
  * Variability follows from causality (parameter: fixed; input, output: continuous); start values of
  * parameters are those of uc_params_default, of inputs 0, outputs have none (initial="calculated").
  */

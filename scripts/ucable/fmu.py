@@ -26,8 +26,8 @@ from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFr
 from fmpy import calloc, free
 
 from .paths import require_fmu
+from .variables import NUM_STATIONS
 
-NUM_STATIONS = 21
 STATUS_LABELS = ["OK", "WARNING", "DISCARD", "ERROR", "FATAL", "PENDING"]
 
 _extracted: dict = {}  # (path, mtime) -> (unzip dir, model description)

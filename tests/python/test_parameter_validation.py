@@ -124,8 +124,37 @@ def test_unreachable_anchor_is_rejected(make_cable, name, value, extra, named):
     _expect_rejected_at_initialization(make_cable, name, value, extra, named)
 
 
+def _ranged_parameters(fmu_file):
+    """Numeric parameters with min and max in the model description (from the variable schema)."""
+    return {n: v for n, v in _parameters(fmu_file).items()
+            if v.type in ("Real", "Integer") and v.min is not None and v.max is not None}
+
+
+def _beyond(value: float, direction: int, integer: bool):
+    """A value clearly outside a bound: past it by its own magnitude plus one."""
+    x = float(value) + direction * (abs(float(value)) + 1.0)
+    return int(x) if integer else x
+
+
+def test_every_parameter_has_min_and_max_in_the_model_description(fmu_file):
+    numeric = {n for n, v in _parameters(fmu_file).items() if v.type in ("Real", "Integer")}
+    assert not sorted(numeric - set(_ranged_parameters(fmu_file)))
+
+
+def test_every_parameter_outside_its_model_description_range_is_rejected(make_cable, fmu_file):
+    """The range in the XML is the one the FMU enforces: below min and above max are errors."""
+    ranged = _ranged_parameters(fmu_file)
+    assert len(ranged) > 40
+    for name, v in sorted(ranged.items()):
+        for bound, direction in ((v.min, -1), (v.max, +1)):
+            value = _beyond(bound, direction, v.type == "Integer")
+            _expect_rejected_at_initialization(make_cable, name, value, {}, None)
+
+
 def test_every_parameter_has_a_validation_case(fmu_file):
-    covered = set(CASES) | set(UNREACHABLE_ANCHOR) | set(NO_OUT_OF_RANGE_VALUE)
+    booleans = {n for n, v in _parameters(fmu_file).items() if v.type == "Boolean"}
+    covered = (set(CASES) | set(UNREACHABLE_ANCHOR) | set(NO_OUT_OF_RANGE_VALUE) | booleans
+               | set(_ranged_parameters(fmu_file)))
     missing = sorted(set(_parameters(fmu_file)) - covered)
     assert not missing, f"parameters without an out-of-range case (and maybe without a check): {missing}"
 

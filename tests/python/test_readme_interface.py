@@ -1,4 +1,5 @@
-"""The README's FMU interface tables agree with modelDescription.xml: every variable is listed
+"""The README's FMU interface tables agree with modelDescription.xml (both are generated from the
+variable schema: this checks the generator end to end): every variable is listed
 with the right causality section, unit and default (README defaults are rounded to 6 significant
 digits, hence rel = 1e-5). Needs no built FMU: it reads the checked-in modelDescription.xml."""
 
@@ -26,12 +27,12 @@ def readme_rows():
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
         for token in re.findall(r"`([^`]+)`", cells[0]):
             names = [token]
-            m = re.fullmatch(r"(.+)\.x/y/z", token)
+            m = re.fullmatch(r"(.+)\.([a-z](?:/[a-z])+)", token)  # a vector: name.x/y/z or name.x/y
             if m:
-                names = [f"{m.group(1)}.{c}" for c in "xyz"]
+                names = [f"{m.group(1)}.{c}" for c in m.group(2).split("/")]
             for k, name in enumerate(names):
                 default = cells[2] if section != "output" else None
-                if default is not None and len(names) == 3:
+                if default is not None and len(names) > 1:
                     default = re.findall(r"[-+0-9.e]+", default.split("(")[-1])[k]
                 rows[name] = (section, cells[1], default)
     return rows
