@@ -182,18 +182,8 @@ fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t
             uc_get_values(inst, vr, nvr, value, UC_TYPE_BOOLEAN, "fmi2GetBoolean"));
 }
 
-/* This FMU has no String variables: any value reference is unknown. */
-static fmi2Status no_string_variables(UCInstance* inst, const fmi2ValueReference vr[], size_t nvr,
-                                      const char* function) {
-    if (nvr == 0) return fmi2OK;
-    uc_log_status(&inst->log, fmi2Error, "%s: unknown value reference %u for type String (there are none)",
-                  function, vr != NULL ? vr[0] : 0u);
-    return fmi2Error;
-}
-
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
-    (void)value;
-    GUARDED(c, MASK_GET, "fmi2GetString", no_string_variables(inst, vr, nvr, "fmi2GetString"));
+    GUARDED(c, MASK_GET, "fmi2GetString", uc_get_strings(inst, vr, nvr, value, "fmi2GetString"));
 }
 
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
@@ -211,8 +201,7 @@ fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t
 }
 
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
-    (void)value;
-    GUARDED(c, MASK_SET, "fmi2SetString", no_string_variables(inst, vr, nvr, "fmi2SetString"));
+    GUARDED(c, MASK_SET, "fmi2SetString", uc_set_strings(inst, vr, nvr, value, "fmi2SetString"));
 }
 
 /* ---- FMU states ----------------------------------------------------------------------------------- */

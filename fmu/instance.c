@@ -55,6 +55,7 @@ void uc_instance_reset(UCInstance* inst) {
     inst->terminateRequested = 0;
     memset(&inst->params, 0, sizeof inst->params); /* deterministic padding bytes in saved states */
     uc_params_default(&inst->params);
+    memcpy(&inst->coreParams, &inst->params, sizeof inst->coreParams);
     memset(&inst->inputs, 0, sizeof inst->inputs);
     memset(&inst->outputs, 0, sizeof inst->outputs);
     inst->msg[0] = '\0';

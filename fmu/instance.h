@@ -38,7 +38,8 @@ typedef struct UCInstance {
     double lastSuccessfulTime;
     int terminateRequested;      /* fmi2GetBooleanStatus(fmi2Terminated) */
 
-    UCParams params;
+    UCParams params;             /* as set through the FMI (lineFile is a path) */
+    UCParams coreParams;         /* what the core was created with: params with lineFile's line applied */
     UCInputs inputs;
     UCOutputs outputs;           /* valid when coreReady */
 

@@ -4,6 +4,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "line_file.h"
+
 static double time_tolerance(double t) { return UC_TIME_TOLERANCE * fmax(1.0, fabs(t)); }
 
 static void log_solver_statistics(const UCInstance* inst, const char* when) {
@@ -26,10 +28,17 @@ fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function) {
     if (inst->coreReady) return fmi2OK;
     uc_instance_drop_core(inst);
     inst->msg[0] = '\0';
-    if (uc_params_check(&inst->params, inst->msg, sizeof inst->msg) != 0) {
-        return fail_with_core_message(inst, function, "invalid parameter");
+    memcpy(&inst->coreParams, &inst->params, sizeof inst->coreParams);
+    const int fromFile = inst->params.lineFile[0] != '\0';
+    if (fromFile && uc_line_file_load(inst, &inst->coreParams, function) != fmi2OK) {
+        uc_instance_drop_core(inst);
+        return fmi2Error;
     }
-    inst->cable = uc_create(&inst->params, inst->msg, sizeof inst->msg);
+    if (uc_params_check(&inst->coreParams, inst->msg, sizeof inst->msg) != 0) {
+        return fail_with_core_message(inst, function,
+                                      fromFile ? "invalid parameter (with the line of lineFile)" : "invalid parameter");
+    }
+    inst->cable = uc_create(&inst->coreParams, inst->msg, sizeof inst->msg);
     if (inst->cable == NULL) return fail_with_core_message(inst, function, "cannot create the cable model");
     if (uc_initialize(inst->cable, inst->startTime, &inst->inputs, inst->msg, sizeof inst->msg) != 0) {
         return fail_with_core_message(inst, function, "initialization failed");

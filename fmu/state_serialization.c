@@ -25,6 +25,7 @@ typedef struct UCSavedState {
     UC_ADAPTER_SCALARS(UC_DECLARE_FIELD)
 #undef UC_DECLARE_FIELD
     UCParams params;
+    UCParams coreParams;
     UCInputs inputs;
     UCOutputs outputs;
     size_t coreSize;              /* 0: no core (instantiated, initialization mode, or error) */
@@ -46,6 +47,7 @@ static void copy_adapter_state(UCSavedState* s, const UCInstance* inst) {
     UC_ADAPTER_SCALARS(UC_SAVE_FIELD)
 #undef UC_SAVE_FIELD
     memcpy(&s->params, &inst->params, sizeof s->params);
+    memcpy(&s->coreParams, &inst->coreParams, sizeof s->coreParams);
     memcpy(&s->inputs, &inst->inputs, sizeof s->inputs);
     memcpy(&s->outputs, &inst->outputs, sizeof s->outputs);
 }
@@ -97,9 +99,9 @@ fmi2Status uc_state_get(UCInstance* inst, fmi2FMUstate* state) {
 }
 
 static fmi2Status restore_core(UCInstance* inst, const UCSavedState* s) {
-    if (inst->cable == NULL || memcmp(&inst->params, &s->params, sizeof s->params) != 0) {
+    if (inst->cable == NULL || memcmp(&inst->coreParams, &s->coreParams, sizeof s->coreParams) != 0) {
         uc_instance_drop_core(inst);
-        inst->cable = uc_create(&s->params, inst->msg, sizeof inst->msg);
+        inst->cable = uc_create(&s->coreParams, inst->msg, sizeof inst->msg);
         if (inst->cable == NULL) {
             uc_log_status(&inst->log, fmi2Error, "fmi2SetFMUstate: cannot create the cable model: %s", inst->msg);
             return fmi2Error;
@@ -123,6 +125,7 @@ fmi2Status uc_state_set(UCInstance* inst, fmi2FMUstate state) {
     UC_ADAPTER_SCALARS(UC_RESTORE_FIELD)
 #undef UC_RESTORE_FIELD
     memcpy(&inst->params, &s->params, sizeof s->params);
+    memcpy(&inst->coreParams, &s->coreParams, sizeof s->coreParams);
     memcpy(&inst->inputs, &s->inputs, sizeof s->inputs);
     memcpy(&inst->outputs, &s->outputs, sizeof s->outputs);
     inst->coreReady = s->coreSize > 0;
@@ -174,6 +177,7 @@ static void write_state(Writer* w, const UCSavedState* s) {
     UC_ADAPTER_SCALARS(UC_PUT_FIELD)
 #undef UC_PUT_FIELD
     put(w, &s->params, sizeof s->params);
+    put(w, &s->coreParams, sizeof s->coreParams);
     put(w, &s->inputs, sizeof s->inputs);
     put(w, &s->outputs, sizeof s->outputs);
     if (s->coreSize > 0) put(w, s->core, s->coreSize);
@@ -260,6 +264,7 @@ static fmi2Status read_body(UCInstance* inst, Reader* r, UCSavedState* s) {
     UC_ADAPTER_SCALARS(UC_GET_FIELD)
 #undef UC_GET_FIELD
     get(r, &s->params, sizeof s->params);
+    get(r, &s->coreParams, sizeof s->coreParams);
     get(r, &s->inputs, sizeof s->inputs);
     get(r, &s->outputs, sizeof s->outputs);
     if (s->coreSize > 0) get(r, s->core, s->coreSize);

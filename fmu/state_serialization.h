@@ -2,13 +2,15 @@
  * state_serialization.h - FMU states (fmi2GetFMUstate/SetFMUstate/FreeFMUstate) and their serialized
  * form (FMI 2.0 section 2.1.8, FMI-CHECKLIST 2.6). A state is the adapter state (machine state, times,
  * parameters, inputs, outputs, flags) plus the core bytes of uc_state_save. Restoring into an instance
- * that was never initialized creates the core from the saved parameters first.
+ * that was never initialized creates the core from the saved parameters first (those the core was created
+ * with: a line file is not read again).
  *
  * Serialized layout (native byte order, this platform only):
  *   header: magic "UCFMUST\0", u32 format version, char guid[64], u32 K (UC_NUM_STATIONS),
  *           u32 sizeof(UCParams), u32 sizeof(UCInputs), u32 sizeof(UCOutputs), u64 core size
  *   body:   i32 machine state, f64 startTime, i32 stopTimeDefined, f64 stopTime, f64 time,
- *           f64 lastSuccessfulTime, i32 terminateRequested, UCParams, UCInputs, UCOutputs, core bytes
+ *           f64 lastSuccessfulTime, i32 terminateRequested, UCParams (as set), UCParams (of the core:
+ *           lineFile applied), UCInputs, UCOutputs, core bytes
  * Any mismatch of the header with this binary is rejected with fmi2Error.
  */
 #ifndef UNDERWATERCABLE_FMU_STATE_SERIALIZATION_H
@@ -16,7 +18,7 @@
 
 #include "instance.h"
 
-#define UC_STATE_FORMAT_VERSION 1u
+#define UC_STATE_FORMAT_VERSION 2u
 
 fmi2Status uc_state_get(UCInstance* inst, fmi2FMUstate* state);
 fmi2Status uc_state_set(UCInstance* inst, fmi2FMUstate state);

@@ -93,6 +93,52 @@ fmi2Status uc_set_values(UCInstance* inst, const fmi2ValueReference vr[], size_t
     return fmi2OK;
 }
 
+fmi2Status uc_get_strings(UCInstance* inst, const fmi2ValueReference vr[], size_t nvr, fmi2String values[],
+                          const char* function) {
+    if (check_arrays(inst, vr, nvr, values, function) != fmi2OK) return fmi2Error;
+    for (size_t i = 0; i < nvr; ++i) {
+        const UCVariable* v = find_or_log(inst, vr[i], UC_TYPE_STRING, function);
+        if (v == NULL) return fmi2Error;
+        /* The instance owns the characters; they stay valid until the variable is set again. */
+        values[i] = (const char*)uc_variable_address_const(v, &inst->params, &inst->inputs, &inst->outputs);
+    }
+    return fmi2OK;
+}
+
+/* Copies one string into the variable's zero-filled char array (so equal strings compare equal byte for
+ * byte, as store_value and the saved states do); the caller's memory is not kept. */
+static fmi2Status store_string(UCInstance* inst, const UCVariable* v, const char* value, const char* function) {
+    if (value == NULL) {
+        uc_log_status(&inst->log, fmi2Error, "%s: %s: the value is a NULL pointer (an empty string is \"\")",
+                      function, v->name);
+        return fmi2Error;
+    }
+    /* memchr stops at the first NUL (C11 7.24.5.1): never reads past the end of a short string. */
+    const char* end = memchr(value, '\0', v->size);
+    if (end == NULL) {
+        uc_log_status(&inst->log, fmi2Error, "%s: %s: the string is longer than the %zu bytes this FMU keeps",
+                      function, v->name, v->size - 1);
+        return fmi2Error;
+    }
+    char* target = (char*)uc_variable_address(v, &inst->params, &inst->inputs, &inst->outputs);
+    if (strcmp(target, value) == 0) return fmi2OK;
+    memset(target, 0, v->size);
+    memcpy(target, value, (size_t)(end - value));
+    if (inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
+    return fmi2OK;
+}
+
+fmi2Status uc_set_strings(UCInstance* inst, const fmi2ValueReference vr[], size_t nvr, const fmi2String values[],
+                          const char* function) {
+    if (check_arrays(inst, vr, nvr, values, function) != fmi2OK) return fmi2Error;
+    for (size_t i = 0; i < nvr; ++i) {
+        const UCVariable* v = find_or_log(inst, vr[i], UC_TYPE_STRING, function);
+        if (v == NULL || check_settable(inst, v, function) != fmi2OK) return fmi2Error;
+        if (store_string(inst, v, values[i], function) != fmi2OK) return fmi2Error;
+    }
+    return fmi2OK;
+}
+
 /* Component 0..2 if offset lies in the double[3] at base, else -1. */
 static int component_of(size_t offset, size_t base) {
     if (offset < base || offset >= base + 3 * sizeof(double)) return -1;

@@ -8,7 +8,8 @@
 #define UC_STRUCT_INPUT UCInputs
 #define UC_STRUCT_OUTPUT UCOutputs
 #define UC_VARIABLE_ROW(vr, name, TYPE, CAUSALITY, member) \
-    {vr, name, UC_TYPE_##TYPE, UC_CAUSALITY_##CAUSALITY, offsetof(UC_STRUCT_##CAUSALITY, member)},
+    {vr, name, UC_TYPE_##TYPE, UC_CAUSALITY_##CAUSALITY, offsetof(UC_STRUCT_##CAUSALITY, member), \
+     sizeof(((UC_STRUCT_##CAUSALITY*)0)->member)},
 
 static const UCVariable kVariables[] = {UC_SCHEMA_VARIABLES(UC_VARIABLE_ROW)};
 
@@ -48,7 +49,8 @@ const char* uc_type_name(UCVarType t) {
     switch (t) {
         case UC_TYPE_REAL: return "Real";
         case UC_TYPE_INTEGER: return "Integer";
-        default: return "Boolean";
+        case UC_TYPE_BOOLEAN: return "Boolean";
+        default: return "String";
     }
 }
 

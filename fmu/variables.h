@@ -17,7 +17,7 @@
 extern "C" {
 #endif
 
-typedef enum { UC_TYPE_REAL, UC_TYPE_INTEGER, UC_TYPE_BOOLEAN } UCVarType;
+typedef enum { UC_TYPE_REAL, UC_TYPE_INTEGER, UC_TYPE_BOOLEAN, UC_TYPE_STRING } UCVarType;
 
 /* Causality also names the struct the variable lives in: UCParams, UCInputs or UCOutputs. */
 typedef enum { UC_CAUSALITY_PARAMETER, UC_CAUSALITY_INPUT, UC_CAUSALITY_OUTPUT } UCCausality;
@@ -25,9 +25,10 @@ typedef enum { UC_CAUSALITY_PARAMETER, UC_CAUSALITY_INPUT, UC_CAUSALITY_OUTPUT }
 typedef struct UCVariable {
     unsigned int vr;
     const char* name;
-    UCVarType type;        /* Real: double, Integer and Boolean: int */
+    UCVarType type;        /* Real: double, Integer and Boolean: int, String: char[size], NUL-terminated */
     UCCausality causality;
     size_t offset;         /* byte offset into the struct named by causality */
+    size_t size;           /* bytes of the member (a String holds at most size - 1 characters) */
 } UCVariable;
 
 /* The whole table, sorted by value reference (same order as modelDescription.xml). */
@@ -41,7 +42,7 @@ void* uc_variable_address(const UCVariable* v, UCParams* p, UCInputs* in, UCOutp
 const void* uc_variable_address_const(const UCVariable* v, const UCParams* p, const UCInputs* in,
                                       const UCOutputs* out);
 
-const char* uc_type_name(UCVarType t);           /* "Real", "Integer", "Boolean" */
+const char* uc_type_name(UCVarType t);           /* "Real", "Integer", "Boolean", "String" */
 const char* uc_causality_name(UCCausality c);    /* "parameter", "input", "output" */
 const char* uc_variability_name(UCCausality c);  /* "fixed" or "continuous" */
 

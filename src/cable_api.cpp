@@ -1,11 +1,13 @@
 // cable_api.cpp - the C boundary: every call is wrapped so that no exception escapes.
 #include "cable_api.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <new>
 #include <string>
 
+#include "line_file.h"
 #include "params.h"
 #include "simulation.h"
 
@@ -97,5 +99,26 @@ extern "C" int uc_state_restore(UCCable* c, const void* buffer, size_t size, cha
             return false;
         }
         return c->simulation.restore_state(buffer, size, error);
+    });
+}
+
+extern "C" int uc_line_file_apply(const char* text, size_t length, UCParams* p, double towPoint[3], char* notes,
+                                  size_t notesSize, char* msg, size_t msgSize) {
+    if (notes && notesSize) notes[0] = '\0';
+    return guarded(msg, msgSize, [&](std::string& error) {
+        if ((text == nullptr && length > 0) || p == nullptr) {
+            error = "uc_line_file_apply: NULL pointer";
+            return false;
+        }
+        uc::LineFileLine line;
+        if (!uc::read_line_file(std::string_view(text ? text : "", length), p->lineFileElements, line, error) ||
+            !uc::apply_line_file(line, *p, error)) {
+            return false;
+        }
+        if (towPoint) std::copy(line.towPoint, line.towPoint + 3, towPoint);
+        std::string joined;
+        for (const std::string& note : line.notes) joined += (joined.empty() ? "" : "\n") + note;
+        write_message(notes, notesSize, joined);
+        return true;
     });
 }

@@ -45,6 +45,14 @@ extern "C" {
 
 typedef struct UCCable UCCable;
 
+/* The line of a MoorDyn v2 input file (docs/lines.md), given as its text (length bytes, no terminating
+ * NUL needed), written into *p: line properties, element count (from NumSegs, or p->lineFileElements),
+ * far end (anchor), water depth, gravity and density; the other parameters are kept. towPoint (may be
+ * NULL) receives the deck's vessel point. notes (may be NULL) receives what was ignored or adjusted, one
+ * "line <n>: ..." per line of text. Returns 0, or 1 with msg = "line <n>: <what is wrong or unsupported>". */
+int uc_line_file_apply(const char* text, size_t length, UCParams* p, double towPoint[3], char* notes,
+                       size_t notesSize, char* msg, size_t msgSize);
+
 /* Defaults: the Hopland 1993 tow cable, free lower end, hinged top, 20 elements. */
 void uc_params_default(UCParams* p);
 

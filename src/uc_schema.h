@@ -8,6 +8,7 @@
 
 #define UC_NUM_STATIONS 21
 #define UC_CURRENT_PROFILE_ROWS 10
+#define UC_STRING_CAPACITY 4096
 
 typedef struct UCParams {
     double length; /* length [m]: unstretched length */
@@ -50,6 +51,8 @@ typedef struct UCParams {
     int enableAddedMass; /* enableAddedMass: include the added mass (Can, Cat) */
     int enableTorsion; /* enableTorsion: include the torque term -(H r' × r'')' of the equation of motion */
     int torqueMode; /* torqueMode: torque H: 0 torque-free swivel (H = 0), 1 the `torque` input, 2 from the `twist` input: H = GJ (twist - geometric twist) / length, the geometric twist by parallel transport of frames, H updated at every communication point */
+    char lineFile[UC_STRING_CAPACITY]; /* lineFile: path of a MoorDyn v2 input file describing the line: line types, points and lines from the vessel point to the anchor, water depth, gravity and density ([docs/lines.md](docs/lines.md)); a relative path is looked up in the FMU's `resources/` directory, then in the working directory; empty: the line of the parameters */
+    int lineFileElements; /* lineFileElements: elements of a line read from `lineFile`: 0, from each line's NumSegs by the rule of [docs/lines.md](docs/lines.md); N > 0, about N in total, shared by the lines in proportion to their unstretched length (at least one each) */
 } UCParams;
 
 typedef struct UCInputs {
@@ -96,7 +99,7 @@ typedef struct UCOutputs {
     double nErrorTestFailures; /* solver.nErrorTestFailures: integrator statistics since initialization (debugging) */
 } UCOutputs;
 
-/* X(vr, name, TYPE, CAUSALITY, member): every variable in value-reference order; TYPE is REAL, INTEGER or BOOLEAN, CAUSALITY PARAMETER, INPUT or OUTPUT, member the field of UCParams, UCInputs or UCOutputs */
+/* X(vr, name, TYPE, CAUSALITY, member): every variable in value-reference order; TYPE is REAL, INTEGER, BOOLEAN or STRING (a NUL-terminated char array), CAUSALITY PARAMETER, INPUT or OUTPUT, member the field of UCParams, UCInputs or UCOutputs */
 #define UC_SCHEMA_VARIABLES(X) \
     X(1, "length", REAL, PARAMETER, length) \
     X(2, "diameter", REAL, PARAMETER, diameter) \
@@ -171,6 +174,8 @@ typedef struct UCOutputs {
     X(71, "enableAddedMass", BOOLEAN, PARAMETER, enableAddedMass) \
     X(72, "enableTorsion", BOOLEAN, PARAMETER, enableTorsion) \
     X(73, "torqueMode", INTEGER, PARAMETER, torqueMode) \
+    X(74, "lineFile", STRING, PARAMETER, lineFile) \
+    X(75, "lineFileElements", INTEGER, PARAMETER, lineFileElements) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -351,7 +356,7 @@ typedef struct UCOutputs {
     X(2156, "solver.nNonlinearFailures", REAL, OUTPUT, nNonlinearFailures) \
     X(2157, "solver.nErrorTestFailures", REAL, OUTPUT, nErrorTestFailures) \
 
-/* X(member, value): the start value of every parameter */
+/* X(member, value): the start value of every numeric parameter (Strings start empty: zero-filled) */
 #define UC_SCHEMA_PARAMETER_DEFAULTS(X) \
     X(length, 300.0) \
     X(diameter, 0.0332) \
@@ -426,6 +431,7 @@ typedef struct UCOutputs {
     X(enableAddedMass, 1) \
     X(enableTorsion, 0) \
     X(torqueMode, 0) \
+    X(lineFileElements, 0) \
 
 /* X(member, name, lo, hi, loOpen, hiOpen, rangeText, why): the admissible interval of every numeric parameter (closed or open at each end) */
 #define UC_SCHEMA_PARAMETER_RANGES(X) \
@@ -497,6 +503,7 @@ typedef struct UCOutputs {
     X(initialDirection[1], "initialDirection.y", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "a direction component must be a moderate finite number (the direction is normalized)") \
     X(initialDirection[2], "initialDirection.z", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "a direction component must be a moderate finite number (the direction is normalized)") \
     X(torqueMode, "torqueMode", 0.0, 2.0, 0, 0, "{0 swivel, 1 prescribed torque, 2 prescribed rotation}", "unknown torque mode") \
+    X(lineFileElements, "lineFileElements", 0.0, 1000.0, 0, 0, "[0, 1000]", "0 takes the element counts from the line file; more than 1000 elements are never needed") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -107,9 +107,9 @@ class CableFMU:
             raise KeyError(f"the FMU has no variable named {name!r}") from None
 
     def set(self, values: dict) -> None:
-        """Set parameters or inputs by name (Real, Integer, Boolean), one fmi2Set call per type."""
+        """Set parameters or inputs by name (Real, Integer, Boolean, String), one fmi2Set call per type."""
         groups: dict = {"Real": ([], []), "Integer": ([], []), "Boolean": ([], []),
-                        "Enumeration": ([], [])}
+                        "Enumeration": ([], []), "String": ([], [])}
         for name, value in values.items():
             v = self._var(name)
             vrs, vals = groups[v.type]
@@ -122,6 +122,8 @@ class CableFMU:
             self.slave.setInteger(ints, [int(x) for x in groups["Integer"][1] + groups["Enumeration"][1]])
         if groups["Boolean"][0]:
             self.slave.setBoolean(groups["Boolean"][0], [bool(x) for x in groups["Boolean"][1]])
+        if groups["String"][0]:
+            self.slave.setString(groups["String"][0], [str(x) for x in groups["String"][1]])
 
     def get(self, name: str):
         """One output/parameter by name."""
@@ -132,6 +134,8 @@ class CableFMU:
             return self.slave.getInteger([v.valueReference])[0]
         if v.type == "Boolean":
             return self.slave.getBoolean([v.valueReference])[0]
+        if v.type == "String":
+            return self.slave.getString([v.valueReference])[0].decode("utf-8")
         raise TypeError(f"{name}: unsupported type {v.type}")
 
     def get_reals(self, names) -> np.ndarray:

@@ -6,6 +6,7 @@ from typing import NamedTuple
 
 NUM_STATIONS = 21
 CURRENT_PROFILE_ROWS = 10
+STRING_CAPACITY = 4096
 
 
 class Variable(NamedTuple):
@@ -167,6 +168,10 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              "Include the torque term of the equation of motion (the paper's eq. 9)"),
     Variable('torqueMode', 73, 'parameter', 'Integer', None, 0, 0.0, 2.0,
              'Torque of the cable: 0 torque-free swivel, 1 the torque input, 2 from the twist input (prescribed end rotation)'),
+    Variable('lineFile', 74, 'parameter', 'String', None, '', None, None,
+             "Path of a MoorDyn v2 input file describing the line (relative: against the FMU's resources directory, then the working directory); empty: the line of the parameters"),
+    Variable('lineFileElements', 75, 'parameter', 'Integer', None, 0, 0.0, 1000.0,
+             "Elements of a line read from lineFile: 0, from each line's NumSegs (docs/lines.md); N > 0, about N in total, shared by the lines in proportion to their length"),
     Variable('tow.x', 1001, 'input', 'Real', 'm', 0.0, None, None,
              'x coordinate of the tow point'),
     Variable('tow.y', 1002, 'input', 'Real', 'm', 0.0, None, None,

@@ -80,12 +80,24 @@ std::vector<unsigned int> output_vrs() {
 
 const char* fmu_guid() { return UC_GUID; }
 
-Instance::Instance(const char* name, bool loggingOn) {
+Instance::Instance(const char* name, bool loggingOn, const char* resourceLocation) {
     const fmi2CallbackFunctions callbacks = {capture_logger, nullptr, nullptr, nullptr, &log};
-    c = fmi().Instantiate(name, fmi2CoSimulation, UC_GUID, nullptr, &callbacks, fmi2False, loggingOn);
+    c = fmi().Instantiate(name, fmi2CoSimulation, UC_GUID, resourceLocation, &callbacks, fmi2False, loggingOn);
 }
 
 Instance::~Instance() { fmi().FreeInstance(c); }
+
+fmi2Status Instance::setString(const std::string& name, const char* value) {
+    const fmi2ValueReference vr = vr_of(name);
+    return fmi().SetString(c, &vr, 1, &value);
+}
+
+std::string Instance::getString(const std::string& name) {
+    const fmi2ValueReference vr = vr_of(name);
+    fmi2String value = nullptr;
+    if (fmi().GetString(c, &vr, 1, &value) != fmi2OK || value == nullptr) return "<error>";
+    return value;
+}
 
 fmi2Status Instance::setReal(const std::string& name, double value) {
     const fmi2ValueReference vr = vr_of(name);

@@ -48,7 +48,8 @@ const char* fmu_guid();
 // One instance with its own log; Instance's destructor frees it.
 class Instance {
 public:
-    explicit Instance(const char* name = "cable", bool loggingOn = true);
+    // resourceLocation: the fmuResourceLocation URI given to fmi2Instantiate (none by default).
+    explicit Instance(const char* name = "cable", bool loggingOn = true, const char* resourceLocation = nullptr);
     ~Instance();
     Instance(const Instance&) = delete;
     Instance& operator=(const Instance&) = delete;
@@ -58,6 +59,8 @@ public:
 
     fmi2Status setReal(const std::string& name, double value);
     fmi2Status setInteger(const std::string& name, int value);
+    fmi2Status setString(const std::string& name, const char* value);
+    std::string getString(const std::string& name);
     double getReal(const std::string& name);
     std::vector<double> outputs();            // every Real output, for bitwise comparisons
 

@@ -388,6 +388,9 @@ TEST(Conformance, NoParameterCanBeSetAfterInitialization) {
             } else if (v.type == UC_TYPE_INTEGER) {
                 const fmi2Integer value = 1;
                 status = fmi().SetInteger(inst.c, &v.vr, 1, &value);
+            } else if (v.type == UC_TYPE_STRING) {
+                const fmi2String value = "line.dat";
+                status = fmi().SetString(inst.c, &v.vr, 1, &value);
             } else {
                 const fmi2Boolean value = fmi2False;
                 status = fmi().SetBoolean(inst.c, &v.vr, 1, &value);

@@ -144,6 +144,14 @@ TEST_F(ModelDescription, StartValuesAreTheValuesTheFmuUses) {
             continue;
         }
         ASSERT_EQ(x->typeAttributes.count("start"), 1u) << t.name;
+        if (t.type == UC_TYPE_STRING) {
+            UCInputs inputs = {};
+            UCOutputs outputs = {};
+            const char* fmuStart = static_cast<const char*>(uc_variable_address_const(&t, &defaults, &inputs, &outputs));
+            EXPECT_EQ(x->typeAttributes.at("start"), fmuStart) << t.name;
+            EXPECT_EQ(t.size, static_cast<size_t>(UC_STRING_CAPACITY)) << t.name;
+            continue;
+        }
         EXPECT_EQ(parse_start(*x), table_start(t)) << t.name << ": start " << x->typeAttributes.at("start");
         if (t.causality == UC_CAUSALITY_INPUT) {
             EXPECT_EQ(x->attributes.count("initial"), 0u) << t.name;

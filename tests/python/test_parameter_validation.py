@@ -82,6 +82,8 @@ NO_OUT_OF_RANGE_VALUE = {
     "currentProfile.depth[1]": "any finite value is accepted (no lower bound, e.g. -50 m above the surface)",
     **{f"currentProfile.{c}[{k}]": "any finite current velocity is admissible"
        for c in "xy" for k in range(1, 11)},
+    "lineFile": "String: any path is admissible; a file that cannot be read or a refused deck is an error "
+                "at initialization (tests/python/test_line_file.py)",
 }
 
 

@@ -59,6 +59,8 @@ def test_every_variable_is_documented_with_its_unit_and_default(model_variables)
         first = default.split()[0]
         if v.type == "Boolean":
             assert first == str(v.start).lower(), f"{v.name}: README default {first}"
+        elif v.type == "String":
+            assert first == f'"{v.start}"', f"{v.name}: README default {first}, modelDescription {v.start!r}"
         else:
             assert float(first) == pytest.approx(float(v.start), rel=1e-5), \
                 f"{v.name}: README default {first}, modelDescription {v.start}"

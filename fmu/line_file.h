@@ -1,0 +1,25 @@
+/*
+ * line_file.h - the parameter lineFile: the path of a MoorDyn v2 input file. A relative path is looked up
+ * in the FMU's resources directory (fmuResourceLocation of fmi2Instantiate, a file: URI) first, then in
+ * the working directory. The adapter reads the file; the core (uc_line_file_apply) reads its text.
+ */
+#ifndef UNDERWATERCABLE_FMU_LINE_FILE_H
+#define UNDERWATERCABLE_FMU_LINE_FILE_H
+
+#include <stddef.h>
+
+#include "instance.h"
+
+/* Largest line file read (a deck of a few lines is a few kB). */
+#define UC_LINE_FILE_MAX_BYTES ((size_t)16 << 20)
+
+/* Reads inst->params.lineFile and writes its line into *p (the parameters the core is created with).
+ * Logs the file used and the reader's notes (logEvents); an unreadable file (naming every path tried) or
+ * a refused deck (naming the file and its line) is fmi2Error, logged naming `function`. */
+fmi2Status uc_line_file_load(UCInstance* inst, UCParams* p, const char* function);
+
+/* The local path of a file: URI ("file:///a/b", "file://localhost/a/b", "file:/a/b"; %XX decoded) into
+ * path; 0 on success, non-zero when uri is not such a URI or path is too small. */
+int uc_file_uri_to_path(const char* uri, char* path, size_t size);
+
+#endif /* UNDERWATERCABLE_FMU_LINE_FILE_H */

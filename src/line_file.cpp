@@ -1,0 +1,791 @@
+// line_file.cpp - the reader of MoorDyn v2 input files (docs/lines.md): rows of the text by section,
+// then the tables (options, line types, points, lines) checked row by row, then the chain of lines from
+// the vessel point to the far end, converted into our conventions.
+#include "line_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <initializer_list>
+#include <optional>
+
+namespace uc {
+namespace {
+
+// ------------------------------------------------------------------------------------------- text
+struct Row {
+    int number = 0;                        // 1-based line of the file
+    std::vector<std::string_view> tokens;  // up to the first token holding '#', MoorDyn's comment mark
+};
+
+std::vector<std::string_view> split_lines(std::string_view text) {
+    std::vector<std::string_view> lines;
+    size_t begin = 0;
+    for (size_t i = 0; i < text.size(); ++i) {
+        if (text[i] != '\n' && text[i] != '\r') continue;
+        lines.push_back(text.substr(begin, i - begin));
+        if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+        begin = i + 1;
+    }
+    if (begin < text.size()) lines.push_back(text.substr(begin));
+    return lines;
+}
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+
+std::vector<std::string_view> tokenize(std::string_view line) {
+    std::vector<std::string_view> tokens;
+    size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && is_blank(line[i])) ++i;
+        const size_t begin = i;
+        while (i < line.size() && !is_blank(line[i])) ++i;
+        if (i == begin) break;
+        const std::string_view token = line.substr(begin, i - begin);
+        if (token.find('#') != std::string_view::npos) break;
+        tokens.push_back(token);
+    }
+    return tokens;
+}
+
+std::string upper(std::string_view s) {
+    std::string u(s);
+    for (char& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return u;
+}
+
+std::string lower(std::string_view s) {
+    std::string u(s);
+    for (char& c : u) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return u;
+}
+
+// A token as it may appear in a message: printable, and short.
+std::string quoted(std::string_view token) {
+    std::string q = "'";
+    for (size_t i = 0; i < token.size() && i < 40; ++i) {
+        const unsigned char c = static_cast<unsigned char>(token[i]);
+        q += std::isprint(c) ? static_cast<char>(c) : '?';
+    }
+    if (token.size() > 40) q += "...";
+    return q + "'";
+}
+
+// A number as the deck spells it (for messages).
+std::string shown(std::string_view token) {
+    const std::string q = quoted(token);
+    return q.substr(1, q.size() - 2);
+}
+
+std::string at_line(int row, const std::string& what) { return "line " + std::to_string(row) + ": " + what; }
+
+std::string number_text(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.17g", v);
+    return buffer;
+}
+
+// A finite number, the whole token (locale-independent, unlike strtod).
+std::optional<double> to_number(std::string_view token) {
+    if (!token.empty() && token[0] == '+') token.remove_prefix(1);
+    double v = 0.0;
+    const char* end = token.data() + token.size();
+    const auto [ptr, ec] = std::from_chars(token.data(), end, v);
+    if (ec != std::errc() || ptr != end || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+
+// ------------------------------------------------------------------------------------------- sections
+enum class Kind { Options, LineTypes, RodTypes, Bodies, Rods, Points, Lines, Failure, Control, ExternalLoads,
+                  SyropeIC, Outputs, Other };
+
+struct SectionName {
+    Kind kind;
+    const char* keyword;  // as MoorDyn finds it: in the upper-cased header line
+};
+
+// The header words MoorDyn v2 recognizes, more specific first ("LINE TYPES" before "LINES").
+constexpr SectionName kSectionNames[] = {
+    {Kind::LineTypes, "LINE TYPES"}, {Kind::LineTypes, "LINE DICTIONARY"},
+    {Kind::RodTypes, "ROD TYPES"}, {Kind::RodTypes, "ROD DICTIONARY"},
+    {Kind::Bodies, "BODIES"}, {Kind::Bodies, "BODY LIST"}, {Kind::Bodies, "BODY PROPERTIES"},
+    {Kind::Rods, "RODS"}, {Kind::Rods, "ROD LIST"}, {Kind::Rods, "ROD PROPERTIES"},
+    {Kind::Points, "POINTS"}, {Kind::Points, "POINT LIST"}, {Kind::Points, "POINT PROPERTIES"},
+    {Kind::Points, "CONNECTION PROPERTIES"}, {Kind::Points, "NODE PROPERTIES"},
+    {Kind::Lines, "LINES"}, {Kind::Lines, "LINE LIST"}, {Kind::Lines, "LINE PROPERTIES"},
+    {Kind::Options, "OPTIONS"}, {Kind::Failure, "FAILURE"}, {Kind::Control, "CONTROL"},
+    {Kind::ExternalLoads, "EXTERNAL LOADS"}, {Kind::SyropeIC, "SYROPE IC"}, {Kind::Outputs, "OUTPUT"},
+};
+
+const char* title(Kind kind) {
+    switch (kind) {
+        case Kind::Options: return "OPTIONS";
+        case Kind::LineTypes: return "LINE TYPES";
+        case Kind::RodTypes: return "ROD TYPES";
+        case Kind::Bodies: return "BODIES";
+        case Kind::Rods: return "RODS";
+        case Kind::Points: return "POINTS";
+        case Kind::Lines: return "LINES";
+        case Kind::Failure: return "FAILURE";
+        case Kind::Control: return "CONTROL";
+        case Kind::ExternalLoads: return "EXTERNAL LOADS";
+        case Kind::SyropeIC: return "SYROPE IC";
+        case Kind::Outputs: return "OUTPUTS";
+        default: return "?";
+    }
+}
+
+// Sections whose rows describe objects outside the supported subset, and why.
+const char* unsupported(Kind kind) {
+    switch (kind) {
+        case Kind::Bodies: return "bodies are not supported";
+        case Kind::Rods: return "rods are not supported";
+        case Kind::Failure: return "line failures are not supported";
+        case Kind::Control: return "line length control is not supported";
+        case Kind::ExternalLoads: return "external loads on points, rods and bodies are not supported";
+        case Kind::SyropeIC: return "the Syrope model is not supported";
+        default: return nullptr;
+    }
+}
+
+Kind classify_header(std::string_view line) {
+    const std::string u = upper(line);
+    for (const SectionName& s : kSectionNames) {
+        if (u.find(s.keyword) != std::string::npos) return s.kind;
+    }
+    return Kind::Other;
+}
+
+struct Section {
+    int header = 0;  // line of its header
+    std::vector<Row> rows;
+};
+
+// The rows of the text by section. A header is a line holding "---"; text outside the known sections
+// (the front matter, blocks MoorDyn does not read) is skipped, as MoorDyn does. Tables have a line of
+// column names and a line of units after the header; options and outputs do not.
+bool collect_sections(std::string_view text, std::vector<std::optional<Section>>& sections, std::string& error) {
+    sections.assign(static_cast<size_t>(Kind::Other) + 1, std::nullopt);
+    const std::vector<std::string_view> lines = split_lines(text);
+    Section* current = nullptr;
+    Kind kind = Kind::Other;
+    int headerLinesLeft = 0;
+    for (size_t i = 0; i < lines.size(); ++i) {
+        const int number = static_cast<int>(i) + 1;
+        if (lines[i].find("---") != std::string_view::npos) {
+            if (current && headerLinesLeft > 0) {
+                error = at_line(current->header, std::string("the ") + title(kind) +
+                                                     " table needs a line of column names and a line of units");
+                return false;
+            }
+            kind = classify_header(lines[i]);
+            current = nullptr;
+            if (kind == Kind::Other) continue;
+            auto& slot = sections[static_cast<size_t>(kind)];
+            if (slot) {
+                error = at_line(number, std::string("a second ") + title(kind) + " section (the first is at line " +
+                                            std::to_string(slot->header) + ")");
+                return false;
+            }
+            slot = Section{number, {}};
+            current = &*slot;
+            headerLinesLeft = (kind == Kind::Options || kind == Kind::Outputs) ? 0 : 2;
+            continue;
+        }
+        if (current == nullptr) continue;
+        if (headerLinesLeft > 0) {
+            --headerLinesLeft;
+            continue;
+        }
+        Row row{number, tokenize(lines[i])};
+        if (row.tokens.empty()) continue;
+        if (kind == Kind::Outputs && upper(row.tokens[0]) == "END") {
+            current = nullptr;  // MoorDyn stops reading outputs at END
+            continue;
+        }
+        current->rows.push_back(std::move(row));
+    }
+    if (current && headerLinesLeft > 0) {
+        error = at_line(current->header,
+                        std::string("the ") + title(kind) + " table needs a line of column names and a line of units");
+        return false;
+    }
+    return true;
+}
+
+// ------------------------------------------------------------------------------------------- fields
+// Reads the fields of one row; the first failure is kept with its line and column name.
+class Fields {
+public:
+    Fields(const Row& row, std::string& error) : row_(row), error_(error) {}
+
+    bool ok() const { return ok_; }
+    bool fail(const std::string& what) {
+        if (ok_) error_ = at_line(row_.number, what);
+        ok_ = false;
+        return false;
+    }
+    std::string_view token(size_t i) const { return i < row_.tokens.size() ? row_.tokens[i] : std::string_view(); }
+
+    // A finite number in [lo, hi] (bounds in the message as the column's rule).
+    double number(size_t i, const char* column, double lo = -HUGE_VAL, double hi = HUGE_VAL, const char* rule = nullptr) {
+        if (!ok_) return 0.0;
+        const std::optional<double> v = to_number(token(i));
+        if (!v) {
+            fail(std::string(column) + " " + quoted(token(i)) + " is not a number");
+            return 0.0;
+        }
+        if (*v < lo || *v > hi) {
+            fail(std::string(column) + " = " + shown(token(i)) + ": " + (rule ? rule : "out of range"));
+            return 0.0;
+        }
+        return *v;
+    }
+    double non_negative(size_t i, const char* column) { return number(i, column, 0.0, HUGE_VAL, "must not be negative"); }
+    double positive(size_t i, const char* column) {
+        const double v = number(i, column, 0.0, HUGE_VAL, "must be positive");
+        if (ok_ && !(v > 0.0)) fail(std::string(column) + " = " + shown(token(i)) + ": must be positive");
+        return v;
+    }
+    // A whole number in [lo, hi] ("20" or "20.0", as MoorDyn's atoi reads the former).
+    int integer(size_t i, const char* column, int lo, int hi, const char* rule) {
+        const double v = number(i, column);
+        if (!ok_) return 0;
+        if (v != std::floor(v)) {
+            fail(std::string(column) + " " + quoted(token(i)) + " is not a whole number");
+            return 0;
+        }
+        if (v < lo || v > hi) {
+            fail(std::string(column) + " = " + shown(token(i)) + ": " + rule);
+            return 0;
+        }
+        return static_cast<int>(v);
+    }
+
+private:
+    const Row& row_;
+    std::string& error_;
+    bool ok_ = true;
+};
+
+// ------------------------------------------------------------------------------------------- tables
+struct Options {
+    double waterDepth = 0.0;  // MoorDyn's default: 0, then the depth of the deepest point
+    double gravity = kMoorDynGravity;
+    double waterDensity = kMoorDynWaterDensity;
+};
+
+bool is_one_of(const std::string& name, std::initializer_list<const char*> names) {
+    for (const char* n : names) {
+        if (name == n) return true;
+    }
+    return false;
+}
+
+bool read_options(const Section& section, Options& options, std::vector<std::string>& notes, std::string& error) {
+    for (const Row& row : section.rows) {
+        Fields f(row, error);
+        if (row.tokens.size() < 2) {
+            notes.push_back(at_line(row.number, "ignored: an option is a value followed by its name"));
+            continue;
+        }
+        const std::string name = lower(row.tokens[1]);
+        const std::string name_shown(row.tokens[1]);
+        if (name == "wtrdpth") {
+            if (!to_number(row.tokens[0])) {
+                return f.fail("WtrDpth " + quoted(row.tokens[0]) +
+                              " is not a number (a bathymetry file is not supported: the seabed is flat)");
+            }
+            options.waterDepth = f.number(0, "WtrDpth", 0.0, HUGE_VAL, "a water depth must not be negative");
+        } else if (is_one_of(name, {"g", "gravity"})) {
+            options.gravity = f.number(0, name_shown.c_str(), 0.0, HUGE_VAL, "gravity must not be negative");
+        } else if (is_one_of(name, {"rho", "rhow", "wtrdnsty"})) {
+            options.waterDensity = f.number(0, name_shown.c_str(), 0.0, HUGE_VAL, "a density must not be negative");
+        } else if (is_one_of(name, {"wavekin", "currents"})) {
+            const double v = f.number(0, name_shown.c_str());
+            if (f.ok() && v != 0.0) {
+                return f.fail(name_shown + " = " + shown(row.tokens[0]) +
+                              ": MoorDyn's wave and current kinematics are not supported (0 only; the current is "
+                              "given by the FMU's current.* inputs and currentProfile.* parameters)");
+            }
+        } else if (name == "seafloorfile") {
+            return f.fail("SeafloorFile: a bathymetry file is not supported (the seabed is flat, at WtrDpth)");
+        } else if (is_one_of(name, {"kbot", "kb", "cbot", "cb", "frictioncoefficient", "fricdamp", "statdynfricscale"})) {
+            notes.push_back(at_line(row.number, name_shown + " ignored: the seabed contact is set by the FMU's parameters "
+                                                        "enableSeabed, seabedStiffness (per unit length: kBot x Diam), "
+                                                        "seabedDamping (cBot x Diam) and seabedFriction"));
+        } else if (is_one_of(name, {"dtm", "dt", "cfl", "tscheme", "dtout"})) {
+            notes.push_back(at_line(row.number, name_shown + " ignored: the FMU's integrator chooses its own steps "
+                                                        "(relTol, absTol) between communication points"));
+        } else if (is_one_of(name, {"dtic", "icdt", "tmaxic", "ictmax", "cdscaleic", "icdfac", "threshic", "icthresh",
+                                    "gendynamicic", "icgendynamic", "fileic", "icfile"})) {
+            notes.push_back(at_line(row.number, name_shown + " ignored: the FMU starts from its own static equilibrium "
+                                                        "(initMode)"));
+        } else if (is_one_of(name, {"writelog", "writeunits", "disableoutput", "disableouttime", "dtwave",
+                                    "unifycurrentgrid"})) {
+            notes.push_back(at_line(row.number, name_shown + " ignored: not used by the FMU"));
+        } else {
+            notes.push_back(at_line(row.number, "unknown option " + quoted(row.tokens[1]) + " ignored"));
+        }
+        if (!f.ok()) return false;
+    }
+    return true;
+}
+
+struct LineType {
+    std::string name;
+    double diameter, massPerLength, EA, BA, EI, Cd, Ca, CdAx, CaAx;
+    int row;
+};
+
+bool read_line_type(const Row& row, LineType& t, std::string& error) {
+    Fields f(row, error);
+    const size_t n = row.tokens.size();
+    if (n != 10 && n != 11 && n != 13) {
+        return f.fail("a line type has 10 fields (TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx), "
+                      "optionally followed by Cl or by Cl dF cF; this row has " + std::to_string(n));
+    }
+    t.name = std::string(row.tokens[0]);
+    t.row = row.number;
+    t.diameter = f.positive(1, "Diam");
+    t.massPerLength = f.positive(2, "Mass/m");
+    const std::string_view ea = f.token(3), ba = f.token(4);
+    if (ea.find('|') != std::string_view::npos || upper(ea).rfind("SYROPE:", 0) == 0) {
+        return f.fail("EA " + quoted(ea) + ": viscoelastic and Syrope axial models are not supported (a constant EA)");
+    }
+    if (!to_number(ea)) return f.fail("EA " + quoted(ea) + ": a non-linear stiffness (table) is not supported (a constant EA)");
+    t.EA = f.positive(3, "EA");
+    if (ba.find('|') != std::string_view::npos) {
+        return f.fail("BA/-zeta " + quoted(ba) + ": viscoelastic damping is not supported (one BA or -zeta)");
+    }
+    if (!to_number(ba)) {
+        return f.fail("BA/-zeta " + quoted(ba) + ": a non-linear damping (table) is not supported (one BA or -zeta)");
+    }
+    t.BA = f.number(4, "BA/-zeta");
+    if (!to_number(f.token(5))) {
+        return f.fail("EI " + quoted(f.token(5)) + ": a non-linear bending stiffness (table) is not supported");
+    }
+    t.EI = f.non_negative(5, "EI");
+    t.Cd = f.non_negative(6, "Cd");
+    t.Ca = f.non_negative(7, "Ca");
+    t.CdAx = f.non_negative(8, "CdAx");
+    t.CaAx = f.non_negative(9, "CaAx");
+    if (n > 10) {
+        const double cl = f.number(10, "Cl");
+        if (f.ok() && cl != 0.0) return f.fail("Cl = " + shown(f.token(10)) + ": vortex-induced vibration is not supported");
+        if (n == 13) {
+            f.number(11, "dF");
+            f.number(12, "cF");
+        }
+    }
+    return f.ok();
+}
+
+enum class PointKind { Fixed, Vessel, Free };
+
+struct Point {
+    int id = 0;
+    PointKind kind = PointKind::Free;
+    double position[3] = {0.0, 0.0, 0.0};
+    double mass = 0.0, volume = 0.0, CdA = 0.0, Ca = 0.0;
+    int row = 0;
+    std::vector<int> lines;  // indices of the lines attached
+};
+
+// The attachment word of a point: letters (case-insensitive), maybe followed by a number (Body2).
+bool read_point_kind(Fields& f, std::string_view word, PointKind& kind) {
+    const std::string u = upper(word);
+    size_t letters = 0;
+    while (letters < u.size() && std::isalpha(static_cast<unsigned char>(u[letters]))) ++letters;
+    const std::string head = u.substr(0, letters);
+    if (is_one_of(head, {"ANCHOR", "FIXED", "FIX"})) {
+        kind = PointKind::Fixed;
+    } else if (is_one_of(head, {"FAIRLEAD", "VESSEL", "VES", "COUPLED", "CPLD"})) {
+        kind = PointKind::Vessel;
+    } else if (is_one_of(head, {"POINT", "CONNECT", "CON", "FREE"})) {
+        kind = PointKind::Free;
+    } else if (head == "BODY" || head == "TURBINE") {
+        return f.fail("a point attached to " + quoted(word) + ": bodies are not supported (Fixed, Vessel, Coupled "
+                      "or Free points only)");
+    } else {
+        return f.fail("unknown point attachment " + quoted(word) + " (Fixed, Vessel, Coupled or Free)");
+    }
+    return true;
+}
+
+bool read_point(const Row& row, int expectedId, Point& p, std::vector<std::string>& notes, std::string& error) {
+    Fields f(row, error);
+    const size_t n = row.tokens.size();
+    if (n != 9 && n != 12) {
+        return f.fail("a point has 9 fields (ID Attachment X Y Z Mass Volume CdA CA), or 12 with FX FY FZ after "
+                      "Volume; this row has " + std::to_string(n));
+    }
+    p.id = f.integer(0, "ID", 1, 1 << 30, "must be positive");
+    if (f.ok() && p.id != expectedId) {
+        return f.fail("point ID " + std::to_string(p.id) + ": IDs must be 1, 2, 3, ... in order (expected " +
+                      std::to_string(expectedId) + ")");
+    }
+    if (!f.ok() || !read_point_kind(f, row.tokens[1], p.kind)) return false;
+    static const char* const kAxes[] = {"X", "Y", "Z"};
+    for (int k = 0; k < 3; ++k) p.position[k] = f.number(2 + k, kAxes[k]);
+    p.mass = f.non_negative(5, "Mass");
+    p.volume = f.non_negative(6, "Volume");
+    const size_t c = n == 12 ? 10 : 7;
+    if (n == 12) {
+        const double force[3] = {f.number(7, "FX"), f.number(8, "FY"), f.number(9, "FZ")};
+        if (f.ok() && (force[0] != 0.0 || force[1] != 0.0 || force[2] != 0.0)) {
+            if (p.kind == PointKind::Free) return f.fail("a steady force on a Free point is not supported");
+            notes.push_back(at_line(row.number, "FX FY FZ of a Fixed or Vessel point ignored (its motion is given)"));
+        }
+    }
+    p.CdA = f.non_negative(c, "CdA");
+    p.Ca = f.non_negative(c + 1, "CA");
+    p.row = row.number;
+    if (f.ok() && p.kind != PointKind::Free && (p.mass != 0.0 || p.volume != 0.0 || p.CdA != 0.0 || p.Ca != 0.0)) {
+        notes.push_back(at_line(row.number, "Mass, Volume, CdA and CA of a Fixed or Vessel point ignored (its motion "
+                                            "is given)"));
+    }
+    return f.ok();
+}
+
+struct Line {
+    int id = 0;
+    int type = 0;           // index into the line types
+    int end[2] = {0, 0};    // point indices of AttachA, AttachB
+    double length = 0.0;
+    int numSegs = 0;
+    int row = 0;
+};
+
+// AttachA/AttachB: a point ID ("3", "P3", "Point3", "C3", "Con3"); rod ends ("R1A") are not supported.
+bool read_attachment(Fields& f, std::string_view word, const char* column, int nPoints, int& index) {
+    const std::string u = upper(word);
+    size_t letters = 0;
+    while (letters < u.size() && std::isalpha(static_cast<unsigned char>(u[letters]))) ++letters;
+    const std::string head = u.substr(0, letters), digits = u.substr(letters);
+    if (is_one_of(head, {"R", "ROD"})) {
+        return f.fail(std::string(column) + " " + quoted(word) + ": rods are not supported (lines join points)");
+    }
+    const bool numeric = !digits.empty() && digits.size() < 9 &&
+                         std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!is_one_of(head, {"", "P", "POINT", "C", "CON"}) || !numeric) {
+        return f.fail(std::string(column) + " " + quoted(word) + " is not a point ID");
+    }
+    const int id = std::stoi(digits);
+    if (id < 1 || id > nPoints) {
+        return f.fail(std::string(column) + " " + quoted(word) + ": there is no point " + std::to_string(id) +
+                      " (the POINTS table has " + std::to_string(nPoints) + ")");
+    }
+    index = id - 1;
+    return true;
+}
+
+bool read_line(const Row& row, int expectedId, const std::vector<LineType>& types, int nPoints, Line& l,
+               std::string& error) {
+    Fields f(row, error);
+    if (row.tokens.size() < 6) {
+        return f.fail("a line has the fields ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs; this row has " +
+                      std::to_string(row.tokens.size()));
+    }
+    l.id = f.integer(0, "ID", 1, 1 << 30, "must be positive");
+    if (f.ok() && l.id != expectedId) {
+        return f.fail("line ID " + std::to_string(l.id) + ": IDs must be 1, 2, 3, ... in order (expected " +
+                      std::to_string(expectedId) + ")");
+    }
+    if (!f.ok()) return false;
+    l.type = -1;
+    for (size_t k = 0; k < types.size(); ++k) {
+        if (types[k].name == row.tokens[1]) l.type = static_cast<int>(k);
+    }
+    if (l.type < 0) {
+        std::string known;
+        for (const LineType& t : types) known += (known.empty() ? "" : ", ") + quoted(t.name);
+        return f.fail("line type " + quoted(row.tokens[1]) + " is not among the LINE TYPES (" + known + ")");
+    }
+    if (!read_attachment(f, row.tokens[2], "AttachA", nPoints, l.end[0]) ||
+        !read_attachment(f, row.tokens[3], "AttachB", nPoints, l.end[1])) {
+        return false;
+    }
+    if (l.end[0] == l.end[1]) return f.fail("AttachA and AttachB are the same point");
+    l.length = f.positive(4, "UnstrLen");
+    l.numSegs = f.integer(5, "NumSegs", 1, 100000, "must be between 1 and 100000");
+    l.row = row.number;
+    return f.ok();
+}
+
+// ------------------------------------------------------------------------------------------- the chain
+const char* kind_name(PointKind kind) {
+    switch (kind) {
+        case PointKind::Fixed: return "Fixed";
+        case PointKind::Vessel: return "Vessel";
+        default: return "Free";
+    }
+}
+
+// The lines in order from the vessel point: (line index, reversed) pairs, and the far-end point.
+bool walk_chain(const std::vector<Point>& points, const std::vector<Line>& lines,
+                std::vector<std::pair<int, bool>>& chain, int& farPoint, std::string& error) {
+    int vessel = -1, fixed = -1;
+    for (size_t i = 0; i < points.size(); ++i) {
+        const Point& p = points[i];
+        int& slot = p.kind == PointKind::Vessel ? vessel : fixed;
+        if (p.kind == PointKind::Free) continue;
+        if (slot >= 0) {
+            error = at_line(p.row, std::string("a second ") + kind_name(p.kind) + " point (the first is point " +
+                                       std::to_string(points[slot].id) + "): one line from one vessel point to one "
+                                       "anchor is supported");
+            return false;
+        }
+        slot = static_cast<int>(i);
+    }
+    if (vessel < 0) {
+        error = "the POINTS table has no Vessel or Coupled point: the tow point, where the line starts";
+        return false;
+    }
+    for (const Point& p : points) {
+        if (p.lines.empty()) {
+            error = at_line(p.row, "point " + std::to_string(p.id) + " is not attached to any line");
+            return false;
+        }
+        if (p.lines.size() > 2 || (p.kind != PointKind::Free && p.lines.size() > 1)) {
+            error = at_line(p.row, std::string(kind_name(p.kind)) + " point " + std::to_string(p.id) + " joins " +
+                                       std::to_string(p.lines.size()) + " lines: several lines or chains at a point "
+                                       "are not supported (one chain of lines, the vessel and the anchor at its ends)");
+            return false;
+        }
+    }
+    std::vector<bool> used(lines.size(), false);
+    int point = vessel, line = points[vessel].lines[0];
+    while (true) {
+        const Line& l = lines[line];
+        const bool reversed = l.end[1] == point;  // the line runs from AttachB at the tow side
+        chain.emplace_back(line, reversed);
+        used[line] = true;
+        point = l.end[reversed ? 0 : 1];
+        const Point& p = points[point];
+        if (p.lines.size() == 1) break;
+        line = p.lines[0] == line ? p.lines[1] : p.lines[0];
+        if (used[line]) break;  // a closed loop: reported below as a line off the chain
+    }
+    farPoint = point;
+    for (size_t k = 0; k < lines.size(); ++k) {
+        if (!used[k]) {
+            error = at_line(lines[k].row, "line " + std::to_string(lines[k].id) + " is not on the chain of lines "
+                                          "from the vessel point to its far end (one chain only)");
+            return false;
+        }
+    }
+    if (points[farPoint].lines.size() != 1) {
+        error = at_line(points[farPoint].row, "the lines form a closed loop");
+        return false;
+    }
+    if (fixed >= 0 && fixed != farPoint) {
+        error = at_line(points[fixed].row, "the Fixed point " + std::to_string(points[fixed].id) +
+                                               " is not the far end of the chain");
+        return false;
+    }
+    return true;
+}
+
+// Our elements for each line: the rule per line, or `total` shared in proportion to the lengths.
+void assign_elements(std::vector<LineFileSection>& sections, int total) {
+    double length = 0.0;
+    for (const LineFileSection& s : sections) length += s.length;
+    for (LineFileSection& s : sections) {
+        s.elements = total > 0 ? std::max(1, static_cast<int>(std::lround(total * s.length / length)))
+                               : elements_for_segments(s.numSegs);
+    }
+}
+
+}  // namespace
+
+int elements_for_segments(int numSegs) { return std::max(1, (numSegs + 1) / 2); }
+
+bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& out, std::string& error) {
+    out = LineFileLine();
+    std::vector<std::optional<Section>> sections;
+    if (!collect_sections(text, sections, error)) return false;
+    auto section = [&](Kind kind) -> const std::optional<Section>& { return sections[static_cast<size_t>(kind)]; };
+
+    for (Kind kind : {Kind::Bodies, Kind::Rods, Kind::Failure, Kind::Control, Kind::ExternalLoads, Kind::SyropeIC}) {
+        if (section(kind) && !section(kind)->rows.empty()) {
+            error = at_line(section(kind)->rows[0].number, std::string(unsupported(kind)) + " (" + title(kind) +
+                                                                " section)");
+            return false;
+        }
+    }
+    if (section(Kind::RodTypes) && !section(Kind::RodTypes)->rows.empty()) {
+        out.notes.push_back(at_line(section(Kind::RodTypes)->header, "ROD TYPES ignored (there are no rods)"));
+    }
+    if (section(Kind::Outputs) && !section(Kind::Outputs)->rows.empty()) {
+        out.notes.push_back(at_line(section(Kind::Outputs)->header, "OUTPUTS ignored: the FMU's outputs are its "
+                                                                    "variables (towForce, tension[k], shape.*, ...)"));
+    }
+    for (Kind kind : {Kind::LineTypes, Kind::Points, Kind::Lines}) {
+        if (!section(kind)) {
+            error = std::string("the deck has no ") + title(kind) + " section (a header line such as ---- " +
+                    title(kind) + " ----)";
+            return false;
+        }
+        if (section(kind)->rows.empty()) {
+            error = at_line(section(kind)->header, std::string("the ") + title(kind) + " table is empty");
+            return false;
+        }
+    }
+
+    Options options;
+    if (section(Kind::Options) && !read_options(*section(Kind::Options), options, out.notes, error)) return false;
+
+    std::vector<LineType> types;
+    for (const Row& row : section(Kind::LineTypes)->rows) {
+        LineType t{};
+        if (!read_line_type(row, t, error)) return false;
+        for (const LineType& other : types) {
+            if (other.name == t.name) {
+                error = at_line(row.number, "line type " + quoted(t.name) + " is defined twice (also at line " +
+                                                std::to_string(other.row) + ")");
+                return false;
+            }
+        }
+        types.push_back(t);
+    }
+
+    std::vector<Point> points;
+    for (const Row& row : section(Kind::Points)->rows) {
+        Point p;
+        if (!read_point(row, static_cast<int>(points.size()) + 1, p, out.notes, error)) return false;
+        points.push_back(p);
+    }
+
+    std::vector<Line> lines;
+    for (const Row& row : section(Kind::Lines)->rows) {
+        Line l;
+        if (!read_line(row, static_cast<int>(lines.size()) + 1, types, static_cast<int>(points.size()), l, error)) {
+            return false;
+        }
+        for (int e : l.end) points[e].lines.push_back(static_cast<int>(lines.size()));
+        lines.push_back(l);
+    }
+
+    std::vector<std::pair<int, bool>> chain;
+    int farPoint = -1;
+    if (!walk_chain(points, lines, chain, farPoint, error)) return false;
+
+    // Environment: MoorDyn's defaults, and its water depth raised to the deepest point.
+    out.gravity = options.gravity;
+    out.waterDensity = options.waterDensity;
+    out.waterDepth = options.waterDepth;
+    for (const Point& p : points) {
+        if (-p.position[2] > out.waterDepth) {
+            if (options.waterDepth > 0.0) {
+                out.notes.push_back(at_line(p.row, "point " + std::to_string(p.id) + " lies below WtrDpth: the water "
+                                                   "depth is set to its depth, " + number_text(-p.position[2]) +
+                                                   " m (as MoorDyn does)"));
+            }
+            out.waterDepth = -p.position[2];
+        }
+    }
+
+    for (const auto& [index, reversed] : chain) {
+        const Line& l = lines[index];
+        const LineType& t = types[l.type];
+        LineFileSection s;
+        s.type = t.name;
+        s.length = l.length;
+        s.diameter = t.diameter;
+        s.massPerLength = t.massPerLength;
+        s.EA = t.EA;
+        s.EI = t.EI;
+        // BA/-zeta < 0: a fraction of critical damping of one MoorDyn segment, converted as MoorDyn does,
+        // BA = zeta (UnstrLen / NumSegs) sqrt(EA Mass/m) (docs/lines.md).
+        s.axialDamping = t.BA >= 0.0 ? t.BA : -t.BA * (l.length / l.numSegs) * std::sqrt(t.EA * t.massPerLength);
+        s.Cdn = t.Cd;
+        s.Cdt = t.CdAx;
+        s.Can = t.Ca;
+        s.Cat = t.CaAx;
+        s.numSegs = l.numSegs;
+        s.row = l.row;
+        out.sections.push_back(s);
+        (void)reversed;  // a line is uniform: its orientation in the file does not matter
+    }
+    assign_elements(out.sections, elementsTotal);
+
+    auto free_point = [&](const Point& p) {
+        LineFilePoint q;
+        q.id = p.id;
+        q.mass = p.mass;
+        q.volume = p.volume;
+        q.addedMass = p.Ca * out.waterDensity * p.volume;
+        q.CdA = p.CdA;
+        q.row = p.row;
+        return q;
+    };
+    for (size_t k = 0; k + 1 < chain.size(); ++k) {
+        const Line& l = lines[chain[k].first];
+        out.joints.push_back(free_point(points[l.end[chain[k].second ? 0 : 1]]));
+    }
+    const Point& vessel = points[lines[chain.front().first].end[chain.front().second ? 1 : 0]];
+    std::copy(vessel.position, vessel.position + 3, out.towPoint);
+    const Point& far = points[farPoint];
+    if (far.kind == PointKind::Fixed) {
+        out.farEnd = LineFileFarEnd::Anchored;
+        std::copy(far.position, far.position + 3, out.anchor);
+    } else {
+        out.body = free_point(far);
+        out.farEnd = out.body.empty() ? LineFileFarEnd::Free : LineFileFarEnd::Body;
+    }
+    return true;
+}
+
+bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) {
+    if (line.sections.empty()) {
+        error = "the line file describes no line";
+        return false;
+    }
+    if (line.sections.size() > 1) {
+        error = at_line(line.sections[1].row, "a chain of " + std::to_string(line.sections.size()) +
+                                                  " lines: this version models one uniform line (one LINES entry)");
+        return false;
+    }
+    const LineFileSection& s = line.sections[0];
+    if (s.elements > 1000) {
+        error = at_line(s.row, "NumSegs " + std::to_string(s.numSegs) + " gives " + std::to_string(s.elements) +
+                                   " elements, more than 1000: set lineFileElements");
+        return false;
+    }
+    p.length = s.length;
+    p.diameter = s.diameter;
+    p.massPerLength = s.massPerLength;
+    p.EA = s.EA;
+    p.EI = s.EI;
+    p.axialDamping = s.axialDamping;
+    p.Cdn = s.Cdn;
+    p.Cdt = s.Cdt;
+    p.Can = s.Can;
+    p.Cat = s.Cat;
+    p.nElements = s.elements;
+    switch (line.farEnd) {
+        case LineFileFarEnd::Anchored:
+            p.bottomEnd = UC_BOTTOM_ANCHORED;
+            std::copy(line.anchor, line.anchor + 3, p.anchor);
+            break;
+        case LineFileFarEnd::Body:
+            p.bottomEnd = UC_BOTTOM_TOWED_BODY;
+            p.bodyMass = line.body.mass;
+            p.bodyVolume = line.body.volume;
+            p.bodyAddedMass = line.body.addedMass;
+            p.bodyCdA = line.body.CdA;
+            break;
+        case LineFileFarEnd::Free:
+            p.bottomEnd = UC_BOTTOM_FREE;
+            break;
+    }
+    p.waterDepth = line.waterDepth;
+    p.gravity = line.gravity;
+    p.waterDensity = line.waterDensity;
+    return true;
+}
+
+}  // namespace uc

@@ -1,0 +1,511 @@
+// The MoorDyn v2 input file reader (src/line_file.cpp, docs/lines.md): what a supported deck becomes
+// in our conventions, that every kind of unsupported or malformed deck is refused naming its line, and
+// that random truncations and mutations of a valid deck never crash it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <string>
+
+#include "cable_api.h"
+#include "line_file.h"
+
+namespace {
+
+// A chain-wire-chain mooring with a clump weight and a buoy at the joints, lines given in both
+// orientations (AttachA at the anchor side for line 1, at the vessel side for lines 2 and 3).
+const char* const kChainWireChain = R"(--------------------- MoorDyn Input File ------------------------------------
+Chain-wire-chain test deck
+---------------------- LINE TYPES ---------------------------------------------------
+TypeName   Diam    Mass/m     EA        BA/-zeta   EI    Cd    Ca    CdAx   CaAx
+(name)     (m)     (kg/m)     (N)       (N-s/-)    (N-m^2) (-) (-)   (-)    (-)
+chain      0.138   113.0      7.5e8     -0.5       0     1.333 1.0   0.64   0.5
+wire       0.09    42.0       6.0e8     1.0e6      0     1.2   1.0   0.008  0.0
+---------------------- POINTS -----------------------------------------------------
+ID   Attachment  X       Y     Z      Mass   Volume  CdA    CA
+(#)   (-)        (m)     (m)   (m)    (kg)   (m^3)   (m^2)  (-)
+1    Fixed      -850     0     -320   0      0       0      0
+2    Free       -600     0     -300   5000   0.5     1.0    1.0
+3    Free       -200     0     -150   0      2.0     0.5    0.8
+4    Vessel      0       0     -70    0      0       0      0
+---------------------- LINES ------------------------------------------------------
+ID  LineType  AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)  (name)    (#)      (#)      (m)       (-)      (-)
+1    chain     1        2        300       30       -
+2    wire      3        2        450       20       -
+3    chain     4        3        150       10       pt
+---------------------- OPTIONS -----------------------------------------------------
+0.001   dtM       time step
+3.0e6   kBot      bottom stiffness
+320     WtrDpth   water depth
+9.81    g
+1025    rho
+------------------------- need this line -------------------------------------
+)";
+
+// The single chain of the mooring scene (docs/mooring.md) as a deck.
+const char* const kSingleChain = R"(--------------------- MoorDyn Input File ------------------------------------
+single chain
+---------------------- LINE TYPES --------------------------------
+TypeName   Diam    Mass/m  EA      BA/-zeta  EI   Cd    Ca    CdAx  CaAx
+(name)     (m)     (kg/m)  (N)     (N-s/-)   (-)  (-)   (-)   (-)   (-)
+chain      0.0766  113     7.5e8   -0.8      0    2.4   1.0   0.2   0.0
+---------------------- POINTS --------------------------------
+ID   Attachment  X       Y     Z      Mass   Volume  CdA    CA
+(#)   (-)        (m)     (m)   (m)    (kg)   (m^3)   (m^2)  (-)
+1     Fixed      -850    0     -320   0      0       0      0
+2     Coupled    0       0     -70    0      0       0      0
+---------------------- LINES --------------------------------------
+ID    LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)   (name)     (#)      (#)      (m)       (-)      (-)
+1     chain      1        2        900       40       -
+---------------------- OPTIONS -----------------------------------------
+0.002    dtM
+320      WtrDpth
+---------------------- OUTPUTS -----------------------------------------
+FairTen1
+END
+------------------------- need this line -------------------------------------
+)";
+
+struct Read {
+    bool ok = false;
+    uc::LineFileLine line;
+    std::string error;
+};
+
+Read read(const std::string& text, int elementsTotal = 0) {
+    Read r;
+    r.ok = uc::read_line_file(text, elementsTotal, r.line, r.error);
+    return r;
+}
+
+// The deck with the first occurrence of `from` replaced by `to` (which must exist).
+std::string edit(const std::string& deck, const std::string& from, const std::string& to) {
+    const size_t at = deck.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at == std::string::npos) return deck;
+    std::string s = deck;
+    s.replace(at, from.size(), to);
+    return s;
+}
+
+// 1-based line of the deck holding `marker` (0 for an empty marker).
+int line_of(const std::string& deck, const std::string& marker) {
+    if (marker.empty()) return 0;
+    const size_t at = deck.find(marker);
+    EXPECT_NE(at, std::string::npos) << marker;
+    return at == std::string::npos ? -1 : 1 + static_cast<int>(std::count(deck.begin(), deck.begin() + at, '\n'));
+}
+
+// The refusal names the line of the deck holding `marker` ("": a message about the whole deck) and says
+// what is wrong.
+void expect_refused(const std::string& deck, const std::string& marker, const std::string& what) {
+    const int line = line_of(deck, marker);
+    const Read r = read(deck);
+    ASSERT_FALSE(r.ok) << "accepted; expected an error at line " << line << " about " << what;
+    const std::string prefix = line > 0 ? "line " + std::to_string(line) + ": " : "";
+    EXPECT_EQ(r.error.rfind(prefix, 0), 0u) << r.error;
+    EXPECT_NE(r.error.find(what), std::string::npos) << r.error;
+}
+
+bool has_note(const uc::LineFileLine& line, const std::string& text) {
+    for (const std::string& n : line.notes) {
+        if (n.find(text) != std::string::npos) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+TEST(LineFile, ChainWireChainIsOrientedFromTheVesselPointWithJointsInOrder) {
+    const Read r = read(kChainWireChain);
+    ASSERT_TRUE(r.ok) << r.error;
+    const uc::LineFileLine& l = r.line;
+    ASSERT_EQ(l.sections.size(), 3u);
+    EXPECT_EQ(l.sections[0].type, "chain");
+    EXPECT_EQ(l.sections[0].length, 150.0);
+    EXPECT_EQ(l.sections[0].row, line_of(kChainWireChain, "3    chain     4"));
+    EXPECT_EQ(l.sections[1].type, "wire");
+    EXPECT_EQ(l.sections[1].length, 450.0);
+    EXPECT_EQ(l.sections[2].type, "chain");
+    EXPECT_EQ(l.sections[2].length, 300.0);
+    ASSERT_EQ(l.joints.size(), 2u);
+    EXPECT_EQ(l.joints[0].id, 3);  // the buoy between the top chain and the wire
+    EXPECT_EQ(l.joints[1].id, 2);  // the clump weight between the wire and the bottom chain
+    EXPECT_EQ(l.joints[1].mass, 5000.0);
+    EXPECT_EQ(l.joints[1].volume, 0.5);
+    EXPECT_EQ(l.joints[1].CdA, 1.0);
+    EXPECT_EQ(l.joints[1].addedMass, 1.0 * 1025.0 * 0.5);  // CA rho V
+    EXPECT_EQ(l.joints[0].addedMass, 0.8 * 1025.0 * 2.0);
+    EXPECT_EQ(l.farEnd, uc::LineFileFarEnd::Anchored);
+    EXPECT_EQ(l.anchor[0], -850.0);
+    EXPECT_EQ(l.anchor[2], -320.0);
+    EXPECT_EQ(l.towPoint[0], 0.0);
+    EXPECT_EQ(l.towPoint[2], -70.0);
+    EXPECT_EQ(l.waterDepth, 320.0);
+    EXPECT_EQ(l.gravity, 9.81);
+    EXPECT_EQ(l.waterDensity, 1025.0);
+    EXPECT_TRUE(has_note(l, "line 22: dtM ignored")) << l.notes.size();
+    EXPECT_TRUE(has_note(l, "line 23: kBot ignored"));
+}
+
+TEST(LineFile, LineTypeColumnsMapOntoOurCoefficients) {
+    const Read r = read(kChainWireChain);
+    ASSERT_TRUE(r.ok) << r.error;
+    const uc::LineFileSection& wire = r.line.sections[1];
+    EXPECT_EQ(wire.diameter, 0.09);  // MoorDyn's volume-equivalent diameter is ours
+    EXPECT_EQ(wire.massPerLength, 42.0);
+    EXPECT_EQ(wire.EA, 6.0e8);
+    EXPECT_EQ(wire.EI, 0.0);
+    EXPECT_EQ(wire.axialDamping, 1.0e6);  // BA >= 0 is N.s already
+    EXPECT_EQ(wire.Cdn, 1.2);             // Cd on d
+    EXPECT_EQ(wire.Cdt, 0.008);           // CdAx on pi d, as our Cdt
+    EXPECT_EQ(wire.Can, 1.0);
+    EXPECT_EQ(wire.Cat, 0.0);
+}
+
+TEST(LineFile, NegativeBaIsAFractionOfCriticalDampingOfOneMoorDynSegment) {
+    const Read r = read(kChainWireChain);
+    ASSERT_TRUE(r.ok) << r.error;
+    // zeta 0.5, bottom chain: 300 m in 30 segments, BA = zeta (L / N) sqrt(EA w).
+    EXPECT_DOUBLE_EQ(r.line.sections[2].axialDamping, 0.5 * (300.0 / 30.0) * std::sqrt(7.5e8 * 113.0));
+    // The top chain, same type, 150 m in 10 segments: longer segments, more damping.
+    EXPECT_DOUBLE_EQ(r.line.sections[0].axialDamping, 0.5 * (150.0 / 10.0) * std::sqrt(7.5e8 * 113.0));
+}
+
+TEST(LineFile, ElementsComeFromNumSegsOrAreSharedInProportionToLength) {
+    Read r = read(kChainWireChain);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.line.sections[0].elements, uc::elements_for_segments(10));
+    EXPECT_EQ(r.line.sections[1].elements, uc::elements_for_segments(20));
+    EXPECT_EQ(r.line.sections[2].elements, uc::elements_for_segments(30));
+    EXPECT_EQ(uc::elements_for_segments(1), 1);
+    EXPECT_EQ(uc::elements_for_segments(40), 20);
+    EXPECT_EQ(uc::elements_for_segments(41), 21);
+    r = read(kChainWireChain, 18);  // 900 m: 150, 450, 300 m -> 3, 9, 6
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.line.sections[0].elements, 3);
+    EXPECT_EQ(r.line.sections[1].elements, 9);
+    EXPECT_EQ(r.line.sections[2].elements, 6);
+    r = read(kChainWireChain, 2);  // at least one each
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.line.sections[0].elements, 1);
+}
+
+TEST(LineFile, EitherOrientationOfAttachAAndAttachBGivesTheSameLine) {
+    const Read a = read(kSingleChain);
+    const Read b = read(edit(kSingleChain, "chain      1        2", "chain      2        1"));
+    ASSERT_TRUE(a.ok) << a.error;
+    ASSERT_TRUE(b.ok) << b.error;
+    ASSERT_EQ(b.line.sections.size(), 1u);
+    EXPECT_EQ(a.line.sections[0].length, b.line.sections[0].length);
+    EXPECT_EQ(a.line.farEnd, uc::LineFileFarEnd::Anchored);
+    EXPECT_EQ(b.line.anchor[0], -850.0);
+    EXPECT_EQ(b.line.towPoint[2], -70.0);
+}
+
+TEST(LineFile, MissingOptionsTakeMoorDynDefaultsAndTheDepthOfTheDeepestPoint) {
+    std::string deck = edit(kSingleChain, "320      WtrDpth\n", "");
+    Read r = read(deck);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.line.gravity, uc::kMoorDynGravity);
+    EXPECT_EQ(r.line.waterDensity, uc::kMoorDynWaterDensity);
+    EXPECT_EQ(r.line.waterDepth, 320.0);  // the anchor's depth
+    r = read(edit(kSingleChain, "320      WtrDpth", "300      WtrDpth"));
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.line.waterDepth, 320.0);  // raised to the anchor, with a note
+    EXPECT_TRUE(has_note(r.line, "line 10: point 1 lies below WtrDpth"));
+    r = read(edit(kSingleChain, "320      WtrDpth", "500      WtrDpth\n9.7 gravity\n1000 WtrDnsty"));
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.line.waterDepth, 500.0);
+    EXPECT_EQ(r.line.gravity, 9.7);
+    EXPECT_EQ(r.line.waterDensity, 1000.0);
+}
+
+TEST(LineFile, OlderHeaderNamesCommentsCrLfAndTwelveColumnPointsAreRead) {
+    std::string deck = edit(kSingleChain, "LINE TYPES", "LINE DICTIONARY");
+    deck = edit(deck, "---- POINTS ----", "---- POINT PROPERTIES ----");
+    deck = edit(deck, "---- LINES ----", "---- LINE PROPERTIES ----");
+    deck = edit(deck, "1     Fixed      -850    0     -320   0      0       0      0",
+                "1     Fixed      -850    0     -320   0      0   0 0 0     0      0   # anchor # more");
+    deck = edit(deck, "single chain", "# a comment line\n  \n");
+    std::string crlf;
+    for (char c : deck) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    const Read r = read(crlf);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.line.sections.size(), 1u);
+    EXPECT_EQ(r.line.anchor[0], -850.0);
+}
+
+TEST(LineFile, AFreeFarEndIsATowedBodyOrAFreeEnd) {
+    Read r = read(edit(kSingleChain, "1     Fixed      -850    0     -320   0      0       0      0",
+                       "1     Free       -850    0     -320   800    0.1     0.6    1.0"));
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.line.farEnd, uc::LineFileFarEnd::Body);
+    EXPECT_EQ(r.line.body.mass, 800.0);
+    EXPECT_EQ(r.line.body.volume, 0.1);
+    EXPECT_EQ(r.line.body.CdA, 0.6);
+    EXPECT_EQ(r.line.body.addedMass, 1.0 * 1025.0 * 0.1);
+    r = read(edit(kSingleChain, "1     Fixed", "1     Free "));
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.line.farEnd, uc::LineFileFarEnd::Free);
+}
+
+TEST(LineFile, OutputsAndIgnoredOptionsAreNotedWithTheirLine) {
+    const Read r = read(edit(kSingleChain, "0.002    dtM", "0.002    dtM\n1 writeLog\n5 frobnicate"));
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_TRUE(has_note(r.line, "line 17: dtM ignored"));
+    EXPECT_TRUE(has_note(r.line, "line 18: writeLog ignored"));
+    EXPECT_TRUE(has_note(r.line, "line 19: unknown option 'frobnicate' ignored"));
+    EXPECT_TRUE(has_note(r.line, "OUTPUTS ignored"));
+}
+
+TEST(LineFile, ApplyWritesTheLineAndKeepsTheOtherParameters) {
+    UCParams p;
+    uc_params_default(&p);
+    p.seabedStiffness = 2.5e6;
+    p.enableSeabed = 1;
+    p.relTol = 1e-7;
+    double tow[3] = {1, 1, 1};
+    char notes[1024], msg[512];
+    const std::string deck = kSingleChain;
+    ASSERT_EQ(uc_line_file_apply(deck.data(), deck.size(), &p, tow, notes, sizeof notes, msg, sizeof msg), 0) << msg;
+    EXPECT_EQ(p.length, 900.0);
+    EXPECT_EQ(p.diameter, 0.0766);
+    EXPECT_EQ(p.massPerLength, 113.0);
+    EXPECT_EQ(p.EA, 7.5e8);
+    EXPECT_EQ(p.EI, 0.0);
+    EXPECT_EQ(p.axialDamping, 0.8 * (900.0 / 40.0) * std::sqrt(7.5e8 * 113.0));
+    EXPECT_EQ(p.Cdn, 2.4);
+    EXPECT_EQ(p.Cdt, 0.2);
+    EXPECT_EQ(p.Can, 1.0);
+    EXPECT_EQ(p.Cat, 0.0);
+    EXPECT_EQ(p.nElements, 20);
+    EXPECT_EQ(p.bottomEnd, UC_BOTTOM_ANCHORED);
+    EXPECT_EQ(p.anchor[0], -850.0);
+    EXPECT_EQ(p.anchor[1], 0.0);
+    EXPECT_EQ(p.anchor[2], -320.0);
+    EXPECT_EQ(p.waterDepth, 320.0);
+    EXPECT_EQ(p.gravity, uc::kMoorDynGravity);
+    EXPECT_EQ(p.waterDensity, 1025.0);
+    EXPECT_EQ(p.seabedStiffness, 2.5e6);
+    EXPECT_EQ(p.enableSeabed, 1);
+    EXPECT_EQ(p.relTol, 1e-7);
+    EXPECT_EQ(tow[0], 0.0);
+    EXPECT_EQ(tow[2], -70.0);
+    EXPECT_NE(std::strstr(notes, "line 17: dtM ignored"), nullptr) << notes;
+    EXPECT_EQ(uc_params_check(&p, msg, sizeof msg), 0) << msg;
+    p.lineFileElements = 7;
+    ASSERT_EQ(uc_line_file_apply(deck.data(), deck.size(), &p, nullptr, nullptr, 0, msg, sizeof msg), 0) << msg;
+    EXPECT_EQ(p.nElements, 7);
+}
+
+TEST(LineFile, ApplyRefusesMoreElementsThanTheModelTakesNamingTheLine) {
+    UCParams p;
+    uc_params_default(&p);
+    const std::string deck = edit(kSingleChain, "900       40", "900       2500");
+    char msg[512];
+    ASSERT_EQ(uc_line_file_apply(deck.data(), deck.size(), &p, nullptr, nullptr, 0, msg, sizeof msg), 1);
+    EXPECT_STREQ(msg, "line 15: NumSegs 2500 gives 1250 elements, more than 1000: set lineFileElements");
+}
+
+// ---- refusals: each names the line of the deck
+
+TEST(LineFileRefuses, BodiesRodsAndOtherObjects) {
+    std::string d = edit(kSingleChain, "---------------------- POINTS",
+                         "---- BODIES ----\nID Attachment X0\n(#) (-) (m)\n1 coupled 0 0 0 0 0 0 0 0 0 0 0 0\n"
+                         "---------------------- POINTS");
+    expect_refused(d, "1 coupled", "bodies are not supported (BODIES section)");
+    d = edit(kSingleChain, "---------------------- POINTS",
+             "---- RODS ----\nID RodType\n(#) (-)\n1 can body1 0 0 0 0 0 1 4 p\n---------------------- POINTS");
+    expect_refused(d, "1 can body1", "rods are not supported (RODS section)");
+    d = edit(kSingleChain, "chain      1        2", "chain      R1A      2");
+    expect_refused(d, "R1A", "AttachA 'R1A': rods are not supported");
+    d = edit(kSingleChain, "1     Fixed ", "1     Body1 ");
+    expect_refused(d, "Body1", "a point attached to 'Body1': bodies are not supported");
+    d = edit(kSingleChain, "0.002    dtM",
+             "0.002 dtM\n---- EXTERNAL LOADS ----\nID Object\n(#) (-)\n1 Point1 0|0|0 0|0|0 0|0|0 -");
+    expect_refused(d, "1 Point1", "external loads");
+}
+
+TEST(LineFileRefuses, SeveralChainsAndPoints) {
+    const std::string coupled = "2     Coupled    0       0     -70    0      0       0      0";
+    const std::string line1 = "1     chain      1        2        900       40       -";
+    expect_refused(edit(kSingleChain, "2     Coupled", "2     Free   "), "", "no Vessel or Coupled point");
+    std::string d = edit(kSingleChain, "1     Fixed ", "1     Vessel");
+    expect_refused(d, "2     Coupled", "a second Vessel point (the first is point 1)");
+    d = edit(edit(kSingleChain, coupled,
+                  coupled + "\n3     Fixed      850     0     -320   0      0       0      0\n"
+                            "4     Vessel     10      0     -70    0      0       0      0"),
+             line1, "1 chain 1 2 900 40 -\n2 chain 3 4 900 40 -");
+    expect_refused(d, "3     Fixed", "a second Fixed point");
+    d = edit(edit(kSingleChain, coupled,
+                  coupled + "\n3     Free       -400    0     -200   0      0       0      0\n"
+                            "4     Free       -400    0     -100   0      0       0      0\n"
+                            "5     Free       -400    0     -150   0      0       0      0"),
+             line1, "1 chain 1 3 400 20 -\n2 chain 3 2 500 20 -\n3 chain 3 4 100 5 -\n4 chain 4 5 10 1 -");
+    expect_refused(d, "3     Free", "Free point 3 joins 3 lines");
+    d = edit(edit(kSingleChain, coupled,
+                  coupled + "\n3     Free       -400    0     -200   0      0       0      0\n"
+                            "4     Free       -400    0     -100   0      0       0      0"),
+             line1, "1 chain 1 2 900 40 -\n2 chain 3 4 100 5 -");
+    expect_refused(d, "2 chain 3 4", "line 2 is not on the chain");
+    d = edit(kSingleChain, coupled, coupled + "\n3     Free       -400    0     -200   0      0       0      0");
+    expect_refused(d, "3     Free", "point 3 is not attached to any line");
+    d = edit(kSingleChain, "chain      1        2", "chain      2        2");
+    expect_refused(d, "chain      2        2", "AttachA and AttachB are the same point");
+    d = edit(kSingleChain, "chain      1        2", "chain      1        7");
+    expect_refused(d, "chain      1        7", "AttachB '7': there is no point 7 (the POINTS table has 2)");
+}
+
+TEST(LineFileRefuses, UnknownLineTypesAndNonNumericFields) {
+    std::string d = edit(kSingleChain, "1     chain ", "1     Chain ");
+    expect_refused(d, "1     Chain", "line type 'Chain' is not among the LINE TYPES ('chain')");
+    d = edit(kSingleChain, "chain      0.0766", "chain      0.07x6");
+    expect_refused(d, "0.07x6", "Diam '0.07x6' is not a number");
+    d = edit(kSingleChain, "900       40", "nine      40");
+    expect_refused(d, "nine", "UnstrLen 'nine' is not a number");
+    d = edit(kSingleChain, "900       40", "900       4.5");
+    expect_refused(d, "4.5", "NumSegs '4.5' is not a whole number");
+    d = edit(kSingleChain, "900       40", "900       0 ");
+    expect_refused(d, "900       0 ", "NumSegs = 0: must be between 1 and 100000");
+    d = edit(kSingleChain, "-850    0     -320   0", "-850    0     nan    0");
+    expect_refused(d, "nan", "Z 'nan' is not a number");
+    d = edit(kSingleChain, "113     7.5e8", "-113    7.5e8");
+    expect_refused(d, "-113", "Mass/m = -113: must be positive");
+    d = edit(kSingleChain, "-0.8      0    2.4", "-0.8      0    -2.4");
+    expect_refused(d, "-2.4", "Cd = -2.4: must not be negative");
+    d = edit(kSingleChain, "0.002    dtM", "abc    g");
+    expect_refused(d, "abc", "g 'abc' is not a number");
+    d = edit(kSingleChain, "1     Fixed      -850", "3     Fixed      -850");
+    expect_refused(d, "3     Fixed", "point ID 3: IDs must be 1, 2, 3, ... in order (expected 1)");
+    d = edit(kSingleChain, "1     chain      1", "2     chain      1");
+    expect_refused(d, "2     chain", "line ID 2: IDs must be 1, 2, 3, ... in order (expected 1)");
+}
+
+TEST(LineFileRefuses, NonLinearAndOtherUnsupportedLineProperties) {
+    std::string d = edit(kSingleChain, "7.5e8   -0.8", "ea.txt  -0.8");
+    expect_refused(d, "ea.txt", "EA 'ea.txt': a non-linear stiffness (table) is not supported");
+    d = edit(kSingleChain, "7.5e8   -0.8", "7e8|9e8 -0.8");
+    expect_refused(d, "7e8|9e8", "viscoelastic and Syrope axial models are not supported");
+    d = edit(kSingleChain, "7.5e8   -0.8", "7.5e8   1e5|2e5");
+    expect_refused(d, "1e5|2e5", "viscoelastic damping is not supported");
+    d = edit(kSingleChain, "7.5e8   -0.8", "7.5e8   ba.txt");
+    expect_refused(d, "ba.txt", "a non-linear damping (table) is not supported");
+    d = edit(kSingleChain, "-0.8      0    2.4", "-0.8      ei.txt 2.4");
+    expect_refused(d, "ei.txt", "EI 'ei.txt': a non-linear bending stiffness");
+    d = edit(kSingleChain, "1.0   0.2   0.0\n", "1.0   0.2   0.0   0.8\n");
+    expect_refused(d, "0.0   0.8", "Cl = 0.8: vortex-induced vibration is not supported");
+    const Read r = read(edit(kSingleChain, "1.0   0.2   0.0\n", "1.0   0.2   0.0   0 0.08 0.18\n"));
+    EXPECT_TRUE(r.ok) << r.error;  // Cl = 0: no VIV, dF and cF unused
+    d = edit(kSingleChain, "1.0   0.2   0.0\n", "1.0   0.2\n");
+    expect_refused(d, "1.0   0.2\n", "this row has 9");
+    d = edit(kSingleChain, "0.002    dtM", "2 WaveKin");
+    expect_refused(d, "2 WaveKin", "WaveKin = 2: MoorDyn's wave and current kinematics are not supported");
+    d = edit(kSingleChain, "0.002    dtM", "1 Currents");
+    expect_refused(d, "1 Currents", "Currents = 1");
+    d = edit(kSingleChain, "320      WtrDpth", "bathy.txt WtrDpth");
+    expect_refused(d, "bathy.txt", "a bathymetry file is not supported");
+    d = edit(kSingleChain, "0.002    dtM", "sea.txt SeafloorFile");
+    expect_refused(d, "sea.txt", "SeafloorFile: a bathymetry file is not supported");
+    d = edit(kSingleChain, "1     Fixed      -850    0     -320   0      0       0      0",
+             "1     Free       -850    0     -320   0      0   0 0 -100  0      0");
+    expect_refused(d, "1     Free", "a steady force on a Free point is not supported");
+}
+
+TEST(LineFileRefuses, MissingOrMalformedSections) {
+    expect_refused("", "", "the deck has no LINE TYPES section");
+    std::string d = edit(kSingleChain, "---------------------- LINES", "---------------------- LIMES");
+    expect_refused(d, "", "the deck has no LINES section");
+    d = edit(kSingleChain, "1     chain      1        2        900       40       -\n", "");
+    expect_refused(d, "---------------------- LINES", "the LINES table is empty");
+    d = edit(kSingleChain, "---------------------- OPTIONS", "---- POINT LIST ----\n---------------------- OPTIONS");
+    expect_refused(d, "POINT LIST", "a second POINTS section (the first is at line 7)");
+    d = edit(kSingleChain, "(#)   (name)     (#)      (#)      (m)       (-)      (-)\n"
+                           "1     chain      1        2        900       40       -\n", "");
+    expect_refused(d, "---------------------- LINES", "the LINES table needs a line of column names and a line of units");
+    d = edit(kSingleChain, "1     Fixed      -850    0     -320   0      0       0      0",
+             "1     Fixed      -850    0     -320   0      0       0");
+    expect_refused(d, "1     Fixed", "a point has 9 fields");
+    d = edit(kSingleChain, "1     chain      1        2        900       40       -", "1     chain      1        2        900");
+    expect_refused(d, "1     chain", "this row has 5");
+    d = edit(kSingleChain, "chain      0.0766  113",
+             "chain      0.0766  113     7.5e8   -0.8      0    2.4   1.0   0.2   0.0\nchain      0.0800  113");
+    expect_refused(d, "0.0800", "line type 'chain' is defined twice (also at line 6)");
+}
+
+TEST(LineFile, TwelveColumnPointsWithZeroForcesAreRead) {
+    const Read r = read(edit(kSingleChain, "-850    0     -320   0      0       0      0",
+                             "-850    0     -320   0      0   0 0 0  0      0"));
+    EXPECT_TRUE(r.ok) << r.error;
+}
+
+// ---- robustness: random truncations and mutations of a valid deck (fixed seed) never crash the reader;
+// a refusal always says where or what.
+
+namespace {
+
+std::string mutate(std::string deck, std::mt19937& rng) {
+    auto pick = [&](size_t n) { return std::uniform_int_distribution<size_t>(0, n - 1)(rng); };
+    static const char kBytes[] = {'\0', '#', '-', '|', ' ', '\t', '\n', '\r', '0', '9', '.', 'e', '+', 'x', '\xff'};
+    const int edits = 1 + static_cast<int>(pick(4));
+    for (int k = 0; k < edits && !deck.empty(); ++k) {
+        const size_t at = pick(deck.size());
+        switch (pick(6)) {
+            case 0: deck.resize(at); break;                                         // truncate
+            case 1: deck[at] = kBytes[pick(sizeof kBytes)]; break;                  // replace a byte
+            case 2: deck.erase(at, 1 + pick(20)); break;                            // delete a run
+            case 3: deck.insert(at, deck.substr(pick(deck.size()), 1 + pick(80))); break;  // duplicate text
+            case 4: deck.insert(at, 1, static_cast<char>(pick(256))); break;        // insert any byte
+            default: {                                                              // swap two lines
+                const size_t a = deck.rfind('\n', at), b = deck.find('\n', at);
+                if (a != std::string::npos && b != std::string::npos && b + 1 < deck.size()) {
+                    const size_t c = deck.find('\n', b + 1);
+                    if (c != std::string::npos) {
+                        const std::string first = deck.substr(a + 1, b - a), second = deck.substr(b + 1, c - b);
+                        deck.replace(a + 1, c - a, second + first);
+                    }
+                }
+            }
+        }
+    }
+    return deck;
+}
+
+}  // namespace
+
+TEST(LineFileFuzz, TruncationsAndMutationsOfAValidDeckNeverCrash) {
+    std::mt19937 rng(20240607u);
+    int accepted = 0, refused = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const std::string deck = mutate(i % 2 ? kChainWireChain : kSingleChain, rng);
+        UCParams p;
+        uc_params_default(&p);
+        p.lineFileElements = static_cast<int>(rng() % 3) * 7;
+        char notes[2048], msg[512];
+        msg[0] = '\0';
+        const int rc = uc_line_file_apply(deck.data(), deck.size(), &p, nullptr, notes, sizeof notes, msg, sizeof msg);
+        ASSERT_TRUE(rc == 0 || rc == 1) << rc;
+        if (rc == 0) {
+            ++accepted;
+            continue;
+        }
+        ++refused;
+        const std::string m = msg;
+        ASSERT_FALSE(m.empty()) << "iteration " << i;
+        if (m.rfind("line ", 0) == 0) {  // "line <n>: ..." with n a line of the deck
+            const int line = std::atoi(m.c_str() + 5);
+            const int lines = 1 + static_cast<int>(std::count(deck.begin(), deck.end(), '\n') +
+                                                   std::count(deck.begin(), deck.end(), '\r'));
+            ASSERT_TRUE(line >= 1 && line <= lines) << m << " (deck of " << lines << " lines), iteration " << i;
+        } else {
+            ASSERT_TRUE(m.rfind("the ", 0) == 0) << m << ", iteration " << i;
+        }
+    }
+    // Both outcomes occur (the mutations are neither all harmless nor all fatal).
+    EXPECT_GT(accepted, 1000);
+    EXPECT_GT(refused, 1000);
+}

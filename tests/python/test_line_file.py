@@ -1,0 +1,127 @@
+"""The line of a MoorDyn v2 input file (parameter lineFile, docs/lines.md) through the FMU with fmpy.
+
+A deck in the FMU's resources directory is found by a relative path and gives the same results, bit for
+bit, as the same line described by parameters; parameters set alongside the deck still apply; a deck
+outside the supported subset is an fmi2Error naming the file and its line.
+"""
+
+from __future__ import annotations
+
+import math
+import shutil
+from pathlib import Path
+
+import pytest
+from fmpy.fmi2 import fmi2Error
+
+from ucable import mooring as m
+from ucable.fmu import FMICallException, load
+
+DECKS = Path(__file__).resolve().parents[1] / "data" / "decks"
+CHAIN_DECK = DECKS / "chain.dat"
+
+# The chain of chain.dat described by parameters, as docs/lines.md maps it: BA/-zeta = -0.8 on 40
+# segments of 22.5 m, NumSegs 40 -> 20 elements.
+CHAIN_BY_PARAMETERS = {
+    "length": 900.0, "diameter": 0.0766, "massPerLength": 113.0, "EA": 7.5e8, "EI": 0.0,
+    "axialDamping": 0.8 * (900.0 / 40) * math.sqrt(7.5e8 * 113.0),
+    "Cdn": 2.4, "Cdt": 0.2, "Can": 1.0, "Cat": 0.0, "nElements": 20, "bottomEnd": 1,
+    "anchor.x": m.ANCHOR_X, "anchor.y": 0.0, "anchor.z": -m.DEPTH,
+    "waterDepth": m.DEPTH, "gravity": 9.81, "waterDensity": 1025.0,
+}
+# What the deck does not describe, set alongside it.
+SCENE = {"enableSeabed": True, "seabedStiffness": 1e6, "enableBending": False}
+OUTPUTS = ["towTension", "towForce.x", "towForce.z", "endTension", "touchdownArcLength",
+           "minSeabedClearance"] + [f"tension[{k}]" for k in range(1, 22)] + \
+          [f"shape.{c}[{k}]" for c in "xz" for k in range(1, 22)]
+
+
+@pytest.fixture
+def deck_in_resources(fmu_file):
+    """chain.dat copied into the extracted FMU's resources/ directory (where fmpy points
+    fmuResourceLocation), removed afterwards."""
+    unzipdir, _ = load(fmu_file)
+    resources = Path(unzipdir) / "resources"
+    resources.mkdir(exist_ok=True)
+    target = resources / "test_chain.dat"
+    shutil.copy(CHAIN_DECK, target)
+    yield target.name
+    target.unlink()
+
+
+def _surge_run(cable, steps: int = 6, h: float = 0.5, speed: float = 0.3):
+    """Static equilibrium at the fairlead (0, 0, -70), then a surge at `speed`: outputs per step."""
+    cable.initialize(inputs={"tow.z": m.FAIRLEAD_Z, "tow.vx": speed})
+    history = [cable.get_reals(OUTPUTS)]
+    for k in range(steps):
+        cable.set({"tow.x": speed * (k + 1) * h})
+        cable.do_step(h)
+        history.append(cable.get_reals(OUTPUTS))
+    return history
+
+
+def test_a_deck_in_the_resources_is_the_same_line_as_its_parameters_bit_for_bit(make_cable, deck_in_resources):
+    deck = make_cable(parameters={"lineFile": deck_in_resources, **SCENE})
+    params = make_cable(parameters={**CHAIN_BY_PARAMETERS, **SCENE})
+    a, b = _surge_run(deck), _surge_run(params)
+    assert a[0][0] > 1.5e6  # the fairlead tension of the catenary with touchdown (docs/mooring.md)
+    for k, (x, y) in enumerate(zip(a, b)):
+        assert x.tobytes() == y.tobytes(), f"step {k}: {x - y}"
+    assert deck.get("lineFile") == deck_in_resources
+
+
+def test_a_relative_path_is_found_in_the_resources_directory(make_cable, deck_in_resources):
+    # one instance only: fmpy's logger proxy hands every message to the instance made last
+    cable = make_cable(parameters={"lineFile": deck_in_resources, **SCENE}, logging_on=True)
+    cable.initialize(inputs={"tow.z": m.FAIRLEAD_Z})
+    read = [text for _, _, text in cable.messages if "read (" in text]
+    assert read and f"resources/{deck_in_resources} read" in read[0], cable.log_text()
+
+
+def test_the_deck_statics_match_the_closed_form_catenary(make_cable):
+    """The deck read through the FMU is the mooring chain: its static fairlead tension is the elastic
+    catenary's with touchdown within the discretization error of 20 elements (docs/mooring.md: 5e-6)."""
+    cable = make_cable(parameters={"lineFile": str(CHAIN_DECK), **SCENE})
+    cable.initialize(inputs={"tow.z": m.FAIRLEAD_Z})
+    exact = m.closed_form().fairlead_tension
+    assert cable.get("towTension") == pytest.approx(exact, rel=2e-5)
+
+
+def test_parameters_set_alongside_the_deck_still_apply(make_cable):
+    soft = make_cable(parameters={"lineFile": str(CHAIN_DECK), **SCENE, "seabedStiffness": 1e5})
+    same = make_cable(parameters={**CHAIN_BY_PARAMETERS, **SCENE, "seabedStiffness": 1e5})
+    stiff = make_cable(parameters={"lineFile": str(CHAIN_DECK), **SCENE})
+    for c in (soft, same, stiff):
+        c.initialize(inputs={"tow.z": m.FAIRLEAD_Z})
+    assert soft.get_reals(OUTPUTS).tobytes() == same.get_reals(OUTPUTS).tobytes()
+    assert soft.get("minSeabedClearance") < 5.0 * stiff.get("minSeabedClearance")  # w/k: 10x deeper
+
+
+def _refused(make_cable, path: str) -> str:
+    cable = make_cable(parameters={"lineFile": path}, logging_on=True)
+    with pytest.raises(FMICallException) as err:
+        cable.initialize(inputs={"tow.z": m.FAIRLEAD_Z})
+    assert err.value.status == fmi2Error
+    return "\n".join(text for status, _, text in cable.messages if status == "ERROR")
+
+
+def test_an_unreadable_deck_is_an_error_naming_the_paths_tried(make_cable):
+    log = _refused(make_cable, "no_such_deck.dat")
+    assert "lineFile = 'no_such_deck.dat' cannot be read: tried " in log
+    assert "resources/no_such_deck.dat (no such file)" in log
+    assert str(Path.cwd() / "no_such_deck.dat") + " (no such file)" in log
+
+
+@pytest.mark.parametrize("edit,line,what", [
+    (("chain      0.0766", "chain      0.07z6"), 7, "Diam '0.07z6' is not a number"),
+    (("1    chain     1        2", "1    chain     R1A      2"), 16, "AttachA 'R1A': rods are not supported"),
+    (("2    Coupled", "2    Fixed  "), 12, "a second Fixed point"),
+    (("7.5e8    -0.8", "ea.txt   -0.8"), 7, "EA 'ea.txt': a non-linear stiffness (table) is not supported"),
+], ids=["non-numeric", "rod", "two-anchors", "non-linear-EA"])
+def test_a_refused_deck_is_an_error_naming_its_line(make_cable, tmp_path, edit, line, what):
+    text = CHAIN_DECK.read_text()
+    assert edit[0] in text
+    path = tmp_path / "bad.dat"
+    path.write_text(text.replace(edit[0], edit[1], 1))
+    log = _refused(make_cable, str(path))
+    assert f"lineFile {path}, line {line}: {what}" in log, log
