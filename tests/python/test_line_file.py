@@ -125,3 +125,15 @@ def test_a_refused_deck_is_an_error_naming_its_line(make_cable, tmp_path, edit, 
     path.write_text(text.replace(edit[0], edit[1], 1))
     log = _refused(make_cable, str(path))
     assert f"lineFile {path}, line {line}: {what}" in log, log
+
+
+@pytest.mark.parametrize("dx", [-2.0, 0.0, 2.0])
+def test_the_deck_statics_match_moorpy_fed_the_same_file(fmu_file, dx):
+    """MoorPy (quasi-static elastic catenaries with seabed contact) reads the same deck: fairlead and
+    anchor tension within the 0.5 % asked of a line described by a deck (docs/lines_validation.md)."""
+    from ucable import line_file_validation as v
+
+    deck = v.read_deck(CHAIN_DECK)
+    ref, ours = v.moorpy_statics(deck, dx), v.fmu_statics(fmu_file, deck, dx)
+    assert ours["fairlead"] == pytest.approx(ref["fairlead"], rel=5e-3)
+    assert ours["anchor"] == pytest.approx(ref["anchor"], rel=5e-3)
