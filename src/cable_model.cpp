@@ -244,12 +244,12 @@ Vec6 CableModel::end_node_residual(const double* X, const double* Xd, const doub
                                    const Loads& loads) const {
     const int gN = 6 * nElements_;
     Vec6 R = Vec6::Zero();
-    R.head<3>() = -loads.endLoad;
+    const Vec3 rd = Eigen::Map<const Vec3>(Xd + gN);
+    R.head<3>() = -loads.endLoad + loads.endLoadDamping * (rd - loads.endLoadVelocity);
     // End couple M: virtual work M . (t x dr')/|r'| = (M x r')/|r'|^2 . dr' on the end tangent.
     const Vec3 rp = Eigen::Map<const Vec3>(X + gN + 3);
     R.tail<3>() = -loads.endCouple.cross(rp) / rp.squaredNorm();
     if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return R;
-    const Vec3 rd = Eigen::Map<const Vec3>(Xd + gN);
     const Vec3 rdd = Eigen::Map<const Vec3>(Xdd + gN);
     const Vec3 u = loads.current.at(X[gN + 2], nullptr) - rd;
     const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
@@ -271,13 +271,14 @@ void CableModel::end_node_jacobian(const double* X, const double* Xd, const doub
         const double n2 = rp.squaredNorm();
         K.block<3, 3>(3, 3) = -cross_matrix(loads.endCouple) * (Mat3::Identity() / n2 - 2.0 * rp * rp.transpose() / (n2 * n2));
     }
+    C.block<3, 3>(0, 0) = loads.endLoadDamping;
     if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return;
     Vec3 slope;
     const Vec3 u = loads.current.at(X[gN + 2], &slope) - Eigen::Map<const Vec3>(Xd + gN);
     const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
     const Mat3 dDrag_du = 0.5 * fluid_.rho * params_.bodyCdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
     K.block<3, 3>(0, 0).col(2) -= dDrag_du * slope;  // drag of the body in a sheared current
-    C.block<3, 3>(0, 0) = 0.5 * fluid_.rho * params_.bodyCdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
+    C.block<3, 3>(0, 0) += 0.5 * fluid_.rho * params_.bodyCdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
     M.block<3, 3>(0, 0) = (params_.bodyMass + params_.bodyAddedMass) * Mat3::Identity();
 }
 

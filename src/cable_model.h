@@ -38,6 +38,11 @@ struct Loads {
     TowTrajectory end;  // far end when bottomEnd = 3 (external body)
     CurrentField current;
     Vec3 endLoad = Vec3::Zero();
+    // Velocity linearization of endLoad (a partner model's force, evaluated by the partner at the far-end
+    // velocity endLoadVelocity): the force applied is endLoad - endLoadDamping (v_end - endLoadVelocity),
+    // so its velocity dependence is integrated implicitly with the cable (docs/cosimulation.md).
+    Vec3 endLoadVelocity = Vec3::Zero();
+    Mat3 endLoadDamping = Mat3::Zero();
     Vec3 endCouple = Vec3::Zero();
     double torque = 0.0;  // H [N.m] (0 unless torsion is enabled)
     // Caps the axial stiffness factor of every strain mode (static solver only: equilibrium is

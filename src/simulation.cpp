@@ -56,6 +56,16 @@ Vec3 input_acceleration(const double given[3], int isGiven, const Vec3& velocity
     return lastStep > 0.0 ? Vec3((velocity - lastVelocity) / lastStep) : Vec3::Zero();
 }
 
+// The linearization of the end load (12 inputs) is finite.
+bool end_load_linearization_finite(const UCInputs& in) {
+    const double* rows[3] = {in.endLoadDamping.x, in.endLoadDamping.y, in.endLoadDamping.z};
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(in.endLoadVelocity[i]) || !std::isfinite(rows[i][0]) || !std::isfinite(rows[i][1]) ||
+            !std::isfinite(rows[i][2]))
+            return false;
+    return true;
+}
+
 }  // namespace
 
 CableSimulation::CableSimulation(const UCParams& params) : model_(params) {
@@ -94,6 +104,10 @@ void CableSimulation::set_environment(const UCInputs& in) {
     loads_.current.uniform = Vec3(in.current[0], in.current[1], 0.0);
     loads_.current.profile = &model_.current_profile();
     loads_.endLoad = vec(in.endLoad);
+    loads_.endLoadVelocity = vec(in.endLoadVelocity);
+    const double* rows[3] = {in.endLoadDamping.x, in.endLoadDamping.y, in.endLoadDamping.z};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) loads_.endLoadDamping(i, j) = rows[i][j];
     loads_.endCouple = vec(in.endCouple);
 }
 
@@ -194,6 +208,10 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
             return false;
         }
     }
+    if (!end_load_linearization_finite(in)) {
+        error = "endLoadVelocity and endLoadDamping inputs must be finite numbers";
+        return false;
+    }
     set_environment(in);
     towPosition_ = vec(in.tow);
     towVelocity_ = vec(in.towVelocity);
@@ -273,6 +291,10 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
             error = "inputs and the step size must be finite numbers";
             return false;
         }
+    }
+    if (!end_load_linearization_finite(in)) {
+        error = "endLoadVelocity and endLoadDamping inputs must be finite numbers";
+        return false;
     }
     if (!(h > 0.0)) {
         error = "the communication step size must be positive";

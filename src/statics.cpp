@@ -36,6 +36,7 @@ Loads scaled_loads(const Loads& loads, double lambda) {
     s.end.v1 *= lambda;
     s.end.a0.setZero();
     s.endLoad *= lambda;
+    s.endLoadVelocity *= lambda;  // the linearized end load scales with the flow as well
     s.endCouple *= lambda;
     s.torque *= lambda;
     s.tow.v0 *= lambda;

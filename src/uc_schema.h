@@ -10,6 +10,12 @@
 #define UC_CURRENT_PROFILE_ROWS 10
 #define UC_STRING_CAPACITY 4096
 
+typedef struct UCEndLoadDamping {
+    double x[3]; /* endLoadDamping.xx, endLoadDamping.xy, endLoadDamping.xz [N.s/m]: row x of the damping matrix D = -∂endLoad/∂v: over a step the far end carries endLoad - D (v - `endLoadVelocity`) at its current velocity v, implicitly integrated (a partner body's drag stays stable at any step) */
+    double y[3]; /* endLoadDamping.yx, endLoadDamping.yy, endLoadDamping.yz [N.s/m]: row y of D */
+    double z[3]; /* endLoadDamping.zx, endLoadDamping.zy, endLoadDamping.zz [N.s/m]: row z of D */
+} UCEndLoadDamping;
+
 typedef struct UCParams {
     double length; /* length [m]: unstretched length */
     double diameter; /* diameter [m]: hydrodynamic and displacement diameter d (A = π d²/4) */
@@ -65,6 +71,8 @@ typedef struct UCInputs {
     double current[2]; /* current.x/y [m/s]: uniform current */
     double torque; /* torque [N.m]: cable torque when `torqueMode` = 1 */
     double twist; /* twist [rad]: rotation of the far end's material frame relative to the tow point's when `torqueMode` = 2 */
+    double endLoadVelocity[3]; /* endLoadVelocity.x/y/z [m/s]: far-end velocity at which the partner evaluated `endLoad` (the point of its linearization `endLoadDamping`) */
+    UCEndLoadDamping endLoadDamping;
     double towAcceleration[3]; /* (not an FMU variable) [m/s2] from fmi2SetRealInputDerivatives (der(tow.v*) or der(tow.*,2)); 0 if not given */
     int towAccelerationGiven; /* (not an FMU variable) 1 when towAcceleration came from the master for this step; 0: the core estimates it from the last two tow velocity inputs */
     double endAcceleration[3]; /* (not an FMU variable) [m/s2] der(end.v*) from fmi2SetRealInputDerivatives */
@@ -198,6 +206,18 @@ typedef struct UCOutputs {
     X(1020, "current.y", REAL, INPUT, current[1]) \
     X(1021, "torque", REAL, INPUT, torque) \
     X(1022, "twist", REAL, INPUT, twist) \
+    X(1023, "endLoadVelocity.x", REAL, INPUT, endLoadVelocity[0]) \
+    X(1024, "endLoadVelocity.y", REAL, INPUT, endLoadVelocity[1]) \
+    X(1025, "endLoadVelocity.z", REAL, INPUT, endLoadVelocity[2]) \
+    X(1026, "endLoadDamping.xx", REAL, INPUT, endLoadDamping.x[0]) \
+    X(1027, "endLoadDamping.xy", REAL, INPUT, endLoadDamping.x[1]) \
+    X(1028, "endLoadDamping.xz", REAL, INPUT, endLoadDamping.x[2]) \
+    X(1029, "endLoadDamping.yx", REAL, INPUT, endLoadDamping.y[0]) \
+    X(1030, "endLoadDamping.yy", REAL, INPUT, endLoadDamping.y[1]) \
+    X(1031, "endLoadDamping.yz", REAL, INPUT, endLoadDamping.y[2]) \
+    X(1032, "endLoadDamping.zx", REAL, INPUT, endLoadDamping.z[0]) \
+    X(1033, "endLoadDamping.zy", REAL, INPUT, endLoadDamping.z[1]) \
+    X(1034, "endLoadDamping.zz", REAL, INPUT, endLoadDamping.z[2]) \
     X(2001, "towForce.x", REAL, OUTPUT, towForce[0]) \
     X(2002, "towForce.y", REAL, OUTPUT, towForce[1]) \
     X(2003, "towForce.z", REAL, OUTPUT, towForce[2]) \

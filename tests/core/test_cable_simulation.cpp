@@ -156,6 +156,8 @@ void check_assembled_jacobian(const UCParams& p) {
     loads.tow = TowTrajectory::at_rest_in_time(Vec3(0, 0, -5), Vec3(1, 0, 0), Vec3(0.1, 0, 0), 0.0);
     loads.current.uniform = Vec3(0.2, -0.3, 0);
     loads.endLoad = Vec3(10, 0, -20);
+    loads.endLoadVelocity = Vec3(0.7, -0.2, 0.1);
+    loads.endLoadDamping << 30, 2, -1, 0, 15, 0, 4, -3, 20;  // a drag-like matrix with a lift-like coupling
     loads.endCouple = Vec3(3, -40, 7);
     loads.torque = 25.0;
     std::vector<double> Xd(m.n_global()), Xdd(m.n_global()), R(n), Rp(n), Rm(n);
