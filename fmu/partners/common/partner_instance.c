@@ -1,0 +1,121 @@
+/* partner_instance.c - see partner_instance.h. */
+#include "partner_instance.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static char* copy_string(const char* s) {
+    size_t n = strlen(s) + 1;
+    char* copy = malloc(n);
+    if (copy != NULL) memcpy(copy, s, n);
+    return copy;
+}
+
+PMInstance* pm_instance_new(const PMModel* model, const char* instanceName, fmi2CallbackLogger logger,
+                            fmi2ComponentEnvironment environment, int loggingOn) {
+    PMInstance* inst = calloc(1, sizeof *inst);
+    if (inst == NULL) return NULL;
+    inst->model = model;
+    inst->instanceName = copy_string(instanceName);
+    inst->data = calloc(1, model->dataSize);
+    if (inst->instanceName == NULL || inst->data == NULL) {
+        pm_instance_free(inst);
+        return NULL;
+    }
+    inst->log.callback = logger;
+    inst->log.environment = environment;
+    inst->log.instanceName = inst->instanceName;
+    uc_log_configure(&inst->log, loggingOn, 0, NULL);
+    pm_instance_reset(inst);
+    return inst;
+}
+
+void pm_instance_free(PMInstance* inst) {
+    if (inst == NULL) return;
+    free(inst->data);
+    free(inst->instanceName);
+    free(inst);
+}
+
+double* pm_value(PMInstance* inst, const PMVariable* v) { return (double*)((char*)inst->data + v->offset); }
+
+void pm_instance_reset(PMInstance* inst) {
+    const PMModel* m = inst->model;
+    memset(inst->data, 0, m->dataSize);
+    for (size_t i = 0; i < m->nVariables; ++i) {
+        const PMVariable* v = &m->variables[i];
+        if (v->causality != PM_OUTPUT) *pm_value(inst, v) = v->start;
+    }
+    inst->state = PM_STATE_INSTANTIATED;
+    inst->startTime = inst->time = inst->stopTime = 0.0;
+    inst->stopTimeDefined = 0;
+    inst->ready = 0;
+    inst->msg[0] = '\0';
+}
+
+fmi2Status pm_instance_check(PMInstance* inst, unsigned int allowedStates, const char* function) {
+    if (inst == NULL) return fmi2Error;
+    if ((inst->state & allowedStates) != 0) return fmi2OK;
+    uc_log_status(&inst->log, fmi2Error, "%s: illegal call sequence (called in state %s)", function,
+                  pm_state_name(inst->state));
+    return fmi2Error;
+}
+
+fmi2Status pm_instance_finish(PMInstance* inst, fmi2Status status) {
+    if (inst == NULL) return status;
+    if (status == fmi2Fatal) {
+        inst->state = PM_STATE_FATAL;
+    } else if (status == fmi2Error && inst->state != PM_STATE_FATAL) {
+        inst->state = PM_STATE_ERROR;
+    }
+    return status;
+}
+
+static fmi2Status check_parameter_ranges(PMInstance* inst, const char* function) {
+    const PMModel* m = inst->model;
+    for (size_t i = 0; i < m->nVariables; ++i) {
+        const PMVariable* v = &m->variables[i];
+        if (v->causality != PM_PARAMETER) continue;
+        double value = *pm_value(inst, v);
+        if (!(value >= v->min && value <= v->max)) {
+            uc_log_status(&inst->log, fmi2Error, "%s: invalid parameter: %s = %.17g is outside [%g, %g]: %s", function,
+                          v->name, value, v->min, v->max, v->why);
+            return fmi2Error;
+        }
+    }
+    return fmi2OK;
+}
+
+fmi2Status pm_ensure_initialized(PMInstance* inst, const char* function) {
+    if (inst->ready) return fmi2OK;
+    if (check_parameter_ranges(inst, function) != fmi2OK) return fmi2Error;
+    inst->msg[0] = '\0';
+    const PMModel* m = inst->model;
+    if (m->check(inst->data, inst->msg, sizeof inst->msg) != 0) {
+        uc_log_status(&inst->log, fmi2Error, "%s: invalid parameter: %s", function, inst->msg);
+        return fmi2Error;
+    }
+    if (m->initialize(inst->data, inst->startTime, inst->msg, sizeof inst->msg) != 0) {
+        uc_log_status(&inst->log, fmi2Error, "%s: initialization failed: %s", function, inst->msg);
+        return fmi2Error;
+    }
+    inst->time = inst->startTime;
+    inst->ready = 1;
+    uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: %s initialized at t = %.9g", function, m->identifier, inst->time);
+    return fmi2OK;
+}
+
+const char* pm_state_name(PMMachineState state) {
+    switch (state) {
+        case PM_STATE_INSTANTIATED: return "instantiated";
+        case PM_STATE_INIT_MODE: return "initializationMode";
+        case PM_STATE_STEP_COMPLETE: return "stepComplete";
+        case PM_STATE_STEP_IN_PROGRESS: return "stepInProgress";
+        case PM_STATE_STEP_FAILED: return "stepFailed";
+        case PM_STATE_STEP_CANCELED: return "stepCanceled";
+        case PM_STATE_TERMINATED: return "terminated";
+        case PM_STATE_ERROR: return "error";
+        default: return "fatal";
+    }
+}

@@ -1,0 +1,279 @@
+/*
+ * vessel.c - a survey vessel in the horizontal plane (3 DOF: surge, sway, yaw) with a speed and heading
+ * autopilot, towing at a tow point aft: the partner FMU "Vessel" (adapter: ../common/partner_fmi.c).
+ *
+ * Frames: Earth x, y horizontal, z up (as the cable FMU); heading psi from +x towards +y; body axes x
+ * forward, y to port. Body velocities u (surge), v (sway), r (yaw rate). Fossen's manoeuvring model
+ * with diagonal added mass, no Munk moment:
+ *
+ *   (m + Xa) du/dt - (m + Ya) v r = -Xu u - Xuu |u| u + thrust + Fx_tow
+ *   (m + Ya) dv/dt + (m + Xa) u r = -Yv v - Yvv |v| v          + Fy_tow
+ *   (Iz + Na) dr/dt               = -Nr r - Nrr |r| r + N_rudder + x_t Fy_tow - y_t Fx_tow
+ *
+ * F_tow = the input towForce.x/y (the cable FMU's towForce: the force of the cable on the tow point) in
+ * body axes, held constant over a communication step; its vertical component is not felt in the
+ * horizontal plane. The autopilot: speed PI with feed-forward of the ordered acceleration, the
+ * resistance and the measured tow force; heading PD with feed-forward of the ordered turn rate; gains
+ * from pole placement on the rigid vessel (speed loop speedBandwidth, heading loop headingBandwidth,
+ * both critically damped); the speed integrator is frozen while the thrust saturates in the direction
+ * of the error. Orders: speed speed0 until rampStart, linear to speed1 over rampDuration; heading
+ * heading0 until turnStart, then turning at turnRate until it has changed by turnAngle.
+ * Integration: classical Runge-Kutta, ceil(h / maxSubstep) substeps per communication step.
+ *
+ * Defaults: a ~20 m, 50 t survey vessel; resistance 1.25 kN at 2.4 kn and 15 kN at 10 kn; surge added
+ * mass 5 % and sway 80 % of the mass; yaw inertia m (L/4)^2 with 50 % added inertia; thrust 25 kN
+ * ahead, 12 kN astern; rudder moment 200 kN m; tow point on the centreline 10 m aft of the centre of
+ * gravity, at the surface.
+ */
+#include <math.h>
+#include <stddef.h>
+
+#include "partner.h"
+
+static const double kTwoPi = 6.28318530717958647692;
+
+enum { X, Y, PSI, U, V, R, INTEGRAL, N_STATES };
+
+typedef struct VesselData {
+    /* parameters */
+    double mass, addedMassSurge, addedMassSway, inertiaYaw, addedInertiaYaw;
+    double Xu, Xuu, Yv, Yvv, Nr, Nrr;
+    double towPoint[3];
+    double maxThrust, maxAstern, maxRudderMoment;
+    double speedBandwidth, headingBandwidth;
+    double x0, y0, heading0, speed0, speed1, rampStart, rampDuration;
+    double turnStart, turnRate, turnAngle;
+    double maxSubstep;
+    /* inputs */
+    double towForce[3];
+    /* states */
+    double state[N_STATES];
+    /* outputs */
+    double tow[3], towVelocity[3], towAcceleration[3];
+    double x, y, heading, surge, sway, yawRate, speed, thrust, rudderMoment;
+} VesselData;
+
+typedef struct Commands {
+    double thrust, moment, integralRate;
+} Commands;
+
+static double m11(const VesselData* d) { return d->mass + d->addedMassSurge; }
+static double m22(const VesselData* d) { return d->mass + d->addedMassSway; }
+static double m66(const VesselData* d) { return d->inertiaYaw + d->addedInertiaYaw; }
+static double surge_resistance(const VesselData* d, double u) { return d->Xu * u + d->Xuu * fabs(u) * u; }
+static double clamp(double x, double lo, double hi) { return x < lo ? lo : x > hi ? hi : x; }
+
+/* Speed order and its rate at time t. */
+static void speed_order(const VesselData* d, double t, double* speed, double* rate) {
+    double end = d->rampStart + d->rampDuration;
+    if (t < d->rampStart) {
+        *speed = d->speed0, *rate = 0.0;
+    } else if (t < end) {
+        *rate = (d->speed1 - d->speed0) / d->rampDuration;
+        *speed = d->speed0 + *rate * (t - d->rampStart);
+    } else {
+        *speed = d->speed1, *rate = 0.0;
+    }
+}
+
+/* Heading order and its rate at time t. */
+static void heading_order(const VesselData* d, double t, double* heading, double* rate) {
+    if (t <= d->turnStart || d->turnRate == 0.0) {
+        *heading = d->heading0, *rate = 0.0;
+    } else if (t >= d->turnStart + d->turnAngle / fabs(d->turnRate)) {
+        *heading = d->heading0 + copysign(d->turnAngle, d->turnRate), *rate = 0.0;
+    } else {
+        *heading = d->heading0 + d->turnRate * (t - d->turnStart), *rate = d->turnRate;
+    }
+}
+
+static Commands autopilot(const VesselData* d, double t, const double* x, double fxBody) {
+    double w = d->speedBandwidth, uRef, aRef;
+    speed_order(d, t, &uRef, &aRef);
+    double e = uRef - x[U];
+    double raw = m11(d) * aRef + surge_resistance(d, uRef) - fxBody + 2.0 * w * m11(d) * e +
+                 w * w * m11(d) * x[INTEGRAL];
+    Commands c;
+    c.thrust = clamp(raw, -d->maxAstern, d->maxThrust);
+    c.integralRate = (c.thrust != raw && e * raw > 0.0) ? 0.0 : e; /* anti-windup */
+
+    double wp = d->headingBandwidth, psiRef, rRef;
+    heading_order(d, t, &psiRef, &rRef);
+    double err = remainder(psiRef - x[PSI], kTwoPi);
+    double moment = d->Nr * rRef + d->Nrr * fabs(rRef) * rRef + wp * wp * m66(d) * err + 2.0 * wp * m66(d) * (rRef - x[R]);
+    c.moment = clamp(moment, -d->maxRudderMoment, d->maxRudderMoment);
+    return c;
+}
+
+/* dx/dt for the Earth-frame tow force f (x, y components used). */
+static void derivatives(const VesselData* d, double t, const double* x, const double* f, double* dx) {
+    double c = cos(x[PSI]), s = sin(x[PSI]);
+    double fxb = c * f[0] + s * f[1], fyb = -s * f[0] + c * f[1];
+    Commands cmd = autopilot(d, t, x, fxb);
+    double u = x[U], v = x[V], r = x[R];
+    double surge = -surge_resistance(d, u) + cmd.thrust + fxb;
+    double sway = -d->Yv * v - d->Yvv * fabs(v) * v + fyb;
+    double yaw = -d->Nr * r - d->Nrr * fabs(r) * r + cmd.moment + d->towPoint[0] * fyb - d->towPoint[1] * fxb;
+    dx[X] = c * u - s * v;
+    dx[Y] = s * u + c * v;
+    dx[PSI] = r;
+    dx[U] = (surge + m22(d) * v * r) / m11(d);
+    dx[V] = (sway - m11(d) * u * r) / m22(d);
+    dx[R] = yaw / m66(d);
+    dx[INTEGRAL] = cmd.integralRate;
+}
+
+/* Tow point position, velocity and acceleration (rigid-body kinematics of the point (xt, yt)). */
+static void update_outputs(VesselData* d, double t) {
+    const double* x = d->state;
+    double dx[N_STATES];
+    derivatives(d, t, x, d->towForce, dx);
+    double c = cos(x[PSI]), s = sin(x[PSI]);
+    double xt = d->towPoint[0], yt = d->towPoint[1];
+    double wx = x[U] - x[R] * yt, wy = x[V] + x[R] * xt; /* tow point velocity, body axes */
+    double ax = dx[U] - dx[R] * yt - x[R] * wy, ay = dx[V] + dx[R] * xt + x[R] * wx;
+    d->tow[0] = x[X] + c * xt - s * yt;
+    d->tow[1] = x[Y] + s * xt + c * yt;
+    d->tow[2] = d->towPoint[2];
+    d->towVelocity[0] = c * wx - s * wy;
+    d->towVelocity[1] = s * wx + c * wy;
+    d->towVelocity[2] = 0.0;
+    d->towAcceleration[0] = c * ax - s * ay;
+    d->towAcceleration[1] = s * ax + c * ay;
+    d->towAcceleration[2] = 0.0;
+    d->x = x[X];
+    d->y = x[Y];
+    d->heading = x[PSI];
+    d->surge = x[U];
+    d->sway = x[V];
+    d->yawRate = x[R];
+    d->speed = hypot(x[U], x[V]);
+    Commands cmd = autopilot(d, t, x, c * d->towForce[0] + s * d->towForce[1]);
+    d->thrust = cmd.thrust;
+    d->rudderMoment = cmd.moment;
+}
+
+static int vessel_check(const void* data, char* msg, size_t msgSize) {
+    (void)data, (void)msg, (void)msgSize; /* every parameter is independent of the others */
+    return 0;
+}
+
+static int vessel_initialize(void* data, double t0, char* msg, size_t msgSize) {
+    (void)msg, (void)msgSize;
+    VesselData* d = data;
+    d->state[X] = d->x0;
+    d->state[Y] = d->y0;
+    d->state[PSI] = d->heading0;
+    d->state[U] = d->speed0;
+    d->state[V] = d->state[R] = d->state[INTEGRAL] = 0.0;
+    update_outputs(d, t0);
+    return 0;
+}
+
+static int vessel_do_step(void* data, double t, double h, char* msg, size_t msgSize) {
+    (void)msg, (void)msgSize;
+    VesselData* d = data;
+    int n = (int)ceil(h / d->maxSubstep - 1e-12);
+    if (n < 1) n = 1;
+    double dt = h / n, k1[N_STATES], k2[N_STATES], k3[N_STATES], k4[N_STATES], tmp[N_STATES];
+    double* x = d->state;
+    for (int i = 0; i < n; ++i) {
+        double ti = t + i * dt;
+        derivatives(d, ti, x, d->towForce, k1);
+        for (int j = 0; j < N_STATES; ++j) tmp[j] = x[j] + 0.5 * dt * k1[j];
+        derivatives(d, ti + 0.5 * dt, tmp, d->towForce, k2);
+        for (int j = 0; j < N_STATES; ++j) tmp[j] = x[j] + 0.5 * dt * k2[j];
+        derivatives(d, ti + 0.5 * dt, tmp, d->towForce, k3);
+        for (int j = 0; j < N_STATES; ++j) tmp[j] = x[j] + dt * k3[j];
+        derivatives(d, ti + dt, tmp, d->towForce, k4);
+        for (int j = 0; j < N_STATES; ++j) x[j] += dt / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
+    }
+    update_outputs(d, t + h);
+    return 0;
+}
+
+#define P(field, name, start, min, max, unit, why, description) \
+    PM_PAR(VesselData, field, name, start, min, max, unit, why, description)
+#define O(field, name, unit, feedthrough, description) PM_OUT(VesselData, field, name, unit, feedthrough, description)
+
+static const PMVariable kVariables[] = {
+    P(mass, "mass", 50.0e3, 1.0, 1e9, "kg", "the vessel must have a positive mass", "Mass of the vessel"),
+    P(addedMassSurge, "addedMassSurge", 2.5e3, 0.0, 1e9, "kg", "added mass cannot be negative", "Surge added mass"),
+    P(addedMassSway, "addedMassSway", 40.0e3, 0.0, 1e9, "kg", "added mass cannot be negative", "Sway added mass"),
+    P(inertiaYaw, "inertiaYaw", 1.25e6, 1.0, 1e13, "kg.m2", "the yaw inertia must be positive",
+      "Yaw moment of inertia, m (L/4)^2"),
+    P(addedInertiaYaw, "addedInertiaYaw", 0.625e6, 0.0, 1e13, "kg.m2", "added inertia cannot be negative",
+      "Yaw added moment of inertia"),
+    P(Xu, "Xu", 400.0, 0.0, 1e9, "N.s/m", "resistance must dissipate", "Linear surge resistance coefficient"),
+    P(Xuu, "Xuu", 500.0, 0.0, 1e9, "N.s2/m2", "resistance must dissipate", "Quadratic surge resistance coefficient"),
+    P(Yv, "Yv", 1.0e4, 0.0, 1e9, "N.s/m", "resistance must dissipate", "Linear sway damping coefficient"),
+    P(Yvv, "Yvv", 2.0e4, 0.0, 1e9, "N.s2/m2", "resistance must dissipate",
+      "Quadratic sway damping coefficient, 0.5 rho A_lateral Cd"),
+    P(Nr, "Nr", 2.0e6, 0.0, 1e13, "N.m.s", "damping must dissipate", "Linear yaw damping coefficient"),
+    P(Nrr, "Nrr", 2.0e7, 0.0, 1e13, "N.m.s2", "damping must dissipate", "Quadratic yaw damping coefficient"),
+    P(towPoint[0], "towPoint.x", -10.0, -1e3, 1e3, "m", "the tow point must be on or near the vessel",
+      "Tow point in body axes, forward of the centre of gravity"),
+    P(towPoint[1], "towPoint.y", 0.0, -1e3, 1e3, "m", "the tow point must be on or near the vessel",
+      "Tow point in body axes, to port"),
+    P(towPoint[2], "towPoint.z", 0.0, -1e3, 1e3, "m", "the tow point must be on or near the vessel",
+      "Height of the tow point (Earth z, 0 = free surface)"),
+    P(maxThrust, "maxThrust", 25.0e3, 0.0, 1e9, "N", "a thrust limit cannot be negative", "Thrust limit ahead"),
+    P(maxAstern, "maxAstern", 12.0e3, 0.0, 1e9, "N", "a thrust limit cannot be negative",
+      "Thrust limit astern (magnitude)"),
+    P(maxRudderMoment, "maxRudderMoment", 2.0e5, 0.0, 1e12, "N.m", "a moment limit cannot be negative",
+      "Limit of the rudder yaw moment"),
+    P(speedBandwidth, "speedBandwidth", 0.2, 1e-4, 100.0, "1/s", "the speed loop needs a positive bandwidth",
+      "Bandwidth of the speed loop (critically damped PI)"),
+    P(headingBandwidth, "headingBandwidth", 0.3, 1e-4, 100.0, "1/s", "the heading loop needs a positive bandwidth",
+      "Bandwidth of the heading loop (critically damped PD)"),
+    P(x0, "x0", 0.0, -1e8, 1e8, "m", "a position on Earth", "Initial x of the centre of gravity"),
+    P(y0, "y0", 0.0, -1e8, 1e8, "m", "a position on Earth", "Initial y of the centre of gravity"),
+    P(heading0, "heading0", 0.0, -100.0, 100.0, "rad", "a heading within +-100 rad",
+      "Initial heading and heading order before the turn (from +x towards +y)"),
+    P(speed0, "speed0", 1.1 * 1852.0 / 3600.0, -30.0, 30.0, "m/s", "a speed within +-30 m/s",
+      "Initial surge speed and speed order before the ramp"),
+    P(speed1, "speed1", 2.4 * 1852.0 / 3600.0, -30.0, 30.0, "m/s", "a speed within +-30 m/s",
+      "Speed order after the ramp"),
+    P(rampStart, "rampStart", 0.0, 0.0, 1e8, "s", "the ramp starts at t >= 0", "Start of the speed ramp"),
+    P(rampDuration, "rampDuration", 60.0, 0.0, 1e8, "s", "a duration cannot be negative",
+      "Duration of the speed ramp (0: a step)"),
+    P(turnStart, "turnStart", 0.0, 0.0, 1e8, "s", "the turn starts at t >= 0", "Start of the turn"),
+    P(turnRate, "turnRate", 0.0, -1.0, 1.0, "rad/s", "a turn rate within +-1 rad/s",
+      "Rate of the heading order in the turn (sign: + to port)"),
+    P(turnAngle, "turnAngle", 0.0, 0.0, 1e6, "rad", "a heading change cannot be negative",
+      "Heading change of the turn (a large value: a circle)"),
+    P(maxSubstep, "maxSubstep", 0.05, 1e-4, 10.0, "s", "a Runge-Kutta substep within [1e-4, 10] s",
+      "Largest Runge-Kutta substep inside a communication step"),
+    PM_IN(VesselData, towForce[0], "towForce.x", "N", "x of the force of the cable on the tow point (cable towForce.x)"),
+    PM_IN(VesselData, towForce[1], "towForce.y", "N", "y of the force of the cable on the tow point (cable towForce.y)"),
+    PM_IN(VesselData, towForce[2], "towForce.z", "N", "z of the force of the cable on the tow point (not used)"),
+    O(tow[0], "tow.x", "m", 0, "x of the tow point (to the cable's tow.x)"),
+    O(tow[1], "tow.y", "m", 0, "y of the tow point"),
+    O(tow[2], "tow.z", "m", 0, "z of the tow point"),
+    O(towVelocity[0], "tow.vx", "m/s", 0, "x velocity of the tow point (to the cable's tow.vx)"),
+    O(towVelocity[1], "tow.vy", "m/s", 0, "y velocity of the tow point"),
+    O(towVelocity[2], "tow.vz", "m/s", 0, "z velocity of the tow point"),
+    O(towAcceleration[0], "tow.ax", "m/s2", 1, "x acceleration of the tow point (the cable's der(tow.vx))"),
+    O(towAcceleration[1], "tow.ay", "m/s2", 1, "y acceleration of the tow point"),
+    O(towAcceleration[2], "tow.az", "m/s2", 1, "z acceleration of the tow point"),
+    O(x, "x", "m", 0, "x of the centre of gravity"),
+    O(y, "y", "m", 0, "y of the centre of gravity"),
+    O(heading, "heading", "rad", 0, "Heading from +x towards +y"),
+    O(surge, "surge", "m/s", 0, "Surge velocity u"),
+    O(sway, "sway", "m/s", 0, "Sway velocity v (to port)"),
+    O(yawRate, "yawRate", "rad/s", 0, "Yaw rate r"),
+    O(speed, "speed", "m/s", 0, "Speed through the water, hypot(u, v)"),
+    O(thrust, "thrust", "N", 1, "Thrust of the autopilot"),
+    O(rudderMoment, "rudderMoment", "N.m", 0, "Rudder yaw moment of the autopilot"),
+};
+
+const PMModel kPartnerModel = {
+    "Vessel",
+    "Survey vessel, 3 DOF (surge, sway, yaw) with speed and heading autopilot, towing a cable at a tow point aft",
+    sizeof(VesselData),
+    kVariables,
+    sizeof kVariables / sizeof kVariables[0],
+    vessel_check,
+    vessel_initialize,
+    vessel_do_step,
+};

@@ -1,0 +1,191 @@
+"""The partner FMUs (Vessel, TowedBody): FMI conformance, the physics against independent solutions,
+and the robustness every FMU of the project owes (bad parameters, NaN inputs, call sequences, states).
+
+The Vessel FMU is a C port of the Python vessel model ucable.partners.vessel: with the same constant
+tow force both integrate the same equations with the same Runge-Kutta substeps, so they agree to
+round-off (1e-9 m / 1e-12 rad after 400 steps: the two differ only in the order of floating-point
+operations, whose error grows about linearly with the number of steps from 1e-16 relative).
+"""
+
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from ucable.cosim import HeadingReference, SpeedReference
+from ucable.fmu import CableFMU, FMICallException
+from ucable.manoeuvre import PiecewiseLinearSpeed
+from ucable.partners import Autopilot, Vessel, VesselParameters
+from ucable.steady_tow import KNOT
+from ucable.system import partner_fmu
+
+RHO, G = 1025.0, 9.81
+
+
+@pytest.fixture(scope="module")
+def vessel_fmu(fmu_file):
+    return partner_fmu("Vessel")
+
+
+@pytest.fixture(scope="module")
+def body_fmu(fmu_file):
+    return partner_fmu("TowedBody")
+
+
+@pytest.fixture
+def make():
+    """Factory of FMU instances (any of the project's FMUs), all freed at the end; their logs are
+    printed (pytest shows them when the test fails)."""
+    made = []
+
+    def factory(path, **kwargs):
+        unit = CableFMU(path, **kwargs)
+        made.append(unit)
+        return unit
+
+    yield factory
+    for u in made:
+        if u.messages:
+            print(f"--- log of {u.slave.instanceName}:\n{u.log_text()}")
+        u.free()
+
+
+@pytest.mark.parametrize("name", ["Vessel", "TowedBody"])
+def test_fmpy_validate_finds_no_problem(fmu_file, name):
+    out = subprocess.run([sys.executable, "-m", "fmpy", "validate", str(partner_fmu(name))],
+                         capture_output=True, text=True)
+    assert out.returncode == 0 and "No problems found" in out.stdout, out.stdout + out.stderr
+
+
+def test_vessel_fmu_equals_the_python_vessel_model_in_a_turn_and_a_ramp(vessel_fmu, make):
+    """Speed ramp 1.1 -> 2.4 kn in 60 s and a 90 deg turn at 1 deg/s from 30 s, under a constant tow
+    force with a lateral component (it yaws the vessel), 0.5 s steps for 200 s."""
+    force = np.array([-5000.0, 1500.0, -3000.0])
+    program = {"speed0": 1.1 * KNOT, "speed1": 2.4 * KNOT, "rampStart": 0.0, "rampDuration": 60.0,
+               "turnStart": 30.0, "turnRate": math.radians(1.0), "turnAngle": math.radians(90.0)}
+    v = make(vessel_fmu, parameters=program)
+    v.initialize(0.0, 200.0, inputs={f"towForce.{q}": f for q, f in zip("xyz", force)})
+    p = VesselParameters()
+    ap = Autopilot(p, SpeedReference(PiecewiseLinearSpeed([0.0, 60.0], [1.1 * KNOT, 2.4 * KNOT])),
+                   HeadingReference(0.0, 30.0, math.radians(1.0), math.radians(90.0)))
+    py = Vessel(p, ap, u0=1.1 * KNOT)
+    names = ["x", "y", "heading", "surge", "sway", "yawRate"]
+    for k in range(400):
+        v.do_step(0.5, t=0.5 * k)
+        py.step(0.5, force, force)
+    fmu_state = v.get_reals(names)
+    assert np.max(np.abs(fmu_state[:2] - py.x[:2])) < 1e-9
+    assert np.max(np.abs(fmu_state[2:] - py.x[2:6])) < 1e-12
+    # the turn was flown (the constant Earth-frame force yaws the vessel back by ~17 deg once it is
+    # abeam: 5 kN x 10 m against the heading loop's 0.17 MN m/rad)
+    assert 60.0 < math.degrees(fmu_state[2]) < 90.0
+    pos, vel, acc = py.tow_point(tow_force=force, t=200.0)
+    tow = v.get_reals(["tow.x", "tow.y", "tow.vx", "tow.vy", "tow.ax", "tow.ay"])
+    assert np.max(np.abs(tow - np.array([*pos, *vel, *acc]))) < 1e-9
+    thrust, moment = py.commands(force)
+    assert v.get("thrust") == pytest.approx(thrust, rel=1e-9)
+    assert v.get("rudderMoment") == pytest.approx(moment, rel=1e-9, abs=1e-6)
+
+
+def body_force(v, CdA=0.3, CLA=0.0, current=(0.0, 0.0)):
+    u = np.array([current[0], current[1], 0.0]) - np.asarray(v, float)
+    F = 0.5 * RHO * CdA * np.linalg.norm(u) * u
+    F[2] -= 0.5 * RHO * CLA * (u[0] ** 2 + u[1] ** 2)
+    return F
+
+
+def test_towed_body_force_and_its_linearization(body_fmu, make):
+    """Force element: force.* is drag + depressor lift at the input velocity (closed form), and
+    forceDamping.* = -d force / d v (central differences of the FMU's own force, step 1e-5 m/s:
+    truncation ~(1e-5 / 1 m/s)^2 relative, cancellation ~1e-16 * 300 N / 1e-5 m/s = 3e-9 N s/m)."""
+    params = {"CdA": 0.3, "CLA": 0.8, "current.x": 0.2, "current.y": -0.1}
+    b = make(body_fmu, parameters=params)
+    v0 = np.array([1.3, 0.4, -0.2])
+    b.initialize(0.0, 10.0, inputs={f"end.v{q}": x for q, x in zip("xyz", v0)})
+    names = [f"force.{q}" for q in "xyz"]
+    F = b.get_reals(names)
+    assert np.allclose(F, body_force(v0, 0.3, 0.8, (0.2, -0.1)), rtol=1e-12, atol=1e-9)
+    assert np.array_equal(b.get_reals([f"forceVelocity.{q}" for q in "xyz"]), v0)
+    D = b.get_reals([f"forceDamping.{r}{c}" for r in "xyz" for c in "xyz"]).reshape(3, 3)
+    numeric = np.zeros((3, 3))
+    t, dv = 0.0, 1e-5
+    for j, q in enumerate("xyz"):
+        values = []
+        for sign in (1, -1):
+            v = v0.copy()
+            v[j] += sign * dv
+            b.set({f"end.v{c}": x for c, x in zip("xyz", v)})
+            b.do_step(0.5, t=t)
+            t += 0.5
+            values.append(b.get_reals(names))
+        numeric[:, j] = -(values[0] - values[1]) / (2 * dv)
+    assert np.allclose(D, numeric, rtol=1e-6, atol=1e-6)
+    assert D[2, 0] != 0.0 and D[0, 2] != D[2, 0]  # the lift makes it non-symmetric
+
+
+def test_towed_body_sinks_at_its_terminal_velocity(body_fmu, make):
+    """Integrating its translation without a cable: (m - rho V) g = 1/2 rho CdA v^2. The time constant
+    (m + ma) / (rho CdA v) = 0.37 s: after 30 s (80 time constants) the velocity is terminal to
+    round-off; the fixed point of the Runge-Kutta map is the exact terminal velocity."""
+    b = make(body_fmu, parameters={"integrateTranslation": True, "position0.z": -10.0})
+    b.initialize(0.0, 30.0)
+    for k in range(60):
+        b.do_step(0.5, t=0.5 * k)
+    v_terminal = math.sqrt(2 * (400.0 - RHO * 0.1) * G / (RHO * 0.3))
+    assert b.get("velocity.z") == pytest.approx(-v_terminal, rel=1e-9)
+    assert b.get("acceleration.z") == pytest.approx(0.0, abs=1e-9)
+
+
+def test_bad_parameters_and_inputs_are_errors_naming_the_variable(body_fmu, vessel_fmu, make):
+    b = make(body_fmu, parameters={"mass": -1.0}, instance_name="b")
+    with pytest.raises(FMICallException):
+        b.initialize(0.0, 10.0)
+    assert any("mass = -1 is outside [0, 1e+08]" in m for _, _, m in b.messages), b.log_text()
+    v = make(vessel_fmu, instance_name="v")
+    v.initialize(0.0, 10.0)
+    with pytest.raises(FMICallException):
+        v.set({"towForce.x": float("nan")})
+    assert any("towForce.x = nan" in m for _, _, m in v.messages), v.log_text()
+    w = make(vessel_fmu, instance_name="w")
+    w.initialize(0.0, 10.0)
+    with pytest.raises(FMICallException):
+        w.set({"mass": 1.0})  # a fixed parameter after initialization
+    assert any("mass is a fixed parameter" in m for _, _, m in w.messages), w.log_text()
+
+
+def test_do_step_before_initialization_is_an_illegal_call_sequence(body_fmu, make):
+    b = make(body_fmu)
+    with pytest.raises(FMICallException):
+        b.slave.doStep(0.0, 0.5)
+    assert any("illegal call sequence" in m for _, _, m in b.messages)
+
+
+@pytest.mark.parametrize("name", ["Vessel", "TowedBody"])
+def test_states_restore_and_serialize_bit_identically(fmu_file, make, name):
+    params = {"turnStart": 5.0, "turnRate": 0.02, "turnAngle": 1.0} if name == "Vessel" else \
+        {"integrateTranslation": True, "CLA": 0.5, "velocity0.x": 1.0}
+    inputs = {"towForce.x": -4000.0, "towForce.y": 800.0} if name == "Vessel" else \
+        {"cableForce.x": 300.0, "cableForce.z": 2500.0}
+    a = make(partner_fmu(name), parameters=params, instance_name="a")
+    c = make(partner_fmu(name), parameters=params, instance_name="c")
+    for u in (a, c):
+        u.initialize(0.0, 100.0, inputs=inputs)
+    outputs = [n for n, v in a.variables.items() if v.causality == "output"]
+    for k in range(10):
+        a.do_step(0.5, t=0.5 * k)
+    state = a.get_state()
+    data = a.serialize_state(state)
+    for j in range(10):
+        a.do_step(0.5, t=5.0 + 0.5 * j)
+    first = a.get_reals(outputs)
+    a.set_state(state, time=5.0)
+    for j in range(10):
+        a.do_step(0.5, t=5.0 + 0.5 * j)
+    assert np.array_equal(a.get_reals(outputs), first)
+    c.set_state(c.deserialize_state(data), time=5.0)  # another instance, from the bytes
+    for j in range(10):
+        c.do_step(0.5, t=5.0 + 0.5 * j)
+    assert np.array_equal(c.get_reals(outputs), first)
+    a.free_state(state)
