@@ -137,3 +137,23 @@ def test_the_deck_statics_match_moorpy_fed_the_same_file(fmu_file, dx):
     ref, ours = v.moorpy_statics(deck, dx), v.fmu_statics(fmu_file, deck, dx)
     assert ours["fairlead"] == pytest.approx(ref["fairlead"], rel=5e-3)
     assert ours["anchor"] == pytest.approx(ref["anchor"], rel=5e-3)
+
+
+def test_a_free_far_end_with_mass_is_the_towed_body_bit_for_bit(make_cable, tmp_path):
+    """A Free point at the far end (no Fixed point) with mass, volume, drag area and added-mass
+    coefficient is the towed body: bottomEnd 2 with body.addedMass = CA rho V."""
+    text = CHAIN_DECK.read_text()
+    fixed = "1    Fixed       -850     0     -320    0      0       0      0"
+    assert fixed in text
+    path = tmp_path / "towed.dat"
+    path.write_text(text.replace(fixed, "1    Free        -850     0     -320    2000   0.5     1.5    0.8"))
+    body = {"bottomEnd": 2, "body.mass": 2000.0, "body.volume": 0.5, "body.CdA": 1.5,
+            "body.addedMass": 0.8 * 1025.0 * 0.5}
+    params = {k: v for k, v in CHAIN_BY_PARAMETERS.items() if not k.startswith("anchor.")}
+    deck = make_cable(parameters={"lineFile": str(path), "enableBending": False})
+    same = make_cable(parameters={**params, **body, "enableBending": False})
+    for c in (deck, same):
+        c.initialize(inputs={"tow.z": m.FAIRLEAD_Z, "tow.vx": 1.0})
+        c.do_step(0.5)
+    assert deck.get("endTension") > 0.0
+    assert deck.get_reals(OUTPUTS).tobytes() == same.get_reals(OUTPUTS).tobytes()
