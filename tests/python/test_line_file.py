@@ -157,3 +157,18 @@ def test_a_free_far_end_with_mass_is_the_towed_body_bit_for_bit(make_cable, tmp_
         c.do_step(0.5)
     assert deck.get("endTension") > 0.0
     assert deck.get_reals(OUTPUTS).tobytes() == same.get_reals(OUTPUTS).tobytes()
+
+
+def test_the_surge_differs_from_moordyn_by_discretization_only(fmu_file, tmp_path):
+    """The fairlead surge of the deck in both codes (docs/lines_validation.md): refining both meshes 2x
+    (BA kept in N s) brings the two codes' tension histories closer, at the fairlead and the anchor."""
+    from ucable import line_file_validation as v
+
+    deck = v.read_deck(CHAIN_DECK)
+    fine = v.refined_deck(deck, 2, tmp_path)
+    surge, t_end, t_from = v.Surge(2.0, 15.0), 45.0, 15.0
+    base = v.rms_difference(v.fmu_surge(fmu_file, deck, surge, t_end), v.moordyn_surge(deck, surge, t_end), t_from)
+    refined = v.rms_difference(v.fmu_surge(fmu_file, fine, surge, t_end), v.moordyn_surge(fine, surge, t_end),
+                               t_from)
+    for end in ("fairlead", "anchor"):
+        assert refined[end]["rms"] < base[end]["rms"], (end, base[end], refined[end])
