@@ -68,9 +68,10 @@ void uc_free(UCCable* c);
 int uc_initialize(UCCable* c, double t0, const UCInputs* in, char* msg, size_t msgSize);
 
 /* Integrates from t to exactly t + h (h > 0, t must equal the current time of the cable).
- * The tow point follows a cubic in time from the cable's current end state (position,
- * velocity) to in->tow + v h + a h^2/2 with velocity v + a h at t + h; when the inputs
- * agree with the current end state this is exactly tow + v (t' - t) + a (t' - t)^2 / 2.
+ * The tow point follows a quintic in time from the cable's current end state (position,
+ * velocity, acceleration) to in->tow + v h + a h^2/2 with velocity v + a h and acceleration a
+ * at t + h; when the inputs agree with the current end state this is exactly
+ * tow + v (t' - t) + a (t' - t)^2 / 2.
  * a is in->towAcceleration when in->towAccelerationGiven, otherwise the difference of the
  * last two tow velocity inputs over the last step size (0 on the first step). */
 int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, char* msg, size_t msgSize);
@@ -79,8 +80,9 @@ double uc_time(const UCCable* c);
 void uc_get_outputs(const UCCable* c, UCOutputs* out);
 
 /* Exact state save/restore: a plain byte copy of everything that determines the future.
- * After uc_state_save or uc_state_restore, the next uc_do_step restarts the integrator from
- * the saved vectors, so a saved-and-continued run and a restored-and-continued run are
+ * The state holds the integrator's history (step size, order, divided differences), so the run
+ * continues without a restart; after uc_state_save and after uc_state_restore the next step
+ * evaluates a new Jacobian, so a saved-and-continued run and a restored-and-continued run are
  * bit-identical. The buffer is only valid for a cable created with identical parameters. */
 size_t uc_state_size(const UCCable* c);
 int uc_state_save(UCCable* c, void* buffer, size_t size);

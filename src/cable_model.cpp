@@ -42,38 +42,42 @@ TowTrajectory TowTrajectory::at_rest_in_time(const Vec3& p, const Vec3& v, const
     traj.h = 0.0;
     traj.p0 = traj.p1 = p;
     traj.v0 = traj.v1 = v;
-    traj.a0 = a;
+    traj.a0 = traj.a1 = a;
     return traj;
 }
 
-TowTrajectory TowTrajectory::towards(double t0, double h, const Vec3& p0, const Vec3& v0, const Vec3& position,
-                                     const Vec3& velocity, const Vec3& a) {
+TowTrajectory TowTrajectory::quintic(double t0, double h, const Vec3& p0, const Vec3& v0, const Vec3& a0,
+                                     const Vec3& p1, const Vec3& v1, const Vec3& a1) {
     TowTrajectory traj;
     traj.t0 = t0;
     traj.h = h;
     traj.p0 = p0;
     traj.v0 = v0;
-    traj.p1 = position + velocity * h + 0.5 * a * h * h;
-    traj.v1 = velocity + a * h;
+    traj.a0 = a0;
+    traj.p1 = p1;
+    traj.v1 = v1;
+    traj.a1 = a1;
+    // Quintic Hermite: what the end state misses against the parabola from (p0, v0, a0) is made
+    // up by the s^3..s^5 terms, which vanish at s = 0 with their first two derivatives.
+    const Vec3 dp = p1 - (p0 + v0 * h + 0.5 * a0 * h * h);
+    const Vec3 dv = (v1 - (v0 + a0 * h)) * h;
+    const Vec3 da = (a1 - a0) * (h * h);
+    const double h3 = h * h * h;
+    traj.c3_ = (10.0 * dp - 4.0 * dv + 0.5 * da) / h3;
+    traj.c4_ = (-15.0 * dp + 7.0 * dv - da) / (h3 * h);
+    traj.c5_ = (6.0 * dp - 3.0 * dv + 0.5 * da) / (h3 * h * h);
     return traj;
 }
 
+TowTrajectory TowTrajectory::steady(double lambda) const {
+    return at_rest_in_time(p0, lambda * v0, Vec3::Zero(), t0);
+}
+
 void TowTrajectory::evaluate(double t, Vec3& p, Vec3& v, Vec3& a) const {
-    const double dt = t - t0;
-    if (h <= 0.0) {
-        p = p0 + v0 * dt + 0.5 * a0 * dt * dt;
-        v = v0 + a0 * dt;
-        a = a0;
-        return;
-    }
-    // Cubic Hermite in time: p(tau) = h00 p0 + h10 h v0 + h01 p1 + h11 h v1, tau = dt/h.
-    const double s = dt / h, s2 = s * s, s3 = s2 * s;
-    const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
-    const double d00 = 6 * s2 - 6 * s, d10 = 3 * s2 - 4 * s + 1, d01 = -6 * s2 + 6 * s, d11 = 3 * s2 - 2 * s;
-    const double e00 = 12 * s - 6, e10 = 6 * s - 4, e01 = -12 * s + 6, e11 = 6 * s - 2;
-    p = h00 * p0 + (h10 * h) * v0 + h01 * p1 + (h11 * h) * v1;
-    v = (d00 / h) * p0 + d10 * v0 + (d01 / h) * p1 + d11 * v1;
-    a = (e00 / (h * h)) * p0 + (e10 / h) * v0 + (e01 / (h * h)) * p1 + (e11 / h) * v1;
+    const double s = t - t0;  // Horner form; with h = 0 the cubic and higher terms are zero
+    p = p0 + s * (v0 + s * (0.5 * a0 + s * (c3_ + s * (c4_ + s * c5_))));
+    v = v0 + s * (a0 + s * (3.0 * c3_ + s * (4.0 * c4_ + s * (5.0 * c5_))));
+    a = a0 + s * (6.0 * c3_ + s * (12.0 * c4_ + s * (20.0 * c5_)));
 }
 
 CableModel::CableModel(const UCParams& params)

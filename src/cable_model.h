@@ -17,19 +17,28 @@
 
 namespace uc {
 
-// Motion of the tow point over one communication step [t0, t0 + h]: a cubic in time from
-// (p0, v0) to (p1, v1), so the prescribed end never jumps in position or velocity.
+// Motion of a driven end (the tow point, or the far end of bottomEnd 3) over one communication
+// step [t0, t0 + h]: a quintic in time from the end's state (p0, v0, a0) at t0 to a target state
+// (p1, v1, a1) at t0 + h. Each step starts from the state where the previous one ended, so the
+// end never jumps in position, velocity or acceleration (C2 across communication points): the
+// equations the integrator solves stay continuous there and it keeps its step size and order.
+// With h = 0 it is a point in time: p0 + v0 (t - t0) + a0 (t - t0)^2 / 2 for every t.
 struct TowTrajectory {
     double t0 = 0.0, h = 0.0;
-    Vec3 p0 = Vec3::Zero(), v0 = Vec3::Zero(), p1 = Vec3::Zero(), v1 = Vec3::Zero();
-    Vec3 a0 = Vec3::Zero();  // used only when h == 0 (a point in time: position, velocity, acceleration)
+    Vec3 p0 = Vec3::Zero(), v0 = Vec3::Zero(), a0 = Vec3::Zero();  // state at t0
+    Vec3 p1 = Vec3::Zero(), v1 = Vec3::Zero(), a1 = Vec3::Zero();  // state at t0 + h
 
     static TowTrajectory at_rest_in_time(const Vec3& p, const Vec3& v, const Vec3& a, double t);
-    // From the current end state (p0, v0) at t0 to the inputs extrapolated to t0 + h:
-    // position + velocity h + a h^2/2 with velocity + a h.
-    static TowTrajectory towards(double t0, double h, const Vec3& p0, const Vec3& v0, const Vec3& position,
-                                 const Vec3& velocity, const Vec3& a);
+    static TowTrajectory quintic(double t0, double h, const Vec3& p0, const Vec3& v0, const Vec3& a0,
+                                 const Vec3& p1, const Vec3& v1, const Vec3& a1);
+    // The same point in time (t0) with the velocity scaled by lambda and no acceleration (the
+    // static solver's load continuation).
+    TowTrajectory steady(double lambda) const;
     void evaluate(double t, Vec3& p, Vec3& v, Vec3& a) const;
+
+private:
+    // p(t0 + s) = p0 + v0 s + a0 s^2/2 + c3 s^3 + c4 s^4 + c5 s^5
+    Vec3 c3_ = Vec3::Zero(), c4_ = Vec3::Zero(), c5_ = Vec3::Zero();
 };
 
 // Everything the residual needs besides the state: prescribed motion and environment.

@@ -2,6 +2,8 @@
 #include "integrator.h"
 
 #include <ida/ida.h>
+#include <ida/ida_impl.h>     // IDAMemRec: the history saved with the FMU state
+#include <ida/ida_ls_impl.h>  // IDALsMemRec: its Jacobian counter
 #include <nvector/nvector_serial.h>
 
 #include <algorithm>
@@ -10,13 +12,12 @@
 #include <cstdlib>
 #include <new>
 
+// IDA's one-time set-up before the first step: exported by the library (ida.c) but not declared
+// in its headers.
+extern "C" int IDAInitialSetup(IDAMem ida_mem);
+
 namespace uc {
 namespace {
-
-int residual_callback(double t, N_Vector y, N_Vector yp, N_Vector r, void* user) {
-    auto* system = static_cast<SecondOrderSystem*>(user);
-    return system->residual(t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), N_VGetArrayPointer(r));
-}
 
 // The shells handed to IDA: the matrix only carries a pointer to the Integrator (IDA zeroes it
 // before each Jacobian evaluation: a no-op), the linear solver factors and solves the reduced form.
@@ -42,10 +43,57 @@ std::string flag_name(int flag) {
 // Steps per communication interval before IDA gives up (a 1 s step of a stiff cable needs < 1000).
 constexpr long kMaxStepsPerCall = 100000;
 
+// Newton iterations stop when their estimated error is below this fraction of the local error
+// test (IDA's default is 0.33). A master that repeats a step with corrected inputs (an iterative
+// co-simulation master) needs outputs that move smoothly with the inputs; with 0.33 the number of
+// Newton iterations of a step changes with the inputs often enough to leave mN steps in the
+// tension of the Hopland cable; 0.1 costs about 5 % more residual evaluations.
+constexpr double kNewtonConvergence = 0.1;
+
+// The fields of IDA's memory that determine how it continues from the current point (besides
+// the divided differences phi): everything else is scratch, recomputed at each step (the
+// error weights, the predictor, the Newton corrections) or fixed at set-up. The layout is that
+// of the SUNDIALS release the core is built with (ida_impl.h); the block is only ever read back
+// by the same build (the state's version and sizes are checked by the caller).
+constexpr int kHistoryScalars = 16, kHistoryCounters = 13, kHistoryArrays = 5;
+
+void copy_scalars(IDAMem m, double* v, bool save) {
+    double* fields[kHistoryScalars] = {&m->ida_tn,      &m->ida_tretlast, &m->ida_hh,     &m->ida_hused,
+                                       &m->ida_eta,     &m->ida_h0u,      &m->ida_cj,     &m->ida_cjlast,
+                                       &m->ida_cjold,   &m->ida_cjratio,  &m->ida_ss,     &m->ida_oldnrm,
+                                       &m->ida_epsNewt, &m->ida_toldel,   &m->ida_tolsf,  &m->ida_hin};
+    for (int i = 0; i < kHistoryScalars; ++i) {
+        if (save) v[i] = *fields[i];
+        else *fields[i] = v[i];
+    }
+}
+
+template <class Int>
+void copy_counter(Int& field, double& v, bool save) {
+    if (save) v = static_cast<double>(field);
+    else field = static_cast<Int>(v);
+}
+
+void copy_counters(IDAMem m, double* v, bool save) {
+    auto* ls = static_cast<IDALsMem>(m->ida_lmem);
+    copy_counter(m->ida_kk, v[0], save);
+    copy_counter(m->ida_kused, v[1], save);
+    copy_counter(m->ida_knew, v[2], save);
+    copy_counter(m->ida_phase, v[3], save);
+    copy_counter(m->ida_ns, v[4], save);
+    copy_counter(m->ida_nst, v[5], save);
+    copy_counter(m->ida_nre, v[6], save);
+    copy_counter(m->ida_ncfn, v[7], save);
+    copy_counter(m->ida_netf, v[8], save);
+    copy_counter(m->ida_nni, v[9], save);
+    copy_counter(m->ida_nnf, v[10], save);
+    copy_counter(m->ida_nsetups, v[11], save);
+    copy_counter(ls->nje, v[12], save);
+}
+
 }  // namespace
 
-Integrator::Integrator(SUNContext context, int n, int bandwidth, double relTol, double absTol,
-                       SecondOrderSystem* system)
+Integrator::Integrator(SUNContext context, int n, int bandwidth, SecondOrderSystem* system)
     : n_(n), bandwidth_(bandwidth), schur_(n, bandwidth), schurLU_(n, bandwidth), D_(n, bandwidth), system_(system) {
     pivoted_ = std::make_unique<BandSolver>(context, n, bandwidth);
     rhs_.assign(n, 0.0);
@@ -73,12 +121,12 @@ Integrator::Integrator(SUNContext context, int n, int bandwidth, double relTol, 
     N_VConst(0.0, yp_);
     bool ok = true;
     ok = ok && IDASetErrHandlerFn(ida_, &Integrator::error_handler, this) == IDA_SUCCESS;
-    ok = ok && IDAInit(ida_, residual_callback, 0.0, y_, yp_) == IDA_SUCCESS;
-    ok = ok && IDASStolerances(ida_, relTol, absTol) == IDA_SUCCESS;
-    ok = ok && IDASetUserData(ida_, system_) == IDA_SUCCESS;
+    ok = ok && IDAInit(ida_, &Integrator::residual_callback, 0.0, y_, yp_) == IDA_SUCCESS;
+    ok = ok && IDASetUserData(ida_, this) == IDA_SUCCESS;
     ok = ok && IDASetLinearSolver(ida_, solver_, J_) == IDA_SUCCESS;
     ok = ok && IDASetJacFn(ida_, &Integrator::jacobian_callback) == IDA_SUCCESS;
     ok = ok && IDASetMaxNumSteps(ida_, kMaxStepsPerCall) == IDA_SUCCESS;
+    ok = ok && IDASetNonlinConvCoef(ida_, kNewtonConvergence) == IDA_SUCCESS;
     if (!ok) {
         release();
         throw std::bad_alloc();
@@ -97,6 +145,11 @@ void Integrator::release() {
     solver_ = nullptr;
     J_ = nullptr;
     y_ = yp_ = nullptr;
+}
+
+int Integrator::residual_callback(double t, N_Vector y, N_Vector yp, N_Vector r, void* self) {
+    return static_cast<Integrator*>(self)->system_->residual(t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp),
+                                                             N_VGetArrayPointer(r));
 }
 
 // Fills the reduced matrices: A = K + cj D = dR/dq + cj dR/dv + cj^2 dR/da and D = dR/dv + cj dR/da.
@@ -199,6 +252,108 @@ bool Integrator::advance(double tEnd, std::string& error) {
                   flag_name(flag).c_str(), tReached, tEnd, lastMessage_.c_str());
     error = buffer;
     return false;
+}
+
+size_t Integrator::history_size() const {
+    return kHistoryScalars + kHistoryCounters + kHistoryArrays * MXORDP1 + static_cast<size_t>(MXORDP1) * 2 * n_;
+}
+
+void Integrator::save_history(double* out) {
+    auto* m = static_cast<IDAMem>(ida_);
+    // The next step evaluates a new Jacobian, here and after a restore alike: cj / cjold is then
+    // out of IDA's bounds for reusing the factored matrix, which the saved block does not hold.
+    m->ida_cjold = 0.0;
+    copy_scalars(m, out, true);
+    out += kHistoryScalars;
+    copy_counters(m, out, true);
+    out += kHistoryCounters;
+    const double* arrays[kHistoryArrays] = {m->ida_psi, m->ida_alpha, m->ida_beta, m->ida_sigma, m->ida_gamma};
+    for (const double* a : arrays) {
+        std::copy(a, a + MXORDP1, out);
+        out += MXORDP1;
+    }
+    for (int j = 0; j < MXORDP1; ++j) {
+        const double* phi = N_VGetArrayPointer(m->ida_phi[j]);
+        std::copy(phi, phi + 2 * n_, out);
+        out += 2 * n_;
+    }
+}
+
+bool Integrator::restore_history(const double* in, std::string& error) {
+    auto* m = static_cast<IDAMem>(ida_);
+    if (m->ida_maxord_alloc < MAXORD_DEFAULT || !m->ida_phi[MXORDP1 - 1]) {
+        error = "the integrator cannot hold the saved history";
+        return false;
+    }
+    copy_scalars(m, const_cast<double*>(in), false);
+    in += kHistoryScalars;
+    double* counters = const_cast<double*>(in);
+    copy_counters(m, counters, false);
+    in += kHistoryCounters;
+    double* arrays[kHistoryArrays] = {m->ida_psi, m->ida_alpha, m->ida_beta, m->ida_sigma, m->ida_gamma};
+    for (double* a : arrays) {
+        std::copy(in, in + MXORDP1, a);
+        in += MXORDP1;
+    }
+    for (int j = 0; j < MXORDP1; ++j) {
+        std::copy(in, in + 2 * n_, N_VGetArrayPointer(m->ida_phi[j]));
+        in += 2 * n_;
+    }
+    // The solution at the saved point, as IDASolve returned it there.
+    N_VScale(1.0, m->ida_phi[0], y_);
+    if (!m->ida_SetupDone) {
+        // An instance that never stepped: IDA's one-time set-up (linear and nonlinear solver
+        // initialization, first error weights), which IDASolve skips once steps were taken.
+        if (IDAInitialSetup(m) != IDA_SUCCESS) {
+            error = "integrator set-up failed while restoring a state";
+            return false;
+        }
+        m->ida_SetupDone = SUNTRUE;
+        copy_counters(m, counters, false);  // the set-up reset the linear solver's counter
+    }
+    return true;
+}
+
+bool Integrator::set_tolerances(const std::vector<double>& atol, double relTol, double absTol, std::string& error) {
+    if (atol.size() != static_cast<size_t>(2 * n_)) {
+        error = "internal: wrong number of tolerances";
+        return false;
+    }
+    for (double a : atol) {
+        if (!(a > 0.0) || !std::isfinite(a)) {
+            error = "the integrator's absolute tolerances must be positive (check EA, the tolerances and the tension scale)";
+            return false;
+        }
+    }
+    atol_ = atol;
+    relTol_ = relTol;
+    absTol_ = absTol;
+    const int flag = IDAWFtolerances(ida_, &Integrator::error_weights);
+    if (flag != IDA_SUCCESS) {
+        error = "IDAWFtolerances failed: " + flag_name(flag);
+        return false;
+    }
+    // IDAWFtolerances leaves the weight function's data pointer to IDA's set-up before the first
+    // step, which an integrator continuing a restored history does not run again.
+    static_cast<IDAMem>(ida_)->ida_edata = this;
+    return true;
+}
+
+int Integrator::error_weights(N_Vector y, N_Vector ewt, void* user) {
+    auto* self = static_cast<Integrator*>(user);
+    const double* yy = N_VGetArrayPointer(y);
+    double* w = N_VGetArrayPointer(ewt);
+    const bool scalar = self->relTol_ > 0.0 || self->absTol_ > 0.0;
+    for (int i = 0; i < 2 * self->n_; ++i) {
+        double tol = self->atol_[i];
+        if (scalar) {
+            const double s = self->relTol_ * std::fabs(yy[i]) + self->absTol_;  // 0 where relTol alone meets y = 0
+            if (s > 0.0) tol = std::min(tol, s);
+        }
+        if (!(tol > 0.0)) return -1;
+        w[i] = 1.0 / tol;
+    }
+    return 0;
 }
 
 const double* Integrator::y() const { return N_VGetArrayPointer(y_); }

@@ -49,17 +49,32 @@ struct IntegratorStats {
 
 class Integrator {
 public:
-    // n coordinates whose Jacobian entries couple i and k only for |i - k| <= bandwidth.
-    Integrator(SUNContext context, int n, int bandwidth, double relTol, double absTol, SecondOrderSystem* system);
+    // n coordinates whose Jacobian entries couple i and k only for |i - k| <= bandwidth. The
+    // tolerances are set with set_tolerances before the first restart.
+    Integrator(SUNContext context, int n, int bandwidth, SecondOrderSystem* system);
     ~Integrator();
     Integrator(const Integrator&) = delete;
     Integrator& operator=(const Integrator&) = delete;
+
+    // Per-component absolute tolerances of the local error test (2n values, interleaved like y):
+    // IDA's error weights become 1 / atol_i, or 1 / min(atol_i, relTol |y_i| + absTol) where the
+    // scalar tolerances are positive (they can only tighten the test).
+    bool set_tolerances(const std::vector<double>& atol, double relTol, double absTol, std::string& error);
 
     // Restarts the integrator at (t, y, y') (first order, fresh step size selection).
     bool restart(double t, const double* y, const double* yp, std::string& error);
     // Integrates to exactly tEnd (used as the stop time). On failure error names the SUNDIALS
     // flag and the time reached; y, y' then hold the last successful state.
     bool advance(double tEnd, std::string& error);
+
+    // The integrator's history (IDA's divided differences, step size, order, coefficients and
+    // counters) as a block of history_size() doubles, so that a saved state continues exactly as
+    // the run that saved it, without a restart. Saving and restoring both make the next step
+    // evaluate a new Jacobian (so that neither needs the factored matrices).
+    size_t history_size() const;
+    void save_history(double* out);
+    // False (error says why) if the block does not fit this integrator.
+    bool restore_history(const double* in, std::string& error);
 
     const double* y() const;
     const double* yp() const;
@@ -73,6 +88,8 @@ public:
 
 private:
     static void error_handler(int code, const char* module, const char* function, char* msg, void* self);
+    static int error_weights(N_Vector y, N_Vector ewt, void* self);
+    static int residual_callback(double t, N_Vector y, N_Vector yp, N_Vector r, void* self);
     static int jacobian_callback(double t, double cj, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix J,
                                  void* self, N_Vector, N_Vector, N_Vector);
     static int ls_setup(SUNLinearSolver S, SUNMatrix A);
@@ -94,6 +111,8 @@ private:
     BandMatrix D_;
     std::vector<double> rhs_;
     double cj_ = 0.0;  // of the stored matrices
+    std::vector<double> atol_;  // per-component absolute tolerances (empty: IDA's scalar ones)
+    double relTol_ = 0.0, absTol_ = 0.0;
     SecondOrderSystem* system_;
     std::string lastMessage_;
 };

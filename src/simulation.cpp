@@ -2,6 +2,7 @@
 #include "simulation.h"
 
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -15,25 +16,28 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 3;
+constexpr std::uint32_t kStateVersion = 4;
 
-// Fixed-layout header of a saved state; followed by UCOutputs, y and y'.
+// A driven end in a saved state.
+struct EndHeader {
+    double position[3], velocity[3], acceleration[3], lastVelocityInput[3], lastAccelerationInput[3];
+    double lastAccelerationGiven;
+};
+
+// Fixed-layout header of a saved state; followed by UCOutputs, y, y' and the integrator's history.
 struct StateHeader {
     std::uint32_t magic;
     std::uint32_t version;
     std::int32_t nFree;
     std::int32_t nElements;
     double time;
-    double towPosition[3];
-    double towVelocity[3];
-    double lastVelocityInput[3];
+    EndHeader tow, end;
     double lastStepSize;
-    double endPosition[3];
-    double endVelocity[3];
-    double lastEndVelocityInput[3];
     double twistRef[12];
     double lastBeta;
     double stats[5];
+    double tensionScale;  // of the error control
+    double historyValid;  // 1: the integrator's history follows y and y' (continue without a restart)
 };
 
 IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
@@ -48,13 +52,86 @@ IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
 
 Vec3 vec(const double v[3]) { return Vec3(v[0], v[1], v[2]); }
 
-// Acceleration of a driven end over the next step: the master's input derivative when given,
-// otherwise the difference of the last two velocity inputs (0 before there are two).
-Vec3 input_acceleration(const double given[3], int isGiven, const Vec3& velocity, const Vec3& lastVelocity,
-                        double lastStep) {
-    if (isGiven) return vec(given);
-    return lastStep > 0.0 ? Vec3((velocity - lastVelocity) / lastStep) : Vec3::Zero();
+void to_header(const DrivenEnd& e, EndHeader& h) {
+    for (int k = 0; k < 3; ++k) {
+        h.position[k] = e.position[k];
+        h.velocity[k] = e.velocity[k];
+        h.acceleration[k] = e.acceleration[k];
+        h.lastVelocityInput[k] = e.lastVelocityInput[k];
+        h.lastAccelerationInput[k] = e.lastAccelerationInput[k];
+    }
+    h.lastAccelerationGiven = e.lastAccelerationGiven ? 1.0 : 0.0;
 }
+
+void from_header(const EndHeader& h, DrivenEnd& e) {
+    e.position = vec(h.position);
+    e.velocity = vec(h.velocity);
+    e.acceleration = vec(h.acceleration);
+    e.lastVelocityInput = vec(h.lastVelocityInput);
+    e.lastAccelerationInput = vec(h.lastAccelerationInput);
+    e.lastAccelerationGiven = h.lastAccelerationGiven != 0.0;
+}
+
+// The jerk of a driven end at the current inputs, from the acceleration inputs of this step and
+// the previous one (both given by the master), trusted per component only as far as the
+// velocity inputs confirm it: an acceleration that changes linearly over the previous step
+// changes the velocity by the trapezoid h (a + aLast) / 2. Where it does not (an acceleration
+// that jumped, as at the start or end of a ramp), extrapolating the jerk would overshoot; the
+// weight falls linearly from 1 to 0 as the trapezoid's miss grows to half of h |a - aLast| / 2
+// (a jump at a communication point misses by all of it, a smooth heave sampled 10 times per
+// period by 5 %).
+Vec3 jerk_estimate(const Vec3& a, const Vec3& aLast, const Vec3& v, const Vec3& vLast, double hLast) {
+    Vec3 j = Vec3::Zero();
+    for (int k = 0; k < 3; ++k) {
+        const double da = a[k] - aLast[k];
+        const double scale = 0.5 * hLast * std::fabs(da);
+        if (!(scale > 0.0)) continue;
+        const double miss = std::fabs(v[k] - vLast[k] - 0.5 * hLast * (a[k] + aLast[k]));
+        const double weight = std::max(0.0, 1.0 - 2.0 * miss / scale);
+        j[k] = weight * da / hLast;
+    }
+    return j;
+}
+
+}  // namespace
+
+void DrivenEnd::reset(const Vec3& p, const Vec3& v, const Vec3& a, bool accelerationGiven) {
+    position = p;
+    velocity = v;
+    acceleration = a;
+    lastVelocityInput = v;
+    lastAccelerationInput = a;
+    lastAccelerationGiven = accelerationGiven;
+}
+
+TowTrajectory DrivenEnd::next(double t, double h, double lastStep, const Vec3& positionInput,
+                              const Vec3& velocityInput, const Vec3& accelerationInput, bool accelerationGiven,
+                              Vec3& a) const {
+    // The acceleration is the master's input derivative when given; otherwise the difference of
+    // the last two velocity inputs (0 before there are two), so that an accelerating tow sampled
+    // at communication points is still followed smoothly.
+    a = accelerationGiven ? accelerationInput
+        : lastStep > 0.0  ? Vec3((velocityInput - lastVelocityInput) / lastStep)
+                          : Vec3::Zero();
+    const Vec3 j = accelerationGiven && lastAccelerationGiven && lastStep > 0.0
+                       ? jerk_estimate(a, lastAccelerationInput, velocityInput, lastVelocityInput, lastStep)
+                       : Vec3::Zero();
+    const Vec3 p1 = positionInput + h * (velocityInput + h * (0.5 * a + h * (j / 6.0)));
+    const Vec3 v1 = velocityInput + h * (a + h * (0.5 * j));
+    const Vec3 a1 = a + h * j;
+    return TowTrajectory::quintic(t, h, position, velocity, acceleration, p1, v1, a1);
+}
+
+void DrivenEnd::advance(const TowTrajectory& traj, const Vec3& velocityInput, const Vec3& a, bool accelerationGiven) {
+    position = traj.p1;
+    velocity = traj.v1;
+    acceleration = traj.a1;
+    lastVelocityInput = velocityInput;
+    lastAccelerationInput = a;
+    lastAccelerationGiven = accelerationGiven;
+}
+
+namespace {
 
 // The linearization of the end load (12 inputs) is finite.
 bool end_load_linearization_finite(const UCInputs& in) {
@@ -66,6 +143,20 @@ bool end_load_linearization_finite(const UCInputs& in) {
     return true;
 }
 
+// The tension scale of the error control: the largest tension of the initial state, at least the
+// weight in air of the cable and the towed body (a cable released from rest has no tension yet;
+// its weight is what it will carry), the Euler load pi^2 EI / L (a weightless rod) and the
+// tension of a strain of 1e-6.
+double tension_scale(const CableModel& model, const UCOutputs& initial) {
+    const UCParams& p = model.params();
+    double T = initial.towTension;
+    for (double t : initial.tension) T = std::max(T, t);
+    const double body = p.bottomEnd == UC_BOTTOM_TOWED_BODY ? p.bodyMass : 0.0;
+    const double kPi = 3.14159265358979323846;
+    return std::max({T, (p.massPerLength * p.length + body) * p.gravity, kPi * kPi * model.EI() / (p.length * p.length),
+                     1e-6 * p.EA});
+}
+
 }  // namespace
 
 CableSimulation::CableSimulation(const UCParams& params) : model_(params) {
@@ -73,7 +164,7 @@ CableSimulation::CableSimulation(const UCParams& params) : model_(params) {
     const int n = model_.n_free();
     const int bandwidth = model_.free_bandwidth();
     try {
-        integrator_ = std::make_unique<Integrator>(context_, n, bandwidth, params.relTol, params.absTol, this);
+        integrator_ = std::make_unique<Integrator>(context_, n, bandwidth, this);
         staticSolver_ = std::make_unique<BandSolver>(context_, n, bandwidth);
     } catch (...) {
         integrator_.reset();
@@ -157,7 +248,7 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
     char buffer[400];
     const char* farName = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor.x/y/z" : "end.x/y/z";
     if (model_.far_end_prescribed()) {
-        const Vec3 d = farPoint - towPosition_;
+        const Vec3 d = farPoint - tow_.position;
         const double reach = 1.1 * p.length;
         if (d.norm() > reach) {
             // Name the coordinate that is farthest off, with the range the others leave it.
@@ -170,7 +261,7 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
                           "%s.%c = %.17g is outside [%.6g, %.6g]: the far end must lie within the reach of the "
                           "stretched cable, 1.1 x length = %.6g m from the tow point (it is %.6g m away; more than "
                           "10 %% strain, which no cable survives)",
-                          prefix, "xyz"[k], farPoint[k], towPosition_[k] - half, towPosition_[k] + half, reach,
+                          prefix, "xyz"[k], farPoint[k], tow_.position[k] - half, tow_.position[k] + half, reach,
                           d.norm());
             error = buffer;
             return false;
@@ -178,10 +269,10 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
     }
     if (!p.enableSeabed) return true;
     const double tolerance = 0.5 * p.diameter;  // a point resting on the seabed sinks in slightly
-    if (towPosition_.z() < -p.waterDepth - tolerance) {
+    if (tow_.position.z() < -p.waterDepth - tolerance) {
         std::snprintf(buffer, sizeof buffer,
                       "tow.z = %.6g m is below the seabed at z = -waterDepth = %.6g m: the tow point must be in the water",
-                      towPosition_.z(), -p.waterDepth);
+                      tow_.position.z(), -p.waterDepth);
         error = buffer;
         return false;
     }
@@ -213,19 +304,15 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         return false;
     }
     set_environment(in);
-    towPosition_ = vec(in.tow);
-    towVelocity_ = vec(in.towVelocity);
-    loads_.tow = TowTrajectory::at_rest_in_time(towPosition_, towVelocity_, vec(in.towAcceleration), t0);
-
-    endPosition_ = vec(in.end);
-    endVelocity_ = vec(in.endVelocity);
-    lastEndVelocityInput_ = endVelocity_;
-    loads_.end = TowTrajectory::at_rest_in_time(endPosition_, endVelocity_, Vec3::Zero(), t0);
-    const Vec3 farPoint = p.bottomEnd == UC_BOTTOM_EXTERNAL ? endPosition_ : vec(p.anchor);
+    tow_.reset(vec(in.tow), vec(in.towVelocity), vec(in.towAcceleration), in.towAccelerationGiven != 0);
+    loads_.tow = TowTrajectory::at_rest_in_time(tow_.position, tow_.velocity, tow_.acceleration, t0);
+    end_.reset(vec(in.end), vec(in.endVelocity), Vec3::Zero(), false);
+    loads_.end = TowTrajectory::at_rest_in_time(end_.position, end_.velocity, end_.acceleration, t0);
+    const Vec3 farPoint = p.bottomEnd == UC_BOTTOM_EXTERNAL ? end_.position : vec(p.anchor);
     if (!check_geometry(farPoint, error)) return false;
 
     const int n = model_.n_free();
-    initial_guess(towPosition_, farPoint, q_);
+    initial_guess(tow_.position, farPoint, q_);
     {
         // Twist reference frames from the initial guess (planar: no geometric twist).
         std::vector<double> zero(n, 0.0);
@@ -246,12 +333,12 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     // A steady tow only when nothing holds the far end back: free end, internal body, or an
     // external end moving with the tow point. Otherwise the equilibrium is at rest.
     const bool steadyTow = p.bottomEnd == UC_BOTTOM_FREE || p.bottomEnd == UC_BOTTOM_TOWED_BODY ||
-                           (p.bottomEnd == UC_BOTTOM_EXTERNAL && (endVelocity_ - towVelocity_).norm() <= 1e-12);
+                           (p.bottomEnd == UC_BOTTOM_EXTERNAL && (end_.velocity - tow_.velocity).norm() <= 1e-12);
     if (p.initMode == UC_INIT_EQUILIBRIUM && steadyTow) {
         // Steady tow: every node moves with the tow point, tangents do not turn.
         for (int g = 0; g < model_.n_global(); ++g) {
             const int j = model_.free_index(g);
-            if (j >= 0 && g % 6 < 3) v[j] = towVelocity_[g % 6];
+            if (j >= 0 && g % 6 < 3) v[j] = tow_.velocity[g % 6];
         }
     }
     if (p.initMode == UC_INIT_EQUILIBRIUM) {
@@ -272,12 +359,14 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         yp_[2 * j + 1] = a_[j];
     }
     time_ = t0;
-    lastVelocityInput_ = towVelocity_;
     lastStepSize_ = 0.0;
     statsBase_ = IntegratorStats();
     integratorStarted_ = false;
     restartPending_ = true;
     update_outputs();
+    tensionScale_ = tension_scale(model_, outputs_);
+    if (!set_integrator_tolerances(error)) return false;
+    outputs_.tensionScale = tensionScale_;
     return true;
 }
 
@@ -301,21 +390,16 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         return false;
     }
     set_environment(in);
-    // The end trajectory starts from where the previous step left the tow point (never jumps) and
-    // reaches the master's extrapolated target at t + h. Without input derivatives the
-    // acceleration is estimated from the last two velocity inputs, so that an accelerating tow
-    // sampled at communication points is followed smoothly (with a = 0 the cubic would have
-    // to correct a lag of a h^2/2 every step, an acceleration zigzag of +7a/-5a).
-    const Vec3 velocityInput = vec(in.towVelocity);
-    const Vec3 a = input_acceleration(in.towAcceleration, in.towAccelerationGiven, velocityInput,
-                                      lastVelocityInput_, lastStepSize_);
-    loads_.tow = TowTrajectory::towards(time_, h, towPosition_, towVelocity_, vec(in.tow), velocityInput, a);
-    if (model_.params().bottomEnd == UC_BOTTOM_EXTERNAL) {
-        // The far end follows end.* the same way.
-        const Vec3 endVelocityInput = vec(in.endVelocity);
-        const Vec3 aEnd = input_acceleration(in.endAcceleration, in.endAccelerationGiven, endVelocityInput,
-                                             lastEndVelocityInput_, lastStepSize_);
-        loads_.end = TowTrajectory::towards(time_, h, endPosition_, endVelocity_, vec(in.end), endVelocityInput, aEnd);
+    // Each driven end follows a quintic in time from where the previous step left it (position,
+    // velocity and acceleration: it never jumps) to the master's inputs extrapolated to t + h.
+    const Vec3 towVelocityInput = vec(in.towVelocity), endVelocityInput = vec(in.endVelocity);
+    Vec3 towAcceleration, endAcceleration;
+    loads_.tow = tow_.next(time_, h, lastStepSize_, vec(in.tow), towVelocityInput, vec(in.towAcceleration),
+                           in.towAccelerationGiven != 0, towAcceleration);
+    const bool externalEnd = model_.params().bottomEnd == UC_BOTTOM_EXTERNAL;
+    if (externalEnd) {
+        loads_.end = end_.next(time_, h, lastStepSize_, vec(in.end), endVelocityInput, vec(in.endAcceleration),
+                               in.endAccelerationGiven != 0, endAcceleration);
     }
 
     if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
@@ -342,17 +426,42 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         yp_[i] = yp[i];
     }
     time_ = tEnd;
-    towPosition_ = loads_.tow.p1;
-    towVelocity_ = loads_.tow.v1;
-    lastVelocityInput_ = velocityInput;
+    tow_.advance(loads_.tow, towVelocityInput, towAcceleration, in.towAccelerationGiven != 0);
+    if (externalEnd) end_.advance(loads_.end, endVelocityInput, endAcceleration, in.endAccelerationGiven != 0);
     lastStepSize_ = h;
-    if (model_.params().bottomEnd == UC_BOTTOM_EXTERNAL) {
-        endPosition_ = loads_.end.p1;
-        endVelocity_ = loads_.end.v1;
-        lastEndVelocityInput_ = vec(in.endVelocity);
-    }
     update_outputs();
     return true;
+}
+
+// The integrator's absolute tolerance of each unknown from the physical ones. A local error of
+// tensionTolerance x the tension scale in tension is a strain error eps = that / EA: eps x the
+// element length in a node position, eps in a tangent; positionTolerance bounds a node position,
+// and over the element length a tangent (an angle); the smaller of the two counts. A velocity
+// error delta / tau makes as large an error in the cable's internal damping force as a position
+// error delta makes in its elastic force (tau = axialDamping / EA, the Kelvin-Voigt time
+// constant), so velocities get the position tolerances over tau, with tau at least the time an
+// axial wave takes along an element (the shortest time scale the mesh resolves). IDA tests the
+// root mean square of the weighted local errors of all 2n unknowns, which a single unknown can
+// exceed sqrt(2n) times: the tolerances are divided by sqrt(2n), so that each unknown meets its own.
+bool CableSimulation::set_integrator_tolerances(std::string& error) {
+    const UCParams& p = model_.params();
+    const double l = model_.element_length();
+    const double rms = 1.0 / std::sqrt(2.0 * model_.n_free());
+    const double strain = rms * p.tensionTolerance * tensionScale_ / p.EA;
+    const double wave = l / std::sqrt(p.EA / p.massPerLength);
+    const double tau = std::max(p.axialDamping / p.EA, wave);
+    std::vector<double>& atol = toleranceBuffer_;
+    atol.assign(2 * model_.n_free(), 0.0);
+    for (int g = 0; g < model_.n_global(); ++g) {
+        const int j = model_.free_index(g);
+        if (j < 0) continue;
+        const bool position = g % 6 < 3;
+        const double a = position ? std::min(rms * p.positionTolerance, strain * l)
+                                  : std::min(rms * p.positionTolerance / l, strain);
+        atol[2 * j] = a;
+        atol[2 * j + 1] = a / tau;
+    }
+    return integrator_->set_tolerances(atol, p.relTol, p.absTol, error);
 }
 
 int CableSimulation::residual(double t, const double* y, const double* yp, double* r) {
@@ -412,10 +521,11 @@ void CableSimulation::update_outputs() {
     outputs_.nJacobianEvals = s.jacobianEvals;
     outputs_.nNonlinearFailures = s.nonlinearFailures;
     outputs_.nErrorTestFailures = s.errorTestFailures;
+    outputs_.tensionScale = tensionScale_;
 }
 
 size_t CableSimulation::state_size() const {
-    return sizeof(StateHeader) + sizeof(UCOutputs) + 2 * y_.size() * sizeof(double);
+    return sizeof(StateHeader) + sizeof(UCOutputs) + (2 * y_.size() + integrator_->history_size()) * sizeof(double);
 }
 
 void CableSimulation::save_state(void* buffer) {
@@ -427,20 +537,21 @@ void CableSimulation::save_state(void* buffer) {
     header.time = time_;
     const IntegratorStats s = total_stats();
     const double stats[5] = {s.steps, s.residualEvals, s.jacobianEvals, s.nonlinearFailures, s.errorTestFailures};
-    for (int k = 0; k < 3; ++k) {
-        header.towPosition[k] = towPosition_[k];
-        header.towVelocity[k] = towVelocity_[k];
-        header.lastVelocityInput[k] = lastVelocityInput_[k];
-        header.endPosition[k] = endPosition_[k];
-        header.endVelocity[k] = endVelocity_[k];
-        header.lastEndVelocityInput[k] = lastEndVelocityInput_[k];
-    }
+    to_header(tow_, header.tow);
+    to_header(end_, header.end);
     header.lastStepSize = lastStepSize_;
     const Vec3* frames[4] = {&twistRef_.topTangent, &twistRef_.topNormal, &twistRef_.endTangent, &twistRef_.endNormal};
     for (int f = 0; f < 4; ++f)
         for (int k = 0; k < 3; ++k) header.twistRef[3 * f + k] = (*frames[f])[k];
     header.lastBeta = lastBeta_;
     std::memcpy(header.stats, stats, sizeof stats);
+    // The integrator's history, when it belongs to this state: the run continues from here
+    // without a restart, exactly as a restored copy will (both evaluate a new Jacobian first).
+    const bool history = integratorStarted_ && !restartPending_;
+    header.historyValid = history ? 1.0 : 0.0;
+    header.tensionScale = tensionScale_;
+    historyBuffer_.assign(integrator_->history_size(), 0.0);
+    if (history) integrator_->save_history(historyBuffer_.data());
     auto* out = static_cast<unsigned char*>(buffer);
     std::memcpy(out, &header, sizeof header);
     out += sizeof header;
@@ -449,8 +560,8 @@ void CableSimulation::save_state(void* buffer) {
     std::memcpy(out, y_.data(), y_.size() * sizeof(double));
     out += y_.size() * sizeof(double);
     std::memcpy(out, yp_.data(), yp_.size() * sizeof(double));
-    // The continuation from here restarts the integrator, exactly as a restored copy will.
-    restartPending_ = true;
+    out += yp_.size() * sizeof(double);
+    std::memcpy(out, historyBuffer_.data(), historyBuffer_.size() * sizeof(double));
 }
 
 bool CableSimulation::restore_state(const void* buffer, size_t size, std::string& error) {
@@ -472,13 +583,23 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     std::memcpy(y_.data(), in, y_.size() * sizeof(double));
     in += y_.size() * sizeof(double);
     std::memcpy(yp_.data(), in, yp_.size() * sizeof(double));
+    in += yp_.size() * sizeof(double);
+    tensionScale_ = header.tensionScale;
+    if (tensionScale_ > 0.0 && !set_integrator_tolerances(error)) {  // 0: saved before initialization
+        restartPending_ = true;
+        return false;
+    }
+    if (header.historyValid != 0.0) {
+        historyBuffer_.resize(integrator_->history_size());
+        std::memcpy(historyBuffer_.data(), in, historyBuffer_.size() * sizeof(double));
+        if (!integrator_->restore_history(historyBuffer_.data(), error)) {
+            restartPending_ = true;
+            return false;
+        }
+    }
     time_ = header.time;
-    towPosition_ = vec(header.towPosition);
-    towVelocity_ = vec(header.towVelocity);
-    lastVelocityInput_ = vec(header.lastVelocityInput);
-    endPosition_ = vec(header.endPosition);
-    endVelocity_ = vec(header.endVelocity);
-    lastEndVelocityInput_ = vec(header.lastEndVelocityInput);
+    from_header(header.tow, tow_);
+    from_header(header.end, end_);
     Vec3* frames[4] = {&twistRef_.topTangent, &twistRef_.topNormal, &twistRef_.endTangent, &twistRef_.endNormal};
     for (int f = 0; f < 4; ++f) *frames[f] = vec(header.twistRef + 3 * f);
     lastBeta_ = header.lastBeta;
@@ -488,8 +609,17 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     statsBase_.jacobianEvals = header.stats[2];
     statsBase_.nonlinearFailures = header.stats[3];
     statsBase_.errorTestFailures = header.stats[4];
-    integratorStarted_ = false;
-    restartPending_ = true;
+    integratorStarted_ = header.historyValid != 0.0;
+    restartPending_ = !integratorStarted_;
+    if (integratorStarted_) {
+        // The restored integrator carries the saver's counters since its last restart.
+        const IntegratorStats since = integrator_->stats();
+        statsBase_.steps -= since.steps;
+        statsBase_.residualEvals -= since.residualEvals;
+        statsBase_.jacobianEvals -= since.jacobianEvals;
+        statsBase_.nonlinearFailures -= since.nonlinearFailures;
+        statsBase_.errorTestFailures -= since.errorTestFailures;
+    }
     return true;
 }
 

@@ -17,6 +17,23 @@
 
 namespace uc {
 
+// A prescribed end driven by the master's inputs (the tow point; the far end of bottomEnd 3):
+// where its trajectory stands at the current time, and the inputs of the previous step.
+struct DrivenEnd {
+    Vec3 position = Vec3::Zero(), velocity = Vec3::Zero(), acceleration = Vec3::Zero();
+    Vec3 lastVelocityInput = Vec3::Zero(), lastAccelerationInput = Vec3::Zero();
+    bool lastAccelerationGiven = false;
+
+    void reset(const Vec3& p, const Vec3& v, const Vec3& a, bool accelerationGiven);
+    // The trajectory over [t, t + h] towards the inputs (position, velocity and, if given, the
+    // acceleration) extrapolated to t + h; lastStep is the previous step's size (0: none).
+    TowTrajectory next(double t, double h, double lastStep, const Vec3& positionInput, const Vec3& velocityInput,
+                       const Vec3& accelerationInput, bool accelerationGiven, Vec3& acceleration) const;
+    // After a successful step along traj with these inputs.
+    void advance(const TowTrajectory& traj, const Vec3& velocityInput, const Vec3& acceleration,
+                 bool accelerationGiven);
+};
+
 class CableSimulation : public SecondOrderSystem {
 public:
     explicit CableSimulation(const UCParams& params);
@@ -48,6 +65,7 @@ private:
     void initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
     bool check_geometry(const Vec3& farPoint, std::string& error) const;
     void update_outputs();
+    bool set_integrator_tolerances(std::string& error);
     double cable_torque(const UCInputs& in);
     IntegratorStats total_stats() const;
 
@@ -58,17 +76,16 @@ private:
 
     // --- state (what save/restore copies) ---
     double time_ = 0.0;
-    Vec3 towPosition_ = Vec3::Zero(), towVelocity_ = Vec3::Zero();  // prescribed end at time_
-    Vec3 lastVelocityInput_ = Vec3::Zero();  // tow velocity input of the previous step ...
-    double lastStepSize_ = 0.0;              // ... and its step size (0: no history yet)
-    Vec3 endPosition_ = Vec3::Zero(), endVelocity_ = Vec3::Zero();  // prescribed far end (bottomEnd 3)
-    Vec3 lastEndVelocityInput_ = Vec3::Zero();
+    DrivenEnd tow_;             // the tow point
+    DrivenEnd end_;             // the far end of bottomEnd 3 (external)
+    double lastStepSize_ = 0.0; // of the previous step (0: no input history yet)
     TwistReference twistRef_;  // end frames at initialization (torqueMode 2)
     double lastBeta_ = 0.0;    // geometric twist at the last evaluation, for unwrapping past +-pi
     std::vector<double> y_, yp_;  // IDA vectors at time_: y = [q_0, v_0, q_1, v_1, ...]
     IntegratorStats statsBase_;   // statistics folded in at integrator restarts
     bool integratorStarted_ = false;  // the integrator's own counters belong to this state
     UCOutputs outputs_{};
+    double tensionScale_ = 0.0;  // of the error control, fixed at initialization
     bool restartPending_ = true;
 
     // --- per-step environment and workspace ---
@@ -76,6 +93,8 @@ private:
     std::vector<double> q_, v_, a_, X_, Xd_, Xdd_, R_;
     ElementForces forces_;
     std::vector<double> nodeTension_;  // output workspace
+    std::vector<double> historyBuffer_;  // the integrator's history on its way to/from a saved state
+    std::vector<double> toleranceBuffer_;
 };
 
 }  // namespace uc

@@ -32,16 +32,12 @@ Loads scaled_loads(const Loads& loads, double lambda) {
     Loads s = loads;
     s.current.uniform *= lambda;
     s.current.profileScale *= lambda;
-    s.end.v0 *= lambda;
-    s.end.v1 *= lambda;
-    s.end.a0.setZero();
+    s.end = loads.end.steady(lambda);
     s.endLoad *= lambda;
     s.endLoadVelocity *= lambda;  // the linearized end load scales with the flow as well
     s.endCouple *= lambda;
     s.torque *= lambda;
-    s.tow.v0 *= lambda;
-    s.tow.v1 *= lambda;
-    s.tow.a0.setZero();
+    s.tow = loads.tow.steady(lambda);
     return s;
 }
 

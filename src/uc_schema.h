@@ -30,8 +30,8 @@ typedef struct UCParams {
     double Can; /* Can: normal added-mass coefficient */
     double Cat; /* Cat: tangential added-mass coefficient */
     int nElements; /* nElements: number of cubic Hermite elements (≥ 1) */
-    double relTol; /* relTol: relative tolerance of the time integrator (tension needs tight relative accuracy; see docs) */
-    double absTol; /* absTol: absolute tolerance of the time integrator (SI units of the unknowns) */
+    double relTol; /* relTol: optional extra relative tolerance of IDA's usual form (relTol·|y| + absTol per unknown), applied only where it is tighter than the physical tolerances `tensionTolerance` and `positionTolerance`; 0: not used (see docs/error_control.md) */
+    double absTol; /* absTol: optional extra absolute tolerance of IDA's usual form (SI units of the unknowns), with `relTol`; 0: not used */
     double waterDensity; /* waterDensity [kg/m3]: sea water density */
     double gravity; /* gravity [m/s2]: gravitational acceleration (along -z) */
     double waterDepth; /* waterDepth [m]: water depth (seabed at z = -waterDepth) */
@@ -59,6 +59,8 @@ typedef struct UCParams {
     int torqueMode; /* torqueMode: torque H: 0 torque-free swivel (H = 0), 1 the `torque` input, 2 from the `twist` input: H = GJ (twist - geometric twist) / length, the geometric twist by parallel transport of frames, H updated at every communication point */
     char lineFile[UC_STRING_CAPACITY]; /* lineFile: path of a MoorDyn v2 input file describing the line: line types, points and lines from the vessel point to the anchor, water depth, gravity and density ([docs/lines.md](docs/lines.md)); a relative path is looked up in the FMU's `resources/` directory, then in the working directory; empty: the line of the parameters */
     int lineFileElements; /* lineFileElements: elements of a line read from `lineFile`: 0, from each line's NumSegs by the rule of [docs/lines.md](docs/lines.md); N > 0, about N in total, shared by the lines in proportion to their unstretched length (at least one each) */
+    double tensionTolerance; /* tensionTolerance: tension tolerance of the time integrator, relative to the tension scale (the larger of the initial top tension and the weight in air of the cable and the towed body): each step's local error stays below it in tension, as a strain error in positions and tangents and over the damping time in velocities ([docs/error_control.md](docs/error_control.md)) */
+    double positionTolerance; /* positionTolerance [m]: position tolerance of the time integrator: each step's local error in a node position stays below it (in a tangent, below it over the element length); the tension tolerance is usually the tighter one */
 } UCParams;
 
 typedef struct UCInputs {
@@ -105,6 +107,7 @@ typedef struct UCOutputs {
     double nJacobianEvals; /* solver.nJacobianEvals: integrator statistics since initialization (debugging) */
     double nNonlinearFailures; /* solver.nNonlinearFailures: integrator statistics since initialization (debugging) */
     double nErrorTestFailures; /* solver.nErrorTestFailures: integrator statistics since initialization (debugging) */
+    double tensionScale; /* solver.tensionScale [N]: tension scale of the error control, fixed at initialization (the largest initial tension, at least the weight in air of the cable and the body): `tensionTolerance` × `solver.tensionScale` is the tension tolerance in newtons */
 } UCOutputs;
 
 /* X(vr, name, TYPE, CAUSALITY, member): every variable in value-reference order; TYPE is REAL, INTEGER, BOOLEAN or STRING (a NUL-terminated char array), CAUSALITY PARAMETER, INPUT or OUTPUT, member the field of UCParams, UCInputs or UCOutputs */
@@ -184,6 +187,8 @@ typedef struct UCOutputs {
     X(73, "torqueMode", INTEGER, PARAMETER, torqueMode) \
     X(74, "lineFile", STRING, PARAMETER, lineFile) \
     X(75, "lineFileElements", INTEGER, PARAMETER, lineFileElements) \
+    X(76, "tensionTolerance", REAL, PARAMETER, tensionTolerance) \
+    X(77, "positionTolerance", REAL, PARAMETER, positionTolerance) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -375,6 +380,7 @@ typedef struct UCOutputs {
     X(2155, "solver.nJacobianEvals", REAL, OUTPUT, nJacobianEvals) \
     X(2156, "solver.nNonlinearFailures", REAL, OUTPUT, nNonlinearFailures) \
     X(2157, "solver.nErrorTestFailures", REAL, OUTPUT, nErrorTestFailures) \
+    X(2158, "solver.tensionScale", REAL, OUTPUT, tensionScale) \
 
 /* X(member, value): the start value of every numeric parameter (Strings start empty: zero-filled) */
 #define UC_SCHEMA_PARAMETER_DEFAULTS(X) \
@@ -391,8 +397,8 @@ typedef struct UCOutputs {
     X(Can, 1.0) \
     X(Cat, 0.0) \
     X(nElements, 20) \
-    X(relTol, 1e-8) \
-    X(absTol, 1e-6) \
+    X(relTol, 0.0) \
+    X(absTol, 0.0) \
     X(waterDensity, 1025.0) \
     X(gravity, 9.81) \
     X(waterDepth, 1000.0) \
@@ -452,6 +458,8 @@ typedef struct UCOutputs {
     X(enableTorsion, 0) \
     X(torqueMode, 0) \
     X(lineFileElements, 0) \
+    X(tensionTolerance, 0.001) \
+    X(positionTolerance, 0.001) \
 
 /* X(member, name, lo, hi, loOpen, hiOpen, rangeText, why): the admissible interval of every numeric parameter (closed or open at each end) */
 #define UC_SCHEMA_PARAMETER_RANGES(X) \
@@ -467,8 +475,8 @@ typedef struct UCOutputs {
     X(Can, "Can", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
     X(Cat, "Cat", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
     X(nElements, "nElements", 1.0, 1000.0, 0, 0, "[1, 1000]", "the cable needs at least one element; more than 1000 is never needed for a cable") \
-    X(relTol, "relTol", 1e-12, 0.1, 0, 0, "[1e-12, 0.1]", "the integrator needs a meaningful relative tolerance") \
-    X(absTol, "absTol", 1e-14, 1.0, 0, 0, "[1e-14, 1]", "the integrator needs a meaningful absolute tolerance") \
+    X(relTol, "relTol", 0.0, 0.1, 0, 0, "[0, 0.1]", "a relative tolerance is a small non-negative number (0: not used)") \
+    X(absTol, "absTol", 0.0, 1.0, 0, 0, "[0, 1]", "an absolute tolerance is a small non-negative number (0: not used)") \
     X(waterDensity, "waterDensity", 0.0, 10000.0, 0, 0, "[0, 10000]", "a fluid density cannot be negative") \
     X(gravity, "gravity", 0.0, 100.0, 0, 0, "[0, 100]", "gravity points along -z; give its magnitude") \
     X(waterDepth, "waterDepth", 0.0, 12000.0, 1, 0, "(0, 12000]", "the seabed lies below the surface (z = -waterDepth)") \
@@ -524,6 +532,8 @@ typedef struct UCOutputs {
     X(initialDirection[2], "initialDirection.z", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "a direction component must be a moderate finite number (the direction is normalized)") \
     X(torqueMode, "torqueMode", 0.0, 2.0, 0, 0, "{0 swivel, 1 prescribed torque, 2 prescribed rotation}", "unknown torque mode") \
     X(lineFileElements, "lineFileElements", 0.0, 1000.0, 0, 0, "[0, 1000]", "0 takes the element counts from the line file; more than 1000 elements are never needed") \
+    X(tensionTolerance, "tensionTolerance", 0.0, 0.1, 1, 0, "(0, 0.1]", "the tension tolerance is a fraction of the tension scale, between 0 and 10 %") \
+    X(positionTolerance, "positionTolerance", 0.0, 10.0, 1, 0, "(0, 10]", "the position tolerance is a positive length") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -24,8 +24,8 @@ def parse_args(argv):
     p = argparse.ArgumentParser(prog="scripts/bench_hopland", description=__doc__.split("\n")[0])
     p.add_argument("--nElements", type=int, nargs="+", default=[20],
                    help="element counts (default 20)")
-    p.add_argument("--relTol", type=float, nargs="+", default=[None],
-                   help="integrator relative tolerances (default: the FMU's default)")
+    p.add_argument("--tensionTolerance", type=float, nargs="+", default=[None],
+                   help="integrator tension tolerances (default: the FMU's default)")
     p.add_argument("--steps", type=float, nargs="+", default=[0.5, 1.0],
                    help="communication steps [s] (default 0.5 1)")
     p.add_argument("--repeat", type=int, default=1, help="runs per case, best CPU kept (default 1)")
@@ -41,10 +41,11 @@ def bench_case(fmu, n_elements, rel_tol, step, repeat, input_derivatives):
     for _ in range(repeat):
         params = {"nElements": n_elements}
         if rel_tol is not None:
-            params["relTol"] = rel_tol
+            params["tensionTolerance"] = rel_tol
         cable = CableFMU(fmu, parameters=params)
         try:
-            default_tol = float(cable.variables["relTol"].start) if "relTol" in cable.variables else None
+            default_tol = (float(cable.variables["tensionTolerance"].start)
+                           if "tensionTolerance" in cable.variables else None)
             cpu0 = time.process_time()
             run = run_tow(cable, profile, t_end, step, record_shape=False,
                           use_input_derivatives=input_derivatives)
@@ -61,10 +62,10 @@ def main(argv=None) -> int:
     fmu = args.fmu if args.fmu is not None else require_fmu()
     print(f"Hopland manoeuvre 1.1 -> 2.4 kn (60 s ramp + 600 s), FMU {fmu}, input derivatives "
           f"{'on' if args.input_derivatives else 'off'}")
-    print(f"{'nElements':>9} {'relTol':>8} {'step [s]':>8} {'CPU [s]':>8} {'RT factor':>9} "
+    print(f"{'nElements':>9} {'tensTol':>8} {'step [s]':>8} {'CPU [s]':>8} {'RT factor':>9} "
           f"{'T(660 s) [N]':>12}  accept (<{ACCEPT_CPU_S:g} s @ 20 el.)")
     for n in args.nElements:
-        for tol in args.relTol:
+        for tol in args.tensionTolerance:
             for step in args.steps:
                 cpu, t_end, T_end, tol_used = bench_case(fmu, n, tol, step, args.repeat,
                                                          args.input_derivatives)

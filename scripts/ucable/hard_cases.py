@@ -4,7 +4,7 @@ A case is a tow-point trajectory (position, velocity and acceleration as functio
 acceleration is passed as input derivative der(tow.v*), so the FMU sees the exact kinematics), FMU
 parameters and a communication step. `run_case` flies it and returns a CaseResult: completed or the
 FMU's error message, CPU time, integrator statistics, peak and minimum tension. `refine` repeats a case
-with twice the elements and with relTol / 100 and reports the spread of the peak tension.
+with twice the elements and with tensionTolerance / 100 and reports the spread of the peak tension.
 
 """
 
@@ -22,6 +22,7 @@ from .manoeuvre import PiecewiseLinearSpeed
 from .steady_tow import KNOT
 
 G = 9.81
+DEFAULT_TENSION_TOLERANCE = 1e-3  # the FMU's default (schema/variables.toml)
 STATS = ["solver.nSteps", "solver.nResidualEvals", "solver.nJacobianEvals", "solver.nNonlinearFailures",
          "solver.nErrorTestFailures"]
 TENSIONS = ["towTension", "minTension"] + [f"tension[{k}]" for k in range(1, NUM_STATIONS + 1)]
@@ -91,7 +92,7 @@ class Case:
 class CaseResult:
     case: str
     n_elements: int
-    rel_tol: float
+    tension_tolerance: float
     completed: bool
     message: str                 # the FMU's error message when not completed
     t_reached: float
@@ -119,16 +120,16 @@ def _last_error(cable: CableFMU) -> str:
     return errors[-1] if errors else "(no message logged)"
 
 
-def run_case(fmu, case: Case, n_elements: int | None = None, rel_tol: float | None = None,
+def run_case(fmu, case: Case, n_elements: int | None = None, tension_tolerance: float | None = None,
              t_end: float | None = None, progress=None, check_restore: bool = True) -> CaseResult:
-    """Flies `case` (optionally with other nElements / relTol / end time) and collects the result.
+    """Flies `case` (optionally with other nElements / tensionTolerance / end time) and collects the result.
     On an fmi2Error the FMU state saved before the failing step is restored and the outputs re-read:
     `state_restored` tells whether that worked."""
     params = dict(case.parameters)
     if n_elements is not None:
         params["nElements"] = n_elements
-    if rel_tol is not None:
-        params["relTol"] = rel_tol
+    if tension_tolerance is not None:
+        params["tensionTolerance"] = tension_tolerance
     t_end = case.t_end if t_end is None else t_end
     n = int(math.ceil(t_end / case.step - 1e-9))
     times = np.array([min(k * case.step, t_end) for k in range(n + 1)])
@@ -176,7 +177,7 @@ def run_case(fmu, case: Case, n_elements: int | None = None, rel_tol: float | No
     except Exception:
         pass
     cable.free()
-    return CaseResult(case=case.name, n_elements=params.get("nElements", 20), rel_tol=params.get("relTol", 1e-8),
+    return CaseResult(case=case.name, n_elements=params.get("nElements", 20), tension_tolerance=params.get("tensionTolerance", DEFAULT_TENSION_TOLERANCE),
                       completed=completed, message=message, t_reached=float(times[k_done]), cpu=cpu, stats=stats,
                       peak_tension=float(np.nanmax(max_t)) if k_done or completed else math.nan,
                       min_tension=float(min_tension), finite=finite, time=times[:k_done + 1],
@@ -228,19 +229,19 @@ class Refinement:
         return bool(math.isfinite(s) and s <= threshold)
 
 
-def refine(fmu, case: Case, n_elements: int = 20, rel_tol: float = 1e-8, t_end: float | None = None,
+def refine(fmu, case: Case, n_elements: int = 20, tension_tolerance: float = DEFAULT_TENSION_TOLERANCE, t_end: float | None = None,
            progress=None) -> Refinement:
-    base = run_case(fmu, case, n_elements, rel_tol, t_end, progress)
+    base = run_case(fmu, case, n_elements, tension_tolerance, t_end, progress)
     if not case.refine or not base.completed:
         return Refinement(base, None, None)
-    mesh = run_case(fmu, case, 2 * n_elements, rel_tol, t_end, progress, check_restore=False)
-    tol = run_case(fmu, case, n_elements, rel_tol / 100.0, t_end, progress, check_restore=False)
+    mesh = run_case(fmu, case, 2 * n_elements, tension_tolerance, t_end, progress, check_restore=False)
+    tol = run_case(fmu, case, n_elements, tension_tolerance / 100.0, t_end, progress, check_restore=False)
     return Refinement(base, mesh, tol)
 
 
 # ---------------------------------------------------------------------------------------------------
 # The cases. Lengths and loads are chosen so that the phenomenon certainly happens (numbers in the
-# descriptions); everything not listed is the FMU default (the Hopland cable, relTol 1e-8, absTol 1e-6).
+# descriptions); everything not listed is the FMU default (the Hopland cable, tensionTolerance 1e-3).
 
 def slack_snap(length: float = 100.0, amplitude: float = 5.0, period: float = 4.0, t_end: float = 40.0,
                step: float = 0.05) -> Case:
