@@ -45,6 +45,11 @@ public:
     void clear();
     void add(int row, int col, double value) { a_[row * w_ + col - row + b_] += value; }
     double get(int row, int col) const { return a_[row * w_ + col - row + b_]; }
+    // The storage, row by row, 2 bandwidth + 1 entries each (A(i, k) at i (2b + 1) + k - i + b;
+    // entries outside the matrix stay 0): matrices of the same size combine entry by entry.
+    double* values() { return a_.data(); }
+    const double* values() const { return a_.data(); }
+    size_t value_count() const { return a_.size(); }
 
 protected:
     double* row(int i) { return &a_[static_cast<size_t>(i) * w_ + b_ - i]; }  // row(i)[k] = A(i, k)

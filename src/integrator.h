@@ -109,6 +109,14 @@ private:
     bool usePivoted_ = false, alwaysPivot_ = false;
     long pivotedFactorizations_ = 0;
     BandMatrix D_;
+    // dR/dq, dR/dv, dR/da at the last evaluation of the cable's Jacobian. A new Newton matrix for a
+    // new cj (IDA asks for one when its step size changed) is formed from them without evaluating
+    // the Jacobian again, unless the Newton iteration failed to converge since, or
+    // kStepsPerJacobian steps have passed (CVODE's policy, which IDA does not have).
+    BandMatrix K_, C_, M_;
+    bool jacobianCurrent_ = false;   // K_, C_, M_ belong to the present run (not before a restart)
+    long stepAtJacobian_ = 0, failuresAtJacobian_ = 0;
+    long jacobianEvaluations_ = 0;   // since the last restart (the solver.nJacobianEvals statistic)
     std::vector<double> rhs_;
     double cj_ = 0.0;  // of the stored matrices
     std::vector<double> atol_;  // per-component absolute tolerances (empty: IDA's scalar ones)
