@@ -129,6 +129,10 @@ constexpr long kMaxStepsPerCall = 100000;
 // tension of the Hopland cable; 0.1 costs about 5 % more residual evaluations.
 constexpr double kNewtonConvergence = 0.1;
 
+// A step that would end within this factor of its size before the communication point is
+// stretched to end there (see advance).
+constexpr double kStretch = 1.1;
+
 // At most this many steps between evaluations of the cable's Jacobian (CVODE's default is 51).
 constexpr long kStepsPerJacobian = 20;
 
@@ -210,7 +214,7 @@ Integrator::Integrator(SUNContext context, int n, int bandwidth, SecondOrderSyst
     ok = ok && IDASetUserData(ida_, this) == IDA_SUCCESS;
     ok = ok && IDASetLinearSolver(ida_, solver_, J_) == IDA_SUCCESS;
     ok = ok && IDASetJacFn(ida_, &Integrator::jacobian_callback) == IDA_SUCCESS;
-    ok = ok && IDASetMaxNumSteps(ida_, kMaxStepsPerCall) == IDA_SUCCESS;
+    ok = ok && IDASetMaxNumSteps(ida_, kMaxStepsPerCall) == IDA_SUCCESS;  // advance counts its own
     ok = ok && IDASetNonlinConvCoef(ida_, kNewtonConvergence) == IDA_SUCCESS;
 
     if (!ok) {
@@ -354,8 +358,23 @@ bool Integrator::restart(double t, const double* y, const double* yp, std::strin
 bool Integrator::advance(double tEnd, std::string& error) {
     int flag = IDASetStopTime(ida_, tEnd);
     double tReached = 0.0;
+    long steps = 0;
+    auto* m = static_cast<IDAMem>(ida_);
     while (flag >= 0) {
-        flag = IDASolve(ida_, tEnd, &tReached, y_, yp_, IDA_NORMAL);
+        if (++steps > kMaxStepsPerCall) {
+            flag = IDA_TOO_MUCH_WORK;
+            char text[200];
+            std::snprintf(text, sizeof text, "%ld steps taken before reaching the end of the communication step",
+                          kMaxStepsPerCall);
+            lastMessage_ = text;
+            break;
+        }
+        // A step that would end just short of the communication point (within a tenth of it)
+        // is stretched to end there: IDA would otherwise add a sliver of a step and start the
+        // next communication step from that sliver's size, doubling it back over several steps.
+        const double remaining = tEnd - m->ida_tn;
+        if (m->ida_nst > 0 && remaining > m->ida_hh && remaining <= kStretch * m->ida_hh) m->ida_hh = remaining;
+        flag = IDASolve(ida_, tEnd, &tReached, y_, yp_, IDA_ONE_STEP);
         if (flag == IDA_TSTOP_RETURN || (flag == IDA_SUCCESS && tReached >= tEnd)) {
             return true;
         }

@@ -274,11 +274,16 @@ def fit_frequencies(t: np.ndarray, y: np.ndarray, guess_windows) -> np.ndarray:
 
 
 # ---------------------------------------------------------------------------------------- time
-def hopland_tension(fmu, rel_tol: float, abs_tol: float, n_elements: int = 20,
-                    step: float = 0.5, progress=None) -> dict:
-    """Top tension history of the Hopland acceleration manoeuvre (660 s, input derivatives on)."""
+def hopland_tension(fmu, rel_tol: float = 0.0, abs_tol: float = 0.0, n_elements: int = 20,
+                    step: float = 0.5, progress=None, tension_tolerance: float | None = None) -> dict:
+    """Top tension history of the Hopland acceleration manoeuvre (660 s, input derivatives on), at
+    the integrator's tensionTolerance (default: the FMU's) with IDA's relTol/absTol as extra bounds
+    (0: not used)."""
     profile, t_end = hopland_accelerate()
-    cable = CableFMU(fmu, parameters={"nElements": n_elements, "relTol": rel_tol, "absTol": abs_tol})
+    params = {"nElements": n_elements, "relTol": rel_tol, "absTol": abs_tol}
+    if tension_tolerance is not None:
+        params["tensionTolerance"] = tension_tolerance
+    cable = CableFMU(fmu, parameters=params)
     try:
         cpu = time.process_time()
         run = run_tow(cable, profile, t_end, step, record_shape=False, use_input_derivatives=True,
@@ -287,8 +292,8 @@ def hopland_tension(fmu, rel_tol: float, abs_tol: float, n_elements: int = 20,
         steps = cable.get("solver.nSteps")
     finally:
         cable.free()
-    return {"relTol": rel_tol, "absTol": abs_tol, "t": run.time, "tension": run["towTension"],
-            "cpu": cpu, "nSteps": steps}
+    return {"relTol": rel_tol, "absTol": abs_tol, "tensionTolerance": tension_tolerance, "t": run.time,
+            "tension": run["towTension"], "cpu": cpu, "nSteps": steps}
 
 
 # ---------------------------------------------------------------------------------------- rates
