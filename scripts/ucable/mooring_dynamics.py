@@ -125,7 +125,7 @@ def ours(fmu, n_elements: int, rel_tol: float = 1e-8, period: float = m.SURGE_PE
     gives the FMU defaults 1e-8 / 1e-6 of ucable.mooring.surge_run). compression=False: the
     tension-only axial law (enableCompression = 0), MoorDyn's."""
     case = scene_case(period, drag, t_end)
-    run = wp.run_fmu(fmu, case, n_elements, rel_tol,
+    run = wp.run_fmu(fmu, case, n_elements, rel_tol, tolerance="relTol",
                      extra=None if compression else {"enableCompression": 0})
     mean, lo, hi = dynamic_mean(run, average_from)
     qs = m.quasi_static_mean(40) if qs_mean is None else qs_mean
