@@ -1,4 +1,4 @@
-"""Hard cases of issue 8: runs that make cable codes blow up, each with default solver settings.
+"""Hard cases: runs that make cable codes blow up, each with default solver settings.
 
 A case is a tow-point trajectory (position, velocity and acceleration as functions of time; the
 acceleration is passed as input derivative der(tow.v*), so the FMU sees the exact kinematics), FMU

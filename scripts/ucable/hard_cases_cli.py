@@ -1,4 +1,4 @@
-"""Hard-case table of issue 8 (run via scripts/hard_cases): every case with default solver settings.
+"""Hard-case table (run via scripts/hard_cases): every case with default solver settings.
 
 For each case: result, CPU time, integrator statistics, peak tension and whether the peak tension
 converges under refinement (2x elements, tensionTolerance / 100; "yes" if the largest relative change of the
