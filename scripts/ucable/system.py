@@ -24,8 +24,6 @@ the inputs it has then (the body's drag at the tow velocity included).
 from __future__ import annotations
 
 import math
-import os
-import re
 import tempfile
 import time as timer
 import xml.etree.ElementTree as ET

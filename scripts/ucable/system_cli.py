@@ -14,7 +14,7 @@ import numpy as np
 
 from .paths import REPO_ROOT
 from .progress import ProgressBar
-from .system import COUPLINGS, MANOEUVRES, MASTERS, ORDERINGS, Body, run
+from .system import COUPLINGS, MANOEUVRES, MASTERS, ORDERINGS, Body, Diverged, run
 
 
 def parse_args(argv):
@@ -105,8 +105,13 @@ def main(argv=None) -> int:
     out = args.out if args.out is not None else REPO_ROOT / "out" / "system" / args.manoeuvre
     out.mkdir(parents=True, exist_ok=True)
     bar = ProgressBar(duration, label=args.manoeuvre)
-    r = run(args.manoeuvre, args.step, args.coupling, args.master, ordering, body, duration,
-            input_derivatives=args.input_derivatives, progress=bar)
+    try:
+        r = run(args.manoeuvre, args.step, args.coupling, args.master, ordering, body, duration,
+                input_derivatives=args.input_derivatives, progress=bar)
+    except (ValueError, FileNotFoundError) as e:
+        sys.exit(f"scripts/system: {e}")
+    except Diverged as e:
+        sys.exit(f"scripts/system: the co-simulation diverged: {e}")
     bar.close(f"simulated {duration:g} s in {len(r.time) - 1} steps, {r.cpu:.2f} s CPU")
     write_csv(out / "result.csv", r.columns())
     b = body.resolved()

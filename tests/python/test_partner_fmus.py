@@ -10,6 +10,7 @@ operations, whose error grows about linearly with the number of steps from 1e-16
 import math
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -53,10 +54,17 @@ def make():
 
 
 @pytest.mark.parametrize("name", ["Vessel", "TowedBody"])
-def test_fmpy_validate_finds_no_problem(fmu_file, name):
+def test_fmpy_validate_and_fmutool_check_find_no_problem(fmu_file, name):
     out = subprocess.run([sys.executable, "-m", "fmpy", "validate", str(partner_fmu(name))],
                          capture_output=True, text=True)
     assert out.returncode == 0 and "No problems found" in out.stdout, out.stdout + out.stderr
+    proc = subprocess.run([str(Path(sys.executable).parent / "fmutool"), "-input", str(partner_fmu(name)),
+                           "-check"], capture_output=True, text=True, timeout=300)
+    text = proc.stdout + proc.stderr
+    assert proc.returncode == 0, text
+    assert "This FMU seems to be compliant with FMI-2.0" in text, text
+    assert "No semantic error against the FMI-2 standard" in text, text
+    assert not [line for line in text.splitlines() if "ERROR" in line or "WARNING" in line], text
 
 
 def test_vessel_fmu_equals_the_python_vessel_model_in_a_turn_and_a_ramp(vessel_fmu, make):
@@ -189,3 +197,19 @@ def test_states_restore_and_serialize_bit_identically(fmu_file, make, name):
         c.do_step(0.5, t=5.0 + 0.5 * j)
     assert np.array_equal(c.get_reals(outputs), first)
     a.free_state(state)
+
+
+def test_reset_and_rerun_is_bit_identical(vessel_fmu, make):
+    program = {"turnStart": 2.0, "turnRate": 0.05, "turnAngle": 0.5}
+    v = make(vessel_fmu, parameters=program)
+    outputs = [n for n, x in v.variables.items() if x.causality == "output"]
+
+    def flight():
+        v.initialize(0.0, 20.0, inputs={"towForce.x": -3000.0, "towForce.y": 500.0}, parameters=program)
+        for k in range(20):
+            v.do_step(0.5, t=0.5 * k)
+        return v.get_reals(outputs)
+
+    first = flight()
+    v.slave.reset()
+    assert np.array_equal(flight(), first)
