@@ -44,16 +44,18 @@ def test_implicit_far_end_model_is_stable_at_every_step_and_mass():
 
 def test_chain_model_predicts_the_measured_limit_of_the_explicit_coupling(fmu_file):
     """400 kg body (500 kg with added mass), Gauss-Seidel: the model's critical step is 0.039 s. The
-    three FMUs with the explicit far end, in the steady tow before the turn (first 20 s): at 0.02 s
-    they hold the internal body's equilibrium (measured 1e-7 N apart), at 0.05 s round-off grows into
-    tens of kN within 20 s, as the model says."""
+    three FMUs with the explicit far end, in the steady tow and the start of the turn (first 30 s): at 0.02 s
+    they hold the internal body's equilibrium to within the integrator's tension tolerance (the
+    default tensionTolerance, 1e-3 of the tension scale, here the initial tow tension), at 0.05 s
+    round-off grows into tens of kN within 30 s, as the model says."""
     h_crit = C.critical_step(500.0, C.Chain.hopland(), "gauss-seidel")
     assert 0.02 < h_crit < 0.05
     for h, stable in ((0.02, True), (0.05, False)):
-        internal = S.run("turn90", step=h, coupling="internal", body=S.Body(400.0), duration=20.0)
+        internal = S.run("turn90", step=h, coupling="internal", body=S.Body(400.0), duration=30.0)
         try:
-            explicit = S.run("turn90", step=h, coupling="explicit", body=S.Body(400.0), duration=20.0)
+            explicit = S.run("turn90", step=h, coupling="explicit", body=S.Body(400.0), duration=30.0)
             error = np.max(np.abs(explicit["cable.towTension"] - internal["cable.towTension"]))
         except (S.Diverged, FMICallException):
             error = np.inf
-        assert (error < 1e-3) if stable else (error > 1e3), (h, error)
+        tolerance = 1e-3 * internal["cable.towTension"][0]
+        assert (error < tolerance) if stable else (error > 1e3), (h, error, tolerance)
