@@ -243,9 +243,8 @@ static fmi2Status not_provided(UCInstance* inst, const char* function, const cha
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown_ref[], size_t nUnknown,
                                         const fmi2ValueReference vKnown_ref[], size_t nKnown,
                                         const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
-    (void)vUnknown_ref, (void)nUnknown, (void)vKnown_ref, (void)nKnown, (void)dvKnown, (void)dvUnknown;
     GUARDED(c, MASK_DIRECTIONAL_DERIVATIVE, "fmi2GetDirectionalDerivative",
-            not_provided(inst, "fmi2GetDirectionalDerivative", "providesDirectionalDerivative = false"));
+            uc_get_directional_derivative(inst, vUnknown_ref, nUnknown, vKnown_ref, nKnown, dvKnown, dvUnknown));
 }
 
 fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,

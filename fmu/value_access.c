@@ -191,3 +191,76 @@ fmi2Status uc_set_input_derivatives(UCInstance* inst, const fmi2ValueReference v
     }
     return fmi2OK;
 }
+
+/* Index of name in names[count], or -1. */
+static int name_index(const char* name, const char* const names[], int count) {
+    for (int i = 0; i < count; ++i)
+        if (strcmp(name, names[i]) == 0) return i;
+    return -1;
+}
+
+fmi2Status uc_get_directional_derivative(UCInstance* inst, const fmi2ValueReference unknown[], size_t nUnknown,
+                                         const fmi2ValueReference known[], size_t nKnown, const fmi2Real dvKnown[],
+                                         fmi2Real dvUnknown[]) {
+    static const char* const outputs[6] = {"towForce.x", "towForce.y", "towForce.z",
+                                           "endForce.x", "endForce.y", "endForce.z"};
+    static const char* const inputs[12] = {"tow.x", "tow.y", "tow.z", "tow.vx", "tow.vy", "tow.vz",
+                                           "end.x", "end.y", "end.z", "end.vx", "end.vy", "end.vz"};
+    const char* function = "fmi2GetDirectionalDerivative";
+    if ((nUnknown > 0 && (unknown == NULL || dvUnknown == NULL)) ||
+        (nKnown > 0 && (known == NULL || dvKnown == NULL))) {
+        uc_log_status(&inst->log, fmi2Error, "%s: NULL array", function);
+        return fmi2Error;
+    }
+    int rows[6], cols[12];
+    if (nUnknown > 6 || nKnown > 12) {
+        uc_log_status(&inst->log, fmi2Error,
+                      "%s: at most 6 unknowns (towForce.*, endForce.*) and 12 knowns (tow.*, end.*) per call",
+                      function);
+        return fmi2Error;
+    }
+    for (size_t i = 0; i < nUnknown; ++i) {
+        const UCVariable* v = find_or_log(inst, unknown[i], UC_TYPE_REAL, function);
+        if (v == NULL) return fmi2Error;
+        rows[i] = name_index(v->name, outputs, 6);
+        if (rows[i] < 0) {
+            uc_log_status(&inst->log, fmi2Error,
+                          "%s: no derivative of %s (derivatives are provided of towForce.x/y/z and endForce.x/y/z)",
+                          function, v->name);
+            return fmi2Error;
+        }
+    }
+    for (size_t j = 0; j < nKnown; ++j) {
+        const UCVariable* v = find_or_log(inst, known[j], UC_TYPE_REAL, function);
+        if (v == NULL) return fmi2Error;
+        cols[j] = name_index(v->name, inputs, 12);
+        if (cols[j] < 0) {
+            uc_log_status(&inst->log, fmi2Error,
+                          "%s: no derivative with respect to %s (derivatives are provided with respect to "
+                          "tow.x/y/z, tow.vx/vy/vz, end.x/y/z and end.vx/vy/vz)",
+                          function, v->name);
+            return fmi2Error;
+        }
+        if (!isfinite(dvKnown[j])) {
+            uc_log_status(&inst->log, fmi2Error, "%s: the seed of %s is not a finite number", function, v->name);
+            return fmi2Error;
+        }
+    }
+    if (inst->cable == NULL || !inst->coreReady) {
+        uc_log_status(&inst->log, fmi2Error,
+                      "%s: the derivatives are over the next communication step: available after the first "
+                      "fmi2DoStep", function);
+        return fmi2Error;
+    }
+    double d[72];
+    if (uc_interface_derivatives(inst->cable, d, inst->msg, sizeof inst->msg) != 0) {
+        uc_log_status(&inst->log, fmi2Error, "%s: %s", function, inst->msg);
+        return fmi2Error;
+    }
+    for (size_t i = 0; i < nUnknown; ++i) {
+        double sum = 0.0;
+        for (size_t j = 0; j < nKnown; ++j) sum += d[12 * rows[i] + cols[j]] * dvKnown[j];
+        dvUnknown[i] = sum;
+    }
+    return fmi2OK;
+}

@@ -30,4 +30,11 @@ fmi2Status uc_set_strings(UCInstance* inst, const fmi2ValueReference vr[], size_
 fmi2Status uc_set_input_derivatives(UCInstance* inst, const fmi2ValueReference vr[], size_t nvr,
                                     const fmi2Integer order[], const fmi2Real values[]);
 
+/* dvUnknown = J dvKnown with J the interface derivatives of the core (uc_interface_derivatives):
+ * unknowns towForce.* and endForce.*, knowns tow.*, tow.v*, end.*, end.v*; anything else, NULL
+ * arrays, non-finite seeds or a call before the first step: fmi2Error naming it. */
+fmi2Status uc_get_directional_derivative(UCInstance* inst, const fmi2ValueReference unknown[], size_t nUnknown,
+                                         const fmi2ValueReference known[], size_t nKnown, const fmi2Real dvKnown[],
+                                         fmi2Real dvUnknown[]);
+
 #endif /* UNDERWATERCABLE_FMU_VALUE_ACCESS_H */

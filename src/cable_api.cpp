@@ -78,6 +78,20 @@ extern "C" int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, ch
     });
 }
 
+extern "C" int uc_interface_derivatives(UCCable* c, double d[72], char* msg, size_t msgSize) {
+    return guarded(msg, msgSize, [&](std::string& error) {
+        if (!c || !d) {
+            error = "uc_interface_derivatives: NULL pointer";
+            return false;
+        }
+        double m[6][12];
+        const bool ok = c->simulation.interface_derivatives(m, error);
+        for (int i = 0; i < 6; ++i)
+            for (int j = 0; j < 12; ++j) d[12 * i + j] = m[i][j];
+        return ok;
+    });
+}
+
 extern "C" double uc_time(const UCCable* c) { return c ? c->simulation.time() : 0.0; }
 
 extern "C" void uc_get_outputs(const UCCable* c, UCOutputs* out) {

@@ -288,6 +288,7 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
 }
 
 bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& error) {
+    ++stateStamp_;  // the cached interface derivatives are stale from here on
     const UCParams& p = model_.params();
     for (double v : {in.tow[0], in.tow[1], in.tow[2], in.towVelocity[0], in.towVelocity[1], in.towVelocity[2],
                      in.towAcceleration[0], in.towAcceleration[1], in.towAcceleration[2], in.endLoad[0],
@@ -371,6 +372,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
 }
 
 bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::string& error) {
+    ++stateStamp_;  // the cached interface derivatives are stale from here on
     for (double v : {in.tow[0], in.tow[1], in.tow[2], in.towVelocity[0], in.towVelocity[1], in.towVelocity[2],
                      in.towAcceleration[0], in.towAcceleration[1], in.towAcceleration[2], in.endLoad[0],
                      in.endLoad[1], in.endLoad[2], in.endCouple[0], in.endCouple[1], in.endCouple[2],
@@ -565,6 +567,7 @@ void CableSimulation::save_state(void* buffer) {
 }
 
 bool CableSimulation::restore_state(const void* buffer, size_t size, std::string& error) {
+    ++stateStamp_;  // the cached interface derivatives are stale from here on
     if (size != state_size()) {
         error = "saved state has the wrong size for this cable (different nElements or end conditions)";
         return false;
@@ -620,6 +623,183 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
         statsBase_.nonlinearFailures -= since.nonlinearFailures;
         statsBase_.errorTestFailures -= since.errorTestFailures;
     }
+    return true;
+}
+
+}  // namespace uc
+
+namespace uc {
+
+bool CableSimulation::interface_derivatives(double d[6][12], std::string& error) {
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 12; ++j) d[i][j] = 0.0;
+    const double h = lastStepSize_;
+    if (!(h > 0.0)) {
+        error = "the interface derivatives are over the next communication step, taken as long as the last one: "
+                "they are available after the first fmi2DoStep";
+        return false;
+    }
+    if (derivativeStamp_ == stateStamp_) {  // the state has not changed since they were computed
+        std::memcpy(d, derivativeCache_, sizeof derivativeCache_);
+        return true;
+    }
+    const int n = model_.n_free(), N = model_.n_elements(), bw = model_.free_bandwidth();
+    if (!derivativeLU_) {
+        derivativeLU_ = std::make_unique<UnpivotedBandLU>(n, bw);
+        derivativeK_ = std::make_unique<BandMatrix>(n, bw);
+        derivativeC_ = std::make_unique<BandMatrix>(n, bw);
+        derivativeM_ = std::make_unique<BandMatrix>(n, bw);
+        derivativeWork_.assign(12 * static_cast<size_t>(n), 0.0);
+    }
+    BandMatrix &K = *derivativeK_, &C = *derivativeC_, &M = *derivativeM_;
+    K.clear();
+    C.clear();
+    M.clear();
+
+    // The cable's Jacobian at its present state.
+    free_state(q_, v_, a_);
+    model_.expand(q_.data(), v_.data(), a_.data(), loads_, time_, X_.data(), Xd_.data(), Xdd_.data());
+    auto add = [&](int i, int k, double dq, double dv, double da) {
+        K.add(i, k, dq);
+        C.add(i, k, dv);
+        M.add(i, k, da);
+    };
+    model_.jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_, add);
+
+    // The driven ends: the tow point (node 0) and, for bottomEnd 3, the far end (node N); their
+    // position DOFs are prescribed. Seeds 0..5 move the tow point, 6..11 the far end. Their columns
+    // in the free rows, and the output rows (the driven nodes' position rows of the end elements'
+    // residuals), come from the two end elements (and the end node's terms).
+    const bool externalEnd = model_.params().bottomEnd == UC_BOTTOM_EXTERNAL;
+    const int nSeeds = externalEnd ? 12 : 6;
+    Mat12 Ke[2], Ce[2], Me[2];
+    const int elements[2] = {0, N - 1};
+    for (int k = 0; k < 2; ++k)
+        model_.element_jacobian(elements[k], X_.data(), Xd_.data(), Xdd_.data(), loads_, Ke[k], Ce[k], Me[k]);
+    Mat6 Kn, Cn, Mn;
+    model_.end_node_jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_, Kn, Cn, Mn);
+
+    double* w = derivativeWork_.data();
+    double *fK = w, *fC = w + n, *fM = w + 2 * n, *qm = w + 3 * n, *q0 = w + 4 * n, *vm = w + 5 * n,
+           *v0 = w + 6 * n, *rhs = w + 7 * n, *bq = w + 8 * n, *bv = w + 9 * n, *tmp = w + 10 * n;
+    const int width = 2 * bw + 1;
+    double coarse[6][12] = {};
+    for (const int substeps : {kDerivativeSubsteps, 2 * kDerivativeSubsteps}) {
+        const double dt = h / substeps;
+        const double c = 1.5 / dt;  // BDF2: v_{k+1} = c q_{k+1} + (q_{k-1} - 4 q_k) / (2 dt)
+        double(*out)[12] = substeps == kDerivativeSubsteps ? coarse : d;
+        // The Newton matrix of one BDF2 substep, K + c C + c^2 M, factored.
+        UnpivotedBandLU& A = *derivativeLU_;
+        {
+            double* a = A.values();
+            const double *k = K.values(), *cc = C.values(), *m = M.values();
+            for (size_t i = 0; i < A.value_count(); ++i) a[i] = k[i] + c * (cc[i] + c * m[i]);
+        }
+        if (!A.factor()) {
+            error = "the cable's step matrix has a vanishing pivot at this state";
+            return false;
+        }
+        for (int s = 0; s < nSeeds; ++s) {
+            const bool tow = s < 6;
+            const int comp = s % 3;
+            const bool velocity = (s % 6) >= 3;
+            const DrivenEnd& end = tow ? tow_ : end_;
+            const int gp = (tow ? 0 : 6 * N) + comp;  // the prescribed global DOF this seed moves
+            // The change of the end's target (position, velocity, acceleration at t + h) per unit
+            // input, as DrivenEnd::next makes it.
+            double dp1 = 1.0, dv1 = 0.0, da1 = 0.0;
+            if (velocity) {
+                if (end.lastAccelerationGiven) {
+                    dp1 = h;
+                    dv1 = 1.0;
+                } else {  // the acceleration is the difference of the last two velocity inputs over h
+                    dp1 = 1.5 * h;
+                    dv1 = 2.0;
+                    da1 = 1.0 / h;
+                }
+            }
+            const TowTrajectory motion = TowTrajectory::quintic(0.0, h, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(),
+                                                                Vec3(dp1, 0.0, 0.0), Vec3(dv1, 0.0, 0.0),
+                                                                Vec3(da1, 0.0, 0.0));
+            for (int j = 0; j < n; ++j) fK[j] = fC[j] = fM[j] = 0.0;
+            for (int k = 0; k < 2; ++k) {
+                if (k == 1 && elements[1] == elements[0]) break;
+                const int g0 = 6 * elements[k];
+                const int b = gp - g0;
+                if (b < 0 || b >= 12) continue;
+                for (int a = 0; a < 12; ++a) {
+                    const int j = model_.free_index(g0 + a);
+                    if (j < 0) continue;
+                    const double ca = model_.coefficient(g0 + a);
+                    fK[j] += ca * Ke[k](a, b);
+                    fC[j] += ca * Ce[k](a, b);
+                    fM[j] += ca * Me[k](a, b);
+                }
+            }
+            if (!tow) {
+                for (int a = 0; a < 6; ++a) {
+                    const int j = model_.free_index(6 * N + a);
+                    if (j < 0) continue;
+                    fK[j] += Kn(a, comp);
+                    fC[j] += Cn(a, comp);
+                    fM[j] += Mn(a, comp);
+                }
+            }
+            // BDF2 from rest: the change starts with zero position, velocity and acceleration.
+            for (int j = 0; j < n; ++j) qm[j] = q0[j] = vm[j] = v0[j] = 0.0;
+            Vec3 p, v, acc;
+            for (int step = 0; step < substeps; ++step) {
+                motion.evaluate((step + 1) * dt, p, v, acc);
+                for (int j = 0; j < n; ++j) {
+                    bq[j] = (qm[j] - 4.0 * q0[j]) / (2.0 * dt);
+                    bv[j] = (vm[j] - 4.0 * v0[j]) / (2.0 * dt);
+                    tmp[j] = c * bq[j] + bv[j];
+                }
+                const double *cv = C.values(), *mv = M.values();
+                for (int i = 0; i < n; ++i) {
+                    double r = -(fK[i] * p[0] + fC[i] * v[0] + fM[i] * acc[0]);
+                    const int k0 = std::max(0, i - bw), k1 = std::min(n - 1, i + bw);
+                    const double* ci = cv + static_cast<size_t>(i) * width + bw - i;  // ci[k] = C(i, k)
+                    const double* mi = mv + static_cast<size_t>(i) * width + bw - i;
+                    for (int k = k0; k <= k1; ++k) r -= ci[k] * bq[k] + mi[k] * tmp[k];
+                    rhs[i] = r;
+                }
+                A.solve(rhs);
+                for (int j = 0; j < n; ++j) {
+                    qm[j] = q0[j];
+                    vm[j] = v0[j];
+                    q0[j] = rhs[j];
+                    v0[j] = c * rhs[j] + bq[j];
+                }
+            }
+            // Accelerations at t + h, from the last substep.
+            for (int j = 0; j < n; ++j) tmp[j] = c * v0[j] + bv[j];
+            // towForce = -(rows 0..2 of element 0), endForce = -(rows 6..8 of element N - 1).
+            for (int k = 0; k < 2; ++k) {
+                const int g0 = 6 * elements[k];
+                for (int r = 0; r < 3; ++r) {
+                    const int a = (k == 0 ? 0 : 6) + r;
+                    double dR = 0.0;
+                    for (int b = 0; b < 12; ++b) {
+                        const int g = g0 + b;
+                        const int j = model_.free_index(g);
+                        if (j >= 0) {
+                            const double cb = model_.coefficient(g);
+                            dR += cb * (Ke[k](a, b) * q0[j] + Ce[k](a, b) * v0[j] + Me[k](a, b) * tmp[j]);
+                        } else if (g == gp) {
+                            dR += Ke[k](a, b) * p[0] + Ce[k](a, b) * v[0] + Me[k](a, b) * acc[0];
+                        }
+                    }
+                    out[3 * k + r][s] = -dR;
+                }
+            }
+        }
+    }
+    // BDF2's error falls as the square of the substep: Richardson's extrapolation of the two.
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 12; ++j) d[i][j] = (4.0 * d[i][j] - coarse[i][j]) / 3.0;
+    std::memcpy(derivativeCache_, d, sizeof derivativeCache_);
+    derivativeStamp_ = stateStamp_;
     return true;
 }
 

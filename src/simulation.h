@@ -52,6 +52,16 @@ public:
     void save_state(void* buffer);
     bool restore_state(const void* buffer, size_t size, std::string& error);
 
+    // The interface derivatives over the next communication step (docs/cosimulation.md,
+    // "Interface derivatives"): d[i][j] = d output_i (t + h) / d input_j (t), outputs i = towForce
+    // x, y, z, endForce x, y, z, inputs j = tow x, y, z, vx, vy, vz, end x, y, z, vx, vy, vz (the
+    // end.* columns are 0 unless bottomEnd = 3), for a next step as long as the last one: the
+    // cable linearized about its present state, driven by the change of the driven end's quintic
+    // that the input change makes, integrated over the step by BDF2 with kDerivativeSubsteps and
+    // twice as many substeps, extrapolated (Richardson) to a third-order result.
+    static constexpr int kDerivativeSubsteps = 64;
+    bool interface_derivatives(double d[6][12], std::string& error);
+
     // Free positions q and velocities v of the current state (for tests).
     void free_state(std::vector<double>& q, std::vector<double>& v, std::vector<double>& a) const;
     // The time integrator (for tests of its linear algebra paths).
@@ -95,6 +105,13 @@ private:
     std::vector<double> nodeTension_;  // output workspace
     std::vector<double> historyBuffer_;  // the integrator's history on its way to/from a saved state
     std::vector<double> toleranceBuffer_;
+    // interface derivatives (allocated at their first use)
+    std::unique_ptr<UnpivotedBandLU> derivativeLU_;
+    std::unique_ptr<BandMatrix> derivativeK_, derivativeC_, derivativeM_;
+    std::vector<double> derivativeWork_;
+    double derivativeCache_[6][12] = {};
+    long derivativeStamp_ = -1;  // stateStamp_ of the cached derivatives
+    long stateStamp_ = 0;        // changes whenever the state does (step, initialization, restore)
 };
 
 }  // namespace uc

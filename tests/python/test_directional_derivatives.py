@@ -1,0 +1,162 @@
+"""fmi2GetDirectionalDerivative: the interface derivatives over the next communication step
+(docs/cosimulation.md, "Interface derivatives") against central finite differences of fmi2DoStep with
+the FMU state rolled back (fmi2GetFMUstate / fmi2SetFMUstate).
+
+The finite differences are taken at a tight integrator tolerance (tensionTolerance 1e-8: the
+integration noise in tension, about 1e-8 x 8 kN, over the 1 mm / 1 mm/s perturbations is below
+1e-4 of the entries) and the perturbations keep the change in tension to tens of newtons, where the
+cable responds linearly. What remains is the derivative's own error, the documented bound: 0.5 % of
+the largest entry for steps up to 1 s (its time discretization, BDF2 with 64 and 128 substeps
+extrapolated; the linearization about the state at the step start).
+"""
+
+import numpy as np
+import pytest
+
+from ucable.fmu import FMICallException
+
+KNOT = 0.514444
+TOW = ["tow.x", "tow.y", "tow.z", "tow.vx", "tow.vy", "tow.vz"]
+END = ["end.x", "end.y", "end.z", "end.vx", "end.vy", "end.vz"]
+TOW_FORCE = ["towForce.x", "towForce.y", "towForce.z"]
+END_FORCE = ["endForce.x", "endForce.y", "endForce.z"]
+BOUND = 0.005  # of the largest entry: the documented accuracy
+
+
+class Tow:
+    """A steady tow along +x at 2 kn, the far end free, towing a body, or held by a partner moving
+    with the tow point (bottomEnd 3), stepped by a master that passes the tow acceleration."""
+
+    def __init__(self, make_cable, h, bottom_end, accelerations=True):
+        params = {"bottomEnd": bottom_end, "tensionTolerance": 1e-8}
+        self.V, self.h, self.t, self.accelerations = 2.0 * KNOT, h, 0.0, accelerations
+        self.end_offset = np.array([-200.0, 0.0, -150.0])
+        if bottom_end == 2:
+            params.update({"body.mass": 400.0, "body.CdA": 0.3})
+        self.cable = make_cable(parameters=params)
+        self.cable.initialize(0.0, inputs=self.inputs())
+        for _ in range(4):
+            self.step()
+            self.t += h
+
+    def inputs(self, t=None):
+        t = self.t if t is None else t
+        x = {"tow.x": self.V * t, "tow.y": 0.0, "tow.z": 0.0, "tow.vx": self.V, "tow.vy": 0.0, "tow.vz": 0.0}
+        e = self.end_offset + [self.V * t, 0.0, 0.0]
+        x.update({"end.x": e[0], "end.y": e[1], "end.z": e[2], "end.vx": self.V, "end.vy": 0.0, "end.vz": 0.0})
+        return x
+
+    def step(self, change=None):
+        inputs = self.inputs()
+        for name, delta in (change or {}).items():
+            inputs[name] += delta
+        self.cable.set(inputs)
+        if self.accelerations:
+            self.cable.set_input_derivatives(["tow.vx", "tow.vy", "tow.vz", "end.vx", "end.vy", "end.vz"], 1,
+                                             [0.0] * 6)
+        self.cable.do_step(self.h, self.t)
+
+    def derivatives(self, outputs, inputs):
+        c = self.cable
+        vo = [c.variables[n].valueReference for n in outputs]
+        return np.column_stack([c.slave.getDirectionalDerivative(vo, [c.variables[n].valueReference], [1.0])
+                                for n in inputs])
+
+    def finite_differences(self, outputs, inputs, eps=1e-3):
+        c = self.cable
+        state = c.get_state()
+        columns = []
+        for name in inputs:
+            values = []
+            for sign in (1.0, -1.0):
+                c.set_state(state, self.t)
+                self.step({name: sign * eps})
+                values.append(c.get_reals(outputs))
+            columns.append((values[0] - values[1]) / (2.0 * eps))
+        c.set_state(state, self.t)
+        c.free_state(state)
+        return np.column_stack(columns)
+
+
+def relative_error(D, FD):
+    return np.abs(D - FD).max() / np.abs(FD).max()
+
+
+@pytest.mark.parametrize("h", [1.0, 0.5, 0.1, 0.02])
+@pytest.mark.parametrize("bottom_end", [0, 2])
+def test_tow_force_derivatives_equal_finite_differences_of_the_step(make_cable, h, bottom_end):
+    tow = Tow(make_cable, h, bottom_end)
+    D = tow.derivatives(TOW_FORCE, TOW)
+    FD = tow.finite_differences(TOW_FORCE, TOW)
+    assert relative_error(D, FD) < BOUND, (D, FD)
+
+
+def test_derivatives_without_input_derivatives_follow_the_estimated_acceleration(make_cable):
+    """A master that passes no accelerations: the FMU differences the velocity inputs, so a velocity
+    input moves the target acceleration too; the derivative says so."""
+    tow = Tow(make_cable, 0.1, 0, accelerations=False)
+    D = tow.derivatives(TOW_FORCE, TOW)
+    FD = tow.finite_differences(TOW_FORCE, TOW)
+    assert relative_error(D, FD) < BOUND, (D, FD)
+
+
+@pytest.mark.parametrize("h", [1.0, 0.5, 0.05])
+def test_end_force_derivatives_of_a_driven_far_end(make_cable, h):
+    tow = Tow(make_cable, h, 3)
+    inputs = TOW + END
+    D = tow.derivatives(TOW_FORCE + END_FORCE, inputs)
+    FD = tow.finite_differences(TOW_FORCE + END_FORCE, inputs)
+    for rows in (slice(0, 3), slice(3, 6)):
+        assert relative_error(D[rows], FD[rows]) < BOUND, (rows, D[rows], FD[rows])
+
+
+def test_seeds_combine_linearly_and_the_result_does_not_change_the_run(make_cable):
+    tow = Tow(make_cable, 0.2, 0)
+    c = tow.cable
+    vo = [c.variables[n].valueReference for n in TOW_FORCE]
+    vi = [c.variables[n].valueReference for n in TOW]
+    seed = [0.3, -1.0, 2.0, 0.5, 0.1, -0.7]
+    combined = np.array(c.slave.getDirectionalDerivative(vo, vi, seed))
+    assert np.allclose(combined, tow.derivatives(TOW_FORCE, TOW) @ seed, rtol=1e-12, atol=0.0)
+    # Asking for derivatives leaves the simulation as it was: the next step is bit-identical.
+    twin = Tow(make_cable, 0.2, 0)
+    tow.step()
+    twin.step()  # (both from the same time, without advancing: one step each)
+    assert np.array_equal(c.get_reals(TOW_FORCE), twin.cable.get_reals(TOW_FORCE))
+
+
+def stepped_cable(make_cable):
+    cable = make_cable(parameters={})
+    cable.initialize(0.0, inputs={"tow.vx": 1.0})
+    cable.do_step(0.5, 0.0)
+    return cable
+
+
+def vrs(cable, names):
+    return [cable.variables[n].valueReference for n in names]
+
+
+def test_a_call_before_the_first_step_is_an_error(make_cable):
+    cable = make_cable(parameters={})
+    cable.initialize(0.0, inputs={"tow.vx": 1.0})
+    with pytest.raises(FMICallException):  # there is no step yet whose length the next one takes
+        cable.slave.getDirectionalDerivative(vrs(cable, ["towForce.x"]), vrs(cable, ["tow.x"]), [1.0])
+    assert "available after the first fmi2DoStep" in cable.log_text()
+
+
+@pytest.mark.parametrize("unknown, known, message", [
+    ("towTension", "tow.x", "no derivative of towTension"),
+    ("towForce.x", "current.x", "no derivative with respect to current.x"),
+])
+def test_unsupported_pairs_are_errors_naming_the_variable(make_cable, unknown, known, message):
+    cable = stepped_cable(make_cable)
+    with pytest.raises(FMICallException):
+        cable.slave.getDirectionalDerivative(vrs(cable, [unknown]), vrs(cable, [known]), [1.0])
+    assert message in cable.log_text()
+
+
+def test_a_non_finite_seed_is_an_error_naming_the_input(make_cable):
+    cable = stepped_cable(make_cable)
+    with pytest.raises(FMICallException):
+        cable.slave.getDirectionalDerivative(vrs(cable, ["towForce.x"]), vrs(cable, ["tow.x"]), [float("nan")])
+    assert "seed of tow.x is not a finite number" in cable.log_text()
