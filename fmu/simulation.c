@@ -66,6 +66,13 @@ static fmi2Status check_step_arguments(UCInstance* inst, double tc, double h) {
                       h);
         return fmi2Error;
     }
+    if (!(h >= UC_MIN_STEP_SIZE) || !(tc + h > tc)) {
+        uc_log_status(&inst->log, fmi2Error,
+                      "fmi2DoStep: communicationStepSize = %g is shorter than the shortest step the FMU takes "
+                      "(%g s, or one that does not advance currentCommunicationPoint = %.17g)",
+                      h, UC_MIN_STEP_SIZE, tc);
+        return fmi2Error;
+    }
     if (inst->stopTimeDefined && tc + h > inst->stopTime + time_tolerance(inst->stopTime)) {
         uc_log_status(&inst->log, fmi2Error, "fmi2DoStep: step to t = %.17g goes past stopTime = %.17g", tc + h,
                       inst->stopTime);

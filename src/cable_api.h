@@ -67,7 +67,12 @@ void uc_free(UCCable* c);
 /* Initial state at time t0 from the inputs: initMode 0 equilibrium (steady tow included), 1 straight line at rest. */
 int uc_initialize(UCCable* c, double t0, const UCInputs* in, char* msg, size_t msgSize);
 
-/* Integrates from t to exactly t + h (h > 0, t must equal the current time of the cable).
+/* The shortest communication step [s]: over a step a driven end follows a quintic whose coefficients
+ * scale with h^-5, which is not representable in doubles for much shorter steps (h^5 underflows). */
+#define UC_MIN_STEP_SIZE 1e-10
+
+/* Integrates from t to exactly t + h (h >= UC_MIN_STEP_SIZE with t + h > t in doubles, t must
+ * equal the current time of the cable).
  * The tow point follows a quintic in time from the cable's current end state (position,
  * velocity, acceleration) to in->tow + v h + a h^2/2 with velocity v + a h and acceleration a
  * at t + h; when the inputs agree with the current end state this is exactly

@@ -387,8 +387,12 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         error = "endLoadVelocity and endLoadDamping inputs must be finite numbers";
         return false;
     }
-    if (!(h > 0.0)) {
-        error = "the communication step size must be positive";
+    if (!(h >= UC_MIN_STEP_SIZE) || !(time_ + h > time_)) {
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "the communication step size %.17g s is below %g s or does not advance the time t = %.17g s",
+                      h, UC_MIN_STEP_SIZE, time_);
+        error = text;
         return false;
     }
     set_environment(in);

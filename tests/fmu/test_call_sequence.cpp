@@ -3,6 +3,9 @@
 // accepts reset, free, state restore and debug calls (FMI-CHECKLIST 2.3, 2.4).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "cable_api.h"
 #include "fmu_harness.h"
 
 TEST(CallSequence, DoStepBeforeInitializationIsIllegal) {
@@ -61,6 +64,27 @@ TEST(CallSequence, NonPositiveStepSizeIsAnError) {
         EXPECT_EQ(fmi().DoStep(inst.c, 0.0, h, fmi2True), fmi2Error);
         EXPECT_TRUE(inst.log.contains("communicationStepSize")) << inst.log.all();
     }
+}
+
+// A step too short for the driven end's quintic (its coefficients scale with h^-5) once ended
+// "successfully" with NaN outputs (found by scripts/fuzz_fmi): an error naming the argument, and the
+// instance's outputs stay finite.
+TEST(CallSequence, StepShorterThanTheShortestStepIsAnError) {
+    for (double h : {4.9406564584124654e-324, 1e-200, 0.5 * UC_MIN_STEP_SIZE}) {
+        Instance inst;
+        ASSERT_EQ(inst.initialize(), fmi2OK);
+        ASSERT_EQ(fmi().DoStep(inst.c, 0.0, 0.2652741128105266, fmi2True), fmi2OK);
+        EXPECT_EQ(fmi().DoStep(inst.c, 0.2652741128105266, h, fmi2True), fmi2Error) << h;
+        EXPECT_TRUE(inst.log.contains("communicationStepSize")) << inst.log.all();
+    }
+    Instance inst;  // the shortest step itself is fine
+    ASSERT_EQ(inst.initialize(), fmi2OK);
+    ASSERT_EQ(fmi().DoStep(inst.c, 0.0, 0.2652741128105266, fmi2True), fmi2OK);
+    ASSERT_EQ(fmi().DoStep(inst.c, 0.2652741128105266, UC_MIN_STEP_SIZE, fmi2True), fmi2OK);
+    const fmi2ValueReference vr = 2001;  // towForce.x
+    double value = 0.0;
+    ASSERT_EQ(fmi().GetReal(inst.c, &vr, 1, &value), fmi2OK);
+    EXPECT_TRUE(std::isfinite(value));
 }
 
 TEST(CallSequence, UnknownValueReferenceIsAnError) {
