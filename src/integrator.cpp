@@ -375,6 +375,7 @@ bool Integrator::advance(double tEnd, std::string& error) {
         const double remaining = tEnd - m->ida_tn;
         if (m->ida_nst > 0 && remaining > m->ida_hh && remaining <= kStretch * m->ida_hh) m->ida_hh = remaining;
         flag = IDASolve(ida_, tEnd, &tReached, y_, yp_, IDA_ONE_STEP);
+        if (flag >= 0) system_->step_completed(tReached, N_VGetArrayPointer(y_), N_VGetArrayPointer(yp_));
         if (flag == IDA_TSTOP_RETURN || (flag == IDA_SUCCESS && tReached >= tEnd)) {
             return true;
         }

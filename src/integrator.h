@@ -41,6 +41,9 @@ public:
         void (*call_)(void*, int, int, double, double, double);
     };
     virtual int jacobian(double t, const double* y, const double* yp, const EntrySink& sink) = 0;
+    // Called after every successful internal step with the state reached (for extremes and counts
+    // that must see more than the communication points).
+    virtual void step_completed(double /*t*/, const double* /*y*/, const double* /*yp*/) {}
 };
 
 struct IntegratorStats {

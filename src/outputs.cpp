@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "seabed.h"
+
 namespace uc {
 namespace {
 
@@ -18,28 +20,77 @@ double curvature(const Vec3& rp, const Vec3& rpp) {
 // Samples per element for the seabed outputs (the contact is resolved to l/8 in arc length).
 constexpr int kSeabedSamples = 8;
 
-void seabed_outputs(const CableModel& model, const double* X, UCOutputs& out) {
+// Seabed outputs. A point of the line rests on the seabed when its centreline is within half a
+// diameter of the seabed. The contact is a smoothed penalty ramp that starts at a clearance of delta
+// (5 % of the diameter) and, on a stiff seabed, holds a line at rest a few millimetres above
+// z = -waterDepth with its cubic shape waving by about delta between the quadrature points: a test
+// against zero clearance (or delta) misses such a line; half a diameter does not, at every seabed
+// stiffness, and marks the touchdown point of a catenary within a few metres (where its height
+// above the seabed reaches half a diameter). Between samples the clearance is interpolated
+// linearly. The contact force is integrated with the quadrature the equations use.
+void seabed_outputs(const CableModel& model, const double* X, const double* Xd, UCOutputs& out) {
     const UCParams& p = model.params();
+    const SeabedProps& seabed = model.seabed();
     const double l = model.element_length();
+    const double reach = std::max(seabed.smoothing, 0.5 * p.diameter);
+    const double ds = l / kSeabedSamples;
     out.touchdownArcLength = p.length;
     out.minSeabedClearance = INFINITY;
+    out.groundedLength = 0.0;
+    out.seabedContactForce = 0.0;
     bool touched = false;
-    double previousS = 0.0, previousClearance = X[2] + p.waterDepth;
+    double previousS = 0.0, previousGap = 0.0;
     for (int e = 0; e < model.n_elements(); ++e) {
         for (int k = e == 0 ? 0 : 1; k <= kSeabedSamples; ++k) {
             const double xi = static_cast<double>(k) / kSeabedSamples;
             const double s = (e + xi) * l;
             const double clearance = interpolate(hermite_shape(xi, l).N, X + 6 * e).z() + p.waterDepth;
             out.minSeabedClearance = std::min(out.minSeabedClearance, clearance);
-            if (p.enableSeabed && !touched && clearance <= 0.0) {
+            const double gap = clearance - reach;  // <= 0: resting on the seabed
+            if (p.enableSeabed && s > 0.0) {
+                if (gap <= 0.0 && previousGap <= 0.0) {
+                    out.groundedLength += ds;
+                } else if (gap <= 0.0 || previousGap <= 0.0) {  // a touchdown or lift-off in between
+                    const double crossing = previousGap / (previousGap - gap);
+                    out.groundedLength += gap <= 0.0 ? (1.0 - crossing) * ds : crossing * ds;
+                }
+            }
+            if (p.enableSeabed && !touched && gap <= 0.0) {
                 touched = true;
-                out.touchdownArcLength = s > 0.0 && previousClearance > 0.0
-                                             ? previousS + (s - previousS) * previousClearance / (previousClearance - clearance)
-                                             : s;
+                out.touchdownArcLength =
+                    s > 0.0 && previousGap > 0.0 ? previousS + (s - previousS) * previousGap / (previousGap - gap) : s;
             }
             previousS = s;
-            previousClearance = clearance;
+            previousGap = gap;
         }
+        if (!p.enableSeabed) continue;
+        for (int g = 0; g < ElementTables::nAxial; ++g) {  // the residual holds minus the load
+            const QuadPoint& q = model.tables().axial[g];
+            out.seabedContactForce -=
+                q.weight * seabed_load(seabed, interpolate(q.shape.N, X + 6 * e), interpolate(q.shape.N, Xd + 6 * e), nullptr).z();
+        }
+    }
+}
+
+// Layback, the cable's direction at the tow point and its angle at an anchor.
+void geometry_outputs(const CableModel& model, const double* X, UCOutputs& out) {
+    const UCParams& p = model.params();
+    const int gN = 6 * model.n_elements();
+    const Vec3 top = at(X, 0), end = at(X, gN);
+    out.layback = std::hypot(end.x() - top.x(), end.y() - top.y());
+    const Vec3 t0 = at(X, 3).normalized();  // down the cable from the tow point
+    out.topDeclination = std::acos(std::clamp(-t0.z(), -1.0, 1.0));
+    out.topAzimuth = std::hypot(t0.x(), t0.y()) > 1e-12 ? std::atan2(t0.y(), t0.x()) : 0.0;
+    out.anchorUplift = 0.0;
+    if (p.bottomEnd == UC_BOTTOM_ANCHORED) {
+        // Lying on the seabed at the anchor: the line one seabed sample before it (l/8) still within
+        // half a diameter of the seabed, as seabed_outputs counts it.
+        const double reach = std::max(model.seabed().smoothing, 0.5 * p.diameter);
+        const double l = model.element_length();
+        const double nearAnchor = interpolate(hermite_shape(1.0 - 1.0 / kSeabedSamples, l).N, X + gN - 6).z();
+        const bool grounded = p.enableSeabed && nearAnchor + p.waterDepth <= reach;
+        const Vec3 up = -at(X, gN + 3).normalized();  // from the anchor up the cable
+        out.anchorUplift = grounded ? 0.0 : std::asin(std::clamp(up.z(), -1.0, 1.0));
     }
 }
 
@@ -118,7 +169,8 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
             maxCurvature = std::max(maxCurvature, curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe)));
         }
     }
-    seabed_outputs(model, X, out);
+    seabed_outputs(model, X, Xd, out);
+    geometry_outputs(model, X, out);
     out.cableTorque = torque;
     const double GJ = model.params().GJ;
     for (int k = 0; k < UC_NUM_STATIONS; ++k)

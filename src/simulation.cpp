@@ -10,13 +10,14 @@
 #include <new>
 
 #include "outputs.h"
+#include "rainflow.h"
 #include "statics.h"
 
 namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 4;
+constexpr std::uint32_t kStateVersion = 5;
 
 // A driven end in a saved state.
 struct EndHeader {
@@ -38,6 +39,7 @@ struct StateHeader {
     double stats[5];
     double tensionScale;  // of the error control
     double historyValid;  // 1: the integrator's history follows y and y' (continue without a restart)
+    RainflowCounter rainflow;  // the online fatigue count of the tow tension
 };
 
 IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
@@ -160,6 +162,9 @@ double tension_scale(const CableModel& model, const UCOutputs& initial) {
 }  // namespace
 
 CableSimulation::CableSimulation(const UCParams& params) : model_(params) {
+    sn_.m = params.fatigueM;
+    sn_.logK = params.fatigueLogK;
+    sn_.area = params.fatigueArea;
     if (SUNContext_Create(nullptr, &context_) != 0 || context_ == nullptr) throw std::bad_alloc();
     const int n = model_.n_free();
     const int bandwidth = model_.free_bandwidth();
@@ -364,11 +369,30 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     statsBase_ = IntegratorStats();
     integratorStarted_ = false;
     restartPending_ = true;
+    rainflow_.reset();
     update_outputs();
+    if (sn_.area > 0.0) rainflow_.add(outputs_.towTension, sn_);
+    outputs_.towTensionMax = outputs_.towTensionMin = outputs_.towTension;
     tensionScale_ = tension_scale(model_, outputs_);
     if (!set_integrator_tolerances(error)) return false;
     outputs_.tensionScale = tensionScale_;
     return true;
+}
+
+void CableSimulation::step_completed(double t, const double* y, const double* yp) {
+    const int n = model_.n_free();
+    for (int j = 0; j < n; ++j) {
+        q_[j] = y[2 * j];
+        v_[j] = y[2 * j + 1];
+        a_[j] = yp[2 * j + 1];
+    }
+    model_.expand(q_.data(), v_.data(), a_.data(), loads_, t, X_.data(), Xd_.data(), Xdd_.data());
+    double R[12];
+    model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, R);
+    const double tension = std::sqrt(R[0] * R[0] + R[1] * R[1] + R[2] * R[2]);
+    stepTensionMax_ = std::max(stepTensionMax_, tension);
+    stepTensionMin_ = std::min(stepTensionMin_, tension);
+    if (sn_.area > 0.0) rainflow_.add(tension, sn_);
 }
 
 bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::string& error) {
@@ -421,7 +445,10 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         restartPending_ = false;
     }
     const double tEnd = time_ + h;
+    stepTensionMax_ = stepTensionMin_ = outputs_.towTension;  // the tension at the step's start
+    const RainflowCounter rainflowAtStart = rainflow_;
     if (!integrator_->advance(tEnd, error)) {
+        rainflow_ = rainflowAtStart;  // the state stays at the last communication point
         restartPending_ = true;  // the state stays at the last communication point
         return false;
     }
@@ -436,6 +463,8 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     if (externalEnd) end_.advance(loads_.end, endVelocityInput, endAcceleration, in.endAccelerationGiven != 0);
     lastStepSize_ = h;
     update_outputs();
+    outputs_.towTensionMax = std::max(stepTensionMax_, outputs_.towTension);
+    outputs_.towTensionMin = std::min(stepTensionMin_, outputs_.towTension);
     return true;
 }
 
@@ -528,6 +557,7 @@ void CableSimulation::update_outputs() {
     outputs_.nNonlinearFailures = s.nonlinearFailures;
     outputs_.nErrorTestFailures = s.errorTestFailures;
     outputs_.tensionScale = tensionScale_;
+    outputs_.fatigueDamage = sn_.area > 0.0 ? rainflow_.damage(sn_) : 0.0;
 }
 
 size_t CableSimulation::state_size() const {
@@ -556,6 +586,7 @@ void CableSimulation::save_state(void* buffer) {
     const bool history = integratorStarted_ && !restartPending_;
     header.historyValid = history ? 1.0 : 0.0;
     header.tensionScale = tensionScale_;
+    header.rainflow = rainflow_;
     historyBuffer_.assign(integrator_->history_size(), 0.0);
     if (history) integrator_->save_history(historyBuffer_.data());
     auto* out = static_cast<unsigned char*>(buffer);
@@ -592,6 +623,7 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     std::memcpy(yp_.data(), in, yp_.size() * sizeof(double));
     in += yp_.size() * sizeof(double);
     tensionScale_ = header.tensionScale;
+    rainflow_ = header.rainflow;
     if (tensionScale_ > 0.0 && !set_integrator_tolerances(error)) {  // 0: saved before initialization
         restartPending_ = true;
         return false;

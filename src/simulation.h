@@ -13,6 +13,7 @@
 #include "cable_api.h"
 #include "cable_model.h"
 #include "integrator.h"
+#include "rainflow.h"
 #include "torsion.h"
 
 namespace uc {
@@ -70,6 +71,7 @@ public:
 private:
     int residual(double t, const double* y, const double* yp, double* r) override;
     int jacobian(double t, const double* y, const double* yp, const EntrySink& sink) override;
+    void step_completed(double t, const double* y, const double* yp) override;
 
     void set_environment(const UCInputs& in);
     void initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
@@ -96,9 +98,12 @@ private:
     bool integratorStarted_ = false;  // the integrator's own counters belong to this state
     UCOutputs outputs_{};
     double tensionScale_ = 0.0;  // of the error control, fixed at initialization
+    RainflowCounter rainflow_;   // online fatigue count of the tow tension (sn_.area > 0)
     bool restartPending_ = true;
 
     // --- per-step environment and workspace ---
+    SNCurve sn_;  // from the fatigue.* parameters
+    double stepTensionMax_ = 0.0, stepTensionMin_ = 0.0;  // over the internal steps of the current step
     Loads loads_;
     std::vector<double> q_, v_, a_, X_, Xd_, Xdd_, R_;
     ElementForces forces_;

@@ -61,6 +61,9 @@ typedef struct UCParams {
     int lineFileElements; /* lineFileElements: elements of a line read from `lineFile`: 0, from each line's NumSegs by the rule of [docs/lines.md](docs/lines.md); N > 0, about N in total, shared by the lines in proportion to their unstretched length (at least one each) */
     double tensionTolerance; /* tensionTolerance: tension tolerance of the time integrator, relative to the tension scale (the larger of the initial top tension and the weight in air of the cable and the towed body): each step's local error stays below it in tension, as a strain error in positions and tangents and over the damping time in velocities ([docs/error_control.md](docs/error_control.md)) */
     double positionTolerance; /* positionTolerance [m]: position tolerance of the time integrator: each step's local error in a node position stays below it (in a tangent, below it over the element length); the tension tolerance is usually the tighter one */
+    double fatigueM; /* fatigue.m: slope m of the S–N curve N = K S^−m of the online fatigue count (S: tension range over `fatigue.area`, in MPa) */
+    double fatigueLogK; /* fatigue.logK: log10 K of the S–N curve of the online fatigue count */
+    double fatigueArea; /* fatigue.area [m2]: area that turns the tow-tension range into a stress range (the nominal steel area); 0, the default, counts no fatigue */
 } UCParams;
 
 typedef struct UCInputs {
@@ -108,6 +111,15 @@ typedef struct UCOutputs {
     double nNonlinearFailures; /* solver.nNonlinearFailures: integrator statistics since initialization (debugging) */
     double nErrorTestFailures; /* solver.nErrorTestFailures: integrator statistics since initialization (debugging) */
     double tensionScale; /* solver.tensionScale [N]: tension scale of the error control, fixed at initialization (the largest initial tension, at least the weight in air of the cable and the body): `tensionTolerance` × `solver.tensionScale` is the tension tolerance in newtons */
+    double layback; /* layback [m]: horizontal distance from the tow point to the far end */
+    double topDeclination; /* topDeclination [rad]: angle of the cable at the tow point from the downward vertical (0: straight down, π/2: horizontal) */
+    double topAzimuth; /* topAzimuth [rad]: horizontal direction in which the cable leaves the tow point, from +x toward +y, in (−π, π] (0 when it hangs straight down) */
+    double anchorUplift; /* anchorUplift [rad]: angle of the cable above the horizontal at an anchored far end (`bottomEnd` 1); 0 when the line lies on the seabed at the anchor (or the far end is not anchored) */
+    double groundedLength; /* groundedLength [m]: unstretched length of cable resting on the seabed (where the contact carries it) */
+    double seabedContactForce; /* seabedContactForce [N]: total normal (vertical) force of the seabed on the cable */
+    double towTensionMax; /* towTensionMax [N]: largest tow tension over the last communication step, from every internal step of the integrator (the peak a master sampling at communication points misses) */
+    double towTensionMin; /* towTensionMin [N]: smallest tow tension over the last communication step, from every internal step of the integrator */
+    double fatigueDamage; /* fatigueDamage: Miner's sum of the tow-tension cycles so far: streaming rainflow count of the tension after every integrator step with the `fatigue.*` S–N curve (0 when `fatigue.area` = 0) */
 } UCOutputs;
 
 /* X(vr, name, TYPE, CAUSALITY, member): every variable in value-reference order; TYPE is REAL, INTEGER, BOOLEAN or STRING (a NUL-terminated char array), CAUSALITY PARAMETER, INPUT or OUTPUT, member the field of UCParams, UCInputs or UCOutputs */
@@ -189,6 +201,9 @@ typedef struct UCOutputs {
     X(75, "lineFileElements", INTEGER, PARAMETER, lineFileElements) \
     X(76, "tensionTolerance", REAL, PARAMETER, tensionTolerance) \
     X(77, "positionTolerance", REAL, PARAMETER, positionTolerance) \
+    X(78, "fatigue.m", REAL, PARAMETER, fatigueM) \
+    X(79, "fatigue.logK", REAL, PARAMETER, fatigueLogK) \
+    X(80, "fatigue.area", REAL, PARAMETER, fatigueArea) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -381,6 +396,15 @@ typedef struct UCOutputs {
     X(2156, "solver.nNonlinearFailures", REAL, OUTPUT, nNonlinearFailures) \
     X(2157, "solver.nErrorTestFailures", REAL, OUTPUT, nErrorTestFailures) \
     X(2158, "solver.tensionScale", REAL, OUTPUT, tensionScale) \
+    X(2159, "layback", REAL, OUTPUT, layback) \
+    X(2160, "topDeclination", REAL, OUTPUT, topDeclination) \
+    X(2161, "topAzimuth", REAL, OUTPUT, topAzimuth) \
+    X(2162, "anchorUplift", REAL, OUTPUT, anchorUplift) \
+    X(2163, "groundedLength", REAL, OUTPUT, groundedLength) \
+    X(2164, "seabedContactForce", REAL, OUTPUT, seabedContactForce) \
+    X(2165, "towTensionMax", REAL, OUTPUT, towTensionMax) \
+    X(2166, "towTensionMin", REAL, OUTPUT, towTensionMin) \
+    X(2167, "fatigueDamage", REAL, OUTPUT, fatigueDamage) \
 
 /* X(member, value): the start value of every numeric parameter (Strings start empty: zero-filled) */
 #define UC_SCHEMA_PARAMETER_DEFAULTS(X) \
@@ -460,6 +484,9 @@ typedef struct UCOutputs {
     X(lineFileElements, 0) \
     X(tensionTolerance, 0.001) \
     X(positionTolerance, 0.001) \
+    X(fatigueM, 3.0) \
+    X(fatigueLogK, 11.0) \
+    X(fatigueArea, 0.0) \
 
 /* X(member, name, lo, hi, loOpen, hiOpen, rangeText, why): the admissible interval of every numeric parameter (closed or open at each end) */
 #define UC_SCHEMA_PARAMETER_RANGES(X) \
@@ -534,6 +561,9 @@ typedef struct UCOutputs {
     X(lineFileElements, "lineFileElements", 0.0, 1000.0, 0, 0, "[0, 1000]", "0 takes the element counts from the line file; more than 1000 elements are never needed") \
     X(tensionTolerance, "tensionTolerance", 0.0, 0.1, 1, 0, "(0, 0.1]", "the tension tolerance is a fraction of the tension scale, between 0 and 10 %") \
     X(positionTolerance, "positionTolerance", 0.0, 10.0, 1, 0, "(0, 10]", "the position tolerance is a positive length") \
+    X(fatigueM, "fatigue.m", 0.0, 20.0, 1, 0, "(0, 20]", "the slope of the S-N curve is a positive number (3 to 5 for steel wire and chain)") \
+    X(fatigueLogK, "fatigue.logK", 0.0, 40.0, 1, 0, "(0, 40]", "log10 K of the S-N curve is a positive number") \
+    X(fatigueArea, "fatigue.area", 0.0, 10.0, 0, 0, "[0, 10]", "the area that turns tension into stress is 0 (no fatigue count) or a positive cross-section") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

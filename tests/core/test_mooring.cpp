@@ -99,7 +99,15 @@ TouchdownResult touchdown_errors(int nElements) {
     const Catenary exact = touchdown_catenary(p.length, w, p.EA, 850.0, 250.0);
     const UCOutputs& out = sim.outputs();
     const double grounded = p.length - out.touchdownArcLength;
-    return {out.towTension / exact.fairleadTension - 1, (grounded - (p.length - exact.suspended)) / p.length};
+    // The FMU's touchdown is where the line comes within half a diameter of the seabed: the exact
+    // catenary's point at that height, a few metres up from its tangent point.
+    double lo = 0.0, hi = exact.suspended;
+    for (int i = 0; i < 200; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (suspended_height(exact.H, w, p.EA, mid) < 0.5 * p.diameter ? lo : hi) = mid;
+    }
+    const double groundedExact = p.length - exact.suspended + 0.5 * (lo + hi);
+    return {out.towTension / exact.fairleadTension - 1, (grounded - groundedExact) / p.length};
 }
 
 }  // namespace

@@ -60,7 +60,10 @@ def test_moorpy_second_opinion(fmu_file):
     r = m.catenary_comparison(fmu_file, 40)
     # the same bounds as against the closed form (issue 4): 0.1 % tension, 0.5 % L grounded
     assert abs(r["tension"] / ref["fairlead_tension"] - 1) < 1e-3
-    assert abs(r["grounded"] - ref["grounded"]) < 5e-3 * m.CHAIN["length"]
+    # MoorPy's grounded length ends at the tangent point; the FMU's where the line rises half a
+    # diameter above the seabed, which the catenary reaches a few metres further up
+    rise = m.grounded_within(exact, 0.5 * m.CHAIN["diameter"]) - exact.grounded
+    assert abs(r["grounded"] - (ref["grounded"] + rise)) < 5e-3 * m.CHAIN["length"]
 
 
 # ------------------------------------------------------------------ 3. surging fairlead
