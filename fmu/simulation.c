@@ -47,6 +47,7 @@ fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function) {
     inst->time = inst->startTime;
     inst->lastSuccessfulTime = inst->startTime;
     inst->coreReady = 1;
+    inst->towMismatchWarned = 0;
     uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: initialized at t = %.9g, towTension = %.6g N", function,
            inst->time, inst->outputs.towTension);
     log_solver_statistics(inst, "initialization");
@@ -85,6 +86,23 @@ fmi2Status uc_sim_do_step(UCInstance* inst, double tc, double h) {
     fmi2Status status = check_step_arguments(inst, tc, h);
     if (status != fmi2OK) return status;
     inst->msg[0] = '\0';
+    if (!inst->towMismatchWarned) {
+        double p[3];
+        uc_tow_position(inst->cable, p);
+        const double dx = inst->inputs.tow[0] - p[0], dy = inst->inputs.tow[1] - p[1], dz = inst->inputs.tow[2] - p[2];
+        const double distance = sqrt(dx * dx + dy * dy + dz * dz);
+        if (distance > UC_TOW_MISMATCH_TOLERANCE) {
+            inst->towMismatchWarned = 1;
+            uc_log_status(&inst->log, fmi2Warning,
+                          "fmi2DoStep at t = %.9g: the tow position input (%.6g, %.6g, %.6g) is %.3g m from where the "
+                          "tow point stands (%.6g, %.6g, %.6g), the previous inputs extrapolated with their velocity: "
+                          "the tow point moves there within this step, a real displacement that shows as a tension "
+                          "spike. Give positions that agree with the integral of the velocity inputs (tolerance %g m; "
+                          "reported once per run)",
+                          inst->time, inst->inputs.tow[0], inst->inputs.tow[1], inst->inputs.tow[2], distance, p[0],
+                          p[1], p[2], UC_TOW_MISMATCH_TOLERANCE);
+        }
+    }
     /* The FMU's own time, not tc: the master's tc carries its round-off (FMI-CHECKLIST 2.3). */
     if (uc_do_step(inst->cable, inst->time, h, &inst->inputs, inst->msg, sizeof inst->msg) != 0) {
         uc_log_status(&inst->log, fmi2Error, "fmi2DoStep: step from t = %.17g to %.17g failed: %s", inst->time,

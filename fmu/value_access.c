@@ -9,11 +9,22 @@
 static const UCVariable* find_or_log(UCInstance* inst, fmi2ValueReference vr, UCVarType type,
                                      const char* function) {
     const UCVariable* v = uc_variable_find(vr, type);
-    if (v == NULL) {
-        uc_log_status(&inst->log, fmi2Error, "%s: unknown value reference %u for type %s", function, vr,
-                      uc_type_name(type));
+    if (v != NULL) return v;
+    /* A value reference of another type: say which variable it is and which call it needs. */
+    static const UCVarType types[4] = {UC_TYPE_REAL, UC_TYPE_INTEGER, UC_TYPE_BOOLEAN, UC_TYPE_STRING};
+    for (int k = 0; k < 4; ++k) {
+        const UCVariable* other = types[k] == type ? NULL : uc_variable_find(vr, types[k]);
+        if (other != NULL) {
+            const int getter = strncmp(function, "fmi2Get", 7) == 0;
+            uc_log_status(&inst->log, fmi2Error, "%s: %s (value reference %u) is a%s %s variable: use fmi2%s%s",
+                          function, other->name, vr, types[k] == UC_TYPE_INTEGER ? "n" : "", uc_type_name(types[k]),
+                          getter ? "Get" : "Set", uc_type_name(types[k]));
+            return NULL;
+        }
     }
-    return v;
+    uc_log_status(&inst->log, fmi2Error, "%s: unknown value reference %u (no %s variable and no variable of another "
+                  "type has it)", function, vr, uc_type_name(type));
+    return NULL;
 }
 
 static fmi2Status check_arrays(UCInstance* inst, const void* vr, size_t nvr, const void* values,

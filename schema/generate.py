@@ -492,8 +492,9 @@ def html_text(data, entries) -> str:
            f"<h1>{html.escape(md['modelName'])}</h1>", f"<p>{html.escape(md['description'])}</p>",
            "<p>FMI 2.0 co-simulation. All quantities SI; Earth frame x, y horizontal, z up, free surface "
            "at z = 0; arc length s = 0 at the tow point. Inputs apply from the start of the communication "
-           "step they are set before. Licence: see <a href=\"LICENSE.txt\">LICENSE.txt</a> when present, "
-           "and the project's repository.</p>"]
+           "step they are set before. Licence: BSD 3-Clause, <a href=\"LICENSE.txt\">LICENSE.txt</a>; the "
+           "code of others it contains (SUNDIALS, Eigen) and their licences: "
+           "<a href=\"THIRD_PARTY.txt\">THIRD_PARTY.txt</a>.</p>"]
     for causality in CAUSALITIES:
         rows = [e for e in entries if e.raw["causality"] == causality]
         out.append(f"<h2>{titles[causality]}</h2>")

@@ -92,6 +92,12 @@ extern "C" int uc_interface_derivatives(UCCable* c, double d[72], char* msg, siz
     });
 }
 
+extern "C" void uc_tow_position(const UCCable* c, double p[3]) {
+    if (!c || !p) return;
+    const uc::Vec3 x = c->simulation.tow_position();
+    for (int k = 0; k < 3; ++k) p[k] = x[k];
+}
+
 extern "C" double uc_time(const UCCable* c) { return c ? c->simulation.time() : 0.0; }
 
 extern "C" void uc_get_outputs(const UCCable* c, UCOutputs* out) {

@@ -88,6 +88,14 @@ int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, char* msg, si
  * exactly what they are. */
 int uc_interface_derivatives(UCCable* c, double d[72], char* msg, size_t msgSize);
 
+/* Where the tow point stands now: the end of the last step's trajectory (the previous inputs
+ * extrapolated), or the initial tow position. A position input far from it is a displacement. */
+void uc_tow_position(const UCCable* c, double p[3]);
+
+/* Tow position inputs farther than this [m] from uc_tow_position are reported (once per run): the
+ * extrapolation of consistent inputs misses by millimetres (jerk h^3 / 6). */
+#define UC_TOW_MISMATCH_TOLERANCE 0.05
+
 double uc_time(const UCCable* c);
 void uc_get_outputs(const UCCable* c, UCOutputs* out);
 

@@ -335,7 +335,11 @@ void Integrator::error_handler(int code, const char* /*module*/, const char* fun
     // function and the text are kept; advance() names the returned flag.
     (void)code;
     std::snprintf(buffer, sizeof buffer, "%s: %s", function ? function : "IDA", msg ? msg : "");
-    integrator->lastMessage_ = buffer;
+    // IDA 6.4 builds some messages from fragments that both end in a comma ("At t = 3, , mxstep
+    // steps taken ..."): print one.
+    std::string text = buffer;
+    for (size_t at = text.find(", ,"); at != std::string::npos; at = text.find(", ,", at)) text.erase(at, 2);
+    integrator->lastMessage_ = text;
 }
 
 bool Integrator::restart(double t, const double* y, const double* yp, std::string& error) {

@@ -45,6 +45,7 @@ public:
     const CableModel& model() const { return model_; }
     double time() const { return time_; }
     const UCOutputs& outputs() const { return outputs_; }
+    const Vec3& tow_position() const { return tow_.position; }
 
     bool initialize(double t0, const UCInputs& in, std::string& error);
     bool step(double t, double h, const UCInputs& in, std::string& error);

@@ -1,6 +1,6 @@
 # cmake -DFMU=<path to UnderwaterCable.fmu> -P check_archive.cmake
 # The FMU zip holds modelDescription.xml at the root and binaries/linux64/UnderwaterCable.so, with relative
-# forward-slash paths and no "./" or "/" prefixes (FMI-CHECKLIST 2.7).
+# forward-slash paths and no "./" or "/" prefixes, and its documentation with the licences.
 if(NOT EXISTS "${FMU}")
   message(FATAL_ERROR "no FMU at '${FMU}'")
 endif()
@@ -9,7 +9,8 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "cannot list ${FMU}")
 endif()
 string(REPLACE "\n" ";" entries "${listing}")
-foreach(required modelDescription.xml binaries/linux64/UnderwaterCable.so documentation/index.html)
+foreach(required modelDescription.xml binaries/linux64/UnderwaterCable.so documentation/index.html
+                 documentation/LICENSE.txt documentation/THIRD_PARTY.txt)
   list(FIND entries "${required}" index)
   if(index LESS 0)
     message(FATAL_ERROR "${FMU} lacks ${required}; it holds: ${listing}")

@@ -95,11 +95,19 @@ TEST(CallSequence, UnknownValueReferenceIsAnError) {
     EXPECT_TRUE(inst.log.contains("424242")) << inst.log.all();
 }
 
-TEST(CallSequence, ValueReferenceOfAnotherTypeIsAnError) {
+TEST(CallSequence, ValueReferenceOfAnotherTypeIsAnErrorSayingWhichCallItNeeds) {
     Instance inst;
     const fmi2ValueReference vr = vr_of("nElements");
     double value = 1.0;
     EXPECT_EQ(fmi().SetReal(inst.c, &vr, 1, &value), fmi2Error);
+    EXPECT_TRUE(inst.log.contains("nElements")) << inst.log.all();
+    EXPECT_TRUE(inst.log.contains("is an Integer variable: use fmi2SetInteger")) << inst.log.all();
+    Instance other;
+    const fmi2ValueReference length = vr_of("length");
+    const fmi2Integer n = 300;
+    EXPECT_EQ(fmi().SetInteger(other.c, &length, 1, &n), fmi2Error);
+    EXPECT_TRUE(other.log.contains("length")) << other.log.all();
+    EXPECT_TRUE(other.log.contains("is a Real variable: use fmi2SetReal")) << other.log.all();
 }
 
 TEST(CallSequence, OutputsCannotBeSet) {
