@@ -1,0 +1,112 @@
+"""The Python package and its command: the API (ucable.fmu_path, run_scene), `ucable run` and a
+two-worker `ucable sweep` on a local Dask cluster whose rows equal single runs, a failing
+combination kept as a row; and (slow) `pip install .` into a fresh venv used from outside the clone."""
+
+import csv
+import os
+import subprocess
+import sys
+import venv
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import ucable
+from ucable.scene import load_scene, run_scene
+
+ROOT = Path(__file__).resolve().parents[2]
+SHORT = {"duration": 10.0}
+
+
+def cli_env(fmu_file):
+    env = dict(os.environ, UC_FMU=str(fmu_file))
+    env["PYTHONPATH"] = os.pathsep.join([str(ROOT / "scripts"), env.get("PYTHONPATH", "")])
+    return env
+
+
+def read_csv(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def test_api_finds_the_fmu_and_the_scenes(fmu_file):
+    assert Path(ucable.fmu_path()).is_file()
+    names = {p.stem for p in ucable.scenes_dir().glob("*.toml")}
+    assert {"hopland_accelerate", "hopland_decelerate", "turn90", "chain_mooring"} <= names
+    for name in names:  # every packaged scene parses
+        assert load_scene(name).duration > 0
+
+
+def test_run_scene_returns_named_outputs(fmu_file):
+    r = ucable.run_scene("hopland_accelerate", overrides=SHORT, fmu=fmu_file)
+    assert r.time[-1] == pytest.approx(10.0)
+    assert len(r["towTension"]) == len(r.time) == 21
+    s = r.summary()
+    assert s["towTensionMin"] <= s["towTensionFinal"] <= s["towTensionMax"]
+    assert np.all(r["towTensionMax"] >= r["towTension"])
+    # the tow point flies the scene: 1.1 kn for the first 10 s of the ramp (mean speed 1.21 kn)
+    assert r["tow.x"][-1] == pytest.approx(10.0 * 0.5 * (1.1 + 1.1 + 1.3 * 10.0 / 60.0) * 1852 / 3600, rel=1e-6)
+
+
+def test_overrides_reach_the_fmu_and_bad_ones_are_named(fmu_file):
+    short = run_scene("hopland_accelerate", overrides={**SHORT, "length": 200.0}, fmu=fmu_file)
+    long = run_scene("hopland_accelerate", overrides=SHORT, fmu=fmu_file)
+    assert short["towTension"][0] < long["towTension"][0]  # less cable, less drag and weight
+    with pytest.raises(Exception, match="length"):
+        run_scene("hopland_accelerate", overrides={**SHORT, "length": -5.0}, fmu=fmu_file)
+
+
+def test_cli_run_writes_csv_and_plot(fmu_file, tmp_path):
+    out = tmp_path / "o"
+    p = subprocess.run([sys.executable, "-m", "ucable.cli", "run", "hopland_accelerate", "--set", "duration=5",
+                        "--out", str(out)], env=cli_env(fmu_file), capture_output=True, text=True, cwd=tmp_path,
+                       timeout=300)
+    assert p.returncode == 0, p.stderr
+    rows = read_csv(out / "result.csv")
+    assert len(rows) == 11 and {"time", "towTension", "towTensionMax", "endPosition.z", "tow.x"} <= set(rows[0])
+    assert (out / "result.png").stat().st_size > 0
+
+
+def test_two_worker_sweep_rows_equal_single_runs(fmu_file, tmp_path):
+    out = tmp_path / "s"
+    p = subprocess.run([sys.executable, "-m", "ucable.cli", "sweep", "hopland_accelerate", "--vary", "length=200,300",
+                        "--vary", "Cdn=1.2,1.6,-1", "--set", "duration=5", "--workers", "2", "--out", str(out)],
+                       env=cli_env(fmu_file), capture_output=True, text=True, cwd=tmp_path, timeout=600)
+    assert p.returncode == 0, p.stderr
+    rows = read_csv(out / "results.csv")
+    assert [(float(r["length"]), float(r["Cdn"])) for r in rows] == [
+        (200.0, 1.2), (200.0, 1.6), (200.0, -1.0), (300.0, 1.2), (300.0, 1.6), (300.0, -1.0)]
+    for r in rows:
+        if float(r["Cdn"]) < 0:  # the FMU refuses it: a row with the error, the sweep goes on
+            assert r["status"] == "error" and "Cdn" in r["error"], r
+            continue
+        assert r["status"] == "ok", r
+        single = run_scene("hopland_accelerate", overrides={"duration": 5.0, "length": float(r["length"]),
+                                                            "Cdn": float(r["Cdn"])}, fmu=fmu_file).summary()
+        for key, value in single.items():
+            assert float(r[key]) == pytest.approx(value, rel=1e-9), key  # the CSV keeps 10 digits
+    assert (out / "summary.png").stat().st_size > 0
+
+
+@pytest.mark.slow
+def test_pip_install_runs_from_outside_the_clone(tmp_path):
+    """What a new user does: a fresh venv, `pip install` of the clone (builds the FMU with CMake),
+    then the command from a directory that is not the clone."""
+    env_dir = tmp_path / "v"
+    venv.create(env_dir, with_pip=True)
+    pip = env_dir / "bin" / "pip"
+    p = subprocess.run([str(pip), "install", "-q", str(ROOT)], capture_output=True, text=True, timeout=3000)
+    assert p.returncode == 0, p.stdout + p.stderr
+    py = env_dir / "bin" / "python"
+    work = tmp_path / "elsewhere"
+    work.mkdir()
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "UC_FMU")}
+    q = subprocess.run([str(py), "-c", "import ucable; print(ucable.fmu_path())"], capture_output=True, text=True,
+                       cwd=work, env=env)
+    assert q.returncode == 0 and "site-packages" in q.stdout, q.stdout + q.stderr
+    exe = env_dir / "bin" / "ucable"
+    r = subprocess.run([str(exe), "run", "scenes/hopland_accelerate.toml", "--set", "duration=10", "--out", "o"],
+                       capture_output=True, text=True, cwd=work, env=env, timeout=600)
+    assert r.returncode == 0, r.stderr
+    assert (work / "o" / "result.csv").is_file()
