@@ -104,6 +104,8 @@ CableModel::CableModel(const UCParams& params)
     bendingDamping_ = EI_ * params.axialDamping / params.EA;
     topTangent_ = params.topEnd == UC_TOP_CLAMPED ? unit(params.topTangent) : Vec3(0, 0, -1);
     anchor_ = Vec3(params.anchor[0], params.anchor[1], params.anchor[2]);
+    std::string waveError;  // the parameters' check has refused waves that cannot be built
+    sea_.build(params, waveError);
     seabed_.enabled = params.enableSeabed != 0;
     seabed_.depth = params.waterDepth;
     seabed_.stiffness = params.seabedStiffness;
@@ -255,7 +257,10 @@ Vec6 CableModel::end_node_residual(const double* X, const double* Xd, const doub
     R.tail<3>() = -loads.endCouple.cross(rp) / rp.squaredNorm();
     if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return R;
     const Vec3 rdd = Eigen::Map<const Vec3>(Xdd + gN);
-    const Vec3 u = loads.current.at(X[gN + 2], nullptr) - rd;
+    Vec3 U, A;
+    Mat3 dU, dA;
+    loads.current.flow(Eigen::Map<const Vec3>(X + gN), U, dU, A, dA);  // the body's drag in the current and waves
+    const Vec3 u = U - rd;
     const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
     const double wet = (params_.bodyMass - fluid_.rho * params_.bodyVolume) * fluid_.gravity;
     R.head<3>() += (params_.bodyMass + params_.bodyAddedMass) * rdd;
@@ -277,11 +282,17 @@ void CableModel::end_node_jacobian(const double* X, const double* Xd, const doub
     }
     C.block<3, 3>(0, 0) = loads.endLoadDamping;
     if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return;
-    Vec3 slope;
-    const Vec3 u = loads.current.at(X[gN + 2], &slope) - Eigen::Map<const Vec3>(Xd + gN);
+    Vec3 U, A;
+    Mat3 dU, dA;
+    loads.current.flow(Eigen::Map<const Vec3>(X + gN), U, dU, A, dA);
+    const Vec3 u = U - Eigen::Map<const Vec3>(Xd + gN);
     const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
     const Mat3 dDrag_du = 0.5 * fluid_.rho * params_.bodyCdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
-    K.block<3, 3>(0, 0).col(2) -= dDrag_du * slope;  // drag of the body in a sheared current
+    if (loads.current.waves()) {
+        K.block<3, 3>(0, 0) -= dDrag_du * dU;  // drag of the body in the waves' and current's gradients
+    } else {
+        K.block<3, 3>(0, 0).col(2) -= dDrag_du * dU.col(2);  // drag of the body in a sheared current
+    }
     C.block<3, 3>(0, 0) += 0.5 * fluid_.rho * params_.bodyCdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
     M.block<3, 3>(0, 0) = (params_.bodyMass + params_.bodyAddedMass) * Mat3::Identity();
 }

@@ -87,6 +87,7 @@ public:
     const AxialProps& axial() const { return axial_; }
     const SeabedProps& seabed() const { return seabed_; }
     const CurrentProfile& current_profile() const { return profile_; }
+    const SeaState& sea() const { return sea_; }
     bool far_end_prescribed() const;  // anchored or external
 
     int free_index(int g) const { return free_[g]; }
@@ -138,6 +139,7 @@ private:
     Vec3 anchor_;
     SeabedProps seabed_;
     CurrentProfile profile_;
+    SeaState sea_;
     std::vector<int> free_;
     std::vector<double> coef_;
     int nFree_ = 0;

@@ -36,12 +36,27 @@ Vec3 CurrentField::at(double z, Vec3* slope) const {
     return u + profileScale * ((1.0 - w) * lo + w * hi);
 }
 
+void CurrentField::flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA) const {
+    Vec3 slope;
+    U = at(r.z(), &slope);
+    dU.setZero();
+    dU.col(2) = slope;
+    A.setZero();
+    dA.setZero();
+    if (!waves()) return;
+    Vec3 u;
+    Mat3 du;
+    sea->kinematics(r, time, u, A, &du, &dA);
+    U += u;
+    dU += du;
+}
+
 double submerged_fraction(double z, double diameter) {
     return std::clamp(0.5 - z / diameter, 0.0, 1.0);
 }
 
-Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd,
-                const Vec3& current, const Vec3& currentSlope, PointLoadJacobian* J) {
+Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd, const Vec3& current,
+                const Mat3& dU, bool waves, const Vec3& A, const Mat3& dA, PointLoadJacobian* J) {
     const double phi = submerged_fraction(r.z(), p.diameter);
     const double stretch = rp.norm();
     const Vec3 t = rp / stretch;
@@ -60,6 +75,11 @@ Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& 
     const double ta = t.dot(rdd);
     if (p.addedMass) inertia = rhoA * (p.Can * (rdd - ta * t) + p.Cat * ta * t);
 
+    // Fluid inertia on the normal component: Froude-Krylov plus added mass, rho A (1 + Can) A_n.
+    const double fluidInertiaCoefficient = rhoA * (1.0 + p.Can);
+    const Vec3 An = waves ? Vec3(A - t.dot(A) * t) : Vec3::Zero();
+    if (waves) inertia -= fluidInertiaCoefficient * An;
+
     const Vec3 F = phi * inertia - weight - phi * drag;
     if (J == nullptr) return F;
 
@@ -77,14 +97,19 @@ Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& 
         dInertia_drdd = rhoA * (p.Can * P + p.Cat * tt);
         dInertia_dt = rhoA * (p.Cat - p.Can) * (t * rdd.transpose() + ta * I);
     }
+    if (waves) dInertia_dt += fluidInertiaCoefficient * (t * A.transpose() + t.dot(A) * I);  // d(-c A_n)/dt
     const Mat3 dt_drp = P / stretch;
     // u = U - r_dot: dF/dr_dot = + phi dDrag/du.
     J->drd = phi * dDrag_du;
     J->drp = phi * (dInertia_dt - dDrag_dt) * dt_drp;
     J->drdd = phi * dInertia_drdd;
-    // F depends on z through the current: dF/dz = -phi dDrag/du dU/dz.
+    // F depends on r through the water's motion: dF/dr = -phi dDrag/du dU/dr - phi c P dA/dr.
     J->dr.setZero();
-    J->dr.col(2) = -phi * dDrag_du * currentSlope;
+    if (waves) {
+        J->dr = -phi * dDrag_du * dU - phi * fluidInertiaCoefficient * P * dA;
+    } else {
+        J->dr.col(2) = -phi * dDrag_du * dU.col(2);
+    }
     const double dphi = submerged_fraction_slope(r.z(), p.diameter);
     if (dphi != 0.0) {
         Vec3 dF_dphi = inertia - drag;
@@ -99,10 +124,11 @@ void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentF
     for (int g = 0; g < e.nLoad; ++g) {
         const QuadPoint& q = e.load[g];
         const Vec3 r = interpolate(q.shape.N, X);
-        Vec3 slope;
-        const Vec3 U = current.at(r.z(), &slope);
+        Vec3 U, A;
+        Mat3 dU, dA;
+        current.flow(r, U, dU, A, dA);
         const Vec3 F = point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd),
-                                  interpolate(q.shape.N, Xdd), U, slope, nullptr);
+                                  interpolate(q.shape.N, Xdd), U, dU, current.waves(), A, dA, nullptr);
         for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += (q.weight * q.shape.N[a]) * F;
     }
 }
@@ -114,10 +140,11 @@ void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const Curre
     for (int g = 0; g < e.nLoad; ++g) {
         const QuadPoint& q = e.load[g];
         const Vec3 r = interpolate(q.shape.N, X);
-        Vec3 slope;
-        const Vec3 U = current.at(r.z(), &slope);
+        Vec3 U, A;
+        Mat3 dU, dA;
+        current.flow(r, U, dU, A, dA);
         point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd), interpolate(q.shape.N, Xdd), U,
-                   slope, &J);
+                   dU, current.waves(), A, dA, &J);
         for (int a = 0; a < 4; ++a) {
             const double wa = q.weight * q.shape.N[a];
             for (int b = 0; b < 4; ++b) {

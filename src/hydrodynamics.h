@@ -9,6 +9,7 @@
 #pragma once
 
 #include "hermite_element.h"
+#include "waves.h"
 
 namespace uc {
 
@@ -38,8 +39,14 @@ struct CurrentField {
     Vec3 uniform = Vec3::Zero();
     const CurrentProfile* profile = nullptr;
     double profileScale = 1.0;  // load continuation of the static solver
-    // Velocity at height z; slope = dU/dz when non-null.
+    const SeaState* sea = nullptr;  // waves (calm when null or without components)
+    double time = 0.0;              // of the wave kinematics
+    // Velocity of the current at height z; slope = dU/dz when non-null.
     Vec3 at(double z, Vec3* slope) const;
+    bool waves() const { return sea != nullptr && !sea->calm(); }
+    // The water's velocity U (current and waves) and local acceleration A (waves) at r, with their
+    // gradients dU/dr and dA/dr (A and dA are zero in calm water).
+    void flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA) const;
 };
 
 // Derivatives of the per-length load F with respect to r, r', r_dot, r_ddot.
@@ -52,9 +59,12 @@ constexpr double kDragVelocityFloor = 1e-6;
 
 double submerged_fraction(double z, double diameter);
 
-// Per-length load F at one point in a current U with dU/dz = currentSlope; fills J when non-null.
-Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd,
-                const Vec3& current, const Vec3& currentSlope, PointLoadJacobian* J);
+// Per-length load F at one point in water moving with velocity U (gradient dU = dU/dr) and, when
+// `waves`, accelerating with A (gradient dA): Morison drag on the relative velocity and the fluid
+// inertia rho A (1 + Can) A_n on the normal component (Froude-Krylov plus added mass). Fills J when
+// non-null.
+Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd, const Vec3& U,
+                const Mat3& dU, bool waves, const Vec3& A, const Mat3& dA, PointLoadJacobian* J);
 
 // Element integrals: R_a += int N_a F ds; K, C, M get dR/dX, dR/dXdot, dR/dXddot.
 void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentField& current, const double* X,

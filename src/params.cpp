@@ -1,5 +1,6 @@
 // params.cpp - defaults (DESIGN.md section 4) and the single place where parameters are validated.
 #include "params.h"
+#include "waves.h"
 
 #include <cmath>
 #include <cstdio>
@@ -74,6 +75,15 @@ std::string check_params(const UCParams& p) {
         return m;
     if (p.enableSeabed && positive(m, "seabedStiffness", p.seabedStiffness, "an enabled seabed needs a contact stiffness"))
         return m;
+    if (p.wavesMode != 0 && p.wavesHeight > 0.0) {  // breaking: H over the (peak) wavelength above 1/7
+        const double k = wave_number(2.0 * 3.14159265358979323846 / p.wavesPeriod, p.waterDepth, p.gravity);
+        const double limit = 2.0 * 3.14159265358979323846 / k / 7.0;
+        if (p.wavesHeight > limit) {
+            char range[160];
+            std::snprintf(range, sizeof range, "[0, %.6g] (a seventh of the wavelength of waves.period in waterDepth)", limit);
+            return format_violation("waves.height", p.wavesHeight, range, "steeper waves break");
+        }
+    }
     for (int k = 1; k < p.currentProfileRows; ++k) {
         if (p.currentProfileDepth[k] > p.currentProfileDepth[k - 1]) continue;
         char name[64], range[96];

@@ -199,6 +199,7 @@ CableSimulation::~CableSimulation() {
 void CableSimulation::set_environment(const UCInputs& in) {
     loads_.current.uniform = Vec3(in.current[0], in.current[1], 0.0);
     loads_.current.profile = &model_.current_profile();
+    loads_.current.sea = &model_.sea();
     loads_.endLoad = vec(in.endLoad);
     loads_.endLoadVelocity = vec(in.endLoadVelocity);
     const double* rows[3] = {in.endLoadDamping.x, in.endLoadDamping.y, in.endLoadDamping.z};
@@ -310,6 +311,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         return false;
     }
     set_environment(in);
+    loads_.current.time = t0;
     tow_.reset(vec(in.tow), vec(in.towVelocity), vec(in.towAcceleration), in.towAccelerationGiven != 0);
     loads_.tow = TowTrajectory::at_rest_in_time(tow_.position, tow_.velocity, tow_.acceleration, t0);
     end_.reset(vec(in.end), vec(in.endVelocity), Vec3::Zero(), false);
@@ -380,6 +382,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
 }
 
 void CableSimulation::step_completed(double t, const double* y, const double* yp) {
+    loads_.current.time = t;
     const int n = model_.n_free();
     for (int j = 0; j < n; ++j) {
         q_[j] = y[2 * j];
@@ -500,6 +503,7 @@ bool CableSimulation::set_integrator_tolerances(std::string& error) {
 }
 
 int CableSimulation::residual(double t, const double* y, const double* yp, double* r) {
+    loads_.current.time = t;
     const int n = model_.n_free();
     for (int j = 0; j < n; ++j) {
         q_[j] = y[2 * j];
@@ -518,6 +522,7 @@ int CableSimulation::residual(double t, const double* y, const double* yp, doubl
 }
 
 int CableSimulation::jacobian(double t, const double* y, const double* yp, const EntrySink& sink) {
+    loads_.current.time = t;
     const int n = model_.n_free();
     for (int j = 0; j < n; ++j) {
         q_[j] = y[2 * j];
@@ -546,6 +551,7 @@ void CableSimulation::free_state(std::vector<double>& q, std::vector<double>& v,
 }
 
 void CableSimulation::update_outputs() {
+    loads_.current.time = time_;
     free_state(q_, v_, a_);
     model_.expand(q_.data(), v_.data(), a_.data(), loads_, time_, X_.data(), Xd_.data(), Xdd_.data());
     model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), &forces_);
@@ -558,6 +564,7 @@ void CableSimulation::update_outputs() {
     outputs_.nErrorTestFailures = s.errorTestFailures;
     outputs_.tensionScale = tensionScale_;
     outputs_.fatigueDamage = sn_.area > 0.0 ? rainflow_.damage(sn_) : 0.0;
+    outputs_.waveElevation = model_.sea().elevation(X_[0], X_[1], time_);
 }
 
 size_t CableSimulation::state_size() const {
@@ -693,6 +700,7 @@ bool CableSimulation::interface_derivatives(double d[6][12], std::string& error)
     M.clear();
 
     // The cable's Jacobian at its present state.
+    loads_.current.time = time_;
     free_state(q_, v_, a_);
     model_.expand(q_.data(), v_.data(), a_.data(), loads_, time_, X_.data(), Xd_.data(), Xdd_.data());
     auto add = [&](int i, int k, double dq, double dv, double da) {

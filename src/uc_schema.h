@@ -64,6 +64,15 @@ typedef struct UCParams {
     double fatigueM; /* fatigue.m: slope m of the S–N curve N = K S^−m of the online fatigue count (S: tension range over `fatigue.area`, in MPa) */
     double fatigueLogK; /* fatigue.logK: log10 K of the S–N curve of the online fatigue count */
     double fatigueArea; /* fatigue.area [m2]: area that turns the tow-tension range into a stress range (the nominal steel area); 0, the default, counts no fatigue */
+    int wavesMode; /* waves.mode: waves: 0 calm, 1 regular Airy wave (`waves.height` H, `waves.period` T), 2 irregular JONSWAP sea (Hs, Tp) */
+    double wavesHeight; /* waves.height [m]: wave height H (regular) or significant wave height Hs (JONSWAP); H / wavelength above 1/7 (breaking) is refused */
+    double wavesPeriod; /* waves.period [s]: wave period T (regular) or peak period Tp (JONSWAP) */
+    double wavesGamma; /* waves.gamma: JONSWAP peak enhancement factor (1: Pierson–Moskowitz) */
+    double wavesDirection; /* waves.direction [rad]: direction in which the waves travel, from +x toward +y */
+    int wavesSeed; /* waves.seed: seed of the random phases of the irregular sea (SplitMix64: the same sea on every platform) */
+    int wavesNComponents; /* waves.nComponents: number of components of the irregular sea (equal frequency bands over 0.5–3 times the peak frequency) */
+    double wavesRampTime; /* waves.rampTime [s]: time over which the waves grow from calm (half a cosine); 0: full waves from the start */
+    int wavesStretching; /* waves.stretching: kinematics near the surface: 0 none (above the mean level those of z = 0), 1 Wheeler stretching of the water column up to the elevation */
 } UCParams;
 
 typedef struct UCInputs {
@@ -120,6 +129,7 @@ typedef struct UCOutputs {
     double towTensionMax; /* towTensionMax [N]: largest tow tension over the last communication step, from every internal step of the integrator (the peak a master sampling at communication points misses) */
     double towTensionMin; /* towTensionMin [N]: smallest tow tension over the last communication step, from every internal step of the integrator */
     double fatigueDamage; /* fatigueDamage: Miner's sum of the tow-tension cycles so far: streaming rainflow count of the tension after every integrator step with the `fatigue.*` S–N curve (0 when `fatigue.area` = 0) */
+    double waveElevation; /* waveElevation [m]: elevation of the sea surface at the tow point's horizontal position (0 in calm water) */
 } UCOutputs;
 
 /* X(vr, name, TYPE, CAUSALITY, member): every variable in value-reference order; TYPE is REAL, INTEGER, BOOLEAN or STRING (a NUL-terminated char array), CAUSALITY PARAMETER, INPUT or OUTPUT, member the field of UCParams, UCInputs or UCOutputs */
@@ -204,6 +214,15 @@ typedef struct UCOutputs {
     X(78, "fatigue.m", REAL, PARAMETER, fatigueM) \
     X(79, "fatigue.logK", REAL, PARAMETER, fatigueLogK) \
     X(80, "fatigue.area", REAL, PARAMETER, fatigueArea) \
+    X(81, "waves.mode", INTEGER, PARAMETER, wavesMode) \
+    X(82, "waves.height", REAL, PARAMETER, wavesHeight) \
+    X(83, "waves.period", REAL, PARAMETER, wavesPeriod) \
+    X(84, "waves.gamma", REAL, PARAMETER, wavesGamma) \
+    X(85, "waves.direction", REAL, PARAMETER, wavesDirection) \
+    X(86, "waves.seed", INTEGER, PARAMETER, wavesSeed) \
+    X(87, "waves.nComponents", INTEGER, PARAMETER, wavesNComponents) \
+    X(88, "waves.rampTime", REAL, PARAMETER, wavesRampTime) \
+    X(89, "waves.stretching", INTEGER, PARAMETER, wavesStretching) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -405,6 +424,7 @@ typedef struct UCOutputs {
     X(2165, "towTensionMax", REAL, OUTPUT, towTensionMax) \
     X(2166, "towTensionMin", REAL, OUTPUT, towTensionMin) \
     X(2167, "fatigueDamage", REAL, OUTPUT, fatigueDamage) \
+    X(2168, "waveElevation", REAL, OUTPUT, waveElevation) \
 
 /* X(member, value): the start value of every numeric parameter (Strings start empty: zero-filled) */
 #define UC_SCHEMA_PARAMETER_DEFAULTS(X) \
@@ -487,6 +507,15 @@ typedef struct UCOutputs {
     X(fatigueM, 3.0) \
     X(fatigueLogK, 11.0) \
     X(fatigueArea, 0.0) \
+    X(wavesMode, 0) \
+    X(wavesHeight, 0.0) \
+    X(wavesPeriod, 10.0) \
+    X(wavesGamma, 3.3) \
+    X(wavesDirection, 0.0) \
+    X(wavesSeed, 1) \
+    X(wavesNComponents, 200) \
+    X(wavesRampTime, 0.0) \
+    X(wavesStretching, 0) \
 
 /* X(member, name, lo, hi, loOpen, hiOpen, rangeText, why): the admissible interval of every numeric parameter (closed or open at each end) */
 #define UC_SCHEMA_PARAMETER_RANGES(X) \
@@ -564,6 +593,15 @@ typedef struct UCOutputs {
     X(fatigueM, "fatigue.m", 0.0, 20.0, 1, 0, "(0, 20]", "the slope of the S-N curve is a positive number (3 to 5 for steel wire and chain)") \
     X(fatigueLogK, "fatigue.logK", 0.0, 40.0, 1, 0, "(0, 40]", "log10 K of the S-N curve is a positive number") \
     X(fatigueArea, "fatigue.area", 0.0, 10.0, 0, 0, "[0, 10]", "the area that turns tension into stress is 0 (no fatigue count) or a positive cross-section") \
+    X(wavesMode, "waves.mode", 0.0, 2.0, 0, 0, "{0 calm, 1 regular Airy, 2 irregular JONSWAP}", "unknown wave model") \
+    X(wavesHeight, "waves.height", 0.0, 40.0, 0, 0, "[0, 40]", "the wave height is a length between 0 and 40 m") \
+    X(wavesPeriod, "waves.period", 0.0, 60.0, 1, 0, "(0, 60]", "the wave period is a positive time up to 60 s") \
+    X(wavesGamma, "waves.gamma", 1.0, 10.0, 0, 0, "[1, 10]", "the JONSWAP peak enhancement factor is between 1 (Pierson-Moskowitz) and 10") \
+    X(wavesDirection, "waves.direction", -7.0, 7.0, 0, 0, "[-7, 7]", "the direction of travel is an angle") \
+    X(wavesSeed, "waves.seed", 0.0, 999999999.0, 0, 0, "[0, 999999999]", "the seed is a non-negative integer") \
+    X(wavesNComponents, "waves.nComponents", 1.0, 5000.0, 0, 0, "[1, 5000]", "the irregular sea has 1 to 5000 components") \
+    X(wavesRampTime, "waves.rampTime", 0.0, 1000000.0, 0, 0, "[0, 1000000]", "the ramp time is a non-negative time") \
+    X(wavesStretching, "waves.stretching", 0.0, 1.0, 0, 0, "{0 none, 1 Wheeler}", "unknown stretching") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

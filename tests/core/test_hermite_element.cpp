@@ -341,9 +341,9 @@ TEST(HydroTerm, DragOpposesRelativeMotionWithMorisonMagnitudes) {
     const double d = 0.0332, rho = 1025;
     FluidProps p{rho, 0.0, 2.7, 3.14159265358979 * d * d / 4, d, 1.649, 0.12, 0.0, 0.0, false};
     const Vec3 r(0, 0, -10), t(1, 0, 0), zero = Vec3::Zero();
-    const Vec3 normal = point_load(p, r, t, Vec3(0, 0, -1), zero, zero, zero, nullptr);
+    const Vec3 normal = point_load(p, r, t, Vec3(0, 0, -1), zero, zero, Mat3::Zero(), false, zero, Mat3::Zero(), nullptr);
     EXPECT_NEAR(-normal.z(), 0.5 * rho * 1.649 * d, 1e-9);  // residual F = -f_drag: drag up, F down
-    const Vec3 tangential = point_load(p, r, t, Vec3(1, 0, 0), zero, zero, zero, nullptr);
+    const Vec3 tangential = point_load(p, r, t, Vec3(1, 0, 0), zero, zero, Mat3::Zero(), false, zero, Mat3::Zero(), nullptr);
     EXPECT_NEAR(tangential.x(), 0.5 * rho * 0.12 * 3.14159265358979 * d, 1e-9);
 }
 

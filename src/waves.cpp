@@ -1,0 +1,163 @@
+// waves.cpp - Airy components, JONSWAP discretization, kinematics.
+#include "waves.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace uc {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// cosh(k (z + h)) / sinh(k h) and sinh(k (z + h)) / sinh(k h) for z <= 0, without overflow in deep water.
+void depth_factors(double k, double z, double h, double& ch, double& sh) {
+    const double e1 = std::exp(k * z), e2 = std::exp(-k * (z + 2.0 * h)), d = 1.0 - std::exp(-2.0 * k * h);
+    ch = (e1 + e2) / d;
+    sh = (e1 - e2) / d;
+}
+
+// JONSWAP spectral shape (unscaled) at omega for peak wp and peakedness gamma.
+double jonswap_shape(double w, double wp, double gamma) {
+    const double sigma = w <= wp ? 0.07 : 0.09;
+    const double r = std::exp(-(w - wp) * (w - wp) / (2.0 * sigma * sigma * wp * wp));
+    return std::pow(w, -5.0) * std::exp(-1.25 * std::pow(wp / w, 4.0)) * std::pow(gamma, r);
+}
+
+}  // namespace
+
+double wave_number(double omega, double depth, double gravity) {
+    double k = omega * omega / gravity;  // deep water
+    if (k * depth < 10.0) k = std::max(k, omega / std::sqrt(gravity * depth));
+    for (int i = 0; i < 100; ++i) {
+        const double th = std::tanh(k * depth);
+        const double f = gravity * k * th - omega * omega;
+        const double df = gravity * (th + k * depth * (1.0 - th * th));
+        const double step = f / df;
+        k -= step;
+        if (std::fabs(step) <= 1e-15 * k) break;
+    }
+    return k;
+}
+
+unsigned long long SplitMix64::next() {
+    unsigned long long z = (state_ += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+}
+
+bool SeaState::build(const UCParams& p, std::string& error) {
+    components_.clear();
+    if (p.wavesMode == 0 || p.wavesHeight == 0.0) return true;
+    depth_ = p.waterDepth;
+    rampTime_ = p.wavesRampTime;
+    wheeler_ = p.wavesStretching != 0;
+    cosb_ = std::cos(p.wavesDirection);
+    sinb_ = std::sin(p.wavesDirection);
+    const double g = p.gravity;
+    const double wp = 2.0 * kPi / p.wavesPeriod;
+    const double kp = wave_number(wp, depth_, g);
+    const double steepness = p.wavesHeight * kp / (2.0 * kPi);
+    if (steepness > 1.0 / 7.0) {
+        char text[300];
+        std::snprintf(text, sizeof text,
+                      "waves.height = %.17g is too steep for waves.period = %.17g s in %.17g m of water: H / lambda = "
+                      "%.3g exceeds the breaking limit 1/7 (lambda = %.4g m)",
+                      p.wavesHeight, p.wavesPeriod, depth_, steepness, 2.0 * kPi / kp);
+        error = text;
+        return false;
+    }
+    if (p.wavesMode == 1) {
+        components_.push_back({0.5 * p.wavesHeight, wp, kp, 0.0});
+        return true;
+    }
+    // JONSWAP: n components at the midpoints of equal bands over [0.5, 3] wp, amplitudes
+    // sqrt(2 S dw) with S scaled so that 4 sqrt(m0) = Hs; phases from the seed.
+    const int n = p.wavesNComponents;
+    const double w0 = 0.5 * wp, w1 = 3.0 * wp, dw = (w1 - w0) / n;
+    std::vector<double> S(n);
+    double m0 = 0.0;
+    for (int i = 0; i < n; ++i) {
+        S[i] = jonswap_shape(w0 + (i + 0.5) * dw, wp, p.wavesGamma);
+        m0 += S[i] * dw;
+    }
+    const double scale = p.wavesHeight * p.wavesHeight / 16.0 / m0;
+    SplitMix64 random(static_cast<unsigned long long>(p.wavesSeed));
+    for (int i = 0; i < n; ++i) {
+        const double w = w0 + (i + 0.5) * dw;
+        components_.push_back({std::sqrt(2.0 * scale * S[i] * dw), w, wave_number(w, depth_, g), 2.0 * kPi * random.uniform()});
+    }
+    return true;
+}
+
+double SeaState::ramp(double t) const {
+    if (!(rampTime_ > 0.0) || t >= rampTime_) return 1.0;
+    if (t <= 0.0) return 0.0;
+    return 0.5 * (1.0 - std::cos(kPi * t / rampTime_));
+}
+
+double SeaState::elevation(double x, double y, double t) const {
+    double eta = 0.0;
+    const double s = x * cosb_ + y * sinb_;
+    for (const WaveComponent& c : components_) eta += c.amplitude * std::cos(c.k * s - c.omega * t + c.phase);
+    return ramp(t) * eta;
+}
+
+void SeaState::kinematics(const Vec3& r, double t, Vec3& u, Vec3& a, Mat3* du, Mat3* da) const {
+    u.setZero();
+    a.setZero();
+    if (du) du->setZero();
+    if (da) da->setZero();
+    if (components_.empty()) return;
+    const double s = r.x() * cosb_ + r.y() * sinb_;
+    double z = std::min(r.z(), 0.0);
+    if (wheeler_) {
+        const double eta = elevation(r.x(), r.y(), t);
+        z = std::min(depth_ * (r.z() - eta) / (depth_ + eta), 0.0);
+    }
+    const double f = ramp(t);
+    double uh = 0.0, w = 0.0, ah = 0.0, aw = 0.0;                  // along the direction of travel, vertical
+    double duh_ds = 0.0, duh_dz = 0.0, dw_ds = 0.0, dw_dz = 0.0;     // gradients in (s, z)
+    double dah_ds = 0.0, dah_dz = 0.0, daw_ds = 0.0, daw_dz = 0.0;
+    const bool belowSurface = r.z() < 0.0 || wheeler_;
+    for (const WaveComponent& c : components_) {
+        double ch, sh;
+        depth_factors(c.k, z, depth_, ch, sh);
+        const double theta = c.k * s - c.omega * t + c.phase;
+        const double co = std::cos(theta), si = std::sin(theta);
+        const double aw1 = c.amplitude * c.omega, aw2 = aw1 * c.omega;
+        uh += aw1 * ch * co;
+        w += aw1 * sh * si;
+        ah += aw2 * ch * si;
+        aw += -aw2 * sh * co;
+        if (du || da) {
+            duh_ds += -aw1 * ch * si * c.k;
+            dw_ds += aw1 * sh * co * c.k;
+            dah_ds += aw2 * ch * co * c.k;
+            daw_ds += aw2 * sh * si * c.k;
+            if (belowSurface) {  // above the surface (no stretching) the kinematics do not change with z
+                duh_dz += aw1 * sh * co * c.k;
+                dw_dz += aw1 * ch * si * c.k;
+                dah_dz += aw2 * sh * si * c.k;
+                daw_dz += -aw2 * ch * co * c.k;
+            }
+        }
+    }
+    u = f * Vec3(uh * cosb_, uh * sinb_, w);
+    a = f * Vec3(ah * cosb_, ah * sinb_, aw);
+    // d/dx = cos(beta) d/ds, d/dy = sin(beta) d/ds (the stretching's own slope is left out).
+    if (du) {
+        *du << duh_ds * cosb_ * cosb_, duh_ds * cosb_ * sinb_, duh_dz * cosb_,
+               duh_ds * sinb_ * cosb_, duh_ds * sinb_ * sinb_, duh_dz * sinb_,
+               dw_ds * cosb_, dw_ds * sinb_, dw_dz;
+        *du *= f;
+    }
+    if (da) {
+        *da << dah_ds * cosb_ * cosb_, dah_ds * cosb_ * sinb_, dah_dz * cosb_,
+               dah_ds * sinb_ * cosb_, dah_ds * sinb_ * sinb_, dah_dz * sinb_,
+               daw_ds * cosb_, daw_ds * sinb_, daw_dz;
+        *da *= f;
+    }
+}
+
+}  // namespace uc

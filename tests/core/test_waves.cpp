@@ -1,0 +1,178 @@
+// Wave kinematics against the closed form of linear (Airy) theory, the portable generator, the
+// JONSWAP discretization, and the Morison load's Jacobian in waves.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cable_api.h"
+#include "hydrodynamics.h"
+#include "waves.h"
+
+using namespace uc;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double g = 9.80665;
+
+UCParams regular(double H, double T, double depth, double direction = 0.0) {
+    UCParams p;
+    uc_params_default(&p);
+    p.wavesMode = 1;
+    p.wavesHeight = H;
+    p.wavesPeriod = T;
+    p.waterDepth = depth;
+    p.gravity = g;
+    p.wavesDirection = direction;
+    return p;
+}
+
+}  // namespace
+
+TEST(Waves, WaveNumberSolvesTheDispersionRelation) {
+    for (double depth : {5.0, 30.0, 100.0, 1000.0}) {
+        for (double T : {4.0, 10.0, 20.0}) {
+            const double w = 2 * kPi / T, k = wave_number(w, depth, g);
+            EXPECT_NEAR(g * k * std::tanh(k * depth), w * w, 1e-13 * w * w) << depth << " " << T;
+        }
+    }
+    EXPECT_NEAR(wave_number(2 * kPi / 8.0, 5000.0, g), std::pow(2 * kPi / 8.0, 2) / g, 1e-15);  // deep water
+}
+
+TEST(Waves, SplitMix64IsThePublishedGenerator) {
+    SplitMix64 r(0);
+    EXPECT_EQ(r.next(), 0xE220A8397B1DCDAFULL);  // the reference sequence of SplitMix64 from seed 0
+    EXPECT_EQ(r.next(), 0x6E789E6AA1B965F4ULL);
+    SplitMix64 u(12345);
+    for (int i = 0; i < 1000; ++i) {
+        const double x = u.uniform();
+        ASSERT_TRUE(x >= 0.0 && x < 1.0);
+    }
+}
+
+TEST(Waves, RegularWaveKinematicsEqualTheClosedForm) {
+    // eta = H/2 cos(k (x cos b + y sin b) - w t), u = a w cosh(k(z+h))/sinh(kh) cos theta along the
+    // direction of travel, w = a w sinh(k(z+h))/sinh(kh) sin theta, a = du/dt.
+    for (double depth : {40.0, 2000.0}) {
+        const double H = 3.0, T = 9.0, b = 0.4;
+        SeaState sea;
+        std::string error;
+        ASSERT_TRUE(sea.build(regular(H, T, depth, b), error)) << error;
+        const double w = 2 * kPi / T, k = wave_number(w, depth, g), a = H / 2;
+        for (const Vec3& r : {Vec3(0, 0, -1), Vec3(13.0, -7.0, -10.0), Vec3(-40.0, 25.0, -30.0)}) {
+            for (double t : {0.0, 2.3, 7.1}) {
+                const double th = k * (r.x() * std::cos(b) + r.y() * std::sin(b)) - w * t;
+                const double ch = std::cosh(k * (r.z() + depth)) / std::sinh(k * depth);
+                const double sh = std::sinh(k * (r.z() + depth)) / std::sinh(k * depth);
+                EXPECT_NEAR(sea.elevation(r.x(), r.y(), t), a * std::cos(th), 1e-12);
+                Vec3 u, acc;
+                sea.kinematics(r, t, u, acc, nullptr, nullptr);
+                const Vec3 uExact(a * w * ch * std::cos(th) * std::cos(b), a * w * ch * std::cos(th) * std::sin(b),
+                                  a * w * sh * std::sin(th));
+                const Vec3 aExact(a * w * w * ch * std::sin(th) * std::cos(b), a * w * w * ch * std::sin(th) * std::sin(b),
+                                  -a * w * w * sh * std::cos(th));
+                EXPECT_LT((u - uExact).norm(), 1e-12) << depth;
+                EXPECT_LT((acc - aExact).norm(), 1e-12) << depth;
+            }
+        }
+    }
+    SeaState crest;
+    std::string error;
+    ASSERT_TRUE(crest.build(regular(2.0, 8.0, 100.0), error));
+    EXPECT_DOUBLE_EQ(crest.elevation(0.0, 0.0, 0.0), 1.0);  // a crest at the origin at t = 0
+}
+
+TEST(Waves, AccelerationAndGradientsAreTheDerivatives) {
+    UCParams p = regular(2.0, 7.0, 60.0, 0.9);
+    p.wavesMode = 2;  // an irregular sea exercises the sums
+    p.wavesNComponents = 40;
+    SeaState sea;
+    std::string error;
+    ASSERT_TRUE(sea.build(p, error)) << error;
+    const Vec3 r(3.0, -2.0, -6.0);
+    const double t = 11.0, h = 1e-5;
+    Vec3 u, a, up, um, ap, am, dummy;
+    Mat3 du, da;
+    sea.kinematics(r, t, u, a, &du, &da);
+    sea.kinematics(r, t + h, up, dummy, nullptr, nullptr);
+    sea.kinematics(r, t - h, um, dummy, nullptr, nullptr);
+    EXPECT_LT(((up - um) / (2 * h) - a).norm(), 1e-7 * (1.0 + a.norm()));
+    for (int c = 0; c < 3; ++c) {
+        Vec3 e = Vec3::Zero();
+        e[c] = h;
+        sea.kinematics(r + e, t, up, ap, nullptr, nullptr);
+        sea.kinematics(r - e, t, um, am, nullptr, nullptr);
+        EXPECT_LT(((up - um) / (2 * h) - du.col(c)).norm(), 1e-7 * (1.0 + du.norm())) << c;
+        EXPECT_LT(((ap - am) / (2 * h) - da.col(c)).norm(), 1e-7 * (1.0 + da.norm())) << c;
+    }
+}
+
+TEST(Waves, JonswapComponentsCarryTheSignificantHeightAndPeakAtTp) {
+    UCParams p = regular(4.0, 10.0, 500.0);
+    p.wavesMode = 2;
+    p.wavesNComponents = 300;
+    SeaState sea;
+    std::string error;
+    ASSERT_TRUE(sea.build(p, error)) << error;
+    double m0 = 0.0, largest = 0.0, peak = 0.0;
+    for (const WaveComponent& c : sea.components()) {
+        m0 += 0.5 * c.amplitude * c.amplitude;
+        if (c.amplitude > largest) largest = c.amplitude, peak = c.omega;
+    }
+    EXPECT_NEAR(4.0 * std::sqrt(m0), 4.0, 1e-12);                        // Hs = 4 sqrt(m0)
+    EXPECT_NEAR(peak, 2 * kPi / 10.0, 2.5 * kPi / 10.0 / 300.0 + 1e-12);  // within a band of wp
+    SeaState same;
+    ASSERT_TRUE(same.build(p, error));
+    EXPECT_EQ(same.elevation(10.0, 5.0, 33.0), sea.elevation(10.0, 5.0, 33.0));  // the seed makes the sea
+    p.wavesSeed = 2;
+    SeaState other;
+    ASSERT_TRUE(other.build(p, error));
+    EXPECT_NE(other.elevation(10.0, 5.0, 33.0), sea.elevation(10.0, 5.0, 33.0));
+}
+
+TEST(Waves, BreakingWavesAreRefusedNamingTheHeight) {
+    UCParams p = regular(12.0, 6.0, 100.0);  // lambda = 56 m: H / lambda = 0.21
+    char msg[400];
+    EXPECT_NE(uc_params_check(&p, msg, sizeof msg), 0);
+    EXPECT_NE(std::string(msg).find("waves.height"), std::string::npos) << msg;
+    p.wavesHeight = 5.0;
+    EXPECT_EQ(uc_params_check(&p, msg, sizeof msg), 0) << msg;
+}
+
+TEST(Waves, MorisonLoadJacobianInWavesMatchesFiniteDifferences) {
+    UCParams prm = regular(3.0, 8.0, 80.0, 0.3);
+    SeaState sea;
+    std::string error;
+    ASSERT_TRUE(sea.build(prm, error));
+    CurrentField field;
+    field.uniform = Vec3(0.4, -0.2, 0.0);
+    field.sea = &sea;
+    field.time = 4.2;
+    FluidProps p{1025.0, g, 3.0, kPi * 0.04 * 0.04 / 4, 0.04, 1.6, 0.02, 1.0, 0.1, true};
+    const Vec3 r(2.0, 1.0, -5.0), rp(0.6, 0.2, -0.8), rd(0.3, 0.1, -0.2), rdd(0.05, -0.02, 0.1);
+    auto load = [&](const Vec3& rr, const Vec3& rrp, const Vec3& rrd, PointLoadJacobian* J) {
+        Vec3 U, A;
+        Mat3 dU, dA;
+        field.flow(rr, U, dU, A, dA);
+        return point_load(p, rr, rrp, rrd, rdd, U, dU, true, A, dA, J);
+    };
+    PointLoadJacobian J;
+    const Vec3 F = load(r, rp, rd, &J);
+    const double h = 1e-6;
+    for (int c = 0; c < 3; ++c) {
+        Vec3 e = Vec3::Zero();
+        e[c] = h;
+        const double scale = 1.0 + F.norm();
+        EXPECT_LT(((load(r + e, rp, rd, nullptr) - load(r - e, rp, rd, nullptr)) / (2 * h) - J.dr.col(c)).norm(), 1e-6 * scale) << c;
+        EXPECT_LT(((load(r, rp + e, rd, nullptr) - load(r, rp - e, rd, nullptr)) / (2 * h) - J.drp.col(c)).norm(), 1e-6 * scale) << c;
+        EXPECT_LT(((load(r, rp, rd + e, nullptr) - load(r, rp, rd - e, nullptr)) / (2 * h) - J.drd.col(c)).norm(), 1e-6 * scale) << c;
+    }
+    // The fluid inertia: a cable at rest in a wave feels rho A (1 + Can) times the normal fluid acceleration.
+    Vec3 U, A;
+    Mat3 dU, dA;
+    field.flow(r, U, dU, A, dA);
+    const Vec3 t = rp.normalized();
+    const Vec3 withWaves = point_load(p, r, rp, rd, rdd, U, dU, true, A, dA, nullptr);
+    const Vec3 without = point_load(p, r, rp, rd, rdd, U, dU, false, A, dA, nullptr);
+    EXPECT_LT((withWaves - without + 1025.0 * p.area * 2.0 * (A - t.dot(A) * t)).norm(), 1e-12 * (1.0 + withWaves.norm()));
+}

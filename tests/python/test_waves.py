@@ -1,0 +1,57 @@
+"""Waves through the FMU: waveElevation is the closed-form elevation at the tow point, a hanging
+cable's tension answers at the wave period, bad wave parameters are refused naming the variable
+(waves.mode 0 is today's model bit for bit: tests/python/test_golden.py)."""
+
+import math
+
+import numpy as np
+import pytest
+
+from ucable.fmu import FMICallException
+
+G = 9.80665
+
+
+def hanging(make_cable, waves, t_end=120.0, step=0.25, x=0.0):
+    c = make_cable(parameters={"gravity": G, **waves})
+    c.initialize(0.0, inputs={"tow.x": x})
+    rows = [c.get_reals(["waveElevation", "towTension"])]
+    for k in range(int(round(t_end / step))):
+        c.set({"tow.x": x})
+        c.do_step(step, k * step)
+        rows.append(c.get_reals(["waveElevation", "towTension"]))
+    return np.arange(len(rows)) * step, np.array(rows)
+
+
+def test_wave_elevation_at_the_tow_point_is_the_closed_form(make_cable):
+    H, T, x = 2.0, 8.0, 17.0
+    t, rows = hanging(make_cable, {"waves.mode": 1, "waves.height": H, "waves.period": T}, t_end=20.0, x=x)
+    w = 2 * math.pi / T
+    k = w * w / G  # deep water (1000 m)
+    assert np.allclose(rows[:, 0], 0.5 * H * np.cos(k * x - w * t), atol=1e-9)
+
+
+def test_a_hanging_cable_answers_at_the_wave_period(make_cable):
+    T = 8.0
+    t, calm = hanging(make_cable, {})
+    _, wavy = hanging(make_cable, {"waves.mode": 1, "waves.height": 2.0, "waves.period": T, "waves.rampTime": 16.0})
+    assert np.ptp(calm[:, 1]) < 1e-3 * calm[0, 1]  # calm water: the hanging cable stays at rest
+    late = t >= 40.0
+    tension = wavy[late, 1] - wavy[late, 1].mean()
+    assert np.ptp(tension) > 0.01 * calm[0, 1]  # the waves pull on the cable near the surface
+    spectrum = np.abs(np.fft.rfft(tension))
+    freq = np.fft.rfftfreq(len(tension), t[1] - t[0])
+    assert freq[np.argmax(spectrum)] == pytest.approx(1.0 / T, abs=1.0 / (t[late][-1] - t[late][0]))
+
+
+@pytest.mark.parametrize("params, named", [
+    ({"waves.mode": 1, "waves.height": 12.0, "waves.period": 6.0}, "waves.height"),  # breaking: H / lambda 0.21
+    ({"waves.mode": 1, "waves.height": 2.0, "waves.period": 0.0}, "waves.period"),
+    ({"waves.mode": 1, "waves.height": float("nan")}, "waves.height"),
+    ({"waves.mode": 3}, "waves.mode"),
+])
+def test_bad_wave_parameters_are_refused_naming_the_variable(make_cable, params, named):
+    c = make_cable(parameters={})
+    with pytest.raises(FMICallException):
+        c.initialize(0.0, parameters=params)
+    assert named in c.log_text()
