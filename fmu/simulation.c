@@ -117,6 +117,7 @@ fmi2Status uc_sim_do_step(UCInstance* inst, double tc, double h) {
     inst->inputs.towAccelerationGiven = 0;
     memset(inst->inputs.endAcceleration, 0, sizeof inst->inputs.endAcceleration);
     inst->inputs.endAccelerationGiven = 0;
+    memset(inst->inputs.currentRate, 0, sizeof inst->inputs.currentRate);
     log_solver_statistics(inst, "fmi2DoStep");
     return fmi2OK;
 }

@@ -172,6 +172,11 @@ static fmi2Status set_one_derivative(UCInstance* inst, const UCVariable* v, int 
         inst->inputs.towAccelerationGiven = 1;
         return fmi2OK;
     }
+    if (order == 1 && v->offset >= offsetof(UCInputs, current) &&
+        v->offset < offsetof(UCInputs, current) + sizeof inst->inputs.current) {
+        inst->inputs.currentRate[(v->offset - offsetof(UCInputs, current)) / sizeof(double)] = value;
+        return fmi2OK;
+    }
     if ((endVelocity >= 0 && order == 1) || (endPosition >= 0 && order == 2)) {
         inst->inputs.endAcceleration[endVelocity >= 0 ? endVelocity : endPosition] = value;
         inst->inputs.endAccelerationGiven = 1;

@@ -25,6 +25,7 @@ fmi2Status uc_set_strings(UCInstance* inst, const fmi2ValueReference vr[], size_
                           const char* function);
 
 /* Order 1 of tow.vx/vy/vz or order 2 of tow.x/y/z: the tow acceleration of the next step.
+ * Order 1 of current.x/y: the current changes linearly over the next step.
  * Order 1 of any other input (including tow.x/y/z, whose velocity is the input tow.v*) is accepted and
  * ignored: inputs are held constant over a step. Other orders and non-inputs: fmi2Error. */
 fmi2Status uc_set_input_derivatives(UCInstance* inst, const fmi2ValueReference vr[], size_t nvr,

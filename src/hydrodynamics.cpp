@@ -19,6 +19,7 @@ double submerged_fraction_slope(double z, double diameter) {
 
 Vec3 CurrentField::at(double z, Vec3* slope) const {
     Vec3 u = uniform;
+    if (!rate.isZero(0.0)) u += rate * (time - rateStart);  // a current changing over the step
     if (slope) slope->setZero();
     if (profile == nullptr || profile->rows == 0) return u;
     const CurrentProfile& p = *profile;

@@ -39,6 +39,8 @@ struct CurrentField {
     Vec3 uniform = Vec3::Zero();
     const CurrentProfile* profile = nullptr;
     double profileScale = 1.0;  // load continuation of the static solver
+    Vec3 rate = Vec3::Zero();  // d(uniform)/dt over the step from rateStart (input derivatives of current.*)
+    double rateStart = 0.0;
     const SeaState* sea = nullptr;  // waves (calm when null or without components)
     double time = 0.0;              // of the wave kinematics
     // Velocity of the current at height z; slope = dU/dz when non-null.

@@ -311,6 +311,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         return false;
     }
     set_environment(in);
+    loads_.current.rate.setZero();  // a current that changes within a step comes with the steps
     loads_.current.time = t0;
     tow_.reset(vec(in.tow), vec(in.towVelocity), vec(in.towAcceleration), in.towAccelerationGiven != 0);
     loads_.tow = TowTrajectory::at_rest_in_time(tow_.position, tow_.velocity, tow_.acceleration, t0);
@@ -423,6 +424,12 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         return false;
     }
     set_environment(in);
+    loads_.current.rate = Vec3(in.currentRate[0], in.currentRate[1], 0.0);
+    loads_.current.rateStart = time_;
+    if (!loads_.current.rate.allFinite()) {
+        error = "the input derivatives of current.x/y must be finite numbers";
+        return false;
+    }
     // Each driven end follows a quintic in time from where the previous step left it (position,
     // velocity and acceleration: it never jumps) to the master's inputs extrapolated to t + h.
     const Vec3 towVelocityInput = vec(in.towVelocity), endVelocityInput = vec(in.endVelocity);

@@ -91,6 +91,7 @@ typedef struct UCInputs {
     int towAccelerationGiven; /* (not an FMU variable) 1 when towAcceleration came from the master for this step; 0: the core estimates it from the last two tow velocity inputs */
     double endAcceleration[3]; /* (not an FMU variable) [m/s2] der(end.v*) from fmi2SetRealInputDerivatives */
     int endAccelerationGiven; /* (not an FMU variable) as towAccelerationGiven, for the far end */
+    double currentRate[2]; /* (not an FMU variable) [m/s2] der(current.x/y) from fmi2SetRealInputDerivatives: the uniform current changes linearly over the step; 0 if not given */
 } UCInputs;
 
 typedef struct UCOutputs {
