@@ -176,3 +176,37 @@ TEST(Waves, MorisonLoadJacobianInWavesMatchesFiniteDifferences) {
     const Vec3 without = point_load(p, r, rp, rd, rdd, U, dU, false, A, dA, nullptr);
     EXPECT_LT((withWaves - without + 1025.0 * p.area * 2.0 * (A - t.dot(A) * t)).norm(), 1e-12 * (1.0 + withWaves.norm()));
 }
+
+// A 3-hour record of the JONSWAP sea at a point, sampled every 0.5 s: its significant height
+// 4 std(eta) and the peak of its periodogram (smoothed over 0.01 rad/s bands) are the targets within
+// 3 %, the statistical spread of a 3-hour record.
+TEST(Waves, ThreeHourRecordHasTheTargetHsAndTp) {
+    UCParams p = regular(3.0, 10.0, 1000.0);
+    p.wavesMode = 2;
+    SeaState sea;
+    std::string error;
+    ASSERT_TRUE(sea.build(p, error)) << error;
+    const double dt = 0.5;
+    const int n = static_cast<int>(3 * 3600 / dt);
+    std::vector<double> eta(n);
+    double mean = 0.0;
+    for (int i = 0; i < n; ++i) mean += (eta[i] = sea.elevation(0.0, 0.0, i * dt)) / n;
+    double var = 0.0;
+    for (double e : eta) var += (e - mean) * (e - mean) / n;
+    EXPECT_NEAR(4.0 * std::sqrt(var), 3.0, 0.03 * 3.0);
+    double best = 0.0, bestOmega = 0.0;
+    for (double w0 = 0.3; w0 < 1.5; w0 += 0.01) {  // band-averaged periodogram
+        double band = 0.0;
+        for (int j = 0; j < 5; ++j) {
+            const double w = w0 + 0.002 * j;
+            double re = 0.0, im = 0.0;
+            for (int i = 0; i < n; ++i) {
+                re += eta[i] * std::cos(w * i * dt);
+                im -= eta[i] * std::sin(w * i * dt);
+            }
+            band += re * re + im * im;
+        }
+        if (band > best) best = band, bestOmega = w0 + 0.004;
+    }
+    EXPECT_NEAR(2 * kPi / bestOmega, 10.0, 0.03 * 10.0);
+}
