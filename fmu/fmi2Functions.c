@@ -13,7 +13,7 @@
 #include "uc_guid.h"
 #include "value_access.h"
 
-/* Sets of states in which each function may be called (FMI-CHECKLIST 2.3). */
+/* Sets of states in which each function may be called (FMI 2.0 section 4.2.4). */
 #define ANY_AFTER_INSTANTIATE                                                                                \
     (UC_STATE_INSTANTIATED | UC_STATE_INIT_MODE | UC_STATE_STEP_COMPLETE | UC_STATE_STEP_IN_PROGRESS |      \
      UC_STATE_STEP_FAILED | UC_STATE_STEP_CANCELED | UC_STATE_TERMINATED | UC_STATE_ERROR)

@@ -1,6 +1,6 @@
 /*
  * instance.h - one FMU instance: everything it owns (no globals), its state machine (FMI 2.0 section
- * 4.2.4, FMI-CHECKLIST 2.3) and what a returned status does to it. Every function stops at its first
+ * 4.2.4) and what a returned status does to it. Every function stops at its first
  * error, so the status it returns is the worst of what happened; uc_instance_finish applies it.
  */
 #ifndef UNDERWATERCABLE_FMU_INSTANCE_H

@@ -103,7 +103,7 @@ fmi2Status uc_sim_do_step(UCInstance* inst, double tc, double h) {
                           p[1], p[2], UC_TOW_MISMATCH_TOLERANCE);
         }
     }
-    /* The FMU's own time, not tc: the master's tc carries its round-off (FMI-CHECKLIST 2.3). */
+    /* The FMU's own time, not tc: the master's tc carries its round-off (FMI 2.0 section 4.2.4). */
     if (uc_do_step(inst->cable, inst->time, h, &inst->inputs, inst->msg, sizeof inst->msg) != 0) {
         uc_log_status(&inst->log, fmi2Error, "fmi2DoStep: step from t = %.17g to %.17g failed: %s", inst->time,
                       inst->time + h, inst->msg[0] != '\0' ? inst->msg : "(no reason given)");

@@ -8,7 +8,7 @@
 #include "instance.h"
 
 /* Relative/absolute tolerance on communication points, as in the Reference FMUs (masters accumulate
- * round-off in tc; FMI-CHECKLIST 2.3). */
+ * round-off in tc; FMI 2.0 section 4.2.4). */
 #define UC_TIME_TOLERANCE 1e-5
 
 /* Computes the initialization (uc_params_check, uc_create, uc_initialize at startTime, outputs) unless it

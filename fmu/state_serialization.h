@@ -1,6 +1,6 @@
 /*
  * state_serialization.h - FMU states (fmi2GetFMUstate/SetFMUstate/FreeFMUstate) and their serialized
- * form (FMI 2.0 section 2.1.8, FMI-CHECKLIST 2.6). A state is the adapter state (machine state, times,
+ * form (FMI 2.0 section 2.1.8). A state is the adapter state (machine state, times,
  * parameters, inputs, outputs, flags) plus the core bytes of uc_state_save. Restoring into an instance
  * that was never initialized creates the core from the saved parameters first (those the core was created
  * with: a line file is not read again).

@@ -19,7 +19,7 @@ AxialProps CableModel::scaled_axial(const Loads& loads) const {
 
 namespace {
 
-// Membrane locking (DESIGN.md section 3): the axial strain of an element is projected onto
+// Membrane locking (docs/model.md): the axial strain of an element is projected onto
 // Legendre modes (mean, linear, quadratic) in the element. The mean mode carries the full EA.
 // At full EA the linear and quadratic modes compete with bending and lock (elastica tip error
 // 1e-3 L at 10 elements); without any stiffness they leave the element's axial modes free

@@ -1,5 +1,5 @@
 // cable_model.h - the immutable cable model (element tables, DOF map, properties) and the
-// assembly of the residual and banded Jacobian over the free DOFs (DESIGN.md section 3).
+// assembly of the residual and banded Jacobian over the free DOFs (docs/model.md).
 //
 // Global nodal coordinates X: node i holds [r_i, r'_i] at X[6i .. 6i+5], i = 0..N (node 0 = tow
 // point). Free DOFs q are what the integrator and the static solver see; every global DOF is

@@ -1,5 +1,5 @@
 // hermite_element.h - cubic Hermite cable element: shape functions, quadrature, and the
-// internal forces (axial, bending) with their exact Jacobians (DESIGN.md section 3).
+// internal forces (axial, bending) with their exact Jacobians (docs/model.md).
 //
 // Element DOF order (12): [r_i, r'_i, r_j, r'_j], each a 3-vector; block a = 0..3.
 // r(xi) = H1 r_i + l H2 r'_i + H3 r_j + l H4 r'_j,  xi = (s - s_i)/l in [0, 1].
@@ -47,7 +47,7 @@ struct ElementTables {
     double length = 0.0;
     // Axial strain: sampled at 5 Gauss points and projected (L2, per element) onto the first
     // `axialModes` Legendre polynomials; the tension is the projected field. Projecting onto
-    // fewer modes than the strain has removes membrane locking (DESIGN.md section 3).
+    // fewer modes than the strain has removes membrane locking (docs/model.md).
     static constexpr int nAxial = 5;
     QuadPoint axial[nAxial];
     int axialModes = 3;
@@ -112,7 +112,7 @@ void add_bending_force(const ElementTables& e, double EI, const double* X, doubl
 void add_bending_jacobian(const ElementTables& e, double EI, Mat12& K);
 double bending_energy(const ElementTables& e, double EI, const double* X);
 
-// Torque H (constant along the cable, Garrett's rod; DESIGN.md section 3, the paper's eq. 9):
+// Torque H (constant along the cable, Garrett's rod; the paper's eq. 9):
 // the strong-form term -(H r' x r'')' gives, after integration by parts, the residual
 // R_a -= H int (r' x r'') dN_a ds. Its Jacobian is not symmetric (a constant torque is not
 // conservative under general end conditions).

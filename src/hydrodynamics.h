@@ -1,5 +1,5 @@
 // hydrodynamics.h - distributed external loads per unit unstretched length: submerged weight,
-// Morison drag on the relative velocity, added mass (DESIGN.md section 3).
+// Morison drag on the relative velocity, added mass (docs/model.md).
 //
 // Residual sign: the load enters R = M r'' + f_int - f_ext as
 //   F = m_a r'' - f_weight - f_drag,   m_a = phi rho A (Can (I - t t^T) + Cat t t^T),

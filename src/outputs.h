@@ -1,5 +1,5 @@
 // outputs.h - end forces (reactions from the eliminated equations), shape and tension at the
-// UC_NUM_STATIONS stations, extreme values. DESIGN.md section 4.
+// UC_NUM_STATIONS stations, extreme values.
 #pragma once
 
 #include <vector>

@@ -1,4 +1,4 @@
-// params.cpp - defaults (DESIGN.md section 4) and the single place where parameters are validated.
+// params.cpp - defaults (the start values of schema/variables.toml) and the single place where parameters are validated.
 #include "params.h"
 #include "waves.h"
 

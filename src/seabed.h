@@ -1,5 +1,5 @@
 // seabed.h - flat seabed at z = -waterDepth: penalty contact per unit length with damping and
-// regularized Coulomb friction (DESIGN.md section 3, issue 4). Residual sign: F = -f_seabed.
+// regularized Coulomb friction (docs/model.md). Residual sign: F = -f_seabed.
 //
 // Penetration p = -waterDepth - z. The normal force per length is k g(p) with g a C1 blend of
 // the ramp max(p, 0) over |p| < delta (delta = 5 % of the diameter), so that Newton and BDF

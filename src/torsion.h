@@ -1,4 +1,4 @@
-// torsion.h - torque of the cable for the three torque modes (issue 5, DESIGN.md section 3).
+// torsion.h - torque of the cable for the three torque modes (docs/model.md).
 //
 // The torque H is constant along the cable (no distributed torque; the paper's eq. 10).
 // Mode 0: swivel, H = 0. Mode 1: H is the `torque` input. Mode 2: the far end's material frame

@@ -1,7 +1,7 @@
 """Tow manoeuvres: a speed profile drives the tow point of a CableFMU.
 
 The tow position is the exact integral of the speed profile, and the tow velocity input is the
-profile itself, so position and velocity inputs are always consistent (DESIGN.md section 3: the
+profile itself, so position and velocity inputs are always consistent (docs/model.md: the
 driven end must never jump). At each communication point t_k = k h the master sets the sampled
 tow state (x(t_k), v(t_k)) and, if asked and supported, the acceleration as an input derivative.
 """

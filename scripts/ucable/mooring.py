@@ -1,4 +1,4 @@
-"""Mooring-line validation through the FMU (issue 4): the chain of the mooring scene on a seabed
+"""Mooring-line validation through the FMU: the chain of the mooring scene on a seabed
 against the elastic catenary with touchdown (ucable.exact.TouchdownCatenary) and MoorPy, the
 surging fairlead against the quasi-static mean, a hanging cable in a sheared current against an
 independent steady ODE, and the external far end (bottomEnd 3) against the anchored one.
@@ -18,7 +18,7 @@ from scipy.optimize import brentq
 from .exact import TouchdownCatenary
 from .fmu import NUM_STATIONS, CableFMU
 
-# The chain of issue 4: 900 m, EA 7.5e8 N, 113 kg/m, d 0.0766 m in 320 m of water, fairlead 70 m
+# The mooring chain: 900 m, EA 7.5e8 N, 113 kg/m, d 0.0766 m in 320 m of water, fairlead 70 m
 # deep, anchor 850 m away. Drag coefficients as in tests/core/test_mooring.cpp (chain-like).
 DEPTH = 320.0
 FAIRLEAD_Z = -70.0

@@ -5,14 +5,14 @@ This module does not use the FMU: it is the reference the FMU tests compare agai
 Problem (2-D, in the vertical x-z plane of the tow): the tow point moves at speed V along +x at
 the surface, the water is still, and the cable has reached a steady shape that translates with
 the tow point. In the tow frame the water flows at -V x; the relative velocity of the water past
-the cable is u = -V x (DESIGN.md section 3: u = U_current - dr/dt).
+the cable is u = -V x (docs/model.md: u = U_current - dr/dt).
 
-Geometry and signs (as in DESIGN.md: Earth frame z up, s = 0 at the tow point):
+Geometry and signs (as in docs/model.md: Earth frame z up, s = 0 at the tow point):
   t = (-cos(phi), -sin(phi))   unit tangent pointing DOWN the cable (from the tow point to the end),
                                phi = angle of the cable below the horizontal, measured at each point
   n = (-sin(phi),  cos(phi))   unit normal, t rotated by +90 degrees
 
-Loads per unit length (Morison drag with the MoorDyn/OrcaFlex convention, DESIGN.md section 3):
+Loads per unit length (Morison drag with the MoorDyn/OrcaFlex convention):
   normal drag      Dn = 1/2 rho Cdn d    (V sin phi)^2   along +n  (backwards and up)
   tangential drag  Dt = 1/2 rho Cdt pi d (V cos phi)^2   along +t  (down the cable)
   submerged weight w  = (m - rho A) g, A = pi d^2 / 4   along -z
@@ -32,7 +32,7 @@ choice changes tensions by less than 0.01 %, far inside the 0.5 % the FMU tests 
 Integrating upwards is the stable direction: phi relaxes towards the critical angle phi_c where the
 normal drag balances the normal component of the weight (Dn(phi_c) = w cos(phi_c)). At a free
 lower end without load T = 0, and the only bounded solution is the straight line phi = phi_c with T
-growing linearly (DESIGN.md section 5). With an end load F = (Fx, Fz) (force ON the cable at its
+growing linearly (docs/model.md). With an end load F = (Fx, Fz) (force ON the cable at its
 end, e.g. the drag and net weight of a towed body) the end condition is T t = F there.
 """
 
@@ -49,7 +49,7 @@ KNOT = 1852.0 / 3600.0  # m/s
 
 @dataclass(frozen=True)
 class CableProperties:
-    """Cable and water properties (SI). Defaults: the Hopland 1993 tow cable (DESIGN.md section 4)."""
+    """Cable and water properties (SI). Defaults: the Hopland 1993 tow cable (the FMU's defaults)."""
 
     length: float = 300.0
     diameter: float = 0.0332

@@ -1,4 +1,4 @@
-"""Torsion scenes through the FMU (issue 5): Greenhill's buckling torque and hockling.
+"""Torsion scenes through the FMU: Greenhill's buckling torque and hockling.
 
 Greenhill: a weightless hinged-hinged rod along x (L = 10 m, EI = 100 N.m2, EA = 1e6 N, m = 1 kg/m,
 Cdn = 1, 20 elements), tow point fixed at (0, 0, -50), far end anchored at (L (1 + T/EA), 0, -50) so

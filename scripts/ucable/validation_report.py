@@ -218,13 +218,13 @@ def main(argv=None) -> int:
            "The station tensions of N <= 10 are worse than the end reactions (stations between "
            "nodes read the projected strain).", "",
            "![catenary convergence](validation/catenary_convergence.png)", ""]
-    # Touchdown: the issue-4 chain on a frictionless seabed against the closed form (scripts/ucable/mooring.py).
+    # Touchdown: the mooring chain on a frictionless seabed against the closed form (scripts/ucable/mooring.py).
     from . import mooring
     md += ["### Elastic catenary with seabed touchdown", "",
-           "The chain of issue 4 (900 m, EA 7.5e8 N, 113 kg/m, d 0.0766 m, fairlead 250 m above a frictionless "
+           "The mooring chain (900 m, EA 7.5e8 N, 113 kg/m, d 0.0766 m, fairlead 250 m above a frictionless "
            "seabed, anchor 850 m away horizontally, seabed stiffness 1e6 N/m2) against the closed form "
            "(grounded part plus suspended elastic catenary; MoorPy agrees with it to 1e-14, "
-           "[mooring.md](mooring.md)). Bounds of issue 4: tension 0.1 %, grounded length 0.5 % of L.", "",
+           "[mooring.md](mooring.md)). Bounds: tension 0.1 %, grounded length 0.5 % of L.", "",
            "| N | fairlead tension error | horizontal tension error | grounded length error / L | "
            "shape error [m] |", "|---|---|---|---|---|"]
     for n in (10, 20, 40) if not quick else (20, 40):

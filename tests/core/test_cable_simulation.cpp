@@ -30,7 +30,7 @@ UCParams hopland() {
     return p;
 }
 
-// Free-end towed cable in still water (DESIGN.md section 5): a straight line at the angle theta
+// Free-end towed cable in still water (docs/model.md): a straight line at the angle theta
 // below the horizontal where normal drag balances the normal weight component,
 // cn V^2 sin^2(theta) = w cos(theta); the tension grows linearly, T(0) = L (w sin + ct V^2 cos^2).
 struct SteadyTow {

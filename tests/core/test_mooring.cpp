@@ -54,7 +54,7 @@ Catenary touchdown_catenary(double L, double w, double EA, double X, double h) {
     return {H, Ls, std::hypot(H, w * Ls)};
 }
 
-// The mooring scene of issue 4: a chain-like line, fairlead 70 m deep in 320 m of water.
+// The mooring scene: a chain-like line, fairlead 70 m deep in 320 m of water.
 UCParams chain(int nElements) {
     UCParams p;
     uc_params_default(&p);
@@ -113,7 +113,7 @@ TouchdownResult touchdown_errors(int nElements) {
 }  // namespace
 
 TEST(Catenary, TouchdownMatchesTheElasticCatenary) {
-    // Issue 4 bounds: fairlead tension within 0.1 %, grounded length within 0.5 % of the line.
+    // The bounds: fairlead tension within 0.1 %, grounded length within 0.5 % of the line.
     // Measured: tension 5e-6 (20 elements) and 3e-5 (40); grounded length -1.1 % L with 20
     // elements of 45 m and -0.22 % L with 40 (second order: the catenary's curvature jumps to
     // zero at touchdown, inside an element), so 40 elements is the mesh for the length bound.

@@ -1,4 +1,4 @@
-// Issue 7: the residual and the Jacobian never allocate. This test binary counts every C++
+// The residual and the Jacobian never allocate. This test binary counts every C++
 // allocation (global operator new replaced below) while the integrator's two callbacks run, and
 // while whole communication steps run (IDA itself allocates nothing per step; SUNDIALS is C and
 // does not go through operator new, so only our code is counted).

@@ -1,4 +1,4 @@
-// Torsion (issue 5): the torque term against finite differences and Greenhill's buckling torque.
+// Torsion: the torque term against finite differences and Greenhill's buckling torque.
 #include <gtest/gtest.h>
 
 #include <cmath>

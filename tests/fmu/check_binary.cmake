@@ -1,6 +1,6 @@
 # cmake -DSO=<path to UnderwaterCable.so> -P check_binary.cmake
 # Fails unless readelf -d lists only platform C libraries as NEEDED and nm -D shows only fmi2* definitions
-# (FMI-CHECKLIST 2.7).
+# (FMI 2.0 section 2.3, the FMU archive).
 if(NOT EXISTS "${SO}")
   message(FATAL_ERROR "no shared object at '${SO}'")
 endif()

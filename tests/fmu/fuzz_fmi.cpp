@@ -1,4 +1,4 @@
-// fuzz_fmi.cpp - seeded random-sequence driver of the FMI API (issue 8 part 3).
+// fuzz_fmi.cpp - seeded random-sequence driver of the FMI API.
 //
 // Loads UnderwaterCable.so like the adapter tests (dlopen RTLD_NOW) and calls the fmi2 functions in
 // random order on up to three instances with random and hostile arguments: NaN, +-inf, huge, negative

@@ -1,6 +1,6 @@
 // Calls outside the states the FMI 2.0 state machine allows them in (section 4.2.4) return fmi2Error and
 // log "illegal call sequence"; rejected arguments name the variable. After an error the instance only
-// accepts reset, free, state restore and debug calls (FMI-CHECKLIST 2.3, 2.4).
+// accepts reset, free, state restore and debug calls (FMI 2.0 section 4.2.4).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
-// FMI 2.0 conformance of the adapter beyond the single cases of test_call_sequence.cpp (issue 8 part 2):
-// - every (function, machine state) pair of the FMI-CHECKLIST 2.3 table: illegal ones return fmi2Error
+// FMI 2.0 conformance of the adapter beyond the single cases of test_call_sequence.cpp:
+// - every (function, machine state) pair of the FMI 2.0 state table (section 4.2.4): illegal ones return fmi2Error
 //   and log "<function>: illegal call sequence", legal ones do not log it;
 // - NULL pointers, non-finite values for every Real input and parameter, unknown value references for
 //   every type, every parameter set after initialization, bad communication points and step sizes;
@@ -52,7 +52,7 @@ void enter(Instance& inst, Machine m) {
 
 struct Call {
     const char* function;
-    std::vector<Machine> legal;  // FMI-CHECKLIST 2.3 (FMI 2.0 section 4.2.4); stepInProgress/-Failed/
+    std::vector<Machine> legal;  // FMI 2.0 section 4.2.4; stepInProgress/-Failed/
                                  // -Canceled cannot be reached: fmi2DoStep is synchronous.
     std::function<fmi2Status(Instance&)> call;
     // Legal states in which the call is still an fmi2Error because of its argument (a fixed parameter
@@ -208,7 +208,7 @@ TEST(Conformance, NullInstanceIsAnErrorForEveryFunction) {
     EXPECT_EQ(fmi().SetFMUstate(nullptr, s), fmi2Error);
     EXPECT_EQ(fmi().SerializedFMUstateSize(nullptr, s, &size), fmi2Error);
     EXPECT_EQ(fmi().GetRealStatus(nullptr, fmi2LastSuccessfulTime, &r), fmi2Error);
-    fmi().FreeInstance(nullptr);  // a no-op (FMI-CHECKLIST 2.3)
+    fmi().FreeInstance(nullptr);  // a no-op (FMI 2.0 section 4.2.4)
 }
 
 TEST(Conformance, InstantiateRejectsBadArgumentsWithNull) {

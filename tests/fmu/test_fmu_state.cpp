@@ -1,4 +1,4 @@
-// FMU state get/set/serialize/deserialize continues bit for bit (FMI-CHECKLIST 2.6), also in a fresh
+// FMU state get/set/serialize/deserialize continues bit for bit (FMI 2.0 section 2.1.8), also in a fresh
 // instance that was never initialized (fmusim --initial-fmu-state-file, fmpy simulate_fmu(fmu_state=...)),
 // and corrupted or foreign serialized states are rejected.
 #include <gtest/gtest.h>

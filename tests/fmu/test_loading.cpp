@@ -1,5 +1,5 @@
 // The shared object loads like an importer loads it, exports every fmi2 function, and fmi2Instantiate
-// rejects arguments that are not for this FMU (FMI-CHECKLIST 2.4).
+// rejects arguments that are not for this FMU (FMI 2.0 section 2.1.5).
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // A master's ordinary run: instantiate, set up, initialize, step, read, terminate, free; reset-and-rerun
-// and several instances in one process (FMI-CHECKLIST 2.3, 2.5).
+// and several instances in one process (FMI 2.0 sections 4.2.4 and 2.1.2).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 """Inadmissible parameters give fmi2Error with a logged message naming the variable
-(DESIGN.md section 4), and another live instance of the same FMU is not disturbed."""
+(schema/variables.toml holds each range and its reason), and another live instance of the same FMU is not disturbed."""
 
 import math
 

@@ -1,4 +1,4 @@
-"""Sanity of the work-precision benchmark (scripts/bench_work_precision --quick, issue 7).
+"""Sanity of the work-precision benchmark (scripts/bench_work_precision --quick).
 
 One small grid point per code on the Hopland tow manoeuvre (660 s; the chain mooring on the
 seabed behind the slow marker): our FMU with 10 elements
@@ -52,7 +52,7 @@ def test_quick_benchmark_hopland(fmu_file):
 
 @pytest.mark.slow
 def test_quick_benchmark_mooring_seabed(fmu_file):
-    """Chain mooring on the seabed (issue 7), quick size: our 10 elements and MoorDyn 10 segments
+    """Chain mooring on the seabed, quick size: our 10 elements and MoorDyn 10 segments
     against our 20-element reference, both with the matched seabed (seabedStiffness = kBot d)."""
     from ucable import work_precision as wp
 

@@ -1,4 +1,4 @@
-"""The communication step must not change the answer (DESIGN.md section 3: the driven end must
+"""The communication step must not change the answer (docs/model.md: the driven end must
 never jump). The accelerating Hopland tow is sampled by a master at 0.5 s, 0.1 s and 0.01 s over
 its first 80 s (the 60 s ramp and 20 s after it); towTension at the common points t = 0, 0.5, ...
 must agree within 0.5 % of the tension range of the run.
@@ -8,7 +8,7 @@ Why 0.5 % of the range: with an end trajectory that is continuous in position an
 smoothly over the step, i.e. tow-point accelerations of a few 0.01 m/s^2 on a cable of ~800 kg,
 a few newtons of tension. A position jump of the same 1.4 mm on a 15 m element would instead
 give EA delta / l ~ 6 kN, more than the whole tension, and an excess tension of
-EA a dt^2 / (4 l) at every step (DESIGN.md section 3), i.e. many times the range.
+EA a dt^2 / (4 l) at every step (docs/model.md), i.e. many times the range.
 
 Two masters are tried: one that also passes the tow acceleration as an input derivative
 (fmi2SetRealInputDerivatives, the FMU declares canInterpolateInputs), and a plain one that only

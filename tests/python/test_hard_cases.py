@@ -1,4 +1,4 @@
-"""Hard cases of issue 8, light versions for CI (the full table: scripts/hard_cases, docs/robustness.md).
+"""Hard cases, light versions for CI (the full table: scripts/hard_cases, docs/robustness.md).
 
 Each case runs with default solver settings and must complete with finite outputs; the assertions
 check that the hard phenomenon actually happened (slack, compression, shock) and, where a simple

@@ -1,4 +1,4 @@
-"""Independent importers from PyPI load and run the FMU (issue 8 part 2; fmpy validate is in
+"""Independent importers from PyPI load and run the FMU (fmpy validate is in
 test_validate.py): fmu-manipulation-toolbox's conformity and semantic checks (`fmutool -check`) and a
 libcosim (DNV/OSP) co-simulation through libcosimpy."""
 

@@ -1,4 +1,4 @@
-"""Issue 4 through the FMU: the chain on the seabed against the elastic catenary with touchdown
+"""Mooring lines through the FMU: the chain on the seabed against the elastic catenary with touchdown
 (ucable.exact.TouchdownCatenary) and MoorPy, the surging fairlead, impossible geometry, the current
 profile against an independent steady ODE, and the external far end (bottomEnd 3)."""
 
@@ -24,7 +24,7 @@ def test_closed_form_is_consistent():
 
 @pytest.mark.parametrize("n, grounded_bound", [(20, None), (40, 5e-3)])
 def test_touchdown_catenary(fmu_file, n, grounded_bound):
-    # Issue 4 bounds: fairlead tension within 0.1 %, grounded length within 0.5 % of the line
+    # The bounds: fairlead tension within 0.1 %, grounded length within 0.5 % of the line
     # "with a reasonable mesh": 40 elements of 22.5 m. Measured: tension 5e-6 (20) / 3e-5 (40),
     # grounded length -1.06 % L (20) / -0.22 % L (40): the curvature jumps to zero at touchdown
     # inside an element, so the touchdown point converges at second order, not h^4.
@@ -58,7 +58,7 @@ def test_moorpy_second_opinion(fmu_file):
     assert abs(ref["fairlead_tension"] / exact.fairlead_tension - 1) < 1e-6
     assert abs(ref["grounded"] - exact.grounded) < 1e-4 * m.CHAIN["length"]
     r = m.catenary_comparison(fmu_file, 40)
-    # the same bounds as against the closed form (issue 4): 0.1 % tension, 0.5 % L grounded
+    # the same bounds as against the closed form: 0.1 % tension, 0.5 % L grounded
     assert abs(r["tension"] / ref["fairlead_tension"] - 1) < 1e-3
     # MoorPy's grounded length ends at the tangent point; the FMU's where the line rises half a
     # diameter above the seabed, which the catenary reaches a few metres further up
@@ -97,16 +97,16 @@ def test_surge_follows_the_fairlead_short(fmu_file):
 @pytest.mark.xfail(strict=True, reason=(
     "measured (20 elements, Cdn 2.4, Cdt 0.2, seabedStiffness 1e6, 0.1 s steps): dynamic mean fairlead tension over "
     "100-300 s 1.6161 MN, quasi-static cycle mean 1.5816 MN (closed form at 40 phases; FMU statics "
-    "1.5816 MN), +2.2 % > the 0.5 % of issue 4: the nearly taut chain nearly lifts off its anchor at "
+    "1.5816 MN), +2.2 % > the 0.5 % bound: the nearly taut chain nearly lifts off its anchor at "
     "+5 m (grounded 1.6 m), the fairlead tension falls to 8 kN (snap), and drag plus the convex tension-offset curve raise the dynamic mean. "
     "Physics, not numerics (docs/mooring_dynamic_mean.md): MoorDyn gives +2.7..+3.15 % at 20..320 segments, our "
     "tension-only law +2.99..+3.12 %; slow surges (T >= 50 s) are within 0.11 % in both codes; the criterion "
-    "needs restating (issue 4)"))
+    "needs restating"))
 def test_surge_mean_tension_is_quasi_static(fmu_file):
     r = m.surge_run(fmu_file, 300.0)
     dyn = r["tension"][r["t"] >= 100.0].mean()
     qs = m.quasi_static_mean(40)
-    assert abs(dyn / qs - 1) < 5e-3  # issue 4 criterion
+    assert abs(dyn / qs - 1) < 5e-3  # the 0.5 % criterion
 
 
 # ------------------------------------------------------------------ 4. impossible input

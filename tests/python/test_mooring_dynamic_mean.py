@@ -1,4 +1,4 @@
-"""Issue 4 surge scene: our dynamic mean fairlead tension against MoorDyn's (ucable.mooring_dynamics,
+"""Mooring surge scene: our dynamic mean fairlead tension against MoorDyn's (ucable.mooring_dynamics,
 docs/mooring_dynamic_mean.md). The issue asks for the dynamic mean within 0.5 % of the quasi-static
 mean; test_mooring.py::test_surge_mean_tension_is_quasi_static records (xfail) that the 10 s surge
 misses it. These tests establish with an independent code (MoorDyn 2.7.2) that the miss is the

@@ -1,4 +1,4 @@
-"""Parameter validation in one place with one message format (issue 8 part 4).
+"""Parameter validation in one place with one message format.
 
 Every parameter of modelDescription.xml is driven through fmi2SetReal/SetInteger/SetBoolean with an
 inadmissible value. Out-of-range finite values must give fmi2Error at fmi2ExitInitializationMode

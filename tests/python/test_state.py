@@ -1,5 +1,5 @@
 """FMU state get/set and serialization through fmpy: restoring a state and continuing reproduces
-the original continuation bit for bit (FMI-CHECKLIST 2.6), also in a fresh, never initialized
+the original continuation bit for bit (FMI 2.0 section 2.1.8), also in a fresh, never initialized
 instance."""
 
 import numpy as np

@@ -2,12 +2,12 @@
 steady solution (scripts/ucable/steady_tow.py, a scipy ODE in arc length).
 
 Tolerance 0.5 %: with a free end the exact steady shape is a straight line with linearly growing
-tension and strain (DESIGN.md section 5), which cubic Hermite elements represent exactly, so the
+tension and strain (docs/model.md), which cubic Hermite elements represent exactly, so the
 FMU differs from the ODE only by its solver tolerances (Newton for initMode 0, the integrator's
 relTol afterwards) and by O(T/EA) < 1e-4 modelling choices (drag per stretched or unstretched
 length). 0.5 % of the tension and 0.5 % of the cable length (1.5 m of end depth) leaves room for
 those and would still catch any wrong load term (e.g. tangential drag on d instead of pi d is -29 %
-at 2.5 kn, see DESIGN.md section 3).
+at 2.5 kn).
 """
 
 import math

@@ -66,7 +66,7 @@ def test_drag_per_stretched_length_changes_tension_by_order_strain(kn):
 
 
 def test_design_doc_hopland_tension_at_2p5_knots_both_drag_conventions():
-    """DESIGN.md section 3: 5181 N with tangential drag on pi d, 3699 N with it on d
+    """docs/model.md: 5181 N with tangential drag on pi d, 3699 N with it on d
     (quoted to 4 digits: compare at 2e-4 relative)."""
     V = 2.5 * KNOT
     on_pi_d = solve_steady_tow(V, CableProperties())

@@ -1,4 +1,4 @@
-"""Torsion through the FMU (issue 5): Greenhill, constant torque / twist rate, end moments,
+"""Torsion through the FMU: Greenhill, constant torque / twist rate, end moments,
 switched-off bit-identity, prescribed rotation, hockling. Scenes in ucable.torsion."""
 
 import math

@@ -1,5 +1,5 @@
 """Elastic catenary (Irvine, ucable.exact.ElasticCatenary) and steady tows (ucable.steady_tow)
-against the FMU's initial equilibrium. The seabed touchdown case waits for the seabed (issue 4).
+against the FMU's initial equilibrium. The seabed touchdown case is in test_mooring.py.
 """
 
 import math

@@ -6,7 +6,7 @@ import pytest
 
 from ucable.validation import VIB_EI, free_vibration, hopland_tension
 
-# Issue 3: within 0.5 % of the analytic first three modes. Measured with 10 elements and a 1 mm
+# Bound: within 0.5 % of the analytic first three modes. Measured with 10 elements and a 1 mm
 # pulse: string within 2e-4, beam-string 1.7e-4 / 4.8e-4 / 1.0e-3 (mode 3 carries the spatial
 # error of 10 cubic elements on a stiff mode). 0.2 % keeps the bound within 10x of the string's
 # error and 2x of the beam-string's third mode. (A 1 cm pulse gave +0.3..0.7 %: the string is

@@ -1,6 +1,6 @@
 """Cantilever elastica of the paper's section 3.2 (Table 1) and the pure end couple, through the FMU.
 
-Exact tips: ../shared/reference/elastica.json (inextensible elastica, exact to 1e-12 L). The model
+Exact tips: tests/data/elastica.json (inextensible elastica, exact to 1e-12 L). The model
 is extensible (EA = E A): its tip may differ from the inextensible one by up to P L / EA
 (1.3e-6 L at P = 80 N), the floor of any comparison. Measured (docs/validation.md, bash
 scripts/validate): N = 10: 5.4e-6, 2.3e-5, 4.6e-5, 7.0e-5 L; N = 40: 0.8e-6 .. 2.6e-6 L.
@@ -19,13 +19,13 @@ LOADS = [20.0, 40.0, 60.0, 80.0]
 
 @pytest.mark.parametrize("P", LOADS)
 def test_tip_matches_exact_elastica_within_1e4_L_with_10_elements(fmu_file, P):
-    # Bound of issue 3 (an order of magnitude better than the paper's 2e-3 L); measured max 7.0e-5 L.
+    # Bound (an order of magnitude better than the paper's 2e-3 L); measured max 7.0e-5 L.
     assert elastica_static(fmu_file, P, 10)["error"] <= 1e-4
 
 
 @pytest.mark.parametrize("P", LOADS)
 def test_tip_matches_exact_elastica_within_1e5_L_with_40_elements(fmu_file, P):
-    # Bound of issue 3; measured 0.8e-6 .. 2.6e-6 L (the extensibility floor P L / EA is <= 1.3e-6 L).
+    # Bound; measured 0.8e-6 .. 2.6e-6 L (the extensibility floor P L / EA is <= 1.3e-6 L).
     assert elastica_static(fmu_file, P, 40)["error"] <= 1e-5
 
 
