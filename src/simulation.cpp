@@ -383,14 +383,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
 }
 
 void CableSimulation::step_completed(double t, const double* y, const double* yp) {
-    loads_.current.time = t;
-    const int n = model_.n_free();
-    for (int j = 0; j < n; ++j) {
-        q_[j] = y[2 * j];
-        v_[j] = y[2 * j + 1];
-        a_[j] = yp[2 * j + 1];
-    }
-    model_.expand(q_.data(), v_.data(), a_.data(), loads_, t, X_.data(), Xd_.data(), Xdd_.data());
+    expand_integrator_state(t, y, yp);
     double R[12];
     model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, R);
     const double tension = std::sqrt(R[0] * R[0] + R[1] * R[1] + R[2] * R[2]);
@@ -509,7 +502,7 @@ bool CableSimulation::set_integrator_tolerances(std::string& error) {
     return integrator_->set_tolerances(atol, p.relTol, p.absTol, error);
 }
 
-int CableSimulation::residual(double t, const double* y, const double* yp, double* r) {
+void CableSimulation::expand_integrator_state(double t, const double* y, const double* yp) {
     loads_.current.time = t;
     const int n = model_.n_free();
     for (int j = 0; j < n; ++j) {
@@ -518,6 +511,11 @@ int CableSimulation::residual(double t, const double* y, const double* yp, doubl
         a_[j] = yp[2 * j + 1];
     }
     model_.expand(q_.data(), v_.data(), a_.data(), loads_, t, X_.data(), Xd_.data(), Xdd_.data());
+}
+
+int CableSimulation::residual(double t, const double* y, const double* yp, double* r) {
+    expand_integrator_state(t, y, yp);
+    const int n = model_.n_free();
     model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), nullptr);
     bool finite = true;
     for (int j = 0; j < n; ++j) {
@@ -529,14 +527,7 @@ int CableSimulation::residual(double t, const double* y, const double* yp, doubl
 }
 
 int CableSimulation::jacobian(double t, const double* y, const double* yp, const EntrySink& sink) {
-    loads_.current.time = t;
-    const int n = model_.n_free();
-    for (int j = 0; j < n; ++j) {
-        q_[j] = y[2 * j];
-        v_[j] = y[2 * j + 1];
-        a_[j] = yp[2 * j + 1];
-    }
-    model_.expand(q_.data(), v_.data(), a_.data(), loads_, t, X_.data(), Xd_.data(), Xdd_.data());
+    expand_integrator_state(t, y, yp);
     model_.jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_, sink);
     return 0;
 }

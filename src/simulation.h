@@ -73,6 +73,8 @@ private:
     int residual(double t, const double* y, const double* yp, double* r) override;
     int jacobian(double t, const double* y, const double* yp, const EntrySink& sink) override;
     void step_completed(double t, const double* y, const double* yp) override;
+    // q_, v_, a_ and the global X_, Xd_, Xdd_ from the integrator's y, y' at time t.
+    void expand_integrator_state(double t, const double* y, const double* yp);
 
     void set_environment(const UCInputs& in);
     void initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
