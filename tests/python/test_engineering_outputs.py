@@ -177,3 +177,23 @@ def test_fatigue_damage_is_exact_across_save_and_restore(make_cable):
 def test_fatigue_is_off_by_default(make_cable):
     _, rows = surge(make_cable, 0.5, t_end=5.0)
     assert np.all(rows[:, 3] == 0.0)
+
+
+def test_tension_extremes_equal_those_of_a_very_fine_master(make_cable):
+    """The other direction: towTensionMax/Min at 1 s steps are not just bounds but the extremes. A
+    master sampling every 0.01 s (with each step's start) finds the same extremes within the
+    integrator's tension tolerance plus what sampling can miss of a smooth peak: |T''| dt^2 / 8,
+    with dt^2 T'' the largest second difference of its own samples."""
+    coarse_cable, coarse = start_moving(make_cable, 1.0)
+    fine_cable = make_cable(parameters=M.chain_params(ELEMENTS))
+    fine_cable.initialize(inputs={"tow.x": 0.0, "tow.vx": 0.5, "tow.z": M.FAIRLEAD_Z})
+    start = fine_cable.get("towTension")
+    _, fine = start_moving(make_cable, 0.01)
+    samples = np.concatenate([[start], fine[:, 0]])
+    windows = np.array([samples[100 * k:100 * k + 101] for k in range(len(coarse))])  # with the start
+    tolerance = 1e-3 * coarse_cable.get("solver.tensionScale")
+    sampling = np.abs(np.diff(samples, 2)).max() / 8.0
+    assert np.all(coarse[:, 1] >= windows.max(axis=1) - tolerance)
+    assert np.all(coarse[:, 1] <= windows.max(axis=1) + tolerance + sampling)
+    assert np.all(coarse[:, 2] <= windows.min(axis=1) + tolerance)
+    assert np.all(coarse[:, 2] >= windows.min(axis=1) - tolerance - sampling)
