@@ -9,12 +9,17 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// cosh(k (z + h)) / sinh(k h) and sinh(k (z + h)) / sinh(k h) for z <= 0, without overflow in deep water.
-void depth_factors(double k, double z, double h, double& ch, double& sh) {
-    const double e1 = std::exp(k * z), e2 = std::exp(-k * (z + 2.0 * h)), d = 1.0 - std::exp(-2.0 * k * h);
-    ch = (e1 + e2) / d;
-    sh = (e1 - e2) / d;
+// cosh(k (z + h)) / sinh(k h) and sinh(k (z + h)) / sinh(k h) for z <= 0, without overflow in deep
+// water: (e^{kz} +- e^{-k(z+2h)}) / (1 - e^{-2kh}), with e^{-2kh} and the divisor precomputed.
+void depth_factors(const WaveComponent& c, double z, double& ch, double& sh) {
+    const double e1 = std::exp(c.k * z);
+    const double e2 = c.bottom > 0.0 ? c.bottom / e1 : 0.0;
+    ch = (e1 + e2) * c.depthScale;
+    sh = (e1 - e2) * c.depthScale;
 }
+
+// The bottom's image term e^{-2kh} below this is lost in the round-off of e^{kz} near the surface.
+constexpr double kNegligibleBottom = 1e-18;
 
 // JONSWAP spectral shape (unscaled) at omega for peak wp and peakedness gamma.
 double jonswap_shape(double w, double wp, double gamma) {
@@ -69,25 +74,46 @@ bool SeaState::build(const UCParams& p, std::string& error) {
     }
     if (p.wavesMode == 1) {
         components_.push_back({0.5 * p.wavesHeight, wp, kp, 0.0});
-        return true;
+    } else {
+        // JONSWAP: n components at the midpoints of equal bands over [0.5, 3] wp, amplitudes
+        // sqrt(2 S dw) with S scaled so that 4 sqrt(m0) = Hs; phases from the seed.
+        const int n = p.wavesNComponents;
+        const double w0 = 0.5 * wp, w1 = 3.0 * wp, dw = (w1 - w0) / n;
+        std::vector<double> S(n);
+        double m0 = 0.0;
+        for (int i = 0; i < n; ++i) {
+            S[i] = jonswap_shape(w0 + (i + 0.5) * dw, wp, p.wavesGamma);
+            m0 += S[i] * dw;
+        }
+        const double scale = p.wavesHeight * p.wavesHeight / 16.0 / m0;
+        SplitMix64 random(static_cast<unsigned long long>(p.wavesSeed));
+        for (int i = 0; i < n; ++i) {
+            const double w = w0 + (i + 0.5) * dw;
+            components_.push_back({std::sqrt(2.0 * scale * S[i] * dw), w, wave_number(w, depth_, g), 2.0 * kPi * random.uniform()});
+        }
     }
-    // JONSWAP: n components at the midpoints of equal bands over [0.5, 3] wp, amplitudes
-    // sqrt(2 S dw) with S scaled so that 4 sqrt(m0) = Hs; phases from the seed.
-    const int n = p.wavesNComponents;
-    const double w0 = 0.5 * wp, w1 = 3.0 * wp, dw = (w1 - w0) / n;
-    std::vector<double> S(n);
-    double m0 = 0.0;
-    for (int i = 0; i < n; ++i) {
-        S[i] = jonswap_shape(w0 + (i + 0.5) * dw, wp, p.wavesGamma);
-        m0 += S[i] * dw;
+    for (WaveComponent& c : components_) {
+        c.kx = c.k * cosb_;
+        c.ky = c.k * sinb_;
+        const double image = std::exp(-2.0 * c.k * depth_);
+        c.bottom = image > kNegligibleBottom ? image : 0.0;
+        c.depthScale = 1.0 / (1.0 - image);
     }
-    const double scale = p.wavesHeight * p.wavesHeight / 16.0 / m0;
-    SplitMix64 random(static_cast<unsigned long long>(p.wavesSeed));
-    for (int i = 0; i < n; ++i) {
-        const double w = w0 + (i + 0.5) * dw;
-        components_.push_back({std::sqrt(2.0 * scale * S[i] * dw), w, wave_number(w, depth_, g), 2.0 * kPi * random.uniform()});
-    }
+    cosPhase_.assign(components_.size(), 0.0);
+    sinPhase_.assign(components_.size(), 0.0);
+    phaseValid_ = false;
     return true;
+}
+
+void SeaState::phases_at(double t) const {
+    if (phaseValid_ && t == phaseTime_) return;
+    for (size_t i = 0; i < components_.size(); ++i) {
+        const double phi = components_[i].omega * t - components_[i].phase;
+        cosPhase_[i] = std::cos(phi);
+        sinPhase_[i] = std::sin(phi);
+    }
+    phaseTime_ = t;
+    phaseValid_ = true;
 }
 
 double SeaState::ramp(double t) const {
@@ -97,9 +123,14 @@ double SeaState::ramp(double t) const {
 }
 
 double SeaState::elevation(double x, double y, double t) const {
+    if (components_.empty()) return 0.0;
+    phases_at(t);
     double eta = 0.0;
-    const double s = x * cosb_ + y * sinb_;
-    for (const WaveComponent& c : components_) eta += c.amplitude * std::cos(c.k * s - c.omega * t + c.phase);
+    for (size_t i = 0; i < components_.size(); ++i) {  // cos(k.x - (w t - p))
+        const WaveComponent& c = components_[i];
+        const double kx = c.kx * x + c.ky * y;
+        eta += c.amplitude * (std::cos(kx) * cosPhase_[i] + std::sin(kx) * sinPhase_[i]);
+    }
     return ramp(t) * eta;
 }
 
@@ -109,7 +140,7 @@ void SeaState::kinematics(const Vec3& r, double t, Vec3& u, Vec3& a, Mat3* du, M
     if (du) du->setZero();
     if (da) da->setZero();
     if (components_.empty()) return;
-    const double s = r.x() * cosb_ + r.y() * sinb_;
+    phases_at(t);
     double z = std::min(r.z(), 0.0);
     if (wheeler_) {
         const double eta = elevation(r.x(), r.y(), t);
@@ -120,11 +151,14 @@ void SeaState::kinematics(const Vec3& r, double t, Vec3& u, Vec3& a, Mat3* du, M
     double duh_ds = 0.0, duh_dz = 0.0, dw_ds = 0.0, dw_dz = 0.0;     // gradients in (s, z)
     double dah_ds = 0.0, dah_dz = 0.0, daw_ds = 0.0, daw_dz = 0.0;
     const bool belowSurface = r.z() < 0.0 || wheeler_;
-    for (const WaveComponent& c : components_) {
+    for (size_t i = 0; i < components_.size(); ++i) {
+        const WaveComponent& c = components_[i];
         double ch, sh;
-        depth_factors(c.k, z, depth_, ch, sh);
-        const double theta = c.k * s - c.omega * t + c.phase;
-        const double co = std::cos(theta), si = std::sin(theta);
+        depth_factors(c, z, ch, sh);
+        const double kx = c.kx * r.x() + c.ky * r.y();
+        const double ckx = std::cos(kx), skx = std::sin(kx);
+        const double co = ckx * cosPhase_[i] + skx * sinPhase_[i];  // cos(k.x - (w t - p))
+        const double si = skx * cosPhase_[i] - ckx * sinPhase_[i];
         const double aw1 = c.amplitude * c.omega, aw2 = aw1 * c.omega;
         uh += aw1 * ch * co;
         w += aw1 * sh * si;

@@ -17,6 +17,8 @@ namespace uc {
 
 struct WaveComponent {
     double amplitude = 0.0, omega = 0.0, k = 0.0, phase = 0.0;
+    // precomputed by SeaState::build: k along x and y, exp(-2 k h), 1 / (1 - exp(-2 k h))
+    double kx = 0.0, ky = 0.0, bottom = 0.0, depthScale = 1.0;
 };
 
 // The wavenumber of frequency omega in water of depth h: omega^2 = g k tanh(k h), solved by Newton's
@@ -50,7 +52,14 @@ public:
 
 private:
     double ramp(double t) const;
+    // cos and sin of (omega t - phase) per component at time t: computed once per time, as the
+    // integrator evaluates every quadrature point at one time (a cache of this instance's model,
+    // which no other instance shares).
+    void phases_at(double t) const;
     std::vector<WaveComponent> components_;
+    mutable std::vector<double> cosPhase_, sinPhase_;
+    mutable double phaseTime_ = 0.0;
+    mutable bool phaseValid_ = false;
     double depth_ = 0.0, rampTime_ = 0.0, cosb_ = 1.0, sinb_ = 0.0;
     bool wheeler_ = false;
 };
