@@ -1,0 +1,172 @@
+// The layout-independent pieces of the winch: the exact split of a cubic Hermite element, the
+// split/merge rule with its hysteresis, the element capacity and the rate limits.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hermite_element.h"
+#include "winch.h"
+
+namespace uc {
+namespace {
+
+// A curved, stretched element: nodal positions and tangents of no special form.
+void curved_element(double (&X)[12]) {
+    const double v[12] = {0.0, 0.0, 0.0, -0.80, 0.05, -0.62,
+                          -10.2, 0.7, -9.1, -0.55, 0.08, -0.84};
+    for (int k = 0; k < 12; ++k) X[k] = v[k];
+}
+
+struct Point {
+    Vec3 r, dr, d2r;
+};
+
+Point evaluate(const double* X, double length, double s) {
+    const ShapeValues sv = hermite_shape(s / length, length);
+    Point p{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+    for (int k = 0; k < 4; ++k) {
+        const Eigen::Map<const Vec3> x(X + 3 * k);
+        p.r += sv.N[k] * x;
+        p.dr += sv.dN[k] * x;
+        p.d2r += sv.d2N[k] * x;
+    }
+    return p;
+}
+
+// The two elements of a split: upper [r_i, r'_i, node] and lower [node, r_j, r'_j].
+void split(const double* X, double length, double a, double (&upper)[12], double (&lower)[12]) {
+    double node[6];
+    hermite_split_node(X, length, a, node);
+    for (int k = 0; k < 6; ++k) {
+        upper[k] = X[k];
+        upper[6 + k] = node[k];
+        lower[k] = node[k];
+        lower[6 + k] = X[6 + k];
+    }
+}
+
+double quadratic_form(const Mat4& M, const double* X) {
+    double q = 0.0;
+    for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b)
+            q += M(a, b) * Eigen::Map<const Vec3>(X + 3 * a).dot(Eigen::Map<const Vec3>(X + 3 * b));
+    return q;
+}
+
+TEST(WinchSplit, BothHalvesAreTheSameCubic) {
+    double X[12];
+    curved_element(X);
+    const double l = 22.5;
+    for (double a : {0.01 * l, 7.5, 0.5 * l, 15.0, 0.99 * l}) {
+        double up[12], lo[12];
+        split(X, l, a, up, lo);
+        for (int k = 0; k <= 40; ++k) {
+            const double s = l * k / 40.0;
+            const Point want = evaluate(X, l, s);
+            const Point got = s <= a ? evaluate(up, a, s) : evaluate(lo, l - a, s - a);
+            // round-off of a cubic evaluated at O(10) m: 1e-12 relative to the element's size
+            EXPECT_LT((got.r - want.r).norm(), 1e-12 * l) << "a " << a << " s " << s;
+            EXPECT_LT((got.dr - want.dr).norm(), 1e-12) << "a " << a << " s " << s;
+            // strain |r'| - 1 (and with it the tension) unchanged at every material point
+            EXPECT_NEAR(got.dr.norm(), want.dr.norm(), 1e-12) << "a " << a << " s " << s;
+            EXPECT_LT((got.d2r - want.d2r).norm(), 1e-12 * (1.0 + want.d2r.norm()) / std::min(a, l - a))
+                << "a " << a << " s " << s;
+        }
+    }
+}
+
+TEST(WinchSplit, ConservesMassKineticEnergyAndBendingEnergy) {
+    // The element mass and bending matrices are exact integrals, so the split (an exact
+    // re-parametrisation of the same cubic) keeps int |v|^2 ds and int |r''|^2 ds to round-off;
+    // the mass m l is kept because the lengths add.
+    double X[12];
+    curved_element(X);
+    const double l = 22.5, a = 7.5;
+    double up[12], lo[12];
+    split(X, l, a, up, lo);
+    const ElementTables whole = make_element_tables(l, 3, 3);
+    const ElementTables upper = make_element_tables(a, 3, 3);
+    const ElementTables lower = make_element_tables(l - a, 3, 3);
+    EXPECT_DOUBLE_EQ(upper.length + lower.length, whole.length);
+    const double mass_form = quadratic_form(whole.mass, X);
+    EXPECT_NEAR(quadratic_form(upper.mass, up) + quadratic_form(lower.mass, lo), mass_form,
+                1e-13 * mass_form);
+    const double bending = quadratic_form(whole.bending, X);
+    EXPECT_NEAR(quadratic_form(upper.bending, up) + quadratic_form(lower.bending, lo), bending,
+                1e-11 * bending);
+}
+
+TEST(WinchRemesh, SplitAndMergeThresholdsWithHysteresis) {
+    const double l0 = 15.0;
+    EXPECT_EQ(remesh_action(1.0 * l0, l0, true), RemeshAction::None);
+    EXPECT_EQ(remesh_action(1.5 * l0, l0, true), RemeshAction::None);
+    EXPECT_EQ(remesh_action(1.5 * l0 + 1e-9, l0, true), RemeshAction::Split);
+    EXPECT_EQ(remesh_action(0.5 * l0, l0, true), RemeshAction::None);
+    EXPECT_EQ(remesh_action(0.5 * l0 - 1e-9, l0, true), RemeshAction::Merge);
+    // a single element never merges (nothing below it)
+    EXPECT_EQ(remesh_action(0.1 * l0, l0, false), RemeshAction::None);
+    // what a split or a merge leaves behind needs nothing more
+    for (double top = 1.5 * l0 + 1e-9; top < 1.7 * l0; top += 0.01 * l0)
+        EXPECT_EQ(remesh_action(top - l0, l0, true), RemeshAction::None) << top;
+    for (double top = 0.5 * l0 - 1e-9; top > 0.3 * l0; top -= 0.01 * l0)
+        EXPECT_EQ(remesh_action(top + l0, l0, true), RemeshAction::None) << top;
+}
+
+TEST(WinchRemesh, CapacityHoldsTheLongestLine) {
+    for (double l0 : {5.0, 15.0, 17.3}) {
+        for (double maxLength : {50.0, 600.0, 1234.5}) {
+            // the most elements: the top one just above 0.5 l0 (about to merge), the rest nominal
+            const double top = 0.5 * l0;
+            const int needed = 1 + static_cast<int>(std::ceil((maxLength - top) / l0));
+            EXPECT_GE(winch_capacity(maxLength, l0), needed) << l0 << " " << maxLength;
+        }
+    }
+}
+
+TEST(WinchRate, SaturatesAtMaxRate) {
+    const WinchLimits lim{50.0, 600.0, 1.0};
+    WinchRate r = limit_winch_rate(0.5, 100.0, 0.5, lim);
+    EXPECT_EQ(r.rate, 0.5);
+    EXPECT_FALSE(r.saturated);
+    r = limit_winch_rate(3.0, 100.0, 0.5, lim);
+    EXPECT_EQ(r.rate, 1.0);
+    EXPECT_TRUE(r.saturated);
+    r = limit_winch_rate(-3.0, 100.0, 0.5, lim);
+    EXPECT_EQ(r.rate, -1.0);
+    EXPECT_TRUE(r.saturated);
+}
+
+TEST(WinchRate, StopsExactlyAtTheLengthLimits) {
+    const WinchLimits lim{50.0, 600.0, 1.0};
+    // pay-out that would cross maxLength within the step lands on it
+    WinchRate r = limit_winch_rate(0.5, 599.9, 0.5, lim);
+    EXPECT_TRUE(r.saturated);
+    EXPECT_NEAR(599.9 + r.rate * 0.5, 600.0, 1e-12);
+    // at the limit: no further pay-out, haul-in allowed
+    r = limit_winch_rate(0.5, 600.0, 0.5, lim);
+    EXPECT_EQ(r.rate, 0.0);
+    EXPECT_TRUE(r.saturated);
+    r = limit_winch_rate(-0.5, 600.0, 0.5, lim);
+    EXPECT_EQ(r.rate, -0.5);
+    EXPECT_FALSE(r.saturated);
+    // haul-in onto minLength likewise
+    r = limit_winch_rate(-0.8, 50.2, 0.5, lim);
+    EXPECT_TRUE(r.saturated);
+    EXPECT_NEAR(50.2 + r.rate * 0.5, 50.0, 1e-12);
+    r = limit_winch_rate(-0.8, 50.0, 0.5, lim);
+    EXPECT_EQ(r.rate, 0.0);
+    r = limit_winch_rate(0.8, 50.0, 0.5, lim);
+    EXPECT_EQ(r.rate, 0.8);
+}
+
+TEST(WinchRate, ConstantTensionPaysOutAboveTheTargetAndHaulsInBelow) {
+    EXPECT_GT(constant_tension_rate(12e3, 10e3, 1e-4, 1.0), 0.0);
+    EXPECT_LT(constant_tension_rate(8e3, 10e3, 1e-4, 1.0), 0.0);
+    EXPECT_EQ(constant_tension_rate(10e3, 10e3, 1e-4, 1.0), 0.0);
+    EXPECT_DOUBLE_EQ(constant_tension_rate(10.5e3, 10e3, 1e-4, 1.0), 0.05);
+    EXPECT_EQ(constant_tension_rate(1e6, 10e3, 1e-4, 1.0), 1.0);
+    EXPECT_EQ(constant_tension_rate(0.0, 10e3, 1e-4, 1.0), -1.0);
+}
+
+}  // namespace
+}  // namespace uc
