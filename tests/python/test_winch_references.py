@@ -51,3 +51,14 @@ def test_body_parameters_reach_the_fmu(fmu_file):
     light = fmu_static_references(fmu_file, [100.0])
     heavy = fmu_static_references(fmu_file, [100.0], body=DeployBody(mass=605.0))
     assert heavy.tow_tension[0] > light.tow_tension[0] * 1.1
+
+
+def test_winch_references_command_writes_csv_and_plot(fmu_file, tmp_path, monkeypatch):
+    from ucable import winch_reference_cli
+
+    monkeypatch.setenv("UC_FMU", str(fmu_file))
+    winch_reference_cli.main(["--lengths", "100", "300", "200", "--out", str(tmp_path)])
+    data = np.genfromtxt(tmp_path / "references.csv", delimiter=",", names=True)
+    assert list(data["length"]) == [100.0, 300.0]
+    assert np.allclose(data["towTensionFMU"], data["towTensionODE"], rtol=0.005)
+    assert (tmp_path / "references.png").stat().st_size > 0
