@@ -1,7 +1,7 @@
 """Exact (closed-form or quadrature-exact) solutions the validation compares the FMU against.
 
 None of this uses the FMU. Sources:
-  - cantilever elastica: tests/data/elastica.json (copy of shared/reference/elastica.json) (elliptic integrals, exact to 1e-12 L),
+  - cantilever elastica: tests/data/elastica.json (elliptic integrals, exact to 1e-12 L),
     loaded by `elastica_cases`;
   - pure end couple: a circular arc of radius EI/M (the bending moment is M everywhere);
   - elastic catenary between two fixed points: Irvine, "Cable Structures" (1981), eqs. 2.x, written
@@ -21,7 +21,7 @@ from scipy.optimize import fsolve
 
 from .paths import REPO_ROOT
 
-# The project's public reference numbers (shared/reference/elastica.json), kept in the repo so that a
+# The project's reference numbers for the elastica (tests/data/elastica.json), kept in the repo so that a
 # clone runs its tests wherever it is checked out.
 ELASTICA_JSON = REPO_ROOT / "tests" / "data" / "elastica.json"
 

@@ -190,7 +190,7 @@ VARIANTS = [(10.0, False), (20.0, True), (50.0, True), (100.0, True), (100.0, Fa
 class Study:
     qs_mean: float
     T0: float
-    scene: list  # MeanResult of the issue scene (period 10 s, drag)
+    scene: list  # MeanResult of the reference scene (period 10 s, drag)
     statics: list  # (segments, dt, MoorDyn static fairlead tension at x = 0)
     variants: list  # MeanResult of VARIANTS
     average_from: float
@@ -288,14 +288,14 @@ def report(s: Study) -> str:
         "every 0.1 s; MoorDyn 2.7.2: RK2, the fairlead a coupled point moved every MoorDyn step, starting "
         "from its own static solution `moordyn.Init`).", "",
         f"Quasi-static cycle mean (closed form, 40 phases): **{s.qs_mean / 1e6:.5f} MN**; static tension "
-        f"at x = 0: {s.T0 / 1e6:.5f} MN. Issue bound: dynamic mean within 0.5 %.", "",
+        f"at x = 0: {s.T0 / 1e6:.5f} MN. Required bound: dynamic mean within 0.5 %.", "",
         "Axial damping: ours 0.01 s x 6.709e7 N = 6.7e5 N s (the FMU default, independent of the mesh). "
         "MoorDyn rows 'BA/-zeta -0.8' use its usual setting (80 % of critical damping of each segment's "
         "axial mode: BA = 1.6 l sqrt(EA m) = 2.1e7 N s at 20 segments, falling with l) at 0.9 x its "
         "stable step (bisection); rows 'BA 6.71e+05' use our damping, at 0.25 x the segment's axial "
         "transit time l / c (see `matched_dt`). Ours is an elastic rod that also carries compression; "
         "MoorDyn's segments are tension-only.", "",
-        f"## 1. The issue scene: T = {m.SURGE_PERIOD:g} s, drag on", "", *HEAD,
+        f"## 1. The reference scene: T = {m.SURGE_PERIOD:g} s, drag on", "", *HEAD,
         *[_row(r) for r in s.scene], "",
         "MoorDyn's own static fairlead tension at x = 0 (sanity check of its statics and of the matched "
         f"set-up against the closed form {s.T0 / 1e6:.5f} MN):", "",
@@ -326,7 +326,7 @@ def _reading(s: Study) -> list:
               "MoorDyn (BA/-zeta -0.8)": [r for r in s.scene if "zeta" in r.setting],
               "MoorDyn (BA matched)": [r for r in s.scene if "matched" in r.setting]}
     devs = [r.deviation for r in s.scene]
-    out.append(f"- Issue scene: the runs of both codes lie {min(devs):+.2%} .. {max(devs):+.2%} from the "
+    out.append(f"- Reference scene: the runs of both codes lie {min(devs):+.2%} .. {max(devs):+.2%} from the "
                "quasi-static mean.")
     best = {}
     for name, rs in groups.items():
@@ -403,7 +403,7 @@ def _reading(s: Study) -> list:
             + ("the top still goes slack)." if slack else
                f"no slack: above 10 % of T0), against {min(r.t_min for r in s.scene) / 1e3:.0f} kN and peaks "
                f"up to {max(r.t_max for r in s.scene) / 1e6:.2f} MN with drag (quasi-static maximum "
-               f"{m.closed_form(m.SURGE_AMPLITUDE).fairlead_tension / 1e6:.2f} MN). So the excess of the issue "
+               f"{m.closed_form(m.SURGE_AMPLITUDE).fairlead_tension / 1e6:.2f} MN). So the excess of the reference "
                "scene comes with the drag: the normal drag on the chain (fairlead speed up to "
                f"{m.SURGE_AMPLITUDE * 2 * math.pi / m.SURGE_PERIOD:.2f} m/s) holds it back while the "
                "fairlead moves towards the anchor, the top goes slack and snaps taut on the way out; the "
@@ -427,7 +427,7 @@ def plot(s: Study, path) -> None:
     for key, rs in groups.items():
         rs.sort(key=lambda r: r.resolution)
         a1.semilogx([r.resolution for r in rs], [100 * r.deviation for r in rs], "o-", label=key)
-    a1.axhspan(-0.5, 0.5, color="g", alpha=0.15, label="issue bound +-0.5 %")
+    a1.axhspan(-0.5, 0.5, color="g", alpha=0.15, label="required bound +-0.5 %")
     a1.set_xlabel("elements / segments"), a1.set_ylabel("dynamic mean - quasi-static [%]")
     a1.set_title(f"T = {m.SURGE_PERIOD:g} s, drag on"), a1.legend(fontsize=8), a1.grid(alpha=0.3)
     for code, drag, style in (("ours", True, "o-"), ("MoorDyn", True, "s--"), ("ours", False, "o:"),
@@ -459,11 +459,11 @@ def main(argv=None) -> int:
         "Mooring surge scene: dynamic mean fairlead tension of our FMU and MoorDyn against the "
         "quasi-static mean, with mesh/tolerance convergence and a drag / period decomposition."))
     p.add_argument("--elements", type=int, nargs="+", default=[20, 40, 80],
-                   help="our element counts for the issue scene (default 20 40 80; 160 takes ~10 min)")
+                   help="our element counts for the reference scene (default 20 40 80; 160 takes ~10 min)")
     p.add_argument("--tension-only", type=int, nargs="*", default=[20, 40, 80],
                    help="our element counts with enableCompression = 0 (MoorDyn's law; default 20 40 80)")
     p.add_argument("--segments", type=int, nargs="+", default=[20, 40, 80, 160],
-                   help="MoorDyn segment counts for the issue scene (default 20 40 80 160)")
+                   help="MoorDyn segment counts for the reference scene (default 20 40 80 160)")
     p.add_argument("--tol-check", type=float, default=1e-10,
                    help="extra relTol at the smallest element count (0: skip; default 1e-10)")
     p.add_argument("--no-variants", action="store_true", help="skip the drag / period decomposition")

@@ -231,7 +231,7 @@ TEST(AssembledJacobian, MatchesFiniteDifferencesAnchored) {
 
 namespace {
 
-// Paper Table 1 cantilever; exact tips from shared/reference/elastica.json.
+// Paper Table 1 cantilever; exact tips from tests/data/elastica.json.
 struct ElasticaCase {
     double P, xTip, yTip;
 };

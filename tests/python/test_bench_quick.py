@@ -39,8 +39,8 @@ def test_quick_benchmark_hopland(fmu_file):
     assert ours[0].errors["tension_rms"] < 0.01
 
     # Reference agreement between the codes: MoorDyn with 10 lumped-mass segments is second order
-    # in the segment length; its end-position RMS error at N = 10 was measured independently (the
-    # issue: 0.30 m). 1 m (0.33 % of the cable length) separates that discretization error from a
+    # in the segment length; its end-position RMS error at N = 10 was measured independently
+    # (0.30 m). 1 m (0.33 % of the cable length) separates that discretization error from a
     # modelling mismatch (drag convention d vs pi d, a missing current or added mass move the end
     # by metres), and the tension must agree within 5 % of its range.
     assert md[0].errors["end_rms"] < 1.0
@@ -72,7 +72,7 @@ def test_quick_benchmark_mooring_seabed(fmu_file):
     dt_lim, _ = limits[10]
     assert 0.75 * 2 / lam < dt_lim < 1.25 * 2 / lam, (dt_lim, 2 / lam)
 
-    # The issue measured MoorDyn's fairlead tension RMS error at N = 10 independently: 5.6 %;
+    # MoorDyn's fairlead tension RMS error at N = 10 was measured independently: 5.6 %;
     # twice that separates discretization error from a modelling mismatch (seabed units, drag
     # convention, a missing weight term each move the snap peaks by far more).
     assert md[0].errors["tension_rmsrel"] < 0.112

@@ -1,5 +1,5 @@
 """Mooring surge scene: our dynamic mean fairlead tension against MoorDyn's (ucable.mooring_dynamics,
-docs/mooring_dynamic_mean.md). The issue asks for the dynamic mean within 0.5 % of the quasi-static
+docs/mooring_dynamic_mean.md). The requirement is the dynamic mean within 0.5 % of the quasi-static
 mean; test_mooring.py::test_surge_mean_tension_is_quasi_static records (xfail) that the 10 s surge
 misses it. These tests establish with an independent code (MoorDyn 2.7.2) that the miss is the
 physics of the scene (drag-driven slack and snap), not our discretization, and that the bound holds
@@ -21,14 +21,14 @@ pytest.importorskip("moordyn")
 
 @pytest.mark.slow
 def test_snapping_surge_mean_excess_is_physics_in_both_codes(fmu_file):
-    # T = 10 s, drag on (the issue scene): ours 40 elements (relTol 1e-8) and MoorDyn 40 segments
+    # T = 10 s, drag on (the reference scene): ours 40 elements (relTol 1e-8) and MoorDyn 40 segments
     # (its usual BA/-zeta -0.8 at 0.9 x its stable RK2 step). Measured excess:
     #   ours     20 / 40 / 80 / 160 elements:          2.132 / 2.441 / 2.650 / 2.608
     #   MoorDyn  20 / 40 / 80 / 160 / 320 segments:    2.728 / 2.899 / 2.951 / 3.005 / 3.076
     #   (ours relTol 1e-10 at 20 elements: 2.127; MoorDyn with our axial damping: 2.91 .. 3.15)
     # Neither sequence contracts geometrically, so the error estimate at 40 is the largest change
     # to any finer mesh: ours max(0.209, 0.167) = 0.209, MoorDyn max(0.052, 0.106, 0.177) = 0.177.
-    # The issue's 0.5 % is unreachable for this scene if both codes put the mean above it by more
+    # The required 0.5 % is unreachable for this scene if both codes put the mean above it by more
     # than their error estimate (measured margins: ours 2.441 - 0.209 = 2.23, MoorDyn 2.72 points).
     # With our default two-sided axial law the codes do NOT agree within these estimates (finest
     # runs 2.608 vs 3.076: 0.47 points, last refinement changes 0.04 and 0.07): our rod carries
@@ -47,7 +47,7 @@ def test_snapping_surge_mean_excess_is_physics_in_both_codes(fmu_file):
 
 @pytest.mark.slow
 def test_snapping_surge_tension_only_agrees_with_moordyn(fmu_file):
-    # The issue scene with our tension-only law (enableCompression = 0, MoorDyn's) against
+    # The reference scene with our tension-only law (enableCompression = 0, MoorDyn's) against
     # MoorDyn 40 segments (BA/-zeta -0.8). Measured excess: ours tension-only 20 / 40 / 80
     # elements 3.029 / 2.992 / 3.116; MoorDyn as above (2.899 at 40 ... 3.076 at 320).
     # Neither sequence contracts, so each code's error estimate at 40 is its largest change to a
@@ -74,7 +74,7 @@ def test_surge_without_drag_agrees_with_moordyn(fmu_file):
     theirs = md.moordyn(80, 0.9 * md.moordyn_dt(80, drag=False), drag=False, qs_mean=qs)
     assert theirs is not None, "MoorDyn blew up"
     assert abs(ours.deviation - theirs.deviation) < 8.1e-4
-    # the excess of the issue scene comes with the drag: without it the mean falls below
+    # the excess of the reference scene comes with the drag: without it the mean falls below
     assert ours.deviation < 0.0 and theirs.deviation < 0.0
 
 
@@ -85,7 +85,7 @@ def test_slow_surge_mean_is_quasi_static_in_both_codes(fmu_file):
     # MoorDyn 40 / 80 segments -0.035 / -0.023.
     qs = m.quasi_static_mean(40)
     ours = md.ours(fmu_file, 20, 1e-8, period=100.0, qs_mean=qs)
-    # the issue's criterion holds once the motion is slow
+    # the 0.5 % criterion holds once the motion is slow
     assert abs(ours.deviation) < 5e-3
     assert ours.t_min > 1e6  # no slack in this variant
     theirs = md.moordyn(80, 0.9 * md.moordyn_dt(80, period=100.0), period=100.0, qs_mean=qs)
