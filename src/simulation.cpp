@@ -549,9 +549,7 @@ void CableSimulation::free_state(std::vector<double>& q, std::vector<double>& v,
 }
 
 void CableSimulation::update_outputs() {
-    loads_.current.time = time_;
-    free_state(q_, v_, a_);
-    model_.expand(q_.data(), v_.data(), a_.data(), loads_, time_, X_.data(), Xd_.data(), Xdd_.data());
+    expand_integrator_state(time_, y_.data(), yp_.data());
     model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), &forces_);
     compute_outputs(model_, X_.data(), Xd_.data(), forces_, loads_.torque, nodeTension_, outputs_);
     const IntegratorStats s = total_stats();
@@ -698,9 +696,7 @@ bool CableSimulation::interface_derivatives(double d[6][12], std::string& error)
     M.clear();
 
     // The cable's Jacobian at its present state.
-    loads_.current.time = time_;
-    free_state(q_, v_, a_);
-    model_.expand(q_.data(), v_.data(), a_.data(), loads_, time_, X_.data(), Xd_.data(), Xdd_.data());
+    expand_integrator_state(time_, y_.data(), yp_.data());
     auto add = [&](int i, int k, double dq, double dv, double da) {
         K.add(i, k, dq);
         C.add(i, k, dv);
