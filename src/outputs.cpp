@@ -28,11 +28,16 @@ constexpr int kSeabedSamples = 8;
 // stiffness, and marks the touchdown point of a catenary within a few metres (where its height
 // above the seabed reaches half a diameter). Between samples the clearance is interpolated
 // linearly. The contact force is integrated with the quadrature the equations use.
+// The clearance below which a point of the line rests on the seabed (see seabed_outputs).
+double resting_clearance(const CableModel& model) {
+    return std::max(model.seabed().smoothing, 0.5 * model.params().diameter);
+}
+
 void seabed_outputs(const CableModel& model, const double* X, const double* Xd, UCOutputs& out) {
     const UCParams& p = model.params();
     const SeabedProps& seabed = model.seabed();
     const double l = model.element_length();
-    const double reach = std::max(seabed.smoothing, 0.5 * p.diameter);
+    const double reach = resting_clearance(model);
     const double ds = l / kSeabedSamples;
     out.touchdownArcLength = p.length;
     out.minSeabedClearance = INFINITY;
@@ -83,12 +88,11 @@ void geometry_outputs(const CableModel& model, const double* X, UCOutputs& out) 
     out.topAzimuth = std::hypot(t0.x(), t0.y()) > 1e-12 ? std::atan2(t0.y(), t0.x()) : 0.0;
     out.anchorUplift = 0.0;
     if (p.bottomEnd == UC_BOTTOM_ANCHORED) {
-        // Lying on the seabed at the anchor: the line one seabed sample before it (l/8) still within
-        // half a diameter of the seabed, as seabed_outputs counts it.
-        const double reach = std::max(model.seabed().smoothing, 0.5 * p.diameter);
+        // Lying on the seabed at the anchor: the line one seabed sample before it (l/8) still
+        // resting on the seabed, as seabed_outputs counts it.
         const double l = model.element_length();
         const double nearAnchor = interpolate(hermite_shape(1.0 - 1.0 / kSeabedSamples, l).N, X + gN - 6).z();
-        const bool grounded = p.enableSeabed && nearAnchor + p.waterDepth <= reach;
+        const bool grounded = p.enableSeabed && nearAnchor + p.waterDepth <= resting_clearance(model);
         const Vec3 up = -at(X, gN + 3).normalized();  // from the anchor up the cable
         out.anchorUplift = grounded ? 0.0 : std::asin(std::clamp(up.z(), -1.0, 1.0));
     }
