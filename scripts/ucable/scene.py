@@ -130,7 +130,10 @@ class TowMotion:
         self.x, self.v, self.a = x, v, a
 
     def at(self, t: float):
-        k = int(np.argmin(np.abs(self.t - t)))
+        """At the grid point nearest t (communication points lie on the grid)."""
+        k = int(np.searchsorted(self.t, t))
+        if k == len(self.t) or (k > 0 and t - self.t[k - 1] < self.t[k] - t):
+            k -= 1
         return self.x[k], self.v[k], self.a[k]
 
 
