@@ -8,6 +8,7 @@ same tasks go to that cluster (its workers need the `ucable` package installed).
 
 from __future__ import annotations
 
+import csv
 import itertools
 import time
 import traceback
@@ -90,18 +91,11 @@ def run_sweep(scene: Scene, vary: dict, fixed: dict | None = None, workers: int 
 
 def write_results(rows: list[dict], names: list[str], path) -> None:
     columns = names + SUMMARY + ["cpuSeconds", "status", "error"]
-    with open(path, "w") as f:
-        f.write(",".join(columns) + "\n")
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=columns, extrasaction="ignore")
+        writer.writeheader()
         for r in rows:
-            cells = []
-            for c in columns:
-                v = r.get(c, "")
-                if isinstance(v, float):
-                    cells.append(f"{v:.10g}")
-                else:
-                    text = str(v)
-                    cells.append(f'"{text}"' if "," in text or '"' in text else text)
-            f.write(",".join(cells) + "\n")
+            writer.writerow({c: f"{v:.10g}" if isinstance(v := r.get(c, ""), float) else v for c in columns})
 
 
 def plot_summary(rows: list[dict], names: list[str], path, title: str) -> None:
