@@ -215,6 +215,21 @@ static int name_index(const char* name, const char* const names[], int count) {
     return -1;
 }
 
+/* The position of the variable vr among names[count] (the interface variables of the derivatives),
+ * or -1 with a message naming it: "no derivative <relation> <name> (derivatives are provided <which>)". */
+static int interface_index(UCInstance* inst, fmi2ValueReference vr, const char* const names[], int count,
+                           const char* relation, const char* which) {
+    const char* function = "fmi2GetDirectionalDerivative";
+    const UCVariable* v = find_or_log(inst, vr, UC_TYPE_REAL, function);
+    if (v == NULL) return -1;
+    const int index = name_index(v->name, names, count);
+    if (index < 0) {
+        uc_log_status(&inst->log, fmi2Error, "%s: no derivative %s %s (derivatives are provided %s)", function,
+                      relation, v->name, which);
+    }
+    return index;
+}
+
 fmi2Status uc_get_directional_derivative(UCInstance* inst, const fmi2ValueReference unknown[], size_t nUnknown,
                                          const fmi2ValueReference known[], size_t nKnown, const fmi2Real dvKnown[],
                                          fmi2Real dvUnknown[]) {
@@ -236,29 +251,16 @@ fmi2Status uc_get_directional_derivative(UCInstance* inst, const fmi2ValueRefere
         return fmi2Error;
     }
     for (size_t i = 0; i < nUnknown; ++i) {
-        const UCVariable* v = find_or_log(inst, unknown[i], UC_TYPE_REAL, function);
-        if (v == NULL) return fmi2Error;
-        rows[i] = name_index(v->name, outputs, 6);
-        if (rows[i] < 0) {
-            uc_log_status(&inst->log, fmi2Error,
-                          "%s: no derivative of %s (derivatives are provided of towForce.x/y/z and endForce.x/y/z)",
-                          function, v->name);
-            return fmi2Error;
-        }
+        rows[i] = interface_index(inst, unknown[i], outputs, 6, "of", "of towForce.x/y/z and endForce.x/y/z");
+        if (rows[i] < 0) return fmi2Error;
     }
     for (size_t j = 0; j < nKnown; ++j) {
-        const UCVariable* v = find_or_log(inst, known[j], UC_TYPE_REAL, function);
-        if (v == NULL) return fmi2Error;
-        cols[j] = name_index(v->name, inputs, 12);
-        if (cols[j] < 0) {
-            uc_log_status(&inst->log, fmi2Error,
-                          "%s: no derivative with respect to %s (derivatives are provided with respect to "
-                          "tow.x/y/z, tow.vx/vy/vz, end.x/y/z and end.vx/vy/vz)",
-                          function, v->name);
-            return fmi2Error;
-        }
+        cols[j] = interface_index(inst, known[j], inputs, 12, "with respect to",
+                                  "with respect to tow.x/y/z, tow.vx/vy/vz, end.x/y/z and end.vx/vy/vz");
+        if (cols[j] < 0) return fmi2Error;
         if (!isfinite(dvKnown[j])) {
-            uc_log_status(&inst->log, fmi2Error, "%s: the seed of %s is not a finite number", function, v->name);
+            uc_log_status(&inst->log, fmi2Error, "%s: the seed of %s is not a finite number",
+                          function, inputs[cols[j]]);
             return fmi2Error;
         }
     }
