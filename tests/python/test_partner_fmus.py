@@ -1,4 +1,4 @@
-"""The partner FMUs (Vessel, TowedBody): FMI conformance, the physics against independent solutions,
+"""The partner FMUs (Vessel, VesselRAO, TowedBody): FMI conformance, the physics against independent solutions,
 and the robustness every FMU of the project owes (bad parameters, NaN inputs, call sequences, states).
 
 The Vessel FMU is a C port of the Python vessel model ucable.partners.vessel: with the same constant
@@ -53,7 +53,7 @@ def make():
         u.free()
 
 
-@pytest.mark.parametrize("name", ["Vessel", "TowedBody"])
+@pytest.mark.parametrize("name", ["Vessel", "VesselRAO", "TowedBody"])
 def test_fmpy_validate_and_fmutool_check_find_no_problem(fmu_file, name):
     out = subprocess.run([sys.executable, "-m", "fmpy", "validate", str(partner_fmu(name))],
                          capture_output=True, text=True)
@@ -170,14 +170,22 @@ def test_do_step_before_initialization_is_an_illegal_call_sequence(body_fmu, mak
     assert any("illegal call sequence" in m for _, _, m in b.messages)
 
 
-@pytest.mark.parametrize("name", ["Vessel", "TowedBody"])
+STATE_CASES = {
+    "Vessel": ({"turnStart": 5.0, "turnRate": 0.02, "turnAngle": 1.0}, {"towForce.x": -4000.0, "towForce.y": 800.0}),
+    "VesselRAO": ({"waves.mode": 2, "waves.height": 3.0, "waves.seed": 7, "waves.rampTime": 8.0,
+                   "waves.direction": 2.5, "towPoint.y": 4.0}, {}),
+    "TowedBody": ({"integrateTranslation": True, "CLA": 0.5, "velocity0.x": 1.0},
+                  {"cableForce.x": 300.0, "cableForce.z": 2500.0}),
+}
+
+
+@pytest.mark.parametrize("name", list(STATE_CASES))
 def test_states_restore_and_serialize_bit_identically(fmu_file, make, name):
-    params = {"turnStart": 5.0, "turnRate": 0.02, "turnAngle": 1.0} if name == "Vessel" else \
-        {"integrateTranslation": True, "CLA": 0.5, "velocity0.x": 1.0}
-    inputs = {"towForce.x": -4000.0, "towForce.y": 800.0} if name == "Vessel" else \
-        {"cableForce.x": 300.0, "cableForce.z": 2500.0}
+    params, inputs = STATE_CASES[name]
     a = make(partner_fmu(name), parameters=params, instance_name="a")
-    c = make(partner_fmu(name), parameters=params, instance_name="c")
+    # the other instance starts with other parameters: the restored state brings (and rebuilds from) a's
+    c = make(partner_fmu(name), parameters={**params, "waves.seed": 8} if name == "VesselRAO" else params,
+             instance_name="c")
     for u in (a, c):
         u.initialize(0.0, 100.0, inputs=inputs)
     outputs = [n for n, v in a.variables.items() if v.causality == "output"]

@@ -108,6 +108,8 @@ static void write_variable(FILE* f, const PMVariable* v, size_t vr) {
     }
     if (v->type == PM_BOOLEAN) {
         fprintf(f, "      <Boolean start=\"%s\"/>\n", v->start != 0.0 ? "true" : "false");
+    } else if (v->type == PM_INTEGER) {
+        fprintf(f, "      <Integer min=\"%.0f\" max=\"%.0f\" start=\"%.0f\"/>\n", v->min, v->max, v->start);
     } else {
         fputs("      <Real", f);
         if (v->unit) fprintf(f, " unit=\"%s\"", v->unit);
@@ -143,6 +145,12 @@ static int check_table(const PMModel* m) {
                 fprintf(stderr, "%s: variable %s declared twice\n", m->identifier, v->name);
                 return 1;
             }
+        if (v->type == PM_INTEGER && (v->causality != PM_PARAMETER || v->min != (int)v->min || v->max != (int)v->max ||
+                                      v->start != (int)v->start)) {
+            fprintf(stderr, "%s: Integer %s must be a parameter with integer start, min and max\n", m->identifier,
+                    v->name);
+            return 1;
+        }
         if (v->causality == PM_PARAMETER && !(v->start >= v->min && v->start <= v->max)) {
             fprintf(stderr, "%s: start of %s outside [min, max]\n", m->identifier, v->name);
             return 1;

@@ -18,7 +18,8 @@
 extern "C" {
 #endif
 
-typedef enum { PM_REAL, PM_BOOLEAN } PMType; /* a Boolean is stored as 0.0 / 1.0 in the data */
+/* A Boolean is stored as 0.0 / 1.0 in the data, an Integer as a double holding an integer. */
+typedef enum { PM_REAL, PM_BOOLEAN, PM_INTEGER } PMType;
 
 typedef enum { PM_PARAMETER, PM_INPUT, PM_OUTPUT } PMCausality;
 
@@ -35,7 +36,13 @@ typedef struct PMVariable {
     int feedthrough;         /* outputs: 1 if the output depends directly on the inputs (ModelStructure) */
 } PMVariable;
 
-/* Every function returns 0 on success, otherwise non-zero with a one-line reason in msg. */
+/* Every function returns 0 on success, otherwise non-zero with a one-line reason in msg.
+ *
+ * A model may also keep derived data: tables built from its parameters and from files in the FMU's
+ * resources directory (the MuJoCo "model" next to the "data"). The adapter builds them before the
+ * initialization (build), hands them to initialize and do_step read-only, and rebuilds them from the
+ * restored parameters after an FMU state is restored, so they are never part of a saved state. A model
+ * without derived data leaves build and release NULL and receives derived = NULL. */
 typedef struct PMModel {
     const char* identifier;  /* model identifier = name of the shared library */
     const char* description;
@@ -45,9 +52,13 @@ typedef struct PMModel {
     /* Conditions between parameters that no single range expresses (called after the range checks). */
     int (*check)(const void* data, char* msg, size_t msgSize);
     /* The states at t0 from the parameters (and inputs), then the outputs. */
-    int (*initialize)(void* data, double t0, char* msg, size_t msgSize);
+    int (*initialize)(void* data, const void* derived, double t0, char* msg, size_t msgSize);
     /* From t to t + h with the inputs held constant; the outputs at t + h. */
-    int (*do_step)(void* data, double t, double h, char* msg, size_t msgSize);
+    int (*do_step)(void* data, const void* derived, double t, double h, char* msg, size_t msgSize);
+    /* The derived data of the parameters in data; resources: the FMU's resources directory (a path, NULL
+       when the importer gave none). NULL with a reason in msg when they cannot be built. */
+    void* (*build)(const void* data, const char* resources, char* msg, size_t msgSize);
+    void (*release)(void* derived);
 } PMModel;
 
 /* The one model linked into this FMU (defined by the model's source file). */
@@ -58,6 +69,8 @@ extern const PMModel kPartnerModel;
     {name, PM_REAL, PM_PARAMETER, offsetof(T, field), start, min, max, why, unit, description, 0}
 #define PM_BOOL_PAR(T, field, name, start, description) \
     {name, PM_BOOLEAN, PM_PARAMETER, offsetof(T, field), start, 0.0, 1.0, "a Boolean", NULL, description, 0}
+#define PM_INT_PAR(T, field, name, start, min, max, why, description) \
+    {name, PM_INTEGER, PM_PARAMETER, offsetof(T, field), start, min, max, why, NULL, description, 0}
 #define PM_IN(T, field, name, unit, description) \
     {name, PM_REAL, PM_INPUT, offsetof(T, field), 0.0, 0.0, 0.0, NULL, unit, description, 0}
 #define PM_OUT(T, field, name, unit, feedthrough, description) \

@@ -72,9 +72,9 @@ static int instantiation_rejected(fmi2String instanceName, fmi2Type fmuType, fmi
 fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
                               fmi2String fmuResourceLocation, const fmi2CallbackFunctions* functions,
                               fmi2Boolean visible, fmi2Boolean loggingOn) {
-    (void)visible, (void)fmuResourceLocation; /* no user interface, no resources */
+    (void)visible; /* no user interface */
     if (instantiation_rejected(instanceName, fmuType, fmuGUID, functions)) return NULL;
-    PMInstance* inst = pm_instance_new(&kPartnerModel, instanceName, functions->logger,
+    PMInstance* inst = pm_instance_new(&kPartnerModel, instanceName, fmuResourceLocation, functions->logger,
                                        functions->componentEnvironment, loggingOn);
     if (inst == NULL) {
         rejected(functions, instanceName, "fmi2Instantiate: out of memory");
@@ -152,7 +152,7 @@ static const PMVariable* find_variable(PMInstance* inst, fmi2ValueReference vr, 
     const PMModel* m = inst->model;
     if (vr >= 1 && vr <= m->nVariables && m->variables[vr - 1].type == type) return &m->variables[vr - 1];
     uc_log_status(&inst->log, fmi2Error, "%s: unknown value reference %u for type %s", function, vr,
-                  type == PM_REAL ? "Real" : "Boolean");
+                  type == PM_REAL ? "Real" : type == PM_INTEGER ? "Integer" : "Boolean");
     return NULL;
 }
 
@@ -165,11 +165,11 @@ static fmi2Status check_arrays(PMInstance* inst, const void* vr, size_t nvr, con
     return fmi2OK;
 }
 
-/* Reads nvr values; outputs read in initialization mode are computed from the current parameters and inputs. */
+/* Reads nvr values into reals (Real) or ints (Boolean, Integer: both int in FMI 2.0); outputs read in
+ * initialization mode are computed from the current parameters and inputs. */
 static fmi2Status get_values(PMInstance* inst, const fmi2ValueReference vr[], size_t nvr, PMType type,
-                             fmi2Real* reals, fmi2Boolean* booleans, const char* function) {
-    if (check_arrays(inst, vr, nvr, type == PM_REAL ? (const void*)reals : (const void*)booleans, function) !=
-        fmi2OK) {
+                             fmi2Real* reals, int* ints, const char* function) {
+    if (check_arrays(inst, vr, nvr, type == PM_REAL ? (const void*)reals : (const void*)ints, function) != fmi2OK) {
         return fmi2Error;
     }
     for (size_t i = 0; i < nvr; ++i) {
@@ -182,8 +182,10 @@ static fmi2Status get_values(PMInstance* inst, const fmi2ValueReference vr[], si
         double value = *pm_value(inst, v);
         if (type == PM_REAL) {
             reals[i] = value;
+        } else if (type == PM_INTEGER) {
+            ints[i] = (int)value;
         } else {
-            booleans[i] = value != 0.0 ? fmi2True : fmi2False;
+            ints[i] = value != 0.0 ? fmi2True : fmi2False;
         }
     }
     return fmi2OK;
@@ -208,14 +210,13 @@ static fmi2Status check_settable(PMInstance* inst, const PMVariable* v, double v
 }
 
 static fmi2Status set_values(PMInstance* inst, const fmi2ValueReference vr[], size_t nvr, PMType type,
-                             const fmi2Real* reals, const fmi2Boolean* booleans, const char* function) {
-    if (check_arrays(inst, vr, nvr, type == PM_REAL ? (const void*)reals : (const void*)booleans, function) !=
-        fmi2OK) {
+                             const fmi2Real* reals, const int* ints, const char* function) {
+    if (check_arrays(inst, vr, nvr, type == PM_REAL ? (const void*)reals : (const void*)ints, function) != fmi2OK) {
         return fmi2Error;
     }
     for (size_t i = 0; i < nvr; ++i) {
         const PMVariable* v = find_variable(inst, vr[i], type, function);
-        double value = type == PM_REAL ? reals[i] : (booleans[i] != fmi2False ? 1.0 : 0.0);
+        double value = type == PM_REAL ? reals[i] : type == PM_INTEGER ? (double)ints[i] : (ints[i] != fmi2False ? 1.0 : 0.0);
         if (v == NULL || check_settable(inst, v, value, function) != fmi2OK) return fmi2Error;
         double* target = pm_value(inst, v);
         if (*target == value) continue;
@@ -241,23 +242,21 @@ fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t
     GUARDED(c, MASK_SET, "fmi2SetBoolean", set_values(inst, vr, nvr, PM_BOOLEAN, NULL, value, "fmi2SetBoolean"));
 }
 
-/* A partner FMU has no Integer and no String variables: any value reference is unknown. */
+fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
+    GUARDED(c, MASK_GET, "fmi2GetInteger", get_values(inst, vr, nvr, PM_INTEGER, NULL, value, "fmi2GetInteger"));
+}
+
+fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Integer value[]) {
+    GUARDED(c, MASK_SET, "fmi2SetInteger", set_values(inst, vr, nvr, PM_INTEGER, NULL, value, "fmi2SetInteger"));
+}
+
+/* A partner FMU has no String variables: any value reference is unknown. */
 static fmi2Status no_variables(PMInstance* inst, const fmi2ValueReference vr[], size_t nvr, const char* type,
                                const char* function) {
     if (nvr == 0) return fmi2OK;
     uc_log_status(&inst->log, fmi2Error, "%s: unknown value reference %u for type %s (there are none)", function,
                   vr != NULL ? vr[0] : 0u, type);
     return fmi2Error;
-}
-
-fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
-    (void)value;
-    GUARDED(c, MASK_GET, "fmi2GetInteger", no_variables(inst, vr, nvr, "Integer", "fmi2GetInteger"));
-}
-
-fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Integer value[]) {
-    (void)value;
-    GUARDED(c, MASK_SET, "fmi2SetInteger", no_variables(inst, vr, nvr, "Integer", "fmi2SetInteger"));
 }
 
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
@@ -326,6 +325,8 @@ static fmi2Status set_state(PMInstance* inst, fmi2FMUstate state) {
     inst->stopTime = s->stopTime;
     inst->time = s->time;
     memcpy(inst->data, s->data, inst->model->dataSize);
+    /* the derived data of the restored parameters (a state of another instance may have other ones) */
+    if (inst->ready && pm_rebuild_derived(inst, "fmi2SetFMUstate") != fmi2OK) return fmi2Error;
     uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "fmi2SetFMUstate: restored state %s at t = %.17g",
            pm_state_name(inst->state), inst->time);
     return fmi2OK;
@@ -483,7 +484,7 @@ static fmi2Status do_step(PMInstance* inst, double tc, double h) {
     }
     inst->msg[0] = '\0';
     /* The FMU's own time, not tc: the master's tc carries its round-off. */
-    if (inst->model->do_step(inst->data, inst->time, h, inst->msg, sizeof inst->msg) != 0) {
+    if (inst->model->do_step(inst->data, inst->derived, inst->time, h, inst->msg, sizeof inst->msg) != 0) {
         uc_log_status(&inst->log, fmi2Error, "fmi2DoStep: step from t = %.17g to %.17g failed: %s", inst->time,
                       inst->time + h, inst->msg);
         return fmi2Error;

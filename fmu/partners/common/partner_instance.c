@@ -12,13 +12,52 @@ static char* copy_string(const char* s) {
     return copy;
 }
 
-PMInstance* pm_instance_new(const PMModel* model, const char* instanceName, fmi2CallbackLogger logger,
-                            fmi2ComponentEnvironment environment, int loggingOn) {
+static int hex_value(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+int pm_file_uri_to_path(const char* uri, char* path, size_t size) {
+    if (uri == NULL || path == NULL || size == 0 || strncmp(uri, "file:", 5) != 0) return 1;
+    const char* s = uri + 5;
+    if (strncmp(s, "//", 2) == 0) { /* an authority: empty or localhost */
+        s += 2;
+        if (strncmp(s, "localhost", 9) == 0) s += 9;
+    }
+    if (*s != '/') return 1;
+    size_t n = 0;
+    for (; *s != '\0'; ++s) {
+        char c = *s;
+        if (c == '%') {
+            const int hi = hex_value(s[1]), lo = hi < 0 ? -1 : hex_value(s[2]);
+            if (hi < 0 || lo < 0 || (hi == 0 && lo == 0)) return 1;
+            c = (char)(hi * 16 + lo);
+            s += 2;
+        }
+        if (n + 1 >= size) return 1;
+        path[n++] = c;
+    }
+    path[n] = '\0';
+    return 0;
+}
+
+PMInstance* pm_instance_new(const PMModel* model, const char* instanceName, const char* resourceLocation,
+                            fmi2CallbackLogger logger, fmi2ComponentEnvironment environment, int loggingOn) {
     PMInstance* inst = calloc(1, sizeof *inst);
     if (inst == NULL) return NULL;
     inst->model = model;
     inst->instanceName = copy_string(instanceName);
     inst->data = calloc(1, model->dataSize);
+    if (resourceLocation != NULL) { /* not a local file URI: no resources (a model needing them says so) */
+        const size_t size = strlen(resourceLocation) + 1;
+        inst->resources = malloc(size);
+        if (inst->resources != NULL && pm_file_uri_to_path(resourceLocation, inst->resources, size) != 0) {
+            free(inst->resources);
+            inst->resources = NULL;
+        }
+    }
     if (inst->instanceName == NULL || inst->data == NULL) {
         pm_instance_free(inst);
         return NULL;
@@ -33,6 +72,8 @@ PMInstance* pm_instance_new(const PMModel* model, const char* instanceName, fmi2
 
 void pm_instance_free(PMInstance* inst) {
     if (inst == NULL) return;
+    if (inst->derived != NULL) inst->model->release(inst->derived);
+    free(inst->resources);
     free(inst->data);
     free(inst->instanceName);
     free(inst);
@@ -96,13 +137,27 @@ fmi2Status pm_ensure_initialized(PMInstance* inst, const char* function) {
         uc_log_status(&inst->log, fmi2Error, "%s: invalid parameter: %s", function, inst->msg);
         return fmi2Error;
     }
-    if (m->initialize(inst->data, inst->startTime, inst->msg, sizeof inst->msg) != 0) {
+    if (pm_rebuild_derived(inst, function) != fmi2OK) return fmi2Error;
+    if (m->initialize(inst->data, inst->derived, inst->startTime, inst->msg, sizeof inst->msg) != 0) {
         uc_log_status(&inst->log, fmi2Error, "%s: initialization failed: %s", function, inst->msg);
         return fmi2Error;
     }
     inst->time = inst->startTime;
     inst->ready = 1;
     uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: %s initialized at t = %.9g", function, m->identifier, inst->time);
+    return fmi2OK;
+}
+
+fmi2Status pm_rebuild_derived(PMInstance* inst, const char* function) {
+    const PMModel* m = inst->model;
+    if (m->build == NULL) return fmi2OK;
+    if (inst->derived != NULL) m->release(inst->derived);
+    inst->msg[0] = '\0';
+    inst->derived = m->build(inst->data, inst->resources, inst->msg, sizeof inst->msg);
+    if (inst->derived == NULL) {
+        uc_log_status(&inst->log, fmi2Error, "%s: %s", function, inst->msg[0] != '\0' ? inst->msg : "out of memory");
+        return fmi2Error;
+    }
     return fmi2OK;
 }
 

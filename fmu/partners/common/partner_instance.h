@@ -35,11 +35,13 @@ typedef struct PMInstance {
     double time;                /* startTime, then the end of the last step */
     int ready;                  /* data holds the initialization of the current parameters and inputs (or a step) */
     void* data;                 /* model->dataSize bytes: parameters, inputs, states, outputs */
+    char* resources;            /* the resources directory as a path (from fmuResourceLocation); may be NULL */
+    void* derived;              /* the model's derived data of the current parameters (model->build); may be NULL */
     char msg[PM_MSG_SIZE];      /* scratch for messages of the model */
 } PMInstance;
 
-PMInstance* pm_instance_new(const PMModel* model, const char* instanceName, fmi2CallbackLogger logger,
-                            fmi2ComponentEnvironment environment, int loggingOn);
+PMInstance* pm_instance_new(const PMModel* model, const char* instanceName, const char* resourceLocation,
+                            fmi2CallbackLogger logger, fmi2ComponentEnvironment environment, int loggingOn);
 void pm_instance_free(PMInstance* inst);
 
 /* Back to "instantiated" with every start value. */
@@ -54,8 +56,15 @@ fmi2Status pm_instance_finish(PMInstance* inst, fmi2Status status);
 /* The double of variable v in the instance's data. */
 double* pm_value(PMInstance* inst, const PMVariable* v);
 
-/* Range checks of every parameter, then the model's own check, then its initialization. */
+/* Range checks of every parameter, then the model's own check, its derived data, then its initialization. */
 fmi2Status pm_ensure_initialized(PMInstance* inst, const char* function);
+
+/* The model's derived data rebuilt from the parameters in the data (after a state was restored). */
+fmi2Status pm_rebuild_derived(PMInstance* inst, const char* function);
+
+/* The local path of a file: URI (file:///p, file:/p, file://localhost/p; %XX decoded) in path; 0 on
+   success, non-zero if it is not such a URI or does not fit in size bytes. */
+int pm_file_uri_to_path(const char* uri, char* path, size_t size);
 
 const char* pm_state_name(PMMachineState state);
 

@@ -98,7 +98,8 @@ static int towed_body_check(const void* data, char* msg, size_t msgSize) {
     return 0;
 }
 
-static int towed_body_initialize(void* data, double t0, char* msg, size_t msgSize) {
+static int towed_body_initialize(void* data, const void* derived, double t0, char* msg, size_t msgSize) {
+    (void)derived;
     (void)t0, (void)msg, (void)msgSize;
     TowedBodyData* d = data;
     for (int i = 0; i < 3; ++i) {
@@ -114,7 +115,8 @@ static void derivatives(const TowedBodyData* d, const double* x, double* dx) {
     acceleration(d, x + 3, d->cableForce, dx + 3);
 }
 
-static int towed_body_do_step(void* data, double t, double h, char* msg, size_t msgSize) {
+static int towed_body_do_step(void* data, const void* derived, double t, double h, char* msg, size_t msgSize) {
+    (void)derived;
     (void)t, (void)msg, (void)msgSize;
     TowedBodyData* d = data;
     if (integrating(d)) {
@@ -210,4 +212,6 @@ const PMModel kPartnerModel = {
     towed_body_check,
     towed_body_initialize,
     towed_body_do_step,
+    NULL,
+    NULL,
 };

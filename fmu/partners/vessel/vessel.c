@@ -158,7 +158,8 @@ static int vessel_check(const void* data, char* msg, size_t msgSize) {
     return 0;
 }
 
-static int vessel_initialize(void* data, double t0, char* msg, size_t msgSize) {
+static int vessel_initialize(void* data, const void* derived, double t0, char* msg, size_t msgSize) {
+    (void)derived;
     (void)msg, (void)msgSize;
     VesselData* d = data;
     d->state[X] = d->x0;
@@ -170,7 +171,8 @@ static int vessel_initialize(void* data, double t0, char* msg, size_t msgSize) {
     return 0;
 }
 
-static int vessel_do_step(void* data, double t, double h, char* msg, size_t msgSize) {
+static int vessel_do_step(void* data, const void* derived, double t, double h, char* msg, size_t msgSize) {
+    (void)derived;
     (void)msg, (void)msgSize;
     VesselData* d = data;
     int n = (int)ceil(h / d->maxSubstep - 1e-12);
@@ -276,4 +278,6 @@ const PMModel kPartnerModel = {
     vessel_check,
     vessel_initialize,
     vessel_do_step,
+    NULL,
+    NULL,
 };

@@ -1,0 +1,152 @@
+"""The VesselRAO partner FMU: the tow-point motion is the RAO response to the cable's own sea.
+
+- In a regular wave at a tabulated period and heading, the motion of every degree of freedom is the RAO
+  of the shipped table times the wave amplitude, and the tow point at a lever arm moves by translation +
+  rotation x lever arm, with velocity and acceleration the exact time derivatives (closed form, round-off).
+- Between the table's periods and headings, the RAO is the complex bilinear interpolation of the table.
+- The vessel's waveElevation at its reference point equals the cable FMU's waveElevation at the same point
+  in regular and JONSWAP seas for several seeds (one sea, generated identically in C and C++).
+- Breaking waves and NaN parameters are refused naming the variable.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from ucable.fmu import CableFMU, FMICallException
+from ucable.rao_box import DEFAULT_OUT as RAO_CSV
+from ucable.rao_box import read as read_rao
+from ucable.system import partner_fmu
+
+
+@pytest.fixture(scope="module")
+def rao_fmu(fmu_file):
+    return partner_fmu("VesselRAO")
+
+
+@pytest.fixture(scope="module")
+def table():
+    return read_rao(RAO_CSV)
+
+
+@pytest.fixture
+def make():
+    made = []
+
+    def factory(path, **kwargs):
+        unit = CableFMU(path, **kwargs)
+        made.append(unit)
+        return unit
+
+    yield factory
+    for u in made:
+        if u.messages:
+            print(f"--- log of {u.slave.instanceName}:\n{u.log_text()}")
+        u.free()
+
+
+def complex_rao(table, period, heading):
+    """Complex RAOs (rotations in rad/m) by bilinear interpolation of the table in period and heading
+    (periodic over 360 deg): the law the FMU states."""
+    periods, headings = np.unique(table[:, 0]), np.unique(table[:, 1])
+    cells = {(r[0], r[1]): r for r in table}
+
+    def at(p, h):
+        r = cells[(p, h)]
+        amp = r[2::2] * np.where(np.arange(6) >= 3, math.pi / 180.0, 1.0)
+        return amp * np.exp(1j * np.radians(r[3::2]))
+
+    i = np.searchsorted(periods, period) - 1
+    wp = (period - periods[i]) / (periods[i + 1] - periods[i])
+    h = heading % 360.0
+    j = np.searchsorted(headings, h, side="right") - 1
+    h0, h1 = headings[j], headings[(j + 1) % len(headings)]
+    wh = (h - h0) / ((h1 - h0) % 360.0)
+    return ((1 - wp) * ((1 - wh) * at(periods[i], h0) + wh * at(periods[i], h1))
+            + wp * ((1 - wh) * at(periods[i + 1], h0) + wh * at(periods[i + 1], h1)))
+
+
+def expected_tow(R, a, w, kX, t, lever, heading, x0, y0):
+    """Tow point position, velocity, acceleration in a regular wave: motions Re[R a e^{-i(w t - kX)}]."""
+    z = R * a * np.exp(-1j * (w * t - kX))
+    s, v, acc = z.real, (-1j * w * z).real, (-w * w * z).real
+    ch, sh = math.cos(heading), math.sin(heading)
+    out = []
+    for k, q in enumerate((s, v, acc)):
+        body = q[:3] + np.cross(q[3:], lever) + (lever if k == 0 else 0.0)
+        out.append(np.array([ch * body[0] - sh * body[1], sh * body[0] + ch * body[1], body[2]]))
+    out[0][:2] += (x0, y0)
+    return out, s
+
+
+TOW = [f"tow.{q}" for q in ("x", "y", "z", "vx", "vy", "vz", "ax", "ay", "az")]
+MOTIONS = ["surge", "sway", "heave", "roll", "pitch", "yaw"]
+
+
+@pytest.mark.parametrize("period, relative_heading", [(8.0, 180.0), (10.0, 135.0), (8.25, 100.0)])
+def test_regular_wave_motion_is_the_rao_times_the_amplitude(rao_fmu, make, table, period, relative_heading):
+    """Wave H 2 m travelling along 0.4 rad, vessel at (120, -35) m heading 0.4 - relative heading, tow
+    point 30 m aft, 3 m to port and 4 m up. Tolerance: round-off of sums of a few terms of size
+    |R| a w^2 ~ 1 (1e-12 absolute)."""
+    H, direction, x0, y0 = 2.0, 0.4, 120.0, -35.0
+    heading = direction - math.radians(relative_heading)
+    lever = np.array([-30.0, 3.0, 4.0])
+    params = {"waves.mode": 1, "waves.height": H, "waves.period": period, "waves.direction": direction,
+              "x0": x0, "y0": y0, "heading": heading, "towPoint.x": lever[0], "towPoint.y": lever[1],
+              "towPoint.z": lever[2]}
+    v = make(rao_fmu, parameters=params)
+    v.initialize(0.0, 60.0)
+    R = complex_rao(table, period, relative_heading)
+    if period == 8.0:  # a tabulated point: the table's own row
+        row = table[(table[:, 0] == 8.0) & (table[:, 1] == relative_heading)][0]
+        assert np.allclose(np.abs(R[:3]), row[2:8:2], rtol=1e-12)
+    w = 2 * math.pi / period
+    k = w * w / 9.81 / math.tanh(w * w / 9.81 * 1000.0)  # deep water to 1e-30 at 1000 m
+    kX = k * (x0 * math.cos(direction) + y0 * math.sin(direction))
+    t = 0.0
+    for step in range(25):
+        (pos, vel, acc), motions = expected_tow(R, H / 2, w, kX, t, lever, heading, x0, y0)
+        got = v.get_reals(TOW)
+        assert np.allclose(got, np.concatenate([pos, vel, acc]), rtol=0, atol=1e-11), (t, got)
+        assert np.allclose(v.get_reals(MOTIONS), motions, rtol=0, atol=1e-12)
+        assert v.get("waveElevation") == pytest.approx(H / 2 * math.cos(kX - w * t), abs=1e-12)
+        v.do_step(0.4, t=t)
+        t += 0.4
+    assert np.max(np.abs(R[2])) > 0.3  # the wave moves the vessel: the test compares something
+
+
+@pytest.mark.parametrize("mode, seed", [(1, 1), (2, 1), (2, 0), (2, 31337)])
+def test_the_vessel_and_the_cable_see_the_same_sea(rao_fmu, fmu_file, make, mode, seed):
+    """The cable's tow point held at the vessel's reference point (x0, y0): the two waveElevation
+    outputs agree to round-off at every communication point (the sea ramped in over 10 s)."""
+    waves = {"waves.mode": mode, "waves.height": 3.0, "waves.period": 9.0, "waves.seed": seed,
+             "waves.direction": 2.2, "waves.nComponents": 150, "waves.rampTime": 10.0, "waterDepth": 300.0}
+    x0, y0 = -60.0, 25.0
+    v = make(rao_fmu, parameters={**waves, "x0": x0, "y0": y0})
+    c = make(fmu_file, parameters={**waves, "length": 50.0, "nElements": 2})
+    v.initialize(0.0, 40.0)
+    c.initialize(0.0, 40.0, inputs={"tow.x": x0, "tow.y": y0, "tow.z": 0.0})
+    etas = []
+    for k in range(40):
+        v.do_step(0.5, t=0.5 * k)
+        c.do_step(0.5, t=0.5 * k)
+        etas.append((v.get("waveElevation"), c.get("waveElevation")))
+    etas = np.array(etas)
+    assert np.max(np.abs(etas[:, 0] - etas[:, 1])) < 1e-12 * 3.0
+    assert np.std(etas[:, 0]) > 0.3  # a sea, not calm water
+
+
+def test_bad_wave_parameters_are_errors_naming_the_variable(rao_fmu, make):
+    v = make(rao_fmu, parameters={"waves.mode": 1, "waves.height": 12.0, "waves.period": 5.0}, instance_name="steep")
+    with pytest.raises(FMICallException):
+        v.initialize(0.0, 10.0)
+    assert any("waves.height = 12 is too steep" in m for _, _, m in v.messages), v.log_text()
+    u = make(rao_fmu, instance_name="nan")
+    with pytest.raises(FMICallException):
+        u.set({"waves.period": float("nan")})
+    assert any("waves.period = nan" in m for _, _, m in u.messages), u.log_text()
+    w = make(rao_fmu, parameters={"waves.mode": 3}, instance_name="mode")
+    with pytest.raises(FMICallException):
+        w.initialize(0.0, 10.0)
+    assert any("waves.mode = 3 is outside [0, 2]" in m for _, _, m in w.messages), w.log_text()
