@@ -15,8 +15,12 @@ constexpr int kLoadQuadraturePoints = 3;
 }  // namespace
 
 AxialProps CableModel::scaled_axial(const SectionProps& section, const Loads& loads) const {
-    return AxialProps{section.axial.EA, section.axial.damping, loads.axialStiffnessScale,
-                      section.axial.tensionOnly && !loads.twoSidedAxial};
+    // The static solver's soft cable: the stiffness scale is a fraction of the line's largest EA,
+    // so every section is softened to the same EA (a section already softer keeps its own), and
+    // no section strains much more than the others on the way to equilibrium.
+    double cap = loads.axialStiffnessScale;
+    if (sections_.size() > 1 && cap < 1.0) cap = std::min(1.0, cap * line_.EA / section.axial.EA);
+    return AxialProps{section.axial.EA, section.axial.damping, cap, section.axial.tensionOnly && !loads.twoSidedAxial};
 }
 
 namespace {
