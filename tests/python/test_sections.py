@@ -1,5 +1,6 @@
 """Lines of several sections and attachments through the FMI (docs/lines.md): inadmissible sections
-and attachments are errors naming the variable; a lazy-wave umbilical takes its shape."""
+and attachments are errors naming the variable; a lazy-wave umbilical (the one of docs/lines.md)
+takes its shape."""
 
 from __future__ import annotations
 
@@ -9,6 +10,8 @@ import numpy as np
 import pytest
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import fmi2Error
+
+from ucable.lines_figure import LAZY_WAVE, SECTIONS, VESSEL_Z
 
 
 def _section(k: int, **values) -> dict:
@@ -40,24 +43,9 @@ def test_bad_sections_and_attachments_are_errors_naming_the_variable(make_cable,
     assert any(name in text for text in errors), errors
 
 
-# A lazy-wave umbilical in 300 m of water: 320 m hanging from the vessel, 120 m with buoyancy modules
-# (an equivalent diameter whose displacement exceeds the weight), 260 m down to the anchor on the
-# seabed. Sections with rigid joints, the umbilical's bending stiffness throughout.
-UMBILICAL = dict(diameter=0.15, massPerLength=35.0, EA=5e8, EI=2e4, GJ=2e4, axialDamping=5e6,
-                 Cdn=1.2, Cdt=0.01, Can=1.0, Cat=0.0)
-LAZY_WAVE = {
-    "nSections": 3, "bottomEnd": 1, "anchor.x": -520.0, "anchor.y": 0.0, "anchor.z": -300.0,
-    "waterDepth": 300.0, "enableSeabed": True, "seabedStiffness": 1e5, "seabedDamping": 1e4,
-    "initialDirection.x": -1.0, "initialDirection.z": -1.0,
-    **_section(1, length=320.0, nElements=16, **UMBILICAL),
-    **_section(2, length=120.0, nElements=12, **{**UMBILICAL, "diameter": 0.35, "massPerLength": 70.0}),
-    **_section(3, length=260.0, nElements=13, **UMBILICAL),
-}
-
-
 def test_a_lazy_wave_umbilical_hogs_over_its_buoyancy_section(make_cable):
     cable = make_cable(parameters=LAZY_WAVE)
-    cable.initialize(inputs={"tow.z": -10.0})
+    cable.initialize(inputs={"tow.z": VESSEL_Z})
     shape = cable.shape()
     x, z = shape["shape.x"], shape["shape.z"]
     s = np.linspace(0.0, 700.0, 21)
@@ -71,8 +59,11 @@ def test_a_lazy_wave_umbilical_hogs_over_its_buoyancy_section(make_cable):
     assert cable.get("touchdownArcLength") < 700.0 and cable.get("seabedContactForce") > 0.0
     # the whole weight in water and the seabed's reaction balance the two ends' forces
     rho, g = 1025.0, 9.81
-    wet = sum((m - rho * math.pi * d * d / 4) * L * g for L, d, m in
-              ((320.0, 0.15, 35.0), (120.0, 0.35, 70.0), (260.0, 0.15, 35.0)))
+    wet = sum((p["massPerLength"] - rho * math.pi * p["diameter"] ** 2 / 4) * length * g
+              for length, _, p in SECTIONS)
     vertical = cable.get("towForce.z") + cable.get("endForce.z") - cable.get("seabedContactForce")
     assert vertical == pytest.approx(-wet, rel=1e-6)
     assert np.all(np.diff(x) < 0.0)  # from the vessel toward the anchor, no loop
+    spacing = 700.0 / 20
+    assert np.all(np.hypot(np.diff(x), np.diff(z)) > 0.95 * spacing)  # no fold between stations
+    assert cable.get("minTension") > 0.0
