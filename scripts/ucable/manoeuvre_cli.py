@@ -4,6 +4,9 @@ Writes out/manoeuvre/<name>/<name>.csv (one row per communication point) and two
 <name>_time.png (tow tension, speed and heading, far-end depth, plan-view tracks) and
 <name>_shapes.png (cable shapes at several times in the vertical plane and in plan view, like the
 paper's Figs. 3-4).
+
+The scene heave-lowering (ucable.heave_lowering) is a body hanging from the VesselRAO FMU in waves:
+heave-lowering.csv and heave-lowering.png (tensions, snap events, motions).
 """
 
 from __future__ import annotations
@@ -15,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
+from . import heave_lowering
 from .cosim import CABLE_OUTPUTS, COUPLINGS, MASTERS, run_scene
 from .fmu import NUM_STATIONS
 from .partners import TowedBodyParameters
@@ -25,6 +29,7 @@ from .scenes import (DEFAULT_T_END, NAMES, PAPER_SETTLE, RAMP, SNAPSHOTS, SPEEDS
 from .steady_tow import KNOT, solve_steady_tow
 
 EPS_LIST = (0.10, 0.05, 0.02, 0.01)
+HEAVE_LOWERING = "heave-lowering"
 
 
 def parse_args(argv):
@@ -34,18 +39,26 @@ def parse_args(argv):
                     "towing the 300 m Hopland cable (UnderwaterCable FMU) through fmpy, "
                     "Gauss-Seidel coupling. Manoeuvres: " + ", ".join(NAMES) + ".",
         formatter_class=argparse.ArgumentDefaultsHelpFormatter)
-    p.add_argument("name", choices=NAMES, help="manoeuvre")
-    p.add_argument("--step", type=float, default=0.5, help="communication step [s]")
+    p.add_argument("name", choices=NAMES + (HEAVE_LOWERING,),
+                   help=f"manoeuvre, or {HEAVE_LOWERING}: a 2 t body on 500 m of umbilical hanging from an 80 m "
+                        "vessel (VesselRAO FMU) in a JONSWAP sea")
+    p.add_argument("--step", type=float, default=None,
+                   help=f"communication step [s] (default 0.5; {HEAVE_LOWERING} 0.2)")
     p.add_argument("--nElements", type=int, default=20, help="cable elements")
     p.add_argument("--t-end", type=float, default=None,
                    help="simulated time [s] (default per manoeuvre: "
-                        + ", ".join(f"{k} {v:g}" for k, v in DEFAULT_T_END.items()) + ")")
+                        + ", ".join(f"{k} {v:g}" for k, v in DEFAULT_T_END.items())
+                        + f", {HEAVE_LOWERING} {heave_lowering.DEFAULT_T_END:g})")
     p.add_argument("--body", choices=COUPLINGS, default="none",
                    help="towed body (400 kg, 0.1 m3, 0.3 m2 drag area): none = free cable end, "
                         "internal = FMU bottomEnd 2, external = Python body via end.* (bottomEnd 3)")
     p.add_argument("--master", choices=MASTERS, default="gauss-seidel")
     p.add_argument("--input-derivatives", action=argparse.BooleanOptionalAction, default=True,
                    help="pass tow (and body) accelerations via fmi2SetRealInputDerivatives")
+    p.add_argument("--hs", type=float, default=3.0, help=f"{HEAVE_LOWERING}: significant wave height [m]")
+    p.add_argument("--tp", type=float, default=9.0, help=f"{HEAVE_LOWERING}: peak period [s]")
+    p.add_argument("--seed", type=int, default=1, help=f"{HEAVE_LOWERING}: waves.seed")
+    p.add_argument("--components", type=int, default=200, help=f"{HEAVE_LOWERING}: waves.nComponents")
     p.add_argument("--out", type=Path, default=None, help="output directory (default out/manoeuvre/<name>)")
     p.add_argument("--fmu", type=Path, default=None, help="FMU (default build/UnderwaterCable.fmu or $UC_FMU)")
     return p.parse_args(argv)
@@ -178,13 +191,38 @@ def plot(out: Path, name: str, r, args, settle) -> list:
     return files
 
 
+def main_heave_lowering(args, fmu, out: Path) -> int:
+    scene = heave_lowering.Scene(
+        t_end=heave_lowering.DEFAULT_T_END if args.t_end is None else args.t_end,
+        step=0.2 if args.step is None else args.step, n_elements=args.nElements, hs=args.hs, tp=args.tp,
+        seed=args.seed, components=args.components)
+    bar = ProgressBar(scene.t_end, label=args.name)
+    r = heave_lowering.run(scene, fmu, progress=bar.update)
+    bar.close(f"simulated {scene.t_end:g} s in {len(r.time) - 1} steps, {r.cpu:.2f} s CPU "
+              f"(real-time factor {scene.t_end / r.cpu:.0f})")
+    files = [out / f"{args.name}.csv", out / f"{args.name}.png"]
+    heave_lowering.write_csv(files[0], r)
+    heave_lowering.plot(files[1], r)
+    s = r.summary()
+    print(f"tow tension: min {s['towTension_min'] / 1e3:.1f} kN, max {s['towTension_max'] / 1e3:.1f} kN, "
+          f"mean {s['towTension_mean'] / 1e3:.1f} kN, std {s['towTension_std'] / 1e3:.2f} kN (after the ramp); "
+          f"least axial force {s['minTension_min'] / 1e3:.1f} kN, snap events {s['snap_events']}")
+    print(f"heave std after the ramp: top {s['tow_heave_std']:.2f} m, body {s['body_heave_std']:.2f} m")
+    print("wrote:\n  " + "\n  ".join(str(f) for f in files))
+    return 0
+
+
 def main(argv=None) -> int:
     args = parse_args(sys.argv[1:] if argv is None else argv)
-    if args.step <= 0:
+    if args.step is not None and args.step <= 0:
         sys.exit("--step must be > 0")
     fmu = args.fmu if args.fmu is not None else require_fmu()
     out = args.out if args.out is not None else REPO_ROOT / "out" / "manoeuvre" / args.name
     out.mkdir(parents=True, exist_ok=True)
+    if args.name == HEAVE_LOWERING:
+        return main_heave_lowering(args, fmu, out)
+    if args.step is None:
+        args.step = 0.5
     scene = make_scene(args.name, t_end=args.t_end, step=args.step, n_elements=args.nElements,
                        coupling=args.body, master=args.master, body=TowedBodyParameters(),
                        input_derivatives=args.input_derivatives)

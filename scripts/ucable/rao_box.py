@@ -14,8 +14,9 @@ relative to the bow), with E(.) the average of the wave's phase factor exp(i k.x
   C55 = rho g B L^3 / 12 (the waterplane's inertia). Inertia: M = rho L B T, radii of gyration
   0.35 B (roll) and 0.25 L (pitch). Added mass: heave rho pi B^2 / 8 per metre (the low-frequency value
   of a half circle of diameter B), pitch the same strip added mass over the length (A33 L^2 / 12), roll
-  20 % of the roll inertia. Damping: 20 % of critical in heave and pitch, 10 % in roll (radiation and
-  viscous damping lumped into one linear ratio).
+  20 % of the roll inertia. Damping: 40 % of critical in heave and pitch, 10 % in roll (radiation and
+  viscous damping lumped into one linear ratio; a box has little pitch and heave resonance, the peaks
+  stay near 1.4 times the exciting wave).
 - surge, sway: the vessel moves with the water: the horizontal particle displacement of the wave,
   averaged over the draught ((1 - exp(-k T)) / (k T)) and over the waterplane, resolved on the body axes.
 - yaw: the rigid rotation that best fits (least squares) that horizontal displacement field over the
@@ -40,7 +41,7 @@ from .paths import REPO_ROOT
 RHO, G = 1025.0, 9.81
 L, B, T = 80.0, 18.0, 5.0
 GM = 2.0
-ZETA = {"heave": 0.2, "roll": 0.1, "pitch": 0.2}
+ZETA = {"heave": 0.4, "roll": 0.1, "pitch": 0.4}
 DEFAULT_OUT = REPO_ROOT / "fmu" / "partners" / "vessel_rao" / "resources" / "rao.csv"
 PERIODS = np.concatenate([np.arange(2.0, 25.0, 0.5), np.arange(25.0, 40.5, 1.0)])
 HEADINGS = np.arange(0.0, 360.0, 15.0)

@@ -104,16 +104,17 @@ def test_regular_wave_motion_is_the_rao_times_the_amplitude(rao_fmu, make, table
     w = 2 * math.pi / period
     k = w * w / 9.81 / math.tanh(w * w / 9.81 * 1000.0)  # deep water to 1e-30 at 1000 m
     kX = k * (x0 * math.cos(direction) + y0 * math.sin(direction))
-    t = 0.0
+    t, heights = 0.0, []
     for step in range(25):
         (pos, vel, acc), motions = expected_tow(R, H / 2, w, kX, t, lever, heading, x0, y0)
         got = v.get_reals(TOW)
+        heights.append(got[2])
         assert np.allclose(got, np.concatenate([pos, vel, acc]), rtol=0, atol=1e-11), (t, got)
         assert np.allclose(v.get_reals(MOTIONS), motions, rtol=0, atol=1e-12)
         assert v.get("waveElevation") == pytest.approx(H / 2 * math.cos(kX - w * t), abs=1e-12)
         v.do_step(0.4, t=t)
         t += 0.4
-    assert np.max(np.abs(R[2])) > 0.3  # the wave moves the vessel: the test compares something
+    assert np.ptp(heights) > 0.4  # the wave moves the tow point: the test compares something
 
 
 @pytest.mark.parametrize("mode, seed", [(1, 1), (2, 1), (2, 0), (2, 31337)])
