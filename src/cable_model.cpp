@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 
 namespace uc {
 namespace {
@@ -12,9 +14,13 @@ constexpr int kLoadQuadraturePoints = 3;
 
 }  // namespace
 
-AxialProps CableModel::scaled_axial(const Loads& loads) const {
-    return AxialProps{axial_.EA, axial_.damping, loads.axialStiffnessScale,
-                      axial_.tensionOnly && !loads.twoSidedAxial};
+AxialProps CableModel::scaled_axial(const SectionProps& section, const Loads& loads) const {
+    // The static solver's soft cable: the stiffness scale is a fraction of the line's largest EA,
+    // so every section is softened to the same EA (a section already softer keeps its own), and
+    // no section strains much more than the others on the way to equilibrium.
+    double cap = loads.axialStiffnessScale;
+    if (sections_.size() > 1 && cap < 1.0) cap = std::min(1.0, cap * line_.EA / section.axial.EA);
+    return AxialProps{section.axial.EA, section.axial.damping, cap, section.axial.tensionOnly && !loads.twoSidedAxial};
 }
 
 namespace {
@@ -80,62 +86,218 @@ void TowTrajectory::evaluate(double t, Vec3& p, Vec3& v, Vec3& a) const {
     a = a0 + s * (6.0 * c3_ + s * (12.0 * c4_ + s * (20.0 * c5_)));
 }
 
-CableModel::CableModel(const UCParams& params)
-    : params_(params), nElements_(params.nElements) {
-    EI_ = params.enableBending ? params.EI : 0.0;
-    tables_ = make_element_tables(params.length / nElements_, kLoadQuadraturePoints, 3);
-    tables_.axialModeWeight[1] = tables_.axialModeWeight[2] = kHigherStrainModeWeight;
-    fluid_.rho = params.waterDensity;
-    fluid_.gravity = params.gravity;
-    fluid_.massPerLength = params.massPerLength;
-    fluid_.diameter = params.diameter;
-    fluid_.area = kPi * params.diameter * params.diameter / 4.0;
-    fluid_.Cdn = params.Cdn;
-    fluid_.Cdt = params.Cdt;
-    fluid_.Can = params.Can;
-    fluid_.Cat = params.Cat;
-    fluid_.addedMass = params.enableAddedMass != 0;
-    axial_.EA = params.EA;
-    axial_.damping = params.axialDamping;
-    axial_.tensionOnly = params.enableCompression == 0;
-    // The material's Kelvin-Voigt time constant axialDamping / EA damps bending as well: it
-    // removes the element-scale bending waves (periods of milliseconds, which quadratic drag cannot
-    // damp at small amplitude) that a torque keeps exciting, and is negligible for the slow modes.
-    bendingDamping_ = EI_ * params.axialDamping / params.EA;
+CableModel::CableModel(const UCParams& params) : params_(params) {
+    build_sections(params);
+    build_mesh(params);
+    build_dof_map();
     topTangent_ = params.topEnd == UC_TOP_CLAMPED ? unit(params.topTangent) : Vec3(0, 0, -1);
     anchor_ = Vec3(params.anchor[0], params.anchor[1], params.anchor[2]);
+    body_ = PointBody{params.bodyMass, params.bodyVolume, params.bodyAddedMass, params.bodyCdA};
     std::string waveError;  // the parameters' check has refused waves that cannot be built
     sea_.build(params, waveError);
-    seabed_.enabled = params.enableSeabed != 0;
-    seabed_.depth = params.waterDepth;
-    seabed_.stiffness = params.seabedStiffness;
-    seabed_.damping = params.seabedDamping;
-    seabed_.friction = params.seabedFriction;
-    seabed_.smoothing = 0.05 * params.diameter;
     profile_.rows = params.currentProfileRows;
     for (int k = 0; k < kCurrentProfileRows; ++k) {
         profile_.depth[k] = params.currentProfileDepth[k];
         profile_.ux[k] = params.currentProfileX[k];
         profile_.uy[k] = params.currentProfileY[k];
     }
+}
 
+namespace {
+
+// The properties of one uniform piece of line, whether it comes from the scalar line parameters or
+// from section[k].
+struct SectionInput {
+    double length, diameter, massPerLength, EA, EI, axialDamping, GJ, Cdn, Cdt, Can, Cat;
+    int nElements, joint;
+};
+
+SectionInput uniform_line(const UCParams& p) {
+    return {p.length, p.diameter, p.massPerLength, p.EA, p.EI, p.axialDamping, p.GJ,
+            p.Cdn, p.Cdt, p.Can, p.Cat, p.nElements, 0};
+}
+
+SectionInput section_input(const UCSection& s) {
+    return {s.length, s.diameter, s.massPerLength, s.EA, s.EI, s.axialDamping, s.GJ,
+            s.Cdn, s.Cdt, s.Can, s.Cat, s.nElements, s.joint};
+}
+
+std::vector<int> section_elements(const UCParams& p) {
+    std::vector<int> n;
+    if (p.nSections <= 1) return {p.nElements};
+    for (int k = 0; k < p.nSections && k < UC_MAX_SECTIONS; ++k) n.push_back(p.section[k].nElements);
+    return n;
+}
+
+}  // namespace
+
+void CableModel::build_sections(const UCParams& p) {
+    std::vector<SectionInput> inputs;
+    if (p.nSections <= 1) {
+        inputs.push_back(uniform_line(p));
+    } else {
+        for (int k = 0; k < p.nSections && k < UC_MAX_SECTIONS; ++k) inputs.push_back(section_input(p.section[k]));
+    }
+    double s0 = 0.0;
+    for (const SectionInput& in : inputs) {
+        SectionProps s;
+        s.s0 = s0;
+        s.length = in.length;
+        s.fluid.rho = p.waterDensity;
+        s.fluid.gravity = p.gravity;
+        s.fluid.massPerLength = in.massPerLength;
+        s.fluid.diameter = in.diameter;
+        s.fluid.area = kPi * in.diameter * in.diameter / 4.0;
+        s.fluid.Cdn = in.Cdn;
+        s.fluid.Cdt = in.Cdt;
+        s.fluid.Can = in.Can;
+        s.fluid.Cat = in.Cat;
+        s.fluid.addedMass = p.enableAddedMass != 0;
+        s.axial.EA = in.EA;
+        s.axial.damping = in.axialDamping;
+        s.axial.tensionOnly = p.enableCompression == 0;
+        s.EI = p.enableBending ? in.EI : 0.0;
+        // The material's Kelvin-Voigt time constant axialDamping / EA damps bending as well: it
+        // removes the element-scale bending waves (periods of milliseconds, which quadratic drag
+        // cannot damp at small amplitude) that a torque keeps exciting, and is negligible for the
+        // slow modes.
+        s.bendingDamping = s.EI * in.axialDamping / in.EA;
+        s.GJ = in.GJ;
+        s.joint = in.joint;
+        s.seabed.enabled = p.enableSeabed != 0;
+        s.seabed.depth = p.waterDepth;
+        s.seabed.stiffness = p.seabedStiffness;
+        s.seabed.damping = p.seabedDamping;
+        s.seabed.friction = p.seabedFriction;
+        s.seabed.smoothing = 0.05 * in.diameter;
+        sections_.push_back(s);
+        s0 += in.length;
+    }
+    sections_.back().joint = 0;
+    if (sections_.size() == 1) {
+        const SectionInput in = uniform_line(p);
+        line_ = LineScales{in.length, in.massPerLength, in.EA, sections_[0].EI, in.diameter};
+    } else {
+        double mass = 0.0;
+        for (const SectionProps& s : sections_) {
+            mass += s.fluid.massPerLength * s.length;
+            line_.EA = std::max(line_.EA, s.axial.EA);
+            line_.EI = std::max(line_.EI, s.EI);
+            line_.diameter = std::max(line_.diameter, s.fluid.diameter);
+        }
+        line_.length = s0;
+        line_.massPerLength = mass / s0;
+    }
+}
+
+void CableModel::build_mesh(const UCParams& p) {
+    const std::vector<int> counts = section_elements(p);
+    // Attachments on the line, by arc length; those inside a section split it so a node sits there.
+    std::vector<std::pair<double, PointBody>> points;
+    for (int k = 0; k < p.nAttachments && k < UC_MAX_ATTACHMENTS; ++k) {
+        const UCAttachment& a = p.attachment[k];
+        points.push_back({a.s, PointBody{a.mass, a.volume, a.addedMass, a.CdA}});
+    }
+    std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    const double snap = 1e-9 * line_.length;  // an attachment this close to a node is on it
+    int first = 0;
+    for (int k = 0; k < static_cast<int>(sections_.size()); ++k) {
+        const SectionProps& sec = sections_[k];
+        std::vector<double> cuts{sec.s0};
+        for (const auto& point : points)
+            if (point.first > sec.s0 + snap && point.first < sec.s0 + sec.length - snap &&
+                point.first > cuts.back() + snap)
+                cuts.push_back(point.first);
+        cuts.push_back(sec.s0 + sec.length);
+        const int n = counts[k];
+        for (size_t j = 0; j + 1 < cuts.size(); ++j) {
+            ElementRun run;
+            run.s0 = cuts[j];
+            run.section = k;
+            run.first = first;
+            if (cuts.size() == 2) {
+                run.count = n;
+                run.elementLength = sec.length / n;
+            } else {
+                const double piece = cuts[j + 1] - cuts[j];
+                run.count = std::max(1, static_cast<int>(std::lround(n * piece / sec.length)));
+                run.elementLength = piece / run.count;
+            }
+            first += run.count;
+            runs_.push_back(run);
+        }
+    }
+    nElements_ = first;
+    for (const ElementRun& run : runs_) {
+        tables_.push_back(make_element_tables(run.elementLength, kLoadQuadraturePoints, 3));
+        tables_.back().axialModeWeight[1] = tables_.back().axialModeWeight[2] = kHigherStrainModeWeight;
+    }
+    // Node slots: one per node, and a second one after the node of a pinned joint.
+    elementRun_.resize(nElements_);
+    elementOffset_.resize(nElements_);
+    slotArc_.clear();
+    duplicateSlot_.clear();
+    std::vector<int> pinned;
+    int slot = 0;
+    for (int r = 0; r < static_cast<int>(runs_.size()); ++r) {
+        const ElementRun& run = runs_[r];
+        for (int i = 0; i < run.count; ++i) {
+            const int e = run.first + i;
+            elementRun_[e] = r;
+            elementOffset_[e] = 6 * slot;
+            slotArc_.push_back(run.s0 + run.elementLength * i);
+            duplicateSlot_.push_back(false);
+            ++slot;
+        }
+        const bool lastOfSection = r + 1 == static_cast<int>(runs_.size()) || runs_[r + 1].section != run.section;
+        if (lastOfSection && sections_[run.section].joint == 1) {
+            slotArc_.push_back(run.s0 + run.elementLength * run.count);  // the joint, end of this section
+            duplicateSlot_.push_back(false);
+            ++slot;
+            pinned.push_back(slot);  // the next section starts on a second slot at the same point
+        }
+    }
+    const ElementRun& last = runs_.back();
+    slotArc_.push_back(last.s0 + last.elementLength * last.count);
+    duplicateSlot_.push_back(false);
+    nSlots_ = slot + 1;
+    for (int i : pinned) duplicateSlot_[i] = true;
+    // Attachments on their nodes (the first slot of a pinned joint).
+    for (const auto& point : points) {
+        NodeAttachment at;
+        at.s = point.first;
+        at.body = point.second;
+        int best = 0;
+        for (int i = 1; i < nSlots_; ++i)
+            if (std::abs(slotArc_[i] - point.first) < std::abs(slotArc_[best] - point.first)) best = i;
+        at.offset = 6 * best;
+        attachments_.push_back(at);
+    }
+}
+
+void CableModel::build_dof_map() {
     // DOF map, in global order so that the free Jacobian stays banded.
+    const UCParams& params = params_;
     free_.assign(n_global(), -1);
     coef_.assign(n_global(), 1.0);
     int next = 0;
-    for (int i = 0; i <= nElements_; ++i) {
+    for (int i = 0; i < nSlots_; ++i) {
         for (int k = 0; k < 6; ++k) {
             const int g = 6 * i + k;
             const bool position = k < 3;
             if (i == 0 && position) continue;  // tow point: prescribed
-            if (i == nElements_ && position &&
+            if (i == nSlots_ - 1 && position &&
                 (params.bottomEnd == UC_BOTTOM_ANCHORED || params.bottomEnd == UC_BOTTOM_EXTERNAL))
                 continue;  // far end: prescribed
+            if (position && duplicateSlot_[i]) {  // the second slot of a pinned joint: the same point
+                free_[g] = free_[g - 6];
+                continue;
+            }
             if (i == 0 && params.topEnd == UC_TOP_CLAMPED) {
                 // r'_0 = a * topTangent: one free stretch shared by the three components.
                 if (k == 3) ++next;
                 free_[g] = next - 1;
-                coef_[g] = topTangent_[k - 3];
+                coef_[g] = unit(params.topTangent)[k - 3];
                 continue;
             }
             free_[g] = next++;
@@ -146,13 +308,52 @@ CableModel::CableModel(const UCParams& params)
     for (int e = 0; e < nElements_; ++e) {
         int lo = nFree_, hi = -1;
         for (int a = 0; a < 12; ++a) {
-            const int j = free_[6 * e + a];
+            const int j = free_[elementOffset_[e] + a];
             if (j < 0) continue;
             lo = std::min(lo, j);
             hi = std::max(hi, j);
         }
         if (hi >= lo) bandwidth_ = std::max(bandwidth_, hi - lo);
     }
+}
+
+double CableModel::element_start(int e) const { return slotArc_[elementOffset_[e] / 6]; }
+
+double CableModel::slot_fraction(int i) const {
+    if (runs_.size() == 1 && nSlots_ == nElements_ + 1) return static_cast<double>(i) / nElements_;
+    return slotArc_[i] / line_.length;
+}
+
+void CableModel::locate(double s, int& e, double& xi) const {
+    size_t r = 0;
+    while (r + 1 < runs_.size() && runs_[r + 1].s0 <= s) ++r;
+    const ElementRun& run = runs_[r];
+    const double local = (s - run.s0) / run.elementLength;
+    const int i = std::max(0, std::min(run.count - 1, static_cast<int>(local)));
+    e = run.first + i;
+    xi = std::clamp(local - i, 0.0, 1.0);
+}
+
+double CableModel::torque_for_twist(double twist) const {
+    if (sections_.size() == 1) return sections_[0].GJ * twist / sections_[0].length;
+    double compliance = 0.0;
+    for (const SectionProps& s : sections_) compliance += s.length / s.GJ;
+    return twist / compliance;
+}
+
+double CableModel::twist_at(int k, int stations, double torque) const {
+    if (sections_.size() == 1) {
+        const double GJ = sections_[0].GJ;
+        return GJ > 0.0 ? torque * sections_[0].length * k / (stations - 1) / GJ : 0.0;
+    }
+    const double s = line_.length * k / (stations - 1);
+    double angle = 0.0;
+    for (const SectionProps& sec : sections_) {
+        if (sec.GJ <= 0.0) return 0.0;
+        const double inside = std::clamp(s - sec.s0, 0.0, sec.length);
+        angle += torque * inside / sec.GJ;
+    }
+    return angle;
 }
 
 void CableModel::expand(const double* q, const double* v, const double* a, const Loads& loads, double t,
@@ -172,7 +373,7 @@ void CableModel::expand(const double* q, const double* v, const double* a, const
         Xd[k] = pv[k];
         Xdd[k] = pa[k];
     }
-    const int gN = 6 * nElements_;
+    const int gN = end_offset();
     if (params_.bottomEnd == UC_BOTTOM_ANCHORED) {
         for (int k = 0; k < 3; ++k) {
             X[gN + k] = anchor_[k];
@@ -206,30 +407,34 @@ void CableModel::restrict_to_free(const double* X, double* q) const {
 
 void CableModel::element_residual(int e, const double* X, const double* Xd, const double* Xdd,
                                   const Loads& loads, double* R) const {
-    const int g0 = 6 * e;
+    const int g0 = elementOffset_[e];
+    const ElementTables& tables = tables_[elementRun_[e]];
+    const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
     for (int a = 0; a < 12; ++a) R[a] = 0.0;
-    add_mass_force(tables_, params_.massPerLength, Xdd + g0, R);
-    add_axial_force(tables_, scaled_axial(loads), X + g0, Xd + g0, R);
-    if (EI_ > 0.0) add_bending_force(tables_, EI_, X + g0, R);
-    if (bendingDamping_ > 0.0) add_bending_force(tables_, bendingDamping_, Xd + g0, R);
-    if (loads.torque != 0.0) add_torque_force(tables_, loads.torque, X + g0, R);
-    add_hydro_force(tables_, fluid_, loads.current, X + g0, Xd + g0, Xdd + g0, R);
-    if (seabed_.enabled) add_seabed_force(tables_, seabed_, X + g0, Xd + g0, R);
+    add_mass_force(tables, sec.fluid.massPerLength, Xdd + g0, R);
+    add_axial_force(tables, scaled_axial(sec, loads), X + g0, Xd + g0, R);
+    if (sec.EI > 0.0) add_bending_force(tables, sec.EI, X + g0, R);
+    if (sec.bendingDamping > 0.0) add_bending_force(tables, sec.bendingDamping, Xd + g0, R);
+    if (loads.torque != 0.0) add_torque_force(tables, loads.torque, X + g0, R);
+    add_hydro_force(tables, sec.fluid, loads.current, X + g0, Xd + g0, Xdd + g0, R);
+    if (sec.seabed.enabled) add_seabed_force(tables, sec.seabed, X + g0, Xd + g0, R);
 }
 
 void CableModel::element_jacobian(int e, const double* X, const double* Xd, const double* Xdd,
                                   const Loads& loads, Mat12& K, Mat12& C, Mat12& M) const {
-    const int g0 = 6 * e;
+    const int g0 = elementOffset_[e];
+    const ElementTables& tables = tables_[elementRun_[e]];
+    const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
     K.setZero();
     C.setZero();
     M.setZero();
-    add_mass_jacobian(tables_, params_.massPerLength, M);
-    add_axial_jacobian(tables_, scaled_axial(loads), X + g0, Xd + g0, K, C);
-    if (EI_ > 0.0) add_bending_jacobian(tables_, EI_, K);
-    if (bendingDamping_ > 0.0) add_bending_jacobian(tables_, bendingDamping_, C);
-    if (loads.torque != 0.0) add_torque_jacobian(tables_, loads.torque, X + g0, K);
-    add_hydro_jacobian(tables_, fluid_, loads.current, X + g0, Xd + g0, Xdd + g0, K, C, M);
-    if (seabed_.enabled) add_seabed_jacobian(tables_, seabed_, X + g0, Xd + g0, K, C);
+    add_mass_jacobian(tables, sec.fluid.massPerLength, M);
+    add_axial_jacobian(tables, scaled_axial(sec, loads), X + g0, Xd + g0, K, C);
+    if (sec.EI > 0.0) add_bending_jacobian(tables, sec.EI, K);
+    if (sec.bendingDamping > 0.0) add_bending_jacobian(tables, sec.bendingDamping, C);
+    if (loads.torque != 0.0) add_torque_jacobian(tables, loads.torque, X + g0, K);
+    add_hydro_jacobian(tables, sec.fluid, loads.current, X + g0, Xd + g0, Xdd + g0, K, C, M);
+    if (sec.seabed.enabled) add_seabed_jacobian(tables, sec.seabed, X + g0, Xd + g0, K, C);
 }
 
 bool CableModel::far_end_prescribed() const {
@@ -246,9 +451,40 @@ Mat3 cross_matrix(const Vec3& v) {
 
 }  // namespace
 
+void add_point_body_residual(const PointBody& body, const FluidProps& fluid, const CurrentField& current,
+                             const double* r, const double* rd, const double* rdd, Vec3& R) {
+    Vec3 U, A;
+    Mat3 dU, dA;
+    current.flow(Eigen::Map<const Vec3>(r), U, dU, A, dA);  // the body's drag in the current and waves
+    const Vec3 u = U - Eigen::Map<const Vec3>(rd);
+    const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
+    const double wet = (body.mass - fluid.rho * body.volume) * fluid.gravity;
+    R += (body.mass + body.addedMass) * Eigen::Map<const Vec3>(rdd);
+    R -= 0.5 * fluid.rho * body.CdA * speed * u;
+    R.z() += wet;
+}
+
+void point_body_jacobian(const PointBody& body, const FluidProps& fluid, const CurrentField& current,
+                         const double* r, const double* rd, Mat3& K, Mat3& C, Mat3& M) {
+    Vec3 U, A;
+    Mat3 dU, dA;
+    current.flow(Eigen::Map<const Vec3>(r), U, dU, A, dA);
+    const Vec3 u = U - Eigen::Map<const Vec3>(rd);
+    const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
+    const Mat3 dDrag_du = 0.5 * fluid.rho * body.CdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
+    K.setZero();
+    if (current.waves()) {
+        K -= dDrag_du * dU;  // drag of the body in the waves' and current's gradients
+    } else {
+        K.col(2) -= dDrag_du * dU.col(2);  // drag of the body in a sheared current
+    }
+    C = 0.5 * fluid.rho * body.CdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
+    M = (body.mass + body.addedMass) * Mat3::Identity();
+}
+
 Vec6 CableModel::end_node_residual(const double* X, const double* Xd, const double* Xdd,
                                    const Loads& loads) const {
-    const int gN = 6 * nElements_;
+    const int gN = end_offset();
     Vec6 R = Vec6::Zero();
     const Vec3 rd = Eigen::Map<const Vec3>(Xd + gN);
     R.head<3>() = -loads.endLoad + loads.endLoadDamping * (rd - loads.endLoadVelocity);
@@ -256,22 +492,15 @@ Vec6 CableModel::end_node_residual(const double* X, const double* Xd, const doub
     const Vec3 rp = Eigen::Map<const Vec3>(X + gN + 3);
     R.tail<3>() = -loads.endCouple.cross(rp) / rp.squaredNorm();
     if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return R;
-    const Vec3 rdd = Eigen::Map<const Vec3>(Xdd + gN);
-    Vec3 U, A;
-    Mat3 dU, dA;
-    loads.current.flow(Eigen::Map<const Vec3>(X + gN), U, dU, A, dA);  // the body's drag in the current and waves
-    const Vec3 u = U - rd;
-    const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
-    const double wet = (params_.bodyMass - fluid_.rho * params_.bodyVolume) * fluid_.gravity;
-    R.head<3>() += (params_.bodyMass + params_.bodyAddedMass) * rdd;
-    R.head<3>() -= 0.5 * fluid_.rho * params_.bodyCdA * speed * u;
-    R.z() += wet;
+    Vec3 body = R.head<3>();
+    add_point_body_residual(body_, fluid(), loads.current, X + gN, Xd + gN, Xdd + gN, body);
+    R.head<3>() = body;
     return R;
 }
 
 void CableModel::end_node_jacobian(const double* X, const double* Xd, const double* /*Xdd*/,
                                    const Loads& loads, Mat6& K, Mat6& C, Mat6& M) const {
-    const int gN = 6 * nElements_;
+    const int gN = end_offset();
     K.setZero();
     C.setZero();
     M.setZero();
@@ -282,19 +511,11 @@ void CableModel::end_node_jacobian(const double* X, const double* Xd, const doub
     }
     C.block<3, 3>(0, 0) = loads.endLoadDamping;
     if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return;
-    Vec3 U, A;
-    Mat3 dU, dA;
-    loads.current.flow(Eigen::Map<const Vec3>(X + gN), U, dU, A, dA);
-    const Vec3 u = U - Eigen::Map<const Vec3>(Xd + gN);
-    const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
-    const Mat3 dDrag_du = 0.5 * fluid_.rho * params_.bodyCdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
-    if (loads.current.waves()) {
-        K.block<3, 3>(0, 0) -= dDrag_du * dU;  // drag of the body in the waves' and current's gradients
-    } else {
-        K.block<3, 3>(0, 0).col(2) -= dDrag_du * dU.col(2);  // drag of the body in a sheared current
-    }
-    C.block<3, 3>(0, 0) += 0.5 * fluid_.rho * params_.bodyCdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
-    M.block<3, 3>(0, 0) = (params_.bodyMass + params_.bodyAddedMass) * Mat3::Identity();
+    Mat3 Kb, Cb, Mb;
+    point_body_jacobian(body_, fluid(), loads.current, X + gN, Xd + gN, Kb, Cb, Mb);
+    K.block<3, 3>(0, 0) += Kb;
+    C.block<3, 3>(0, 0) += Cb;
+    M.block<3, 3>(0, 0) = Mb;
 }
 
 void CableModel::residual(const double* X, const double* Xd, const double* Xdd, const Loads& loads,
@@ -304,7 +525,7 @@ void CableModel::residual(const double* X, const double* Xd, const double* Xdd, 
     double Re[12];
     for (int e = 0; e < nElements_; ++e) {
         element_residual(e, X, Xd, Xdd, loads, Re);
-        const int g0 = 6 * e;
+        const int g0 = elementOffset_[e];
         for (int a = 0; a < 12; ++a) {
             const int j = free_[g0 + a];
             if (j >= 0) Rfree[j] += coef_[g0 + a] * Re[a];
@@ -312,18 +533,26 @@ void CableModel::residual(const double* X, const double* Xd, const double* Xdd, 
         if (forces) forces->element[e] = Eigen::Map<const Vec12>(Re);
     }
     const Vec6 end = end_node_residual(X, Xd, Xdd, loads);
-    const int gN = 6 * nElements_;
+    const int gN = end_offset();
     for (int k = 0; k < 6; ++k) {
         const int j = free_[gN + k];
         if (j >= 0) Rfree[j] += end[k];
     }
     if (forces) forces->endNodeTerms = end;
+    for (const NodeAttachment& at : attachments_) {
+        Vec3 Ra = Vec3::Zero();
+        add_point_body_residual(at.body, fluid(), loads.current, X + at.offset, Xd + at.offset, Xdd + at.offset, Ra);
+        for (int k = 0; k < 3; ++k) {
+            const int j = free_[at.offset + k];
+            if (j >= 0) Rfree[j] += Ra[k];
+        }
+    }
 }
 
 void CableModel::straight_line(const Vec3& p, const Vec3& direction, double* X) const {
     const Vec3 d = direction.normalized();
-    for (int i = 0; i <= nElements_; ++i) {
-        Eigen::Map<Vec3>(X + 6 * i) = p + d * (tables_.length * i);
+    for (int i = 0; i < nSlots_; ++i) {
+        Eigen::Map<Vec3>(X + 6 * i) = p + d * slotArc_[i];
         Eigen::Map<Vec3>(X + 6 * i + 3) = d;
     }
     if (params_.topEnd == UC_TOP_CLAMPED) Eigen::Map<Vec3>(X + 3) = topTangent_;

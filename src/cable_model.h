@@ -1,10 +1,14 @@
-// cable_model.h - the immutable cable model (element tables, DOF map, properties) and the
-// assembly of the residual and banded Jacobian over the free DOFs (docs/model.md).
+// cable_model.h - the compiled line description (sections, element tables, attachments, DOF map),
+// immutable once built from the parameters, and the assembly of the residual and banded Jacobian
+// over the free DOFs (docs/model.md, docs/lines.md).
 //
-// Global nodal coordinates X: node i holds [r_i, r'_i] at X[6i .. 6i+5], i = 0..N (node 0 = tow
-// point). Free DOFs q are what the integrator and the static solver see; every global DOF is
-// either free, X[g] = coef[g] * q[free[g]] (coef is 1 except for a clamped top tangent, where
-// r'_0 = a * topTangent with one free stretch a), or prescribed (tow point, anchor).
+// Global nodal coordinates X: node slot i holds [r_i, r'_i] at X[6i .. 6i+5]; element e spans the
+// two slots from element_offset(e) (its 12 DOFs are contiguous). Slot 0 is the tow point. A pinned
+// joint between two sections has two slots: the second repeats the position (both map to the same
+// free unknowns) and carries the tangent of the next section, so no moment passes the joint; every
+// other node is one slot. Free DOFs q are what the integrator and the static solver see; every
+// global DOF is either free, X[g] = coef[g] * q[free[g]] (coef is 1 except for a clamped top
+// tangent, where r'_0 = a * topTangent with one free stretch a), or prescribed (tow point, anchor).
 // The equations of prescribed DOFs are not solved: their residuals are the reaction forces.
 #pragma once
 
@@ -70,25 +74,94 @@ struct ElementForces {
     Vec6 endNodeTerms = Vec6::Zero();  // body, end load and end couple residual at node N
 };
 
+// A point body: an attachment on a node, or the towed body at the far end.
+struct PointBody {
+    double mass = 0.0, volume = 0.0, addedMass = 0.0, CdA = 0.0;
+};
+
+// Residual terms of a point body at position r (velocity rd, acceleration rdd) in the water: inertia
+// (mass and added mass), submerged weight, drag on the velocity relative to the current and waves.
+// Added to R (3 values) in that order.
+void add_point_body_residual(const PointBody& body, const FluidProps& fluid, const CurrentField& current,
+                             const double* r, const double* rd, const double* rdd, Vec3& R);
+// Its derivatives with respect to r, rd and rdd.
+void point_body_jacobian(const PointBody& body, const FluidProps& fluid, const CurrentField& current,
+                         const double* r, const double* rd, Mat3& K, Mat3& C, Mat3& M);
+
+// One section of the line, compiled from the parameters: what the element physics reads.
+struct SectionProps {
+    double s0 = 0.0;      // arc length of its start from the tow point [m]
+    double length = 0.0;  // unstretched [m]
+    FluidProps fluid{};   // mass per length, diameter, coefficients (and the water's density, gravity)
+    AxialProps axial{};
+    SeabedProps seabed{};  // the contact's smoothing depends on the diameter
+    double EI = 0.0;       // 0 when bending is disabled
+    double bendingDamping = 0.0;  // EI * axialDamping / EA [N.m2.s]
+    double GJ = 0.0;
+    int joint = 0;  // to the next section: 0 rigid (one node), 1 pinned (two slots)
+};
+
+// Elements of equal length in a row: one section, or the part of one between attachments.
+struct ElementRun {
+    double s0 = 0.0, elementLength = 0.0;
+    int first = 0, count = 0;
+    int section = 0;
+};
+
+struct NodeAttachment {
+    int offset = 0;  // global index of the node's position
+    double s = 0.0;  // arc length [m]
+    PointBody body;
+};
+
+// Whole-line scales for tolerances, continuation and guesses. For a uniform line they are its
+// parameters; for sections: the total length, the mean mass per length (total mass / length) and the
+// largest EA, EI and diameter.
+struct LineScales {
+    double length = 0.0, massPerLength = 0.0, EA = 0.0, EI = 0.0, diameter = 0.0;
+};
+
 class CableModel {
 public:
     explicit CableModel(const UCParams& params);
 
     const UCParams& params() const { return params_; }
     int n_elements() const { return nElements_; }
-    int n_nodes() const { return nElements_ + 1; }
-    int n_global() const { return 6 * (nElements_ + 1); }
+    int n_slots() const { return nSlots_; }  // node slots: nodes plus one per pinned joint
+    int n_global() const { return 6 * nSlots_; }
     int n_free() const { return nFree_; }
     int free_bandwidth() const { return bandwidth_; }  // max |i - j| of coupled free DOFs
-    double element_length() const { return tables_.length; }
-    const ElementTables& tables() const { return tables_; }
-    const FluidProps& fluid() const { return fluid_; }
-    double EI() const { return EI_; }
-    const AxialProps& axial() const { return axial_; }
-    const SeabedProps& seabed() const { return seabed_; }
+    const LineScales& line() const { return line_; }
+    int n_sections() const { return static_cast<int>(sections_.size()); }
+    const SectionProps& section(int k) const { return sections_[k]; }
+    const std::vector<ElementRun>& runs() const { return runs_; }
+    const std::vector<NodeAttachment>& attachments() const { return attachments_; }
+
+    // The compiled description of element e.
+    int element_offset(int e) const { return elementOffset_[e]; }  // global index of its first DOF
+    int end_offset() const { return n_global() - 6; }               // the far end's node
+    double element_length(int e) const { return runs_[elementRun_[e]].elementLength; }
+    double element_start(int e) const;                               // arc length of its first node
+    const ElementTables& tables(int e) const { return tables_[elementRun_[e]]; }
+    const SectionProps& element_section(int e) const { return sections_[runs_[elementRun_[e]].section]; }
+    // The element holding arc length s (clamped to the line) and the local coordinate xi there.
+    void locate(double s, int& e, double& xi) const;
+    // Arc length of node slot i as a fraction of the line length; exactly i / N for a uniform line.
+    double slot_fraction(int i) const;
+
+    const FluidProps& fluid() const { return sections_[0].fluid; }  // water density and gravity
+    const SeabedProps& seabed() const { return sections_[0].seabed; }
     const CurrentProfile& current_profile() const { return profile_; }
     const SeaState& sea() const { return sea_; }
     bool far_end_prescribed() const;  // anchored or external
+    // Torque of torqueMode 2 for a twist angle of the far end against the tow point: the line's
+    // torsional compliance is the sum of L_k / GJ_k over its sections.
+    double torque_for_twist(double twist) const;
+    // Twist angle at arc length s under the torque H (0 when a section has no torsional stiffness).
+    // At station k of `stations` spread evenly over the line.
+    double twist_at(int k, int stations, double torque) const;
+    // Arc length of node slot i (both slots of a pinned joint have the joint's).
+    double slot_arc_length(int i) const { return slotArc_[i]; }
 
     int free_index(int g) const { return free_[g]; }
     double coefficient(int g) const { return coef_[g]; }
@@ -126,18 +199,25 @@ public:
     void straight_line(const Vec3& p, const Vec3& direction, double* X) const;
 
 private:
-    AxialProps scaled_axial(const Loads& loads) const;
+    AxialProps scaled_axial(const SectionProps& section, const Loads& loads) const;
+    void build_sections(const UCParams& p);
+    void build_mesh(const UCParams& p);
+    void build_dof_map();
 
     UCParams params_;
-    int nElements_;
-    ElementTables tables_;
-    FluidProps fluid_;
-    AxialProps axial_;
-    double EI_;
-    double bendingDamping_ = 0.0;  // EI * axialDamping / EA [N.m2.s]
+    int nElements_ = 0;
+    int nSlots_ = 0;
+    LineScales line_;
+    std::vector<SectionProps> sections_;
+    std::vector<ElementRun> runs_;
+    std::vector<ElementTables> tables_;  // one per run
+    std::vector<int> elementRun_, elementOffset_;
+    std::vector<double> slotArc_;
+    std::vector<bool> duplicateSlot_;  // the second slot of a pinned joint
+    std::vector<NodeAttachment> attachments_;
+    PointBody body_;  // the towed body (bottomEnd 2)
     Vec3 topTangent_;
     Vec3 anchor_;
-    SeabedProps seabed_;
     CurrentProfile profile_;
     SeaState sea_;
     std::vector<int> free_;
@@ -152,7 +232,7 @@ void CableModel::jacobian(const double* X, const double* Xd, const double* Xdd, 
     Mat12 K, C, M;
     for (int e = 0; e < nElements_; ++e) {
         element_jacobian(e, X, Xd, Xdd, loads, K, C, M);
-        const int g0 = 6 * e;
+        const int g0 = elementOffset_[e];
         for (int a = 0; a < 12; ++a) {
             const int ja = free_[g0 + a];
             if (ja < 0) continue;
@@ -167,7 +247,7 @@ void CableModel::jacobian(const double* X, const double* Xd, const double* Xdd, 
     }
     Mat6 Kn, Cn, Mn;
     end_node_jacobian(X, Xd, Xdd, loads, Kn, Cn, Mn);
-    const int gN = 6 * nElements_;
+    const int gN = end_offset();
     for (int a = 0; a < 6; ++a) {
         const int ja = free_[gN + a];
         if (ja < 0) continue;
@@ -175,6 +255,18 @@ void CableModel::jacobian(const double* X, const double* Xd, const double* Xdd, 
             const int jb = free_[gN + b];
             if (jb < 0) continue;
             if (Kn(a, b) != 0.0 || Cn(a, b) != 0.0 || Mn(a, b) != 0.0) add(ja, jb, Kn(a, b), Cn(a, b), Mn(a, b));
+        }
+    }
+    for (const NodeAttachment& at : attachments_) {
+        Mat3 Ka, Ca, Ma;
+        point_body_jacobian(at.body, fluid(), loads.current, X + at.offset, Xd + at.offset, Ka, Ca, Ma);
+        for (int a = 0; a < 3; ++a) {
+            const int ja = free_[at.offset + a];
+            if (ja < 0) continue;
+            for (int b = 0; b < 3; ++b) {
+                const int jb = free_[at.offset + b];
+                if (jb >= 0) add(ja, jb, Ka(a, b), Ca(a, b), Ma(a, b));
+            }
         }
     }
 }

@@ -42,7 +42,7 @@ struct QuadPoint {
     double weight;  // w * l: integrates over unstretched arc length
 };
 
-// Precomputed, immutable element tables (all elements have the same length).
+// Precomputed, immutable element tables of one element length (one per run of equal elements).
 struct ElementTables {
     double length = 0.0;
     // Axial strain: sampled at 5 Gauss points and projected (L2, per element) onto the first

@@ -744,28 +744,71 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
         error = "the line file describes no line";
         return false;
     }
-    if (line.sections.size() > 1) {
-        error = at_line(line.sections[1].row, "a chain of " + std::to_string(line.sections.size()) +
-                                                  " lines: this version models one uniform line (one LINES entry)");
+    if (line.sections.size() > UC_MAX_SECTIONS) {
+        error = at_line(line.sections[UC_MAX_SECTIONS].row, "a chain of " + std::to_string(line.sections.size()) +
+                                                                 " lines: at most " + std::to_string(UC_MAX_SECTIONS) +
+                                                                 " lines (sections) are supported");
         return false;
     }
-    const LineFileSection& s = line.sections[0];
-    if (s.elements > 1000) {
-        error = at_line(s.row, "NumSegs " + std::to_string(s.numSegs) + " gives " + std::to_string(s.elements) +
-                                   " elements, more than 1000: set lineFileElements");
-        return false;
+    for (const LineFileSection& s : line.sections) {
+        if (s.elements > 1000) {
+            error = at_line(s.row, "NumSegs " + std::to_string(s.numSegs) + " gives " + std::to_string(s.elements) +
+                                       " elements, more than 1000: set lineFileElements");
+            return false;
+        }
     }
-    p.length = s.length;
-    p.diameter = s.diameter;
-    p.massPerLength = s.massPerLength;
-    p.EA = s.EA;
-    p.EI = s.EI;
-    p.axialDamping = s.axialDamping;
-    p.Cdn = s.Cdn;
-    p.Cdt = s.Cdt;
-    p.Can = s.Can;
-    p.Cat = s.Cat;
-    p.nElements = s.elements;
+    if (line.sections.size() == 1) {
+        const LineFileSection& s = line.sections[0];
+        p.nSections = 1;
+        p.length = s.length;
+        p.diameter = s.diameter;
+        p.massPerLength = s.massPerLength;
+        p.EA = s.EA;
+        p.EI = s.EI;
+        p.axialDamping = s.axialDamping;
+        p.Cdn = s.Cdn;
+        p.Cdt = s.Cdt;
+        p.Can = s.Can;
+        p.Cat = s.Cat;
+        p.nElements = s.elements;
+        p.nAttachments = 0;
+    } else {
+        // Each MoorDyn line is a section; the points between them are pinned joints (MoorDyn's
+        // points carry no moment), with their mass, volume, drag and added mass an attachment there.
+        p.nSections = static_cast<int>(line.sections.size());
+        p.nAttachments = 0;
+        double s0 = 0.0;
+        for (size_t k = 0; k < line.sections.size(); ++k) {
+            const LineFileSection& s = line.sections[k];
+            UCSection& out = p.section[k];
+            out.length = s.length;
+            out.diameter = s.diameter;
+            out.massPerLength = s.massPerLength;
+            out.EA = s.EA;
+            out.EI = s.EI;
+            out.GJ = p.GJ;
+            out.axialDamping = s.axialDamping;
+            out.Cdn = s.Cdn;
+            out.Cdt = s.Cdt;
+            out.Can = s.Can;
+            out.Cat = s.Cat;
+            out.nElements = s.elements;
+            out.joint = 1;
+            s0 += s.length;
+            if (k + 1 == line.sections.size() || line.joints[k].empty()) continue;
+            if (p.nAttachments == UC_MAX_ATTACHMENTS) {
+                error = at_line(line.joints[k].row, "more than " + std::to_string(UC_MAX_ATTACHMENTS) +
+                                                        " points with mass, volume or drag between lines");
+                return false;
+            }
+            UCAttachment& a = p.attachment[p.nAttachments++];
+            a.s = s0;
+            a.mass = line.joints[k].mass;
+            a.volume = line.joints[k].volume;
+            a.addedMass = line.joints[k].addedMass;
+            a.CdA = line.joints[k].CdA;
+        }
+    }
     switch (line.farEnd) {
         case LineFileFarEnd::Anchored:
             p.bottomEnd = UC_BOTTOM_ANCHORED;

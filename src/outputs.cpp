@@ -29,27 +29,29 @@ constexpr int kSeabedSamples = 8;
 // above the seabed reaches half a diameter). Between samples the clearance is interpolated
 // linearly. The contact force is integrated with the quadrature the equations use.
 // The clearance below which a point of the line rests on the seabed (see seabed_outputs).
-double resting_clearance(const CableModel& model) {
-    return std::max(model.seabed().smoothing, 0.5 * model.params().diameter);
+double resting_clearance(const SectionProps& section) {
+    return std::max(section.seabed.smoothing, 0.5 * section.fluid.diameter);
 }
 
 void seabed_outputs(const CableModel& model, const double* X, const double* Xd, UCOutputs& out) {
     const UCParams& p = model.params();
-    const SeabedProps& seabed = model.seabed();
-    const double l = model.element_length();
-    const double reach = resting_clearance(model);
-    const double ds = l / kSeabedSamples;
-    out.touchdownArcLength = p.length;
+    out.touchdownArcLength = model.line().length;
     out.minSeabedClearance = INFINITY;
     out.groundedLength = 0.0;
     out.seabedContactForce = 0.0;
     bool touched = false;
     double previousS = 0.0, previousGap = 0.0;
     for (int e = 0; e < model.n_elements(); ++e) {
+        const SectionProps& section = model.element_section(e);
+        const double l = model.element_length(e);
+        const double s0 = model.element_start(e);
+        const double reach = resting_clearance(section);
+        const double ds = l / kSeabedSamples;
+        const double* Xe = X + model.element_offset(e);
         for (int k = e == 0 ? 0 : 1; k <= kSeabedSamples; ++k) {
             const double xi = static_cast<double>(k) / kSeabedSamples;
-            const double s = (e + xi) * l;
-            const double clearance = interpolate(hermite_shape(xi, l).N, X + 6 * e).z() + p.waterDepth;
+            const double s = model.runs().size() == 1 ? (e + xi) * l : s0 + xi * l;
+            const double clearance = interpolate(hermite_shape(xi, l).N, Xe).z() + p.waterDepth;
             out.minSeabedClearance = std::min(out.minSeabedClearance, clearance);
             const double gap = clearance - reach;  // <= 0: resting on the seabed
             if (p.enableSeabed && s > 0.0) {
@@ -70,9 +72,9 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
         }
         if (!p.enableSeabed) continue;
         for (int g = 0; g < ElementTables::nAxial; ++g) {  // the residual holds minus the load
-            const QuadPoint& q = model.tables().axial[g];
+            const QuadPoint& q = model.tables(e).axial[g];
             out.seabedContactForce -=
-                q.weight * seabed_load(seabed, interpolate(q.shape.N, X + 6 * e), interpolate(q.shape.N, Xd + 6 * e), nullptr).z();
+                q.weight * seabed_load(section.seabed, interpolate(q.shape.N, Xe), interpolate(q.shape.N, Xd + model.element_offset(e)), nullptr).z();
         }
     }
 }
@@ -80,7 +82,7 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
 // Layback, the cable's direction at the tow point and its angle at an anchor.
 void geometry_outputs(const CableModel& model, const double* X, UCOutputs& out) {
     const UCParams& p = model.params();
-    const int gN = 6 * model.n_elements();
+    const int gN = model.end_offset();
     const Vec3 top = at(X, 0), end = at(X, gN);
     out.layback = std::hypot(end.x() - top.x(), end.y() - top.y());
     const Vec3 t0 = at(X, 3).normalized();  // down the cable from the tow point
@@ -90,9 +92,10 @@ void geometry_outputs(const CableModel& model, const double* X, UCOutputs& out) 
     if (p.bottomEnd == UC_BOTTOM_ANCHORED) {
         // Lying on the seabed at the anchor: the line one seabed sample before it (l/8) still
         // resting on the seabed, as seabed_outputs counts it.
-        const double l = model.element_length();
+        const int last = model.n_elements() - 1;
+        const double l = model.element_length(last);
         const double nearAnchor = interpolate(hermite_shape(1.0 - 1.0 / kSeabedSamples, l).N, X + gN - 6).z();
-        const bool grounded = p.enableSeabed && nearAnchor + p.waterDepth <= resting_clearance(model);
+        const bool grounded = p.enableSeabed && nearAnchor + p.waterDepth <= resting_clearance(model.element_section(last));
         const Vec3 up = -at(X, gN + 3).normalized();  // from the anchor up the cable
         out.anchorUplift = grounded ? 0.0 : std::asin(std::clamp(up.z(), -1.0, 1.0));
     }
@@ -104,24 +107,26 @@ void nodal_tensions(const CableModel& model, const double* X, const ElementForce
     const int N = model.n_elements();
     // Node 0: the cable pulls the tow point along +t_0 with the force -R_0 (reaction).
     T[0] = (-forces.element[0].segment<3>(0)).dot(at(X, 3).normalized());
-    for (int i = 1; i <= N; ++i) T[i] = forces.element[i - 1].segment<3>(6).dot(at(X, 6 * i + 3).normalized());
+    for (int i = 1; i <= N; ++i)
+        T[i] = forces.element[i - 1].segment<3>(6).dot(at(X, model.element_offset(i - 1) + 9).normalized());
 }
 
 // Internal moment at an element end: bending EI r' x r'' / |r'|^3 minus the torque along t. The
 // sign follows from the residual: its torque term +(H r' x r'')' puts -H r' x r'' into the internal
 // force n, and the moment balance M' + r' x n = 0 then needs M = EI r' x r'' - H t. It is
 // the moment that the cable beyond the point exerts on the cable before it.
-Vec3 internal_moment(const CableModel& model, const double* Xe, double xi, double torque) {
-    const ShapeValues sv = hermite_shape(xi, model.element_length());
+Vec3 internal_moment(const CableModel& model, int e, const double* X, double xi, double torque) {
+    const double* Xe = X + model.element_offset(e);
+    const ShapeValues sv = hermite_shape(xi, model.element_length(e));
     const Vec3 rp = interpolate(sv.dN, Xe);
     const double n = rp.norm();
-    return model.EI() * rp.cross(interpolate(sv.d2N, Xe)) / (n * n * n) - torque * rp / n;
+    return model.element_section(e).EI * rp.cross(interpolate(sv.d2N, Xe)) / (n * n * n) - torque * rp / n;
 }
 
 void compute_outputs(const CableModel& model, const double* X, const double* Xd, const ElementForces& forces,
                      double torque, std::vector<double>& T, UCOutputs& out) {
     const int N = model.n_elements();
-    const int gN = 6 * N;
+    const int gN = model.end_offset();
     const Vec3 towForce = -forces.element[0].segment<3>(0);
     const Vec3 endForce = -forces.element[N - 1].segment<3>(6);
     for (int k = 0; k < 3; ++k) {
@@ -136,60 +141,63 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
     T.resize(N + 1);  // the caller's workspace: no allocation after the first call
     nodal_tensions(model, X, forces, T.data());
 
-    const double l = model.element_length();
-    const ElementTables& tables = model.tables();
     for (int k = 0; k < UC_NUM_STATIONS; ++k) {
-        const double s = model.params().length * k / (UC_NUM_STATIONS - 1);
-        const int e = std::min(N - 1, static_cast<int>(s / l));
-        const double xi = std::clamp(s / l - e, 0.0, 1.0);
-        const ShapeValues sv = hermite_shape(xi, l);
-        const Vec3 r = interpolate(sv.N, X + 6 * e);
+        const double s = model.line().length * k / (UC_NUM_STATIONS - 1);
+        int e = 0;
+        double xi = 0.0;
+        model.locate(s, e, xi);
+        const ShapeValues sv = hermite_shape(xi, model.element_length(e));
+        const double* Xe = X + model.element_offset(e);
+        const Vec3 r = interpolate(sv.N, Xe);
         out.shapeX[k] = r.x();
         out.shapeY[k] = r.y();
         out.shapeZ[k] = r.z();
         out.tension[k] = (1.0 - xi) * T[e] + xi * T[e + 1];
-        out.curvature[k] = curvature(interpolate(sv.dN, X + 6 * e), interpolate(sv.d2N, X + 6 * e));
+        out.curvature[k] = curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe));
     }
 
     double minTension = *std::min_element(T.begin(), T.end());
-    double maxCurvature = 0.0;
+    double maxCurvature = 0.0, maxBendingMoment = 0.0;
     // Minimum tension over the nodes (exact reactions of the discrete equations) and the element
     // means (the projected strain's mean mode). The pointwise projected tension also carries the
     // softened higher strain modes, whose strain is 100 times the physical variation inside an
     // element: not a tension to report (it dips to -23 N at a free end that carries none).
     for (int e = 0; e < N; ++e) {
-        const double* Xe = X + 6 * e;
+        const double* Xe = X + model.element_offset(e);
+        const ElementTables& tables = model.tables(e);
+        const SectionProps& section = model.element_section(e);
+        const double l = model.element_length(e);
         double axialTension[ElementTables::nAxial];
-        axial_tensions(tables, model.axial(), Xe, Xd + 6 * e, axialTension);
-        double mean = 0.0;
+        axial_tensions(tables, section.axial, Xe, Xd + model.element_offset(e), axialTension);
+        double mean = 0.0, elementCurvature = 0.0;
         for (int g = 0; g < ElementTables::nAxial; ++g) {
             const ShapeValues& sv = tables.axial[g].shape;
             mean += tables.axial[g].weight / l * axialTension[g];
-            maxCurvature = std::max(maxCurvature, curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe)));
+            elementCurvature = std::max(elementCurvature, curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe)));
         }
         minTension = std::min(minTension, mean);
         for (double xi : {0.0, 1.0}) {
             const ShapeValues sv = hermite_shape(xi, l);
-            maxCurvature = std::max(maxCurvature, curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe)));
+            elementCurvature = std::max(elementCurvature, curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe)));
         }
+        maxCurvature = std::max(maxCurvature, elementCurvature);
+        maxBendingMoment = std::max(maxBendingMoment, section.EI * elementCurvature);
     }
     seabed_outputs(model, X, Xd, out);
     geometry_outputs(model, X, out);
     out.cableTorque = torque;
-    const double GJ = model.params().GJ;
-    for (int k = 0; k < UC_NUM_STATIONS; ++k)
-        out.twistAngle[k] = GJ > 0.0 ? torque * model.params().length * k / (UC_NUM_STATIONS - 1) / GJ : 0.0;
+    for (int k = 0; k < UC_NUM_STATIONS; ++k) out.twistAngle[k] = model.twist_at(k, UC_NUM_STATIONS, torque);
     // The cable pulls on the tow fitting with the internal moment at s = 0 and on the far-end
     // fitting with minus the internal moment at s = L.
-    const Vec3 towMoment = internal_moment(model, X, 0.0, torque);
-    const Vec3 endMoment = -internal_moment(model, X + 6 * (N - 1), 1.0, torque);
+    const Vec3 towMoment = internal_moment(model, 0, X, 0.0, torque);
+    const Vec3 endMoment = -internal_moment(model, N - 1, X, 1.0, torque);
     for (int k = 0; k < 3; ++k) {
         out.towMoment[k] = towMoment[k];
         out.endMoment[k] = endMoment[k];
     }
     out.minTension = minTension;
     out.maxCurvature = maxCurvature;
-    out.maxBendingMoment = model.EI() * maxCurvature;
+    out.maxBendingMoment = maxBendingMoment;
 }
 
 }  // namespace uc

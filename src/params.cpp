@@ -84,6 +84,30 @@ std::string check_params(const UCParams& p) {
             return format_violation("waves.height", p.wavesHeight, range, "steeper waves break");
         }
     }
+    // Sections and attachments: every section in use has a length; attachments lie on the line.
+    double lineLength = p.length;
+    if (p.nSections >= 2) {
+        lineLength = 0.0;
+        for (int k = 0; k < p.nSections; ++k) {
+            char name[64];
+            std::snprintf(name, sizeof name, "section[%d].length", k + 1);
+            if (!(p.section[k].length > 0.0))
+                return format_violation(name, p.section[k].length, "(0, 1e5]", "every section in use (k <= nSections) needs a positive length");
+            if (p.enableTorsion && p.torqueMode == UC_TORQUE_ROTATION) {
+                std::snprintf(name, sizeof name, "section[%d].GJ", k + 1);
+                if (positive(m, name, p.section[k].GJ, "a prescribed end rotation makes a torque only through GJ")) return m;
+            }
+            lineLength += p.section[k].length;
+        }
+    }
+    for (int k = 0; k < p.nAttachments; ++k) {
+        const double s = p.attachment[k].s;
+        if (s > 0.0 && s <= lineLength * (1.0 + 1e-12)) continue;
+        char name[64], range[96];
+        std::snprintf(name, sizeof name, "attachment[%d].s", k + 1);
+        std::snprintf(range, sizeof range, "(0, %.17g] (the line's length)", lineLength);
+        return format_violation(name, s, range, "an attachment lies on the line, beyond the tow point");
+    }
     for (int k = 1; k < p.currentProfileRows; ++k) {
         if (p.currentProfileDepth[k] > p.currentProfileDepth[k - 1]) continue;
         char name[64], range[96];

@@ -151,12 +151,14 @@ bool end_load_linearization_finite(const UCInputs& in) {
 // tension of a strain of 1e-6.
 double tension_scale(const CableModel& model, const UCOutputs& initial) {
     const UCParams& p = model.params();
+    const LineScales& line = model.line();
     double T = initial.towTension;
     for (double t : initial.tension) T = std::max(T, t);
-    const double body = p.bottomEnd == UC_BOTTOM_TOWED_BODY ? p.bodyMass : 0.0;
+    double body = p.bottomEnd == UC_BOTTOM_TOWED_BODY ? p.bodyMass : 0.0;
+    for (const NodeAttachment& at : model.attachments()) body += at.body.mass;
     const double kPi = 3.14159265358979323846;
-    return std::max({T, (p.massPerLength * p.length + body) * p.gravity, kPi * kPi * model.EI() / (p.length * p.length),
-                     1e-6 * p.EA});
+    return std::max({T, (line.massPerLength * line.length + body) * p.gravity, kPi * kPi * line.EI / (line.length * line.length),
+                     1e-6 * line.EA});
 }
 
 }  // namespace
@@ -216,14 +218,13 @@ void CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
         // Chord from the tow point to the far end, sagging in its vertical plane when the line is
         // slack (a parabola whose length is about the cable length).
         const Vec3 chord = farPoint - towPoint;
-        const double D = chord.norm(), L = p.length;
+        const double D = chord.norm(), L = model_.line().length;
         Vec3 sagDirection = Vec3(0, 0, -1) - chord.normalized() * chord.normalized().z();
         if (sagDirection.norm() < 1e-6) sagDirection = Vec3(1, 0, 0);
         sagDirection.normalize();
         const double sag = D < L ? D * std::sqrt(0.375 * (L / D - 1.0)) : 0.0;
-        const int N = model_.n_elements();
-        for (int i = 0; i <= N; ++i) {
-            const double xi = static_cast<double>(i) / N;
+        for (int i = 0; i < model_.n_slots(); ++i) {
+            const double xi = model_.slot_fraction(i);
             Eigen::Map<Vec3>(X.data() + 6 * i) = towPoint + xi * chord + 4.0 * sag * xi * (1.0 - xi) * sagDirection;
             const Vec3 drdxi = chord + 4.0 * sag * (1.0 - 2.0 * xi) * sagDirection;
             Eigen::Map<Vec3>(X.data() + 6 * i + 3) = drdxi.normalized() * std::max(D / L, 1.0);
@@ -231,7 +232,7 @@ void CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
     }
     if (p.enableSeabed) {
         // Start on or above the seabed: the guessed line lies on it where it would pass below.
-        for (int i = 0; i <= model_.n_elements(); ++i) X[6 * i + 2] = std::max(X[6 * i + 2], -p.waterDepth);
+        for (int i = 0; i < model_.n_slots(); ++i) X[6 * i + 2] = std::max(X[6 * i + 2], -p.waterDepth);
     }
     model_.restrict_to_free(X.data(), q.data());
 }
@@ -246,7 +247,7 @@ double CableSimulation::cable_torque(const UCInputs& in) {
     const double raw = geometric_twist(model_, X_.data(), twistRef_);
     const double kTwoPi = 6.28318530717958647692;
     lastBeta_ += std::remainder(raw - lastBeta_, kTwoPi);
-    return p.GJ * (in.twist - lastBeta_) / p.length;
+    return model_.torque_for_twist(in.twist - lastBeta_);
 }
 
 bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) const {
@@ -255,7 +256,7 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
     const char* farName = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor.x/y/z" : "end.x/y/z";
     if (model_.far_end_prescribed()) {
         const Vec3 d = farPoint - tow_.position;
-        const double reach = 1.1 * p.length;
+        const double reach = 1.1 * model_.line().length;
         if (d.norm() > reach) {
             // Name the coordinate that is farthest off, with the range the others leave it.
             int k = 0;
@@ -274,7 +275,7 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
         }
     }
     if (!p.enableSeabed) return true;
-    const double tolerance = 0.5 * p.diameter;  // a point resting on the seabed sinks in slightly
+    const double tolerance = 0.5 * model_.line().diameter;  // a point resting on the seabed sinks in slightly
     if (tow_.position.z() < -p.waterDepth - tolerance) {
         std::snprintf(buffer, sizeof buffer,
                       "tow.z = %.6g m is below the seabed at z = -waterDepth = %.6g m: the tow point must be in the water",
@@ -335,7 +336,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         const UCParams& pp = model_.params();
         loads_.torque = !pp.enableTorsion ? 0.0
                         : pp.torqueMode == UC_TORQUE_PRESCRIBED ? in.torque
-                        : pp.torqueMode == UC_TORQUE_ROTATION   ? pp.GJ * in.twist / pp.length
+                        : pp.torqueMode == UC_TORQUE_ROTATION   ? model_.torque_for_twist(in.twist)
                                                                 : 0.0;
     }
     std::vector<double> v(n, 0.0);
@@ -483,21 +484,27 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
 // exceed sqrt(2n) times: the tolerances are divided by sqrt(2n), so that each unknown meets its own.
 bool CableSimulation::set_integrator_tolerances(std::string& error) {
     const UCParams& p = model_.params();
-    const double l = model_.element_length();
     const double rms = 1.0 / std::sqrt(2.0 * model_.n_free());
-    const double strain = rms * p.tensionTolerance * tensionScale_ / p.EA;
-    const double wave = l / std::sqrt(p.EA / p.massPerLength);
-    const double tau = std::max(p.axialDamping / p.EA, wave);
     std::vector<double>& atol = toleranceBuffer_;
-    atol.assign(2 * model_.n_free(), 0.0);
-    for (int g = 0; g < model_.n_global(); ++g) {
-        const int j = model_.free_index(g);
-        if (j < 0) continue;
-        const bool position = g % 6 < 3;
-        const double a = position ? std::min(rms * p.positionTolerance, strain * l)
-                                  : std::min(rms * p.positionTolerance / l, strain);
-        atol[2 * j] = a;
-        atol[2 * j + 1] = a / tau;
+    atol.assign(2 * model_.n_free(), INFINITY);
+    // Each unknown gets the tolerance of the elements it belongs to (the smaller one at a node
+    // between two sections).
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const SectionProps& section = model_.element_section(e);
+        const double l = model_.element_length(e);
+        const double EA = section.axial.EA;
+        const double strain = rms * p.tensionTolerance * tensionScale_ / EA;
+        const double wave = l / std::sqrt(EA / section.fluid.massPerLength);
+        const double tau = std::max(section.axial.damping / EA, wave);
+        for (int k = 0; k < 12; ++k) {
+            const int j = model_.free_index(model_.element_offset(e) + k);
+            if (j < 0) continue;
+            const bool position = k % 6 < 3;
+            const double a = position ? std::min(rms * p.positionTolerance, strain * l)
+                                      : std::min(rms * p.positionTolerance / l, strain);
+            atol[2 * j] = std::min(atol[2 * j], a);
+            atol[2 * j + 1] = std::min(atol[2 * j + 1], a / tau);
+        }
     }
     return integrator_->set_tolerances(atol, p.relTol, p.absTol, error);
 }
@@ -742,7 +749,7 @@ bool CableSimulation::interface_derivatives(double d[6][12], std::string& error)
             const int comp = s % 3;
             const bool velocity = (s % 6) >= 3;
             const DrivenEnd& end = tow ? tow_ : end_;
-            const int gp = (tow ? 0 : 6 * N) + comp;  // the prescribed global DOF this seed moves
+            const int gp = (tow ? 0 : model_.end_offset()) + comp;  // the prescribed global DOF this seed moves
             // The change of the end's target (position, velocity, acceleration at t + h) per unit
             // input, as DrivenEnd::next makes it.
             double dp1 = 1.0, dv1 = 0.0, da1 = 0.0;
@@ -762,7 +769,7 @@ bool CableSimulation::interface_derivatives(double d[6][12], std::string& error)
             for (int j = 0; j < n; ++j) fK[j] = fC[j] = fM[j] = 0.0;
             for (int k = 0; k < 2; ++k) {
                 if (k == 1 && elements[1] == elements[0]) break;
-                const int g0 = 6 * elements[k];
+                const int g0 = model_.element_offset(elements[k]);
                 const int b = gp - g0;
                 if (b < 0 || b >= 12) continue;
                 for (int a = 0; a < 12; ++a) {
@@ -776,7 +783,7 @@ bool CableSimulation::interface_derivatives(double d[6][12], std::string& error)
             }
             if (!tow) {
                 for (int a = 0; a < 6; ++a) {
-                    const int j = model_.free_index(6 * N + a);
+                    const int j = model_.free_index(model_.end_offset() + a);
                     if (j < 0) continue;
                     fK[j] += Kn(a, comp);
                     fC[j] += Cn(a, comp);
@@ -814,7 +821,7 @@ bool CableSimulation::interface_derivatives(double d[6][12], std::string& error)
             for (int j = 0; j < n; ++j) tmp[j] = c * v0[j] + bv[j];
             // towForce = -(rows 0..2 of element 0), endForce = -(rows 6..8 of element N - 1).
             for (int k = 0; k < 2; ++k) {
-                const int g0 = 6 * elements[k];
+                const int g0 = model_.element_offset(elements[k]);
                 for (int r = 0; r < 3; ++r) {
                     const int a = (k == 0 ? 0 : 6) + r;
                     double dR = 0.0;

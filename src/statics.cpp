@@ -53,8 +53,9 @@ double residual_norm(const CableModel& model, const Loads& loads, double t, cons
 // A force scale for convergence tests: weight of the whole cable, end load, tension scale.
 double force_scale(const CableModel& model, const Loads& loads) {
     const UCParams& p = model.params();
-    const double weight = p.massPerLength * p.gravity * p.length;
-    return std::max({weight, loads.endLoad.norm(), loads.endCouple.norm() / p.length, p.bodyMass * p.gravity, 1.0});
+    const LineScales& line = model.line();
+    const double weight = line.massPerLength * p.gravity * line.length;
+    return std::max({weight, loads.endLoad.norm(), loads.endCouple.norm() / line.length, p.bodyMass * p.gravity, 1.0});
 }
 
 // Pseudo-transient continuation (implicit steps of a fictitious motion from rest, SER rule):
@@ -67,15 +68,17 @@ bool newton(const CableModel& model, BandSolver& solver, const Loads& loads, dou
             std::vector<double>& q, Workspace& w, StaticsResult& result) {
     const int n = model.n_free();
     const UCParams& p = model.params();
-    const double length = p.length;
+    const double length = model.line().length;
+    double shortest = model.element_length(0);
+    for (const ElementRun& run : model.runs()) shortest = std::min(shortest, run.elementLength);
     double norm = residual_norm(model, loads, t, q, w);
     // Round-off of the axial forces: |r'| comes from shape-function sums of coordinates of size
     // |X| with weights ~1/l, so it carries an error of about eps |X| / l, times EA.
     double coordinate = length;
     for (int g = 0; g < model.n_global(); g += 6) coordinate = std::max(coordinate, Eigen::Map<const Vec3>(w.X.data() + g).norm());
     const double roundOff = std::max(1e-12 * force_scale(model, loads),
-                                     64.0 * p.EA * std::min(1.0, loads.axialStiffnessScale) * std::numeric_limits<double>::epsilon() *
-                                         (1.0 + coordinate / model.element_length()));
+                                     64.0 * model.line().EA * std::min(1.0, loads.axialStiffnessScale) * std::numeric_limits<double>::epsilon() *
+                                         (1.0 + coordinate / shortest));
     std::vector<double> dq(n), trial(n);
     double dtau = 0.1 * std::sqrt(length / std::max(p.gravity, 0.1));
     for (int it = 0; it < kMaxNewtonIterations; ++it) {
@@ -159,7 +162,7 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
     Workspace w(model);
     // Stiffness continuation: first a soft cable (about 1 % strain under the loads), on which
     // large rotations are cheap, then EA grows tenfold per stage to its real value.
-    const double EA = model.params().EA;
+    const double EA = model.line().EA;
     double stiffness = std::min(1.0, 100.0 * force_scale(model, loads) / EA);
     std::vector<double> accepted = q;
     double lambda = 0.0, step = 1.0;
@@ -201,7 +204,7 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
                           stiffness, result.residualNorm, result.newtonIterations);
         }
     }
-    if (model.axial().tensionOnly) {
+    if (model.section(0).axial.tensionOnly) {
         // The tension-only law differs only where the two-sided equilibrium is in compression or
         // within 1e-5 strain of it: start from that equilibrium.
         staged.twoSidedAxial = false;

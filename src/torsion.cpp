@@ -28,12 +28,15 @@ Vec3 any_normal(const Vec3& t) {
 }
 
 Vec3 transport_along(const CableModel& model, const double* X, const Vec3& d0) {
-    const double l = model.element_length();
     Vec3 d = d0;
-    Vec3 t = unit_tangent(hermite_shape(0.0, l), X);
+    Vec3 t = unit_tangent(hermite_shape(0.0, model.element_length(0)), X);
     for (int e = 0; e < model.n_elements(); ++e) {
-        for (int k = 1; k <= kTransportSamples; ++k) {
-            const Vec3 next = unit_tangent(hermite_shape(static_cast<double>(k) / kTransportSamples, l), X + 6 * e);
+        const double l = model.element_length(e);
+        for (int k = 0; k <= kTransportSamples; ++k) {
+            // k = 0 matters only across a pinned joint, where the next section's tangent turns
+            // (elsewhere the transport to the same tangent is the identity).
+            if (k == 0 && (e == 0 || model.element_offset(e) == model.element_offset(e - 1) + 6)) continue;
+            const Vec3 next = unit_tangent(hermite_shape(static_cast<double>(k) / kTransportSamples, l), X + model.element_offset(e));
             d = transport(d, t, next);
             d = (d - next * next.dot(d)).normalized();  // keep it a unit normal against round-off
             t = next;
@@ -43,21 +46,19 @@ Vec3 transport_along(const CableModel& model, const double* X, const Vec3& d0) {
 }
 
 TwistReference make_twist_reference(const CableModel& model, const double* X) {
-    const double l = model.element_length();
     const int N = model.n_elements();
     TwistReference ref;
-    ref.topTangent = unit_tangent(hermite_shape(0.0, l), X);
+    ref.topTangent = unit_tangent(hermite_shape(0.0, model.element_length(0)), X);
     ref.topNormal = any_normal(ref.topTangent);
-    ref.endTangent = unit_tangent(hermite_shape(1.0, l), X + 6 * (N - 1));
+    ref.endTangent = unit_tangent(hermite_shape(1.0, model.element_length(N - 1)), X + model.element_offset(N - 1));
     ref.endNormal = transport_along(model, X, ref.topNormal);
     return ref;
 }
 
 double geometric_twist(const CableModel& model, const double* X, const TwistReference& ref) {
-    const double l = model.element_length();
     const int N = model.n_elements();
-    const Vec3 t0 = unit_tangent(hermite_shape(0.0, l), X);
-    const Vec3 tL = unit_tangent(hermite_shape(1.0, l), X + 6 * (N - 1));
+    const Vec3 t0 = unit_tangent(hermite_shape(0.0, model.element_length(0)), X);
+    const Vec3 tL = unit_tangent(hermite_shape(1.0, model.element_length(N - 1)), X + model.element_offset(N - 1));
     const Vec3 top = transport(ref.topNormal, ref.topTangent, t0);
     const Vec3 carried = transport_along(model, X, (top - t0 * t0.dot(top)).normalized());
     Vec3 far = transport(ref.endNormal, ref.endTangent, tL);

@@ -9,6 +9,32 @@
 #define UC_NUM_STATIONS 21
 #define UC_CURRENT_PROFILE_ROWS 10
 #define UC_STRING_CAPACITY 4096
+#define UC_MAX_SECTIONS 8
+#define UC_MAX_ATTACHMENTS 8
+
+typedef struct UCSection {
+    double length; /* section[k].length [m]: unstretched length (must be > 0 when k <= nSections >= 2) */
+    double diameter; /* section[k].diameter [m]: hydrodynamic and displacement diameter */
+    double massPerLength; /* section[k].massPerLength [kg/m]: dry mass per unstretched length */
+    double EA; /* section[k].EA [N]: axial stiffness */
+    double EI; /* section[k].EI [N.m2]: bending stiffness */
+    double GJ; /* section[k].GJ [N.m2]: torsional stiffness */
+    double axialDamping; /* section[k].axialDamping [N.s]: internal axial (Kelvin-Voigt) damping c_a */
+    double Cdn; /* section[k].Cdn: normal drag coefficient (on d) */
+    double Cdt; /* section[k].Cdt: tangential drag coefficient (on pi d) */
+    double Can; /* section[k].Can: normal added-mass coefficient */
+    double Cat; /* section[k].Cat: tangential added-mass coefficient */
+    int nElements; /* section[k].nElements: number of cubic elements */
+    int joint; /* section[k].joint: joint to section k + 1: 0 rigid splice (shared tangent, carries bending moment), 1 pinned shackle (no moment) */
+} UCSection;
+
+typedef struct UCAttachment {
+    double s; /* attachment[k].s [m]: unstretched arc length from the tow point (0 < s <= line length); a node is placed there */
+    double mass; /* attachment[k].mass [kg]: dry mass */
+    double volume; /* attachment[k].volume [m3]: displaced volume (buoyancy rho V g) */
+    double addedMass; /* attachment[k].addedMass [kg]: added mass (isotropic) */
+    double CdA; /* attachment[k].CdA [m2]: drag area (0.5 rho CdA |u| u on the relative velocity) */
+} UCAttachment;
 
 typedef struct UCEndLoadDamping {
     double x[3]; /* endLoadDamping.xx, endLoadDamping.xy, endLoadDamping.xz [N.s/m]: row x of the damping matrix D = -∂endLoad/∂v: over a step the far end carries endLoad - D (v - `endLoadVelocity`) at its current velocity v, implicitly integrated (a partner body's drag stays stable at any step) */
@@ -73,6 +99,10 @@ typedef struct UCParams {
     int wavesNComponents; /* waves.nComponents: number of components of the irregular sea (equal frequency bands over 0.5–3 times the peak frequency) */
     double wavesRampTime; /* waves.rampTime [s]: time over which the waves grow from calm (half a cosine); 0: full waves from the start */
     int wavesStretching; /* waves.stretching: kinematics near the surface: 0 none (above the mean level those of z = 0), 1 Wheeler stretching of the water column up to the elevation */
+    int nSections; /* nSections: sections of the line from the tow point: 1, the uniform line of `length`, `diameter`, ..., `nElements`; 2 to 8, `section[1..nSections].*` describe the line and those scalar parameters are not used */
+    UCSection section[UC_MAX_SECTIONS];
+    int nAttachments; /* nAttachments: Attachments in use (0..8): point masses, buoys, connectors at attachment[1..nAttachments].s */
+    UCAttachment attachment[UC_MAX_ATTACHMENTS];
 } UCParams;
 
 typedef struct UCInputs {
@@ -224,6 +254,152 @@ typedef struct UCOutputs {
     X(87, "waves.nComponents", INTEGER, PARAMETER, wavesNComponents) \
     X(88, "waves.rampTime", REAL, PARAMETER, wavesRampTime) \
     X(89, "waves.stretching", INTEGER, PARAMETER, wavesStretching) \
+    X(90, "nSections", INTEGER, PARAMETER, nSections) \
+    X(91, "section[1].length", REAL, PARAMETER, section[0].length) \
+    X(92, "section[2].length", REAL, PARAMETER, section[1].length) \
+    X(93, "section[3].length", REAL, PARAMETER, section[2].length) \
+    X(94, "section[4].length", REAL, PARAMETER, section[3].length) \
+    X(95, "section[5].length", REAL, PARAMETER, section[4].length) \
+    X(96, "section[6].length", REAL, PARAMETER, section[5].length) \
+    X(97, "section[7].length", REAL, PARAMETER, section[6].length) \
+    X(98, "section[8].length", REAL, PARAMETER, section[7].length) \
+    X(99, "section[1].diameter", REAL, PARAMETER, section[0].diameter) \
+    X(100, "section[2].diameter", REAL, PARAMETER, section[1].diameter) \
+    X(101, "section[3].diameter", REAL, PARAMETER, section[2].diameter) \
+    X(102, "section[4].diameter", REAL, PARAMETER, section[3].diameter) \
+    X(103, "section[5].diameter", REAL, PARAMETER, section[4].diameter) \
+    X(104, "section[6].diameter", REAL, PARAMETER, section[5].diameter) \
+    X(105, "section[7].diameter", REAL, PARAMETER, section[6].diameter) \
+    X(106, "section[8].diameter", REAL, PARAMETER, section[7].diameter) \
+    X(107, "section[1].massPerLength", REAL, PARAMETER, section[0].massPerLength) \
+    X(108, "section[2].massPerLength", REAL, PARAMETER, section[1].massPerLength) \
+    X(109, "section[3].massPerLength", REAL, PARAMETER, section[2].massPerLength) \
+    X(110, "section[4].massPerLength", REAL, PARAMETER, section[3].massPerLength) \
+    X(111, "section[5].massPerLength", REAL, PARAMETER, section[4].massPerLength) \
+    X(112, "section[6].massPerLength", REAL, PARAMETER, section[5].massPerLength) \
+    X(113, "section[7].massPerLength", REAL, PARAMETER, section[6].massPerLength) \
+    X(114, "section[8].massPerLength", REAL, PARAMETER, section[7].massPerLength) \
+    X(115, "section[1].EA", REAL, PARAMETER, section[0].EA) \
+    X(116, "section[2].EA", REAL, PARAMETER, section[1].EA) \
+    X(117, "section[3].EA", REAL, PARAMETER, section[2].EA) \
+    X(118, "section[4].EA", REAL, PARAMETER, section[3].EA) \
+    X(119, "section[5].EA", REAL, PARAMETER, section[4].EA) \
+    X(120, "section[6].EA", REAL, PARAMETER, section[5].EA) \
+    X(121, "section[7].EA", REAL, PARAMETER, section[6].EA) \
+    X(122, "section[8].EA", REAL, PARAMETER, section[7].EA) \
+    X(123, "section[1].EI", REAL, PARAMETER, section[0].EI) \
+    X(124, "section[2].EI", REAL, PARAMETER, section[1].EI) \
+    X(125, "section[3].EI", REAL, PARAMETER, section[2].EI) \
+    X(126, "section[4].EI", REAL, PARAMETER, section[3].EI) \
+    X(127, "section[5].EI", REAL, PARAMETER, section[4].EI) \
+    X(128, "section[6].EI", REAL, PARAMETER, section[5].EI) \
+    X(129, "section[7].EI", REAL, PARAMETER, section[6].EI) \
+    X(130, "section[8].EI", REAL, PARAMETER, section[7].EI) \
+    X(131, "section[1].GJ", REAL, PARAMETER, section[0].GJ) \
+    X(132, "section[2].GJ", REAL, PARAMETER, section[1].GJ) \
+    X(133, "section[3].GJ", REAL, PARAMETER, section[2].GJ) \
+    X(134, "section[4].GJ", REAL, PARAMETER, section[3].GJ) \
+    X(135, "section[5].GJ", REAL, PARAMETER, section[4].GJ) \
+    X(136, "section[6].GJ", REAL, PARAMETER, section[5].GJ) \
+    X(137, "section[7].GJ", REAL, PARAMETER, section[6].GJ) \
+    X(138, "section[8].GJ", REAL, PARAMETER, section[7].GJ) \
+    X(139, "section[1].axialDamping", REAL, PARAMETER, section[0].axialDamping) \
+    X(140, "section[2].axialDamping", REAL, PARAMETER, section[1].axialDamping) \
+    X(141, "section[3].axialDamping", REAL, PARAMETER, section[2].axialDamping) \
+    X(142, "section[4].axialDamping", REAL, PARAMETER, section[3].axialDamping) \
+    X(143, "section[5].axialDamping", REAL, PARAMETER, section[4].axialDamping) \
+    X(144, "section[6].axialDamping", REAL, PARAMETER, section[5].axialDamping) \
+    X(145, "section[7].axialDamping", REAL, PARAMETER, section[6].axialDamping) \
+    X(146, "section[8].axialDamping", REAL, PARAMETER, section[7].axialDamping) \
+    X(147, "section[1].Cdn", REAL, PARAMETER, section[0].Cdn) \
+    X(148, "section[2].Cdn", REAL, PARAMETER, section[1].Cdn) \
+    X(149, "section[3].Cdn", REAL, PARAMETER, section[2].Cdn) \
+    X(150, "section[4].Cdn", REAL, PARAMETER, section[3].Cdn) \
+    X(151, "section[5].Cdn", REAL, PARAMETER, section[4].Cdn) \
+    X(152, "section[6].Cdn", REAL, PARAMETER, section[5].Cdn) \
+    X(153, "section[7].Cdn", REAL, PARAMETER, section[6].Cdn) \
+    X(154, "section[8].Cdn", REAL, PARAMETER, section[7].Cdn) \
+    X(155, "section[1].Cdt", REAL, PARAMETER, section[0].Cdt) \
+    X(156, "section[2].Cdt", REAL, PARAMETER, section[1].Cdt) \
+    X(157, "section[3].Cdt", REAL, PARAMETER, section[2].Cdt) \
+    X(158, "section[4].Cdt", REAL, PARAMETER, section[3].Cdt) \
+    X(159, "section[5].Cdt", REAL, PARAMETER, section[4].Cdt) \
+    X(160, "section[6].Cdt", REAL, PARAMETER, section[5].Cdt) \
+    X(161, "section[7].Cdt", REAL, PARAMETER, section[6].Cdt) \
+    X(162, "section[8].Cdt", REAL, PARAMETER, section[7].Cdt) \
+    X(163, "section[1].Can", REAL, PARAMETER, section[0].Can) \
+    X(164, "section[2].Can", REAL, PARAMETER, section[1].Can) \
+    X(165, "section[3].Can", REAL, PARAMETER, section[2].Can) \
+    X(166, "section[4].Can", REAL, PARAMETER, section[3].Can) \
+    X(167, "section[5].Can", REAL, PARAMETER, section[4].Can) \
+    X(168, "section[6].Can", REAL, PARAMETER, section[5].Can) \
+    X(169, "section[7].Can", REAL, PARAMETER, section[6].Can) \
+    X(170, "section[8].Can", REAL, PARAMETER, section[7].Can) \
+    X(171, "section[1].Cat", REAL, PARAMETER, section[0].Cat) \
+    X(172, "section[2].Cat", REAL, PARAMETER, section[1].Cat) \
+    X(173, "section[3].Cat", REAL, PARAMETER, section[2].Cat) \
+    X(174, "section[4].Cat", REAL, PARAMETER, section[3].Cat) \
+    X(175, "section[5].Cat", REAL, PARAMETER, section[4].Cat) \
+    X(176, "section[6].Cat", REAL, PARAMETER, section[5].Cat) \
+    X(177, "section[7].Cat", REAL, PARAMETER, section[6].Cat) \
+    X(178, "section[8].Cat", REAL, PARAMETER, section[7].Cat) \
+    X(179, "section[1].nElements", INTEGER, PARAMETER, section[0].nElements) \
+    X(180, "section[2].nElements", INTEGER, PARAMETER, section[1].nElements) \
+    X(181, "section[3].nElements", INTEGER, PARAMETER, section[2].nElements) \
+    X(182, "section[4].nElements", INTEGER, PARAMETER, section[3].nElements) \
+    X(183, "section[5].nElements", INTEGER, PARAMETER, section[4].nElements) \
+    X(184, "section[6].nElements", INTEGER, PARAMETER, section[5].nElements) \
+    X(185, "section[7].nElements", INTEGER, PARAMETER, section[6].nElements) \
+    X(186, "section[8].nElements", INTEGER, PARAMETER, section[7].nElements) \
+    X(187, "section[1].joint", INTEGER, PARAMETER, section[0].joint) \
+    X(188, "section[2].joint", INTEGER, PARAMETER, section[1].joint) \
+    X(189, "section[3].joint", INTEGER, PARAMETER, section[2].joint) \
+    X(190, "section[4].joint", INTEGER, PARAMETER, section[3].joint) \
+    X(191, "section[5].joint", INTEGER, PARAMETER, section[4].joint) \
+    X(192, "section[6].joint", INTEGER, PARAMETER, section[5].joint) \
+    X(193, "section[7].joint", INTEGER, PARAMETER, section[6].joint) \
+    X(194, "section[8].joint", INTEGER, PARAMETER, section[7].joint) \
+    X(195, "nAttachments", INTEGER, PARAMETER, nAttachments) \
+    X(196, "attachment[1].s", REAL, PARAMETER, attachment[0].s) \
+    X(197, "attachment[2].s", REAL, PARAMETER, attachment[1].s) \
+    X(198, "attachment[3].s", REAL, PARAMETER, attachment[2].s) \
+    X(199, "attachment[4].s", REAL, PARAMETER, attachment[3].s) \
+    X(200, "attachment[5].s", REAL, PARAMETER, attachment[4].s) \
+    X(201, "attachment[6].s", REAL, PARAMETER, attachment[5].s) \
+    X(202, "attachment[7].s", REAL, PARAMETER, attachment[6].s) \
+    X(203, "attachment[8].s", REAL, PARAMETER, attachment[7].s) \
+    X(204, "attachment[1].mass", REAL, PARAMETER, attachment[0].mass) \
+    X(205, "attachment[2].mass", REAL, PARAMETER, attachment[1].mass) \
+    X(206, "attachment[3].mass", REAL, PARAMETER, attachment[2].mass) \
+    X(207, "attachment[4].mass", REAL, PARAMETER, attachment[3].mass) \
+    X(208, "attachment[5].mass", REAL, PARAMETER, attachment[4].mass) \
+    X(209, "attachment[6].mass", REAL, PARAMETER, attachment[5].mass) \
+    X(210, "attachment[7].mass", REAL, PARAMETER, attachment[6].mass) \
+    X(211, "attachment[8].mass", REAL, PARAMETER, attachment[7].mass) \
+    X(212, "attachment[1].volume", REAL, PARAMETER, attachment[0].volume) \
+    X(213, "attachment[2].volume", REAL, PARAMETER, attachment[1].volume) \
+    X(214, "attachment[3].volume", REAL, PARAMETER, attachment[2].volume) \
+    X(215, "attachment[4].volume", REAL, PARAMETER, attachment[3].volume) \
+    X(216, "attachment[5].volume", REAL, PARAMETER, attachment[4].volume) \
+    X(217, "attachment[6].volume", REAL, PARAMETER, attachment[5].volume) \
+    X(218, "attachment[7].volume", REAL, PARAMETER, attachment[6].volume) \
+    X(219, "attachment[8].volume", REAL, PARAMETER, attachment[7].volume) \
+    X(220, "attachment[1].addedMass", REAL, PARAMETER, attachment[0].addedMass) \
+    X(221, "attachment[2].addedMass", REAL, PARAMETER, attachment[1].addedMass) \
+    X(222, "attachment[3].addedMass", REAL, PARAMETER, attachment[2].addedMass) \
+    X(223, "attachment[4].addedMass", REAL, PARAMETER, attachment[3].addedMass) \
+    X(224, "attachment[5].addedMass", REAL, PARAMETER, attachment[4].addedMass) \
+    X(225, "attachment[6].addedMass", REAL, PARAMETER, attachment[5].addedMass) \
+    X(226, "attachment[7].addedMass", REAL, PARAMETER, attachment[6].addedMass) \
+    X(227, "attachment[8].addedMass", REAL, PARAMETER, attachment[7].addedMass) \
+    X(228, "attachment[1].CdA", REAL, PARAMETER, attachment[0].CdA) \
+    X(229, "attachment[2].CdA", REAL, PARAMETER, attachment[1].CdA) \
+    X(230, "attachment[3].CdA", REAL, PARAMETER, attachment[2].CdA) \
+    X(231, "attachment[4].CdA", REAL, PARAMETER, attachment[3].CdA) \
+    X(232, "attachment[5].CdA", REAL, PARAMETER, attachment[4].CdA) \
+    X(233, "attachment[6].CdA", REAL, PARAMETER, attachment[5].CdA) \
+    X(234, "attachment[7].CdA", REAL, PARAMETER, attachment[6].CdA) \
+    X(235, "attachment[8].CdA", REAL, PARAMETER, attachment[7].CdA) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -517,6 +693,152 @@ typedef struct UCOutputs {
     X(wavesNComponents, 200) \
     X(wavesRampTime, 0.0) \
     X(wavesStretching, 0) \
+    X(nSections, 1) \
+    X(section[0].length, 0.0) \
+    X(section[1].length, 0.0) \
+    X(section[2].length, 0.0) \
+    X(section[3].length, 0.0) \
+    X(section[4].length, 0.0) \
+    X(section[5].length, 0.0) \
+    X(section[6].length, 0.0) \
+    X(section[7].length, 0.0) \
+    X(section[0].diameter, 0.0332) \
+    X(section[1].diameter, 0.0332) \
+    X(section[2].diameter, 0.0332) \
+    X(section[3].diameter, 0.0332) \
+    X(section[4].diameter, 0.0332) \
+    X(section[5].diameter, 0.0332) \
+    X(section[6].diameter, 0.0332) \
+    X(section[7].diameter, 0.0332) \
+    X(section[0].massPerLength, 2.701841184736018) \
+    X(section[1].massPerLength, 2.701841184736018) \
+    X(section[2].massPerLength, 2.701841184736018) \
+    X(section[3].massPerLength, 2.701841184736018) \
+    X(section[4].massPerLength, 2.701841184736018) \
+    X(section[5].massPerLength, 2.701841184736018) \
+    X(section[6].massPerLength, 2.701841184736018) \
+    X(section[7].massPerLength, 2.701841184736018) \
+    X(section[0].EA, 67091538.55079827) \
+    X(section[1].EA, 67091538.55079827) \
+    X(section[2].EA, 67091538.55079827) \
+    X(section[3].EA, 67091538.55079827) \
+    X(section[4].EA, 67091538.55079827) \
+    X(section[5].EA, 67091538.55079827) \
+    X(section[6].EA, 67091538.55079827) \
+    X(section[7].EA, 67091538.55079827) \
+    X(section[0].EI, 1000.0) \
+    X(section[1].EI, 1000.0) \
+    X(section[2].EI, 1000.0) \
+    X(section[3].EI, 1000.0) \
+    X(section[4].EI, 1000.0) \
+    X(section[5].EI, 1000.0) \
+    X(section[6].EI, 1000.0) \
+    X(section[7].EI, 1000.0) \
+    X(section[0].GJ, 1000.0) \
+    X(section[1].GJ, 1000.0) \
+    X(section[2].GJ, 1000.0) \
+    X(section[3].GJ, 1000.0) \
+    X(section[4].GJ, 1000.0) \
+    X(section[5].GJ, 1000.0) \
+    X(section[6].GJ, 1000.0) \
+    X(section[7].GJ, 1000.0) \
+    X(section[0].axialDamping, 670915.3855079827) \
+    X(section[1].axialDamping, 670915.3855079827) \
+    X(section[2].axialDamping, 670915.3855079827) \
+    X(section[3].axialDamping, 670915.3855079827) \
+    X(section[4].axialDamping, 670915.3855079827) \
+    X(section[5].axialDamping, 670915.3855079827) \
+    X(section[6].axialDamping, 670915.3855079827) \
+    X(section[7].axialDamping, 670915.3855079827) \
+    X(section[0].Cdn, 1.649) \
+    X(section[1].Cdn, 1.649) \
+    X(section[2].Cdn, 1.649) \
+    X(section[3].Cdn, 1.649) \
+    X(section[4].Cdn, 1.649) \
+    X(section[5].Cdn, 1.649) \
+    X(section[6].Cdn, 1.649) \
+    X(section[7].Cdn, 1.649) \
+    X(section[0].Cdt, 0.12) \
+    X(section[1].Cdt, 0.12) \
+    X(section[2].Cdt, 0.12) \
+    X(section[3].Cdt, 0.12) \
+    X(section[4].Cdt, 0.12) \
+    X(section[5].Cdt, 0.12) \
+    X(section[6].Cdt, 0.12) \
+    X(section[7].Cdt, 0.12) \
+    X(section[0].Can, 1.0) \
+    X(section[1].Can, 1.0) \
+    X(section[2].Can, 1.0) \
+    X(section[3].Can, 1.0) \
+    X(section[4].Can, 1.0) \
+    X(section[5].Can, 1.0) \
+    X(section[6].Can, 1.0) \
+    X(section[7].Can, 1.0) \
+    X(section[0].Cat, 0.0) \
+    X(section[1].Cat, 0.0) \
+    X(section[2].Cat, 0.0) \
+    X(section[3].Cat, 0.0) \
+    X(section[4].Cat, 0.0) \
+    X(section[5].Cat, 0.0) \
+    X(section[6].Cat, 0.0) \
+    X(section[7].Cat, 0.0) \
+    X(section[0].nElements, 10) \
+    X(section[1].nElements, 10) \
+    X(section[2].nElements, 10) \
+    X(section[3].nElements, 10) \
+    X(section[4].nElements, 10) \
+    X(section[5].nElements, 10) \
+    X(section[6].nElements, 10) \
+    X(section[7].nElements, 10) \
+    X(section[0].joint, 0) \
+    X(section[1].joint, 0) \
+    X(section[2].joint, 0) \
+    X(section[3].joint, 0) \
+    X(section[4].joint, 0) \
+    X(section[5].joint, 0) \
+    X(section[6].joint, 0) \
+    X(section[7].joint, 0) \
+    X(nAttachments, 0) \
+    X(attachment[0].s, 0.0) \
+    X(attachment[1].s, 0.0) \
+    X(attachment[2].s, 0.0) \
+    X(attachment[3].s, 0.0) \
+    X(attachment[4].s, 0.0) \
+    X(attachment[5].s, 0.0) \
+    X(attachment[6].s, 0.0) \
+    X(attachment[7].s, 0.0) \
+    X(attachment[0].mass, 0.0) \
+    X(attachment[1].mass, 0.0) \
+    X(attachment[2].mass, 0.0) \
+    X(attachment[3].mass, 0.0) \
+    X(attachment[4].mass, 0.0) \
+    X(attachment[5].mass, 0.0) \
+    X(attachment[6].mass, 0.0) \
+    X(attachment[7].mass, 0.0) \
+    X(attachment[0].volume, 0.0) \
+    X(attachment[1].volume, 0.0) \
+    X(attachment[2].volume, 0.0) \
+    X(attachment[3].volume, 0.0) \
+    X(attachment[4].volume, 0.0) \
+    X(attachment[5].volume, 0.0) \
+    X(attachment[6].volume, 0.0) \
+    X(attachment[7].volume, 0.0) \
+    X(attachment[0].addedMass, 0.0) \
+    X(attachment[1].addedMass, 0.0) \
+    X(attachment[2].addedMass, 0.0) \
+    X(attachment[3].addedMass, 0.0) \
+    X(attachment[4].addedMass, 0.0) \
+    X(attachment[5].addedMass, 0.0) \
+    X(attachment[6].addedMass, 0.0) \
+    X(attachment[7].addedMass, 0.0) \
+    X(attachment[0].CdA, 0.0) \
+    X(attachment[1].CdA, 0.0) \
+    X(attachment[2].CdA, 0.0) \
+    X(attachment[3].CdA, 0.0) \
+    X(attachment[4].CdA, 0.0) \
+    X(attachment[5].CdA, 0.0) \
+    X(attachment[6].CdA, 0.0) \
+    X(attachment[7].CdA, 0.0) \
 
 /* X(member, name, lo, hi, loOpen, hiOpen, rangeText, why): the admissible interval of every numeric parameter (closed or open at each end) */
 #define UC_SCHEMA_PARAMETER_RANGES(X) \
@@ -603,6 +925,152 @@ typedef struct UCOutputs {
     X(wavesNComponents, "waves.nComponents", 1.0, 5000.0, 0, 0, "[1, 5000]", "the irregular sea has 1 to 5000 components") \
     X(wavesRampTime, "waves.rampTime", 0.0, 1000000.0, 0, 0, "[0, 1000000]", "the ramp time is a non-negative time") \
     X(wavesStretching, "waves.stretching", 0.0, 1.0, 0, 0, "{0 none, 1 Wheeler}", "unknown stretching") \
+    X(nSections, "nSections", 1.0, 8.0, 0, 0, "[1, 8]", "a line has 1 to 8 sections") \
+    X(section[0].length, "section[1].length", 0.0, 100000.0, 0, 0, "[0, 100000]", "a section length cannot be negative") \
+    X(section[1].length, "section[2].length", 0.0, 100000.0, 0, 0, "[0, 100000]", "a section length cannot be negative") \
+    X(section[2].length, "section[3].length", 0.0, 100000.0, 0, 0, "[0, 100000]", "a section length cannot be negative") \
+    X(section[3].length, "section[4].length", 0.0, 100000.0, 0, 0, "[0, 100000]", "a section length cannot be negative") \
+    X(section[4].length, "section[5].length", 0.0, 100000.0, 0, 0, "[0, 100000]", "a section length cannot be negative") \
+    X(section[5].length, "section[6].length", 0.0, 100000.0, 0, 0, "[0, 100000]", "a section length cannot be negative") \
+    X(section[6].length, "section[7].length", 0.0, 100000.0, 0, 0, "[0, 100000]", "a section length cannot be negative") \
+    X(section[7].length, "section[8].length", 0.0, 100000.0, 0, 0, "[0, 100000]", "a section length cannot be negative") \
+    X(section[0].diameter, "section[1].diameter", 0.0, 10.0, 1, 0, "(0, 10]", "drag, buoyancy and added mass need a positive diameter") \
+    X(section[1].diameter, "section[2].diameter", 0.0, 10.0, 1, 0, "(0, 10]", "drag, buoyancy and added mass need a positive diameter") \
+    X(section[2].diameter, "section[3].diameter", 0.0, 10.0, 1, 0, "(0, 10]", "drag, buoyancy and added mass need a positive diameter") \
+    X(section[3].diameter, "section[4].diameter", 0.0, 10.0, 1, 0, "(0, 10]", "drag, buoyancy and added mass need a positive diameter") \
+    X(section[4].diameter, "section[5].diameter", 0.0, 10.0, 1, 0, "(0, 10]", "drag, buoyancy and added mass need a positive diameter") \
+    X(section[5].diameter, "section[6].diameter", 0.0, 10.0, 1, 0, "(0, 10]", "drag, buoyancy and added mass need a positive diameter") \
+    X(section[6].diameter, "section[7].diameter", 0.0, 10.0, 1, 0, "(0, 10]", "drag, buoyancy and added mass need a positive diameter") \
+    X(section[7].diameter, "section[8].diameter", 0.0, 10.0, 1, 0, "(0, 10]", "drag, buoyancy and added mass need a positive diameter") \
+    X(section[0].massPerLength, "section[1].massPerLength", 0.0, 100000.0, 1, 0, "(0, 100000]", "the line must have mass (the mass matrix must be positive definite)") \
+    X(section[1].massPerLength, "section[2].massPerLength", 0.0, 100000.0, 1, 0, "(0, 100000]", "the line must have mass (the mass matrix must be positive definite)") \
+    X(section[2].massPerLength, "section[3].massPerLength", 0.0, 100000.0, 1, 0, "(0, 100000]", "the line must have mass (the mass matrix must be positive definite)") \
+    X(section[3].massPerLength, "section[4].massPerLength", 0.0, 100000.0, 1, 0, "(0, 100000]", "the line must have mass (the mass matrix must be positive definite)") \
+    X(section[4].massPerLength, "section[5].massPerLength", 0.0, 100000.0, 1, 0, "(0, 100000]", "the line must have mass (the mass matrix must be positive definite)") \
+    X(section[5].massPerLength, "section[6].massPerLength", 0.0, 100000.0, 1, 0, "(0, 100000]", "the line must have mass (the mass matrix must be positive definite)") \
+    X(section[6].massPerLength, "section[7].massPerLength", 0.0, 100000.0, 1, 0, "(0, 100000]", "the line must have mass (the mass matrix must be positive definite)") \
+    X(section[7].massPerLength, "section[8].massPerLength", 0.0, 100000.0, 1, 0, "(0, 100000]", "the line must have mass (the mass matrix must be positive definite)") \
+    X(section[0].EA, "section[1].EA", 0.0, 10000000000000.0, 1, 0, "(0, 10000000000000]", "the axial stiffness carries the tension") \
+    X(section[1].EA, "section[2].EA", 0.0, 10000000000000.0, 1, 0, "(0, 10000000000000]", "the axial stiffness carries the tension") \
+    X(section[2].EA, "section[3].EA", 0.0, 10000000000000.0, 1, 0, "(0, 10000000000000]", "the axial stiffness carries the tension") \
+    X(section[3].EA, "section[4].EA", 0.0, 10000000000000.0, 1, 0, "(0, 10000000000000]", "the axial stiffness carries the tension") \
+    X(section[4].EA, "section[5].EA", 0.0, 10000000000000.0, 1, 0, "(0, 10000000000000]", "the axial stiffness carries the tension") \
+    X(section[5].EA, "section[6].EA", 0.0, 10000000000000.0, 1, 0, "(0, 10000000000000]", "the axial stiffness carries the tension") \
+    X(section[6].EA, "section[7].EA", 0.0, 10000000000000.0, 1, 0, "(0, 10000000000000]", "the axial stiffness carries the tension") \
+    X(section[7].EA, "section[8].EA", 0.0, 10000000000000.0, 1, 0, "(0, 10000000000000]", "the axial stiffness carries the tension") \
+    X(section[0].EI, "section[1].EI", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a bending stiffness cannot be negative") \
+    X(section[1].EI, "section[2].EI", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a bending stiffness cannot be negative") \
+    X(section[2].EI, "section[3].EI", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a bending stiffness cannot be negative") \
+    X(section[3].EI, "section[4].EI", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a bending stiffness cannot be negative") \
+    X(section[4].EI, "section[5].EI", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a bending stiffness cannot be negative") \
+    X(section[5].EI, "section[6].EI", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a bending stiffness cannot be negative") \
+    X(section[6].EI, "section[7].EI", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a bending stiffness cannot be negative") \
+    X(section[7].EI, "section[8].EI", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a bending stiffness cannot be negative") \
+    X(section[0].GJ, "section[1].GJ", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a torsional stiffness cannot be negative") \
+    X(section[1].GJ, "section[2].GJ", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a torsional stiffness cannot be negative") \
+    X(section[2].GJ, "section[3].GJ", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a torsional stiffness cannot be negative") \
+    X(section[3].GJ, "section[4].GJ", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a torsional stiffness cannot be negative") \
+    X(section[4].GJ, "section[5].GJ", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a torsional stiffness cannot be negative") \
+    X(section[5].GJ, "section[6].GJ", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a torsional stiffness cannot be negative") \
+    X(section[6].GJ, "section[7].GJ", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a torsional stiffness cannot be negative") \
+    X(section[7].GJ, "section[8].GJ", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a torsional stiffness cannot be negative") \
+    X(section[0].axialDamping, "section[1].axialDamping", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[1].axialDamping, "section[2].axialDamping", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[2].axialDamping, "section[3].axialDamping", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[3].axialDamping, "section[4].axialDamping", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[4].axialDamping, "section[5].axialDamping", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[5].axialDamping, "section[6].axialDamping", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[6].axialDamping, "section[7].axialDamping", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[7].axialDamping, "section[8].axialDamping", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[0].Cdn, "section[1].Cdn", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[1].Cdn, "section[2].Cdn", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[2].Cdn, "section[3].Cdn", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[3].Cdn, "section[4].Cdn", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[4].Cdn, "section[5].Cdn", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[5].Cdn, "section[6].Cdn", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[6].Cdn, "section[7].Cdn", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[7].Cdn, "section[8].Cdn", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[0].Cdt, "section[1].Cdt", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[1].Cdt, "section[2].Cdt", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[2].Cdt, "section[3].Cdt", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[3].Cdt, "section[4].Cdt", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[4].Cdt, "section[5].Cdt", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[5].Cdt, "section[6].Cdt", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[6].Cdt, "section[7].Cdt", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[7].Cdt, "section[8].Cdt", 0.0, 100.0, 0, 0, "[0, 100]", "drag must oppose the relative flow") \
+    X(section[0].Can, "section[1].Can", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[1].Can, "section[2].Can", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[2].Can, "section[3].Can", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[3].Can, "section[4].Can", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[4].Can, "section[5].Can", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[5].Can, "section[6].Can", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[6].Can, "section[7].Can", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[7].Can, "section[8].Can", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[0].Cat, "section[1].Cat", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[1].Cat, "section[2].Cat", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[2].Cat, "section[3].Cat", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[3].Cat, "section[4].Cat", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[4].Cat, "section[5].Cat", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[5].Cat, "section[6].Cat", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[6].Cat, "section[7].Cat", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[7].Cat, "section[8].Cat", 0.0, 100.0, 0, 0, "[0, 100]", "added mass cannot be negative") \
+    X(section[0].nElements, "section[1].nElements", 1.0, 1000.0, 0, 0, "[1, 1000]", "a section needs at least one element; more than 1000 is never needed") \
+    X(section[1].nElements, "section[2].nElements", 1.0, 1000.0, 0, 0, "[1, 1000]", "a section needs at least one element; more than 1000 is never needed") \
+    X(section[2].nElements, "section[3].nElements", 1.0, 1000.0, 0, 0, "[1, 1000]", "a section needs at least one element; more than 1000 is never needed") \
+    X(section[3].nElements, "section[4].nElements", 1.0, 1000.0, 0, 0, "[1, 1000]", "a section needs at least one element; more than 1000 is never needed") \
+    X(section[4].nElements, "section[5].nElements", 1.0, 1000.0, 0, 0, "[1, 1000]", "a section needs at least one element; more than 1000 is never needed") \
+    X(section[5].nElements, "section[6].nElements", 1.0, 1000.0, 0, 0, "[1, 1000]", "a section needs at least one element; more than 1000 is never needed") \
+    X(section[6].nElements, "section[7].nElements", 1.0, 1000.0, 0, 0, "[1, 1000]", "a section needs at least one element; more than 1000 is never needed") \
+    X(section[7].nElements, "section[8].nElements", 1.0, 1000.0, 0, 0, "[1, 1000]", "a section needs at least one element; more than 1000 is never needed") \
+    X(section[0].joint, "section[1].joint", 0.0, 1.0, 0, 0, "{0 rigid, 1 pinned}", "unknown joint") \
+    X(section[1].joint, "section[2].joint", 0.0, 1.0, 0, 0, "{0 rigid, 1 pinned}", "unknown joint") \
+    X(section[2].joint, "section[3].joint", 0.0, 1.0, 0, 0, "{0 rigid, 1 pinned}", "unknown joint") \
+    X(section[3].joint, "section[4].joint", 0.0, 1.0, 0, 0, "{0 rigid, 1 pinned}", "unknown joint") \
+    X(section[4].joint, "section[5].joint", 0.0, 1.0, 0, 0, "{0 rigid, 1 pinned}", "unknown joint") \
+    X(section[5].joint, "section[6].joint", 0.0, 1.0, 0, 0, "{0 rigid, 1 pinned}", "unknown joint") \
+    X(section[6].joint, "section[7].joint", 0.0, 1.0, 0, 0, "{0 rigid, 1 pinned}", "unknown joint") \
+    X(section[7].joint, "section[8].joint", 0.0, 1.0, 0, 0, "{0 rigid, 1 pinned}", "unknown joint") \
+    X(nAttachments, "nAttachments", 0.0, 8.0, 0, 0, "[0, 8]", "a line has at most 8 attachments") \
+    X(attachment[0].s, "attachment[1].s", 0.0, 100000.0, 0, 0, "[0, 100000]", "an attachment lies on the line") \
+    X(attachment[1].s, "attachment[2].s", 0.0, 100000.0, 0, 0, "[0, 100000]", "an attachment lies on the line") \
+    X(attachment[2].s, "attachment[3].s", 0.0, 100000.0, 0, 0, "[0, 100000]", "an attachment lies on the line") \
+    X(attachment[3].s, "attachment[4].s", 0.0, 100000.0, 0, 0, "[0, 100000]", "an attachment lies on the line") \
+    X(attachment[4].s, "attachment[5].s", 0.0, 100000.0, 0, 0, "[0, 100000]", "an attachment lies on the line") \
+    X(attachment[5].s, "attachment[6].s", 0.0, 100000.0, 0, 0, "[0, 100000]", "an attachment lies on the line") \
+    X(attachment[6].s, "attachment[7].s", 0.0, 100000.0, 0, 0, "[0, 100000]", "an attachment lies on the line") \
+    X(attachment[7].s, "attachment[8].s", 0.0, 100000.0, 0, 0, "[0, 100000]", "an attachment lies on the line") \
+    X(attachment[0].mass, "attachment[1].mass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "a mass cannot be negative") \
+    X(attachment[1].mass, "attachment[2].mass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "a mass cannot be negative") \
+    X(attachment[2].mass, "attachment[3].mass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "a mass cannot be negative") \
+    X(attachment[3].mass, "attachment[4].mass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "a mass cannot be negative") \
+    X(attachment[4].mass, "attachment[5].mass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "a mass cannot be negative") \
+    X(attachment[5].mass, "attachment[6].mass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "a mass cannot be negative") \
+    X(attachment[6].mass, "attachment[7].mass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "a mass cannot be negative") \
+    X(attachment[7].mass, "attachment[8].mass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "a mass cannot be negative") \
+    X(attachment[0].volume, "attachment[1].volume", 0.0, 1000000.0, 0, 0, "[0, 1000000]", "a volume cannot be negative") \
+    X(attachment[1].volume, "attachment[2].volume", 0.0, 1000000.0, 0, 0, "[0, 1000000]", "a volume cannot be negative") \
+    X(attachment[2].volume, "attachment[3].volume", 0.0, 1000000.0, 0, 0, "[0, 1000000]", "a volume cannot be negative") \
+    X(attachment[3].volume, "attachment[4].volume", 0.0, 1000000.0, 0, 0, "[0, 1000000]", "a volume cannot be negative") \
+    X(attachment[4].volume, "attachment[5].volume", 0.0, 1000000.0, 0, 0, "[0, 1000000]", "a volume cannot be negative") \
+    X(attachment[5].volume, "attachment[6].volume", 0.0, 1000000.0, 0, 0, "[0, 1000000]", "a volume cannot be negative") \
+    X(attachment[6].volume, "attachment[7].volume", 0.0, 1000000.0, 0, 0, "[0, 1000000]", "a volume cannot be negative") \
+    X(attachment[7].volume, "attachment[8].volume", 0.0, 1000000.0, 0, 0, "[0, 1000000]", "a volume cannot be negative") \
+    X(attachment[0].addedMass, "attachment[1].addedMass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "added mass cannot be negative") \
+    X(attachment[1].addedMass, "attachment[2].addedMass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "added mass cannot be negative") \
+    X(attachment[2].addedMass, "attachment[3].addedMass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "added mass cannot be negative") \
+    X(attachment[3].addedMass, "attachment[4].addedMass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "added mass cannot be negative") \
+    X(attachment[4].addedMass, "attachment[5].addedMass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "added mass cannot be negative") \
+    X(attachment[5].addedMass, "attachment[6].addedMass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "added mass cannot be negative") \
+    X(attachment[6].addedMass, "attachment[7].addedMass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "added mass cannot be negative") \
+    X(attachment[7].addedMass, "attachment[8].addedMass", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "added mass cannot be negative") \
+    X(attachment[0].CdA, "attachment[1].CdA", 0.0, 10000.0, 0, 0, "[0, 10000]", "drag must oppose the relative flow") \
+    X(attachment[1].CdA, "attachment[2].CdA", 0.0, 10000.0, 0, 0, "[0, 10000]", "drag must oppose the relative flow") \
+    X(attachment[2].CdA, "attachment[3].CdA", 0.0, 10000.0, 0, 0, "[0, 10000]", "drag must oppose the relative flow") \
+    X(attachment[3].CdA, "attachment[4].CdA", 0.0, 10000.0, 0, 0, "[0, 10000]", "drag must oppose the relative flow") \
+    X(attachment[4].CdA, "attachment[5].CdA", 0.0, 10000.0, 0, 0, "[0, 10000]", "drag must oppose the relative flow") \
+    X(attachment[5].CdA, "attachment[6].CdA", 0.0, 10000.0, 0, 0, "[0, 10000]", "drag must oppose the relative flow") \
+    X(attachment[6].CdA, "attachment[7].CdA", 0.0, 10000.0, 0, 0, "[0, 10000]", "drag must oppose the relative flow") \
+    X(attachment[7].CdA, "attachment[8].CdA", 0.0, 10000.0, 0, 0, "[0, 10000]", "drag must oppose the relative flow") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -322,7 +322,7 @@ def rms_difference(a: History, b: History, t_from: float) -> dict:
 
 
 # ----------------------------------------------------------------------------- the report
-DEFAULT_DECKS = [DECKS / "chain.dat"]
+DEFAULT_DECKS = (DECKS / "chain.dat", DECKS / "chain_wire_chain.dat", DECKS / "clump_weight.dat")
 
 
 @dataclass

@@ -122,9 +122,10 @@ TEST(Equilibrium, TowReactionEqualsTotalExternalLoadToRoundOff) {
     Vec3 loadResidual = m.end_node_residual(X.data(), Xd.data(), Xdd.data(), loads).head<3>();
     for (int e = 0; e < m.n_elements(); ++e) {
         Vec12 R = Vec12::Zero();
-        add_hydro_force(m.tables(), m.fluid(), loads.current, X.data() + 6 * e, Xd.data() + 6 * e,
-                        Xdd.data() + 6 * e, R.data());
-        add_mass_force(m.tables(), p.massPerLength, Xdd.data() + 6 * e, R.data());
+        const int g0 = m.element_offset(e);
+        add_hydro_force(m.tables(e), m.element_section(e).fluid, loads.current, X.data() + g0, Xd.data() + g0,
+                        Xdd.data() + g0, R.data());
+        add_mass_force(m.tables(e), p.massPerLength, Xdd.data() + g0, R.data());
         loadResidual += R.segment<3>(0) + R.segment<3>(6);
     }
     const UCOutputs& out = sim.outputs();

@@ -127,13 +127,16 @@ def test_a_refused_deck_is_an_error_naming_its_line(make_cable, tmp_path, edit, 
     assert f"lineFile {path}, line {line}: {what}" in log, log
 
 
+@pytest.mark.parametrize("name", ["chain.dat", "chain_wire_chain.dat", "clump_weight.dat"])
 @pytest.mark.parametrize("dx", [-2.0, 0.0, 2.0])
-def test_the_deck_statics_match_moorpy_fed_the_same_file(fmu_file, dx):
-    """MoorPy (quasi-static elastic catenaries with seabed contact) reads the same deck: fairlead and
-    anchor tension within the 0.5 % asked of a line described by a deck (docs/lines_validation.md)."""
+def test_the_deck_statics_match_moorpy_fed_the_same_file(fmu_file, name, dx):
+    """MoorPy (quasi-static elastic catenaries with seabed contact, its free points solved for) reads
+    the same deck: fairlead and anchor tension within the 0.5 % asked of a line described by a deck
+    (docs/lines_validation.md): one line; three lines joined at pinned points; two lines joined at a
+    clump weight."""
     from ucable import line_file_validation as v
 
-    deck = v.read_deck(CHAIN_DECK)
+    deck = v.read_deck(DECKS / name)
     ref, ours = v.moorpy_statics(deck, dx), v.fmu_statics(fmu_file, deck, dx)
     assert ours["fairlead"] == pytest.approx(ref["fairlead"], rel=5e-3)
     assert ours["anchor"] == pytest.approx(ref["anchor"], rel=5e-3)
@@ -159,12 +162,41 @@ def test_a_free_far_end_with_mass_is_the_towed_body_bit_for_bit(make_cable, tmp_
     assert deck.get_reals(OUTPUTS).tobytes() == same.get_reals(OUTPUTS).tobytes()
 
 
-def test_the_surge_differs_from_moordyn_by_discretization_only(fmu_file, tmp_path):
+# clump_weight.dat described by parameters: the 400 m line from the fairlead is section 1, the pinned
+# point with the clump weight is an attachment at its end, the 500 m line to the anchor section 2.
+def _chain_section(k: int, length: float, segments: int) -> dict:
+    damping = 0.8 * (length / segments) * math.sqrt(7.5e8 * 113.0)
+    values = {"length": length, "diameter": 0.0766, "massPerLength": 113.0, "EA": 7.5e8, "EI": 0.0,
+              "GJ": 1000.0, "axialDamping": damping, "Cdn": 2.4, "Cdt": 0.2, "Can": 1.0, "Cat": 0.0,
+              "nElements": (segments + 1) // 2, "joint": 1}
+    return {f"section[{k}].{name}": value for name, value in values.items()}
+
+
+CLUMP_BY_PARAMETERS = {
+    **{k: v for k, v in CHAIN_BY_PARAMETERS.items() if k in ("bottomEnd", "anchor.x", "anchor.y", "anchor.z",
+                                                               "waterDepth", "gravity", "waterDensity")},
+    "nSections": 2, **_chain_section(1, 400.0, 18), **_chain_section(2, 500.0, 22),
+    "nAttachments": 1, "attachment[1].s": 400.0, "attachment[1].mass": 20000.0, "attachment[1].volume": 2.5,
+    "attachment[1].CdA": 3.0, "attachment[1].addedMass": 1.0 * 1025.0 * 2.5,
+}
+
+
+def test_a_deck_of_two_lines_and_a_clump_weight_is_the_same_line_as_its_sections_bit_for_bit(make_cable):
+    deck = make_cable(parameters={"lineFile": str(DECKS / "clump_weight.dat"), **SCENE})
+    params = make_cable(parameters={**CLUMP_BY_PARAMETERS, **SCENE})
+    a, b = _surge_run(deck), _surge_run(params)
+    for k, (x, y) in enumerate(zip(a, b)):
+        assert x.tobytes() == y.tobytes(), f"step {k}: {x - y}"
+
+
+@pytest.mark.parametrize("name", ["chain.dat", pytest.param("chain_wire_chain.dat", marks=pytest.mark.slow),
+                                  "clump_weight.dat"])
+def test_the_surge_differs_from_moordyn_by_discretization_only(fmu_file, tmp_path, name):
     """The fairlead surge of the deck in both codes (docs/lines_validation.md): refining both meshes 2x
     (BA kept in N s) brings the two codes' tension histories closer, at the fairlead and the anchor."""
     from ucable import line_file_validation as v
 
-    deck = v.read_deck(CHAIN_DECK)
+    deck = v.read_deck(DECKS / name)
     fine = v.refined_deck(deck, 2, tmp_path)
     surge, t_end, t_from = v.Surge(2.0, 15.0), 45.0, 15.0
     base = v.rms_difference(v.fmu_surge(fmu_file, deck, surge, t_end), v.moordyn_surge(deck, surge, t_end), t_from)

@@ -47,7 +47,7 @@ def model_variables():
 def test_every_variable_is_documented_with_its_unit_and_default(model_variables):
     rows = readme_rows()
     for v in model_variables:
-        name = re.sub(r"\[\d+\]$", "[k]", v.name)  # arrays are documented as name[k]
+        name = re.sub(r"\[\d+\]", "[k]", v.name)  # arrays are documented as name[k]
         assert name in rows, f"{v.name} is missing from the README interface tables"
         section, unit, default = rows[name]
         assert section == v.causality, f"{v.name}: README lists it under {section}s"
