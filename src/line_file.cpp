@@ -739,6 +739,27 @@ bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& out,
     return true;
 }
 
+namespace {
+
+// The properties of one MoorDyn line into the scalar line parameters or one section (the members
+// have the same names).
+template <class Line>
+void copy_line_properties(const LineFileSection& s, Line& out) {
+    out.length = s.length;
+    out.diameter = s.diameter;
+    out.massPerLength = s.massPerLength;
+    out.EA = s.EA;
+    out.EI = s.EI;
+    out.axialDamping = s.axialDamping;
+    out.Cdn = s.Cdn;
+    out.Cdt = s.Cdt;
+    out.Can = s.Can;
+    out.Cat = s.Cat;
+    out.nElements = s.elements;
+}
+
+}  // namespace
+
 bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) {
     if (line.sections.empty()) {
         error = "the line file describes no line";
@@ -758,19 +779,8 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
         }
     }
     if (line.sections.size() == 1) {
-        const LineFileSection& s = line.sections[0];
         p.nSections = 1;
-        p.length = s.length;
-        p.diameter = s.diameter;
-        p.massPerLength = s.massPerLength;
-        p.EA = s.EA;
-        p.EI = s.EI;
-        p.axialDamping = s.axialDamping;
-        p.Cdn = s.Cdn;
-        p.Cdt = s.Cdt;
-        p.Can = s.Can;
-        p.Cat = s.Cat;
-        p.nElements = s.elements;
+        copy_line_properties(line.sections[0], p);
         p.nAttachments = 0;
     } else {
         // Each MoorDyn line is a section; the points between them are pinned joints (MoorDyn's
@@ -781,18 +791,8 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
         for (size_t k = 0; k < line.sections.size(); ++k) {
             const LineFileSection& s = line.sections[k];
             UCSection& out = p.section[k];
-            out.length = s.length;
-            out.diameter = s.diameter;
-            out.massPerLength = s.massPerLength;
-            out.EA = s.EA;
-            out.EI = s.EI;
+            copy_line_properties(s, out);
             out.GJ = p.GJ;
-            out.axialDamping = s.axialDamping;
-            out.Cdn = s.Cdn;
-            out.Cdt = s.Cdt;
-            out.Can = s.Can;
-            out.Cat = s.Cat;
-            out.nElements = s.elements;
             out.joint = 1;
             s0 += s.length;
             if (k + 1 == line.sections.size() || line.joints[k].empty()) continue;

@@ -10,8 +10,10 @@
 #include "cable_api.h"
 #include "cable_model.h"
 #include "simulation.h"
+#include "cantilever.h"
 
 using namespace uc;
+using uc::testing::cantilever;
 
 namespace {
 
@@ -240,27 +242,6 @@ constexpr ElasticaCase kElastica[] = {{20, 9.16015744189, -3.65103793133},
                                       {40, 7.85696019238, -5.60624938203},
                                       {60, 6.83193067184, -6.60032424241},
                                       {80, 6.0756744513, -7.1710085355}};
-
-// The paper's cantilever (section 3.2): L = 10 m, d = 20 mm, E = 2e11 Pa, neutrally buoyant,
-// clamped horizontally along +x; the tow point is put 50 m deep so the rod is fully submerged.
-UCParams cantilever(int nElements) {
-    UCParams p;
-    uc_params_default(&p);
-    p.length = 10;
-    p.diameter = 0.02;
-    const double A = kPi * p.diameter * p.diameter / 4;
-    p.waterDensity = 1000;
-    p.massPerLength = 1000 * A;  // neutrally buoyant
-    p.EA = 2e11 * A;
-    p.EI = 2e11 * kPi * std::pow(p.diameter, 4) / 64;
-    p.nElements = nElements;
-    p.topEnd = UC_TOP_CLAMPED;
-    p.topTangent[0] = 1;
-    p.topTangent[2] = 0;
-    p.initialDirection[0] = 1;
-    p.initialDirection[2] = 0;
-    return p;
-}
 
 double elastica_tip_error(const ElasticaCase& c, int nElements) {
     const UCParams p = cantilever(nElements);

@@ -9,8 +9,10 @@
 #include "cable_api.h"
 #include "cable_model.h"
 #include "simulation.h"
+#include "cantilever.h"
 
 using namespace uc;
+using uc::testing::cantilever;
 
 namespace {
 
@@ -30,27 +32,6 @@ void copy_line_into_section(const UCParams& p, double length, int nElements, UCS
     s.Cat = p.Cat;
     s.nElements = nElements;
     s.joint = 0;
-}
-
-// The paper's cantilever (the elastica of the validation): L = 10 m, d = 20 mm, E = 2e11 Pa,
-// neutrally buoyant, clamped horizontally along +x, 50 m deep.
-UCParams cantilever(int nElements) {
-    UCParams p;
-    uc_params_default(&p);
-    p.length = 10;
-    p.diameter = 0.02;
-    const double A = kPi * p.diameter * p.diameter / 4;
-    p.waterDensity = 1000;
-    p.massPerLength = 1000 * A;
-    p.EA = 2e11 * A;
-    p.EI = 2e11 * kPi * std::pow(p.diameter, 4) / 64;
-    p.nElements = nElements;
-    p.topEnd = UC_TOP_CLAMPED;
-    p.topTangent[0] = 1;
-    p.topTangent[2] = 0;
-    p.initialDirection[0] = 1;
-    p.initialDirection[2] = 0;
-    return p;
 }
 
 UCInputs deep(double endLoadZ) {
