@@ -112,6 +112,9 @@ fmi2Status uc_sim_do_step(UCInstance* inst, double tc, double h) {
     inst->time = uc_time(inst->cable);
     inst->lastSuccessfulTime = inst->time;
     uc_get_outputs(inst->cable, &inst->outputs);
+    if (uc_take_event(inst->cable, inst->msg, sizeof inst->msg)) {
+        uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "fmi2DoStep: %s", inst->msg);
+    }
     /* Input derivatives apply to one step only (fmi2SetRealInputDerivatives before each fmi2DoStep). */
     memset(inst->inputs.towAcceleration, 0, sizeof inst->inputs.towAcceleration);
     inst->inputs.towAccelerationGiven = 0;

@@ -78,6 +78,14 @@ extern "C" int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, ch
     });
 }
 
+extern "C" int uc_take_event(UCCable* c, char* text, size_t size) {
+    if (!c) return 0;
+    const std::string event = c->simulation.take_event();
+    if (event.empty()) return 0;
+    if (text && size) std::snprintf(text, size, "%s", event.c_str());
+    return 1;
+}
+
 extern "C" int uc_interface_derivatives(UCCable* c, double d[72], char* msg, size_t msgSize) {
     return guarded(msg, msgSize, [&](std::string& error) {
         if (!c || !d) {

@@ -39,6 +39,11 @@ extern "C" {
 #define UC_TOP_HINGED 0
 #define UC_TOP_CLAMPED 1
 
+/* winchMode */
+#define UC_WINCH_FIXED 0
+#define UC_WINCH_RATE 1
+#define UC_WINCH_TENSION 2
+
 /* initMode values */
 #define UC_INIT_EQUILIBRIUM 0
 #define UC_INIT_STRAIGHT 1
@@ -104,6 +109,9 @@ void uc_get_outputs(const UCCable* c, UCOutputs* out);
  * continues without a restart; after uc_state_save and after uc_state_restore the next step
  * evaluates a new Jacobian, so a saved-and-continued run and a restored-and-continued run are
  * bit-identical. The buffer is only valid for a cable created with identical parameters. */
+/* The event of the last step worth a log line (a winch limit reached): 1 and the text, or 0. */
+int uc_take_event(UCCable* c, char* text, size_t size);
+
 size_t uc_state_size(const UCCable* c);
 int uc_state_save(UCCable* c, void* buffer, size_t size);
 int uc_state_restore(UCCable* c, const void* buffer, size_t size, char* msg, size_t msgSize);

@@ -86,10 +86,24 @@ void TowTrajectory::evaluate(double t, Vec3& p, Vec3& v, Vec3& a) const {
     a = a0 + s * (6.0 * c3_ + s * (12.0 * c4_ + s * (20.0 * c5_)));
 }
 
-CableModel::CableModel(const UCParams& params) : params_(params) {
+CableModel::CableModel(const UCParams& params, const WinchMesh* winch) : params_(params) {
+    if (params.winchMode != 0) {
+        const int n0 = params.nSections <= 1 ? params.nElements : params.section[0].nElements;
+        const double l0 = params.nSections <= 1 ? params.length : params.section[0].length;
+        winchNominal_ = l0 / n0;
+        winchMesh_ = winch ? *winch : WinchMesh{n0, winchNominal_};
+    }
     build_sections(params);
     build_mesh(params);
     build_dof_map();
+    if (this->winch()) {
+        slotArcBase_ = slotArc_;
+        for (const ElementRun& run : runs_) runStartBase_.push_back(run.s0);
+        for (const SectionProps& sec : sections_) sectionStartBase_.push_back(sec.s0);
+        for (const NodeAttachment& at : attachments_) attachmentBase_.push_back(at.s);
+        lineBase_ = line_;
+        lineMassBase_ = line_.massPerLength * line_.length;
+    }
     topTangent_ = params.topEnd == UC_TOP_CLAMPED ? unit(params.topTangent) : Vec3(0, 0, -1);
     anchor_ = Vec3(params.anchor[0], params.anchor[1], params.anchor[2]);
     body_ = PointBody{params.bodyMass, params.bodyVolume, params.bodyAddedMass, params.bodyCdA};
@@ -138,6 +152,10 @@ void CableModel::build_sections(const UCParams& p) {
     } else {
         for (int k = 0; k < p.nSections && k < UC_MAX_SECTIONS; ++k) inputs.push_back(section_input(p.section[k]));
     }
+    if (winchMesh_.elements > 0) {
+        inputs[0].length = winchMesh_.topLength + (winchMesh_.elements - 1) * winchNominal_;
+        inputs[0].nElements = winchMesh_.elements;
+    }
     double s0 = 0.0;
     for (const SectionInput& in : inputs) {
         SectionProps s;
@@ -176,7 +194,7 @@ void CableModel::build_sections(const UCParams& p) {
     sections_.back().joint = 0;
     if (sections_.size() == 1) {
         const SectionInput in = uniform_line(p);
-        line_ = LineScales{in.length, in.massPerLength, in.EA, sections_[0].EI, in.diameter};
+        line_ = LineScales{sections_[0].length, in.massPerLength, in.EA, sections_[0].EI, in.diameter};
     } else {
         double mass = 0.0;
         for (const SectionProps& s : sections_) {
@@ -191,7 +209,8 @@ void CableModel::build_sections(const UCParams& p) {
 }
 
 void CableModel::build_mesh(const UCParams& p) {
-    const std::vector<int> counts = section_elements(p);
+    std::vector<int> counts = section_elements(p);
+    if (winchMesh_.elements > 0) counts[0] = winchMesh_.elements;
     // Attachments on the line, by arc length; those inside a section split it so a node sits there.
     std::vector<std::pair<double, PointBody>> points;
     for (int k = 0; k < p.nAttachments && k < UC_MAX_ATTACHMENTS; ++k) {
@@ -210,6 +229,12 @@ void CableModel::build_mesh(const UCParams& p) {
                 cuts.push_back(point.first);
         cuts.push_back(sec.s0 + sec.length);
         const int n = counts[k];
+        if (k == 0 && winchMesh_.elements > 0) {  // the winch's top element, then the nominal ones
+            runs_.push_back(ElementRun{0.0, winchMesh_.topLength, 0, 1, 0});
+            if (n > 1) runs_.push_back(ElementRun{winchMesh_.topLength, winchNominal_, 1, n - 1, 0});
+            first = n;
+            continue;
+        }
         for (size_t j = 0; j + 1 < cuts.size(); ++j) {
             ElementRun run;
             run.s0 = cuts[j];
@@ -315,6 +340,20 @@ void CableModel::build_dof_map() {
         }
         if (hi >= lo) bandwidth_ = std::max(bandwidth_, hi - lo);
     }
+}
+
+void CableModel::set_top_length(double length) {
+    const double shift = length - winchMesh_.topLength;
+    runs_[0].elementLength = length;
+    tables_[0] = make_element_tables(length, kLoadQuadraturePoints, 3);
+    tables_[0].axialModeWeight[1] = tables_[0].axialModeWeight[2] = kHigherStrainModeWeight;
+    for (size_t r = 1; r < runs_.size(); ++r) runs_[r].s0 = runStartBase_[r] + shift;
+    sections_[0].length = winchMesh_.topLength + (winchMesh_.elements - 1) * winchNominal_ + shift;
+    for (size_t k = 1; k < sections_.size(); ++k) sections_[k].s0 = sectionStartBase_[k] + shift;
+    for (size_t i = 1; i < slotArc_.size(); ++i) slotArc_[i] = slotArcBase_[i] + shift;
+    for (size_t a = 0; a < attachments_.size(); ++a) attachments_[a].s = attachmentBase_[a] + shift;
+    line_.length = lineBase_.length + shift;
+    line_.massPerLength = (lineMassBase_ + sections_[0].fluid.massPerLength * shift) / line_.length;
 }
 
 double CableModel::element_start(int e) const { return slotArc_[elementOffset_[e] / 6]; }

@@ -121,9 +121,25 @@ struct LineScales {
     double length = 0.0, massPerLength = 0.0, EA = 0.0, EI = 0.0, diameter = 0.0;
 };
 
+// The winch's mesh of the first section (docs/winch.md): `elements` elements, the top one (at the
+// tow point) of unstretched length topLength, the others of the nominal length.
+struct WinchMesh {
+    int elements = 0;
+    double topLength = 0.0;
+};
+
 class CableModel {
 public:
-    explicit CableModel(const UCParams& params);
+    // winch: the first section's mesh when winchMode != 0 (null: the start, all elements nominal).
+    explicit CableModel(const UCParams& params, const WinchMesh* winch = nullptr);
+
+    // The winch (winchMode != 0): only the top element's length changes between remeshes; it is
+    // the one mutable part of the description (its tables and the arc lengths below it follow).
+    bool winch() const { return winchMesh_.elements > 0; }
+    const WinchMesh& winch_mesh() const { return winchMesh_; }  // as built (topLength: at the build)
+    double winch_nominal() const { return winchNominal_; }       // nominal element length
+    double top_length() const { return runs_[0].elementLength; }
+    void set_top_length(double length);  // no allocation
 
     const UCParams& params() const { return params_; }
     int n_elements() const { return nElements_; }
@@ -215,6 +231,12 @@ private:
     std::vector<double> slotArc_;
     std::vector<bool> duplicateSlot_;  // the second slot of a pinned joint
     std::vector<NodeAttachment> attachments_;
+    // The winch's mesh and the arc lengths at its build, which set_top_length shifts.
+    WinchMesh winchMesh_;
+    double winchNominal_ = 0.0;
+    std::vector<double> slotArcBase_, runStartBase_, sectionStartBase_, attachmentBase_;
+    LineScales lineBase_;
+    double lineMassBase_ = 0.0;
     PointBody body_;  // the towed body (bottomEnd 2)
     Vec3 topTangent_;
     Vec3 anchor_;

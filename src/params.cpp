@@ -108,6 +108,35 @@ std::string check_params(const UCParams& p) {
         std::snprintf(range, sizeof range, "(0, %.17g] (the line's length)", lineLength);
         return format_violation(name, s, range, "an attachment lies on the line, beyond the tow point");
     }
+    if (p.winchMode != 0) {
+        char range[160];
+        if (!(p.winchMinLength < p.winchMaxLength)) {
+            std::snprintf(range, sizeof range, "(0, %.17g) (below winch.maxLength)", p.winchMaxLength);
+            return format_violation("winch.minLength", p.winchMinLength, range, "the winch needs room between its limits");
+        }
+        if (lineLength < p.winchMinLength || lineLength > p.winchMaxLength) {
+            std::snprintf(range, sizeof range, "[%.17g, %.17g] (winch.minLength, winch.maxLength)", p.winchMinLength,
+                          p.winchMaxLength);
+            return format_violation(p.nSections >= 2 ? "section[1].length" : "length", lineLength, range,
+                                    "the run starts with the line's length, within the winch's limits");
+        }
+        const double first = p.nSections >= 2 ? p.section[0].length : p.length;
+        const double below = lineLength - first;  // the sections the winch cannot haul in
+        if (p.winchMinLength <= below) {
+            std::snprintf(range, sizeof range, "(%.17g, %.17g) (beyond the sections after the first)", below,
+                          p.winchMaxLength);
+            return format_violation("winch.minLength", p.winchMinLength, range,
+                                    "the winch hauls in the first section only");
+        }
+        for (int k = 0; k < p.nAttachments; ++k) {
+            if (p.attachment[k].s >= first) continue;
+            char name[64];
+            std::snprintf(name, sizeof name, "attachment[%d].s", k + 1);
+            std::snprintf(range, sizeof range, "[%.17g, %.17g] (beyond the first section, which the winch pays out)",
+                          first, lineLength);
+            return format_violation(name, p.attachment[k].s, range, "the winch's section cannot carry attachments");
+        }
+    }
     for (int k = 1; k < p.currentProfileRows; ++k) {
         if (p.currentProfileDepth[k] > p.currentProfileDepth[k - 1]) continue;
         char name[64], range[96];

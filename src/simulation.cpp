@@ -12,12 +12,13 @@
 #include "outputs.h"
 #include "rainflow.h"
 #include "statics.h"
+#include "winch.h"
 
 namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 5;
+constexpr std::uint32_t kStateVersion = 6;
 
 // A driven end in a saved state.
 struct EndHeader {
@@ -40,6 +41,10 @@ struct StateHeader {
     double tensionScale;  // of the error control
     double historyValid;  // 1: the integrator's history follows y and y' (continue without a restart)
     RainflowCounter rainflow;  // the online fatigue count of the tow tension
+    // the winch: the mesh (elements of the first section, top length at its build) and its state
+    std::int32_t winchElements;
+    std::int32_t winchLimit;
+    double winchMeshTop, winchLength, winchRate, winchT0, winchTop0;
 };
 
 IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
@@ -314,6 +319,19 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     set_environment(in);
     loads_.current.rate.setZero();  // a current that changes within a step comes with the steps
     loads_.current.time = t0;
+    if (model_.winch()) {  // the run starts at the line's own length, every element nominal
+        const WinchMesh start{model_.params().nSections <= 1 ? model_.params().nElements
+                                                             : model_.params().section[0].nElements,
+                              model_.winch_nominal()};
+        if (model_.winch_mesh().elements != start.elements || model_.winch_mesh().topLength != start.topLength)
+            rebuild(start);
+        winchRate_ = 0.0;
+        winchT0_ = t0;
+        winchTop0_ = start.topLength;
+        winchLimit_ = 0;
+        model_.set_top_length(winchTop0_);
+        winchLength_ = model_.line().length;
+    }
     tow_.reset(vec(in.tow), vec(in.towVelocity), vec(in.towAcceleration), in.towAccelerationGiven != 0);
     loads_.tow = TowTrajectory::at_rest_in_time(tow_.position, tow_.velocity, tow_.acceleration, t0);
     end_.reset(vec(in.end), vec(in.endVelocity), Vec3::Zero(), false);
@@ -391,6 +409,19 @@ void CableSimulation::step_completed(double t, const double* y, const double* yp
     stepTensionMax_ = std::max(stepTensionMax_, tension);
     stepTensionMin_ = std::min(stepTensionMin_, tension);
     if (sn_.area > 0.0) rainflow_.add(tension, sn_);
+    const UCParams& p = model_.params();
+    if (p.winchMode == UC_WINCH_TENSION) {
+        // Constant tension: the rate from the tension of this integrator step holds until the next
+        // one (docs/winch.md): rate = (T - T_set) L / (EA tau), within the speed and length limits.
+        const double top = model_.top_length();
+        const double length = winchLength_ + (top - winchTopAtStep_);
+        const double gain = length / (model_.section(0).axial.EA * p.winchTimeConstant);
+        const WinchRate r = limit_winch_rate(gain * (tension - winchTension_), length, stepEnd_ - t,
+                                             WinchLimits{p.winchMinLength, p.winchMaxLength, p.winchMaxRate});
+        winchTop0_ = top;
+        winchT0_ = t;
+        winchRate_ = r.rate;
+    }
 }
 
 bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::string& error) {
@@ -416,6 +447,12 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
                       h, UC_MIN_STEP_SIZE, time_);
         error = text;
         return false;
+    }
+    const double winchLengthAtStart = winchLength_, winchRateAtStart = winchRate_;
+    const double winchT0AtStart = winchT0_, winchTop0AtStart = winchTop0_;
+    if (model_.winch()) {
+        set_winch_time(time_);
+        if (!remesh(error) || !winch_rate(in, h, error)) return false;
     }
     set_environment(in);
     loads_.current.rate = Vec3(in.currentRate[0], in.currentRate[1], 0.0);
@@ -451,10 +488,24 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     const double tEnd = time_ + h;
     stepTensionMax_ = stepTensionMin_ = outputs_.towTension;  // the tension at the step's start
     const RainflowCounter rainflowAtStart = rainflow_;
+    stepEnd_ = tEnd;
+    winchTension_ = in.winchTension;
+    const double topAtStart = model_.winch() ? model_.top_length() : 0.0;
+    winchTopAtStep_ = topAtStart;
     if (!integrator_->advance(tEnd, error)) {
         rainflow_ = rainflowAtStart;  // the state stays at the last communication point
         restartPending_ = true;  // the state stays at the last communication point
+        winchLength_ = winchLengthAtStart;
+        winchRate_ = winchRateAtStart;
+        winchT0_ = winchT0AtStart;
+        winchTop0_ = winchTop0AtStart;
         return false;
+    }
+    if (model_.winch()) {  // the length at the end of the step; the rate carries on from there
+        const double topAtEnd = winchTop0_ + winchRate_ * (tEnd - winchT0_);
+        winchLength_ = winchLengthAtStart + (topAtEnd - topAtStart);
+        winchTop0_ = topAtEnd;
+        winchT0_ = tEnd;
     }
     const double* y = integrator_->y();
     const double* yp = integrator_->yp();
@@ -511,6 +562,7 @@ bool CableSimulation::set_integrator_tolerances(std::string& error) {
 
 void CableSimulation::expand_integrator_state(double t, const double* y, const double* yp) {
     loads_.current.time = t;
+    set_winch_time(t);
     const int n = model_.n_free();
     for (int j = 0; j < n; ++j) {
         q_[j] = y[2 * j];
@@ -543,6 +595,140 @@ IntegratorStats CableSimulation::total_stats() const {
     return integratorStarted_ ? statsBase_ + integrator_->stats() : statsBase_;
 }
 
+std::string CableSimulation::take_event() {
+    std::string event;
+    event.swap(event_);
+    return event;
+}
+
+void CableSimulation::set_winch_time(double t) {
+    if (model_.winch()) model_.set_top_length(winchTop0_ + winchRate_ * (t - winchT0_));
+}
+
+bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& error) {
+    const UCParams& p = model_.params();
+    for (const auto& [name, value] : {std::pair<const char*, double>{"winch.rate", in.winchRate},
+                                      std::pair<const char*, double>{"winch.tension", in.winchTension}}) {
+        if (std::isfinite(value)) continue;
+        char text[160];
+        std::snprintf(text, sizeof text, "%s = %g: the winch's inputs must be finite numbers", name, value);
+        error = text;
+        return false;
+    }
+    const WinchLimits limits{p.winchMinLength, p.winchMaxLength, p.winchMaxRate};
+    winchT0_ = time_;
+    winchTop0_ = model_.top_length();
+    if (p.winchMode == UC_WINCH_TENSION) return true;  // the rate follows the tension, step by step
+    const double requested = in.winchRate;
+    const WinchRate r = limit_winch_rate(requested, winchLength_, h, limits);
+    winchRate_ = r.rate;
+    // A length limit cut the request (not the speed limit): log the arrival once.
+    const double speedLimited = std::clamp(requested, -limits.maxRate, limits.maxRate);
+    const int limit = r.rate < speedLimited ? 1 : r.rate > speedLimited ? -1 : 0;
+    if (limit != 0 && limit != winchLimit_) {
+        char text[240];
+        std::snprintf(text, sizeof text,
+                      "winch: at t = %.6g s the deployed length %.6g m reaches winch.%s = %.6g m: %s stops there "
+                      "(winch.rate %.6g m/s applied as %.6g m/s)",
+                      time_, winchLength_ + r.rate * h, limit > 0 ? "maxLength" : "minLength",
+                      limit > 0 ? limits.maxLength : limits.minLength, limit > 0 ? "paying out" : "hauling in",
+                      requested, r.rate);
+        event_ = text;
+    }
+    winchLimit_ = limit;
+    return true;
+}
+
+// Splits the top element when it has grown past 1.5 nominal lengths (the lower part becomes a
+// nominal element, exactly the same cubic), merges it with the element below when it has shrunk
+// under half of one (docs/winch.md). At a communication point; the integrator restarts.
+bool CableSimulation::remesh(std::string& error) {
+    const double top = model_.top_length(), nominal = model_.winch_nominal();
+    const WinchMesh mesh = model_.winch_mesh();
+    const RemeshAction action = remesh_action(top, nominal, mesh.elements > 1);
+    if (action == RemeshAction::None) return true;
+    expand_integrator_state(time_, y_.data(), yp_.data());
+    const int G = model_.n_global();
+    std::vector<double> X, Xd, Xdd;
+    WinchMesh next;
+    if (action == RemeshAction::Split) {
+        const double a = top - nominal;  // the new top element; the rest is nominal
+        double node[3][6];
+        hermite_split_node(X_.data(), top, a, node[0]);
+        hermite_split_node(Xd_.data(), top, a, node[1]);
+        hermite_split_node(Xdd_.data(), top, a, node[2]);
+        const std::vector<double>* from[3] = {&X_, &Xd_, &Xdd_};
+        std::vector<double>* to[3] = {&X, &Xd, &Xdd};
+        for (int f = 0; f < 3; ++f) {
+            to[f]->assign(from[f]->begin(), from[f]->begin() + 6);
+            to[f]->insert(to[f]->end(), node[f], node[f] + 6);
+            to[f]->insert(to[f]->end(), from[f]->begin() + 6, from[f]->begin() + G);
+        }
+        next = WinchMesh{mesh.elements + 1, a};
+    } else {
+        const std::vector<double>* from[3] = {&X_, &Xd_, &Xdd_};
+        std::vector<double>* to[3] = {&X, &Xd, &Xdd};
+        for (int f = 0; f < 3; ++f) {  // the node between the top element and the next one goes
+            to[f]->assign(from[f]->begin(), from[f]->begin() + 6);
+            to[f]->insert(to[f]->end(), from[f]->begin() + 12, from[f]->begin() + G);
+        }
+        next = WinchMesh{mesh.elements - 1, top + nominal};
+    }
+    rebuild(next);
+    winchTop0_ = next.topLength;
+    winchT0_ = time_;
+    model_.set_top_length(winchTop0_);
+    const int n = model_.n_free();
+    model_.restrict_to_free(X.data(), q_.data());
+    model_.restrict_to_free(Xd.data(), v_.data());
+    // The accelerations of the new mesh's equations (the split carries the old ones over exactly;
+    // the merged element has its own mass matrix).
+    if (!solve_consistent_acceleration(model_, *staticSolver_, loads_, time_, q_, v_, a_)) {
+        error = "winch: the mass matrix of the remeshed line is singular";
+        return false;
+    }
+    for (int j = 0; j < n; ++j) {
+        y_[2 * j] = q_[j];
+        y_[2 * j + 1] = v_[j];
+        yp_[2 * j] = v_[j];
+        yp_[2 * j + 1] = a_[j];
+    }
+    ++stateStamp_;
+    return set_integrator_tolerances(error);
+}
+
+void CableSimulation::rebuild(const WinchMesh& mesh) {
+    statsBase_ = total_stats();
+    integratorStarted_ = false;
+    restartPending_ = true;
+    const UCParams params = model_.params();
+    integrator_.reset();
+    staticSolver_.reset();
+    model_ = CableModel(params, &mesh);
+    const int n = model_.n_free(), bandwidth = model_.free_bandwidth();
+    integrator_ = std::make_unique<Integrator>(context_, n, bandwidth, this);
+    staticSolver_ = std::make_unique<BandSolver>(context_, n, bandwidth);
+    y_.assign(2 * n, 0.0);
+    yp_.assign(2 * n, 0.0);
+    q_.assign(n, 0.0);
+    v_.assign(n, 0.0);
+    a_.assign(n, 0.0);
+    R_.assign(n, 0.0);
+    X_.assign(model_.n_global(), 0.0);
+    Xd_.assign(model_.n_global(), 0.0);
+    Xdd_.assign(model_.n_global(), 0.0);
+    forces_.element.resize(model_.n_elements());
+    nodeTension_.resize(model_.n_elements() + 1);
+    derivativeLU_.reset();
+    derivativeK_.reset();
+    derivativeC_.reset();
+    derivativeM_.reset();
+    derivativeWork_.clear();
+    derivativeStamp_ = -1;
+    loads_.current.profile = &model_.current_profile();
+    loads_.current.sea = &model_.sea();
+}
+
 void CableSimulation::free_state(std::vector<double>& q, std::vector<double>& v, std::vector<double>& a) const {
     const int n = model_.n_free();
     q.resize(n);
@@ -568,6 +754,7 @@ void CableSimulation::update_outputs() {
     outputs_.tensionScale = tensionScale_;
     outputs_.fatigueDamage = sn_.area > 0.0 ? rainflow_.damage(sn_) : 0.0;
     outputs_.waveElevation = model_.sea().elevation(X_[0], X_[1], time_);
+    outputs_.unstretchedLength = model_.winch() ? winchLength_ : model_.line().length;
 }
 
 size_t CableSimulation::state_size() const {
@@ -597,6 +784,13 @@ void CableSimulation::save_state(void* buffer) {
     header.historyValid = history ? 1.0 : 0.0;
     header.tensionScale = tensionScale_;
     header.rainflow = rainflow_;
+    header.winchElements = model_.winch_mesh().elements;
+    header.winchMeshTop = model_.winch_mesh().topLength;
+    header.winchLimit = winchLimit_;
+    header.winchLength = winchLength_;
+    header.winchRate = winchRate_;
+    header.winchT0 = winchT0_;
+    header.winchTop0 = winchTop0_;
     historyBuffer_.assign(integrator_->history_size(), 0.0);
     if (history) integrator_->save_history(historyBuffer_.data());
     auto* out = static_cast<unsigned char*>(buffer);
@@ -613,6 +807,16 @@ void CableSimulation::save_state(void* buffer) {
 
 bool CableSimulation::restore_state(const void* buffer, size_t size, std::string& error) {
     ++stateStamp_;  // the cached interface derivatives are stale from here on
+    if (model_.winch() && size >= sizeof(StateHeader)) {
+        // A state of a winch's line may have another mesh than the present one: take its mesh first.
+        StateHeader header;
+        std::memcpy(&header, buffer, sizeof header);
+        const WinchMesh mesh = model_.winch_mesh();
+        if (header.magic == kStateMagic && header.version == kStateVersion && header.winchElements > 0 &&
+            header.winchElements <= 100000 && std::isfinite(header.winchMeshTop) && header.winchMeshTop > 0.0 &&
+            (header.winchElements != mesh.elements || header.winchMeshTop != mesh.topLength))
+            rebuild(WinchMesh{header.winchElements, header.winchMeshTop});
+    }
     if (size != state_size()) {
         error = "saved state has the wrong size for this cable (different nElements or end conditions)";
         return false;
@@ -634,6 +838,12 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     in += yp_.size() * sizeof(double);
     tensionScale_ = header.tensionScale;
     rainflow_ = header.rainflow;
+    winchLimit_ = header.winchLimit;
+    winchLength_ = header.winchLength;
+    winchRate_ = header.winchRate;
+    winchT0_ = header.winchT0;
+    winchTop0_ = header.winchTop0;
+    set_winch_time(header.time);
     if (tensionScale_ > 0.0 && !set_integrator_tolerances(error)) {  // 0: saved before initialization
         restartPending_ = true;
         return false;

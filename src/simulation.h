@@ -49,6 +49,8 @@ public:
 
     bool initialize(double t0, const UCInputs& in, std::string& error);
     bool step(double t, double h, const UCInputs& in, std::string& error);
+    // The event of the last step to log (a winch limit reached), or empty; cleared by the call.
+    std::string take_event();
 
     size_t state_size() const;
     void save_state(void* buffer);
@@ -83,6 +85,13 @@ private:
     bool set_integrator_tolerances(std::string& error);
     double cable_torque(const UCInputs& in);
     IntegratorStats total_stats() const;
+    // The winch (docs/winch.md): the top element's length at time t; the rate for the step ahead;
+    // splitting or merging the top element at a communication point; a new mesh, with everything
+    // sized by the number of unknowns made again (at a remesh or a restore only).
+    void set_winch_time(double t);
+    bool winch_rate(const UCInputs& in, double h, std::string& error);
+    bool remesh(std::string& error);
+    void rebuild(const WinchMesh& mesh);
 
     CableModel model_;
     SUNContext context_ = nullptr;
@@ -103,9 +112,17 @@ private:
     double tensionScale_ = 0.0;  // of the error control, fixed at initialization
     RainflowCounter rainflow_;   // online fatigue count of the tow tension (sn_.area > 0)
     bool restartPending_ = true;
+    // the winch: the top element's length is winchTop0_ + winchRate_ (t - winchT0_)
+    double winchLength_ = 0.0;  // deployed unstretched length at time_
+    double winchRate_ = 0.0, winchT0_ = 0.0, winchTop0_ = 0.0;
+    int winchLimit_ = 0;        // -1 / +1: at the shortest / longest length (logged once per arrival)
+    std::string event_;
 
     // --- per-step environment and workspace ---
     SNCurve sn_;  // from the fatigue.* parameters
+    double stepEnd_ = 0.0;         // end of the communication step being integrated
+    double winchTension_ = 0.0;    // the constant-tension winch's set tension over it
+    double winchTopAtStep_ = 0.0;  // the top element's length at its start
     double stepTensionMax_ = 0.0, stepTensionMin_ = 0.0;  // over the internal steps of the current step
     Loads loads_;
     std::vector<double> q_, v_, a_, X_, Xd_, Xdd_, R_;

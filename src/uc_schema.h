@@ -103,6 +103,11 @@ typedef struct UCParams {
     UCSection section[UC_MAX_SECTIONS];
     int nAttachments; /* nAttachments: Attachments in use (0..8): point masses, buoys, connectors at attachment[1..nAttachments].s */
     UCAttachment attachment[UC_MAX_ATTACHMENTS];
+    int winchMode; /* winchMode: winch at the tow point: 0 fixed length; 1 pays out (`winch.rate` > 0) or hauls in at the input `winch.rate`; 2 pays out or hauls in to hold the tow tension at the input `winch.tension` ([docs/winch.md](docs/winch.md)) */
+    double winchMaxRate; /* winch.maxRate [m/s]: Largest winch speed, both directions (the rate saturates at it) */
+    double winchMinLength; /* winch.minLength [m]: Shortest deployed unstretched length: hauling in stops there (a logged event) */
+    double winchMaxLength; /* winch.maxLength [m]: Longest deployed unstretched length: paying out stops there (a logged event) */
+    double winchTimeConstant; /* winch.timeConstant [s]: Constant-tension winch (winchMode 2): time constant with which the rate corrects the tension error, rate = (T - winch.tension) L / (EA tau) */
 } UCParams;
 
 typedef struct UCInputs {
@@ -117,6 +122,8 @@ typedef struct UCInputs {
     double twist; /* twist [rad]: rotation of the far end's material frame relative to the tow point's when `torqueMode` = 2 */
     double endLoadVelocity[3]; /* endLoadVelocity.x/y/z [m/s]: far-end velocity at which the partner evaluated `endLoad` (the point of its linearization `endLoadDamping`) */
     UCEndLoadDamping endLoadDamping;
+    double winchRate; /* winch.rate [m/s]: winch rate when `winchMode` = 1: positive pays out, negative hauls in (limited by `winch.maxRate` and the length limits) */
+    double winchTension; /* winch.tension [N]: tow tension the winch holds when `winchMode` = 2 */
     double towAcceleration[3]; /* (not an FMU variable) [m/s2] from fmi2SetRealInputDerivatives (der(tow.v*) or der(tow.*,2)); 0 if not given */
     int towAccelerationGiven; /* (not an FMU variable) 1 when towAcceleration came from the master for this step; 0: the core estimates it from the last two tow velocity inputs */
     double endAcceleration[3]; /* (not an FMU variable) [m/s2] der(end.v*) from fmi2SetRealInputDerivatives */
@@ -161,6 +168,7 @@ typedef struct UCOutputs {
     double towTensionMin; /* towTensionMin [N]: smallest tow tension over the last communication step, from every internal step of the integrator */
     double fatigueDamage; /* fatigueDamage: Miner's sum of the tow-tension cycles so far: streaming rainflow count of the tension after every integrator step with the `fatigue.*` S–N curve (0 when `fatigue.area` = 0) */
     double waveElevation; /* waveElevation [m]: elevation of the sea surface at the tow point's horizontal position (0 in calm water) */
+    double unstretchedLength; /* unstretchedLength [m]: deployed unstretched length of the line (changes with the winch) */
 } UCOutputs;
 
 /* X(vr, name, TYPE, CAUSALITY, member): every variable in value-reference order; TYPE is REAL, INTEGER, BOOLEAN or STRING (a NUL-terminated char array), CAUSALITY PARAMETER, INPUT or OUTPUT, member the field of UCParams, UCInputs or UCOutputs */
@@ -400,6 +408,11 @@ typedef struct UCOutputs {
     X(233, "attachment[6].CdA", REAL, PARAMETER, attachment[5].CdA) \
     X(234, "attachment[7].CdA", REAL, PARAMETER, attachment[6].CdA) \
     X(235, "attachment[8].CdA", REAL, PARAMETER, attachment[7].CdA) \
+    X(236, "winchMode", INTEGER, PARAMETER, winchMode) \
+    X(237, "winch.maxRate", REAL, PARAMETER, winchMaxRate) \
+    X(238, "winch.minLength", REAL, PARAMETER, winchMinLength) \
+    X(239, "winch.maxLength", REAL, PARAMETER, winchMaxLength) \
+    X(240, "winch.timeConstant", REAL, PARAMETER, winchTimeConstant) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -434,6 +447,8 @@ typedef struct UCOutputs {
     X(1032, "endLoadDamping.zx", REAL, INPUT, endLoadDamping.z[0]) \
     X(1033, "endLoadDamping.zy", REAL, INPUT, endLoadDamping.z[1]) \
     X(1034, "endLoadDamping.zz", REAL, INPUT, endLoadDamping.z[2]) \
+    X(1035, "winch.rate", REAL, INPUT, winchRate) \
+    X(1036, "winch.tension", REAL, INPUT, winchTension) \
     X(2001, "towForce.x", REAL, OUTPUT, towForce[0]) \
     X(2002, "towForce.y", REAL, OUTPUT, towForce[1]) \
     X(2003, "towForce.z", REAL, OUTPUT, towForce[2]) \
@@ -602,6 +617,7 @@ typedef struct UCOutputs {
     X(2166, "towTensionMin", REAL, OUTPUT, towTensionMin) \
     X(2167, "fatigueDamage", REAL, OUTPUT, fatigueDamage) \
     X(2168, "waveElevation", REAL, OUTPUT, waveElevation) \
+    X(2169, "unstretchedLength", REAL, OUTPUT, unstretchedLength) \
 
 /* X(member, value): the start value of every numeric parameter (Strings start empty: zero-filled) */
 #define UC_SCHEMA_PARAMETER_DEFAULTS(X) \
@@ -839,6 +855,11 @@ typedef struct UCOutputs {
     X(attachment[5].CdA, 0.0) \
     X(attachment[6].CdA, 0.0) \
     X(attachment[7].CdA, 0.0) \
+    X(winchMode, 0) \
+    X(winchMaxRate, 1.0) \
+    X(winchMinLength, 1.0) \
+    X(winchMaxLength, 100000.0) \
+    X(winchTimeConstant, 1.0) \
 
 /* X(member, name, lo, hi, loOpen, hiOpen, rangeText, why): the admissible interval of every numeric parameter (closed or open at each end) */
 #define UC_SCHEMA_PARAMETER_RANGES(X) \
@@ -1071,6 +1092,11 @@ typedef struct UCOutputs {
     X(attachment[5].CdA, "attachment[6].CdA", 0.0, 10000.0, 0, 0, "[0, 10000]", "drag must oppose the relative flow") \
     X(attachment[6].CdA, "attachment[7].CdA", 0.0, 10000.0, 0, 0, "[0, 10000]", "drag must oppose the relative flow") \
     X(attachment[7].CdA, "attachment[8].CdA", 0.0, 10000.0, 0, 0, "[0, 10000]", "drag must oppose the relative flow") \
+    X(winchMode, "winchMode", 0.0, 2.0, 0, 0, "{0 fixed length, 1 rate, 2 constant tension}", "unknown winch mode") \
+    X(winchMaxRate, "winch.maxRate", 0.0, 20.0, 1, 0, "(0, 20]", "a winch has a positive top speed of a few m/s") \
+    X(winchMinLength, "winch.minLength", 0.0, 100000.0, 1, 0, "(0, 100000]", "the deployed line keeps a positive length") \
+    X(winchMaxLength, "winch.maxLength", 0.0, 100000.0, 1, 0, "(0, 100000]", "the drum holds a finite length") \
+    X(winchTimeConstant, "winch.timeConstant", 0.01, 1000.0, 0, 0, "[0.01, 1000]", "the tension control needs a positive response time") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -120,6 +120,23 @@ private:
             if (name.rfind("current", 0) == 0) return uniform(-1.5, 1.5);
             return uniform(-2e3, 2e3);  // endLoad, endCouple, ...
         }
+        // A section's or an attachment's member: the same magnitudes as the line's own.
+        const size_t dot = name.find("].");
+        const std::string member = dot == std::string::npos ? name : name.substr(dot + 2);
+        if (name.rfind("attachment[", 0) == 0) {
+            if (member == "s") return uniform(0.0, 400.0);
+            if (member == "mass" || member == "addedMass") return uniform(0.0, 2000.0);
+            return uniform(0.0, 2.0);
+        }
+        if (name.rfind("section[", 0) == 0) {
+            if (member == "length") return uniform(5.0, 200.0);
+            if (member == "diameter") return uniform(0.005, 0.1);
+            if (member == "EA") return std::pow(10.0, uniform(4.0, 10.0));
+            if (member == "EI" || member == "GJ") return std::pow(10.0, uniform(-2.0, 5.0));
+            if (member == "massPerLength") return uniform(0.1, 20.0);
+            if (member == "axialDamping") return std::pow(10.0, uniform(2.0, 7.0));
+            return uniform(0.0, 3.0);
+        }
         if (name == "length") return uniform(5.0, 400.0);
         if (name == "diameter") return uniform(0.005, 0.1);
         if (name == "EA") return std::pow(10.0, uniform(4.0, 10.0));
@@ -152,6 +169,9 @@ private:
             return kSpecial[integer(0, 5)];
         }
         if (name == "nElements") return integer(1, 24);
+        if (name == "nSections") return integer(1, 4);
+        if (name == "nAttachments") return integer(0, 3);
+        if (name.rfind("section[", 0) == 0 && name.find(".nElements") != std::string::npos) return integer(1, 12);
         return integer(0, 3);
     }
 
