@@ -380,6 +380,12 @@ double CableModel::torque_for_twist(double twist) const {
     return twist / compliance;
 }
 
+double CableModel::axial_compliance() const {
+    double compliance = 0.0;
+    for (const SectionProps& s : sections_) compliance += s.length / s.axial.EA;
+    return compliance;
+}
+
 double CableModel::twist_at(int k, int stations, double torque) const {
     if (sections_.size() == 1) {
         const double GJ = sections_[0].GJ;

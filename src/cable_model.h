@@ -173,6 +173,8 @@ public:
     // Torque of torqueMode 2 for a twist angle of the far end against the tow point: the line's
     // torsional compliance is the sum of L_k / GJ_k over its sections.
     double torque_for_twist(double twist) const;
+    // Axial compliance of the whole line, the sum of L_k / EA_k over its sections [m/N].
+    double axial_compliance() const;
     // Twist angle at arc length s under the torque H (0 when a section has no torsional stiffness).
     // At station k of `stations` spread evenly over the line.
     double twist_at(int k, int stations, double torque) const;

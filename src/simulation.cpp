@@ -414,9 +414,10 @@ void CableSimulation::step_completed(double t, const double* y, const double* yp
         // Constant tension: the rate from the tension of this integrator step holds until the next
         // one (docs/winch.md): rate = (T - T_set) L / (EA tau), within the speed and length limits.
         const double top = model_.top_length();
-        const double length = winchLength_ + (top - winchTopAtStep_);
-        const double gain = length / (model_.section(0).axial.EA * p.winchTimeConstant);
-        const WinchRate r = limit_winch_rate(gain * (tension - winchTension_), length, stepEnd_ - t,
+        const double length = winchLength_ + (top - winchTopAtStep_);  // deployed now
+        const double gain = model_.axial_compliance() / p.winchTimeConstant;
+        const double requested = constant_tension_rate(tension, winchTension_, gain, p.winchMaxRate);
+        const WinchRate r = limit_winch_rate(requested, length, stepEnd_ - t,
                                              WinchLimits{p.winchMinLength, p.winchMaxLength, p.winchMaxRate});
         winchTop0_ = top;
         winchT0_ = t;
@@ -557,7 +558,10 @@ bool CableSimulation::set_integrator_tolerances(std::string& error) {
             atol[2 * j + 1] = std::min(atol[2 * j + 1], a / tau);
         }
     }
-    return integrator_->set_tolerances(atol, p.relTol, p.absTol, error);
+    if (!integrator_->set_tolerances(atol, p.relTol, p.absTol, error)) return false;
+    // The constant-tension winch sets its rate from the tension of each internal step: stable
+    // for steps up to twice its time constant (docs/winch.md), so they are held to it.
+    return p.winchMode != UC_WINCH_TENSION || integrator_->set_max_step(p.winchTimeConstant, error);
 }
 
 void CableSimulation::expand_integrator_state(double t, const double* y, const double* yp) {

@@ -1096,7 +1096,7 @@ typedef struct UCOutputs {
     X(winchMaxRate, "winch.maxRate", 0.0, 20.0, 1, 0, "(0, 20]", "a winch has a positive top speed of a few m/s") \
     X(winchMinLength, "winch.minLength", 0.0, 100000.0, 1, 0, "(0, 100000]", "the deployed line keeps a positive length") \
     X(winchMaxLength, "winch.maxLength", 0.0, 100000.0, 1, 0, "(0, 100000]", "the drum holds a finite length") \
-    X(winchTimeConstant, "winch.timeConstant", 0.01, 1000.0, 0, 0, "[0.01, 1000]", "the tension control needs a positive response time") \
+    X(winchTimeConstant, "winch.timeConstant", 0.0001, 1000.0, 0, 0, "[0.0001, 1000]", "the tension control needs a positive response time") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -2,9 +2,15 @@
 // split/merge rule with its hysteresis, the element capacity and the rate limits.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include <cstdint>
+#include <string>
+
+#include "cable_api.h"
 #include "hermite_element.h"
+#include "simulation.h"
 #include "winch.h"
 
 namespace uc {
@@ -166,6 +172,57 @@ TEST(WinchRate, ConstantTensionPaysOutAboveTheTargetAndHaulsInBelow) {
     EXPECT_DOUBLE_EQ(constant_tension_rate(10.5e3, 10e3, 1e-4, 1.0), 0.05);
     EXPECT_EQ(constant_tension_rate(1e6, 10e3, 1e-4, 1.0), 1.0);
     EXPECT_EQ(constant_tension_rate(0.0, 10e3, 1e-4, 1.0), -1.0);
+}
+
+// A tow at 2 kn with the winch driven back and forth at random rates (a fixed sequence) through
+// many splits and merges: the deployed unstretched length (the integral of the rate), the sum of
+// the element lengths and the mass they carry agree to round-off at every communication point.
+TEST(WinchLine, MassIsConservedThroughSplitsAndMerges) {
+    UCParams p;
+    uc_params_default(&p);
+    p.length = 100.0;
+    p.nElements = 7;
+    p.bottomEnd = UC_BOTTOM_TOWED_BODY;
+    p.bodyMass = 400.0;
+    p.bodyVolume = 0.1;
+    p.bodyCdA = 0.3;
+    p.winchMode = UC_WINCH_RATE;
+    p.winchMinLength = 40.0;
+    p.winchMaxLength = 250.0;
+    p.winchMaxRate = 2.0;
+    CableSimulation sim(p);
+    UCInputs in{};
+    const double V = 1852.0 / 3600.0 * 2.0, h = 0.5;
+    in.towVelocity[0] = V;
+    std::string error;
+    ASSERT_TRUE(sim.initialize(0.0, in, error)) << error;
+    std::uint64_t seed = 12345;
+    double integral = p.length;
+    int fewest = sim.model().n_elements(), most = fewest;
+    for (int k = 0; k < 600; ++k) {
+        seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+        const double u = static_cast<double>(seed >> 11) / 9007199254740992.0;  // [0, 1)
+        in.winchRate = k < 200 ? 1.5 * u - 0.1 : 0.1 - 1.5 * u;  // mostly out, then mostly in to the limit
+        in.tow[0] = V * sim.time();
+        const double before = sim.outputs().unstretchedLength;
+        ASSERT_TRUE(sim.step(sim.time(), h, in, error)) << error;
+        const double rate = std::clamp(in.winchRate, -2.0, 2.0);
+        integral += std::clamp(before + rate * h, 40.0, 250.0) - before;
+        const CableModel& m = sim.model();
+        double sum = 0.0, mass = 0.0;
+        for (int e = 0; e < m.n_elements(); ++e) {
+            sum += m.element_length(e);
+            mass += m.element_section(e).fluid.massPerLength * m.element_length(e);
+        }
+        const double L = sim.outputs().unstretchedLength;
+        ASSERT_NEAR(L, integral, 1e-9) << "step " << k;
+        ASSERT_NEAR(sum, L, 1e-9) << "step " << k;
+        ASSERT_NEAR(mass, p.massPerLength * L, 1e-9 * p.massPerLength) << "step " << k;
+        fewest = std::min(fewest, m.n_elements());
+        most = std::max(most, m.n_elements());
+    }
+    EXPECT_GE(most, 11);   // splits happened (7 elements of 14.3 m at the start)
+    EXPECT_LE(fewest, 4);  // and merges
 }
 
 }  // namespace
