@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import heave_lowering
+from . import heave_lowering, winch_scenes
 from .cosim import CABLE_OUTPUTS, COUPLINGS, MASTERS, run_scene
 from .fmu import NUM_STATIONS
 from .partners import TowedBodyParameters
@@ -39,8 +39,10 @@ def parse_args(argv):
                     "towing the 300 m Hopland cable (UnderwaterCable FMU) through fmpy, "
                     "Gauss-Seidel coupling. Manoeuvres: " + ", ".join(NAMES) + ".",
         formatter_class=argparse.ArgumentDefaultsHelpFormatter)
-    p.add_argument("name", choices=NAMES + (HEAVE_LOWERING,),
-                   help=f"manoeuvre, or {HEAVE_LOWERING}: a 2 t body on 500 m of umbilical hanging from an 80 m "
+    p.add_argument("name", choices=NAMES + (HEAVE_LOWERING,) + winch_scenes.SCENES,
+                   help="manoeuvre; deploy / recover: a towed body paid out 50 -> 600 m / hauled in 600 -> 50 m at "
+                        "2 kn by the winch; ct-lowering: a 2 t body lowered by the constant-tension winch in heave; "
+                        f"or {HEAVE_LOWERING}: a 2 t body on 500 m of umbilical hanging from an 80 m "
                         "vessel (VesselRAO FMU) in a JONSWAP sea")
     p.add_argument("--step", type=float, default=None,
                    help=f"communication step [s] (default 0.5; {HEAVE_LOWERING} 0.2)")
@@ -212,6 +214,19 @@ def main_heave_lowering(args, fmu, out: Path) -> int:
     return 0
 
 
+def main_winch(args, fmu, out: Path) -> int:
+    bar = ProgressBar(winch_scenes.duration(args.name), label=args.name)
+    r = winch_scenes.run(args.name, fmu, step=args.step, progress=bar.update)
+    bar.close(f"simulated {r.time[-1]:g} s, {r.cpu:.2f} s CPU (real-time factor {r.time[-1] / r.cpu:.0f})")
+    files = [out / f"{args.name}.csv", out / f"{args.name}.png"]
+    winch_scenes.write_csv(files[0], r)
+    winch_scenes.plot(files[1], r)
+    for key, value in winch_scenes.summary(r).items():
+        print(f"{key}: {value:.6g}")
+    print("wrote:\n  " + "\n  ".join(str(f) for f in files))
+    return 0
+
+
 def main(argv=None) -> int:
     args = parse_args(sys.argv[1:] if argv is None else argv)
     if args.step is not None and args.step <= 0:
@@ -221,6 +236,8 @@ def main(argv=None) -> int:
     out.mkdir(parents=True, exist_ok=True)
     if args.name == HEAVE_LOWERING:
         return main_heave_lowering(args, fmu, out)
+    if args.name in winch_scenes.SCENES:
+        return main_winch(args, fmu, out)
     if args.step is None:
         args.step = 0.5
     scene = make_scene(args.name, t_end=args.t_end, step=args.step, n_elements=args.nElements,

@@ -158,7 +158,7 @@ def heave(cable, duration, set_tension=None):
     n = int(round(duration / H))
     T, L = np.empty(n), np.empty(n)
     for k in range(n):
-        t = (k + 1) * H
+        t = k * H  # the inputs at the step's start
         cable.set({"tow.z": HEAVE * math.sin(w * t), "tow.vz": HEAVE * w * math.cos(w * t)})
         if set_tension is not None:
             cable.set({"winch.tension": set_tension(cable)})
