@@ -118,6 +118,8 @@ private:
             if (name.rfind("tow.v", 0) == 0) return uniform(-3.0, 3.0);
             if (name.rfind("tow.", 0) == 0) return uniform(-50.0, 50.0);
             if (name.rfind("current", 0) == 0) return uniform(-1.5, 1.5);
+            if (name == "winch.rate") return uniform(-3.0, 3.0);
+            if (name == "winch.tension") return uniform(0.0, 3e4);
             return uniform(-2e3, 2e3);  // endLoad, endCouple, ...
         }
         // A section's or an attachment's member: the same magnitudes as the line's own.
@@ -137,6 +139,9 @@ private:
             if (member == "axialDamping") return std::pow(10.0, uniform(2.0, 7.0));
             return uniform(0.0, 3.0);
         }
+        if (name == "winch.minLength") return uniform(1.0, 100.0);
+        if (name == "winch.maxLength") return uniform(100.0, 800.0);
+        if (name == "winch.timeConstant") return std::pow(10.0, uniform(-3.0, 0.5));
         if (name == "length") return uniform(5.0, 400.0);
         if (name == "diameter") return uniform(0.005, 0.1);
         if (name == "EA") return std::pow(10.0, uniform(4.0, 10.0));
