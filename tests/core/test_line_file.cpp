@@ -312,6 +312,57 @@ TEST(LineFile, ApplyRefusesMoreElementsThanTheModelTakesNamingTheLine) {
     EXPECT_STREQ(msg, "line 15: NumSegs 2500 gives 1250 elements, more than 1000: set lineFileElements");
 }
 
+TEST(LineFile, ApplyMakesSectionsPinnedJointsAndAttachmentsOfAChainOfLines) {
+    UCParams p;
+    uc_params_default(&p);
+    p.nAttachments = 3;  // the deck's points replace attachments set by parameters
+    const std::string deck = kChainWireChain;
+    char msg[512];
+    ASSERT_EQ(uc_line_file_apply(deck.data(), deck.size(), &p, nullptr, nullptr, 0, msg, sizeof msg), 0) << msg;
+    ASSERT_EQ(p.nSections, 3);
+    const double lengths[3] = {150.0, 450.0, 300.0};  // from the vessel: chain, wire, chain
+    const int elements[3] = {5, 10, 15};              // ceil(NumSegs / 2)
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(p.section[k].length, lengths[k]) << k;
+        EXPECT_EQ(p.section[k].nElements, elements[k]) << k;
+        EXPECT_EQ(p.section[k].joint, 1) << k;  // MoorDyn's points carry no moment
+    }
+    EXPECT_EQ(p.section[1].massPerLength, 42.0);
+    EXPECT_EQ(p.section[1].EA, 6.0e8);
+    EXPECT_EQ(p.section[1].axialDamping, 1.0e6);
+    // point 3 (the buoy) at 150 m, point 2 (the clump weight) at 600 m
+    ASSERT_EQ(p.nAttachments, 2);
+    EXPECT_EQ(p.attachment[0].s, 150.0);
+    EXPECT_EQ(p.attachment[0].volume, 2.0);
+    EXPECT_EQ(p.attachment[0].addedMass, 0.8 * 1025.0 * 2.0);
+    EXPECT_EQ(p.attachment[1].s, 600.0);
+    EXPECT_EQ(p.attachment[1].mass, 5000.0);
+    EXPECT_EQ(p.attachment[1].CdA, 1.0);
+    EXPECT_EQ(uc_params_check(&p, msg, sizeof msg), 0) << msg;
+}
+
+// Nine lines in a chain: one more than the sections a line can have; the ninth is named.
+TEST(LineFile, ApplyRefusesMoreLinesThanSections) {
+    std::string deck = "---------------------- LINE TYPES ----\nName Diam Mass EA BA EI Cd Ca CdAx CaAx\n"
+                       "(-) (m) (kg/m) (N) (Ns) (Nm2) (-) (-) (-) (-)\n"
+                       "chain 0.0766 113 7.5e8 -0.8 0 2.4 1.0 0.2 0.0\n"
+                       "---------------------- POINTS ----\nID Attachment X Y Z Mass Volume CdA CA\n"
+                       "(#) (-) (m) (m) (m) (kg) (m3) (m2) (-)\n"
+                       "1 Fixed -900 0 -320 0 0 0 0\n";
+    for (int k = 2; k <= 9; ++k) deck += std::to_string(k) + " Free " + std::to_string(-900 + 100 * (k - 1)) + " 0 -300 0 0 0 0\n";
+    deck += "10 Vessel 0 0 -70 0 0 0 0\n---------------------- LINES ----\n"
+            "ID LineType AttachA AttachB UnstrLen NumSegs Outputs\n(#) (-) (#) (#) (m) (-) (-)\n";
+    for (int k = 1; k <= 9; ++k)
+        deck += std::to_string(k) + " chain " + std::to_string(k) + " " + std::to_string(k + 1) + " 100 4 -\n";
+    deck += "---------------------- OPTIONS ----\n320 WtrDpth\n------------------------- need this line ----\n";
+    UCParams p;
+    uc_params_default(&p);
+    char msg[512];
+    ASSERT_EQ(uc_line_file_apply(deck.data(), deck.size(), &p, nullptr, nullptr, 0, msg, sizeof msg), 1);
+    EXPECT_NE(std::strstr(msg, "a chain of 9 lines: at most 8 lines (sections) are supported"), nullptr) << msg;
+    EXPECT_EQ(std::strncmp(msg, "line ", 5), 0) << msg;
+}
+
 // ---- refusals: each names the line of the deck
 
 TEST(LineFileRefuses, BodiesRodsAndOtherObjects) {

@@ -67,3 +67,22 @@ def test_a_lazy_wave_umbilical_hogs_over_its_buoyancy_section(make_cable):
     spacing = 700.0 / 20
     assert np.all(np.hypot(np.diff(x), np.diff(z)) > 0.95 * spacing)  # no fold between stations
     assert cable.get("minTension") > 0.0
+
+
+def test_one_section_is_the_line_of_the_scalar_parameters_bit_for_bit(make_cable):
+    """nSections = 1 is the uniform line of length, diameter, ... nElements: whatever section[k] and
+    attachment[k] hold (unused, nAttachments = 0), the results are those of the default FMU."""
+    unused = {**_section(1, length=50.0, EA=1e5, nElements=3, joint=1), **_section(2, length=70.0),
+              "attachment[1].s": 10.0, "attachment[1].mass": 1e3}
+    names = ["towTension", "towForce.x", "towForce.z", "endPosition.x", "endPosition.z", "minTension"]
+    runs = []
+    for extra in ({}, unused):
+        cable = make_cable(parameters=extra)
+        cable.initialize(inputs={"tow.vx": 1.5})
+        history = []
+        for k in range(6):
+            cable.set({"tow.x": 1.5 * k * 0.5, "tow.vx": 1.5 + 0.05 * k})
+            cable.do_step(0.5, k * 0.5)
+            history.append(cable.get_reals(names))
+        runs.append(np.array(history))
+    assert runs[0].tobytes() == runs[1].tobytes()
