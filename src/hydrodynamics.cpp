@@ -42,7 +42,7 @@ void CurrentField::flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA) con
     U = at(r.z(), &slope);
     dU.setZero();
     dU.col(2) = slope;
-    A.setZero();
+    A = rate;  // a uniform current changing over the step accelerates the water
     dA.setZero();
     if (!waves()) return;
     Vec3 u;
@@ -76,10 +76,12 @@ Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& 
     const double ta = t.dot(rdd);
     if (p.addedMass) inertia = rhoA * (p.Can * (rdd - ta * t) + p.Cat * ta * t);
 
-    // Fluid inertia on the normal component: Froude-Krylov plus added mass, rho A (1 + Can) A_n.
-    const double fluidInertiaCoefficient = rhoA * (1.0 + p.Can);
-    const Vec3 An = waves ? Vec3(A - t.dot(A) * t) : Vec3::Zero();
-    if (waves) inertia -= fluidInertiaCoefficient * An;
+    // Fluid inertia, Froude-Krylov plus added mass: rho A ((1 + Can) A_n + (1 + Cat) A_t). The
+    // tangential Froude-Krylov part belongs with the buoyancy taken as a load per length (effective
+    // tension): both are the pressure of the water around a closed section.
+    const double kn = rhoA * (1.0 + p.Can), kt = rhoA * (1.0 + p.Cat);
+    const double At = waves ? t.dot(A) : 0.0;
+    if (waves) inertia -= kn * (A - At * t) + kt * At * t;
 
     const Vec3 F = phi * inertia - weight - phi * drag;
     if (J == nullptr) return F;
@@ -98,16 +100,16 @@ Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& 
         dInertia_drdd = rhoA * (p.Can * P + p.Cat * tt);
         dInertia_dt = rhoA * (p.Cat - p.Can) * (t * rdd.transpose() + ta * I);
     }
-    if (waves) dInertia_dt += fluidInertiaCoefficient * (t * A.transpose() + t.dot(A) * I);  // d(-c A_n)/dt
+    if (waves) dInertia_dt += (kn - kt) * (t * A.transpose() + At * I);  // d(-kn A_n - kt A_t)/dt
     const Mat3 dt_drp = P / stretch;
     // u = U - r_dot: dF/dr_dot = + phi dDrag/du.
     J->drd = phi * dDrag_du;
     J->drp = phi * (dInertia_dt - dDrag_dt) * dt_drp;
     J->drdd = phi * dInertia_drdd;
-    // F depends on r through the water's motion: dF/dr = -phi dDrag/du dU/dr - phi c P dA/dr.
+    // F depends on r through the water's motion: dF/dr = -phi dDrag/du dU/dr - phi (kn P + kt t t^T) dA/dr.
     J->dr.setZero();
     if (waves) {
-        J->dr = -phi * dDrag_du * dU - phi * fluidInertiaCoefficient * P * dA;
+        J->dr = -phi * dDrag_du * dU - phi * (kn * P + kt * tt) * dA;
     } else {
         J->dr.col(2) = -phi * dDrag_du * dU.col(2);
     }
@@ -129,7 +131,7 @@ void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentF
         Mat3 dU, dA;
         current.flow(r, U, dU, A, dA);
         const Vec3 F = point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd),
-                                  interpolate(q.shape.N, Xdd), U, dU, current.waves(), A, dA, nullptr);
+                                  interpolate(q.shape.N, Xdd), U, dU, current.accelerates(), A, dA, nullptr);
         for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += (q.weight * q.shape.N[a]) * F;
     }
 }
@@ -145,7 +147,7 @@ void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const Curre
         Mat3 dU, dA;
         current.flow(r, U, dU, A, dA);
         point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd), interpolate(q.shape.N, Xdd), U,
-                   dU, current.waves(), A, dA, &J);
+                   dU, current.accelerates(), A, dA, &J);
         for (int a = 0; a < 4; ++a) {
             const double wa = q.weight * q.shape.N[a];
             for (int b = 0; b < 4; ++b) {

@@ -46,8 +46,10 @@ struct CurrentField {
     // Velocity of the current at height z; slope = dU/dz when non-null.
     Vec3 at(double z, Vec3* slope) const;
     bool waves() const { return sea != nullptr && !sea->calm(); }
-    // The water's velocity U (current and waves) and local acceleration A (waves) at r, with their
-    // gradients dU/dr and dA/dr (A and dA are zero in calm water).
+    // The water accelerates: waves, or a uniform current changing over the step.
+    bool accelerates() const { return waves() || !rate.isZero(0.0); }
+    // The water's velocity U (current and waves) and local acceleration A (waves, and the rate of a
+    // changing current) at r, with their gradients dU/dr and dA/dr (dA is zero in calm water).
     void flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA) const;
 };
 
@@ -62,9 +64,9 @@ constexpr double kDragVelocityFloor = 1e-6;
 double submerged_fraction(double z, double diameter);
 
 // Per-length load F at one point in water moving with velocity U (gradient dU = dU/dr) and, when
-// `waves`, accelerating with A (gradient dA): Morison drag on the relative velocity and the fluid
-// inertia rho A (1 + Can) A_n on the normal component (Froude-Krylov plus added mass). Fills J when
-// non-null.
+// `waves` (the water accelerates), accelerating with A (gradient dA): Morison drag on the relative
+// velocity and the fluid inertia rho A ((1 + Can) A_n + (1 + Cat) A_t) (Froude-Krylov plus added
+// mass). Fills J when non-null.
 Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd, const Vec3& U,
                 const Mat3& dU, bool waves, const Vec3& A, const Mat3& dA, PointLoadJacobian* J);
 

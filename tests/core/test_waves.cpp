@@ -167,14 +167,79 @@ TEST(Waves, MorisonLoadJacobianInWavesMatchesFiniteDifferences) {
         EXPECT_LT(((load(r, rp + e, rd, nullptr) - load(r, rp - e, rd, nullptr)) / (2 * h) - J.drp.col(c)).norm(), 1e-6 * scale) << c;
         EXPECT_LT(((load(r, rp, rd + e, nullptr) - load(r, rp, rd - e, nullptr)) / (2 * h) - J.drd.col(c)).norm(), 1e-6 * scale) << c;
     }
-    // The fluid inertia: a cable at rest in a wave feels rho A (1 + Can) times the normal fluid acceleration.
+    // The fluid inertia: the water's acceleration A pulls with rho A (1 + Can) on its normal component
+    // and rho A (1 + Cat) on its tangential one (Can = 1, Cat = 0.1 here; the load F enters the
+    // residual with the sign of a reaction).
     Vec3 U, A;
     Mat3 dU, dA;
     field.flow(r, U, dU, A, dA);
     const Vec3 t = rp.normalized();
     const Vec3 withWaves = point_load(p, r, rp, rd, rdd, U, dU, true, A, dA, nullptr);
     const Vec3 without = point_load(p, r, rp, rd, rdd, U, dU, false, A, dA, nullptr);
-    EXPECT_LT((withWaves - without + 1025.0 * p.area * 2.0 * (A - t.dot(A) * t)).norm(), 1e-12 * (1.0 + withWaves.norm()));
+    const Vec3 expected = 1025.0 * p.area * (2.0 * (A - t.dot(A) * t) + 1.1 * t.dot(A) * t);
+    EXPECT_LT((withWaves - without + expected).norm(), 1e-12 * (1.0 + withWaves.norm()));
+}
+
+// A uniform current changing over the step (the input derivatives of current.x/y) moves the whole
+// column: the depth profile rides on it unchanged, its shear stays, and the water accelerates at the
+// rate everywhere, which the Morison inertia feels; the load's Jacobian stays exact.
+TEST(Waves, ChangingCurrentShiftsTheProfileAndAcceleratesTheWater) {
+    CurrentProfile profile;
+    profile.rows = 2;
+    profile.depth[0] = 10.0;
+    profile.depth[1] = 50.0;
+    profile.ux[0] = 0.8;
+    profile.uy[1] = 0.4;
+    CurrentField field;
+    field.uniform = Vec3(0.3, -0.1, 0.0);
+    field.profile = &profile;
+    field.rate = Vec3(0.02, 0.05, 0.0);
+    field.rateStart = 3.0;
+    field.time = 7.5;
+    for (double z : {0.0, -10.0, -20.0, -50.0, -80.0}) {
+        CurrentField still = field;
+        still.rate.setZero();
+        Vec3 slope, stillSlope;
+        const Vec3 u = field.at(z, &slope);
+        const Vec3 u0 = still.at(z, &stillSlope);
+        EXPECT_LT((u - u0 - 4.5 * field.rate).norm(), 1e-15) << z;
+        EXPECT_EQ(slope, stillSlope) << z;
+    }
+    const Vec3 mid = field.at(-30.0, nullptr);
+    EXPECT_NEAR(mid.x(), 0.3 + 4.5 * 0.02 + 0.4, 1e-15);
+    EXPECT_NEAR(mid.y(), -0.1 + 4.5 * 0.05 + 0.2, 1e-15);
+
+    Vec3 U, A;
+    Mat3 dU, dA;
+    field.flow(Vec3(1.0, 2.0, -30.0), U, dU, A, dA);
+    EXPECT_EQ(A, field.rate);
+    EXPECT_TRUE(dA.isZero(0.0));
+    EXPECT_TRUE(field.accelerates());
+    EXPECT_FALSE(field.waves());
+
+    FluidProps p{1025.0, g, 3.0, kPi * 0.04 * 0.04 / 4, 0.04, 1.6, 0.02, 1.0, 0.1, true};
+    const Vec3 r(2.0, 1.0, -30.0), rp(0.6, 0.2, -0.8), rd(0.3, 0.1, -0.2), rdd(0.05, -0.02, 0.1);
+    auto load = [&](const Vec3& rr, const Vec3& rrp, const Vec3& rrd, PointLoadJacobian* J) {
+        Vec3 u, a;
+        Mat3 du, da;
+        field.flow(rr, u, du, a, da);
+        return point_load(p, rr, rrp, rrd, rdd, u, du, field.accelerates(), a, da, J);
+    };
+    PointLoadJacobian J;
+    const Vec3 F = load(r, rp, rd, &J);
+    const double h = 1e-6;
+    for (int c = 0; c < 3; ++c) {
+        Vec3 e = Vec3::Zero();
+        e[c] = h;
+        const double scale = 1.0 + F.norm();
+        EXPECT_LT(((load(r + e, rp, rd, nullptr) - load(r - e, rp, rd, nullptr)) / (2 * h) - J.dr.col(c)).norm(), 1e-6 * scale) << c;
+        EXPECT_LT(((load(r, rp + e, rd, nullptr) - load(r, rp - e, rd, nullptr)) / (2 * h) - J.drp.col(c)).norm(), 1e-6 * scale) << c;
+        EXPECT_LT(((load(r, rp, rd + e, nullptr) - load(r, rp, rd - e, nullptr)) / (2 * h) - J.drd.col(c)).norm(), 1e-6 * scale) << c;
+    }
+    const Vec3 t = rp.normalized();
+    const Vec3 still = point_load(p, r, rp, rd, rdd, U, dU, false, A, dA, nullptr);
+    const Vec3 expected = 1025.0 * p.area * (2.0 * (A - t.dot(A) * t) + 1.1 * t.dot(A) * t);
+    EXPECT_LT((F - still + expected).norm(), 1e-12 * (1.0 + F.norm()));
 }
 
 // A 3-hour record of the JONSWAP sea at a point, sampled every 0.5 s: its significant height
