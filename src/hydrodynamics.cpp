@@ -45,11 +45,22 @@ void CurrentField::flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA) con
     A = rate;  // a uniform current changing over the step accelerates the water
     dA.setZero();
     if (!waves()) return;
-    Vec3 u;
+    Vec3 u, a;
     Mat3 du;
-    sea->kinematics(r, time, u, A, &du, &dA);
+    sea->kinematics(r, time, u, a, &du, &dA);
     U += u;
     dU += du;
+    A += a;  // the waves' acceleration on top of the changing current's
+}
+
+void CurrentField::flow(const Vec3& r, Vec3& U, Vec3& A) const {
+    U = at(r.z(), nullptr);
+    A = rate;  // a uniform current changing over the step accelerates the water
+    if (!waves()) return;
+    Vec3 u, a;
+    sea->kinematics(r, time, u, a, nullptr, nullptr);
+    U += u;
+    A += a;
 }
 
 double submerged_fraction(double z, double diameter) {
@@ -128,10 +139,10 @@ void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentF
         const QuadPoint& q = e.load[g];
         const Vec3 r = interpolate(q.shape.N, X);
         Vec3 U, A;
-        Mat3 dU, dA;
-        current.flow(r, U, dU, A, dA);
+        current.flow(r, U, A);  // the load without its Jacobian needs no gradients of the flow
+        const Mat3 unused = Mat3::Zero();
         const Vec3 F = point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd),
-                                  interpolate(q.shape.N, Xdd), U, dU, current.accelerates(), A, dA, nullptr);
+                                  interpolate(q.shape.N, Xdd), U, unused, current.accelerates(), A, unused, nullptr);
         for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += (q.weight * q.shape.N[a]) * F;
     }
 }

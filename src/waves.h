@@ -17,8 +17,10 @@ namespace uc {
 
 struct WaveComponent {
     double amplitude = 0.0, omega = 0.0, k = 0.0, phase = 0.0;
-    // precomputed by SeaState::build: k along x and y, exp(-2 k h), 1 / (1 - exp(-2 k h))
-    double kx = 0.0, ky = 0.0, bottom = 0.0, depthScale = 1.0;
+    // precomputed by SeaState::build: k along x and y, exp(-2 k h), 1 / (1 - exp(-2 k h)), and k minus
+    // the deep-water ladder value of its index (SeaState::ladder_k)
+    double kx = 0.0, ky = 0.0, bottom = 0.0, depthScale = 1.0, ladderShift = 0.0;
+    double velocityScale = 0.0, accelerationScale = 0.0;  // a w / (1 - e^{-2kh}), a w^2 / (1 - e^{-2kh})
 };
 
 // The wavenumber of frequency omega in water of depth h: omega^2 = g k tanh(k h), solved by Newton's
@@ -52,6 +54,10 @@ public:
 
 private:
     double ramp(double t) const;
+    // The deep-water wavenumber (alpha + beta i)^2 / g of component i of equally spaced frequencies
+    // alpha + beta i: quadratic in i, so exp(k_i (z + i s)) follows from its predecessor by two complex
+    // multiplications (kinematics); the true k_i differs from it by the component's ladderShift.
+    double ladder_k(double i) const { return (ladderAlpha_ + ladderBeta_ * i) * (ladderAlpha_ + ladderBeta_ * i) / gravity_; }
     // cos and sin of (omega t - phase) per component at time t: computed once per time, as the
     // integrator evaluates every quadrature point at one time (a cache of this instance's model,
     // which no other instance shares).
@@ -61,6 +67,7 @@ private:
     mutable double phaseTime_ = 0.0;
     mutable bool phaseValid_ = false;
     double depth_ = 0.0, rampTime_ = 0.0, cosb_ = 1.0, sinb_ = 0.0;
+    double gravity_ = 9.81, ladderAlpha_ = 0.0, ladderBeta_ = 0.0;
     bool wheeler_ = false;
 };
 

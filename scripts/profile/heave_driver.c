@@ -49,6 +49,12 @@ int main(int argc, char** argv) {
     p.initialDirection[0] = 0.0;
     p.initialDirection[1] = 0.0;
     p.initialDirection[2] = -1.0;
+#ifdef UC_PROFILE_WAVES /* heave_waves_driver.c: the same case in a JONSWAP sea */
+    p.wavesMode = 2;
+    p.wavesHeight = 3.0;
+    p.wavesPeriod = 10.0;
+    p.wavesNComponents = UC_PROFILE_WAVES;
+#endif
     UCCable* c = uc_create(&p, msg, sizeof msg);
     if (!c) { fprintf(stderr, "uc_create: %s\n", msg); return 1; }
     UCInputs in;

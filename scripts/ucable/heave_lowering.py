@@ -5,10 +5,10 @@ Vessel: the generic 80 m vessel of the VesselRAO FMU (its shipped RAO table), ho
 origin, heading +x, in head seas (the waves travel along -x); the umbilical leaves over the stern, 36 m
 aft of midships on the centreline at the waterline. Sea: JONSWAP Hs 3 m, Tp 9 s, gamma 3.3, 200
 components, ramped in over 20 s; the same waves.* parameters go to both FMUs, so the water around the
-cable is the sea that moves the vessel. Umbilical: the heave case's (d 0.1 m, 20 kg/m, EA 5e8 N, EI 1e4
-N m2, Cdn 1.2, Cdt 0.008, Can 1, axial damping 0.01 s x EA), 500 m, in 1000 m of water. Body: 2 t, 0.5 m3,
-0.5 t added mass, drag area 0.88 m2 (the towed-body defaults scaled to 2 t) on the lower end (bottomEnd 2),
-starting from rest straight below the top.
+cable is the sea that moves the vessel. Umbilical and body: those of the scene file lowering_in_waves
+(500 m, d 0.03 m, 2 kg/m, EA 3e7 N, EI 500 N m2, Cdn 1.2, Cdt 0.01; a 2 t body of 0.5 m3 with 1 t added
+mass and a drag area of 3 m2 on the lower end, bottomEnd 2), in 1000 m of water, starting from rest
+straight below the top. (That scene file prescribes a sinusoidal heave of the top instead.)
 
 Master: at every communication point the vessel's tow-point position and velocity go to the cable's tow.*
 inputs and its acceleration to der(tow.v*) (fmi2SetRealInputDerivatives); the vessel's motion is a closed
@@ -24,9 +24,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+import tomllib
+
 from . import heave
 from .fmu import CableFMU
-from .system import Body, partner_fmu
+from .paths import find_scene
+from .system import partner_fmu
 
 DEFAULT_T_END = 300.0
 
@@ -36,7 +39,6 @@ class Scene:
     t_end: float = DEFAULT_T_END
     step: float = 0.2
     n_elements: int = 20
-    length: float = 500.0
     hs: float = 3.0
     tp: float = 9.0
     gamma: float = 3.3
@@ -46,8 +48,8 @@ class Scene:
     mode: int = 2  # 1: a regular wave of height hs and period tp
     direction: float = math.pi  # waves travelling along -x: head seas for the vessel heading +x
     tow_point: tuple = (-36.0, 0.0, 0.0)
-    body_mass: float = 2000.0
     water_depth: float = 1000.0
+    line_scene: str = "lowering_in_waves"  # the scene file whose umbilical and body hang here
     extra: dict = field(default_factory=dict)  # further cable parameters
 
     def waves(self) -> dict:
@@ -60,10 +62,15 @@ class Scene:
         return {**self.waves(), "x0": 0.0, "y0": 0.0, "heading": 0.0, "towPoint.x": self.tow_point[0],
                 "towPoint.y": self.tow_point[1], "towPoint.z": self.tow_point[2]}
 
+    def line(self) -> dict:
+        """The umbilical and body parameters of the scene file (its sea left out: ours is set here)."""
+        with open(find_scene(self.line_scene), "rb") as f:
+            params = tomllib.load(f)["parameters"]
+        return {k: v for k, v in params.items() if not k.startswith("waves.")}
+
     def cable_parameters(self) -> dict:
-        b = Body(mass=self.body_mass).resolved()
-        body = {"body.mass": b.mass, "body.volume": b.volume, "body.addedMass": b.added_mass, "body.CdA": b.cda}
-        return heave.parameters(self.n_elements, length=self.length, **body, **self.waves(), **self.extra)
+        return {**self.line(), "nElements": self.n_elements, "waterDepth": self.water_depth, **self.waves(),
+                **self.extra}
 
 
 VESSEL_OUT = ["tow.x", "tow.y", "tow.z", "tow.vx", "tow.vy", "tow.vz", "tow.ax", "tow.ay", "tow.az",
@@ -179,7 +186,8 @@ def plot(path, r: Result) -> None:
     for a in ax:
         a.grid(True, alpha=0.3)
     mode = "JONSWAP Hs" if sc.mode == 2 else "regular H"
-    fig.suptitle(f"heave-lowering: {sc.body_mass / 1e3:g} t body on {sc.length:g} m umbilical, {mode} {sc.hs:g} m, "
+    line = sc.line()
+    fig.suptitle(f"heave-lowering: {line['body.mass'] / 1e3:g} t body on {line['length']:g} m umbilical, {mode} {sc.hs:g} m, "
                  f"T{'p' if sc.mode == 2 else ''} {sc.tp:g} s, head seas, {sc.n_elements} elements, "
                  f"step {sc.step:g} s")
     fig.tight_layout()

@@ -23,7 +23,7 @@ import os
 import sys
 import tempfile
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -100,6 +100,8 @@ class Case:
     current: float = 0.0  # uniform current along x [m/s], the same in MoorDyn
     body: dict | None = None  # MoorDyn point at the free far end: mass, volume, CdA, CA
     reference_step: float | None = None  # communication step of our reference run (None: comm_step)
+    calm_twin: dict | None = None  # FMU parameters that make the sea calm: a cost table calm vs this case
+    doc_after: str | None = None  # a partial run puts this case's section after that case's in the doc
 
 
 HOPLAND_LINE = dict(length=300.0, diameter=0.0332, massPerLength=2.7018, EA=6.709e7, EI=1000.0,
@@ -234,7 +236,25 @@ def make_cases():
         md_grid=dict(full=[(n, 0.9) for n in (5, 10, 20, 40, 80)], quick=[(10, 0.9)]),
         reference=dict(full=(40, 1e-7), quick=(10, 1e-5)),
     )
-    return {"hopland": hopland, "mooring": mooring, "stiff": stiff, "heave": heave_case}
+    heave_waves = replace(
+        heave_case, name="heave_waves",
+        title=("Heave in waves: the heave case in a JONSWAP sea (Hs 3 m, Tp 10 s, 200 components) acting on the "
+               "umbilical, 200 s"),
+        fmu_params={**heave_case.fmu_params, **HEAVE_WAVES},
+        md_grid=dict(full=[], quick=[]), calm_twin={"waves.mode": 0}, doc_after="heave",
+        description=(
+            "The heave case above (the same umbilical, body, current and 2 m / 10 s heave of the top, the same "
+            "grid and reference) with the water moving in an irregular sea: JONSWAP Hs 3 m, Tp 10 s, gamma 3.3, "
+            "200 components, seed 1, travelling along +x, no ramp; the Morison loads use the velocity relative "
+            "to current plus waves and the fluid inertia of the waves' acceleration (docs/waves.md). Ours only: "
+            "MoorDyn is not fed the same wave components here. Errors against our reference in the same sea "
+            "(40 elements, tensionTolerance 1e-7, 0.01 s steps). The second table puts each run's cost next to "
+            "the same run in calm water (waves.mode = 0): the difference is the price of the wave kinematics."))
+    return {"hopland": hopland, "mooring": mooring, "stiff": stiff, "heave": heave_case, "heave_waves": heave_waves}
+
+
+HEAVE_WAVES = {"waves.mode": 2, "waves.height": 3.0, "waves.period": 10.0, "waves.gamma": 3.3, "waves.seed": 1,
+               "waves.nComponents": 200}
 
 
 # ----------------------------------------------------------------------------- runs
@@ -902,6 +922,23 @@ def targets_text(case, runs):
     return "\n".join(lines)
 
 
+def calm_table(fmu, case, runs):
+    """Each of our runs next to the same run in calm water: (rows, Markdown)."""
+    rows = []
+    for r in [x for x in runs if x.code == "ours"]:
+        tol = float(r.setting.split()[-1])
+        calm = run_fmu(fmu, case, r.resolution, tol, extra=case.calm_twin)
+        rows.append((r.resolution, tol, calm.cpu, r.cpu, int(calm.stats["solver.nSteps"]),
+                     int(r.stats["solver.nSteps"]), calm.stats["solver.nResidualEvals"],
+                     r.stats["solver.nResidualEvals"]))
+    lines = ["| resolution | tensionTolerance | CPU calm [s] | CPU in waves [s] | waves / calm | steps calm | "
+             "steps in waves | CPU per residual evaluation calm [us] | in waves [us] |", "|---|---|---|---|---|---|---|---|---|"]
+    for n, tol, c_calm, c_waves, s_calm, s_waves, r_calm, r_waves in rows:
+        lines.append(f"| {n} elements | {tol:.0e} | {c_calm:.3f} | {c_waves:.3f} | {c_waves / c_calm:.1f} | {s_calm} | "
+                     f"{s_waves} | {1e6 * c_calm / r_calm:.1f} | {1e6 * c_waves / r_waves:.1f} |")
+    return rows, "\n".join(lines)
+
+
 def switch_table(fmu, case, ref):
     """What each model switch costs and how much it changes the answer."""
     cols = case.metrics
@@ -948,17 +985,67 @@ def main(argv=None) -> int:
         plot(case, ref, runs, png)
         lim = "; ".join(f"N = {n}: dt_max = {d:.3g} s = {c:.2f} x segment / axial wave speed"
                         for n, (d, c) in sorted(limits.items()))
-        text = (f"## {case.title}\n\n{case.description}\n\nMoorDyn stable limit (bisection, RK2): {lim}."
-                f"\n\n{table}\n{ratios}\n\nTargets against this run:\n\n"
+        has_md = any(r.code == "MoorDyn" for r in runs)
+        text = (f"## {case.title}\n\n{case.description}\n\n"
+                + (f"MoorDyn stable limit (bisection, RK2): {lim}.\n\n" if limits else "")
+                + f"{table}\n" + (f"{ratios}\n" if has_md else "")
+                + f"\nTargets against this run:\n\n"
                 f"{targets_text(case, runs)}\n\n![work-precision {case.name}]({png.name})\n")
-        if args.switches:
+        if case.calm_twin is not None:
+            text += ("\n### The same runs in calm water (the price of the wave kinematics)\n\n"
+                     + calm_table(fmu, case, runs)[1] + "\n")
+        if args.switches and case.calm_twin is None:
             text += ("\n### What each switch costs (ours; errors against the reference above)\n\n"
                      + switch_table(fmu, case, ref) + "\n")
         print(text, flush=True)
         sections.append((case, ref, runs, text, png))
     if doc is not None:
-        write_doc(doc, sections, args)
+        if args.cases and set(names) != set(cases) and doc.is_file():
+            splice_doc(doc, sections)  # a partial run updates its own sections only
+        else:
+            write_doc(doc, sections, args)
     return 0
+
+
+def splice_sections(text: str, sections) -> str:
+    """text with each case's section ("## <title>" up to the next "## " heading) replaced by the new one,
+    or, when it has none yet, inserted after the section of case.doc_after (else before the first
+    section that is not a case's, else at the end)."""
+    def bounds(lines, title):
+        head = f"## {title}"
+        for i, line in enumerate(lines):
+            if line.strip() == head:
+                j = i + 1
+                while j < len(lines) and not lines[j].startswith("## "):
+                    j += 1
+                return i, j
+        return None
+
+    cases = make_cases()
+    lines = text.split("\n")
+    for case, ref, runs, section, png in sections:
+        new = section.rstrip("\n").split("\n") + [""]
+        where = bounds(lines, case.title)
+        if where is not None:
+            lines[where[0]:where[1]] = new
+            continue
+        after = bounds(lines, cases[case.doc_after].title) if case.doc_after in cases else None
+        if after is None:
+            after = next(((i, i) for i, line in enumerate(lines) if line.startswith("## Where the unmet")), None)
+            at = after[0] if after is not None else len(lines)
+        else:
+            at = after[1]
+        lines[at:at] = new
+    return "\n".join(lines)
+
+
+def splice_doc(doc: Path, sections) -> None:
+    import shutil
+    for case, ref, runs, text, png in sections:
+        if png.resolve() != (doc.parent / png.name).resolve():
+            shutil.copy(png, doc.parent / png.name)
+    doc.write_text(splice_sections(doc.read_text(), sections))
+    print(f"updated {doc} (the sections of {', '.join(s[0].name for s in sections)})")
 
 
 def glance_table(sections) -> str:
