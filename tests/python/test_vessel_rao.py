@@ -6,7 +6,8 @@
 - Between the table's periods and headings, the RAO is the complex bilinear interpolation of the table.
 - The vessel's waveElevation at its reference point equals the cable FMU's waveElevation at the same point
   in regular and JONSWAP seas for several seeds (one sea, generated identically in C and C++).
-- Breaking waves and NaN parameters are refused naming the variable.
+- Breaking waves and NaN parameters are refused naming the variable; a malformed RAO table is an error
+  naming the file and the line; a one-row table holds for every period and heading.
 """
 
 import math
@@ -151,3 +152,46 @@ def test_bad_wave_parameters_are_errors_naming_the_variable(rao_fmu, make):
     with pytest.raises(FMICallException):
         w.initialize(0.0, 10.0)
     assert any("waves.mode = 3 is outside [0, 2]" in m for _, _, m in w.messages), w.log_text()
+
+
+def fmu_with_table(rao_fmu, tmp_path, text):
+    """A copy of the VesselRAO FMU whose resources/rao.csv is `text`."""
+    import zipfile
+    out = tmp_path / "VesselRAO.fmu"
+    with zipfile.ZipFile(rao_fmu) as src, zipfile.ZipFile(out, "w") as dst:
+        for item in src.infolist():
+            data = text.encode() if item.filename == "resources/rao.csv" else src.read(item.filename)
+            dst.writestr(item, data)
+    return out
+
+
+ROW = ",".join(["1.0", "0.0"] * 6)
+
+
+@pytest.mark.parametrize("text, named", [
+    ("period,heading\n8,180," + ROW + "\n8,180,1\n", "line 3: expected 14 comma-separated numbers"),
+    ("period,heading\n8,0," + ROW + "\n8,180," + ROW + "\n9,0," + ROW + "\n9,0," + ROW + "\n",
+     "period 9 s and heading 0 deg appear twice"),
+    ("period,heading\n8,0," + ROW + "\n9,180," + ROW + "\n", "2 rows are not one per period and heading"),
+    ("period,heading\n-8,0," + ROW + "\n", "line 2: a period must be positive"),
+    ("period,heading\n8,0," + ROW.replace("1.0", "nan", 1) + "\n", "line 2: a period must be positive, amplitudes"),
+    ("# nothing but a comment\n", "has no rows"),
+])
+def test_a_malformed_rao_table_is_an_error_naming_the_file_and_line(rao_fmu, make, tmp_path, text, named):
+    v = make(fmu_with_table(rao_fmu, tmp_path, text), parameters={"waves.mode": 1, "waves.height": 1.0})
+    with pytest.raises(FMICallException):
+        v.initialize(0.0, 10.0)
+    assert any("rao.csv" in m and named in m for _, _, m in v.messages), v.log_text()
+
+
+def test_a_one_row_table_holds_its_rao_for_every_period_and_heading(rao_fmu, make, tmp_path):
+    """One row: held beyond its period and for every heading; heave 0.5 m/m lagging 30 deg."""
+    row = ",".join(["0", "0", "0", "0", "0.5", "30", "0", "0", "0", "0", "0", "0"])
+    f = fmu_with_table(rao_fmu, tmp_path, f"period,heading\n10,90,{row}\n")
+    v = make(f, parameters={"waves.mode": 1, "waves.height": 2.0, "waves.period": 7.0, "towPoint.x": 0.0,
+                            "heading": 1.0})
+    v.initialize(0.0, 10.0)
+    w = 2 * math.pi / 7.0
+    for k in range(5):
+        v.do_step(0.3, t=0.3 * k)
+        assert v.get("heave") == pytest.approx(0.5 * math.cos(w * 0.3 * (k + 1) - math.radians(30.0)), abs=1e-13)
