@@ -337,8 +337,14 @@ class FmpyMaster:
             u.fmu.free()
 
 
+def _recorded(unit: str, variables) -> list:
+    """The variables of RECORD[unit] that the unit has (a vessel without an autopilot has no thrust)."""
+    return [v for v in RECORD.get(unit, []) if v in variables]
+
+
 def _record_vrs(units):
-    return {n: (RECORD[n], units[n].vrs(RECORD[n])) for n in units if n in RECORD}
+    recorded = {n: _recorded(n, units[n].vars) for n in units}
+    return {n: (names, units[n].vrs(names)) for n, names in recorded.items() if names}
 
 
 def run_fmpy(system: SystemStructure, parameters: dict, step: float, t_end: float, ordering: str,
@@ -403,7 +409,7 @@ def run_libcosim(system: SystemStructure, parameters: dict, step: float, t_end: 
         ex.add_observer(obs)
         index = {s.name.decode(): s.index for s in ex.slave_infos()}
         vrs = {u: {v.name.decode(): v.reference for v in ex.slave_variables(i)} for u, i in index.items()}
-        rec = {u: RECORD[u] for u in index if u in RECORD}
+        rec = {u: _recorded(u, vrs[u]) for u in index if _recorded(u, vrs[u])}
         for u, names in rec.items():
             for v in names:
                 obs.start_time_series(index[u], vrs[u][v], CosimVariableType.REAL)
