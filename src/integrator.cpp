@@ -481,15 +481,6 @@ bool Integrator::set_tolerances(const std::vector<double>& atol, double relTol, 
     return true;
 }
 
-bool Integrator::set_max_step(double hmax, std::string& error) {
-    const int flag = IDASetMaxStep(ida_, hmax);
-    if (flag != IDA_SUCCESS) {
-        error = "IDASetMaxStep failed: " + flag_name(flag);
-        return false;
-    }
-    return true;
-}
-
 int Integrator::error_weights(N_Vector y, N_Vector ewt, void* user) {
     auto* self = static_cast<Integrator*>(user);
     const double* yy = N_VGetArrayPointer(y);

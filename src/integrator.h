@@ -63,8 +63,6 @@ public:
     // IDA's error weights become 1 / atol_i, or 1 / min(atol_i, relTol |y_i| + absTol) where the
     // scalar tolerances are positive (they can only tighten the test).
     bool set_tolerances(const std::vector<double>& atol, double relTol, double absTol, std::string& error);
-    // The largest internal step (0: no limit).
-    bool set_max_step(double hmax, std::string& error);
 
     // Restarts the integrator at (t, y, y') (first order, fresh step size selection).
     bool restart(double t, const double* y, const double* yp, std::string& error);

@@ -172,20 +172,35 @@ CableSimulation::CableSimulation(const UCParams& params) : model_(params) {
     sn_.m = params.fatigueM;
     sn_.logK = params.fatigueLogK;
     sn_.area = params.fatigueArea;
+    off_ = params.winchMode == UC_WINCH_TENSION ? 1 : 0;
     if (SUNContext_Create(nullptr, &context_) != 0 || context_ == nullptr) throw std::bad_alloc();
-    const int n = model_.n_free();
-    const int bandwidth = model_.free_bandwidth();
     try {
-        integrator_ = std::make_unique<Integrator>(context_, n, bandwidth, this);
-        staticSolver_ = std::make_unique<BandSolver>(context_, n, bandwidth);
+        allocate();
     } catch (...) {
         integrator_.reset();
         staticSolver_.reset();
         SUNContext_Free(&context_);
         throw;
     }
-    y_.assign(2 * n, 0.0);
-    yp_.assign(2 * n, 0.0);
+}
+
+int CableSimulation::unknowns_bandwidth() const {
+    int bandwidth = model_.free_bandwidth();
+    if (off_ == 0) return bandwidth;
+    for (int a = 0; a < 12; ++a) {  // the winch's unknown (index 0) couples to the top element's
+        const int j = model_.free_index(model_.element_offset(0) + a);
+        if (j >= 0) bandwidth = std::max(bandwidth, j + 1);
+    }
+    return bandwidth;
+}
+
+// Everything sized by the number of unknowns (at construction and at a remesh).
+void CableSimulation::allocate() {
+    const int n = model_.n_free(), unknowns = this->unknowns();
+    integrator_ = std::make_unique<Integrator>(context_, unknowns, unknowns_bandwidth(), this);
+    staticSolver_ = std::make_unique<BandSolver>(context_, n, model_.free_bandwidth());
+    y_.assign(2 * unknowns, 0.0);
+    yp_.assign(2 * unknowns, 0.0);
     q_.assign(n, 0.0);
     v_.assign(n, 0.0);
     a_.assign(n, 0.0);
@@ -195,6 +210,27 @@ CableSimulation::CableSimulation(const UCParams& params) : model_(params) {
     Xdd_.assign(model_.n_global(), 0.0);
     forces_.element.resize(model_.n_elements());
     nodeTension_.resize(model_.n_elements() + 1);
+}
+
+// The constant-tension winch's rate for the tow tension T with the top element at topLength:
+// (T - T_set) times the line's axial compliance over winch.timeConstant, within winch.maxRate and
+// stopped at the length limits; slope = d rate / dT (0 where limited).
+double CableSimulation::tension_winch_rate(double tension, double topLength, double* slope) const {
+    const UCParams& p = model_.params();
+    const double gain = model_.axial_compliance() / p.winchTimeConstant;
+    double rate = gain * (tension - winchTension_);
+    double dRate = gain;
+    if (std::abs(rate) > p.winchMaxRate) {
+        rate = std::copysign(p.winchMaxRate, rate);
+        dRate = 0.0;
+    }
+    const double length = winchLength_ + (topLength - winchTopAtStep_);
+    if ((length >= p.winchMaxLength && rate > 0.0) || (length <= p.winchMinLength && rate < 0.0)) {
+        rate = 0.0;
+        dRate = 0.0;
+    }
+    if (slope) *slope = dRate;
+    return rate;
 }
 
 CableSimulation::~CableSimulation() {
@@ -381,10 +417,15 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         return false;
     }
     for (int j = 0; j < n; ++j) {
-        y_[2 * j] = q_[j];
-        y_[2 * j + 1] = v[j];
-        yp_[2 * j] = v[j];
-        yp_[2 * j + 1] = a_[j];
+        y_[2 * (j + off_)] = q_[j];
+        y_[2 * (j + off_) + 1] = v[j];
+        yp_[2 * (j + off_)] = v[j];
+        yp_[2 * (j + off_) + 1] = a_[j];
+    }
+    if (off_) {
+        y_[0] = model_.top_length();
+        winchTension_ = in.winchTension;
+        winchTopAtStep_ = y_[0];
     }
     time_ = t0;
     lastStepSize_ = 0.0;
@@ -393,6 +434,11 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     restartPending_ = true;
     rainflow_.reset();
     update_outputs();
+    if (off_) {  // consistent: the winch runs at the rate of the initial tension
+        y_[1] = yp_[0] = tension_winch_rate(outputs_.towTension, y_[0], nullptr);
+        yp_[1] = 0.0;
+        winchRate_ = y_[1];
+    }
     if (sn_.area > 0.0) rainflow_.add(outputs_.towTension, sn_);
     outputs_.towTensionMax = outputs_.towTensionMin = outputs_.towTension;
     tensionScale_ = tension_scale(model_, outputs_);
@@ -409,20 +455,6 @@ void CableSimulation::step_completed(double t, const double* y, const double* yp
     stepTensionMax_ = std::max(stepTensionMax_, tension);
     stepTensionMin_ = std::min(stepTensionMin_, tension);
     if (sn_.area > 0.0) rainflow_.add(tension, sn_);
-    const UCParams& p = model_.params();
-    if (p.winchMode == UC_WINCH_TENSION) {
-        // Constant tension: the rate from the tension of this integrator step holds until the next
-        // one (docs/winch.md): rate = (T - T_set) L / (EA tau), within the speed and length limits.
-        const double top = model_.top_length();
-        const double length = winchLength_ + (top - winchTopAtStep_);  // deployed now
-        const double gain = model_.axial_compliance() / p.winchTimeConstant;
-        const double requested = constant_tension_rate(tension, winchTension_, gain, p.winchMaxRate);
-        const WinchRate r = limit_winch_rate(requested, length, stepEnd_ - t,
-                                             WinchLimits{p.winchMinLength, p.winchMaxLength, p.winchMaxRate});
-        winchTop0_ = top;
-        winchT0_ = t;
-        winchRate_ = r.rate;
-    }
 }
 
 bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::string& error) {
@@ -502,7 +534,13 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         winchTop0_ = winchTop0AtStart;
         return false;
     }
-    if (model_.winch()) {  // the length at the end of the step; the rate carries on from there
+    if (off_) {  // the constant-tension winch: its unknowns at the end of the step
+        const double* end = integrator_->y();
+        winchRate_ = end[1];
+        winchTop0_ = end[0];
+        winchT0_ = tEnd;
+        winchLength_ = winchLengthAtStart + (end[0] - topAtStart);
+    } else if (model_.winch()) {  // the length at the end of the step; the rate carries on from there
         const double topAtEnd = winchTop0_ + winchRate_ * (tEnd - winchT0_);
         winchLength_ = winchLengthAtStart + (topAtEnd - topAtStart);
         winchTop0_ = topAtEnd;
@@ -536,9 +574,9 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
 // exceed sqrt(2n) times: the tolerances are divided by sqrt(2n), so that each unknown meets its own.
 bool CableSimulation::set_integrator_tolerances(std::string& error) {
     const UCParams& p = model_.params();
-    const double rms = 1.0 / std::sqrt(2.0 * model_.n_free());
+    const double rms = 1.0 / std::sqrt(2.0 * unknowns());
     std::vector<double>& atol = toleranceBuffer_;
-    atol.assign(2 * model_.n_free(), INFINITY);
+    atol.assign(2 * unknowns(), INFINITY);
     // Each unknown gets the tolerance of the elements it belongs to (the smaller one at a node
     // between two sections).
     for (int e = 0; e < model_.n_elements(); ++e) {
@@ -549,29 +587,36 @@ bool CableSimulation::set_integrator_tolerances(std::string& error) {
         const double wave = l / std::sqrt(EA / section.fluid.massPerLength);
         const double tau = std::max(section.axial.damping / EA, wave);
         for (int k = 0; k < 12; ++k) {
-            const int j = model_.free_index(model_.element_offset(e) + k);
-            if (j < 0) continue;
+            const int m = model_.free_index(model_.element_offset(e) + k);
+            if (m < 0) continue;
+            const int j = m + off_;
             const bool position = k % 6 < 3;
             const double a = position ? std::min(rms * p.positionTolerance, strain * l)
                                       : std::min(rms * p.positionTolerance / l, strain);
             atol[2 * j] = std::min(atol[2 * j], a);
             atol[2 * j + 1] = std::min(atol[2 * j + 1], a / tau);
+            // the winch's length and rate: those of the top element's positions
+            if (off_ && e == 0 && position) {
+                atol[0] = std::min(atol[0], a);
+                atol[1] = std::min(atol[1], a / tau);
+            }
         }
     }
-    if (!integrator_->set_tolerances(atol, p.relTol, p.absTol, error)) return false;
-    // The constant-tension winch sets its rate from the tension of each internal step: stable
-    // for steps up to twice its time constant (docs/winch.md), so they are held to it.
-    return p.winchMode != UC_WINCH_TENSION || integrator_->set_max_step(p.winchTimeConstant, error);
+    return integrator_->set_tolerances(atol, p.relTol, p.absTol, error);
 }
 
 void CableSimulation::expand_integrator_state(double t, const double* y, const double* yp) {
     loads_.current.time = t;
-    set_winch_time(t);
+    if (off_) {
+        model_.set_top_length(y[0]);
+    } else {
+        set_winch_time(t);
+    }
     const int n = model_.n_free();
     for (int j = 0; j < n; ++j) {
-        q_[j] = y[2 * j];
-        v_[j] = y[2 * j + 1];
-        a_[j] = yp[2 * j + 1];
+        q_[j] = y[2 * (j + off_)];
+        v_[j] = y[2 * (j + off_) + 1];
+        a_[j] = yp[2 * (j + off_) + 1];
     }
     model_.expand(q_.data(), v_.data(), a_.data(), loads_, t, X_.data(), Xd_.data(), Xdd_.data());
 }
@@ -582,16 +627,63 @@ int CableSimulation::residual(double t, const double* y, const double* yp, doubl
     model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), nullptr);
     bool finite = true;
     for (int j = 0; j < n; ++j) {
-        r[2 * j] = yp[2 * j] - y[2 * j + 1];
-        r[2 * j + 1] = R_[j];
+        const int i = j + off_;
+        r[2 * i] = yp[2 * i] - y[2 * i + 1];
+        r[2 * i + 1] = R_[j];
         finite = finite && std::isfinite(R_[j]);
+    }
+    if (off_) {  // the winch: its length changes at its rate, the rate follows the tension
+        double Re[12];
+        model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, Re);
+        const double tension = std::sqrt(Re[0] * Re[0] + Re[1] * Re[1] + Re[2] * Re[2]);
+        r[0] = yp[0] - y[1];
+        // the drum follows the commanded rate with the lag winch.timeConstant (a drum has inertia)
+        r[1] = model_.params().winchTimeConstant * yp[1] + y[1] - tension_winch_rate(tension, y[0], nullptr);
+        finite = finite && std::isfinite(r[1]);
     }
     return finite ? 0 : 1;  // non-finite: recoverable, IDA retries with a smaller step
 }
 
 int CableSimulation::jacobian(double t, const double* y, const double* yp, const EntrySink& sink) {
     expand_integrator_state(t, y, yp);
-    model_.jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_, sink);
+    if (off_ == 0) {
+        model_.jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_, sink);
+        return 0;
+    }
+    auto shifted = [&](int i, int k, double dq, double dv, double da) { sink(i + 1, k + 1, dq, dv, da); };
+    model_.jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_, shifted);
+    // The winch's rows and columns: the top element's residual through its length, the winch's
+    // rate (tau a + v = commanded rate) through the tow tension (the reaction at the tow point, rows 0..2 of the top element).
+    double Re[12], Rp[12];
+    model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, Re);
+    Mat12 K, C, M;
+    model_.element_jacobian(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, K, C, M);
+    const double top = y[0], delta = 1e-7 * std::max(top, 1.0);
+    model_.set_top_length(top + delta);
+    model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, Rp);
+    model_.set_top_length(top);
+    const Vec3 force(Re[0], Re[1], Re[2]);
+    const double tension = force.norm();
+    const Vec3 u = tension > 0.0 ? Vec3(force / tension) : Vec3::Zero();
+    double slope = 0.0;
+    tension_winch_rate(tension, top, &slope);
+    const int g0 = model_.element_offset(0);
+    double dTdl = 0.0;
+    for (int a = 0; a < 3; ++a) dTdl += u[a] * (Rp[a] - Re[a]) / delta;
+    for (int b = 0; b < 12; ++b) {
+        const int j = model_.free_index(g0 + b);
+        if (j < 0) continue;
+        const double cb = model_.coefficient(g0 + b);
+        double dK = 0.0, dC = 0.0, dM = 0.0;
+        for (int a = 0; a < 3; ++a) {
+            dK += u[a] * K(a, b);
+            dC += u[a] * C(a, b);
+            dM += u[a] * M(a, b);
+        }
+        sink(0, j + 1, -slope * cb * dK, -slope * cb * dC, -slope * cb * dM);
+        sink(j + 1, 0, cb * (Rp[b] - Re[b]) / delta, 0.0, 0.0);
+    }
+    sink(0, 0, -slope * dTdl, 1.0, model_.params().winchTimeConstant);
     return 0;
 }
 
@@ -606,7 +698,8 @@ std::string CableSimulation::take_event() {
 }
 
 void CableSimulation::set_winch_time(double t) {
-    if (model_.winch()) model_.set_top_length(winchTop0_ + winchRate_ * (t - winchT0_));
+    if (!model_.winch()) return;
+    model_.set_top_length(off_ ? y_[0] : winchTop0_ + winchRate_ * (t - winchT0_));
 }
 
 bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& error) {
@@ -692,10 +785,15 @@ bool CableSimulation::remesh(std::string& error) {
         return false;
     }
     for (int j = 0; j < n; ++j) {
-        y_[2 * j] = q_[j];
-        y_[2 * j + 1] = v_[j];
-        yp_[2 * j] = v_[j];
-        yp_[2 * j + 1] = a_[j];
+        y_[2 * (j + off_)] = q_[j];
+        y_[2 * (j + off_) + 1] = v_[j];
+        yp_[2 * (j + off_)] = v_[j];
+        yp_[2 * (j + off_) + 1] = a_[j];
+    }
+    if (off_) {
+        y_[0] = next.topLength;
+        y_[1] = yp_[0] = winchRate_;
+        yp_[1] = 0.0;
     }
     ++stateStamp_;
     return set_integrator_tolerances(error);
@@ -709,20 +807,7 @@ void CableSimulation::rebuild(const WinchMesh& mesh) {
     integrator_.reset();
     staticSolver_.reset();
     model_ = CableModel(params, &mesh);
-    const int n = model_.n_free(), bandwidth = model_.free_bandwidth();
-    integrator_ = std::make_unique<Integrator>(context_, n, bandwidth, this);
-    staticSolver_ = std::make_unique<BandSolver>(context_, n, bandwidth);
-    y_.assign(2 * n, 0.0);
-    yp_.assign(2 * n, 0.0);
-    q_.assign(n, 0.0);
-    v_.assign(n, 0.0);
-    a_.assign(n, 0.0);
-    R_.assign(n, 0.0);
-    X_.assign(model_.n_global(), 0.0);
-    Xd_.assign(model_.n_global(), 0.0);
-    Xdd_.assign(model_.n_global(), 0.0);
-    forces_.element.resize(model_.n_elements());
-    nodeTension_.resize(model_.n_elements() + 1);
+    allocate();
     derivativeLU_.reset();
     derivativeK_.reset();
     derivativeC_.reset();
@@ -739,9 +824,9 @@ void CableSimulation::free_state(std::vector<double>& q, std::vector<double>& v,
     v.resize(n);
     a.resize(n);
     for (int j = 0; j < n; ++j) {
-        q[j] = y_[2 * j];
-        v[j] = y_[2 * j + 1];
-        a[j] = yp_[2 * j + 1];
+        q[j] = y_[2 * (j + off_)];
+        v[j] = y_[2 * (j + off_) + 1];
+        a[j] = yp_[2 * (j + off_) + 1];
     }
 }
 
@@ -893,6 +978,11 @@ namespace uc {
 bool CableSimulation::interface_derivatives(double d[6][12], std::string& error) {
     for (int i = 0; i < 6; ++i)
         for (int j = 0; j < 12; ++j) d[i][j] = 0.0;
+    if (off_) {
+        error = "the interface derivatives are not available with the constant-tension winch (winchMode 2): its "
+                "length is an unknown the linearization does not carry";
+        return false;
+    }
     const double h = lastStepSize_;
     if (!(h > 0.0)) {
         error = "the interface derivatives are over the next communication step, taken as long as the last one: "

@@ -89,11 +89,19 @@ private:
     // splitting or merging the top element at a communication point; a new mesh, with everything
     // sized by the number of unknowns made again (at a remesh or a restore only).
     void set_winch_time(double t);
+    // The constant-tension winch (winchMode 2): the top element's length is an unknown of the
+    // integrator (index 0, before the line's); its rate follows, with the lag winch.timeConstant, the
+    // rate the tow tension commands, implicitly with the line.
+    int unknowns() const { return model_.n_free() + off_; }
+    int unknowns_bandwidth() const;
+    void allocate();
+    double tension_winch_rate(double tension, double topLength, double* slope) const;
     bool winch_rate(const UCInputs& in, double h, std::string& error);
     bool remesh(std::string& error);
     void rebuild(const WinchMesh& mesh);
 
     CableModel model_;
+    int off_ = 0;  // 1: the constant-tension winch's unknown comes first in the integrator's vectors
     SUNContext context_ = nullptr;
     std::unique_ptr<Integrator> integrator_;
     std::unique_ptr<BandSolver> staticSolver_;

@@ -78,7 +78,7 @@ def _tow(name: str, fmu, step: float, rate: float, progress=None) -> Result:
 
 def _ct_lowering(fmu, step: float, progress=None, duration: float = 240.0) -> Result:
     hanging = {"length": 50.0, "nElements": 4, "bottomEnd": 2, "body.mass": 2000.0, "body.volume": 0.25,
-               "body.CdA": 2.0, "body.addedMass": 500.0, "winchMode": 2, "winch.timeConstant": 0.005,
+               "body.CdA": 2.0, "body.addedMass": 500.0, "winchMode": 2, "winch.timeConstant": 0.001,
                "winch.minLength": 20.0, "winch.maxLength": 1000.0, "winch.maxRate": 2.0}
     amplitude, period, offset = 1.5, 8.0, 1500.0
     w = 2 * math.pi / period
