@@ -581,7 +581,9 @@ bool CableSimulation::set_integrator_tolerances(std::string& error) {
     // between two sections).
     for (int e = 0; e < model_.n_elements(); ++e) {
         const SectionProps& section = model_.element_section(e);
-        const double l = model_.element_length(e);
+        // the winch's top element changes length: its tolerances are those of a nominal element, so
+        // that they depend on the mesh only (a restored state gets the ones it was integrated with)
+        const double l = e == 0 && model_.winch() ? model_.winch_nominal() : model_.element_length(e);
         const double EA = section.axial.EA;
         const double strain = rms * p.tensionTolerance * tensionScale_ / EA;
         const double wave = l / std::sqrt(EA / section.fluid.massPerLength);
