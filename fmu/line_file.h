@@ -18,8 +18,4 @@
  * a refused deck (naming the file and its line) is fmi2Error, logged naming `function`. */
 fmi2Status uc_line_file_load(UCInstance* inst, UCParams* p, const char* function);
 
-/* The local path of a file: URI ("file:///a/b", "file://localhost/a/b", "file:/a/b"; %XX decoded) into
- * path; 0 on success, non-zero when uri is not such a URI or path is too small. */
-int uc_file_uri_to_path(const char* uri, char* path, size_t size);
-
 #endif /* UNDERWATERCABLE_FMU_LINE_FILE_H */

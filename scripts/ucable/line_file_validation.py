@@ -19,7 +19,6 @@ from __future__ import annotations
 import contextlib
 import io
 import math
-import os
 import shutil
 import tempfile
 import time
@@ -31,6 +30,7 @@ import numpy as np
 
 from .fmu import CableFMU
 from .paths import REPO_ROOT
+from .quiet import Quiet
 
 DECKS = REPO_ROOT / "tests" / "data" / "decks"
 
@@ -160,36 +160,13 @@ def fmu_statics(fmu, deck: Deck, dx: float = 0.0, **extra) -> dict:
                 "grounded": length - c.get("touchdownArcLength")}
 
 
-class _Quiet:
-    """Silence MoorDyn's C-level console output (it writes to the process's stdout and stderr)."""
-
-    def __enter__(self):
-        import sys
-        sys.stdout.flush()
-        sys.stderr.flush()
-        self.saved = (os.dup(1), os.dup(2))
-        self.null = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(self.null, 1)
-        os.dup2(self.null, 2)
-
-    def __exit__(self, *exc):
-        import sys
-        sys.stdout.flush()
-        sys.stderr.flush()
-        os.dup2(self.saved[0], 1)
-        os.dup2(self.saved[1], 2)
-        os.close(self.null)
-        for fd in self.saved:
-            os.close(fd)
-
-
 @contextlib.contextmanager
 def _moordyn_system(deck: Deck):
     """A MoorDyn system of a copy of the deck in a temporary directory (MoorDyn writes its output
     files next to its input), silenced, closed at the end."""
     import moordyn
 
-    with tempfile.TemporaryDirectory() as tmp, _Quiet():
+    with tempfile.TemporaryDirectory() as tmp, Quiet():
         path = Path(tmp) / deck.path.name
         shutil.copy(deck.path, path)
         system = moordyn.Create(str(path))

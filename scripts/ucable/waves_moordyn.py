@@ -27,6 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from .fmu import CableFMU
+from .quiet import Quiet
 from .sea import Sea, sea_state
 
 
@@ -175,29 +176,6 @@ ID    LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
 """
 
 
-class _Quiet:
-    """Silence MoorDyn's C-level console output."""
-
-    def __enter__(self):
-        import sys
-        sys.stdout.flush()
-        sys.stderr.flush()
-        self.saved = (os.dup(1), os.dup(2))
-        self.null = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(self.null, 1)
-        os.dup2(self.null, 2)
-
-    def __exit__(self, *exc):
-        import sys
-        sys.stdout.flush()
-        sys.stderr.flush()
-        os.dup2(self.saved[0], 1)
-        os.dup2(self.saved[1], 2)
-        os.close(self.null)
-        for fd in self.saved:
-            os.close(fd)
-
-
 class MoorDynRiser:
     """A MoorDyn system of the riser in the sea, in a temporary directory (MoorDyn reads
     wave_frequencies.txt next to its input file and writes there)."""
@@ -217,7 +195,7 @@ class MoorDynRiser:
         self._cwd = os.getcwd()
         os.chdir(tmp)
         try:
-            with _Quiet():
+            with Quiet():
                 self.system = moordyn.Create(str(tmp / "riser.txt"))
                 moordyn.Init(self.system, self.x, [0.0] * 6)
         except BaseException:
@@ -229,7 +207,7 @@ class MoorDynRiser:
     def __exit__(self, *exc):
         import moordyn
         try:
-            with _Quiet():
+            with Quiet():
                 moordyn.Close(self.system)
         finally:
             os.chdir(self._cwd)

@@ -33,6 +33,7 @@ from .fmu import CableFMU
 from .manoeuvre import hopland_accelerate
 from .paths import REPO_ROOT, require_fmu
 from .progress import ProgressBar
+from .quiet import Quiet
 from .steady_tow import KNOT
 
 OUT_DIR = REPO_ROOT / "out" / "bench_work_precision"
@@ -447,27 +448,6 @@ def set_line_nodes(system, line, n_seg, shape):
             raise RuntimeError(f"MoorDyn node {i} not set from the serialized state: {got} != {new}")
 
 
-class _Quiet:
-    """Silence MoorDyn's C-level console output (it prints to the process's stdout and stderr)."""
-
-    def __enter__(self):
-        sys.stdout.flush()
-        sys.stderr.flush()
-        self.saved = (os.dup(1), os.dup(2))
-        self.null = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(self.null, 1)
-        os.dup2(self.null, 2)
-
-    def __exit__(self, *exc):
-        sys.stdout.flush()
-        sys.stderr.flush()
-        os.dup2(self.saved[0], 1)
-        os.dup2(self.saved[1], 2)
-        os.close(self.null)
-        for fd in self.saved:
-            os.close(fd)
-
-
 def run_moordyn(case, n_seg, dt, steady_shape, t_stop=None, label=""):
     """One MoorDyn run with time step dt (adjusted so that comm_step / dt is an integer).
     Returns a Run, or None when it blew up. In a case with frame_speed (the Hopland tow) MoorDyn
@@ -485,7 +465,7 @@ def run_moordyn(case, n_seg, dt, steady_shape, t_stop=None, label=""):
     times = sample_times(case)
     times = times[times <= t_stop + 1e-9]
     V0 = case.frame_speed
-    with tempfile.TemporaryDirectory() as tmp, _Quiet():
+    with tempfile.TemporaryDirectory() as tmp, Quiet():
         cwd = os.getcwd()
         os.chdir(tmp)  # MoorDyn reads current_profile.txt from the working directory
         try:

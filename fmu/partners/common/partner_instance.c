@@ -1,6 +1,8 @@
 /* partner_instance.c - see partner_instance.h. */
 #include "partner_instance.h"
 
+#include "file_uri.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,37 +12,6 @@ static char* copy_string(const char* s) {
     char* copy = malloc(n);
     if (copy != NULL) memcpy(copy, s, n);
     return copy;
-}
-
-static int hex_value(char c) {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
-}
-
-int pm_file_uri_to_path(const char* uri, char* path, size_t size) {
-    if (uri == NULL || path == NULL || size == 0 || strncmp(uri, "file:", 5) != 0) return 1;
-    const char* s = uri + 5;
-    if (strncmp(s, "//", 2) == 0) { /* an authority: empty or localhost */
-        s += 2;
-        if (strncmp(s, "localhost", 9) == 0) s += 9;
-    }
-    if (*s != '/') return 1;
-    size_t n = 0;
-    for (; *s != '\0'; ++s) {
-        char c = *s;
-        if (c == '%') {
-            const int hi = hex_value(s[1]), lo = hi < 0 ? -1 : hex_value(s[2]);
-            if (hi < 0 || lo < 0 || (hi == 0 && lo == 0)) return 1;
-            c = (char)(hi * 16 + lo);
-            s += 2;
-        }
-        if (n + 1 >= size) return 1;
-        path[n++] = c;
-    }
-    path[n] = '\0';
-    return 0;
 }
 
 PMInstance* pm_instance_new(const PMModel* model, const char* instanceName, const char* resourceLocation,
@@ -53,7 +24,7 @@ PMInstance* pm_instance_new(const PMModel* model, const char* instanceName, cons
     if (resourceLocation != NULL) { /* not a local file URI: no resources (a model needing them says so) */
         const size_t size = strlen(resourceLocation) + 1;
         inst->resources = malloc(size);
-        if (inst->resources != NULL && pm_file_uri_to_path(resourceLocation, inst->resources, size) != 0) {
+        if (inst->resources != NULL && uc_file_uri_to_path(resourceLocation, inst->resources, size) != 0) {
             free(inst->resources);
             inst->resources = NULL;
         }

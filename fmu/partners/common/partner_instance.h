@@ -62,10 +62,6 @@ fmi2Status pm_ensure_initialized(PMInstance* inst, const char* function);
 /* The model's derived data rebuilt from the parameters in the data (after a state was restored). */
 fmi2Status pm_rebuild_derived(PMInstance* inst, const char* function);
 
-/* The local path of a file: URI (file:///p, file:/p, file://localhost/p; %XX decoded) in path; 0 on
-   success, non-zero if it is not such a URI or does not fit in size bytes. */
-int pm_file_uri_to_path(const char* uri, char* path, size_t size);
-
 const char* pm_state_name(PMMachineState state);
 
 #endif /* UNDERWATERCABLE_PARTNER_INSTANCE_H */
