@@ -104,10 +104,10 @@ typedef struct UCParams {
     int nAttachments; /* nAttachments: Attachments in use (0..8): point masses, buoys, connectors at attachment[1..nAttachments].s */
     UCAttachment attachment[UC_MAX_ATTACHMENTS];
     int winchMode; /* winchMode: winch at the tow point: 0 fixed length; 1 pays out (`winch.rate` > 0) or hauls in at the input `winch.rate`; 2 pays out or hauls in to hold the tow tension at the input `winch.tension` ([docs/winch.md](docs/winch.md)) */
-    double winchMaxRate; /* winch.maxRate [m/s]: Largest winch speed, both directions (the rate saturates at it) */
-    double winchMinLength; /* winch.minLength [m]: Shortest deployed unstretched length: hauling in stops there (a logged event) */
-    double winchMaxLength; /* winch.maxLength [m]: Longest deployed unstretched length: paying out stops there (a logged event) */
-    double winchTimeConstant; /* winch.timeConstant [s]: Constant-tension winch (winchMode 2): time constant with which the rate corrects the tension error, rate = (T - winch.tension) L / (EA tau) */
+    double winchMaxRate; /* winch.maxRate [m/s]: largest winch speed, both directions (the rate saturates at it) */
+    double winchMinLength; /* winch.minLength [m]: shortest deployed unstretched length: hauling in stops there (a logged event); above the length of the sections after the first */
+    double winchMaxLength; /* winch.maxLength [m]: longest deployed unstretched length: paying out stops there (a logged event) */
+    double winchTimeConstant; /* winch.timeConstant [s]: constant-tension winch (`winchMode` 2): time constant τ of the tension control, commanded rate (T − `winch.tension`) Σ L/EA / τ, which the drum follows with the lag τ; a stiff line needs milliseconds ([docs/winch.md](docs/winch.md)) */
 } UCParams;
 
 typedef struct UCInputs {

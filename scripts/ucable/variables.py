@@ -503,7 +503,7 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
     Variable('winch.maxLength', 239, 'parameter', 'Real', 'm', 100000.0, 0.0, 100000.0,
              'Longest deployed unstretched length: paying out stops there (a logged event)'),
     Variable('winch.timeConstant', 240, 'parameter', 'Real', 's', 1.0, 0.0001, 1000.0,
-             'Constant-tension winch (winchMode 2): time constant with which the rate corrects the tension error, rate = (T - winch.tension) L / (EA tau)'),
+             'Constant-tension winch (winchMode 2): time constant tau of the tension control, commanded rate (T - winch.tension) L / (EA tau), which the drum follows with the lag tau'),
     Variable('tow.x', 1001, 'input', 'Real', 'm', 0.0, None, None,
              'x coordinate of the tow point'),
     Variable('tow.y', 1002, 'input', 'Real', 'm', 0.0, None, None,
