@@ -8,6 +8,8 @@
   in regular and JONSWAP seas for several seeds (one sea, generated identically in C and C++).
 - Breaking waves and NaN parameters are refused naming the variable; a malformed RAO table is an error
   naming the file and the line; a one-row table holds for every period and heading.
+- The shipped generic RAOs tend, in long waves, to a vessel that follows the surface (signs and phases
+  of every degree of freedom against the surface's elevation, slopes and particle displacement).
 """
 
 import math
@@ -212,3 +214,25 @@ def test_reset_and_rerun_is_bit_identical(rao_fmu, make):
     v.slave.reset()
     assert np.array_equal(run(), first)
     assert np.std(first) > 0.0
+
+
+@pytest.mark.parametrize("period", [80.0, 200.0])
+@pytest.mark.parametrize("heading", [180.0, 135.0, 90.0, 30.0])
+def test_the_shipped_raos_follow_the_surface_in_long_waves(period, heading):
+    """The generic barge's RAOs (scripts/ucable/rao_box.py) tend to a vessel that follows the surface as
+    the wave grows long: for eta = a e^{i k (x cos mu + y sin mu)}, heave a, roll d(eta)/dy = i k sin(mu) a
+    (positive lifts the port side), pitch -d(eta)/dx = -i k cos(mu) a (positive lowers the bow), surge and
+    sway the water's horizontal displacement i a (cos mu, sin mu), and yaw the rotation that best fits
+    that displacement over the waterplane, -k sin(mu) cos(mu) (L^2 - B^2) / (L^2 + B^2) a. The
+    oscillators' damping lags them by 2 zeta omega / omega_n (zeta <= 0.4), the rest is of order
+    (omega / omega_n)^2, k T and (k L)^2: with omega_n the lowest natural frequency (roll, 9.8 s),
+    0.8 r + 3 r^2, r = 9.8 s / period, bounds the difference (relative to k a for the rotations)."""
+    from ucable.rao_box import B, L, box_raos
+    w = 2 * math.pi / period
+    k = w * w / 9.81
+    mu = math.radians(heading)
+    yaw = -k * math.sin(mu) * math.cos(mu) * (L * L - B * B) / (L * L + B * B)
+    limit = np.array([1j * math.cos(mu), 1j * math.sin(mu), 1.0, 1j * k * math.sin(mu), -1j * k * math.cos(mu), yaw])
+    scale = np.array([1.0, 1.0, 1.0, k, k, k])
+    r = 9.8 / period
+    assert np.all(np.abs(box_raos(period, heading) - limit) <= (0.8 * r + 3 * r * r) * scale)
