@@ -56,7 +56,7 @@ void uc_instance_reset(UCInstance* inst) {
     memset(&inst->params, 0, sizeof inst->params); /* deterministic padding bytes in saved states */
     uc_params_default(&inst->params);
     memcpy(&inst->coreParams, &inst->params, sizeof inst->coreParams);
-    memset(&inst->inputs, 0, sizeof inst->inputs);
+    uc_inputs_default(&inst->inputs);
     memset(&inst->outputs, 0, sizeof inst->outputs);
     inst->msg[0] = '\0';
 }

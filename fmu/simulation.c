@@ -121,6 +121,7 @@ fmi2Status uc_sim_do_step(UCInstance* inst, double tc, double h) {
     memset(inst->inputs.endAcceleration, 0, sizeof inst->inputs.endAcceleration);
     inst->inputs.endAccelerationGiven = 0;
     memset(inst->inputs.currentRate, 0, sizeof inst->inputs.currentRate);
+    inst->inputs.currentScaleRate = 0.0;
     log_solver_statistics(inst, "fmi2DoStep");
     return fmi2OK;
 }

@@ -177,6 +177,10 @@ static fmi2Status set_one_derivative(UCInstance* inst, const UCVariable* v, int 
         inst->inputs.currentRate[(v->offset - offsetof(UCInputs, current)) / sizeof(double)] = value;
         return fmi2OK;
     }
+    if (order == 1 && v->offset == offsetof(UCInputs, currentScale)) {
+        inst->inputs.currentScaleRate = value;
+        return fmi2OK;
+    }
     if ((endVelocity >= 0 && order == 1) || (endPosition >= 0 && order == 2)) {
         inst->inputs.endAcceleration[endVelocity >= 0 ? endVelocity : endPosition] = value;
         inst->inputs.endAccelerationGiven = 1;

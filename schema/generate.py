@@ -297,6 +297,10 @@ def header_text(data, entries, scalars) -> str:
     xlist("UC_SCHEMA_PARAMETER_DEFAULTS",
           "X(member, value): the start value of every numeric parameter (Strings start empty: zero-filled)",
           [f"{s.field}, {c_number(s, s.start)}" for s in params if s.type != "String"])
+    inputs = [s for s in scalars if s.causality == "input"]
+    xlist("UC_SCHEMA_INPUT_DEFAULTS",
+          "X(member, value): the start value of every input that does not start at zero (the others are zero-filled)",
+          [f"{s.field}, {c_number(s, s.start)}" for s in inputs if s.start not in (None, 0, 0.0)])
     xlist("UC_SCHEMA_PARAMETER_RANGES",
           "X(member, name, lo, hi, loOpen, hiOpen, rangeText, why): the admissible interval of every "
           "numeric parameter (closed or open at each end)",

@@ -3,7 +3,8 @@
  * physics core (src/, C++17). No FMI knowledge on this side; no physics on the other.
  *
  * Life cycle:  uc_params_default -> (caller edits fields) -> uc_params_check
- *              -> uc_create -> uc_initialize -> uc_do_step ... -> uc_free.
+ *              -> uc_create -> uc_initialize -> uc_do_step ... -> uc_free;
+ *              inputs start from uc_inputs_default.
  * Every function that can fail returns 0 on success and non-zero on failure and
  * then writes a one-line, human-readable reason into msg (never NULL-terminated
  * past msgSize). No function throws, prints, aborts or keeps global state.
@@ -59,6 +60,8 @@ int uc_line_file_apply(const char* text, size_t length, UCParams* p, double towP
                        size_t notesSize, char* msg, size_t msgSize);
 
 /* Defaults: the Hopland 1993 tow cable, free lower end, hinged top, 20 elements. */
+/* The inputs' start values (zero, but currentScale 1): initialize every UCInputs with it. */
+void uc_inputs_default(UCInputs* in);
 void uc_params_default(UCParams* p);
 
 /* 0 if every parameter is admissible; otherwise 1 and msg reads like

@@ -17,32 +17,38 @@ double submerged_fraction_slope(double z, double diameter) {
 
 }  // namespace
 
-Vec3 CurrentField::at(double z, Vec3* slope) const {
+Vec3 CurrentField::at(double z, Vec3* slope, Vec3* acceleration) const {
     Vec3 u = uniform;
     if (!rate.isZero(0.0)) u += rate * (time - rateStart);  // a current changing over the step
     if (slope) slope->setZero();
+    if (acceleration) *acceleration = rate;  // a uniform current changing over the step accelerates the water
     if (profile == nullptr || profile->rows == 0) return u;
     const CurrentProfile& p = *profile;
+    // The profile times currentScale, which may change linearly over the step.
+    const double factor = profileScale * (scaleRate == 0.0 ? scale : scale + scaleRate * (time - rateStart));
     const double depth = -z;
     int i = 0;
     while (i + 1 < p.rows && p.depth[i + 1] < depth) ++i;
+    Vec3 shape;  // the profile's velocity at this depth
     if (p.rows == 1 || depth <= p.depth[0] || depth >= p.depth[p.rows - 1]) {
         const int k = depth <= p.depth[0] ? 0 : p.rows - 1;
-        return u + profileScale * Vec3(p.ux[k], p.uy[k], 0.0);
+        shape = Vec3(p.ux[k], p.uy[k], 0.0);
+    } else {
+        const double span = p.depth[i + 1] - p.depth[i];
+        const double w = (depth - p.depth[i]) / span;
+        const Vec3 lo(p.ux[i], p.uy[i], 0.0), hi(p.ux[i + 1], p.uy[i + 1], 0.0);
+        if (slope) *slope = -factor * (hi - lo) / span;  // d/dz = -d/d(depth)
+        shape = (1.0 - w) * lo + w * hi;
     }
-    const double span = p.depth[i + 1] - p.depth[i];
-    const double w = (depth - p.depth[i]) / span;
-    const Vec3 lo(p.ux[i], p.uy[i], 0.0), hi(p.ux[i + 1], p.uy[i + 1], 0.0);
-    if (slope) *slope = -profileScale * (hi - lo) / span;  // d/dz = -d/d(depth)
-    return u + profileScale * ((1.0 - w) * lo + w * hi);
+    if (acceleration && scaleRate != 0.0) *acceleration += profileScale * scaleRate * shape;
+    return u + factor * shape;
 }
 
 void CurrentField::flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA) const {
     Vec3 slope;
-    U = at(r.z(), &slope);
+    U = at(r.z(), &slope, &A);
     dU.setZero();
     dU.col(2) = slope;
-    A = rate;  // a uniform current changing over the step accelerates the water
     dA.setZero();
     if (!waves()) return;
     Vec3 u, a;
@@ -54,8 +60,7 @@ void CurrentField::flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA) con
 }
 
 void CurrentField::flow(const Vec3& r, Vec3& U, Vec3& A) const {
-    U = at(r.z(), nullptr);
-    A = rate;  // a uniform current changing over the step accelerates the water
+    U = at(r.z(), nullptr, &A);
     if (!waves()) return;
     Vec3 u, a;
     sea->kinematics(r, time, u, a, nullptr, nullptr);

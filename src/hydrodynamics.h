@@ -41,10 +41,13 @@ struct CurrentField {
     double profileScale = 1.0;  // load continuation of the static solver
     Vec3 rate = Vec3::Zero();  // d(uniform)/dt over the step from rateStart (input derivatives of current.*)
     double rateStart = 0.0;
+    double scale = 1.0;      // factor on the profile at rateStart (input currentScale)
+    double scaleRate = 0.0;  // its rate over the step (input derivative of currentScale)
     const SeaState* sea = nullptr;  // waves (calm when null or without components)
     double time = 0.0;              // of the wave kinematics
-    // Velocity of the current at height z; slope = dU/dz when non-null.
-    Vec3 at(double z, Vec3* slope) const;
+    // Velocity of the current at height z; slope = dU/dz and acceleration = dU/dt (the changing
+    // uniform current's and profile's) when non-null.
+    Vec3 at(double z, Vec3* slope, Vec3* acceleration = nullptr) const;
     bool waves() const { return sea != nullptr && !sea->calm(); }
     // The water accelerates: waves, or a uniform current changing over the step.
     bool accelerates() const { return waves() || !rate.isZero(0.0); }

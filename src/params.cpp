@@ -160,6 +160,14 @@ extern "C" void uc_params_default(UCParams* p) {
 #undef UC_SET_DEFAULT
 }
 
+extern "C" void uc_inputs_default(UCInputs* in) {
+    if (in == nullptr) return;
+    std::memset(in, 0, sizeof *in);
+#define UC_SET_DEFAULT(member, value) in->member = value;
+    UC_SCHEMA_INPUT_DEFAULTS(UC_SET_DEFAULT)
+#undef UC_SET_DEFAULT
+}
+
 extern "C" int uc_params_check(const UCParams* p, char* msg, size_t msgSize) {
     std::string m = p ? uc::check_params(*p) : std::string("parameters: NULL pointer");
     if (m.empty()) return 0;

@@ -241,6 +241,7 @@ CableSimulation::~CableSimulation() {
 
 void CableSimulation::set_environment(const UCInputs& in) {
     loads_.current.uniform = Vec3(in.current[0], in.current[1], 0.0);
+    loads_.current.scale = in.currentScale;
     loads_.current.profile = &model_.current_profile();
     loads_.current.sea = &model_.sea();
     loads_.endLoad = vec(in.endLoad);
@@ -354,6 +355,11 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     }
     set_environment(in);
     loads_.current.rate.setZero();  // a current that changes within a step comes with the steps
+    loads_.current.scaleRate = 0.0;
+    if (!std::isfinite(in.currentScale)) {
+        error = "currentScale must be a finite number";
+        return false;
+    }
     loads_.current.time = t0;
     if (model_.winch()) {  // the run starts at the line's own length, every element nominal
         const WinchMesh start{model_.params().nSections <= 1 ? model_.params().nElements
@@ -490,6 +496,11 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     set_environment(in);
     loads_.current.rate = Vec3(in.currentRate[0], in.currentRate[1], 0.0);
     loads_.current.rateStart = time_;
+    loads_.current.scaleRate = in.currentScaleRate;
+    if (!std::isfinite(in.currentScale) || !std::isfinite(in.currentScaleRate)) {
+        error = "currentScale and its input derivative must be finite numbers";
+        return false;
+    }
     if (!loads_.current.rate.allFinite()) {
         error = "the input derivatives of current.x/y must be finite numbers";
         return false;

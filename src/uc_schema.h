@@ -124,11 +124,13 @@ typedef struct UCInputs {
     UCEndLoadDamping endLoadDamping;
     double winchRate; /* winch.rate [m/s]: winch rate when `winchMode` = 1: positive pays out, negative hauls in (limited by `winch.maxRate` and the length limits) */
     double winchTension; /* winch.tension [N]: tow tension the winch holds when `winchMode` = 2 */
+    double currentScale; /* currentScale: factor on the current depth profile: the water moves with `current.x/y` + `currentScale` × profile(depth), so a current that strengthens or turns with the tide at every depth in proportion is this input (with its derivative through `fmi2SetRealInputDerivatives` it changes linearly over a step, and the water's acceleration acts on the line) */
     double towAcceleration[3]; /* (not an FMU variable) [m/s2] from fmi2SetRealInputDerivatives (der(tow.v*) or der(tow.*,2)); 0 if not given */
     int towAccelerationGiven; /* (not an FMU variable) 1 when towAcceleration came from the master for this step; 0: the core estimates it from the last two tow velocity inputs */
     double endAcceleration[3]; /* (not an FMU variable) [m/s2] der(end.v*) from fmi2SetRealInputDerivatives */
     int endAccelerationGiven; /* (not an FMU variable) as towAccelerationGiven, for the far end */
     double currentRate[2]; /* (not an FMU variable) [m/s2] der(current.x/y) from fmi2SetRealInputDerivatives: the uniform current changes linearly over the step; 0 if not given */
+    double currentScaleRate; /* (not an FMU variable) [1/s] der(currentScale) from fmi2SetRealInputDerivatives: the profile's scale changes linearly over the step; 0 if not given */
 } UCInputs;
 
 typedef struct UCOutputs {
@@ -449,6 +451,7 @@ typedef struct UCOutputs {
     X(1034, "endLoadDamping.zz", REAL, INPUT, endLoadDamping.z[2]) \
     X(1035, "winch.rate", REAL, INPUT, winchRate) \
     X(1036, "winch.tension", REAL, INPUT, winchTension) \
+    X(1037, "currentScale", REAL, INPUT, currentScale) \
     X(2001, "towForce.x", REAL, OUTPUT, towForce[0]) \
     X(2002, "towForce.y", REAL, OUTPUT, towForce[1]) \
     X(2003, "towForce.z", REAL, OUTPUT, towForce[2]) \
@@ -860,6 +863,10 @@ typedef struct UCOutputs {
     X(winchMinLength, 1.0) \
     X(winchMaxLength, 100000.0) \
     X(winchTimeConstant, 1.0) \
+
+/* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
+#define UC_SCHEMA_INPUT_DEFAULTS(X) \
+    X(currentScale, 1.0) \
 
 /* X(member, name, lo, hi, loOpen, hiOpen, rangeText, why): the admissible interval of every numeric parameter (closed or open at each end) */
 #define UC_SCHEMA_PARAMETER_RANGES(X) \

@@ -576,6 +576,8 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              'Winch rate when winchMode = 1: positive pays out, negative hauls in (limited to winch.maxRate and the length limits)'),
     Variable('winch.tension', 1036, 'input', 'Real', 'N', 0.0, None, None,
              'Tow tension the winch holds when winchMode = 2'),
+    Variable('currentScale', 1037, 'input', 'Real', None, 1.0, None, None,
+             "Factor on the current depth profile (currentProfile.*): the water moves with current.x/y + currentScale * profile(depth); with its input derivative it changes linearly over a step, and the profile's acceleration acts on the line"),
     Variable('towForce.x', 2001, 'output', 'Real', 'N', None, None, None,
              'x component of the force of the cable on the tow point'),
     Variable('towForce.y', 2002, 'output', 'Real', 'N', None, None, None,

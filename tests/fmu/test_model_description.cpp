@@ -88,7 +88,8 @@ protected:
     }
     // The start value the FMU uses, as the XML should spell it (parameters: uc_params_default).
     double table_start(const UCVariable& v) const {
-        UCInputs inputs = {};
+        UCInputs inputs;
+        uc_inputs_default(&inputs);  // what an instance starts with
         UCOutputs outputs = {};
         UCParams params = defaults;
         const void* p = uc_variable_address_const(&v, &params, &inputs, &outputs);

@@ -164,3 +164,52 @@ def test_a_current_ramp_in_one_step_is_the_ramp_in_many(make_cable):
     assert abs(T_big - T_small) < 0.1 * err_coarse  # the difference is the integrator's error
     T_held, held = ramp_in_steps(make_cable, 100, 1e-5, derivatives=False)
     assert abs(T_held - T_small) > 0.5
+
+
+def scale_in_steps(make_cable, n, tolerance, derivatives=True, rate=0.15, t_end=10.0):
+    """The depth profile's factor currentScale ramped from 1 at `rate` over t_end in n steps (the
+    uniform current 0): a current strengthening in proportion at every depth; the state at t_end."""
+    c = make_cable(parameters={**SHEAR, "tensionTolerance": tolerance})
+    c.initialize(0.0, inputs={})
+    h = t_end / n
+    for k in range(n):
+        t = k * h
+        c.set({"currentScale": 1.0 + rate * t})
+        if derivatives:
+            c.set_input_derivatives(["currentScale"], 1, [rate])
+        c.do_step(h, t)
+    return c.get("towTension"), c.get_reals(["towForce.x", "towForce.y", "towForce.z"])
+
+
+def test_the_profile_scales_with_currentScale(make_cable):
+    """currentScale multiplies the depth profile: the profile doubled is currentScale 2 bit for bit
+    (a factor 2 is exact in floating point), and the default 1 is the profile as given."""
+    doubled = {k: 2.0 * v if k.startswith(("currentProfile.x", "currentProfile.y")) else v for k, v in SHEAR.items()}
+    runs = []
+    for params, scale in ((doubled, 1.0), (SHEAR, 2.0)):
+        c = make_cable(parameters=params)
+        c.initialize(0.0, inputs={"currentScale": scale})
+        c.set({"currentScale": scale})
+        c.do_step(0.5, 0.0)
+        runs.append(c.get_reals(["towTension", "towForce.x", "towForce.y", "endPosition.x", "endPosition.y"]))
+    assert runs[0].tobytes() == runs[1].tobytes()
+    assert abs(runs[0][2]) > 1.0  # the profile's y current really acts
+    c = make_cable(parameters=SHEAR)
+    c.initialize(0.0, inputs={})
+    assert c.get("currentScale") == 1.0  # its start value: the profile as given
+
+
+def test_a_profile_scaled_over_one_step_is_the_ramp_in_many(make_cable):
+    """currentScale ramped by its input derivative over one 10 s step ends where the same ramp in a
+    hundred 0.1 s steps ends, to the integrator's local error (bounded by tensionTolerance x the
+    tension and shrinking with it); held constant over each step instead it is measurably off."""
+    for tolerance in (1e-3, 1e-5):
+        T_big, big = scale_in_steps(make_cable, 1, tolerance)
+        T_small, small = scale_in_steps(make_cable, 100, tolerance)
+        assert abs(T_big - T_small) < tolerance * T_small
+        assert np.abs(big - small).max() < tolerance * T_small
+        if tolerance == 1e-3:
+            err_coarse = abs(T_big - T_small)
+    assert abs(T_big - T_small) < 0.1 * err_coarse
+    T_held, _ = scale_in_steps(make_cable, 100, 1e-5, derivatives=False)
+    assert abs(T_held - T_small) > 20 * abs(T_big - T_small)
