@@ -491,7 +491,11 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     const double winchT0AtStart = winchT0_, winchTop0AtStart = winchTop0_;
     if (model_.winch()) {
         set_winch_time(time_);
-        if (!remesh(error) || !winch_rate(in, h, error)) return false;
+        if (!winch_rate(in, h, error)) return false;
+        // how much the top element changes over the step (the constant-tension winch: at worst twice
+        // its present haul-in rate)
+        const double change = off_ ? std::min(0.0, 2.0 * y_[1] * h) : winchRate_ * h;
+        if (!remesh(change, error)) return false;
     }
     set_environment(in);
     loads_.current.rate = Vec3(in.currentRate[0], in.currentRate[1], 0.0);
@@ -635,6 +639,7 @@ void CableSimulation::expand_integrator_state(double t, const double* y, const d
 }
 
 int CableSimulation::residual(double t, const double* y, const double* yp, double* r) {
+    if (off_ && !(y[0] > 1e-6 * model_.winch_nominal())) return 1;  // no line left in the top element: retry
     expand_integrator_state(t, y, yp);
     const int n = model_.n_free();
     model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), nullptr);
@@ -752,11 +757,26 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
 // Splits the top element when it has grown past 1.5 nominal lengths (the lower part becomes a
 // nominal element, exactly the same cubic), merges it with the element below when it has shrunk
 // under half of one (docs/winch.md). At a communication point; the integrator restarts.
-bool CableSimulation::remesh(std::string& error) {
+bool CableSimulation::remesh(double change, std::string& error) {
+    for (int pass = 0; pass < kMaxRemeshPasses; ++pass) {
+        const double top = model_.top_length(), nominal = model_.winch_nominal();
+        const int elements = model_.winch_mesh().elements;
+        // Split above 1.5 nominal lengths, merge under 0.5 (remesh_action), and merge too when the
+        // step would haul the top element in below a quarter of a nominal length; no split that
+        // would leave it so short. Neither undoes the other.
+        RemeshAction action = remesh_action(top, nominal, elements > 1);
+        const double end = top + change;
+        if (action == RemeshAction::Split && end - nominal < 0.25 * nominal) action = RemeshAction::None;
+        if (action == RemeshAction::None && elements > 1 && end < 0.25 * nominal) action = RemeshAction::Merge;
+        if (action == RemeshAction::None) return true;
+        if (!remesh_once(action, error)) return false;
+    }
+    return true;
+}
+
+bool CableSimulation::remesh_once(RemeshAction action, std::string& error) {
     const double top = model_.top_length(), nominal = model_.winch_nominal();
     const WinchMesh mesh = model_.winch_mesh();
-    const RemeshAction action = remesh_action(top, nominal, mesh.elements > 1);
-    if (action == RemeshAction::None) return true;
     expand_integrator_state(time_, y_.data(), yp_.data());
     const int G = model_.n_global();
     std::vector<double> X, Xd, Xdd;

@@ -15,6 +15,7 @@
 #include "integrator.h"
 #include "rainflow.h"
 #include "torsion.h"
+#include "winch.h"
 
 namespace uc {
 
@@ -97,7 +98,9 @@ private:
     void allocate();
     double tension_winch_rate(double tension, double topLength, double* slope) const;
     bool winch_rate(const UCInputs& in, double h, std::string& error);
-    bool remesh(std::string& error);
+    bool remesh(double change, std::string& error);  // change: of the top element over the step ahead
+    bool remesh_once(RemeshAction action, std::string& error);
+    static constexpr int kMaxRemeshPasses = 100000;
     void rebuild(const WinchMesh& mesh);
 
     CableModel model_;

@@ -228,3 +228,22 @@ def test_constant_tension_state_across_a_split_continues_bit_identically(make_ca
     cable.set_state(cable.deserialize_state(cable.serialize_state(state)))
     serialized, _ = fly_still(cable, 30.0, target, t0=2.0)
     assert np.array_equal(first, serialized)
+
+
+def test_a_fast_winch_on_a_fine_mesh_remeshes_many_elements_per_step(make_cable):
+    """1 m elements and a winch at 10 m/s with 2 s communication steps: 20 elements paid out per step,
+    then hauled in to the limit (a top element that the step would haul in below a quarter of an
+    element is merged first, so it never runs out), then paid out again."""
+    cable = make_cable(parameters={"length": 20.0, "nElements": 20, "bottomEnd": 2, "body.mass": 400.0,
+                                   "body.volume": 0.1, "body.CdA": 0.3, "winchMode": 1, "winch.minLength": 5.0,
+                                   "winch.maxLength": 200.0, "winch.maxRate": 20.0}, logging_on=True)
+    cable.initialize()
+    t = 0.0
+    for rate, h, n, length in ((10.0, 2.0, 5, 120.0), (-10.0, 2.0, 10, 5.0), (3.0, 0.5, 10, 20.0)):
+        for _ in range(n):
+            cable.set({"winch.rate": rate})
+            cable.do_step(h, t)
+            t += h
+        assert cable.get("unstretchedLength") == pytest.approx(length, abs=1e-9)
+        assert math.isfinite(cable.get("towTension")) and cable.get("towTension") > 0.0
+    assert any("reaches winch.minLength" in m for _, _, m in cable.messages), cable.log_text()
