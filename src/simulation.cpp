@@ -536,7 +536,6 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     const double tEnd = time_ + h;
     stepTensionMax_ = stepTensionMin_ = outputs_.towTension;  // the tension at the step's start
     const RainflowCounter rainflowAtStart = rainflow_;
-    stepEnd_ = tEnd;
     winchTension_ = in.winchTension;
     const double topAtStart = model_.winch() ? model_.top_length() : 0.0;
     winchTopAtStep_ = topAtStart;

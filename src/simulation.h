@@ -131,9 +131,9 @@ private:
 
     // --- per-step environment and workspace ---
     SNCurve sn_;  // from the fatigue.* parameters
-    double stepEnd_ = 0.0;         // end of the communication step being integrated
-    double winchTension_ = 0.0;    // the constant-tension winch's set tension over it
-    double winchTopAtStep_ = 0.0;  // the top element's length at its start
+    // set by every step from its inputs and state, before it is integrated
+    double winchTension_ = 0.0;    // the constant-tension winch's set tension over the step
+    double winchTopAtStep_ = 0.0;  // the top element's length at the step's start
     double stepTensionMax_ = 0.0, stepTensionMin_ = 0.0;  // over the internal steps of the current step
     Loads loads_;
     std::vector<double> q_, v_, a_, X_, Xd_, Xdd_, R_;
