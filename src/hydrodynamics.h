@@ -49,8 +49,10 @@ struct CurrentField {
     // uniform current's and profile's) when non-null.
     Vec3 at(double z, Vec3* slope, Vec3* acceleration = nullptr) const;
     bool waves() const { return sea != nullptr && !sea->calm(); }
-    // The water accelerates: waves, or a uniform current changing over the step.
-    bool accelerates() const { return waves() || !rate.isZero(0.0); }
+    // The water accelerates: waves, a uniform current or a scaled profile changing over the step.
+    bool accelerates() const {
+        return waves() || !rate.isZero(0.0) || (scaleRate != 0.0 && profile != nullptr && profile->rows > 0);
+    }
     // The water's velocity U (current and waves) and local acceleration A (waves, and the rate of a
     // changing current) at r, with their gradients dU/dr and dA/dr (dA is zero in calm water).
     void flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA) const;

@@ -27,6 +27,21 @@ UCParams regular(double H, double T, double depth, double direction = 0.0) {
     return p;
 }
 
+// The load's Jacobian with respect to r, r' and r_dot equals central differences (step 1e-6).
+template <class Load>
+void expect_jacobian_is_the_derivative(const Load& load, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& F,
+                                        const PointLoadJacobian& J) {
+    const double h = 1e-6;
+    for (int c = 0; c < 3; ++c) {
+        Vec3 e = Vec3::Zero();
+        e[c] = h;
+        const double scale = 1.0 + F.norm();
+        EXPECT_LT(((load(r + e, rp, rd, nullptr) - load(r - e, rp, rd, nullptr)) / (2 * h) - J.dr.col(c)).norm(), 1e-6 * scale) << c;
+        EXPECT_LT(((load(r, rp + e, rd, nullptr) - load(r, rp - e, rd, nullptr)) / (2 * h) - J.drp.col(c)).norm(), 1e-6 * scale) << c;
+        EXPECT_LT(((load(r, rp, rd + e, nullptr) - load(r, rp, rd - e, nullptr)) / (2 * h) - J.drd.col(c)).norm(), 1e-6 * scale) << c;
+    }
+}
+
 }  // namespace
 
 TEST(Waves, WaveNumberSolvesTheDispersionRelation) {
@@ -158,15 +173,7 @@ TEST(Waves, MorisonLoadJacobianInWavesMatchesFiniteDifferences) {
     };
     PointLoadJacobian J;
     const Vec3 F = load(r, rp, rd, &J);
-    const double h = 1e-6;
-    for (int c = 0; c < 3; ++c) {
-        Vec3 e = Vec3::Zero();
-        e[c] = h;
-        const double scale = 1.0 + F.norm();
-        EXPECT_LT(((load(r + e, rp, rd, nullptr) - load(r - e, rp, rd, nullptr)) / (2 * h) - J.dr.col(c)).norm(), 1e-6 * scale) << c;
-        EXPECT_LT(((load(r, rp + e, rd, nullptr) - load(r, rp - e, rd, nullptr)) / (2 * h) - J.drp.col(c)).norm(), 1e-6 * scale) << c;
-        EXPECT_LT(((load(r, rp, rd + e, nullptr) - load(r, rp, rd - e, nullptr)) / (2 * h) - J.drd.col(c)).norm(), 1e-6 * scale) << c;
-    }
+    expect_jacobian_is_the_derivative(load, r, rp, rd, F, J);
     // The fluid inertia: the water's acceleration A pulls with rho A (1 + Can) on its normal component
     // and rho A (1 + Cat) on its tangential one (Can = 1, Cat = 0.1 here; the load F enters the
     // residual with the sign of a reaction).
@@ -227,15 +234,7 @@ TEST(Waves, ChangingCurrentShiftsTheProfileAndAcceleratesTheWater) {
     };
     PointLoadJacobian J;
     const Vec3 F = load(r, rp, rd, &J);
-    const double h = 1e-6;
-    for (int c = 0; c < 3; ++c) {
-        Vec3 e = Vec3::Zero();
-        e[c] = h;
-        const double scale = 1.0 + F.norm();
-        EXPECT_LT(((load(r + e, rp, rd, nullptr) - load(r - e, rp, rd, nullptr)) / (2 * h) - J.dr.col(c)).norm(), 1e-6 * scale) << c;
-        EXPECT_LT(((load(r, rp + e, rd, nullptr) - load(r, rp - e, rd, nullptr)) / (2 * h) - J.drp.col(c)).norm(), 1e-6 * scale) << c;
-        EXPECT_LT(((load(r, rp, rd + e, nullptr) - load(r, rp, rd - e, nullptr)) / (2 * h) - J.drd.col(c)).norm(), 1e-6 * scale) << c;
-    }
+    expect_jacobian_is_the_derivative(load, r, rp, rd, F, J);
     const Vec3 t = rp.normalized();
     const Vec3 still = point_load(p, r, rp, rd, rdd, U, dU, false, A, dA, nullptr);
     const Vec3 expected = 1025.0 * p.area * (2.0 * (A - t.dot(A) * t) + 1.1 * t.dot(A) * t);

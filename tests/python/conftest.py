@@ -37,20 +37,26 @@ def venv_python() -> str:
 
 
 @pytest.fixture
-def make_cable(fmu_file):
-    """Factory for CableFMU instances that are all freed at the end of the test; on failure the
-    FMU's log is printed (pytest shows it with the failure)."""
+def make_unit():
+    """Factory of FMU instances (the cable or a partner FMU, by path), all freed at the end of the
+    test; the logs of those that logged are printed (pytest shows them when the test fails)."""
     from ucable.fmu import CableFMU
 
     made = []
 
-    def factory(**kwargs):
-        cable = CableFMU(fmu_file, **kwargs)
-        made.append(cable)
-        return cable
+    def factory(path, **kwargs):
+        unit = CableFMU(path, **kwargs)
+        made.append(unit)
+        return unit
 
     yield factory
-    for cable in made:
-        if cable.messages:
-            print(f"--- FMU log of {cable.slave.instanceName}:\n{cable.log_text()}")
-        cable.free()
+    for unit in made:
+        if unit.messages:
+            print(f"--- FMU log of {unit.slave.instanceName}:\n{unit.log_text()}")
+        unit.free()
+
+
+@pytest.fixture
+def make_cable(fmu_file, make_unit):
+    """Factory of cable FMU instances (make_unit on the cable's FMU)."""
+    return lambda **kwargs: make_unit(fmu_file, **kwargs)

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from ucable.cosim import HeadingReference, SpeedReference
-from ucable.fmu import CableFMU, FMICallException
+from ucable.fmu import FMICallException
 from ucable.manoeuvre import PiecewiseLinearSpeed
 from ucable.partners import Autopilot, Vessel, VesselParameters
 from ucable.steady_tow import KNOT
@@ -35,24 +35,6 @@ def body_fmu(fmu_file):
     return partner_fmu("TowedBody")
 
 
-@pytest.fixture
-def make():
-    """Factory of FMU instances (any of the project's FMUs), all freed at the end; their logs are
-    printed (pytest shows them when the test fails)."""
-    made = []
-
-    def factory(path, **kwargs):
-        unit = CableFMU(path, **kwargs)
-        made.append(unit)
-        return unit
-
-    yield factory
-    for u in made:
-        if u.messages:
-            print(f"--- log of {u.slave.instanceName}:\n{u.log_text()}")
-        u.free()
-
-
 @pytest.mark.parametrize("name", ["Vessel", "VesselRAO", "TowedBody"])
 def test_fmpy_validate_and_fmutool_check_find_no_problem(fmu_file, name):
     out = subprocess.run([sys.executable, "-m", "fmpy", "validate", str(partner_fmu(name))],
@@ -67,13 +49,13 @@ def test_fmpy_validate_and_fmutool_check_find_no_problem(fmu_file, name):
     assert not [line for line in text.splitlines() if "ERROR" in line or "WARNING" in line], text
 
 
-def test_vessel_fmu_equals_the_python_vessel_model_in_a_turn_and_a_ramp(vessel_fmu, make):
+def test_vessel_fmu_equals_the_python_vessel_model_in_a_turn_and_a_ramp(vessel_fmu, make_unit):
     """Speed ramp 1.1 -> 2.4 kn in 60 s and a 90 deg turn at 1 deg/s from 30 s, under a constant tow
     force with a lateral component (it yaws the vessel), 0.5 s steps for 200 s."""
     force = np.array([-5000.0, 1500.0, -3000.0])
     program = {"speed0": 1.1 * KNOT, "speed1": 2.4 * KNOT, "rampStart": 0.0, "rampDuration": 60.0,
                "turnStart": 30.0, "turnRate": math.radians(1.0), "turnAngle": math.radians(90.0)}
-    v = make(vessel_fmu, parameters=program)
+    v = make_unit(vessel_fmu, parameters=program)
     v.initialize(0.0, 200.0, inputs={f"towForce.{q}": f for q, f in zip("xyz", force)})
     p = VesselParameters()
     ap = Autopilot(p, SpeedReference(PiecewiseLinearSpeed([0.0, 60.0], [1.1 * KNOT, 2.4 * KNOT])),
@@ -104,12 +86,12 @@ def body_force(v, CdA=0.3, CLA=0.0, current=(0.0, 0.0)):
     return F
 
 
-def test_towed_body_force_and_its_linearization(body_fmu, make):
+def test_towed_body_force_and_its_linearization(body_fmu, make_unit):
     """Force element: force.* is drag + depressor lift at the input velocity (closed form), and
     forceDamping.* = -d force / d v (central differences of the FMU's own force, step 1e-5 m/s:
     truncation ~(1e-5 / 1 m/s)^2 relative, cancellation ~1e-16 * 300 N / 1e-5 m/s = 3e-9 N s/m)."""
     params = {"CdA": 0.3, "CLA": 0.8, "current.x": 0.2, "current.y": -0.1}
-    b = make(body_fmu, parameters=params)
+    b = make_unit(body_fmu, parameters=params)
     v0 = np.array([1.3, 0.4, -0.2])
     b.initialize(0.0, 10.0, inputs={f"end.v{q}": x for q, x in zip("xyz", v0)})
     names = [f"force.{q}" for q in "xyz"]
@@ -133,11 +115,11 @@ def test_towed_body_force_and_its_linearization(body_fmu, make):
     assert D[2, 0] != 0.0 and D[0, 2] != D[2, 0]  # the lift makes it non-symmetric
 
 
-def test_towed_body_sinks_at_its_terminal_velocity(body_fmu, make):
+def test_towed_body_sinks_at_its_terminal_velocity(body_fmu, make_unit):
     """Integrating its translation without a cable: (m - rho V) g = 1/2 rho CdA v^2. The time constant
     (m + ma) / (rho CdA v) = 0.37 s: after 30 s (80 time constants) the velocity is terminal to
     round-off; the fixed point of the Runge-Kutta map is the exact terminal velocity."""
-    b = make(body_fmu, parameters={"integrateTranslation": True, "position0.z": -10.0})
+    b = make_unit(body_fmu, parameters={"integrateTranslation": True, "position0.z": -10.0})
     b.initialize(0.0, 30.0)
     for k in range(60):
         b.do_step(0.5, t=0.5 * k)
@@ -146,25 +128,25 @@ def test_towed_body_sinks_at_its_terminal_velocity(body_fmu, make):
     assert b.get("acceleration.z") == pytest.approx(0.0, abs=1e-9)
 
 
-def test_bad_parameters_and_inputs_are_errors_naming_the_variable(body_fmu, vessel_fmu, make):
-    b = make(body_fmu, parameters={"mass": -1.0}, instance_name="b")
+def test_bad_parameters_and_inputs_are_errors_naming_the_variable(body_fmu, vessel_fmu, make_unit):
+    b = make_unit(body_fmu, parameters={"mass": -1.0}, instance_name="b")
     with pytest.raises(FMICallException):
         b.initialize(0.0, 10.0)
     assert any("mass = -1 is outside [0, 1e+08]" in m for _, _, m in b.messages), b.log_text()
-    v = make(vessel_fmu, instance_name="v")
+    v = make_unit(vessel_fmu, instance_name="v")
     v.initialize(0.0, 10.0)
     with pytest.raises(FMICallException):
         v.set({"towForce.x": float("nan")})
     assert any("towForce.x = nan" in m for _, _, m in v.messages), v.log_text()
-    w = make(vessel_fmu, instance_name="w")
+    w = make_unit(vessel_fmu, instance_name="w")
     w.initialize(0.0, 10.0)
     with pytest.raises(FMICallException):
         w.set({"mass": 1.0})  # a fixed parameter after initialization
     assert any("mass is a fixed parameter" in m for _, _, m in w.messages), w.log_text()
 
 
-def test_do_step_before_initialization_is_an_illegal_call_sequence(body_fmu, make):
-    b = make(body_fmu)
+def test_do_step_before_initialization_is_an_illegal_call_sequence(body_fmu, make_unit):
+    b = make_unit(body_fmu)
     with pytest.raises(FMICallException):
         b.slave.doStep(0.0, 0.5)
     assert any("illegal call sequence" in m for _, _, m in b.messages)
@@ -180,11 +162,11 @@ STATE_CASES = {
 
 
 @pytest.mark.parametrize("name", list(STATE_CASES))
-def test_states_restore_and_serialize_bit_identically(fmu_file, make, name):
+def test_states_restore_and_serialize_bit_identically(fmu_file, make_unit, name):
     params, inputs = STATE_CASES[name]
-    a = make(partner_fmu(name), parameters=params, instance_name="a")
+    a = make_unit(partner_fmu(name), parameters=params, instance_name="a")
     # the other instance starts with other parameters: the restored state brings (and rebuilds from) a's
-    c = make(partner_fmu(name), parameters={**params, "waves.seed": 8} if name == "VesselRAO" else params,
+    c = make_unit(partner_fmu(name), parameters={**params, "waves.seed": 8} if name == "VesselRAO" else params,
              instance_name="c")
     for u in (a, c):
         u.initialize(0.0, 100.0, inputs=inputs)
@@ -207,9 +189,9 @@ def test_states_restore_and_serialize_bit_identically(fmu_file, make, name):
     a.free_state(state)
 
 
-def test_reset_and_rerun_is_bit_identical(vessel_fmu, make):
+def test_reset_and_rerun_is_bit_identical(vessel_fmu, make_unit):
     program = {"turnStart": 2.0, "turnRate": 0.05, "turnAngle": 0.5}
-    v = make(vessel_fmu, parameters=program)
+    v = make_unit(vessel_fmu, parameters=program)
     outputs = [n for n, x in v.variables.items() if x.causality == "output"]
 
     def flight():

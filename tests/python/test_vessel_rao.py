@@ -17,7 +17,7 @@ import math
 import numpy as np
 import pytest
 
-from ucable.fmu import CableFMU, FMICallException
+from ucable.fmu import FMICallException
 from ucable.rao_box import DEFAULT_OUT as RAO_CSV
 from ucable.rao_box import read as read_rao
 from ucable.system import partner_fmu
@@ -31,22 +31,6 @@ def rao_fmu(fmu_file):
 @pytest.fixture(scope="module")
 def table():
     return read_rao(RAO_CSV)
-
-
-@pytest.fixture
-def make():
-    made = []
-
-    def factory(path, **kwargs):
-        unit = CableFMU(path, **kwargs)
-        made.append(unit)
-        return unit
-
-    yield factory
-    for u in made:
-        if u.messages:
-            print(f"--- log of {u.slave.instanceName}:\n{u.log_text()}")
-        u.free()
 
 
 def complex_rao(table, period, heading):
@@ -88,7 +72,7 @@ MOTIONS = ["surge", "sway", "heave", "roll", "pitch", "yaw"]
 
 
 @pytest.mark.parametrize("period, relative_heading", [(8.0, 180.0), (10.0, 135.0), (8.25, 100.0)])
-def test_regular_wave_motion_is_the_rao_times_the_amplitude(rao_fmu, make, table, period, relative_heading):
+def test_regular_wave_motion_is_the_rao_times_the_amplitude(rao_fmu, make_unit, table, period, relative_heading):
     """Wave H 2 m travelling along 0.4 rad, vessel at (120, -35) m heading 0.4 - relative heading, tow
     point 30 m aft, 3 m to port and 4 m up. Tolerance: round-off of sums of a few terms of size
     |R| a w^2 ~ 1 (1e-12 absolute)."""
@@ -98,7 +82,7 @@ def test_regular_wave_motion_is_the_rao_times_the_amplitude(rao_fmu, make, table
     params = {"waves.mode": 1, "waves.height": H, "waves.period": period, "waves.direction": direction,
               "x0": x0, "y0": y0, "heading": heading, "towPoint.x": lever[0], "towPoint.y": lever[1],
               "towPoint.z": lever[2]}
-    v = make(rao_fmu, parameters=params)
+    v = make_unit(rao_fmu, parameters=params)
     v.initialize(0.0, 60.0)
     R = complex_rao(table, period, relative_heading)
     if period == 8.0:  # a tabulated point: the table's own row
@@ -121,14 +105,14 @@ def test_regular_wave_motion_is_the_rao_times_the_amplitude(rao_fmu, make, table
 
 
 @pytest.mark.parametrize("mode, seed", [(1, 1), (2, 1), (2, 0), (2, 31337)])
-def test_the_vessel_and_the_cable_see_the_same_sea(rao_fmu, fmu_file, make, mode, seed):
+def test_the_vessel_and_the_cable_see_the_same_sea(rao_fmu, fmu_file, make_unit, mode, seed):
     """The cable's tow point held at the vessel's reference point (x0, y0): the two waveElevation
     outputs agree to round-off at every communication point (the sea ramped in over 10 s)."""
     waves = {"waves.mode": mode, "waves.height": 3.0, "waves.period": 9.0, "waves.seed": seed,
              "waves.direction": 2.2, "waves.nComponents": 150, "waves.rampTime": 10.0, "waterDepth": 300.0}
     x0, y0 = -60.0, 25.0
-    v = make(rao_fmu, parameters={**waves, "x0": x0, "y0": y0})
-    c = make(fmu_file, parameters={**waves, "length": 50.0, "nElements": 2})
+    v = make_unit(rao_fmu, parameters={**waves, "x0": x0, "y0": y0})
+    c = make_unit(fmu_file, parameters={**waves, "length": 50.0, "nElements": 2})
     v.initialize(0.0, 40.0)
     c.initialize(0.0, 40.0, inputs={"tow.x": x0, "tow.y": y0, "tow.z": 0.0})
     etas = []
@@ -141,16 +125,16 @@ def test_the_vessel_and_the_cable_see_the_same_sea(rao_fmu, fmu_file, make, mode
     assert np.std(etas[:, 0]) > 0.3  # a sea, not calm water
 
 
-def test_bad_wave_parameters_are_errors_naming_the_variable(rao_fmu, make):
-    v = make(rao_fmu, parameters={"waves.mode": 1, "waves.height": 12.0, "waves.period": 5.0}, instance_name="steep")
+def test_bad_wave_parameters_are_errors_naming_the_variable(rao_fmu, make_unit):
+    v = make_unit(rao_fmu, parameters={"waves.mode": 1, "waves.height": 12.0, "waves.period": 5.0}, instance_name="steep")
     with pytest.raises(FMICallException):
         v.initialize(0.0, 10.0)
     assert any("waves.height = 12 is too steep" in m for _, _, m in v.messages), v.log_text()
-    u = make(rao_fmu, instance_name="nan")
+    u = make_unit(rao_fmu, instance_name="nan")
     with pytest.raises(FMICallException):
         u.set({"waves.period": float("nan")})
     assert any("waves.period = nan" in m for _, _, m in u.messages), u.log_text()
-    w = make(rao_fmu, parameters={"waves.mode": 3}, instance_name="mode")
+    w = make_unit(rao_fmu, parameters={"waves.mode": 3}, instance_name="mode")
     with pytest.raises(FMICallException):
         w.initialize(0.0, 10.0)
     assert any("waves.mode = 3 is outside [0, 2]" in m for _, _, m in w.messages), w.log_text()
@@ -179,18 +163,18 @@ ROW = ",".join(["1.0", "0.0"] * 6)
     ("period,heading\n8,0," + ROW.replace("1.0", "nan", 1) + "\n", "line 2: a period must be positive, amplitudes"),
     ("# nothing but a comment\n", "has no rows"),
 ])
-def test_a_malformed_rao_table_is_an_error_naming_the_file_and_line(rao_fmu, make, tmp_path, text, named):
-    v = make(fmu_with_table(rao_fmu, tmp_path, text), parameters={"waves.mode": 1, "waves.height": 1.0})
+def test_a_malformed_rao_table_is_an_error_naming_the_file_and_line(rao_fmu, make_unit, tmp_path, text, named):
+    v = make_unit(fmu_with_table(rao_fmu, tmp_path, text), parameters={"waves.mode": 1, "waves.height": 1.0})
     with pytest.raises(FMICallException):
         v.initialize(0.0, 10.0)
     assert any("rao.csv" in m and named in m for _, _, m in v.messages), v.log_text()
 
 
-def test_a_one_row_table_holds_its_rao_for_every_period_and_heading(rao_fmu, make, tmp_path):
+def test_a_one_row_table_holds_its_rao_for_every_period_and_heading(rao_fmu, make_unit, tmp_path):
     """One row: held beyond its period and for every heading; heave 0.5 m/m lagging 30 deg."""
     row = ",".join(["0", "0", "0", "0", "0.5", "30", "0", "0", "0", "0", "0", "0"])
     f = fmu_with_table(rao_fmu, tmp_path, f"period,heading\n10,90,{row}\n")
-    v = make(f, parameters={"waves.mode": 1, "waves.height": 2.0, "waves.period": 7.0, "towPoint.x": 0.0,
+    v = make_unit(f, parameters={"waves.mode": 1, "waves.height": 2.0, "waves.period": 7.0, "towPoint.x": 0.0,
                             "heading": 1.0})
     v.initialize(0.0, 10.0)
     w = 2 * math.pi / 7.0
@@ -199,9 +183,9 @@ def test_a_one_row_table_holds_its_rao_for_every_period_and_heading(rao_fmu, mak
         assert v.get("heave") == pytest.approx(0.5 * math.cos(w * 0.3 * (k + 1) - math.radians(30.0)), abs=1e-13)
 
 
-def test_reset_and_rerun_is_bit_identical(rao_fmu, make):
+def test_reset_and_rerun_is_bit_identical(rao_fmu, make_unit):
     params = {"waves.mode": 2, "waves.height": 3.0, "waves.seed": 11, "waves.rampTime": 5.0, "towPoint.y": 2.0}
-    v = make(rao_fmu, parameters=params)
+    v = make_unit(rao_fmu, parameters=params)
     outputs = [n for n, x in v.variables.items() if x.causality == "output"]
 
     def run():
