@@ -93,6 +93,7 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch) : params_
         winchNominal_ = l0 / n0;
         winchMesh_ = winch ? *winch : WinchMesh{n0, winchNominal_};
     }
+    topTangent_ = params.topEnd == UC_TOP_CLAMPED ? unit(params.topTangent) : Vec3(0, 0, -1);
     build_sections(params);
     build_mesh(params);
     build_dof_map();
@@ -104,7 +105,6 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch) : params_
         lineBase_ = line_;
         lineMassBase_ = line_.massPerLength * line_.length;
     }
-    topTangent_ = params.topEnd == UC_TOP_CLAMPED ? unit(params.topTangent) : Vec3(0, 0, -1);
     anchor_ = Vec3(params.anchor[0], params.anchor[1], params.anchor[2]);
     body_ = PointBody{params.bodyMass, params.bodyVolume, params.bodyAddedMass, params.bodyCdA};
     std::string waveError;  // the parameters' check has refused waves that cannot be built
@@ -134,13 +134,6 @@ SectionInput uniform_line(const UCParams& p) {
 SectionInput section_input(const UCSection& s) {
     return {s.length, s.diameter, s.massPerLength, s.EA, s.EI, s.axialDamping, s.GJ,
             s.Cdn, s.Cdt, s.Can, s.Cat, s.nElements, s.joint};
-}
-
-std::vector<int> section_elements(const UCParams& p) {
-    std::vector<int> n;
-    if (p.nSections <= 1) return {p.nElements};
-    for (int k = 0; k < p.nSections && k < UC_MAX_SECTIONS; ++k) n.push_back(p.section[k].nElements);
-    return n;
 }
 
 }  // namespace
@@ -181,6 +174,7 @@ void CableModel::build_sections(const UCParams& p) {
         // slow modes.
         s.bendingDamping = s.EI * in.axialDamping / in.EA;
         s.GJ = in.GJ;
+        s.nElements = in.nElements;
         s.joint = in.joint;
         s.seabed.enabled = p.enableSeabed != 0;
         s.seabed.depth = p.waterDepth;
@@ -193,7 +187,7 @@ void CableModel::build_sections(const UCParams& p) {
     }
     sections_.back().joint = 0;
     if (sections_.size() == 1) {
-        const SectionInput in = uniform_line(p);
+        const SectionInput& in = inputs[0];
         line_ = LineScales{sections_[0].length, in.massPerLength, in.EA, sections_[0].EI, in.diameter};
     } else {
         double mass = 0.0;
@@ -209,8 +203,6 @@ void CableModel::build_sections(const UCParams& p) {
 }
 
 void CableModel::build_mesh(const UCParams& p) {
-    std::vector<int> counts = section_elements(p);
-    if (winchMesh_.elements > 0) counts[0] = winchMesh_.elements;
     // Attachments on the line, by arc length; those inside a section split it so a node sits there.
     std::vector<std::pair<double, PointBody>> points;
     for (int k = 0; k < p.nAttachments && k < UC_MAX_ATTACHMENTS; ++k) {
@@ -228,7 +220,7 @@ void CableModel::build_mesh(const UCParams& p) {
                 point.first > cuts.back() + snap)
                 cuts.push_back(point.first);
         cuts.push_back(sec.s0 + sec.length);
-        const int n = counts[k];
+        const int n = sec.nElements;
         if (k == 0 && winchMesh_.elements > 0) {  // the winch's top element, then the nominal ones
             runs_.push_back(ElementRun{0.0, winchMesh_.topLength, 0, 1, 0});
             if (n > 1) runs_.push_back(ElementRun{winchMesh_.topLength, winchNominal_, 1, n - 1, 0});
@@ -322,7 +314,7 @@ void CableModel::build_dof_map() {
                 // r'_0 = a * topTangent: one free stretch shared by the three components.
                 if (k == 3) ++next;
                 free_[g] = next - 1;
-                coef_[g] = unit(params.topTangent)[k - 3];
+                coef_[g] = topTangent_[k - 3];
                 continue;
             }
             free_[g] = next++;
@@ -499,8 +491,7 @@ Mat3 cross_matrix(const Vec3& v) {
 void add_point_body_residual(const PointBody& body, const FluidProps& fluid, const CurrentField& current,
                              const double* r, const double* rd, const double* rdd, Vec3& R) {
     Vec3 U, A;
-    Mat3 dU, dA;
-    current.flow(Eigen::Map<const Vec3>(r), U, dU, A, dA);  // the body's drag in the current and waves
+    current.flow(Eigen::Map<const Vec3>(r), U, A);  // the body's drag in the current and waves (no gradients)
     const Vec3 u = U - Eigen::Map<const Vec3>(rd);
     const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
     const double wet = (body.mass - fluid.rho * body.volume) * fluid.gravity;
@@ -523,7 +514,7 @@ void point_body_jacobian(const PointBody& body, const FluidProps& fluid, const C
     } else {
         K.col(2) -= dDrag_du * dU.col(2);  // drag of the body in a sheared current
     }
-    C = 0.5 * fluid.rho * body.CdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
+    C = dDrag_du;
     M = (body.mass + body.addedMass) * Mat3::Identity();
 }
 

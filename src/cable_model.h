@@ -98,6 +98,7 @@ struct SectionProps {
     double EI = 0.0;       // 0 when bending is disabled
     double bendingDamping = 0.0;  // EI * axialDamping / EA [N.m2.s]
     double GJ = 0.0;
+    int nElements = 0;  // before attachments cut it (the winch's mesh for the first section)
     int joint = 0;  // to the next section: 0 rigid (one node), 1 pinned (two slots)
 };
 
