@@ -18,7 +18,7 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 6;
+constexpr std::uint32_t kStateVersion = 7;
 
 // A driven end in a saved state.
 struct EndHeader {
@@ -44,7 +44,7 @@ struct StateHeader {
     // the winch: the mesh (elements of the first section, top length at its build) and its state
     std::int32_t winchElements;
     std::int32_t winchLimit;
-    double winchMeshTop, winchLength, winchRate, winchT0, winchTop0;
+    double winchMeshTop, winchLength, winchRate, winchTop0;
 };
 
 IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
@@ -368,7 +368,6 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         if (model_.winch_mesh().elements != start.elements || model_.winch_mesh().topLength != start.topLength)
             rebuild(start);
         winchRate_ = 0.0;
-        winchT0_ = t0;
         winchTop0_ = start.topLength;
         winchLimit_ = 0;
         model_.set_top_length(winchTop0_);
@@ -488,7 +487,7 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         return false;
     }
     const double winchLengthAtStart = winchLength_, winchRateAtStart = winchRate_;
-    const double winchT0AtStart = winchT0_, winchTop0AtStart = winchTop0_;
+    const double winchTop0AtStart = winchTop0_;
     if (model_.winch()) {
         set_winch_time(time_);
         if (!winch_rate(in, h, error)) return false;
@@ -544,7 +543,6 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         restartPending_ = true;  // the state stays at the last communication point
         winchLength_ = winchLengthAtStart;
         winchRate_ = winchRateAtStart;
-        winchT0_ = winchT0AtStart;
         winchTop0_ = winchTop0AtStart;
         return false;
     }
@@ -552,13 +550,11 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         const double* end = integrator_->y();
         winchRate_ = end[1];
         winchTop0_ = end[0];
-        winchT0_ = tEnd;
         winchLength_ = winchLengthAtStart + (end[0] - topAtStart);
     } else if (model_.winch()) {  // the length at the end of the step; the rate carries on from there
-        const double topAtEnd = winchTop0_ + winchRate_ * (tEnd - winchT0_);
+        const double topAtEnd = winchTop0_ + winchRate_ * h;
         winchLength_ = winchLengthAtStart + (topAtEnd - topAtStart);
         winchTop0_ = topAtEnd;
-        winchT0_ = tEnd;
     }
     const double* y = integrator_->y();
     const double* yp = integrator_->yp();
@@ -716,7 +712,7 @@ std::string CableSimulation::take_event() {
 
 void CableSimulation::set_winch_time(double t) {
     if (!model_.winch()) return;
-    model_.set_top_length(off_ ? y_[0] : winchTop0_ + winchRate_ * (t - winchT0_));
+    model_.set_top_length(off_ ? y_[0] : winchTop0_ + winchRate_ * (t - time_));
 }
 
 bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& error) {
@@ -730,7 +726,6 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
         return false;
     }
     const WinchLimits limits{p.winchMinLength, p.winchMaxLength, p.winchMaxRate};
-    winchT0_ = time_;
     winchTop0_ = model_.top_length();
     if (p.winchMode == UC_WINCH_TENSION) return true;  // the rate follows the tension, step by step
     const double requested = in.winchRate;
@@ -805,7 +800,6 @@ bool CableSimulation::remesh_once(RemeshAction action, std::string& error) {
     }
     rebuild(next);
     winchTop0_ = next.topLength;
-    winchT0_ = time_;
     model_.set_top_length(winchTop0_);
     const int n = model_.n_free();
     model_.restrict_to_free(X.data(), q_.data());
@@ -910,7 +904,6 @@ void CableSimulation::save_state(void* buffer) {
     header.winchLimit = winchLimit_;
     header.winchLength = winchLength_;
     header.winchRate = winchRate_;
-    header.winchT0 = winchT0_;
     header.winchTop0 = winchTop0_;
     historyBuffer_.assign(integrator_->history_size(), 0.0);
     if (history) integrator_->save_history(historyBuffer_.data());
@@ -962,9 +955,7 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     winchLimit_ = header.winchLimit;
     winchLength_ = header.winchLength;
     winchRate_ = header.winchRate;
-    winchT0_ = header.winchT0;
     winchTop0_ = header.winchTop0;
-    set_winch_time(header.time);
     if (tensionScale_ > 0.0 && !set_integrator_tolerances(error)) {  // 0: saved before initialization
         restartPending_ = true;
         return false;
@@ -978,6 +969,7 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
         }
     }
     time_ = header.time;
+    set_winch_time(time_);
     from_header(header.tow, tow_);
     from_header(header.end, end_);
     Vec3* frames[4] = {&twistRef_.topTangent, &twistRef_.topNormal, &twistRef_.endTangent, &twistRef_.endNormal};

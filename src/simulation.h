@@ -123,9 +123,9 @@ private:
     double tensionScale_ = 0.0;  // of the error control, fixed at initialization
     RainflowCounter rainflow_;   // online fatigue count of the tow tension (sn_.area > 0)
     bool restartPending_ = true;
-    // the winch: the top element's length is winchTop0_ + winchRate_ (t - winchT0_)
+    // the winch: over a step from time_ the top element's length is winchTop0_ + winchRate_ (t - time_)
     double winchLength_ = 0.0;  // deployed unstretched length at time_
-    double winchRate_ = 0.0, winchT0_ = 0.0, winchTop0_ = 0.0;
+    double winchRate_ = 0.0, winchTop0_ = 0.0;
     int winchLimit_ = 0;        // -1 / +1: at the shortest / longest length (logged once per arrival)
     std::string event_;
 
