@@ -25,7 +25,7 @@ Vec3 CurrentField::at(double z, Vec3* slope, Vec3* acceleration) const {
     if (profile == nullptr || profile->rows == 0) return u;
     const CurrentProfile& p = *profile;
     // The profile times currentScale, which may change linearly over the step.
-    const double factor = profileScale * (scaleRate == 0.0 ? scale : scale + scaleRate * (time - rateStart));
+    const double factor = profileScale * (scale + scaleRate * (time - rateStart));
     const double depth = -z;
     int i = 0;
     while (i + 1 < p.rows && p.depth[i + 1] < depth) ++i;
