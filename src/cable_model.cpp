@@ -109,6 +109,7 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch) : params_
     body_ = PointBody{params.bodyMass, params.bodyVolume, params.bodyAddedMass, params.bodyCdA};
     std::string waveError;  // the parameters' check has refused waves that cannot be built
     sea_.build(params, waveError);
+    if (!sea_.calm()) waveCache_.resize(static_cast<size_t>(nElements_) * kLoadQuadraturePoints + 1 + attachments_.size());
     profile_.rows = params.currentProfileRows;
     for (int k = 0; k < kCurrentProfileRows; ++k) {
         profile_.depth[k] = params.currentProfileDepth[k];
@@ -442,6 +443,10 @@ void CableModel::restrict_to_free(const double* X, double* q) const {
     }
 }
 
+WaveExpansion* CableModel::point_wave_cache(size_t i) const {
+    return waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(nElements_) * kLoadQuadraturePoints + i];
+}
+
 void CableModel::element_residual(int e, const double* X, const double* Xd, const double* Xdd,
                                   const Loads& loads, double* R) const {
     const int g0 = elementOffset_[e];
@@ -453,7 +458,8 @@ void CableModel::element_residual(int e, const double* X, const double* Xd, cons
     if (sec.EI > 0.0) add_bending_force(tables, sec.EI, X + g0, R);
     if (sec.bendingDamping > 0.0) add_bending_force(tables, sec.bendingDamping, Xd + g0, R);
     if (loads.torque != 0.0) add_torque_force(tables, loads.torque, X + g0, R);
-    add_hydro_force(tables, sec.fluid, loads.current, X + g0, Xd + g0, Xdd + g0, R);
+    add_hydro_force(tables, sec.fluid, loads.current, X + g0, Xd + g0, Xdd + g0, R,
+                    waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
     if (sec.seabed.enabled) add_seabed_force(tables, sec.seabed, X + g0, Xd + g0, R);
 }
 
@@ -488,10 +494,10 @@ Mat3 cross_matrix(const Vec3& v) {
 
 }  // namespace
 
-void add_point_body_residual(const PointBody& body, const FluidProps& fluid, const CurrentField& current,
+void add_point_body_residual(const PointBody& body, const FluidProps& fluid, const CurrentField& current, WaveExpansion* waveCache,
                              const double* r, const double* rd, const double* rdd, Vec3& R) {
     Vec3 U, A;
-    current.flow(Eigen::Map<const Vec3>(r), U, A);  // the body's drag in the current and waves (no gradients)
+    current.flow(Eigen::Map<const Vec3>(r), U, A, waveCache);  // the body's drag in the current and waves (no gradients)
     const Vec3 u = U - Eigen::Map<const Vec3>(rd);
     const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
     const double wet = (body.mass - fluid.rho * body.volume) * fluid.gravity;
@@ -529,7 +535,7 @@ Vec6 CableModel::end_node_residual(const double* X, const double* Xd, const doub
     R.tail<3>() = -loads.endCouple.cross(rp) / rp.squaredNorm();
     if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return R;
     Vec3 body = R.head<3>();
-    add_point_body_residual(body_, fluid(), loads.current, X + gN, Xd + gN, Xdd + gN, body);
+    add_point_body_residual(body_, fluid(), loads.current, point_wave_cache(0), X + gN, Xd + gN, Xdd + gN, body);
     R.head<3>() = body;
     return R;
 }
@@ -577,7 +583,8 @@ void CableModel::residual(const double* X, const double* Xd, const double* Xdd, 
     if (forces) forces->endNodeTerms = end;
     for (const NodeAttachment& at : attachments_) {
         Vec3 Ra = Vec3::Zero();
-        add_point_body_residual(at.body, fluid(), loads.current, X + at.offset, Xd + at.offset, Xdd + at.offset, Ra);
+        add_point_body_residual(at.body, fluid(), loads.current, point_wave_cache(1 + (&at - attachments_.data())), X + at.offset,
+                                Xd + at.offset, Xdd + at.offset, Ra);
         for (int k = 0; k < 3; ++k) {
             const int j = free_[at.offset + k];
             if (j >= 0) Rfree[j] += Ra[k];

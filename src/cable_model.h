@@ -81,8 +81,8 @@ struct PointBody {
 
 // Residual terms of a point body at position r (velocity rd, acceleration rdd) in the water: inertia
 // (mass and added mass), submerged weight, drag on the velocity relative to the current and waves.
-// Added to R (3 values) in that order.
-void add_point_body_residual(const PointBody& body, const FluidProps& fluid, const CurrentField& current,
+// Added to R (3 values) in that order. waveCache: null, or the body's slot for the waves' expansion.
+void add_point_body_residual(const PointBody& body, const FluidProps& fluid, const CurrentField& current, WaveExpansion* waveCache,
                              const double* r, const double* rd, const double* rdd, Vec3& R);
 // Its derivatives with respect to r, rd and rdd.
 void point_body_jacobian(const PointBody& body, const FluidProps& fluid, const CurrentField& current,
@@ -245,6 +245,12 @@ private:
     Vec3 anchor_;
     CurrentProfile profile_;
     SeaState sea_;
+    // The waves' expansion at each load point (element-major), then at the towed body and at each
+    // attachment, reused while the point stays in its lattice cell: a cache of pure functions of
+    // position and time, so it changes no result.
+    mutable std::vector<WaveExpansion> waveCache_;
+    // Slot i of the point bodies (0 the towed body, 1 + k attachment k); null in calm water.
+    WaveExpansion* point_wave_cache(size_t i) const;
     std::vector<int> free_;
     std::vector<double> coef_;
     int nFree_ = 0;

@@ -59,11 +59,15 @@ void CurrentField::flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA) con
     A += a;  // the waves' acceleration on top of the changing current's
 }
 
-void CurrentField::flow(const Vec3& r, Vec3& U, Vec3& A) const {
+void CurrentField::flow(const Vec3& r, Vec3& U, Vec3& A, WaveExpansion* cache) const {
     U = at(r.z(), nullptr, &A);
     if (!waves()) return;
     Vec3 u, a;
-    sea->kinematics(r, time, u, a, nullptr, nullptr);
+    if (cache) {
+        sea->expanded_kinematics(r, time, *cache, u, a);
+    } else {
+        sea->kinematics(r, time, u, a, nullptr, nullptr);
+    }
     U += u;
     A += a;
 }
@@ -139,12 +143,12 @@ Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& 
 }
 
 void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentField& current, const double* X,
-                     const double* Xd, const double* Xdd, double* R) {
+                     const double* Xd, const double* Xdd, double* R, WaveExpansion* waveCache) {
     for (int g = 0; g < e.nLoad; ++g) {
         const QuadPoint& q = e.load[g];
         const Vec3 r = interpolate(q.shape.N, X);
         Vec3 U, A;
-        current.flow(r, U, A);  // the load without its Jacobian needs no gradients of the flow
+        current.flow(r, U, A, waveCache ? waveCache + g : nullptr);  // the load without its Jacobian needs no gradients of the flow
         const Mat3 unused = Mat3::Zero();
         const Vec3 F = point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd),
                                   interpolate(q.shape.N, Xdd), U, unused, current.accelerates(), A, unused, nullptr);

@@ -56,8 +56,9 @@ struct CurrentField {
     // The water's velocity U (current and waves) and local acceleration A (waves, and the rate of a
     // changing current) at r, with their gradients dU/dr and dA/dr (dA is zero in calm water).
     void flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA) const;
-    // The same without the gradients (the residual needs none: a third of the cost of the waves).
-    void flow(const Vec3& r, Vec3& U, Vec3& A) const;
+    // The same without the gradients (the residual needs none: a third of the cost of the waves);
+    // with a cache, the waves' part from its Taylor expansion (SeaState::expanded_kinematics).
+    void flow(const Vec3& r, Vec3& U, Vec3& A, WaveExpansion* cache = nullptr) const;
 };
 
 // Derivatives of the per-length load F with respect to r, r', r_dot, r_ddot.
@@ -77,9 +78,10 @@ double submerged_fraction(double z, double diameter);
 Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd, const Vec3& U,
                 const Mat3& dU, bool waves, const Vec3& A, const Mat3& dA, PointLoadJacobian* J);
 
-// Element integrals: R_a += int N_a F ds; K, C, M get dR/dX, dR/dXdot, dR/dXddot.
+// Element integrals: R_a += int N_a F ds; K, C, M get dR/dX, dR/dXdot, dR/dXddot. waveCache (null, or
+// one slot per load point) holds the waves' expansions of the element's load points.
 void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentField& current, const double* X,
-                     const double* Xd, const double* Xdd, double* R);
+                     const double* Xd, const double* Xdd, double* R, WaveExpansion* waveCache = nullptr);
 void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const CurrentField& current,
                         const double* X, const double* Xd, const double* Xdd, Mat12& K, Mat12& C,
                         Mat12& M);

@@ -1,21 +1,38 @@
 // waves.cpp - Airy components, JONSWAP discretization, kinematics.
 #include "waves.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace uc {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// The bottom's image term e^{-2kh} below this is lost in the round-off of e^{kz} near the surface.
+// The bottom's image term of a component at depth z, e^{-k(2h + z)}, is left out where it is below
+// this fraction of the component's own e^{kz} (lost in its round-off): near the surface of deep water,
+// not near the bottom, where the two are equal.
 constexpr double kNegligibleBottom = 1e-18;
 
 // A component with k z below this (e^{kz} < 4e-18, and its depth factors below twice that) moves the
 // water at z by less than 1e-17 of its surface motion: it is left out there. The components ascend in
 // k (in frequency, and k grows with the frequency), so the sum stops at the first such one.
 constexpr double kNegligibleDepthExponent = -40.0;
+
+// The lattice of the Taylor expansions (WaveExpansion): in a cell, |k dzeta| <= kCellSpace and
+// |w dt| <= kCellTime for every kept component, so a term's exponent moves by x <= 0.72 from the
+// node's and the polynomial of degree 12 leaves x^13 e^{x + kCellSpace} / 13! < 6e-12 of the local
+// velocity scale sum a w e^{kz}, its derivative in t x^12 e^{x + kCellSpace} / 12! < 1e-10 of the
+// acceleration scale (the node may lie up to half a side deeper than the point: e^{kCellSpace}).
+constexpr double kCellSpace = 0.17;
+constexpr double kCellTime = 0.55;
+// The image terms' polynomial gets the lowest degree whose remainder_bound is below this.
+constexpr double kRemainder = 1e-10;
+// A depth band leaves out the components that together move the water by less than this fraction
+// of the local velocity scale at its top.
+constexpr double kNegligibleTerms = 1e-12;
 
 // JONSWAP spectral shape (unscaled) at omega for peak wp and peakedness gamma.
 double jonswap_shape(double w, double wp, double gamma) {
@@ -100,28 +117,74 @@ bool SeaState::build(const UCParams& p, std::string& error) {
         c.kx = c.k * cosb_;
         c.ky = c.k * sinb_;
         const double image = std::exp(-2.0 * c.k * depth_);
-        c.bottom = image > kNegligibleBottom ? image : 0.0;
+        c.bottom = image;
         c.depthScale = 1.0 / (1.0 - image);
         c.velocityScale = c.amplitude * c.omega * c.depthScale;
         c.accelerationScale = c.velocityScale * c.omega;
         c.ladderShift = c.k - ladder_k(static_cast<double>(i));
         if (std::fabs(c.ladderShift) <= 4e-16 * c.k) c.ladderShift = 0.0;  // deep water: on the ladder to round-off
+        c.deepMoments = std::fabs(c.k - c.omega * c.omega / g) <= 1e-14 * c.k;
     }
-    cosPhase_.assign(components_.size(), 0.0);
-    sinPhase_.assign(components_.size(), 0.0);
-    phaseValid_ = false;
+    for (Phases* phases : {&phases_, &expansionPhases_}) {
+        phases->cos.assign(components_.size(), 0.0);
+        phases->sin.assign(components_.size(), 0.0);
+        phases->valid = false;
+    }
+    build_expansions();
     return true;
 }
 
-void SeaState::phases_at(double t) const {
-    if (phaseValid_ && t == phaseTime_) return;
+void SeaState::build_expansions() {
+    constexpr int D = WaveExpansion::kDegree;
+    double factorial[D + 1];
+    factorial[0] = 1.0;
+    for (int j = 1; j <= D; ++j) factorial[j] = factorial[j - 1] * j;
+    taylorWeights_.assign(components_.size() * WaveExpansion::kTerms, 0.0);
+    double kMax = 0.0;
+    for (size_t i = 0; i < components_.size(); ++i) {
+        const WaveComponent& c = components_[i];
+        kMax = std::max(kMax, c.k);
+        double* w = taylorWeights_.data() + i * WaveExpansion::kTerms;
+        double km = 1.0;  // k^m
+        for (int m = 0, j = 0; m <= D; ++m, km *= c.k) {
+            double wn = 1.0;  // w^n
+            for (int n = 0; n <= D - m; ++n, ++j, wn *= c.omega) w[j] = c.velocityScale * km * wn / (factorial[m] * factorial[n]);
+        }
+    }
+    // Depth bands: [-2/kMax, 0], then each twice as deep as the one above; a band keeps the components
+    // that matter at its top (the shallowest of its points), and sizes its cells by the largest k and
+    // w among them: at depth the short waves are gone, and the cells grow.
+    bands_.clear();
+    const size_t n = components_.size();
+    std::vector<double> tail(n + 1);
+    for (double top = 0.0;; top = top == 0.0 ? -2.0 / kMax : 2.0 * top) {
+        // the terms after the first `count`: sum 2 a w e^{kz} (the image is at most the term itself)
+        tail[n] = 0.0;
+        for (size_t i = n; i-- > 0;) tail[i] = tail[i + 1] + 2.0 * components_[i].velocityScale * std::exp(components_[i].k * top);
+        size_t count = n;
+        while (count > 1 && tail[count - 1] <= kNegligibleTerms * tail[0]) --count;
+        DepthBand band;
+        band.top = top;
+        band.count = static_cast<int>(count);
+        double k = 0.0, w = 0.0;
+        for (size_t i = 0; i < count; ++i) k = std::max(k, components_[i].k), w = std::max(w, components_[i].omega);
+        band.cell = std::sqrt(2.0) * kCellSpace / k;  // the farthest point of a square cell: side / sqrt 2
+        band.window = 2.0 * kCellTime / w;
+        bands_.push_back(band);
+        if (count == 1 || bands_.size() == 64) break;  // deeper bands would be the same
+    }
+}
+
+const SeaState::Phases& SeaState::phases_at(Phases& cache, double t) const {
+    if (cache.valid && t == cache.time) return cache;
     for (size_t i = 0; i < components_.size(); ++i) {
         const double phi = components_[i].omega * t - components_[i].phase;
-        cosPhase_[i] = std::cos(phi);
-        sinPhase_[i] = std::sin(phi);
+        cache.cos[i] = std::cos(phi);
+        cache.sin[i] = std::sin(phi);
     }
-    phaseTime_ = t;
-    phaseValid_ = true;
+    cache.time = t;
+    cache.valid = true;
+    return cache;
 }
 
 double SeaState::ramp(double t) const {
@@ -132,12 +195,12 @@ double SeaState::ramp(double t) const {
 
 double SeaState::elevation(double x, double y, double t) const {
     if (components_.empty()) return 0.0;
-    phases_at(t);
+    const Phases& ph = phases_at(phases_, t);
     double eta = 0.0;
     for (size_t i = 0; i < components_.size(); ++i) {  // cos(k.x - (w t - p))
         const WaveComponent& c = components_[i];
         const double kx = c.kx * x + c.ky * y;
-        eta += c.amplitude * (std::cos(kx) * cosPhase_[i] + std::sin(kx) * sinPhase_[i]);
+        eta += c.amplitude * (std::cos(kx) * ph.cos[i] + std::sin(kx) * ph.sin[i]);
     }
     return ramp(t) * eta;
 }
@@ -158,13 +221,49 @@ constexpr double kSmallShift = 1e-3;
 
 }  // namespace
 
+SeaState::Ladder::Ladder(const SeaState& sea, double z, double s)
+    : sea_(sea), z_(z), s_(s), span_(std::fabs(z) + std::fabs(s)) {
+    // R = exp((q_{i+1} - q_i)(z + i s)), the ratio of successive ladder values, grows by
+    // Q = exp((q_{i+2} - 2 q_{i+1} + q_i)(z + i s)) per component.
+    const double dd = 2.0 * sea.ladderBeta_ * sea.ladderBeta_ / sea.gravity_;
+    if (sea.components_.size() > 1) cexp_scaled(dd, z, s, Qr_, Qi_);
+}
+
+void SeaState::Ladder::next(size_t i, double& Fr, double& Fi) {
+    const WaveComponent& c = sea_.components_[i];
+    if (i % kLadderRestart == 0) {
+        const double q = sea_.ladder_k(static_cast<double>(i));
+        cexp_scaled(q, z_, s_, Er_, Ei_);
+        cexp_scaled(sea_.ladder_k(static_cast<double>(i) + 1.0) - q, z_, s_, Rr_, Ri_);
+    } else {
+        const double er = Er_ * Rr_ - Ei_ * Ri_, ei = Er_ * Ri_ + Ei_ * Rr_;
+        const double rr = Rr_ * Qr_ - Ri_ * Qi_, ri = Rr_ * Qi_ + Ri_ * Qr_;
+        Er_ = er, Ei_ = ei, Rr_ = rr, Ri_ = ri;
+    }
+    // F = exp(k (z + i s)) = E exp(shift (z + i s))
+    Fr = Er_, Fi = Ei_;
+    if (c.ladderShift != 0.0) {
+        double xr = c.ladderShift * z_, xi = c.ladderShift * s_, gr, gi;
+        if (std::fabs(c.ladderShift) * span_ < kSmallShift) {
+            // 1 + x (1 + x/2 (1 + x/3 (1 + x/4)))
+            double pr = 1.0 + 0.25 * xr, pi = 0.25 * xi;
+            double tr = 1.0 + (xr * pr - xi * pi) / 3.0, ti = (xr * pi + xi * pr) / 3.0;
+            pr = 1.0 + 0.5 * (xr * tr - xi * ti), pi = 0.5 * (xr * ti + xi * tr);
+            gr = 1.0 + xr * pr - xi * pi, gi = xr * pi + xi * pr;
+        } else {
+            cexp_scaled(c.ladderShift, z_, s_, gr, gi);
+        }
+        Fr = Er_ * gr - Ei_ * gi, Fi = Er_ * gi + Ei_ * gr;
+    }
+}
+
 void SeaState::kinematics(const Vec3& r, double t, Vec3& u, Vec3& a, Mat3* du, Mat3* da) const {
     u.setZero();
     a.setZero();
     if (du) du->setZero();
     if (da) da->setZero();
     if (components_.empty()) return;
-    phases_at(t);
+    const Phases& ph = phases_at(phases_, t);
     double z = std::min(r.z(), 0.0);
     if (wheeler_) {
         const double eta = elevation(r.x(), r.y(), t);
@@ -177,44 +276,18 @@ void SeaState::kinematics(const Vec3& r, double t, Vec3& u, Vec3& a, Mat3* du, M
     double dah_ds = 0.0, dah_dz = 0.0, daw_ds = 0.0, daw_dz = 0.0;
     const bool belowSurface = r.z() < 0.0 || wheeler_;
     const bool gradients = du != nullptr || da != nullptr;
-    // E = exp(q_i (z + i s)) on the deep-water ladder q_i, and its ratio R = exp((q_{i+1} - q_i)(z + i s)),
-    // which itself grows by Q = exp((q_{i+2} - 2 q_{i+1} + q_i)(z + i s)) per component.
-    const double dd = 2.0 * ladderBeta_ * ladderBeta_ / gravity_;
-    double Er = 0.0, Ei = 0.0, Rr = 0.0, Ri = 0.0, Qr = 1.0, Qi = 0.0;
-    if (components_.size() > 1) cexp_scaled(dd, z, s, Qr, Qi);
-    const double span = std::fabs(z) + std::fabs(s);
+    Ladder ladder(*this, z, s);
     for (size_t i = 0; i < components_.size(); ++i) {
         const WaveComponent& c = components_[i];
         if (c.k * z < kNegligibleDepthExponent) break;  // and so are all shorter components
-        if (i % kLadderRestart == 0) {
-            const double q = ladder_k(static_cast<double>(i));
-            cexp_scaled(q, z, s, Er, Ei);
-            cexp_scaled(ladder_k(static_cast<double>(i) + 1.0) - q, z, s, Rr, Ri);
-        } else {
-            const double er = Er * Rr - Ei * Ri, ei = Er * Ri + Ei * Rr;
-            const double rr = Rr * Qr - Ri * Qi, ri = Rr * Qi + Ri * Qr;
-            Er = er, Ei = ei, Rr = rr, Ri = ri;
-        }
-        // F = exp(k (z + i s)) = E exp(shift (z + i s))
-        double Fr = Er, Fi = Ei;
-        if (c.ladderShift != 0.0) {
-            double xr = c.ladderShift * z, xi = c.ladderShift * s, gr, gi;
-            if (std::fabs(c.ladderShift) * span < kSmallShift) {
-                // 1 + x (1 + x/2 (1 + x/3 (1 + x/4)))
-                double pr = 1.0 + 0.25 * xr, pi = 0.25 * xi;
-                double tr = 1.0 + (xr * pr - xi * pi) / 3.0, ti = (xr * pi + xi * pr) / 3.0;
-                pr = 1.0 + 0.5 * (xr * tr - xi * ti), pi = 0.5 * (xr * ti + xi * tr);
-                gr = 1.0 + xr * pr - xi * pi, gi = xr * pi + xi * pr;
-            } else {
-                cexp_scaled(c.ladderShift, z, s, gr, gi);
-            }
-            Fr = Er * gr - Ei * gi, Fi = Er * gi + Ei * gr;
-        }
+        double Fr, Fi;  // exp(k (z + i s))
+        ladder.next(i, Fr, Fi);
         // G = F exp(-i (w t - p)) = e^{kz} (cos theta + i sin theta), theta = k s - w t + p
-        const double Gr = Fr * cosPhase_[i] + Fi * sinPhase_[i];
-        const double Gi = Fi * cosPhase_[i] - Fr * sinPhase_[i];
+        const double Gr = Fr * ph.cos[i] + Fi * ph.sin[i];
+        const double Gi = Fi * ph.cos[i] - Fr * ph.sin[i];
         const double A1 = c.velocityScale, A2 = c.accelerationScale;
-        if (c.bottom == 0.0 && !gradients) {  // deep water, the residual's case: cosh, sinh -> e^{kz}
+        const double G2 = Gr * Gr + Gi * Gi;  // e^{2kz}
+        if (c.bottom < kNegligibleBottom * G2 && !gradients) {  // deep water, the residual's case: cosh, sinh -> e^{kz}
             uh += A1 * Gr;
             w += A1 * Gi;
             ah += A2 * Gi;
@@ -222,7 +295,7 @@ void SeaState::kinematics(const Vec3& r, double t, Vec3& u, Vec3& a, Mat3* du, M
             continue;
         }
         // the bottom's image term: e^{-k(2h + z)} e^{i theta} = bottom G / |G|^2
-        const double image = c.bottom > 0.0 ? c.bottom / (Gr * Gr + Gi * Gi) : 0.0;
+        const double image = c.bottom > 0.0 ? c.bottom / G2 : 0.0;
         const double chco = Gr * (1.0 + image), chsi = Gi * (1.0 + image);  // / depthScale
         const double shco = Gr * (1.0 - image), shsi = Gi * (1.0 - image);
         uh += A1 * chco;
@@ -257,6 +330,185 @@ void SeaState::kinematics(const Vec3& r, double t, Vec3& u, Vec3& a, Mat3* du, M
                daw_ds * cosb_, daw_ds * sinb_, daw_dz;
         *da *= f;
     }
+}
+
+namespace {
+
+typedef double Pair __attribute__((vector_size(16)));  // a complex number (real, imaginary), for SSE2
+
+// The bound on the remainder of a velocity polynomial of degree d whose terms' exponents move by at
+// most x over the cell, on its derivative in t (the weaker): x^d e^{2x} / d!, relative to the local
+// acceleration scale (e^x for the term's growth, e^x for the node lying deeper than the point).
+double remainder_bound(double x, int d) {
+    double b = std::exp(2.0 * x);
+    for (int j = 1; j <= d; ++j) b *= x / j;
+    return b;
+}
+
+// Coefficients of dzeta^m dt^n for m + n <= d from sums S[m][n] (row m of d - m + 1 entries), times
+// (-i)^n: d^n/dt^n brings (-i w)^n.
+void store_rotated(const Pair* from, int d, double* to) {
+    for (int m = 0, j = 0; m <= d; ++m) {
+        for (int n = 0; n <= d - m; ++n, ++j) {
+            const double a = from[j][0], b = from[j][1];
+            double* out = to + 2 * j;
+            switch (n % 4) {
+                case 1: out[0] = b, out[1] = -a; break;
+                case 2: out[0] = -a, out[1] = -b; break;
+                case 3: out[0] = -b, out[1] = a; break;
+                default: out[0] = a, out[1] = b; break;
+            }
+        }
+    }
+}
+
+}  // namespace
+
+void SeaState::expand(const DepthBand& band, double z, double s, double t, WaveExpansion& e) const {
+    constexpr int D = WaveExpansion::kDegree, T = WaveExpansion::kTerms;
+    Pair sum[T], moment[2 * D + 1], imageMoment[2 * D + 1];
+    for (int j = 0; j < T; ++j) sum[j] = Pair{0.0, 0.0};
+    for (int j = 0; j <= 2 * D; ++j) moment[j] = imageMoment[j] = Pair{0.0, 0.0};
+    // The image terms e^{-k(2h + z)} of the components with e^{-2k(h + z)} above kNegligibleBottom at
+    // the cell's deepest point, half a side below the node (a prefix of the components: k ascends).
+    const double deepest = z - 0.5 * band.cell;
+    int nImage = 0;
+    double kImage = 0.0, wImage = 0.0;
+    for (int i = 0; i < band.count; ++i) {
+        const WaveComponent& c = components_[i];
+        if (c.bottom == 0.0 || -2.0 * c.k * (depth_ + deepest) < std::log(kNegligibleBottom)) break;
+        nImage = i + 1, kImage = c.k, wImage = c.omega;
+    }
+    // ... whose polynomial needs a lower degree: their exponents move less over the cell
+    int imageDegree = -1;
+    if (nImage > 0) {
+        const double x = kImage * band.cell / std::sqrt(2.0) + wImage * 0.5 * band.window;
+        imageDegree = 1;
+        while (imageDegree < D && remainder_bound(x, imageDegree) > kRemainder) ++imageDegree;
+    }
+    const int imageTerms = (imageDegree + 1) * (imageDegree + 2) / 2;
+    Pair image[T];
+    for (int j = 0; j < imageTerms; ++j) image[j] = Pair{0.0, 0.0};
+    // Deep-water components (k = w^2 / g): a w k^m w^n = a w^{2m + n + 1} / g^m, so their sums need only
+    // the moments sum a w^{j + 1} G (and sum a w^{j + 1} H for the image), j <= 2D.
+    const Phases& ph = phases_at(expansionPhases_, t);
+    Ladder ladder(*this, z, s);
+    for (int i = 0; i < band.count; ++i) {
+        const WaveComponent& c = components_[i];
+        // G = e^{k zeta - i (w t - p)} at the node
+        double Fr, Fi;
+        ladder.next(static_cast<size_t>(i), Fr, Fi);
+        const Pair G = {Fr * ph.cos[i] + Fi * ph.sin[i], Fi * ph.cos[i] - Fr * ph.sin[i]};
+        const double* w = taylorWeights_.data() + static_cast<size_t>(i) * T;
+        if (c.deepMoments) {
+            Pair p = c.velocityScale * G;
+            for (int j = 0; j <= 2 * D; ++j) moment[j] += p, p *= c.omega;
+        } else {
+            for (int j = 0; j < T; ++j) sum[j] += w[j] * G;
+        }
+        if (i < nImage) {
+            // H = e^{-k (2h + conj(zeta)) - i (w t - p)}; d/d conj(zeta) brings -k: weights
+            // a w (-k)^m w^n / (m! n!)
+            const double m2 = G[0] * G[0] + G[1] * G[1];  // e^{2kz}
+            const Pair H = m2 > 1e-300 ? (c.bottom / m2) * G : Pair{0.0, 0.0};  // e^{-k(2h + z)} e^{i theta}
+            if (c.deepMoments) {
+                Pair p = c.velocityScale * H;
+                for (int j = 0; j <= 2 * imageDegree; ++j) imageMoment[j] += p, p *= c.omega;
+            } else {
+                for (int mm = 0, j = 0; mm <= imageDegree; ++mm) {
+                    const Pair Hs = (mm % 2 == 0) ? H : -H;
+                    const double* wm = w + WaveExpansion::offset(mm);
+                    for (int nn = 0; nn <= imageDegree - mm; ++nn, ++j) image[j] += wm[nn] * Hs;
+                }
+            }
+        }
+    }
+    // the moments' share: sum[m][n] += M[2m + n] / (m! n! g^m), image[m][n] += (-1)^m M'[2m + n] / (...)
+    double gm = 1.0, fm = 1.0;  // g^m, m!
+    for (int mm = 0, j = 0, ji = 0; mm <= D; ++mm, gm *= gravity_, fm *= mm) {
+        double fn = 1.0;  // n!
+        for (int nn = 0; nn <= D - mm; ++nn, ++j, fn *= nn) {
+            const double scale = 1.0 / (fm * fn * gm);
+            sum[j] += scale * moment[2 * mm + nn];
+            if (mm + nn <= imageDegree) image[ji++] += ((mm % 2 == 0) ? scale : -scale) * imageMoment[2 * mm + nn];
+        }
+    }
+    store_rotated(sum, D, e.c);
+    if (imageDegree >= 0) store_rotated(image, imageDegree, e.imageC);
+    e.imageDegree = imageDegree;
+    e.z = z, e.s = s, e.t = t;
+}
+
+namespace {
+
+// sum_m dzeta^m sum_n c[m][n] dt^n (v) and its derivative in t (a) for m + n <= D, by Horner's rule
+// in dzeta over the rows m = M, M - 1, ..., 0 (each a polynomial in dt, with its derivative), dzeta =
+// (zr, zi). Rows of fixed length, so the compiler unrolls them.
+template <int D, int M>
+inline void horner_rows(const double* c, double dt, double zr, double zi, Pair& v, Pair& a) {
+    constexpr int begin = M * (D + 1) - M * (M - 1) / 2, length = D - M + 1;
+    Pair q = {0.0, 0.0}, r = {0.0, 0.0};  // the row's polynomial in dt and its derivative
+    for (int j = length - 1; j >= 0; --j) {
+        Pair cj;
+        __builtin_memcpy(&cj, c + 2 * (begin + j), sizeof cj);
+        r = r * dt + q;
+        q = q * dt + cj;
+    }
+    // v = v dzeta + q, a = a dzeta + r (complex)
+    const Pair zs = {-zi, zi};
+    v = v * zr + Pair{v[1], v[0]} * zs + q;
+    a = a * zr + Pair{a[1], a[0]} * zs + r;
+    if constexpr (M > 0) horner_rows<D, M - 1>(c, dt, zr, zi, v, a);
+}
+
+template <int D>
+void evaluate_polynomial(const double* c, double zr, double zi, double dt, double& vr, double& vi, double& ar,
+                         double& ai) {
+    Pair v = {0.0, 0.0}, a = {0.0, 0.0};
+    horner_rows<D, D>(c, dt, zr, zi, v, a);
+    vr = v[0], vi = v[1], ar = a[0], ai = a[1];
+}
+
+// The same for a degree d <= kDegree known at run time.
+template <int... Ds>
+void evaluate_polynomial(std::integer_sequence<int, Ds...>, int d, const double* c, double zr, double zi, double dt,
+                         double& vr, double& vi, double& ar, double& ai) {
+    ((d == Ds ? evaluate_polynomial<Ds>(c, zr, zi, dt, vr, vi, ar, ai) : void()), ...);
+}
+
+}  // namespace
+
+void SeaState::expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache, Vec3& u, Vec3& a) const {
+    if (components_.empty() || wheeler_) {
+        kinematics(r, t, u, a, nullptr, nullptr);
+        return;
+    }
+    const double z = std::min(r.z(), 0.0);
+    const double s = cosb_ * r.x() + sinb_ * r.y();
+    size_t b = 0;
+    while (b + 1 < bands_.size() && z < bands_[b + 1].top) ++b;
+    const DepthBand& band = bands_[b];
+    const long long iz = static_cast<long long>(std::floor((band.top - z) / band.cell));
+    const long long is = std::llround(s / band.cell);
+    const long long it = static_cast<long long>(std::floor(t / band.window));
+    const long long b64 = static_cast<long long>(b);
+    if (cache.node[0] != b64 || cache.node[1] != iz || cache.node[2] != is || cache.node[3] != it) {
+        expand(band, band.top - (static_cast<double>(iz) + 0.5) * band.cell, static_cast<double>(is) * band.cell,
+               (static_cast<double>(it) + 0.5) * band.window, cache);
+        cache.node[0] = b64, cache.node[1] = iz, cache.node[2] = is, cache.node[3] = it;
+    }
+    const double dz = z - cache.z, ds = s - cache.s, dt = t - cache.t;
+    double vr, vi, ar, ai;
+    evaluate_polynomial<WaveExpansion::kDegree>(cache.c, dz, ds, dt, vr, vi, ar, ai);
+    if (cache.imageDegree >= 0) {  // in conj(dzeta): u_s gains Re, w loses Im
+        double hr = 0.0, hi = 0.0, br = 0.0, bi = 0.0;
+        evaluate_polynomial(std::make_integer_sequence<int, WaveExpansion::kDegree + 1>(), cache.imageDegree, cache.imageC,
+                            dz, -ds, dt, hr, hi, br, bi);
+        vr += hr, vi -= hi, ar += br, ai -= bi;
+    }
+    const double f = ramp(t);
+    u = f * Vec3(vr * cosb_, vr * sinb_, vi);
+    a = f * Vec3(ar * cosb_, ar * sinb_, ai);
 }
 
 }  // namespace uc

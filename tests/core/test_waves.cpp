@@ -354,3 +354,81 @@ TEST(Waves, DeepPointsLeaveOutOnlyComponentsBelowRoundOff) {
         }
     }
 }
+
+TEST(Waves, ExpandedKinematicsEqualTheSumWithinTheirBound) {
+    // The residual's kinematics: a Taylor polynomial of degree 12 in (z + i s, t) about the node of a
+    // lattice cell, in which every kept term's exponent moves by at most 0.72. The remainder bounds
+    // are 6e-12 of the local velocity scale sum a w (e^{kz} + e^{-k(2h + z)}) and 1e-10 of the
+    // acceleration scale (waves.cpp); the components a depth band leaves out add 1e-12 of the
+    // velocity scale (the acceleration's: times w_max / w_min < 6); the sum itself leaves out or
+    // rounds 1e-15 of the surface scale (as kinematics()). Against the plain sum of the closed form: deep and finite
+    // depth (where the bottom's image terms count), regular and irregular, points above the surface,
+    // a cache reused along a moving point and a fresh one.
+    struct Case { int mode; double depth, T; int n; };
+    for (const Case& k : {Case{2, 3000.0, 10.0, 200}, Case{2, 30.0, 9.0, 120}, Case{2, 150.0, 12.0, 300},
+                          Case{1, 20.0, 8.0, 1}, Case{1, 4000.0, 6.0, 1}}) {
+        UCParams p = regular(2.5, k.T, k.depth, 0.7);
+        p.wavesMode = k.mode;
+        p.wavesNComponents = k.n;
+        SeaState sea;
+        std::string error;
+        ASSERT_TRUE(sea.build(p, error)) << error;
+        double surfaceU = 0.0, surfaceA = 0.0;
+        for (const WaveComponent& c : sea.components()) {
+            surfaceU += c.velocityScale * (1.0 + c.bottom);
+            surfaceA += c.accelerationScale * (1.0 + c.bottom);
+        }
+        WaveExpansion moving;
+        SplitMix64 random(7);
+        double worstU = 0.0, worstA = 0.0;
+        for (int j = 0; j < 400; ++j) {
+            // a point drifting through cells (0.15 m and 0.07 s per call) and random fresh points
+            const double depthFraction = random.uniform();
+            const Vec3 r(200.0 * random.uniform() - 100.0, 50.0 * random.uniform(),
+                         j % 10 == 0 ? 0.5 * random.uniform() : -depthFraction * depthFraction * 0.95 * k.depth);
+            const double t = 500.0 * random.uniform();
+            for (int step = 0; step < 5; ++step) {
+                const Vec3 rs = r + Vec3(0.3, -0.2, 0.4) * step * 0.3;
+                const double ts = t + 0.07 * step;
+                Vec3 u, a, ue, ae, uf, af;
+                direct_sum(sea, k.depth, 0.7, rs, ts, u, a);
+                sea.expanded_kinematics(rs, ts, moving, ue, ae);
+                WaveExpansion fresh;
+                sea.expanded_kinematics(rs, ts, fresh, uf, af);
+                EXPECT_EQ(ue, uf);  // a pure function of (r, t): the cache's history does not matter
+                EXPECT_EQ(ae, af);
+                const double z = std::min(rs.z(), 0.0);
+                double su = 0.0, sa = 0.0;
+                for (const WaveComponent& c : sea.components()) {
+                    const double m = std::exp(c.k * z) + std::exp(-c.k * (2.0 * k.depth + z));
+                    su += c.velocityScale * m;
+                    sa += c.accelerationScale * m;
+                }
+                const double tolU = 7e-12 * su + 1e-15 * surfaceU, tolA = 1.06e-10 * sa + 1e-15 * surfaceA;
+                worstU = std::max(worstU, (ue - u).norm() / tolU);
+                worstA = std::max(worstA, (ae - a).norm() / tolA);
+                EXPECT_LT((ue - u).norm(), tolU) << k.depth << " " << rs.transpose() << " " << ts;
+                EXPECT_LT((ae - a).norm(), tolA) << k.depth << " " << rs.transpose() << " " << ts;
+            }
+        }
+        std::printf("depth %g m, %d components: largest error / tolerance: velocity %.2e, acceleration %.2e\n",
+                    k.depth, k.n, worstU, worstA);
+    }
+}
+
+TEST(Waves, ExpandedKinematicsWithStretchingAreTheSum) {
+    UCParams p = regular(2.0, 9.0, 50.0, 0.2);
+    p.wavesMode = 2;
+    p.wavesNComponents = 50;
+    p.wavesStretching = 1;
+    SeaState sea;
+    std::string error;
+    ASSERT_TRUE(sea.build(p, error)) << error;
+    WaveExpansion cache;
+    const Vec3 r(3.0, 1.0, -4.0);
+    Vec3 u, a, ue, ae;
+    sea.kinematics(r, 12.0, u, a, nullptr, nullptr);
+    sea.expanded_kinematics(r, 12.0, cache, ue, ae);
+    EXPECT_EQ(u, ue);
+    EXPECT_EQ(a, ae);
+}
