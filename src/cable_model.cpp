@@ -476,7 +476,8 @@ void CableModel::element_jacobian(int e, const double* X, const double* Xd, cons
     if (sec.EI > 0.0) add_bending_jacobian(tables, sec.EI, K);
     if (sec.bendingDamping > 0.0) add_bending_jacobian(tables, sec.bendingDamping, C);
     if (loads.torque != 0.0) add_torque_jacobian(tables, loads.torque, X + g0, K);
-    add_hydro_jacobian(tables, sec.fluid, loads.current, X + g0, Xd + g0, Xdd + g0, K, C, M);
+    add_hydro_jacobian(tables, sec.fluid, loads.current, X + g0, Xd + g0, Xdd + g0, K, C, M,
+                       waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
     if (sec.seabed.enabled) add_seabed_jacobian(tables, sec.seabed, X + g0, Xd + g0, K, C);
 }
 
@@ -506,11 +507,11 @@ void add_point_body_residual(const PointBody& body, const FluidProps& fluid, con
     R.z() += wet;
 }
 
-void point_body_jacobian(const PointBody& body, const FluidProps& fluid, const CurrentField& current,
+void point_body_jacobian(const PointBody& body, const FluidProps& fluid, const CurrentField& current, WaveExpansion* waveCache,
                          const double* r, const double* rd, Mat3& K, Mat3& C, Mat3& M) {
     Vec3 U, A;
     Mat3 dU, dA;
-    current.flow(Eigen::Map<const Vec3>(r), U, dU, A, dA);
+    current.flow(Eigen::Map<const Vec3>(r), U, dU, A, dA, waveCache);
     const Vec3 u = U - Eigen::Map<const Vec3>(rd);
     const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
     const Mat3 dDrag_du = 0.5 * fluid.rho * body.CdA * (speed * Mat3::Identity() + u * u.transpose() / speed);
@@ -554,7 +555,7 @@ void CableModel::end_node_jacobian(const double* X, const double* Xd, const doub
     C.block<3, 3>(0, 0) = loads.endLoadDamping;
     if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return;
     Mat3 Kb, Cb, Mb;
-    point_body_jacobian(body_, fluid(), loads.current, X + gN, Xd + gN, Kb, Cb, Mb);
+    point_body_jacobian(body_, fluid(), loads.current, point_wave_cache(0), X + gN, Xd + gN, Kb, Cb, Mb);
     K.block<3, 3>(0, 0) += Kb;
     C.block<3, 3>(0, 0) += Cb;
     M.block<3, 3>(0, 0) = Mb;

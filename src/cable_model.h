@@ -85,7 +85,7 @@ struct PointBody {
 void add_point_body_residual(const PointBody& body, const FluidProps& fluid, const CurrentField& current, WaveExpansion* waveCache,
                              const double* r, const double* rd, const double* rdd, Vec3& R);
 // Its derivatives with respect to r, rd and rdd.
-void point_body_jacobian(const PointBody& body, const FluidProps& fluid, const CurrentField& current,
+void point_body_jacobian(const PointBody& body, const FluidProps& fluid, const CurrentField& current, WaveExpansion* waveCache,
                          const double* r, const double* rd, Mat3& K, Mat3& C, Mat3& M);
 
 // One section of the line, compiled from the parameters: what the element physics reads.
@@ -290,7 +290,7 @@ void CableModel::jacobian(const double* X, const double* Xd, const double* Xdd, 
     }
     for (const NodeAttachment& at : attachments_) {
         Mat3 Ka, Ca, Ma;
-        point_body_jacobian(at.body, fluid(), loads.current, X + at.offset, Xd + at.offset, Ka, Ca, Ma);
+        point_body_jacobian(at.body, fluid(), loads.current, point_wave_cache(1 + (&at - attachments_.data())), X + at.offset, Xd + at.offset, Ka, Ca, Ma);
         for (int a = 0; a < 3; ++a) {
             const int ja = free_[at.offset + a];
             if (ja < 0) continue;

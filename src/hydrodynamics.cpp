@@ -44,7 +44,7 @@ Vec3 CurrentField::at(double z, Vec3* slope, Vec3* acceleration) const {
     return u + factor * shape;
 }
 
-void CurrentField::flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA) const {
+void CurrentField::flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA, WaveExpansion* cache) const {
     Vec3 slope;
     U = at(r.z(), &slope, &A);
     dU.setZero();
@@ -53,7 +53,11 @@ void CurrentField::flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA) con
     if (!waves()) return;
     Vec3 u, a;
     Mat3 du;
-    sea->kinematics(r, time, u, a, &du, &dA);
+    if (cache) {
+        sea->expanded_kinematics(r, time, *cache, u, a, &du, &dA);
+    } else {
+        sea->kinematics(r, time, u, a, &du, &dA);
+    }
     U += u;
     dU += du;
     A += a;  // the waves' acceleration on top of the changing current's
@@ -158,14 +162,14 @@ void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentF
 
 void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const CurrentField& current,
                         const double* X, const double* Xd, const double* Xdd, Mat12& K, Mat12& C,
-                        Mat12& M) {
+                        Mat12& M, WaveExpansion* waveCache) {
     PointLoadJacobian J;
     for (int g = 0; g < e.nLoad; ++g) {
         const QuadPoint& q = e.load[g];
         const Vec3 r = interpolate(q.shape.N, X);
         Vec3 U, A;
         Mat3 dU, dA;
-        current.flow(r, U, dU, A, dA);
+        current.flow(r, U, dU, A, dA, waveCache ? waveCache + g : nullptr);
         point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd), interpolate(q.shape.N, Xdd), U,
                    dU, current.accelerates(), A, dA, &J);
         for (int a = 0; a < 4; ++a) {

@@ -55,9 +55,9 @@ struct CurrentField {
     }
     // The water's velocity U (current and waves) and local acceleration A (waves, and the rate of a
     // changing current) at r, with their gradients dU/dr and dA/dr (dA is zero in calm water).
-    void flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA) const;
-    // The same without the gradients (the residual needs none: a third of the cost of the waves);
-    // with a cache, the waves' part from its Taylor expansion (SeaState::expanded_kinematics).
+    void flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA, WaveExpansion* cache = nullptr) const;
+    // The same without the gradients (the residual needs none). With a cache, the waves' part of
+    // either from its Taylor expansion (SeaState::expanded_kinematics).
     void flow(const Vec3& r, Vec3& U, Vec3& A, WaveExpansion* cache = nullptr) const;
 };
 
@@ -84,6 +84,6 @@ void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentF
                      const double* Xd, const double* Xdd, double* R, WaveExpansion* waveCache = nullptr);
 void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const CurrentField& current,
                         const double* X, const double* Xd, const double* Xdd, Mat12& K, Mat12& C,
-                        Mat12& M);
+                        Mat12& M, WaveExpansion* waveCache = nullptr);
 
 }  // namespace uc

@@ -345,32 +345,19 @@ double remainder_bound(double x, int d) {
     return b;
 }
 
-// Coefficients of dzeta^m dt^n for m + n <= d from sums S[m][n] (row m of d - m + 1 entries), times
-// (-i)^n: d^n/dt^n brings (-i w)^n.
-void store_rotated(const Pair* from, int d, double* to) {
-    for (int m = 0, j = 0; m <= d; ++m) {
-        for (int n = 0; n <= d - m; ++n, ++j) {
-            const double a = from[j][0], b = from[j][1];
-            double* out = to + 2 * j;
-            switch (n % 4) {
-                case 1: out[0] = b, out[1] = -a; break;
-                case 2: out[0] = -a, out[1] = -b; break;
-                case 3: out[0] = -b, out[1] = a; break;
-                default: out[0] = a, out[1] = b; break;
-            }
-        }
-    }
-}
-
 }  // namespace
 
 void SeaState::expand(const DepthBand& band, double z, double s, double t, WaveExpansion& e) const {
     constexpr int D = WaveExpansion::kDegree, T = WaveExpansion::kTerms;
-    Pair sum[T], moment[2 * D + 1], imageMoment[2 * D + 1];
-    for (int j = 0; j < T; ++j) sum[j] = Pair{0.0, 0.0};
+    // U = u_s + i w = sum a w (G + conj(H)): G = e^{k zeta - i (w t - p)}, and the bottom's image
+    // H = e^{-k (2h + conj(zeta)) - i (w t - p)}, whose conjugate e^{-k (2h + zeta) + i (w t - p)} is
+    // a function of zeta too. So U is one polynomial in (dzeta, dt): the coefficient of dzeta^m dt^n
+    // is sum w_mn ((-i)^n G + (-1)^m i^n conj(H)), w_mn = a w k^m w^n / (m! n!), G and H at the node.
+    Pair sumG[T], sumH[T], moment[2 * D + 1], imageMoment[2 * D + 1];
+    for (int j = 0; j < T; ++j) sumG[j] = sumH[j] = Pair{0.0, 0.0};
     for (int j = 0; j <= 2 * D; ++j) moment[j] = imageMoment[j] = Pair{0.0, 0.0};
-    // The image terms e^{-k(2h + z)} of the components with e^{-2k(h + z)} above kNegligibleBottom at
-    // the cell's deepest point, half a side below the node (a prefix of the components: k ascends).
+    // The image terms of the components with e^{-2k(h + z)} above kNegligibleBottom at the cell's
+    // deepest point, half a side below the node (a prefix of the components: k ascends) ...
     const double deepest = z - 0.5 * band.cell;
     int nImage = 0;
     double kImage = 0.0, wImage = 0.0;
@@ -379,24 +366,20 @@ void SeaState::expand(const DepthBand& band, double z, double s, double t, WaveE
         if (c.bottom == 0.0 || -2.0 * c.k * (depth_ + deepest) < std::log(kNegligibleBottom)) break;
         nImage = i + 1, kImage = c.k, wImage = c.omega;
     }
-    // ... whose polynomial needs a lower degree: their exponents move less over the cell
+    // ... which need fewer terms: they are the longest waves, whose exponents move less over the cell
     int imageDegree = -1;
     if (nImage > 0) {
         const double x = kImage * band.cell / std::sqrt(2.0) + wImage * 0.5 * band.window;
         imageDegree = 1;
         while (imageDegree < D && remainder_bound(x, imageDegree) > kRemainder) ++imageDegree;
     }
-    const int imageTerms = (imageDegree + 1) * (imageDegree + 2) / 2;
-    Pair image[T];
-    for (int j = 0; j < imageTerms; ++j) image[j] = Pair{0.0, 0.0};
-    // Deep-water components (k = w^2 / g): a w k^m w^n = a w^{2m + n + 1} / g^m, so their sums need only
-    // the moments sum a w^{j + 1} G (and sum a w^{j + 1} H for the image), j <= 2D.
+    // Deep-water components (k = w^2 / g): w_mn = a w^{2m + n + 1} / (g^m m! n!), so their sums need
+    // only the moments sum a w^{j + 1} G (and H), j <= 2D.
     const Phases& ph = phases_at(expansionPhases_, t);
     Ladder ladder(*this, z, s);
     for (int i = 0; i < band.count; ++i) {
         const WaveComponent& c = components_[i];
-        // G = e^{k zeta - i (w t - p)} at the node
-        double Fr, Fi;
+        double Fr, Fi;  // e^{k zeta}
         ladder.next(static_cast<size_t>(i), Fr, Fi);
         const Pair G = {Fr * ph.cos[i] + Fi * ph.sin[i], Fi * ph.cos[i] - Fr * ph.sin[i]};
         const double* w = taylorWeights_.data() + static_cast<size_t>(i) * T;
@@ -404,48 +387,56 @@ void SeaState::expand(const DepthBand& band, double z, double s, double t, WaveE
             Pair p = c.velocityScale * G;
             for (int j = 0; j <= 2 * D; ++j) moment[j] += p, p *= c.omega;
         } else {
-            for (int j = 0; j < T; ++j) sum[j] += w[j] * G;
+            for (int j = 0; j < T; ++j) sumG[j] += w[j] * G;
         }
         if (i < nImage) {
-            // H = e^{-k (2h + conj(zeta)) - i (w t - p)}; d/d conj(zeta) brings -k: weights
-            // a w (-k)^m w^n / (m! n!)
             const double m2 = G[0] * G[0] + G[1] * G[1];  // e^{2kz}
             const Pair H = m2 > 1e-300 ? (c.bottom / m2) * G : Pair{0.0, 0.0};  // e^{-k(2h + z)} e^{i theta}
             if (c.deepMoments) {
                 Pair p = c.velocityScale * H;
                 for (int j = 0; j <= 2 * imageDegree; ++j) imageMoment[j] += p, p *= c.omega;
             } else {
-                for (int mm = 0, j = 0; mm <= imageDegree; ++mm) {
-                    const Pair Hs = (mm % 2 == 0) ? H : -H;
-                    const double* wm = w + WaveExpansion::offset(mm);
-                    for (int nn = 0; nn <= imageDegree - mm; ++nn, ++j) image[j] += wm[nn] * Hs;
+                for (int mm = 0, j = 0; mm <= imageDegree; ++mm, j += D - imageDegree) {
+                    for (int nn = 0; nn <= imageDegree - mm; ++nn, ++j) sumH[j] += w[j] * H;
                 }
             }
         }
     }
-    // the moments' share: sum[m][n] += M[2m + n] / (m! n! g^m), image[m][n] += (-1)^m M'[2m + n] / (...)
     double gm = 1.0, fm = 1.0;  // g^m, m!
-    for (int mm = 0, j = 0, ji = 0; mm <= D; ++mm, gm *= gravity_, fm *= mm) {
+    for (int mm = 0, j = 0; mm <= D; ++mm, gm *= gravity_, fm *= mm) {
         double fn = 1.0;  // n!
         for (int nn = 0; nn <= D - mm; ++nn, ++j, fn *= nn) {
             const double scale = 1.0 / (fm * fn * gm);
-            sum[j] += scale * moment[2 * mm + nn];
-            if (mm + nn <= imageDegree) image[ji++] += ((mm % 2 == 0) ? scale : -scale) * imageMoment[2 * mm + nn];
+            const Pair g = sumG[j] + scale * moment[2 * mm + nn];
+            const Pair h = mm + nn <= imageDegree ? sumH[j] + scale * imageMoment[2 * mm + nn] : Pair{0.0, 0.0};
+            // (-i)^n g + (-1)^m i^n conj(h)
+            Pair ig = g, ih = {h[0], -h[1]};
+            switch (nn % 4) {
+                case 1: ig = Pair{g[1], -g[0]}, ih = Pair{h[1], h[0]}; break;      // -i g, i conj(h)
+                case 2: ig = -g, ih = Pair{-h[0], h[1]}; break;
+                case 3: ig = Pair{-g[1], g[0]}, ih = Pair{-h[1], -h[0]}; break;   // i g, -i conj(h)
+                default: break;
+            }
+            const Pair coefficient = ig + ((mm % 2 == 0) ? ih : -ih);
+            __builtin_memcpy(e.c + 2 * j, &coefficient, sizeof coefficient);
         }
     }
-    store_rotated(sum, D, e.c);
-    if (imageDegree >= 0) store_rotated(image, imageDegree, e.imageC);
-    e.imageDegree = imageDegree;
     e.z = z, e.s = s, e.t = t;
 }
 
 namespace {
 
-// sum_m dzeta^m sum_n c[m][n] dt^n (v) and its derivative in t (a) for m + n <= D, by Horner's rule
-// in dzeta over the rows m = M, M - 1, ..., 0 (each a polynomial in dt, with its derivative), dzeta =
-// (zr, zi). Rows of fixed length, so the compiler unrolls them.
-template <int D, int M>
-inline void horner_rows(const double* c, double dt, double zr, double zi, Pair& v, Pair& a) {
+// U = sum_m dzeta^m sum_n c[m][n] dt^n, its derivative in t (A) and, with Gradient, both derivatives in
+// zeta (U', A'), by Horner's rule in dzeta over the rows m = M, ..., 0, each a polynomial in dt with
+// its derivative. Rows of fixed length, so the compiler unrolls them.
+struct Polynomial {
+    Pair U = {0.0, 0.0}, A = {0.0, 0.0}, dU = {0.0, 0.0}, dA = {0.0, 0.0};
+};
+
+inline Pair times(const Pair& x, double zr, double zi) { return x * zr + Pair{x[1], x[0]} * Pair{-zi, zi}; }
+
+template <int D, int M, bool Gradient>
+inline void horner_rows(const double* c, double dt, double zr, double zi, Polynomial& p) {
     constexpr int begin = M * (D + 1) - M * (M - 1) / 2, length = D - M + 1;
     Pair q = {0.0, 0.0}, r = {0.0, 0.0};  // the row's polynomial in dt and its derivative
     for (int j = length - 1; j >= 0; --j) {
@@ -454,33 +445,21 @@ inline void horner_rows(const double* c, double dt, double zr, double zi, Pair& 
         r = r * dt + q;
         q = q * dt + cj;
     }
-    // v = v dzeta + q, a = a dzeta + r (complex)
-    const Pair zs = {-zi, zi};
-    v = v * zr + Pair{v[1], v[0]} * zs + q;
-    a = a * zr + Pair{a[1], a[0]} * zs + r;
-    if constexpr (M > 0) horner_rows<D, M - 1>(c, dt, zr, zi, v, a);
-}
-
-template <int D>
-void evaluate_polynomial(const double* c, double zr, double zi, double dt, double& vr, double& vi, double& ar,
-                         double& ai) {
-    Pair v = {0.0, 0.0}, a = {0.0, 0.0};
-    horner_rows<D, D>(c, dt, zr, zi, v, a);
-    vr = v[0], vi = v[1], ar = a[0], ai = a[1];
-}
-
-// The same for a degree d <= kDegree known at run time.
-template <int... Ds>
-void evaluate_polynomial(std::integer_sequence<int, Ds...>, int d, const double* c, double zr, double zi, double dt,
-                         double& vr, double& vi, double& ar, double& ai) {
-    ((d == Ds ? evaluate_polynomial<Ds>(c, zr, zi, dt, vr, vi, ar, ai) : void()), ...);
+    if constexpr (Gradient) {
+        p.dU = times(p.dU, zr, zi) + p.U;
+        p.dA = times(p.dA, zr, zi) + p.A;
+    }
+    p.U = times(p.U, zr, zi) + q;
+    p.A = times(p.A, zr, zi) + r;
+    if constexpr (M > 0) horner_rows<D, M - 1, Gradient>(c, dt, zr, zi, p);
 }
 
 }  // namespace
 
-void SeaState::expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache, Vec3& u, Vec3& a) const {
+void SeaState::expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache, Vec3& u, Vec3& a, Mat3* du,
+                                   Mat3* da) const {
     if (components_.empty() || wheeler_) {
-        kinematics(r, t, u, a, nullptr, nullptr);
+        kinematics(r, t, u, a, du, da);
         return;
     }
     const double z = std::min(r.z(), 0.0);
@@ -489,7 +468,7 @@ void SeaState::expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache
     while (b + 1 < bands_.size() && z < bands_[b + 1].top) ++b;
     const DepthBand& band = bands_[b];
     const long long iz = static_cast<long long>(std::floor((band.top - z) / band.cell));
-    const long long is = std::llround(s / band.cell);
+    const long long is = static_cast<long long>(std::floor(s / band.cell + 0.5));
     const long long it = static_cast<long long>(std::floor(t / band.window));
     const long long b64 = static_cast<long long>(b);
     if (cache.node[0] != b64 || cache.node[1] != iz || cache.node[2] != is || cache.node[3] != it) {
@@ -497,18 +476,31 @@ void SeaState::expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache
                (static_cast<double>(it) + 0.5) * band.window, cache);
         cache.node[0] = b64, cache.node[1] = iz, cache.node[2] = is, cache.node[3] = it;
     }
+    constexpr int D = WaveExpansion::kDegree;
     const double dz = z - cache.z, ds = s - cache.s, dt = t - cache.t;
-    double vr, vi, ar, ai;
-    evaluate_polynomial<WaveExpansion::kDegree>(cache.c, dz, ds, dt, vr, vi, ar, ai);
-    if (cache.imageDegree >= 0) {  // in conj(dzeta): u_s gains Re, w loses Im
-        double hr = 0.0, hi = 0.0, br = 0.0, bi = 0.0;
-        evaluate_polynomial(std::make_integer_sequence<int, WaveExpansion::kDegree + 1>(), cache.imageDegree, cache.imageC,
-                            dz, -ds, dt, hr, hi, br, bi);
-        vr += hr, vi -= hi, ar += br, ai -= bi;
+    Polynomial p;
+    const bool gradients = du != nullptr || da != nullptr;
+    if (gradients) {
+        horner_rows<D, D, true>(cache.c, dt, dz, ds, p);
+    } else {
+        horner_rows<D, D, false>(cache.c, dt, dz, ds, p);
     }
     const double f = ramp(t);
-    u = f * Vec3(vr * cosb_, vr * sinb_, vi);
-    a = f * Vec3(ar * cosb_, ar * sinb_, ai);
+    u = f * Vec3(p.U[0] * cosb_, p.U[0] * sinb_, p.U[1]);
+    a = f * Vec3(p.A[0] * cosb_, p.A[0] * sinb_, p.A[1]);
+    if (!gradients) return;
+    // U = u_s + i w is analytic in zeta = z + i s: d/dz = U', d/ds = i U'. Above the mean surface
+    // (no stretching) the kinematics of z = 0, which do not change with z.
+    const double zScale = r.z() < 0.0 ? 1.0 : 0.0;
+    auto gradient = [&](const Pair& d, Mat3& out) {
+        const double dus_dz = zScale * d[0], dw_dz = zScale * d[1], dus_ds = -d[1], dw_ds = d[0];
+        out << dus_ds * cosb_ * cosb_, dus_ds * cosb_ * sinb_, dus_dz * cosb_,
+               dus_ds * sinb_ * cosb_, dus_ds * sinb_ * sinb_, dus_dz * sinb_,
+               dw_ds * cosb_, dw_ds * sinb_, dw_dz;
+        out *= f;
+    };
+    if (du) gradient(p.dU, *du);
+    if (da) gradient(p.dA, *da);
 }
 
 }  // namespace uc

@@ -26,22 +26,19 @@ struct WaveComponent {
 
 // The water's motion near one load point as a Taylor polynomial about a node of a lattice in (z, s, t)
 // (SeaState::expanded_kinematics); the model keeps one per load point, reused while the point stays
-// in the node's cell. V = u_s + i w (horizontal velocity along the direction of travel, vertical
-// velocity) is a sum of terms a w e^{k zeta - i (w t - p)} in zeta = z + i s, plus the bottom's
-// image terms in conj(zeta) in finite depth: the coefficients are those of the polynomials in
-// (zeta - zeta_node, t - t_node) and (conj(zeta - zeta_node), t - t_node).
+// in the node's cell. U = u_s + i w (horizontal velocity along the direction of travel, vertical
+// velocity) is a sum of terms a w e^{k zeta - i (w t - p)} in zeta = z + i s, plus in finite depth the
+// conjugates of the bottom's image terms, a w e^{-k (2h + zeta) + i (w t - p)}: an analytic function
+// of zeta, whose coefficients are those of the polynomial in (zeta - zeta_node, t - t_node).
 struct WaveExpansion {
     static constexpr int kDegree = 12;  // total degree of the velocity's polynomial
     static constexpr int kTerms = (kDegree + 1) * (kDegree + 2) / 2;
     // Where row m (the terms dzeta^m dt^n) begins in a polynomial of degree kDegree
     static constexpr int offset(int m) { return m * (kDegree + 1) - m * (m - 1) / 2; }
     long long node[4] = {-1, 0, 0, 0};  // depth band, then the cell's indices in z, s and t
-    int imageDegree = -1;  // of the image terms' polynomial (-1: negligible in the cell)
     double z = 0.0, s = 0.0, t = 0.0;  // the node
-    // The coefficient of dzeta^m dt^n as (real, imaginary) pairs, rows m ascending, n ascending in a
-    // row (degree kDegree; the image's of degree imageDegree, where its terms, the longest waves,
-    // change less over the cell)
-    double c[2 * kTerms] = {}, imageC[2 * kTerms] = {};
+    // The coefficient of dzeta^m dt^n as (real, imaginary) pairs, rows m ascending, n ascending in a row
+    double c[2 * kTerms] = {};
 };
 
 // The wavenumber of frequency omega in water of depth h: omega^2 = g k tanh(k h), solved by Newton's
@@ -72,12 +69,13 @@ public:
     // (rows: components, columns: x, y, z). Above the mean surface without stretching, the kinematics
     // of z = 0; with Wheeler stretching those of z stretched into the water column below the elevation.
     void kinematics(const Vec3& r, double t, Vec3& u, Vec3& a, Mat3* du, Mat3* da) const;
-    // The same velocity and acceleration (no gradients) from the Taylor polynomial of the lattice
-    // cell holding (r, t), computed into `cache` when it holds another cell: within 1e-10 of the
-    // local scale of each (docs/waves.md), at a fraction of the cost when a point stays in its cell
-    // for many evaluations. A pure function of (r, t): the cache changes the cost, not the result.
-    // With Wheeler stretching, kinematics() itself.
-    void expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache, Vec3& u, Vec3& a) const;
+    // The same velocity, acceleration and (when non-null) gradients from the Taylor polynomial of the
+    // lattice cell holding (r, t), computed into `cache` when it holds another cell: within 1e-10 of
+    // the local scale of each (docs/waves.md), at a fraction of the cost when a point stays in its
+    // cell for many evaluations. A pure function of (r, t): the cache changes the cost, not the
+    // result. With Wheeler stretching, kinematics() itself.
+    void expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache, Vec3& u, Vec3& a, Mat3* du = nullptr,
+                             Mat3* da = nullptr) const;
     // The depth bands of the lattice: below its top z, the components after the first `count` move
     // the water by less than 1e-12 of the local velocity scale; cells of side `cell` [m] in z and s,
     // and of `window` [s] in t, make every kept term's exponent move by at most kCellSpace +

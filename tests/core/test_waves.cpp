@@ -409,6 +409,25 @@ TEST(Waves, ExpandedKinematicsEqualTheSumWithinTheirBound) {
                 worstA = std::max(worstA, (ae - a).norm() / tolA);
                 EXPECT_LT((ue - u).norm(), tolU) << k.depth << " " << rs.transpose() << " " << ts;
                 EXPECT_LT((ae - a).norm(), tolA) << k.depth << " " << rs.transpose() << " " << ts;
+                // The gradients (the Jacobian's): the derivative in zeta of the polynomial, whose
+                // remainder is that of the acceleration for du (1e-10 of sum a w k e^{kz}) and one
+                // degree lower for da (3e-9 of sum a w^2 k e^{kz}); against kinematics().
+                Mat3 du, da, due, dae;
+                Vec3 ug, ag, ueg, aeg;
+                sea.kinematics(rs, ts, ug, ag, &du, &da);
+                sea.expanded_kinematics(rs, ts, moving, ueg, aeg, &due, &dae);
+                EXPECT_EQ(ueg, ue);  // the same polynomial with or without gradients
+                EXPECT_EQ(aeg, ae);
+                double sdu = 0.0, sda = 0.0, surfaceDu = 0.0, surfaceDa = 0.0;
+                for (const WaveComponent& c : sea.components()) {
+                    const double m = std::exp(c.k * z) + std::exp(-c.k * (2.0 * k.depth + z));
+                    sdu += c.velocityScale * c.k * m;
+                    sda += c.accelerationScale * c.k * m;
+                    surfaceDu += c.velocityScale * c.k * (1.0 + c.bottom);
+                    surfaceDa += c.accelerationScale * c.k * (1.0 + c.bottom);
+                }
+                EXPECT_LT((due - du).norm(), 1.1e-10 * sdu + 1e-12 * surfaceDu) << k.depth << " " << rs.transpose();
+                EXPECT_LT((dae - da).norm(), 3e-9 * sda + 1e-12 * surfaceDa) << k.depth << " " << rs.transpose();
             }
         }
         std::printf("depth %g m, %d components: largest error / tolerance: velocity %.2e, acceleration %.2e\n",
