@@ -16,7 +16,10 @@ from pathlib import Path
 ROWS = [
     ("residual (uc::CableSimulation::residual)", r"uc::CableSimulation::residual\("),
     ("element residuals (uc::CableModel::element_residual)", r"uc::CableModel::element_residual\("),
-    ("wave kinematics (uc::SeaState::kinematics)", r"uc::SeaState::kinematics\("),
+    ("wave kinematics, sums over the components (uc::SeaState::kinematics)", r"uc::SeaState::kinematics\("),
+    ("wave kinematics, Taylor polynomials (uc::SeaState::expanded_kinematics, their expansions included)",
+     r"uc::SeaState::expanded_kinematics\("),
+    ("wave kinematics, expansions (uc::SeaState::expand)", r"uc::SeaState::expand\("),
     ("cable Jacobian (uc::CableSimulation::jacobian)", r"uc::CableSimulation::jacobian\("),
     ("Newton matrix (Jacobian callback, assembly included)", r"uc::Integrator::jacobian_callback\("),
     ("band LU factorization (ls_setup)", r"uc::Integrator::ls_setup\("),

@@ -298,11 +298,12 @@ TEST(Waves, IrregularKinematicsEqualTheDirectSum) {
     // frequencies, corrected by each component's finite-depth shift (a Taylor polynomial when small,
     // else an exponential), restarted every 16 components. Against the plain sum: 1e-12 of the scale
     // sum a w^2 (the ladder's round-off ~16^2 ulp, the phases' k s ulp at s = 2 km). Shallow water
-    // (every shift large), deep water far from the origin, 5000 components, a mixed case.
+    // (every shift large), deep water far from the origin, 5000 components, a mixed case, a point
+    // near the bottom (where the image terms of the short waves equal their direct terms).
     struct Case { double depth; int n; double x, y, z; };
     for (const Case& k : {Case{30.0, 200, 3.0, 1.0, -12.0}, Case{3000.0, 400, 1500.0, -1300.0, -35.0},
                           Case{3000.0, 5000, -20.0, 7.0, -3.0}, Case{150.0, 300, 250.0, 40.0, -60.0},
-                          Case{150.0, 300, 250.0, 40.0, 2.0}}) {
+                          Case{150.0, 300, 250.0, 40.0, 2.0}, Case{150.0, 300, 250.0, 40.0, -146.0}}) {
         UCParams p = regular(2.0, 9.0, k.depth, 0.7);
         p.wavesMode = 2;
         p.wavesNComponents = k.n;
