@@ -28,7 +28,10 @@ constexpr double kNegligibleDepthExponent = -40.0;
 // acceleration scale (the node may lie up to half a side deeper than the point: e^{kCellSpace}).
 constexpr double kCellSpace = 0.17;
 constexpr double kCellTime = 0.55;
-// The image terms' polynomial gets the lowest degree whose remainder_bound is below this.
+// Lattice indices beyond this (a point or time no run reaches, or not a number) are not formed.
+constexpr double kLatticeReach = 1e15;
+// The image terms (the longest waves, whose exponents move less over a cell) enter the coefficients
+// up to the lowest degree whose remainder_bound is below this; their higher ones are negligible.
 constexpr double kRemainder = 1e-10;
 // A depth band leaves out the components that together move the water by less than this fraction
 // of the local velocity scale at its top.
@@ -467,9 +470,13 @@ void SeaState::expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache
     size_t b = 0;
     while (b + 1 < bands_.size() && z < bands_[b + 1].top) ++b;
     const DepthBand& band = bands_[b];
-    const long long iz = static_cast<long long>(std::floor((band.top - z) / band.cell));
-    const long long is = static_cast<long long>(std::floor(s / band.cell + 0.5));
-    const long long it = static_cast<long long>(std::floor(t / band.window));
+    const double cz = std::floor((band.top - z) / band.cell), cs = std::floor(s / band.cell + 0.5);
+    const double ct = std::floor(t / band.window);
+    if (!(std::fabs(cz) < kLatticeReach && std::fabs(cs) < kLatticeReach && std::fabs(ct) < kLatticeReach)) {
+        kinematics(r, t, u, a, du, da);  // beyond the lattice (or not a number): the sum itself
+        return;
+    }
+    const long long iz = static_cast<long long>(cz), is = static_cast<long long>(cs), it = static_cast<long long>(ct);
     const long long b64 = static_cast<long long>(b);
     if (cache.node[0] != b64 || cache.node[1] != iz || cache.node[2] != is || cache.node[3] != it) {
         expand(band, band.top - (static_cast<double>(iz) + 0.5) * band.cell, static_cast<double>(is) * band.cell,

@@ -452,3 +452,24 @@ TEST(Waves, ExpandedKinematicsWithStretchingAreTheSum) {
     EXPECT_EQ(u, ue);
     EXPECT_EQ(a, ae);
 }
+
+TEST(Waves, ExpandedKinematicsBeyondTheLatticeAreTheSum) {
+    // A point no run reaches (or not a number, while a diverging step is being rejected) forms no
+    // lattice index: the sum itself answers.
+    UCParams p = regular(2.0, 9.0, 3000.0, 0.2);
+    p.wavesMode = 2;
+    SeaState sea;
+    std::string error;
+    ASSERT_TRUE(sea.build(p, error)) << error;
+    WaveExpansion cache;
+    for (const Vec3& r : {Vec3(1e300, 0.0, -5.0), Vec3(0.0, -1e290, -5.0), Vec3(3.0, 0.0, -1e300)}) {
+        Vec3 u, a, ue, ae;
+        sea.kinematics(r, 12.0, u, a, nullptr, nullptr);
+        sea.expanded_kinematics(r, 12.0, cache, ue, ae);
+        EXPECT_EQ(u, ue);
+        EXPECT_EQ(a, ae);
+    }
+    Vec3 ue, ae;
+    sea.expanded_kinematics(Vec3(std::nan(""), 0.0, -5.0), 12.0, cache, ue, ae);
+    EXPECT_FALSE(std::isfinite(ue.norm()));  // not a number in, not a number out (no lattice index formed)
+}
