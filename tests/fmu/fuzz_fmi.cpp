@@ -139,6 +139,12 @@ private:
             if (member == "axialDamping") return std::pow(10.0, uniform(2.0, 7.0));
             return uniform(0.0, 3.0);
         }
+        if (name == "waves.period") return uniform(2.0, 15.0);
+        if (name == "waves.height") return uniform(0.0, 5.0);
+        if (name == "waves.direction") return uniform(-4.0, 4.0);
+        if (name == "waves.rampTime") return uniform(0.0, 20.0);
+        if (name == "waves.gamma") return uniform(1.0, 7.0);
+        if (name == "waterDepth") return uniform(10.0, 1000.0);
         if (name == "winch.minLength") return uniform(1.0, 100.0);
         if (name == "winch.maxLength") return uniform(100.0, 800.0);
         if (name == "winch.timeConstant") return std::pow(10.0, uniform(-3.0, 0.5));
@@ -176,6 +182,9 @@ private:
         if (name == "nElements") return integer(1, 24);
         if (name == "nSections") return integer(1, 4);
         if (name == "nAttachments") return integer(0, 3);
+        if (name == "waves.mode") return integer(0, 2);
+        if (name == "waves.nComponents") return integer(1, 300);
+        if (name == "waves.seed") return integer(0, 1 << 30);
         if (name.rfind("section[", 0) == 0 && name.find(".nElements") != std::string::npos) return integer(1, 12);
         return integer(0, 3);
     }
