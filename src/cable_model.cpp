@@ -106,7 +106,8 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch) : params_
         lineMassBase_ = line_.massPerLength * line_.length;
     }
     anchor_ = Vec3(params.anchor[0], params.anchor[1], params.anchor[2]);
-    body_ = PointBody{params.bodyMass, params.bodyVolume, params.bodyAddedMass, params.bodyCdA};
+    body_ = PointBody{params.bodyMass, params.bodyVolume, params.bodyAddedMass, params.bodyCdA,
+                      params.enableBodyFluidInertia != 0};
     std::string waveError;  // the parameters' check has refused waves that cannot be built
     sea_.build(params, waveError);
     if (!sea_.calm()) waveCache_.resize(static_cast<size_t>(nElements_) * kLoadQuadraturePoints + 1 + attachments_.size());
@@ -208,7 +209,7 @@ void CableModel::build_mesh(const UCParams& p) {
     std::vector<std::pair<double, PointBody>> points;
     for (int k = 0; k < p.nAttachments && k < UC_MAX_ATTACHMENTS; ++k) {
         const UCAttachment& a = p.attachment[k];
-        points.push_back({a.s, PointBody{a.mass, a.volume, a.addedMass, a.CdA}});
+        points.push_back({a.s, PointBody{a.mass, a.volume, a.addedMass, a.CdA, p.enableBodyFluidInertia != 0}});
     }
     std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     const double snap = 1e-9 * line_.length;  // an attachment this close to a node is on it
@@ -505,6 +506,7 @@ void add_point_body_residual(const PointBody& body, const FluidProps& fluid, con
     R += (body.mass + body.addedMass) * Eigen::Map<const Vec3>(rdd);
     R -= 0.5 * fluid.rho * body.CdA * speed * u;
     R.z() += wet;
+    if (body.fluidInertia && current.accelerates()) R -= (fluid.rho * body.volume + body.addedMass) * A;
 }
 
 void point_body_jacobian(const PointBody& body, const FluidProps& fluid, const CurrentField& current, WaveExpansion* waveCache,
@@ -521,6 +523,7 @@ void point_body_jacobian(const PointBody& body, const FluidProps& fluid, const C
     } else {
         K.col(2) -= dDrag_du * dU.col(2);  // drag of the body in a sheared current
     }
+    if (body.fluidInertia && current.waves()) K -= (fluid.rho * body.volume + body.addedMass) * dA;
     C = dDrag_du;
     M = (body.mass + body.addedMass) * Mat3::Identity();
 }

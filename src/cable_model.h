@@ -77,11 +77,13 @@ struct ElementForces {
 // A point body: an attachment on a node, or the towed body at the far end.
 struct PointBody {
     double mass = 0.0, volume = 0.0, addedMass = 0.0, CdA = 0.0;
+    bool fluidInertia = false;  // accelerating water pushes it (enableBodyFluidInertia)
 };
 
 // Residual terms of a point body at position r (velocity rd, acceleration rdd) in the water: inertia
-// (mass and added mass), submerged weight, drag on the velocity relative to the current and waves.
-// Added to R (3 values) in that order. waveCache: null, or the body's slot for the waves' expansion.
+// (mass and added mass), submerged weight, drag on the velocity relative to the current and waves, and
+// with fluidInertia the push of accelerating water (rho V + added mass) A (Froude-Krylov plus added
+// mass). Added to R (3 values) in that order. waveCache: null, or the body's slot for the waves' expansion.
 void add_point_body_residual(const PointBody& body, const FluidProps& fluid, const CurrentField& current, WaveExpansion* waveCache,
                              const double* r, const double* rd, const double* rdd, Vec3& R);
 // Its derivatives with respect to r, rd and rdd.

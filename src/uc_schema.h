@@ -108,6 +108,7 @@ typedef struct UCParams {
     double winchMinLength; /* winch.minLength [m]: shortest deployed unstretched length: hauling in stops there (a logged event); above the length of the sections after the first */
     double winchMaxLength; /* winch.maxLength [m]: longest deployed unstretched length: paying out stops there (a logged event) */
     double winchTimeConstant; /* winch.timeConstant [s]: constant-tension winch (`winchMode` 2): time constant τ of the tension control, commanded rate (T − `winch.tension`) Σ L/EA / τ, which the drum follows with the lag τ; a stiff line needs milliseconds ([docs/winch.md](docs/winch.md)) */
+    int enableBodyFluidInertia; /* enableBodyFluidInertia: accelerating water (waves, a changing current) pushes the towed body and the attachments with (ρ V + added mass) times its acceleration (Froude–Krylov plus added mass, as on the line); false leaves it out, as codes that put no fluid inertia on points */
 } UCParams;
 
 typedef struct UCInputs {
@@ -415,6 +416,7 @@ typedef struct UCOutputs {
     X(238, "winch.minLength", REAL, PARAMETER, winchMinLength) \
     X(239, "winch.maxLength", REAL, PARAMETER, winchMaxLength) \
     X(240, "winch.timeConstant", REAL, PARAMETER, winchTimeConstant) \
+    X(241, "enableBodyFluidInertia", BOOLEAN, PARAMETER, enableBodyFluidInertia) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -863,6 +865,7 @@ typedef struct UCOutputs {
     X(winchMinLength, 1.0) \
     X(winchMaxLength, 100000.0) \
     X(winchTimeConstant, 1.0) \
+    X(enableBodyFluidInertia, 1) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -1112,5 +1115,6 @@ typedef struct UCOutputs {
     X(enableBending, "enableBending") \
     X(enableAddedMass, "enableAddedMass") \
     X(enableTorsion, "enableTorsion") \
+    X(enableBodyFluidInertia, "enableBodyFluidInertia") \
 
 #endif /* UNDERWATERCABLE_UC_SCHEMA_H */

@@ -504,6 +504,8 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              'Longest deployed unstretched length: paying out stops there (a logged event)'),
     Variable('winch.timeConstant', 240, 'parameter', 'Real', 's', 1.0, 0.0001, 1000.0,
              'Constant-tension winch (winchMode 2): time constant tau of the tension control, commanded rate (T - winch.tension) L / (EA tau), which the drum follows with the lag tau'),
+    Variable('enableBodyFluidInertia', 241, 'parameter', 'Boolean', None, True, None, None,
+             'Accelerating water (waves, a changing current) pushes the towed body and the attachments: (rho body.volume + body.addedMass) times its acceleration, Froude-Krylov plus added mass, as on the line; false leaves it out (as lumped-mass codes that put no fluid inertia on points)'),
     Variable('tow.x', 1001, 'input', 'Real', 'm', 0.0, None, None,
              'x coordinate of the tow point'),
     Variable('tow.y', 1002, 'input', 'Real', 'm', 0.0, None, None,

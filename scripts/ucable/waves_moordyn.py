@@ -118,8 +118,10 @@ def fmu_parameters(riser: Riser, waves: Waves, n_elements: int, tolerance: float
          "waterDensity": riser.rho, "enableCompression": False, "enableSeabed": False,
          "initialDirection.x": 0.0, "initialDirection.z": -1.0, "nElements": n_elements, **waves.parameters(riser)}
     if riser.hanging:
+        # MoorDyn's point feels no acceleration of the water: neither does our body here
         p.update({"bottomEnd": 2, "body.mass": riser.body_mass, "body.volume": riser.body_volume,
-                  "body.addedMass": riser.rho * riser.body_volume * riser.body_ca, "body.CdA": riser.body_cda})
+                  "body.addedMass": riser.rho * riser.body_volume * riser.body_ca, "body.CdA": riser.body_cda,
+                  "enableBodyFluidInertia": False})
     else:
         p.update({"bottomEnd": 1, "anchor.x": 0.0, "anchor.y": 0.0, "anchor.z": -riser.depth})
     return p
@@ -429,8 +431,8 @@ def markdown(data: dict) -> str:
         out += ["", f"**Hanging**: the same line, {h['length']:g} m, hanging from the same point with a body at its "
                 f"end: {h['body_mass']:g} kg, {h['body_volume']:g} m³, drag area {h['body_cda']:g} m², added mass "
                 f"ρ V × {h['body_ca']:g} (FMU: `bottomEnd` 2 and `body.*`; MoorDyn: a free point with that mass, "
-                "volume, CdA and CA). Neither code puts the waves' acceleration on the body (no Froude–Krylov "
-                "force on it). Bottom tension: ours at the body; MoorDyn's in the line's last segment, half a "
+                "volume, CdA and CA). Neither code puts the waves' acceleration on the body here (no Froude–Krylov "
+                "force on it: MoorDyn's point has none, and the FMU runs with `enableBodyFluidInertia` false). Bottom tension: ours at the body; MoorDyn's in the line's last segment, half a "
                 "segment above the body, so its mean is higher by about half a segment's wet weight and converges "
                 "at first order. The body bounces on the elastic line at about 1 Hz after the waves' sudden start, "
                 "barely damped (a time constant of about 27 s): the statistics of this line start at 150 s."]

@@ -140,7 +140,8 @@ TEST(Equilibrium, TowReactionEqualsTotalExternalLoadToRoundOff) {
 
 namespace {
 
-// Jacobian of the assembled free residual against central finite differences.
+// Jacobian of the assembled free residual against central finite differences (in the model's waves,
+// if it has any, at t = 3 s).
 void check_assembled_jacobian(const UCParams& p) {
     CableModel m(p);
     const int n = m.n_free();
@@ -158,6 +159,8 @@ void check_assembled_jacobian(const UCParams& p) {
     Loads loads;
     loads.tow = TowTrajectory::at_rest_in_time(Vec3(0, 0, -5), Vec3(1, 0, 0), Vec3(0.1, 0, 0), 0.0);
     loads.current.uniform = Vec3(0.2, -0.3, 0);
+    loads.current.sea = &m.sea();
+    loads.current.time = 3.0;
     loads.endLoad = Vec3(10, 0, -20);
     loads.endLoadVelocity = Vec3(0.7, -0.2, 0.1);
     loads.endLoadDamping << 30, 2, -1, 0, 15, 0, 4, -3, 20;  // a drag-like matrix with a lift-like coupling
@@ -222,6 +225,33 @@ TEST(AssembledJacobian, MatchesFiniteDifferencesTowedBodyClamped) {
     check_assembled_jacobian(p);
 }
 
+TEST(AssembledJacobian, MatchesFiniteDifferencesTowedBodyInWaves) {
+    // A line with a towed body and an attachment in waves (the water's motion from the waves'
+    // polynomials, in finite depth): the assembly stays the residual's derivative. The waves' own
+    // terms are small against the line's stiffness here; they are checked at the point level
+    // (PointBody.JacobianInWavesIsTheDerivative, Waves.MorisonLoadJacobianInWavesMatchesFiniteDifferences).
+    UCParams p = hopland();
+    p.nElements = 4;
+    p.length = 20;
+    p.bottomEnd = UC_BOTTOM_TOWED_BODY;
+    p.bodyMass = 100;
+    p.bodyVolume = 0.05;
+    p.bodyAddedMass = 40;
+    p.bodyCdA = 0.3;
+    p.nAttachments = 1;
+    p.attachment[0].s = 10.0;
+    p.attachment[0].mass = 50;
+    p.attachment[0].volume = 0.08;
+    p.attachment[0].addedMass = 60;
+    p.attachment[0].CdA = 0.2;
+    p.wavesMode = 2;
+    p.wavesHeight = 3.0;
+    p.wavesPeriod = 6.0;
+    p.wavesNComponents = 40;
+    p.waterDepth = 40.0;  // the image terms count
+    check_assembled_jacobian(p);
+}
+
 TEST(AssembledJacobian, MatchesFiniteDifferencesAnchored) {
     UCParams p = hopland();
     p.nElements = 4;
@@ -230,6 +260,71 @@ TEST(AssembledJacobian, MatchesFiniteDifferencesAnchored) {
     p.anchor[0] = -10;
     p.anchor[2] = -20;
     check_assembled_jacobian(p);
+}
+
+TEST(PointBody, AcceleratingWaterPushesTheBodyUnlessSwitchedOff) {
+    // A uniform current accelerating at A pushes a body of volume V and added mass ma with
+    // (rho V + ma) A: the residual (force balance) changes by minus that, and not at all when
+    // enableBodyFluidInertia is false.
+    UCParams p = hopland();
+    p.bodyMass = 100;
+    p.bodyVolume = 0.05;
+    p.bodyAddedMass = 40;
+    p.bodyCdA = 0.3;
+    FluidProps fluid{p.waterDensity, p.gravity, 0.0, 0.0, 0.1, 1.0, 0.0, 1.0, 0.0, true};
+    const double r[3] = {1, 2, -30}, rd[3] = {0.3, 0, 0}, rdd[3] = {0, 0, 0.1};
+    CurrentField still;
+    still.uniform = Vec3(0.5, 0, 0);
+    CurrentField accelerating = still;
+    accelerating.rate = Vec3(0.2, -0.1, 0.05);
+    for (bool on : {true, false}) {
+        const PointBody body{p.bodyMass, p.bodyVolume, p.bodyAddedMass, p.bodyCdA, on};
+        Vec3 R0 = Vec3::Zero(), R1 = Vec3::Zero();
+        add_point_body_residual(body, fluid, still, nullptr, r, rd, rdd, R0);
+        add_point_body_residual(body, fluid, accelerating, nullptr, r, rd, rdd, R1);
+        const Vec3 expected = on ? Vec3(-(p.waterDensity * p.bodyVolume + p.bodyAddedMass) * accelerating.rate) : Vec3::Zero();
+        EXPECT_LT((R1 - R0 - expected).norm(), 1e-12 * (1.0 + expected.norm())) << on;
+    }
+}
+
+TEST(PointBody, JacobianInWavesIsTheDerivative) {
+    // dR/dr of a body in waves: the drag in the water's velocity gradient and the push of the
+    // accelerating water (rho V + ma) dA/dr, from the waves' polynomial (as in the residual), against
+    // central differences of the residual (h = 1e-4 m: truncation ~h^2 k^2 ~ 1e-10 relative).
+    UCParams p = hopland();
+    p.wavesMode = 2;
+    p.wavesHeight = 3.0;
+    p.wavesPeriod = 6.0;
+    p.wavesNComponents = 40;
+    p.waterDepth = 40.0;
+    p.bottomEnd = UC_BOTTOM_TOWED_BODY;
+    CableModel m(p);
+    FluidProps fluid{p.waterDensity, p.gravity, 0.0, 0.0, 0.1, 1.0, 0.0, 1.0, 0.0, true};
+    CurrentField water;
+    water.uniform = Vec3(0.2, 0.1, 0);
+    water.sea = &m.sea();
+    water.time = 7.3;
+    const double rd[3] = {0.3, -0.1, 0.2};
+    for (bool on : {true, false}) {
+        const PointBody body{100.0, 0.5, 500.0, 0.3, on};
+        WaveExpansion cache;
+        const double r[3] = {1.0, 2.0, -3.0};
+        Mat3 K, C, M;
+        point_body_jacobian(body, fluid, water, &cache, r, rd, K, C, M);
+        Mat3 numeric;
+        const double h = 1e-4;
+        for (int c = 0; c < 3; ++c) {
+            double rp[3] = {r[0], r[1], r[2]}, rm[3] = {r[0], r[1], r[2]};
+            rp[c] += h;
+            rm[c] -= h;
+            Vec3 Rp = Vec3::Zero(), Rm = Vec3::Zero();
+            add_point_body_residual(body, fluid, water, &cache, rp, rd, rd, Rp);
+            add_point_body_residual(body, fluid, water, &cache, rm, rd, rd, Rm);
+            numeric.col(c) = (Rp - Rm) / (2 * h);
+        }
+        EXPECT_GT(K.norm(), on ? 100.0 : 20.0) << on;  // the waves' gradients make it far from zero
+        EXPECT_LT((K - numeric).norm(), 1e-6 * K.norm()) << on << "\n" << K << "\n" << numeric;
+    }
 }
 
 namespace {
