@@ -211,45 +211,60 @@ TEST(AssembledJacobian, MatchesFiniteDifferencesFreeEndHinged) {
     check_assembled_jacobian(p);
 }
 
-TEST(AssembledJacobian, MatchesFiniteDifferencesTowedBodyClamped) {
+namespace {
+
+// A 20 m line of 4 elements with a towed body.
+UCParams towed_body_line() {
     UCParams p = hopland();
     p.nElements = 4;
     p.length = 20;
-    p.topEnd = UC_TOP_CLAMPED;
-    p.topTangent[0] = 0.3;
     p.bottomEnd = UC_BOTTOM_TOWED_BODY;
     p.bodyMass = 100;
     p.bodyVolume = 0.02;
     p.bodyAddedMass = 20;
     p.bodyCdA = 0.3;
+    return p;
+}
+
+}  // namespace
+
+TEST(AssembledJacobian, MatchesFiniteDifferencesTowedBodyClamped) {
+    UCParams p = towed_body_line();
+    p.topEnd = UC_TOP_CLAMPED;
+    p.topTangent[0] = 0.3;
     check_assembled_jacobian(p);
 }
+
+namespace {
+
+// An irregular sea of 40 components, Hs 3 m, Tp 6 s, in 40 m of water (where the image terms count).
+UCParams in_waves(UCParams p) {
+    p.wavesMode = 2;
+    p.wavesHeight = 3.0;
+    p.wavesPeriod = 6.0;
+    p.wavesNComponents = 40;
+    p.waterDepth = 40.0;
+    return p;
+}
+
+// Sea water around a point body (the line's own properties do not enter its loads).
+FluidProps point_body_water() { return FluidProps{1025.0, 9.81, 0.0, 0.0, 0.1, 1.0, 0.0, 1.0, 0.0, true}; }
+
+}  // namespace
 
 TEST(AssembledJacobian, MatchesFiniteDifferencesTowedBodyInWaves) {
     // A line with a towed body and an attachment in waves (the water's motion from the waves'
     // polynomials, in finite depth): the assembly stays the residual's derivative. The waves' own
     // terms are small against the line's stiffness here; they are checked at the point level
     // (PointBody.JacobianInWavesIsTheDerivative, Waves.MorisonLoadJacobianInWavesMatchesFiniteDifferences).
-    UCParams p = hopland();
-    p.nElements = 4;
-    p.length = 20;
-    p.bottomEnd = UC_BOTTOM_TOWED_BODY;
-    p.bodyMass = 100;
-    p.bodyVolume = 0.05;
-    p.bodyAddedMass = 40;
-    p.bodyCdA = 0.3;
+    UCParams p = towed_body_line();
     p.nAttachments = 1;
     p.attachment[0].s = 10.0;
     p.attachment[0].mass = 50;
     p.attachment[0].volume = 0.08;
     p.attachment[0].addedMass = 60;
     p.attachment[0].CdA = 0.2;
-    p.wavesMode = 2;
-    p.wavesHeight = 3.0;
-    p.wavesPeriod = 6.0;
-    p.wavesNComponents = 40;
-    p.waterDepth = 40.0;  // the image terms count
-    check_assembled_jacobian(p);
+    check_assembled_jacobian(in_waves(p));
 }
 
 TEST(AssembledJacobian, MatchesFiniteDifferencesAnchored) {
@@ -266,23 +281,19 @@ TEST(PointBody, AcceleratingWaterPushesTheBodyUnlessSwitchedOff) {
     // A uniform current accelerating at A pushes a body of volume V and added mass ma with
     // (rho V + ma) A: the residual (force balance) changes by minus that, and not at all when
     // enableBodyFluidInertia is false.
-    UCParams p = hopland();
-    p.bodyMass = 100;
-    p.bodyVolume = 0.05;
-    p.bodyAddedMass = 40;
-    p.bodyCdA = 0.3;
-    FluidProps fluid{p.waterDensity, p.gravity, 0.0, 0.0, 0.1, 1.0, 0.0, 1.0, 0.0, true};
+    const FluidProps fluid = point_body_water();
+    const double volume = 0.05, addedMass = 40.0;
     const double r[3] = {1, 2, -30}, rd[3] = {0.3, 0, 0}, rdd[3] = {0, 0, 0.1};
     CurrentField still;
     still.uniform = Vec3(0.5, 0, 0);
     CurrentField accelerating = still;
     accelerating.rate = Vec3(0.2, -0.1, 0.05);
     for (bool on : {true, false}) {
-        const PointBody body{p.bodyMass, p.bodyVolume, p.bodyAddedMass, p.bodyCdA, on};
+        const PointBody body{100.0, volume, addedMass, 0.3, on};
         Vec3 R0 = Vec3::Zero(), R1 = Vec3::Zero();
         add_point_body_residual(body, fluid, still, nullptr, r, rd, rdd, R0);
         add_point_body_residual(body, fluid, accelerating, nullptr, r, rd, rdd, R1);
-        const Vec3 expected = on ? Vec3(-(p.waterDensity * p.bodyVolume + p.bodyAddedMass) * accelerating.rate) : Vec3::Zero();
+        const Vec3 expected = on ? Vec3(-(fluid.rho * volume + addedMass) * accelerating.rate) : Vec3::Zero();
         EXPECT_LT((R1 - R0 - expected).norm(), 1e-12 * (1.0 + expected.norm())) << on;
     }
 }
@@ -291,15 +302,8 @@ TEST(PointBody, JacobianInWavesIsTheDerivative) {
     // dR/dr of a body in waves: the drag in the water's velocity gradient and the push of the
     // accelerating water (rho V + ma) dA/dr, from the waves' polynomial (as in the residual), against
     // central differences of the residual (h = 1e-4 m: truncation ~h^2 k^2 ~ 1e-10 relative).
-    UCParams p = hopland();
-    p.wavesMode = 2;
-    p.wavesHeight = 3.0;
-    p.wavesPeriod = 6.0;
-    p.wavesNComponents = 40;
-    p.waterDepth = 40.0;
-    p.bottomEnd = UC_BOTTOM_TOWED_BODY;
-    CableModel m(p);
-    FluidProps fluid{p.waterDensity, p.gravity, 0.0, 0.0, 0.1, 1.0, 0.0, 1.0, 0.0, true};
+    const CableModel m(in_waves(hopland()));
+    const FluidProps fluid = point_body_water();
     CurrentField water;
     water.uniform = Vec3(0.2, 0.1, 0);
     water.sea = &m.sea();
