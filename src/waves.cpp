@@ -350,7 +350,8 @@ double remainder_bound(double x, int d) {
 
 }  // namespace
 
-void SeaState::expand(const DepthBand& band, double z, double s, double t, WaveExpansion& e) const {
+void SeaState::expand(const DepthBand& band, double z, double s, double t, bool surface,
+                      WaveExpansion::Polynomial& e) const {
     constexpr int D = WaveExpansion::kDegree, T = WaveExpansion::kTerms;
     // U = u_s + i w = sum a w (G + conj(H)): G = e^{k zeta - i (w t - p)}, and the bottom's image
     // H = e^{-k (2h + conj(zeta)) - i (w t - p)}, whose conjugate e^{-k (2h + zeta) + i (w t - p)} is
@@ -364,7 +365,7 @@ void SeaState::expand(const DepthBand& band, double z, double s, double t, WaveE
     const double deepest = z - 0.5 * band.cell;
     int nImage = 0;
     double kImage = 0.0, wImage = 0.0;
-    for (int i = 0; i < band.count; ++i) {
+    for (int i = 0; i < band.count && !surface; ++i) {
         const WaveComponent& c = components_[i];
         if (c.bottom == 0.0 || -2.0 * c.k * (depth_ + deepest) < std::log(kNegligibleBottom)) break;
         nImage = i + 1, kImage = c.k, wImage = c.omega;
@@ -386,11 +387,14 @@ void SeaState::expand(const DepthBand& band, double z, double s, double t, WaveE
         ladder.next(static_cast<size_t>(i), Fr, Fi);
         const Pair G = {Fr * ph.cos[i] + Fi * ph.sin[i], Fi * ph.cos[i] - Fr * ph.sin[i]};
         const double* w = taylorWeights_.data() + static_cast<size_t>(i) * T;
+        // the weights are a w k^m w^n / (m! n!): for the surface, a in place of a w (depth factor included)
+        const double weight = surface ? c.amplitude : c.velocityScale;
+        const Pair Gw = surface ? (c.amplitude / c.velocityScale) * G : G;
         if (c.deepMoments) {
-            Pair p = c.velocityScale * G;
+            Pair p = weight * G;
             for (int j = 0; j <= 2 * D; ++j) moment[j] += p, p *= c.omega;
         } else {
-            for (int j = 0; j < T; ++j) sumG[j] += w[j] * G;
+            for (int j = 0; j < T; ++j) sumG[j] += w[j] * Gw;
         }
         if (i < nImage) {
             const double m2 = G[0] * G[0] + G[1] * G[1];  // e^{2kz}
@@ -459,46 +463,64 @@ inline void horner_rows(const double* c, double dt, double zr, double zi, Polyno
 
 }  // namespace
 
+const WaveExpansion::Polynomial& SeaState::cell_polynomial(size_t b, double z, double s, double t, bool surface,
+                                                         WaveExpansion::Polynomial& e) const {
+    const DepthBand& band = bands_[b];
+    const long long iz = static_cast<long long>(std::floor((band.top - z) / band.cell));
+    const long long is = static_cast<long long>(std::floor(s / band.cell + 0.5));
+    const long long it = static_cast<long long>(std::floor(t / band.window));
+    const long long b64 = static_cast<long long>(b);
+    if (e.node[0] != b64 || e.node[1] != iz || e.node[2] != is || e.node[3] != it) {
+        expand(band, surface ? 0.0 : band.top - (static_cast<double>(iz) + 0.5) * band.cell,
+               static_cast<double>(is) * band.cell, (static_cast<double>(it) + 0.5) * band.window, surface, e);
+        e.node[0] = b64, e.node[1] = iz, e.node[2] = is, e.node[3] = it;
+    }
+    return e;
+}
+
 void SeaState::expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache, Vec3& u, Vec3& a, Mat3* du,
                                    Mat3* da) const {
-    if (components_.empty() || wheeler_) {
+    constexpr int D = WaveExpansion::kDegree;
+    if (components_.empty()) {
         kinematics(r, t, u, a, du, da);
         return;
     }
-    const double z = std::min(r.z(), 0.0);
+    double z = std::min(r.z(), 0.0);
     const double s = cosb_ * r.x() + sinb_ * r.y();
-    size_t b = 0;
-    while (b + 1 < bands_.size() && z < bands_[b + 1].top) ++b;
-    const DepthBand& band = bands_[b];
-    const double cz = std::floor((band.top - z) / band.cell), cs = std::floor(s / band.cell + 0.5);
-    const double ct = std::floor(t / band.window);
-    if (!(std::fabs(cz) < kLatticeReach && std::fabs(cs) < kLatticeReach && std::fabs(ct) < kLatticeReach)) {
-        kinematics(r, t, u, a, du, da);  // beyond the lattice (or not a number): the sum itself
+    // The lattice's indices of the point (the surface's: z = 0, band 0), unless beyond its reach (or
+    // not a number): then the sum itself.
+    const double top = bands_[0].cell, window = bands_[0].window;
+    if (!(std::fabs(r.z() / top) < kLatticeReach && std::fabs(s / top) < kLatticeReach &&
+          std::fabs(t / window) < kLatticeReach)) {
+        kinematics(r, t, u, a, du, da);
         return;
     }
-    const long long iz = static_cast<long long>(cz), is = static_cast<long long>(cs), it = static_cast<long long>(ct);
-    const long long b64 = static_cast<long long>(b);
-    if (cache.node[0] != b64 || cache.node[1] != iz || cache.node[2] != is || cache.node[3] != it) {
-        expand(band, band.top - (static_cast<double>(iz) + 0.5) * band.cell, static_cast<double>(is) * band.cell,
-               (static_cast<double>(it) + 0.5) * band.window, cache);
-        cache.node[0] = b64, cache.node[1] = iz, cache.node[2] = is, cache.node[3] = it;
+    const double f = ramp(t);
+    if (wheeler_) {  // z stretched into the water column below the elevation, as kinematics() does
+        const WaveExpansion::Polynomial& e = cell_polynomial(0, 0.0, s, t, true, cache.surface);
+        Polynomial p;
+        horner_rows<D, D, false>(e.c, t - e.t, 0.0, s - e.s, p);
+        const double eta = f * p.U[0];
+        z = std::min(depth_ * (r.z() - eta) / (depth_ + eta), 0.0);
     }
-    constexpr int D = WaveExpansion::kDegree;
-    const double dz = z - cache.z, ds = s - cache.s, dt = t - cache.t;
+    size_t b = 0;
+    while (b + 1 < bands_.size() && z < bands_[b + 1].top) ++b;
+    const WaveExpansion::Polynomial& e = cell_polynomial(b, z, s, t, false, cache.water);
+    const double dz = z - e.z, ds = s - e.s, dt = t - e.t;
     Polynomial p;
     const bool gradients = du != nullptr || da != nullptr;
     if (gradients) {
-        horner_rows<D, D, true>(cache.c, dt, dz, ds, p);
+        horner_rows<D, D, true>(e.c, dt, dz, ds, p);
     } else {
-        horner_rows<D, D, false>(cache.c, dt, dz, ds, p);
+        horner_rows<D, D, false>(e.c, dt, dz, ds, p);
     }
-    const double f = ramp(t);
     u = f * Vec3(p.U[0] * cosb_, p.U[0] * sinb_, p.U[1]);
     a = f * Vec3(p.A[0] * cosb_, p.A[0] * sinb_, p.A[1]);
     if (!gradients) return;
     // U = u_s + i w is analytic in zeta = z + i s: d/dz = U', d/ds = i U'. Above the mean surface
-    // (no stretching) the kinematics of z = 0, which do not change with z.
-    const double zScale = r.z() < 0.0 ? 1.0 : 0.0;
+    // without stretching the kinematics of z = 0, which do not change with z; the stretching's own
+    // slope is left out (as in kinematics()).
+    const double zScale = r.z() < 0.0 || wheeler_ ? 1.0 : 0.0;
     auto gradient = [&](const Pair& d, Mat3& out) {
         const double dus_dz = zScale * d[0], dw_dz = zScale * d[1], dus_ds = -d[1], dw_ds = d[0];
         out << dus_ds * cosb_ * cosb_, dus_ds * cosb_ * sinb_, dus_dz * cosb_,

@@ -31,14 +31,18 @@ struct WaveComponent {
 // conjugates of the bottom's image terms, a w e^{-k (2h + zeta) + i (w t - p)}: an analytic function
 // of zeta, whose coefficients are those of the polynomial in (zeta - zeta_node, t - t_node).
 struct WaveExpansion {
-    static constexpr int kDegree = 12;  // total degree of the velocity's polynomial
+    static constexpr int kDegree = 12;  // total degree of the polynomials
     static constexpr int kTerms = (kDegree + 1) * (kDegree + 2) / 2;
     // Where row m (the terms dzeta^m dt^n) begins in a polynomial of degree kDegree
     static constexpr int offset(int m) { return m * (kDegree + 1) - m * (m - 1) / 2; }
-    long long node[4] = {-1, 0, 0, 0};  // depth band, then the cell's indices in z, s and t
-    double z = 0.0, s = 0.0, t = 0.0;  // the node
-    // The coefficient of dzeta^m dt^n as (real, imaginary) pairs, rows m ascending, n ascending in a row
-    double c[2 * kTerms] = {};
+    struct Polynomial {
+        long long node[4] = {-1, 0, 0, 0};  // depth band, then the cell's indices in z, s and t
+        double z = 0.0, s = 0.0, t = 0.0;  // the node
+        // The coefficient of dzeta^m dt^n as (real, imaginary) pairs, rows m ascending, n ascending
+        double c[2 * kTerms] = {};
+    };
+    Polynomial water;    // U = u_s + i w
+    Polynomial surface;  // sum a e^{i (k s - w t + p)}, whose real part is the elevation (Wheeler stretching)
 };
 
 // The wavenumber of frequency omega in water of depth h: omega^2 = g k tanh(k h), solved by Newton's
@@ -73,7 +77,8 @@ public:
     // lattice cell holding (r, t), computed into `cache` when it holds another cell: within 1e-10 of
     // the local scale of each (docs/waves.md), at a fraction of the cost when a point stays in its
     // cell for many evaluations. A pure function of (r, t): the cache changes the cost, not the
-    // result. With Wheeler stretching, kinematics() itself.
+    // result. With Wheeler stretching the elevation comes from a polynomial of its own (z stretched
+    // with it, as kinematics() does).
     void expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache, Vec3& u, Vec3& a, Mat3* du = nullptr,
                              Mat3* da = nullptr) const;
     // The depth bands of the lattice: below its top z, the components after the first `count` move
@@ -116,8 +121,12 @@ private:
         double Er_ = 0.0, Ei_ = 0.0, Rr_ = 0.0, Ri_ = 0.0, Qr_ = 1.0, Qi_ = 0.0;
     };
     void build_expansions();
-    // The coefficients of the node (z, s, t) of a cell of the band into e.
-    void expand(const DepthBand& band, double z, double s, double t, WaveExpansion& e) const;
+    // The coefficients of the node (z, s, t) of a cell of the band into e: of U, or with surface of the
+    // complex elevation (amplitudes a instead of a w, no image terms, z = 0).
+    void expand(const DepthBand& band, double z, double s, double t, bool surface, WaveExpansion::Polynomial& e) const;
+    // The polynomial of the lattice cell of band b holding (z, s, t), computed into e if it holds another.
+    const WaveExpansion::Polynomial& cell_polynomial(size_t b, double z, double s, double t, bool surface,
+                                                     WaveExpansion::Polynomial& e) const;
     std::vector<WaveComponent> components_;
     mutable Phases phases_, expansionPhases_;
     double depth_ = 0.0, rampTime_ = 0.0, cosb_ = 1.0, sinb_ = 0.0;

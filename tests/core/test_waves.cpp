@@ -436,21 +436,57 @@ TEST(Waves, ExpandedKinematicsEqualTheSumWithinTheirBound) {
     }
 }
 
-TEST(Waves, ExpandedKinematicsWithStretchingAreTheSum) {
-    UCParams p = regular(2.0, 9.0, 50.0, 0.2);
-    p.wavesMode = 2;
-    p.wavesNComponents = 50;
-    p.wavesStretching = 1;
-    SeaState sea;
-    std::string error;
-    ASSERT_TRUE(sea.build(p, error)) << error;
-    WaveExpansion cache;
-    const Vec3 r(3.0, 1.0, -4.0);
-    Vec3 u, a, ue, ae;
-    sea.kinematics(r, 12.0, u, a, nullptr, nullptr);
-    sea.expanded_kinematics(r, 12.0, cache, ue, ae);
-    EXPECT_EQ(u, ue);
-    EXPECT_EQ(a, ae);
+TEST(Waves, ExpandedKinematicsWithStretchingFollowTheSum) {
+    // Wheeler stretching: the elevation from its own polynomial (amplitudes a, z = 0; remainder below
+    // 6e-12 of sum a), z stretched with it, then the water's polynomial at the stretched depth. Against
+    // kinematics() (the same stretching with the summed elevation): the bounds of the unstretched case at
+    // the stretched depth, plus the elevation's error times the kinematics' slope (k |U| 6e-12 sum a,
+    // below 1e-12 of the local scale here), plus the sum's own 1e-12 round-off of the surface scale.
+    for (double depth : {25.0, 400.0}) {
+        UCParams p = regular(2.0, 9.0, depth, 0.2);
+        p.wavesMode = 2;
+        p.wavesNComponents = 80;
+        p.wavesStretching = 1;
+        SeaState sea;
+        std::string error;
+        ASSERT_TRUE(sea.build(p, error)) << error;
+        double surfaceU = 0.0, surfaceA = 0.0, surfaceDu = 0.0, surfaceDa = 0.0;
+        for (const WaveComponent& c : sea.components()) {
+            surfaceU += c.velocityScale * (1.0 + c.bottom);
+            surfaceA += c.accelerationScale * (1.0 + c.bottom);
+            surfaceDu += c.velocityScale * c.k * (1.0 + c.bottom);
+            surfaceDa += c.accelerationScale * c.k * (1.0 + c.bottom);
+        }
+        WaveExpansion cache;
+        SplitMix64 random(3);
+        for (int j = 0; j < 200; ++j) {
+            const double x = 100.0 * random.uniform(), zeta = -0.9 * depth * random.uniform() * random.uniform();
+            const Vec3 r(x, 10.0 * random.uniform(), j % 5 == 0 ? 1.5 * random.uniform() - 0.5 : zeta);
+            const double t = 300.0 * random.uniform();
+            Vec3 u, a, ue, ae;
+            Mat3 du, da, due, dae;
+            sea.kinematics(r, t, u, a, &du, &da);
+            sea.expanded_kinematics(r, t, cache, ue, ae, &due, &dae);
+            const double eta = sea.elevation(r.x(), r.y(), t);
+            const double z = std::min(depth * (r.z() - eta) / (depth + eta), 0.0);
+            double su = 0.0, sa = 0.0;
+            for (const WaveComponent& c : sea.components()) {
+                const double m = std::exp(c.k * z) + std::exp(-c.k * (2.0 * depth + z));
+                su += c.velocityScale * m;
+                sa += c.accelerationScale * m;
+            }
+            EXPECT_LT((ue - u).norm(), 8e-12 * su + 1e-12 * surfaceU) << depth << " " << r.transpose() << " " << t;
+            EXPECT_LT((ae - a).norm(), 1.1e-10 * sa + 1e-12 * surfaceA) << depth << " " << r.transpose() << " " << t;
+            double sdu = 0.0, sda = 0.0;  // the gradients' scales, sum a w k (...) and sum a w^2 k (...)
+            for (const WaveComponent& c : sea.components()) {
+                const double m = std::exp(c.k * z) + std::exp(-c.k * (2.0 * depth + z));
+                sdu += c.velocityScale * c.k * m;
+                sda += c.accelerationScale * c.k * m;
+            }
+            EXPECT_LT((due - du).norm(), 1.1e-10 * sdu + 1e-12 * surfaceDu) << depth << " " << r.transpose();
+            EXPECT_LT((dae - da).norm(), 3e-9 * sda + 1e-12 * surfaceDa) << depth << " " << r.transpose();
+        }
+    }
 }
 
 TEST(Waves, ExpandedKinematicsBeyondTheLatticeAreTheSum) {
