@@ -20,6 +20,24 @@
  * heading0 until turnStart, then turning at turnRate until it has changed by turnAngle.
  * Integration: classical Runge-Kutta, ceil(h / maxSubstep) substeps per communication step.
  *
+ * Waves (waves.mode 1 or 2; 0, the default, leaves the vessel above untouched): the wave-frequency motion of
+ * the vessel is superimposed on the manoeuvring one, which it does not feed back into (no wave forces act
+ * on the 3 DOF model). The sea is the cable FMU's (sea_state.c: the same components from the same waves.*
+ * parameters), the motion that of its displacement RAOs (rao_table.c: the table resources/rao.csv, the
+ * VesselRAO FMU's). The RAO reference point is the vessel's origin (x, y) on the waterline, the motions
+ * are along and about the body axes of the current heading psi (z up): a component of amplitude a,
+ * frequency w, wavenumber k along the direction of travel beta and phase p has at the reference point X(t)
+ * the elevation a cos(theta), theta = w t - k.X(t) - p, whose phase advances at the encounter frequency
+ * we = w - k.dX/dt (exact: X is the manoeuvring position). It moves degree of freedom j by a |R_j| cos(theta
+ * - phi_j), R_j = |R_j| e^(i phi_j) the RAO at the encounter period 2 pi / |we| and the relative heading
+ * beta - psi(t), conjugated when we < 0 (the vessel overtakes the waves: the crests pass from the stern).
+ * The tow point at r = towPoint (body axes) moves by (surge, sway, heave) + (roll, pitch, yaw) x r, turned
+ * into Earth axes by psi(t). Velocity and acceleration are the time derivatives of that displacement with
+ * the RAO held at its current value (quasi-steady): exact at steady speed and heading, during a
+ * manoeuvre short by the rate of change of the RAO, a relative error of the order of the turn rate (or
+ * the rate of change of we) over we. Default waves.mode 0 computes none of it (today's results bit for
+ * bit, and no RAO table is read).
+ *
  * Defaults: a ~20 m, 50 t survey vessel; resistance 1.25 kN at 2.4 kn and 15 kN at 10 kn; surge added
  * mass 5 % and sway 80 % of the mass; yaw inertia m (L/4)^2 with 50 % added inertia; thrust 25 kN
  * ahead, 12 kN astern; rudder moment 200 kN m; tow point on the centreline 10 m aft of the centre of
@@ -27,10 +45,16 @@
  */
 #include <math.h>
 #include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
 
 #include "partner.h"
+#include "rao_table.h"
+#include "sea_parameters.h"
+#include "sea_state.h"
 
 static const double kTwoPi = 6.28318530717958647692;
+static const double kPi = 3.14159265358979323846;
 
 enum { X, Y, PSI, U, V, R, INTEGRAL, N_STATES };
 
@@ -44,6 +68,7 @@ typedef struct VesselData {
     double x0, y0, heading0, speed0, speed1, rampStart, rampDuration;
     double turnStart, turnRate, turnAngle;
     double maxSubstep;
+    PMSeaParameters sea; /* the waves (the cable FMU's names and meaning) */
     /* inputs */
     double towForce[3];
     /* states */
@@ -51,7 +76,15 @@ typedef struct VesselData {
     /* outputs */
     double tow[3], towVelocity[3], towAcceleration[3];
     double x, y, heading, surge, sway, yawRate, speed, thrust, rudderMoment;
+    double waveMotion[PM_RAO_DOF], waveElevation;
 } VesselData;
+
+/* The derived data of the waves: the sea's components and the RAO table (none in calm water). */
+typedef struct VesselWaves {
+    size_t n;
+    PMWaveComponent* sea;
+    PMRAOTable table;
+} VesselWaves;
 
 typedef struct Commands {
     double thrust, moment, integralRate;
@@ -123,8 +156,59 @@ static void derivatives(const VesselData* d, double t, const double* x, const do
     dx[INTEGRAL] = cmd.integralRate;
 }
 
-/* Tow point position, velocity and acceleration (rigid-body kinematics of the point (xt, yt)). */
-static void update_outputs(VesselData* d, double t) {
+/* Adds the wave-frequency motion at time t of the vessel in the manoeuvring state x (rates dx) to the tow
+   point's position, velocity and acceleration (Earth axes); the six motions and the elevation at the
+   reference point to the outputs. */
+static void add_wave_motion(VesselData* d, const VesselWaves* w, double t, const double* x, const double* dx,
+                            double* pos, double* vel, double* acc) {
+    const double c = cos(x[PSI]), s = sin(x[PSI]), r = x[R], dr = dx[R];
+    const double ax = c * dx[U] - s * dx[V] - r * dx[Y], ay = s * dx[U] + c * dx[V] + r * dx[X]; /* Earth */
+    const double cb = cos(d->sea.direction), sb = sin(d->sea.direction);
+    const double mu = (d->sea.direction - x[PSI]) * 180.0 / kPi;
+    /* the motions (q), their rates (v) and accelerations (a) without the ramp */
+    double q[PM_RAO_DOF] = {0}, v[PM_RAO_DOF] = {0}, a[PM_RAO_DOF] = {0};
+    for (size_t i = 0; i < w->n; ++i) {
+        const PMWaveComponent* cw = &w->sea[i];
+        const double kx = cw->k * cb, ky = cw->k * sb;
+        const double theta = cw->omega * t - (kx * x[X] + ky * x[Y]) - cw->phase;
+        const double we = cw->omega - (kx * dx[X] + ky * dx[Y]), dwe = -(kx * ax + ky * ay);
+        const double sign = we < 0.0 ? -1.0 : 1.0;
+        double re[PM_RAO_DOF], im[PM_RAO_DOF];
+        pm_rao_interpolate(&w->table, we != 0.0 ? kTwoPi / fabs(we) : HUGE_VAL, mu, re, im);
+        const double ct = cw->amplitude * cos(theta), st = cw->amplitude * sin(theta);
+        for (int j = 0; j < PM_RAO_DOF; ++j) {
+            const double m = re[j] * ct + sign * im[j] * st, dm = sign * im[j] * ct - re[j] * st; /* dm: d/dtheta */
+            q[j] += m;
+            v[j] += we * dm;
+            a[j] += dwe * dm - we * we * m;
+        }
+    }
+    double f, df, ddf;
+    pm_sea_ramp(d->sea.rampTime, t, &f, &df, &ddf);
+    for (int j = 0; j < PM_RAO_DOF; ++j) {
+        const double q0 = q[j], v0 = v[j], a0 = a[j];
+        q[j] = f * q0;
+        v[j] = f * v0 + df * q0;
+        a[j] = f * a0 + 2.0 * df * v0 + ddf * q0;
+        d->waveMotion[j] = q[j];
+    }
+    /* the tow point's displacement, rate and acceleration in the body axes, which turn at r about z */
+    double p[3], dp[3], ddp[3];
+    pm_rao_point(q, d->towPoint, p);
+    pm_rao_point(v, d->towPoint, dp);
+    pm_rao_point(a, d->towPoint, ddp);
+    const double vb[2] = {dp[0] - r * p[1], dp[1] + r * p[0]};
+    const double ab[2] = {ddp[0] - 2.0 * r * dp[1] - dr * p[1] - r * r * p[0],
+                          ddp[1] + 2.0 * r * dp[0] + dr * p[0] - r * r * p[1]};
+    pos[0] += c * p[0] - s * p[1], pos[1] += s * p[0] + c * p[1], pos[2] += p[2];
+    vel[0] += c * vb[0] - s * vb[1], vel[1] += s * vb[0] + c * vb[1], vel[2] += dp[2];
+    acc[0] += c * ab[0] - s * ab[1], acc[1] += s * ab[0] + c * ab[1], acc[2] += ddp[2];
+    d->waveElevation = pm_sea_elevation(w->sea, w->n, d->sea.direction, d->sea.rampTime, x[X], x[Y], t);
+}
+
+/* Tow point position, velocity and acceleration (rigid-body kinematics of the point (xt, yt)), with the
+   wave motion superimposed in waves. */
+static void update_outputs(VesselData* d, const VesselWaves* w, double t) {
     const double* x = d->state;
     double dx[N_STATES];
     derivatives(d, t, x, d->towForce, dx);
@@ -151,6 +235,39 @@ static void update_outputs(VesselData* d, double t) {
     Commands cmd = autopilot(d, t, x, c * d->towForce[0] + s * d->towForce[1]);
     d->thrust = cmd.thrust;
     d->rudderMoment = cmd.moment;
+    if (w != NULL && w->n > 0) add_wave_motion(d, w, t, x, dx, d->tow, d->towVelocity, d->towAcceleration);
+}
+
+static void release_waves(void* derived) {
+    VesselWaves* w = derived;
+    if (w == NULL) return;
+    free(w->sea);
+    pm_rao_free(&w->table);
+    free(w);
+}
+
+/* The sea's components and the RAO table; in calm water neither (nor the resources). */
+static void* build_waves(const void* data, const char* resources, char* msg, size_t msgSize) {
+    const VesselData* d = data;
+    const PMWaves waves = pm_waves_of(&d->sea);
+    VesselWaves* w = calloc(1, sizeof *w);
+    if (w == NULL) {
+        snprintf(msg, msgSize, "out of memory");
+        return NULL;
+    }
+    w->n = pm_sea_size(&waves);
+    if (w->n == 0) return w;
+    w->sea = calloc(w->n, sizeof *w->sea);
+    if (w->sea == NULL) {
+        snprintf(msg, msgSize, "out of memory for %zu wave components", w->n);
+        release_waves(w);
+        return NULL;
+    }
+    if (pm_sea_components(&waves, w->sea, msg, msgSize) != 0 || pm_rao_load(resources, &w->table, msg, msgSize) != 0) {
+        release_waves(w);
+        return NULL;
+    }
+    return w;
 }
 
 static int vessel_check(const void* data, char* msg, size_t msgSize) {
@@ -159,7 +276,6 @@ static int vessel_check(const void* data, char* msg, size_t msgSize) {
 }
 
 static int vessel_initialize(void* data, const void* derived, double t0, char* msg, size_t msgSize) {
-    (void)derived;
     (void)msg, (void)msgSize;
     VesselData* d = data;
     d->state[X] = d->x0;
@@ -167,12 +283,11 @@ static int vessel_initialize(void* data, const void* derived, double t0, char* m
     d->state[PSI] = d->heading0;
     d->state[U] = d->speed0;
     d->state[V] = d->state[R] = d->state[INTEGRAL] = 0.0;
-    update_outputs(d, t0);
+    update_outputs(d, derived, t0);
     return 0;
 }
 
 static int vessel_do_step(void* data, const void* derived, double t, double h, char* msg, size_t msgSize) {
-    (void)derived;
     (void)msg, (void)msgSize;
     VesselData* d = data;
     int n = (int)ceil(h / d->maxSubstep - 1e-12);
@@ -190,7 +305,7 @@ static int vessel_do_step(void* data, const void* derived, double t, double h, c
         derivatives(d, ti + dt, tmp, d->towForce, k4);
         for (int j = 0; j < N_STATES; ++j) x[j] += dt / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
     }
-    update_outputs(d, t + h);
+    update_outputs(d, derived, t + h);
     return 0;
 }
 
@@ -267,17 +382,28 @@ static const PMVariable kVariables[] = {
     O(speed, "speed", "m/s", 0, "Speed through the water, hypot(u, v)"),
     O(thrust, "thrust", "N", 1, "Thrust of the autopilot"),
     O(rudderMoment, "rudderMoment", "N.m", 0, "Rudder yaw moment of the autopilot"),
+    /* the superimposed wave motion (after the variables above, whose value references stay) */
+    PM_SEA_VARIABLES(VesselData, sea),
+    O(waveMotion[0], "waveMotion.surge", "m", 0, "Wave-frequency surge of the RAO reference point (body x)"),
+    O(waveMotion[1], "waveMotion.sway", "m", 0, "Wave-frequency sway of the RAO reference point (body y, to port)"),
+    O(waveMotion[2], "waveMotion.heave", "m", 0, "Wave-frequency heave of the RAO reference point (up)"),
+    O(waveMotion[3], "waveMotion.roll", "rad", 0, "Wave-frequency roll about body x (positive lifts the port side)"),
+    O(waveMotion[4], "waveMotion.pitch", "rad", 0, "Wave-frequency pitch about body y (positive lowers the bow)"),
+    O(waveMotion[5], "waveMotion.yaw", "rad", 0, "Wave-frequency yaw about z"),
+    O(waveElevation, "waveElevation", "m", 0,
+      "Elevation of the sea surface at the RAO reference point (the vessel's x, y on the waterline)"),
 };
 
 const PMModel kPartnerModel = {
     "Vessel",
-    "Survey vessel, 3 DOF (surge, sway, yaw) with speed and heading autopilot, towing a cable at a tow point aft",
+    "Survey vessel, 3 DOF (surge, sway, yaw) with speed and heading autopilot, towing a cable at a tow point aft; "
+    "optionally the wave-frequency motion of its displacement RAOs superimposed",
     sizeof(VesselData),
     kVariables,
     sizeof kVariables / sizeof kVariables[0],
     vessel_check,
     vessel_initialize,
     vessel_do_step,
-    NULL,
-    NULL,
+    build_waves,
+    release_waves,
 };
