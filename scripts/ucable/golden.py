@@ -1,8 +1,9 @@
 """Golden results: a few short scenes whose every output is stored exactly (as hex floats).
 
 Refactors that must not change the numbers (the variable schema, the compiled line description,
-a one-section line described by the scalar parameters) are checked against these files bit for
-bit by tests/python/test_golden.py. Regenerate only when a change of the numbers is intended:
+a one-section line described by the scalar parameters; for the Vessel partner FMU, its optional
+wave motion left off) are checked against these files bit for bit by tests/python/test_golden.py.
+Regenerate only when a change of the numbers is intended:
 
     .venv/bin/python -m ucable.golden --write      (from scripts/, or with scripts/ on sys.path)
 """
@@ -41,6 +42,18 @@ SCENES = {
                     "torqueMode": 1, "topEnd": 1, "topTangent.x": 0.2, "topTangent.z": -1.0},
         tow=lambda t: dict(_ramp(t, 1.0, 1.5, 0.0, 5.0), torque=20.0 * min(t, 5.0)),
         step=0.5, steps=20),
+}
+
+
+# The Vessel partner FMU: name -> (parameters, function t -> tow force, step, n steps). A speed ramp and a
+# turn under a tow force that changes with time (it yaws the vessel and loads the speed loop).
+VESSEL_SCENES = {
+    "vessel_ramp_turn": dict(
+        parameters={"speed0": 1.1 * KNOT, "speed1": 2.4 * KNOT, "rampStart": 5.0, "rampDuration": 30.0,
+                    "turnStart": 10.0, "turnRate": math.radians(1.5), "turnAngle": math.radians(45.0)},
+        force=lambda t: {"towForce.x": -4000.0 - 50.0 * t, "towForce.y": 1500.0 * math.sin(0.1 * t),
+                         "towForce.z": -3000.0},
+        step=0.5, steps=120),
 }
 
 
@@ -90,13 +103,36 @@ def run_scene(name: str, fmu_path=None) -> dict:
             "outputs": {n: [float(r[i]).hex() for r in rows] for i, n in enumerate(names)}}
 
 
+def run_vessel_scene(name: str, fmu_path=None, parameters: dict | None = None) -> dict:
+    """Every output of the Vessel FMU at every communication point, as run_scene; `parameters` are set
+    over the scene's own."""
+    from .system import partner_fmu
+    scene = VESSEL_SCENES[name]
+    with CableFMU(fmu_path or partner_fmu("Vessel"), parameters={**scene["parameters"], **(parameters or {})},
+                  instance_name="vessel") as vessel:
+        names = _output_names(vessel)
+        vessel.initialize(0.0, scene["step"] * scene["steps"], inputs=scene["force"](0.0))
+        rows, times = [vessel.get_reals(names)], [0.0]
+        for n in range(scene["steps"]):
+            t = n * scene["step"]
+            vessel.set(scene["force"](t))
+            vessel.do_step(scene["step"], t)
+            rows.append(vessel.get_reals(names))
+            times.append(t + scene["step"])
+    return {"time": [float(t).hex() for t in times],
+            "outputs": {n: [float(r[i]).hex() for r in rows] for i, n in enumerate(names)}}
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--write", action="store_true", help="write tests/data/golden/*.json")
     parser.add_argument("--fmu", default=None)
+    parser.add_argument("--vessel-fmu", default=None, help="the Vessel FMU (default: next to the cable's)")
     args = parser.parse_args(argv)
-    for name in SCENES:
-        result = run_scene(name, args.fmu)
+    runs = [(name, lambda name=name: run_scene(name, args.fmu)) for name in SCENES]
+    runs += [(name, lambda name=name: run_vessel_scene(name, args.vessel_fmu)) for name in VESSEL_SCENES]
+    for name, run in runs:
+        result = run()
         if args.write:
             GOLDEN_DIR.mkdir(parents=True, exist_ok=True)
             (GOLDEN_DIR / f"{name}.json").write_text(json.dumps(result, indent=0) + "\n")

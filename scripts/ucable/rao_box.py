@@ -1,5 +1,5 @@
 """A generic RAO table of an 80 m vessel: a box barge with uncoupled single-degree-of-freedom responses
-(scripts/rao_table writes it; the VesselRAO FMU ships it as resources/rao.csv).
+(scripts/rao_table writes it; the VesselRAO and Vessel FMUs ship it as resources/rao.csv).
 
 This is an openly stated approximation, not the RAOs of any real ship. The hull is a box, L 80 m, B 18 m,
 draught 5 m (7380 t), in deep water; the RAO reference point is midships on the centreline at the
@@ -42,7 +42,7 @@ RHO, G = 1025.0, 9.81
 L, B, T = 80.0, 18.0, 5.0
 GM = 2.0
 ZETA = {"heave": 0.4, "roll": 0.1, "pitch": 0.4}
-DEFAULT_OUT = REPO_ROOT / "fmu" / "partners" / "vessel_rao" / "resources" / "rao.csv"
+DEFAULT_OUT = REPO_ROOT / "fmu" / "partners" / "sea" / "rao.csv"
 PERIODS = np.concatenate([np.arange(2.0, 25.0, 0.5), np.arange(25.0, 40.5, 1.0)])
 HEADINGS = np.arange(0.0, 360.0, 15.0)
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
@@ -135,6 +135,38 @@ def read(path: Path):
     """The table as an (n, 14) array (comment lines and the column names skipped)."""
     lines = [line for line in Path(path).read_text().splitlines() if line.strip() and not line.startswith("#")]
     return np.loadtxt(lines[1:], delimiter=",", ndmin=2)
+
+
+def interpolate(rows, period: float, heading: float):
+    """The complex RAOs (rotations in rad/m; R = |R| e^(i lag)) of the table `rows` (as read) at a period [s]
+    and relative heading [deg], as the partner FMUs state it: bilinear in period (held beyond the table's
+    periods, an infinite period included) and, periodically over 360 deg, in heading."""
+    periods, headings = np.unique(rows[:, 0]), np.unique(rows[:, 1])
+    cells = {(r[0], r[1]): r for r in rows}
+
+    def at(p, h):
+        r = cells[(p, h)]
+        amp = r[2::2] * np.where(np.arange(6) >= 3, math.pi / 180.0, 1.0)
+        return amp * np.exp(1j * np.radians(r[3::2]))
+
+    i = int(np.clip(np.searchsorted(periods, period) - 1, 0, len(periods) - 1))
+    i1 = min(i + 1, len(periods) - 1)
+    wp = 0.0 if i1 == i or period <= periods[0] else min(1.0, (period - periods[i]) / (periods[i1] - periods[i]))
+    h = heading % 360.0
+    j = np.searchsorted(headings, h, side="right") - 1
+    h0, h1 = headings[j], headings[(j + 1) % len(headings)]
+    wh = 0.0 if len(headings) == 1 else (h - h0) % 360.0 / ((h1 - h0) % 360.0)
+    return ((1 - wp) * ((1 - wh) * at(periods[i], h0) + wh * at(periods[i], h1))
+            + wp * ((1 - wh) * at(periods[i1], h0) + wh * at(periods[i1], h1)))
+
+
+def fmu_with_table(fmu: Path, out: Path, text: str) -> Path:
+    """A copy `out` of a partner FMU whose resources/rao.csv is `text`."""
+    import zipfile
+    with zipfile.ZipFile(fmu) as src, zipfile.ZipFile(out, "w") as dst:
+        for item in src.infolist():
+            dst.writestr(item, text.encode() if item.filename == "resources/rao.csv" else src.read(item.filename))
+    return out
 
 
 def main(argv=None) -> int:

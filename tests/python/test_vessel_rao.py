@@ -19,6 +19,7 @@ import pytest
 
 from ucable.fmu import FMICallException
 from ucable.rao_box import DEFAULT_OUT as RAO_CSV
+from ucable.rao_box import fmu_with_table, interpolate
 from ucable.rao_box import read as read_rao
 from ucable.system import partner_fmu
 
@@ -31,27 +32,6 @@ def rao_fmu(fmu_file):
 @pytest.fixture(scope="module")
 def table():
     return read_rao(RAO_CSV)
-
-
-def complex_rao(table, period, heading):
-    """Complex RAOs (rotations in rad/m) by bilinear interpolation of the table in period and heading
-    (periodic over 360 deg): the law the FMU states."""
-    periods, headings = np.unique(table[:, 0]), np.unique(table[:, 1])
-    cells = {(r[0], r[1]): r for r in table}
-
-    def at(p, h):
-        r = cells[(p, h)]
-        amp = r[2::2] * np.where(np.arange(6) >= 3, math.pi / 180.0, 1.0)
-        return amp * np.exp(1j * np.radians(r[3::2]))
-
-    i = np.searchsorted(periods, period) - 1
-    wp = (period - periods[i]) / (periods[i + 1] - periods[i])
-    h = heading % 360.0
-    j = np.searchsorted(headings, h, side="right") - 1
-    h0, h1 = headings[j], headings[(j + 1) % len(headings)]
-    wh = (h - h0) / ((h1 - h0) % 360.0)
-    return ((1 - wp) * ((1 - wh) * at(periods[i], h0) + wh * at(periods[i], h1))
-            + wp * ((1 - wh) * at(periods[i + 1], h0) + wh * at(periods[i + 1], h1)))
 
 
 def expected_tow(R, a, w, kX, t, lever, heading, x0, y0):
@@ -84,7 +64,7 @@ def test_regular_wave_motion_is_the_rao_times_the_amplitude(rao_fmu, make_unit, 
               "towPoint.z": lever[2]}
     v = make_unit(rao_fmu, parameters=params)
     v.initialize(0.0, 60.0)
-    R = complex_rao(table, period, relative_heading)
+    R = interpolate(table, period, relative_heading)
     if period == 8.0:  # a tabulated point: the table's own row
         row = table[(table[:, 0] == 8.0) & (table[:, 1] == relative_heading)][0]
         assert np.allclose(np.abs(R[:3]), row[2:8:2], rtol=1e-12)
@@ -140,17 +120,6 @@ def test_bad_wave_parameters_are_errors_naming_the_variable(rao_fmu, make_unit):
     assert any("waves.mode = 3 is outside [0, 2]" in m for _, _, m in w.messages), w.log_text()
 
 
-def fmu_with_table(rao_fmu, tmp_path, text):
-    """A copy of the VesselRAO FMU whose resources/rao.csv is `text`."""
-    import zipfile
-    out = tmp_path / "VesselRAO.fmu"
-    with zipfile.ZipFile(rao_fmu) as src, zipfile.ZipFile(out, "w") as dst:
-        for item in src.infolist():
-            data = text.encode() if item.filename == "resources/rao.csv" else src.read(item.filename)
-            dst.writestr(item, data)
-    return out
-
-
 ROW = ",".join(["1.0", "0.0"] * 6)
 
 
@@ -164,7 +133,7 @@ ROW = ",".join(["1.0", "0.0"] * 6)
     ("# nothing but a comment\n", "has no rows"),
 ])
 def test_a_malformed_rao_table_is_an_error_naming_the_file_and_line(rao_fmu, make_unit, tmp_path, text, named):
-    v = make_unit(fmu_with_table(rao_fmu, tmp_path, text), parameters={"waves.mode": 1, "waves.height": 1.0})
+    v = make_unit(fmu_with_table(rao_fmu, tmp_path / "VesselRAO.fmu", text), parameters={"waves.mode": 1, "waves.height": 1.0})
     with pytest.raises(FMICallException):
         v.initialize(0.0, 10.0)
     assert any("rao.csv" in m and named in m for _, _, m in v.messages), v.log_text()
@@ -173,7 +142,7 @@ def test_a_malformed_rao_table_is_an_error_naming_the_file_and_line(rao_fmu, mak
 def test_a_one_row_table_holds_its_rao_for_every_period_and_heading(rao_fmu, make_unit, tmp_path):
     """One row: held beyond its period and for every heading; heave 0.5 m/m lagging 30 deg."""
     row = ",".join(["0", "0", "0", "0", "0.5", "30", "0", "0", "0", "0", "0", "0"])
-    f = fmu_with_table(rao_fmu, tmp_path, f"period,heading\n10,90,{row}\n")
+    f = fmu_with_table(rao_fmu, tmp_path / "VesselRAO.fmu", f"period,heading\n10,90,{row}\n")
     v = make_unit(f, parameters={"waves.mode": 1, "waves.height": 2.0, "waves.period": 7.0, "towPoint.x": 0.0,
                             "heading": 1.0})
     v.initialize(0.0, 10.0)
