@@ -98,6 +98,17 @@ void pm_sea_ramp(double rampTime, double t, double* f, double* df, double* ddf) 
     }
 }
 
+void pm_sea_ramp_signals(double rampTime, double t, size_t n, double* s, double* v, double* a) {
+    double f, df, ddf;
+    pm_sea_ramp(rampTime, t, &f, &df, &ddf);
+    for (size_t j = 0; j < n; ++j) {
+        const double s0 = s[j], v0 = v[j], a0 = a[j];
+        s[j] = f * s0;
+        v[j] = f * v0 + df * s0;
+        a[j] = f * a0 + 2.0 * df * v0 + ddf * s0;
+    }
+}
+
 double pm_sea_elevation(const PMWaveComponent* c, size_t n, double direction, double rampTime, double x, double y,
                         double t) {
     if (n == 0) return 0.0;

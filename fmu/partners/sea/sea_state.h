@@ -52,6 +52,9 @@ int pm_sea_components(const PMWaves* w, PMWaveComponent* out, char* msg, size_t 
 /* The ramp factor of time t and its first two time derivatives (rampTime <= 0: 1, 0, 0). */
 void pm_sea_ramp(double rampTime, double t, double* f, double* df, double* ddf);
 
+/* Ramps n signals s (in place) with their first and second time derivatives v, a: f s, (f s)', (f s)''. */
+void pm_sea_ramp_signals(double rampTime, double t, size_t n, double* s, double* v, double* a);
+
 /* The elevation at (x, y) and time t of n components travelling along direction (ramp included). */
 double pm_sea_elevation(const PMWaveComponent* c, size_t n, double direction, double rampTime, double x, double y,
                         double t);

@@ -165,7 +165,7 @@ static void add_wave_motion(VesselData* d, const VesselWaves* w, double t, const
     const double ax = c * dx[U] - s * dx[V] - r * dx[Y], ay = s * dx[U] + c * dx[V] + r * dx[X]; /* Earth */
     const double cb = cos(d->sea.direction), sb = sin(d->sea.direction);
     const double mu = (d->sea.direction - x[PSI]) * 180.0 / kPi;
-    /* the motions (q), their rates (v) and accelerations (a) without the ramp */
+    /* the motions (q), their rates (v) and accelerations (a) without the ramp, then ramped */
     double q[PM_RAO_DOF] = {0}, v[PM_RAO_DOF] = {0}, a[PM_RAO_DOF] = {0};
     for (size_t i = 0; i < w->n; ++i) {
         const PMWaveComponent* cw = &w->sea[i];
@@ -183,15 +183,8 @@ static void add_wave_motion(VesselData* d, const VesselWaves* w, double t, const
             a[j] += dwe * dm - we * we * m;
         }
     }
-    double f, df, ddf;
-    pm_sea_ramp(d->sea.rampTime, t, &f, &df, &ddf);
-    for (int j = 0; j < PM_RAO_DOF; ++j) {
-        const double q0 = q[j], v0 = v[j], a0 = a[j];
-        q[j] = f * q0;
-        v[j] = f * v0 + df * q0;
-        a[j] = f * a0 + 2.0 * df * v0 + ddf * q0;
-        d->waveMotion[j] = q[j];
-    }
+    pm_sea_ramp_signals(d->sea.rampTime, t, PM_RAO_DOF, q, v, a);
+    for (int j = 0; j < PM_RAO_DOF; ++j) d->waveMotion[j] = q[j];
     /* the tow point's displacement, rate and acceleration in the body axes, which turn at r about z */
     double p[3], dp[3], ddp[3];
     pm_rao_point(q, d->towPoint, p);

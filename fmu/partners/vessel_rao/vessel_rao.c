@@ -130,15 +130,8 @@ static void update_outputs(VesselRAOData* d, const VesselRAODerived* r, double t
             a[j] -= A * w * w * c;
         }
     }
-    double f, df, ddf;
-    pm_sea_ramp(d->sea.rampTime, t, &f, &df, &ddf);
-    for (int j = 0; j < N_DOF; ++j) {
-        const double s0 = s[j], v0 = v[j], a0 = a[j];
-        s[j] = f * s0;
-        v[j] = f * v0 + df * s0;
-        a[j] = f * a0 + 2.0 * df * v0 + ddf * s0;
-        d->motion[j] = s[j];
-    }
+    pm_sea_ramp_signals(d->sea.rampTime, t, N_DOF, s, v, a);
+    for (int j = 0; j < N_DOF; ++j) d->motion[j] = s[j];
     /* the tow point: translation + rotation x lever arm, body axes, then turned by the heading */
     const double* p = d->towPoint;
     double body[3][3]; /* position offset, velocity, acceleration in body axes */
