@@ -194,18 +194,64 @@ static void bracket_heading(const double* v, size_t n, double x, size_t* i0, siz
     *i0 = n - 1, *i1 = 0, *w = d / span;
 }
 
-void pm_rao_interpolate(const PMRAOTable* t, double T, double mu, double* re, double* im) {
+/* The four table cells around (T, mu), the weights of the second period and heading and their slopes
+   (per s and per deg; 0 where the table is held). */
+typedef struct Cell {
+    size_t c00, c01, c10, c11;
+    double wp, wh, dwp, dwh;
+} Cell;
+
+static Cell cell_of(const PMRAOTable* t, double T, double mu) {
     size_t p0, p1, h0, h1;
-    double wp, wh;
-    bracket(t->periods, t->nPeriods, T, &p0, &p1, &wp);
-    bracket_heading(t->headings, t->nHeadings, normalized_heading(mu), &h0, &h1, &wh);
-    const size_t c00 = (p0 * t->nHeadings + h0) * N_DOF, c01 = (p0 * t->nHeadings + h1) * N_DOF;
-    const size_t c10 = (p1 * t->nHeadings + h0) * N_DOF, c11 = (p1 * t->nHeadings + h1) * N_DOF;
+    Cell c;
+    bracket(t->periods, t->nPeriods, T, &p0, &p1, &c.wp);
+    bracket_heading(t->headings, t->nHeadings, normalized_heading(mu), &h0, &h1, &c.wh);
+    c.c00 = (p0 * t->nHeadings + h0) * N_DOF, c.c01 = (p0 * t->nHeadings + h1) * N_DOF;
+    c.c10 = (p1 * t->nHeadings + h0) * N_DOF, c.c11 = (p1 * t->nHeadings + h1) * N_DOF;
+    c.dwp = p1 != p0 ? 1.0 / (t->periods[p1] - t->periods[p0]) : 0.0;
+    c.dwh = h1 == h0   ? 0.0
+            : h1 > h0 ? 1.0 / (t->headings[h1] - t->headings[h0])
+                      : 1.0 / (t->headings[0] + 360.0 - t->headings[t->nHeadings - 1]);
+    return c;
+}
+
+/* The bilinear interpolation of the table's values v (re or im) of degree of freedom j. */
+static double bilinear(const double* v, const Cell* c, int j) {
+    return (1 - c->wp) * ((1 - c->wh) * v[c->c00 + j] + c->wh * v[c->c01 + j]) +
+           c->wp * ((1 - c->wh) * v[c->c10 + j] + c->wh * v[c->c11 + j]);
+}
+
+void pm_rao_interpolate(const PMRAOTable* t, double T, double mu, double* re, double* im) {
+    const Cell c = cell_of(t, T, mu);
     for (int j = 0; j < N_DOF; ++j) {
-        re[j] = (1 - wp) * ((1 - wh) * t->re[c00 + j] + wh * t->re[c01 + j]) +
-                wp * ((1 - wh) * t->re[c10 + j] + wh * t->re[c11 + j]);
-        im[j] = (1 - wp) * ((1 - wh) * t->im[c00 + j] + wh * t->im[c01 + j]) +
-                wp * ((1 - wh) * t->im[c10 + j] + wh * t->im[c11 + j]);
+        re[j] = bilinear(t->re, &c, j);
+        im[j] = bilinear(t->im, &c, j);
+    }
+}
+
+/* d/dT, d/dmu and d2/dTdmu of the bilinear interpolation of v. */
+static void slopes(const double* v, const Cell* c, int j, double* dT, double* dmu, double* dTmu) {
+    const double v00 = v[c->c00 + j], v01 = v[c->c01 + j], v10 = v[c->c10 + j], v11 = v[c->c11 + j];
+    *dT = c->dwp * ((1 - c->wh) * (v10 - v00) + c->wh * (v11 - v01));
+    *dmu = c->dwh * ((1 - c->wp) * (v01 - v00) + c->wp * (v11 - v10));
+    *dTmu = c->dwp * c->dwh * (v11 - v10 - v01 + v00);
+}
+
+void pm_rao_interpolate_rates(const PMRAOTable* t, double T, double mu, double dT, double dmu, double ddT,
+                              double ddmu, double* re, double* im, double* dre, double* dim, double* ddre,
+                              double* ddim) {
+    const Cell c = cell_of(t, T, mu);
+    const int heldT = c.dwp == 0.0; /* then the period's rates may be infinite: they do not count */
+    for (int j = 0; j < N_DOF; ++j) {
+        const double* v[2] = {t->re, t->im};
+        double* out[2][3] = {{&re[j], &dre[j], &ddre[j]}, {&im[j], &dim[j], &ddim[j]}};
+        for (int k = 0; k < 2; ++k) {
+            double sT, sMu, sTMu;
+            slopes(v[k], &c, j, &sT, &sMu, &sTMu);
+            *out[k][0] = bilinear(v[k], &c, j);
+            *out[k][1] = sMu * dmu + (heldT ? 0.0 : sT * dT);
+            *out[k][2] = sMu * ddmu + (heldT ? 0.0 : sT * ddT + 2.0 * sTMu * dT * dmu);
+        }
     }
 }
 

@@ -45,6 +45,14 @@ void pm_rao_free(PMRAOTable* table);
    heading. */
 void pm_rao_interpolate(const PMRAOTable* table, double T, double mu, double* re, double* im);
 
+/* The same and its first and second time derivatives along a path T(t), mu(t) with the rates dT, dmu and
+   ddT, ddmu, the interpolation's slopes held within the cell of the table (piecewise bilinear: the first
+   derivatives jump where the path crosses a tabulated period or heading). Rates of T do not count where
+   the table holds (T beyond its periods). */
+void pm_rao_interpolate_rates(const PMRAOTable* table, double T, double mu, double dT, double dmu, double ddT,
+                              double ddmu, double* re, double* im, double* dre, double* dim, double* ddre,
+                              double* ddim);
+
 /* The displacement of the point p (body axes, from the reference point) of a body whose reference point
    moves by q = (surge, sway, heave, roll, pitch, yaw), small rotations: q[0..2] + q[3..5] x p. Linear, so
    the same for rates and accelerations. */

@@ -32,11 +32,13 @@
  * - phi_j), R_j = |R_j| e^(i phi_j) the RAO at the encounter period 2 pi / |we| and the relative heading
  * beta - psi(t), conjugated when we < 0 (the vessel overtakes the waves: the crests pass from the stern).
  * The tow point at r = towPoint (body axes) moves by (surge, sway, heave) + (roll, pitch, yaw) x r, turned
- * into Earth axes by psi(t). Velocity and acceleration are the time derivatives of that displacement with
- * the RAO held at its current value (quasi-steady): exact at steady speed and heading, during a
- * manoeuvre short by the rate of change of the RAO, a relative error of the order of the turn rate (or
- * the rate of change of we) over we. Default waves.mode 0 computes none of it (today's results bit for
- * bit, and no RAO table is read).
+ * into Earth axes by psi(t). Velocity and acceleration are its time derivatives, the RAO's own rates
+ * included (through dpsi/dt = r, dr/dt and dwe/dt = -k.(acceleration of X)) as the interpolation's slopes
+ * within the cell of the table: the velocity is exact between the table's periods and headings (it jumps
+ * where the path crosses one, as the slopes of a piecewise-linear interpolation do); the acceleration
+ * leaves out the term of d2we/dt2, i.e. of the vessel's jerk, which no state gives (a relative error of
+ * order (r / we)^2 k U / we in a turn at rate r and speed U). Default waves.mode 0 computes none of it
+ * (today's results bit for bit, and no RAO table is read).
  *
  * Defaults: a ~20 m, 50 t survey vessel; resistance 1.25 kN at 2.4 kn and 15 kN at 10 kn; surge added
  * mass 5 % and sway 80 % of the mass; yaw inertia m (L/4)^2 with 50 % added inertia; thrust 25 kN
@@ -164,7 +166,7 @@ static void add_wave_motion(VesselData* d, const VesselWaves* w, double t, const
     const double c = cos(x[PSI]), s = sin(x[PSI]), r = x[R], dr = dx[R];
     const double ax = c * dx[U] - s * dx[V] - r * dx[Y], ay = s * dx[U] + c * dx[V] + r * dx[X]; /* Earth */
     const double cb = cos(d->sea.direction), sb = sin(d->sea.direction);
-    const double mu = (d->sea.direction - x[PSI]) * 180.0 / kPi;
+    const double mu = (d->sea.direction - x[PSI]) * 180.0 / kPi, dmu = -r * 180.0 / kPi, ddmu = -dr * 180.0 / kPi;
     /* the motions (q), their rates (v) and accelerations (a) without the ramp, then ramped */
     double q[PM_RAO_DOF] = {0}, v[PM_RAO_DOF] = {0}, a[PM_RAO_DOF] = {0};
     for (size_t i = 0; i < w->n; ++i) {
@@ -173,14 +175,18 @@ static void add_wave_motion(VesselData* d, const VesselWaves* w, double t, const
         const double theta = cw->omega * t - (kx * x[X] + ky * x[Y]) - cw->phase;
         const double we = cw->omega - (kx * dx[X] + ky * dx[Y]), dwe = -(kx * ax + ky * ay);
         const double sign = we < 0.0 ? -1.0 : 1.0;
-        double re[PM_RAO_DOF], im[PM_RAO_DOF];
-        pm_rao_interpolate(&w->table, we != 0.0 ? kTwoPi / fabs(we) : HUGE_VAL, mu, re, im);
+        /* the encounter period and its rates (the second without the vessel's jerk: see the header) */
+        const double T = we != 0.0 ? kTwoPi / fabs(we) : HUGE_VAL, rate = we != 0.0 ? dwe / we : 0.0;
+        double re[PM_RAO_DOF], im[PM_RAO_DOF], dre[PM_RAO_DOF], dim[PM_RAO_DOF], ddre[PM_RAO_DOF], ddim[PM_RAO_DOF];
+        pm_rao_interpolate_rates(&w->table, T, mu, -T * rate, dmu, 2.0 * T * rate * rate, ddmu, re, im, dre, dim, ddre,
+                                 ddim);
         const double ct = cw->amplitude * cos(theta), st = cw->amplitude * sin(theta);
         for (int j = 0; j < PM_RAO_DOF; ++j) {
             const double m = re[j] * ct + sign * im[j] * st, dm = sign * im[j] * ct - re[j] * st; /* dm: d/dtheta */
             q[j] += m;
-            v[j] += we * dm;
-            a[j] += dwe * dm - we * we * m;
+            v[j] += dre[j] * ct + sign * dim[j] * st + we * dm;
+            a[j] += ddre[j] * ct + sign * ddim[j] * st + 2.0 * we * (sign * dim[j] * ct - dre[j] * st) + dwe * dm -
+                    we * we * m;
         }
     }
     pm_sea_ramp_signals(d->sea.rampTime, t, PM_RAO_DOF, q, v, a);
