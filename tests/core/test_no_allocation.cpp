@@ -32,8 +32,9 @@ using namespace uc;
 namespace {
 
 // A scene that exercises every term: seabed contact with friction, drag in a current, bending,
-// added mass, torque, a towed body, tension-only chain law.
-UCParams busy_scene() {
+// added mass, torque, a towed body, tension-only chain law, an irregular sea (its kinematics from the
+// polynomials, with or without Wheeler stretching).
+UCParams busy_scene(int stretching) {
     UCParams p;
     uc_params_default(&p);
     p.enableSeabed = 1;
@@ -47,6 +48,11 @@ UCParams busy_scene() {
     p.bodyVolume = 0.1;
     p.bodyCdA = 0.5;
     p.fatigueArea = 1e-3;  // the online rainflow count after every internal step
+    p.wavesMode = 2;
+    p.wavesHeight = 2.0;
+    p.wavesPeriod = 8.0;
+    p.wavesNComponents = 100;
+    p.wavesStretching = stretching;
     return p;
 }
 
@@ -61,7 +67,7 @@ long count_allocations(const std::function<void()>& work) {
 }  // namespace
 
 TEST(NoAllocation, ResidualAndJacobianNeverAllocate) {
-    CableSimulation sim(busy_scene());
+    CableSimulation sim(busy_scene(1));
     UCInputs in{};
     in.towVelocity[0] = 1.0;
     in.current[0] = 0.2;
@@ -93,7 +99,7 @@ TEST(NoAllocation, ResidualAndJacobianNeverAllocate) {
 }
 
 TEST(NoAllocation, CommunicationStepsDoNotAllocate) {
-    CableSimulation sim(busy_scene());
+    CableSimulation sim(busy_scene(0));
     UCInputs in{};
     in.towVelocity[0] = 1.0;
     std::string error;
