@@ -21,17 +21,21 @@ constexpr double kNegligibleBottom = 1e-18;
 // k (in frequency, and k grows with the frequency), so the sum stops at the first such one.
 constexpr double kNegligibleDepthExponent = -40.0;
 
-// The lattice of the Taylor expansions (WaveExpansion): in a cell, |k dzeta| <= kCellSpace and
-// |w dt| <= kCellTime for every kept component, so a term's exponent moves by x <= 0.72 from the
-// node's and the polynomial of degree 12 leaves x^13 e^{x + kCellSpace} / 13! < 6e-12 of the local
-// velocity scale sum a w e^{kz}, its derivative in t x^12 e^{x + kCellSpace} / 12! < 1e-10 of the
-// acceleration scale (the node may lie up to half a side deeper than the point: e^{kCellSpace}).
+// The lattice of the Taylor expansions (WaveExpansion). A term whose exponent moves by x over a cell
+// leaves a remainder of x^13 e^{2x} / 13! of its size in the velocity's polynomial of degree 12 and
+// x^12 e^{2x} / 12! in its derivative in t (one e^x for the term's growth, one for a node up to half a
+// side deeper than the point). A band's cells are the largest of half-side f kCellSpace / k_max and
+// half-window f kCellTime / w_max whose summed remainders stay below kVelocityRemainder and kRemainder
+// of the local scales (build_expansions); a single component reaches them at f = 1, x = 0.72.
 constexpr double kCellSpace = 0.17;
 constexpr double kCellTime = 0.55;
 // Lattice indices beyond this (a point or time no run reaches, or not a number) are not formed.
 constexpr double kLatticeReach = 1e15;
-// The image terms (the longest waves, whose exponents move less over a cell) enter the coefficients
-// up to the lowest degree whose remainder_bound is below this; their higher ones are negligible.
+// The summed remainders of the velocity and of the acceleration stay below these fractions of their
+// local scales. The image terms (the longest waves, whose exponents move less over a cell) enter the
+// coefficients up to the lowest degree whose remainder_bound is below kRemainder; their higher ones
+// are negligible.
+constexpr double kVelocityRemainder = 6e-12;
 constexpr double kRemainder = 1e-10;
 // A depth band leaves out the components that together move the water by less than this fraction
 // of the local velocity scale at its top.
@@ -171,8 +175,33 @@ void SeaState::build_expansions() {
         band.count = static_cast<int>(count);
         double k = 0.0, w = 0.0;
         for (size_t i = 0; i < count; ++i) k = std::max(k, components_[i].k), w = std::max(w, components_[i].omega);
-        band.cell = std::sqrt(2.0) * kCellSpace / k;  // the farthest point of a square cell: side / sqrt 2
-        band.window = 2.0 * kCellTime / w;
+        // Cells of half-side rho = f kCellSpace / k and half-window tau = f kCellTime / w: component i's
+        // exponent moves by x_i = k_i rho + w_i tau (rho the farthest point of a square cell, side / sqrt 2).
+        // The components' remainders add up, each in proportion to its size at the band's top (deeper,
+        // the short waves fade first, so the sum only shrinks against the local scale; the bottom's image
+        // at most doubles a term): the largest f whose summed remainders stay below kVelocityRemainder
+        // of the local velocity scale and kRemainder of the acceleration's.
+        bool image = false;
+        for (size_t i = 0; i < count; ++i) image = image || components_[i].bottom > 0.0;
+        auto within = [&](double f) {
+            double ev = 0.0, sv = 0.0, ea = 0.0, sa = 0.0;
+            for (size_t i = 0; i < count; ++i) {
+                const WaveComponent& c = components_[i];
+                const double rho = f * kCellSpace / k, x = c.k * rho + c.omega * f * kCellTime / w;
+                const double size = std::exp(c.k * top);
+                double b = std::exp(x + c.k * rho) * x / (WaveExpansion::kDegree + 1);  // x^13 e^{..} / 13!
+                for (int j = 1; j <= WaveExpansion::kDegree; ++j) b *= x / j;
+                ev += c.velocityScale * size * b, sv += c.velocityScale * size;
+                ea += c.accelerationScale * size * b * (WaveExpansion::kDegree + 1) / x, sa += c.accelerationScale * size;
+            }
+            const double doubling = image ? 2.0 : 1.0;
+            return doubling * ev <= kVelocityRemainder * sv && doubling * ea <= kRemainder * sa;
+        };
+        double f = 1.0;
+        while (!within(f) && f > 0.1) f *= 0.95;
+        while (f < 20.0 && within(1.05 * f)) f *= 1.05;
+        band.cell = std::sqrt(2.0) * f * kCellSpace / k;
+        band.window = 2.0 * f * kCellTime / w;
         bands_.push_back(band);
         if (count == 1 || bands_.size() == 64) break;  // deeper bands would be the same
     }

@@ -358,9 +358,9 @@ TEST(Waves, DeepPointsLeaveOutOnlyComponentsBelowRoundOff) {
 
 TEST(Waves, ExpandedKinematicsEqualTheSumWithinTheirBound) {
     // The residual's kinematics: a Taylor polynomial of degree 12 in (z + i s, t) about the node of a
-    // lattice cell, in which every kept term's exponent moves by at most 0.72. The remainder bounds
-    // are 6e-12 of the local velocity scale sum a w (e^{kz} + e^{-k(2h + z)}) and 1e-10 of the
-    // acceleration scale (waves.cpp); the components a depth band leaves out add 1e-12 of the
+    // lattice cell, the cells sized so that the components' summed remainders stay below 6e-12 of the
+    // local velocity scale sum a w (e^{kz} + e^{-k(2h + z)}) and 1e-10 of the acceleration scale
+    // (waves.cpp); the components a depth band leaves out add 1e-12 of the
     // velocity scale (the acceleration's: times w_max / w_min < 6); the sum itself leaves out or
     // rounds 1e-15 of the surface scale (as kinematics()). Against the plain sum of the closed form: deep and finite
     // depth (where the bottom's image terms count), regular and irregular, points above the surface,
