@@ -199,3 +199,23 @@ def test_in_a_turn_with_a_constant_rao_the_derivatives_are_exact(vessel_fmu, mak
     rows = run_underway(make_unit, fmu, params, 0.02, 700, TOW + ["yawRate"])
     assert np.min(rows[200:, 9]) > math.radians(1.0)  # turning throughout
     check_derivatives(rows[200:, :9], 0.02)
+
+
+def test_bad_seas_and_tables_are_errors_naming_the_variable_or_file(vessel_fmu, make_unit, tmp_path):
+    """The Vessel refuses what VesselRAO refuses, with the same messages (one sea, one table reader); in
+    calm water it reads no table, so a broken one does not matter."""
+    from ucable.fmu import FMICallException
+    v = make_unit(vessel_fmu, parameters={"waves.mode": 1, "waves.height": 12.0, "waves.period": 5.0},
+                  instance_name="steep")
+    with pytest.raises(FMICallException):
+        v.initialize(0.0, 10.0)
+    assert any("waves.height = 12 is too steep" in m for _, _, m in v.messages), v.log_text()
+    broken = fmu_with_table(vessel_fmu, tmp_path / "Vessel.fmu", "period,heading\n8,180,1\n")
+    u = make_unit(broken, parameters={"waves.mode": 2, "waves.height": 1.0}, instance_name="table")
+    with pytest.raises(FMICallException):
+        u.initialize(0.0, 10.0)
+    assert any("rao.csv" in m and "line 2: expected 14 comma-separated numbers" in m for _, _, m in u.messages)
+    calm = make_unit(broken, instance_name="calm")
+    calm.initialize(0.0, 10.0)
+    calm.do_step(0.5, t=0.0)
+    assert calm.get("waveElevation") == 0.0 and calm.get("tow.z") == 0.0
