@@ -504,20 +504,10 @@ def markdown(data: dict) -> str:
     return "\n".join(out)
 
 
-BEGIN = "<!-- BEGIN scripts/waves_moordyn -->"
-END = "<!-- END scripts/waves_moordyn -->"
-
-
 def write_section(doc: Path, section: str) -> None:
-    """Replace the text between BEGIN and END in doc (appended with them if absent)."""
-    text = doc.read_text() if doc.exists() else ""
-    block = f"{BEGIN}\n{section.rstrip()}\n{END}"
-    if BEGIN in text and END in text:
-        head, rest = text.split(BEGIN, 1)
-        text = head + block + rest.split(END, 1)[1]
-    else:
-        text = text.rstrip() + "\n\n" + block + "\n"
-    doc.write_text(text)
+    """Replace the section of this script in doc (appended if absent)."""
+    from .doc_section import write_section as write
+    write(doc, section, "scripts/waves_moordyn")
 
 
 def main(argv=None) -> int:
