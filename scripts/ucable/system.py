@@ -185,8 +185,8 @@ def load_system(coupling: str) -> SystemStructure:
 
 # ------------------------------------------------------------------------------------ results
 RECORD = {
-    "vessel": ["x", "y", "heading", "speed", "thrust", "tow.x", "tow.y", "tow.z"],
-    "cable": ["towTension", "towForce.x", "towForce.y", "towForce.z", "endTension", "endForce.x", "endForce.y",
+    "vessel": ["x", "y", "heading", "speed", "thrust", "tow.x", "tow.y", "tow.z", "waveElevation"],
+    "cable": ["towTension", "waveElevation", "towForce.x", "towForce.y", "towForce.z", "endTension", "endForce.x", "endForce.y",
               "endForce.z", "endPosition.x", "endPosition.y", "endPosition.z", "endVelocity.x", "endVelocity.y",
               "endVelocity.z"],
     "body": ["position.x", "position.y", "position.z", "velocity.x", "velocity.y", "velocity.z", "force.x",
@@ -464,8 +464,11 @@ def steady_far_end(system: SystemStructure, parameters: dict, body: Body) -> dic
 
 def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: str = "fmpy",
         ordering: str = "gauss-seidel", body: Body = Body(), duration: float | None = None,
-        input_derivatives: bool = True, cable_parameters: dict | None = None, progress=None) -> SystemResult:
-    """One system run: the manoeuvre flown by the Vessel FMU, the towed body coupled as `coupling`."""
+        input_derivatives: bool = True, cable_parameters: dict | None = None, waves: dict | None = None,
+        progress=None) -> SystemResult:
+    """One system run: the manoeuvre flown by the Vessel FMU, the towed body coupled as `coupling`; `waves`
+    (waves.* parameters and waterDepth) are given to the vessel, whose wave-frequency motion is then
+    superimposed on its manoeuvre, and to the cable: one sea for both."""
     if manoeuvre not in MANOEUVRES:
         raise ValueError(f"manoeuvre must be one of {', '.join(MANOEUVRES)}")
     if master not in MASTERS:
@@ -476,8 +479,8 @@ def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: s
     t_end = default_duration if duration is None else duration
     system = load_system(coupling)
     params = unit_parameters(coupling, body)
-    params["vessel"] = dict(vessel)
-    params["cable"] = {**params["cable"], **(cable_parameters or {})}
+    params["vessel"] = {**vessel, **(waves or {})}
+    params["cable"] = {**params["cable"], **(cable_parameters or {}), **(waves or {})}
     if coupling == "explicit":
         start = steady_far_end(system, params, body)
         params["body"].update(start)

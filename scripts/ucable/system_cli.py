@@ -7,6 +7,7 @@ body.y, body.z: the towed body = the cable's far end, Earth frame, z up) and DIR
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 from pathlib import Path
 
@@ -47,8 +48,26 @@ def parse_args(argv):
                         + ", ".join(f"{k} {v[1]:g}" for k, v in MANOEUVRES.items()) + ")")
     p.add_argument("--input-derivatives", action=argparse.BooleanOptionalAction, default=True,
                    help="fmpy: pass the vessel's tow acceleration to the cable (fmi2SetRealInputDerivatives)")
+    p.add_argument("--waves", type=int, choices=(0, 1, 2), default=0,
+                   help="the sea of vessel and cable: 0 calm, 1 a regular wave (--hs is its height H, --tp its "
+                        "period T), 2 JONSWAP; the vessel's RAO motion is superimposed on its manoeuvre")
+    p.add_argument("--hs", type=float, default=2.0, help="wave height H or significant height Hs [m]")
+    p.add_argument("--tp", type=float, default=8.0, help="wave period T or peak period Tp [s]")
+    p.add_argument("--wave-direction", type=float, default=180.0,
+                   help="direction the waves travel [deg from +x toward +y] (180: head seas at the start)")
+    p.add_argument("--seed", type=int, default=1, help="seed of the irregular sea's phases")
+    p.add_argument("--wave-ramp", type=float, default=20.0, help="time over which the sea grows from calm [s]")
     p.add_argument("--out", type=Path, default=None, help="output directory (default out/system/<manoeuvre>)")
     return p.parse_args(argv)
+
+
+def waves_of(args) -> dict | None:
+    """The waves.* parameters of the command line (None in calm water: nothing is set)."""
+    if args.waves == 0:
+        return None
+    return {"waves.mode": args.waves, "waves.height": args.hs, "waves.period": args.tp,
+            "waves.direction": math.radians(args.wave_direction), "waves.seed": args.seed,
+            "waves.rampTime": args.wave_ramp}
 
 
 def write_csv(path: Path, columns: dict) -> None:
@@ -107,7 +126,7 @@ def main(argv=None) -> int:
     bar = ProgressBar(duration, label=args.manoeuvre)
     try:
         r = run(args.manoeuvre, args.step, args.coupling, args.master, ordering, body, duration,
-                input_derivatives=args.input_derivatives, progress=bar)
+                input_derivatives=args.input_derivatives, waves=waves_of(args), progress=bar)
     except (ValueError, FileNotFoundError) as e:
         sys.exit(f"scripts/system: {e}")
     except Diverged as e:
@@ -117,6 +136,9 @@ def main(argv=None) -> int:
     b = body.resolved()
     title = (f"{args.manoeuvre}: step {args.step:g} s, coupling {args.coupling}, {args.master} {ordering}; body "
              f"{b.mass:g} kg, {b.added_mass:g} kg added, {b.volume:g} m3, CdA {b.cda:.3g} m2")
+    if args.waves:
+        title += (f"; {('regular wave H', 'JONSWAP Hs')[args.waves - 1]} {args.hs:g} m, T {args.tp:g} s, "
+                  f"travelling {args.wave_direction:g} deg")
     plot(out / "result.png", r, title)
     T, p = r["cable.towTension"], r.body_position
     print(f"tow tension: start {T[0]:.0f} N, min {np.nanmin(T):.0f} N, max {np.nanmax(T):.0f} N, end {T[-1]:.0f} N; "
