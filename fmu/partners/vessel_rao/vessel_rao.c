@@ -10,7 +10,8 @@
  * z up. Motions of the reference point: surge, sway, heave [m] along the body axes, roll, pitch, yaw [rad]
  * about them (right-handed: positive roll lifts the port side, positive pitch lowers the bow).
  *
- * RAOs: the table resources/rao.csv of the FMU (docs/waves.md): rows of period [s], relative heading [deg]
+ * RAOs: the table resources/rao.csv of the FMU (docs/waves.md; read and interpolated by ../sea/rao_table.c, as
+ * for the Vessel FMU's superimposed wave motion): rows of period [s], relative heading [deg]
  * (the waves' direction of travel relative to the bow: 0 following seas, 90 waves travelling to port,
  * 180 head seas), then amplitude and phase for surge, sway, heave (m/m), roll, pitch, yaw (deg/m), phases
  * in degrees as lags behind the wave crest at the reference point. A component of amplitude a, frequency
