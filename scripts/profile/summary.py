@@ -32,6 +32,8 @@ SCENES = {
                "(scripts/profile/hopland_driver.c)",
     "heave": "heave case (1000 m umbilical, 10 t body, 2 m / 10 s heave, 0.5 m/s current, 20 elements), "
              "30 s, 0.1 s steps (scripts/profile/heave_driver.c)",
+    "stiff": "stiff power cable with seabed (250 m, EA 7e8 N, EI 2e4 N m2, 100 m depth, surge 3 m at 8 s, "
+             "20 elements), 30 s, 0.05 s steps (scripts/profile/stiff_driver.c)",
     "heave_waves": "heave case in a JONSWAP sea (Hs 3 m, Tp 10 s, 200 components, the water's motion acting on "
                    "the umbilical), 20 elements, 30 s, 0.1 s steps (scripts/profile/heave_waves_driver.c)",
 }
