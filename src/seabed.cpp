@@ -1,6 +1,7 @@
 // seabed.cpp - penalty contact, damping and regularized friction on a flat seabed.
 #include "seabed.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace uc {
@@ -18,6 +19,20 @@ double contact_ramp(double p, double delta, double* slope) {
     }
     *slope = (p + delta) / (2.0 * delta);
     return (p + delta) * (p + delta) / (4.0 * delta);
+}
+
+// Round-off allowance of above_contact [m]: the heights interpolated at the sampling points are
+// sums of terms of a few hundred metres at most, exact to far below a micrometre.
+constexpr double kHullMargin = 1e-6;
+
+// True when no point of the element can touch the contact band, so that every sampling point
+// would give exactly zero load and can be skipped without changing a bit of the result. The cubic
+// Hermite curve is the Bezier curve with control points r0, r0 + l t0 / 3, r1 - l t1 / 3, r1, and
+// lies in their convex hull: it is nowhere lower than the lowest of their heights.
+bool above_contact(const ElementTables& e, const SeabedProps& p, const double* X) {
+    const double third = e.length / 3.0;
+    const double lowest = std::min(std::min(X[2], X[2] + third * X[5]), std::min(X[8] - third * X[11], X[8]));
+    return lowest > -p.depth + p.smoothing + kHullMargin;
 }
 
 }  // namespace
@@ -56,6 +71,7 @@ Vec3 seabed_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJaco
 }
 
 void add_seabed_force(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd, double* R) {
+    if (above_contact(e, p, X)) return;
     for (int g = 0; g < ElementTables::nAxial; ++g) {
         const QuadPoint& q = e.axial[g];
         const Vec3 F = seabed_load(p, interpolate(q.shape.N, X), interpolate(q.shape.N, Xd), nullptr);
@@ -66,6 +82,7 @@ void add_seabed_force(const ElementTables& e, const SeabedProps& p, const double
 
 void add_seabed_jacobian(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd,
                          Mat12& K, Mat12& C) {
+    if (above_contact(e, p, X)) return;
     SeabedJacobian J;
     for (int g = 0; g < ElementTables::nAxial; ++g) {
         const QuadPoint& q = e.axial[g];

@@ -374,6 +374,57 @@ TEST(SeabedTerm, JacobianMatchesFiniteDifferences) {
     expect_jacobian_matches([&](const Vec12& v) { return force(X, v); }, Xd, C, 1e-7, 1e-6, "dR/dXdot");
 }
 
+TEST(SeabedTerm, ElementsAboveTheContactBandAreSkippedWithoutChangingABit) {
+    // add_seabed_force / add_seabed_jacobian skip an element whose Bezier hull is above the contact
+    // band. Against the sum over every sampling point, for random elements around the band (nodes
+    // above it whose sag dips into it included): the same numbers, bit for bit.
+    const double l = 12.5;
+    const ElementTables e = make_element_tables(l, 3, 3);
+    SeabedProps p;
+    p.enabled = true;
+    p.depth = 100.0;
+    p.stiffness = 6e5;
+    p.damping = 6e4;
+    p.friction = 0.3;
+    p.smoothing = 0.01;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> height(-0.05, 0.6), slope(-0.25, 0.25);
+    int dipping = 0, skipped = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        Vec12 X;
+        X << 0, 0, -p.depth + height(rng), 1, 0, slope(rng), l, 0, -p.depth + height(rng), 1, 0, slope(rng);
+        const Vec12 Xd = random_vector(rng, 0.5);
+        Vec12 R = Vec12::Zero(), Rref = Vec12::Zero();
+        Mat12 K = Mat12::Zero(), C = Mat12::Zero(), Kref = Mat12::Zero(), Cref = Mat12::Zero();
+        add_seabed_force(e, p, X.data(), Xd.data(), R.data());
+        add_seabed_jacobian(e, p, X.data(), Xd.data(), K, C);
+        bool touches = false;
+        for (int g = 0; g < ElementTables::nAxial; ++g) {
+            const QuadPoint& q = e.axial[g];
+            SeabedJacobian J;
+            const Vec3 F = seabed_load(p, interpolate(q.shape.N, X.data()), interpolate(q.shape.N, Xd.data()), &J);
+            if (F.isZero(0.0) && J.dr.isZero(0.0)) continue;
+            touches = true;
+            for (int a = 0; a < 4; ++a) {
+                Rref.segment<3>(3 * a) += (q.weight * q.shape.N[a]) * F;
+                for (int b = 0; b < 4; ++b) {
+                    const double w = q.weight * q.shape.N[a] * q.shape.N[b];
+                    Kref.block<3, 3>(3 * a, 3 * b) += w * J.dr;
+                    Cref.block<3, 3>(3 * a, 3 * b) += w * J.drd;
+                }
+            }
+        }
+        const bool nodesAbove = std::min(X[2], X[8]) > -p.depth + p.smoothing;
+        dipping += nodesAbove && touches;
+        skipped += !touches;
+        for (int i = 0; i < 12; ++i) ASSERT_EQ(R[i], Rref[i]) << "trial " << trial << ", entry " << i;
+        ASSERT_TRUE(K == Kref && C == Cref) << "trial " << trial;
+    }
+    // both kinds occur: elements clear of the band, and elements whose nodes are clear but not their sag
+    EXPECT_GT(dipping, 20);
+    EXPECT_GT(skipped, 200);
+}
+
 TEST(SeabedTerm, RestingCableCarriesItsWeightAndFrictionOpposesSliding) {
     SeabedProps p;
     p.enabled = true;
