@@ -70,7 +70,17 @@ double weighted_square_sum(N_Vector x, N_Vector w) {
     return sum;
 }
 
+// The integrator advancing on this thread, while it advances (its error norm may be projected).
+thread_local const Integrator* advancing = nullptr;
+
+struct Advancing {
+    explicit Advancing(const Integrator* i) { advancing = i; }
+    ~Advancing() { advancing = nullptr; }
+};
+
 double weighted_rms_norm(N_Vector x, N_Vector w) {
+    if (advancing && advancing->projected() && length(x) == advancing->size())
+        return advancing->projected_norm(N_VGetArrayPointer(x), N_VGetArrayPointer(w));
     return std::sqrt(weighted_square_sum(x, w) / static_cast<double>(length(x)));
 }
 
@@ -360,6 +370,7 @@ bool Integrator::restart(double t, const double* y, const double* yp, std::strin
 }
 
 bool Integrator::advance(double tEnd, std::string& error) {
+    const Advancing guard(this);
     int flag = IDASetStopTime(ida_, tEnd);
     double tReached = 0.0;
     long steps = 0;
@@ -378,6 +389,7 @@ bool Integrator::advance(double tEnd, std::string& error) {
         // next communication step from that sliver's size, doubling it back over several steps.
         const double remaining = tEnd - m->ida_tn;
         if (m->ida_nst > 0 && remaining > m->ida_hh && remaining <= kStretch * m->ida_hh) m->ida_hh = remaining;
+        if (projected()) update_directions();
         flag = IDASolve(ida_, tEnd, &tReached, y_, yp_, IDA_ONE_STEP);
         if (flag >= 0) system_->step_completed(tReached, N_VGetArrayPointer(y_), N_VGetArrayPointer(yp_));
         if (flag == IDA_TSTOP_RETURN || (flag == IDA_SUCCESS && tReached >= tEnd)) {
@@ -479,6 +491,69 @@ bool Integrator::set_tolerances(const std::vector<double>& atol, double relTol, 
     // step, which an integrator continuing a restored history does not run again.
     static_cast<IDAMem>(ida_)->ida_edata = this;
     return true;
+}
+
+bool Integrator::set_projected_tolerances(const std::vector<ProjectedBlock>& blocks, std::string& error) {
+    std::vector<char> in(2 * n_, 0);
+    for (const ProjectedBlock& b : blocks) {
+        const bool inside = b.q >= 0 && b.q + 2 < n_ && b.direction >= 0 && b.direction + 2 < n_;
+        const bool positive = b.along > 0.0 && b.across > 0.0 && b.alongRate > 0.0 && b.acrossRate > 0.0 &&
+                              std::isfinite(b.along + b.across + b.alongRate + b.acrossRate);
+        if (!inside || !positive) {
+            error = "internal: a projected error block outside the unknowns or with a tolerance that is not positive";
+            return false;
+        }
+        for (int k = 0; k < 3; ++k) {
+            for (int v = 0; v < 2; ++v) {
+                char& c = in[2 * (b.q + k) + v];
+                if (c) {
+                    error = "internal: an unknown in two projected error blocks";
+                    return false;
+                }
+                c = 1;
+            }
+        }
+    }
+    blocks_ = blocks;
+    inBlock_ = std::move(in);
+    directions_.assign(3 * blocks_.size(), 0.0);
+    return true;
+}
+
+void Integrator::update_directions() {
+    const double* y = N_VGetArrayPointer(y_);
+    for (size_t k = 0; k < blocks_.size(); ++k) {
+        const int i = 2 * blocks_[k].direction;
+        const double d0 = y[i], d1 = y[i + 2], d2 = y[i + 4];
+        const double norm = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
+        // a degenerate direction (never a cable tangent): no along part, everything across
+        const double s = norm > 0.0 && std::isfinite(norm) ? 1.0 / norm : 0.0;
+        directions_[3 * k] = s * d0;
+        directions_[3 * k + 1] = s * d1;
+        directions_[3 * k + 2] = s * d2;
+    }
+}
+
+double Integrator::projected_norm(const double* x, const double* w) const {
+    double sum = 0.0;
+    for (int i = 0; i < 2 * n_; ++i) {
+        if (inBlock_[i]) continue;
+        const double p = x[i] * w[i];
+        sum += p * p;
+    }
+    for (size_t k = 0; k < blocks_.size(); ++k) {
+        const ProjectedBlock& b = blocks_[k];
+        const double* d = &directions_[3 * k];
+        for (int v = 0; v < 2; ++v) {  // coordinates, then their velocities
+            const int i = 2 * b.q + v;
+            const double e0 = x[i], e1 = x[i + 2], e2 = x[i + 4];
+            const double along = d[0] * e0 + d[1] * e1 + d[2] * e2;
+            const double across2 = std::max(0.0, e0 * e0 + e1 * e1 + e2 * e2 - along * along);
+            const double a = v ? b.alongRate : b.along, c = v ? b.acrossRate : b.across;
+            sum += along * along / (a * a) + across2 / (c * c);
+        }
+    }
+    return std::sqrt(sum / static_cast<double>(2 * n_));
 }
 
 int Integrator::error_weights(N_Vector y, N_Vector ewt, void* user) {

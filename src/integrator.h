@@ -64,6 +64,24 @@ public:
     // scalar tolerances are positive (they can only tighten the test).
     bool set_tolerances(const std::vector<double>& atol, double relTol, double absTol, std::string& error);
 
+    // Optional error norm projected on directions (an error test along and across a cable): each
+    // block is three coordinates q, q + 1, q + 2 (y indices 2q, 2q + 2, 2q + 4; their velocities
+    // 2q + 1, ...) whose error is split along the unit vector of the three coordinates `direction`,
+    // +1, +2 at the start of each step and across it. The along part is measured against `along`
+    // (`alongRate` for the velocities), the across part against `across` (`acrossRate`); the other
+    // unknowns against atol as usual. Replaces their share of IDA's weighted RMS norm (error test,
+    // Newton convergence, step size selection); not used while relTol or absTol is positive (their
+    // componentwise test applies). An empty list: the componentwise norm.
+    struct ProjectedBlock {
+        int q = 0, direction = 0;
+        double along = 0.0, across = 0.0, alongRate = 0.0, acrossRate = 0.0;
+    };
+    bool set_projected_tolerances(const std::vector<ProjectedBlock>& blocks, std::string& error);
+    // The weighted RMS norm of x (2n values) with the projected blocks, at the directions of the
+    // present step (the vector operation IDA calls while this integrator advances).
+    double projected_norm(const double* x, const double* w) const;
+    bool projected() const { return !blocks_.empty() && relTol_ == 0.0 && absTol_ == 0.0; }
+
     // Restarts the integrator at (t, y, y') (first order, fresh step size selection).
     bool restart(double t, const double* y, const double* yp, std::string& error);
     // Integrates to exactly tEnd (used as the stop time). On failure error names the SUNDIALS
@@ -124,6 +142,10 @@ private:
     double cj_ = 0.0;  // of the stored matrices
     std::vector<double> atol_;  // per-component absolute tolerances (empty: IDA's scalar ones)
     double relTol_ = 0.0, absTol_ = 0.0;
+    std::vector<ProjectedBlock> blocks_;
+    std::vector<char> inBlock_;        // per unknown: 1 if a block measures it
+    std::vector<double> directions_;   // unit direction of each block at the start of the step
+    void update_directions();
     SecondOrderSystem* system_;
     std::string lastMessage_;
 };

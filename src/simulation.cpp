@@ -614,7 +614,49 @@ bool CableSimulation::set_integrator_tolerances(std::string& error) {
             }
         }
     }
-    return integrator_->set_tolerances(atol, p.relTol, p.absTol, error);
+    if (!integrator_->set_tolerances(atol, p.relTol, p.absTol, error)) return false;
+    return integrator_->set_projected_tolerances(projected_blocks(), error);
+}
+
+std::vector<Integrator::ProjectedBlock> CableSimulation::projected_blocks() const {
+    std::vector<Integrator::ProjectedBlock> blocks;
+    const UCParams& p = model_.params();
+    if (!p.projectedErrorControl) return blocks;
+    const double rms = 1.0 / std::sqrt(2.0 * unknowns());
+    // At each node whose tangent is free: along the tangent the tolerance of set_integrator_tolerances
+    // (its length is 1 + strain), across it the position tolerance over the element length (its
+    // direction turns, which strains nothing to first order); the smaller of the elements that share
+    // the node. Node positions keep the componentwise test: projected too, the chain mooring's error
+    // left the tolerance (docs/error_control.md).
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const SectionProps& section = model_.element_section(e);
+        const double l = e == 0 && model_.winch() ? model_.winch_nominal() : model_.element_length(e);
+        const double EA = section.axial.EA;
+        const double strain = rms * p.tensionTolerance * tensionScale_ / EA;
+        const double wave = l / std::sqrt(EA / section.fluid.massPerLength);
+        const double tau = std::max(section.axial.damping / EA, wave);
+        for (int node = 0; node < 2; ++node) {
+            const int g = model_.element_offset(e) + 6 * node + 3;  // the node's tangent
+            const int j = model_.free_index(g);
+            if (j < 0 || model_.free_index(g + 1) != j + 1 || model_.free_index(g + 2) != j + 2) continue;
+            Integrator::ProjectedBlock b;
+            b.q = b.direction = j + off_;
+            b.across = rms * p.positionTolerance / l;
+            b.along = std::min(b.across, strain);
+            b.alongRate = b.along / tau;
+            b.acrossRate = b.across / tau;
+            auto it = std::find_if(blocks.begin(), blocks.end(), [&](const Integrator::ProjectedBlock& o) { return o.q == b.q; });
+            if (it == blocks.end()) {
+                blocks.push_back(b);
+            } else {
+                it->along = std::min(it->along, b.along);
+                it->across = std::min(it->across, b.across);
+                it->alongRate = std::min(it->alongRate, b.alongRate);
+                it->acrossRate = std::min(it->acrossRate, b.acrossRate);
+            }
+        }
+    }
+    return blocks;
 }
 
 void CableSimulation::expand_integrator_state(double t, const double* y, const double* yp) {

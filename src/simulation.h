@@ -84,6 +84,8 @@ private:
     bool check_geometry(const Vec3& farPoint, std::string& error) const;
     void update_outputs();
     bool set_integrator_tolerances(std::string& error);
+    // The projected error blocks of projectedErrorControl (empty when it is off).
+    std::vector<Integrator::ProjectedBlock> projected_blocks() const;
     double cable_torque(const UCInputs& in);
     IntegratorStats total_stats() const;
     // The winch (docs/winch.md): the top element's length at time t; the rate for the step ahead;

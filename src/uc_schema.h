@@ -109,6 +109,7 @@ typedef struct UCParams {
     double winchMaxLength; /* winch.maxLength [m]: longest deployed unstretched length: paying out stops there (a logged event) */
     double winchTimeConstant; /* winch.timeConstant [s]: constant-tension winch (`winchMode` 2): time constant τ of the tension control, commanded rate (T − `winch.tension`) Σ L/EA / τ, which the drum follows with the lag τ; a stiff line needs milliseconds ([docs/winch.md](docs/winch.md)) */
     int enableBodyFluidInertia; /* enableBodyFluidInertia: accelerating water (waves, a changing current) pushes the towed body and the attachments with (ρ V + added mass) times its acceleration (Froude–Krylov plus added mass, as on the line); false leaves it out, as codes that put no fluid inertia on points */
+    int projectedErrorControl; /* projectedErrorControl: error test of the time integrator along and across the cable: the local error of each node's tangent along its direction is held to the tension tolerance (its length is 1 + strain), the part across it (a rotation, which strains nothing to first order) to `positionTolerance` over the element length; false: every component to the tighter of the two. Not used while `relTol` or `absTol` is positive ([docs/error_control.md](docs/error_control.md)) */
 } UCParams;
 
 typedef struct UCInputs {
@@ -417,6 +418,7 @@ typedef struct UCOutputs {
     X(239, "winch.maxLength", REAL, PARAMETER, winchMaxLength) \
     X(240, "winch.timeConstant", REAL, PARAMETER, winchTimeConstant) \
     X(241, "enableBodyFluidInertia", BOOLEAN, PARAMETER, enableBodyFluidInertia) \
+    X(242, "projectedErrorControl", BOOLEAN, PARAMETER, projectedErrorControl) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -866,6 +868,7 @@ typedef struct UCOutputs {
     X(winchMaxLength, 100000.0) \
     X(winchTimeConstant, 1.0) \
     X(enableBodyFluidInertia, 1) \
+    X(projectedErrorControl, 0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -1116,5 +1119,6 @@ typedef struct UCOutputs {
     X(enableAddedMass, "enableAddedMass") \
     X(enableTorsion, "enableTorsion") \
     X(enableBodyFluidInertia, "enableBodyFluidInertia") \
+    X(projectedErrorControl, "projectedErrorControl") \
 
 #endif /* UNDERWATERCABLE_UC_SCHEMA_H */

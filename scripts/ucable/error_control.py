@@ -113,19 +113,22 @@ def errors(r: SceneRun, ref: SceneRun) -> dict:
             "max_newton": float(d.max())}
 
 
-def curves(fmu, short: bool = False, tolerances=TOLERANCES, names=None) -> dict:
-    """{scene: {"reference": SceneRun, "rows": [(tensionTolerance, SceneRun, errors)]}}."""
+def curves(fmu, short: bool = False, tolerances=TOLERANCES, names=None, extra: dict | None = None,
+           references: dict | None = None) -> dict:
+    """{scene: {"reference": SceneRun, "rows": [(tensionTolerance, SceneRun, errors)]}}. `extra`: further
+    parameters of the rows (not of the reference, which is the FMU's defaults at 1e-8); `references`:
+    the reference runs of an earlier call ({scene: SceneRun}), not flown again."""
     sc = scenes(short)
     names = names or list(sc)
     bar = ProgressBar(len(names) * (len(tolerances) + 1), label="error control")
     out, k = {}, 0
     for name in names:
-        ref = run(fmu, sc[name], {"tensionTolerance": REFERENCE_TOLERANCE})
+        ref = (references or {}).get(name) or run(fmu, sc[name], {"tensionTolerance": REFERENCE_TOLERANCE})
         k += 1
         bar.update(k, name)
         rows = []
         for tol in tolerances:
-            r = run(fmu, sc[name], {"tensionTolerance": tol})
+            r = run(fmu, sc[name], {**(extra or {}), "tensionTolerance": tol})
             rows.append((tol, r, errors(r, ref)))
             k += 1
             bar.update(k, f"{name} {tol:g}")

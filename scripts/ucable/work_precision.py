@@ -199,7 +199,9 @@ def make_cases():
             "N - N/20, N - N/10, so only N multiple of 20): a chord approximation averaging the "
             "curvature over the top 25 m (it misses the hinge's bending boundary layer, sqrt(EI/T) < "
             "1 m); error = RMS difference relative to RMS of the reference; mid-length position RMS."),
-        fmu_grid=dict(full=[(n, tol) for n in (10, 20, 40) for tol in (1e-1, 1e-2, 1e-3, 1e-4)],
+        # and the loosest setting with the error test of the tangents along and across the cable
+        fmu_grid=dict(full=[(n, tol) for n in (10, 20, 40) for tol in (1e-1, 1e-2, 1e-3, 1e-4)]
+                      + [(n, 1e-1, {"projectedErrorControl": True}) for n in (10, 20, 40)],
                       quick=[(10, 1e-3)]),
         md_grid=dict(full=[(n, 0.9) for n in (20, 40, 80)], quick=[(20, 0.9)]),
         reference=dict(full=(80, 1e-6), quick=(20, 1e-5)),
@@ -356,7 +358,8 @@ def run_fmu(fmu, case, n_elements, tol, extra=None, label="", step=None, toleran
     short = "tol" if tolerance == "tensionTolerance" else tolerance
     if step is not None:
         tags = ",".join(t for t in (tags, f"step={h:g}") if t)
-    return Run("ours", n_elements, f"{tolerance} {tol:.0e}", cpu, times, out[:, 0:3], out[:, 3:6],
+    setting = f"{tolerance} {tol:.0e}" + "".join(f", {k} = {v:g}" for k, v in (extra or {}).items())
+    return Run("ours", n_elements, setting, cpu, times, out[:, 0:3], out[:, 3:6],
                out[:, 6:9], out[:, 9:18].reshape(-1, 3, 3), stats,
                label=label or (f"ours N={n_elements} {short}={tol:.0e}" + (f" {tags}" if tags else "")))
 
@@ -661,7 +664,8 @@ def parse_args(argv):
 def run_case(fmu, case, quick, progress_label=""):
     mode = "quick" if quick else "full"
     ref_n, ref_tol = case.reference[mode]
-    jobs = ([("ours", n, tol) for n, tol in case.fmu_grid[mode]]
+    # a grid point of ours is (N, tensionTolerance) or (N, tensionTolerance, further parameters)
+    jobs = ([("ours", g[0], g[1:]) for g in case.fmu_grid[mode]]
             + [("MoorDyn", n, f) for n, f in case.md_grid[mode]])
     bar = ProgressBar(len(jobs) + 1, label=f"{progress_label}{case.name}")
     bar.update(0, "reference")
@@ -674,7 +678,7 @@ def run_case(fmu, case, quick, progress_label=""):
     for j, (code, n, setting) in enumerate(jobs):
         bar.update(j + 1, f"{code} N={n}")
         if code == "ours":
-            runs.append(run_fmu(fmu, case, n, setting))
+            runs.append(run_fmu(fmu, case, n, setting[0], extra=setting[1] if len(setting) > 1 else None))
         else:
             if n not in limits:
                 limits[n] = moordyn_stable_dt(case, n, end_guess)

@@ -98,8 +98,10 @@ TEST(NoAllocation, ResidualAndJacobianNeverAllocate) {
     EXPECT_TRUE(std::isfinite(sum));
 }
 
-TEST(NoAllocation, CommunicationStepsDoNotAllocate) {
-    CableSimulation sim(busy_scene(0));
+namespace {
+
+void expect_steps_without_allocation(const UCParams& p) {
+    CableSimulation sim(p);
     UCInputs in{};
     in.towVelocity[0] = 1.0;
     std::string error;
@@ -116,4 +118,14 @@ TEST(NoAllocation, CommunicationStepsDoNotAllocate) {
     EXPECT_EQ(allocations, 0);
     EXPECT_GT(sim.outputs().fatigueDamage, 0.0);  // the counter ran
     EXPECT_GT(sim.outputs().towTensionMax, sim.outputs().towTensionMin);
+}
+
+}  // namespace
+
+TEST(NoAllocation, CommunicationStepsDoNotAllocate) { expect_steps_without_allocation(busy_scene(0)); }
+
+TEST(NoAllocation, CommunicationStepsWithProjectedErrorControlDoNotAllocate) {
+    UCParams p = busy_scene(0);
+    p.projectedErrorControl = 1;
+    expect_steps_without_allocation(p);
 }
