@@ -13,10 +13,8 @@ communication step: the time integration's error alone). Three properties:
   tension spikes beyond what the user allowed (relTol 1e-4 of the former error control gave spikes
   of 6 times the tension range on the Hopland manoeuvre).
 
-With projectedErrorControl (the error test split along and across the cable; off by default) the
-last two hold too, against the same references. The first is a property of the defaults only: the
-option spends the tolerance where the componentwise test over-delivers (on the tow, 6.0 N of the
-7.95 N allowed at 1e-3, 1.2 % of its small tension range, against 0.19 N without it).
+The same three hold with projectedErrorControl (the error test of the tangents split along and
+across the cable; off by default), against the same references.
 """
 
 import pytest
@@ -56,6 +54,13 @@ def test_tension_error_falls_with_the_tolerance_and_stays_below_it(short_curves,
     assert monotone([e["max_newton"] for _, _, e in rows]), report
     for tol, r, e in rows:
         assert e["max_newton"] <= tol * r.tension_scale, report
+
+
+@pytest.mark.parametrize("name", ["hopland", "heave", "stiff", "mooring"])
+def test_projected_error_control_keeps_the_default_within_half_a_percent(fmu_file, short_curves, name):
+    scene = scenes(short=True)[name]
+    e = errors(run(fmu_file, scene, PROJECTED), short_curves[name]["reference"])
+    assert e["max_range"] <= DEFAULT_BOUND and e["rms_rel"] <= DEFAULT_BOUND, e
 
 
 @pytest.mark.parametrize("name", ["hopland", "heave", "stiff", "mooring"])
