@@ -198,7 +198,9 @@ def make_cases():
             "lengths 0, L/20 and L/10 from the fairlead (our shape stations 1-3; MoorDyn nodes N, "
             "N - N/20, N - N/10, so only N multiple of 20): a chord approximation averaging the "
             "curvature over the top 25 m (it misses the hinge's bending boundary layer, sqrt(EI/T) < "
-            "1 m); error = RMS difference relative to RMS of the reference; mid-length position RMS."),
+            "1 m); error = RMS difference relative to RMS of the reference; mid-length position RMS. Ours also "
+            "at tensionTolerance 0.1 with projectedErrorControl = true (the tangents' error test along and "
+            "across the cable, docs/error_control.md; off by default)."),
         # and the loosest setting with the error test of the tangents along and across the cable
         fmu_grid=dict(full=[(n, tol) for n in (10, 20, 40) for tol in (1e-1, 1e-2, 1e-3, 1e-4)]
                       + [(n, 1e-1, {"projectedErrorControl": True}) for n in (10, 20, 40)],
