@@ -516,6 +516,10 @@ bool Integrator::set_projected_tolerances(const std::vector<ProjectedBlock>& blo
     }
     blocks_ = blocks;
     inBlock_ = std::move(in);
+    blockWeights_.clear();
+    for (const ProjectedBlock& b : blocks_) {
+        for (double a : {b.along, b.across, b.alongRate, b.acrossRate}) blockWeights_.push_back(1.0 / (a * a));
+    }
     directions_.assign(3 * blocks_.size(), 0.0);
     return true;
 }
@@ -542,15 +546,14 @@ double Integrator::projected_norm(const double* x, const double* w) const {
         sum += p * p;
     }
     for (size_t k = 0; k < blocks_.size(); ++k) {
-        const ProjectedBlock& b = blocks_[k];
         const double* d = &directions_[3 * k];
+        const double* weight = &blockWeights_[4 * k];
         for (int v = 0; v < 2; ++v) {  // coordinates, then their velocities
-            const int i = 2 * b.q + v;
+            const int i = 2 * blocks_[k].q + v;
             const double e0 = x[i], e1 = x[i + 2], e2 = x[i + 4];
             const double along = d[0] * e0 + d[1] * e1 + d[2] * e2;
             const double across2 = std::max(0.0, e0 * e0 + e1 * e1 + e2 * e2 - along * along);
-            const double a = v ? b.alongRate : b.along, c = v ? b.acrossRate : b.across;
-            sum += along * along / (a * a) + across2 / (c * c);
+            sum += along * along * weight[2 * v] + across2 * weight[2 * v + 1];
         }
     }
     return std::sqrt(sum / static_cast<double>(2 * n_));

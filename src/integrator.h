@@ -145,6 +145,7 @@ private:
     std::vector<ProjectedBlock> blocks_;
     std::vector<char> inBlock_;        // per unknown: 1 if a block measures it
     std::vector<double> directions_;   // unit direction of each block at the start of the step
+    std::vector<double> blockWeights_; // per block: 1 / along^2, 1 / across^2, 1 / alongRate^2, 1 / acrossRate^2
     void update_directions();
     SecondOrderSystem* system_;
     std::string lastMessage_;
