@@ -37,6 +37,10 @@ constexpr double kLatticeReach = 1e15;
 // are negligible.
 constexpr double kVelocityRemainder = 6e-12;
 constexpr double kRemainder = 1e-10;
+// Seas of fewer components are summed directly: an evaluation of the polynomial costs about what a
+// sum of 16 terms costs (about 1,000 instructions against 60 per term), and the cells' expansions come
+// on top (a regular wave ran 30 % slower from the polynomial, a sea of 50 components 4 times faster).
+constexpr size_t kPolynomialComponents = 16;
 // A depth band leaves out the components that together move the water by less than this fraction
 // of the local velocity scale at its top.
 constexpr double kNegligibleTerms = 1e-12;
@@ -510,7 +514,7 @@ const WaveExpansion::Polynomial& SeaState::cell_polynomial(size_t b, double z, d
 void SeaState::expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache, Vec3& u, Vec3& a, Mat3* du,
                                    Mat3* da) const {
     constexpr int D = WaveExpansion::kDegree;
-    if (components_.empty()) {
+    if (components_.size() < kPolynomialComponents) {  // a short sum costs less than the polynomial
         kinematics(r, t, u, a, du, da);
         return;
     }

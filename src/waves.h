@@ -78,7 +78,7 @@ public:
     // the local scale of each (docs/waves.md), at a fraction of the cost when a point stays in its
     // cell for many evaluations. A pure function of (r, t): the cache changes the cost, not the
     // result. With Wheeler stretching the elevation comes from a polynomial of its own (z stretched
-    // with it, as kinematics() does).
+    // with it, as kinematics() does). A sea of fewer than 16 components is summed (kinematics()).
     void expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache, Vec3& u, Vec3& a, Mat3* du = nullptr,
                              Mat3* da = nullptr) const;
     // The depth bands of the lattice: below its top z, the components after the first `count` move

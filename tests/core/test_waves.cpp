@@ -363,11 +363,11 @@ TEST(Waves, ExpandedKinematicsEqualTheSumWithinTheirBound) {
     // (waves.cpp); the components a depth band leaves out add 1e-12 of the
     // velocity scale (the acceleration's: times w_max / w_min < 6); the sum itself leaves out or
     // rounds 1e-15 of the surface scale (as kinematics()). Against the plain sum of the closed form: deep and finite
-    // depth (where the bottom's image terms count), regular and irregular, points above the surface,
-    // a cache reused along a moving point and a fresh one.
+    // depth (where the bottom's image terms count), seas of 16 to 300 components (fewer are summed),
+    // points above the surface, a cache reused along a moving point and a fresh one.
     struct Case { int mode; double depth, T; int n; };
     for (const Case& k : {Case{2, 3000.0, 10.0, 200}, Case{2, 30.0, 9.0, 120}, Case{2, 150.0, 12.0, 300},
-                          Case{1, 20.0, 8.0, 1}, Case{1, 4000.0, 6.0, 1}}) {
+                          Case{2, 20.0, 8.0, 16}, Case{2, 4000.0, 6.0, 16}}) {
         UCParams p = regular(2.5, k.T, k.depth, 0.7);
         p.wavesMode = k.mode;
         p.wavesNComponents = k.n;
@@ -486,6 +486,29 @@ TEST(Waves, ExpandedKinematicsWithStretchingFollowTheSum) {
             EXPECT_LT((due - du).norm(), 1.1e-10 * sdu + 1e-12 * surfaceDu) << depth << " " << r.transpose();
             EXPECT_LT((dae - da).norm(), 3e-9 * sda + 1e-12 * surfaceDa) << depth << " " << r.transpose();
         }
+    }
+}
+
+TEST(Waves, AShortSeaIsSummed) {
+    // Below 16 components (a regular wave included) the sum costs less than the polynomial: the
+    // residual's kinematics are the sum itself.
+    for (int n : {1, 15}) {
+        UCParams p = regular(2.0, 9.0, 60.0, 0.4);
+        p.wavesMode = n == 1 ? 1 : 2;
+        p.wavesNComponents = n;
+        SeaState sea;
+        std::string error;
+        ASSERT_TRUE(sea.build(p, error)) << error;
+        WaveExpansion cache;
+        const Vec3 r(4.0, -2.0, -7.0);
+        Vec3 u, a, ue, ae;
+        Mat3 du, da, due, dae;
+        sea.kinematics(r, 33.0, u, a, &du, &da);
+        sea.expanded_kinematics(r, 33.0, cache, ue, ae, &due, &dae);
+        EXPECT_EQ(u, ue) << n;
+        EXPECT_EQ(a, ae) << n;
+        EXPECT_EQ(du, due) << n;
+        EXPECT_EQ(da, dae) << n;
     }
 }
 
