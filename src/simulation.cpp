@@ -582,6 +582,16 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
 // axial wave takes along an element (the shortest time scale the mesh resolves). IDA tests the
 // root mean square of the weighted local errors of all 2n unknowns, which a single unknown can
 // exceed sqrt(2n) times: the tolerances are divided by sqrt(2n), so that each unknown meets its own.
+CableSimulation::ElementScales CableSimulation::element_scales(int e, double rms) const {
+    const SectionProps& section = model_.element_section(e);
+    // the winch's top element changes length: its tolerances are those of a nominal element, so
+    // that they depend on the mesh only (a restored state gets the ones it was integrated with)
+    const double l = e == 0 && model_.winch() ? model_.winch_nominal() : model_.element_length(e);
+    const double EA = section.axial.EA;
+    const double wave = l / std::sqrt(EA / section.fluid.massPerLength);
+    return {l, rms * model_.params().tensionTolerance * tensionScale_ / EA, std::max(section.axial.damping / EA, wave)};
+}
+
 bool CableSimulation::set_integrator_tolerances(std::string& error) {
     const UCParams& p = model_.params();
     const double rms = 1.0 / std::sqrt(2.0 * unknowns());
@@ -590,14 +600,8 @@ bool CableSimulation::set_integrator_tolerances(std::string& error) {
     // Each unknown gets the tolerance of the elements it belongs to (the smaller one at a node
     // between two sections).
     for (int e = 0; e < model_.n_elements(); ++e) {
-        const SectionProps& section = model_.element_section(e);
-        // the winch's top element changes length: its tolerances are those of a nominal element, so
-        // that they depend on the mesh only (a restored state gets the ones it was integrated with)
-        const double l = e == 0 && model_.winch() ? model_.winch_nominal() : model_.element_length(e);
-        const double EA = section.axial.EA;
-        const double strain = rms * p.tensionTolerance * tensionScale_ / EA;
-        const double wave = l / std::sqrt(EA / section.fluid.massPerLength);
-        const double tau = std::max(section.axial.damping / EA, wave);
+        const ElementScales scales = element_scales(e, rms);
+        const double l = scales.length, strain = scales.strain, tau = scales.tau;
         for (int k = 0; k < 12; ++k) {
             const int m = model_.free_index(model_.element_offset(e) + k);
             if (m < 0) continue;
@@ -629,12 +633,8 @@ std::vector<Integrator::ProjectedBlock> CableSimulation::projected_blocks() cons
     // the node. Node positions keep the componentwise test: projected too, the chain mooring's error
     // left the tolerance (docs/error_control.md).
     for (int e = 0; e < model_.n_elements(); ++e) {
-        const SectionProps& section = model_.element_section(e);
-        const double l = e == 0 && model_.winch() ? model_.winch_nominal() : model_.element_length(e);
-        const double EA = section.axial.EA;
-        const double strain = rms * p.tensionTolerance * tensionScale_ / EA;
-        const double wave = l / std::sqrt(EA / section.fluid.massPerLength);
-        const double tau = std::max(section.axial.damping / EA, wave);
+        const ElementScales scales = element_scales(e, rms);
+        const double l = scales.length, strain = scales.strain, tau = scales.tau;
         for (int node = 0; node < 2; ++node) {
             const int g = model_.element_offset(e) + 6 * node + 3;  // the node's tangent
             const int j = model_.free_index(g);

@@ -84,6 +84,14 @@ private:
     bool check_geometry(const Vec3& farPoint, std::string& error) const;
     void update_outputs();
     bool set_integrator_tolerances(std::string& error);
+    // An element's length (the winch's nominal one for its top element), the strain tolerance
+    // (tensionTolerance x the tension scale / EA, times rms) and the time scale tau over which a
+    // velocity error matters as a position error does (the Kelvin-Voigt time, at least an axial wave's
+    // transit of the element).
+    struct ElementScales {
+        double length, strain, tau;
+    };
+    ElementScales element_scales(int e, double rms) const;
     // The projected error blocks of projectedErrorControl (empty when it is off).
     std::vector<Integrator::ProjectedBlock> projected_blocks() const;
     double cable_torque(const UCInputs& in);

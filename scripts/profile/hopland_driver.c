@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "cable_api.h"
+#include "driver.h"
 
 int main(int argc, char** argv) {
     const double t_end = argc > 1 ? atof(argv[1]) : 60.0;
@@ -34,11 +35,5 @@ int main(int argc, char** argv) {
         in.towAccelerationGiven = 1;
         if (uc_do_step(c, t, h, &in, msg, sizeof msg)) { fprintf(stderr, "step: %s\n", msg); return 1; }
     }
-    uc_get_outputs(c, &out);
-    printf("nElements %d\nt_end %g\nnSteps %.0f\nnResidualEvals %.0f\nnResidualEvalsInit %.0f\n"
-           "nJacobianEvals %.0f\nnNonlinearFailures %.0f\nnErrorTestFailures %.0f\ntowTension %.6f\n",
-           n_el, t_end, out.nSteps, out.nResidualEvals, res0, out.nJacobianEvals,
-           out.nNonlinearFailures, out.nErrorTestFailures, out.towTension);
-    uc_free(c);
-    return 0;
+    return print_statistics(c, n_el, t_end, res0);
 }

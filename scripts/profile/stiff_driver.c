@@ -11,24 +11,12 @@
 #include <string.h>
 
 #include "cable_api.h"
-
-/* x, velocity and acceleration of the ramped surge A r(t) sin(w t), r = 3 tau^2 - 2 tau^3. */
-static void surge(double t, double* x, double* v, double* a) {
-    const double A = 3.0, T = 8.0, w = 2.0 * 3.14159265358979323846 / T;
-    const double tau = t < T ? t / T : 1.0;
-    const double r = 3 * tau * tau - 2 * tau * tau * tau;
-    const double dr = t < T ? (6 * tau - 6 * tau * tau) / T : 0.0, ddr = t < T ? (6 - 12 * tau) / (T * T) : 0.0;
-    const double s = sin(w * t), c = cos(w * t);
-    *x = A * r * s;
-    *v = A * (dr * s + r * w * c);
-    *a = A * (ddr * s + 2 * dr * w * c - r * w * w * s);
-}
+#include "driver.h"
 
 int main(int argc, char** argv) {
     const double t_end = argc > 1 ? atof(argv[1]) : 30.0;
     const int n_el = argc > 2 ? atoi(argv[2]) : 20;
     const double h = 0.05;
-    char msg[512];
     UCParams p;
     uc_params_default(&p);
     p.nElements = n_el;
@@ -52,27 +40,8 @@ int main(int argc, char** argv) {
     p.seabedStiffness = 3e6 * p.diameter;
     p.seabedDamping = 3e5 * p.diameter;
     p.seabedFriction = 0.0;
-    UCCable* c = uc_create(&p, msg, sizeof msg);
-    if (!c) { fprintf(stderr, "uc_create: %s\n", msg); return 1; }
     UCInputs in;
     memset(&in, 0, sizeof in);
     in.tow[2] = -10.0;
-    if (uc_initialize(c, 0.0, &in, msg, sizeof msg)) { fprintf(stderr, "init: %s\n", msg); return 1; }
-    UCOutputs out;
-    uc_get_outputs(c, &out);
-    const double res0 = out.nResidualEvals;
-    const int n = (int)(t_end / h + 0.5);
-    for (int k = 0; k < n; ++k) {
-        const double t = k * h;
-        surge(t, &in.tow[0], &in.towVelocity[0], &in.towAcceleration[0]);
-        in.towAccelerationGiven = 1;
-        if (uc_do_step(c, t, h, &in, msg, sizeof msg)) { fprintf(stderr, "step: %s\n", msg); return 1; }
-    }
-    uc_get_outputs(c, &out);
-    printf("nElements %d\nt_end %g\nnSteps %.0f\nnResidualEvals %.0f\nnResidualEvalsInit %.0f\n"
-           "nJacobianEvals %.0f\nnNonlinearFailures %.0f\nnErrorTestFailures %.0f\ntowTension %.6f\n",
-           n_el, t_end, out.nSteps, out.nResidualEvals, res0, out.nJacobianEvals,
-           out.nNonlinearFailures, out.nErrorTestFailures, out.towTension);
-    uc_free(c);
-    return 0;
+    return run_ramped_sine(&p, &in, 0, 3.0, 8.0, t_end, h);
 }
