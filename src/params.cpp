@@ -75,6 +75,9 @@ std::string check_params(const UCParams& p) {
         return m;
     if (p.enableSeabed && positive(m, "seabedStiffness", p.seabedStiffness, "an enabled seabed needs a contact stiffness"))
         return m;
+    if (p.wavesMode != 0 && p.wavesHeight > 0.0 &&
+        positive(m, "gravity", p.gravity, "waves need gravity: it sets their wavelength (w^2 = g k tanh(k h))"))
+        return m;
     if (p.wavesMode != 0 && p.wavesHeight > 0.0) {  // breaking: H over the (peak) wavelength above 1/7
         const double k = wave_number(2.0 * 3.14159265358979323846 / p.wavesPeriod, p.waterDepth, p.gravity);
         const double limit = 2.0 * 3.14159265358979323846 / k / 7.0;

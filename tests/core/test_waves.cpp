@@ -154,6 +154,19 @@ TEST(Waves, BreakingWavesAreRefusedNamingTheHeight) {
     EXPECT_EQ(uc_params_check(&p, msg, sizeof msg), 0) << msg;
 }
 
+TEST(Waves, WavesWithoutGravityAreRefusedNamingGravity) {
+    // Gravity sets the waves' length (w^2 = g k tanh(k h)): none, and the message names it, not the
+    // height a zero gravity would make "too steep". Calm water needs none.
+    UCParams p = regular(2.0, 8.0, 100.0);
+    p.gravity = 0.0;
+    char msg[400];
+    EXPECT_NE(uc_params_check(&p, msg, sizeof msg), 0);
+    EXPECT_NE(std::string(msg).find("gravity"), std::string::npos) << msg;
+    EXPECT_EQ(std::string(msg).find("waves.height"), std::string::npos) << msg;
+    p.wavesMode = 0;
+    EXPECT_EQ(uc_params_check(&p, msg, sizeof msg), 0) << msg;
+}
+
 TEST(Waves, MorisonLoadJacobianInWavesMatchesFiniteDifferences) {
     UCParams prm = regular(3.0, 8.0, 80.0, 0.3);
     SeaState sea;
