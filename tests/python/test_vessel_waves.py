@@ -210,6 +210,11 @@ def test_bad_seas_and_tables_are_errors_naming_the_variable_or_file(vessel_fmu, 
     with pytest.raises(FMICallException):
         v.initialize(0.0, 10.0)
     assert any("waves.height = 12 is too steep" in m for _, _, m in v.messages), v.log_text()
+    weightless = make_unit(vessel_fmu, parameters={"waves.mode": 1, "waves.height": 1.0, "gravity": 0.0},
+                           instance_name="weightless")
+    with pytest.raises(FMICallException):
+        weightless.initialize(0.0, 10.0)
+    assert any("gravity = 0" in m for _, _, m in weightless.messages), weightless.log_text()
     broken = fmu_with_table(vessel_fmu, tmp_path / "Vessel.fmu", "period,heading\n8,180,1\n")
     u = make_unit(broken, parameters={"waves.mode": 2, "waves.height": 1.0}, instance_name="table")
     with pytest.raises(FMICallException):

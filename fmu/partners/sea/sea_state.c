@@ -48,6 +48,10 @@ int pm_sea_components(const PMWaves* w, PMWaveComponent* out, char* msg, size_t 
     const size_t n = pm_sea_size(w);
     if (n == 0) return 0;
     const double g = w->gravity;
+    if (!(g > 0.0)) {
+        snprintf(msg, msgSize, "gravity = %.17g: waves need gravity, it sets their wavelength (w^2 = g k tanh(k h))", g);
+        return 1;
+    }
     const double wp = 2.0 * kPi / w->period;
     const double kp = pm_wave_number(wp, w->depth, g);
     const double steepness = w->height * kp / (2.0 * kPi);
