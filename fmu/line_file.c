@@ -1,38 +1,15 @@
 /* line_file.c - see line_file.h. */
 #include "line_file.h"
 
+#include "file_lookup.h"
 #include "file_uri.h"
 
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #define UC_NOTES_SIZE 8192
-
-/* dir + "/" + name in a new buffer (free it); NULL when out of memory. */
-static char* join_path(const char* dir, const char* name) {
-    const size_t d = strlen(dir), n = strlen(name);
-    const int slash = d > 0 && dir[d - 1] != '/';
-    char* path = malloc(d + (size_t)slash + n + 1);
-    if (path == NULL) return NULL;
-    memcpy(path, dir, d);
-    if (slash) path[d] = '/';
-    memcpy(path + d + slash, name, n + 1);
-    return path;
-}
-
-static const char* reason(int error) {
-    switch (error) {
-        case ENOENT: return "no such file";
-        case EACCES: return "permission denied";
-        case EISDIR: return "a directory";
-        case EFBIG: return "larger than 16 MiB";
-        case ENOMEM: return "out of memory";
-        default: return "cannot be read";
-    }
-}
 
 /* The whole file in a new NUL-terminated buffer (free it); NULL with *error set when it cannot be read. */
 static char* read_file(const char* path, size_t* length, int* error) {
@@ -71,27 +48,19 @@ static char* read_file(const char* path, size_t* length, int* error) {
     return text;
 }
 
-/* The candidate paths of lineFile, in order: resources directory, then working directory (relative
- * paths), or the path itself (absolute). Returns how many were made (0..2); free each. */
+/* The candidate paths of lineFile (file_lookup.h); the resources directory from fmuResourceLocation. */
 static int candidate_paths(const UCInstance* inst, char* candidates[2]) {
-    const char* name = inst->params.lineFile;
-    int n = 0;
-    if (name[0] == '/') {
-        candidates[n] = join_path("", name);
-        return candidates[n] != NULL ? 1 : 0;
-    }
+    char* dir = NULL;
     if (inst->resourceLocation != NULL) {
         const size_t size = strlen(inst->resourceLocation) + 1;
-        char* dir = malloc(size);
-        if (dir != NULL && uc_file_uri_to_path(inst->resourceLocation, dir, size) == 0) {
-            candidates[n] = join_path(dir, name);
-            if (candidates[n] != NULL) ++n;
+        dir = malloc(size);
+        if (dir != NULL && uc_file_uri_to_path(inst->resourceLocation, dir, size) != 0) {
+            free(dir);
+            dir = NULL;
         }
-        free(dir);
     }
-    char cwd[4096];
-    candidates[n] = join_path(getcwd(cwd, sizeof cwd) != NULL ? cwd : "", name);
-    if (candidates[n] != NULL) ++n;
+    const int n = uc_file_candidates(inst->params.lineFile, dir, candidates);
+    free(dir);
     return n;
 }
 
@@ -141,9 +110,7 @@ fmi2Status uc_line_file_load(UCInstance* inst, UCParams* p, const char* function
         int error = 0;
         char* text = read_file(candidates[k], &length, &error);
         if (text == NULL) {
-            const size_t used = strlen(tried);
-            snprintf(tried + used, sizeof tried - used, "%s%s (%s)", used > 0 ? ", " : "", candidates[k],
-                     reason(error));
+            uc_file_note_tried(tried, sizeof tried, candidates[k], error);
             continue;
         }
         status = apply_text(inst, p, function, candidates[k], text, length);

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "simulation.h"
+#include "string_value.h"
 
 static const UCVariable* find_or_log(UCInstance* inst, fmi2ValueReference vr, UCVarType type,
                                      const char* function) {
@@ -116,26 +117,12 @@ fmi2Status uc_get_strings(UCInstance* inst, const fmi2ValueReference vr[], size_
     return fmi2OK;
 }
 
-/* Copies one string into the variable's zero-filled char array (so equal strings compare equal byte for
- * byte, as store_value and the saved states do); the caller's memory is not kept. */
+/* The instance's copy of one string (string_value.h); a changed parameter drops the core built from it. */
 static fmi2Status store_string(UCInstance* inst, const UCVariable* v, const char* value, const char* function) {
-    if (value == NULL) {
-        uc_log_status(&inst->log, fmi2Error, "%s: %s: the value is a NULL pointer (an empty string is \"\")",
-                      function, v->name);
-        return fmi2Error;
-    }
-    /* memchr stops at the first NUL (C11 7.24.5.1): never reads past the end of a short string. */
-    const char* end = memchr(value, '\0', v->size);
-    if (end == NULL) {
-        uc_log_status(&inst->log, fmi2Error, "%s: %s: the string is longer than the %zu bytes this FMU keeps",
-                      function, v->name, v->size - 1);
-        return fmi2Error;
-    }
     char* target = (char*)uc_variable_address(v, &inst->params, &inst->inputs, &inst->outputs);
-    if (strcmp(target, value) == 0) return fmi2OK;
-    memset(target, 0, v->size);
-    memcpy(target, value, (size_t)(end - value));
-    if (inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
+    const int changed = uc_store_string(&inst->log, function, v->name, target, v->size, value);
+    if (changed < 0) return fmi2Error;
+    if (changed && inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
     return fmi2OK;
 }
 

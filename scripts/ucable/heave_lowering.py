@@ -1,14 +1,15 @@
 """The heave-lowering scene: a 2 t body on 500 m of umbilical hanging from a vessel in an irregular sea,
 the VesselRAO FMU driving the cable FMU's top through fmpy (scripts/manoeuvre heave-lowering).
 
-Vessel: the generic 80 m vessel of the VesselRAO FMU (its shipped RAO table), holding station at the
-origin, heading +x, in head seas (the waves travel along -x); the umbilical leaves over the stern, 36 m
-aft of midships on the centreline at the waterline. Sea: JONSWAP Hs 3 m, Tp 9 s, gamma 3.3, 200
-components, ramped in over 20 s; the same waves.* parameters go to both FMUs, so the water around the
-cable is the sea that moves the vessel. Umbilical and body: those of the scene file lowering_in_waves
-(500 m, d 0.03 m, 2 kg/m, EA 3e7 N, EI 500 N m2, Cdn 1.2, Cdt 0.01; a 2 t body of 0.5 m3 with 1 t added
-mass and a drag area of 3 m2 on the lower end, bottomEnd 2), in 1000 m of water, starting from rest
-straight below the top. (That scene file prescribes a sinusoidal heave of the top instead.)
+Vessel: the generic 80 m vessel of the VesselRAO FMU (its shipped RAO table; rao_file: another's),
+holding station at the origin, heading +x, in head seas (the waves travel along -x); the umbilical leaves
+over the stern, 36 m aft of midships on the centreline at the waterline. Sea: JONSWAP Hs 3 m, Tp 9 s,
+gamma 3.3, 200 components, ramped in over 20 s; the same waves.* parameters go to both FMUs, so the water
+around the cable is the sea that moves the vessel. Umbilical and body: those of the scene file
+lowering_in_waves (500 m, d 0.03 m, 2 kg/m, EA 3e7 N, EI 500 N m2, Cdn 1.2, Cdt 0.01; a 2 t body of
+0.5 m3 with 1 t added mass and a drag area of 3 m2 on the lower end, bottomEnd 2), in 1000 m of water,
+starting from rest straight below the top. (That scene file prescribes a sinusoidal heave of the top
+instead.)
 
 Master: at every communication point the vessel's tow-point position and velocity go to the cable's tow.*
 inputs and its acceleration to der(tow.v*) (fmi2SetRealInputDerivatives); the vessel's motion is a closed
@@ -50,6 +51,7 @@ class Scene:
     tow_point: tuple = (-36.0, 0.0, 0.0)
     water_depth: float = 1000.0
     line_scene: str = "lowering_in_waves"  # the scene file whose umbilical and body hang here
+    rao_file: str = ""  # the vessel's RAO table (VesselRAO's raoFile, docs/waves.md); "": the shipped one
     extra: dict = field(default_factory=dict)  # further cable parameters
 
     def waves(self) -> dict:
@@ -60,7 +62,8 @@ class Scene:
 
     def vessel_parameters(self) -> dict:
         return {**self.waves(), "x0": 0.0, "y0": 0.0, "heading": 0.0, "towPoint.x": self.tow_point[0],
-                "towPoint.y": self.tow_point[1], "towPoint.z": self.tow_point[2]}
+                "towPoint.y": self.tow_point[1], "towPoint.z": self.tow_point[2],
+                **({"raoFile": self.rao_file} if self.rao_file else {})}
 
     def line(self) -> dict:
         """The umbilical and body parameters of the scene file (its sea left out: ours is set here)."""

@@ -61,6 +61,9 @@ def parse_args(argv):
     p.add_argument("--tp", type=float, default=9.0, help=f"{HEAVE_LOWERING}: peak period [s]")
     p.add_argument("--seed", type=int, default=1, help=f"{HEAVE_LOWERING}: waves.seed")
     p.add_argument("--components", type=int, default=200, help=f"{HEAVE_LOWERING}: waves.nComponents")
+    p.add_argument("--rao-file", default="", metavar="PATH",
+                   help=f"{HEAVE_LOWERING}: the vessel's RAO table (raoFile of the VesselRAO FMU, docs/waves.md: a "
+                        "path or file:// URI; default the shipped generic 80 m vessel's)")
     p.add_argument("--out", type=Path, default=None, help="output directory (default out/manoeuvre/<name>)")
     p.add_argument("--fmu", type=Path, default=None, help="FMU (default build/UnderwaterCable.fmu or $UC_FMU)")
     return p.parse_args(argv)
@@ -197,7 +200,7 @@ def main_heave_lowering(args, fmu, out: Path) -> int:
     scene = heave_lowering.Scene(
         t_end=heave_lowering.DEFAULT_T_END if args.t_end is None else args.t_end,
         step=0.2 if args.step is None else args.step, n_elements=args.nElements, hs=args.hs, tp=args.tp,
-        seed=args.seed, components=args.components)
+        seed=args.seed, components=args.components, rao_file=args.rao_file)
     bar = ProgressBar(scene.t_end, label=args.name)
     r = heave_lowering.run(scene, fmu, progress=bar.update)
     bar.close(f"simulated {scene.t_end:g} s in {len(r.time) - 1} steps, {r.cpu:.2f} s CPU "

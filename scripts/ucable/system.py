@@ -29,6 +29,7 @@ import time as timer
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from xml.sax.saxutils import escape as xml_escape
 
 import numpy as np
 
@@ -151,7 +152,9 @@ class SystemStructure:
             lines.append(f'    <Simulator name="{s.name}" source="{s.source}">')
             lines.append("      <InitialValues>")
             for var, value in {**s.initial, **extra.get(s.name, {})}.items():
-                if isinstance(value, bool):
+                if isinstance(value, str):
+                    tag, text = "String", xml_escape(value, {'"': "&quot;"})
+                elif isinstance(value, bool):
                     tag, text = "Boolean", "true" if value else "false"
                 elif isinstance(value, int):
                     tag, text = "Integer", str(value)
@@ -465,10 +468,11 @@ def steady_far_end(system: SystemStructure, parameters: dict, body: Body) -> dic
 def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: str = "fmpy",
         ordering: str = "gauss-seidel", body: Body = Body(), duration: float | None = None,
         input_derivatives: bool = True, cable_parameters: dict | None = None, waves: dict | None = None,
-        progress=None) -> SystemResult:
+        vessel_parameters: dict | None = None, progress=None) -> SystemResult:
     """One system run: the manoeuvre flown by the Vessel FMU, the towed body coupled as `coupling`; `waves`
     (waves.* parameters and waterDepth) are given to the vessel, whose wave-frequency motion is then
-    superimposed on its manoeuvre, and to the cable: one sea for both."""
+    superimposed on its manoeuvre, and to the cable: one sea for both; `vessel_parameters` to the vessel
+    alone (raoFile: its RAO table)."""
     if manoeuvre not in MANOEUVRES:
         raise ValueError(f"manoeuvre must be one of {', '.join(MANOEUVRES)}")
     if master not in MASTERS:
@@ -479,7 +483,7 @@ def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: s
     t_end = default_duration if duration is None else duration
     system = load_system(coupling)
     params = unit_parameters(coupling, body)
-    params["vessel"] = {**vessel, **(waves or {})}
+    params["vessel"] = {**vessel, **(waves or {}), **(vessel_parameters or {})}
     params["cable"] = {**params["cable"], **(cable_parameters or {}), **(waves or {})}
     if coupling == "explicit":
         start = steady_far_end(system, params, body)

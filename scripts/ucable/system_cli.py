@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .fmu import FMICallException
 from .paths import REPO_ROOT
 from .progress import ProgressBar
 from .system import COUPLINGS, MANOEUVRES, MASTERS, ORDERINGS, Body, Diverged, run
@@ -57,6 +58,10 @@ def parse_args(argv):
                    help="direction the waves travel [deg from +x toward +y] (180: head seas at the start)")
     p.add_argument("--seed", type=int, default=1, help="seed of the irregular sea's phases")
     p.add_argument("--wave-ramp", type=float, default=20.0, help="time over which the sea grows from calm [s]")
+    p.add_argument("--rao-file", default=None, metavar="PATH",
+                   help="the vessel's RAO table (its parameter raoFile, docs/waves.md: a path or file:// URI, a "
+                        "relative path looked up in the FMU's resources, then here; default the shipped generic "
+                        "80 m vessel's); with --waves 1 or 2")
     p.add_argument("--out", type=Path, default=None, help="output directory (default out/system/<manoeuvre>)")
     return p.parse_args(argv)
 
@@ -119,6 +124,8 @@ def main(argv=None) -> int:
     ordering = args.ordering or ("jacobi" if args.master == "libcosim" else "gauss-seidel")
     if args.master == "libcosim" and ordering != "jacobi":
         sys.exit("libcosim's fixed-step algorithm is Jacobi: --ordering jacobi")
+    if args.rao_file is not None and not args.waves:
+        sys.exit("--rao-file needs --waves 1 or 2 (in calm water the vessel reads no RAO table)")
     body = Body(args.body_mass, args.body_added_mass, args.body_volume, args.body_cda, args.body_cla)
     duration = MANOEUVRES[args.manoeuvre][1] if args.duration is None else args.duration
     out = args.out if args.out is not None else REPO_ROOT / "out" / "system" / args.manoeuvre
@@ -126,9 +133,12 @@ def main(argv=None) -> int:
     bar = ProgressBar(duration, label=args.manoeuvre)
     try:
         r = run(args.manoeuvre, args.step, args.coupling, args.master, ordering, body, duration,
-                input_derivatives=args.input_derivatives, waves=waves_of(args), progress=bar)
+                input_derivatives=args.input_derivatives, waves=waves_of(args),
+                vessel_parameters=None if args.rao_file is None else {"raoFile": args.rao_file}, progress=bar)
     except (ValueError, FileNotFoundError) as e:
         sys.exit(f"scripts/system: {e}")
+    except FMICallException as e:
+        sys.exit(f"scripts/system: {e} (the FMU log above says why)")
     except Diverged as e:
         sys.exit(f"scripts/system: the co-simulation diverged: {e}")
     bar.close(f"simulated {duration:g} s in {len(r.time) - 1} steps, {r.cpu:.2f} s CPU")

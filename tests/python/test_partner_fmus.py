@@ -145,6 +145,37 @@ def test_bad_parameters_and_inputs_are_errors_naming_the_variable(body_fmu, vess
     assert any("mass is a fixed parameter" in m for _, _, m in w.messages), w.log_text()
 
 
+def test_a_string_parameter_is_copied_into_the_instance_and_fixed_after_initialization(vessel_fmu, make_unit):
+    """raoFile (String): the FMU keeps its own copy (the caller's buffer overwritten after fmi2SetString
+    changes nothing), a string longer than the 4095 bytes it keeps, NULL, and a change after initialization
+    are errors naming the variable; a wrong type's value reference is unknown."""
+    import ctypes
+
+    from fmpy.fmi2 import fmi2String, fmi2ValueReference
+    v = make_unit(vessel_fmu, instance_name="v")
+    vr = v.variables["raoFile"].valueReference
+    buffer = ctypes.create_string_buffer(b"my_vessel.csv")
+    one = (fmi2ValueReference * 1)(vr)
+    v.slave.fmi2SetString(v.slave.component, one, 1, (fmi2String * 1)(ctypes.addressof(buffer)))
+    ctypes.memset(buffer, ord("x"), len(buffer) - 1)
+    v.initialize(0.0, 10.0)  # calm water: no RAO table is read
+    assert v.get("raoFile") == "my_vessel.csv"
+    with pytest.raises(FMICallException):
+        v.set({"raoFile": "other.csv"})
+    assert any("raoFile is a fixed parameter" in m for _, _, m in v.messages), v.log_text()
+    with pytest.raises(FMICallException):
+        v.slave.getReal([vr])
+    assert any(f"unknown value reference {vr} for type Real" in m for _, _, m in v.messages), v.log_text()
+    w = make_unit(vessel_fmu, parameters={"raoFile": "x" * 4095}, instance_name="w")  # the longest it keeps
+    with pytest.raises(FMICallException):
+        w.set({"raoFile": "x" * 4096})
+    assert any("raoFile: the string is longer than the 4095 bytes this FMU keeps" in m for _, _, m in w.messages)
+    n = make_unit(vessel_fmu, instance_name="n")
+    with pytest.raises(FMICallException):
+        n.slave.fmi2SetString(n.slave.component, one, 1, (fmi2String * 1)(None))
+    assert any("raoFile: the value is a NULL pointer" in m for _, _, m in n.messages), n.log_text()
+
+
 def test_do_step_before_initialization_is_an_illegal_call_sequence(body_fmu, make_unit):
     b = make_unit(body_fmu)
     with pytest.raises(FMICallException):

@@ -146,3 +146,28 @@ def test_vessel_and_cable_see_one_sea_and_the_waves_move_the_line(fmu_file):
     assert error <= bound and bound < 1e-3, (error, bound)
     assert np.std(r["vessel.tow.z"]) > 0.02 and np.all(calm["vessel.tow.z"] == 0.0)
     assert np.std(r["cable.towTension"][40:]) > 5 * np.std(calm["cable.towTension"][40:])
+
+
+def test_the_vessel_reads_its_own_rao_table_under_both_masters(fmu_file, tmp_path):
+    """raoFile reaches the Vessel FMU alone (vessel_parameters; the OSP file's <String> start value for
+    libcosim): a copy of the shipped table moves the system bit for bit as the default under fmpy and
+    libcosim (Jacobi without input derivatives: the same calls); a table with every amplitude times 1.5
+    moves the tow point (z: heave, roll and pitch at the lever arm; 0 in calm water) 1.5 times as far, to
+    2 % of its amplitude: the manoeuvre feels the cable's tow force, which the larger motion changes
+    (0.8 % measured; the default table is 50 % off)."""
+    from ucable.rao_box import DEFAULT_OUT as RAO_CSV
+    waves = {"waves.mode": 1, "waves.height": 2.0, "waves.period": 8.0, "waves.direction": 2.5}
+    rows = [line.split(",") for line in RAO_CSV.read_text().splitlines()]
+    scaled = [r if len(r) != 14 or r[0] == "period" or r[0].startswith("#")
+              else r[:2] + [repr(1.5 * float(x)) if i % 2 == 0 else x for i, x in enumerate(r[2:])] for r in rows]
+    (tmp_path / "copy.csv").write_text(RAO_CSV.read_text())
+    (tmp_path / "scaled.csv").write_text("\n".join(",".join(r) for r in scaled) + "\n")
+    kw = {"coupling": "internal", "ordering": "jacobi", "duration": 10.0, "input_derivatives": False, "waves": waves}
+    default = S.run("turn90", 0.5, **kw)
+    z = default["vessel.tow.z"]
+    assert np.ptp(z) > 0.5
+    for master in ("fmpy", "libcosim"):
+        copy = S.run("turn90", 0.5, master=master, vessel_parameters={"raoFile": str(tmp_path / "copy.csv")}, **kw)
+        assert all(np.array_equal(copy[key], default[key]) for key in default.values), master
+        own = S.run("turn90", 0.5, master=master, vessel_parameters={"raoFile": str(tmp_path / "scaled.csv")}, **kw)
+        assert np.max(np.abs(own["vessel.tow.z"] - 1.5 * z)) <= 0.02 * 1.5 * np.max(np.abs(z)), master

@@ -189,3 +189,120 @@ def test_the_shipped_raos_follow_the_surface_in_long_waves(period, heading):
     scale = np.array([1.0, 1.0, 1.0, k, k, k])
     r = 9.8 / period
     assert np.all(np.abs(box_raos(period, heading) - limit) <= (0.8 * r + 3 * r * r) * scale)
+
+
+# ---- raoFile: the engineer's own RAO table -------------------------------------------------------------
+
+SEA = {"waves.mode": 2, "waves.height": 3.0, "waves.period": 9.0, "waves.seed": 5, "waves.direction": 2.4,
+       "waves.rampTime": 4.0}
+VESSEL_SEA = {**SEA, "speed0": 1.0, "speed1": 1.5, "turnStart": 2.0, "turnRate": 0.02, "turnAngle": 0.3}
+
+
+def outputs_of_run(unit, steps=20, h=0.5):
+    """Every output at every communication point of a run from t = 0: a dict name -> values."""
+    names = [n for n, x in unit.variables.items() if x.causality == "output"]
+    unit.initialize(0.0, steps * h)
+    rows = [unit.get_reals(names)]
+    for k in range(steps):
+        unit.do_step(h, t=k * h)
+        rows.append(unit.get_reals(names))
+    return dict(zip(names, np.array(rows).T))
+
+
+def table_with(path, scale_heave=1.0):
+    """The shipped table written to path, its heave amplitudes times scale_heave (Python's shortest
+    round-trip repr: strtod reads back exactly the scaled double)."""
+    lines = RAO_CSV.read_text().splitlines()
+    out = []
+    for line in lines:
+        fields = line.split(",")
+        if len(fields) == 14 and not line.startswith("#") and fields[0] != "period":
+            fields[6] = repr(float(fields[6]) * scale_heave)
+        out.append(",".join(fields))
+    path.write_text("\n".join(out) + "\n")
+    return path
+
+
+@pytest.mark.parametrize("name, params", [("VesselRAO", {**SEA, "towPoint.y": 4.0}), ("Vessel", VESSEL_SEA)])
+def test_a_copy_of_the_shipped_table_as_raofile_moves_the_vessel_bit_identically(make_unit, tmp_path, monkeypatch,
+                                                                                name, params):
+    """The shipped table copied to a temporary file and named by raoFile as an absolute path, a file://
+    URI and a path relative to the working directory; and "rao.csv" (relative: found in the resources
+    first): every output at every point is the default's to the bit."""
+    fmu = partner_fmu(name)
+    copy = table_with(tmp_path / "my vessel.csv")  # a space: percent-encoded in the URI
+    monkeypatch.chdir(tmp_path)
+    default = outputs_of_run(make_unit(fmu, parameters=params, instance_name="default"))
+    for value in (str(copy), copy.as_uri(), "my vessel.csv", "rao.csv"):
+        unit = make_unit(fmu, parameters={**params, "raoFile": value}, instance_name="own")
+        got = outputs_of_run(unit)
+        assert all(np.array_equal(got[n], default[n]) for n in default), value
+        assert unit.get("raoFile") == value
+    assert np.ptp(default["tow.z"]) > 0.1  # the waves move the tow point: the comparison compares something
+
+
+def test_doubled_heave_amplitudes_double_the_heave_of_a_tow_point_under_the_reference_point(rao_fmu, make_unit,
+                                                                                           tmp_path):
+    """Tow point at the RAO reference point (zero lever arm): its z is the heave alone, so a table with
+    every heave amplitude doubled (phases unchanged) gives exactly twice the default's tow.z, tow.vz and
+    tow.az (a factor 2 is exact in every operation of the interpolation and the sum), and the other
+    degrees of freedom unchanged."""
+    params = {**SEA, "towPoint.x": 0.0, "towPoint.y": 0.0, "towPoint.z": 0.0}
+    names = ["tow.z", "tow.vz", "tow.az", "heave", "surge", "sway", "roll", "pitch", "yaw"]
+
+    def run(extra):
+        v = make_unit(rao_fmu, parameters={**params, **extra})
+        v.initialize(0.0, 10.0)
+        rows = []
+        for k in range(20):
+            v.do_step(0.5, t=0.5 * k)
+            rows.append(v.get_reals(names))
+        return np.array(rows)
+
+    default = run({})
+    doubled = run({"raoFile": str(table_with(tmp_path / "doubled.csv", 2.0))})
+    assert np.ptp(default[:, 0]) > 0.1
+    assert np.array_equal(doubled[:, :4], 2.0 * default[:, :4])
+    assert np.array_equal(doubled[:, 4:], default[:, 4:])
+
+
+@pytest.mark.parametrize("name, params", [("VesselRAO", SEA), ("Vessel", VESSEL_SEA)])
+def test_a_missing_or_malformed_raofile_is_an_error_naming_raofile_and_the_path(make_unit, tmp_path, name, params):
+    fmu = partner_fmu(name)
+    missing = tmp_path / "no_such_table.csv"
+    v = make_unit(fmu, parameters={**params, "raoFile": str(missing)}, instance_name="missing")
+    with pytest.raises(FMICallException) as e:
+        v.initialize(0.0, 10.0)
+    assert e.value.status == 3  # fmi2Error
+    assert any(f"raoFile = '{missing}' cannot be read: tried {missing} (no such file)" in m
+               for _, _, m in v.messages), v.log_text()
+    bad = tmp_path / "bad.csv"
+    bad.write_text("period,heading\n8,180," + ROW + "\n8,180,1\n")
+    u = make_unit(fmu, parameters={**params, "raoFile": bad.as_uri()}, instance_name="malformed")
+    with pytest.raises(FMICallException) as e:
+        u.initialize(0.0, 10.0)
+    assert e.value.status == 3
+    assert any(f"raoFile = '{bad.as_uri()}': RAO table {bad}, line 3: expected 14 comma-separated numbers" in m
+               for _, _, m in u.messages), u.log_text()
+
+
+def test_a_restored_state_brings_its_raofile_and_table(rao_fmu, make_unit, tmp_path):
+    """A state of an instance with its own table, serialized and restored into an instance of the shipped
+    table, continues with the saved instance's table, bit for bit."""
+    own = str(table_with(tmp_path / "doubled.csv", 2.0))
+    a = make_unit(rao_fmu, parameters={**SEA, "raoFile": own}, instance_name="a")
+    c = make_unit(rao_fmu, parameters=SEA, instance_name="c")
+    for u in (a, c):
+        u.initialize(0.0, 20.0)
+    for k in range(10):
+        a.do_step(0.5, t=0.5 * k)
+    data = a.serialize_state(a.get_state())
+    tail = []
+    for k in range(10):
+        a.do_step(0.5, t=5.0 + 0.5 * k)
+        tail.append(a.get_reals(TOW))
+    c.set_state(c.deserialize_state(data), time=5.0)
+    assert c.get("raoFile") == own
+    for k in range(10):
+        c.do_step(0.5, t=5.0 + 0.5 * k)
+        assert np.array_equal(c.get_reals(TOW), tail[k])

@@ -4,8 +4,8 @@
  *
  *   <identifier>_model_description OUTPUT_FILE GUID VERSION
  *
- * Value references are the table positions (1-based). Parameters are fixed with min/max, inputs
- * continuous with start 0, outputs continuous and calculated; an output without direct feedthrough
+ * Value references are the table positions (1-based). Parameters are fixed with min/max (Strings start
+ * empty), inputs continuous with start 0, outputs continuous and calculated; an output without direct feedthrough
  * gets dependencies="" (it depends on the states only), one with feedthrough no dependencies attribute
  * (it may depend on every input).
  */
@@ -106,7 +106,9 @@ static void write_variable(FILE* f, const PMVariable* v, size_t vr) {
     } else {
         fputs(" variability=\"continuous\" initial=\"calculated\">\n", f);
     }
-    if (v->type == PM_BOOLEAN) {
+    if (v->type == PM_STRING) {
+        fputs("      <String start=\"\"/>\n", f);
+    } else if (v->type == PM_BOOLEAN) {
         fprintf(f, "      <Boolean start=\"%s\"/>\n", v->start != 0.0 ? "true" : "false");
     } else if (v->type == PM_INTEGER) {
         fprintf(f, "      <Integer min=\"%.0f\" max=\"%.0f\" start=\"%.0f\"/>\n", v->min, v->max, v->start);
@@ -149,6 +151,10 @@ static int check_table(const PMModel* m) {
                                       v->start != (int)v->start)) {
             fprintf(stderr, "%s: Integer %s must be a parameter with integer start, min and max\n", m->identifier,
                     v->name);
+            return 1;
+        }
+        if (v->type == PM_STRING && v->causality != PM_PARAMETER) {
+            fprintf(stderr, "%s: String %s must be a parameter\n", m->identifier, v->name);
             return 1;
         }
         if (v->causality == PM_PARAMETER && !(v->start >= v->min && v->start <= v->max)) {

@@ -18,8 +18,11 @@
 extern "C" {
 #endif
 
-/* A Boolean is stored as 0.0 / 1.0 in the data, an Integer as a double holding an integer. */
-typedef enum { PM_REAL, PM_BOOLEAN, PM_INTEGER } PMType;
+/* A Boolean is stored as 0.0 / 1.0 in the data, an Integer as a double holding an integer, a String as
+   char[PM_STRING_CAPACITY] (start "", zero-filled beyond its end so that equal strings are equal bytes). */
+typedef enum { PM_REAL, PM_BOOLEAN, PM_INTEGER, PM_STRING } PMType;
+
+#define PM_STRING_CAPACITY 4096 /* bytes of a String parameter with its NUL: a path */
 
 typedef enum { PM_PARAMETER, PM_INPUT, PM_OUTPUT } PMCausality;
 
@@ -27,7 +30,7 @@ typedef struct PMVariable {
     const char* name;        /* FMU name (structured naming convention) */
     PMType type;
     PMCausality causality;
-    size_t offset;           /* byte offset of the double in the model's data */
+    size_t offset;           /* byte offset of the double (String: the char array) in the model's data */
     double start;            /* parameters and inputs: the start value */
     double min, max;         /* parameters: the admissible closed interval */
     const char* why;         /* parameters: the reason printed when a value is outside [min, max] */
@@ -71,6 +74,8 @@ extern const PMModel kPartnerModel;
     {name, PM_BOOLEAN, PM_PARAMETER, offsetof(T, field), start, 0.0, 1.0, "a Boolean", NULL, description, 0}
 #define PM_INT_PAR(T, field, name, start, min, max, why, description) \
     {name, PM_INTEGER, PM_PARAMETER, offsetof(T, field), start, min, max, why, NULL, description, 0}
+#define PM_STRING_PAR(T, field, name, description) \
+    {name, PM_STRING, PM_PARAMETER, offsetof(T, field), 0.0, 0.0, 0.0, NULL, NULL, description, 0}
 #define PM_IN(T, field, name, unit, description) \
     {name, PM_REAL, PM_INPUT, offsetof(T, field), 0.0, 0.0, 0.0, NULL, unit, description, 0}
 #define PM_OUT(T, field, name, unit, feedthrough, description) \

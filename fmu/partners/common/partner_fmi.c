@@ -3,7 +3,8 @@
  * kPartnerModel, linked in). Each function checks the machine state against the set of states it may
  * be called in (FMI 2.0 section 4.2.4), delegates, and applies the worst-status rule in one place
  * (pm_instance_finish). Values: the value reference of a variable is its position in the model's table
- * (1-based); Real and Boolean variables are stored as doubles in the model's data.
+ * (1-based); Real, Integer and Boolean variables are stored as doubles in the model's data, String
+ * parameters as char arrays in it (copied in, so that a saved state holds them).
  */
 #include <math.h>
 #include <stdint.h>
@@ -13,6 +14,7 @@
 #include "fmi2Functions.h"
 #include "partner_guid.h"
 #include "partner_instance.h"
+#include "string_value.h"
 
 #define ANY_AFTER_INSTANTIATE                                                                                \
     (PM_STATE_INSTANTIATED | PM_STATE_INIT_MODE | PM_STATE_STEP_COMPLETE | PM_STATE_STEP_IN_PROGRESS |      \
@@ -151,8 +153,8 @@ fmi2Status fmi2Reset(fmi2Component c) {
 static const PMVariable* find_variable(PMInstance* inst, fmi2ValueReference vr, PMType type, const char* function) {
     const PMModel* m = inst->model;
     if (vr >= 1 && vr <= m->nVariables && m->variables[vr - 1].type == type) return &m->variables[vr - 1];
-    uc_log_status(&inst->log, fmi2Error, "%s: unknown value reference %u for type %s", function, vr,
-                  type == PM_REAL ? "Real" : type == PM_INTEGER ? "Integer" : "Boolean");
+    static const char* const kTypeNames[] = {"Real", "Boolean", "Integer", "String"};
+    uc_log_status(&inst->log, fmi2Error, "%s: unknown value reference %u for type %s", function, vr, kTypeNames[type]);
     return NULL;
 }
 
@@ -191,7 +193,7 @@ static fmi2Status get_values(PMInstance* inst, const fmi2ValueReference vr[], si
     return fmi2OK;
 }
 
-static fmi2Status check_settable(PMInstance* inst, const PMVariable* v, double value, const char* function) {
+static fmi2Status check_settable(PMInstance* inst, const PMVariable* v, const char* function) {
     if (v->causality == PM_OUTPUT) {
         uc_log_status(&inst->log, fmi2Error, "%s: %s is an output and cannot be set", function, v->name);
         return fmi2Error;
@@ -201,6 +203,11 @@ static fmi2Status check_settable(PMInstance* inst, const PMVariable* v, double v
                       function, v->name);
         return fmi2Error;
     }
+    return fmi2OK;
+}
+
+static fmi2Status check_number(PMInstance* inst, const PMVariable* v, double value, const char* function) {
+    if (check_settable(inst, v, function) != fmi2OK) return fmi2Error;
     if (!isfinite(value)) {
         uc_log_status(&inst->log, fmi2Error, "%s: %s = %g is outside (-inf, inf): it must be a finite number",
                       function, v->name, value);
@@ -217,7 +224,7 @@ static fmi2Status set_values(PMInstance* inst, const fmi2ValueReference vr[], si
     for (size_t i = 0; i < nvr; ++i) {
         const PMVariable* v = find_variable(inst, vr[i], type, function);
         double value = type == PM_REAL ? reals[i] : type == PM_INTEGER ? (double)ints[i] : (ints[i] != fmi2False ? 1.0 : 0.0);
-        if (v == NULL || check_settable(inst, v, value, function) != fmi2OK) return fmi2Error;
+        if (v == NULL || check_number(inst, v, value, function) != fmi2OK) return fmi2Error;
         double* target = pm_value(inst, v);
         if (*target == value) continue;
         *target = value;
@@ -250,23 +257,42 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
     GUARDED(c, MASK_SET, "fmi2SetInteger", set_values(inst, vr, nvr, PM_INTEGER, NULL, value, "fmi2SetInteger"));
 }
 
-/* A partner FMU has no String variables: any value reference is unknown. */
-static fmi2Status no_variables(PMInstance* inst, const fmi2ValueReference vr[], size_t nvr, const char* type,
-                               const char* function) {
-    if (nvr == 0) return fmi2OK;
-    uc_log_status(&inst->log, fmi2Error, "%s: unknown value reference %u for type %s (there are none)", function,
-                  vr != NULL ? vr[0] : 0u, type);
-    return fmi2Error;
+static fmi2Status get_strings(PMInstance* inst, const fmi2ValueReference vr[], size_t nvr, fmi2String values[],
+                              const char* function) {
+    if (check_arrays(inst, vr, nvr, values, function) != fmi2OK) return fmi2Error;
+    for (size_t i = 0; i < nvr; ++i) {
+        const PMVariable* v = find_variable(inst, vr[i], PM_STRING, function);
+        if (v == NULL) return fmi2Error;
+        values[i] = pm_string(inst, v); /* the instance's copy: valid until the variable is set again */
+    }
+    return fmi2OK;
+}
+
+/* The instance's copy of one string (string_value.h): in the data, so that a saved state holds it. */
+static fmi2Status store_string(PMInstance* inst, const PMVariable* v, const char* value, const char* function) {
+    const int changed = uc_store_string(&inst->log, function, v->name, pm_string(inst, v), PM_STRING_CAPACITY, value);
+    if (changed < 0) return fmi2Error;
+    if (changed && inst->state != PM_STATE_STEP_COMPLETE) inst->ready = 0; /* the initialization depends on it */
+    return fmi2OK;
+}
+
+static fmi2Status set_strings(PMInstance* inst, const fmi2ValueReference vr[], size_t nvr, const fmi2String values[],
+                              const char* function) {
+    if (check_arrays(inst, vr, nvr, values, function) != fmi2OK) return fmi2Error;
+    for (size_t i = 0; i < nvr; ++i) {
+        const PMVariable* v = find_variable(inst, vr[i], PM_STRING, function);
+        if (v == NULL || check_settable(inst, v, function) != fmi2OK) return fmi2Error;
+        if (store_string(inst, v, values[i], function) != fmi2OK) return fmi2Error;
+    }
+    return fmi2OK;
 }
 
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
-    (void)value;
-    GUARDED(c, MASK_GET, "fmi2GetString", no_variables(inst, vr, nvr, "String", "fmi2GetString"));
+    GUARDED(c, MASK_GET, "fmi2GetString", get_strings(inst, vr, nvr, value, "fmi2GetString"));
 }
 
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
-    (void)value;
-    GUARDED(c, MASK_SET, "fmi2SetString", no_variables(inst, vr, nvr, "String", "fmi2SetString"));
+    GUARDED(c, MASK_SET, "fmi2SetString", set_strings(inst, vr, nvr, value, "fmi2SetString"));
 }
 
 /* ---- FMU states: a byte copy of the adapter's time and machine state and of the model's data -------- */

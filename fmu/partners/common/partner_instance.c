@@ -52,12 +52,14 @@ void pm_instance_free(PMInstance* inst) {
 
 double* pm_value(PMInstance* inst, const PMVariable* v) { return (double*)((char*)inst->data + v->offset); }
 
+char* pm_string(PMInstance* inst, const PMVariable* v) { return (char*)inst->data + v->offset; }
+
 void pm_instance_reset(PMInstance* inst) {
     const PMModel* m = inst->model;
     memset(inst->data, 0, m->dataSize);
     for (size_t i = 0; i < m->nVariables; ++i) {
         const PMVariable* v = &m->variables[i];
-        if (v->causality != PM_OUTPUT) *pm_value(inst, v) = v->start;
+        if (v->causality != PM_OUTPUT && v->type != PM_STRING) *pm_value(inst, v) = v->start; /* Strings: "" */
     }
     inst->state = PM_STATE_INSTANTIATED;
     inst->startTime = inst->time = inst->stopTime = 0.0;
@@ -88,7 +90,7 @@ static fmi2Status check_parameter_ranges(PMInstance* inst, const char* function)
     const PMModel* m = inst->model;
     for (size_t i = 0; i < m->nVariables; ++i) {
         const PMVariable* v = &m->variables[i];
-        if (v->causality != PM_PARAMETER) continue;
+        if (v->causality != PM_PARAMETER || v->type == PM_STRING) continue;
         double value = *pm_value(inst, v);
         if (!(value >= v->min && value <= v->max)) {
             uc_log_status(&inst->log, fmi2Error, "%s: invalid parameter: %s = %.17g is outside [%g, %g]: %s", function,

@@ -56,6 +56,9 @@ fmi2Status pm_instance_finish(PMInstance* inst, fmi2Status status);
 /* The double of variable v in the instance's data. */
 double* pm_value(PMInstance* inst, const PMVariable* v);
 
+/* The characters of the String variable v in the instance's data (PM_STRING_CAPACITY bytes). */
+char* pm_string(PMInstance* inst, const PMVariable* v);
+
 /* Range checks of every parameter, then the model's own check, its derived data, then its initialization. */
 fmi2Status pm_ensure_initialized(PMInstance* inst, const char* function);
 

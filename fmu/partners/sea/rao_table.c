@@ -1,6 +1,11 @@
 /* rao_table.c - see rao_table.h. */
 #include "rao_table.h"
 
+#include "file_lookup.h"
+#include "file_uri.h"
+#include "partner.h"
+
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -255,19 +260,57 @@ void pm_rao_interpolate_rates(const PMRAOTable* t, double T, double mu, double d
     }
 }
 
-int pm_rao_load(const char* resources, PMRAOTable* table, char* msg, size_t msgSize) {
+/* The first of name's candidates (file_lookup.h) that opens, in a new buffer (free it); NULL with the paths
+   tried, and why, in msg (file: the value of raoFile, for the message). */
+static char* find_table(const char* resources, const char* file, const char* name, char* msg, size_t msgSize) {
+    char* candidates[2] = {NULL, NULL};
+    const int n = uc_file_candidates(name, resources, candidates);
+    char tried[1024] = "";
+    char* found = NULL;
+    for (int k = 0; k < n; ++k) {
+        FILE* f = found == NULL ? fopen(candidates[k], "r") : NULL;
+        if (f != NULL) {
+            fclose(f);
+            found = candidates[k];
+            continue;
+        }
+        if (found == NULL) uc_file_note_tried(tried, sizeof tried, candidates[k], errno);
+        free(candidates[k]);
+    }
+    if (found == NULL) {
+        snprintf(msg, msgSize, "raoFile = '%s' cannot be read: tried %s%s", file,
+                 n > 0 ? tried : "nothing (out of memory)",
+                 name[0] != '/' && resources == NULL ? "; no resources directory was given to fmi2Instantiate" : "");
+    }
+    return found;
+}
+
+int pm_rao_load(const char* resources, const char* file, PMRAOTable* table, char* msg, size_t msgSize) {
     memset(table, 0, sizeof *table);
-    if (resources == NULL) {
-        snprintf(msg, msgSize, "no resources directory was given to fmi2Instantiate: the RAO table " PM_RAO_FILE
-                 " is in the FMU's resources");
-        return 1;
+    const char* name = file;                 /* the path to look up */
+    char buffer[PM_STRING_CAPACITY + 64];    /* ... when it is not raoFile's value itself */
+    if (file[0] == '\0') {                   /* the shipped table: in the resources only */
+        if (resources == NULL) {
+            snprintf(msg, msgSize, "raoFile = '': no resources directory was given to fmi2Instantiate: the shipped "
+                     "RAO table " PM_RAO_FILE " is in the FMU's resources");
+            return 1;
+        }
+        snprintf(buffer, sizeof buffer, "%s/%s", resources, PM_RAO_FILE);
+        name = buffer;
+    } else if (strncmp(file, "file:", 5) == 0) {
+        if (uc_file_uri_to_path(file, buffer, sizeof buffer) != 0) {
+            snprintf(msg, msgSize, "raoFile = '%s' is not a local file URI (file:///path)", file);
+            return 1;
+        }
+        name = buffer;
     }
-    char path[4096];
-    if ((size_t)snprintf(path, sizeof path, "%s/%s", resources, PM_RAO_FILE) >= sizeof path) {
-        snprintf(msg, msgSize, "the resources path is too long");
-        return 1;
-    }
-    return pm_rao_read(path, table, msg, msgSize);
+    char* path = find_table(resources, file, name, msg, msgSize);
+    if (path == NULL) return 1;
+    char reason[PM_RAO_MESSAGE_SIZE];
+    const int rc = pm_rao_read(path, table, reason, sizeof reason);
+    if (rc != 0) snprintf(msg, msgSize, "raoFile = '%s': %s", file, reason);
+    free(path);
+    return rc;
 }
 
 void pm_rao_point(const double* q, const double* p, double* out) {

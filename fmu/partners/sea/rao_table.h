@@ -1,7 +1,8 @@
 /*
  * rao_table.h - displacement RAOs of a vessel for the partner FMUs that move with the waves (VesselRAO, and
- * Vessel's superimposed wave motion): the table read from the FMU's resources (rao.csv), its complex
- * bilinear interpolation in period and heading, and the rigid-body motion of a point at a lever arm.
+ * Vessel's superimposed wave motion): the table the parameter raoFile names (default: rao.csv of the FMU's
+ * resources), its complex bilinear interpolation in period and heading, and the rigid-body motion of a
+ * point at a lever arm.
  *
  * The table (docs/waves.md): comment lines (#), one line of column names, then rows of period [s], relative
  * heading [deg] (the waves' direction of travel relative to the bow: 0 following seas, 90 waves travelling
@@ -16,12 +17,23 @@
 
 #include <stddef.h>
 
+#include "partner.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
 
 #define PM_RAO_FILE "rao.csv"
 #define PM_RAO_DOF 6
+#define PM_RAO_MESSAGE_SIZE 512 /* enough for the messages of pm_rao_read with a path */
+
+/* The variable-table entry of the parameter raoFile, the char[PM_STRING_CAPACITY] `field` of the model data
+   type T (docs/waves.md). */
+#define PM_RAO_FILE_VARIABLE(T, field)                                                                         \
+    PM_STRING_PAR(T, field, "raoFile",                                                                         \
+                  "Displacement RAO table (docs/waves.md): empty, the shipped generic table resources/rao.csv; "  \
+                  "otherwise a path or a file:// URI, a relative path looked up in the FMU's resources "           \
+                  "directory, then in the working directory")
 
 typedef struct PMRAOTable {
     size_t nPeriods, nHeadings;
@@ -31,9 +43,11 @@ typedef struct PMRAOTable {
     double* im;
 } PMRAOTable;
 
-/* Reads the table PM_RAO_FILE of the FMU's resources directory (NULL: none was given); 0 on success, else
-   a message naming the file and line. */
-int pm_rao_load(const char* resources, PMRAOTable* table, char* msg, size_t msgSize);
+/* Reads the table the parameter raoFile names (file): "" the shipped PM_RAO_FILE of the FMU's resources
+   directory (a path; NULL: none was given); otherwise a path or a file: URI, a relative path looked up in
+   the resources directory, then in the working directory (fmu/file_lookup.h, as the cable FMU's lineFile).
+   0 on success, else a message naming raoFile and the paths tried, or the file and line. */
+int pm_rao_load(const char* resources, const char* file, PMRAOTable* table, char* msg, size_t msgSize);
 
 /* Reads the table from path; 0 on success, else a message naming the file and line. */
 int pm_rao_read(const char* path, PMRAOTable* table, char* msg, size_t msgSize);

@@ -23,8 +23,9 @@
  * Waves (waves.mode 1 or 2; 0, the default, leaves the vessel above untouched): the wave-frequency motion of
  * the vessel is superimposed on the manoeuvring one, which it does not feed back into (no wave forces act
  * on the 3 DOF model). The sea is the cable FMU's (sea_state.c: the same components from the same waves.*
- * parameters), the motion that of its displacement RAOs (rao_table.c: the table resources/rao.csv, the
- * VesselRAO FMU's). The RAO reference point is the vessel's origin (x, y) on the waterline, the motions
+ * parameters), the motion that of its displacement RAOs (rao_table.c: the table the parameter raoFile
+ * names, by default resources/rao.csv, as the VesselRAO FMU's; read only in waves). The RAO reference
+ * point is the vessel's origin (x, y) on the waterline, the motions
  * are along and about the body axes of the current heading psi (z up): a component of amplitude a,
  * frequency w, wavenumber k along the direction of travel beta and phase p has at the reference point X(t)
  * the elevation a cos(theta), theta = w t - k.X(t) - p, whose phase advances at the encounter frequency
@@ -71,6 +72,7 @@ typedef struct VesselData {
     double turnStart, turnRate, turnAngle;
     double maxSubstep;
     PMSeaParameters sea; /* the waves (the cable FMU's names and meaning) */
+    char raoFile[PM_STRING_CAPACITY]; /* the RAO table: "" the shipped one (rao_table.h) */
     /* inputs */
     double towForce[3];
     /* states */
@@ -245,7 +247,7 @@ static void release_waves(void* derived) {
     free(w);
 }
 
-/* The sea's components and the RAO table; in calm water neither (nor the resources). */
+/* The sea's components and the RAO table; in calm water neither (nor the resources, nor raoFile). */
 static void* build_waves(const void* data, const char* resources, char* msg, size_t msgSize) {
     const VesselData* d = data;
     const PMWaves waves = pm_waves_of(&d->sea);
@@ -262,7 +264,8 @@ static void* build_waves(const void* data, const char* resources, char* msg, siz
         release_waves(w);
         return NULL;
     }
-    if (pm_sea_components(&waves, w->sea, msg, msgSize) != 0 || pm_rao_load(resources, &w->table, msg, msgSize) != 0) {
+    if (pm_sea_components(&waves, w->sea, msg, msgSize) != 0 ||
+        pm_rao_load(resources, d->raoFile, &w->table, msg, msgSize) != 0) {
         release_waves(w);
         return NULL;
     }
@@ -391,6 +394,7 @@ static const PMVariable kVariables[] = {
     O(waveMotion[5], "waveMotion.yaw", "rad", 0, "Wave-frequency yaw about z"),
     O(waveElevation, "waveElevation", "m", 0,
       "Elevation of the sea surface at the RAO reference point (the vessel's x, y on the waterline)"),
+    PM_RAO_FILE_VARIABLE(VesselData, raoFile),
 };
 
 const PMModel kPartnerModel = {

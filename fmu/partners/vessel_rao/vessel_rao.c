@@ -10,16 +10,16 @@
  * z up. Motions of the reference point: surge, sway, heave [m] along the body axes, roll, pitch, yaw [rad]
  * about them (right-handed: positive roll lifts the port side, positive pitch lowers the bow).
  *
- * RAOs: the table resources/rao.csv of the FMU (docs/waves.md; read and interpolated by ../sea/rao_table.c, as
- * for the Vessel FMU's superimposed wave motion): rows of period [s], relative heading [deg]
- * (the waves' direction of travel relative to the bow: 0 following seas, 90 waves travelling to port,
- * 180 head seas), then amplitude and phase for surge, sway, heave (m/m), roll, pitch, yaw (deg/m), phases
- * in degrees as lags behind the wave crest at the reference point. A component of amplitude a, frequency
- * w and phase p with the elevation a cos(w t - k.X - p) at the reference point X moves degree of freedom j
- * by a |R_j| cos(w t - k.X - p - phi_j), R_j the RAO at the component's period 2 pi / w and the relative
- * heading waves.direction - heading, interpolated linearly (complex amplitudes) in period, held constant
- * beyond the table's periods, periodic in heading. The motion is linear, as the RAOs: the tow point at r
- * (towPoint, body axes) moves by (surge, sway, heave) + (roll, pitch, yaw) x r. waves.rampTime grows the
+ * RAOs: the table the parameter raoFile names, by default resources/rao.csv of the FMU (docs/waves.md; read
+ * and interpolated by ../sea/rao_table.c, as for the Vessel FMU's superimposed wave motion): rows of period
+ * [s], relative heading [deg] (the waves' direction of travel relative to the bow: 0 following seas, 90 waves
+ * travelling to port, 180 head seas), then amplitude and phase for surge, sway, heave (m/m), roll, pitch, yaw
+ * (deg/m), phases in degrees as lags behind the wave crest at the reference point. A component of amplitude
+ * a, frequency w and phase p with the elevation a cos(w t - k.X - p) at the reference point X moves degree of
+ * freedom j by a |R_j| cos(w t - k.X - p - phi_j), R_j the RAO at the component's period 2 pi / w and the
+ * relative heading waves.direction - heading, interpolated linearly (complex amplitudes) in period, held
+ * constant beyond the table's periods, periodic in heading. The motion is linear, as the RAOs: the tow point
+ * at r (towPoint, body axes) moves by (surge, sway, heave) + (roll, pitch, yaw) x r. waves.rampTime grows the
  * motion from rest as it grows the sea (the same half cosine), velocity and acceleration its exact time
  * derivatives.
  */
@@ -41,6 +41,7 @@ typedef struct VesselRAOData {
     PMSeaParameters sea; /* parameters: the sea (the cable FMU's names and meaning) */
     /* parameters: the vessel */
     double x0, y0, heading, towPoint[3];
+    char raoFile[PM_STRING_CAPACITY]; /* the RAO table: "" the shipped one (rao_table.h) */
     /* outputs */
     double tow[3], towVelocity[3], towAcceleration[3];
     double motion[N_DOF], waveElevation;
@@ -73,7 +74,7 @@ static void release(void* derived) {
 static void* build(const void* data, const char* resources, char* msg, size_t msgSize) {
     const VesselRAOData* d = data;
     PMRAOTable table;
-    if (pm_rao_load(resources, &table, msg, msgSize) != 0) return NULL;
+    if (pm_rao_load(resources, d->raoFile, &table, msg, msgSize) != 0) return NULL;
     const PMWaves w = pm_waves_of(&d->sea);
     const size_t n = pm_sea_size(&w);
     VesselRAODerived* r = calloc(1, sizeof *r);
@@ -200,6 +201,7 @@ static const PMVariable kVariables[] = {
     O(motion[4], "pitch", "rad", "Pitch about body y (positive lowers the bow)"),
     O(motion[5], "yaw", "rad", "Wave-frequency yaw about z"),
     O(waveElevation, "waveElevation", "m", "Elevation of the sea surface at the RAO reference point (x0, y0)"),
+    PM_RAO_FILE_VARIABLE(VesselRAOData, raoFile),
 };
 
 const PMModel kPartnerModel = {
