@@ -19,3 +19,20 @@ def test_partial_runs_splice_their_sections_into_the_report():
     assert "waves table v1" not in twice and twice.count(f"## {waves.title}") == 1
     assert twice.replace("v2", "v1") == once  # nothing else moved
     assert "calm table" in twice and "glance" in twice and "limits" in twice
+
+
+def test_partial_runs_update_their_rows_of_the_targets_at_a_glance(monkeypatch):
+    cases = wp.make_cases()
+    mooring = cases["mooring"]
+    doc = "\n".join(["# Performance", "", "## Targets at a glance", "intro", "",
+                     "| case | target | measured | verdict |", "|---|---|---|---|",
+                     "| hopland | t1 | 50 | met |", "| mooring | t2 | 0.5 | NOT met |",
+                     "| mooring | t3 | 0.6 | NOT met |", "| stiff | t4 | 11 | met |", "",
+                     f"## {mooring.title}", "| mooring | not the glance table | | |", ""])
+    monkeypatch.setattr(wp, "glance_table", lambda sections: "\n".join(
+        ["## Targets at a glance", "", "| case | target | measured | verdict |", "|---|---|---|---|",
+         "| mooring | t2 | 0.9 | NOT met |", "| mooring | t3 | 1.2 | met |"]))
+    lines = wp.splice_glance(doc, [(mooring, None, [], "", None)]).split("\n")
+    assert lines[7:11] == ["| hopland | t1 | 50 | met |", "| mooring | t2 | 0.9 | NOT met |",
+                           "| mooring | t3 | 1.2 | met |", "| stiff | t4 | 11 | met |"]
+    assert "| mooring | not the glance table | | |" in lines  # rows outside the glance table stay
