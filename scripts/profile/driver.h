@@ -54,5 +54,6 @@ static inline int run_ramped_sine(const UCParams* p, UCInputs* in, int axis, dou
         in->towAccelerationGiven = 1;
         if (uc_do_step(c, t, h, in, msg, sizeof msg)) { fprintf(stderr, "step: %s\n", msg); return 1; }
     }
+    printf("nCommunicationSteps %d\n", n);
     return print_statistics(c, p->nElements, t_end, res0);
 }

@@ -36,6 +36,10 @@ SCENES = {
              "20 elements), 30 s, 0.05 s steps (scripts/profile/stiff_driver.c)",
     "heave_waves": "heave case in a JONSWAP sea (Hs 3 m, Tp 10 s, 200 components, the water's motion acting on "
                    "the umbilical), 20 elements, 30 s, 0.1 s steps (scripts/profile/heave_waves_driver.c)",
+    "chain": "chain mooring with seabed (835 m, EA 7.5e8 N, tension only, 200 m depth, surge 5 m at 12 s), "
+             "tensionTolerance 0.1, 30 s, 0.05 s steps (scripts/profile/chain_driver.c)",
+    "chain_still": "chain mooring with seabed, the fairlead held still, tensionTolerance 0.1, 30 s, 0.05 s steps "
+                   "(scripts/profile/chain_driver.c with amplitude 0)",
 }
 
 
@@ -67,6 +71,9 @@ def measure(directory: Path) -> dict:
         "residual evaluations per step": s["nResidualEvals"] / steps,
         "cable Jacobians per step": s["nJacobianEvals"] / steps,
     }
+    if "nCommunicationSteps" in s:  # the drivers that step a ramped motion
+        out["per"]["instructions per communication step (uc_do_step / communication steps)"] = (
+            r["uc_do_step"] / s["nCommunicationSteps"])
     return out
 
 
