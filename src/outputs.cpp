@@ -20,6 +20,24 @@ double curvature(const Vec3& rp, const Vec3& rpp) {
 // Samples per element for the seabed outputs (the contact is resolved to l/8 in arc length).
 constexpr int kSeabedSamples = 8;
 
+// The shape functions at xi = k / (n - 1), k = 0..n-1, of the last element length asked for: the
+// elements of a run share them (one evaluation per run, not per element, at every output).
+template <int n>
+class SampleShapes {
+public:
+    const ShapeValues& at(int k, double l) {
+        if (l != length_) {
+            length_ = l;
+            for (int i = 0; i < n; ++i) values_[i] = hermite_shape(static_cast<double>(i) / (n - 1), l);
+        }
+        return values_[k];
+    }
+
+private:
+    double length_ = -1.0;
+    ShapeValues values_[n];
+};
+
 // Seabed outputs. A point of the line rests on the seabed when its centreline is within half a
 // diameter of the seabed. The contact is a smoothed penalty ramp that starts at a clearance of delta
 // (5 % of the diameter) and, on a stiff seabed, holds a line at rest a few millimetres above
@@ -41,6 +59,7 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
     out.seabedContactForce = 0.0;
     bool touched = false;
     double previousS = 0.0, previousGap = 0.0;
+    SampleShapes<kSeabedSamples + 1> shapes;
     for (int e = 0; e < model.n_elements(); ++e) {
         const SectionProps& section = model.element_section(e);
         const double l = model.element_length(e);
@@ -51,7 +70,7 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
         for (int k = e == 0 ? 0 : 1; k <= kSeabedSamples; ++k) {
             const double xi = static_cast<double>(k) / kSeabedSamples;
             const double s = model.runs().size() == 1 ? (e + xi) * l : s0 + xi * l;
-            const double clearance = interpolate(hermite_shape(xi, l).N, Xe).z() + p.waterDepth;
+            const double clearance = interpolate(shapes.at(k, l).N, Xe).z() + p.waterDepth;
             out.minSeabedClearance = std::min(out.minSeabedClearance, clearance);
             const double gap = clearance - reach;  // <= 0: resting on the seabed
             if (p.enableSeabed && s > 0.0) {
@@ -158,6 +177,7 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
 
     double minTension = *std::min_element(T.begin(), T.end());
     double maxCurvature = 0.0, maxBendingMoment = 0.0;
+    SampleShapes<2> ends;  // xi = 0 and 1
     // Minimum tension over the nodes (exact reactions of the discrete equations) and the element
     // means (the projected strain's mean mode). The pointwise projected tension also carries the
     // softened higher strain modes, whose strain is 100 times the physical variation inside an
@@ -176,8 +196,8 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
             elementCurvature = std::max(elementCurvature, curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe)));
         }
         minTension = std::min(minTension, mean);
-        for (double xi : {0.0, 1.0}) {
-            const ShapeValues sv = hermite_shape(xi, l);
+        for (int end = 0; end < 2; ++end) {
+            const ShapeValues& sv = ends.at(end, l);
             elementCurvature = std::max(elementCurvature, curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe)));
         }
         maxCurvature = std::max(maxCurvature, elementCurvature);

@@ -31,15 +31,7 @@ int main(int argc, char** argv) {
     p.Cdt = 0.2;
     p.Can = 1.0;
     p.Cat = 0.0;
-    p.bottomEnd = UC_BOTTOM_ANCHORED;
-    p.anchor[0] = -800.0;
-    p.anchor[1] = 0.0;
-    p.anchor[2] = -200.0;
-    p.enableSeabed = 1;
-    p.waterDepth = 200.0;
-    p.seabedStiffness = 3e6 * p.diameter;
-    p.seabedDamping = 3e5 * p.diameter;
-    p.seabedFriction = 0.0;
+    anchor_on_seabed(&p, -800.0, -200.0, 200.0);
     UCInputs in;
     uc_inputs_default(&in);
     in.tow[2] = -20.0;

@@ -21,6 +21,20 @@ static inline void ramped_sine(double A, double T, double t, double* x, double* 
     *a = A * (ddr * s + 2 * dr * w * c - r * w * w * s);
 }
 
+/* The far end anchored at (x, 0, z) on a seabed `depth` deep with the benchmark's contact (MoorDyn's
+ * defaults 3e6 Pa/m and 3e5 Pa s/m times the diameter, no friction; scripts/ucable/work_precision.py). */
+static inline void anchor_on_seabed(UCParams* p, double x, double z, double depth) {
+    p->bottomEnd = UC_BOTTOM_ANCHORED;
+    p->anchor[0] = x;
+    p->anchor[1] = 0.0;
+    p->anchor[2] = z;
+    p->enableSeabed = 1;
+    p->waterDepth = depth;
+    p->seabedStiffness = 3e6 * p->diameter;
+    p->seabedDamping = 3e5 * p->diameter;
+    p->seabedFriction = 0.0;
+}
+
 /* The integrator's statistics as "key value" lines (res0: residual evaluations of the initialization);
  * frees the cable. */
 static inline int print_statistics(UCCable* c, int n_el, double t_end, double res0) {

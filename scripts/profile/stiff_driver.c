@@ -31,15 +31,7 @@ int main(int argc, char** argv) {
     p.Cdt = 0.008;
     p.Can = 1.0;
     p.Cat = 0.0;
-    p.bottomEnd = UC_BOTTOM_ANCHORED;
-    p.anchor[0] = -210.0;
-    p.anchor[1] = 0.0;
-    p.anchor[2] = -100.0;
-    p.enableSeabed = 1;
-    p.waterDepth = 100.0;
-    p.seabedStiffness = 3e6 * p.diameter;
-    p.seabedDamping = 3e5 * p.diameter;
-    p.seabedFriction = 0.0;
+    anchor_on_seabed(&p, -210.0, -100.0, 100.0);
     UCInputs in;
     memset(&in, 0, sizeof in);
     in.tow[2] = -10.0;
