@@ -167,7 +167,7 @@ def make_cases():
             "EA 7.5e8 N, no bending stiffness (ours: enableBending = 0; MoorDyn: EI = 0), tension only "
             "(ours: enableCompression = 0, the chain goes slack as MoorDyn's does; the switch table "
             "shows the two-sided law), Cdn 2.4, "
-            "Cdt 0.2 (on pi d), Can 1, Cat 0. Anchor on the seabed at (-800, 0, -200) m, fairlead at "
+            "Cdt 0.2 (on pi d), Can 1, Cat 0. Axial damping matched: MoorDyn BA = our axialDamping = 0.01 s x EA. Anchor on the seabed at (-800, 0, -200) m, fairlead at "
             "(0, 0, -20) m; 200 m depth. Fairlead surge 5 m amplitude at 12 s along x, amplitude "
             "ramped in smoothly over the first 12 s. Seabed in both codes, matched: MoorDyn kBot = "
             f"{MD_KBOT:.1e} Pa/m and cBot = {MD_CBOT:.1e} Pa s/m (its defaults, per unit contact area d x "
