@@ -1036,20 +1036,19 @@ def splice_glance(text: str, sections) -> str:
     """text with the rows of the "Targets at a glance" table that belong to the cases of `sections`
     replaced by this run's (the other cases' rows stay as they are)."""
     names = {s[0].name for s in sections}
-    new_rows = [row for row in glance_table(sections).split("\n") if row.startswith("| ") and
-                row.split(" | ")[0][2:] in names]
+    case_of = lambda line: line.split(" | ")[0][2:] if line.startswith("| ") else None
     lines = text.split("\n")
-    rows = [i for i, line in enumerate(lines) if line.startswith("| ") and line.split(" | ")[0][2:] in names]
-    glance = next((i for i, line in enumerate(lines) if line.strip() == "## Targets at a glance"), None)
-    if glance is None:
+    head = next((i for i, line in enumerate(lines) if line.strip() == "## Targets at a glance"), None)
+    if head is None:
         return text
-    rows = [i for i in rows if i > glance and all(not lines[k].startswith("## ") for k in range(glance + 1, i))]
-    at = rows[0] if rows else next((i + 1 for i in range(len(lines) - 1, glance, -1)
-                                    if lines[i].startswith("|") and all(not lines[k].startswith("## ")
-                                                                        for k in range(glance + 1, i))), None)
-    if at is None:
+    end = next((i for i in range(head + 1, len(lines)) if lines[i].startswith("## ")), len(lines))
+    table = [i for i in range(head + 1, end) if lines[i].startswith("|")]
+    if not table:
         return text
-    for i in reversed(rows):
+    old = [i for i in table if case_of(lines[i]) in names]
+    at = old[0] if old else table[-1] + 1
+    new_rows = [row for row in glance_table(sections).split("\n") if case_of(row) in names]
+    for i in reversed(old):
         del lines[i]
     lines[at:at] = new_rows
     return "\n".join(lines)
