@@ -55,6 +55,17 @@ class HoplandTow:
                 np.array([p.acceleration(t), 0.0, 0.0]))
 
 
+class HeldStill:
+    """The tow point (fairlead) held where `traj` starts: the runs on it cost what the communication
+    points cost alone (one integrator step each, the inputs set and the outputs read)."""
+
+    def __init__(self, traj):
+        self.x0 = np.asarray(traj.state(0.0)[0], float)
+
+    def state(self, t):
+        return self.x0.copy(), np.zeros(3), np.zeros(3)
+
+
 class RampedSurge:
     """Fairlead surge x0 + A r(t) sin(2 pi t / T) along x, r = 3 tau^2 - 2 tau^3 (tau = t / t_ramp)
     ramps the amplitude in smoothly (position, velocity and acceleration start at rest)."""
@@ -102,6 +113,7 @@ class Case:
     body: dict | None = None  # MoorDyn point at the free far end: mass, volume, CdA, CA
     reference_step: float | None = None  # communication step of our reference run (None: comm_step)
     calm_twin: dict | None = None  # FMU parameters that make the sea calm: a cost table calm vs this case
+    still_twin: bool = False  # a cost table of the cheap runs against the same runs with the fairlead held still
     doc_after: str | None = None  # a partial run puts this case's section after that case's in the doc
 
 
@@ -177,11 +189,16 @@ def make_cases():
             "kink at zero penetration). Errors: fairlead tension |towForce| RMS difference relative to "
             "the RMS of the reference tension (the usual '% RMS'), its max relative to the range; "
             "RMS and max of the mid-line position difference (our station 11 of 21 = 417.5 m from "
-            "the fairlead; MoorDyn node N/2)."),
-        fmu_grid=dict(full=[(5, 1e-1), (5, 1e-2)] + [(n, tol) for n in (10, 20, 40) for tol in (1e-1, 1e-2, 1e-3, 1e-4)],
+            "the fairlead; MoorDyn node N/2). Ours also at tensionTolerance 0.1 with positionTolerance 0.01 "
+            "and 0.1 m: there the default 1 mm, not the tension tolerance, sets the steps (at 5 elements "
+            "tensionTolerance 0.1 and 0.01 take the same steps)."),
+        # and the loosest setting with the position tolerance (1 mm by default, the tolerance that sets
+        # the steps at tensionTolerance 0.1) at 1 cm and 10 cm
+        fmu_grid=dict(full=[(5, 1e-1), (5, 1e-2)] + [(n, tol) for n in (10, 20, 40) for tol in (1e-1, 1e-2, 1e-3, 1e-4)]
+                      + [(n, 1e-1, {"positionTolerance": pt}) for n in (5, 10, 20, 40) for pt in (0.01, 0.1)],
                       quick=[(10, 1e-3)]),
         md_grid=dict(full=[(n, 0.9) for n in (10, 20, 40, 80, 160)], quick=[(10, 0.9)]),
-        reference=dict(full=(80, 1e-6), quick=(20, 1e-4)),
+        reference=dict(full=(80, 1e-6), quick=(20, 1e-4)), still_twin=True,
     )
     stiff = Case(
         name="stiff", title="Stiff power cable with seabed (250 m, EA 7e8 N, EI 2e4 N m2, 100 m depth, surge 3 m at 8 s, 120 s)",
@@ -207,13 +224,17 @@ def make_cases():
             "curvature over the top 25 m (it misses the hinge's bending boundary layer, sqrt(EI/T) < "
             "1 m); error = RMS difference relative to RMS of the reference; mid-length position RMS. Ours also "
             "at tensionTolerance 0.1 with projectedErrorControl = true (the tangents' error test along and "
-            "across the cable, docs/error_control.md; off by default)."),
-        # and the loosest setting with the error test of the tangents along and across the cable
+            "across the cable, docs/error_control.md; off by default), and with positionTolerance 0.1 m "
+            "as well, from 3 to 40 elements."),
+        # and the loosest setting with the error test of the tangents along and across the cable,
+        # also with the position tolerance at 10 cm (and on coarser meshes: the cheap end)
         fmu_grid=dict(full=[(n, tol) for n in (10, 20, 40) for tol in (1e-1, 1e-2, 1e-3, 1e-4)]
-                      + [(n, 1e-1, {"projectedErrorControl": True}) for n in (10, 20, 40)],
+                      + [(n, 1e-1, {"projectedErrorControl": True}) for n in (10, 20, 40)]
+                      + [(n, 1e-1, {"projectedErrorControl": True, "positionTolerance": 0.1})
+                         for n in (3, 5, 6, 10, 15, 20, 40)],
                       quick=[(10, 1e-3)]),
         md_grid=dict(full=[(n, 0.9) for n in (20, 40, 80)], quick=[(20, 0.9)]),
-        reference=dict(full=(80, 1e-6), quick=(20, 1e-5)),
+        reference=dict(full=(80, 1e-6), quick=(20, 1e-5)), still_twin=True,
     )
     heave_case = Case(
         name="heave",
@@ -284,6 +305,8 @@ class Run:
     stats: dict = field(default_factory=dict)
     errors: dict = field(default_factory=dict)
     label: str = ""
+    tolerance: float | None = None  # ours: the tensionTolerance (or relTol) of the run
+    extra: dict = field(default_factory=dict)  # ours: the further FMU parameters of the run
 
 
 def sample_times(case):
@@ -370,7 +393,8 @@ def run_fmu(fmu, case, n_elements, tol, extra=None, label="", step=None, toleran
     setting = f"{tolerance} {tol:.0e}" + "".join(f", {k} = {v:g}" for k, v in (extra or {}).items())
     return Run("ours", n_elements, setting, cpu, times, out[:, 0:3], out[:, 3:6],
                out[:, 6:9], out[:, 9:18].reshape(-1, 3, 3), stats,
-               label=label or (f"ours N={n_elements} {short}={tol:.0e}" + (f" {tags}" if tags else "")))
+               label=label or (f"ours N={n_elements} {short}={tol:.0e}" + (f" {tags}" if tags else "")),
+               tolerance=tol, extra=dict(extra or {}))
 
 
 # ----------------------------------------------------------------------------- MoorDyn
@@ -919,8 +943,8 @@ def calm_table(fmu, case, runs):
     """Each of our runs next to the same run in calm water: (rows, Markdown)."""
     rows = []
     for r in [x for x in runs if x.code == "ours"]:
-        tol = float(r.setting.split()[-1])
-        calm = run_fmu(fmu, case, r.resolution, tol, extra=case.calm_twin)
+        tol = r.tolerance
+        calm = run_fmu(fmu, case, r.resolution, tol, extra={**r.extra, **case.calm_twin})
         rows.append((r.resolution, tol, calm.cpu, r.cpu, int(calm.stats["solver.nSteps"]),
                      int(r.stats["solver.nSteps"]), calm.stats["solver.nResidualEvals"],
                      r.stats["solver.nResidualEvals"]))
@@ -930,6 +954,30 @@ def calm_table(fmu, case, runs):
         lines.append(f"| {n} elements | {tol:.0e} | {c_calm:.3f} | {c_waves:.3f} | {c_waves / c_calm:.1f} | {s_calm} | "
                      f"{s_waves} | {1e6 * c_calm / r_calm:.1f} | {1e6 * c_waves / r_waves:.1f} |")
     return rows, "\n".join(lines)
+
+
+STILL_TOLERANCE = 1e-1  # the still twin is run for our runs at this tensionTolerance (the cheap end)
+
+
+def still_rows(fmu, case, runs):
+    """Our runs at STILL_TOLERANCE next to the same runs with the fairlead held still:
+    (resolution, setting, CPU moving, CPU still, steps moving, steps still, communication points)."""
+    still_case = replace(case, traj=HeldStill(case.traj))
+    rows = []
+    for r in [x for x in runs if x.code == "ours" and x.tolerance == STILL_TOLERANCE]:
+        still = run_fmu(fmu, still_case, r.resolution, r.tolerance, extra=r.extra)
+        rows.append((r.resolution, r.setting, r.cpu, still.cpu, int(r.stats["solver.nSteps"]),
+                     int(still.stats["solver.nSteps"]), len(r.t) - 1))
+    return rows
+
+
+def still_table(rows) -> str:
+    lines = ["| resolution | setting | CPU [s] | CPU held still [s] | held still / moving | steps | steps held still | "
+             "CPU per communication point held still [us] |", "|---|---|---|---|---|---|---|---|"]
+    for n, setting, c_move, c_still, s_move, s_still, points in rows:
+        lines.append(f"| {n} elements | {setting} | {c_move:.3f} | {c_still:.3f} | {c_still / c_move:.2f} | {s_move} | "
+                     f"{s_still} | {1e6 * c_still / points:.1f} |")
+    return "\n".join(lines)
 
 
 def switch_table(fmu, case, ref):
@@ -987,6 +1035,12 @@ def main(argv=None) -> int:
         if case.calm_twin is not None:
             text += ("\n### The same runs in calm water (the price of the wave kinematics)\n\n"
                      + calm_table(fmu, case, runs)[1] + "\n")
+        if case.still_twin and not args.quick:
+            text += ("\n### The price of the communication points (the cheap runs with the fairlead held still)\n\n"
+                     f"Our runs at tensionTolerance {STILL_TOLERANCE:g} again with the fairlead held where it starts: "
+                     "the same communication steps, inputs set and outputs read at each, one integrator step "
+                     "each. What they cost is a floor under any run of this case driven at these steps.\n\n"
+                     + still_table(still_rows(fmu, case, runs)) + "\n")
         if args.switches and case.calm_twin is None:
             text += ("\n### What each switch costs (ours; errors against the reference above)\n\n"
                      + switch_table(fmu, case, ref) + "\n")
