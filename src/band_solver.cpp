@@ -56,6 +56,41 @@ BandMatrix::BandMatrix(int n, int bandwidth)
 
 void BandMatrix::clear() { std::fill(a_.begin(), a_.end(), 0.0); }
 
+void BandMatrix::add_product(const double* x, double* y) const {
+    // Each row's sum is a chain of dependent additions, as long as the band is wide. Four rows
+    // summed side by side make four independent chains the processor overlaps; every row still
+    // adds its terms in the order of k, so the result is the same to the last bit.
+    auto rowSum = [&](int i) {
+        const double* r = row(i);
+        double s = y[i];
+        const int kEnd = std::min(n_ - 1, i + b_);
+        for (int k = std::max(0, i - b_); k <= kEnd; ++k) s += r[k] * x[k];
+        y[i] = s;
+    };
+    const int interiorEnd = n_ - 1 - b_;  // rows i in [b_, interiorEnd] have all 2 b_ + 1 entries
+    int i = 0;
+    for (; i < std::min(b_, n_); ++i) rowSum(i);
+    for (; i + 3 <= interiorEnd; i += 4) {
+        const double* r0 = &a_[static_cast<size_t>(i) * w_];  // entry j of row i + m: A(i + m, i + m - b_ + j)
+        const double* r1 = r0 + w_;
+        const double* r2 = r1 + w_;
+        const double* r3 = r2 + w_;
+        const double* x0 = x + i - b_;
+        double s0 = y[i], s1 = y[i + 1], s2 = y[i + 2], s3 = y[i + 3];
+        for (int j = 0; j < w_; ++j) {
+            s0 += r0[j] * x0[j];
+            s1 += r1[j] * x0[j + 1];
+            s2 += r2[j] * x0[j + 2];
+            s3 += r3[j] * x0[j + 3];
+        }
+        y[i] = s0;
+        y[i + 1] = s1;
+        y[i + 2] = s2;
+        y[i + 3] = s3;
+    }
+    for (; i < n_; ++i) rowSum(i);
+}
+
 bool UnpivotedBandLU::factor() {
     for (int p = 0; p < n_; ++p) {
         double* rowP = row(p);

@@ -50,6 +50,8 @@ public:
     double* values() { return a_.data(); }
     const double* values() const { return a_.data(); }
     size_t value_count() const { return a_.size(); }
+    // y_i += sum_k A(i, k) x_k, the terms of each row added in the order of k.
+    void add_product(const double* x, double* y) const;
 
 protected:
     double* row(int i) { return &a_[static_cast<size_t>(i) * w_ + b_ - i]; }  // row(i)[k] = A(i, k)

@@ -194,6 +194,7 @@ Integrator::Integrator(SUNContext context, int n, int bandwidth, SecondOrderSyst
       K_(n, bandwidth), C_(n, bandwidth), M_(n, bandwidth), system_(system) {
     pivoted_ = std::make_unique<BandSolver>(context, n, bandwidth);
     rhs_.assign(n, 0.0);
+    positions_.assign(n, 0.0);
     y_ = N_VNew_Serial(2 * n, context);
     yp_ = N_VNew_Serial(2 * n, context);
     J_ = SUNMatNewEmpty(context);
@@ -311,20 +312,16 @@ int Integrator::ls_setup(SUNLinearSolver S, SUNMatrix /*A*/) {
 // (K + cj D) x_q = b_v + D b_q.
 int Integrator::ls_solve(SUNLinearSolver S, SUNMatrix /*A*/, N_Vector x, N_Vector b, double /*tol*/) {
     auto* self = static_cast<Integrator*>(S->content);
-    const int n = self->n_, bandwidth = self->bandwidth_;
+    const int n = self->n_;
     const double* bb = N_VGetArrayPointer(b);
     double* xx = N_VGetArrayPointer(x);
-    const BandMatrix& D = self->D_;
     double* rhs = self->rhs_.data();
-    const double* d = D.values();
-    const int width = 2 * bandwidth + 1;
+    double* positions = self->positions_.data();
     for (int i = 0; i < n; ++i) {
-        double s = bb[2 * i + 1];
-        const int k0 = std::max(0, i - bandwidth), k1 = std::min(n - 1, i + bandwidth);
-        const double* row = d + static_cast<size_t>(i) * width + bandwidth - i;  // row[k] = D(i, k)
-        for (int k = k0; k <= k1; ++k) s += row[k] * bb[2 * k];
-        rhs[i] = s;
+        rhs[i] = bb[2 * i + 1];
+        positions[i] = bb[2 * i];
     }
+    self->D_.add_product(positions, rhs);
     if (self->usePivoted_) {
         if (!self->pivoted_->solve(rhs)) return SUNLS_PACKAGE_FAIL_UNREC;
     } else {

@@ -139,6 +139,7 @@ private:
     long stepAtJacobian_ = 0, failuresAtJacobian_ = 0;
     long jacobianEvaluations_ = 0;   // since the last restart (the solver.nJacobianEvals statistic)
     std::vector<double> rhs_;
+    std::vector<double> positions_;  // the position part of a right-hand side, contiguous
     double cj_ = 0.0;  // of the stored matrices
     std::vector<double> atol_;  // per-component absolute tolerances (empty: IDA's scalar ones)
     double relTol_ = 0.0, absTol_ = 0.0;
