@@ -11,6 +11,10 @@ alone. The errors are those of the top tension |towForce| at the communication p
 newtons against the tolerance in newtons (tensionTolerance x solver.tensionScale). `--short` runs
 the first 20-80 s of each scene (what tests/python/test_error_control.py checks). Computes first
 (`curves`), then writes Markdown (`markdown`).
+
+`--position`: instead, the position tolerance at loose tension tolerances on the chain mooring (the
+full 120 s): pairs of tensionTolerance and positionTolerance against the same reference
+(`position_rows`, `position_markdown`; its own markers in the doc).
 """
 
 from __future__ import annotations
@@ -29,6 +33,9 @@ from .paths import REPO_ROOT, require_fmu
 from .progress import ProgressBar
 
 TOLERANCES = (1e-1, 1e-2, 1e-3, 1e-4, 1e-5)
+DEFAULT_POSITION_TOLERANCE = 1e-3  # [m], the FMU's default positionTolerance
+# (tensionTolerance, positionTolerance [m]) of the position study
+POSITION_PAIRS = ((1e-1, 1e-3), (1e-1, 1e-2), (1e-1, 1e-1), (1e-2, 1e-3), (1e-2, 1e-1), (1e-3, 1e-3), (1e-3, 1e-1))
 REFERENCE_TOLERANCE = 1e-8
 DEFAULT_TOLERANCE = 1e-3  # the FMU's default tensionTolerance (schema/variables.toml)
 STATS = ["solver.nSteps", "solver.nResidualEvals", "solver.nJacobianEvals"]
@@ -163,7 +170,47 @@ def markdown(result: dict) -> str:
     return "\n".join(lines)
 
 
+def position_rows(fmu, name="mooring", short=False, pairs=POSITION_PAIRS):
+    """The scene at each (tensionTolerance, positionTolerance) of `pairs` against its reference
+    (tensionTolerance 1e-8, the default position tolerance): (scene, reference, [(tol, pos, run, errors)])."""
+    scene = scenes(short)[name]
+    bar = ProgressBar(len(pairs) + 1, label="position tolerance")
+    ref = run(fmu, scene, {"tensionTolerance": REFERENCE_TOLERANCE})
+    rows = []
+    for k, (tol, pos) in enumerate(pairs):
+        bar.update(k + 1, f"{tol:g} / {pos:g} m")
+        r = run(fmu, scene, {"tensionTolerance": tol, "positionTolerance": pos})
+        rows.append((tol, pos, r, errors(r, ref)))
+    bar.close("done")
+    return scene, ref, rows
+
+
+def position_markdown(scene, ref, rows) -> str:
+    def mark(value, default):
+        return f"{value:g}" + (" (default)" if value == default else "")
+    lines = [f"{scene.title} ({scene.t_end:g} s, {scene.step:g} s steps, {scene.parameters['nElements']} elements); "
+             f"tension scale {ref.tension_scale / 1e3:.1f} kN; errors against tensionTolerance "
+             f"{REFERENCE_TOLERANCE:g} on the same mesh.", "",
+             "| tensionTolerance | positionTolerance [m] | tolerance [N] | max error [N] | max error / range | "
+             "RMS error / RMS | IDA steps | CPU [s] |", "|---|---|---|---|---|---|---|---|"]
+    for tol, pos, r, e in rows:
+        lines.append(f"| {mark(tol, DEFAULT_TOLERANCE)} | {mark(pos, DEFAULT_POSITION_TOLERANCE)} | "
+                     f"{tol * r.tension_scale:.3g} | {e['max_newton']:.3g} | {e['max_range']:.1e} | "
+                     f"{e['rms_rel']:.1e} | {r.stats['solver.nSteps']:.0f} | {r.cpu:.2f} |")
+    within = all(e["max_newton"] <= tol * r.tension_scale for tol, _, r, e in rows)
+    lines += ["", f"Below the tension tolerance in newtons at every setting: {'yes' if within else 'NO'}."]
+    return "\n".join(lines)
+
+
 BEGIN, END = "<!-- error_control table begin -->", "<!-- error_control table end -->"
+POSITION_BEGIN, POSITION_END = "<!-- position table begin -->", "<!-- position table end -->"
+
+
+def splice(doc: Path, begin: str, end: str, text: str) -> None:
+    """Replaces what lies between the markers `begin` and `end` in `doc` with `text`."""
+    old = doc.read_text()
+    a, b = old.index(begin) + len(begin), old.index(end)
+    doc.write_text(old[:a] + "\n" + text + "\n" + old[b:])
 
 
 def main(argv=None) -> int:
@@ -172,16 +219,19 @@ def main(argv=None) -> int:
     p.add_argument("--tolerances", type=float, nargs="+", default=list(TOLERANCES))
     p.add_argument("--scenes", nargs="+", default=None, help="hopland heave stiff mooring (default: all)")
     p.add_argument("--fmu", type=Path, default=None)
+    p.add_argument("--position", action="store_true",
+                   help="the position tolerance at loose tension tolerances (chain mooring) instead")
     p.add_argument("--doc", type=Path, default=None, help="replace the table between the markers in this file")
     args = p.parse_args(sys.argv[1:] if argv is None else argv)
     fmu = args.fmu or require_fmu()
-    text = markdown(curves(fmu, args.short, args.tolerances, args.scenes))
+    if args.position:
+        text, markers = position_markdown(*position_rows(fmu, short=args.short)), (POSITION_BEGIN, POSITION_END)
+    else:
+        text, markers = markdown(curves(fmu, args.short, args.tolerances, args.scenes)), (BEGIN, END)
     print(text)
     if args.doc is not None:
         doc = args.doc if args.doc.is_absolute() else REPO_ROOT / args.doc
-        old = doc.read_text()
-        a, b = old.index(BEGIN) + len(BEGIN), old.index(END)
-        doc.write_text(old[:a] + "\n" + text + "\n" + old[b:])
+        splice(doc, *markers, text)
         print(f"wrote {doc}")
     return 0
 
