@@ -209,7 +209,7 @@ void CableSimulation::allocate() {
     Xd_.assign(model_.n_global(), 0.0);
     Xdd_.assign(model_.n_global(), 0.0);
     forces_.element.resize(model_.n_elements());
-    nodeTension_.resize(model_.n_elements() + 1);
+    outputWork_.nodeTension.resize(model_.n_elements() + 1);
 }
 
 // The constant-tension winch's rate for the tow tension T with the top element at topLength:
@@ -901,7 +901,7 @@ void CableSimulation::free_state(std::vector<double>& q, std::vector<double>& v,
 void CableSimulation::update_outputs() {
     expand_integrator_state(time_, y_.data(), yp_.data());
     model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), &forces_);
-    compute_outputs(model_, X_.data(), Xd_.data(), forces_, loads_.torque, nodeTension_, outputs_);
+    compute_outputs(model_, X_.data(), Xd_.data(), forces_, loads_.torque, outputWork_, outputs_);
     const IntegratorStats s = total_stats();
     outputs_.nSteps = s.steps;
     outputs_.nResidualEvals = s.residualEvals;

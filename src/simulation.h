@@ -13,6 +13,7 @@
 #include "cable_api.h"
 #include "cable_model.h"
 #include "integrator.h"
+#include "outputs.h"
 #include "rainflow.h"
 #include "torsion.h"
 #include "winch.h"
@@ -148,7 +149,7 @@ private:
     Loads loads_;
     std::vector<double> q_, v_, a_, X_, Xd_, Xdd_, R_;
     ElementForces forces_;
-    std::vector<double> nodeTension_;  // output workspace
+    OutputWorkspace outputWork_;
     std::vector<double> historyBuffer_;  // the integrator's history on its way to/from a saved state
     std::vector<double> toleranceBuffer_;
     // interface derivatives (allocated at their first use)
