@@ -89,7 +89,8 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
             previousS = s;
             previousGap = gap;
         }
-        if (!p.enableSeabed) continue;
+        // above the contact band every load is zero: q.weight * 0 subtracts nothing
+        if (!p.enableSeabed || above_contact(model.tables(e), section.seabed, Xe)) continue;
         for (int g = 0; g < ElementTables::nAxial; ++g) {  // the residual holds minus the load
             const QuadPoint& q = model.tables(e).axial[g];
             out.seabedContactForce -=
