@@ -235,7 +235,7 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
     seabed_outputs(model, X, Xd, out);
     geometry_outputs(model, X, shapes, out);
     out.cableTorque = torque;
-    for (int k = 0; k < UC_NUM_STATIONS; ++k) out.twistAngle[k] = model.twist_at(k, UC_NUM_STATIONS, torque);
+    model.twist_angles(UC_NUM_STATIONS, torque, out.twistAngle);
     // The cable pulls on the tow fitting with the internal moment at s = 0 and on the far-end
     // fitting with minus the internal moment at s = L.
     const Vec3 towMoment = internal_moment(model, 0, X, shapes.top(), torque);
