@@ -217,12 +217,12 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
         const SectionProps& section = model.element_section(e);
         const double l = model.element_length(e);
         double axialTension[ElementTables::nAxial];
-        axial_tensions(tables, section.axial, Xe, Xd + model.element_offset(e), axialTension);
+        Vec3 rp[ElementTables::nAxial];  // r' at the axial points, which the tensions interpolate anyway
+        axial_tensions(tables, section.axial, Xe, Xd + model.element_offset(e), axialTension, rp);
         double mean = 0.0, elementCurvature = 0.0;
         for (int g = 0; g < ElementTables::nAxial; ++g) {
-            const ShapeValues& sv = tables.axial[g].shape;
             mean += tables.axial[g].weight / l * axialTension[g];
-            elementCurvature = std::max(elementCurvature, curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe)));
+            elementCurvature = std::max(elementCurvature, curvature(rp[g], interpolate(tables.axial[g].shape.d2N, Xe)));
         }
         minTension = std::min(minTension, mean);
         for (int end = 0; end < 2; ++end) {
