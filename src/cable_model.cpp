@@ -380,19 +380,24 @@ double CableModel::axial_compliance() const {
     return compliance;
 }
 
-double CableModel::twist_at(int k, int stations, double torque) const {
+void CableModel::twist_angles(int stations, double torque, double* angle) const {
     if (sections_.size() == 1) {
-        const double GJ = sections_[0].GJ;
-        return GJ > 0.0 ? torque * sections_[0].length * k / (stations - 1) / GJ : 0.0;
+        const double GJ = sections_[0].GJ, length = sections_[0].length;
+        for (int k = 0; k < stations; ++k) angle[k] = GJ > 0.0 ? torque * length * k / (stations - 1) / GJ : 0.0;
+        return;
     }
-    const double s = line_.length * k / (stations - 1);
-    double angle = 0.0;
     for (const SectionProps& sec : sections_) {
-        if (sec.GJ <= 0.0) return 0.0;
-        const double inside = std::clamp(s - sec.s0, 0.0, sec.length);
-        angle += torque * inside / sec.GJ;
+        if (sec.GJ <= 0.0) {
+            std::fill(angle, angle + stations, 0.0);
+            return;
+        }
     }
-    return angle;
+    for (int k = 0; k < stations; ++k) {
+        const double s = line_.length * k / (stations - 1);
+        double sum = 0.0;
+        for (const SectionProps& sec : sections_) sum += torque * std::clamp(s - sec.s0, 0.0, sec.length) / sec.GJ;
+        angle[k] = sum;
+    }
 }
 
 void CableModel::expand(const double* q, const double* v, const double* a, const Loads& loads, double t,

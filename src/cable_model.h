@@ -178,9 +178,9 @@ public:
     double torque_for_twist(double twist) const;
     // Axial compliance of the whole line, the sum of L_k / EA_k over its sections [m/N].
     double axial_compliance() const;
-    // Twist angle at arc length s under the torque H (0 when a section has no torsional stiffness).
-    // At station k of `stations` spread evenly over the line.
-    double twist_at(int k, int stations, double torque) const;
+    // Twist angle under the torque H (0 when a section has no torsional stiffness) at each of
+    // `stations` stations spread evenly over the line, into angle[0 .. stations - 1].
+    void twist_angles(int stations, double torque, double* angle) const;
     // Arc length of node slot i (both slots of a pinned joint have the joint's).
     double slot_arc_length(int i) const { return slotArc_[i]; }
 

@@ -103,12 +103,16 @@ struct AxialSamples {
     double rateMode[3] = {0, 0, 0};    // ... and of the strain rate
 };
 
-AxialSamples sample_axial(const ElementTables& e, const double* X, const double* Xd) {
+// withDerivatives: also r' at the points into rpOut (a compile-time choice: the residual's and the
+// Jacobian's copies stay without it).
+template <bool withDerivatives = false>
+AxialSamples sample_axial(const ElementTables& e, const double* X, const double* Xd, Vec3* rpOut = nullptr) {
     AxialSamples s;
     const double l = e.length;
     for (int g = 0; g < ElementTables::nAxial; ++g) {
         const QuadPoint& q = e.axial[g];
         const Vec3 rp = interpolate(q.shape.dN, X);
+        if constexpr (withDerivatives) rpOut[g] = rp;
         s.rpd[g] = interpolate(q.shape.dN, Xd);
         s.stretch[g] = rp.norm();
         s.t[g] = rp / s.stretch[g];
@@ -215,8 +219,8 @@ void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const doubl
 }
 
 void axial_tensions(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
-                    double* T) {
-    const AxialSamples s = sample_axial(e, X, Xd);
+                    double* T, Vec3* rp) {
+    const AxialSamples s = rp ? sample_axial<true>(e, X, Xd, rp) : sample_axial(e, X, Xd);
     const ModeTensions m = mode_tensions(e, p, s);
     for (int g = 0; g < ElementTables::nAxial; ++g) T[g] = projected_tension(e, m, g);
 }

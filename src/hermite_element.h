@@ -101,9 +101,9 @@ void add_axial_force(const ElementTables& e, const AxialProps& p, const double* 
 // Adds dR/dX to K and dR/dXdot to C.
 void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
                         Mat12& K, Mat12& C);
-// Projected tension at the ElementTables::nAxial sampling points.
+// Projected tension at the ElementTables::nAxial sampling points; rp (may be null) receives r' there.
 void axial_tensions(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
-                    double* T);
+                    double* T, Vec3* rp = nullptr);
 // Axial strain energy 0.5 EA int (projected strain)^2 ds (for tests).
 double axial_energy(const ElementTables& e, const AxialProps& p, const double* X);
 

@@ -89,7 +89,8 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
             previousS = s;
             previousGap = gap;
         }
-        if (!p.enableSeabed) continue;
+        // above the contact band every load is zero: q.weight * 0 subtracts nothing
+        if (!p.enableSeabed || above_contact(model.tables(e), section.seabed, Xe)) continue;
         for (int g = 0; g < ElementTables::nAxial; ++g) {  // the residual holds minus the load
             const QuadPoint& q = model.tables(e).axial[g];
             out.seabedContactForce -=
@@ -99,7 +100,7 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
 }
 
 // Layback, the cable's direction at the tow point and its angle at an anchor.
-void geometry_outputs(const CableModel& model, const double* X, UCOutputs& out) {
+void geometry_outputs(const CableModel& model, const double* X, const StationShapes& shapes, UCOutputs& out) {
     const UCParams& p = model.params();
     const int gN = model.end_offset();
     const Vec3 top = at(X, 0), end = at(X, gN);
@@ -112,8 +113,7 @@ void geometry_outputs(const CableModel& model, const double* X, UCOutputs& out) 
         // Lying on the seabed at the anchor: the line one seabed sample before it (l/8) still
         // resting on the seabed, as seabed_outputs counts it.
         const int last = model.n_elements() - 1;
-        const double l = model.element_length(last);
-        const double nearAnchor = interpolate(hermite_shape(1.0 - 1.0 / kSeabedSamples, l).N, X + gN - 6).z();
+        const double nearAnchor = interpolate(shapes.near_bottom().N, X + gN - 6).z();
         const bool grounded = p.enableSeabed && nearAnchor + p.waterDepth <= resting_clearance(model.element_section(last));
         const Vec3 up = -at(X, gN + 3).normalized();  // from the anchor up the cable
         out.anchorUplift = grounded ? 0.0 : std::asin(std::clamp(up.z(), -1.0, 1.0));
@@ -121,6 +121,33 @@ void geometry_outputs(const CableModel& model, const double* X, UCOutputs& out) 
 }
 
 }  // namespace
+
+bool StationShapes::same_mesh(const CableModel& model) const {
+    const std::vector<ElementRun>& runs = model.runs();
+    if (model.line().length != length_ || runs.size() != runs_.size()) return false;
+    for (size_t r = 0; r < runs.size(); ++r) {
+        const ElementRun &a = runs[r], &b = runs_[r];
+        if (a.s0 != b.s0 || a.elementLength != b.elementLength || a.first != b.first || a.count != b.count ||
+            a.section != b.section)
+            return false;
+    }
+    return true;
+}
+
+void StationShapes::update(const CableModel& model) {
+    if (same_mesh(model)) return;
+    length_ = model.line().length;
+    runs_ = model.runs();
+    for (int k = 0; k < UC_NUM_STATIONS; ++k) {
+        Station& station = stations_[k];
+        model.locate(model.line().length * k / (UC_NUM_STATIONS - 1), station.element, station.xi);
+        station.shape = hermite_shape(station.xi, model.element_length(station.element));
+    }
+    const int last = model.n_elements() - 1;
+    top_ = hermite_shape(0.0, model.element_length(0));
+    bottom_ = hermite_shape(1.0, model.element_length(last));
+    nearBottom_ = hermite_shape(1.0 - 1.0 / kSeabedSamples, model.element_length(last));
+}
 
 void nodal_tensions(const CableModel& model, const double* X, const ElementForces& forces, double* T) {
     const int N = model.n_elements();
@@ -133,17 +160,17 @@ void nodal_tensions(const CableModel& model, const double* X, const ElementForce
 // Internal moment at an element end: bending EI r' x r'' / |r'|^3 minus the torque along t. The
 // sign follows from the residual: its torque term +(H r' x r'')' puts -H r' x r'' into the internal
 // force n, and the moment balance M' + r' x n = 0 then needs M = EI r' x r'' - H t. It is
-// the moment that the cable beyond the point exerts on the cable before it.
-Vec3 internal_moment(const CableModel& model, int e, const double* X, double xi, double torque) {
+// the moment that the cable beyond the point exerts on the cable before it. sv: the shape functions
+// at the end of element e.
+Vec3 internal_moment(const CableModel& model, int e, const double* X, const ShapeValues& sv, double torque) {
     const double* Xe = X + model.element_offset(e);
-    const ShapeValues sv = hermite_shape(xi, model.element_length(e));
     const Vec3 rp = interpolate(sv.dN, Xe);
     const double n = rp.norm();
     return model.element_section(e).EI * rp.cross(interpolate(sv.d2N, Xe)) / (n * n * n) - torque * rp / n;
 }
 
 void compute_outputs(const CableModel& model, const double* X, const double* Xd, const ElementForces& forces,
-                     double torque, std::vector<double>& T, UCOutputs& out) {
+                     double torque, OutputWorkspace& work, UCOutputs& out) {
     const int N = model.n_elements();
     const int gN = model.end_offset();
     const Vec3 towForce = -forces.element[0].segment<3>(0);
@@ -157,15 +184,17 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
     out.towTension = towForce.norm();
     out.endTension = endForce.norm();
 
-    T.resize(N + 1);  // the caller's workspace: no allocation after the first call
+    std::vector<double>& T = work.nodeTension;
+    T.resize(N + 1);  // no allocation after the first call
     nodal_tensions(model, X, forces, T.data());
 
+    const StationShapes& shapes = work.stations;
+    work.stations.update(model);
     for (int k = 0; k < UC_NUM_STATIONS; ++k) {
-        const double s = model.line().length * k / (UC_NUM_STATIONS - 1);
-        int e = 0;
-        double xi = 0.0;
-        model.locate(s, e, xi);
-        const ShapeValues sv = hermite_shape(xi, model.element_length(e));
+        const StationShapes::Station& station = shapes.station(k);
+        const int e = station.element;
+        const double xi = station.xi;
+        const ShapeValues& sv = station.shape;
         const double* Xe = X + model.element_offset(e);
         const Vec3 r = interpolate(sv.N, Xe);
         out.shapeX[k] = r.x();
@@ -188,12 +217,12 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
         const SectionProps& section = model.element_section(e);
         const double l = model.element_length(e);
         double axialTension[ElementTables::nAxial];
-        axial_tensions(tables, section.axial, Xe, Xd + model.element_offset(e), axialTension);
+        Vec3 rp[ElementTables::nAxial];  // r' at the axial points, which the tensions interpolate anyway
+        axial_tensions(tables, section.axial, Xe, Xd + model.element_offset(e), axialTension, rp);
         double mean = 0.0, elementCurvature = 0.0;
         for (int g = 0; g < ElementTables::nAxial; ++g) {
-            const ShapeValues& sv = tables.axial[g].shape;
             mean += tables.axial[g].weight / l * axialTension[g];
-            elementCurvature = std::max(elementCurvature, curvature(interpolate(sv.dN, Xe), interpolate(sv.d2N, Xe)));
+            elementCurvature = std::max(elementCurvature, curvature(rp[g], interpolate(tables.axial[g].shape.d2N, Xe)));
         }
         minTension = std::min(minTension, mean);
         for (int end = 0; end < 2; ++end) {
@@ -204,13 +233,13 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
         maxBendingMoment = std::max(maxBendingMoment, section.EI * elementCurvature);
     }
     seabed_outputs(model, X, Xd, out);
-    geometry_outputs(model, X, out);
+    geometry_outputs(model, X, shapes, out);
     out.cableTorque = torque;
-    for (int k = 0; k < UC_NUM_STATIONS; ++k) out.twistAngle[k] = model.twist_at(k, UC_NUM_STATIONS, torque);
+    model.twist_angles(UC_NUM_STATIONS, torque, out.twistAngle);
     // The cable pulls on the tow fitting with the internal moment at s = 0 and on the far-end
     // fitting with minus the internal moment at s = L.
-    const Vec3 towMoment = internal_moment(model, 0, X, 0.0, torque);
-    const Vec3 endMoment = -internal_moment(model, N - 1, X, 1.0, torque);
+    const Vec3 towMoment = internal_moment(model, 0, X, shapes.top(), torque);
+    const Vec3 endMoment = -internal_moment(model, N - 1, X, shapes.bottom(), torque);
     for (int k = 0; k < 3; ++k) {
         out.towMoment[k] = towMoment[k];
         out.endMoment[k] = endMoment[k];

@@ -25,17 +25,15 @@ double contact_ramp(double p, double delta, double* slope) {
 // sums of terms of a few hundred metres at most, exact to far below a micrometre.
 constexpr double kHullMargin = 1e-6;
 
-// True when no point of the element can touch the contact band, so that every sampling point
-// would give exactly zero load and can be skipped without changing a bit of the result. The cubic
-// Hermite curve is the Bezier curve with control points r0, r0 + l t0 / 3, r1 - l t1 / 3, r1, and
-// lies in their convex hull: it is nowhere lower than the lowest of their heights.
+}  // namespace
+
+// The cubic Hermite curve is the Bezier curve with control points r0, r0 + l t0 / 3, r1 - l t1 / 3,
+// r1, and lies in their convex hull: it is nowhere lower than the lowest of their heights.
 bool above_contact(const ElementTables& e, const SeabedProps& p, const double* X) {
     const double third = e.length / 3.0;
     const double lowest = std::min(std::min(X[2], X[2] + third * X[5]), std::min(X[8] - third * X[11], X[8]));
     return lowest > -p.depth + p.smoothing + kHullMargin;
 }
-
-}  // namespace
 
 Vec3 seabed_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJacobian* J) {
     if (J) {

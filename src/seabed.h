@@ -31,6 +31,11 @@ struct SeabedJacobian {
 // Per-length residual contribution at a point; fills J when non-null. Zero above the seabed.
 Vec3 seabed_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJacobian* J);
 
+// True when no point of the element (its 12 DOFs at X) can touch the contact band, so that
+// seabed_load is exactly zero at every sampling point, which can then be skipped without changing a
+// bit of the result.
+bool above_contact(const ElementTables& e, const SeabedProps& p, const double* X);
+
 // Element integrals over the 5 axial sampling points (contact is sampled more finely than the
 // hydrodynamic loads because it switches on and off along the cable).
 void add_seabed_force(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd, double* R);
