@@ -688,6 +688,9 @@ def parse_args(argv):
     p.add_argument("--switches", action=argparse.BooleanOptionalAction, default=None,
                    help="also tabulate the cost of each model switch (default: on in full mode)")
     p.add_argument("--fmu", type=Path, default=None)
+    p.add_argument("--appendices", action="store_true",
+                   help="only rewrite the report's appendices from docs/performance_limits.md and "
+                        "docs/performance_profile.md (runs nothing)")
     args = p.parse_args(argv)
     if args.switches is None:
         args.switches = not args.quick
@@ -1011,6 +1014,11 @@ def switch_table(fmu, case, ref):
 
 def main(argv=None) -> int:
     args = parse_args(sys.argv[1:] if argv is None else argv)
+    if args.appendices:
+        doc = args.doc or DOC
+        doc.write_text(with_appendices(doc.read_text(), doc.parent))
+        print(f"updated the appendices of {doc}")
+        return 0
     fmu = args.fmu if args.fmu is not None else require_fmu()
     cases = make_cases()
     names = args.cases or list(cases)
@@ -1108,12 +1116,30 @@ def splice_glance(text: str, sections) -> str:
     return "\n".join(lines)
 
 
+APPENDICES = ("performance_limits.md", "performance_profile.md")  # hand-written / callgrind, next to the report
+
+
+def appendix_text(folder: Path) -> str:
+    """The report's appendices as they are now in `folder`."""
+    return "\n".join(f.read_text() for f in (folder / name for name in APPENDICES) if f.is_file())
+
+
+def with_appendices(text: str, folder: Path) -> str:
+    """text with its appendices (everything from the first "## " section that is neither a case's nor
+    the targets at a glance) replaced by those in `folder` now."""
+    heads = {f"## {case.title}" for case in make_cases().values()} | {"## Targets at a glance"}
+    lines = text.split("\n")
+    at = next((i for i, line in enumerate(lines) if line.startswith("## ") and line.strip() not in heads), len(lines))
+    return "\n".join(lines[:at]) + "\n" + appendix_text(folder)
+
+
 def splice_doc(doc: Path, sections) -> None:
     import shutil
     for case, ref, runs, text, png in sections:
         if png.resolve() != (doc.parent / png.name).resolve():
             shutil.copy(png, doc.parent / png.name)
-    doc.write_text(splice_glance(splice_sections(doc.read_text(), sections), sections))
+    text = splice_glance(splice_sections(doc.read_text(), sections), sections)
+    doc.write_text(with_appendices(text, doc.parent))
     print(f"updated {doc} (the sections of {', '.join(s[0].name for s in sections)})")
 
 
@@ -1139,10 +1165,7 @@ def write_doc(doc, sections, args):
         if png.resolve() != (doc.parent / png.name).resolve():
             shutil.copy(png, doc.parent / png.name)
         parts.append(text)
-    for name in ("performance_limits.md", "performance_profile.md"):  # hand-written / callgrind
-        extra = doc.parent / name
-        if extra.is_file():
-            parts.append(extra.read_text())
+    parts.append(appendix_text(doc.parent))
     doc.write_text("\n".join(parts))
     print(f"wrote {doc}")
 
@@ -1157,7 +1180,8 @@ machine in one run (our FMU through fmpy, MoorDyn through its `moordyn` Python m
 `moordyn.Step` every MoorDyn time step); absolute times vary on this shared machine, ratios much
 less. Errors are measured against our finest run (the reference row). Ours run on grids of
 nElements x tensionTolerance (the integrator's tolerance in tension, relative to the tension scale:
-docs/error_control.md; the default is 1e-3); MoorDyn on grids of segments at 0.9 x its stable step.
+docs/error_control.md; the default is 1e-3; some runs also with a looser positionTolerance or
+projectedErrorControl, as their rows say); MoorDyn on grids of segments at 0.9 x its stable step.
 
 How the two models are matched: same line properties; Morison drag normal on d and tangential on
 pi d in both codes (MoorDyn's CdAx is defined on pi d); normal added mass Can on the displaced

@@ -36,3 +36,20 @@ def test_partial_runs_update_their_rows_of_the_targets_at_a_glance(monkeypatch):
     assert lines[7:11] == ["| hopland | t1 | 50 | met |", "| mooring | t2 | 0.9 | NOT met |",
                            "| mooring | t3 | 1.2 | met |", "| stiff | t4 | 11 | met |"]
     assert "| mooring | not the glance table | | |" in lines  # rows outside the glance table stay
+
+
+def test_partial_runs_refresh_the_appendices(tmp_path):
+    """The hand-written limits and the callgrind profile appended to the report are rewritten from
+    their files by a partial run too (before, only a full run did), once, after the case sections."""
+    mooring = wp.make_cases()["mooring"]
+    (tmp_path / "performance_limits.md").write_text("## Where the unmet targets come from\n\nlimits v2\n")
+    (tmp_path / "performance_profile.md").write_text("<!-- profile tables begin -->\n## Profile\n\nprofile v2\n")
+    doc = "\n".join(["# Performance", "", "## Targets at a glance", "glance", "", f"## {mooring.title}",
+                     "mooring v1", "### What each switch costs", "switches", "",
+                     "## Where the unmet targets come from", "", "limits v1", "<!-- profile tables begin -->",
+                     "## Profile", "", "profile v1", ""])
+    text = wp.with_appendices(wp.splice_sections(doc, [(mooring, None, [], f"## {mooring.title}\n\nmooring v2\n", None)]),
+                              tmp_path)
+    assert "mooring v2" in text and "v1" not in text
+    assert text.count("## Where the unmet targets come from") == 1 and text.count("## Profile") == 1
+    assert text.index("mooring v2") < text.index("limits v2") < text.index("profile v2")
