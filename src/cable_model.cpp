@@ -248,7 +248,7 @@ void CableModel::build_mesh(const UCParams& p) {
     }
     nElements_ = first;
     for (const ElementRun& run : runs_) {
-        tables_.push_back(make_element_tables(run.elementLength, kLoadQuadraturePoints, 3));
+        tables_.push_back(make_element_tables(run.elementLength, kLoadQuadraturePoints, 3, contact_spacing()));
         tables_.back().axialModeWeight[1] = tables_.back().axialModeWeight[2] = kHigherStrainModeWeight;
     }
     // Node slots: one per node, and a second one after the node of a pinned joint.
@@ -339,7 +339,7 @@ void CableModel::build_dof_map() {
 void CableModel::set_top_length(double length) {
     const double shift = length - winchMesh_.topLength;
     runs_[0].elementLength = length;
-    tables_[0] = make_element_tables(length, kLoadQuadraturePoints, 3);
+    tables_[0] = make_element_tables(length, kLoadQuadraturePoints, 3, contact_spacing());
     tables_[0].axialModeWeight[1] = tables_[0].axialModeWeight[2] = kHigherStrainModeWeight;
     for (size_t r = 1; r < runs_.size(); ++r) runs_[r].s0 = runStartBase_[r] + shift;
     sections_[0].length = winchMesh_.topLength + (winchMesh_.elements - 1) * winchNominal_ + shift;
@@ -466,7 +466,7 @@ void CableModel::element_residual(int e, const double* X, const double* Xd, cons
     if (loads.torque != 0.0) add_torque_force(tables, loads.torque, X + g0, R);
     add_hydro_force(tables, sec.fluid, loads.current, X + g0, Xd + g0, Xdd + g0, R,
                     waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
-    if (sec.seabed.enabled) add_seabed_force(tables, sec.seabed, X + g0, Xd + g0, R);
+    if (sec.seabed.enabled) add_seabed_force(tables, sec.seabed, X + g0, Xd + g0, R, loads.axialContactOnly);
 }
 
 void CableModel::element_jacobian(int e, const double* X, const double* Xd, const double* Xdd,
@@ -484,7 +484,7 @@ void CableModel::element_jacobian(int e, const double* X, const double* Xd, cons
     if (loads.torque != 0.0) add_torque_jacobian(tables, loads.torque, X + g0, K);
     add_hydro_jacobian(tables, sec.fluid, loads.current, X + g0, Xd + g0, Xdd + g0, K, C, M,
                        waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
-    if (sec.seabed.enabled) add_seabed_jacobian(tables, sec.seabed, X + g0, Xd + g0, K, C);
+    if (sec.seabed.enabled) add_seabed_jacobian(tables, sec.seabed, X + g0, Xd + g0, K, C, loads.axialContactOnly);
 }
 
 bool CableModel::far_end_prescribed() const {

@@ -66,6 +66,9 @@ struct Loads {
     // continuation starts from a guess that may be slack, where a tension-only cable without
     // bending stiffness has no stiffness at all).
     bool twoSidedAxial = false;
+    // Static solver only: seabed contact at the elements' axial points even where a denser contact
+    // rule is asked for (seabedContactSpacing): the continuation runs on the coarser contact.
+    bool axialContactOnly = false;
 };
 
 // Residual contributions of one element and of the far-end node terms, kept for outputs.
@@ -142,6 +145,8 @@ public:
     const WinchMesh& winch_mesh() const { return winchMesh_; }  // as built (topLength: at the build)
     double winch_nominal() const { return winchNominal_; }       // nominal element length
     double top_length() const { return runs_[0].elementLength; }
+    // seabedContactSpacing where the seabed is on (0 otherwise: no contact rule to build).
+    double contact_spacing() const { return params().enableSeabed ? params().seabedContactSpacing : 0.0; }
     void set_top_length(double length);  // no allocation
 
     const UCParams& params() const { return params_; }
@@ -162,6 +167,12 @@ public:
     double element_length(int e) const { return runs_[elementRun_[e]].elementLength; }
     double element_start(int e) const;                               // arc length of its first node
     const ElementTables& tables(int e) const { return tables_[elementRun_[e]]; }
+    // True when some element integrates its seabed contact at more points than its axial ones.
+    bool dense_contact() const {
+        for (const ElementTables& t : tables_)
+            if (t.nContact > 0) return true;
+        return false;
+    }
     const SectionProps& element_section(int e) const { return sections_[runs_[elementRun_[e]].section]; }
     // The element holding arc length s (clamped to the line) and the local coordinate xi there.
     void locate(double s, int& e, double& xi) const;

@@ -56,7 +56,7 @@ GaussRule gauss_rule(int n) {
     return rule;
 }
 
-ElementTables make_element_tables(double length, int loadPoints, int axialModes) {
+ElementTables make_element_tables(double length, int loadPoints, int axialModes, double contactSpacing) {
     ElementTables e;
     e.length = length;
     e.axialModes = axialModes < 1 ? 1 : (axialModes > 3 ? 3 : axialModes);
@@ -68,6 +68,22 @@ ElementTables make_element_tables(double length, int loadPoints, int axialModes)
         e.legendre[0][g] = 1.0;
         e.legendre[1][g] = std::sqrt(3.0) * (2.0 * xi - 1.0);
         e.legendre[2][g] = std::sqrt(5.0) * (6.0 * xi * xi - 6.0 * xi + 1.0);
+    }
+    // Contact sampled at most contactSpacing apart: 3-point rules on intervals of at most three
+    // spacings, where that takes more than the five axial points (their largest gap is 0.23 l).
+    if (contactSpacing > 0.0) {
+        const int intervals = std::min(ElementTables::kMaxContact / 3,
+                                       static_cast<int>(std::ceil(length / (3.0 * contactSpacing))));
+        if (3 * intervals > ElementTables::nAxial) {
+            const GaussRule rule = gauss_rule(3);
+            e.nContact = 3 * intervals;
+            for (int m = 0; m < intervals; ++m)
+                for (int g = 0; g < 3; ++g) {
+                    QuadPoint& q = e.contact[3 * m + g];
+                    q.shape = hermite_shape((m + rule.xi[g]) / intervals, length);
+                    q.weight = rule.w[g] * length / intervals;
+                }
+        }
     }
     const GaussRule load = gauss_rule(loadPoints);
     e.nLoad = load.n;

@@ -55,11 +55,18 @@ struct ElementTables {
     double legendre[3][nAxial];  // orthonormal Legendre polynomials on [0, 1] at the axial points
     int nLoad = 0;
     QuadPoint load[5];
+    // Seabed contact: nContact points (3-point Gauss rules on equal intervals) when the line asks
+    // for contact sampled more densely than the axial points (seabedContactSpacing); 0: the axial
+    // points serve.
+    static constexpr int kMaxContact = 48;
+    int nContact = 0;
+    QuadPoint contact[kMaxContact];
     Mat4 mass;     // int N_a N_b ds (exact)
     Mat4 bending;  // int N''_a N''_b ds (exact)
 };
 
-ElementTables make_element_tables(double length, int loadPoints, int axialModes);
+// contactSpacing > 0: seabed contact sampled at most that far apart (see ElementTables::contact).
+ElementTables make_element_tables(double length, int loadPoints, int axialModes, double contactSpacing = 0.0);
 
 // Interpolates a 3-vector field from the element's 12 nodal values.
 inline Vec3 interpolate(const double (&N)[4], const double* X) {

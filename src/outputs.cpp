@@ -91,8 +91,9 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
         }
         // above the contact band every load is zero: q.weight * 0 subtracts nothing
         if (!p.enableSeabed || above_contact(model.tables(e), section.seabed, Xe)) continue;
-        for (int g = 0; g < ElementTables::nAxial; ++g) {  // the residual holds minus the load
-            const QuadPoint& q = model.tables(e).axial[g];
+        const ContactPoints points = contact_points(model.tables(e));  // as the residual integrates it
+        for (int g = 0; g < points.count; ++g) {  // the residual holds minus the load
+            const QuadPoint& q = points.points[g];
             out.seabedContactForce -=
                 q.weight * seabed_load(section.seabed, interpolate(q.shape.N, Xe), interpolate(q.shape.N, Xd + model.element_offset(e)), nullptr).z();
         }

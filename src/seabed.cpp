@@ -68,10 +68,12 @@ Vec3 seabed_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJaco
     return F;
 }
 
-void add_seabed_force(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd, double* R) {
+void add_seabed_force(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd, double* R,
+                      bool axialOnly) {
     if (above_contact(e, p, X)) return;
-    for (int g = 0; g < ElementTables::nAxial; ++g) {
-        const QuadPoint& q = e.axial[g];
+    const ContactPoints points = contact_points(e, axialOnly);
+    for (int g = 0; g < points.count; ++g) {
+        const QuadPoint& q = points.points[g];
         const Vec3 F = seabed_load(p, interpolate(q.shape.N, X), interpolate(q.shape.N, Xd), nullptr);
         if (F.isZero(0.0)) continue;
         for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += (q.weight * q.shape.N[a]) * F;
@@ -79,11 +81,12 @@ void add_seabed_force(const ElementTables& e, const SeabedProps& p, const double
 }
 
 void add_seabed_jacobian(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd,
-                         Mat12& K, Mat12& C) {
+                         Mat12& K, Mat12& C, bool axialOnly) {
     if (above_contact(e, p, X)) return;
     SeabedJacobian J;
-    for (int g = 0; g < ElementTables::nAxial; ++g) {
-        const QuadPoint& q = e.axial[g];
+    const ContactPoints points = contact_points(e, axialOnly);
+    for (int g = 0; g < points.count; ++g) {
+        const QuadPoint& q = points.points[g];
         const Vec3 F = seabed_load(p, interpolate(q.shape.N, X), interpolate(q.shape.N, Xd), &J);
         if (F.isZero(0.0) && J.dr.isZero(0.0)) continue;
         for (int a = 0; a < 4; ++a) {

@@ -36,10 +36,22 @@ Vec3 seabed_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJaco
 // bit of the result.
 bool above_contact(const ElementTables& e, const SeabedProps& p, const double* X);
 
+// The points at which an element's contact is integrated: its contact rule where it has one (and
+// `axialOnly` is not set), else its axial points.
+struct ContactPoints {
+    const QuadPoint* points;
+    int count;
+};
+inline ContactPoints contact_points(const ElementTables& e, bool axialOnly = false) {
+    if (e.nContact > 0 && !axialOnly) return {e.contact, e.nContact};
+    return {e.axial, ElementTables::nAxial};
+}
+
 // Element integrals over the 5 axial sampling points (contact is sampled more finely than the
 // hydrodynamic loads because it switches on and off along the cable).
-void add_seabed_force(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd, double* R);
+void add_seabed_force(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd, double* R,
+                      bool axialOnly = false);
 void add_seabed_jacobian(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd,
-                         Mat12& K, Mat12& C);
+                         Mat12& K, Mat12& C, bool axialOnly = false);
 
 }  // namespace uc

@@ -110,6 +110,7 @@ typedef struct UCParams {
     double winchTimeConstant; /* winch.timeConstant [s]: constant-tension winch (`winchMode` 2): time constant τ of the tension control, commanded rate (T − `winch.tension`) Σ L/EA / τ, which the drum follows with the lag τ; a stiff line needs milliseconds ([docs/winch.md](docs/winch.md)) */
     int enableBodyFluidInertia; /* enableBodyFluidInertia: accelerating water (waves, a changing current) pushes the towed body and the attachments with (ρ V + added mass) times its acceleration (Froude–Krylov plus added mass, as on the line); false leaves it out, as codes that put no fluid inertia on points */
     int projectedErrorControl; /* projectedErrorControl: error test of the time integrator along and across the cable: the local error of each node's tangent along its direction is held to the tension tolerance (its length is 1 + strain), the part across it (a rotation, which strains nothing to first order) to `positionTolerance` over the element length; false: every component to the tighter of the two. Not used while `relTol` or `absTol` is positive ([docs/error_control.md](docs/error_control.md)) */
+    double seabedContactSpacing; /* seabedContactSpacing [m]: largest distance along the cable between the points at which the seabed contact is integrated, on elements whose five axial points are farther apart (3-point Gauss rules on up to 16 equal intervals, at most 48 points per element); 0: the five axial points of every element. A coarse mesh on the seabed wants about the length of cable over which a touchdown crosses the contact's smoothing band (5 % of the diameter), sqrt(2 delta / kappa) at a touchdown of curvature kappa: 1-5 m on usual moorings ([docs/model.md](docs/model.md), contact sampling) */
 } UCParams;
 
 typedef struct UCInputs {
@@ -419,6 +420,7 @@ typedef struct UCOutputs {
     X(240, "winch.timeConstant", REAL, PARAMETER, winchTimeConstant) \
     X(241, "enableBodyFluidInertia", BOOLEAN, PARAMETER, enableBodyFluidInertia) \
     X(242, "projectedErrorControl", BOOLEAN, PARAMETER, projectedErrorControl) \
+    X(243, "seabedContactSpacing", REAL, PARAMETER, seabedContactSpacing) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -869,6 +871,7 @@ typedef struct UCOutputs {
     X(winchTimeConstant, 1.0) \
     X(enableBodyFluidInertia, 1) \
     X(projectedErrorControl, 0) \
+    X(seabedContactSpacing, 0.0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -1110,6 +1113,7 @@ typedef struct UCOutputs {
     X(winchMinLength, "winch.minLength", 0.0, 100000.0, 1, 0, "(0, 100000]", "the deployed line keeps a positive length") \
     X(winchMaxLength, "winch.maxLength", 0.0, 100000.0, 1, 0, "(0, 100000]", "the drum holds a finite length") \
     X(winchTimeConstant, "winch.timeConstant", 0.0001, 1000.0, 0, 0, "[0.0001, 1000]", "the tension control needs a positive response time") \
+    X(seabedContactSpacing, "seabedContactSpacing", 0.0, 100000.0, 0, 0, "[0, 100000]", "a sampling distance cannot be negative") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

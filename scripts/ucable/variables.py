@@ -508,6 +508,8 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              'Accelerating water (waves, a changing current) pushes the towed body and the attachments: (rho body.volume + body.addedMass) times its acceleration, Froude-Krylov plus added mass, as on the line; false leaves it out (as lumped-mass codes that put no fluid inertia on points)'),
     Variable('projectedErrorControl', 242, 'parameter', 'Boolean', None, False, None, None,
              "Error test of the time integrator along and across the cable: the local error of each node's tangent along its direction is held to the tension tolerance (as a strain), the part across it (a rotation) to the position tolerance over the element length; false: every component to the tighter of the two"),
+    Variable('seabedContactSpacing', 243, 'parameter', 'Real', 'm', 0.0, 0.0, 100000.0,
+             'Largest distance along the cable between the points where seabed contact is integrated, on elements whose five axial points are farther apart (0: the five axial points of every element)'),
     Variable('tow.x', 1001, 'input', 'Real', 'm', 0.0, None, None,
              'x coordinate of the tow point'),
     Variable('tow.y', 1002, 'input', 'Real', 'm', 0.0, None, None,

@@ -191,11 +191,13 @@ def make_cases():
             "RMS and max of the mid-line position difference (our station 11 of 21 = 417.5 m from "
             "the fairlead; MoorDyn node N/2). Ours also at tensionTolerance 0.1 with positionTolerance 0.01 "
             "and 0.1 m: there the default 1 mm, not the tension tolerance, sets the steps (at 5 elements "
-            "tensionTolerance 0.1 and 0.01 take the same steps)."),
+            "tensionTolerance 0.1 and 0.01 take the same steps); and with the contact sampled every 2 m "
+            "(seabedContactSpacing, docs/model.md)."),
         # and the loosest setting with the position tolerance (1 mm by default, the tolerance that sets
         # the steps at tensionTolerance 0.1) at 1 cm and 10 cm
         fmu_grid=dict(full=[(5, 1e-1), (5, 1e-2)] + [(n, tol) for n in (10, 20, 40) for tol in (1e-1, 1e-2, 1e-3, 1e-4)]
-                      + [(n, 1e-1, {"positionTolerance": pt}) for n in (5, 10, 20, 40) for pt in (0.01, 0.1)],
+                      + [(n, 1e-1, {"positionTolerance": pt}) for n in (5, 10, 20, 40) for pt in (0.01, 0.1)]
+                      + [(n, 1e-1, {"positionTolerance": 0.1, "seabedContactSpacing": 2.0}) for n in (5, 10, 20)],
                       quick=[(10, 1e-3)]),
         md_grid=dict(full=[(n, 0.9) for n in (10, 20, 40, 80, 160)], quick=[(10, 0.9)]),
         reference=dict(full=(80, 1e-6), quick=(20, 1e-4)), still_twin=True,
@@ -225,13 +227,16 @@ def make_cases():
             "1 m); error = RMS difference relative to RMS of the reference; mid-length position RMS. Ours also "
             "at tensionTolerance 0.1 with projectedErrorControl = true (the tangents' error test along and "
             "across the cable, docs/error_control.md; off by default), and with positionTolerance 0.1 m "
-            "as well, from 3 to 40 elements."),
+            "as well, from 3 to 40 elements, and with the contact sampled every 2 m (seabedContactSpacing; "
+            "off by default: the five axial points of each element; docs/model.md)."),
         # and the loosest setting with the error test of the tangents along and across the cable,
         # also with the position tolerance at 10 cm (and on coarser meshes: the cheap end)
         fmu_grid=dict(full=[(n, tol) for n in (10, 20, 40) for tol in (1e-1, 1e-2, 1e-3, 1e-4)]
                       + [(n, 1e-1, {"projectedErrorControl": True}) for n in (10, 20, 40)]
                       + [(n, 1e-1, {"projectedErrorControl": True, "positionTolerance": 0.1})
-                         for n in (3, 5, 6, 10, 15, 20, 40)],
+                         for n in (3, 5, 6, 10, 15, 20, 40)]
+                      + [(n, 1e-1, {"projectedErrorControl": True, "positionTolerance": 0.1, "seabedContactSpacing": 2.0})
+                         for n in (6, 10, 15, 20)],
                       quick=[(10, 1e-3)]),
         md_grid=dict(full=[(n, 0.9) for n in (20, 40, 80)], quick=[(20, 0.9)]),
         reference=dict(full=(80, 1e-6), quick=(20, 1e-5)), still_twin=True,

@@ -463,3 +463,28 @@ TEST(TorqueTerm, StraightElementCarriesNoTorqueForce) {
     add_torque_force(e, 100.0, X.data(), R.data());
     EXPECT_LT(R.norm(), 1e-12);
 }
+
+// The seabed contact rule of seabedContactSpacing: 3-point Gauss rules on equal intervals of at most
+// three spacings, only where that is denser than the five axial points, at most 48 points. Each
+// 3-point rule is exact to degree 5, so the rule integrates N_a s^2 (degree 5) as exactly as the
+// 5-point axial rule (exact to degree 9) does.
+TEST(SeabedContactRule, SamplesAtTheAskedSpacingAndIntegratesDegreeFiveExactly) {
+    const double l = 41.7;
+    const ElementTables e = make_element_tables(l, 3, 3, 2.0);  // 7 intervals of 5.96 m
+    ASSERT_EQ(e.nContact, 21);
+    // arc length s at a point: the x coordinate of a straight element along x
+    const double straight[12] = {0, 0, 0, 1, 0, 0, l, 0, 0, 1, 0, 0};
+    auto arc = [&](const QuadPoint& q) { return interpolate(q.shape.N, straight).x(); };
+    double length = 0.0;
+    for (int g = 0; g < e.nContact; ++g) length += e.contact[g].weight;
+    EXPECT_NEAR(length, l, 1e-12 * l);
+    for (int a = 0; a < 4; ++a) {
+        double dense = 0.0, axial = 0.0;
+        for (int g = 0; g < e.nContact; ++g) dense += e.contact[g].weight * e.contact[g].shape.N[a] * std::pow(arc(e.contact[g]), 2);
+        for (int g = 0; g < ElementTables::nAxial; ++g) axial += e.axial[g].weight * e.axial[g].shape.N[a] * std::pow(arc(e.axial[g]), 2);
+        EXPECT_NEAR(dense, axial, 1e-12 * std::abs(axial)) << "shape function " << a;
+    }
+    EXPECT_EQ(make_element_tables(3.125, 3, 3, 2.0).nContact, 0);    // the axial points are closer already
+    EXPECT_EQ(make_element_tables(l, 3, 3, 0.0).nContact, 0);        // 0: the axial points
+    EXPECT_EQ(make_element_tables(1000.0, 3, 3, 0.5).nContact, 48);  // capped
+}
