@@ -47,8 +47,9 @@ inline ContactPoints contact_points(const ElementTables& e, bool axialOnly = fal
     return {e.axial, ElementTables::nAxial};
 }
 
-// Element integrals over the 5 axial sampling points (contact is sampled more finely than the
-// hydrodynamic loads because it switches on and off along the cable).
+// Element integrals over the element's contact points (contact_points: the 5 axial sampling points
+// unless seabedContactSpacing asks for more; contact is sampled more finely than the hydrodynamic
+// loads because it switches on and off along the cable).
 void add_seabed_force(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd, double* R,
                       bool axialOnly = false);
 void add_seabed_jacobian(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd,

@@ -172,7 +172,7 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
     staged.twoSidedAxial = true;  // a tension-only cable switches to its law at the end
     // With contact sampled densely the continuation from a guess that lies partly below the seabed
     // can settle into another equilibrium (excess length stored in a bump on the seabed, measured
-    // on a stiff power cable at 60 and 80 elements); on the elements' axial points it does not, and
+    // on a stiff power cable at 40 to 80 elements); on the elements' axial points it does not, and
     // the dense contact then only moves the answer a little: it is switched on at the end.
     staged.axialContactOnly = model.dense_contact();
     // Load continuation on the soft cable: lambda scales the relative flow and the end load.
