@@ -453,22 +453,9 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
 }
 
 void CableSimulation::step_completed(double t, const double* y, const double* yp) {
-    // The internal step that ends the communication step: update_outputs evaluates the whole
-    // residual at this very state next (y_ a copy of y, time_ = t: IDA returns the stop time
-    // itself) and takes the tension from it, rather than this evaluating the top element here too.
-    // Not with the rate winch: its top length there follows from the values at the step's end
-    // (winchTop0_ + winchRate_ h), not bit for bit the one at t.
-    if (t == stepEnd_ && !(model_.winch() && off_ == 0)) {
-        endTensionPending_ = true;
-        return;
-    }
     expand_integrator_state(t, y, yp);
     double R[12];
     model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, R);
-    add_step_tension(R);
-}
-
-void CableSimulation::add_step_tension(const double* R) {
     const double tension = std::sqrt(R[0] * R[0] + R[1] * R[1] + R[2] * R[2]);
     stepTensionMax_ = std::max(stepTensionMax_, tension);
     stepTensionMin_ = std::min(stepTensionMin_, tension);
@@ -546,15 +533,12 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         restartPending_ = false;
     }
     const double tEnd = time_ + h;
-    stepEnd_ = tEnd;
-    endTensionPending_ = false;
     stepTensionMax_ = stepTensionMin_ = outputs_.towTension;  // the tension at the step's start
     const RainflowCounter rainflowAtStart = rainflow_;
     winchTension_ = in.winchTension;
     const double topAtStart = model_.winch() ? model_.top_length() : 0.0;
     winchTopAtStep_ = topAtStart;
     if (!integrator_->advance(tEnd, error)) {
-        endTensionPending_ = false;
         rainflow_ = rainflowAtStart;  // the state stays at the last communication point
         restartPending_ = true;  // the state stays at the last communication point
         winchLength_ = winchLengthAtStart;
@@ -917,10 +901,6 @@ void CableSimulation::free_state(std::vector<double>& q, std::vector<double>& v,
 void CableSimulation::update_outputs() {
     expand_integrator_state(time_, y_.data(), yp_.data());
     model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), &forces_);
-    if (endTensionPending_) {  // the last internal step's tension (step_completed)
-        endTensionPending_ = false;
-        add_step_tension(forces_.element[0].data());
-    }
     compute_outputs(model_, X_.data(), Xd_.data(), forces_, loads_.torque, outputWork_, outputs_);
     const IntegratorStats s = total_stats();
     outputs_.nSteps = s.steps;

@@ -77,9 +77,6 @@ private:
     int residual(double t, const double* y, const double* yp, double* r) override;
     int jacobian(double t, const double* y, const double* yp, const EntrySink& sink) override;
     void step_completed(double t, const double* y, const double* yp) override;
-    // An internal step's tow tension, from the top element's residual R (the reaction in R[0..2]):
-    // into the step's extremes and the rainflow count.
-    void add_step_tension(const double* R);
     // q_, v_, a_ and the global X_, Xd_, Xdd_ from the integrator's y, y' at time t.
     void expand_integrator_state(double t, const double* y, const double* yp);
 
@@ -149,10 +146,6 @@ private:
     double winchTension_ = 0.0;    // the constant-tension winch's set tension over the step
     double winchTopAtStep_ = 0.0;  // the top element's length at the step's start
     double stepTensionMax_ = 0.0, stepTensionMin_ = 0.0;  // over the internal steps of the current step
-    // The end of the communication step being integrated, and whether the tension of the internal
-    // step that reached it is left to update_outputs (see step_completed).
-    double stepEnd_ = 0.0;
-    bool endTensionPending_ = false;
     Loads loads_;
     std::vector<double> q_, v_, a_, X_, Xd_, Xdd_, R_;
     ElementForces forces_;
