@@ -1106,11 +1106,7 @@ def splice_sections(text: str, sections) -> str:
             lines[where[0]:where[1]] = new
             continue
         after = bounds(lines, cases[case.doc_after].title) if case.doc_after in cases else None
-        if after is None:
-            after = next(((i, i) for i, line in enumerate(lines) if line.startswith("## Where the unmet")), None)
-            at = after[0] if after is not None else len(lines)
-        else:
-            at = after[1]
+        at = after[1] if after is not None else appendix_start(lines)
         lines[at:at] = new
     return "\n".join(lines)
 
@@ -1145,13 +1141,17 @@ def appendix_text(folder: Path) -> str:
     return "\n".join(f.read_text() for f in (folder / name for name in APPENDICES) if f.is_file())
 
 
-def with_appendices(text: str, folder: Path) -> str:
-    """text with its appendices (everything from the first "## " section that is neither a case's nor
-    the targets at a glance) replaced by those in `folder` now."""
+def appendix_start(lines) -> int:
+    """Index of the report's first appendix line: the first "## " section that is neither a case's nor
+    the targets at a glance (len(lines) when there is none)."""
     heads = {f"## {case.title}" for case in make_cases().values()} | {"## Targets at a glance"}
+    return next((i for i, line in enumerate(lines) if line.startswith("## ") and line.strip() not in heads), len(lines))
+
+
+def with_appendices(text: str, folder: Path) -> str:
+    """text with its appendices replaced by those in `folder` now."""
     lines = text.split("\n")
-    at = next((i for i, line in enumerate(lines) if line.startswith("## ") and line.strip() not in heads), len(lines))
-    return "\n".join(lines[:at]) + "\n" + appendix_text(folder)
+    return "\n".join(lines[:appendix_start(lines)]) + "\n" + appendix_text(folder)
 
 
 def splice_doc(doc: Path, sections) -> None:
