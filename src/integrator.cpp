@@ -465,6 +465,14 @@ bool Integrator::restore_history(const double* in, std::string& error) {
     return true;
 }
 
+bool Integrator::set_max_order(int order, std::string& error) {
+    if (IDASetMaxOrd(ida_, order) != IDA_SUCCESS) {
+        error = "solver.maxOrder = " + std::to_string(order) + " is not an order the integrator has (1 to 5)";
+        return false;
+    }
+    return true;
+}
+
 bool Integrator::set_tolerances(const std::vector<double>& atol, double relTol, double absTol, std::string& error) {
     if (atol.size() != static_cast<size_t>(2 * n_)) {
         error = "internal: wrong number of tolerances";

@@ -64,6 +64,10 @@ public:
     // scalar tolerances are positive (they can only tighten the test).
     bool set_tolerances(const std::vector<double>& atol, double relTol, double absTol, std::string& error);
 
+    // The highest order of the BDF formulas (1-5; IDA's default is 5). Orders above 2 are not
+    // A-stable: lightly damped fast modes can hold their steps at a loose tolerance.
+    bool set_max_order(int order, std::string& error);
+
     // Optional error norm projected on directions (an error test along and across a cable): each
     // block is three coordinates q, q + 1, q + 2 (y indices 2q, 2q + 2, 2q + 4; their velocities
     // 2q + 1, ...) whose error is split along the unit vector of the three coordinates `direction`,

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <new>
 
+#include "catenary.h"
 #include "outputs.h"
 #include "rainflow.h"
 #include "statics.h"
@@ -270,6 +271,28 @@ void CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
             Eigen::Map<Vec3>(X.data() + 6 * i) = towPoint + xi * chord + 4.0 * sag * xi * (1.0 - xi) * sagDirection;
             const Vec3 drdxi = chord + 4.0 * sag * (1.0 - 2.0 * xi) * sagDirection;
             Eigen::Map<Vec3>(X.data() + 6 * i + 3) = drdxi.normalized() * std::max(D / L, 1.0);
+        }
+    }
+    const FluidProps& fluid = model_.fluid();
+    const bool heavy = (fluid.massPerLength - fluid.rho * fluid.area) * fluid.gravity > 0.0;
+    if (p.bottomEnd == UC_BOTTOM_ANCHORED && heavy && model_.n_sections() == 1 && model_.attachments().empty() &&
+        !model_.winch()) {
+        // A heavy uniform line from the tow point to an anchor: its catenary (lying on the seabed
+        // where it reaches it). From the parabola above, the continuation of a stiff power cable settled
+        // at some meshes (16, 25, 30, ... of 250 m) into a folded equilibrium at four times the
+        // tension; from the catenary it finds the one a user expects.
+        const bool towOnTop = towPoint.z() >= farPoint.z();
+        const double L = model_.line().length;
+        Catenary catenary;
+        if (catenary.solve(towOnTop ? towPoint : farPoint, towOnTop ? farPoint : towPoint, L, p.enableSeabed != 0,
+                           -p.waterDepth, std::max(model_.line().diameter, 0.01 * L))) {
+            Vec3 r, tangent;
+            for (int i = 0; i < model_.n_slots(); ++i) {
+                const double s = model_.slot_fraction(i) * L;
+                catenary.at(towOnTop ? s : L - s, r, tangent);
+                Eigen::Map<Vec3>(X.data() + 6 * i) = r;
+                Eigen::Map<Vec3>(X.data() + 6 * i + 3) = towOnTop ? tangent : Vec3(-tangent);
+            }
         }
     }
     if (p.enableSeabed) {
@@ -619,6 +642,7 @@ bool CableSimulation::set_integrator_tolerances(std::string& error) {
         }
     }
     if (!integrator_->set_tolerances(atol, p.relTol, p.absTol, error)) return false;
+    if (!integrator_->set_max_order(p.solverMaxOrder, error)) return false;
     return integrator_->set_projected_tolerances(projected_blocks(), error);
 }
 

@@ -510,6 +510,8 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              "Error test of the time integrator along and across the cable: the local error of each node's tangent along its direction is held to the tension tolerance (as a strain), the part across it (a rotation) to the position tolerance over the element length; false: every component to the tighter of the two"),
     Variable('seabedContactSpacing', 243, 'parameter', 'Real', 'm', 0.0, 0.0, 100000.0,
              'Largest distance along the cable between the points where seabed contact is integrated, on elements whose five axial points are farther apart (0: the five axial points of every element)'),
+    Variable('solver.maxOrder', 244, 'parameter', 'Integer', None, 5, 1.0, 5.0,
+             "Highest order of the time integrator's variable-order BDF formulas (1-5): 5 is most efficient at tight tolerances; 2 is A-stable, so lightly damped fast modes (a stiff cable's axial and bending ringing) do not hold the steps of a loose tolerance; 1 is backward Euler"),
     Variable('tow.x', 1001, 'input', 'Real', 'm', 0.0, None, None,
              'x coordinate of the tow point'),
     Variable('tow.y', 1002, 'input', 'Real', 'm', 0.0, None, None,
