@@ -273,14 +273,17 @@ void CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
             Eigen::Map<Vec3>(X.data() + 6 * i + 3) = drdxi.normalized() * std::max(D / L, 1.0);
         }
     }
-    const FluidProps& fluid = model_.fluid();
-    const bool heavy = (fluid.massPerLength - fluid.rho * fluid.area) * fluid.gravity > 0.0;
-    if (p.bottomEnd == UC_BOTTOM_ANCHORED && heavy && model_.n_sections() == 1 && model_.attachments().empty() &&
-        !model_.winch()) {
-        // A heavy uniform line from the tow point to an anchor: its catenary (lying on the seabed
-        // where it reaches it). From the parabola above, the continuation of a stiff power cable settled
-        // at some meshes (16, 25, 30, ... of 250 m) into a folded equilibrium at four times the
-        // tension; from the catenary it finds the one a user expects.
+    bool heavy = true;  // every section sinks
+    for (int k = 0; k < model_.n_sections(); ++k) {
+        const FluidProps& f = model_.section(k).fluid;
+        heavy = heavy && (f.massPerLength - f.rho * f.area) * f.gravity > 0.0;
+    }
+    if (p.bottomEnd == UC_BOTTOM_ANCHORED && heavy && model_.attachments().empty() && !model_.winch()) {
+        // A line of sinking sections from the tow point to an anchor: the catenary of a uniform line
+        // (lying on the seabed where it reaches it). From the parabola above, the continuation of a
+        // stiff power cable settled at some meshes (16, 25, 30, ... of 250 m) into a folded
+        // equilibrium at up to four times the tension; from the catenary it finds the one a user
+        // expects.
         const bool towOnTop = towPoint.z() >= farPoint.z();
         const double L = model_.line().length;
         Catenary catenary;

@@ -3,7 +3,8 @@
  * EI 2e4 N m2, anchored on a 100 m deep seabed at (-210, 0, -100) m with the benchmark's contact
  * (3e6 Pa/m and 3e5 Pa s/m times d), fairlead at (0, 0, -10) m surging 3 m at 8 s along x (amplitude
  * ramped in over the first period), 0.05 s communication steps with the exact acceleration.
- * Usage: stiff_driver [t_end=30] [nElements=20] [tensionTolerance=1e-3] [projectedErrorControl=0].
+ * Usage: stiff_driver [t_end=30] [nElements=20] [tensionTolerance=1e-3] [projectedErrorControl=0]
+ *                    [positionTolerance=1e-3] [seabedContactSpacing=0] [solver.maxOrder=5].
  * Prints the integrator statistics as "key value" lines. */
 #include <math.h>
 #include <stdio.h>
@@ -22,6 +23,9 @@ int main(int argc, char** argv) {
     p.nElements = n_el;
     if (argc > 3) p.tensionTolerance = atof(argv[3]);
     if (argc > 4) p.projectedErrorControl = atoi(argv[4]);
+    if (argc > 5) p.positionTolerance = atof(argv[5]);
+    if (argc > 6) p.seabedContactSpacing = atof(argv[6]);
+    if (argc > 7) p.solverMaxOrder = atoi(argv[7]);
     p.length = 250.0;
     p.diameter = 0.2;
     p.massPerLength = 60.0;

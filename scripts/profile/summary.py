@@ -40,6 +40,9 @@ SCENES = {
              "tensionTolerance 0.1, 30 s, 0.05 s steps (scripts/profile/chain_driver.c)",
     "chain_still": "chain mooring with seabed, the fairlead held still, tensionTolerance 0.1, 30 s, 0.05 s steps "
                    "(scripts/profile/chain_driver.c with amplitude 0)",
+    "stiff_loose": "stiff power cable with seabed at the benchmark's cheapest settings (tensionTolerance 0.1, "
+                   "projectedErrorControl, positionTolerance 0.1 m, seabedContactSpacing 2 m, solver.maxOrder 2), "
+                   "30 s, 0.05 s steps (scripts/profile/stiff_driver.c)",
 }
 
 
