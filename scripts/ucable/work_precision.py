@@ -1205,8 +1205,8 @@ machine in one run (our FMU through fmpy, MoorDyn through its `moordyn` Python m
 `moordyn.Step` every MoorDyn time step); runs of either code under 0.5 s are timed three times and
 the fastest counts; absolute times vary on this shared machine, ratios much less. Errors are measured against our finest run (the reference row). Ours run on grids of
 nElements x tensionTolerance (the integrator's tolerance in tension, relative to the tension scale:
-docs/error_control.md; the default is 1e-3; some runs also with a looser positionTolerance or
-projectedErrorControl, as their rows say); MoorDyn on grids of segments at 0.9 x its stable step.
+docs/error_control.md; the default is 1e-3; some runs also with a looser positionTolerance,
+projectedErrorControl, seabedContactSpacing or solver.maxOrder, as their rows say); MoorDyn on grids of segments at 0.9 x its stable step.
 
 How the two models are matched: same line properties; Morison drag normal on d and tangential on
 pi d in both codes (MoorDyn's CdAx is defined on pi d); normal added mass Can on the displaced
