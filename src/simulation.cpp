@@ -253,11 +253,39 @@ void CableSimulation::set_environment(const UCInputs& in) {
     loads_.endCouple = vec(in.endCouple);
 }
 
+// A line of sinking sections from the tow point to an anchor starts from the catenary of a uniform
+// line (lying on the seabed where it reaches it), into X; false where that does not apply. From the
+// parabola of initial_guess, the continuation of a stiff power cable settled at some meshes (16, 25,
+// 30, ... of 250 m) into a folded equilibrium at up to four times the tension; from the catenary it
+// finds the one a user expects.
+bool CableSimulation::catenary_guess(const Vec3& towPoint, const Vec3& farPoint, double* X) const {
+    const UCParams& p = model_.params();
+    if (p.bottomEnd != UC_BOTTOM_ANCHORED || !model_.attachments().empty() || model_.winch()) return false;
+    for (int k = 0; k < model_.n_sections(); ++k) {
+        const FluidProps& f = model_.section(k).fluid;
+        if (!((f.massPerLength - f.rho * f.area) * f.gravity > 0.0)) return false;
+    }
+    const bool towOnTop = towPoint.z() >= farPoint.z();
+    const double L = model_.line().length;
+    Catenary catenary;
+    if (!catenary.solve(towOnTop ? towPoint : farPoint, towOnTop ? farPoint : towPoint, L, p.enableSeabed != 0,
+                        -p.waterDepth, std::max(model_.line().diameter, 0.01 * L)))
+        return false;
+    Vec3 r, tangent;
+    for (int i = 0; i < model_.n_slots(); ++i) {
+        const double s = model_.slot_fraction(i) * L;
+        catenary.at(towOnTop ? s : L - s, r, tangent);
+        Eigen::Map<Vec3>(X + 6 * i) = r;
+        Eigen::Map<Vec3>(X + 6 * i + 3) = towOnTop ? tangent : Vec3(-tangent);
+    }
+    return true;
+}
+
 void CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const {
     const UCParams& p = model_.params();
     std::vector<double> X(model_.n_global());
     model_.straight_line(towPoint, vec(p.initialDirection), X.data());
-    if (model_.far_end_prescribed()) {
+    if (model_.far_end_prescribed() && !catenary_guess(towPoint, farPoint, X.data())) {
         // Chord from the tow point to the far end, sagging in its vertical plane when the line is
         // slack (a parabola whose length is about the cable length).
         const Vec3 chord = farPoint - towPoint;
@@ -271,31 +299,6 @@ void CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
             Eigen::Map<Vec3>(X.data() + 6 * i) = towPoint + xi * chord + 4.0 * sag * xi * (1.0 - xi) * sagDirection;
             const Vec3 drdxi = chord + 4.0 * sag * (1.0 - 2.0 * xi) * sagDirection;
             Eigen::Map<Vec3>(X.data() + 6 * i + 3) = drdxi.normalized() * std::max(D / L, 1.0);
-        }
-    }
-    bool heavy = true;  // every section sinks
-    for (int k = 0; k < model_.n_sections(); ++k) {
-        const FluidProps& f = model_.section(k).fluid;
-        heavy = heavy && (f.massPerLength - f.rho * f.area) * f.gravity > 0.0;
-    }
-    if (p.bottomEnd == UC_BOTTOM_ANCHORED && heavy && model_.attachments().empty() && !model_.winch()) {
-        // A line of sinking sections from the tow point to an anchor: the catenary of a uniform line
-        // (lying on the seabed where it reaches it). From the parabola above, the continuation of a
-        // stiff power cable settled at some meshes (16, 25, 30, ... of 250 m) into a folded
-        // equilibrium at up to four times the tension; from the catenary it finds the one a user
-        // expects.
-        const bool towOnTop = towPoint.z() >= farPoint.z();
-        const double L = model_.line().length;
-        Catenary catenary;
-        if (catenary.solve(towOnTop ? towPoint : farPoint, towOnTop ? farPoint : towPoint, L, p.enableSeabed != 0,
-                           -p.waterDepth, std::max(model_.line().diameter, 0.01 * L))) {
-            Vec3 r, tangent;
-            for (int i = 0; i < model_.n_slots(); ++i) {
-                const double s = model_.slot_fraction(i) * L;
-                catenary.at(towOnTop ? s : L - s, r, tangent);
-                Eigen::Map<Vec3>(X.data() + 6 * i) = r;
-                Eigen::Map<Vec3>(X.data() + 6 * i + 3) = towOnTop ? tangent : Vec3(-tangent);
-            }
         }
     }
     if (p.enableSeabed) {

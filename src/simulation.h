@@ -82,6 +82,7 @@ private:
 
     void set_environment(const UCInputs& in);
     void initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
+    bool catenary_guess(const Vec3& towPoint, const Vec3& farPoint, double* X) const;
     bool check_geometry(const Vec3& farPoint, std::string& error) const;
     void update_outputs();
     bool set_integrator_tolerances(std::string& error);

@@ -331,6 +331,16 @@ FMU_STATS = ["solver.nSteps", "solver.nResidualEvals", "solver.nJacobianEvals",
              "solver.nNonlinearFailures", "solver.nErrorTestFailures"]
 
 
+def static_top_tension(fmu, case, n_elements, **extra) -> float:
+    """Top tension [N] of `case`'s line at rest where its trajectory starts (the FMU's static solver
+    alone), with n_elements and further FMU parameters."""
+    params = {**case.line, **case.fmu_params, "nElements": n_elements, **extra}
+    x, v, _ = case.traj.state(0.0)
+    with CableFMU(fmu, parameters=params) as c:
+        c.initialize(inputs=dict(zip(["tow.x", "tow.y", "tow.z", "tow.vx", "tow.vy", "tow.vz"], [*x, *v])))
+        return c.get("towTension")
+
+
 def run_fmu(fmu, case, n_elements, tol, extra=None, label="", step=None, tolerance="tensionTolerance"):
     """Our FMU on `case` with `n_elements` and the integrator tolerance `tol` (tensionTolerance; with
     tolerance="relTol" IDA's relTol with absTol = 100 relTol, as extra bounds on the default). The

@@ -5,19 +5,12 @@
 import pytest
 
 from ucable import work_precision as wp
-from ucable.fmu import CableFMU
 
 STIFF = wp.make_cases()["stiff"]
 
 
 def static_top_tension(fmu_file, n_elements, spacing):
-    params = dict(STIFF.line)
-    params.update(STIFF.fmu_params)
-    params.update(nElements=n_elements, seabedContactSpacing=spacing)
-    x, v, _ = STIFF.traj.state(0.0)
-    with CableFMU(fmu_file, parameters=params) as c:
-        c.initialize(inputs=dict(zip(["tow.x", "tow.y", "tow.z", "tow.vx", "tow.vy", "tow.vz"], [*x, *v])))
-        return c.get("towTension")
+    return wp.static_top_tension(fmu_file, STIFF, n_elements, seabedContactSpacing=spacing)
 
 
 @pytest.mark.parametrize("n_elements, spacing", [(10, 2.0), (40, 0.5), (80, 0.3)])

@@ -5,31 +5,23 @@ ends) the stiff power cable of the benchmark settled at some meshes into a folde
 import pytest
 
 from ucable import work_precision as wp
-from ucable.fmu import CableFMU
+from ucable.lines_figure import section_parameters
 
 STIFF = wp.make_cases()["stiff"]
+PROPERTIES = ("diameter", "massPerLength", "EA", "EI", "Cdn", "Cdt", "Can", "Cat")
 
 
 def halves(n_elements):
     """The same cable as two 125 m sections joined rigidly, n_elements in all."""
     p = {"nSections": 2}
     for k, n in ((1, n_elements // 2), (2, n_elements - n_elements // 2)):
-        p.update({f"section[{k}].{key}": STIFF.line[key]
-                  for key in ("diameter", "massPerLength", "EA", "EI", "Cdn", "Cdt", "Can", "Cat")})
-        p.update({f"section[{k}].length": 125.0, f"section[{k}].nElements": n, f"section[{k}].joint": 0})
+        p.update(section_parameters(k, length=125.0, nElements=n, joint=0,
+                                    **{key: STIFF.line[key] for key in PROPERTIES}))
     return p
 
 
 def static_top_tension(fmu_file, n_elements, two_sections=False):
-    params = dict(STIFF.line)
-    params.update(STIFF.fmu_params)
-    params["nElements"] = n_elements
-    if two_sections:
-        params.update(halves(n_elements))
-    x, v, _ = STIFF.traj.state(0.0)
-    with CableFMU(fmu_file, parameters=params) as c:
-        c.initialize(inputs=dict(zip(["tow.x", "tow.y", "tow.z", "tow.vx", "tow.vy", "tow.vz"], [*x, *v])))
-        return c.get("towTension")
+    return wp.static_top_tension(fmu_file, STIFF, n_elements, **(halves(n_elements) if two_sections else {}))
 
 
 @pytest.mark.parametrize("n_elements", [16, 25, 30, 42, 49, 55])
