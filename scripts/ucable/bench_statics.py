@@ -412,10 +412,10 @@ def group_row(label: str, recs: list) -> dict:
 
 
 def failure_kind(message: str) -> str:
-    """A failure message without the FMI function, the numbers and the details in brackets."""
+    """A failure message without the FMI function, with numbers as # and cut after the first."""
     text = re.sub(r"^fmi2\w+: ", "", message).replace("initialization failed: ", "")
-    text = re.split(r"[(;]", text)[0]
-    return re.sub(r"[-+]?\d[\d.]*(e[-+]?\d+)?", "#", text).strip()[:160]
+    text = re.sub(r"[-+]?\d[\d.]*(e[-+]?\d+)?", "#", text)
+    return text[:text.index("#") + 1] if "#" in text else text
 
 
 def _size(r: dict) -> float:
@@ -433,11 +433,11 @@ def summary(records: list) -> dict:
                 if any(keyfun(r) == k for r in valid)]
 
     bands = [band(lo) for lo, _ in STIFFNESS_BANDS]
-    failures: dict = {}
+    failures: dict = {}  # kind of message -> failed runs by mesh
     for r in valid:
         if not r["fmu"]["ok"]:
-            key = failure_kind(r["fmu"]["message"])
-            failures[key] = failures.get(key, 0) + 1
+            by_mesh = failures.setdefault(failure_kind(r["fmu"]["message"]), dict.fromkeys(meshes, 0))
+            by_mesh[r["elements"]] += 1
     worst_of_line: dict = {}
     for r in valid:
         if r["fmu"]["ok"] and (r["id"] not in worst_of_line or _size(r) > _size(worst_of_line[r["id"]])):
@@ -452,7 +452,7 @@ def summary(records: list) -> dict:
         "by_regime_mesh": rows(lambda r: (r["regime"], r["elements"]), [(g, n) for g in REGIMES for n in meshes]),
         "by_band_mesh": rows(lambda r: (band(r["stiffness"]), r["elements"]), [(b, n) for b in bands for n in meshes]),
         "by_family": rows(lambda r: r["family"], list(FAMILIES)),
-        "failures": sorted(failures.items(), key=lambda kv: -kv[1]),
+        "failures": sorted(failures.items(), key=lambda kv: -sum(kv[1].values())),
         "failed_runs": [r for r in valid if not r["fmu"]["ok"]],
         "worst": worst,
     }
@@ -502,8 +502,11 @@ def markdown(data: dict, command: str, fmu_label: str, cases: dict) -> str:
             "", "### By regime and mesh", "", *table(data["by_regime_mesh"], "regime / elements"),
             "", "### By seabed stiffness [N/m2] and mesh", "", *table(data["by_band_mesh"], "seabedStiffness / elements"),
             "", "### By family (all meshes)", "", *table(data["by_family"], "family"),
-            "", "### Why initialization failed", "", "| message (numbers as #, details left out) | runs |", "|---|---|"]
-    out += [f"| {m.replace('|', '/')} | {c} |" for m, c in data["failures"]] or ["| (none) | 0 |"]
+            "", "### Why initialization failed", "",
+            f"| message (numbers as #, cut after the first) | failed runs at {' / '.join(map(str, data['meshes']))} "
+            f"elements |", "|---|---|"]
+    out += [f"| {m.replace('|', '/')} | {' / '.join(str(c[n]) for n in data['meshes'])} |"
+            for m, c in data["failures"]] or ["| (none) | 0 |"]
     out += ["", "### The worst lines (largest fairlead or anchor error of a run without an error; reproduce "
             "with `--only ID`)", "",
             "| line | elements | regime | fairlead % | anchor `endTension` % | `tension[21]` % | line |",
