@@ -310,8 +310,7 @@ void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, boo
     StaticLayout layout;
     if (apply && static_profile(towPoint, farPoint, profile, towOnTop, nullptr)) {
         // the anchor is the lower end, held where the line rests (CableModel): graded for that point
-        layout.anchorResting = towOnTop && profile.grounded_length() > 0.0 &&
-                               model_.params().bottomEnd == UC_BOTTOM_ANCHORED;
+        layout.anchorResting = towOnTop && profile.rests_at_bottom() && model_.params().bottomEnd == UC_BOTTOM_ANCHORED;
         const Vec3 resting(farPoint.x(), farPoint.y(), model_.resting_height());
         if (layout.anchorResting && std::abs(farPoint.z() - resting.z()) <= 0.5 * model_.line().diameter)
             static_profile(towPoint, resting, profile, towOnTop, nullptr);
