@@ -517,14 +517,6 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     }
     const double winchLengthAtStart = winchLength_, winchRateAtStart = winchRate_;
     const double winchTop0AtStart = winchTop0_;
-    if (model_.winch()) {
-        set_winch_time(time_);
-        if (!winch_rate(in, h, error)) return false;
-        // how much the top element changes over the step (the constant-tension winch: at worst twice
-        // its present haul-in rate)
-        const double change = off_ ? std::min(0.0, 2.0 * y_[1] * h) : winchRate_ * h;
-        if (!remesh(change, error)) return false;
-    }
     set_environment(in);
     loads_.current.rate = Vec3(in.currentRate[0], in.currentRate[1], 0.0);
     loads_.current.rateStart = time_;
@@ -537,6 +529,26 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         error = "the input derivatives of current.x/y must be finite numbers";
         return false;
     }
+    if (model_.winch()) {
+        // A remesh happens at time_ and must see nothing but the state there (a state restored into
+        // a fresh instance has no previous step): the driven ends where they stand, the environment
+        // of this step's inputs.
+        loads_.tow = TowTrajectory::at_rest_in_time(tow_.position, tow_.velocity, tow_.acceleration, time_);
+        loads_.end = TowTrajectory::at_rest_in_time(end_.position, end_.velocity, end_.acceleration, time_);
+    }
+    if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
+        error = "torque and twist inputs must be finite numbers";
+        return false;
+    }
+    loads_.torque = cable_torque(in);
+    if (model_.winch()) {
+        set_winch_time(time_);
+        if (!winch_rate(in, h, error)) return false;
+        // how much the top element changes over the step (the constant-tension winch: at worst twice
+        // its present haul-in rate)
+        const double change = off_ ? std::min(0.0, 2.0 * y_[1] * h) : winchRate_ * h;
+        if (!remesh(change, error)) return false;
+    }
     // Each driven end follows a quintic in time from where the previous step left it (position,
     // velocity and acceleration: it never jumps) to the master's inputs extrapolated to t + h.
     const Vec3 towVelocityInput = vec(in.towVelocity), endVelocityInput = vec(in.endVelocity);
@@ -548,12 +560,6 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         loads_.end = end_.next(time_, h, lastStepSize_, vec(in.end), endVelocityInput, vec(in.endAcceleration),
                                in.endAccelerationGiven != 0, endAcceleration);
     }
-
-    if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
-        error = "torque and twist inputs must be finite numbers";
-        return false;
-    }
-    loads_.torque = cable_torque(in);
 
     if (restartPending_) {
         statsBase_ = total_stats();
