@@ -540,14 +540,22 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         error = "torque and twist inputs must be finite numbers";
         return false;
     }
-    loads_.torque = cable_torque(in);
     if (model_.winch()) {
+        loads_.torque = cable_torque(in);
         set_winch_time(time_);
         if (!winch_rate(in, h, error)) return false;
         // how much the top element changes over the step (the constant-tension winch: at worst twice
         // its present haul-in rate)
         const double change = off_ ? std::min(0.0, 2.0 * y_[1] * h) : winchRate_ * h;
+        const int elements = model_.n_elements();
         if (!remesh(change, error)) return false;
+        if (!off_ && winchRate_ != winchRateAtStart && elements == model_.n_elements()) {
+            // The rate jumps here: the material at the sheave takes the new speed at once (an axial
+            // wave). The accelerations of that state, and a restart, as after any discontinuity.
+            set_winch_time(time_);
+            free_state(q_, v_, a_);
+            if (!restart_from(error)) return false;
+        }
     }
     // Each driven end follows a quintic in time from where the previous step left it (position,
     // velocity and acceleration: it never jumps) to the master's inputs extrapolated to t + h.
@@ -560,6 +568,7 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         loads_.end = end_.next(time_, h, lastStepSize_, vec(in.end), endVelocityInput, vec(in.endAcceleration),
                                in.endAccelerationGiven != 0, endAcceleration);
     }
+    loads_.torque = cable_torque(in);
 
     if (restartPending_) {
         statsBase_ = total_stats();
@@ -699,6 +708,7 @@ void CableSimulation::expand_integrator_state(double t, const double* y, const d
     loads_.current.time = t;
     if (off_) {
         model_.set_top_length(y[0]);
+        model_.set_top_rate(y[1]);
     } else {
         set_winch_time(t);
     }
@@ -759,8 +769,13 @@ int CableSimulation::jacobian(double t, const double* y, const double* yp, const
     double slope = 0.0;
     tension_winch_rate(tension, top, &slope);
     const int g0 = model_.element_offset(0);
-    double dTdl = 0.0;
-    for (int a = 0; a < 3; ++a) dTdl += u[a] * (Rp[a] - Re[a]) / delta;
+    // the top element's residual through the winch's rate: the material's velocity (set_top_rate)
+    const Vec12 dRdc = C * model_.top_rate_direction(X_.data() + g0);
+    double dTdl = 0.0, dTdc = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        dTdl += u[a] * (Rp[a] - Re[a]) / delta;
+        dTdc += u[a] * dRdc[a];
+    }
     for (int b = 0; b < 12; ++b) {
         const int j = model_.free_index(g0 + b);
         if (j < 0) continue;
@@ -772,9 +787,9 @@ int CableSimulation::jacobian(double t, const double* y, const double* yp, const
             dM += u[a] * M(a, b);
         }
         sink(0, j + 1, -slope * cb * dK, -slope * cb * dC, -slope * cb * dM);
-        sink(j + 1, 0, cb * (Rp[b] - Re[b]) / delta, 0.0, 0.0);
+        sink(j + 1, 0, cb * (Rp[b] - Re[b]) / delta, cb * dRdc[b], 0.0);
     }
-    sink(0, 0, -slope * dTdl, 1.0, model_.params().winchTimeConstant);
+    sink(0, 0, -slope * dTdl, 1.0 - slope * dTdc, model_.params().winchTimeConstant);
     return 0;
 }
 
@@ -791,6 +806,7 @@ std::string CableSimulation::take_event() {
 void CableSimulation::set_winch_time(double t) {
     if (!model_.winch()) return;
     model_.set_top_length(off_ ? y_[0] : winchTop0_ + winchRate_ * (t - time_));
+    model_.set_top_rate(off_ ? y_[1] : winchRate_);
 }
 
 bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& error) {
@@ -829,24 +845,45 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
 // Splits the top element when it has grown past 1.5 nominal lengths (the lower part becomes a
 // nominal element, exactly the same cubic), merges it with the element below when it has shrunk
 // under half of one (docs/winch.md). At a communication point; the integrator restarts.
+namespace {
+
+// Split above 1.5 nominal lengths, merge under 0.5 (remesh_action), and merge too when the step
+// would haul the top element in below a quarter of a nominal length (change: of the top element
+// over the step); no split that would leave it so short. Neither undoes the other.
+RemeshAction next_remesh(double top, double nominal, int elements, double change) {
+    RemeshAction action = remesh_action(top, nominal, elements > 1);
+    const double end = top + change;
+    if (action == RemeshAction::Split && end - nominal < 0.25 * nominal) action = RemeshAction::None;
+    if (action == RemeshAction::None && elements > 1 && end < 0.25 * nominal) action = RemeshAction::Merge;
+    return action;
+}
+
+}  // namespace
+
 bool CableSimulation::remesh(double change, std::string& error) {
-    for (int pass = 0; pass < kMaxRemeshPasses; ++pass) {
-        const double top = model_.top_length(), nominal = model_.winch_nominal();
-        const int elements = model_.winch_mesh().elements;
-        // Split above 1.5 nominal lengths, merge under 0.5 (remesh_action), and merge too when the
-        // step would haul the top element in below a quarter of a nominal length; no split that
-        // would leave it so short. Neither undoes the other.
-        RemeshAction action = remesh_action(top, nominal, elements > 1);
-        const double end = top + change;
-        if (action == RemeshAction::Split && end - nominal < 0.25 * nominal) action = RemeshAction::None;
-        if (action == RemeshAction::None && elements > 1 && end < 0.25 * nominal) action = RemeshAction::Merge;
-        if (action == RemeshAction::None) return true;
-        if (!remesh_once(action, error)) return false;
+    const double nominal = model_.winch_nominal();
+    // How many passes the step needs (a split makes the top element one nominal length shorter,
+    // a merge one longer).
+    int passes = 0;
+    for (double top = model_.top_length(), elements = model_.winch_mesh().elements; passes < kMaxRemeshPasses;
+         ++passes) {
+        const RemeshAction action = next_remesh(top, nominal, static_cast<int>(elements), change);
+        if (action == RemeshAction::None) break;
+        top += action == RemeshAction::Split ? -nominal : nominal;
+        elements += action == RemeshAction::Split ? 1 : -1;
+    }
+    for (int pass = 0; pass < passes; ++pass) {
+        const RemeshAction action =
+            next_remesh(model_.top_length(), nominal, model_.winch_mesh().elements, change);
+        if (action == RemeshAction::None) break;
+        // Only one remesh per step starts the line in balance: a winch that moves more than an
+        // element per step on a fine mesh makes nodes faster than the balance can follow them.
+        if (!remesh_once(action, passes == 1, error)) return false;
     }
     return true;
 }
 
-bool CableSimulation::remesh_once(RemeshAction action, std::string& error) {
+bool CableSimulation::remesh_once(RemeshAction action, bool balance, std::string& error) {
     const double top = model_.top_length(), nominal = model_.winch_nominal();
     const WinchMesh mesh = model_.winch_mesh();
     expand_integrator_state(time_, y_.data(), yp_.data());
@@ -855,9 +892,11 @@ bool CableSimulation::remesh_once(RemeshAction action, std::string& error) {
     WinchMesh next;
     if (action == RemeshAction::Split) {
         const double a = top - nominal;  // the new top element; the rest is nominal
-        double node[3][6];
+        double node[3][6], material[12];
         hermite_split_node(X_.data(), top, a, node[0]);
-        hermite_split_node(Xd_.data(), top, a, node[1]);
+        // the new node is material: the velocity of the material there, not of the mesh point
+        model_.top_material_velocity(X_.data(), Xd_.data(), material);
+        hermite_split_node(material, top, a, node[1]);
         hermite_split_node(Xdd_.data(), top, a, node[2]);
         const std::vector<double>* from[3] = {&X_, &Xd_, &Xdd_};
         std::vector<double>* to[3] = {&X, &Xd, &Xdd};
@@ -879,21 +918,17 @@ bool CableSimulation::remesh_once(RemeshAction action, std::string& error) {
     rebuild(next);
     winchTop0_ = next.topLength;
     model_.set_top_length(winchTop0_);
-    const int n = model_.n_free();
+    model_.set_top_rate(winchRate_);
+    if (balance) {
+        // The tow node's tangent (unless clamped) and the node below the top element (the new one
+        // after a split, the one the merged element now ends at after a merge).
+        const bool hinged = model_.params().topEnd != UC_TOP_CLAMPED;
+        balance_dofs(hinged ? 3 : 6, hinged ? 9 : 6, X, Xd, Xdd);
+    }
     model_.restrict_to_free(X.data(), q_.data());
     model_.restrict_to_free(Xd.data(), v_.data());
-    // The accelerations of the new mesh's equations (the split carries the old ones over exactly;
-    // the merged element has its own mass matrix).
-    if (!solve_consistent_acceleration(model_, *staticSolver_, loads_, time_, q_, v_, a_)) {
-        error = "winch: the mass matrix of the remeshed line is singular";
-        return false;
-    }
-    for (int j = 0; j < n; ++j) {
-        y_[2 * (j + off_)] = q_[j];
-        y_[2 * (j + off_) + 1] = v_[j];
-        yp_[2 * (j + off_)] = v_[j];
-        yp_[2 * (j + off_) + 1] = a_[j];
-    }
+    // The accelerations of the new mesh's equations (the merged element has its own mass matrix).
+    if (!restart_from(error)) return false;
     if (off_) {
         y_[0] = next.topLength;
         y_[1] = yp_[0] = winchRate_;
@@ -901,6 +936,71 @@ bool CableSimulation::remesh_once(RemeshAction action, std::string& error) {
     }
     ++stateStamp_;
     return set_integrator_tolerances(error);
+}
+
+bool CableSimulation::restart_from(std::string& error) {
+    if (!solve_consistent_acceleration(model_, *staticSolver_, loads_, time_, q_, v_, a_)) {
+        error = "winch: the mass matrix of the line is singular";
+        return false;
+    }
+    for (int j = 0; j < model_.n_free(); ++j) {
+        y_[2 * (j + off_)] = q_[j];
+        y_[2 * (j + off_) + 1] = v_[j];
+        yp_[2 * (j + off_)] = v_[j];
+        yp_[2 * (j + off_) + 1] = a_[j];
+    }
+    restartPending_ = true;
+    return true;
+}
+
+void CableSimulation::dof_residual(int g, int count, const std::vector<double>& X, const std::vector<double>& Xd,
+                                   const std::vector<double>& Xdd, Eigen::VectorXd& R, Eigen::MatrixXd* J) {
+    R.setZero();
+    if (J) J->setZero();
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const int off = model_.element_offset(e);
+        if (off + 12 <= g || off >= g + count) continue;
+        double Re[12];
+        Mat12 K, C, M;
+        model_.element_residual(e, X.data(), Xd.data(), Xdd.data(), loads_, Re);
+        if (J) model_.element_jacobian(e, X.data(), Xd.data(), Xdd.data(), loads_, K, C, M);
+        for (int i = 0; i < count; ++i) {
+            const int a = g + i - off;
+            if (a < 0 || a >= 12) continue;
+            R[i] += Re[a];
+            if (!J) continue;
+            for (int k = 0; k < count; ++k) {
+                const int b = g + k - off;
+                if (b >= 0 && b < 12) (*J)(i, k) += K(a, b);
+            }
+        }
+    }
+}
+
+void CableSimulation::balance_dofs(int g, int count, std::vector<double>& X, const std::vector<double>& Xd,
+                                   const std::vector<double>& Xdd) {
+    // Newton with halving of the step while the residual does not fall; a step that finds nothing
+    // better ends the search (the DOFs stay where the last accepted step left them).
+    Eigen::MatrixXd J(count, count);
+    Eigen::VectorXd R(count), trialR(count);
+    std::vector<double> trial = X;
+    dof_residual(g, count, X, Xd, Xdd, R, &J);
+    double norm = R.norm();
+    for (int iteration = 0; iteration < kMaxBalanceIterations && std::isfinite(norm) && norm > 0.0; ++iteration) {
+        const Eigen::VectorXd dx = -J.partialPivLu().solve(R);
+        if (!dx.allFinite()) return;
+        bool accepted = false;
+        for (double lambda = 1.0; lambda > 1e-3 && !accepted; lambda *= 0.5) {
+            for (int i = 0; i < count; ++i) trial[g + i] = X[g + i] + lambda * dx[i];
+            dof_residual(g, count, trial, Xd, Xdd, trialR, nullptr);
+            accepted = std::isfinite(trialR.norm()) && trialR.norm() < norm;
+        }
+        if (!accepted) return;
+        for (int i = 0; i < count; ++i) X[g + i] = trial[g + i];
+        if (!(dx.lpNorm<Eigen::Infinity>() > 1e-13 * model_.winch_nominal())) return;
+        dof_residual(g, count, X, Xd, Xdd, R, &J);
+        norm = R.norm();
+    }
 }
 
 void CableSimulation::rebuild(const WinchMesh& mesh) {

@@ -111,8 +111,20 @@ private:
     double tension_winch_rate(double tension, double topLength, double* slope) const;
     bool winch_rate(const UCInputs& in, double h, std::string& error);
     bool remesh(double change, std::string& error);  // change: of the top element over the step ahead
-    bool remesh_once(RemeshAction action, std::string& error);
+    bool remesh_once(RemeshAction action, bool balance, std::string& error);
     static constexpr int kMaxRemeshPasses = 100000;
+    // Moves the global DOFs [g, g + count) of X (count <= 12) to where their own equations
+    // of motion hold with the velocities Xd and accelerations Xdd (Newton on the elements that share
+    // them): a node the remesh makes or changes starts in the motion the line had there.
+    void balance_dofs(int g, int count, std::vector<double>& X, const std::vector<double>& Xd,
+                      const std::vector<double>& Xdd);
+    static constexpr int kMaxBalanceIterations = 8;
+    // The residual rows of the global DOFs [g, g + count) and (J not null) their Jacobian block.
+    void dof_residual(int g, int count, const std::vector<double>& X, const std::vector<double>& Xd,
+                      const std::vector<double>& Xdd, Eigen::VectorXd& R, Eigen::MatrixXd* J);
+    // From the positions q_ and velocities v_ at time_: the consistent accelerations, the state
+    // y_, yp_, and a restart of the integrator.
+    bool restart_from(std::string& error);
     void rebuild(const WinchMesh& mesh);
 
     CableModel model_;
