@@ -216,6 +216,10 @@ void CableSimulation::allocate() {
 // The constant-tension winch's rate for the tow tension T with the top element at topLength:
 // (T - T_set) times the line's axial compliance over winch.timeConstant, within winch.maxRate and
 // stopped at the length limits; slope = d rate / dT (0 where limited).
+double CableSimulation::line_tension(const double* R) const {
+    return -Eigen::Map<const Vec3>(R).dot(Eigen::Map<const Vec3>(X_.data() + 3).normalized());
+}
+
 double CableSimulation::tension_winch_rate(double tension, double topLength, double* slope) const {
     const UCParams& p = model_.params();
     const double gain = model_.axial_compliance() / p.winchTimeConstant;
@@ -228,6 +232,11 @@ double CableSimulation::tension_winch_rate(double tension, double topLength, dou
     const double length = winchLength_ + (topLength - winchTopAtStep_);
     if ((length >= p.winchMaxLength && rate > 0.0) || (length <= p.winchMinLength && rate < 0.0)) {
         rate = 0.0;
+        dRate = 0.0;
+    }
+    const double braked = braking_rate_limit(rate, length, winch_limits());  // in time for the limits
+    if (braked != rate) {
+        rate = braked;
         dRate = 0.0;
     }
     if (slope) *slope = dRate;
@@ -397,6 +406,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         if (model_.winch_mesh().elements != start.elements || model_.winch_mesh().topLength != start.topLength)
             rebuild(start);
         winchRate_ = 0.0;
+        winchStep_ = WinchStep::hold(0.0);
         winchTop0_ = start.topLength;
         winchLimit_ = 0;
         model_.set_top_length(winchTop0_);
@@ -469,7 +479,9 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     rainflow_.reset();
     update_outputs();
     if (off_) {  // consistent: the winch runs at the rate of the initial tension
-        y_[1] = yp_[0] = tension_winch_rate(outputs_.towTension, y_[0], nullptr);
+        double R[12];
+        model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, R);
+        y_[1] = yp_[0] = tension_winch_rate(line_tension(R), y_[0], nullptr);
         yp_[1] = 0.0;
         winchRate_ = y_[1];
     }
@@ -546,10 +558,10 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         if (!winch_rate(in, h, error)) return false;
         // how much the top element changes over the step (the constant-tension winch: at worst twice
         // its present haul-in rate)
-        const double change = off_ ? std::min(0.0, 2.0 * y_[1] * h) : winchRate_ * h;
+        const double change = off_ ? std::min(0.0, 2.0 * y_[1] * h) : winchStep_.length(h);
         const int elements = model_.n_elements();
         if (!remesh(change, error)) return false;
-        if (!off_ && winchRate_ != winchRateAtStart && elements == model_.n_elements()) {
+        if (!off_ && winchStep_.rate0 != winchRateAtStart && elements == model_.n_elements()) {
             // The rate jumps here: the material at the sheave takes the new speed at once (an axial
             // wave). The accelerations of that state, and a restart, as after any discontinuity.
             set_winch_time(time_);
@@ -588,6 +600,7 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         winchLength_ = winchLengthAtStart;
         winchRate_ = winchRateAtStart;
         winchTop0_ = winchTop0AtStart;
+        winchStep_ = WinchStep::hold(winchRate_);
         return false;
     }
     if (off_) {  // the constant-tension winch: its unknowns at the end of the step
@@ -595,10 +608,12 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         winchRate_ = end[1];
         winchTop0_ = end[0];
         winchLength_ = winchLengthAtStart + (end[0] - topAtStart);
-    } else if (model_.winch()) {  // the length at the end of the step; the rate carries on from there
-        const double topAtEnd = winchTop0_ + winchRate_ * h;
+    } else if (model_.winch()) {  // the length and the drum's rate at the end of the step
+        const double topAtEnd = winchTop0_ + winchStep_.length(h);
         winchLength_ = winchLengthAtStart + (topAtEnd - topAtStart);
         winchTop0_ = topAtEnd;
+        winchRate_ = winchStep_.rate1;
+        winchStep_ = WinchStep::hold(winchRate_);
     }
     const double* y = integrator_->y();
     const double* yp = integrator_->yp();
@@ -736,7 +751,7 @@ int CableSimulation::residual(double t, const double* y, const double* yp, doubl
     if (off_) {  // the winch: its length changes at its rate, the rate follows the tension
         double Re[12];
         model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, Re);
-        const double tension = std::sqrt(Re[0] * Re[0] + Re[1] * Re[1] + Re[2] * Re[2]);
+        const double tension = line_tension(Re);
         r[0] = yp[0] - y[1];
         // the drum follows the commanded rate with the lag winch.timeConstant (a drum has inertia)
         r[1] = model_.params().winchTimeConstant * yp[1] + y[1] - tension_winch_rate(tension, y[0], nullptr);
@@ -763,9 +778,11 @@ int CableSimulation::jacobian(double t, const double* y, const double* yp, const
     model_.set_top_length(top + delta);
     model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, Rp);
     model_.set_top_length(top);
-    const Vec3 force(Re[0], Re[1], Re[2]);
-    const double tension = force.norm();
-    const Vec3 u = tension > 0.0 ? Vec3(force / tension) : Vec3::Zero();
+    // T = -R_0..2 . t with t the unit tangent at the tow node (line_tension): dT = u . dR - R . dt
+    const double tension = line_tension(Re);
+    const Eigen::Map<const Vec3> tangent(X_.data() + 3);
+    const Vec3 u = -tangent.normalized();
+    const Vec3 dTdTangent = -(Eigen::Map<const Vec3>(Re) - u * u.dot(Eigen::Map<const Vec3>(Re))) / tangent.norm();
     double slope = 0.0;
     tension_winch_rate(tension, top, &slope);
     const int g0 = model_.element_offset(0);
@@ -786,6 +803,7 @@ int CableSimulation::jacobian(double t, const double* y, const double* yp, const
             dC += u[a] * C(a, b);
             dM += u[a] * M(a, b);
         }
+        if (b >= 3 && b < 6) dK += dTdTangent[b - 3];
         sink(0, j + 1, -slope * cb * dK, -slope * cb * dC, -slope * cb * dM);
         sink(j + 1, 0, cb * (Rp[b] - Re[b]) / delta, cb * dRdc[b], 0.0);
     }
@@ -805,8 +823,13 @@ std::string CableSimulation::take_event() {
 
 void CableSimulation::set_winch_time(double t) {
     if (!model_.winch()) return;
-    model_.set_top_length(off_ ? y_[0] : winchTop0_ + winchRate_ * (t - time_));
-    model_.set_top_rate(off_ ? y_[1] : winchRate_);
+    model_.set_top_length(off_ ? y_[0] : winchTop0_ + winchStep_.length(t - time_));
+    model_.set_top_rate(off_ ? y_[1] : winchStep_.rate(t - time_));
+}
+
+WinchLimits CableSimulation::winch_limits() const {
+    const UCParams& p = model_.params();
+    return WinchLimits{p.winchMinLength, p.winchMaxLength, p.winchMaxRate, p.winchMaxAcceleration};
 }
 
 bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& error) {
@@ -819,23 +842,22 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
         error = text;
         return false;
     }
-    const WinchLimits limits{p.winchMinLength, p.winchMaxLength, p.winchMaxRate};
+    const WinchLimits limits = winch_limits();
     winchTop0_ = model_.top_length();
     if (p.winchMode == UC_WINCH_TENSION) return true;  // the rate follows the tension, step by step
     const double requested = in.winchRate;
-    const WinchRate r = limit_winch_rate(requested, winchLength_, h, limits);
-    winchRate_ = r.rate;
+    winchStep_ = plan_winch_step(requested, winchRate_, winchLength_, h, limits);
     // A length limit cut the request (not the speed limit): log the arrival once.
-    const double speedLimited = std::clamp(requested, -limits.maxRate, limits.maxRate);
-    const int limit = r.rate < speedLimited ? 1 : r.rate > speedLimited ? -1 : 0;
+    const int limit = winchStep_.limit;
     if (limit != 0 && limit != winchLimit_) {
-        char text[240];
+        char text[300];
         std::snprintf(text, sizeof text,
-                      "winch: at t = %.6g s the deployed length %.6g m reaches winch.%s = %.6g m: %s stops there "
-                      "(winch.rate %.6g m/s applied as %.6g m/s)",
-                      time_, winchLength_ + r.rate * h, limit > 0 ? "maxLength" : "minLength",
-                      limit > 0 ? limits.maxLength : limits.minLength, limit > 0 ? "paying out" : "hauling in",
-                      requested, r.rate);
+                      "winch: at t = %.6g s %s winch.%s = %.6g m: %s stops there (deployed length %.6g m at the "
+                      "step's end; winch.rate %.6g m/s applied as %.6g m/s)",
+                      time_, limits.maxAcceleration > 0.0 ? "the drum brakes to stop at" : "the deployed length reaches",
+                      limit > 0 ? "maxLength" : "minLength", limit > 0 ? limits.maxLength : limits.minLength,
+                      limit > 0 ? "paying out" : "hauling in", winchLength_ + winchStep_.length(h), requested,
+                      winchStep_.rate1);
         event_ = text;
     }
     winchLimit_ = limit;
@@ -918,7 +940,7 @@ bool CableSimulation::remesh_once(RemeshAction action, bool balance, std::string
     rebuild(next);
     winchTop0_ = next.topLength;
     model_.set_top_length(winchTop0_);
-    model_.set_top_rate(winchRate_);
+    model_.set_top_rate(off_ ? winchRate_ : winchStep_.rate0);
     if (balance) {
         // The tow node's tangent (unless clamped) and the node below the top element (the new one
         // after a split, the one the merged element now ends at after a merge).
@@ -1134,6 +1156,7 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     winchLength_ = header.winchLength;
     winchRate_ = header.winchRate;
     winchTop0_ = header.winchTop0;
+    winchStep_ = WinchStep::hold(off_ ? 0.0 : winchRate_);
     if (tensionScale_ > 0.0 && !set_integrator_tolerances(error)) {  // 0: saved before initialization
         restartPending_ = true;
         return false;

@@ -109,7 +109,12 @@ private:
     int unknowns_bandwidth() const;
     void allocate();
     double tension_winch_rate(double tension, double topLength, double* slope) const;
+    // The tension the constant-tension winch controls: the force of the cable on the tow point along
+    // the line's tangent there (R: the top element's residual at the expanded state X_), negative
+    // in compression, so that a compressed line is hauled in, never paid out.
+    double line_tension(const double* R) const;
     bool winch_rate(const UCInputs& in, double h, std::string& error);
+    WinchLimits winch_limits() const;
     bool remesh(double change, std::string& error);  // change: of the top element over the step ahead
     bool remesh_once(RemeshAction action, bool balance, std::string& error);
     static constexpr int kMaxRemeshPasses = 100000;
@@ -147,9 +152,10 @@ private:
     double tensionScale_ = 0.0;  // of the error control, fixed at initialization
     RainflowCounter rainflow_;   // online fatigue count of the tow tension (sn_.area > 0)
     bool restartPending_ = true;
-    // the winch: over a step from time_ the top element's length is winchTop0_ + winchRate_ (t - time_)
+    // the winch: over a step from time_ the top element's length is winchTop0_ + winchStep_.length(t - time_)
     double winchLength_ = 0.0;  // deployed unstretched length at time_
-    double winchRate_ = 0.0, winchTop0_ = 0.0;
+    double winchRate_ = 0.0, winchTop0_ = 0.0;  // the rate at time_ (rate winch: the drum's)
+    WinchStep winchStep_;       // the rate winch's drum over the step from time_ (a hold between steps)
     int winchLimit_ = 0;        // -1 / +1: at the shortest / longest length (logged once per arrival)
     std::string event_;
 

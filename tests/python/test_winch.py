@@ -24,11 +24,11 @@ STEP = 0.5
 
 
 def winch_cable(make_cable, length, mode=1, min_length=50.0, max_length=600.0, max_rate=1.0,
-                **kwargs):
+                parameters_extra=None, **kwargs):
     params = {**DeployBody().fmu_parameters(), "length": length,
               "nElements": elements_for_length(length, NOMINAL), "initMode": 0,
               "winchMode": mode, "winch.minLength": min_length, "winch.maxLength": max_length,
-              "winch.maxRate": max_rate}
+              "winch.maxRate": max_rate, **(parameters_extra or {})}
     return make_cable(parameters=params, **kwargs)
 
 
@@ -269,3 +269,66 @@ def test_state_saved_where_the_next_step_remeshes_continues_exactly(make_cable, 
     fresh.set_state(fresh.deserialize_state(state))
     restored, _ = fly(fresh, t_save, 5.0, rate)
     assert np.array_equal(first, restored), (first[:3], restored[:3])
+
+
+def test_constant_tension_winch_never_pays_out_a_compressed_line(make_cable):
+    """The winch controls the tension along the line at the tow point (signed, the station tension
+    `tension[1]`), not the size of the tow force: under an 8 m heave at 8 s the 2 t body cannot follow
+    the sheave down and the top of the line is pushed (down to -24 kN); in none of those samples may the
+    winch pay out (with the size of the force, a compressed line read as an overload and was paid out)."""
+    params = {**HANGING, "length": 100.0, "nElements": 7, "winch.minLength": 20.0, "winch.maxRate": 5.0}
+    fixed = make_cable(parameters=params)
+    fixed.initialize()
+    static = fixed.get("towTension")
+    cable = make_cable(parameters={**params, "winchMode": 2, "winch.timeConstant": 0.05})
+    cable.initialize(inputs={"winch.tension": static})
+    w = 2 * math.pi / PERIOD
+    T, L = [], [cable.get("unstretchedLength")]
+    for k in range(int(round(60.0 / H))):
+        t = k * H
+        cable.set({"tow.z": 8.0 * math.sin(w * t), "tow.vz": 8.0 * w * math.cos(w * t)})
+        cable.set_input_derivatives(["tow.vz"], 1, [-8.0 * w * w * math.sin(w * t)])
+        cable.do_step(H, t)
+        T.append(cable.get("tension[1]"))
+        L.append(cable.get("unstretchedLength"))
+    T, paid = np.array(T), np.diff(L)
+    compressed = T < 0.0
+    assert compressed.sum() > 50, "the scene must compress the line's top"
+    assert np.all(paid[compressed] <= 1e-9), f"paid out in {np.sum(paid[compressed] > 1e-9)} compressed samples"
+    assert np.ptp(L) < 10.0  # it follows the heave, it does not run away
+
+
+def limit_scene(make_cable, max_acceleration):
+    """Pay-out at 1 m/s (winch.maxRate) from 100 m towards winch.maxLength 120 m, 0.5 s steps: the
+    tow tension (max over each step) and the deployed length."""
+    cable = winch_cable(make_cable, 100.0, max_length=120.0, logging_on=True,
+                        parameters_extra={"winch.maxAcceleration": max_acceleration})
+    start(cable)
+    Tmax, L = [], []
+    for k in range(80):
+        t = k * STEP
+        cable.set({"tow.x": SPEED * t, "tow.vx": SPEED, "winch.rate": 1.0})
+        cable.do_step(STEP, t)
+        Tmax.append(cable.get("towTensionMax"))
+        L.append(cable.get("unstretchedLength"))
+    return np.array(Tmax), np.array(L), cable
+
+
+def test_winch_drum_with_an_acceleration_limit_brakes_to_stop_at_the_length_limit(make_cable):
+    """winch.maxAcceleration A: the drum ramps to the requested 1 m/s and brakes at A so that it stops
+    exactly at winch.maxLength; the rate never changes by more than A h over a step. Without the
+    limit the drum stops from 1 m/s within one step and the line snaps the towed body to a halt."""
+    A = 0.1
+    Tmax, L, cable = limit_scene(make_cable, A)
+    settled = Tmax[-1]
+    rate = np.diff(np.concatenate([[100.0], L])) / STEP  # mean rate over each step
+    assert L[-1] == pytest.approx(120.0, abs=1e-6)
+    assert np.all(L <= 120.0 + 1e-6)
+    assert np.max(np.abs(np.diff(rate))) <= A * STEP * (1 + 1e-9) + 1e-12
+    assert any("brakes to stop at winch.maxLength" in m for _, _, m in cable.messages), cable.log_text()
+    # braking at 0.1 m/s2 from 1 m/s: the tension stays within 20 % of the settled 5.0 kN (the body's
+    # drag changes as the line's speed does); the drum stopped at once snaps it to more than 30 kN
+    assert Tmax.max() < 1.2 * settled, (Tmax.max(), settled)
+    hard, L_hard, _ = limit_scene(make_cable, 0.0)
+    assert L_hard[-1] == pytest.approx(120.0, abs=1e-9)
+    assert hard.max() > 5.0 * settled
