@@ -942,10 +942,12 @@ bool CableSimulation::remesh_once(RemeshAction action, bool balance, std::string
     model_.set_top_length(winchTop0_);
     model_.set_top_rate(off_ ? winchRate_ : winchStep_.rate0);
     if (balance) {
-        // The tow node's tangent (unless clamped) and the node below the top element (the new one
-        // after a split, the one the merged element now ends at after a merge).
+        // The tow node's tangent (unless clamped) and the first nodes below the top element (within
+        // the first section): their equations of motion, with the accelerations the line had, decide
+        // where they stand on the new mesh (docs/winch.md, "Split and merge").
         const bool hinged = model_.params().topEnd != UC_TOP_CLAMPED;
-        balance_dofs(hinged ? 3 : 6, hinged ? 9 : 6, X, Xd, Xdd);
+        const int nodes = std::min(kBalanceNodes, model_.winch_mesh().elements - 1);
+        balance_dofs(hinged ? 3 : 6, (hinged ? 3 : 0) + 6 * nodes, X, Xd, Xdd);
     }
     model_.restrict_to_free(X.data(), q_.data());
     model_.restrict_to_free(Xd.data(), v_.data());
