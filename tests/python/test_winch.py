@@ -214,7 +214,8 @@ def fly_still(cable, duration, set_tension, t0=0.0):
 
 def test_constant_tension_state_across_a_split_continues_bit_identically(make_cable):
     """The constant-tension winch's unknowns are part of the state: saved before the winch has paid out
-    past a split, restored (in memory and serialized), the run repeats itself bit for bit."""
+    past a split, restored (in memory and serialized, in the same and in a fresh instance), the run
+    repeats itself bit for bit."""
     cable = make_cable(parameters={**HANGING, "winchMode": 2, "winch.timeConstant": 0.002})
     cable.initialize()
     target = cable.get("towTension") - 3000.0
@@ -228,6 +229,11 @@ def test_constant_tension_state_across_a_split_continues_bit_identically(make_ca
     cable.set_state(cable.deserialize_state(cable.serialize_state(state)))
     serialized, _ = fly_still(cable, 30.0, target, t0=2.0)
     assert np.array_equal(first, serialized)
+    fresh = make_cable(parameters={**HANGING, "winchMode": 2, "winch.timeConstant": 0.002})
+    fresh.initialize()
+    fresh.set_state(fresh.deserialize_state(cable.serialize_state(state)))
+    restored, _ = fly_still(fresh, 30.0, target, t0=2.0)
+    assert np.array_equal(first, restored)
 
 
 def test_a_fast_winch_on_a_fine_mesh_remeshes_many_elements_per_step(make_cable):
