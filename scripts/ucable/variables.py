@@ -513,7 +513,7 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
     Variable('solver.maxOrder', 244, 'parameter', 'Integer', None, 5, 1.0, 5.0,
              "Highest order of the time integrator's variable-order BDF formulas (1-5): 5 is most efficient at tight tolerances; 2 is A-stable, so lightly damped fast modes (a stiff cable's axial and bending ringing) do not hold the steps of a loose tolerance; 1 is backward Euler"),
     Variable('winch.maxAcceleration', 245, 'parameter', 'Real', 'm/s2', 0.0, 0.0, 100.0,
-             'Largest acceleration and deceleration of the winch drum (winchMode 1 and 2); it brakes in time to stop at winch.minLength/maxLength; 0 = no limit (the rate may change at once at a communication point)'),
+             'Largest acceleration and deceleration of the winch drum: in winchMode 1 it ramps towards winch.rate and brakes in time to stop at winch.minLength/maxLength; in winchMode 2 the commanded rate is kept within that braking envelope; 0 = no limit (the rate may change at once at a communication point)'),
     Variable('tow.x', 1001, 'input', 'Real', 'm', 0.0, None, None,
              'x coordinate of the tow point'),
     Variable('tow.y', 1002, 'input', 'Real', 'm', 0.0, None, None,

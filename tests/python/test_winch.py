@@ -342,3 +342,25 @@ def test_winch_drum_with_an_acceleration_limit_brakes_to_stop_at_the_length_limi
     hard, L_hard, _ = limit_scene(make_cable, 0.0)
     assert L_hard[-1] == pytest.approx(120.0, abs=1e-9)
     assert hard.max() > 5.0 * settled
+
+
+def test_constant_tension_winch_brakes_within_the_drum_envelope_at_the_length_limit(make_cable):
+    """Held 5 kN below the hanging weight, the constant-tension winch lowers the 2 t body into
+    winch.maxLength 205 m. With winch.maxAcceleration its command stays within the braking envelope
+    c^2 = 2 A d: it slows down before the limit and stops there (past it only by what the drum's lag
+    tau lets through, millimetres), and the tension stays nearer the static one than when the
+    command drops to 0 at the limit."""
+    fixed = make_cable(parameters=HANGING)
+    fixed.initialize()
+    static = fixed.get("towTension")
+    runs = {}
+    for A in (0.0, 0.2):
+        cable = make_cable(parameters={**HANGING, "winchMode": 2, "winch.timeConstant": 0.05,
+                                       "winch.maxLength": 205.0, "winch.maxAcceleration": A})
+        cable.initialize(inputs={"winch.tension": static - 5000.0})
+        runs[A] = fly_still(cable, 40.0, static - 5000.0)
+    T, L = runs[0.2]
+    assert L[-1] == pytest.approx(205.0, abs=0.01)
+    assert L.max() <= 205.0 + 0.01
+    # the largest tension sampled: braking along the envelope against stopping at the limit
+    assert np.max(T) < np.max(runs[0.0][0])
