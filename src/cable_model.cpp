@@ -522,6 +522,13 @@ WaveExpansion* CableModel::point_wave_cache(size_t i) const {
     return waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(nElements_) * kLoadQuadraturePoints + i];
 }
 
+const double* CableModel::element_velocities(int e, const double* X, const double* Xd, double* buffer) const {
+    const int g0 = elementOffset_[e];
+    if (e != 0 || topRate_ == 0.0) return Xd + g0;
+    top_material_velocity(X + g0, Xd + g0, buffer);  // the top element moves with the material
+    return buffer;
+}
+
 Vec12 CableModel::top_rate_direction(const double* X) const {
     const ShapeValues s = hermite_shape(0.0, top_length());
     Vec12 d = Vec12::Zero();
@@ -538,12 +545,8 @@ void CableModel::top_material_velocity(const double* X, const double* Xd, double
 void CableModel::element_residual(int e, const double* X, const double* Xd, const double* Xdd,
                                   const Loads& loads, double* R) const {
     const int g0 = elementOffset_[e];
-    const double *x = X + g0, *xd = Xd + g0, *xdd = Xdd + g0;
     double Xm[12];
-    if (e == 0 && topRate_ != 0.0) {  // the top element moves with the material (set_top_rate)
-        top_material_velocity(x, xd, Xm);
-        xd = Xm;
-    }
+    const double *x = X + g0, *xd = element_velocities(e, X, Xd, Xm), *xdd = Xdd + g0;
     const ElementTables& tables = tables_[elementRun_[e]];
     const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
     for (int a = 0; a < 12; ++a) R[a] = 0.0;
@@ -564,8 +567,7 @@ void CableModel::element_jacobian(int e, const double* X, const double* Xd, cons
         // The material velocity depends on the positions too: dXm/dX = rate d(top_rate_direction)/dX
         // (r'0 in the tow node's velocity, r''0 = sum_k d2N_k(0) X_k in its tangent rate).
         double Xm[12];
-        top_material_velocity(X + g0, Xd + g0, Xm);
-        element_jacobian_at(e, X + g0, Xm, Xdd + g0, loads, K, C, M);
+        element_jacobian_at(e, X + g0, element_velocities(e, X, Xd, Xm), Xdd + g0, loads, K, C, M);
         const ShapeValues s = hermite_shape(0.0, top_length());
         const Eigen::Matrix<double, 12, 3> Cr = C.middleCols<3>(0), Ct = C.middleCols<3>(3);
         K.middleCols<3>(3) += topRate_ * Cr;

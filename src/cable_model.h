@@ -173,6 +173,9 @@ public:
     void top_material_velocity(const double* X, const double* Xd, double* Xm) const;
     // d(top_material_velocity)/d(rate): [r'0, r''0, 0, 0] of the top element.
     Vec12 top_rate_direction(const double* X) const;
+    // The 12 velocities element e's forces see: Xd's, or the material's in the winch's top element
+    // (written to buffer).
+    const double* element_velocities(int e, const double* X, const double* Xd, double* buffer) const;
 
     const UCParams& params() const { return params_; }
     int n_elements() const { return nElements_; }

@@ -364,3 +364,17 @@ def test_constant_tension_winch_brakes_within_the_drum_envelope_at_the_length_li
     assert L.max() <= 205.0 + 0.01
     # the largest tension sampled: braking along the envelope against stopping at the limit
     assert np.max(T) < np.max(runs[0.0][0])
+
+
+def test_min_tension_sees_the_top_elements_material_motion(make_cable):
+    """minTension (element means and node reactions) reads the top element with the velocities its
+    forces see, the material's: hauling in at 0.5 m/s the line below the sheave is in tension all
+    along, and the smallest tension is at the towed body (the tension grows towards the sheave).
+    With the sheave's velocity the top element's damping read a strain rate of -c / l1, tens of kN."""
+    cable = winch_cable(make_cable, 300.0)
+    start(cable)
+    for t in np.arange(0.0, 30.0, STEP):
+        cable.set({"tow.x": SPEED * t, "tow.vx": SPEED, "winch.rate": -0.5})
+        cable.do_step(STEP, t)
+        end = cable.get("endTension")
+        assert cable.get("minTension") == pytest.approx(end, rel=0.01), (t, cable.get("minTension"), end)
