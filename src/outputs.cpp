@@ -92,10 +92,12 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
         // above the contact band every load is zero: q.weight * 0 subtracts nothing
         if (!p.enableSeabed || above_contact(model.tables(e), section.seabed, Xe)) continue;
         const ContactPoints points = contact_points(model.tables(e));  // as the residual integrates it
+        double material[12];  // the winch's top element moves with the material, as in the residual
+        const double* Xde = model.element_velocities(e, X, Xd, material);
         for (int g = 0; g < points.count; ++g) {  // the residual holds minus the load
             const QuadPoint& q = points.points[g];
             out.seabedContactForce -=
-                q.weight * seabed_load(section.seabed, interpolate(q.shape.N, Xe), interpolate(q.shape.N, Xd + model.element_offset(e)), nullptr).z();
+                q.weight * seabed_load(section.seabed, interpolate(q.shape.N, Xe), interpolate(q.shape.N, Xde), nullptr).z();
         }
     }
 }
