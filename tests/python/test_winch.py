@@ -270,8 +270,8 @@ def test_state_saved_where_the_next_step_remeshes_continues_exactly(make_cable, 
     cable.set_state(cable.deserialize_state(state))
     again, _ = fly(cable, t_save, 5.0, rate)
     assert np.array_equal(first, again)
-    fresh = winch_cable(make_cable, 100.0)
-    start(fresh)
+    fresh = winch_cable(make_cable, 100.0)  # a fresh instance with a history of its own: at rest
+    fresh.initialize(inputs={"winch.rate": 0.0})
     fresh.set_state(fresh.deserialize_state(state))
     restored, _ = fly(fresh, t_save, 5.0, rate)
     assert np.array_equal(first, restored), (first[:3], restored[:3])
