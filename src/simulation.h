@@ -142,7 +142,7 @@ private:
     static constexpr int kMaxBalanceIterations = 8;
     // Nodes below the top element balanced after a remesh: each one more takes the transient of
     // the new mesh's discretization a node further from the tow point (a split on 15 m elements:
-    // 0.053, 0.029, 0.0017 % of the tension with 1, 2, 3 nodes, 0.0011 % with 4).
+    // 0.053, 0.029, 0.0017, 0.0017, 0.0011 % of the tension with 1 to 5 nodes).
     static constexpr int kBalanceNodes = 4;
     // The residual rows of the global DOFs [g, g + count) and (J not null) their Jacobian block.
     void dof_residual(int g, int count, const std::vector<double>& X, const std::vector<double>& Xd,
