@@ -13,6 +13,7 @@
 #include "outputs.h"
 #include "rainflow.h"
 #include "statics.h"
+#include "sundials_compat.h"
 #include "winch.h"
 
 namespace uc {
@@ -174,7 +175,7 @@ CableSimulation::CableSimulation(const UCParams& params) : model_(params) {
     sn_.logK = params.fatigueLogK;
     sn_.area = params.fatigueArea;
     off_ = params.winchMode == UC_WINCH_TENSION ? 1 : 0;
-    if (SUNContext_Create(nullptr, &context_) != 0 || context_ == nullptr) throw std::bad_alloc();
+    if (SUNContext_Create(UC_SUN_COMM_NULL, &context_) != 0 || context_ == nullptr) throw std::bad_alloc();
     try {
         allocate();
     } catch (...) {
