@@ -21,7 +21,7 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 8;
+constexpr std::uint32_t kStateVersion = 9;
 
 // A driven end in a saved state.
 struct EndHeader {
