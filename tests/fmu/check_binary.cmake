@@ -1,5 +1,6 @@
 # cmake -DSO=<path to UnderwaterCable.so> -P check_binary.cmake
-# Fails unless readelf -d lists only platform C libraries as NEEDED and nm -D shows only fmi2* definitions
+# [-DPREFIX=fmi3 -DCOUNT=75] (the FMI 3.0 variant)
+# Fails unless readelf -d lists only platform C libraries as NEEDED and nm -D shows only fmi2* (PREFIX) definitions
 # (FMI 2.0 section 2.3, the FMU archive).
 if(NOT EXISTS "${SO}")
   message(FATAL_ERROR "no shared object at '${SO}'")

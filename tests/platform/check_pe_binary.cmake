@@ -1,7 +1,7 @@
-# cmake -DDLL=<path to a win64 FMU library> -P check_pe_binary.cmake
+# cmake -DDLL=<path to a win64 FMU library> [-DPREFIX=fmi3 -DCOUNT=75] -P check_pe_binary.cmake
 # Fails unless the DLL's import table names only DLLs that every Windows has (KERNEL32.dll, msvcrt.dll and
 # the other system libraries below; no MinGW runtime such as libstdc++-6.dll, libgcc_s_seh-1.dll or
-# libwinpthread-1.dll, no SUNDIALS) and its export table only fmi2* functions (FMI 2.0 section 2.3).
+# libwinpthread-1.dll, no SUNDIALS) and its export table only fmi2* (PREFIX) functions (FMI 2.0 section 2.3).
 if(NOT EXISTS "${DLL}")
   message(FATAL_ERROR "no DLL at '${DLL}'")
 endif()
