@@ -4,12 +4,13 @@
  * use grew per cycle (docs/platforms.md, "Loading and unloading"). Plain C for every platform: glibc's
  * mallinfo2 on Linux, the C runtime's heap walk on Windows (under wine64 in the tests).
  *
- *   uc_load_cycles LIBRARY [CYCLES] [MAX_BYTES_PER_CYCLE]
+ *   uc_load_cycles LIBRARY [CYCLES] [MAX_BYTES_PER_CYCLE]       (uc_load_cycles_fmi3: the FMI 3.0 variant)
  *
  * Exit code 1 when the growth over CYCLES cycles, after as many to settle, exceeds MAX_BYTES_PER_CYCLE per
  * cycle (default 64 bytes: smaller than any allocation of the FMU's that could stay behind; the C++ runtime's
  * emergency exception pool, which stayed behind before it was released at unload, is 71 KiB).
  */
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -42,23 +43,44 @@ static void close_library(Library lib) { dlclose(lib); }
 static long long heap_in_use(void) { return (long long)mallinfo2().uordblks; }
 #endif
 
+#ifdef UC_LOAD_FMI3
+/* The FMI 3.0 variant (built with its uc_guid.h: the instantiation token). */
+typedef void* (*Instantiate3)(const char*, const char*, const char*, bool, bool, bool, bool, const uint32_t*, size_t,
+                              void*, void (*)(void*, int, const char*, const char*), void*);
+static void logger3(void* env, int status, const char* category, const char* message) {
+    (void)env, (void)status, (void)category, (void)message;
+}
+
+static void* instantiate(Library lib) {
+    Instantiate3 instantiate3;
+    *(void**)&instantiate3 = symbol(lib, "fmi3InstantiateCoSimulation");
+    return instantiate3 ? instantiate3("cable", UC_GUID, NULL, false, false, false, false, NULL, 0, NULL, logger3, NULL)
+                        : NULL;
+}
+#define UC_FREE_INSTANCE "fmi3FreeInstance"
+#else
 static void logger(fmi2ComponentEnvironment env, fmi2String instance, fmi2Status status, fmi2String category,
                    fmi2String message, ...) {
     (void)env, (void)instance, (void)status, (void)category, (void)message;
 }
 
+static void* instantiate(Library lib) {
+    fmi2InstantiateTYPE* instantiate2;
+    *(void**)&instantiate2 = symbol(lib, "fmi2Instantiate");
+    const fmi2CallbackFunctions callbacks = {logger, calloc, free, NULL, NULL};
+    return instantiate2 ? instantiate2("cable", fmi2CoSimulation, UC_GUID, NULL, &callbacks, fmi2False, fmi2False) : NULL;
+}
+#define UC_FREE_INSTANCE "fmi2FreeInstance"
+#endif
+
 /* One cycle; 0 on success. */
 static int cycle(const char* path) {
     Library lib = open_library(path);
     if (lib == NULL) return 1;
-    fmi2InstantiateTYPE* instantiate;
-    fmi2FreeInstanceTYPE* freeInstance;
-    *(void**)&instantiate = symbol(lib, "fmi2Instantiate");
-    *(void**)&freeInstance = symbol(lib, "fmi2FreeInstance");
-    if (instantiate == NULL || freeInstance == NULL) return 1;
-    const fmi2CallbackFunctions callbacks = {logger, calloc, free, NULL, NULL};
-    fmi2Component c = instantiate("cable", fmi2CoSimulation, UC_GUID, NULL, &callbacks, fmi2False, fmi2False);
-    if (c == NULL) return 1;
+    void (*freeInstance)(void*);
+    *(void**)&freeInstance = symbol(lib, UC_FREE_INSTANCE);
+    void* c = instantiate(lib);
+    if (c == NULL || freeInstance == NULL) return 1;
     freeInstance(c);
     close_library(lib);
     return 0;
