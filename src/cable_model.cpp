@@ -116,6 +116,7 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const Sta
         // would press into the seabed or hang above it, and its contact would load the anchor
         // vertically. A line that lifts off at the anchor keeps it where it is given.
         anchor_.z() = resting_height();
+        anchorResting_ = true;
     }
     body_ = PointBody{params.bodyMass, params.bodyVolume, params.bodyAddedMass, params.bodyCdA,
                       params.enableBodyFluidInertia != 0};

@@ -201,6 +201,7 @@ public:
     bool far_end_prescribed() const;  // anchored or external
     // The anchor's position: anchor.x/y/z, or on the seabed the height the line rests at there.
     const Vec3& anchor() const { return anchor_; }
+    bool anchor_resting() const { return anchorResting_; }  // held at the line's resting height
     // The height at which the last section rests on the seabed (z = -waterDepth less its resting
     // penetration under its own submerged weight).
     double resting_height() const;
@@ -282,6 +283,7 @@ private:
     PointContact endContact_;
     Vec3 topTangent_;
     Vec3 anchor_;
+    bool anchorResting_ = false;
     CurrentProfile profile_;
     SeaState sea_;
     // The waves' expansion at each load point (element-major), then at the towed body and at each

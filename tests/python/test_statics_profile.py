@@ -178,3 +178,21 @@ def test_graded_state_continues_bit_identically_in_a_fresh_instance(fmu_file):
         second = advance(fresh, 2.0, 6)
         fresh.free_state(restored)
     assert np.array_equal(first, second), f"max difference {np.max(np.abs(first - second))}"
+
+
+@pytest.mark.parametrize("elements", [0, 10, 16, 24, 40, 60])
+def test_clump_mooring_read_from_a_moordyn_deck_at_every_mesh(fmu_file, elements):
+    """The resting-clump mooring above as a MoorDyn deck (pinned joints, the clump a Free point with
+    mass and volume), at its own NumSegs (0) and with lineFileElements shared by length."""
+    from pathlib import Path
+
+    deck = Path(__file__).resolve().parents[1] / "data" / "decks" / "clump_on_seabed.dat"
+    fairlead, anchor = moorpy_tensions(
+        150.0, [(1, [-900, 0, -150], 0, 0), (0, [-500, 0, -150], 15000, 1.91), (0, [-50, 0, -40], 0, 0),
+                (1, [0, 0, -15], 0, 0)],
+        [(1, 2, 350.0, "chain"), (2, 3, 600.0, "wire"), (3, 4, 50.0, "chain")])
+    p = {"lineFile": str(deck), "lineFileElements": elements, "enableSeabed": True, "seabedStiffness": 1e6}
+    top, end, end_z, _ = fmu_tensions(fmu_file, p, -15.0)
+    assert top == pytest.approx(fairlead, rel=BOUND)
+    assert end == pytest.approx(anchor, rel=BOUND)
+    assert abs(end_z) < 1e-3 * end
