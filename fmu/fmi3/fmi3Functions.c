@@ -213,7 +213,12 @@ static fmi3Status count_mismatch(UCInstance* inst, const char* function, size_t 
     return fmi3Error;
 }
 
-/* Float64 get and set, variable by variable: an array is its elements' consecutive FMI 2.0 scalars. */
+/* Float64 get and set, variable by variable: an array is its elements' consecutive FMI 2.0 scalars (the
+ * arrays are the stations' outputs: UC_NUM_STATIONS elements). */
+#define UC_FMI3_ARRAY_FITS(first, count, name) _Static_assert((count) <= UC_NUM_STATIONS, name " fits");
+UC_FMI3_ARRAYS(UC_FMI3_ARRAY_FITS)
+#undef UC_FMI3_ARRAY_FITS
+
 static fmi3Status access_float64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
                                  fmi3Float64* values, size_t nValues, int set, const char* function) {
     UCInstance* inst = inner(instance);
@@ -232,7 +237,7 @@ static fmi3Status access_float64(fmi3Instance instance, const fmi3ValueReference
             values[at] = inst->time;
             status = fmi2OK;
         } else {
-            fmi2ValueReference scalars[64];
+            fmi2ValueReference scalars[UC_NUM_STATIONS];
             for (size_t i = 0; i < n; ++i) scalars[i] = vr[k] + (fmi2ValueReference)i;
             status = set ? fmi2SetReal(inst, scalars, n, values + at) : fmi2GetReal(inst, scalars, n, values + at);
         }
