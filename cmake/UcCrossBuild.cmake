@@ -29,7 +29,7 @@ foreach(platform IN LISTS UC_PLATFORMS)
   endif()
   include(ExternalProject)
   set(dir ${CMAKE_BINARY_DIR}/win64)
-  set(dlls ${dir}/fmu/UnderwaterCable.dll ${dir}/fmu/fmi3/UnderwaterCable.dll ${dir}/tests/platform/uc_fmu_driver.exe
+  set(dlls ${dir}/fmu/UnderwaterCable.dll ${dir}/fmu/fmi3/UnderwaterCable.dll ${dir}/tests/platform/uc_fmu_driver.exe ${dir}/tests/platform/uc_fmu_driver_fmi3.exe
            ${dir}/tests/platform/uc_load_cycles.exe ${dir}/tests/platform/uc_load_cycles_fmi3.exe)
   foreach(partner Vessel VesselRAO TowedBody)
     list(APPEND dlls ${dir}/fmu/partners/${partner}.dll)

@@ -127,11 +127,10 @@ class Runner:
         self.env.pop("DISPLAY", None)
         self.failures = 0
 
-    def run(self, platform, scene, out, *extra, cwd=None):
-        if platform == "linux64":
-            command = [self.args.linux_driver, self.args.linux_library]
-        else:
-            command = [self.args.wine, self.args.win64_driver, self.args.win64_library]
+    def run(self, platform, scene, out, *extra, cwd=None, fmi3=False):
+        a, prefix = self.args, "fmi3_" if fmi3 else ""
+        driver, library = (getattr(a, f"{prefix}{platform}_{x}") for x in ("driver", "library"))
+        command = [driver, library] if platform == "linux64" else [a.wine, driver, library]
         command += [scene, str(out), *map(str, extra)]
         started = time.monotonic()
         done = subprocess.run(command, cwd=cwd or self.work, env=self.env, capture_output=True, text=True)
@@ -168,21 +167,25 @@ def compare_scene(r, scene, checker_for, linux=((), None), variants=(((), None),
         r.report(f"{label}, win64 against linux64", first_difference(result, win, checker_for), seconds)
 
 
-def compare_states(r, scene, at, step):
+def compare_states(r, scene, at, step, fmi3=False):
     """Both platforms save the state at `at`: the same bytes; each platform continues from the other's
     state as the uninterrupted linux64 run did."""
-    states = {p: r.work / f"{scene}.state.{p}" for p in ("linux64", "win64")}
-    full = {p: r.work / f"{scene}.saving.{p}.bin" for p in ("linux64", "win64")}
+    label = f"{scene} (FMI 3.0)" if fmi3 else scene
+    name = f"{scene}.fmi3" if fmi3 else scene
+    states = {p: r.work / f"{name}.state.{p}" for p in ("linux64", "win64")}
+    full = {p: r.work / f"{name}.saving.{p}.bin" for p in ("linux64", "win64")}
     for p in states:
-        r.run(p, scene, full[p], "--save-at", at, states[p])
+        r.run(p, scene, full[p], "--save-at", at, states[p], fmi3=fmi3)
+    if fmi3:
+        r.report(f"{label}, win64 against linux64", first_difference(full["linux64"], full["win64"], exact))
     same = states["linux64"].read_bytes() == states["win64"].read_bytes()
-    r.report(f"{scene} state saved at t = {at:g} s ({states['linux64'].stat().st_size} bytes), win64 against "
+    r.report(f"{label} state saved at t = {at:g} s ({states['linux64'].stat().st_size} bytes), win64 against "
              f"linux64", None if same else f"{states['win64'].stat().st_size} bytes on win64, different")
     skip = round(at / step) + 1  # the rows up to and including the saved point
     for p, other in (("win64", "linux64"), ("linux64", "win64")):
-        cont = r.work / f"{scene}.restored.{p}.bin"
-        r.run(p, scene, cont, "--restore", at, states[other])
-        r.report(f"{scene} continued on {p} from the {other} state, against the uninterrupted linux64 run",
+        cont = r.work / f"{name}.restored.{p}.bin"
+        r.run(p, scene, cont, "--restore", at, states[other], fmi3=fmi3)
+        r.report(f"{label} continued on {p} from the {other} state, against the uninterrupted linux64 run",
                  first_difference(full["linux64"], cont, exact, skip))
 
 
@@ -195,7 +198,8 @@ def default_start(model_description, name):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    for name in ("linux-driver", "linux-library", "win64-driver", "win64-library", "wine", "deck",
+    for name in ("linux64-driver", "linux64-library", "win64-driver", "win64-library", "fmi3-linux64-driver",
+                 "fmi3-linux64-library", "fmi3-win64-driver", "fmi3-win64-library", "wine", "deck",
                  "model-description", "work"):
         parser.add_argument(f"--{name}", required=True)
     args = parser.parse_args()
@@ -225,6 +229,8 @@ def main():
     compare_scene(r, "winch", exact)
     compare_states(r, "hopland", 330.0, 0.5)
     compare_states(r, "winch", 30.0, 0.5)
+    # The FMI 3.0 variant's binaries (no input derivatives there: compared with each other).
+    compare_states(r, "hopland", 330.0, 0.5, fmi3=True)
     print(f"{'FAILED' if r.failures else 'passed'}: {r.failures} disagreements, {time.monotonic() - started:.1f} s")
     return 1 if r.failures else 0
 

@@ -19,6 +19,8 @@
  * --restore T STATE   instead of initializing: a fresh instance, fmi2DeSerializeFMUstate of STATE (saved
  *                     at the communication point T), fmi2SetFMUstate, then the scene from T on
  * Exit code 0 when every FMI call returned fmi2OK; messages of the FMU go to stderr.
+ * uc_fmu_driver_fmi3 runs the FMI 3.0 variant's library the same way (fmi3_shims.h); FMI 3.0 has no input
+ * derivatives in co-simulation, so there the tow point's acceleration is not passed.
  */
 #include <math.h>
 #include <stdarg.h>
@@ -116,6 +118,7 @@ static void* require(Library lib, const char* name) {
     return f;
 }
 
+#ifndef UC_DRIVER_FMI3
 static void load_api(Library lib, Api* api) {
 #define UC_LOAD(f) *(void**)&api->f = require(lib, "fmi2" #f);
     UC_LOAD(Instantiate) UC_LOAD(FreeInstance) UC_LOAD(SetupExperiment) UC_LOAD(EnterInitializationMode)
@@ -124,6 +127,9 @@ static void load_api(Library lib, Api* api) {
     UC_LOAD(FreeFMUstate) UC_LOAD(SerializedFMUstateSize) UC_LOAD(SerializeFMUstate) UC_LOAD(DeSerializeFMUstate)
 #undef UC_LOAD
 }
+#else
+#include "fmi3_shims.h"
+#endif
 
 /* ---- the run --------------------------------------------------------------------------------------- */
 
