@@ -122,8 +122,8 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const Sta
                       params.enableBodyFluidInertia != 0};
     endContact_.seabed = last.seabed;
     if (params.bottomEnd == UC_BOTTOM_TOWED_BODY) {
-        endContact_.footprint = body_footprint(body_.mass, body_.volume);
-        endContact_.seabed.smoothing = 0.05 * std::max(endContact_.footprint, last.fluid.diameter);
+        endContact_.footprint = body_footprint(body_.mass, body_.volume, last.fluid.diameter);
+        endContact_.seabed.smoothing = 0.05 * std::max(body_size(body_.mass, body_.volume), last.fluid.diameter);
     } else if (params.bottomEnd == UC_BOTTOM_FREE) {
         // The 5-point rule's outer point sits 0.0469 l from the element's end: the tip beyond it.
         endContact_.footprint = 0.0469101 * runs_.back().elementLength;
@@ -356,9 +356,10 @@ void CableModel::place_attachments(const std::vector<std::pair<double, PointBody
         at.offset = 6 * best;
         int k = 0;
         while (k + 1 < static_cast<int>(sections_.size()) && point.first >= sections_[k + 1].s0) ++k;
-        at.contact.footprint = body_footprint(at.body.mass, at.body.volume);
+        const double d = sections_[k].fluid.diameter;
+        at.contact.footprint = body_footprint(at.body.mass, at.body.volume, d);
         at.contact.seabed = sections_[k].seabed;
-        at.contact.seabed.smoothing = 0.05 * std::max(at.contact.footprint, sections_[k].fluid.diameter);
+        at.contact.seabed.smoothing = 0.05 * std::max(body_size(at.body.mass, at.body.volume), d);
         attachments_.push_back(at);
     }
 }
@@ -522,38 +523,76 @@ WaveExpansion* CableModel::point_wave_cache(size_t i) const {
     return waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(nElements_) * kLoadQuadraturePoints + i];
 }
 
+const double* CableModel::element_velocities(int e, const double* X, const double* Xd, double* buffer) const {
+    const int g0 = elementOffset_[e];
+    if (e != 0 || topRate_ == 0.0) return Xd + g0;
+    top_material_velocity(X + g0, Xd + g0, buffer);  // the top element moves with the material
+    return buffer;
+}
+
+Vec12 CableModel::top_rate_direction(const double* X) const {
+    const ShapeValues s = hermite_shape(0.0, top_length());
+    Vec12 d = Vec12::Zero();
+    d.segment<3>(0) = Eigen::Map<const Vec3>(X + 3);
+    for (int k = 0; k < 4; ++k) d.segment<3>(3) += s.d2N[k] * Eigen::Map<const Vec3>(X + 3 * k);
+    return d;
+}
+
+void CableModel::top_material_velocity(const double* X, const double* Xd, double* Xm) const {
+    Eigen::Map<Vec12> out(Xm);
+    out = Eigen::Map<const Vec12>(Xd) + topRate_ * top_rate_direction(X);
+}
+
 void CableModel::element_residual(int e, const double* X, const double* Xd, const double* Xdd,
                                   const Loads& loads, double* R) const {
     const int g0 = elementOffset_[e];
+    double Xm[12];
+    const double *x = X + g0, *xd = element_velocities(e, X, Xd, Xm), *xdd = Xdd + g0;
     const ElementTables& tables = tables_[elementRun_[e]];
     const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
     for (int a = 0; a < 12; ++a) R[a] = 0.0;
-    add_mass_force(tables, sec.fluid.massPerLength, Xdd + g0, R);
-    add_axial_force(tables, scaled_axial(sec, loads), X + g0, Xd + g0, R);
-    if (sec.EI > 0.0) add_bending_force(tables, sec.EI, X + g0, R);
-    if (sec.bendingDamping > 0.0) add_bending_force(tables, sec.bendingDamping, Xd + g0, R);
-    if (loads.torque != 0.0) add_torque_force(tables, loads.torque, X + g0, R);
-    add_hydro_force(tables, sec.fluid, loads.current, X + g0, Xd + g0, Xdd + g0, R,
+    add_mass_force(tables, sec.fluid.massPerLength, xdd, R);
+    add_axial_force(tables, scaled_axial(sec, loads), x, xd, R);
+    if (sec.EI > 0.0) add_bending_force(tables, sec.EI, x, R);
+    if (sec.bendingDamping > 0.0) add_bending_force(tables, sec.bendingDamping, xd, R);
+    if (loads.torque != 0.0) add_torque_force(tables, loads.torque, x, R);
+    add_hydro_force(tables, sec.fluid, loads.current, x, xd, xdd, R,
                     waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
-    if (sec.seabed.enabled) add_seabed_force(tables, sec.seabed, X + g0, Xd + g0, R, loads.axialContactOnly);
+    if (sec.seabed.enabled) add_seabed_force(tables, sec.seabed, x, xd, R, loads.axialContactOnly);
 }
 
 void CableModel::element_jacobian(int e, const double* X, const double* Xd, const double* Xdd,
                                   const Loads& loads, Mat12& K, Mat12& C, Mat12& M) const {
     const int g0 = elementOffset_[e];
+    if (e == 0 && topRate_ != 0.0) {
+        // The material velocity depends on the positions too: dXm/dX = rate d(top_rate_direction)/dX
+        // (r'0 in the tow node's velocity, r''0 = sum_k d2N_k(0) X_k in its tangent rate).
+        double Xm[12];
+        element_jacobian_at(e, X + g0, element_velocities(e, X, Xd, Xm), Xdd + g0, loads, K, C, M);
+        const ShapeValues s = hermite_shape(0.0, top_length());
+        const Eigen::Matrix<double, 12, 3> Cr = C.middleCols<3>(0), Ct = C.middleCols<3>(3);
+        K.middleCols<3>(3) += topRate_ * Cr;
+        for (int k = 0; k < 4; ++k) K.middleCols<3>(3 * k) += (topRate_ * s.d2N[k]) * Ct;
+        return;
+    }
+    element_jacobian_at(e, X + g0, Xd + g0, Xdd + g0, loads, K, C, M);
+}
+
+void CableModel::element_jacobian_at(int e, const double* x, const double* xd, const double* xdd,
+                                     const Loads& loads, Mat12& K, Mat12& C, Mat12& M) const {
     const ElementTables& tables = tables_[elementRun_[e]];
     const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
     K.setZero();
     C.setZero();
     M.setZero();
     add_mass_jacobian(tables, sec.fluid.massPerLength, M);
-    add_axial_jacobian(tables, scaled_axial(sec, loads), X + g0, Xd + g0, K, C);
+    add_axial_jacobian(tables, scaled_axial(sec, loads), x, xd, K, C);
     if (sec.EI > 0.0) add_bending_jacobian(tables, sec.EI, K);
     if (sec.bendingDamping > 0.0) add_bending_jacobian(tables, sec.bendingDamping, C);
-    if (loads.torque != 0.0) add_torque_jacobian(tables, loads.torque, X + g0, K);
-    add_hydro_jacobian(tables, sec.fluid, loads.current, X + g0, Xd + g0, Xdd + g0, K, C, M,
+    if (loads.torque != 0.0) add_torque_jacobian(tables, loads.torque, x, K);
+    add_hydro_jacobian(tables, sec.fluid, loads.current, x, xd, xdd, K, C, M,
                        waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
-    if (sec.seabed.enabled) add_seabed_jacobian(tables, sec.seabed, X + g0, Xd + g0, K, C, loads.axialContactOnly);
+    if (sec.seabed.enabled) add_seabed_jacobian(tables, sec.seabed, x, xd, K, C, loads.axialContactOnly);
 }
 
 bool CableModel::far_end_prescribed() const {

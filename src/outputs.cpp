@@ -39,12 +39,11 @@ private:
 };
 
 // Seabed outputs. A point of the line rests on the seabed when its centreline is within half a
-// diameter of the seabed. The contact is a smoothed penalty ramp that starts at a clearance of delta
-// (5 % of the diameter) and, on a stiff seabed, holds a line at rest a few millimetres above
-// z = -waterDepth with its cubic shape waving by about delta between the quadrature points: a test
-// against zero clearance (or delta) misses such a line; half a diameter does not, at every seabed
-// stiffness, and marks the touchdown point of a catenary within a few metres (where its height
-// above the seabed reaches half a diameter). Between samples the clearance is interpolated
+// diameter of the seabed. The contact is a penalty that starts at the seabed, sampled at quadrature
+// points, so a line at rest sinks a little into it and its cubic shape may wave by millimetres
+// between the points: a test against zero clearance misses such a line; half a diameter does not,
+// at every seabed stiffness, and marks the touchdown point of a catenary within a few metres (where
+// its height above the seabed reaches half a diameter). Between samples the clearance is interpolated
 // linearly. The contact force is integrated with the quadrature the equations use.
 // The clearance below which a point of the line rests on the seabed (see seabed_outputs).
 double resting_clearance(const SectionProps& section) {
@@ -92,10 +91,12 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
         // above the contact band every load is zero: q.weight * 0 subtracts nothing
         if (!p.enableSeabed || above_contact(model.tables(e), section.seabed, Xe)) continue;
         const ContactPoints points = contact_points(model.tables(e));  // as the residual integrates it
+        double material[12];  // the winch's top element moves with the material, as in the residual
+        const double* Xde = model.element_velocities(e, X, Xd, material);
         for (int g = 0; g < points.count; ++g) {  // the residual holds minus the load
             const QuadPoint& q = points.points[g];
             out.seabedContactForce -=
-                q.weight * seabed_load(section.seabed, interpolate(q.shape.N, Xe), interpolate(q.shape.N, Xd + model.element_offset(e)), nullptr).z();
+                q.weight * seabed_load(section.seabed, interpolate(q.shape.N, Xe), interpolate(q.shape.N, Xde), nullptr).z();
         }
     }
 }
@@ -229,7 +230,8 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
         const double l = model.element_length(e);
         double axialTension[ElementTables::nAxial];
         Vec3 rp[ElementTables::nAxial];  // r' at the axial points, which the tensions interpolate anyway
-        axial_tensions(tables, section.axial, Xe, Xd + model.element_offset(e), axialTension, rp);
+        double material[12];  // the winch's top element: the velocities of the material in it
+        axial_tensions(tables, section.axial, Xe, model.element_velocities(e, X, Xd, material), axialTension, rp);
         double mean = 0.0, elementCurvature = 0.0;
         for (int g = 0; g < ElementTables::nAxial; ++g) {
             mean += tables.axial[g].weight / l * axialTension[g];
