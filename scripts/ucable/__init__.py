@@ -11,6 +11,8 @@ Scenes (TOML files: parameters, tow-point manoeuvre, step, duration) and the com
 The repository's own scripts and tests use the same package (scripts/ on sys.path in a clone).
 """
 
+__version__ = "0.1.0"
+
 from .paths import REPO_ROOT, MissingFMUError, find_scene, fmu_path, require_fmu, scenes_dir  # noqa: F401
 from .steady_tow import KNOT  # noqa: F401
 

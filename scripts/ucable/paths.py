@@ -1,7 +1,8 @@
 """Where things are: the packed FMU, the scenes, and (in a clone) the repository root.
 
-Installed with `pip install .`, the package holds the FMU and the scenes itself; run from a clone
-(scripts/ on sys.path) they are the build's FMU and the repository's scenes/. UC_FMU names another FMU.
+Installed with `pip install .`, the package holds the FMUs, the scenes and the system files itself;
+run from a clone (the package on sys.path) they are the build's FMUs and the repository's scenes/ and
+systems/. UC_FMU names another FMU.
 """
 
 from __future__ import annotations
@@ -40,6 +41,13 @@ def scenes_dir() -> Path:
     """The scene files: installed with the package, or the clone's scenes/."""
     packaged = PACKAGE_DIR / "scenes"
     return packaged if packaged.is_dir() else REPO_ROOT / "scenes"
+
+
+def systems_dir() -> Path:
+    """The OSP system structure files (one folder per system): installed with the package, or the
+    clone's systems/."""
+    packaged = PACKAGE_DIR / "systems"
+    return packaged if packaged.is_dir() else REPO_ROOT / "systems"
 
 
 def find_scene(name: str | Path) -> Path:

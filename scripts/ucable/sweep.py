@@ -15,9 +15,11 @@ import traceback
 
 import numpy as np
 
-from .scene import Scene, load_scene, parse_value, run_scene
+from .scene import Scene, SceneError, load_scene, parse_value, run_scene
+from .scene_schema import SceneFileError
 
 SUMMARY = ["towTensionMax", "towTensionMin", "towTensionFinal", "endDepthFinal"]
+EXTRA_SUMMARY = ["anchorTensionMax", "lengthFinal"]  # anchored lines, winch scenes
 
 
 def parse_vary(items: list[str]) -> dict:
@@ -25,13 +27,20 @@ def parse_vary(items: list[str]) -> dict:
     out = {}
     for item in items:
         if "=" not in item:
-            raise ValueError(f"--vary {item!r}: expected NAME=V1,V2,...")
+            raise SceneFileError(f"--vary {item!r}: expected NAME=V1,V2,...")
         name, values = item.split("=", 1)
         vals = [parse_value(v) for v in values.split(",") if v.strip() != ""]
         if not vals:
-            raise ValueError(f"--vary {item!r}: no values")
+            raise SceneFileError(f"--vary {item!r}: no values")
         out[name.strip()] = vals
     return out
+
+
+def check_vary(scene: Scene, vary: dict) -> None:
+    """Every varied value checked as an override of the scene (a SceneFileError names it)."""
+    for name, values in vary.items():
+        for value in values:
+            scene.with_overrides({name: value}, source="--vary")
 
 
 def combinations(vary: dict) -> list[dict]:
@@ -53,14 +62,15 @@ def run_case(scene_data: dict, overrides: dict) -> dict:
         row.update({k: float("nan") for k in SUMMARY})
         row["cpuSeconds"] = time.process_time() - t0
         row["status"] = "error"
-        last = traceback.format_exception_only(type(exc), exc)[-1].strip()
+        known = isinstance(exc, (SceneFileError, SceneError))  # their message says it all
+        last = str(exc) if known else traceback.format_exception_only(type(exc), exc)[-1].strip()
         row["error"] = last.replace("\n", " ")
     return row
 
 
 def scene_data(scene: Scene) -> dict:
-    return {"name": scene.name, "title": scene.title, "duration": scene.duration, "step": scene.step,
-            "parameters": scene.parameters, "inputs": scene.inputs, "tow": scene.tow, "outputs": scene.outputs}
+    """The scene as data (what a worker gets)."""
+    return {**scene.data, "name": scene.name, "title": scene.title}
 
 
 def run_sweep(scene: Scene, vary: dict, fixed: dict | None = None, workers: int = 2, scheduler: str | None = None,
@@ -90,7 +100,8 @@ def run_sweep(scene: Scene, vary: dict, fixed: dict | None = None, workers: int 
 
 
 def write_results(rows: list[dict], names: list[str], path) -> None:
-    columns = names + SUMMARY + ["cpuSeconds", "status", "error"]
+    extra = [k for k in EXTRA_SUMMARY if any(k in r for r in rows)]
+    columns = names + SUMMARY + extra + ["cpuSeconds", "status", "error"]
     with open(path, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=columns, extrasaction="ignore")
         writer.writeheader()
@@ -98,30 +109,60 @@ def write_results(rows: list[dict], names: list[str], path) -> None:
             writer.writerow({c: f"{v:.10g}" if isinstance(v := r.get(c, ""), float) else v for c in columns})
 
 
+def _numeric(values) -> bool:
+    return all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in values)
+
+
 def plot_summary(rows: list[dict], names: list[str], path, title: str) -> None:
+    """The summary against what varies: with one numeric name (or the first of several, the others
+    as one line each) on the x axis; otherwise one position per combination. Tension extremes and
+    the final tension; the final far-end depth, or the anchor tension's maximum of anchored lines."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    labels = [", ".join(f"{n}={r[n]}" for n in names) for r in rows]
-    x = np.arange(len(rows))
-    fig, ax = plt.subplots(1, 2, figsize=(max(8, 1.2 * len(rows) + 4), 4.5))
-    tmax = np.array([r["towTensionMax"] for r in rows], dtype=float) / 1e3
-    tmin = np.array([r["towTensionMin"] for r in rows], dtype=float) / 1e3
-    tfin = np.array([r["towTensionFinal"] for r in rows], dtype=float) / 1e3
-    ax[0].vlines(x, tmin, tmax, color="tab:blue", lw=6, alpha=0.4, label="min-max over the run")
-    ax[0].plot(x, tfin, "o", color="tab:blue", label="final")
-    ax[0].set_ylabel("tow tension [kN]")
-    ax[0].legend(fontsize=8)
-    ax[1].plot(x, [r["endDepthFinal"] for r in rows], "s", color="tab:green")
-    ax[1].set_ylabel("final far-end depth [m]")
+    first = names[0]
+    axis_values = [r[first] for r in rows]
+    numeric = _numeric(axis_values)
+    others = names[1:]
+    groups: dict = {}
+    for i, r in enumerate(rows):
+        groups.setdefault(tuple(r[n] for n in others), []).append(i)
+    anchored = any("anchorTensionMax" in r and r["status"] == "ok" for r in rows)
+    key2, label2, scale2 = (("anchorTensionMax", "anchor tension max [kN]", 1e3) if anchored else
+                            ("endDepthFinal", "final far-end depth [m]", 1.0))
+    fig, ax = plt.subplots(1, 2, figsize=(12, 4.5))
+    for g, (group, idx) in enumerate(groups.items()):
+        x = np.array([axis_values[i] for i in idx], dtype=float) if numeric else np.array(idx, dtype=float)
+        if numeric:
+            order = np.argsort(x)
+            idx, x = [idx[i] for i in order], x[order]
+        label = ", ".join(f"{n}={v}" for n, v in zip(others, group)) or None
+        color = f"C{g % 10}"
+
+        def col(key, scale=1.0):
+            return np.array([rows[i].get(key, np.nan) for i in idx], dtype=float) / scale
+
+        ax[0].fill_between(x, col("towTensionMin", 1e3), col("towTensionMax", 1e3), color=color, alpha=0.2)
+        ax[0].plot(x, col("towTensionFinal", 1e3), "o-", color=color, label=label)
+        ax[1].plot(x, col(key2, scale2), "s-", color=color, label=label)
+        for i, xi in zip(idx, x):
+            if rows[i]["status"] != "ok":
+                for a in ax:
+                    a.annotate("failed", (xi, 0.05), xycoords=("data", "axes fraction"), color="tab:red",
+                               ha="center", rotation=90)
+    ax[0].set_ylabel("tow tension [kN]: final (markers), min-max over the run (band)")
+    ax[1].set_ylabel(label2)
     for a in ax:
-        a.set_xticks(x)
-        a.set_xticklabels(labels, rotation=30, ha="right", fontsize=8)
+        if numeric:
+            a.set_xlabel(first)
+        else:
+            a.set_xticks(range(len(rows)))
+            a.set_xticklabels([", ".join(f"{n}={r[n]}" for n in names) for r in rows], rotation=30, ha="right",
+                              fontsize=8)
         a.grid(alpha=0.3)
-        for i, r in enumerate(rows):
-            if r["status"] != "ok":
-                a.annotate("failed", (i, 0), xycoords=("data", "axes fraction"), color="tab:red", ha="center")
+        if others:
+            a.legend(fontsize=8)
     fig.suptitle(title)
     fig.tight_layout()
     fig.savefig(path, dpi=100)

@@ -34,10 +34,9 @@ from xml.sax.saxutils import escape as xml_escape
 import numpy as np
 
 from .fmu import CableFMU
-from .paths import REPO_ROOT, fmu_path
+from .paths import REPO_ROOT, fmu_path, systems_dir
 
 KNOT = 1852.0 / 3600.0
-SYSTEMS_DIR = REPO_ROOT / "systems"
 SYSTEM_DIRS = {"internal": "towed_body_internal", "external": "towed_body", "explicit": "towed_body_explicit"}
 COUPLINGS = tuple(SYSTEM_DIRS)
 MASTERS = ("fmpy", "libcosim")
@@ -178,12 +177,26 @@ def partner_fmu(name: str) -> Path:
     raise FileNotFoundError(f"{name}.fmu not found: build first: scripts/build")
 
 
-def load_system(coupling: str) -> SystemStructure:
-    """The system file of a coupling, its FMUs resolved to the cable FMU in use and the partners next to it."""
-    system = SystemStructure.parse(SYSTEMS_DIR / SYSTEM_DIRS[coupling] / "OspSystemStructure.xml")
+def system_names() -> list[str]:
+    """The shipped systems: the folders of systems/ that hold an OspSystemStructure.xml."""
+    return sorted(p.parent.name for p in systems_dir().glob("*/OspSystemStructure.xml"))
+
+
+def load_named_system(name: str) -> SystemStructure:
+    """A shipped system file by its folder's name, its FMUs resolved to the cable FMU in use and the
+    partners next to it."""
+    path = systems_dir() / name / "OspSystemStructure.xml"
+    if not path.is_file():
+        raise FileNotFoundError(f"no system {name!r}: the shipped systems are {', '.join(system_names())}")
+    system = SystemStructure.parse(path)
     for s in system.simulators.values():
         s.source = fmu_path() if s.source.name == "UnderwaterCable.fmu" else partner_fmu(s.source.stem)
     return system
+
+
+def load_system(coupling: str) -> SystemStructure:
+    """The system file of a coupling (SYSTEM_DIRS)."""
+    return load_named_system(SYSTEM_DIRS[coupling])
 
 
 # ------------------------------------------------------------------------------------ results
@@ -498,3 +511,36 @@ def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: s
         result = run_fmpy(system, params, step, t_end, ordering, input_derivatives, progress)
     result.coupling = coupling
     return result
+
+
+# ------------------------------------------------------------------------------------ a shipped system
+COUPLING_OF_SYSTEM = {d: c for c, d in SYSTEM_DIRS.items()}
+SYSTEM_DURATIONS = {"heave_lowering": 300.0}  # the towed-body systems: their manoeuvre's duration
+
+
+def named_duration(name: str, manoeuvre: str = "accelerate", duration: float | None = None) -> float:
+    """The simulated time of a shipped system's run: `duration`, else the manoeuvre's or the system's."""
+    if duration is not None:
+        return duration
+    if name in COUPLING_OF_SYSTEM:
+        if manoeuvre not in MANOEUVRES:
+            raise ValueError(f"manoeuvre must be one of {', '.join(MANOEUVRES)}")
+        return MANOEUVRES[manoeuvre][1]
+    return SYSTEM_DURATIONS.get(name, 300.0)
+
+
+def run_named(name: str, master: str = "fmpy", step: float | None = None, duration: float | None = None,
+              manoeuvre: str = "accelerate", progress=None) -> SystemResult:
+    """A shipped system (systems/NAME) as its file describes it. The towed-body systems fly
+    `manoeuvre` (their file's vessel flies accelerate); the others run from their start values."""
+    if master not in MASTERS:
+        raise ValueError(f"master must be one of {', '.join(MASTERS)}")
+    ordering = "jacobi" if master == "libcosim" else "gauss-seidel"
+    system = load_named_system(name)
+    h = system.step if step is None else step
+    t_end = named_duration(name, manoeuvre, duration)
+    if name in COUPLING_OF_SYSTEM:
+        return run(manoeuvre, h, COUPLING_OF_SYSTEM[name], master, ordering, duration=t_end, progress=progress)
+    if master == "libcosim":
+        return run_libcosim(system, {}, h, t_end, progress)
+    return run_fmpy(system, {}, h, t_end, ordering, True, progress)

@@ -94,7 +94,7 @@ def test_the_system_file_is_the_scene_and_libcosim_runs_it(fmu_file):
     stern's acceleration over one step."""
     from ucable import system as S
 
-    system = S.SystemStructure.parse(S.SYSTEMS_DIR / "heave_lowering" / "OspSystemStructure.xml")
+    system = S.SystemStructure.parse(S.systems_dir() / "heave_lowering" / "OspSystemStructure.xml")
     scene = Scene(t_end=10.0, ramp=20.0)
     assert system.simulators["vessel"].initial == scene.vessel_parameters()
     assert system.simulators["cable"].initial == scene.cable_parameters()

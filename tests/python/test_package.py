@@ -70,16 +70,19 @@ def test_cli_run_writes_csv_and_plot(fmu_file, tmp_path):
 
 def test_two_worker_sweep_rows_equal_single_runs(fmu_file, tmp_path):
     out = tmp_path / "s"
-    p = subprocess.run([sys.executable, "-m", "ucable.cli", "sweep", "hopland_accelerate", "--vary", "length=200,300",
-                        "--vary", "Cdn=1.2,1.6,-1", "--set", "duration=5", "--workers", "2", "--out", str(out)],
+    p = subprocess.run([sys.executable, "-m", "ucable.cli", "sweep", "hopland_accelerate", "--vary", "length=200,300,0",
+                        "--vary", "Cdn=1.2,1.6", "--set", "duration=5", "--workers", "2", "--out", str(out)],
                        env=cli_env(fmu_file), capture_output=True, text=True, cwd=tmp_path, timeout=600)
-    assert p.returncode == 0, p.stderr
+    # length 0 is inside the schema's range [0, 1e5] but the FMU refuses it: those two rows fail, the
+    # sweep goes on, writes every row, and exits 1 saying how many failed
+    assert p.returncode == 1, p.stderr
+    assert "2 of 6 runs failed" in p.stderr
     rows = read_csv(out / "results.csv")
     assert [(float(r["length"]), float(r["Cdn"])) for r in rows] == [
-        (200.0, 1.2), (200.0, 1.6), (200.0, -1.0), (300.0, 1.2), (300.0, 1.6), (300.0, -1.0)]
+        (200.0, 1.2), (200.0, 1.6), (300.0, 1.2), (300.0, 1.6), (0.0, 1.2), (0.0, 1.6)]
     for r in rows:
-        if float(r["Cdn"]) < 0:  # the FMU refuses it: a row with the error, the sweep goes on
-            assert r["status"] == "error" and "Cdn" in r["error"], r
+        if float(r["length"]) == 0.0:
+            assert r["status"] == "error" and "length" in r["error"], r
             continue
         assert r["status"] == "ok", r
         single = run_scene("hopland_accelerate", overrides={"duration": 5.0, "length": float(r["length"]),
@@ -87,6 +90,23 @@ def test_two_worker_sweep_rows_equal_single_runs(fmu_file, tmp_path):
         for key, value in single.items():
             assert float(r[key]) == pytest.approx(value, rel=1e-9), key  # the CSV keeps 10 digits
     assert (out / "summary.png").stat().st_size > 0
+
+
+def test_sweep_with_a_value_out_of_range_runs_nothing(fmu_file, tmp_path):
+    out = tmp_path / "s"
+    p = subprocess.run([sys.executable, "-m", "ucable.cli", "sweep", "hopland_accelerate", "--vary", "Cdn=1.2,-1",
+                        "--set", "duration=5", "--out", str(out)],
+                       env=cli_env(fmu_file), capture_output=True, text=True, cwd=tmp_path, timeout=600)
+    assert p.returncode == 2 and p.stderr.strip() == "ucable: --vary Cdn: -1 is outside [0, 100]", p.stderr
+    assert not out.exists()
+
+
+def test_sweep_in_which_every_run_failed_exits_nonzero(fmu_file, tmp_path):
+    p = subprocess.run([sys.executable, "-m", "ucable.cli", "sweep", "hopland_accelerate", "--vary", "length=0",
+                        "--set", "duration=2", "--workers", "1", "--out", str(tmp_path / "s")],
+                       env=cli_env(fmu_file), capture_output=True, text=True, cwd=tmp_path, timeout=600)
+    assert p.returncode == 1 and "1 of 1 runs failed" in p.stderr, p.stderr
+    assert "Traceback" not in p.stderr
 
 
 @pytest.mark.slow
