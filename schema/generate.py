@@ -9,7 +9,7 @@ Generated (each file says so in its first lines; never edit them by hand):
     src/uc_schema.h                 UCParams / UCInputs / UCOutputs and X-macro lists of the variables
                                     (value-reference table, defaults, range checks)
     modelDescription.xml            the FMI 2.0 model description (CMake fills in guid and version)
-    README.md                       the tables between the "generated from schema" markers
+    docs/interface.md               the tables between the "generated from schema" markers
     scripts/ucable/variables.py     the variables as Python constants
     fmu/documentation/index.html    the FMU's own documentation page
 
@@ -39,7 +39,7 @@ SCHEMA = ROOT / "schema" / "variables.toml"
 
 OUT_HEADER = ROOT / "src" / "uc_schema.h"
 OUT_XML = ROOT / "modelDescription.xml"
-OUT_README = ROOT / "README.md"
+OUT_README = ROOT / "docs" / "interface.md"  # the interface tables (the README links to them)
 OUT_PYTHON = ROOT / "scripts" / "ucable" / "variables.py"
 OUT_HTML = ROOT / "fmu" / "documentation" / "index.html"
 
@@ -454,7 +454,8 @@ def readme_text(current: str, entries) -> str:
         end = f"<!-- end {causality}s -->"
         pattern = re.compile(re.escape(begin) + r".*?" + re.escape(end), re.S)
         if not pattern.search(current):
-            raise SystemExit(f"README.md: markers for the {causality} table not found ({begin})")
+            raise SystemExit(f"{OUT_README.relative_to(ROOT)}: markers for the {causality} table not found ({begin})")
+        table = table.replace("](docs/", "](")  # the tables live in docs/ themselves
         current = pattern.sub(lambda _: f"{begin}\n{table}\n{end}", current)
     return current
 

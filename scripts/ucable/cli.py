@@ -5,11 +5,12 @@
                  [--scheduler ADDRESS] [--out DIR]
     ucable scenes                  the shipped scenes
     ucable scenes show NAME        print a shipped scene (to copy and edit: ucable scenes show turn90 > my.toml)
+    ucable scenes format           print the scene format's reference (every key, unit, default)
     ucable system NAME [--master fmpy|libcosim] [--out DIR]    run a shipped system of FMUs
     ucable fmu                     the path of the FMU
     ucable --version
 
-SCENE is a scene file (TOML; the format: docs/scenes.md) or the name of a shipped scene. NAME is
+SCENE is a scene file (TOML; the format: ucable scenes format) or the name of a shipped scene. NAME is
 any FMU parameter by its name, or the scene's duration or step. run writes DIR/result.csv (the
 outputs and, by default, every station's position shape.x[k], shape.y[k], shape.z[k]) and
 DIR/result.png, with --animate also DIR/result.gif; sweep writes DIR/results.csv (one row per
@@ -99,9 +100,12 @@ def cmd_sweep(a) -> int:
 
 
 def cmd_scenes(a) -> int:
-    from .paths import find_scene, scenes_dir
+    from .paths import find_scene, scene_format_doc, scenes_dir
     from .scene import load_scene
 
+    if a.action == "format":
+        sys.stdout.write(scene_format_doc().read_text())
+        return 0
     if a.action == "show":
         if not a.name:
             raise SystemExit("ucable scenes show: give the NAME of a shipped scene (ucable scenes lists them)")
@@ -157,8 +161,8 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--workers", type=int, default=2, help="local worker processes (default 2)")
     s.add_argument("--scheduler", default=None, help="address of a running Dask scheduler (default: a local cluster)")
     s.add_argument("--out", type=Path, default=None, help="output directory (default out/SCENE_sweep)")
-    sc = sub.add_parser("scenes", help="list the shipped scenes, or print one: scenes show NAME")
-    sc.add_argument("action", nargs="?", choices=("list", "show"), default="list")
+    sc = sub.add_parser("scenes", help="list the shipped scenes; print one (scenes show NAME) or the format (scenes format)")
+    sc.add_argument("action", nargs="?", choices=("list", "show", "format"), default="list")
     sc.add_argument("name", nargs="?")
     y = sub.add_parser("system", help="run a shipped system of FMUs (vessel, cable, towed body); no NAME: list them")
     y.add_argument("name", nargs="?")

@@ -50,6 +50,12 @@ def systems_dir() -> Path:
     return packaged if packaged.is_dir() else REPO_ROOT / "systems"
 
 
+def scene_format_doc() -> Path:
+    """The scene format's reference (docs/scenes.md): installed with the package, or the clone's."""
+    packaged = PACKAGE_DIR / "scenes.md"
+    return packaged if packaged.is_file() else REPO_ROOT / "docs" / "scenes.md"
+
+
 def find_scene(name: str | Path) -> Path:
     """A scene file: the path as given if it exists, else a scene of that name (with or without
     .toml, with or without a scenes/ prefix) among the packaged ones."""

@@ -111,8 +111,9 @@ def test_sweep_in_which_every_run_failed_exits_nonzero(fmu_file, tmp_path):
 
 @pytest.mark.slow
 def test_pip_install_runs_from_outside_the_clone(tmp_path):
-    """What a new user does: a fresh venv, `pip install` of the clone (builds the FMU with CMake),
-    then the command from a directory that is not the clone."""
+    """What a new user does: a fresh venv, `pip install` of the clone (builds the FMUs with CMake),
+    then the commands from a directory that is not the clone: the version, a shipped system, a
+    shipped scene printed, edited and run (the shape in result.csv, result.png written)."""
     env_dir = tmp_path / "v"
     venv.create(env_dir, with_pip=True)
     pip = env_dir / "bin" / "pip"
@@ -125,8 +126,24 @@ def test_pip_install_runs_from_outside_the_clone(tmp_path):
     q = subprocess.run([str(py), "-c", "import ucable; print(ucable.fmu_path())"], capture_output=True, text=True,
                        cwd=work, env=env)
     assert q.returncode == 0 and "site-packages" in q.stdout, q.stdout + q.stderr
-    exe = env_dir / "bin" / "ucable"
-    r = subprocess.run([str(exe), "run", "scenes/hopland_accelerate.toml", "--set", "duration=10", "--out", "o"],
-                       capture_output=True, text=True, cwd=work, env=env, timeout=600)
+    exe = str(env_dir / "bin" / "ucable")
+
+    def ucable_cli(*args, timeout=600):
+        return subprocess.run([exe, *args], capture_output=True, text=True, cwd=work, env=env, timeout=timeout)
+
+    v = ucable_cli("--version")
+    assert v.returncode == 0 and v.stdout.strip() == f"ucable {ucable.__version__}", v.stdout + v.stderr
+    y = ucable_cli("system", "towed_body", "--duration", "20", "--out", "sys")
+    assert y.returncode == 0, y.stderr
+    rows = read_csv(work / "sys" / "result.csv")
+    assert len(rows) == 41 and float(rows[-1]["towTension"]) > 0.0  # 20 s at the file's 0.5 s step
+    show = ucable_cli("scenes", "show", "turn90")
+    assert show.returncode == 0, show.stderr
+    (work / "my.toml").write_text(show.stdout.replace("duration = 300.0", "duration = 10.0"))
+    r = ucable_cli("run", "my.toml", "--out", "d")
     assert r.returncode == 0, r.stderr
-    assert (work / "o" / "result.csv").is_file()
+    rows = read_csv(work / "d" / "result.csv")
+    assert len(rows) == 21 and {"shape.x[1]", "shape.z[21]", "towTension"} <= set(rows[0])
+    assert (work / "d" / "result.png").stat().st_size > 0
+    bad = ucable_cli("run", "my.toml", "--set", "nElements=2.5")
+    assert bad.returncode == 2 and "Traceback" not in bad.stderr

@@ -231,3 +231,9 @@ def test_shipped_winch_scenes_reach_their_target(fmu_file, name, length, depth):
     assert L[-1] == pytest.approx(length, abs=1.0)
     assert -r["endPosition.z"][-1] == pytest.approx(depth, rel=0.03)
     assert r.scene.kind == "winch"
+
+
+def test_scenes_format_prints_the_reference(capsys):
+    assert main(["scenes", "format"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("# Scene format") and "`speed_kn`" in out

@@ -1,6 +1,6 @@
-"""The README's FMU interface tables agree with modelDescription.xml (both are generated from the
+"""The FMU interface tables of docs/interface.md agree with modelDescription.xml (both are generated from the
 variable schema: this checks the generator end to end): every variable is listed
-with the right causality section, unit and default (README defaults are rounded to 6 significant
+with the right causality section, unit and default (its defaults are rounded to 6 significant
 digits, hence rel = 1e-5). Needs no built FMU: it reads the checked-in modelDescription.xml."""
 
 import re
@@ -10,17 +10,17 @@ from fmpy import read_model_description
 
 from ucable.paths import REPO_ROOT
 
-SECTIONS = {"### Inputs": "input", "### Outputs": "output", "### Parameters": "parameter"}
+SECTIONS = {"## Inputs": "input", "## Outputs": "output", "## Parameters": "parameter"}
 
 
 def readme_rows():
-    """{variable name: (section causality, unit cell, default cell)} from the README tables."""
+    """{variable name: (section causality, unit cell, default cell)} from the tables of docs/interface.md."""
     rows, section = {}, None
-    for line in (REPO_ROOT / "README.md").read_text().splitlines():
+    for line in (REPO_ROOT / "docs" / "interface.md").read_text().splitlines():
         for head, causality in SECTIONS.items():
             if line.startswith(head):
                 section = causality
-        if line.startswith("## ") and not line.startswith("## FMU interface"):
+        if line.startswith("#") and not any(line.startswith(head) for head in SECTIONS):
             section = None
         if section is None or not line.startswith("| `"):
             continue
@@ -48,19 +48,19 @@ def test_every_variable_is_documented_with_its_unit_and_default(model_variables)
     rows = readme_rows()
     for v in model_variables:
         name = re.sub(r"\[\d+\]", "[k]", v.name)  # arrays are documented as name[k]
-        assert name in rows, f"{v.name} is missing from the README interface tables"
+        assert name in rows, f"{v.name} is missing from docs/interface.md"
         section, unit, default = rows[name]
-        assert section == v.causality, f"{v.name}: README lists it under {section}s"
+        assert section == v.causality, f"{v.name}: docs/interface.md lists it under {section}s"
         if v.unit:
             readme_unit = unit.replace("²", "2").replace("³", "3")
-            assert readme_unit == v.unit, f"{v.name}: README unit {unit!r}, modelDescription {v.unit!r}"
+            assert readme_unit == v.unit, f"{v.name}: docs/interface.md unit {unit!r}, modelDescription {v.unit!r}"
         if default is None or v.start is None:
             continue
         first = default.split()[0]
         if v.type == "Boolean":
-            assert first == str(v.start).lower(), f"{v.name}: README default {first}"
+            assert first == str(v.start).lower(), f"{v.name}: docs/interface.md default {first}"
         elif v.type == "String":
-            assert first == f'"{v.start}"', f"{v.name}: README default {first}, modelDescription {v.start!r}"
+            assert first == f'"{v.start}"', f"{v.name}: docs/interface.md default {first}, modelDescription {v.start!r}"
         else:
             assert float(first) == pytest.approx(float(v.start), rel=1e-5), \
-                f"{v.name}: README default {first}, modelDescription {v.start}"
+                f"{v.name}: docs/interface.md default {first}, modelDescription {v.start}"
