@@ -10,7 +10,7 @@ Generated (each file says so in its first lines; never edit them by hand):
                                     (value-reference table, defaults, range checks)
     modelDescription.xml            the FMI 2.0 model description (CMake fills in guid and version)
     docs/interface.md               the tables between the "generated from schema" markers
-    scripts/ucable/variables.py     the variables as Python constants
+    python/ucable/variables.py     the variables as Python constants
     fmu/documentation/index.html    the FMU's own documentation page
 
 The CMake build runs this script when the schema changes, and a test (ctest: schema_is_current)
@@ -40,7 +40,7 @@ SCHEMA = ROOT / "schema" / "variables.toml"
 OUT_HEADER = ROOT / "src" / "uc_schema.h"
 OUT_XML = ROOT / "modelDescription.xml"
 OUT_README = ROOT / "docs" / "interface.md"  # the interface tables (the README links to them)
-OUT_PYTHON = ROOT / "scripts" / "ucable" / "variables.py"
+OUT_PYTHON = ROOT / "python" / "ucable" / "variables.py"
 OUT_HTML = ROOT / "fmu" / "documentation" / "index.html"
 
 CAUSALITIES = ("parameter", "input", "output")

@@ -21,7 +21,7 @@ SHORT = {"duration": 10.0}
 
 def cli_env(fmu_file):
     env = dict(os.environ, UC_FMU=str(fmu_file))
-    env["PYTHONPATH"] = os.pathsep.join([str(ROOT / "scripts"), env.get("PYTHONPATH", "")])
+    env["PYTHONPATH"] = os.pathsep.join([str(ROOT / "python"), env.get("PYTHONPATH", "")])
     return env
 
 

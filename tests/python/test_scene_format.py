@@ -87,7 +87,7 @@ def test_unknown_scene_names_the_shipped_ones(capsys):
 
 def test_the_process_prints_no_traceback_and_debug_shows_it(tmp_path, fmu_file):
     path = write(tmp_path, "[parameters]\nnElements = 2.5\n")
-    env = {"PYTHONPATH": str(ROOT / "scripts"), "UC_FMU": str(fmu_file)}
+    env = {"PYTHONPATH": str(ROOT / "python"), "UC_FMU": str(fmu_file)}
     p = subprocess.run([sys.executable, "-m", "ucable.cli", "run", str(path)], capture_output=True, text=True, env=env)
     assert p.returncode == 2 and p.stderr.count("\n") == 1 and "Traceback" not in p.stderr, p.stderr
     q = subprocess.run([sys.executable, "-m", "ucable.cli", "--debug", "run", str(path)], capture_output=True,
@@ -237,3 +237,18 @@ def test_scenes_format_prints_the_reference(capsys):
     assert main(["scenes", "format"]) == 0
     out = capsys.readouterr().out
     assert out.startswith("# Scene format") and "`speed_kn`" in out
+
+
+@pytest.mark.parametrize("name", ["towed_body", "heave_lowering"])
+def test_system_runs_a_shipped_system(tmp_path, fmu_file, name):
+    out = tmp_path / "sys"
+    assert main(["system", name, "--duration", "2", "--out", str(out)]) == 0
+    rows = read_rows(out / "result.csv")
+    assert list(rows[0])[:5] == ["time", "towTension", "body.x", "body.y", "body.z"]
+    assert float(rows[-1]["time"]) == pytest.approx(2.0) and float(rows[-1]["towTension"]) > 0.0
+    assert (out / "result.png").stat().st_size > 0
+
+
+def test_system_unknown_name_exit_2(capsys):
+    assert main(["system", "towed_bdy"]) == 2
+    assert "did you mean 'towed_body'?" in capsys.readouterr().err

@@ -92,7 +92,7 @@ def test_where_the_chain_stays_taut_the_two_laws_agree(fmu_file):
     """Static catenary of the mooring chain with touchdown (everywhere in tension, 1.3 MN and more):
     the tension-only law equals the two-sided one above 1e-5 EA = 7.5 kN, so the equilibria agree
     to the static solver's convergence."""
-    from ucable import mooring
+    from studies import mooring
 
     a = mooring.fmu_statics(fmu_file, 20, enableCompression=True)
     b = mooring.fmu_statics(fmu_file, 20, enableCompression=False)
