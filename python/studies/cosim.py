@@ -96,7 +96,7 @@ class Scene:
 @dataclass
 class SceneResult:
     time: np.ndarray
-    vessel: np.ndarray  # (n, 7) state [x, y, psi, u, v, r, integral]
+    vessel: np.ndarray  # (n, 8) state [x, y, psi, u, v, r, speed integral, heading integral]
     thrust: np.ndarray
     tow: np.ndarray  # (n, 3) tow point position
     cable: dict  # name -> (n,) for CABLE_OUTPUTS

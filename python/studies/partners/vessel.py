@@ -69,28 +69,32 @@ class VesselParameters:
 
 class Autopilot:
     """Speed (PI + feed-forward of ramp acceleration, resistance and measured tow force) and heading
-    (PD + feed-forward of the reference turn rate) autopilot.
+    (PID + feed-forward of the reference turn rate) autopilot.
 
     speed_ref(t) -> (u_ref [m/s], du_ref/dt [m/s2]); heading_ref(t) -> (psi_ref [rad], r_ref [rad/s]).
-    Gains from pole placement on the rigid vessel: speed loop 0.2 rad/s, heading loop 0.3 rad/s,
-    both critically damped. Integrator with conditional anti-windup (frozen while the thrust saturates
-    in the direction of the error).
+    Gains from pole placement on the rigid vessel: speed loop a double pole at -0.2 rad/s, heading
+    loop a double pole at -0.3 rad/s and one at -heading_integral_bandwidth (0.05 rad/s), whose
+    integral action takes out the tow's steady yaw moment (0: the critically damped PD). Integrators
+    with conditional anti-windup (frozen while the actuator saturates in the direction of the error).
+    The same autopilot as the Vessel FMU's (tests/python/test_partner_fmus.py).
     """
 
     def __init__(self, p: VesselParameters, speed_ref, heading_ref, speed_bandwidth: float = 0.2,
-                 heading_bandwidth: float = 0.3):
+                 heading_bandwidth: float = 0.3, heading_integral_bandwidth: float = 0.05):
         self.p = p
         self.speed_ref = speed_ref
         self.heading_ref = heading_ref
         w = speed_bandwidth
         self.kp_u = 2.0 * w * p.m11
         self.ki_u = w * w * p.m11
-        w = heading_bandwidth
-        self.kp_psi = w * w * p.m66
-        self.kd_psi = 2.0 * w * p.m66
+        w, wi = heading_bandwidth, heading_integral_bandwidth
+        # poles -w, -w, -wi: (s + w)^2 (s + wi) = s^3 + (2 w + wi) s^2 + (w^2 + 2 w wi) s + w^2 wi
+        self.kp_psi = (w * w + 2.0 * w * wi) * p.m66
+        self.kd_psi = (2.0 * w + wi) * p.m66
+        self.ki_psi = w * w * wi * p.m66
 
-    def commands(self, t, u, psi, r, integral, fx_tow_body):
-        """(thrust [N], rudder yaw moment [N m], d(integral)/dt)."""
+    def commands(self, t, u, psi, r, integral, fx_tow_body, heading_integral=0.0):
+        """(thrust [N], rudder yaw moment [N m], d(integral)/dt, d(heading integral)/dt)."""
         p = self.p
         u_ref, a_ref = self.speed_ref(t)
         e = u_ref - u
@@ -102,22 +106,23 @@ class Autopilot:
 
         psi_ref, r_ref = self.heading_ref(t)
         err = math.remainder(psi_ref - psi, 2.0 * math.pi)
-        moment = (p.Nr * r_ref + p.Nrr * abs(r_ref) * r_ref
-                  + self.kp_psi * err + self.kd_psi * (r_ref - r))
-        moment = min(p.max_rudder_moment, max(-p.max_rudder_moment, moment))
-        return thrust, moment, de
+        raw = (p.Nr * r_ref + p.Nrr * abs(r_ref) * r_ref
+               + self.kp_psi * err + self.kd_psi * (r_ref - r) + self.ki_psi * heading_integral)
+        moment = min(p.max_rudder_moment, max(-p.max_rudder_moment, raw))
+        d_heading = 0.0 if (moment != raw and err * raw > 0.0) else err
+        return thrust, moment, de, d_heading
 
 
 class Vessel:
-    """State x = [x, y, psi, u, v, r, speed-error integral]."""
+    """State x = [x, y, psi, u, v, r, speed-error integral, heading-error integral]."""
 
-    N = 7
+    N = 8
 
     def __init__(self, params: VesselParameters, autopilot: Autopilot, x0=0.0, y0=0.0, psi0=0.0,
                  u0=0.0, max_substep: float = 0.05):
         self.p = params
         self.ap = autopilot
-        self.x = np.array([x0, y0, psi0, u0, 0.0, 0.0, 0.0])
+        self.x = np.array([x0, y0, psi0, u0, 0.0, 0.0, 0.0, 0.0])
         self.t = 0.0
         self.max_substep = max_substep
 
@@ -143,18 +148,18 @@ class Vessel:
     # ---------------------------------------------------------------- dynamics
     def derivatives(self, t, x, tow_force):
         p = self.p
-        _, _, psi, u, v, r, integral = x
+        _, _, psi, u, v, r, integral, heading_integral = x
         c, s = math.cos(psi), math.sin(psi)
         fx, fy = tow_force[0], tow_force[1]
         fxb, fyb = c * fx + s * fy, -s * fx + c * fy
-        thrust, moment, de = self.ap.commands(t, u, psi, r, integral, fxb)
+        thrust, moment, de, dh = self.ap.commands(t, u, psi, r, integral, fxb, heading_integral)
         X = -p.surge_resistance(u) + thrust + fxb
         Yf = -p.Yv * v - p.Yvv * abs(v) * v + fyb
         Nm = -p.Nr * r - p.Nrr * abs(r) * r + moment + p.tow_x * fyb - p.tow_y * fxb
         du = (X + p.m22 * v * r) / p.m11
         dv = (Yf - p.m11 * u * r) / p.m22
         dr = Nm / p.m66
-        return np.array([c * u - s * v, s * u + c * v, r, du, dv, dr, de])
+        return np.array([c * u - s * v, s * u + c * v, r, du, dv, dr, de, dh])
 
     def step(self, h, force_start, force_end):
         """Advance by h; the tow force (Earth x, y) varies linearly from force_start to force_end."""
@@ -171,10 +176,10 @@ class Vessel:
 
     def commands(self, tow_force):
         """(thrust [N], rudder yaw moment [N m]) of the autopilot now, given the tow force."""
-        _, _, psi, u, _, r, integral = self.x
+        _, _, psi, u, _, r, integral, heading_integral = self.x
         c, s = math.cos(psi), math.sin(psi)
-        thrust, moment, _ = self.ap.commands(self.t, u, psi, r, integral,
-                                             c * tow_force[0] + s * tow_force[1])
+        thrust, moment, _, _ = self.ap.commands(self.t, u, psi, r, integral,
+                                                c * tow_force[0] + s * tow_force[1], heading_integral)
         return thrust, moment
 
     @property
