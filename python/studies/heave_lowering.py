@@ -1,5 +1,6 @@
-"""The heave-lowering scene: a 2 t body on 500 m of umbilical hanging from a vessel in an irregular sea,
-the VesselRAO FMU driving the cable FMU's top through fmpy (scripts/manoeuvre heave-lowering).
+"""The heave-lowering scene: a 2 t body on 500 m of umbilical lowered at 0.25 m/s from a vessel in an
+irregular sea, the VesselRAO FMU driving the cable FMU's top through fmpy (scripts/manoeuvre
+heave-lowering).
 
 Vessel: the generic 80 m vessel of the VesselRAO FMU (its shipped RAO table; rao_file: another's),
 holding station at the origin, heading +x, in head seas (the waves travel along -x); the umbilical leaves
@@ -8,8 +9,9 @@ gamma 3.3, 200 components, ramped in over 20 s; the same waves.* parameters go t
 around the cable is the sea that moves the vessel. Umbilical and body: those of the scene file
 lowering_in_waves (500 m, d 0.03 m, 2 kg/m, EA 3e7 N, EI 500 N m2, Cdn 1.2, Cdt 0.01; a 2 t body of
 0.5 m3 with 1 t added mass and a drag area of 3 m2 on the lower end, bottomEnd 2), in 1000 m of water,
-starting from rest straight below the top. (That scene file prescribes a sinusoidal heave of the top
-instead.)
+starting from rest straight below the top. The winch (winchMode 1) pays out at lower_rate from the
+start, 75 m in 300 s, below its limit winch.maxLength = max_length (lower_rate 0: the body only
+hangs). (That scene file prescribes a sinusoidal heave of the top instead.)
 
 Master: at every communication point the vessel's tow-point position and velocity go to the cable's tow.*
 inputs and its acceleration to der(tow.v*) (fmi2SetRealInputDerivatives); the vessel's motion is a closed
@@ -52,6 +54,8 @@ class Scene:
     water_depth: float = 1000.0
     line_scene: str = "lowering_in_waves"  # the scene file whose umbilical and body hang here
     rao_file: str = ""  # the vessel's RAO table (VesselRAO's raoFile, docs/waves.md); "": the shipped one
+    lower_rate: float = 0.25  # [m/s] winch pay-out from the start (the input winch.rate, held)
+    max_length: float = 600.0  # [m] the winch's limit (winch.maxLength)
     extra: dict = field(default_factory=dict)  # further cable parameters
 
     def waves(self) -> dict:
@@ -71,15 +75,20 @@ class Scene:
             params = tomllib.load(f)["parameters"]
         return {k: v for k, v in params.items() if not k.startswith("waves.")}
 
+    def winch(self) -> dict:
+        """The winch's mode, limits and its rate (an input given its start value, as the system file)."""
+        return {"winchMode": 1, "winch.maxLength": self.max_length, "winch.maxRate": 1.0,
+                "winch.rate": self.lower_rate}
+
     def cable_parameters(self) -> dict:
         return {**self.line(), "nElements": self.n_elements, "waterDepth": self.water_depth, **self.waves(),
-                **self.extra}
+                **self.winch(), **self.extra}
 
 
 VESSEL_OUT = ["tow.x", "tow.y", "tow.z", "tow.vx", "tow.vy", "tow.vz", "tow.ax", "tow.ay", "tow.az",
               "heave", "pitch", "waveElevation"]
 CABLE_OUT = ["towTension", "minTension", "endTension", "endPosition.x", "endPosition.y", "endPosition.z",
-             "endVelocity.z", "waveElevation"]
+             "endVelocity.z", "waveElevation", "unstretchedLength"]
 COLUMNS = (["time"] + [f"vessel.{n}" for n in VESSEL_OUT] + [f"cable.{n}" for n in CABLE_OUT])
 
 
@@ -108,15 +117,22 @@ class Result:
             events.append((start, self.time[-1]))
         return events
 
+    def body_heave(self) -> np.ndarray:
+        """The body's vertical motion about its lowering: z + (paid-out length) - z(0)."""
+        L = self["cable.unstretchedLength"]
+        return self["cable.endPosition.z"] + (L - L[0]) - self["cable.endPosition.z"][0]
+
     def summary(self) -> dict:
         T = self["cable.towTension"]
         settled = self.time >= min(self.scene.ramp, self.time[-1])  # after the ramp (all of a short run)
-        body_z = self["cable.endPosition.z"][settled]
+        body_z = self.body_heave()[settled]
         tow_z = self["vessel.tow.z"][settled]
+        L = self["cable.unstretchedLength"]
         return {"towTension_min": float(T.min()), "towTension_max": float(T.max()),
                 "towTension_mean": float(T[settled].mean()), "towTension_std": float(T[settled].std()),
                 "minTension_min": float(self["cable.minTension"].min()), "snap_events": len(self.snap_events()),
                 "tow_heave_std": float(tow_z.std()), "body_heave_std": float(body_z.std()),
+                "lowered": float(L[-1] - L[0]), "body_depth_final": float(-self["cable.endPosition.z"][-1]),
                 "cpu": self.cpu}
 
 
@@ -180,8 +196,8 @@ def plot(path, r: Result) -> None:
     a = ax[2]
     a.plot(t, r["vessel.waveElevation"], lw=0.8, color="0.6", label="wave elevation at the vessel")
     a.plot(t, r["vessel.tow.z"], lw=0.9, label="top (stern) heave")
-    z0 = r["cable.endPosition.z"][0]
-    a.plot(t, r["cable.endPosition.z"] - z0, lw=0.9, label=f"body heave (about its start {z0:.1f} m)")
+    z0, lowered = r["cable.endPosition.z"][0], r["cable.unstretchedLength"][-1] - r["cable.unstretchedLength"][0]
+    a.plot(t, r.body_heave(), lw=0.9, label=f"body heave about its lowering ({-z0:.1f} m deep, lowered {lowered:.1f} m)")
     a.plot(t, r["cable.endPosition.x"] - r["cable.endPosition.x"][0], lw=0.9, ls="--",
            label="body surge (x)")
     a.set(xlabel="time [s]", ylabel="[m]", title="motion")
