@@ -218,6 +218,10 @@ def test_version(capsys):
     with pytest.raises(SystemExit) as e:
         main(["--version"])
     assert e.value.code == 0 and capsys.readouterr().out.strip() == f"ucable {ucable.__version__}"
+    import tomllib
+
+    with open(ROOT / "pyproject.toml", "rb") as f:
+        assert tomllib.load(f)["project"]["version"] == ucable.__version__
 
 
 @pytest.mark.parametrize("name, length, depth", [("deploy", 300.0, 244.14), ("recover", 100.0, 91.996),
