@@ -86,7 +86,8 @@ void TowTrajectory::evaluate(double t, Vec3& p, Vec3& v, Vec3& a) const {
     a = a0 + s * (6.0 * c3_ + s * (12.0 * c4_ + s * (20.0 * c5_)));
 }
 
-CableModel::CableModel(const UCParams& params, const WinchMesh* winch) : params_(params) {
+CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const StaticLayout* layout)
+    : params_(params) {
     if (params.winchMode != 0) {
         const int n0 = params.nSections <= 1 ? params.nElements : params.section[0].nElements;
         const double l0 = params.nSections <= 1 ? params.length : params.section[0].length;
@@ -95,7 +96,8 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch) : params_
     }
     topTangent_ = params.topEnd == UC_TOP_CLAMPED ? unit(params.topTangent) : Vec3(0, 0, -1);
     build_sections(params);
-    build_mesh(params);
+    const bool laid = layout && params.winchMode == 0;
+    build_mesh(params, laid && !layout->nodes.empty() ? &layout->nodes : nullptr);
     build_dof_map();
     if (this->winch()) {
         slotArcBase_ = slotArc_;
@@ -106,8 +108,26 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch) : params_
         lineMassBase_ = line_.massPerLength * line_.length;
     }
     anchor_ = Vec3(params.anchor[0], params.anchor[1], params.anchor[2]);
+    const SectionProps& last = sections_.back();
+    if (laid && layout->anchorResting && params.bottomEnd == UC_BOTTOM_ANCHORED && last.seabed.enabled &&
+        std::abs(anchor_.z() + last.seabed.depth) <= 0.5 * last.fluid.diameter) {
+        // An anchor on the seabed with the line resting next to it sits at the height the line rests
+        // at (within a few millimetres of z = -waterDepth): held lower or higher, the last element
+        // would press into the seabed or hang above it, and its contact would load the anchor
+        // vertically. A line that lifts off at the anchor keeps it where it is given.
+        anchor_.z() = resting_height();
+        anchorResting_ = true;
+    }
     body_ = PointBody{params.bodyMass, params.bodyVolume, params.bodyAddedMass, params.bodyCdA,
                       params.enableBodyFluidInertia != 0};
+    endContact_.seabed = last.seabed;
+    if (params.bottomEnd == UC_BOTTOM_TOWED_BODY) {
+        endContact_.footprint = body_footprint(body_.mass, body_.volume);
+        endContact_.seabed.smoothing = 0.05 * std::max(endContact_.footprint, last.fluid.diameter);
+    } else if (params.bottomEnd == UC_BOTTOM_FREE) {
+        // The 5-point rule's outer point sits 0.0469 l from the element's end: the tip beyond it.
+        endContact_.footprint = 0.0469101 * runs_.back().elementLength;
+    }
     std::string waveError;  // the parameters' check has refused waves that cannot be built
     sea_.build(params, waveError);
     if (!sea_.calm()) waveCache_.resize(static_cast<size_t>(nElements_) * kLoadQuadraturePoints + 1 + attachments_.size());
@@ -139,6 +159,13 @@ SectionInput section_input(const UCSection& s) {
 }
 
 }  // namespace
+
+double CableModel::resting_height() const {
+    const SectionProps& last = sections_.back();
+    const FluidProps& f = last.fluid;
+    const double weight = (f.massPerLength - f.rho * f.area) * f.gravity;
+    return -last.seabed.depth - (weight > 0.0 ? resting_penetration(last.seabed, weight) : 0.0);
+}
 
 void CableModel::build_sections(const UCParams& p) {
     std::vector<SectionInput> inputs;
@@ -204,7 +231,7 @@ void CableModel::build_sections(const UCParams& p) {
     }
 }
 
-void CableModel::build_mesh(const UCParams& p) {
+void CableModel::build_mesh(const UCParams& p, const std::vector<double>* nodes) {
     // Attachments on the line, by arc length; those inside a section split it so a node sits there.
     std::vector<std::pair<double, PointBody>> points;
     for (int k = 0; k < p.nAttachments && k < UC_MAX_ATTACHMENTS; ++k) {
@@ -214,7 +241,21 @@ void CableModel::build_mesh(const UCParams& p) {
     std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     const double snap = 1e-9 * line_.length;  // an attachment this close to a node is on it
     int first = 0;
-    for (int k = 0; k < static_cast<int>(sections_.size()); ++k) {
+    if (nodes) {
+        // The given nodes; elements of one length in a row share their tables.
+        for (size_t i = 0; i + 1 < nodes->size(); ++i) {
+            const double s0 = (*nodes)[i], l = (*nodes)[i + 1] - s0;
+            int k = 0;
+            while (k + 1 < static_cast<int>(sections_.size()) && s0 >= sections_[k + 1].s0 - snap) ++k;
+            if (!runs_.empty() && runs_.back().section == k && runs_.back().elementLength == l) {
+                ++runs_.back().count;
+            } else {
+                runs_.push_back(ElementRun{s0, l, first, 1, k});
+            }
+            ++first;
+        }
+    }
+    for (int k = 0; k < static_cast<int>(sections_.size()) && !nodes; ++k) {
         const SectionProps& sec = sections_[k];
         std::vector<double> cuts{sec.s0};
         for (const auto& point : points)
@@ -251,6 +292,20 @@ void CableModel::build_mesh(const UCParams& p) {
         tables_.push_back(make_element_tables(run.elementLength, kLoadQuadraturePoints, 3, contact_spacing()));
         tables_.back().axialModeWeight[1] = tables_.back().axialModeWeight[2] = kHigherStrainModeWeight;
     }
+    pinnedAttachments_.clear();
+    for (const auto& point : points) {
+        // Without bending stiffness a point load turns the line through a corner: its node is a
+        // pinned joint, each side with its own tangent. Not at a section's end (a joint already).
+        int k = 0;
+        while (k + 1 < static_cast<int>(sections_.size()) && point.first >= sections_[k + 1].s0 - snap) ++k;
+        const bool inside = point.first > sections_[k].s0 + snap && point.first < sections_[k].s0 + sections_[k].length - snap;
+        if (inside && sections_[k].EI == 0.0 && winchMesh_.elements == 0) pinnedAttachments_.push_back(point.first);
+    }
+    build_slots();
+    place_attachments(points);
+}
+
+void CableModel::build_slots() {
     // Node slots: one per node, and a second one after the node of a pinned joint.
     elementRun_.resize(nElements_);
     elementOffset_.resize(nElements_);
@@ -258,6 +313,7 @@ void CableModel::build_mesh(const UCParams& p) {
     duplicateSlot_.clear();
     std::vector<int> pinned;
     int slot = 0;
+    const double snap = 1e-9 * line_.length;
     for (int r = 0; r < static_cast<int>(runs_.size()); ++r) {
         const ElementRun& run = runs_[r];
         for (int i = 0; i < run.count; ++i) {
@@ -267,13 +323,18 @@ void CableModel::build_mesh(const UCParams& p) {
             slotArc_.push_back(run.s0 + run.elementLength * i);
             duplicateSlot_.push_back(false);
             ++slot;
-        }
-        const bool lastOfSection = r + 1 == static_cast<int>(runs_.size()) || runs_[r + 1].section != run.section;
-        if (lastOfSection && sections_[run.section].joint == 1) {
-            slotArc_.push_back(run.s0 + run.elementLength * run.count);  // the joint, end of this section
-            duplicateSlot_.push_back(false);
-            ++slot;
-            pinned.push_back(slot);  // the next section starts on a second slot at the same point
+            const double end = run.s0 + run.elementLength * (i + 1);
+            const bool lastOfSection = i + 1 == run.count &&
+                                       (r + 1 == static_cast<int>(runs_.size()) || runs_[r + 1].section != run.section);
+            bool pinnedHere = lastOfSection && sections_[run.section].joint == 1;
+            for (double s : pinnedAttachments_)
+                if (std::abs(s - end) <= snap && !lastOfSection) pinnedHere = true;
+            if (pinnedHere) {
+                slotArc_.push_back(end);  // the joint
+                duplicateSlot_.push_back(false);
+                ++slot;
+                pinned.push_back(slot);  // the next element starts on a second slot at the same point
+            }
         }
     }
     const ElementRun& last = runs_.back();
@@ -281,6 +342,9 @@ void CableModel::build_mesh(const UCParams& p) {
     duplicateSlot_.push_back(false);
     nSlots_ = slot + 1;
     for (int i : pinned) duplicateSlot_[i] = true;
+}
+
+void CableModel::place_attachments(const std::vector<std::pair<double, PointBody>>& points) {
     // Attachments on their nodes (the first slot of a pinned joint).
     for (const auto& point : points) {
         NodeAttachment at;
@@ -290,6 +354,11 @@ void CableModel::build_mesh(const UCParams& p) {
         for (int i = 1; i < nSlots_; ++i)
             if (std::abs(slotArc_[i] - point.first) < std::abs(slotArc_[best] - point.first)) best = i;
         at.offset = 6 * best;
+        int k = 0;
+        while (k + 1 < static_cast<int>(sections_.size()) && point.first >= sections_[k + 1].s0) ++k;
+        at.contact.footprint = body_footprint(at.body.mass, at.body.volume);
+        at.contact.seabed = sections_[k].seabed;
+        at.contact.seabed.smoothing = 0.05 * std::max(at.contact.footprint, sections_[k].fluid.diameter);
         attachments_.push_back(at);
     }
 }
@@ -542,6 +611,8 @@ Vec6 CableModel::end_node_residual(const double* X, const double* Xd, const doub
     // End couple M: virtual work M . (t x dr')/|r'| = (M x r')/|r'|^2 . dr' on the end tangent.
     const Vec3 rp = Eigen::Map<const Vec3>(X + gN + 3);
     R.tail<3>() = -loads.endCouple.cross(rp) / rp.squaredNorm();
+    if (endContact_.footprint > 0.0 && endContact_.seabed.enabled)
+        R.head<3>() += point_contact_load(endContact_, Eigen::Map<const Vec3>(X + gN), rd, nullptr);
     if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return R;
     Vec3 body = R.head<3>();
     add_point_body_residual(body_, fluid(), loads.current, point_wave_cache(0), X + gN, Xd + gN, Xdd + gN, body);
@@ -561,6 +632,12 @@ void CableModel::end_node_jacobian(const double* X, const double* Xd, const doub
         K.block<3, 3>(3, 3) = -cross_matrix(loads.endCouple) * (Mat3::Identity() / n2 - 2.0 * rp * rp.transpose() / (n2 * n2));
     }
     C.block<3, 3>(0, 0) = loads.endLoadDamping;
+    if (endContact_.footprint > 0.0 && endContact_.seabed.enabled) {
+        SeabedJacobian J;
+        point_contact_load(endContact_, Eigen::Map<const Vec3>(X + gN), Eigen::Map<const Vec3>(Xd + gN), &J);
+        K.block<3, 3>(0, 0) += J.dr;
+        C.block<3, 3>(0, 0) += J.drd;
+    }
     if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return;
     Mat3 Kb, Cb, Mb;
     point_body_jacobian(body_, fluid(), loads.current, point_wave_cache(0), X + gN, Xd + gN, Kb, Cb, Mb);
@@ -594,6 +671,9 @@ void CableModel::residual(const double* X, const double* Xd, const double* Xdd, 
         Vec3 Ra = Vec3::Zero();
         add_point_body_residual(at.body, fluid(), loads.current, point_wave_cache(1 + (&at - attachments_.data())), X + at.offset,
                                 Xd + at.offset, Xdd + at.offset, Ra);
+        if (at.contact.seabed.enabled)
+            Ra += point_contact_load(at.contact, Eigen::Map<const Vec3>(X + at.offset), Eigen::Map<const Vec3>(Xd + at.offset),
+                                     nullptr);
         for (int k = 0; k < 3; ++k) {
             const int j = free_[at.offset + k];
             if (j >= 0) Rfree[j] += Ra[k];

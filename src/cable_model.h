@@ -118,6 +118,7 @@ struct NodeAttachment {
     int offset = 0;  // global index of the node's position
     double s = 0.0;  // arc length [m]
     PointBody body;
+    PointContact contact;  // its own seabed contact (docs/model.md, "Seabed")
 };
 
 // Whole-line scales for tolerances, continuation and guesses. For a uniform line they are its
@@ -134,10 +135,24 @@ struct WinchMesh {
     double topLength = 0.0;
 };
 
+// What the static profile of a line held at both ends sets before the model is built
+// (src/mesh_grading.h): where the nodes go, and whether the line rests on the seabed at its anchor.
+struct StaticLayout {
+    // Arc lengths of the nodes from the tow point (0 first, the length last), with every section
+    // end and attachment among them; empty: each section's elements of equal length.
+    std::vector<double> nodes;
+    // An anchor on the seabed is held at the height the line rests at next to it.
+    bool anchorResting = false;
+    bool operator==(const StaticLayout& o) const { return nodes == o.nodes && anchorResting == o.anchorResting; }
+};
+
 class CableModel {
 public:
     // winch: the first section's mesh when winchMode != 0 (null: the start, all elements nominal).
-    explicit CableModel(const UCParams& params, const WinchMesh* winch = nullptr);
+    // layout: the mesh graded by the static profile and the anchor's resting height (null: each
+    // section's elements of equal length between its attachments, the anchor where it is given).
+    explicit CableModel(const UCParams& params, const WinchMesh* winch = nullptr,
+                        const StaticLayout* layout = nullptr);
 
     // The winch (winchMode != 0): only the top element's length changes between remeshes; it is
     // the one mutable part of the description (its tables and the arc lengths below it follow).
@@ -184,6 +199,12 @@ public:
     const CurrentProfile& current_profile() const { return profile_; }
     const SeaState& sea() const { return sea_; }
     bool far_end_prescribed() const;  // anchored or external
+    // The anchor's position: anchor.x/y/z, or on the seabed the height the line rests at there.
+    const Vec3& anchor() const { return anchor_; }
+    bool anchor_resting() const { return anchorResting_; }  // held at the line's resting height
+    // The height at which the last section rests on the seabed (z = -waterDepth less its resting
+    // penetration under its own submerged weight).
+    double resting_height() const;
     // Torque of torqueMode 2 for a twist angle of the far end against the tow point: the line's
     // torsional compliance is the sum of L_k / GJ_k over its sections.
     double torque_for_twist(double twist) const;
@@ -233,7 +254,9 @@ public:
 private:
     AxialProps scaled_axial(const SectionProps& section, const Loads& loads) const;
     void build_sections(const UCParams& p);
-    void build_mesh(const UCParams& p);
+    void build_mesh(const UCParams& p, const std::vector<double>* nodes);
+    void build_slots();
+    void place_attachments(const std::vector<std::pair<double, PointBody>>& points);
     void build_dof_map();
 
     UCParams params_;
@@ -246,6 +269,7 @@ private:
     std::vector<int> elementRun_, elementOffset_;
     std::vector<double> slotArc_;
     std::vector<bool> duplicateSlot_;  // the second slot of a pinned joint
+    std::vector<double> pinnedAttachments_;  // arc lengths of attachments on pinned nodes
     std::vector<NodeAttachment> attachments_;
     // The winch's mesh and the arc lengths at its build, which set_top_length shifts.
     WinchMesh winchMesh_;
@@ -254,8 +278,12 @@ private:
     LineScales lineBase_;
     double lineMassBase_ = 0.0;
     PointBody body_;  // the towed body (bottomEnd 2)
+    // The seabed contact of a free end's node (the towed body's, or the tip beyond the last
+    // element's outer contact point), footprint 0 where it has none.
+    PointContact endContact_;
     Vec3 topTangent_;
     Vec3 anchor_;
+    bool anchorResting_ = false;
     CurrentProfile profile_;
     SeaState sea_;
     // The waves' expansion at each load point (element-major), then at the towed body and at each
@@ -304,6 +332,12 @@ void CableModel::jacobian(const double* X, const double* Xd, const double* Xdd, 
     for (const NodeAttachment& at : attachments_) {
         Mat3 Ka, Ca, Ma;
         point_body_jacobian(at.body, fluid(), loads.current, point_wave_cache(1 + (&at - attachments_.data())), X + at.offset, Xd + at.offset, Ka, Ca, Ma);
+        if (at.contact.seabed.enabled) {
+            SeabedJacobian J;
+            point_contact_load(at.contact, Eigen::Map<const Vec3>(X + at.offset), Eigen::Map<const Vec3>(Xd + at.offset), &J);
+            Ka += J.dr;
+            Ca += J.drd;
+        }
         for (int a = 0; a < 3; ++a) {
             const int ja = free_[at.offset + a];
             if (ja < 0) continue;

@@ -828,6 +828,7 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
     p.waterDepth = line.waterDepth;
     p.gravity = line.gravity;
     p.waterDensity = line.waterDensity;
+    p.enableCompression = 0;  // MoorDyn's lines are tension-only: a deck's line is the same line
     return true;
 }
 

@@ -175,7 +175,17 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
     const int N = model.n_elements();
     const int gN = model.end_offset();
     const Vec3 towForce = -forces.element[0].segment<3>(0);
-    const Vec3 endForce = -forces.element[N - 1].segment<3>(6);
+    Vec3 endForce = -forces.element[N - 1].segment<3>(6);
+    if (model.anchor_resting() && model.element_section(N - 1).EI == 0.0) {
+        // A line without bending stiffness pulls its anchor along its tangent only. On a line that
+        // rests on the seabed at its anchor the element's reaction also carries its share of the
+        // contact, which differs from the weight wherever the mesh is too coarse for the seabed's
+        // transition (a clump sunk into the seabed on the line's last elements): projected on the
+        // tangent, that imbalance does not reach the anchor force. (On a hanging anchor the
+        // reaction is the more accurate: the nodal tangent's own error would show.)
+        const Vec3 t = Eigen::Map<const Vec3>(X + gN + 3).normalized();
+        endForce = endForce.dot(t) * t;
+    }
     for (int k = 0; k < 3; ++k) {
         out.towForce[k] = towForce[k];
         out.endForce[k] = endForce[k];

@@ -27,6 +27,27 @@ constexpr double kHullMargin = 1e-6;
 
 }  // namespace
 
+double body_footprint(double mass, double volume) {
+    const double steel = 7850.0;  // [kg/m3]
+    return std::cbrt(std::max(volume, mass / steel));
+}
+
+Vec3 point_contact_load(const PointContact& c, const Vec3& r, const Vec3& rd, SeabedJacobian* J) {
+    const Vec3 F = c.footprint * seabed_load(c.seabed, r, rd, J);
+    if (J) {
+        J->dr *= c.footprint;
+        J->drd *= c.footprint;
+    }
+    return F;
+}
+
+double resting_penetration(const SeabedProps& p, double weight) {
+    // k g(p) = w on the branches of contact_ramp
+    const double ramp = weight / p.stiffness;
+    if (ramp >= p.smoothing) return ramp;
+    return -p.smoothing + 2.0 * std::sqrt(p.smoothing * ramp);
+}
+
 // The cubic Hermite curve is the Bezier curve with control points r0, r0 + l t0 / 3, r1 - l t1 / 3,
 // r1, and lies in their convex hull: it is nowhere lower than the lowest of their heights.
 bool above_contact(const ElementTables& e, const SeabedProps& p, const double* X) {

@@ -31,6 +31,20 @@ struct SeabedJacobian {
 // Per-length residual contribution at a point; fills J when non-null. Zero above the seabed.
 Vec3 seabed_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJacobian* J);
 
+// The seabed contact of a point (an attachment, a towed body, the tip of a free end): the line's
+// contact per length times a footprint length [m]. A body's footprint is the cube root of its
+// volume (or of a steel body's of its mass).
+struct PointContact {
+    SeabedProps seabed{};
+    double footprint = 0.0;
+};
+double body_footprint(double mass, double volume);
+Vec3 point_contact_load(const PointContact& c, const Vec3& r, const Vec3& rd, SeabedJacobian* J);
+
+// Penetration [m] at which a line of this submerged weight per length [N/m] rests on the seabed
+// (negative: it rests inside the smoothing band, above z = -depth).
+double resting_penetration(const SeabedProps& p, double weight);
+
 // True when no point of the element (its 12 DOFs at X) can touch the contact band, so that
 // seabed_load is exactly zero at every sampling point, which can then be skipped without changing a
 // bit of the result.

@@ -9,7 +9,8 @@
 #include <cstring>
 #include <new>
 
-#include "catenary.h"
+#include "line_profile.h"
+#include "mesh_grading.h"
 #include "outputs.h"
 #include "rainflow.h"
 #include "statics.h"
@@ -19,7 +20,7 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 7;
+constexpr std::uint32_t kStateVersion = 8;
 
 // A driven end in a saved state.
 struct EndHeader {
@@ -46,6 +47,9 @@ struct StateHeader {
     std::int32_t winchElements;
     std::int32_t winchLimit;
     double winchMeshTop, winchLength, winchRate, winchTop0;
+    // the mesh graded by the static profile for the tow point meshTow (meshGraded 1)
+    std::int32_t meshGraded, reserved;
+    double meshTow[3], meshFar[3];
 };
 
 IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
@@ -253,39 +257,82 @@ void CableSimulation::set_environment(const UCInputs& in) {
     loads_.endCouple = vec(in.endCouple);
 }
 
-// A line of sinking sections from the tow point to an anchor starts from the catenary of a uniform
-// line (lying on the seabed where it reaches it), into X; false where that does not apply. From the
-// parabola of initial_guess, the continuation of a stiff power cable settled at some meshes (16, 25,
-// 30, ... of 250 m) into a folded equilibrium at up to four times the tension; from the catenary it
-// finds the one a user expects.
-bool CableSimulation::catenary_guess(const Vec3& towPoint, const Vec3& farPoint, double* X) const {
+// From the sections and attachments; the profile's top end is the higher of the two ends.
+bool CableSimulation::static_profile(const Vec3& towPoint, const Vec3& anchor, LineProfile& profile, bool& towOnTop,
+                                     std::string* why) const {
     const UCParams& p = model_.params();
-    if (p.bottomEnd != UC_BOTTOM_ANCHORED || !model_.attachments().empty() || model_.winch()) return false;
+    if (!model_.far_end_prescribed() || model_.winch()) return false;
+    towOnTop = towPoint.z() >= anchor.z();
+    std::vector<LineProfile::Segment> segments;
     for (int k = 0; k < model_.n_sections(); ++k) {
-        const FluidProps& f = model_.section(k).fluid;
-        if (!((f.massPerLength - f.rho * f.area) * f.gravity > 0.0)) return false;
+        const SectionProps& sec = model_.section(k);
+        const FluidProps& f = sec.fluid;
+        segments.push_back({sec.length, (f.massPerLength - f.rho * f.area) * f.gravity, sec.axial.EA});
     }
-    const bool towOnTop = towPoint.z() >= farPoint.z();
+    std::vector<LineProfile::PointLoad> points;
     const double L = model_.line().length;
-    Catenary catenary;
-    if (!catenary.solve(towOnTop ? towPoint : farPoint, towOnTop ? farPoint : towPoint, L, p.enableSeabed != 0,
-                        -p.waterDepth, std::max(model_.line().diameter, 0.01 * L)))
-        return false;
+    for (const NodeAttachment& at : model_.attachments()) {
+        const double weight = (at.body.mass - model_.fluid().rho * at.body.volume) * model_.fluid().gravity;
+        points.push_back({towOnTop ? at.s : L - at.s, weight});
+    }
+    if (!towOnTop) std::reverse(segments.begin(), segments.end());
+    return profile.solve(towOnTop ? towPoint : anchor, towOnTop ? anchor : towPoint, segments, points,
+                         p.enableSeabed != 0, -p.waterDepth, std::max(model_.line().diameter, 1e-3 * L), why);
+}
+
+// An anchored line starts from its static profile, into X; false where that does not apply. From
+// the parabola of initial_guess, the continuation of a stiff power cable settled at some meshes (16,
+// 25, 30, ... of 250 m) into a folded equilibrium at up to four times the tension, and lines resting
+// on a stiff seabed often found none; from the profile it finds the one a user expects.
+bool CableSimulation::profile_guess(const Vec3& towPoint, const Vec3& farPoint, double* X) const {
+    LineProfile profile;
+    bool towOnTop = true;
+    if (!static_profile(towPoint, farPoint, profile, towOnTop, nullptr)) return false;
+    const double L = model_.line().length;
     Vec3 r, tangent;
     for (int i = 0; i < model_.n_slots(); ++i) {
-        const double s = model_.slot_fraction(i) * L;
-        catenary.at(towOnTop ? s : L - s, r, tangent);
+        const double s = model_.slot_arc_length(i);
+        // the second slot of a pinned node takes the tangent below it
+        const bool below = i + 1 < model_.n_slots() && model_.slot_arc_length(i + 1) == s;
+        const double eps = below ? 1e-9 * L : -1e-9 * L;
+        profile.at(towOnTop ? std::clamp(s - eps, 0.0, L) : std::clamp(L - s + eps, 0.0, L), r, tangent);
         Eigen::Map<Vec3>(X + 6 * i) = r;
         Eigen::Map<Vec3>(X + 6 * i + 3) = towOnTop ? tangent : Vec3(-tangent);
     }
     return true;
 }
 
-void CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const {
+// Nodes graded by the static profile for an anchored line that rests on the seabed or carries
+// attachments (src/mesh_grading.h); the model is built again where its mesh changes.
+void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, bool apply) {
+    LineProfile profile;
+    bool towOnTop = true;
+    StaticLayout layout;
+    if (apply && static_profile(towPoint, farPoint, profile, towOnTop, nullptr)) {
+        // the anchor is the lower end, held where the line rests (CableModel): graded for that point
+        layout.anchorResting = towOnTop && profile.grounded_length() > 0.0 &&
+                               model_.params().bottomEnd == UC_BOTTOM_ANCHORED;
+        const Vec3 resting(farPoint.x(), farPoint.y(), model_.resting_height());
+        if (layout.anchorResting && std::abs(farPoint.z() - resting.z()) <= 0.5 * model_.line().diameter)
+            static_profile(towPoint, resting, profile, towOnTop, nullptr);
+        if (profile.grounded_length() > 0.0 || !model_.attachments().empty())
+            layout.nodes = graded_nodes(model_, profile, towOnTop);
+    }
+    meshTow_ = towPoint;
+    meshFar_ = farPoint;
+    const bool graded = !layout.nodes.empty() || layout.anchorResting;
+    if (graded == graded_ && layout == layout_) return;
+    graded_ = graded;
+    layout_ = layout;
+    replace_model(CableModel(model_.params(), nullptr, graded ? &layout_ : nullptr));
+}
+
+bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const {
     const UCParams& p = model_.params();
     std::vector<double> X(model_.n_global());
     model_.straight_line(towPoint, vec(p.initialDirection), X.data());
-    if (model_.far_end_prescribed() && !catenary_guess(towPoint, farPoint, X.data())) {
+    const bool profile = profileApplies_ && profile_guess(towPoint, farPoint, X.data());
+    if (model_.far_end_prescribed() && !profile) {
         // Chord from the tow point to the far end, sagging in its vertical plane when the line is
         // slack (a parabola whose length is about the cable length).
         const Vec3 chord = farPoint - towPoint;
@@ -301,11 +348,30 @@ void CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
             Eigen::Map<Vec3>(X.data() + 6 * i + 3) = drdxi.normalized() * std::max(D / L, 1.0);
         }
     }
+    if (p.enableSeabed && !model_.far_end_prescribed()) {
+        // A free end that reaches the seabed: the straight line bends there and trails along it
+        // behind the tow (a line clamped to the seabed instead piles its end into one point, from
+        // which the solver found folded equilibria).
+        const Vec3 d = vec(p.initialDirection).normalized();
+        Vec3 trail = -tow_.velocity;
+        trail.z() = 0.0;
+        if (trail.norm() < 1e-9) trail = Vec3(d.x(), d.y(), 0.0);
+        if (trail.norm() < 1e-9) trail = Vec3(-1.0, 0.0, 0.0);
+        trail.normalize();
+        const double reach = d.z() < 0.0 ? (towPoint.z() + p.waterDepth) / -d.z() : INFINITY;
+        for (int i = 0; i < model_.n_slots(); ++i) {
+            const double s = model_.slot_arc_length(i);
+            if (s <= reach) continue;
+            Eigen::Map<Vec3>(X.data() + 6 * i) = towPoint + reach * d + (s - reach) * trail;
+            Eigen::Map<Vec3>(X.data() + 6 * i + 3) = trail;
+        }
+    }
     if (p.enableSeabed) {
         // Start on or above the seabed: the guessed line lies on it where it would pass below.
         for (int i = 0; i < model_.n_slots(); ++i) X[6 * i + 2] = std::max(X[6 * i + 2], -p.waterDepth);
     }
     model_.restrict_to_free(X.data(), q.data());
+    return profile;
 }
 
 double CableSimulation::cable_torque(const UCInputs& in) {
@@ -365,6 +431,69 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
     return true;
 }
 
+// A line without bending stiffness that is longer than the way down to the seabed and across to
+// its anchor rests on a frictionless seabed with no tension at all, in no one shape: refused with
+// the lengths that would give it one.
+bool CableSimulation::statics_applies(const Vec3& farPoint, std::string& error) const {
+    LineProfile profile;
+    bool towOnTop = true;
+    std::string why;
+    if (!profileApplies_ || model_.line().EI > 0.0 || static_profile(tow_.position, farPoint, profile, towOnTop, &why) ||
+        why != "longer than the way down and across")
+        return true;
+    const Vec3 d = tow_.position - farPoint;
+    const double X = std::hypot(d.x(), d.y()), h = std::abs(d.z()), L = model_.line().length;
+    char text[600];
+    std::snprintf(text, sizeof text,
+                  "no static equilibrium: the line (%.6g m unstretched) is longer than the way down to the seabed "
+                  "and across to the far end (%.6g m + %.6g m = %.6g m), so on a frictionless seabed it rests with no "
+                  "tension and in no one shape; shorten it below %.6g m or move the far end more than %.6g m away "
+                  "horizontally",
+                  L, h, X, h + X, h + X, L - h);
+    error = text;
+    return false;
+}
+
+// The static state is checked before it is given out (docs/model.md, "Initial equilibrium"): no
+// element folded back on itself, and where the line's static profile is exact (no bending
+// stiffness, no current, calm water, at rest) the fairlead and anchor tensions within 1 % of it.
+bool CableSimulation::verify_statics(const Vec3& farPoint, std::string& error) const {
+    char text[700];
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const int g = model_.element_offset(e);
+        const double chord = (Eigen::Map<const Vec3>(X_.data() + g + 6) - Eigen::Map<const Vec3>(X_.data() + g)).norm();
+        if (chord < 0.5 * model_.element_length(e)) {
+            std::snprintf(text, sizeof text,
+                          "the static equilibrium found is folded: element %d (arc length %.6g to %.6g m) spans %.3g m "
+                          "for %.3g m of cable; refusing it as a start (more elements, or initMode = 1 to start from "
+                          "the guessed shape without equilibrium)",
+                          e + 1, model_.element_start(e), model_.element_start(e) + model_.element_length(e), chord,
+                          model_.element_length(e));
+            error = text;
+            return false;
+        }
+    }
+    LineProfile profile;
+    bool towOnTop = true;
+    const UCParams& p = model_.params();
+    const bool exact = profileApplies_ && model_.line().EI == 0.0 && loads_.current.uniform.isZero(0.0) &&
+                       (p.currentProfileRows == 0 || loads_.current.scale == 0.0) && model_.sea().calm() &&
+                       loads_.torque == 0.0 && static_profile(tow_.position, farPoint, profile, towOnTop, nullptr) &&
+                       profile.lowest_clearance() > -model_.line().diameter;
+    if (!exact) return true;
+    const double top = (towOnTop ? profile.top_force() : profile.bottom_force()).norm();
+    const double bottom = (towOnTop ? profile.bottom_force() : profile.top_force()).norm();
+    const double topError = outputs_.towTension / top - 1.0, bottomError = outputs_.endTension / bottom - 1.0;
+    if (std::abs(topError) <= kStaticsCheck && std::abs(bottomError) <= kStaticsCheck) return true;
+    std::snprintf(text, sizeof text,
+                  "the static equilibrium found differs from the line's elastic catenary, which is exact for it: "
+                  "tension %.6g N at the tow point and %.6g N at the far end against %.6g N and %.6g N (%+.2f %% and "
+                  "%+.2f %%); refusing a wrong start (more elements may resolve the line: nElements)",
+                  outputs_.towTension, outputs_.endTension, top, bottom, 100.0 * topError, 100.0 * bottomError);
+    error = text;
+    return false;
+}
+
 bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& error) {
     ++stateStamp_;  // the cached interface derivatives are stale from here on
     const UCParams& p = model_.params();
@@ -406,11 +535,16 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     loads_.tow = TowTrajectory::at_rest_in_time(tow_.position, tow_.velocity, tow_.acceleration, t0);
     end_.reset(vec(in.end), vec(in.endVelocity), Vec3::Zero(), false);
     loads_.end = TowTrajectory::at_rest_in_time(end_.position, end_.velocity, end_.acceleration, t0);
-    const Vec3 farPoint = p.bottomEnd == UC_BOTTOM_EXTERNAL ? end_.position : vec(p.anchor);
+    Vec3 farPoint = p.bottomEnd == UC_BOTTOM_EXTERNAL ? end_.position : vec(p.anchor);
     if (!check_geometry(farPoint, error)) return false;
+    // An anchored line, or one whose far end is held at rest, starts from its static profile.
+    profileApplies_ = p.bottomEnd == UC_BOTTOM_ANCHORED ||
+                      (p.bottomEnd == UC_BOTTOM_EXTERNAL && end_.velocity.isZero(0.0));
+    grade_mesh(tow_.position, farPoint, profileApplies_);
+    if (p.bottomEnd == UC_BOTTOM_ANCHORED) farPoint = model_.anchor();  // on the seabed: where the line rests
 
     const int n = model_.n_free();
-    initial_guess(tow_.position, farPoint, q_);
+    const bool fromProfile = initial_guess(tow_.position, farPoint, q_);
     {
         // Twist reference frames from the initial guess (planar: no geometric twist).
         std::vector<double> zero(n, 0.0);
@@ -439,8 +573,9 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
             if (j >= 0 && g % 6 < 3) v[j] = tow_.velocity[g % 6];
         }
     }
+    if (p.initMode == UC_INIT_EQUILIBRIUM && !statics_applies(farPoint, error)) return false;
     if (p.initMode == UC_INIT_EQUILIBRIUM) {
-        const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_);
+        const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile);
         if (!statics.converged) {
             error = statics.message;
             return false;
@@ -468,6 +603,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     restartPending_ = true;
     rainflow_.reset();
     update_outputs();
+    if (p.initMode == UC_INIT_EQUILIBRIUM && !verify_statics(farPoint, error)) return false;
     if (off_) {  // consistent: the winch runs at the rate of the initial tension
         y_[1] = yp_[0] = tension_winch_rate(outputs_.towTension, y_[0], nullptr);
         yp_[1] = 0.0;
@@ -897,14 +1033,15 @@ bool CableSimulation::remesh_once(RemeshAction action, std::string& error) {
     return set_integrator_tolerances(error);
 }
 
-void CableSimulation::rebuild(const WinchMesh& mesh) {
+void CableSimulation::rebuild(const WinchMesh& mesh) { replace_model(CableModel(model_.params(), &mesh)); }
+
+void CableSimulation::replace_model(CableModel&& model) {
     statsBase_ = total_stats();
     integratorStarted_ = false;
     restartPending_ = true;
-    const UCParams params = model_.params();
     integrator_.reset();
     staticSolver_.reset();
-    model_ = CableModel(params, &mesh);
+    model_ = std::move(model);
     allocate();
     derivativeLU_.reset();
     derivativeK_.reset();
@@ -977,6 +1114,11 @@ void CableSimulation::save_state(void* buffer) {
     header.winchLength = winchLength_;
     header.winchRate = winchRate_;
     header.winchTop0 = winchTop0_;
+    header.meshGraded = graded_ ? 1 : 0;
+    for (int k = 0; k < 3; ++k) {
+        header.meshTow[k] = meshTow_[k];
+        header.meshFar[k] = meshFar_[k];
+    }
     historyBuffer_.assign(integrator_->history_size(), 0.0);
     if (history) integrator_->save_history(historyBuffer_.data());
     auto* out = static_cast<unsigned char*>(buffer);
@@ -1002,6 +1144,16 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
             header.winchElements <= 100000 && std::isfinite(header.winchMeshTop) && header.winchMeshTop > 0.0 &&
             (header.winchElements != mesh.elements || header.winchMeshTop != mesh.topLength))
             rebuild(WinchMesh{header.winchElements, header.winchMeshTop});
+    }
+    if (size >= sizeof(StateHeader)) {
+        // A graded mesh is graded again for the tow point it was made for.
+        StateHeader header;
+        std::memcpy(&header, buffer, sizeof header);
+        const Vec3 tow(header.meshTow[0], header.meshTow[1], header.meshTow[2]);
+        const Vec3 far(header.meshFar[0], header.meshFar[1], header.meshFar[2]);
+        if (header.magic == kStateMagic && header.version == kStateVersion && tow.allFinite() && far.allFinite() &&
+            (header.meshGraded != (graded_ ? 1 : 0) || tow != meshTow_ || far != meshFar_))
+            grade_mesh(tow, far, header.meshGraded == 1);
     }
     if (size != state_size()) {
         error = "saved state has the wrong size for this cable (different nElements or end conditions)";

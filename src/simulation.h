@@ -13,6 +13,7 @@
 #include "cable_api.h"
 #include "cable_model.h"
 #include "integrator.h"
+#include "line_profile.h"
 #include "outputs.h"
 #include "rainflow.h"
 #include "torsion.h"
@@ -81,8 +82,22 @@ private:
     void expand_integrator_state(double t, const double* y, const double* yp);
 
     void set_environment(const UCInputs& in);
-    void initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
-    bool catenary_guess(const Vec3& towPoint, const Vec3& farPoint, double* X) const;
+    // True where the guess is the line's static profile (near the equilibrium).
+    bool initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
+    // The static profile of the line from the tow point to its held far end (src/line_profile.h),
+    // bending, current and waves left out; false where it does not apply, with the reason in why.
+    bool static_profile(const Vec3& towPoint, const Vec3& farPoint, LineProfile& profile, bool& towOnTop,
+                        std::string* why) const;
+    bool profile_guess(const Vec3& towPoint, const Vec3& farPoint, double* X) const;
+    // The mesh graded by the static profile where `apply` and the profile does (else each section's
+    // own), the model built again where that changes it.
+    void grade_mesh(const Vec3& towPoint, const Vec3& farPoint, bool apply);
+    // Before the static solver: false, with the reason, where the line has no static equilibrium.
+    bool statics_applies(const Vec3& farPoint, std::string& error) const;
+    // After it, on the outputs: false, with the reason, where its answer is not the line's state.
+    bool verify_statics(const Vec3& farPoint, std::string& error) const;
+    // Largest relative difference of the end tensions from the exact static profile [-].
+    static constexpr double kStaticsCheck = 0.01;
     bool check_geometry(const Vec3& farPoint, std::string& error) const;
     void update_outputs();
     bool set_integrator_tolerances(std::string& error);
@@ -114,6 +129,7 @@ private:
     bool remesh_once(RemeshAction action, std::string& error);
     static constexpr int kMaxRemeshPasses = 100000;
     void rebuild(const WinchMesh& mesh);
+    void replace_model(CableModel&& model);
 
     CableModel model_;
     int off_ = 0;  // 1: the constant-tension winch's unknown comes first in the integrator's vectors
@@ -140,6 +156,12 @@ private:
     double winchRate_ = 0.0, winchTop0_ = 0.0;
     int winchLimit_ = 0;        // -1 / +1: at the shortest / longest length (logged once per arrival)
     std::string event_;
+    // the mesh graded by the static profile at initialization (empty: each section's own), and the
+    // tow point it was graded for (a restored state's mesh is graded again from it)
+    bool graded_ = false;
+    StaticLayout layout_;
+    Vec3 meshTow_ = Vec3::Zero(), meshFar_ = Vec3::Zero();
+    bool profileApplies_ = false;  // an anchored line, or a far end held at rest
 
     // --- per-step environment and workspace ---
     SNCurve sn_;  // from the fatigue.* parameters

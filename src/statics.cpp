@@ -153,13 +153,66 @@ StaticsResult failed(StaticsResult& result, const char* format, Args... args) {
     return result;
 }
 
+// The stages after the continuation, on the real EA: the dense seabed contact, then the
+// tension-only law, then the final Newton polish. False with the message set.
+bool final_stages(const CableModel& model, BandSolver& solver, const Loads& loads, double t, Loads& staged,
+                  std::vector<double>& q, Workspace& w, StaticsResult& result) {
+    if (staged.axialContactOnly) {
+        staged.axialContactOnly = false;
+        ++result.continuationSteps;
+        if (!newton(model, solver, staged, t, q, w, result)) {
+            failed(result, "static equilibrium not found with the seabed contact sampled every "
+                           "seabedContactSpacing: residual %.3g N after %d iterations",
+                   result.residualNorm, result.newtonIterations);
+            return false;
+        }
+    }
+    if (model.section(0).axial.tensionOnly) {
+        // The tension-only law differs only where the two-sided equilibrium is in compression or
+        // within 1e-5 strain of it: start from that equilibrium.
+        staged.twoSidedAxial = false;
+        ++result.continuationSteps;
+        if (!newton(model, solver, staged, t, q, w, result)) {
+            failed(result, "static equilibrium not found with the tension-only law (enableCompression = "
+                           "false): residual %.3g N after %d iterations; part of the line is slack at rest, "
+                           "where a line without bending stiffness has no one shape",
+                   result.residualNorm, result.newtonIterations);
+            return false;
+        }
+    }
+    polish(model, solver, loads, t, q, w, result);
+    result.converged = true;
+    return true;
+}
+
 }  // namespace
 
 StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solver, const Loads& loads,
                                        double t, const std::vector<double>& vSteady,
-                                       std::vector<double>& q) {
+                                       std::vector<double>& q, bool nearGuess) {
     StaticsResult result;
     Workspace w(model);
+    Loads staged = loads;
+    staged.twoSidedAxial = true;  // a tension-only cable switches to its law at the end
+    // With contact sampled densely the continuation from a guess that lies partly below the seabed
+    // can settle into another equilibrium (excess length stored in a bump on the seabed, measured
+    // on a stiff power cable at 40 to 80 elements); on the elements' axial points it does not, and
+    // the dense contact then only moves the answer a little: it is switched on at the end.
+    staged.axialContactOnly = model.dense_contact();
+    for (int j = 0; j < model.n_free(); ++j) w.v[j] = vSteady[j];
+    const std::vector<double> guess = q;
+    if (nearGuess) {
+        // From the line's static profile: Newton's method on the real cable at the full loads,
+        // with the continuation below only where that fails.
+        ++result.continuationSteps;
+        if (newton(model, solver, staged, t, q, w, result) && final_stages(model, solver, loads, t, staged, q, w, result))
+            return result;
+        q = guess;
+        result = StaticsResult();
+        staged = loads;
+        staged.twoSidedAxial = true;
+        staged.axialContactOnly = model.dense_contact();
+    }
     // Stiffness continuation: first a soft cable (about 1 % strain under the loads), on which
     // large rotations are cheap, then EA grows tenfold per stage to its real value.
     const double EA = model.line().EA;
@@ -167,14 +220,7 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
     std::vector<double> accepted = q;
     double lambda = 0.0, step = 1.0;
     bool first = true;
-    Loads staged = loads;
     staged.axialStiffnessScale = stiffness;
-    staged.twoSidedAxial = true;  // a tension-only cable switches to its law at the end
-    // With contact sampled densely the continuation from a guess that lies partly below the seabed
-    // can settle into another equilibrium (excess length stored in a bump on the seabed, measured
-    // on a stiff power cable at 40 to 80 elements); on the elements' axial points it does not, and
-    // the dense contact then only moves the answer a little: it is switched on at the end.
-    staged.axialContactOnly = model.dense_contact();
     // Load continuation on the soft cable: lambda scales the relative flow and the end load.
     while (result.continuationSteps < kMaxContinuationSteps) {
         const double target = first ? 1.0 : std::min(1.0, lambda + step);
@@ -194,9 +240,10 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
         first = false;
     }
     if (lambda < 1.0) {
-        return failed(result, "static equilibrium not found: load continuation stalled at %.4g of the full loads "
-                              "(residual %.3g N after %d iterations); try initMode = 1 or another initialDirection",
-                      lambda, result.residualNorm, result.newtonIterations);
+        return failed(result, "static equilibrium not found: Newton's method from the %s stalled at %.4g of the "
+                              "full flow and end loads (residual %.3g N after %d iterations)",
+                      nearGuess ? "line's static profile and then the continuation" : "continuation", lambda,
+                      result.residualNorm, result.newtonIterations);
     }
     for (int j = 0; j < model.n_free(); ++j) w.v[j] = vSteady[j];
     while (stiffness < 1.0) {
@@ -209,29 +256,7 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
                           stiffness, result.residualNorm, result.newtonIterations);
         }
     }
-    if (staged.axialContactOnly) {
-        staged.axialContactOnly = false;
-        ++result.continuationSteps;
-        if (!newton(model, solver, staged, t, q, w, result)) {
-            return failed(result, "static equilibrium not found with the seabed contact sampled every "
-                                  "seabedContactSpacing: residual %.3g N after %d iterations",
-                          result.residualNorm, result.newtonIterations);
-        }
-    }
-    if (model.section(0).axial.tensionOnly) {
-        // The tension-only law differs only where the two-sided equilibrium is in compression or
-        // within 1e-5 strain of it: start from that equilibrium.
-        staged.twoSidedAxial = false;
-        ++result.continuationSteps;
-        if (!newton(model, solver, staged, t, q, w, result)) {
-            return failed(result, "static equilibrium not found with the tension-only law (enableCompression = "
-                                  "false): residual %.3g N after %d iterations; part of the line is slack at rest: "
-                                  "use enableCompression = true or initMode = 1",
-                          result.residualNorm, result.newtonIterations);
-        }
-    }
-    polish(model, solver, loads, t, q, w, result);
-    result.converged = true;
+    final_stages(model, solver, loads, t, staged, q, w, result);
     return result;
 }
 

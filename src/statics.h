@@ -24,9 +24,11 @@ struct StaticsResult {
 // motion (tow velocity on every position DOF for a towed cable, zero when anchored).
 // Continuation parameter lambda in [0, 1] scales the relative flow (tow velocity and current)
 // and the end load from 0 (gravity only) to their actual values.
+// nearGuess: q is close to the equilibrium (the line's static profile): Newton's method on the real
+// cable at the full loads first, the continuation only where that fails.
 StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solver, const Loads& loads,
                                        double t, const std::vector<double>& vSteady,
-                                       std::vector<double>& q);
+                                       std::vector<double>& q, bool nearGuess = false);
 
 // Accelerations a (free) consistent with the equations of motion at (q, v): M a = -R(q, v, 0).
 bool solve_consistent_acceleration(const CableModel& model, BandSolver& solver, const Loads& loads,

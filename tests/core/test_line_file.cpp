@@ -289,6 +289,7 @@ TEST(LineFile, ApplyWritesTheLineAndKeepsTheOtherParameters) {
     EXPECT_EQ(p.anchor[1], 0.0);
     EXPECT_EQ(p.anchor[2], -320.0);
     EXPECT_EQ(p.waterDepth, 320.0);
+    EXPECT_EQ(p.enableCompression, 0);  // tension-only, as MoorDyn's lines are
     EXPECT_EQ(p.gravity, uc::kMoorDynGravity);
     EXPECT_EQ(p.waterDensity, 1025.0);
     EXPECT_EQ(p.seabedStiffness, 2.5e6);

@@ -113,13 +113,19 @@ TouchdownResult touchdown_errors(int nElements) {
 }  // namespace
 
 TEST(Catenary, TouchdownMatchesTheElasticCatenary) {
-    // The bounds: fairlead tension within 0.1 %, grounded length within 0.5 % of the line.
-    // Measured: tension 5e-6 (20 elements) and 3e-5 (40); grounded length -1.1 % L with 20
-    // elements of 45 m and -0.22 % L with 40 (second order: the catenary's curvature jumps to
-    // zero at touchdown, inside an element), so 40 elements is the mesh for the length bound.
-    const TouchdownResult coarse = touchdown_errors(20), fine = touchdown_errors(40);
-    EXPECT_LT(std::abs(coarse.tensionError), 1e-3);
-    EXPECT_LT(std::abs(fine.tensionError), 1e-3);
-    EXPECT_LT(std::abs(fine.groundedError), 5e-3);
-    EXPECT_LT(std::abs(fine.groundedError), std::abs(coarse.groundedError) / 2) << "refinement must pay";
+    // With a node at the touchdown (the mesh graded by the static profile) the suspended elements
+    // hold a smooth catenary and the grounded ones lie straight: the fairlead tension is as exact as
+    // a suspended line's. The grounded length is then set by the contact model, not the mesh: the
+    // chain sinks w/k = 1 mm and the contact's smoothing band is 4 mm, and where the catenary rises
+    // z = sigma^2 / 2a (a = H / w, about 300 m) past the half-diameter height that defines the
+    // touchdown output, 5 mm of height move that point by a dz / sigma = 0.3 m = 3.5e-4 L.
+    // On 10 elements of 90 m the output's sampling of the rising part adds to that (measured
+    // 9e-4 L); the tension stays within 1e-4 (measured 2e-5).
+    for (int n : {10, 20, 40}) {
+        const TouchdownResult r = touchdown_errors(n);
+        EXPECT_LT(std::abs(r.tensionError), 1e-4) << n << " elements";
+        if (n >= 20) {
+            EXPECT_LT(std::abs(r.groundedError), 3.5e-4) << n << " elements";
+        }
+    }
 }

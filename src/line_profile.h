@@ -1,0 +1,74 @@
+// line_profile.h - the static profile of a line without bending stiffness, at rest and without
+// current, between its top point and a lower end (the anchor): the multi-segment elastic catenary
+// with point loads (clump weights, buoys), lying on a flat frictionless seabed from the lower end up
+// to its touchdown where it reaches it (docs/model.md, "Initial equilibrium"). It is exact for such a
+// line, so it serves three purposes: the static solver's starting shape, the placement of the nodes
+// (one at the touchdown, graded where the line turns), and the check of the solver's answer.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+namespace uc {
+
+class LineProfile {
+public:
+    struct Segment {
+        double length;  // unstretched [m]
+        double weight;  // submerged weight per unstretched length [N/m] (negative: buoyant)
+        double EA;      // [N]
+    };
+    struct PointLoad {
+        double s;       // unstretched arc length from the top end [m]
+        double weight;  // submerged weight [N] (negative: a buoy)
+    };
+
+    // Segments in order from the top end. With `seabed`, a lower end within `onSeabed` of the seabed
+    // at z = seabedZ rests on it, and so does the line from there up to the touchdown. False, with the
+    // reason in `why`, where no profile applies: both ends on one vertical, or a line that rests on
+    // the seabed with no tension at all (longer than the way down and across), or no solution found.
+    bool solve(const Eigen::Vector3d& top, const Eigen::Vector3d& bottom, const std::vector<Segment>& segments,
+               const std::vector<PointLoad>& points, bool seabed, double seabedZ, double onSeabed,
+               std::string* why = nullptr);
+
+    // Position and unit tangent (pointing from the top end towards the lower end) at unstretched
+    // arc length s from the top end.
+    void at(double s, Eigen::Vector3d& r, Eigen::Vector3d& tangent) const;
+    double length() const { return length_; }
+    // Arc length from the top end where the line reaches the seabed (length(): it does not rest).
+    double touchdown() const { return length_ - grounded_; }
+    double grounded_length() const { return grounded_; }
+    // Tension [N] just above arc length s (from the top), and the forces of the line on its ends.
+    double tension(double s) const;
+    Eigen::Vector3d top_force() const;
+    Eigen::Vector3d bottom_force() const;
+    // Angle [rad] the tangent turns through from the top end to arc length s, leaving out the
+    // corners at point loads.
+    double turning(double s) const;
+    // Lowest height of the hanging part above the seabed [m] (negative: it would pass through it).
+    double lowest_clearance() const { return clearance_; }
+
+private:
+    // A piece of constant weight per length between breakpoints, walked from the lower end.
+    struct Piece {
+        double u0, length;  // from the lower end [m]
+        double weight, EA;
+        double V0;          // vertical tension at its lower end (after a point load there)
+        double x0, z0;      // position of its lower end in the plane (x from the lower end to the top)
+        bool grounded;
+    };
+    void walk(double H, double v, std::vector<Piece>& pieces, double& x, double& z) const;
+    static void piece_offset(const Piece& p, double H, double l, double& dx, double& dz);
+    const Piece& piece_at(double u) const;
+
+    std::vector<Segment> segments_;  // from the lower end
+    std::vector<PointLoad> points_;  // arc length from the lower end
+    std::vector<Piece> pieces_;
+    Eigen::Vector3d bottom_ = Eigen::Vector3d::Zero(), u_ = Eigen::Vector3d::UnitX();
+    double length_ = 0.0, H_ = 0.0, v_ = 0.0, grounded_ = 0.0, clearance_ = 0.0, seabedHeight_ = 0.0;
+    bool seabed_ = false;
+};
+
+}  // namespace uc

@@ -1,0 +1,26 @@
+// mesh_grading.h - where the nodes of an anchored line go: graded by its static profile
+// (docs/model.md, "Initial equilibrium"). A line without bending stiffness turns sharply where it
+// leaves the seabed (its curvature jumps from 0 to w / H), which elements of equal length resolve
+// poorly when H / w is short against them; a node at the touchdown and nodes spread by arc length
+// and by the angle the line turns through represent it as well as a freely hanging line.
+#pragma once
+
+#include <vector>
+
+#include "cable_model.h"
+#include "line_profile.h"
+
+namespace uc {
+
+// Arc lengths of the nodes from the tow point (0 first, the line's length last). Each section keeps
+// its number of elements (one more per piece where attachments and the touchdown cut it into more
+// pieces than it has elements); inside a section the nodes sit at equal steps of
+//   M(s) = s / L_section + theta(s) / max(Theta_section, kGradingAngle),
+// theta the angle the profile turns through, with a node at each attachment and at the touchdown.
+// `towOnTop`: the profile's top end is the tow point (else the anchor, above it).
+std::vector<double> graded_nodes(const CableModel& model, const LineProfile& profile, bool towOnTop);
+
+// Below this total turning [rad] a section's nodes tend to equal spacing.
+constexpr double kGradingAngle = 0.5;
+
+}  // namespace uc

@@ -1,0 +1,144 @@
+// The static profile of a line without bending stiffness (multi-segment elastic catenary with point
+// loads and a frictionless seabed): its geometry (ends, stretched arc length, tangents, touchdown),
+// its balance of forces, and the touchdown of a chain mooring solved independently.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "line_profile.h"
+
+using uc::LineProfile;
+using Eigen::Vector3d;
+
+namespace {
+
+constexpr double kRigid = 1e15;  // EA of an inextensible line [N]
+
+// Walks the curve in n chords: their summed length, the largest gap between the chord direction
+// and the mean of the tangents at its ends, and the stretched length (1 + T / EA) du by the
+// midpoint rule.
+struct Walk {
+    double length = 0.0, tangentGap = 0.0, stretched = 0.0;
+};
+
+Walk walk(const LineProfile& p, double EA, int n) {
+    Walk w;
+    const double L = p.length();
+    Vector3d r0, t0, r1, t1;
+    p.at(0.0, r0, t0);
+    for (int k = 1; k <= n; ++k) {
+        p.at(L * k / n, r1, t1);
+        const Vector3d chord = r1 - r0;
+        w.length += chord.norm();
+        w.tangentGap = std::max(w.tangentGap, (chord.normalized() - (0.5 * (t0 + t1)).normalized()).norm());
+        w.stretched += (L / n) * (1.0 + p.tension(L * (k - 0.5) / n) / EA);
+        r0 = r1;
+        t0 = t1;
+    }
+    return w;
+}
+
+LineProfile solved(const Vector3d& top, const Vector3d& bottom, const std::vector<LineProfile::Segment>& segments,
+                   const std::vector<LineProfile::PointLoad>& points, bool seabed, double seabedZ) {
+    LineProfile p;
+    std::string why;
+    EXPECT_TRUE(p.solve(top, bottom, segments, points, seabed, seabedZ, 0.1, &why)) << why;
+    return p;
+}
+
+}  // namespace
+
+TEST(LineProfile, HangsBetweenItsEndsWithItsStretchedLengthAndTangents) {
+    const Vector3d top(10.0, -5.0, -10.0), bottom(-190.0, 40.0, -90.0);  // ends at different heights
+    const double EA = 2e6;  // soft enough to stretch by about 1 %
+    const LineProfile p = solved(top, bottom, {{120.0, 300.0, EA}, {180.0, 150.0, EA}}, {}, false, -1000.0);
+    Vector3d r, t;
+    p.at(0.0, r, t);
+    EXPECT_LT((r - top).norm(), 1e-9 * p.length());
+    p.at(p.length(), r, t);
+    EXPECT_LT((r - bottom).norm(), 1e-9 * p.length());
+    // chords of length l miss the arc by l^2 kappa^2 / 24 of it: 1e-7 at 3,000 chords; the
+    // midpoint rule for the stretch is as close
+    const Walk w = walk(p, EA, 3000);
+    EXPECT_NEAR(w.length, w.stretched, 1e-6 * p.length());
+    EXPECT_GT(w.stretched - p.length(), 1e-3 * p.length());  // it did stretch
+    EXPECT_LT(w.tangentGap, 1e-5);
+    EXPECT_EQ(p.grounded_length(), 0.0);
+}
+
+TEST(LineProfile, EndForcesBalanceTheWeightAndPointLoads) {
+    const Vector3d top(0.0, 0.0, -5.0), bottom(-400.0, 0.0, -100.0);
+    // a buoy and a clump on a chain-wire line, no seabed
+    const LineProfile p = solved(top, bottom, {{200.0, 400.0, 5e8}, {250.0, 1000.0, 1e9}},
+                                 {{150.0, -20000.0}, {320.0, 30000.0}}, false, -1e4);
+    const double weight = 200.0 * 400.0 + 250.0 * 1000.0 - 20000.0 + 30000.0;
+    const Vector3d sum = p.top_force() + p.bottom_force();
+    EXPECT_NEAR(sum.x(), 0.0, 1e-9 * weight);
+    EXPECT_NEAR(sum.z(), -weight, 1e-9 * weight);
+    // the tangent turns at a point load: the vertical tension jumps by its weight
+    Vector3d r1, t1, r2, t2;
+    p.at(320.0 - 1e-9, r1, t1);
+    p.at(320.0 + 1e-9, r2, t2);
+    EXPECT_LT((r1 - r2).norm(), 1e-6);
+    const double H = p.bottom_force().x();
+    const double V1 = -t1.z() / -t1.x() * H, V2 = -t2.z() / -t2.x() * H;  // vertical tension above and below
+    EXPECT_NEAR(V1 - V2, 30000.0, 1e-6 * 30000.0);
+}
+
+TEST(LineProfile, LiesOnTheSeabedUpToItsTouchdown) {
+    // The chain mooring of the benchmark: fairlead 20 m below the surface, anchor on the seabed at
+    // 200 m depth, 800 m away, 835 m of chain. Solved independently (the inextensible catenary by
+    // bisection in double precision, outside this code): a = H / w = 1004.36 m, 627.67 m hang.
+    const Vector3d top(0.0, 0.0, -20.0), bottom(-800.0, 0.0, -200.0);
+    const double w = 1000.0, L = 835.0;
+    const LineProfile p = solved(top, bottom, {{L, w, kRigid}}, {}, true, -200.0);
+    EXPECT_NEAR(p.bottom_force().x() / w, 1004.36, 0.01);
+    EXPECT_NEAR(p.touchdown(), 627.67, 0.01);
+    EXPECT_NEAR(p.bottom_force().z(), 0.0, 1e-12 * w * L);  // the anchor is pulled horizontally
+    Vector3d r, t;
+    p.at(p.touchdown() + 50.0, r, t);  // on the seabed, pointing along it towards the anchor
+    EXPECT_DOUBLE_EQ(r.z(), -200.0);
+    EXPECT_LT((t - Vector3d(-1.0, 0.0, 0.0)).norm(), 1e-12);
+    p.at(p.touchdown() - 1e-9, r, t);  // leaves it horizontally
+    EXPECT_NEAR(r.z(), -200.0, 1e-9);
+    EXPECT_LT(std::abs(t.z()), 1e-9);
+    EXPECT_NEAR(p.lowest_clearance(), 0.0, 1e-9);
+    // the tangent turns from the fairlead's angle to horizontal, and no further on the seabed
+    const Vector3d f = p.top_force();
+    EXPECT_NEAR(p.turning(L), std::atan2(-f.z(), -f.x()), 1e-12);
+    EXPECT_DOUBLE_EQ(p.turning(L), p.turning(p.touchdown()));
+}
+
+TEST(LineProfile, LiftsOffAtAClumpResting) {
+    // A wire with a heavy clump where it leaves the seabed: the clump's weight is shared between the
+    // seabed and the hanging part, so the line lifts off at the clump, turning a corner there.
+    const Vector3d top(0.0, 0.0, -10.0), bottom(-450.0, 0.0, -150.0);
+    const double w = 260.0, clump = 25000.0;
+    const LineProfile p = solved(top, bottom, {{500.0, w, 5.5e8}}, {{240.0, clump}}, true, -150.0);
+    EXPECT_NEAR(p.touchdown(), 240.0, 1e-9);
+    Vector3d r, above, below;
+    p.at(240.0 - 1e-9, r, above);
+    p.at(240.0 + 1e-9, r, below);
+    EXPECT_LT(std::abs(below.z()), 1e-12);  // resting beyond it
+    EXPECT_GT(std::abs(above.z()), 0.05);   // rising before it
+    const double V = -above.z() / -above.x() * p.bottom_force().x();
+    EXPECT_GT(V, 0.0);
+    EXPECT_LT(V, clump);  // part of the clump rests on the seabed
+}
+
+TEST(LineProfile, RefusesShapesItCannotHave) {
+    LineProfile p;
+    std::string why;
+    // the ends on one vertical
+    EXPECT_FALSE(p.solve(Vector3d(0, 0, 0), Vector3d(0, 0, -50), {{80.0, 100.0, 1e8}}, {}, false, 0.0, 0.1, &why));
+    // longer than the way down to the seabed and across it: no tension, no one shape
+    EXPECT_FALSE(p.solve(Vector3d(0, 0, -10), Vector3d(-100, 0, -100), {{200.0, 100.0, 1e8}}, {}, true, -100.0, 0.1, &why));
+    EXPECT_EQ(why, "longer than the way down and across");
+    // the same line without the seabed hangs free below it
+    EXPECT_TRUE(p.solve(Vector3d(0, 0, -10), Vector3d(-100, 0, -100), {{200.0, 100.0, 1e8}}, {}, false, -100.0, 0.1));
+    EXPECT_LT(p.lowest_clearance(), 0.0);
+    // taut: shorter than the chord, it stretches (so light that it sags by 2 mm)
+    ASSERT_TRUE(p.solve(Vector3d(0, 0, 0), Vector3d(-100, 0, -50), {{0.999 * std::hypot(100.0, 50.0), 1e-3, 1e6}},
+                        {}, false, -1e4, 0.1));
+    EXPECT_NEAR(p.tension(50.0), 1e6 * (1.0 / 0.999 - 1.0), 0.1);
+}
