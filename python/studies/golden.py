@@ -5,7 +5,7 @@ a one-section line described by the scalar parameters; for the Vessel partner FM
 wave motion left off) are checked against these files bit for bit by tests/python/test_golden.py.
 Regenerate only when a change of the numbers is intended:
 
-    .venv/bin/python -m studies.golden --write      (from scripts/, or with scripts/ on sys.path)
+    PYTHONPATH=python .venv/bin/python -m studies.golden --write
 """
 
 from __future__ import annotations
@@ -46,11 +46,14 @@ SCENES = {
 
 
 # The Vessel partner FMU: name -> (parameters, function t -> tow force, step, n steps). A speed ramp and a
-# turn under a tow force that changes with time (it yaws the vessel and loads the speed loop).
+# turn under a tow force that changes with time (it yaws the vessel and loads the speed loop). Recorded
+# with the heading loop a PD (its integral action, added later, off: headingIntegralBandwidth 0), which
+# the PID must reproduce bit for bit with its integral pole at 0.
 VESSEL_SCENES = {
     "vessel_ramp_turn": dict(
         parameters={"speed0": 1.1 * KNOT, "speed1": 2.4 * KNOT, "rampStart": 5.0, "rampDuration": 30.0,
-                    "turnStart": 10.0, "turnRate": math.radians(1.5), "turnAngle": math.radians(45.0)},
+                    "turnStart": 10.0, "turnRate": math.radians(1.5), "turnAngle": math.radians(45.0),
+                    "headingIntegralBandwidth": 0.0},
         force=lambda t: {"towForce.x": -4000.0 - 50.0 * t, "towForce.y": 1500.0 * math.sin(0.1 * t),
                          "towForce.z": -3000.0},
         step=0.5, steps=120),

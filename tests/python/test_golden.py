@@ -2,7 +2,7 @@
 (the variable schema, the compiled line description, one section described by the scalar
 parameters) reproduce every output of three short scenes exactly (python/studies/golden.py); the
 Vessel partner FMU without waves (waves.mode 0, whatever the other wave parameters) reproduces every
-output of a manoeuvre recorded before it had any."""
+output of a manoeuvre recorded before it had any (its heading loop's integral pole at 0: the PD it had then)."""
 
 import json
 
