@@ -212,7 +212,8 @@ def main_heave_lowering(args, fmu, out: Path) -> int:
     print(f"tow tension: min {s['towTension_min'] / 1e3:.1f} kN, max {s['towTension_max'] / 1e3:.1f} kN, "
           f"mean {s['towTension_mean'] / 1e3:.1f} kN, std {s['towTension_std'] / 1e3:.2f} kN (after the ramp); "
           f"least axial force {s['minTension_min'] / 1e3:.1f} kN, snap events {s['snap_events']}")
-    print(f"heave std after the ramp: top {s['tow_heave_std']:.2f} m, body {s['body_heave_std']:.2f} m")
+    print(f"heave std after the ramp: top {s['tow_heave_std']:.2f} m, body {s['body_heave_std']:.2f} m (about its "
+          f"lowering); lowered {s['lowered']:.1f} m, the body {s['body_depth_final']:.1f} m deep")
     print("wrote:\n  " + "\n  ".join(str(f) for f in files))
     return 0
 
