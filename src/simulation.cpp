@@ -601,6 +601,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     statsBase_ = IntegratorStats();
     integratorStarted_ = false;
     restartPending_ = true;
+    compressionWarned_ = false;
     rainflow_.reset();
     update_outputs();
     if (p.initMode == UC_INIT_EQUILIBRIUM && !verify_statics(farPoint, error)) return false;
@@ -734,7 +735,32 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     update_outputs();
     outputs_.towTensionMax = std::max(stepTensionMax_, outputs_.towTension);
     outputs_.towTensionMin = std::min(stepTensionMin_, outputs_.towTension);
+    warn_of_compression();
     return true;
+}
+
+// The two-sided axial law pushes with the full EA where a cable buckles or goes slack: the first
+// time the line carries more compression than an element of it can before buckling (Euler, pinned
+// over one element; and more than 1e-3 of the tension scale), the run says so once, with the law to
+// use (docs/robustness.md: the slack-snap case peaks at 95 kN two-sided and 406 kN tension-only).
+void CableSimulation::warn_of_compression() {
+    const UCParams& p = model_.params();
+    if (!p.enableCompression || compressionWarned_) return;
+    double buckling = INFINITY;
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const double l = model_.element_length(e);
+        buckling = std::min(buckling, 9.8696044010893586 * model_.element_section(e).EI / (l * l));
+    }
+    const double limit = std::max(buckling, 1e-3 * tensionScale_);
+    if (!(outputs_.minTension < -limit)) return;
+    compressionWarned_ = true;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "warning: at t = %.6g s the line carries %.4g N of axial compression (minTension), more than an "
+                  "element of it carries before buckling (%.4g N): the two-sided axial law (enableCompression = "
+                  "true) pushes where a cable goes slack; a line that can go slack wants enableCompression = false",
+                  time_, -outputs_.minTension, buckling);
+    event_ = event_.empty() ? std::string(text) : event_ + "; " + text;
 }
 
 // The integrator's absolute tolerance of each unknown from the physical ones. A local error of

@@ -100,6 +100,7 @@ private:
     static constexpr double kStaticsCheck = 0.01;
     bool check_geometry(const Vec3& farPoint, std::string& error) const;
     void update_outputs();
+    void warn_of_compression();
     bool set_integrator_tolerances(std::string& error);
     // An element's length (the winch's nominal one for its top element), the strain tolerance
     // (tensionTolerance x the tension scale / EA, times rms) and the time scale tau over which a
@@ -156,6 +157,7 @@ private:
     double winchRate_ = 0.0, winchTop0_ = 0.0;
     int winchLimit_ = 0;        // -1 / +1: at the shortest / longest length (logged once per arrival)
     std::string event_;
+    bool compressionWarned_ = false;  // the compression warning is given once per instance
     // the mesh graded by the static profile at initialization (empty: each section's own), and the
     // tow point it was graded for (a restored state's mesh is graded again from it)
     bool graded_ = false;

@@ -99,3 +99,30 @@ def test_where_the_chain_stays_taut_the_two_laws_agree(fmu_file):
     assert np.min(b["tension"]) > 1e-5 * mooring.CHAIN["EA"]
     assert b["towTension"] == pytest.approx(a["towTension"], rel=1e-9)
     assert np.max(np.abs(b["shape.z"] - a["shape.z"])) < 1e-6
+
+
+@pytest.mark.parametrize("compression", [True, False])
+def test_a_two_sided_line_that_goes_slack_says_which_law_to_use(fmu_file, compression):
+    """The slack-snap hard case (a 2 t body below 100 m of cable, the top heaving faster than the
+    body sinks): with the two-sided law the cable pushes with its full EA where it would buckle at a
+    few hundred newtons (-58 kN in docs/robustness.md), and the run says so once, naming the law to
+    use; tension-only, it says nothing."""
+    from ucable import hard_cases as hc
+    from ucable.fmu import CableFMU
+
+    case = hc.slack_snap(t_end=4.0)
+    params = dict(case.parameters, nElements=10, enableCompression=compression)
+    with CableFMU(fmu_file, parameters=params, logging_on=True) as c:
+        p, v, _ = case.trajectory(0.0)
+        c.initialize(0.0, case.t_end, inputs={"tow.z": p[2], "tow.vz": v[2]})
+        t = 0.0
+        while t < case.t_end - 1e-9:
+            p, v, _ = case.trajectory(t + case.step)
+            c.set({"tow.x": p[0], "tow.z": p[2], "tow.vz": v[2]})
+            c.do_step(case.step, t=t)
+            t += case.step
+        log = c.log_text()
+    warnings = log.count("axial compression (minTension)")
+    assert warnings == (1 if compression else 0), log[-2000:]
+    if compression:
+        assert "enableCompression = false" in log
