@@ -302,7 +302,7 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
             said = _fmu_message(cable) or str(exc)
             if "invalid parameter" in said:  # the scene's mistake, not a failure of the run
                 raise SceneFileError(f"{s.source}: {said}") from exc
-            raise SceneError(f"{s.name}: the FMU failed to initialize: {said}") from exc
+            raise SceneError(f"{s.source}: the FMU could not start: {said}") from exc
         data[0] = cable.get_reals(recorded)
         tow[0] = motion.at(0.0)[0]
         for k in range(n):
@@ -316,7 +316,7 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
                 progress(times[k + 1])
         cpu = time.process_time() - cpu0
     except FMICallException as exc:  # say what the FMU said (the variable it refused, the failure)
-        raise SceneError(f"{s.name}: the FMU failed at t = {t:g} s: {_fmu_message(cable) or exc}") from exc
+        raise SceneError(f"{s.source}: the FMU failed at t = {t:g} s: {_fmu_message(cable) or exc}") from exc
     finally:
         cable.free()
     columns = {name: data[:, i] for i, name in enumerate(recorded)}
