@@ -122,8 +122,8 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const Sta
                       params.enableBodyFluidInertia != 0};
     endContact_.seabed = last.seabed;
     if (params.bottomEnd == UC_BOTTOM_TOWED_BODY) {
-        endContact_.footprint = body_footprint(body_.mass, body_.volume);
-        endContact_.seabed.smoothing = 0.05 * std::max(endContact_.footprint, last.fluid.diameter);
+        endContact_.footprint = body_footprint(body_.mass, body_.volume, last.fluid.diameter);
+        endContact_.seabed.smoothing = 0.05 * std::max(body_size(body_.mass, body_.volume), last.fluid.diameter);
     } else if (params.bottomEnd == UC_BOTTOM_FREE) {
         // The 5-point rule's outer point sits 0.0469 l from the element's end: the tip beyond it.
         endContact_.footprint = 0.0469101 * runs_.back().elementLength;
@@ -356,9 +356,10 @@ void CableModel::place_attachments(const std::vector<std::pair<double, PointBody
         at.offset = 6 * best;
         int k = 0;
         while (k + 1 < static_cast<int>(sections_.size()) && point.first >= sections_[k + 1].s0) ++k;
-        at.contact.footprint = body_footprint(at.body.mass, at.body.volume);
+        const double d = sections_[k].fluid.diameter;
+        at.contact.footprint = body_footprint(at.body.mass, at.body.volume, d);
         at.contact.seabed = sections_[k].seabed;
-        at.contact.seabed.smoothing = 0.05 * std::max(at.contact.footprint, sections_[k].fluid.diameter);
+        at.contact.seabed.smoothing = 0.05 * std::max(body_size(at.body.mass, at.body.volume), d);
         attachments_.push_back(at);
     }
 }

@@ -39,12 +39,11 @@ private:
 };
 
 // Seabed outputs. A point of the line rests on the seabed when its centreline is within half a
-// diameter of the seabed. The contact is a smoothed penalty ramp that starts at a clearance of delta
-// (5 % of the diameter) and, on a stiff seabed, holds a line at rest a few millimetres above
-// z = -waterDepth with its cubic shape waving by about delta between the quadrature points: a test
-// against zero clearance (or delta) misses such a line; half a diameter does not, at every seabed
-// stiffness, and marks the touchdown point of a catenary within a few metres (where its height
-// above the seabed reaches half a diameter). Between samples the clearance is interpolated
+// diameter of the seabed. The contact is a penalty that starts at the seabed, sampled at quadrature
+// points, so a line at rest sinks a little into it and its cubic shape may wave by millimetres
+// between the points: a test against zero clearance misses such a line; half a diameter does not,
+// at every seabed stiffness, and marks the touchdown point of a catenary within a few metres (where
+// its height above the seabed reaches half a diameter). Between samples the clearance is interpolated
 // linearly. The contact force is integrated with the quadrature the equations use.
 // The clearance below which a point of the line rests on the seabed (see seabed_outputs).
 double resting_clearance(const SectionProps& section) {

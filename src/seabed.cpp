@@ -7,18 +7,22 @@
 namespace uc {
 namespace {
 
-// C1 blend of max(p, 0) over |p| < delta, and its derivative (the contact fraction).
+// C1 ramp that starts at the seabed: 0 above it (p <= 0), p^2 / (2 delta) over the first delta of
+// penetration, p - delta / 2 beyond; and its derivative (the contact fraction). No force acts above
+// the seabed: a line leaving an anchor on the seabed at a small angle is not pushed up by a band
+// above it (a band centred on the seabed pushed with k delta / 4 at zero penetration, which moved
+// the anchor tension of a nearly horizontal departure by 1.7 % on 80 elements).
 double contact_ramp(double p, double delta, double* slope) {
-    if (p <= -delta) {
+    if (p <= 0.0) {
         *slope = 0.0;
         return 0.0;
     }
     if (p >= delta) {
         *slope = 1.0;
-        return p;
+        return p - 0.5 * delta;
     }
-    *slope = (p + delta) / (2.0 * delta);
-    return (p + delta) * (p + delta) / (4.0 * delta);
+    *slope = p / delta;
+    return 0.5 * p * p / delta;
 }
 
 // Round-off allowance of above_contact [m]: the heights interpolated at the sampling points are
@@ -27,9 +31,14 @@ constexpr double kHullMargin = 1e-6;
 
 }  // namespace
 
-double body_footprint(double mass, double volume) {
+double body_size(double mass, double volume) {
     const double steel = 7850.0;  // [kg/m3]
     return std::cbrt(std::max(volume, mass / steel));
+}
+
+double body_footprint(double mass, double volume, double diameter) {
+    const double b = body_size(mass, volume);
+    return b * b / diameter;
 }
 
 Vec3 point_contact_load(const PointContact& c, const Vec3& r, const Vec3& rd, SeabedJacobian* J) {
@@ -44,8 +53,8 @@ Vec3 point_contact_load(const PointContact& c, const Vec3& r, const Vec3& rd, Se
 double resting_penetration(const SeabedProps& p, double weight) {
     // k g(p) = w on the branches of contact_ramp
     const double ramp = weight / p.stiffness;
-    if (ramp >= p.smoothing) return ramp;
-    return -p.smoothing + 2.0 * std::sqrt(p.smoothing * ramp);
+    if (ramp >= 0.5 * p.smoothing) return ramp + 0.5 * p.smoothing;
+    return std::sqrt(2.0 * p.smoothing * ramp);
 }
 
 // The cubic Hermite curve is the Bezier curve with control points r0, r0 + l t0 / 3, r1 - l t1 / 3,
@@ -53,7 +62,7 @@ double resting_penetration(const SeabedProps& p, double weight) {
 bool above_contact(const ElementTables& e, const SeabedProps& p, const double* X) {
     const double third = e.length / 3.0;
     const double lowest = std::min(std::min(X[2], X[2] + third * X[5]), std::min(X[8] - third * X[11], X[8]));
-    return lowest > -p.depth + p.smoothing + kHullMargin;
+    return lowest > -p.depth + kHullMargin;
 }
 
 Vec3 seabed_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJacobian* J) {
@@ -66,7 +75,7 @@ Vec3 seabed_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJaco
     const double ramp = contact_ramp(penetration, p.smoothing, &fraction);
     if (fraction == 0.0) return Vec3::Zero();
     // d(fraction)/dp inside the blend band
-    const double fractionSlope = std::abs(penetration) < p.smoothing ? 1.0 / (2.0 * p.smoothing) : 0.0;
+    const double fractionSlope = penetration > 0.0 && penetration < p.smoothing ? 1.0 / p.smoothing : 0.0;
     const double spring = p.stiffness * ramp;
     const double normal = spring - p.damping * fraction * rd.z();
     const Vec3 vh(rd.x(), rd.y(), 0.0);

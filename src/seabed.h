@@ -1,9 +1,9 @@
 // seabed.h - flat seabed at z = -waterDepth: penalty contact per unit length with damping and
 // regularized Coulomb friction (docs/model.md). Residual sign: F = -f_seabed.
 //
-// Penetration p = -waterDepth - z. The normal force per length is k g(p) with g a C1 blend of
-// the ramp max(p, 0) over |p| < delta (delta = 5 % of the diameter), so that Newton and BDF
-// see a smooth contact; the damping c (-z_dot) acts with the same contact fraction g'(p) in
+// Penetration p = -waterDepth - z. The normal force per length is k g(p) with g a C1 ramp that
+// starts at the seabed: 0 above it, p^2 / (2 delta) over the first delta = 5 % of the diameter of
+// penetration, p - delta / 2 beyond, so that Newton and BDF see a smooth contact; the damping c (-z_dot) acts with the same contact fraction g'(p) in
 // [0, 1]. Friction opposes the horizontal velocity v_h with magnitude mu k g(p) |v_h| /
 // sqrt(|v_h|^2 + v_eps^2): regularized Coulomb, the same coefficient axially and laterally.
 #pragma once
@@ -32,17 +32,18 @@ struct SeabedJacobian {
 Vec3 seabed_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJacobian* J);
 
 // The seabed contact of a point (an attachment, a towed body, the tip of a free end): the line's
-// contact per length times a footprint length [m]. A body's footprint is the cube root of its
-// volume (or of a steel body's of its mass).
+// contact per length times a footprint [m], the length of line with the same contact area. The
+// seabedStiffness per length is a stiffness per area (MoorDyn's kBot) times the diameter, so a body
+// of size b (the cube root of its volume, or of a steel body's of its mass) presses on b^2 / d.
 struct PointContact {
     SeabedProps seabed{};
     double footprint = 0.0;
 };
-double body_footprint(double mass, double volume);
+double body_size(double mass, double volume);                        // b [m]
+double body_footprint(double mass, double volume, double diameter);  // b^2 / d [m]
 Vec3 point_contact_load(const PointContact& c, const Vec3& r, const Vec3& rd, SeabedJacobian* J);
 
-// Penetration [m] at which a line of this submerged weight per length [N/m] rests on the seabed
-// (negative: it rests inside the smoothing band, above z = -depth).
+// Penetration [m] at which a line of this submerged weight per length [N/m] rests on the seabed.
 double resting_penetration(const SeabedProps& p, double weight);
 
 // True when no point of the element (its 12 DOFs at X) can touch the contact band, so that

@@ -433,11 +433,16 @@ TEST(SeabedTerm, RestingCableCarriesItsWeightAndFrictionOpposesSliding) {
     p.damping = 0.0;
     p.friction = 0.5;
     p.smoothing = 0.001;
-    // 1 cm penetration: 1000 N/m up; sliding at 1 m/s along x: friction 500 N/m against it.
+    // 1 cm penetration past the 1 mm ramp: k (p - delta / 2) = 950 N/m up; sliding at 1 m/s along
+    // x: friction 475 N/m against it.
     const Vec3 F = seabed_load(p, Vec3(0, 0, -50.01), Vec3(1, 0, 0), nullptr);
-    EXPECT_NEAR(-F.z(), 1000.0, 1e-9);
-    EXPECT_NEAR(F.x(), 500.0 / std::sqrt(1.0 + kFrictionVelocity * kFrictionVelocity), 1e-9);
-    EXPECT_EQ(seabed_load(p, Vec3(0, 0, -49.9), Vec3(1, 0, 0), nullptr), Vec3::Zero());
+    EXPECT_NEAR(-F.z(), 950.0, 1e-9);
+    EXPECT_NEAR(F.x(), 475.0 / std::sqrt(1.0 + kFrictionVelocity * kFrictionVelocity), 1e-9);
+    // inside the ramp: k p^2 / (2 delta)
+    EXPECT_NEAR(-seabed_load(p, Vec3(0, 0, -50.0005), Vec3::Zero(), nullptr).z(), 1e5 * 0.0005 * 0.0005 / 0.002, 1e-9);
+    // no force at the seabed or above it
+    EXPECT_EQ(seabed_load(p, Vec3(0, 0, -50.0), Vec3(1, 0, 0), nullptr), Vec3::Zero());
+    EXPECT_EQ(seabed_load(p, Vec3(0, 0, -49.9995), Vec3(1, 0, 0), nullptr), Vec3::Zero());
 }
 
 TEST(TorqueTerm, JacobianMatchesFiniteDifferences) {

@@ -80,8 +80,9 @@ def test_surge_follows_the_fairlead_short(fmu_file):
             T.append(c.get("towTension"))
         end = c.get_reals(["endPosition.x", "endPosition.z"])
     assert worst < 1.2 * m.SURGE_AMPLITUDE * (w * step) ** 3 / 6
-    # the anchor stays put, on the seabed at the height the chain rests at (w/k = 1 mm into it)
-    assert abs(end[0] - m.ANCHOR_X) < 1e-9 and 0.0 <= -m.DEPTH - end[1] < 2e-3
+    # the anchor stays put, on the seabed at the height the chain rests at: k g(p) = w with the
+    # contact ramp over delta = 5 % of d, at most w/k + delta / 2 = 1.1 + 1.9 mm into it
+    assert abs(end[0] - m.ANCHOR_X) < 1e-9 and 0.0 <= -m.DEPTH - end[1] < 3e-3
     # the tension swings around the static value (quasi-static range 1.34..1.85 MN at -5..+5 m)
     T = np.array(T[100:])
     assert T.max() > m.closed_form(5.0).fairlead_tension * 0.98

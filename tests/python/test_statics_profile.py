@@ -4,9 +4,9 @@ whose end reaches the seabed, and the refusals where the answer would be wrong.
 
 References: MoorPy's systems of lines and free points (rigid seabed, points resting within 1 mm),
 the same equations solved independently. Our seabed is a penalty: a line rests a few millimetres
-into it (w/k with the contact's smoothing), which moves a line's tensions by about that height over
-H / w; for these lines that is below 1e-4, and MoorPy's own solver tolerance is 1e-6 of the forces,
-so 1e-3 is the bound (the product's promise is 0.5 %)."""
+into it, at the penetration where the contact ramp k g(p) carries its weight (docs/model.md), so
+MoorPy's seabed is put at that depth. What remains is the discretization and MoorPy's solver
+tolerance (1e-6 of the forces): 1e-3 is the bound (the product's promise is 0.5 %)."""
 
 import math
 
@@ -24,10 +24,20 @@ TENSION_ONLY = {"bottomEnd": 1, "enableSeabed": True, "enableBending": False, "e
 BOUND = 1e-3
 
 
-def moorpy_tensions(depth, points, lines):
+def resting_penetration(props, k):
+    """Where a line of these properties rests on a seabed of stiffness k [N/m2]: k g(p) = w with the
+    contact ramp g = p^2 / (2 delta) up to delta = 5 % of the diameter, p - delta / 2 beyond."""
+    delta, ratio = 0.05 * props["diameter"], chain_weight(props) / k
+    return ratio + delta / 2 if ratio >= delta / 2 else math.sqrt(2.0 * delta * ratio)
+
+
+def moorpy_tensions(depth, points, lines, sink=0.0):
     """Fairlead and anchor tension of a MoorPy system: points (kind, position, mass, volume) from the
-    anchor up, lines (point A, point B, length, type) from the anchor up."""
+    anchor up, lines (point A, point B, length, type) from the anchor up; the seabed and every point
+    on it `sink` metres deeper (where our line rests)."""
     mp = pytest.importorskip("moorpy")
+    depth += sink
+    points = [(kind, [r[0], r[1], r[2] - sink if r[2] <= -depth + sink else r[2]], m, v) for kind, r, m, v in points]
     ms = mp.System(depth=depth, rho=RHO, g=G)
     for name, props in (("chain", CHAIN), ("wire", WIRE)):
         d = props["diameter"]
@@ -66,7 +76,8 @@ def test_clump_resting_on_the_seabed_leaves_the_mooring_as_it_is(fmu_file, n_bot
     fairlead, anchor = moorpy_tensions(
         150.0, [(1, [-900, 0, -150], 0, 0), (0, [-500, 0, -150], 15000, 1.91), (0, [-50, 0, -40], 0, 0),
                 (1, [0, 0, -15], 0, 0)],
-        [(1, 2, 350.0, "chain"), (2, 3, 600.0, "wire"), (3, 4, 50.0, "chain")])
+        [(1, 2, 350.0, "chain"), (2, 3, 600.0, "wire"), (3, 4, 50.0, "chain")],
+        sink=resting_penetration(CHAIN, 1e6))
     p = dict(TENSION_ONLY, waterDepth=150.0, seabedStiffness=1e6, **{"anchor.x": -900.0, "anchor.z": -150.0},
              nAttachments=1, **{"attachment[1].s": 650.0, "attachment[1].mass": 15000.0,
                                 "attachment[1].volume": 1.91})
@@ -86,7 +97,7 @@ def test_clump_where_the_line_lifts_off_turns_a_corner(fmu_file, n):
     With one tangent there the fairlead was 0.94 / 0.50 % off at 25 / 50 elements."""
     fairlead, anchor = moorpy_tensions(
         150.0, [(1, [-450, 0, -150], 0, 0), (0, [-220, 0, -150], 3000, 0.4), (1, [0, 0, -10], 0, 0)],
-        [(1, 2, 260.0, "wire"), (2, 3, 240.0, "wire")])
+        [(1, 2, 260.0, "wire"), (2, 3, 240.0, "wire")], sink=resting_penetration(WIRE, 1e6))
     p = dict(TENSION_ONLY, waterDepth=150.0, seabedStiffness=1e6, length=500.0, nElements=n, EI=0.0, **WIRE,
              **{"anchor.x": -450.0, "anchor.z": -150.0}, nAttachments=1,
              **{"attachment[1].s": 240.0, "attachment[1].mass": 3000.0, "attachment[1].volume": 0.4})
@@ -101,10 +112,10 @@ def test_grounded_anchor_force_is_horizontal_and_does_not_drift_with_seabed_stif
     the last element into the seabed (or held it above, on a stiff one) and its contact loaded the
     anchor vertically by up to 0.9 of the tension."""
     length, depth, x = 600.0, 150.0, -555.0
-    _, anchor = moorpy_tensions(depth, [(1, [x, 0, -depth], 0, 0), (1, [0, 0, -20], 0, 0)],
-                                [(1, 2, length, "chain")])
     ends = []
     for k in (3e5, 1e6, 1e7, 1e8):
+        _, anchor = moorpy_tensions(depth, [(1, [x, 0, -depth], 0, 0), (1, [0, 0, -20], 0, 0)],
+                                    [(1, 2, length, "chain")], sink=resting_penetration(CHAIN, k))
         for n in (10, 20):
             p = dict(TENSION_ONLY, waterDepth=depth, seabedStiffness=k, length=length, nElements=n, EI=0.0,
                      **CHAIN, **{"anchor.x": x, "anchor.z": -depth})
@@ -190,7 +201,8 @@ def test_clump_mooring_read_from_a_moordyn_deck_at_every_mesh(fmu_file, elements
     fairlead, anchor = moorpy_tensions(
         150.0, [(1, [-900, 0, -150], 0, 0), (0, [-500, 0, -150], 15000, 1.91), (0, [-50, 0, -40], 0, 0),
                 (1, [0, 0, -15], 0, 0)],
-        [(1, 2, 350.0, "chain"), (2, 3, 600.0, "wire"), (3, 4, 50.0, "chain")])
+        [(1, 2, 350.0, "chain"), (2, 3, 600.0, "wire"), (3, 4, 50.0, "chain")],
+        sink=resting_penetration(CHAIN, 1e6))
     p = {"lineFile": str(deck), "lineFileElements": elements, "enableSeabed": True, "seabedStiffness": 1e6}
     top, end, end_z, _ = fmu_tensions(fmu_file, p, -15.0)
     assert top == pytest.approx(fairlead, rel=BOUND)
