@@ -523,38 +523,76 @@ WaveExpansion* CableModel::point_wave_cache(size_t i) const {
     return waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(nElements_) * kLoadQuadraturePoints + i];
 }
 
+const double* CableModel::element_velocities(int e, const double* X, const double* Xd, double* buffer) const {
+    const int g0 = elementOffset_[e];
+    if (e != 0 || topRate_ == 0.0) return Xd + g0;
+    top_material_velocity(X + g0, Xd + g0, buffer);  // the top element moves with the material
+    return buffer;
+}
+
+Vec12 CableModel::top_rate_direction(const double* X) const {
+    const ShapeValues s = hermite_shape(0.0, top_length());
+    Vec12 d = Vec12::Zero();
+    d.segment<3>(0) = Eigen::Map<const Vec3>(X + 3);
+    for (int k = 0; k < 4; ++k) d.segment<3>(3) += s.d2N[k] * Eigen::Map<const Vec3>(X + 3 * k);
+    return d;
+}
+
+void CableModel::top_material_velocity(const double* X, const double* Xd, double* Xm) const {
+    Eigen::Map<Vec12> out(Xm);
+    out = Eigen::Map<const Vec12>(Xd) + topRate_ * top_rate_direction(X);
+}
+
 void CableModel::element_residual(int e, const double* X, const double* Xd, const double* Xdd,
                                   const Loads& loads, double* R) const {
     const int g0 = elementOffset_[e];
+    double Xm[12];
+    const double *x = X + g0, *xd = element_velocities(e, X, Xd, Xm), *xdd = Xdd + g0;
     const ElementTables& tables = tables_[elementRun_[e]];
     const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
     for (int a = 0; a < 12; ++a) R[a] = 0.0;
-    add_mass_force(tables, sec.fluid.massPerLength, Xdd + g0, R);
-    add_axial_force(tables, scaled_axial(sec, loads), X + g0, Xd + g0, R);
-    if (sec.EI > 0.0) add_bending_force(tables, sec.EI, X + g0, R);
-    if (sec.bendingDamping > 0.0) add_bending_force(tables, sec.bendingDamping, Xd + g0, R);
-    if (loads.torque != 0.0) add_torque_force(tables, loads.torque, X + g0, R);
-    add_hydro_force(tables, sec.fluid, loads.current, X + g0, Xd + g0, Xdd + g0, R,
+    add_mass_force(tables, sec.fluid.massPerLength, xdd, R);
+    add_axial_force(tables, scaled_axial(sec, loads), x, xd, R);
+    if (sec.EI > 0.0) add_bending_force(tables, sec.EI, x, R);
+    if (sec.bendingDamping > 0.0) add_bending_force(tables, sec.bendingDamping, xd, R);
+    if (loads.torque != 0.0) add_torque_force(tables, loads.torque, x, R);
+    add_hydro_force(tables, sec.fluid, loads.current, x, xd, xdd, R,
                     waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
-    if (sec.seabed.enabled) add_seabed_force(tables, sec.seabed, X + g0, Xd + g0, R, loads.axialContactOnly);
+    if (sec.seabed.enabled) add_seabed_force(tables, sec.seabed, x, xd, R, loads.axialContactOnly);
 }
 
 void CableModel::element_jacobian(int e, const double* X, const double* Xd, const double* Xdd,
                                   const Loads& loads, Mat12& K, Mat12& C, Mat12& M) const {
     const int g0 = elementOffset_[e];
+    if (e == 0 && topRate_ != 0.0) {
+        // The material velocity depends on the positions too: dXm/dX = rate d(top_rate_direction)/dX
+        // (r'0 in the tow node's velocity, r''0 = sum_k d2N_k(0) X_k in its tangent rate).
+        double Xm[12];
+        element_jacobian_at(e, X + g0, element_velocities(e, X, Xd, Xm), Xdd + g0, loads, K, C, M);
+        const ShapeValues s = hermite_shape(0.0, top_length());
+        const Eigen::Matrix<double, 12, 3> Cr = C.middleCols<3>(0), Ct = C.middleCols<3>(3);
+        K.middleCols<3>(3) += topRate_ * Cr;
+        for (int k = 0; k < 4; ++k) K.middleCols<3>(3 * k) += (topRate_ * s.d2N[k]) * Ct;
+        return;
+    }
+    element_jacobian_at(e, X + g0, Xd + g0, Xdd + g0, loads, K, C, M);
+}
+
+void CableModel::element_jacobian_at(int e, const double* x, const double* xd, const double* xdd,
+                                     const Loads& loads, Mat12& K, Mat12& C, Mat12& M) const {
     const ElementTables& tables = tables_[elementRun_[e]];
     const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
     K.setZero();
     C.setZero();
     M.setZero();
     add_mass_jacobian(tables, sec.fluid.massPerLength, M);
-    add_axial_jacobian(tables, scaled_axial(sec, loads), X + g0, Xd + g0, K, C);
+    add_axial_jacobian(tables, scaled_axial(sec, loads), x, xd, K, C);
     if (sec.EI > 0.0) add_bending_jacobian(tables, sec.EI, K);
     if (sec.bendingDamping > 0.0) add_bending_jacobian(tables, sec.bendingDamping, C);
-    if (loads.torque != 0.0) add_torque_jacobian(tables, loads.torque, X + g0, K);
-    add_hydro_jacobian(tables, sec.fluid, loads.current, X + g0, Xd + g0, Xdd + g0, K, C, M,
+    if (loads.torque != 0.0) add_torque_jacobian(tables, loads.torque, x, K);
+    add_hydro_jacobian(tables, sec.fluid, loads.current, x, xd, xdd, K, C, M,
                        waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
-    if (sec.seabed.enabled) add_seabed_jacobian(tables, sec.seabed, X + g0, Xd + g0, K, C, loads.axialContactOnly);
+    if (sec.seabed.enabled) add_seabed_jacobian(tables, sec.seabed, x, xd, K, C, loads.axialContactOnly);
 }
 
 bool CableModel::far_end_prescribed() const {

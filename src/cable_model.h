@@ -163,6 +163,19 @@ public:
     // seabedContactSpacing where the seabed is on (0 otherwise: no contact rule to build).
     double contact_spacing() const { return params().enableSeabed ? params().seabedContactSpacing : 0.0; }
     void set_top_length(double length);  // no allocation
+    // The winch's speed (+ pays out): the line runs through the sheave at it, so the material at
+    // the tow node moves with the sheave plus `rate` along the line. The top element's velocity
+    // field is the material's: at the tow node velocity v0 + rate r'0 and tangent rate
+    // v'0 + rate r''0 (docs/winch.md, "The top element's velocity").
+    void set_top_rate(double rate) { topRate_ = winch() ? rate : 0.0; }
+    double top_rate() const { return topRate_; }
+    // The top element's 12 nodal velocities of the material (Xd of the element where the rate is 0).
+    void top_material_velocity(const double* X, const double* Xd, double* Xm) const;
+    // d(top_material_velocity)/d(rate): [r'0, r''0, 0, 0] of the top element.
+    Vec12 top_rate_direction(const double* X) const;
+    // The 12 velocities element e's forces see: Xd's, or the material's in the winch's top element
+    // (written to buffer).
+    const double* element_velocities(int e, const double* X, const double* Xd, double* buffer) const;
 
     const UCParams& params() const { return params_; }
     int n_elements() const { return nElements_; }
@@ -253,6 +266,9 @@ public:
 
 private:
     AxialProps scaled_axial(const SectionProps& section, const Loads& loads) const;
+    // element_jacobian at the element's own 12 values x, xd, xdd (the velocities as given).
+    void element_jacobian_at(int e, const double* x, const double* xd, const double* xdd, const Loads& loads,
+                             Mat12& K, Mat12& C, Mat12& M) const;
     void build_sections(const UCParams& p);
     void build_mesh(const UCParams& p, const std::vector<double>* nodes);
     void build_slots();
@@ -274,6 +290,7 @@ private:
     // The winch's mesh and the arc lengths at its build, which set_top_length shifts.
     WinchMesh winchMesh_;
     double winchNominal_ = 0.0;
+    double topRate_ = 0.0;
     std::vector<double> slotArcBase_, runStartBase_, sectionStartBase_, attachmentBase_;
     LineScales lineBase_;
     double lineMassBase_ = 0.0;

@@ -41,18 +41,43 @@ void LineProfile::piece_offset(const Piece& p, double H, double l, double& dx, d
     dx += H * l / p.EA;
 }
 
-void LineProfile::walk(double H, double v, std::vector<Piece>& pieces, double& x, double& z) const {
+void LineProfile::walk(double H, double v, const std::vector<double>& rests, std::vector<Piece>& pieces, double& x,
+                       double& z, std::vector<double>* minima) const {
     pieces.clear();
+    if (minima) minima->clear();
     x = z = 0.0;
     const double snap = 1e-12 * length_;
     double u = 0.0;
-    double hanging = v;  // v + W(u): the vertical tension if the line hung from here
+    double hanging = v;  // the vertical tension: v + W(u) from the lower end while it rests there
     bool grounded = seabed_ && v < 0.0;
     size_t ip = 0;
+    int found = 0;  // local minima of the hanging line passed so far
+    auto push = [&](const Piece& p, double l) {
+        double dx, dz;
+        piece_offset(p, H, l, dx, dz);
+        pieces.push_back(p);
+        pieces.back().length = l;
+        x += dx;
+        z += dz;
+    };
     auto apply_points = [&](double upTo) {
         while (ip < points_.size() && points_[ip].s <= upTo + snap) {
-            hanging += points_[ip].weight;
+            const double before = hanging, P = points_[ip].weight;
             ++ip;
+            if (grounded && P < 0.0) {
+                // a buoy cannot rest: the line has lifted off by here (the solution lifts before it)
+                grounded = false;
+                hanging = P;
+                continue;
+            }
+            hanging += P;
+            if (!grounded && before < 0.0 && hanging >= 0.0) {
+                // the line comes down to this point and rises from it: a local minimum; where it
+                // rests on the seabed, the seabed's reaction rests[found] (>= 0) takes part of its weight
+                if (minima) minima->push_back(z);
+                if (found < static_cast<int>(rests.size())) hanging -= std::max(rests[found], 0.0);
+                ++found;
+            }
         }
         if (grounded && hanging >= 0.0) grounded = false;
     };
@@ -63,20 +88,34 @@ void LineProfile::walk(double H, double v, std::vector<Piece>& pieces, double& x
             double next = ip < points_.size() ? std::min(end, points_[ip].s) : end;
             if (next <= u + snap) next = end;
             double l = next - u;
-            bool lifts = false;
-            if (grounded && seg.weight > 0.0 && hanging + seg.weight * l > 0.0) {
-                l = -hanging / seg.weight;  // the touchdown inside this piece
-                lifts = true;
+            if (grounded) {
+                const bool lifts = seg.weight > 0.0 && hanging + seg.weight * l > 0.0;
+                if (lifts) l = -hanging / seg.weight;  // the touchdown inside this piece
+                push(Piece{u, l, seg.weight, seg.EA, 0.0, x, z, true}, l);
+                u += l;
+                hanging = lifts ? 0.0 : hanging + seg.weight * l;
+                if (lifts) grounded = false;
+                continue;
             }
-            Piece p{u, l, seg.weight, seg.EA, grounded ? 0.0 : hanging, x, z, grounded};
-            double dx, dz;
-            piece_offset(p, H, l, dx, dz);
-            pieces.push_back(p);
-            x += dx;
-            z += dz;
+            if (hanging < 0.0 && seg.weight > 0.0 && hanging + seg.weight * l > 0.0) {
+                // a local minimum inside this piece (the vertex, V = 0); where it rests on the
+                // seabed, it lies there for rests[found] (>= 0) of its length
+                const double lv = -hanging / seg.weight;
+                push(Piece{u, lv, seg.weight, seg.EA, hanging, x, z, false}, lv);
+                u += lv;
+                hanging = 0.0;
+                if (minima) minima->push_back(z);
+                const double rest = found < static_cast<int>(rests.size()) ? std::min(std::max(rests[found], 0.0), end - u) : 0.0;
+                ++found;
+                if (rest > 0.0) {
+                    push(Piece{u, rest, seg.weight, seg.EA, 0.0, x, z, true}, rest);
+                    u += rest;
+                }
+                continue;
+            }
+            push(Piece{u, l, seg.weight, seg.EA, hanging, x, z, false}, l);
             u += l;
-            hanging = lifts ? 0.0 : hanging + seg.weight * l;
-            if (lifts) grounded = false;
+            hanging += seg.weight * l;
         }
         u = end;
     }
@@ -110,6 +149,7 @@ bool LineProfile::solve(const Eigen::Vector3d& top, const Eigen::Vector3d& botto
     bottom_ = bottom;
     u_ = Eigen::Vector3d(d.x() / X, d.y() / X, 0.0);
     seabed_ = seabed && bottom.z() - seabedZ <= onSeabed;
+    seabedOn_ = seabed;
     seabedHeight_ = seabedZ - bottom.z();
     if (seabed_ && Z > 0.0 && length_ >= X + Z && weight > 0.0) {
         // Even inextensible it reaches down and across with length to spare: resting on a
@@ -138,50 +178,100 @@ bool LineProfile::solve(const Eigen::Vector3d& top, const Eigen::Vector3d& botto
         H0 = a * w;
         v0 = -w * a * std::sinh(vertex / a);
     }
-    // Newton's method on (log H, v) with a backtracking line search; several starts for H.
+    // Newton's method on (log H, v, the contacts' rests) with a backtracking line search, several
+    // starts for H; the contacts by an active set: a local minimum of the hanging line below the
+    // seabed rests on it (one more unknown, its height the seabed's), one whose rest comes out
+    // negative does not.
     const double scale = std::max(std::abs(weight), 1e-6 * EA);
+    const double level = seabedHeight_;
     std::vector<Piece> pieces;
-    auto residual = [&](double logH, double v, double& fx, double& fz) {
+    std::vector<double> minima;
+    auto residual = [&](const Eigen::VectorXd& y, Eigen::VectorXd& f) {
+        const std::vector<double> rests(y.data() + 2, y.data() + y.size());
         double x, z;
-        walk(std::exp(logH), v, pieces, x, z);
-        fx = x - X;
-        fz = z - Z;
-        return std::isfinite(fx) && std::isfinite(fz) ? std::hypot(fx, fz) : INFINITY;
+        walk(std::exp(y[0]), y[1], rests, pieces, x, z, &minima);
+        f.resize(y.size());
+        f[0] = x - X;
+        f[1] = z - Z;
+        for (Eigen::Index j = 2; j < y.size(); ++j) {
+            const size_t k = static_cast<size_t>(j - 2);
+            f[j] = k < minima.size() ? minima[k] - level : y[j] / std::max(scale, 1.0);  // an unused rest goes to 0
+        }
+        return f.allFinite() ? f.norm() : INFINITY;
     };
     const double tolerance = 1e-11 * length_;
-    for (double factor : {1.0, 0.1, 10.0, 0.01, 100.0, 1e-3, 1e3}) {
-        double logH = std::log(std::max(H0 * factor, 1e-9 * scale)), v = v0;
-        double fx, fz;
-        double norm = residual(logH, v, fx, fz);
+    auto newton = [&](Eigen::VectorXd& y) {
+        Eigen::VectorXd f, g, trialY;
+        double norm = residual(y, f);
         for (int it = 0; it < 100 && std::isfinite(norm) && norm > tolerance; ++it) {
-            const double hH = 1e-7, hv = 1e-7 * std::max({std::abs(v), scale, std::exp(logH)});
-            double ax, az, bx, bz;
-            residual(logH + hH, v, ax, az);
-            residual(logH, v + hv, bx, bz);
-            const double J00 = (ax - fx) / hH, J10 = (az - fz) / hH, J01 = (bx - fx) / hv, J11 = (bz - fz) / hv;
-            const double det = J00 * J11 - J01 * J10;
-            if (!(std::abs(det) > 0.0) || !std::isfinite(det)) break;
-            double dlogH = -(J11 * fx - J01 * fz) / det, dv = -(-J10 * fx + J00 * fz) / det;
-            // at most a factor e^2 in H per step
-            const double limit = std::abs(dlogH) > 2.0 ? 2.0 / std::abs(dlogH) : 1.0;
-            dlogH *= limit;
-            dv *= limit;
-            double step = 1.0, trial = INFINITY, tx = 0.0, tz = 0.0;
+            const Eigen::Index n = y.size();
+            Eigen::MatrixXd J(n, n);
+            for (Eigen::Index j = 0; j < n; ++j) {
+                const double h = j == 0 ? 1e-7 : 1e-7 * std::max({std::abs(y[j]), scale, j == 1 ? std::exp(y[0]) : length_});
+                Eigen::VectorXd yj = y;
+                yj[j] += h;
+                residual(yj, g);
+                J.col(j) = (g - f) / h;
+            }
+            Eigen::VectorXd dy = J.fullPivLu().solve(-f);
+            if (!dy.allFinite()) return norm;
+            if (std::abs(dy[0]) > 2.0) dy *= 2.0 / std::abs(dy[0]);  // at most a factor e^2 in H per step
+            double step = 1.0, trial = INFINITY;
             for (int k = 0; k < 30; ++k, step *= 0.5) {
-                trial = residual(logH + step * dlogH, v + step * dv, tx, tz);
+                trialY = y + step * dy;
+                trial = residual(trialY, g);
                 if (trial < norm) break;
             }
-            if (!(trial < norm)) break;
-            logH += step * dlogH;
-            v += step * dv;
+            if (!(trial < norm)) return norm;
+            y = trialY;
+            f = g;
             norm = trial;
-            fx = tx;
-            fz = tz;
+        }
+        return norm;
+    };
+    Eigen::VectorXd fallback;  // the first solution without the contacts of the hanging line
+    for (double factor : {1.0, 0.1, 10.0, 0.01, 100.0, 1e-3, 1e3}) {
+        Eigen::VectorXd y(2);
+        y << std::log(std::max(H0 * factor, 1e-9 * scale)), v0;
+        double norm = newton(y);
+        if (norm <= tolerance && fallback.size() == 0) fallback = y;
+        for (int pass = 0; pass < 8 && norm <= tolerance; ++pass) {
+            // contacts: activate the first minimum below the seabed beyond the active ones, or drop
+            // the first active one whose rest came out negative (and all after it)
+            const std::vector<double> rests(y.data() + 2, y.data() + y.size());
+            double x, z;
+            walk(std::exp(y[0]), y[1], rests, pieces, x, z, &minima);
+            Eigen::Index drop = -1;
+            for (Eigen::Index j = 2; j < y.size(); ++j)
+                if (y[j] < -tolerance * std::max(scale, 1.0)) {
+                    drop = j;
+                    break;
+                }
+            bool changed = false;
+            if (drop >= 0) {
+                y.conservativeResize(drop);
+                changed = true;
+            } else if (seabedOn_) {
+                for (size_t k = static_cast<size_t>(y.size() - 2); k < minima.size(); ++k) {
+                    if (minima[k] < level - 1e-9 * length_) {
+                        y.conservativeResize(static_cast<Eigen::Index>(k) + 3);
+                        y.tail(y.size() - 2 - static_cast<Eigen::Index>(rests.size())).setZero();
+                        changed = true;
+                        break;
+                    }
+                }
+            }
+            if (!changed) break;
+            norm = newton(y);
         }
         if (norm <= tolerance) {
-            H_ = std::exp(logH);
-            v_ = v;
-            walk(H_, v_, pieces_, fx, fz);
+            exact_ = true;
+            H_ = std::exp(y[0]);
+            v_ = y[1];
+            rests_.assign(y.data() + 2, y.data() + y.size());
+
+            double fx, fz;
+            walk(H_, v_, rests_, pieces_, fx, fz, nullptr);
             grounded_ = 0.0;
             for (const Piece& p : pieces_)
                 if (p.grounded) grounded_ += p.length;
@@ -201,7 +291,45 @@ bool LineProfile::solve(const Eigen::Vector3d& top, const Eigen::Vector3d& botto
             return true;
         }
     }
+    if (fallback.size() == 2) {
+        // Where the hanging line's contacts could not be solved, its profile without them (passing
+        // below the seabed there): a guess, not exact (lowest_clearance() tells).
+        exact_ = false;
+        H_ = std::exp(fallback[0]);
+        v_ = fallback[1];
+        rests_.clear();
+        double fx, fz;
+        walk(H_, v_, rests_, pieces_, fx, fz, nullptr);
+        grounded_ = 0.0;
+        for (const Piece& p : pieces_)
+            if (p.grounded) grounded_ += p.length;
+        clearance_ = -INFINITY;
+        return true;
+    }
     return fail("no elastic catenary found for these ends (Newton's method did not converge)");
+}
+
+double LineProfile::touchdown() const {
+    for (auto p = pieces_.rbegin(); p != pieces_.rend(); ++p)
+        if (p->grounded) return length_ - (p->u0 + p->length);
+    return length_;
+}
+
+std::vector<double> LineProfile::contacts() const {
+    std::vector<double> s;
+    for (size_t k = 0; k < pieces_.size(); ++k) {
+        const Piece& p = pieces_[k];
+        const bool before = k > 0 && pieces_[k - 1].grounded;
+        if (k > 0 && p.grounded != before) s.push_back(length_ - p.u0);
+        // a point load resting at a local minimum: V jumps from below 0 to the piece's start
+        if (k > 0 && !p.grounded && !before) {
+            const Piece& q = pieces_[k - 1];
+            if (q.V0 + q.weight * q.length < 0.0 && p.V0 >= 0.0 && std::abs(p.z0 - seabedHeight_) < 1e-6 * length_)
+                s.push_back(length_ - p.u0);
+        }
+    }
+    std::sort(s.begin(), s.end());
+    return s;
 }
 
 const LineProfile::Piece& LineProfile::piece_at(double u) const {
@@ -246,7 +374,10 @@ double LineProfile::turning(double s) const {
     const double u = std::clamp(length_ - s, 0.0, length_);
     double total = 0.0;
     for (auto p = pieces_.rbegin(); p != pieces_.rend(); ++p) {
-        if (p->grounded) break;
+        if (p->grounded) {
+            if (u >= p->u0) break;
+            continue;
+        }
         const double top = std::atan2(p->V0 + p->weight * p->length, H_);
         const double l = std::clamp(u - p->u0, 0.0, p->length);
         total += std::abs(top - std::atan2(p->V0 + p->weight * l, H_));

@@ -37,9 +37,12 @@ public:
     // arc length s from the top end.
     void at(double s, Eigen::Vector3d& r, Eigen::Vector3d& tangent) const;
     double length() const { return length_; }
-    // Arc length from the top end where the line reaches the seabed (length(): it does not rest).
-    double touchdown() const { return length_ - grounded_; }
+    // Arc length from the top end where the line first reaches the seabed (length(): it does not
+    // rest), and every point where it reaches or leaves it (or a point load rests on it), from the top.
+    double touchdown() const;
+    std::vector<double> contacts() const;
     double grounded_length() const { return grounded_; }
+    bool rests_at_bottom() const { return !pieces_.empty() && pieces_.front().grounded; }
     // Tension [N] just above arc length s (from the top), and the forces of the line on its ends.
     double tension(double s) const;
     Eigen::Vector3d top_force() const;
@@ -47,7 +50,9 @@ public:
     // Angle [rad] the tangent turns through from the top end to arc length s, leaving out the
     // corners at point loads.
     double turning(double s) const;
-    // Lowest height of the hanging part above the seabed [m] (negative: it would pass through it).
+    // Lowest height of the hanging part above the seabed [m] (negative: it would pass through it;
+    // -infinity where the contacts of the hanging line could not be solved, and the profile is a
+    // guess that passes below the seabed).
     double lowest_clearance() const { return clearance_; }
 
 private:
@@ -59,7 +64,11 @@ private:
         double x0, z0;      // position of its lower end in the plane (x from the lower end to the top)
         bool grounded;
     };
-    void walk(double H, double v, std::vector<Piece>& pieces, double& x, double& z) const;
+    // The pieces for H, v and the rests of the contacts after the lower end's (the j-th local
+    // minimum of the hanging line: inside a piece its resting length, at a point load the seabed's
+    // reaction there); the heights of those minima into `minima`.
+    void walk(double H, double v, const std::vector<double>& rests, std::vector<Piece>& pieces, double& x, double& z,
+              std::vector<double>* minima) const;
     static void piece_offset(const Piece& p, double H, double l, double& dx, double& dz);
     const Piece& piece_at(double u) const;
 
@@ -67,8 +76,11 @@ private:
     std::vector<PointLoad> points_;  // arc length from the lower end
     std::vector<Piece> pieces_;
     Eigen::Vector3d bottom_ = Eigen::Vector3d::Zero(), u_ = Eigen::Vector3d::UnitX();
+    std::vector<double> rests_;
     double length_ = 0.0, H_ = 0.0, v_ = 0.0, grounded_ = 0.0, clearance_ = 0.0, seabedHeight_ = 0.0;
-    bool seabed_ = false;
+    bool exact_ = false;
+    bool seabed_ = false;    // the lower end rests on the seabed
+    bool seabedOn_ = false;  // there is a seabed
 };
 
 }  // namespace uc

@@ -38,7 +38,8 @@ std::vector<double> graded_nodes(const CableModel& model, const LineProfile& pro
     auto turning = [&](double s) {  // from the tow point, whichever end the profile starts at
         return towOnTop ? profile.turning(s) : profile.turning(L) - profile.turning(L - s);
     };
-    const double touchdown = towOnTop ? profile.touchdown() : L - profile.touchdown();
+    std::vector<double> contacts = profile.contacts();  // where the line reaches or leaves the seabed
+    for (double& c : contacts) c = towOnTop ? c : L - c;
     std::vector<double> nodes{0.0};
     for (int k = 0; k < model.n_sections(); ++k) {
         const SectionProps& sec = model.section(k);
@@ -49,7 +50,7 @@ std::vector<double> graded_nodes(const CableModel& model, const LineProfile& pro
             if (s > s0 + minimum && s < s1 - minimum) cuts.push_back(s);
         };
         for (const NodeAttachment& at : model.attachments()) cut(at.s);
-        if (profile.grounded_length() > 0.0) cut(touchdown);
+        for (double c : contacts) cut(c);
         cuts.push_back(s1);
         std::sort(cuts.begin(), cuts.end());
         cuts.erase(std::unique(cuts.begin(), cuts.end(), [&](double a, double b) { return b - a <= minimum; }),

@@ -16,7 +16,8 @@ namespace uc {
 // its number of elements (one more per piece where attachments and the touchdown cut it into more
 // pieces than it has elements); inside a section the nodes sit at equal steps of
 //   M(s) = s / L_section + theta(s) / max(Theta_section, kGradingAngle),
-// theta the angle the profile turns through, with a node at each attachment and at the touchdown.
+// theta the angle the profile turns through, with a node at each attachment and wherever the line
+// reaches or leaves the seabed.
 // `towOnTop`: the profile's top end is the tow point (else the anchor, above it).
 std::vector<double> graded_nodes(const CableModel& model, const LineProfile& profile, bool towOnTop);
 

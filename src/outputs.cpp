@@ -91,10 +91,12 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
         // above the contact band every load is zero: q.weight * 0 subtracts nothing
         if (!p.enableSeabed || above_contact(model.tables(e), section.seabed, Xe)) continue;
         const ContactPoints points = contact_points(model.tables(e));  // as the residual integrates it
+        double material[12];  // the winch's top element moves with the material, as in the residual
+        const double* Xde = model.element_velocities(e, X, Xd, material);
         for (int g = 0; g < points.count; ++g) {  // the residual holds minus the load
             const QuadPoint& q = points.points[g];
             out.seabedContactForce -=
-                q.weight * seabed_load(section.seabed, interpolate(q.shape.N, Xe), interpolate(q.shape.N, Xd + model.element_offset(e)), nullptr).z();
+                q.weight * seabed_load(section.seabed, interpolate(q.shape.N, Xe), interpolate(q.shape.N, Xde), nullptr).z();
         }
     }
 }
@@ -228,7 +230,8 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
         const double l = model.element_length(e);
         double axialTension[ElementTables::nAxial];
         Vec3 rp[ElementTables::nAxial];  // r' at the axial points, which the tensions interpolate anyway
-        axial_tensions(tables, section.axial, Xe, Xd + model.element_offset(e), axialTension, rp);
+        double material[12];  // the winch's top element: the velocities of the material in it
+        axial_tensions(tables, section.axial, Xe, model.element_velocities(e, X, Xd, material), axialTension, rp);
         double mean = 0.0, elementCurvature = 0.0;
         for (int g = 0; g < ElementTables::nAxial; ++g) {
             mean += tables.axial[g].weight / l * axialTension[g];

@@ -220,6 +220,10 @@ void CableSimulation::allocate() {
 // The constant-tension winch's rate for the tow tension T with the top element at topLength:
 // (T - T_set) times the line's axial compliance over winch.timeConstant, within winch.maxRate and
 // stopped at the length limits; slope = d rate / dT (0 where limited).
+double CableSimulation::line_tension(const double* R) const {
+    return -Eigen::Map<const Vec3>(R).dot(Eigen::Map<const Vec3>(X_.data() + 3).normalized());
+}
+
 double CableSimulation::tension_winch_rate(double tension, double topLength, double* slope) const {
     const UCParams& p = model_.params();
     const double gain = model_.axial_compliance() / p.winchTimeConstant;
@@ -232,6 +236,11 @@ double CableSimulation::tension_winch_rate(double tension, double topLength, dou
     const double length = winchLength_ + (topLength - winchTopAtStep_);
     if ((length >= p.winchMaxLength && rate > 0.0) || (length <= p.winchMinLength && rate < 0.0)) {
         rate = 0.0;
+        dRate = 0.0;
+    }
+    const double braked = braking_rate_limit(rate, length, winch_limits());  // in time for the limits
+    if (braked != rate) {
+        rate = braked;
         dRate = 0.0;
     }
     if (slope) *slope = dRate;
@@ -310,8 +319,7 @@ void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, boo
     StaticLayout layout;
     if (apply && static_profile(towPoint, farPoint, profile, towOnTop, nullptr)) {
         // the anchor is the lower end, held where the line rests (CableModel): graded for that point
-        layout.anchorResting = towOnTop && profile.grounded_length() > 0.0 &&
-                               model_.params().bottomEnd == UC_BOTTOM_ANCHORED;
+        layout.anchorResting = towOnTop && profile.rests_at_bottom() && model_.params().bottomEnd == UC_BOTTOM_ANCHORED;
         const Vec3 resting(farPoint.x(), farPoint.y(), model_.resting_height());
         if (layout.anchorResting && std::abs(farPoint.z() - resting.z()) <= 0.5 * model_.line().diameter)
             static_profile(towPoint, resting, profile, towOnTop, nullptr);
@@ -526,6 +534,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         if (model_.winch_mesh().elements != start.elements || model_.winch_mesh().topLength != start.topLength)
             rebuild(start);
         winchRate_ = 0.0;
+        winchStep_ = WinchStep::hold(0.0);
         winchTop0_ = start.topLength;
         winchLimit_ = 0;
         model_.set_top_length(winchTop0_);
@@ -606,7 +615,9 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     update_outputs();
     if (p.initMode == UC_INIT_EQUILIBRIUM && !verify_statics(farPoint, error)) return false;
     if (off_) {  // consistent: the winch runs at the rate of the initial tension
-        y_[1] = yp_[0] = tension_winch_rate(outputs_.towTension, y_[0], nullptr);
+        double R[12];
+        model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, R);
+        y_[1] = yp_[0] = tension_winch_rate(line_tension(R), y_[0], nullptr);
         yp_[1] = 0.0;
         winchRate_ = y_[1];
     }
@@ -654,14 +665,6 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     }
     const double winchLengthAtStart = winchLength_, winchRateAtStart = winchRate_;
     const double winchTop0AtStart = winchTop0_;
-    if (model_.winch()) {
-        set_winch_time(time_);
-        if (!winch_rate(in, h, error)) return false;
-        // how much the top element changes over the step (the constant-tension winch: at worst twice
-        // its present haul-in rate)
-        const double change = off_ ? std::min(0.0, 2.0 * y_[1] * h) : winchRate_ * h;
-        if (!remesh(change, error)) return false;
-    }
     set_environment(in);
     loads_.current.rate = Vec3(in.currentRate[0], in.currentRate[1], 0.0);
     loads_.current.rateStart = time_;
@@ -674,6 +677,34 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         error = "the input derivatives of current.x/y must be finite numbers";
         return false;
     }
+    if (model_.winch()) {
+        // A remesh happens at time_ and must see nothing but the state there (a state restored into
+        // a fresh instance has no previous step): the driven ends where they stand, the environment
+        // of this step's inputs.
+        loads_.tow = TowTrajectory::at_rest_in_time(tow_.position, tow_.velocity, tow_.acceleration, time_);
+        loads_.end = TowTrajectory::at_rest_in_time(end_.position, end_.velocity, end_.acceleration, time_);
+    }
+    if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
+        error = "torque and twist inputs must be finite numbers";
+        return false;
+    }
+    if (model_.winch()) {
+        loads_.torque = cable_torque(in);
+        set_winch_time(time_);
+        if (!winch_rate(in, h, error)) return false;
+        // how much the top element changes over the step (the constant-tension winch: at worst twice
+        // its present haul-in rate)
+        const double change = off_ ? std::min(0.0, 2.0 * y_[1] * h) : winchStep_.length(h);
+        const int elements = model_.n_elements();
+        if (!remesh(change, error)) return false;
+        if (!off_ && winchStep_.rate0 != winchRateAtStart && elements == model_.n_elements()) {
+            // The rate jumps here: the material at the sheave takes the new speed at once (an axial
+            // wave). The accelerations of that state, and a restart, as after any discontinuity.
+            set_winch_time(time_);
+            free_state(q_, v_, a_);
+            if (!restart_from(error)) return false;
+        }
+    }
     // Each driven end follows a quintic in time from where the previous step left it (position,
     // velocity and acceleration: it never jumps) to the master's inputs extrapolated to t + h.
     const Vec3 towVelocityInput = vec(in.towVelocity), endVelocityInput = vec(in.endVelocity);
@@ -684,11 +715,6 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     if (externalEnd) {
         loads_.end = end_.next(time_, h, lastStepSize_, vec(in.end), endVelocityInput, vec(in.endAcceleration),
                                in.endAccelerationGiven != 0, endAcceleration);
-    }
-
-    if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
-        error = "torque and twist inputs must be finite numbers";
-        return false;
     }
     loads_.torque = cable_torque(in);
 
@@ -710,6 +736,7 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         winchLength_ = winchLengthAtStart;
         winchRate_ = winchRateAtStart;
         winchTop0_ = winchTop0AtStart;
+        winchStep_ = WinchStep::hold(winchRate_);
         return false;
     }
     if (off_) {  // the constant-tension winch: its unknowns at the end of the step
@@ -717,10 +744,12 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         winchRate_ = end[1];
         winchTop0_ = end[0];
         winchLength_ = winchLengthAtStart + (end[0] - topAtStart);
-    } else if (model_.winch()) {  // the length at the end of the step; the rate carries on from there
-        const double topAtEnd = winchTop0_ + winchRate_ * h;
+    } else if (model_.winch()) {  // the length and the drum's rate at the end of the step
+        const double topAtEnd = winchTop0_ + winchStep_.length(h);
         winchLength_ = winchLengthAtStart + (topAtEnd - topAtStart);
         winchTop0_ = topAtEnd;
+        winchRate_ = winchStep_.rate1;
+        winchStep_ = WinchStep::hold(winchRate_);
     }
     const double* y = integrator_->y();
     const double* yp = integrator_->yp();
@@ -855,6 +884,7 @@ void CableSimulation::expand_integrator_state(double t, const double* y, const d
     loads_.current.time = t;
     if (off_) {
         model_.set_top_length(y[0]);
+        model_.set_top_rate(y[1]);
     } else {
         set_winch_time(t);
     }
@@ -882,7 +912,7 @@ int CableSimulation::residual(double t, const double* y, const double* yp, doubl
     if (off_) {  // the winch: its length changes at its rate, the rate follows the tension
         double Re[12];
         model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, Re);
-        const double tension = std::sqrt(Re[0] * Re[0] + Re[1] * Re[1] + Re[2] * Re[2]);
+        const double tension = line_tension(Re);
         r[0] = yp[0] - y[1];
         // the drum follows the commanded rate with the lag winch.timeConstant (a drum has inertia)
         r[1] = model_.params().winchTimeConstant * yp[1] + y[1] - tension_winch_rate(tension, y[0], nullptr);
@@ -909,14 +939,21 @@ int CableSimulation::jacobian(double t, const double* y, const double* yp, const
     model_.set_top_length(top + delta);
     model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, Rp);
     model_.set_top_length(top);
-    const Vec3 force(Re[0], Re[1], Re[2]);
-    const double tension = force.norm();
-    const Vec3 u = tension > 0.0 ? Vec3(force / tension) : Vec3::Zero();
+    // T = -R_0..2 . t with t the unit tangent at the tow node (line_tension): dT = u . dR - R . dt
+    const double tension = line_tension(Re);
+    const Eigen::Map<const Vec3> tangent(X_.data() + 3);
+    const Vec3 u = -tangent.normalized();
+    const Vec3 dTdTangent = -(Eigen::Map<const Vec3>(Re) - u * u.dot(Eigen::Map<const Vec3>(Re))) / tangent.norm();
     double slope = 0.0;
     tension_winch_rate(tension, top, &slope);
     const int g0 = model_.element_offset(0);
-    double dTdl = 0.0;
-    for (int a = 0; a < 3; ++a) dTdl += u[a] * (Rp[a] - Re[a]) / delta;
+    // the top element's residual through the winch's rate: the material's velocity (set_top_rate)
+    const Vec12 dRdc = C * model_.top_rate_direction(X_.data() + g0);
+    double dTdl = 0.0, dTdc = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        dTdl += u[a] * (Rp[a] - Re[a]) / delta;
+        dTdc += u[a] * dRdc[a];
+    }
     for (int b = 0; b < 12; ++b) {
         const int j = model_.free_index(g0 + b);
         if (j < 0) continue;
@@ -927,10 +964,11 @@ int CableSimulation::jacobian(double t, const double* y, const double* yp, const
             dC += u[a] * C(a, b);
             dM += u[a] * M(a, b);
         }
+        if (b >= 3 && b < 6) dK += dTdTangent[b - 3];
         sink(0, j + 1, -slope * cb * dK, -slope * cb * dC, -slope * cb * dM);
-        sink(j + 1, 0, cb * (Rp[b] - Re[b]) / delta, 0.0, 0.0);
+        sink(j + 1, 0, cb * (Rp[b] - Re[b]) / delta, cb * dRdc[b], 0.0);
     }
-    sink(0, 0, -slope * dTdl, 1.0, model_.params().winchTimeConstant);
+    sink(0, 0, -slope * dTdl, 1.0 - slope * dTdc, model_.params().winchTimeConstant);
     return 0;
 }
 
@@ -946,7 +984,13 @@ std::string CableSimulation::take_event() {
 
 void CableSimulation::set_winch_time(double t) {
     if (!model_.winch()) return;
-    model_.set_top_length(off_ ? y_[0] : winchTop0_ + winchRate_ * (t - time_));
+    model_.set_top_length(off_ ? y_[0] : winchTop0_ + winchStep_.length(t - time_));
+    model_.set_top_rate(off_ ? y_[1] : winchStep_.rate(t - time_));
+}
+
+WinchLimits CableSimulation::winch_limits() const {
+    const UCParams& p = model_.params();
+    return WinchLimits{p.winchMinLength, p.winchMaxLength, p.winchMaxRate, p.winchMaxAcceleration};
 }
 
 bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& error) {
@@ -959,23 +1003,22 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
         error = text;
         return false;
     }
-    const WinchLimits limits{p.winchMinLength, p.winchMaxLength, p.winchMaxRate};
+    const WinchLimits limits = winch_limits();
     winchTop0_ = model_.top_length();
     if (p.winchMode == UC_WINCH_TENSION) return true;  // the rate follows the tension, step by step
     const double requested = in.winchRate;
-    const WinchRate r = limit_winch_rate(requested, winchLength_, h, limits);
-    winchRate_ = r.rate;
+    winchStep_ = plan_winch_step(requested, winchRate_, winchLength_, h, limits);
     // A length limit cut the request (not the speed limit): log the arrival once.
-    const double speedLimited = std::clamp(requested, -limits.maxRate, limits.maxRate);
-    const int limit = r.rate < speedLimited ? 1 : r.rate > speedLimited ? -1 : 0;
+    const int limit = winchStep_.limit;
     if (limit != 0 && limit != winchLimit_) {
-        char text[240];
+        char text[300];
         std::snprintf(text, sizeof text,
-                      "winch: at t = %.6g s the deployed length %.6g m reaches winch.%s = %.6g m: %s stops there "
-                      "(winch.rate %.6g m/s applied as %.6g m/s)",
-                      time_, winchLength_ + r.rate * h, limit > 0 ? "maxLength" : "minLength",
-                      limit > 0 ? limits.maxLength : limits.minLength, limit > 0 ? "paying out" : "hauling in",
-                      requested, r.rate);
+                      "winch: at t = %.6g s %s winch.%s = %.6g m: %s stops there (deployed length %.6g m at the "
+                      "step's end; winch.rate %.6g m/s applied as %.6g m/s)",
+                      time_, limits.maxAcceleration > 0.0 ? "the drum brakes to stop at" : "the deployed length reaches",
+                      limit > 0 ? "maxLength" : "minLength", limit > 0 ? limits.maxLength : limits.minLength,
+                      limit > 0 ? "paying out" : "hauling in", winchLength_ + winchStep_.length(h), requested,
+                      winchStep_.rate1);
         event_ = text;
     }
     winchLimit_ = limit;
@@ -985,24 +1028,45 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
 // Splits the top element when it has grown past 1.5 nominal lengths (the lower part becomes a
 // nominal element, exactly the same cubic), merges it with the element below when it has shrunk
 // under half of one (docs/winch.md). At a communication point; the integrator restarts.
+namespace {
+
+// Split above 1.5 nominal lengths, merge under 0.5 (remesh_action), and merge too when the step
+// would haul the top element in below a quarter of a nominal length (change: of the top element
+// over the step); no split that would leave it so short. Neither undoes the other.
+RemeshAction next_remesh(double top, double nominal, int elements, double change) {
+    RemeshAction action = remesh_action(top, nominal, elements > 1);
+    const double end = top + change;
+    if (action == RemeshAction::Split && end - nominal < 0.25 * nominal) action = RemeshAction::None;
+    if (action == RemeshAction::None && elements > 1 && end < 0.25 * nominal) action = RemeshAction::Merge;
+    return action;
+}
+
+}  // namespace
+
 bool CableSimulation::remesh(double change, std::string& error) {
-    for (int pass = 0; pass < kMaxRemeshPasses; ++pass) {
-        const double top = model_.top_length(), nominal = model_.winch_nominal();
-        const int elements = model_.winch_mesh().elements;
-        // Split above 1.5 nominal lengths, merge under 0.5 (remesh_action), and merge too when the
-        // step would haul the top element in below a quarter of a nominal length; no split that
-        // would leave it so short. Neither undoes the other.
-        RemeshAction action = remesh_action(top, nominal, elements > 1);
-        const double end = top + change;
-        if (action == RemeshAction::Split && end - nominal < 0.25 * nominal) action = RemeshAction::None;
-        if (action == RemeshAction::None && elements > 1 && end < 0.25 * nominal) action = RemeshAction::Merge;
-        if (action == RemeshAction::None) return true;
-        if (!remesh_once(action, error)) return false;
+    const double nominal = model_.winch_nominal();
+    // How many passes the step needs (a split makes the top element one nominal length shorter,
+    // a merge one longer).
+    int passes = 0;
+    for (double top = model_.top_length(), elements = model_.winch_mesh().elements; passes < kMaxRemeshPasses;
+         ++passes) {
+        const RemeshAction action = next_remesh(top, nominal, static_cast<int>(elements), change);
+        if (action == RemeshAction::None) break;
+        top += action == RemeshAction::Split ? -nominal : nominal;
+        elements += action == RemeshAction::Split ? 1 : -1;
+    }
+    for (int pass = 0; pass < passes; ++pass) {
+        const RemeshAction action =
+            next_remesh(model_.top_length(), nominal, model_.winch_mesh().elements, change);
+        if (action == RemeshAction::None) break;
+        // Only one remesh per step starts the line in balance: a winch that moves more than an
+        // element per step on a fine mesh makes nodes faster than the balance can follow them.
+        if (!remesh_once(action, passes == 1, error)) return false;
     }
     return true;
 }
 
-bool CableSimulation::remesh_once(RemeshAction action, std::string& error) {
+bool CableSimulation::remesh_once(RemeshAction action, bool balance, std::string& error) {
     const double top = model_.top_length(), nominal = model_.winch_nominal();
     const WinchMesh mesh = model_.winch_mesh();
     expand_integrator_state(time_, y_.data(), yp_.data());
@@ -1011,9 +1075,11 @@ bool CableSimulation::remesh_once(RemeshAction action, std::string& error) {
     WinchMesh next;
     if (action == RemeshAction::Split) {
         const double a = top - nominal;  // the new top element; the rest is nominal
-        double node[3][6];
+        double node[3][6], material[12];
         hermite_split_node(X_.data(), top, a, node[0]);
-        hermite_split_node(Xd_.data(), top, a, node[1]);
+        // the new node is material: the velocity of the material there, not of the mesh point
+        model_.top_material_velocity(X_.data(), Xd_.data(), material);
+        hermite_split_node(material, top, a, node[1]);
         hermite_split_node(Xdd_.data(), top, a, node[2]);
         const std::vector<double>* from[3] = {&X_, &Xd_, &Xdd_};
         std::vector<double>* to[3] = {&X, &Xd, &Xdd};
@@ -1035,21 +1101,19 @@ bool CableSimulation::remesh_once(RemeshAction action, std::string& error) {
     rebuild(next);
     winchTop0_ = next.topLength;
     model_.set_top_length(winchTop0_);
-    const int n = model_.n_free();
+    model_.set_top_rate(off_ ? winchRate_ : winchStep_.rate0);
+    if (balance) {
+        // The tow node's tangent (unless clamped) and the first nodes below the top element (within
+        // the first section): their equations of motion, with the accelerations the line had, decide
+        // where they stand on the new mesh (docs/winch.md, "Split and merge").
+        const bool hinged = model_.params().topEnd != UC_TOP_CLAMPED;
+        const int nodes = std::min(kBalanceNodes, model_.winch_mesh().elements - 1);
+        balance_dofs(hinged ? 3 : 6, (hinged ? 3 : 0) + 6 * nodes, X, Xd, Xdd);
+    }
     model_.restrict_to_free(X.data(), q_.data());
     model_.restrict_to_free(Xd.data(), v_.data());
-    // The accelerations of the new mesh's equations (the split carries the old ones over exactly;
-    // the merged element has its own mass matrix).
-    if (!solve_consistent_acceleration(model_, *staticSolver_, loads_, time_, q_, v_, a_)) {
-        error = "winch: the mass matrix of the remeshed line is singular";
-        return false;
-    }
-    for (int j = 0; j < n; ++j) {
-        y_[2 * (j + off_)] = q_[j];
-        y_[2 * (j + off_) + 1] = v_[j];
-        yp_[2 * (j + off_)] = v_[j];
-        yp_[2 * (j + off_) + 1] = a_[j];
-    }
+    // The accelerations of the new mesh's equations (the merged element has its own mass matrix).
+    if (!restart_from(error)) return false;
     if (off_) {
         y_[0] = next.topLength;
         y_[1] = yp_[0] = winchRate_;
@@ -1057,6 +1121,71 @@ bool CableSimulation::remesh_once(RemeshAction action, std::string& error) {
     }
     ++stateStamp_;
     return set_integrator_tolerances(error);
+}
+
+bool CableSimulation::restart_from(std::string& error) {
+    if (!solve_consistent_acceleration(model_, *staticSolver_, loads_, time_, q_, v_, a_)) {
+        error = "winch: the mass matrix of the line is singular";
+        return false;
+    }
+    for (int j = 0; j < model_.n_free(); ++j) {
+        y_[2 * (j + off_)] = q_[j];
+        y_[2 * (j + off_) + 1] = v_[j];
+        yp_[2 * (j + off_)] = v_[j];
+        yp_[2 * (j + off_) + 1] = a_[j];
+    }
+    restartPending_ = true;
+    return true;
+}
+
+void CableSimulation::dof_residual(int g, int count, const std::vector<double>& X, const std::vector<double>& Xd,
+                                   const std::vector<double>& Xdd, Eigen::VectorXd& R, Eigen::MatrixXd* J) {
+    R.setZero();
+    if (J) J->setZero();
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const int off = model_.element_offset(e);
+        if (off + 12 <= g || off >= g + count) continue;
+        double Re[12];
+        Mat12 K, C, M;
+        model_.element_residual(e, X.data(), Xd.data(), Xdd.data(), loads_, Re);
+        if (J) model_.element_jacobian(e, X.data(), Xd.data(), Xdd.data(), loads_, K, C, M);
+        for (int i = 0; i < count; ++i) {
+            const int a = g + i - off;
+            if (a < 0 || a >= 12) continue;
+            R[i] += Re[a];
+            if (!J) continue;
+            for (int k = 0; k < count; ++k) {
+                const int b = g + k - off;
+                if (b >= 0 && b < 12) (*J)(i, k) += K(a, b);
+            }
+        }
+    }
+}
+
+void CableSimulation::balance_dofs(int g, int count, std::vector<double>& X, const std::vector<double>& Xd,
+                                   const std::vector<double>& Xdd) {
+    // Newton with halving of the step while the residual does not fall; a step that finds nothing
+    // better ends the search (the DOFs stay where the last accepted step left them).
+    Eigen::MatrixXd J(count, count);
+    Eigen::VectorXd R(count), trialR(count);
+    std::vector<double> trial = X;
+    dof_residual(g, count, X, Xd, Xdd, R, &J);
+    double norm = R.norm();
+    for (int iteration = 0; iteration < kMaxBalanceIterations && std::isfinite(norm) && norm > 0.0; ++iteration) {
+        const Eigen::VectorXd dx = -J.partialPivLu().solve(R);
+        if (!dx.allFinite()) return;
+        bool accepted = false;
+        for (double lambda = 1.0; lambda > 1e-3 && !accepted; lambda *= 0.5) {
+            for (int i = 0; i < count; ++i) trial[g + i] = X[g + i] + lambda * dx[i];
+            dof_residual(g, count, trial, Xd, Xdd, trialR, nullptr);
+            accepted = std::isfinite(trialR.norm()) && trialR.norm() < norm;
+        }
+        if (!accepted) return;
+        for (int i = 0; i < count; ++i) X[g + i] = trial[g + i];
+        if (!(dx.lpNorm<Eigen::Infinity>() > 1e-13 * model_.winch_nominal())) return;
+        dof_residual(g, count, X, Xd, Xdd, R, &J);
+        norm = R.norm();
+    }
 }
 
 void CableSimulation::rebuild(const WinchMesh& mesh) { replace_model(CableModel(model_.params(), &mesh)); }
@@ -1206,6 +1335,7 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     winchLength_ = header.winchLength;
     winchRate_ = header.winchRate;
     winchTop0_ = header.winchTop0;
+    winchStep_ = WinchStep::hold(off_ ? 0.0 : winchRate_);
     if (tensionScale_ > 0.0 && !set_integrator_tolerances(error)) {  // 0: saved before initialization
         restartPending_ = true;
         return false;

@@ -125,10 +125,31 @@ private:
     int unknowns_bandwidth() const;
     void allocate();
     double tension_winch_rate(double tension, double topLength, double* slope) const;
+    // The tension the constant-tension winch controls: the force of the cable on the tow point along
+    // the line's tangent there (R: the top element's residual at the expanded state X_), negative
+    // in compression, so that a compressed line is hauled in, never paid out.
+    double line_tension(const double* R) const;
     bool winch_rate(const UCInputs& in, double h, std::string& error);
+    WinchLimits winch_limits() const;
     bool remesh(double change, std::string& error);  // change: of the top element over the step ahead
-    bool remesh_once(RemeshAction action, std::string& error);
+    bool remesh_once(RemeshAction action, bool balance, std::string& error);
     static constexpr int kMaxRemeshPasses = 100000;
+    // Moves the global DOFs [g, g + count) of X (count <= 12) to where their own equations
+    // of motion hold with the velocities Xd and accelerations Xdd (Newton on the elements that share
+    // them): a node the remesh makes or changes starts in the motion the line had there.
+    void balance_dofs(int g, int count, std::vector<double>& X, const std::vector<double>& Xd,
+                      const std::vector<double>& Xdd);
+    static constexpr int kMaxBalanceIterations = 8;
+    // Nodes below the top element balanced after a remesh: each one more takes the transient of
+    // the new mesh's discretization a node further from the tow point (a split on 15 m elements:
+    // 0.053, 0.029, 0.0017, 0.0017, 0.0011 % of the tension with 1 to 5 nodes).
+    static constexpr int kBalanceNodes = 4;
+    // The residual rows of the global DOFs [g, g + count) and (J not null) their Jacobian block.
+    void dof_residual(int g, int count, const std::vector<double>& X, const std::vector<double>& Xd,
+                      const std::vector<double>& Xdd, Eigen::VectorXd& R, Eigen::MatrixXd* J);
+    // From the positions q_ and velocities v_ at time_: the consistent accelerations, the state
+    // y_, yp_, and a restart of the integrator.
+    bool restart_from(std::string& error);
     void rebuild(const WinchMesh& mesh);
     void replace_model(CableModel&& model);
 
@@ -152,9 +173,10 @@ private:
     double tensionScale_ = 0.0;  // of the error control, fixed at initialization
     RainflowCounter rainflow_;   // online fatigue count of the tow tension (sn_.area > 0)
     bool restartPending_ = true;
-    // the winch: over a step from time_ the top element's length is winchTop0_ + winchRate_ (t - time_)
+    // the winch: over a step from time_ the top element's length is winchTop0_ + winchStep_.length(t - time_)
     double winchLength_ = 0.0;  // deployed unstretched length at time_
-    double winchRate_ = 0.0, winchTop0_ = 0.0;
+    double winchRate_ = 0.0, winchTop0_ = 0.0;  // the rate at time_ (rate winch: the drum's)
+    WinchStep winchStep_;       // the rate winch's drum over the step from time_ (a hold between steps)
     int winchLimit_ = 0;        // -1 / +1: at the shortest / longest length (logged once per arrival)
     std::string event_;
     bool compressionWarned_ = false;  // the compression warning is given once per instance

@@ -112,6 +112,7 @@ typedef struct UCParams {
     int projectedErrorControl; /* projectedErrorControl: error test of the time integrator along and across the cable: the local error of each node's tangent along its direction is held to the tension tolerance (its length is 1 + strain), the part across it (a rotation, which strains nothing to first order) to `positionTolerance` over the element length; false: every component to the tighter of the two. Not used while `relTol` or `absTol` is positive ([docs/error_control.md](docs/error_control.md)) */
     double seabedContactSpacing; /* seabedContactSpacing [m]: largest distance along the cable between the points at which the seabed contact is integrated, on elements whose five axial points are farther apart (3-point Gauss rules on up to 16 equal intervals, at most 48 points per element); 0: the five axial points of every element. A coarse mesh on the seabed wants about the length of cable over which a touchdown crosses the contact's smoothing band (5 % of the diameter), sqrt(2 delta / kappa) at a touchdown of curvature kappa: 1-5 m on usual moorings ([docs/model.md](docs/model.md), contact sampling) */
     int solverMaxOrder; /* solver.maxOrder: highest order of the time integrator's variable-order BDF formulas (1–5). 5 (the default) takes the fewest steps where the tolerance is tight; orders 3–5 are not A-stable, so at a loose tolerance lightly damped fast modes (a stiff cable's axial and bending ringing) can hold the steps below the size the error test asks for, and 2, the highest A-stable order, then takes fewer steps for the same answer (the stiff power cable at tensionTolerance 0.1: 25–35 % fewer); 1 is backward Euler, which damps the most ([docs/error_control.md](docs/error_control.md), the integrator's order) */
+    double winchMaxAcceleration; /* winch.maxAcceleration [m/s2]: largest acceleration and deceleration of the winch drum: with `winchMode` 1 it ramps towards `winch.rate` and brakes in time to stop at `winch.minLength`/`winch.maxLength`; with `winchMode` 2 the commanded rate stays within that braking envelope (the drum's response is `winch.timeConstant`'s); 0 = no limit (the rate may change at once at a communication point) ([docs/winch.md](docs/winch.md)) */
 } UCParams;
 
 typedef struct UCInputs {
@@ -423,6 +424,7 @@ typedef struct UCOutputs {
     X(242, "projectedErrorControl", BOOLEAN, PARAMETER, projectedErrorControl) \
     X(243, "seabedContactSpacing", REAL, PARAMETER, seabedContactSpacing) \
     X(244, "solver.maxOrder", INTEGER, PARAMETER, solverMaxOrder) \
+    X(245, "winch.maxAcceleration", REAL, PARAMETER, winchMaxAcceleration) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -875,6 +877,7 @@ typedef struct UCOutputs {
     X(projectedErrorControl, 0) \
     X(seabedContactSpacing, 0.0) \
     X(solverMaxOrder, 5) \
+    X(winchMaxAcceleration, 0.0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -1118,6 +1121,7 @@ typedef struct UCOutputs {
     X(winchTimeConstant, "winch.timeConstant", 0.0001, 1000.0, 0, 0, "[0.0001, 1000]", "the tension control needs a positive response time") \
     X(seabedContactSpacing, "seabedContactSpacing", 0.0, 100000.0, 0, 0, "[0, 100000]", "a sampling distance cannot be negative") \
     X(solverMaxOrder, "solver.maxOrder", 1.0, 5.0, 0, 0, "[1, 5]", "IDA's BDF formulas have orders 1 to 5") \
+    X(winchMaxAcceleration, "winch.maxAcceleration", 0.0, 100.0, 0, 0, "[0, 100]", "a drum accelerates at a finite, non-negative rate (0: no limit)") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -43,6 +43,112 @@ WinchRate limit_winch_rate(double requested, double length, double h, const Winc
     return {rate, rate != requested};
 }
 
+double WinchStep::length(double tau) const {
+    const double ramp = std::min(tau, rampTime);
+    return rate0 * ramp + 0.5 * acceleration * ramp * ramp + rate1 * (tau - ramp);
+}
+
+double WinchStep::rate(double tau) const { return tau < rampTime ? rate0 + acceleration * tau : rate1; }
+
+namespace {
+
+// The step from rate0 to rate1 at acceleration A (|rate1 - rate0| <= A h).
+WinchStep ramp_to(double rate0, double rate1, double A) {
+    WinchStep s;
+    s.rate0 = rate0;
+    s.rate1 = rate1;
+    s.rampTime = std::fabs(rate1 - rate0) / A;
+    s.acceleration = rate1 > rate0 ? A : rate1 < rate0 ? -A : 0.0;
+    return s;
+}
+
+// The farthest the line gets paid out (above the step's start) along the step to rate1 and a
+// braking at A after it, and the farthest it gets hauled in (negative): both grow with rate1.
+struct Reach {
+    double out, in;
+};
+Reach reach(double rate0, double rate1, double A, double h) {
+    const WinchStep s = ramp_to(rate0, rate1, A);
+    const double end = s.length(h);
+    Reach r{std::max(0.0, end), std::min(0.0, end)};
+    // where the rate passes 0 inside the step (the length turns there), and the braking after it
+    if (rate0 * rate1 < 0.0) {
+        const double turn = rate0 * rate0 / (2.0 * A);
+        if (rate0 > 0.0) r.out = std::max(r.out, turn);
+        else r.in = std::min(r.in, -turn);
+    }
+    const double stop = rate1 * rate1 / (2.0 * A);
+    if (rate1 > 0.0) r.out = std::max(r.out, end + stop);
+    if (rate1 < 0.0) r.in = std::min(r.in, end - stop);
+    return r;
+}
+
+constexpr int kBisections = 80;
+
+// The boundary between `good` (fits) and `bad` (does not), by bisection: the last point that fits.
+template <class Fits>
+double boundary(double good, double bad, Fits fits) {
+    for (int k = 0; k < kBisections; ++k) {
+        const double m = 0.5 * (good + bad);
+        (fits(m) ? good : bad) = m;
+    }
+    return good;
+}
+constexpr double kLengthSlack = 1e-12;  // relative to the deployed length
+
+}  // namespace
+
+namespace {
+
+// The drum without an acceleration limit: at the rate limit_winch_rate allows over the whole step.
+WinchStep hard_step(double requested, double length, double h, const WinchLimits& limits) {
+    const WinchRate r = limit_winch_rate(requested, length, h, limits);
+    WinchStep s;
+    s.rate0 = s.rate1 = r.rate;
+    s.saturated = r.saturated;
+    const double wanted = std::clamp(requested, -limits.maxRate, limits.maxRate);
+    s.limit = r.rate < wanted ? 1 : r.rate > wanted ? -1 : 0;
+    return s;
+}
+
+}  // namespace
+
+WinchStep plan_winch_step(double requested, double rate0, double length, double h, const WinchLimits& limits) {
+    const double A = limits.maxAcceleration;
+    if (!(A > 0.0)) return hard_step(requested, length, h, limits);
+    const double wanted = std::clamp(requested, -limits.maxRate, limits.maxRate);
+    double lo = rate0 - A * h, hi = rate0 + A * h;
+    // the largest end rate whose pay-out stays within the room to maxLength, the smallest whose
+    // haul-in stays within that to minLength (slack: how far past them a drum may be)
+    const double room = limits.maxLength - length, roomIn = limits.minLength - length;
+    auto fits_out = [&](double r, double slack) { return reach(rate0, r, A, h).out <= room + slack; };
+    auto fits_in = [&](double r, double slack) { return reach(rate0, r, A, h).in >= roomIn - slack; };
+    // A drum already too fast to brake in time (a state from before the limit was set, a length
+    // outside the limits) stops at the limit at once, as without an acceleration limit. The slack
+    // is the round-off of a drum braking along its envelope (its stop distance computed two ways).
+    const double slack = kLengthSlack * std::max(1.0, std::fabs(length));
+    if (!fits_out(lo, slack) || !fits_in(hi, slack)) return hard_step(requested, length, h, limits);
+    const bool cutOut = !fits_out(hi, 0.0), cutIn = !fits_in(lo, 0.0);
+    const double outLo = lo, inHi = hi;  // the bisections start from what fits
+    if (cutOut) hi = boundary(outLo, hi, [&](double r) { return fits_out(r, 0.0); });
+    if (cutIn) lo = boundary(inHi, lo, [&](double r) { return fits_in(r, 0.0); });
+    double rate1 = std::clamp(wanted, lo, hi);
+    // braking onto a limit: the bisection's last bits of a rate are a drum at rest
+    if ((cutOut || cutIn) && std::fabs(rate1) <= kLengthSlack * A * h) rate1 = 0.0;
+    WinchStep s = ramp_to(rate0, rate1, A);
+    s.saturated = rate1 != requested;
+    s.limit = (rate1 < wanted && cutOut) ? 1 : (rate1 > wanted && cutIn) ? -1 : 0;
+    return s;
+}
+
+double braking_rate_limit(double rate, double length, const WinchLimits& limits) {
+    const double A = limits.maxAcceleration;
+    if (!(A > 0.0)) return rate;
+    const double up = std::sqrt(2.0 * A * std::max(0.0, limits.maxLength - length));
+    const double down = -std::sqrt(2.0 * A * std::max(0.0, length - limits.minLength));
+    return std::clamp(rate, down, up);
+}
+
 double constant_tension_rate(double tension, double target, double gain, double maxRate) {
     return std::clamp(gain * (tension - target), -maxRate, maxRate);
 }

@@ -30,6 +30,7 @@ int winch_capacity(double maxLength, double nominal);
 struct WinchLimits {
     double minLength, maxLength;  // [m] unstretched length
     double maxRate;               // [m/s] in both directions
+    double maxAcceleration = 0.0; // [m/s2] of the drum, both directions; 0: none
 };
 
 struct WinchRate {
@@ -41,6 +42,33 @@ struct WinchRate {
 // limited to +-maxRate and so that the length at the end of the step stays within the limits.
 // requested must be finite (the adapter refuses NaN and infinities before).
 WinchRate limit_winch_rate(double requested, double length, double h, const WinchLimits& limits);
+
+// The drum's motion over a step of h seconds with a finite acceleration A: from `rate0` it
+// accelerates at +-A towards `rate1` (reached after |rate1 - rate0| / A <= h), then holds it.
+struct WinchStep {
+    double rate0 = 0.0, rate1 = 0.0, acceleration = 0.0;  // acceleration: +-A, or 0 once rate1 holds
+    double rampTime = 0.0;                                // when rate1 is reached
+    bool saturated = false;  // the request was cut by maxRate or by a length limit
+    int limit = 0;           // -1 / +1: a length limit (minLength / maxLength) cut it
+    // Paid out since the step's start after tau seconds, and the rate then.
+    double length(double tau) const;
+    double rate(double tau) const;
+    // A drum holding `rate` (the state between steps).
+    static WinchStep hold(double rate) {
+        WinchStep s;
+        s.rate0 = s.rate1 = rate;
+        return s;
+    }
+};
+
+// The step of a drum at `rate0` asked for `requested`, `length` deployed: the requested rate within
+// +-maxRate and what the acceleration reaches in h, and no faster than lets the drum brake at A to a
+// stop at the length limits (it stops exactly there). limits.maxAcceleration must be positive.
+WinchStep plan_winch_step(double requested, double rate0, double length, double h, const WinchLimits& limits);
+
+// The braking envelope of a drum with acceleration A: the fastest rate (+ pays out) at `length` from
+// which it can still stop within the limits; the constant-tension winch's command is held within it.
+double braking_rate_limit(double rate, double length, const WinchLimits& limits);
 
 // Constant-tension winch: the rate that drives the tow tension towards `target`: pays out
 // (positive) when the tension is above it, hauls in below, gain [m/s per N], within +-maxRate.

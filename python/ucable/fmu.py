@@ -14,6 +14,7 @@ instantiates from that directory: fmpy dlopens the same .so, which also exercise
 from __future__ import annotations
 
 import atexit
+import itertools
 import shutil
 from ctypes import byref
 from pathlib import Path
@@ -39,6 +40,24 @@ def _cleanup() -> None:
 
 
 atexit.register(_cleanup)
+
+
+# fmpy's logger proxy (it formats the printf-style message in C) keeps ONE Python logger per
+# process: the last one registered receives every instance's messages, and it dangles once that
+# instance is gone. So every CableFMU registers the same process-wide logger, kept alive for the
+# process, and tells the FMU its own number as the componentEnvironment the FMU passes back with
+# each message; the logger hands the message to the instance with that number.
+_instances: dict = {}  # componentEnvironment number -> live CableFMU
+_numbers = itertools.count(1)
+
+
+def _dispatch_log(env, instance, status, category, message) -> None:
+    unit = _instances.get(env)
+    if unit is not None:
+        unit._log(env, instance, status, category, message)
+
+
+_process_logger = fmi2CallbackLoggerTYPE(_dispatch_log)
 
 
 def load(path: str | Path | None = None):
@@ -68,10 +87,13 @@ class CableFMU:
         self.time = None
         self._initialized = False
 
-        # Callbacks must outlive the instance (the FMU keeps the pointers): keep references.
-        self._logger = fmi2CallbackLoggerTYPE(self._log)
+        # Callbacks must outlive the instance (the FMU keeps the pointers): keep references. The
+        # logger is the process-wide one; componentEnvironment routes its messages back here.
+        self._number = next(_numbers)
+        _instances[self._number] = self
         self._callbacks = fmi2CallbackFunctions()
-        self._callbacks.logger = self._logger
+        self._callbacks.logger = _process_logger
+        self._callbacks.componentEnvironment = self._number
         self._callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
         self._callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
         try:  # fmpy's C proxy formats the printf-style message before it reaches Python
@@ -83,7 +105,11 @@ class CableFMU:
         self.slave = FMU2Slave(guid=md.guid, unzipDirectory=self.unzipdir,
                                modelIdentifier=md.coSimulation.modelIdentifier,
                                instanceName=instance_name)
-        self.slave.instantiate(callbacks=self._callbacks, loggingOn=logging_on)
+        try:
+            self.slave.instantiate(callbacks=self._callbacks, loggingOn=logging_on)
+        except BaseException:
+            _instances.pop(self._number, None)
+            raise
         self._pending_parameters = dict(parameters or {})
         self._freed = False
 
@@ -207,7 +233,10 @@ class CableFMU:
     def free(self) -> None:
         if not self._freed:
             self._freed = True
-            self.slave.freeInstance()
+            try:
+                self.slave.freeInstance()
+            finally:
+                _instances.pop(self._number, None)
 
     def __enter__(self):
         return self

@@ -142,8 +142,10 @@ namespace {
 
 // Jacobian of the assembled free residual against central finite differences (in the model's waves,
 // if it has any, at t = 3 s).
-void check_assembled_jacobian(const UCParams& p) {
+// topRate: the winch's speed, with which the top element's material moves (winchMode != 0).
+void check_assembled_jacobian(const UCParams& p, double topRate = 0.0) {
     CableModel m(p);
+    m.set_top_rate(topRate);
     const int n = m.n_free();
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> u(-1, 1);
@@ -227,6 +229,17 @@ UCParams towed_body_line() {
 }
 
 }  // namespace
+
+TEST(AssembledJacobian, MatchesFiniteDifferencesWinchPayingOut) {
+    // The top element's velocity is the material's, v0 + c r'0 and v'0 + c r''0: it depends on the
+    // positions too.
+    UCParams p = towed_body_line();
+    p.winchMode = UC_WINCH_RATE;
+    p.winchMinLength = 5.0;
+    p.winchMaxLength = 100.0;
+    p.axialDamping = 1e4;
+    check_assembled_jacobian(p, 0.8);
+}
 
 TEST(AssembledJacobian, MatchesFiniteDifferencesTowedBodyClamped) {
     UCParams p = towed_body_line();

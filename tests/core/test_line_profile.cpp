@@ -142,3 +142,23 @@ TEST(LineProfile, RefusesShapesItCannotHave) {
                         {}, false, -1e4, 0.1));
     EXPECT_NEAR(p.tension(50.0), 1e6 * (1.0 / 0.999 - 1.0), 0.1);
 }
+
+TEST(LineProfile, ABuoyOnTheGroundedPartLiftsTheLineAndItTouchesDownAgain) {
+    // A wire rope (44.03 kg/m, displacement diameter 0.1076 m, EA 8.08e8 N) of 578.9 m from a
+    // fairlead 24.35 m deep to an anchor 421.8 m away on a 234 m seabed, with a buoy (1680 kg,
+    // 5.464 m3) at s = 395.3 m: without it some 300 m would rest; the buoy lifts the line between
+    // two touchdowns. MoorPy (a system of two lines and the buoy as a free point, rigid seabed)
+    // gives 87,528.5 N at the fairlead and 16,158.7 N at the anchor, 213.3 m grounded in all.
+    const double rho = 1025.0, g = 9.81, d = 0.10762016294747695;
+    const double w = (44.02761599378772 - rho * 3.14159265358979 * d * d / 4.0) * g;
+    const double buoy = (1680.1347326032826 - rho * 5.463852788953765) * g;
+    const Vector3d top(0.0, 0.0, -24.34589837580009), bottom(-421.78162345848614, 0.0, -233.99777534568773);
+    const LineProfile p = solved(top, bottom, {{578.9028840088951, w, 807685908.3689377}}, {{395.33852500261077, buoy}},
+                                 true, -233.99777534568773);
+    // MoorPy's own tolerance: its points balance to 1e-5 of the tension
+    EXPECT_NEAR(p.top_force().norm(), 87528.54567174417, 1e-4 * 87528.5);
+    EXPECT_NEAR(p.bottom_force().norm(), 16158.669104640067, 1e-4 * 16158.7);
+    EXPECT_NEAR(p.grounded_length(), 213.2543899783769, 1e-3 * 578.9);
+    EXPECT_GT(p.lowest_clearance(), -1e-9 * 578.9);  // nowhere below the seabed
+    EXPECT_EQ(p.contacts().size(), 3u);              // the touchdown, the lift-off, the touchdown
+}

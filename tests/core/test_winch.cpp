@@ -165,6 +165,46 @@ TEST(WinchRate, StopsExactlyAtTheLengthLimits) {
     EXPECT_EQ(r.rate, 0.8);
 }
 
+// A drum with an acceleration limit driven at full speed into each length limit from rest: the rate
+// changes by at most A h per step, never exceeds maxRate, and the drum stops exactly at the limit.
+TEST(WinchDrum, BrakesAtItsAccelerationToStopExactlyAtTheLimits) {
+    const WinchLimits lim{50.0, 120.0, 1.0, 0.1};
+    for (const double h : {0.5, 0.13, 2.0}) {
+        for (const double request : {1.0, -1.0}) {
+            double length = 100.0, rate = 0.0, farthest = length;
+            for (int k = 0; k < static_cast<int>(200.0 / h); ++k) {
+                const WinchStep s = plan_winch_step(request, rate, length, h, lim);
+                ASSERT_EQ(s.rate0, rate) << "the drum's rate is continuous";
+                EXPECT_LE(std::fabs(s.rate1 - s.rate0), lim.maxAcceleration * h * (1 + 1e-12));
+                EXPECT_LE(std::fabs(s.rate1), lim.maxRate);
+                for (int i = 1; i <= 8; ++i) {  // inside the step too
+                    const double at = length + s.length(h * i / 8.0);
+                    farthest = request > 0 ? std::max(farthest, at) : std::min(farthest, at);
+                }
+                length += s.length(h);
+                rate = s.rate1;
+            }
+            const double limit = request > 0 ? lim.maxLength : lim.minLength;
+            EXPECT_NEAR(length, limit, 1e-9) << "h " << h;
+            EXPECT_NEAR(farthest, limit, 1e-9) << "h " << h;  // no overshoot
+            EXPECT_EQ(rate, 0.0);
+        }
+    }
+}
+
+TEST(WinchDrum, WithoutAnAccelerationLimitItIsTheRateLimitOverTheStep) {
+    const WinchLimits lim{50.0, 600.0, 1.0, 0.0};
+    for (const double request : {0.5, 3.0, -3.0}) {
+        for (const double length : {100.0, 599.9, 50.2}) {
+            const WinchStep s = plan_winch_step(request, 0.3, length, 0.5, lim);
+            const WinchRate r = limit_winch_rate(request, length, 0.5, lim);
+            EXPECT_EQ(s.rate0, r.rate);
+            EXPECT_EQ(s.rate1, r.rate);
+            EXPECT_DOUBLE_EQ(s.length(0.5), r.rate * 0.5);
+        }
+    }
+}
+
 TEST(WinchRate, ConstantTensionPaysOutAboveTheTargetAndHaulsInBelow) {
     EXPECT_GT(constant_tension_rate(12e3, 10e3, 1e-4, 1.0), 0.0);
     EXPECT_LT(constant_tension_rate(8e3, 10e3, 1e-4, 1.0), 0.0);

@@ -24,11 +24,11 @@ STEP = 0.5
 
 
 def winch_cable(make_cable, length, mode=1, min_length=50.0, max_length=600.0, max_rate=1.0,
-                **kwargs):
+                parameters_extra=None, **kwargs):
     params = {**DeployBody().fmu_parameters(), "length": length,
               "nElements": elements_for_length(length, NOMINAL), "initMode": 0,
               "winchMode": mode, "winch.minLength": min_length, "winch.maxLength": max_length,
-              "winch.maxRate": max_rate}
+              "winch.maxRate": max_rate, **(parameters_extra or {})}
     return make_cable(parameters=params, **kwargs)
 
 
@@ -214,7 +214,8 @@ def fly_still(cable, duration, set_tension, t0=0.0):
 
 def test_constant_tension_state_across_a_split_continues_bit_identically(make_cable):
     """The constant-tension winch's unknowns are part of the state: saved before the winch has paid out
-    past a split, restored (in memory and serialized), the run repeats itself bit for bit."""
+    past a split, restored (in memory and serialized, in the same and in a fresh instance), the run
+    repeats itself bit for bit."""
     cable = make_cable(parameters={**HANGING, "winchMode": 2, "winch.timeConstant": 0.002})
     cable.initialize()
     target = cable.get("towTension") - 3000.0
@@ -228,6 +229,11 @@ def test_constant_tension_state_across_a_split_continues_bit_identically(make_ca
     cable.set_state(cable.deserialize_state(cable.serialize_state(state)))
     serialized, _ = fly_still(cable, 30.0, target, t0=2.0)
     assert np.array_equal(first, serialized)
+    fresh = make_cable(parameters={**HANGING, "winchMode": 2, "winch.timeConstant": 0.002})
+    fresh.initialize()
+    fresh.set_state(fresh.deserialize_state(cable.serialize_state(state)))
+    restored, _ = fly_still(fresh, 30.0, target, t0=2.0)
+    assert np.array_equal(first, restored)
 
 
 def test_a_fast_winch_on_a_fine_mesh_remeshes_many_elements_per_step(make_cable):
@@ -247,3 +253,128 @@ def test_a_fast_winch_on_a_fine_mesh_remeshes_many_elements_per_step(make_cable)
         assert cable.get("unstretchedLength") == pytest.approx(length, abs=1e-9)
         assert math.isfinite(cable.get("towTension")) and cable.get("towTension") > 0.0
     assert any("reaches winch.minLength" in m for _, _, m in cable.messages), cable.log_text()
+
+
+@pytest.mark.parametrize("rate", [0.5, -0.5], ids=["split", "merge"])
+def test_state_saved_where_the_next_step_remeshes_continues_exactly(make_cable, rate):
+    """Saved at the communication point whose next step splits (pay-out at 0.5 m/s: the 14.3 m top
+    element passes 21.4 m at 14.3 s) or merges (haul-in: it passes 7.1 m at 14.3 s), the run
+    continues bit for bit in the same instance and in a fresh one: the remesh uses nothing but
+    the saved state."""
+    t_save = 14.5
+    cable = winch_cable(make_cable, 100.0)
+    start(cable)
+    fly(cable, 0.0, t_save, rate)
+    state = cable.serialize_state(cable.get_state())
+    first, L = fly(cable, t_save, 5.0, rate)
+    cable.set_state(cable.deserialize_state(state))
+    again, _ = fly(cable, t_save, 5.0, rate)
+    assert np.array_equal(first, again)
+    fresh = winch_cable(make_cable, 100.0)  # a fresh instance with a history of its own: at rest
+    fresh.initialize(inputs={"winch.rate": 0.0})
+    fresh.set_state(fresh.deserialize_state(state))
+    restored, _ = fly(fresh, t_save, 5.0, rate)
+    assert np.array_equal(first, restored), (first[:3], restored[:3])
+
+
+def test_constant_tension_winch_never_pays_out_a_compressed_line(make_cable):
+    """The winch controls the tension along the line at the tow point (signed, the station tension
+    `tension[1]`), not the size of the tow force: under an 8 m heave at 8 s the 2 t body cannot follow
+    the sheave down and the top of the line is pushed; in none of those samples may the winch pay out
+    (with the size of the force, a compressed line read as an overload and was paid out; docs/winch.md,
+    "Constant tension")."""
+    params = {**HANGING, "length": 100.0, "nElements": 7, "winch.minLength": 20.0, "winch.maxRate": 5.0}
+    fixed = make_cable(parameters=params)
+    fixed.initialize()
+    static = fixed.get("towTension")
+    cable = make_cable(parameters={**params, "winchMode": 2, "winch.timeConstant": 0.05})
+    cable.initialize(inputs={"winch.tension": static})
+    w = 2 * math.pi / PERIOD
+    T, L = [], [cable.get("unstretchedLength")]
+    for k in range(int(round(60.0 / H))):
+        t = k * H
+        cable.set({"tow.z": 8.0 * math.sin(w * t), "tow.vz": 8.0 * w * math.cos(w * t)})
+        cable.set_input_derivatives(["tow.vz"], 1, [-8.0 * w * w * math.sin(w * t)])
+        cable.do_step(H, t)
+        T.append(cable.get("tension[1]"))
+        L.append(cable.get("unstretchedLength"))
+    T, paid = np.array(T), np.diff(L)
+    compressed = T < 0.0
+    assert compressed.sum() > 50, "the scene must compress the line's top"
+    assert np.all(paid[compressed] <= 1e-9), f"paid out in {np.sum(paid[compressed] > 1e-9)} compressed samples"
+    assert np.ptp(L) < 10.0  # it follows the heave, it does not run away
+
+
+def limit_scene(make_cable, max_acceleration):
+    """Pay-out at 1 m/s (winch.maxRate) from 100 m towards winch.maxLength 120 m, 0.5 s steps: the
+    tow tension (max over each step) and the deployed length."""
+    cable = winch_cable(make_cable, 100.0, max_length=120.0, logging_on=True,
+                        parameters_extra={"winch.maxAcceleration": max_acceleration})
+    start(cable)
+    Tmax, L = [], []
+    for k in range(80):
+        t = k * STEP
+        cable.set({"tow.x": SPEED * t, "tow.vx": SPEED, "winch.rate": 1.0})
+        cable.do_step(STEP, t)
+        Tmax.append(cable.get("towTensionMax"))
+        L.append(cable.get("unstretchedLength"))
+    return np.array(Tmax), np.array(L), cable
+
+
+def test_winch_drum_with_an_acceleration_limit_brakes_to_stop_at_the_length_limit(make_cable):
+    """winch.maxAcceleration A: the drum ramps to the requested 1 m/s and brakes at A so that it stops
+    exactly at winch.maxLength; the rate never changes by more than A h over a step. Without the
+    limit the drum stops from 1 m/s within one step and the line snaps the towed body to a halt."""
+    A = 0.1
+    Tmax, L, cable = limit_scene(make_cable, A)
+    settled = Tmax[-1]
+    rate = np.diff(np.concatenate([[100.0], L])) / STEP  # mean rate over each step
+    assert L[-1] == pytest.approx(120.0, abs=1e-6)
+    assert np.all(L <= 120.0 + 1e-6)
+    assert np.max(np.abs(np.diff(rate))) <= A * STEP * (1 + 1e-9) + 1e-12
+    assert any("brakes to stop at winch.maxLength" in m for _, _, m in cable.messages), cable.log_text()
+    # braking at A, the line and the body (m L + mass + added mass = 824 kg) need (824 kg) A = 82 N
+    # more than settled, 1.6 %, and their drag changes with their speed through the water by less than
+    # the pay-out's own effect on the tension (docs/winch.md, "Measured"): well within 20 %; a drum
+    # stopped within one step stops the line at once and snaps the tension to several times the
+    # settled one (docs/winch.md, "The drum")
+    assert Tmax.max() < 1.2 * settled, (Tmax.max(), settled)
+    hard, L_hard, _ = limit_scene(make_cable, 0.0)
+    assert L_hard[-1] == pytest.approx(120.0, abs=1e-9)
+    assert hard.max() > 5.0 * settled
+
+
+def test_constant_tension_winch_brakes_within_the_drum_envelope_at_the_length_limit(make_cable):
+    """Held 5 kN below the hanging weight, the constant-tension winch lowers the 2 t body into
+    winch.maxLength 205 m. With winch.maxAcceleration its command stays within the braking envelope
+    c^2 = 2 A d: it slows down before the limit and stops there (past it only by what the drum's lag
+    tau lets through, millimetres), and the tension stays nearer the static one than when the
+    command drops to 0 at the limit."""
+    fixed = make_cable(parameters=HANGING)
+    fixed.initialize()
+    static = fixed.get("towTension")
+    runs = {}
+    for A in (0.0, 0.2):
+        cable = make_cable(parameters={**HANGING, "winchMode": 2, "winch.timeConstant": 0.05,
+                                       "winch.maxLength": 205.0, "winch.maxAcceleration": A})
+        cable.initialize(inputs={"winch.tension": static - 5000.0})
+        runs[A] = fly_still(cable, 40.0, static - 5000.0)
+    T, L = runs[0.2]
+    assert L[-1] == pytest.approx(205.0, abs=0.01)
+    assert L.max() <= 205.0 + 0.01
+    # the largest tension sampled: braking along the envelope against stopping at the limit
+    assert np.max(T) < np.max(runs[0.0][0])
+
+
+def test_min_tension_sees_the_top_elements_material_motion(make_cable):
+    """minTension (element means and node reactions) reads the top element with the velocities its
+    forces see, the material's: hauling in at 0.5 m/s the line below the sheave is in tension all
+    along, and the smallest tension is at the towed body (the tension grows towards the sheave).
+    With the sheave's velocity the top element's damping read a strain rate of -c / l1, tens of kN."""
+    cable = winch_cable(make_cable, 300.0)
+    start(cable)
+    for t in np.arange(0.0, 30.0, STEP):
+        cable.set({"tow.x": SPEED * t, "tow.vx": SPEED, "winch.rate": -0.5})
+        cable.do_step(STEP, t)
+        end = cable.get("endTension")
+        assert cable.get("minTension") == pytest.approx(end, rel=0.01), (t, cable.get("minTension"), end)
