@@ -1,16 +1,35 @@
 /* file_lookup.c - see file_lookup.h. */
 #include "file_lookup.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
+#include "file_uri.h"
+
+static int is_separator(char c) {
+#ifdef _WIN32
+    return c == '/' || c == '\\';
+#else
+    return c == '/';
+#endif
+}
+
+int uc_file_is_absolute(const char* name) {
+    if (is_separator(name[0])) return 1;
+#ifdef _WIN32
+    if (isalpha((unsigned char)name[0]) && name[1] == ':' && is_separator(name[2])) return 1;
+#endif
+    return 0;
+}
+
 /* dir + "/" + name in a new buffer (free it); NULL when out of memory. */
 static char* join_path(const char* dir, const char* name) {
     const size_t d = strlen(dir), n = strlen(name);
-    const int slash = d > 0 && dir[d - 1] != '/';
+    const int slash = d > 0 && !is_separator(dir[d - 1]);
     char* path = malloc(d + (size_t)slash + n + 1);
     if (path == NULL) return NULL;
     memcpy(path, dir, d);
@@ -21,7 +40,15 @@ static char* join_path(const char* dir, const char* name) {
 
 int uc_file_candidates(const char* name, const char* resources, char* candidates[2]) {
     int n = 0;
-    if (name[0] == '/') {
+    if (strncmp(name, "file:", 5) == 0) {
+        /* a URI that is no local file URI stays as it is: opening it fails and the message names it */
+        const size_t size = strlen(name) + 1;
+        char* path = malloc(size);
+        if (path != NULL && uc_file_uri_to_path(name, path, size) != 0) memcpy(path, name, size);
+        candidates[n] = path;
+        return path != NULL ? 1 : 0;
+    }
+    if (uc_file_is_absolute(name)) {
         candidates[n] = join_path("", name);
         return candidates[n] != NULL ? 1 : 0;
     }

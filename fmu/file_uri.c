@@ -1,6 +1,7 @@
 /* file_uri.c - see file_uri.h. */
 #include "file_uri.h"
 
+#include <ctype.h>
 #include <string.h>
 
 static int hex_value(char c) {
@@ -32,5 +33,9 @@ int uc_file_uri_to_path(const char* uri, char* path, size_t size) {
         path[n++] = c;
     }
     path[n] = '\0';
+#ifdef _WIN32
+    /* file:///C:/dir names the path C:/dir (RFC 8089, appendix E.2): drop the slash before the drive. */
+    if (n >= 3 && path[0] == '/' && isalpha((unsigned char)path[1]) && path[2] == ':') memmove(path, path + 1, n);
+#endif
     return 0;
 }

@@ -7,7 +7,8 @@
 
 #include <stddef.h>
 
-/* file:///p, file://localhost/p or file:/p with percent-encoding decoded into path (size bytes).
+/* file:///p, file://localhost/p or file:/p with percent-encoding decoded into path (size bytes); on Windows
+ * file:///C:/p is the path C:/p.
  * Returns 0 on success, 1 when the URI is not a local file URI or the path does not fit. */
 int uc_file_uri_to_path(const char* uri, char* path, size_t size);
 

@@ -120,7 +120,7 @@ fmi2Status uc_line_file_load(UCInstance* inst, UCParams* p, const char* function
     if (!done) {
         uc_log_status(&inst->log, fmi2Error, "%s: lineFile = '%s' cannot be read: tried %s%s", function,
                       inst->params.lineFile, n > 0 ? tried : "nothing (out of memory)",
-                      inst->params.lineFile[0] != '/' && inst->resourceLocation == NULL
+                      !uc_file_is_absolute(inst->params.lineFile) && inst->resourceLocation == NULL
                           ? "; no resources directory was given to fmi2Instantiate"
                           : "");
     }

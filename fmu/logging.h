@@ -29,6 +29,14 @@ typedef struct UCLogger {
     unsigned int enabled;             /* bit i: category i enabled */
 } UCLogger;
 
+/* The messages are formatted with the C99 printf (%zu, %lld): glibc's, or MinGW-w64's own on Windows
+ * (__USE_MINGW_ANSI_STDIO, cmake/UcPlatform.cmake), which the compiler checks as gnu_printf. */
+#if defined(__MINGW32__)
+#define UC_PRINTF_FORMAT(fmt, args) __attribute__((format(gnu_printf, fmt, args)))
+#else
+#define UC_PRINTF_FORMAT(fmt, args) __attribute__((format(printf, fmt, args)))
+#endif
+
 const char* uc_log_category_name(UCLogCategory category);
 
 /* Sets loggingOn and the enabled categories (nCategories == 0: all). fmi2Error (logged) for an unknown name. */
@@ -36,11 +44,11 @@ fmi2Status uc_log_configure(UCLogger* logger, int loggingOn, size_t nCategories,
 
 /* Logs with an explicit category (status fmi2OK: only if enabled). */
 void uc_log(const UCLogger* logger, fmi2Status status, UCLogCategory category, const char* format, ...)
-    __attribute__((format(printf, 4, 5)));
+    UC_PRINTF_FORMAT(4, 5);
 
 /* Logs with the logStatus* category that matches the status (Warning, Discard, Error, Fatal). */
 void uc_log_status(const UCLogger* logger, fmi2Status status, const char* format, ...)
-    __attribute__((format(printf, 3, 4)));
+    UC_PRINTF_FORMAT(3, 4);
 
 /* The same through a logger callback before an instance exists (fmi2Instantiate); callback may be NULL. */
 void uc_log_raw(fmi2CallbackLogger callback, fmi2ComponentEnvironment environment, const char* instanceName,

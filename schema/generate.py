@@ -12,6 +12,8 @@ Generated (each file says so in its first lines; never edit them by hand):
     docs/interface.md               the tables between the "generated from schema" markers
     python/ucable/variables.py     the variables as Python constants
     fmu/documentation/index.html    the FMU's own documentation page
+    fmu/fmi3/modelDescription.xml   the FMI 3.0 variant's model description (arrays at the stations)
+    fmu/fmi3/uc_fmi3_arrays.h       its array variables, for the FMI 3.0 adapter
 
 The CMake build runs this script when the schema changes, and a test (ctest: schema_is_current)
 runs it with --check, so a schema edit that was not regenerated cannot land.
@@ -42,6 +44,8 @@ OUT_XML = ROOT / "modelDescription.xml"
 OUT_README = ROOT / "docs" / "interface.md"  # the interface tables (the README links to them)
 OUT_PYTHON = ROOT / "python" / "ucable" / "variables.py"
 OUT_HTML = ROOT / "fmu" / "documentation" / "index.html"
+OUT_FMI3_XML = ROOT / "fmu" / "fmi3" / "modelDescription.xml"
+OUT_FMI3_HEADER = ROOT / "fmu" / "fmi3" / "uc_fmi3_arrays.h"
 
 CAUSALITIES = ("parameter", "input", "output")
 STRUCTS = {"parameter": "UCParams", "input": "UCInputs", "output": "UCOutputs"}
@@ -317,21 +321,37 @@ def xml_attr(text: str) -> str:
     return html.escape(text, quote=True)
 
 
-def xml_text(data, scalars) -> str:
-    md = data["modelDescription"]
-    out = ['<?xml version="1.0" encoding="UTF-8"?>',
-           f"<!-- {GENERATED_NOTE}",
-           "     CMake replaces the guid placeholder with a hash of this file, compiled into the binary. -->",
-           "<fmiModelDescription"]
-    for k, v in md["attributes"].items():
-        out.append(f'  {k}="{xml_attr(str(v))}"')
-    out[-1] += ">"
-    out.append("  <CoSimulation")
-    caps = list(md["coSimulation"].items())
-    for i, (k, v) in enumerate(caps):
+def xml_capabilities(caps: dict) -> list:
+    out = ["  <CoSimulation"]
+    for i, (k, v) in enumerate(caps.items()):
         text = ("true" if v else "false") if isinstance(v, bool) else str(v)
         out.append(f'    {k}="{text}"' + ("/>" if i == len(caps) - 1 else ""))
-    out.append("  <UnitDefinitions>")
+    return out
+
+
+def xml_variable_attributes(name: str, s: Scalar, description: str) -> str:
+    """name, valueReference, causality, variability, initial and description (FMI 2.0 and 3.0 alike)."""
+    attrs = f'name="{xml_attr(name)}" valueReference="{s.vr}" causality="{s.causality}"'
+    if s.causality == "parameter":
+        attrs += ' variability="fixed" initial="exact"'
+    elif s.causality == "input":
+        attrs += ' variability="continuous"'
+    else:
+        attrs += ' variability="continuous" initial="calculated"'
+    return attrs + f' description="{xml_attr(description)}"'
+
+
+def xml_dependencies(s: Scalar, key) -> str:
+    """The dependencies attributes of an output (FMI 2.0: indices, FMI 3.0: value references, by key)."""
+    if not s.dependencies:
+        return ""
+    kinds = " ".join("dependent" for _ in s.dependencies)
+    return f' dependencies="{" ".join(str(key(d)) for d in s.dependencies)}" dependenciesKind="{kinds}"'
+
+
+def xml_common_elements(data) -> list:
+    """UnitDefinitions, LogCategories and DefaultExperiment: the same in FMI 2.0 and 3.0."""
+    out = ["  <UnitDefinitions>"]
     for unit in data["unit"]:
         base = " ".join(f'{k}="{v}"' for k, v in unit["base"].items())
         if "display" in unit:
@@ -347,18 +367,24 @@ def xml_text(data, scalars) -> str:
     for c in data["logCategory"]:
         out.append(f'    <Category name="{c["name"]}" description="{xml_attr(c["description"])}"/>')
     out.append("  </LogCategories>")
-    de = md["defaultExperiment"]
+    de = data["modelDescription"]["defaultExperiment"]
     out.append("  <DefaultExperiment " + " ".join(f'{k}="{fmt_number(v)}"' for k, v in de.items()) + "/>")
+    return out
+
+
+def xml_text(data, scalars) -> str:
+    md = data["modelDescription"]
+    out = ['<?xml version="1.0" encoding="UTF-8"?>',
+           f"<!-- {GENERATED_NOTE}",
+           "     CMake replaces the guid placeholder with a hash of this file, compiled into the binary. -->",
+           "<fmiModelDescription"]
+    for k, v in md["attributes"].items():
+        out.append(f'  {k}="{xml_attr(str(v))}"')
+    out[-1] += ">"
+    out += xml_capabilities(md["coSimulation"]) + xml_common_elements(data)
     out.append("  <ModelVariables>")
     for s in scalars:
-        attrs = f'name="{xml_attr(s.name)}" valueReference="{s.vr}" causality="{s.causality}"'
-        if s.causality == "parameter":
-            attrs += ' variability="fixed" initial="exact"'
-        elif s.causality == "input":
-            attrs += ' variability="continuous"'
-        else:
-            attrs += ' variability="continuous" initial="calculated"'
-        attrs += f' description="{xml_attr(s.description)}"'
+        attrs = xml_variable_attributes(s.name, s, s.description)
         tattrs = []
         if s.unit:
             tattrs.append(f'unit="{xml_attr(s.unit)}"')
@@ -378,12 +404,7 @@ def xml_text(data, scalars) -> str:
     out.append("  <ModelStructure>")
     out.append("    <Outputs>")
     for s in outputs:
-        if s.dependencies:
-            idx = " ".join(str(by_name[d].index) for d in s.dependencies)
-            kinds = " ".join("dependent" for _ in s.dependencies)
-            out.append(f'      <Unknown index="{s.index}" dependencies="{idx}" dependenciesKind="{kinds}"/>')
-        else:
-            out.append(f'      <Unknown index="{s.index}"/>')
+        out.append(f'      <Unknown index="{s.index}"{xml_dependencies(s, lambda d: by_name[d].index)}/>')
     out.append("    </Outputs>")
     out.append("    <InitialUnknowns>")
     for s in outputs:
@@ -392,6 +413,116 @@ def xml_text(data, scalars) -> str:
     out.append("  </ModelStructure>")
     out.append("</fmiModelDescription>")
     return "\n".join(out) + "\n"
+
+
+# --------------------------------------------------------------------------------------------- FMI 3.0
+# The FMI 3.0 variant (build/fmi3/UnderwaterCable.fmu, docs/fmi3.md): the same variables with the same
+# names and value references, typed Float64 / Int32 / Boolean / String; the outputs at the stations
+# (name "x[{k}]", count UC_NUM_STATIONS) are one array variable "x" of that many elements, with the
+# value reference of its first element. FMI 3.0 also asks for the independent variable: time, 0.
+FMI3_TYPES = {"Real": "Float64", "Integer": "Int32", "Boolean": "Boolean", "String": "String"}
+FMI3_TIME_VR = 0
+
+
+def fmi3_variables(entries, constants):
+    """(name, first scalar, count) per FMI 3.0 variable, in the order of the FMI 2.0 scalars."""
+    stations = int(constants["UC_NUM_STATIONS"])
+    variables = []
+    for e in entries:
+        raw = e.raw
+        if raw["causality"] == "output" and raw.get("count") == "UC_NUM_STATIONS" and raw["name"].endswith("[{k}]"):
+            assert len(e.scalars) == stations
+            variables.append((raw.get("fmi3Name", raw["name"][:-len("[{k}]")]), e.scalars[0], stations))
+        else:
+            variables += [(s.name, s, 1) for s in e.scalars]
+    names = [name for name, _, _ in variables]
+    if len(set(names)) != len(names):
+        dup = sorted({n for n in names if names.count(n) > 1})
+        raise SystemExit(f"schema: FMI 3.0 names {dup} are not unique (an array named like another variable: "
+                         "give it an fmi3Name)")
+    return variables
+
+
+def fmi3_xml_text(data, entries) -> str:
+    md = data["modelDescription"]
+    attributes = dict(md["attributes"])
+    attributes["fmiVersion"] = "3.0"
+    attributes["instantiationToken"] = attributes.pop("guid")
+    attributes.pop("numberOfEventIndicators", None)
+    out = ['<?xml version="1.0" encoding="UTF-8"?>',
+           f"<!-- {GENERATED_NOTE}",
+           "     The FMI 3.0 variant; CMake replaces the token placeholder with a hash of this file. -->",
+           "<fmiModelDescription"]
+    for k, v in attributes.items():
+        out.append(f'  {k}="{xml_attr(str(v))}"')
+    out[-1] += ">"
+    cs = md["coSimulation"]
+    caps = {"modelIdentifier": cs["modelIdentifier"], "needsExecutionTool": False,
+            "canBeInstantiatedOnlyOncePerProcess": False,
+            "canGetAndSetFMUState": cs["canGetAndSetFMUstate"], "canSerializeFMUState": cs["canSerializeFMUstate"],
+            "providesDirectionalDerivatives": cs["providesDirectionalDerivative"],
+            "canHandleVariableCommunicationStepSize": cs["canHandleVariableCommunicationStepSize"],
+            "maxOutputDerivativeOrder": 0, "hasEventMode": False, "canReturnEarlyAfterIntermediateUpdate": False}
+    out += xml_capabilities(caps) + xml_common_elements(data)
+    out.append("  <ModelVariables>")
+    out.append(f'    <Float64 name="time" valueReference="{FMI3_TIME_VR}" causality="independent" '
+               'variability="continuous" description="Simulation time" unit="s"/>')
+    variables = fmi3_variables(entries, data.get("constants", {}))
+    for name, s, count in variables:
+        kind = FMI3_TYPES[s.type]
+        description = s.description if count == 1 else s.entry["description"].replace("{k}", "k")
+        attrs = xml_variable_attributes(name, s, description)
+        if s.unit:
+            attrs += f' unit="{xml_attr(s.unit)}"'
+        if s.lo is not None:
+            lo, hi = (fmt_number(s.lo), fmt_number(s.hi)) if kind == "Float64" else (int(s.lo), int(s.hi))
+            attrs += f' min="{lo}" max="{hi}"'
+        children = []
+        if kind == "String":
+            children.append(f'<Start value="{xml_attr(s.start)}"/>')
+        elif s.start is not None:
+            if kind == "Boolean":
+                start = "true" if s.start else "false"
+            elif kind == "Int32":
+                start = str(int(s.start))
+            else:
+                start = fmt_number(float(s.start))
+            attrs += f' start="{start}"'
+        if count > 1:
+            children.append(f'<Dimension start="{count}"/>')
+        if children:
+            out.append(f"    <{kind} {attrs}>")
+            out += [f"      {c}" for c in children]
+            out.append(f"    </{kind}>")
+        else:
+            out.append(f"    <{kind} {attrs}/>")
+    out.append("  </ModelVariables>")
+    by_name = {s.name: s for e in entries for s in e.scalars}
+    out.append("  <ModelStructure>")
+    outputs = [(s, count) for _, s, count in variables if s.causality == "output"]
+    for s, count in outputs:
+        out.append(f'    <Output valueReference="{s.vr}"{xml_dependencies(s, lambda d: by_name[d].vr)}/>')
+    for s, count in outputs:
+        out.append(f'    <InitialUnknown valueReference="{s.vr}"/>')
+    out.append("  </ModelStructure>")
+    out.append("</fmiModelDescription>")
+    return "\n".join(out) + "\n"
+
+
+def fmi3_header_text(data, entries) -> str:
+    """The FMI 3.0 adapter's table of array variables: X(value reference, number of elements)."""
+    rows = [(s.vr, count, name) for name, s, count in fmi3_variables(entries, data.get("constants", {})) if count > 1]
+    out = [f"/* {GENERATED_NOTE} */",
+           "/* The FMI 3.0 variant's array variables (docs/fmi3.md): each has the value reference of its first",
+           " * element among the FMI 2.0 scalars, which follow it consecutively. */",
+           "#ifndef UC_FMI3_ARRAYS_H", "#define UC_FMI3_ARRAYS_H", "",
+           f"#define UC_FMI3_TIME_VR {FMI3_TIME_VR}", "",
+           "/* X(valueReference, elements, name) */",
+           "#define UC_FMI3_ARRAYS(X) \\"]
+    out += [f'    X({vr}, {count}, "{name}") \\' for vr, count, name in rows]
+    out[-1] = out[-1].rstrip(" \\")
+    out += ["", "#endif", ""]
+    return "\n".join(out)
 
 
 # --------------------------------------------------------------------------------------------- README
@@ -528,6 +659,8 @@ def generated_files() -> dict:
         OUT_README: readme_text(OUT_README.read_text(), entries),
         OUT_PYTHON: python_text(data, scalars),
         OUT_HTML: html_text(data, entries),
+        OUT_FMI3_XML: fmi3_xml_text(data, entries),
+        OUT_FMI3_HEADER: fmi3_header_text(data, entries),
     }
 
 

@@ -1,6 +1,8 @@
 // band_solver.cpp - SUNDIALS band matrix and band LU behind a small interface.
 #include "band_solver.h"
 
+#include "sundials_compat.h"
+
 #include <nvector/nvector_serial.h>
 #include <sunlinsol/sunlinsol_band.h>
 #include <sunmatrix/sunmatrix_band.h>
@@ -38,14 +40,14 @@ void BandSolver::clear() { SUNMatZero(A_); }
 
 void BandSolver::add(int row, int col, double value) { SM_ELEMENT_B(A_, row, col) += value; }
 
-bool BandSolver::factor() { return SUNLinSolSetup(solver_, A_) == SUNLS_SUCCESS; }
+bool BandSolver::factor() { return SUNLinSolSetup(solver_, A_) == kLinearSolverSuccess; }
 
 bool BandSolver::factor_and_solve(double* b) { return factor() && solve(b); }
 
 bool BandSolver::solve(double* b) {
     double* bb = N_VGetArrayPointer(b_);
     for (int i = 0; i < n_; ++i) bb[i] = b[i];
-    if (SUNLinSolSolve(solver_, A_, x_, b_, 0.0) != SUNLS_SUCCESS) return false;
+    if (SUNLinSolSolve(solver_, A_, x_, b_, 0.0) != kLinearSolverSuccess) return false;
     const double* xx = N_VGetArrayPointer(x_);
     for (int i = 0; i < n_; ++i) b[i] = xx[i];
     return true;

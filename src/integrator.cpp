@@ -1,6 +1,8 @@
 // integrator.cpp - IDA set-up and stepping.
 #include "integrator.h"
 
+#include "sundials_compat.h"
+
 #include <ida/ida.h>
 #include <ida/ida_impl.h>     // IDAMemRec: the history saved with the FMU state
 #include <ida/ida_ls_impl.h>  // IDALsMemRec: its Jacobian counter
@@ -9,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdarg>
 #include <cstdlib>
 #include <new>
 
@@ -26,10 +29,10 @@ int shell_matrix_zero(SUNMatrix) { return 0; }
 void shell_matrix_destroy(SUNMatrix A) { SUNMatFreeEmpty(A); }
 SUNLinearSolver_Type shell_solver_type(SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; }
 SUNLinearSolver_ID shell_solver_id(SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; }
-int shell_solver_initialize(SUNLinearSolver) { return SUNLS_SUCCESS; }
+int shell_solver_initialize(SUNLinearSolver) { return kLinearSolverSuccess; }
 int shell_solver_free(SUNLinearSolver S) {
     SUNLinSolFreeEmpty(S);
-    return SUNLS_SUCCESS;
+    return kLinearSolverSuccess;
 }
 
 // The vector operations IDA spends its own time in, as plain loops compiled with the core. The
@@ -191,7 +194,7 @@ void copy_counters(IDAMem m, double* v, bool save) {
 
 Integrator::Integrator(SUNContext context, int n, int bandwidth, SecondOrderSystem* system)
     : n_(n), bandwidth_(bandwidth), schur_(n, bandwidth), schurLU_(n, bandwidth), D_(n, bandwidth),
-      K_(n, bandwidth), C_(n, bandwidth), M_(n, bandwidth), system_(system) {
+      K_(n, bandwidth), C_(n, bandwidth), M_(n, bandwidth), system_(system), context_(context) {
     pivoted_ = std::make_unique<BandSolver>(context, n, bandwidth);
     rhs_.assign(n, 0.0);
     positions_.assign(n, 0.0);
@@ -220,7 +223,7 @@ Integrator::Integrator(SUNContext context, int n, int bandwidth, SecondOrderSyst
     N_VConst(0.0, y_);
     N_VConst(0.0, yp_);
     bool ok = true;
-    ok = ok && IDASetErrHandlerFn(ida_, &Integrator::error_handler, this) == IDA_SUCCESS;
+    ok = ok && route_messages();
     ok = ok && IDAInit(ida_, &Integrator::residual_callback, 0.0, y_, yp_) == IDA_SUCCESS;
     ok = ok && IDASetUserData(ida_, this) == IDA_SUCCESS;
     ok = ok && IDASetLinearSolver(ida_, solver_, J_) == IDA_SUCCESS;
@@ -237,6 +240,7 @@ Integrator::Integrator(SUNContext context, int n, int bandwidth, SecondOrderSyst
 Integrator::~Integrator() { release(); }
 
 void Integrator::release() {
+    unroute_messages();
     if (ida_) IDAFree(&ida_);
     if (solver_) SUNLinSolFree(solver_);
     if (J_) SUNMatDestroy(J_);
@@ -297,7 +301,7 @@ int Integrator::ls_setup(SUNLinearSolver S, SUNMatrix /*A*/) {
     if (!self->alwaysPivot_) {
         self->schurLU_ = self->schur_;
         self->usePivoted_ = !self->schurLU_.factor();
-        if (!self->usePivoted_) return SUNLS_SUCCESS;
+        if (!self->usePivoted_) return kLinearSolverSuccess;
     }
     self->usePivoted_ = true;
     ++self->pivotedFactorizations_;
@@ -305,7 +309,7 @@ int Integrator::ls_setup(SUNLinearSolver S, SUNMatrix /*A*/) {
     self->pivoted_->clear();
     for (int i = 0; i < n; ++i)
         for (int k = std::max(0, i - b); k <= std::min(n - 1, i + b); ++k) self->pivoted_->add(i, k, self->schur_.get(i, k));
-    return self->pivoted_->factor() ? SUNLS_SUCCESS : SUNLS_LUFACT_FAIL;  // > 0: IDA retries smaller
+    return self->pivoted_->factor() ? kLinearSolverSuccess : kLinearSolverSingular;  // > 0: IDA retries smaller
 }
 
 // Solves [cj I, -I; K, D] (x_q, x_v) = (b_q, b_v) (interleaved): x_v = cj x_q - b_q, and
@@ -323,7 +327,7 @@ int Integrator::ls_solve(SUNLinearSolver S, SUNMatrix /*A*/, N_Vector x, N_Vecto
     }
     self->D_.add_product(positions, rhs);
     if (self->usePivoted_) {
-        if (!self->pivoted_->solve(rhs)) return SUNLS_PACKAGE_FAIL_UNREC;
+        if (!self->pivoted_->solve(rhs)) return kLinearSolverUnrecoverable;
     } else {
         self->schurLU_.solve(rhs);
     }
@@ -331,23 +335,65 @@ int Integrator::ls_solve(SUNLinearSolver S, SUNMatrix /*A*/, N_Vector x, N_Vecto
         xx[2 * i + 1] = self->cj_ * rhs[i] - bb[2 * i];
         xx[2 * i] = rhs[i];
     }
-    return SUNLS_SUCCESS;
+    return kLinearSolverSuccess;
 }
 
-void Integrator::error_handler(int code, const char* /*module*/, const char* function, char* msg, void* self) {
-    auto* integrator = static_cast<Integrator*>(self);
+void Integrator::record_message(const char* function, const char* msg) {
     char buffer[600];
-    // The code SUNDIALS passes here is not always the flag the call returns (IDA 6.4 reports "mxstep
-    // steps taken" with IDA_ILL_INPUT although IDASolve returns IDA_TOO_MUCH_WORK), so only the
-    // function and the text are kept; advance() names the returned flag.
-    (void)code;
     std::snprintf(buffer, sizeof buffer, "%s: %s", function ? function : "IDA", msg ? msg : "");
     // IDA 6.4 builds some messages from fragments that both end in a comma ("At t = 3, , mxstep
     // steps taken ..."): print one.
     std::string text = buffer;
     for (size_t at = text.find(", ,"); at != std::string::npos; at = text.find(", ,", at)) text.erase(at, 2);
-    integrator->lastMessage_ = text;
+    lastMessage_ = text;
 }
+
+#if SUNDIALS_VERSION_MAJOR >= 7
+// 7.x hands errors through the context's error handlers to the context's logger, and IDA's warnings
+// straight to it; the logger prints errors to stderr and warnings to stdout, which an FMU must not. Its
+// message operation (an overridable member of the logger) is replaced by one that records errors and
+// warnings with the integrator that uses the context (one at a time: a remesh frees the old integrator
+// before it makes the new one) and drops the rest.
+namespace {
+SUNErrCode logger_message(SUNLogger logger, SUNLogLevel level, const char* /*scope*/, const char* label,
+                          const char* format, va_list args) {
+    auto* integrator = static_cast<Integrator*>(logger->content);
+    if (integrator == nullptr || (level != SUN_LOGLEVEL_ERROR && level != SUN_LOGLEVEL_WARNING)) return SUN_SUCCESS;
+    char text[512];
+    std::vsnprintf(text, sizeof text, format, args);
+    integrator->record_message(label, text);
+    return SUN_SUCCESS;
+}
+}  // namespace
+
+bool Integrator::route_messages() {
+    SUNLogger logger = nullptr;
+    if (SUNContext_GetLogger(context_, &logger) != SUN_SUCCESS || logger == nullptr) return false;
+    logger->content = this;
+    logger->queuemsg = logger_message;
+    return true;
+}
+
+void Integrator::unroute_messages() {
+    SUNLogger logger = nullptr;
+    if (SUNContext_GetLogger(context_, &logger) == SUN_SUCCESS && logger != nullptr && logger->content == this)
+        logger->content = nullptr;
+}
+#else
+// 6.x hands IDA's errors and warnings to the error handler of the IDA memory. The code it passes is not
+// always the flag the call returns (IDA 6.4 reports "mxstep steps taken" with IDA_ILL_INPUT although
+// IDASolve returns IDA_TOO_MUCH_WORK), so only the function and the text are kept; advance() names the
+// returned flag.
+namespace {
+void error_handler(int /*code*/, const char* /*module*/, const char* function, char* msg, void* self) {
+    static_cast<Integrator*>(self)->record_message(function, msg);
+}
+}  // namespace
+
+bool Integrator::route_messages() { return IDASetErrHandlerFn(ida_, error_handler, this) == IDA_SUCCESS; }
+
+void Integrator::unroute_messages() {}
+#endif
 
 bool Integrator::restart(double t, const double* y, const double* yp, std::string& error) {
     double* yy = N_VGetArrayPointer(y_);

@@ -111,8 +111,13 @@ public:
     // Factorizations that fell back to (or were forced onto) the pivoting LU since construction.
     long pivoted_factorizations() const { return pivotedFactorizations_; }
 
+    // SUNDIALS' own messages (IDA's errors and warnings, the linear solvers' errors) arrive here instead of
+    // the process's stdout or stderr; the last one is part of the report of a failure.
+    void record_message(const char* function, const char* text);
+
 private:
-    static void error_handler(int code, const char* module, const char* function, char* msg, void* self);
+    bool route_messages();
+    void unroute_messages();
     static int error_weights(N_Vector y, N_Vector ewt, void* self);
     static int residual_callback(double t, N_Vector y, N_Vector yp, N_Vector r, void* self);
     static int jacobian_callback(double t, double cj, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix J,
@@ -153,6 +158,7 @@ private:
     std::vector<double> blockWeights_; // per block: 1 / along^2, 1 / across^2, 1 / alongRate^2, 1 / acrossRate^2
     void update_directions();
     SecondOrderSystem* system_;
+    SUNContext context_;
     std::string lastMessage_;
 };
 

@@ -51,7 +51,8 @@ void LineProfile::walk(double H, double v, const std::vector<double>& rests, std
     double hanging = v;  // the vertical tension: v + W(u) from the lower end while it rests there
     bool grounded = seabed_ && v < 0.0;
     size_t ip = 0;
-    int found = 0;  // local minima of the hanging line passed so far
+    int found = 0;         // local minima of the hanging line passed so far
+    double restLeft = 0.0;  // of the resting stretch at the last minimum, across sections
     auto push = [&](const Piece& p, double l) {
         double dx, dz;
         piece_offset(p, H, l, dx, dz);
@@ -70,6 +71,8 @@ void LineProfile::walk(double H, double v, const std::vector<double>& rests, std
                 hanging = P;
                 continue;
             }
+            if (restLeft > 0.0 && P < 0.0) restLeft = 0.0;  // a buoy ends a resting stretch
+            if (restLeft > 0.0) continue;                   // a clump on it rests
             hanging += P;
             if (!grounded && before < 0.0 && hanging >= 0.0) {
                 // the line comes down to this point and rises from it: a local minimum; where it
@@ -88,6 +91,14 @@ void LineProfile::walk(double H, double v, const std::vector<double>& rests, std
             double next = ip < points_.size() ? std::min(end, points_[ip].s) : end;
             if (next <= u + snap) next = end;
             double l = next - u;
+            if (restLeft > 0.0) {
+                l = std::min(l, restLeft);
+                push(Piece{u, l, seg.weight, seg.EA, 0.0, x, z, true}, l);
+                u += l;
+                restLeft -= l;
+                if (restLeft <= snap) restLeft = 0.0;
+                continue;
+            }
             if (grounded) {
                 const bool lifts = seg.weight > 0.0 && hanging + seg.weight * l > 0.0;
                 if (lifts) l = -hanging / seg.weight;  // the touchdown inside this piece
@@ -105,12 +116,8 @@ void LineProfile::walk(double H, double v, const std::vector<double>& rests, std
                 u += lv;
                 hanging = 0.0;
                 if (minima) minima->push_back(z);
-                const double rest = found < static_cast<int>(rests.size()) ? std::min(std::max(rests[found], 0.0), end - u) : 0.0;
+                restLeft = found < static_cast<int>(rests.size()) ? std::max(rests[found], 0.0) : 0.0;
                 ++found;
-                if (rest > 0.0) {
-                    push(Piece{u, rest, seg.weight, seg.EA, 0.0, x, z, true}, rest);
-                    u += rest;
-                }
                 continue;
             }
             push(Piece{u, l, seg.weight, seg.EA, hanging, x, z, false}, l);
@@ -138,6 +145,7 @@ bool LineProfile::solve(const Eigen::Vector3d& top, const Eigen::Vector3d& botto
         weight += s.weight * s.length;
         EA = std::min(EA, s.EA);
     }
+    const double lineWeight = weight;  // without the point loads: the first guess's catenary
     if (!(X > 1e-9 * length_)) return fail("both ends on one vertical");
     segments_.assign(segments.rbegin(), segments.rend());
     points_.clear();
@@ -158,7 +166,7 @@ bool LineProfile::solve(const Eigen::Vector3d& top, const Eigen::Vector3d& botto
     }
 
     // Starting values of H and v: a catenary of the mean weight, or a taut straight line.
-    const double w = weight / length_;
+    const double w = (lineWeight > 0.0 ? lineWeight : weight) / length_;
     const double chord = d.norm();
     double H0, v0;
     const double strain = std::max(chord / length_ - 1.0, 1e-4);
@@ -235,15 +243,17 @@ bool LineProfile::solve(const Eigen::Vector3d& top, const Eigen::Vector3d& botto
         y << std::log(std::max(H0 * factor, 1e-9 * scale)), v0;
         double norm = newton(y);
         if (norm <= tolerance && fallback.size() == 0) fallback = y;
-        for (int pass = 0; pass < 8 && norm <= tolerance; ++pass) {
-            // contacts: activate the first minimum below the seabed beyond the active ones, or drop
-            // the first active one whose rest came out negative (and all after it)
+        for (int pass = 0; pass < 8; ++pass) {
+            // contacts: activate the first minimum below the seabed beyond the active ones (also
+            // where Newton's method stalled without it: a line that must rest twice has no
+            // solution with one contact), or drop the first active one whose rest came out
+            // negative (and all after it)
             const std::vector<double> rests(y.data() + 2, y.data() + y.size());
             double x, z;
             walk(std::exp(y[0]), y[1], rests, pieces, x, z, &minima);
             Eigen::Index drop = -1;
             for (Eigen::Index j = 2; j < y.size(); ++j)
-                if (y[j] < -tolerance * std::max(scale, 1.0)) {
+                if (norm <= tolerance && y[j] < -tolerance * std::max(scale, 1.0)) {
                     drop = j;
                     break;
                 }

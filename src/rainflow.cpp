@@ -8,7 +8,7 @@ namespace {
 
 // Removes the closed cycles at the top of a turning-point stack (the four-point rule) and returns
 // their damage; counts them into *cycles.
-double close_cycles(double* s, int& n, const SNCurve& curve, double* cycles) {
+double close_cycles(double* s, std::int32_t& n, const SNCurve& curve, double* cycles) {
     double damage = 0.0;
     while (n >= 4) {
         const double x1 = s[n - 4], x2 = s[n - 3], x3 = s[n - 2], x4 = s[n - 1];
@@ -75,7 +75,7 @@ double RainflowCounter::damage(const SNCurve& curve) const {
     // The newest sample ends the history: as an offline count would, treat it as a turning point
     // (on a copy: later samples may still move it).
     double copy[kCapacity];
-    int n = size;
+    std::int32_t n = size;
     for (int k = 0; k < n; ++k) copy[k] = stack[k];
     double cycles = 0.0;
     double d = closedDamage + close_cycles(copy, n, curve, &cycles);

@@ -10,7 +10,13 @@
 // The state is a plain struct of fixed size (exact save/restore by copying it). A residue longer
 // than its capacity (only for a history whose amplitude keeps growing for hundreds of reversals)
 // counts its oldest range as a half cycle and drops it; the stack never reallocates.
+//
+// The struct is copied byte for byte into saved FMU states, which one platform may write and another
+// read (docs/platforms.md): its fields are fixed-width types (no `long`, 8 bytes on Linux and 4 on
+// Windows) in an order that leaves no padding, so its bytes are the same on every 64-bit platform.
 #pragma once
+
+#include <cstdint>
 
 namespace uc {
 
@@ -27,12 +33,12 @@ struct SNCurve {
 struct RainflowCounter {
     static constexpr int kCapacity = 128;
     double stack[kCapacity] = {};  // turning points, oldest first (the last one may still move)
-    int size = 0;
     double last = 0.0;             // previous sample, and whether the signal was rising into it
-    int direction = 0;             // +1 rising, -1 falling, 0 no direction yet
-    long samples = 0;
     double closedDamage = 0.0;     // Miner's sum of the closed cycles
     double closedCycles = 0.0;
+    std::int64_t samples = 0;
+    std::int32_t size = 0;
+    std::int32_t direction = 0;    // +1 rising, -1 falling, 0 no direction yet
 
     void add(double value, const SNCurve& curve);
     // Closed cycles plus the residue's half cycles: the offline count of the history so far.

@@ -14,13 +14,14 @@
 #include "outputs.h"
 #include "rainflow.h"
 #include "statics.h"
+#include "sundials_compat.h"
 #include "winch.h"
 
 namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 8;
+constexpr std::uint32_t kStateVersion = 9;
 
 // A driven end in a saved state.
 struct EndHeader {
@@ -178,7 +179,7 @@ CableSimulation::CableSimulation(const UCParams& params) : model_(params) {
     sn_.logK = params.fatigueLogK;
     sn_.area = params.fatigueArea;
     off_ = params.winchMode == UC_WINCH_TENSION ? 1 : 0;
-    if (SUNContext_Create(nullptr, &context_) != 0 || context_ == nullptr) throw std::bad_alloc();
+    if (SUNContext_Create(UC_SUN_COMM_NULL, &context_) != 0 || context_ == nullptr) throw std::bad_alloc();
     try {
         allocate();
     } catch (...) {

@@ -10,6 +10,7 @@
 
 #include "band_solver.h"
 #include "simulation.h"
+#include "sundials_compat.h"
 
 using namespace uc;
 
@@ -17,7 +18,7 @@ namespace {
 
 struct Context {
     SUNContext ctx = nullptr;
-    Context() { SUNContext_Create(nullptr, &ctx); }
+    Context() { SUNContext_Create(UC_SUN_COMM_NULL, &ctx); }
     ~Context() { SUNContext_Free(&ctx); }
 };
 

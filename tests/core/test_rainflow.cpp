@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <random>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -139,6 +142,24 @@ TEST(Rainflow, GrowingAmplitudeBeyondTheCapacityKeepsCountingWithoutOverflow) {
     std::vector<double> h;
     for (int k = 0; k < 3 * RainflowCounter::kCapacity; ++k) h.push_back((k % 2 ? 1.0 : -1.0) * (k + 1));
     EXPECT_DOUBLE_EQ(stream(h, linear_curve()), astm_damage(h, linear_curve()));
+}
+
+// Saved FMU states carry the counter's bytes, and a state saved on Linux must restore on Windows and
+// back: the layout must not depend on the platform's `long` or on padding (whose bytes are
+// unspecified). Fixed-width fields, no padding: the same 1064 bytes on every 64-bit platform.
+TEST(RainflowState, LayoutIsFixedWidthWithoutPadding) {
+    static_assert(std::is_trivially_copyable<RainflowCounter>::value, "saved by a byte copy");
+    static_assert(std::is_standard_layout<RainflowCounter>::value, "offsets are meaningful");
+    static_assert(std::is_same<decltype(RainflowCounter::samples), std::int64_t>::value, "8 bytes everywhere");
+    static_assert(std::is_same<decltype(RainflowCounter::size), std::int32_t>::value, "4 bytes everywhere");
+    static_assert(std::is_same<decltype(RainflowCounter::direction), std::int32_t>::value, "4 bytes everywhere");
+    constexpr std::size_t fields = RainflowCounter::kCapacity * sizeof(double) + 3 * sizeof(double) +
+                                   sizeof(std::int64_t) + 2 * sizeof(std::int32_t);
+    EXPECT_EQ(sizeof(RainflowCounter), fields);
+    EXPECT_EQ(fields, 1064u);
+    EXPECT_EQ(offsetof(RainflowCounter, samples), 1048u);
+    EXPECT_EQ(offsetof(RainflowCounter, size), 1056u);
+    EXPECT_EQ(offsetof(RainflowCounter, direction), 1060u);
 }
 
 TEST(Rainflow, NoAreaMeansNoDamage) {

@@ -229,6 +229,24 @@ TEST(LineFileParameter, AnAbsolutePathIsReadAsIs) {
     EXPECT_TRUE(inst.log.contains("lineFile " + kChainDeck.string() + " read")) << inst.log.all();
 }
 
+TEST(LineFileParameter, AFileUriIsThePathItNames) {
+    // A directory with a space: the URI percent-encodes it, the FMU reads the decoded path.
+    TempDir tmp;
+    const fs::path dir = tmp.path / "deck dir";
+    fs::create_directory(dir);
+    write_text(dir / "chain.dat", read_text(kChainDeck));
+    const std::string uri = file_uri(dir / "chain.dat");
+    Instance inst;
+    ASSERT_EQ(inst.setString("lineFile", uri.c_str()), fmi2OK);
+    set_scene(inst);
+    EXPECT_EQ(inst.initialize(), fmi2OK) << inst.log.all();
+    EXPECT_TRUE(inst.log.contains("lineFile " + (dir / "chain.dat").string() + " read")) << inst.log.all();
+    Instance remote("remote");
+    ASSERT_EQ(remote.setString("lineFile", "file://server/decks/chain.dat"), fmi2OK);
+    EXPECT_EQ(remote.initialize(), fmi2Error);
+    EXPECT_TRUE(remote.log.contains("tried file://server/decks/chain.dat (no such file)")) << remote.log.all();
+}
+
 TEST(LineFileParameter, AnUnreadableFileIsAnErrorNamingEveryPathTried) {
     TempDir tmp;
     const std::string uri = file_uri(tmp.path);

@@ -22,15 +22,6 @@ from studies.exact import ElasticCatenary, TouchdownCatenary
 SEED = 2026          # the benchmark's default seed: this is its lines 0-11
 LINES = 12
 ELEMENTS = 20
-# What today's static solver measures on this subset where it misses the acceptance (20 elements;
-# the full sample is in docs/statics_benchmark.md).
-BASELINE = {
-    "anchor": "anchor (endTension) error 95th percentile 0.78 %, max 1.44 % (line 4, a buoy on a "
-              "chain-polyester-chain line: -8.2 / -1.44 / -0.49 / -0.22 % at 10 / 20 / 40 / 80 elements)",
-    "silent": "1 of 12 runs off by more than 1 % without an error (line 4: anchor -1.44 %)",
-}
-
-
 @pytest.fixture(scope="module")
 def cases():
     return B.draw_cases(SEED, LINES)
@@ -133,7 +124,6 @@ def test_fairlead_tension_within_half_a_percent_of_moorpy(initialized):
     assert _within_bounds([r["err_fairlead"] for r in initialized])
 
 
-@pytest.mark.xfail(strict=True, reason=f"today's static solver: {BASELINE['anchor']}")
 def test_anchor_tension_within_half_a_percent_of_moorpy(initialized):
     assert _within_bounds([r["err_anchor"] for r in initialized])
 
@@ -144,6 +134,5 @@ def test_a_line_resting_on_a_frictionless_seabed_pulls_its_anchor_horizontally(i
     assert max(abs(r["err_vertical"]) for r in grounded) <= 1e-3
 
 
-@pytest.mark.xfail(strict=True, reason=f"today's static solver: {BASELINE['silent']}")
 def test_no_run_is_off_by_more_than_one_percent_without_an_error(initialized):
     assert not [r["id"] for r in initialized if r["off"]]

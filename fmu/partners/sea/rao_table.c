@@ -280,7 +280,7 @@ static char* find_table(const char* resources, const char* file, const char* nam
     if (found == NULL) {
         snprintf(msg, msgSize, "raoFile = '%s' cannot be read: tried %s%s", file,
                  n > 0 ? tried : "nothing (out of memory)",
-                 name[0] != '/' && resources == NULL ? "; no resources directory was given to fmi2Instantiate" : "");
+                 !uc_file_is_absolute(name) && resources == NULL ? "; no resources directory was given to fmi2Instantiate" : "");
     }
     return found;
 }

@@ -1,0 +1,435 @@
+/*
+ * fmi3Functions.c - the FMI 3.0 co-simulation interface of the cable FMU (docs/fmi3.md), over the FMI 2.0
+ * adapter: one instance of it inside each FMI 3.0 instance, the same state machine, logging, states and
+ * checks. What FMI 3.0 adds or names differently is translated here: arrays (the stations' outputs, one
+ * value reference each, expanded to the FMI 2.0 scalars that follow it), the independent variable time,
+ * fmi3EnterInitializationMode with the experiment's times, fmi3DoStep's extra results, the log callback
+ * without printf formatting and the resource directory as a path. The FMI 3.0 functions that a
+ * co-simulation FMU without event mode, clocks or the other integer types does not provide are present
+ * (FMI 3.0 requires it) and return fmi3Error with a logged message.
+ */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fmi2Functions.h"
+#include "fmi3Types.h"
+#include "instance.h"
+#include "logging.h"
+#include "uc_fmi3_arrays.h"
+
+#if defined(_WIN32)
+#define FMI3_EXPORT __declspec(dllexport)
+#else
+#define FMI3_EXPORT __attribute__((visibility("default")))
+#endif
+
+_Static_assert(sizeof(fmi3Int32) == sizeof(fmi2Integer), "Int32 values pass to the FMI 2.0 adapter as they are");
+_Static_assert(sizeof(fmi3ValueReference) == sizeof(fmi2ValueReference), "value references pass as they are");
+_Static_assert((int)fmi3Error == (int)fmi2Error && (int)fmi3Discard == (int)fmi2Discard &&
+                   (int)fmi3Fatal == (int)fmi2Fatal, "the statuses have the same values");
+
+/* An FMI 3.0 instance: the FMI 2.0 instance and the FMI 3.0 importer's log callback. */
+typedef struct {
+    UCInstance* inner;
+    fmi3LogMessageCallback logMessage;
+    fmi3InstanceEnvironment environment;
+} UC3Instance;
+
+static UCInstance* inner(fmi3Instance instance) { return instance ? ((UC3Instance*)instance)->inner : NULL; }
+
+/* The FMI 2.0 adapter's messages are printf formats with '%' and '#' doubled; FMI 3.0's are plain text. */
+static void forward_log(fmi2ComponentEnvironment environment, fmi2String instanceName, fmi2Status status,
+                        fmi2String category, fmi2String message, ...) {
+    (void)instanceName;
+    const UC3Instance* self = (const UC3Instance*)environment;
+    if (self == NULL || self->logMessage == NULL) return;
+    char text[2048];
+    va_list args;
+    va_start(args, message);
+    vsnprintf(text, sizeof text, message, args);
+    va_end(args);
+    char* out = text;
+    for (const char* in = text; *in != '\0'; ++in) {
+        *out++ = *in;
+        if (*in == '#' && in[1] == '#') ++in;
+    }
+    *out = '\0';
+    self->logMessage(self->environment, (fmi3Status)status, category, text);
+}
+
+static fmi3Status unsupported(fmi3Instance instance, const char* function) {
+    UCInstance* inst = inner(instance);
+    if (inst != NULL) {
+        uc_log_status(&inst->log, fmi2Error, "%s: not provided by this co-simulation FMU (no event mode, clocks, "
+                      "model exchange or scheduled execution; Float64, Int32, Boolean and String variables only)",
+                      function);
+    }
+    return fmi3Error;
+}
+
+/* file:// URI of a resource directory given as a path (FMI 3.0 passes paths, the adapter reads URIs). */
+static char* resource_uri(fmi3String path) {
+    if (path == NULL) return NULL;
+    const size_t n = strlen(path);
+    char* uri = malloc(3 * n + 16);
+    if (uri == NULL) return NULL;
+    char* out = uri + sprintf(uri, "file://%s", path[0] == '/' ? "" : "/");
+    for (const char* p = path; *p != '\0'; ++p) {
+        const unsigned char c = (unsigned char)*p;
+        if (c == '\\') {
+            *out++ = '/';
+        } else if (c == '%' || c == ' ' || c == '#' || c == '?' || c < 0x20) {
+            out += sprintf(out, "%%%02X", c);
+        } else {
+            *out++ = (char)c;
+        }
+    }
+    *out = '\0';
+    return uri;
+}
+
+/* ---- life cycle ------------------------------------------------------------------------------------ */
+
+FMI3_EXPORT const char* fmi3GetVersion(void) { return "3.0"; }
+
+FMI3_EXPORT fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean loggingOn, size_t nCategories,
+                                           const fmi3String categories[]) {
+    return (fmi3Status)fmi2SetDebugLogging(inner(instance), loggingOn, nCategories, categories);
+}
+
+FMI3_EXPORT fmi3Instance fmi3InstantiateCoSimulation(
+    fmi3String instanceName, fmi3String instantiationToken, fmi3String resourcePath, fmi3Boolean visible,
+    fmi3Boolean loggingOn, fmi3Boolean eventModeUsed, fmi3Boolean earlyReturnAllowed,
+    const fmi3ValueReference requiredIntermediateVariables[], size_t nRequiredIntermediateVariables,
+    fmi3InstanceEnvironment instanceEnvironment, fmi3LogMessageCallback logMessage,
+    fmi3IntermediateUpdateCallback intermediateUpdate) {
+    (void)earlyReturnAllowed, (void)requiredIntermediateVariables, (void)nRequiredIntermediateVariables;
+    (void)intermediateUpdate; /* never returns early, no intermediate variables */
+    UC3Instance* self = calloc(1, sizeof *self);
+    if (self == NULL) return NULL;
+    self->logMessage = logMessage;
+    self->environment = instanceEnvironment;
+    if (eventModeUsed) {
+        forward_log(self, instanceName, fmi2Error, "logStatusError",
+                    "fmi3InstantiateCoSimulation: eventModeUsed = true, but the FMU has no event mode "
+                    "(hasEventMode = false)");
+        free(self);
+        return NULL;
+    }
+    char* uri = resource_uri(resourcePath);
+    const fmi2CallbackFunctions callbacks = {forward_log, NULL, NULL, NULL, self};
+    self->inner = (UCInstance*)fmi2Instantiate(instanceName, fmi2CoSimulation, instantiationToken, uri, &callbacks,
+                                               visible, loggingOn);
+    free(uri);
+    if (self->inner == NULL) {
+        free(self);
+        return NULL;
+    }
+    return self;
+}
+
+FMI3_EXPORT fmi3Instance fmi3InstantiateModelExchange(fmi3String instanceName, fmi3String instantiationToken,
+                                                      fmi3String resourcePath, fmi3Boolean visible,
+                                                      fmi3Boolean loggingOn, fmi3InstanceEnvironment instanceEnvironment,
+                                                      fmi3LogMessageCallback logMessage) {
+    (void)instantiationToken, (void)resourcePath, (void)visible, (void)loggingOn;
+    UC3Instance self = {NULL, logMessage, instanceEnvironment};
+    forward_log(&self, instanceName, fmi2Error, "logStatusError",
+                "fmi3InstantiateModelExchange: UnderwaterCable is a co-simulation FMU only");
+    return NULL;
+}
+
+FMI3_EXPORT fmi3Instance fmi3InstantiateScheduledExecution(
+    fmi3String instanceName, fmi3String instantiationToken, fmi3String resourcePath, fmi3Boolean visible,
+    fmi3Boolean loggingOn, fmi3InstanceEnvironment instanceEnvironment, fmi3LogMessageCallback logMessage,
+    fmi3ClockUpdateCallback clockUpdate, fmi3LockPreemptionCallback lockPreemption,
+    fmi3UnlockPreemptionCallback unlockPreemption) {
+    (void)instantiationToken, (void)resourcePath, (void)visible, (void)loggingOn, (void)clockUpdate;
+    (void)lockPreemption, (void)unlockPreemption;
+    UC3Instance self = {NULL, logMessage, instanceEnvironment};
+    forward_log(&self, instanceName, fmi2Error, "logStatusError",
+                "fmi3InstantiateScheduledExecution: UnderwaterCable is a co-simulation FMU only");
+    return NULL;
+}
+
+FMI3_EXPORT void fmi3FreeInstance(fmi3Instance instance) {
+    if (instance == NULL) return;
+    fmi2FreeInstance(inner(instance));
+    free(instance);
+}
+
+FMI3_EXPORT fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Boolean toleranceDefined,
+                                                   fmi3Float64 tolerance, fmi3Float64 startTime,
+                                                   fmi3Boolean stopTimeDefined, fmi3Float64 stopTime) {
+    UCInstance* inst = inner(instance);
+    const fmi2Status status = fmi2SetupExperiment(inst, toleranceDefined, tolerance, startTime, stopTimeDefined, stopTime);
+    if (status > fmi2Warning) return (fmi3Status)status;
+    return (fmi3Status)fmi2EnterInitializationMode(inst);
+}
+
+FMI3_EXPORT fmi3Status fmi3ExitInitializationMode(fmi3Instance instance) {
+    return (fmi3Status)fmi2ExitInitializationMode(inner(instance));  /* into step mode: no event mode */
+}
+
+FMI3_EXPORT fmi3Status fmi3Terminate(fmi3Instance instance) { return (fmi3Status)fmi2Terminate(inner(instance)); }
+
+FMI3_EXPORT fmi3Status fmi3Reset(fmi3Instance instance) { return (fmi3Status)fmi2Reset(inner(instance)); }
+
+FMI3_EXPORT fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentCommunicationPoint,
+                                  fmi3Float64 communicationStepSize, fmi3Boolean noSetFMUStatePriorToCurrentPoint,
+                                  fmi3Boolean* eventHandlingNeeded, fmi3Boolean* terminateSimulation,
+                                  fmi3Boolean* earlyReturn, fmi3Float64* lastSuccessfulTime) {
+    UCInstance* inst = inner(instance);
+    if (inst == NULL || eventHandlingNeeded == NULL || terminateSimulation == NULL || earlyReturn == NULL ||
+        lastSuccessfulTime == NULL) {
+        if (inst != NULL) uc_log_status(&inst->log, fmi2Error, "fmi3DoStep: a result pointer is NULL");
+        return fmi3Error;
+    }
+    const fmi2Status status = fmi2DoStep(inst, currentCommunicationPoint, communicationStepSize,
+                                         noSetFMUStatePriorToCurrentPoint);
+    *eventHandlingNeeded = false;
+    *earlyReturn = false;
+    *terminateSimulation = status == fmi2Discard && inst->terminateRequested;
+    *lastSuccessfulTime = status <= fmi2Warning ? inst->time : inst->lastSuccessfulTime;
+    return (fmi3Status)status;
+}
+
+/* ---- values ---------------------------------------------------------------------------------------- */
+
+/* Elements of the variable vr: the array's length, or 1 for a scalar. */
+static size_t elements(fmi3ValueReference vr) {
+#define UC_FMI3_ARRAY_LENGTH(first, count, name) \
+    if (vr == (first)) return (count);
+    UC_FMI3_ARRAYS(UC_FMI3_ARRAY_LENGTH)
+#undef UC_FMI3_ARRAY_LENGTH
+    return 1;
+}
+
+static fmi3Status count_mismatch(UCInstance* inst, const char* function, size_t nValueReferences, size_t nValues) {
+    uc_log_status(&inst->log, fmi2Error, "%s: %zu values for %zu value references of %zu elements in all", function,
+                  nValues, nValueReferences, nValues);
+    return fmi3Error;
+}
+
+/* Float64 get and set, variable by variable: an array is its elements' consecutive FMI 2.0 scalars (the
+ * arrays are the stations' outputs: UC_NUM_STATIONS elements). */
+#define UC_FMI3_ARRAY_FITS(first, count, name) _Static_assert((count) <= UC_NUM_STATIONS, name " fits");
+UC_FMI3_ARRAYS(UC_FMI3_ARRAY_FITS)
+#undef UC_FMI3_ARRAY_FITS
+
+static fmi3Status access_float64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
+                                 fmi3Float64* values, size_t nValues, int set, const char* function) {
+    UCInstance* inst = inner(instance);
+    if (inst == NULL) return fmi3Error;
+    if (nvr > 0 && (vr == NULL || values == NULL)) {
+        uc_log_status(&inst->log, fmi2Error, "%s: vr or values is NULL with nvr = %zu", function, nvr);
+        return fmi3Error;
+    }
+    size_t at = 0;
+    fmi2Status worst = fmi2OK;
+    for (size_t k = 0; k < nvr; ++k) {
+        const size_t n = elements(vr[k]);
+        if (at + n > nValues) return count_mismatch(inst, function, nvr, nValues);
+        fmi2Status status;
+        if (vr[k] == UC_FMI3_TIME_VR && !set) {
+            values[at] = inst->time;
+            status = fmi2OK;
+        } else {
+            fmi2ValueReference scalars[UC_NUM_STATIONS];
+            for (size_t i = 0; i < n; ++i) scalars[i] = vr[k] + (fmi2ValueReference)i;
+            status = set ? fmi2SetReal(inst, scalars, n, values + at) : fmi2GetReal(inst, scalars, n, values + at);
+        }
+        if (status > worst) worst = status;
+        if (worst > fmi2Warning) return (fmi3Status)worst;
+        at += n;
+    }
+    if (at != nValues) return count_mismatch(inst, function, nvr, nValues);
+    return (fmi3Status)worst;
+}
+
+FMI3_EXPORT fmi3Status fmi3GetFloat64(fmi3Instance instance, const fmi3ValueReference valueReferences[],
+                                      size_t nValueReferences, fmi3Float64 values[], size_t nValues) {
+    return access_float64(instance, valueReferences, nValueReferences, values, nValues, 0, "fmi3GetFloat64");
+}
+
+FMI3_EXPORT fmi3Status fmi3SetFloat64(fmi3Instance instance, const fmi3ValueReference valueReferences[],
+                                      size_t nValueReferences, const fmi3Float64 values[], size_t nValues) {
+    return access_float64(instance, valueReferences, nValueReferences, (fmi3Float64*)values, nValues, 1,
+                          "fmi3SetFloat64");
+}
+
+/* Scalar-only types: one value per value reference. */
+static int scalar_counts(fmi3Instance instance, size_t nvr, size_t nValues, const char* function) {
+    if (inner(instance) != NULL && nvr != nValues) {
+        count_mismatch(inner(instance), function, nvr, nValues);
+        return 0;
+    }
+    return inner(instance) != NULL;
+}
+
+FMI3_EXPORT fmi3Status fmi3GetInt32(fmi3Instance instance, const fmi3ValueReference valueReferences[],
+                                    size_t nValueReferences, fmi3Int32 values[], size_t nValues) {
+    if (!scalar_counts(instance, nValueReferences, nValues, "fmi3GetInt32")) return fmi3Error;
+    return (fmi3Status)fmi2GetInteger(inner(instance), valueReferences, nValueReferences, (fmi2Integer*)values);
+}
+
+FMI3_EXPORT fmi3Status fmi3SetInt32(fmi3Instance instance, const fmi3ValueReference valueReferences[],
+                                    size_t nValueReferences, const fmi3Int32 values[], size_t nValues) {
+    if (!scalar_counts(instance, nValueReferences, nValues, "fmi3SetInt32")) return fmi3Error;
+    return (fmi3Status)fmi2SetInteger(inner(instance), valueReferences, nValueReferences, (const fmi2Integer*)values);
+}
+
+FMI3_EXPORT fmi3Status fmi3GetBoolean(fmi3Instance instance, const fmi3ValueReference valueReferences[],
+                                      size_t nValueReferences, fmi3Boolean values[], size_t nValues) {
+    if (!scalar_counts(instance, nValueReferences, nValues, "fmi3GetBoolean")) return fmi3Error;
+    fmi2Boolean* b = calloc(nValues + 1, sizeof *b);
+    if (b == NULL) return fmi3Error;
+    const fmi2Status status = fmi2GetBoolean(inner(instance), valueReferences, nValueReferences, b);
+    for (size_t k = 0; status <= fmi2Warning && k < nValues; ++k) values[k] = b[k] != fmi2False;
+    free(b);
+    return (fmi3Status)status;
+}
+
+FMI3_EXPORT fmi3Status fmi3SetBoolean(fmi3Instance instance, const fmi3ValueReference valueReferences[],
+                                      size_t nValueReferences, const fmi3Boolean values[], size_t nValues) {
+    if (!scalar_counts(instance, nValueReferences, nValues, "fmi3SetBoolean")) return fmi3Error;
+    fmi2Boolean* b = calloc(nValues + 1, sizeof *b);
+    if (b == NULL) return fmi3Error;
+    for (size_t k = 0; k < nValues && values != NULL; ++k) b[k] = values[k] ? fmi2True : fmi2False;
+    const fmi2Status status = fmi2SetBoolean(inner(instance), valueReferences, nValueReferences,
+                                             values != NULL ? b : NULL);
+    free(b);
+    return (fmi3Status)status;
+}
+
+FMI3_EXPORT fmi3Status fmi3GetString(fmi3Instance instance, const fmi3ValueReference valueReferences[],
+                                     size_t nValueReferences, fmi3String values[], size_t nValues) {
+    if (!scalar_counts(instance, nValueReferences, nValues, "fmi3GetString")) return fmi3Error;
+    return (fmi3Status)fmi2GetString(inner(instance), valueReferences, nValueReferences, values);
+}
+
+FMI3_EXPORT fmi3Status fmi3SetString(fmi3Instance instance, const fmi3ValueReference valueReferences[],
+                                     size_t nValueReferences, const fmi3String values[], size_t nValues) {
+    if (!scalar_counts(instance, nValueReferences, nValues, "fmi3SetString")) return fmi3Error;
+    return (fmi3Status)fmi2SetString(inner(instance), valueReferences, nValueReferences, values);
+}
+
+/* ---- states and derivatives ----------------------------------------------------------------------- */
+
+FMI3_EXPORT fmi3Status fmi3GetFMUState(fmi3Instance instance, fmi3FMUState* FMUState) {
+    return (fmi3Status)fmi2GetFMUstate(inner(instance), (fmi2FMUstate*)FMUState);
+}
+
+FMI3_EXPORT fmi3Status fmi3SetFMUState(fmi3Instance instance, fmi3FMUState FMUState) {
+    return (fmi3Status)fmi2SetFMUstate(inner(instance), FMUState);
+}
+
+FMI3_EXPORT fmi3Status fmi3FreeFMUState(fmi3Instance instance, fmi3FMUState* FMUState) {
+    return (fmi3Status)fmi2FreeFMUstate(inner(instance), (fmi2FMUstate*)FMUState);
+}
+
+FMI3_EXPORT fmi3Status fmi3SerializedFMUStateSize(fmi3Instance instance, fmi3FMUState FMUState, size_t* size) {
+    return (fmi3Status)fmi2SerializedFMUstateSize(inner(instance), FMUState, size);
+}
+
+FMI3_EXPORT fmi3Status fmi3SerializeFMUState(fmi3Instance instance, fmi3FMUState FMUState, fmi3Byte serializedState[],
+                                             size_t size) {
+    return (fmi3Status)fmi2SerializeFMUstate(inner(instance), FMUState, (fmi2Byte*)serializedState, size);
+}
+
+FMI3_EXPORT fmi3Status fmi3DeserializeFMUState(fmi3Instance instance, const fmi3Byte serializedState[], size_t size,
+                                               fmi3FMUState* FMUState) {
+    return (fmi3Status)fmi2DeSerializeFMUstate(inner(instance), (const fmi2Byte*)serializedState, size,
+                                               (fmi2FMUstate*)FMUState);
+}
+
+FMI3_EXPORT fmi3Status fmi3GetDirectionalDerivative(fmi3Instance instance, const fmi3ValueReference unknowns[],
+                                                    size_t nUnknowns, const fmi3ValueReference knowns[], size_t nKnowns,
+                                                    const fmi3Float64 seed[], size_t nSeed, fmi3Float64 sensitivity[],
+                                                    size_t nSensitivity) {
+    UCInstance* inst = inner(instance);
+    if (inst == NULL) return fmi3Error;
+    int arrays = 0;
+    for (size_t k = 0; k < nUnknowns && unknowns != NULL; ++k) arrays |= elements(unknowns[k]) > 1;
+    for (size_t k = 0; k < nKnowns && knowns != NULL; ++k) arrays |= elements(knowns[k]) > 1;
+    if (nSeed != nKnowns || nSensitivity != nUnknowns || arrays) {
+        uc_log_status(&inst->log, fmi2Error, "fmi3GetDirectionalDerivative: the derivatives are of scalar outputs "
+                      "(towForce.*, endForce.*) with respect to scalar inputs: one seed per known and one "
+                      "sensitivity per unknown (%zu knowns, %zu seeds, %zu unknowns, %zu sensitivities)",
+                      nKnowns, nSeed, nUnknowns, nSensitivity);
+        return fmi3Error;
+    }
+    return (fmi3Status)fmi2GetDirectionalDerivative(inst, unknowns, nUnknowns, knowns, nKnowns, seed, sensitivity);
+}
+
+/* ---- what this FMU does not provide ------------------------------------------------------------------- */
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#define UC_UNSUPPORTED(name, ...) \
+    FMI3_EXPORT fmi3Status name(fmi3Instance instance, __VA_ARGS__) { return unsupported(instance, #name); }
+#define UC_UNSUPPORTED0(name) \
+    FMI3_EXPORT fmi3Status name(fmi3Instance instance) { return unsupported(instance, #name); }
+#define UC_UNSUPPORTED_TYPE(T) \
+    UC_UNSUPPORTED(fmi3Get##T, const fmi3ValueReference vr[], size_t nvr, fmi3##T values[], size_t nValues) \
+    UC_UNSUPPORTED(fmi3Set##T, const fmi3ValueReference vr[], size_t nvr, const fmi3##T values[], size_t nValues)
+
+UC_UNSUPPORTED0(fmi3EnterEventMode)
+UC_UNSUPPORTED0(fmi3EnterStepMode)
+UC_UNSUPPORTED0(fmi3EnterConfigurationMode)
+UC_UNSUPPORTED0(fmi3ExitConfigurationMode)
+UC_UNSUPPORTED0(fmi3EvaluateDiscreteStates)
+UC_UNSUPPORTED0(fmi3EnterContinuousTimeMode)
+UC_UNSUPPORTED_TYPE(Float32)
+UC_UNSUPPORTED_TYPE(Int8)
+UC_UNSUPPORTED_TYPE(UInt8)
+UC_UNSUPPORTED_TYPE(Int16)
+UC_UNSUPPORTED_TYPE(UInt16)
+UC_UNSUPPORTED_TYPE(UInt32)
+UC_UNSUPPORTED_TYPE(Int64)
+UC_UNSUPPORTED_TYPE(UInt64)
+UC_UNSUPPORTED(fmi3GetBinary, const fmi3ValueReference vr[], size_t nvr, size_t valueSizes[], fmi3Binary values[],
+               size_t nValues)
+UC_UNSUPPORTED(fmi3SetBinary, const fmi3ValueReference vr[], size_t nvr, const size_t valueSizes[],
+               const fmi3Binary values[], size_t nValues)
+UC_UNSUPPORTED(fmi3GetClock, const fmi3ValueReference vr[], size_t nvr, fmi3Clock values[])
+UC_UNSUPPORTED(fmi3SetClock, const fmi3ValueReference vr[], size_t nvr, const fmi3Clock values[])
+UC_UNSUPPORTED(fmi3GetNumberOfVariableDependencies, fmi3ValueReference vr, size_t* nDependencies)
+UC_UNSUPPORTED(fmi3GetVariableDependencies, fmi3ValueReference dependent, size_t elementIndicesOfDependent[],
+               fmi3ValueReference independents[], size_t elementIndicesOfIndependents[],
+               fmi3DependencyKind dependencyKinds[], size_t nDependencies)
+UC_UNSUPPORTED(fmi3GetAdjointDerivative, const fmi3ValueReference unknowns[], size_t nUnknowns,
+               const fmi3ValueReference knowns[], size_t nKnowns, const fmi3Float64 seed[], size_t nSeed,
+               fmi3Float64 sensitivity[], size_t nSensitivity)
+UC_UNSUPPORTED(fmi3GetOutputDerivatives, const fmi3ValueReference vr[], size_t nvr, const fmi3Int32 orders[],
+               fmi3Float64 values[], size_t nValues)
+UC_UNSUPPORTED(fmi3GetIntervalDecimal, const fmi3ValueReference vr[], size_t nvr, fmi3Float64 intervals[],
+               fmi3IntervalQualifier qualifiers[])
+UC_UNSUPPORTED(fmi3GetIntervalFraction, const fmi3ValueReference vr[], size_t nvr, fmi3UInt64 counters[],
+               fmi3UInt64 resolutions[], fmi3IntervalQualifier qualifiers[])
+UC_UNSUPPORTED(fmi3GetShiftDecimal, const fmi3ValueReference vr[], size_t nvr, fmi3Float64 shifts[])
+UC_UNSUPPORTED(fmi3GetShiftFraction, const fmi3ValueReference vr[], size_t nvr, fmi3UInt64 counters[],
+               fmi3UInt64 resolutions[])
+UC_UNSUPPORTED(fmi3SetIntervalDecimal, const fmi3ValueReference vr[], size_t nvr, const fmi3Float64 intervals[])
+UC_UNSUPPORTED(fmi3SetIntervalFraction, const fmi3ValueReference vr[], size_t nvr, const fmi3UInt64 counters[],
+               const fmi3UInt64 resolutions[])
+UC_UNSUPPORTED(fmi3SetShiftDecimal, const fmi3ValueReference vr[], size_t nvr, const fmi3Float64 shifts[])
+UC_UNSUPPORTED(fmi3SetShiftFraction, const fmi3ValueReference vr[], size_t nvr, const fmi3UInt64 counters[],
+               const fmi3UInt64 resolutions[])
+UC_UNSUPPORTED(fmi3UpdateDiscreteStates, fmi3Boolean* discreteStatesNeedUpdate, fmi3Boolean* terminateSimulation,
+               fmi3Boolean* nominalsOfContinuousStatesChanged, fmi3Boolean* valuesOfContinuousStatesChanged,
+               fmi3Boolean* nextEventTimeDefined, fmi3Float64* nextEventTime)
+UC_UNSUPPORTED(fmi3CompletedIntegratorStep, fmi3Boolean noSetFMUStatePriorToCurrentPoint, fmi3Boolean* enterEventMode,
+               fmi3Boolean* terminateSimulation)
+UC_UNSUPPORTED(fmi3SetTime, fmi3Float64 time)
+UC_UNSUPPORTED(fmi3SetContinuousStates, const fmi3Float64 continuousStates[], size_t nContinuousStates)
+UC_UNSUPPORTED(fmi3GetContinuousStateDerivatives, fmi3Float64 derivatives[], size_t nContinuousStates)
+UC_UNSUPPORTED(fmi3GetEventIndicators, fmi3Float64 eventIndicators[], size_t nEventIndicators)
+UC_UNSUPPORTED(fmi3GetContinuousStates, fmi3Float64 continuousStates[], size_t nContinuousStates)
+UC_UNSUPPORTED(fmi3GetNominalsOfContinuousStates, fmi3Float64 nominals[], size_t nContinuousStates)
+UC_UNSUPPORTED(fmi3GetNumberOfEventIndicators, size_t* nEventIndicators)
+UC_UNSUPPORTED(fmi3GetNumberOfContinuousStates, size_t* nContinuousStates)
+UC_UNSUPPORTED(fmi3ActivateModelPartition, fmi3ValueReference clockReference, fmi3Float64 activationTime)
+#pragma GCC diagnostic pop

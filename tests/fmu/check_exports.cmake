@@ -1,0 +1,28 @@
+# uc_check_exports(<binary> <names>): fails unless the exported names are functions of the FMI version only
+# (PREFIX fmi2 or fmi3, default fmi2) and there are COUNT of them at least (default 34, all of FMI 2.0; FMI 3.0
+# has 75), FMI 2.0 section 2.3 and FMI 3.0 section 2.5.1. Included by check_binary.cmake (ELF) and
+# check_pe_binary.cmake (PE).
+function(uc_check_exports binary names)
+  if(NOT PREFIX)
+    set(PREFIX fmi2)
+  endif()
+  if(NOT COUNT)
+    set(COUNT 34)
+  endif()
+  set(bad "")
+  set(count 0)
+  foreach(name IN LISTS names)
+    if(NOT name MATCHES "^${PREFIX}[A-Za-z0-9]+$")
+      list(APPEND bad "${name}")
+    else()
+      math(EXPR count "${count} + 1")
+    endif()
+  endforeach()
+  if(bad)
+    message(FATAL_ERROR "${binary} exports symbols other than ${PREFIX}*: ${bad}")
+  endif()
+  if(count LESS COUNT)
+    message(FATAL_ERROR "${binary} exports only ${count} ${PREFIX} functions, expected ${COUNT}")
+  endif()
+  message(STATUS "${count} ${PREFIX}* functions exported, nothing else")
+endfunction()
