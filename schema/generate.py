@@ -9,8 +9,8 @@ Generated (each file says so in its first lines; never edit them by hand):
     src/uc_schema.h                 UCParams / UCInputs / UCOutputs and X-macro lists of the variables
                                     (value-reference table, defaults, range checks)
     modelDescription.xml            the FMI 2.0 model description (CMake fills in guid and version)
-    README.md                       the tables between the "generated from schema" markers
-    scripts/ucable/variables.py     the variables as Python constants
+    docs/interface.md               the tables between the "generated from schema" markers
+    python/ucable/variables.py     the variables as Python constants
     fmu/documentation/index.html    the FMU's own documentation page
     fmu/fmi3/modelDescription.xml   the FMI 3.0 variant's model description (arrays at the stations)
     fmu/fmi3/uc_fmi3_arrays.h       its array variables, for the FMI 3.0 adapter
@@ -41,8 +41,8 @@ SCHEMA = ROOT / "schema" / "variables.toml"
 
 OUT_HEADER = ROOT / "src" / "uc_schema.h"
 OUT_XML = ROOT / "modelDescription.xml"
-OUT_README = ROOT / "README.md"
-OUT_PYTHON = ROOT / "scripts" / "ucable" / "variables.py"
+OUT_README = ROOT / "docs" / "interface.md"  # the interface tables (the README links to them)
+OUT_PYTHON = ROOT / "python" / "ucable" / "variables.py"
 OUT_HTML = ROOT / "fmu" / "documentation" / "index.html"
 OUT_FMI3_XML = ROOT / "fmu" / "fmi3" / "modelDescription.xml"
 OUT_FMI3_HEADER = ROOT / "fmu" / "fmi3" / "uc_fmi3_arrays.h"
@@ -585,7 +585,8 @@ def readme_text(current: str, entries) -> str:
         end = f"<!-- end {causality}s -->"
         pattern = re.compile(re.escape(begin) + r".*?" + re.escape(end), re.S)
         if not pattern.search(current):
-            raise SystemExit(f"README.md: markers for the {causality} table not found ({begin})")
+            raise SystemExit(f"{OUT_README.relative_to(ROOT)}: markers for the {causality} table not found ({begin})")
+        table = table.replace("](docs/", "](")  # the tables live in docs/ themselves
         current = pattern.sub(lambda _: f"{begin}\n{table}\n{end}", current)
     return current
 

@@ -1,4 +1,4 @@
-"""pytest set-up: makes scripts/ importable (the `ucable` package) and provides the FMU path.
+"""pytest set-up: makes python/ importable (the `ucable` package and the `studies`) and provides the FMU path.
 
 Tests that need the FMU use the `fmu_file` fixture. When the FMU has not been built they FAIL in
 CI (CI=true) and are skipped elsewhere, both with the message "build first: scripts/build".
@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(REPO_ROOT / "scripts"))
+sys.path.insert(0, str(REPO_ROOT / "python"))
 
 from ucable.paths import MissingFMUError, require_fmu  # noqa: E402
 

@@ -10,7 +10,7 @@ import pytest
 
 from ucable.fmu import CableFMU, FMICallException
 
-SCRIPTS = Path(__file__).resolve().parents[2] / "scripts"
+PYTHON = Path(__file__).resolve().parents[2] / "python"
 
 
 def provoke_error(unit):
@@ -44,7 +44,7 @@ def test_freeing_one_instance_leaves_the_other_logging(fmu_file, venv_python):
     freed and collected, then the first one logs."""
     script = textwrap.dedent(f"""
         import gc, sys
-        sys.path.insert(0, {str(SCRIPTS)!r})
+        sys.path.insert(0, {str(PYTHON)!r})
         from ucable.fmu import CableFMU, FMICallException
         first = CableFMU({str(fmu_file)!r}, instance_name="first", logging_on=True)
         second = CableFMU({str(fmu_file)!r}, instance_name="second", logging_on=True)

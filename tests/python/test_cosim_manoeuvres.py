@@ -20,8 +20,8 @@ import math
 import numpy as np
 import pytest
 
-from ucable.cosim import run_scene
-from ucable.scenes import PAPER_SETTLE, RAMP, SPEEDS_KN, make_scene, settling_time, steady_depths
+from studies.cosim import run_scene
+from studies.scenes import PAPER_SETTLE, RAMP, SPEEDS_KN, make_scene, settling_time, steady_depths
 from ucable.steady_tow import KNOT, CableProperties, solve_steady_tow
 
 CABLE = CableProperties()
@@ -74,8 +74,8 @@ def test_deceleration_settles_slower_than_acceleration(fmu_file):
 def test_turn_heading_reached_and_cable_sinks_in_the_turn(fmu_file, name, angle, t_end):
     r = run(fmu_file, name, t_end)
     psi = np.degrees(r.vessel[:, 2])
-    # heading autopilot with integral-free PD: the tow's yaw moment leaves a small offset that
-    # decays with the cable's lateral force; 1 deg after > 150 s past the end of the turn
+    # the heading autopilot's integral action takes out the tow's yaw moment (which alone would leave
+    # an offset decaying with the cable's lateral force); 1 deg after > 150 s past the end of the turn
     assert psi[-1] == pytest.approx(angle, abs=1.0)
     assert r.speed[-1] == pytest.approx(2.4 * KNOT, abs=0.01)
     # in the turn the cable cuts the corner: its along-cable flow drops and it sinks deeper than

@@ -13,7 +13,7 @@ from fmpy.fmi2 import FMU2Slave
 from fmpy.fmi3 import FMU3Slave
 from fmpy.validation import validate_fmu
 
-from ucable.manoeuvre import NUM_STATIONS, hopland_accelerate, tow_inputs
+from studies.manoeuvre import NUM_STATIONS, hopland_accelerate, tow_inputs
 
 STEP = 0.5
 T_END = 90.0   # through the 60 s ramp and 30 s beyond

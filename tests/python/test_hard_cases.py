@@ -11,7 +11,7 @@ import math
 import numpy as np
 import pytest
 
-from ucable import hard_cases as hc
+from studies import hard_cases as hc
 from ucable.steady_tow import KNOT
 
 

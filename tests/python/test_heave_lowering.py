@@ -1,6 +1,6 @@
 """The heave-lowering scene (VesselRAO FMU -> cable FMU): the 2 t body on 500 m of umbilical of the
 lowering_in_waves scene file hanging from the stern of a vessel in a regular head sea (H 2 m, T 10 s),
-10 elements, 0.2 s communication steps, 60 s.
+10 elements, 0.2 s communication steps, 60 s, the winch held; and the scene itself lowers the body.
 
 Against a 10 s wave the line is stiff: its axial spring EA / L carries the body (and the added mass and
 a third of the line) at a natural frequency omega_n well above the wave's, so
@@ -15,8 +15,8 @@ import math
 import numpy as np
 import pytest
 
-from ucable import heave_lowering
-from ucable.heave_lowering import Scene, run
+from studies import heave_lowering
+from studies.heave_lowering import Scene, run
 
 RHO, G = 1025.0, 9.81
 PERIOD = 10.0
@@ -24,7 +24,9 @@ PERIOD = 10.0
 
 @pytest.fixture(scope="module")
 def regular(fmu_file):
-    scene = Scene(t_end=60.0, mode=1, hs=2.0, tp=PERIOD, components=1, ramp=10.0, n_elements=10, step=0.2)
+    # the winch held (lower_rate 0): the analysis below is of a line of fixed length
+    scene = Scene(t_end=60.0, mode=1, hs=2.0, tp=PERIOD, components=1, ramp=10.0, n_elements=10, step=0.2,
+                  lower_rate=0.0)
     return run(scene, fmu_file)
 
 
@@ -76,7 +78,7 @@ def test_the_body_heaves_with_the_stern_amplified_by_the_line_spring(regular):
 
 
 def test_the_scene_command_writes_its_csv_and_figure(fmu_file, tmp_path):
-    from ucable.manoeuvre_cli import main
+    from studies.manoeuvre_cli import main
     assert main(["heave-lowering", "--t-end", "2", "--components", "10", "--nElements", "4",
                  "--fmu", str(fmu_file), "--out", str(tmp_path)]) == 0
     data = np.genfromtxt(tmp_path / "heave-lowering.csv", delimiter=",", names=True)
@@ -94,7 +96,7 @@ def test_the_system_file_is_the_scene_and_libcosim_runs_it(fmu_file):
     stern's acceleration over one step."""
     from ucable import system as S
 
-    system = S.SystemStructure.parse(S.SYSTEMS_DIR / "heave_lowering" / "OspSystemStructure.xml")
+    system = S.SystemStructure.parse(S.systems_dir() / "heave_lowering" / "OspSystemStructure.xml")
     scene = Scene(t_end=10.0, ramp=20.0)
     assert system.simulators["vessel"].initial == scene.vessel_parameters()
     assert system.simulators["cable"].initial == scene.cable_parameters()
@@ -108,3 +110,14 @@ def test_the_system_file_is_the_scene_and_libcosim_runs_it(fmu_file):
     bound = 4000.0 * np.max(np.abs(np.diff(az)))
     assert np.max(np.abs(osp["cable.towTension"] - ref["cable.towTension"])) < bound
     assert np.std(ref["vessel.tow.z"]) > 0.05  # the ramp has begun: the sea moves the stern
+
+
+def test_the_scene_lowers_the_body(fmu_file):
+    """The default scene pays out at 0.25 m/s: 5 m in 20 s (the winch takes up its rate within the
+    step it is set), and the body goes down with the line (the line stretches by T / EA per metre:
+    20 kN / 3e7 N = 0.07 %, 0.4 m over 500 m, hence 0.5 m)."""
+    r = run(Scene(t_end=20.0, mode=1, hs=0.5, components=1, n_elements=10), fmu_file)
+    L = r["cable.unstretchedLength"]
+    assert L[-1] - L[0] == pytest.approx(0.25 * 20.0, rel=1e-3)
+    depth = -r["cable.endPosition.z"]
+    assert depth[-1] - depth[0] == pytest.approx(5.0, abs=0.5)

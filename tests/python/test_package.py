@@ -21,7 +21,7 @@ SHORT = {"duration": 10.0}
 
 def cli_env(fmu_file):
     env = dict(os.environ, UC_FMU=str(fmu_file))
-    env["PYTHONPATH"] = os.pathsep.join([str(ROOT / "scripts"), env.get("PYTHONPATH", "")])
+    env["PYTHONPATH"] = os.pathsep.join([str(ROOT / "python"), env.get("PYTHONPATH", "")])
     return env
 
 
@@ -70,16 +70,19 @@ def test_cli_run_writes_csv_and_plot(fmu_file, tmp_path):
 
 def test_two_worker_sweep_rows_equal_single_runs(fmu_file, tmp_path):
     out = tmp_path / "s"
-    p = subprocess.run([sys.executable, "-m", "ucable.cli", "sweep", "hopland_accelerate", "--vary", "length=200,300",
-                        "--vary", "Cdn=1.2,1.6,-1", "--set", "duration=5", "--workers", "2", "--out", str(out)],
+    p = subprocess.run([sys.executable, "-m", "ucable.cli", "sweep", "hopland_accelerate", "--vary", "length=200,300,0",
+                        "--vary", "Cdn=1.2,1.6", "--set", "duration=5", "--workers", "2", "--out", str(out)],
                        env=cli_env(fmu_file), capture_output=True, text=True, cwd=tmp_path, timeout=600)
-    assert p.returncode == 0, p.stderr
+    # length 0 is inside the schema's range [0, 1e5] but the FMU refuses it: those two rows fail, the
+    # sweep goes on, writes every row, and exits 1 saying how many failed
+    assert p.returncode == 1, p.stderr
+    assert "2 of 6 runs failed" in p.stderr
     rows = read_csv(out / "results.csv")
     assert [(float(r["length"]), float(r["Cdn"])) for r in rows] == [
-        (200.0, 1.2), (200.0, 1.6), (200.0, -1.0), (300.0, 1.2), (300.0, 1.6), (300.0, -1.0)]
+        (200.0, 1.2), (200.0, 1.6), (300.0, 1.2), (300.0, 1.6), (0.0, 1.2), (0.0, 1.6)]
     for r in rows:
-        if float(r["Cdn"]) < 0:  # the FMU refuses it: a row with the error, the sweep goes on
-            assert r["status"] == "error" and "Cdn" in r["error"], r
+        if float(r["length"]) == 0.0:
+            assert r["status"] == "error" and "length" in r["error"], r
             continue
         assert r["status"] == "ok", r
         single = run_scene("hopland_accelerate", overrides={"duration": 5.0, "length": float(r["length"]),
@@ -89,10 +92,28 @@ def test_two_worker_sweep_rows_equal_single_runs(fmu_file, tmp_path):
     assert (out / "summary.png").stat().st_size > 0
 
 
+def test_sweep_with_a_value_out_of_range_runs_nothing(fmu_file, tmp_path):
+    out = tmp_path / "s"
+    p = subprocess.run([sys.executable, "-m", "ucable.cli", "sweep", "hopland_accelerate", "--vary", "Cdn=1.2,-1",
+                        "--set", "duration=5", "--out", str(out)],
+                       env=cli_env(fmu_file), capture_output=True, text=True, cwd=tmp_path, timeout=600)
+    assert p.returncode == 2 and p.stderr.strip() == "ucable: --vary Cdn: -1 is outside [0, 100]", p.stderr
+    assert not out.exists()
+
+
+def test_sweep_in_which_every_run_failed_exits_nonzero(fmu_file, tmp_path):
+    p = subprocess.run([sys.executable, "-m", "ucable.cli", "sweep", "hopland_accelerate", "--vary", "length=0",
+                        "--set", "duration=2", "--workers", "1", "--out", str(tmp_path / "s")],
+                       env=cli_env(fmu_file), capture_output=True, text=True, cwd=tmp_path, timeout=600)
+    assert p.returncode == 1 and "1 of 1 runs failed" in p.stderr, p.stderr
+    assert "Traceback" not in p.stderr
+
+
 @pytest.mark.slow
 def test_pip_install_runs_from_outside_the_clone(tmp_path):
-    """What a new user does: a fresh venv, `pip install` of the clone (builds the FMU with CMake),
-    then the command from a directory that is not the clone."""
+    """What a new user does: a fresh venv, `pip install` of the clone (builds the FMUs with CMake),
+    then the commands from a directory that is not the clone: the version, a shipped system, a
+    shipped scene printed, edited and run (the shape in result.csv, result.png written)."""
     env_dir = tmp_path / "v"
     venv.create(env_dir, with_pip=True)
     pip = env_dir / "bin" / "pip"
@@ -105,8 +126,24 @@ def test_pip_install_runs_from_outside_the_clone(tmp_path):
     q = subprocess.run([str(py), "-c", "import ucable; print(ucable.fmu_path())"], capture_output=True, text=True,
                        cwd=work, env=env)
     assert q.returncode == 0 and "site-packages" in q.stdout, q.stdout + q.stderr
-    exe = env_dir / "bin" / "ucable"
-    r = subprocess.run([str(exe), "run", "scenes/hopland_accelerate.toml", "--set", "duration=10", "--out", "o"],
-                       capture_output=True, text=True, cwd=work, env=env, timeout=600)
+    exe = str(env_dir / "bin" / "ucable")
+
+    def ucable_cli(*args, timeout=600):
+        return subprocess.run([exe, *args], capture_output=True, text=True, cwd=work, env=env, timeout=timeout)
+
+    v = ucable_cli("--version")
+    assert v.returncode == 0 and v.stdout.strip() == f"ucable {ucable.__version__}", v.stdout + v.stderr
+    y = ucable_cli("system", "towed_body", "--duration", "20", "--out", "sys")
+    assert y.returncode == 0, y.stderr
+    rows = read_csv(work / "sys" / "result.csv")
+    assert len(rows) == 41 and float(rows[-1]["towTension"]) > 0.0  # 20 s at the file's 0.5 s step
+    show = ucable_cli("scenes", "show", "turn90")
+    assert show.returncode == 0, show.stderr
+    (work / "my.toml").write_text(show.stdout.replace("duration = 300.0", "duration = 10.0"))
+    r = ucable_cli("run", "my.toml", "--out", "d")
     assert r.returncode == 0, r.stderr
-    assert (work / "o" / "result.csv").is_file()
+    rows = read_csv(work / "d" / "result.csv")
+    assert len(rows) == 21 and {"shape.x[1]", "shape.z[21]", "towTension"} <= set(rows[0])
+    assert (work / "d" / "result.png").stat().st_size > 0
+    bad = ucable_cli("run", "my.toml", "--set", "nElements=2.5")
+    assert bad.returncode == 2 and "Traceback" not in bad.stderr

@@ -1,7 +1,7 @@
 """The partner FMUs (Vessel, VesselRAO, TowedBody): FMI conformance, the physics against independent solutions,
 and the robustness every FMU of the project owes (bad parameters, NaN inputs, call sequences, states).
 
-The Vessel FMU is a C port of the Python vessel model ucable.partners.vessel: with the same constant
+The Vessel FMU is a C port of the Python vessel model studies.partners.vessel: with the same constant
 tow force both integrate the same equations with the same Runge-Kutta substeps, so they agree to
 round-off (1e-9 m / 1e-12 rad after 400 steps: the two differ only in the order of floating-point
 operations, whose error grows about linearly with the number of steps from 1e-16 relative).
@@ -15,10 +15,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ucable.cosim import HeadingReference, SpeedReference
+from studies.cosim import HeadingReference, SpeedReference
 from ucable.fmu import FMICallException
-from ucable.manoeuvre import PiecewiseLinearSpeed
-from ucable.partners import Autopilot, Vessel, VesselParameters
+from studies.manoeuvre import PiecewiseLinearSpeed
+from studies.partners import Autopilot, Vessel, VesselParameters
 from ucable.steady_tow import KNOT
 from ucable.system import partner_fmu
 
@@ -49,34 +49,57 @@ def test_fmpy_validate_and_fmutool_check_find_no_problem(fmu_file, name):
     assert not [line for line in text.splitlines() if "ERROR" in line or "WARNING" in line], text
 
 
-def test_vessel_fmu_equals_the_python_vessel_model_in_a_turn_and_a_ramp(vessel_fmu, make_unit):
-    """Speed ramp 1.1 -> 2.4 kn in 60 s and a 90 deg turn at 1 deg/s from 30 s, under a constant tow
-    force with a lateral component (it yaws the vessel), 0.5 s steps for 200 s."""
-    force = np.array([-5000.0, 1500.0, -3000.0])
+def fly_the_turn(vessel_fmu, make_unit, force, heading_integral_bandwidth=None):
+    """The Vessel FMU and the Python vessel model through the turn and ramp below: both, after 200 s."""
     program = {"speed0": 1.1 * KNOT, "speed1": 2.4 * KNOT, "rampStart": 0.0, "rampDuration": 60.0,
                "turnStart": 30.0, "turnRate": math.radians(1.0), "turnAngle": math.radians(90.0)}
+    gains = {}
+    if heading_integral_bandwidth is not None:
+        program["headingIntegralBandwidth"] = heading_integral_bandwidth
+        gains["heading_integral_bandwidth"] = heading_integral_bandwidth
     v = make_unit(vessel_fmu, parameters=program)
     v.initialize(0.0, 200.0, inputs={f"towForce.{q}": f for q, f in zip("xyz", force)})
     p = VesselParameters()
     ap = Autopilot(p, SpeedReference(PiecewiseLinearSpeed([0.0, 60.0], [1.1 * KNOT, 2.4 * KNOT])),
-                   HeadingReference(0.0, 30.0, math.radians(1.0), math.radians(90.0)))
+                   HeadingReference(0.0, 30.0, math.radians(1.0), math.radians(90.0)), **gains)
     py = Vessel(p, ap, u0=1.1 * KNOT)
-    names = ["x", "y", "heading", "surge", "sway", "yawRate"]
     for k in range(400):
         v.do_step(0.5, t=0.5 * k)
         py.step(0.5, force, force)
-    fmu_state = v.get_reals(names)
+    return v, py
+
+
+VESSEL_STATE = ["x", "y", "heading", "surge", "sway", "yawRate"]
+
+
+def test_vessel_fmu_equals_the_python_vessel_model_in_a_turn_and_a_ramp(vessel_fmu, make_unit):
+    """Speed ramp 1.1 -> 2.4 kn in 60 s and a 90 deg turn at 1 deg/s from 30 s, under a constant tow
+    force with a lateral component (it yaws the vessel), 0.5 s steps for 200 s."""
+    force = np.array([-5000.0, 1500.0, -3000.0])
+    v, py = fly_the_turn(vessel_fmu, make_unit, force)
+    fmu_state = v.get_reals(VESSEL_STATE)
     assert np.max(np.abs(fmu_state[:2] - py.x[:2])) < 1e-9
     assert np.max(np.abs(fmu_state[2:] - py.x[2:6])) < 1e-12
-    # the turn was flown (the constant Earth-frame force yaws the vessel back by ~17 deg once it is
-    # abeam: 5 kN x 10 m against the heading loop's 0.17 MN m/rad)
-    assert 60.0 < math.degrees(fmu_state[2]) < 90.0
+    # the turn was flown to its heading: the constant Earth-frame force yaws the vessel back by ~17 deg
+    # once it is abeam (5 kN x 10 m against the PD's 0.17 MN m/rad, below), which the heading loop's
+    # integral action (pole at -0.05 1/s) takes out: 80 s after the turn 17 deg x exp(-0.05 x 80) = 0.3 deg
+    assert math.degrees(fmu_state[2]) == pytest.approx(90.0, abs=0.5)
     pos, vel, acc = py.tow_point(tow_force=force, t=200.0)
     tow = v.get_reals(["tow.x", "tow.y", "tow.vx", "tow.vy", "tow.ax", "tow.ay"])
     assert np.max(np.abs(tow - np.array([*pos, *vel, *acc]))) < 1e-9
     thrust, moment = py.commands(force)
     assert v.get("thrust") == pytest.approx(thrust, rel=1e-9)
     assert v.get("rudderMoment") == pytest.approx(moment, rel=1e-9, abs=1e-6)
+
+
+def test_vessel_without_heading_integral_keeps_the_tow_offset(vessel_fmu, make_unit):
+    """headingIntegralBandwidth 0 is the critically damped PD: the lateral force leaves the heading
+    about 5 kN x 10 m / 0.17 MN m/rad = 17 deg short (the two models still agree)."""
+    force = np.array([-5000.0, 1500.0, -3000.0])
+    v, py = fly_the_turn(vessel_fmu, make_unit, force, heading_integral_bandwidth=0.0)
+    fmu_state = v.get_reals(VESSEL_STATE)
+    assert np.max(np.abs(fmu_state[2:] - py.x[2:6])) < 1e-12
+    assert 60.0 < math.degrees(fmu_state[2]) < 80.0
 
 
 def body_force(v, CdA=0.3, CLA=0.0, current=(0.0, 0.0)):

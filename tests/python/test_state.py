@@ -4,7 +4,7 @@ instance."""
 
 import numpy as np
 
-from ucable.manoeuvre import SCALAR_OUTPUTS, SHAPE_OUTPUTS, hopland_accelerate, tow_inputs
+from studies.manoeuvre import SCALAR_OUTPUTS, SHAPE_OUTPUTS, hopland_accelerate, tow_inputs
 
 STEP = 0.5
 T_SAVE = 20.0  # inside the acceleration ramp: the state is far from steady

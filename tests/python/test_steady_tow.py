@@ -1,5 +1,5 @@
 """A steady tow of the default (Hopland) cable with a free lower end matches the independent
-steady solution (scripts/ucable/steady_tow.py, a scipy ODE in arc length).
+steady solution (python/ucable/steady_tow.py, a scipy ODE in arc length).
 
 Tolerance 0.5 %: with a free end the exact steady shape is a straight line with linearly growing
 tension and strain (docs/model.md), which cubic Hermite elements represent exactly, so the
@@ -15,7 +15,7 @@ import math
 import numpy as np
 import pytest
 
-from ucable.manoeuvre import constant_speed, run_tow
+from studies.manoeuvre import constant_speed, run_tow
 from ucable.steady_tow import KNOT, CableProperties, solve_steady_tow
 
 N_ELEMENTS = 20

@@ -1,4 +1,4 @@
-"""The independent steady-tow reference (scripts/ucable/steady_tow.py) checked on its own: no FMU.
+"""The independent steady-tow reference (python/ucable/steady_tow.py) checked on its own: no FMU.
 
 Tolerances: the ODE is integrated with rtol = 1e-11 (DOP853), so closed-form comparisons hold to
 ~1e-9 relative; the trapezoidal force balance on 4001 stations has a quadrature error ~(L/n)^2

@@ -110,7 +110,7 @@ def test_system_command_writes_the_result_table_and_a_plot(fmu_file, tmp_path):
     proc = subprocess.run([sys.executable, "-m", "ucable.system_cli", "accelerate", "--step", "1", "--duration",
                            "20", "--body-mass", "1000", "--out", str(out)],
                           capture_output=True, text=True, cwd=S.REPO_ROOT,
-                          env={"PYTHONPATH": str(S.REPO_ROOT / "scripts"), "PATH": "/usr/bin:/bin"})
+                          env={"PYTHONPATH": str(S.REPO_ROOT / "python"), "PATH": "/usr/bin:/bin"})
     assert proc.returncode == 0, proc.stdout + proc.stderr
     header = (out / "result.csv").read_text().splitlines()[0].split(",")
     assert header[:5] == ["time", "towTension", "body.x", "body.y", "body.z"]
@@ -155,7 +155,7 @@ def test_the_vessel_reads_its_own_rao_table_under_both_masters(fmu_file, tmp_pat
     moves the tow point (z: heave, roll and pitch at the lever arm; 0 in calm water) 1.5 times as far, to
     2 % of its amplitude: the manoeuvre feels the cable's tow force, which the larger motion changes
     (0.8 % measured; the default table is 50 % off)."""
-    from ucable.rao_box import DEFAULT_OUT as RAO_CSV
+    from studies.rao_box import DEFAULT_OUT as RAO_CSV
     waves = {"waves.mode": 1, "waves.height": 2.0, "waves.period": 8.0, "waves.direction": 2.5}
     rows = [line.split(",") for line in RAO_CSV.read_text().splitlines()]
     scaled = [r if len(r) != 14 or r[0] == "period" or r[0].startswith("#")

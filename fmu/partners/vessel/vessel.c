@@ -13,10 +13,12 @@
  * F_tow = the input towForce.x/y (the cable FMU's towForce: the force of the cable on the tow point) in
  * body axes, held constant over a communication step; its vertical component is not felt in the
  * horizontal plane. The autopilot: speed PI with feed-forward of the ordered acceleration, the
- * resistance and the measured tow force; heading PD with feed-forward of the ordered turn rate; gains
- * from pole placement on the rigid vessel (speed loop speedBandwidth, heading loop headingBandwidth,
- * both critically damped); the speed integrator is frozen while the thrust saturates in the direction
- * of the error. Orders: speed speed0 until rampStart, linear to speed1 over rampDuration; heading
+ * resistance and the measured tow force; heading PID with feed-forward of the ordered turn rate; gains
+ * from pole placement on the rigid vessel (speed loop: a double pole at -speedBandwidth; heading loop:
+ * a double pole at -headingBandwidth and one at -headingIntegralBandwidth, whose integral action takes
+ * out the steady yaw moment of the tow, so a turn ends on its ordered heading; 0 gives the plain
+ * critically damped PD); each integrator is frozen while its actuator saturates in the direction of
+ * its error. Orders: speed speed0 until rampStart, linear to speed1 over rampDuration; heading
  * heading0 until turnStart, then turning at turnRate until it has changed by turnAngle.
  * Integration: classical Runge-Kutta, ceil(h / maxSubstep) substeps per communication step.
  *
@@ -59,7 +61,7 @@
 static const double kTwoPi = 6.28318530717958647692;
 static const double kPi = 3.14159265358979323846;
 
-enum { X, Y, PSI, U, V, R, INTEGRAL, N_STATES };
+enum { X, Y, PSI, U, V, R, INTEGRAL, HEADING_INTEGRAL, N_STATES };
 
 typedef struct VesselData {
     /* parameters */
@@ -73,6 +75,7 @@ typedef struct VesselData {
     double maxSubstep;
     PMSeaParameters sea; /* the waves (the cable FMU's names and meaning) */
     char raoFile[PM_STRING_CAPACITY]; /* the RAO table: "" the shipped one (rao_table.h) */
+    double headingIntegralBandwidth;
     /* inputs */
     double towForce[3];
     /* states */
@@ -91,7 +94,7 @@ typedef struct VesselWaves {
 } VesselWaves;
 
 typedef struct Commands {
-    double thrust, moment, integralRate;
+    double thrust, moment, integralRate, headingIntegralRate;
 } Commands;
 
 static double m11(const VesselData* d) { return d->mass + d->addedMassSurge; }
@@ -134,11 +137,14 @@ static Commands autopilot(const VesselData* d, double t, const double* x, double
     c.thrust = clamp(raw, -d->maxAstern, d->maxThrust);
     c.integralRate = (c.thrust != raw && e * raw > 0.0) ? 0.0 : e; /* anti-windup */
 
-    double wp = d->headingBandwidth, psiRef, rRef;
+    /* poles -wp, -wp, -wi: (s + wp)^2 (s + wi) = s^3 + (2 wp + wi) s^2 + (wp^2 + 2 wp wi) s + wp^2 wi */
+    double wp = d->headingBandwidth, wi = d->headingIntegralBandwidth, psiRef, rRef;
     heading_order(d, t, &psiRef, &rRef);
     double err = remainder(psiRef - x[PSI], kTwoPi);
-    double moment = d->Nr * rRef + d->Nrr * fabs(rRef) * rRef + wp * wp * m66(d) * err + 2.0 * wp * m66(d) * (rRef - x[R]);
+    double moment = d->Nr * rRef + d->Nrr * fabs(rRef) * rRef + (wp * wp + 2.0 * wp * wi) * m66(d) * err +
+                    (2.0 * wp + wi) * m66(d) * (rRef - x[R]) + wp * wp * wi * m66(d) * x[HEADING_INTEGRAL];
     c.moment = clamp(moment, -d->maxRudderMoment, d->maxRudderMoment);
+    c.headingIntegralRate = (c.moment != moment && err * moment > 0.0) ? 0.0 : err; /* anti-windup */
     return c;
 }
 
@@ -158,6 +164,7 @@ static void derivatives(const VesselData* d, double t, const double* x, const do
     dx[V] = (sway - m11(d) * u * r) / m22(d);
     dx[R] = yaw / m66(d);
     dx[INTEGRAL] = cmd.integralRate;
+    dx[HEADING_INTEGRAL] = cmd.headingIntegralRate;
 }
 
 /* Adds the wave-frequency motion at time t of the vessel in the manoeuvring state x (rates dx) to the tow
@@ -284,7 +291,7 @@ static int vessel_initialize(void* data, const void* derived, double t0, char* m
     d->state[Y] = d->y0;
     d->state[PSI] = d->heading0;
     d->state[U] = d->speed0;
-    d->state[V] = d->state[R] = d->state[INTEGRAL] = 0.0;
+    d->state[V] = d->state[R] = d->state[INTEGRAL] = d->state[HEADING_INTEGRAL] = 0.0;
     update_outputs(d, derived, t0);
     return 0;
 }
@@ -344,7 +351,7 @@ static const PMVariable kVariables[] = {
     P(speedBandwidth, "speedBandwidth", 0.2, 1e-4, 100.0, "1/s", "the speed loop needs a positive bandwidth",
       "Bandwidth of the speed loop (critically damped PI)"),
     P(headingBandwidth, "headingBandwidth", 0.3, 1e-4, 100.0, "1/s", "the heading loop needs a positive bandwidth",
-      "Bandwidth of the heading loop (critically damped PD)"),
+      "Bandwidth of the heading loop (its double pole; see headingIntegralBandwidth)"),
     P(x0, "x0", 0.0, -1e8, 1e8, "m", "a position on Earth", "Initial x of the centre of gravity"),
     P(y0, "y0", 0.0, -1e8, 1e8, "m", "a position on Earth", "Initial y of the centre of gravity"),
     P(heading0, "heading0", 0.0, -100.0, 100.0, "rad", "a heading within +-100 rad",
@@ -395,6 +402,11 @@ static const PMVariable kVariables[] = {
     O(waveElevation, "waveElevation", "m", 0,
       "Elevation of the sea surface at the RAO reference point (the vessel's x, y on the waterline)"),
     PM_RAO_FILE_VARIABLE(VesselData, raoFile),
+    /* after the variables above, whose value references stay */
+    P(headingIntegralBandwidth, "headingIntegralBandwidth", 0.05, 0.0, 100.0, "1/s",
+      "the heading loop's integral pole cannot be negative",
+      "Pole of the heading loop's integral action (0: a PD without it, which leaves the tow's yaw moment as a "
+      "heading error)"),
 };
 
 const PMModel kPartnerModel = {

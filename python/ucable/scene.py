@@ -1,0 +1,324 @@
+"""Scenes: a run of the cable FMU described by a TOML file, and its result.
+
+A scene file holds (docs/scenes.md lists every key with its type, unit and default)
+
+    title = "..."
+    duration = 660.0          # [s]
+    step = 0.5                # communication step [s]
+    outputs = ["waveElevation"]   # optional: more FMU variables to record
+    record_shape = true       # the default: every station's position, columns shape.x[k] ...
+
+    [parameters]              # any FMU parameter by its name (defaults for the others)
+    length = 300.0
+
+    [inputs]                  # optional: other FMU inputs, each a constant or a piecewise-linear table
+    "current.x" = { times = [0.0, 60.0], values = [0.0, 0.5] }
+
+    [tow]                     # the tow point (a vessel's stern, a fairlead, an A-frame)
+    start = [0.0, 0.0, 0.0]   # [m]
+    speed_kn = { times = [0.0, 60.0], values = [1.1, 2.4] }     # a constant or piecewise linear, held beyond
+    heading_deg = 0.0                                           # from +x toward +y
+    surge = { amplitude = 5.0, period = 10.0, direction = [1.0, 0.0, 0.0] }  # optional oscillation
+    heave = { amplitude = 1.5, period = 10.0 }                  # optional vertical oscillation
+
+    [winch]                   # optional: the winch's command in stages (sets winchMode 1 or 2)
+    ramp = 10.0               # [s] from one stage's value to the next; a rate starts from rest
+    stages = [ { rate = 0.5, duration = 600.0 }, { rate = 0.0, duration = 300.0 } ]
+
+The tow point's velocity is the speed along the heading (plus the oscillations, which start from
+rest: their amplitude grows over `ramp` seconds, one period unless given, with a half cosine), its
+position the velocity integrated over a grid 20 times finer than the step, and its acceleration is
+passed to the FMU as the input derivative, as a master that knows the vessel's motion does. The
+other inputs take their value at the start of each communication step.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+import time
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .fmu import NUM_STATIONS, CableFMU, FMICallException
+from .paths import find_scene, require_fmu
+from .scene_schema import Checker, SceneFileError, validate
+from .steady_tow import KNOT
+
+RECORDED = ["towTension", "towTensionMax", "towTensionMin", "towForce.x", "towForce.y", "towForce.z",
+            "endPosition.x", "endPosition.y", "endPosition.z", "minTension"]
+ANCHORED_RECORDED = ["endTension", "groundedLength", "anchorUplift"]
+WINCH_RECORDED = ["unstretchedLength"]
+SHAPE = [f"shape.{c}[{k}]" for c in "xyz" for k in range(1, NUM_STATIONS + 1)]
+SCENE_SETTINGS = ("duration", "step")
+BOTTOM_ANCHORED = 1
+
+
+class SceneError(RuntimeError):
+    """A scene the FMU failed on while running; the message holds what the FMU logged."""
+
+
+@dataclass
+class Scene:
+    """A checked scene: `data` as written (a TOML file's tables), the checked values in the fields."""
+    name: str
+    title: str
+    duration: float
+    step: float
+    parameters: dict = field(default_factory=dict)
+    inputs: dict = field(default_factory=dict)
+    tow: dict = field(default_factory=dict)
+    outputs: list = field(default_factory=list)
+    record_shape: bool = True
+    winch: dict = field(default_factory=dict)  # {"input", "mode", "table"} from [winch] stages, or {}
+    data: dict = field(default_factory=dict, repr=False)
+    source: str = "scene"
+
+    @classmethod
+    def from_data(cls, data: dict, source: str) -> "Scene":
+        c = validate(data, source)
+        return cls(name=c["name"], title=c["title"], duration=c["duration"], step=c["step"],
+                   parameters=c["parameters"], inputs=c["inputs"], tow=c["tow"], outputs=c["outputs"],
+                   record_shape=c["record_shape"], winch=c["winch"], data=data, source=source)
+
+    def with_overrides(self, overrides: dict, source: str = "--set") -> "Scene":
+        """A copy with `overrides` applied: scene settings (duration, step, record_shape) or FMU
+        parameters; each is checked (a SceneFileError names `source` and the key)."""
+        check = Checker(None)
+        data = copy.deepcopy(self.data)
+        for key, value in overrides.items():
+            where = f"{source} {key}"
+            if key in SCENE_SETTINGS:
+                data[key] = check.number(value, where, positive=True)
+            elif key == "record_shape":
+                if not isinstance(value, bool):
+                    check.fail(where, "expected true or false")
+                data[key] = value
+            else:
+                data.setdefault("parameters", {})[key] = check.parameter(key, value, where)
+        return Scene.from_data(data, self.source)
+
+    @property
+    def kind(self) -> str:
+        """'winch' (the length changes), 'anchored' (bottomEnd 1) or 'tow' (everything else)."""
+        if self.winch or self.parameters.get("winchMode", 0) != 0:
+            return "winch"
+        if self.parameters.get("bottomEnd", 0) == BOTTOM_ANCHORED:
+            return "anchored"
+        return "tow"
+
+
+def read_toml(path: Path) -> dict:
+    """A TOML file's tables; a syntax error is a SceneFileError naming the file and the line."""
+    try:
+        return tomllib.loads(path.read_text())
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneFileError(f"{path}: not valid TOML: {exc}") from None
+    except UnicodeDecodeError as exc:
+        raise SceneFileError(f"{path}: not a text file: {exc}") from None
+
+
+def load_scene(source: str | Path | dict) -> Scene:
+    """A scene from a file path, a packaged scene's name, or an already parsed dict."""
+    if isinstance(source, dict):
+        return Scene.from_data(source, source.get("name", "scene"))
+    try:
+        path = find_scene(source)
+    except FileNotFoundError as exc:
+        raise SceneFileError(str(exc)) from None
+    data = dict(read_toml(path))
+    data.setdefault("name", path.stem)
+    return Scene.from_data(data, str(source))
+
+
+def parse_value(text: str):
+    """A --set value: true/false, an integer, a float, or the text itself."""
+    low = text.strip().lower()
+    if low in ("true", "false"):
+        return low == "true"
+    for kind in (int, float):
+        try:
+            return kind(text)
+        except ValueError:
+            pass
+    return text
+
+
+def signal_at(signal, t):
+    """A checked signal (a constant or { times, values }) at time(s) t: piecewise linear, held beyond."""
+    if isinstance(signal, dict):
+        return np.interp(t, signal["times"], signal["values"])
+    return np.full_like(np.asarray(t, dtype=float), float(signal)) if np.ndim(t) else float(signal)
+
+
+def soft_start(t: np.ndarray, ramp: float):
+    """The envelope e(t) = (1 - cos(pi t / ramp)) / 2 up to `ramp`, 1 after, and its two derivatives:
+    an oscillation multiplied by it starts from rest (zero position, velocity and acceleration)."""
+    if ramp <= 0.0:
+        one = np.ones_like(t)
+        return one, 0.0 * one, 0.0 * one
+    w = math.pi / ramp
+    inside = t < ramp
+    e = np.where(inside, 0.5 * (1.0 - np.cos(w * t)), 1.0)
+    de = np.where(inside, 0.5 * w * np.sin(w * t), 0.0)
+    dde = np.where(inside, 0.5 * w * w * np.cos(w * t), 0.0)
+    return e, de, dde
+
+
+class TowMotion:
+    """The tow point's position, velocity and acceleration from a scene's checked [tow] table."""
+
+    def __init__(self, tow: dict, duration: float, step: float):
+        fine = step / 20.0
+        self.t = np.arange(0.0, duration + 0.5 * fine, fine)
+        if self.t[-1] < duration:
+            self.t = np.append(self.t, duration)
+        t = self.t
+        V = signal_at(tow.get("speed_kn", 0.0), t) * KNOT
+        psi = np.radians(signal_at(tow.get("heading_deg", 0.0), t))
+        v = np.stack([V * np.cos(psi), V * np.sin(psi), np.zeros_like(V)], axis=1)
+        x = np.zeros_like(v)
+        x[1:] = np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t)[:, None], axis=0)
+        x += np.asarray(tow.get("start", [0.0, 0.0, 0.0]), dtype=float)
+        a = np.gradient(v, t, axis=0)
+        for key in ("surge", "heave"):
+            m = tow.get(key)
+            if not m:
+                continue
+            A, w = m["amplitude"], 2.0 * math.pi / m["period"]
+            d = np.asarray(m.get("direction", [0.0, 0.0, 1.0]), dtype=float)
+            d = d / np.linalg.norm(d)
+            e, de, dde = soft_start(t, m.get("ramp", m["period"]))
+            s, c = np.sin(w * t), np.cos(w * t)
+            x += (A * e * s)[:, None] * d
+            v += (A * (de * s + e * w * c))[:, None] * d
+            a += (A * (dde * s + 2.0 * de * w * c - e * w * w * s))[:, None] * d
+        self.x, self.v, self.a = x, v, a
+
+    def at(self, t: float):
+        """At the grid point nearest t (communication points lie on the grid)."""
+        k = int(np.searchsorted(self.t, t))
+        if k == len(self.t) or (k > 0 and t - self.t[k - 1] < self.t[k] - t):
+            k -= 1
+        return self.x[k], self.v[k], self.a[k]
+
+
+@dataclass
+class SceneResult:
+    scene: Scene
+    time: np.ndarray
+    columns: dict  # name -> array over time
+    cpu: float
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self.columns[name]
+
+    def summary(self) -> dict:
+        """The numbers a sweep tabulates: tension extremes over the run (from every internal
+        integrator step), final tension and far-end depth; anchored, the anchor tension's maximum."""
+        s = {"towTensionMax": float(np.max(self["towTensionMax"])),
+             "towTensionMin": float(np.min(self["towTensionMin"])),
+             "towTensionFinal": float(self["towTension"][-1]),
+             "endDepthFinal": float(-self["endPosition.z"][-1])}
+        if "endTension" in self.columns:
+            s["anchorTensionMax"] = float(np.max(self["endTension"]))
+        if "unstretchedLength" in self.columns:
+            s["lengthFinal"] = float(self["unstretchedLength"][-1])
+        return s
+
+    def write_csv(self, path: Path) -> None:
+        names = ["time"] + list(self.columns)
+        data = np.column_stack([self.time] + [self.columns[n] for n in self.columns])
+        np.savetxt(path, data, delimiter=",", header=",".join(names), comments="", fmt="%.10g")
+
+    def shapes(self) -> np.ndarray | None:
+        """The recorded stations, shape [time, station, xyz], or None without record_shape."""
+        if SHAPE[0] not in self.columns:
+            return None
+        n = NUM_STATIONS
+        return np.stack([np.stack([self[f"shape.{c}[{k}]"] for k in range(1, n + 1)], axis=1) for c in "xyz"],
+                        axis=2)
+
+    def plot(self, path: Path) -> None:
+        from .scene_plots import plot_result
+
+        plot_result(self, path)
+
+    def animate(self, path: Path, frames: int = 120) -> None:
+        from .scene_plots import animate_result
+
+        animate_result(self, path, frames)
+
+
+def _fmu_message(cable: CableFMU) -> str:
+    """What the FMU logged as an error, without the FMI function names it prefixes."""
+    said = []
+    for status, _, message in cable.messages:
+        if status not in ("ERROR", "FATAL"):
+            continue
+        text = message.split(": ", 1)[1] if message.startswith("fmi2") and ": " in message else message
+        if text not in said:
+            said.append(text)
+    return "; ".join(said)
+
+
+def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, fmu: str | Path | None = None,
+              progress=None) -> SceneResult:
+    """Runs a scene (a Scene, a file, a packaged scene's name or a parsed dict) with parameter or
+    setting overrides; progress(t) is called after every step. A mistake in the scene or an
+    override is a SceneFileError (before anything runs, or when the FMU refuses a parameter); a
+    failure of the FMU during the run is a SceneError."""
+    s = scene if isinstance(scene, Scene) else load_scene(scene)
+    if overrides:
+        s = s.with_overrides(overrides)
+    motion = TowMotion(s.tow, s.duration, s.step)
+    n = int(math.ceil(s.duration / s.step - 1e-9))
+    times = np.array([min(k * s.step, s.duration) for k in range(n + 1)])
+    extra = {"anchored": ANCHORED_RECORDED, "winch": WINCH_RECORDED}.get(s.kind, [])
+    recorded = list(dict.fromkeys(RECORDED + extra + s.outputs + (SHAPE if s.record_shape else [])))
+    data = np.zeros((n + 1, len(recorded)))
+    tow = np.zeros((n + 1, 3))
+    parameters = dict(s.parameters)
+    signals = dict(s.inputs)
+    if s.winch:
+        parameters.setdefault("winchMode", s.winch["mode"])
+        signals[s.winch["input"]] = s.winch["table"]
+    cable = CableFMU(fmu or require_fmu(), parameters=parameters)
+    t = 0.0
+    try:
+        def inputs(t):
+            x, v, _ = motion.at(t)
+            d = {"tow.x": x[0], "tow.y": x[1], "tow.z": x[2], "tow.vx": v[0], "tow.vy": v[1], "tow.vz": v[2]}
+            d.update({name: float(signal_at(sig, t)) for name, sig in signals.items()})
+            return d
+
+        cpu0 = time.process_time()
+        try:
+            cable.initialize(0.0, s.duration, inputs=inputs(0.0))
+        except FMICallException as exc:
+            said = _fmu_message(cable) or str(exc)
+            if "invalid parameter" in said:  # the scene's mistake, not a failure of the run
+                raise SceneFileError(f"{s.source}: {said}") from exc
+            raise SceneError(f"{s.source}: the FMU could not start: {said}") from exc
+        data[0] = cable.get_reals(recorded)
+        tow[0] = motion.at(0.0)[0]
+        for k in range(n):
+            t = times[k]
+            cable.set(inputs(t))
+            cable.set_input_derivatives(["tow.vx", "tow.vy", "tow.vz"], 1, list(motion.at(t)[2]))
+            cable.do_step(times[k + 1] - t, t)
+            data[k + 1] = cable.get_reals(recorded)
+            tow[k + 1] = motion.at(times[k + 1])[0]
+            if progress is not None:
+                progress(times[k + 1])
+        cpu = time.process_time() - cpu0
+    except FMICallException as exc:  # say what the FMU said (the variable it refused, the failure)
+        raise SceneError(f"{s.source}: the FMU failed at t = {t:g} s: {_fmu_message(cable) or exc}") from exc
+    finally:
+        cable.free()
+    columns = {name: data[:, i] for i, name in enumerate(recorded)}
+    columns.update({"tow.x": tow[:, 0], "tow.y": tow[:, 1], "tow.z": tow[:, 2]})
+    return SceneResult(s, times, columns, cpu)
