@@ -217,7 +217,7 @@ def test_a_buoy_line_the_profile_cannot_solve_is_refused_not_answered_wrongly(fm
     solver starts from a parabola, and its answers were 23 % / 0.16 % / 2.6 % off at the fairlead
     (463 % / 2.4 % / 175 % at the anchor) at 10 / 20 / 40 elements without an error. The anchor's
     force against the line's axial tension there tells such a state: it is refused."""
-    from ucable import bench_statics as B
+    from studies import bench_statics as B
 
     case = B.draw_case(2026, 58)
     with CableFMU(fmu_file, parameters=B.fmu_parameters(case, elements), logging_on=True) as c:
