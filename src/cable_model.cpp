@@ -160,10 +160,16 @@ SectionInput section_input(const UCSection& s) {
 
 }  // namespace
 
+int CableModel::section_at(double s) const {
+    const double snap = 1e-9 * line_.length;  // a point this close to a section's start is in it
+    int k = 0;
+    while (k + 1 < static_cast<int>(sections_.size()) && s >= sections_[k + 1].s0 - snap) ++k;
+    return k;
+}
+
 double CableModel::resting_height() const {
     const SectionProps& last = sections_.back();
-    const FluidProps& f = last.fluid;
-    const double weight = (f.massPerLength - f.rho * f.area) * f.gravity;
+    const double weight = submerged_weight(last.fluid);
     return -last.seabed.depth - (weight > 0.0 ? resting_penetration(last.seabed, weight) : 0.0);
 }
 
@@ -245,8 +251,7 @@ void CableModel::build_mesh(const UCParams& p, const std::vector<double>* nodes)
         // The given nodes; elements of one length in a row share their tables.
         for (size_t i = 0; i + 1 < nodes->size(); ++i) {
             const double s0 = (*nodes)[i], l = (*nodes)[i + 1] - s0;
-            int k = 0;
-            while (k + 1 < static_cast<int>(sections_.size()) && s0 >= sections_[k + 1].s0 - snap) ++k;
+            const int k = section_at(s0);
             if (!runs_.empty() && runs_.back().section == k && runs_.back().elementLength == l) {
                 ++runs_.back().count;
             } else {
@@ -296,8 +301,7 @@ void CableModel::build_mesh(const UCParams& p, const std::vector<double>* nodes)
     for (const auto& point : points) {
         // Without bending stiffness a point load turns the line through a corner: its node is a
         // pinned joint, each side with its own tangent. Not at a section's end (a joint already).
-        int k = 0;
-        while (k + 1 < static_cast<int>(sections_.size()) && point.first >= sections_[k + 1].s0 - snap) ++k;
+        const int k = section_at(point.first);
         const bool inside = point.first > sections_[k].s0 + snap && point.first < sections_[k].s0 + sections_[k].length - snap;
         if (inside && sections_[k].EI == 0.0 && winchMesh_.elements == 0) pinnedAttachments_.push_back(point.first);
     }
@@ -354,8 +358,7 @@ void CableModel::place_attachments(const std::vector<std::pair<double, PointBody
         for (int i = 1; i < nSlots_; ++i)
             if (std::abs(slotArc_[i] - point.first) < std::abs(slotArc_[best] - point.first)) best = i;
         at.offset = 6 * best;
-        int k = 0;
-        while (k + 1 < static_cast<int>(sections_.size()) && point.first >= sections_[k + 1].s0) ++k;
+        const int k = section_at(point.first);
         const double d = sections_[k].fluid.diameter;
         at.contact.footprint = body_footprint(at.body.mass, at.body.volume, d);
         at.contact.seabed = sections_[k].seabed;

@@ -272,6 +272,7 @@ private:
     void build_sections(const UCParams& p);
     void build_mesh(const UCParams& p, const std::vector<double>* nodes);
     void build_slots();
+    int section_at(double s) const;  // the section holding arc length s (its start belongs to it)
     void place_attachments(const std::vector<std::pair<double, PointBody>>& points);
     void build_dof_map();
 

@@ -71,6 +71,9 @@ constexpr double kDragVelocityFloor = 1e-6;
 
 double submerged_fraction(double z, double diameter);
 
+// Weight less buoyancy per unit length of a fully submerged line [N/m] (negative: it floats).
+inline double submerged_weight(const FluidProps& f) { return (f.massPerLength - f.rho * f.area) * f.gravity; }
+
 // Per-length load F at one point in water moving with velocity U (gradient dU = dU/dr) and, when
 // `waves` (the water accelerates), accelerating with A (gradient dA): Morison drag on the relative
 // velocity and the fluid inertia rho A ((1 + Can) A_n + (1 + Cat) A_t) (Froude-Krylov plus added

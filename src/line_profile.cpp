@@ -275,45 +275,14 @@ bool LineProfile::solve(const Eigen::Vector3d& top, const Eigen::Vector3d& botto
             norm = newton(y);
         }
         if (norm <= tolerance) {
-            exact_ = true;
-            H_ = std::exp(y[0]);
-            v_ = y[1];
-            rests_.assign(y.data() + 2, y.data() + y.size());
-
-            double fx, fz;
-            walk(H_, v_, rests_, pieces_, fx, fz, nullptr);
-            grounded_ = 0.0;
-            for (const Piece& p : pieces_)
-                if (p.grounded) grounded_ += p.length;
-            clearance_ = INFINITY;
-            for (const Piece& p : pieces_) {
-                if (p.grounded) continue;
-                double zmin = p.z0, dx, dz;
-                piece_offset(p, H_, p.length, dx, dz);
-                zmin = std::min(zmin, p.z0 + dz);
-                const double vertex = p.weight != 0.0 ? -p.V0 / p.weight : -1.0;
-                if (vertex > 0.0 && vertex < p.length) {
-                    piece_offset(p, H_, vertex, dx, dz);
-                    zmin = std::min(zmin, p.z0 + dz);
-                }
-                clearance_ = std::min(clearance_, zmin - seabedHeight_);
-            }
+            settle(std::exp(y[0]), y[1], std::vector<double>(y.data() + 2, y.data() + y.size()), true);
             return true;
         }
     }
     if (fallback.size() == 2) {
         // Where the hanging line's contacts could not be solved, its profile without them (passing
         // below the seabed there): a guess, not exact (lowest_clearance() tells).
-        exact_ = false;
-        H_ = std::exp(fallback[0]);
-        v_ = fallback[1];
-        rests_.clear();
-        double fx, fz;
-        walk(H_, v_, rests_, pieces_, fx, fz, nullptr);
-        grounded_ = 0.0;
-        for (const Piece& p : pieces_)
-            if (p.grounded) grounded_ += p.length;
-        clearance_ = -INFINITY;
+        settle(std::exp(fallback[0]), fallback[1], {}, false);
         return true;
     }
     return fail("no elastic catenary found for these ends (Newton's method did not converge)");
@@ -340,6 +309,30 @@ std::vector<double> LineProfile::contacts() const {
     }
     std::sort(s.begin(), s.end());
     return s;
+}
+
+void LineProfile::settle(double H, double v, const std::vector<double>& rests, bool exact) {
+    H_ = H;
+    double x, z;
+    walk(H, v, rests, pieces_, x, z, nullptr);
+    grounded_ = 0.0;
+    clearance_ = exact ? INFINITY : -INFINITY;
+    for (const Piece& p : pieces_) {
+        if (p.grounded) {
+            grounded_ += p.length;
+            continue;
+        }
+        if (!exact) continue;
+        double dx, dz;
+        piece_offset(p, H, p.length, dx, dz);
+        double zmin = std::min(p.z0, p.z0 + dz);
+        const double vertex = p.weight != 0.0 ? -p.V0 / p.weight : -1.0;
+        if (vertex > 0.0 && vertex < p.length) {
+            piece_offset(p, H, vertex, dx, dz);
+            zmin = std::min(zmin, p.z0 + dz);
+        }
+        clearance_ = std::min(clearance_, zmin - seabedHeight_);
+    }
 }
 
 const LineProfile::Piece& LineProfile::piece_at(double u) const {

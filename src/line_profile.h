@@ -71,14 +71,14 @@ private:
               std::vector<double>* minima) const;
     static void piece_offset(const Piece& p, double H, double l, double& dx, double& dz);
     const Piece& piece_at(double u) const;
+    // The solution's pieces, grounded length and clearance (-infinity where it is not exact).
+    void settle(double H, double v, const std::vector<double>& rests, bool exact);
 
     std::vector<Segment> segments_;  // from the lower end
     std::vector<PointLoad> points_;  // arc length from the lower end
     std::vector<Piece> pieces_;
     Eigen::Vector3d bottom_ = Eigen::Vector3d::Zero(), u_ = Eigen::Vector3d::UnitX();
-    std::vector<double> rests_;
-    double length_ = 0.0, H_ = 0.0, v_ = 0.0, grounded_ = 0.0, clearance_ = 0.0, seabedHeight_ = 0.0;
-    bool exact_ = false;
+    double length_ = 0.0, H_ = 0.0, grounded_ = 0.0, clearance_ = 0.0, seabedHeight_ = 0.0;
     bool seabed_ = false;    // the lower end rests on the seabed
     bool seabedOn_ = false;  // there is a seabed
 };

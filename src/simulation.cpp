@@ -276,8 +276,7 @@ bool CableSimulation::static_profile(const Vec3& towPoint, const Vec3& anchor, L
     std::vector<LineProfile::Segment> segments;
     for (int k = 0; k < model_.n_sections(); ++k) {
         const SectionProps& sec = model_.section(k);
-        const FluidProps& f = sec.fluid;
-        segments.push_back({sec.length, (f.massPerLength - f.rho * f.area) * f.gravity, sec.axial.EA});
+        segments.push_back({sec.length, submerged_weight(sec.fluid), sec.axial.EA});
     }
     std::vector<LineProfile::PointLoad> points;
     const double L = model_.line().length;
@@ -294,10 +293,10 @@ bool CableSimulation::static_profile(const Vec3& towPoint, const Vec3& anchor, L
 // the parabola of initial_guess, the continuation of a stiff power cable settled at some meshes (16,
 // 25, 30, ... of 250 m) into a folded equilibrium at up to four times the tension, and lines resting
 // on a stiff seabed often found none; from the profile it finds the one a user expects.
-bool CableSimulation::profile_guess(const Vec3& towPoint, const Vec3& farPoint, double* X) const {
-    LineProfile profile;
-    bool towOnTop = true;
-    if (!static_profile(towPoint, farPoint, profile, towOnTop, nullptr)) return false;
+bool CableSimulation::profile_guess(double* X) const {
+    if (!profile_.solved) return false;
+    const LineProfile& profile = profile_.profile;
+    const bool towOnTop = profile_.towOnTop;
     const double L = model_.line().length;
     Vec3 r, tangent;
     for (int i = 0; i < model_.n_slots(); ++i) {
@@ -313,34 +312,43 @@ bool CableSimulation::profile_guess(const Vec3& towPoint, const Vec3& farPoint, 
 }
 
 // Nodes graded by the static profile for an anchored line that rests on the seabed or carries
-// attachments (src/mesh_grading.h); the model is built again where its mesh changes.
+// attachments (src/mesh_grading.h); the model is built again where its mesh changes. The profile is
+// kept (profile_) for the ends the model holds: the guess, the refusal and the check read it.
 void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, bool apply) {
-    LineProfile profile;
-    bool towOnTop = true;
+    ProfileState& ps = profile_;
+    auto solve_for = [&](const Vec3& far) {
+        ps.far = far;
+        ps.why.clear();
+        ps.solved = static_profile(towPoint, far, ps.profile, ps.towOnTop, &ps.why);
+    };
     StaticLayout layout;
-    if (apply && static_profile(towPoint, farPoint, profile, towOnTop, nullptr)) {
+    ps.solved = false;
+    if (apply) solve_for(farPoint);
+    if (ps.solved) {
         // the anchor is the lower end, held where the line rests (CableModel): graded for that point
-        layout.anchorResting = towOnTop && profile.rests_at_bottom() && model_.params().bottomEnd == UC_BOTTOM_ANCHORED;
+        layout.anchorResting = ps.towOnTop && ps.profile.rests_at_bottom() && model_.params().bottomEnd == UC_BOTTOM_ANCHORED;
         const Vec3 resting(farPoint.x(), farPoint.y(), model_.resting_height());
-        if (layout.anchorResting && std::abs(farPoint.z() - resting.z()) <= 0.5 * model_.line().diameter)
-            static_profile(towPoint, resting, profile, towOnTop, nullptr);
-        if (profile.grounded_length() > 0.0 || !model_.attachments().empty())
-            layout.nodes = graded_nodes(model_, profile, towOnTop);
+        if (layout.anchorResting && std::abs(farPoint.z() - resting.z()) <= 0.5 * model_.line().diameter) solve_for(resting);
+        if (ps.solved && (ps.profile.grounded_length() > 0.0 || !model_.attachments().empty()))
+            layout.nodes = graded_nodes(model_, ps.profile, ps.towOnTop);
     }
     meshTow_ = towPoint;
     meshFar_ = farPoint;
     const bool graded = !layout.nodes.empty() || layout.anchorResting;
-    if (graded == graded_ && layout == layout_) return;
-    graded_ = graded;
-    layout_ = layout;
-    replace_model(CableModel(model_.params(), nullptr, graded ? &layout_ : nullptr));
+    if (graded != graded_ || !(layout == layout_)) {
+        graded_ = graded;
+        layout_ = layout;
+        replace_model(CableModel(model_.params(), nullptr, graded ? &layout_ : nullptr));
+    }
+    const Vec3 held = model_.params().bottomEnd == UC_BOTTOM_ANCHORED ? model_.anchor() : farPoint;
+    if (apply && held != ps.far) solve_for(held);
 }
 
 bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const {
     const UCParams& p = model_.params();
     std::vector<double> X(model_.n_global());
     model_.straight_line(towPoint, vec(p.initialDirection), X.data());
-    const bool profile = profileApplies_ && profile_guess(towPoint, farPoint, X.data());
+    const bool profile = profileApplies_ && profile_guess(X.data());
     if (model_.far_end_prescribed() && !profile) {
         // Chord from the tow point to the far end, sagging in its vertical plane when the line is
         // slack (a parabola whose length is about the cable length).
@@ -444,11 +452,7 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
 // its anchor rests on a frictionless seabed with no tension at all, in no one shape: refused with
 // the lengths that would give it one.
 bool CableSimulation::statics_applies(const Vec3& farPoint, std::string& error) const {
-    LineProfile profile;
-    bool towOnTop = true;
-    std::string why;
-    if (!profileApplies_ || model_.line().EI > 0.0 || static_profile(tow_.position, farPoint, profile, towOnTop, &why) ||
-        why != "longer than the way down and across")
+    if (!profileApplies_ || model_.line().EI > 0.0 || profile_.solved || profile_.why != "longer than the way down and across")
         return true;
     const Vec3 d = tow_.position - farPoint;
     const double X = std::hypot(d.x(), d.y()), h = std::abs(d.z()), L = model_.line().length;
@@ -467,7 +471,7 @@ bool CableSimulation::statics_applies(const Vec3& farPoint, std::string& error) 
 // element folded back on itself, the anchor's force its axial tension (without bending stiffness),
 // and where the line's static profile is exact (no bending
 // stiffness, no current, calm water, at rest) the fairlead and anchor tensions within 1 % of it.
-bool CableSimulation::verify_statics(const Vec3& farPoint, std::string& error) const {
+bool CableSimulation::verify_statics(std::string& error) const {
     char text[700];
     for (int e = 0; e < model_.n_elements(); ++e) {
         const int g = model_.element_offset(e);
@@ -498,11 +502,11 @@ bool CableSimulation::verify_statics(const Vec3& farPoint, std::string& error) c
         error = text;
         return false;
     }
-    LineProfile profile;
-    bool towOnTop = true;
+    const LineProfile& profile = profile_.profile;
+    const bool towOnTop = profile_.towOnTop;
     const bool exact = profileApplies_ && model_.line().EI == 0.0 && loads_.current.uniform.isZero(0.0) &&
                        (p.currentProfileRows == 0 || loads_.current.scale == 0.0) && model_.sea().calm() &&
-                       loads_.torque == 0.0 && static_profile(tow_.position, farPoint, profile, towOnTop, nullptr) &&
+                       loads_.torque == 0.0 && profile_.solved &&
                        profile.lowest_clearance() > -model_.line().diameter;
     if (!exact) return true;
     const double top = (towOnTop ? profile.top_force() : profile.bottom_force()).norm();
@@ -629,7 +633,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     compressionWarned_ = false;
     rainflow_.reset();
     update_outputs();
-    if (p.initMode == UC_INIT_EQUILIBRIUM && !verify_statics(farPoint, error)) return false;
+    if (p.initMode == UC_INIT_EQUILIBRIUM && !verify_statics(error)) return false;
     if (off_) {  // consistent: the winch runs at the rate of the initial tension
         double R[12];
         model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, R);
@@ -790,8 +794,8 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
 // use (docs/robustness.md: the slack-snap case peaks at 95 kN two-sided and 406 kN tension-only).
 void CableSimulation::warn_of_compression() {
     const UCParams& p = model_.params();
-    if (!p.enableCompression || compressionWarned_) return;
-    double buckling = INFINITY;
+    if (!p.enableCompression || compressionWarned_ || !(outputs_.minTension < -1e-3 * tensionScale_)) return;
+    double buckling = INFINITY;  // only where there is compression to judge
     for (int e = 0; e < model_.n_elements(); ++e) {
         const double l = model_.element_length(e);
         buckling = std::min(buckling, 9.8696044010893586 * model_.element_section(e).EI / (l * l));

@@ -88,14 +88,14 @@ private:
     // bending, current and waves left out; false where it does not apply, with the reason in why.
     bool static_profile(const Vec3& towPoint, const Vec3& farPoint, LineProfile& profile, bool& towOnTop,
                         std::string* why) const;
-    bool profile_guess(const Vec3& towPoint, const Vec3& farPoint, double* X) const;
+    bool profile_guess(double* X) const;  // from profile_, false where it was not solved
     // The mesh graded by the static profile where `apply` and the profile does (else each section's
     // own), the model built again where that changes it.
     void grade_mesh(const Vec3& towPoint, const Vec3& farPoint, bool apply);
     // Before the static solver: false, with the reason, where the line has no static equilibrium.
     bool statics_applies(const Vec3& farPoint, std::string& error) const;
     // After it, on the outputs: false, with the reason, where its answer is not the line's state.
-    bool verify_statics(const Vec3& farPoint, std::string& error) const;
+    bool verify_statics(std::string& error) const;
     // Largest relative difference of the end tensions from the exact static profile [-].
     static constexpr double kStaticsCheck = 0.01;
     // Largest relative difference between the anchor force and the axial tension at the anchor of
@@ -189,6 +189,14 @@ private:
     StaticLayout layout_;
     Vec3 meshTow_ = Vec3::Zero(), meshFar_ = Vec3::Zero();
     bool profileApplies_ = false;  // an anchored line, or a far end held at rest
+    // The static profile for the ends the model holds (grade_mesh solves it once per initialization).
+    struct ProfileState {
+        LineProfile profile;
+        bool solved = false, towOnTop = true;
+        std::string why;  // why it was not solved
+        Vec3 far = Vec3::Zero();  // the far end it was solved for
+    };
+    ProfileState profile_;
 
     // --- per-step environment and workspace ---
     SNCurve sn_;  // from the fatigue.* parameters

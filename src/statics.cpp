@@ -192,13 +192,18 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
                                        std::vector<double>& q, bool nearGuess) {
     StaticsResult result;
     Workspace w(model);
-    Loads staged = loads;
-    staged.twoSidedAxial = true;  // a tension-only cable switches to its law at the end
-    // With contact sampled densely the continuation from a guess that lies partly below the seabed
-    // can settle into another equilibrium (excess length stored in a bump on the seabed, measured
-    // on a stiff power cable at 40 to 80 elements); on the elements' axial points it does not, and
-    // the dense contact then only moves the answer a little: it is switched on at the end.
-    staged.axialContactOnly = model.dense_contact();
+    auto first_stage = [&] {
+        Loads staged = loads;
+        staged.twoSidedAxial = true;  // a tension-only cable switches to its law at the end
+        // With contact sampled densely the continuation from a guess that lies partly below the
+        // seabed can settle into another equilibrium (excess length stored in a bump on the seabed,
+        // measured on a stiff power cable at 40 to 80 elements); on the elements' axial points it
+        // does not, and the dense contact then only moves the answer a little: it is switched on at
+        // the end.
+        staged.axialContactOnly = model.dense_contact();
+        return staged;
+    };
+    Loads staged = first_stage();
     for (int j = 0; j < model.n_free(); ++j) w.v[j] = vSteady[j];
     const std::vector<double> guess = q;
     if (nearGuess) {
@@ -209,9 +214,7 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
             return result;
         q = guess;
         result = StaticsResult();
-        staged = loads;
-        staged.twoSidedAxial = true;
-        staged.axialContactOnly = model.dense_contact();
+        staged = first_stage();
     }
     // Stiffness continuation: first a soft cable (about 1 % strain under the loads), on which
     // large rotations are cheap, then EA grows tenfold per stage to its real value.
