@@ -80,11 +80,20 @@ static fmi2Status apply_text(UCInstance* inst, UCParams* p, const char* function
     inst->msg[0] = '\0';
     const int rc = uc_line_file_apply(text, length, p, vessel, notes, notes != NULL ? UC_NOTES_SIZE : 0, inst->msg,
                                       sizeof inst->msg);
+    if (rc != 0 && uc_line_file_is_system(text, length)) {
+        /* a mooring system: made from the text by uc_line_file_create_system */
+        free(notes);
+        p->mooringSystem = 1;
+        uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: lineFile %s read (%zu bytes): a mooring system", function, path,
+               length);
+        return fmi2OK;
+    }
     if (rc != 0) {
         uc_log_status(&inst->log, fmi2Error, "%s: lineFile %s, %s", function, path, inst->msg);
         free(notes);
         return fmi2Error;
     }
+    p->mooringSystem = 0;
     uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: lineFile %s read (%zu bytes): %.17g m, %d elements", function,
            path, length, p->length, p->nElements);
     if (notes != NULL) log_notes(inst, function, path, notes);
@@ -99,7 +108,25 @@ static fmi2Status apply_text(UCInstance* inst, UCParams* p, const char* function
     return fmi2OK;
 }
 
-fmi2Status uc_line_file_load(UCInstance* inst, UCParams* p, const char* function) {
+/* The mooring system of the text (the parameters of each line are *p with its own). */
+static fmi2Status create_system(UCInstance* inst, const UCParams* p, const char* function, const char* path,
+                                const char* text, size_t length, UCCable** cable) {
+    char* notes = malloc(UC_NOTES_SIZE);
+    inst->msg[0] = '\0';
+    *cable = uc_create_system(p, text, length, notes, notes != NULL ? UC_NOTES_SIZE : 0, inst->msg, sizeof inst->msg);
+    if (*cable == NULL) {
+        uc_log_status(&inst->log, fmi2Error, "%s: lineFile %s, %s", function, path, inst->msg);
+        free(notes);
+        return fmi2Error;
+    }
+    if (notes != NULL) log_notes(inst, function, path, notes);
+    free(notes);
+    return fmi2OK;
+}
+
+/* Reads lineFile and hands its text to apply (p) or create (cable). */
+static fmi2Status with_text(UCInstance* inst, UCParams* p, const UCParams* params, UCCable** cable,
+                            const char* function) {
     char* candidates[2] = {NULL, NULL};
     const int n = candidate_paths(inst, candidates);
     char tried[1024] = "";
@@ -113,7 +140,8 @@ fmi2Status uc_line_file_load(UCInstance* inst, UCParams* p, const char* function
             uc_file_note_tried(tried, sizeof tried, candidates[k], error);
             continue;
         }
-        status = apply_text(inst, p, function, candidates[k], text, length);
+        status = cable != NULL ? create_system(inst, params, function, candidates[k], text, length, cable)
+                               : apply_text(inst, p, function, candidates[k], text, length);
         free(text);
         done = 1;
     }
@@ -126,4 +154,13 @@ fmi2Status uc_line_file_load(UCInstance* inst, UCParams* p, const char* function
     }
     for (int k = 0; k < n; ++k) free(candidates[k]);
     return status;
+}
+
+fmi2Status uc_line_file_load(UCInstance* inst, UCParams* p, const char* function) {
+    return with_text(inst, p, NULL, NULL, function);
+}
+
+fmi2Status uc_line_file_create_system(UCInstance* inst, const UCParams* p, UCCable** cable, const char* function) {
+    *cable = NULL;
+    return with_text(inst, NULL, p, cable, function);
 }

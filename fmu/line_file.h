@@ -18,4 +18,8 @@
  * a refused deck (naming the file and its line) is fmi2Error, logged naming `function`. */
 fmi2Status uc_line_file_load(UCInstance* inst, UCParams* p, const char* function);
 
+/* A deck that is a mooring system (p->mooringSystem set by uc_line_file_load): reads lineFile again and
+ * creates the system with the parameters *p for its lines (uc_create_system). Errors as above. */
+fmi2Status uc_line_file_create_system(UCInstance* inst, const UCParams* p, UCCable** cable, const char* function);
+
 #endif /* UNDERWATERCABLE_FMU_LINE_FILE_H */

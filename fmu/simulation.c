@@ -38,8 +38,15 @@ fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function) {
         return fail_with_core_message(inst, function,
                                       fromFile ? "invalid parameter (with the line of lineFile)" : "invalid parameter");
     }
-    inst->cable = uc_create(&inst->coreParams, inst->msg, sizeof inst->msg);
-    if (inst->cable == NULL) return fail_with_core_message(inst, function, "cannot create the cable model");
+    if (inst->coreParams.mooringSystem) {
+        if (uc_sim_create_core(inst, &inst->coreParams, function) != fmi2OK) {
+            uc_instance_drop_core(inst);
+            return fmi2Error;
+        }
+    } else {
+        inst->cable = uc_create(&inst->coreParams, inst->msg, sizeof inst->msg);
+        if (inst->cable == NULL) return fail_with_core_message(inst, function, "cannot create the cable model");
+    }
     if (uc_initialize(inst->cable, inst->startTime, &inst->inputs, inst->msg, sizeof inst->msg) != 0) {
         return fail_with_core_message(inst, function, "initialization failed");
     }
@@ -52,6 +59,15 @@ fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function) {
            inst->time, inst->outputs.towTension);
     log_solver_statistics(inst, "initialization");
     return fmi2OK;
+}
+
+fmi2Status uc_sim_create_core(UCInstance* inst, const UCParams* p, const char* function) {
+    inst->msg[0] = '\0';
+    if (p->mooringSystem) return uc_line_file_create_system(inst, p, &inst->cable, function);
+    inst->cable = uc_create(p, inst->msg, sizeof inst->msg);
+    if (inst->cable != NULL) return fmi2OK;
+    uc_log_status(&inst->log, fmi2Error, "%s: cannot create the cable model: %s", function, inst->msg);
+    return fmi2Error;
 }
 
 static fmi2Status check_step_arguments(UCInstance* inst, double tc, double h) {

@@ -15,6 +15,10 @@
  * is already cached for the current parameters and inputs. Errors are logged naming `function`. */
 fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function);
 
+/* Creates inst->cable for the parameters p: one line (uc_create), or the mooring system of lineFile
+ * (p->mooringSystem). Errors are logged naming `function`. */
+fmi2Status uc_sim_create_core(UCInstance* inst, const UCParams* p, const char* function);
+
 /* fmi2DoStep after the state check: time checks, uc_do_step from the FMU's own time, outputs. */
 fmi2Status uc_sim_do_step(UCInstance* inst, double currentCommunicationPoint, double communicationStepSize);
 

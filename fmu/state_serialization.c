@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "simulation.h"
 #include "uc_guid.h"
 
 #define UC_STATE_MAGIC "UCFMUST"  /* 8 bytes with the terminating NUL */
@@ -101,11 +102,9 @@ fmi2Status uc_state_get(UCInstance* inst, fmi2FMUstate* state) {
 static fmi2Status restore_core(UCInstance* inst, const UCSavedState* s) {
     if (inst->cable == NULL || memcmp(&inst->coreParams, &s->coreParams, sizeof s->coreParams) != 0) {
         uc_instance_drop_core(inst);
-        inst->cable = uc_create(&s->coreParams, inst->msg, sizeof inst->msg);
-        if (inst->cable == NULL) {
-            uc_log_status(&inst->log, fmi2Error, "fmi2SetFMUstate: cannot create the cable model: %s", inst->msg);
-            return fmi2Error;
-        }
+        /* a mooring system is made from its deck again: the saved parameters name it (lineFile) */
+        if (s->coreParams.mooringSystem) memcpy(&inst->params, &s->params, sizeof s->params);
+        if (uc_sim_create_core(inst, &s->coreParams, "fmi2SetFMUstate") != fmi2OK) return fmi2Error;
     }
     if (uc_state_restore(inst->cable, s->core, s->coreSize, inst->msg, sizeof inst->msg) != 0) {
         uc_log_status(&inst->log, fmi2Error, "fmi2SetFMUstate: cannot restore the cable state: %s", inst->msg);

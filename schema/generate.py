@@ -105,6 +105,13 @@ def expand(raw: dict, constants: dict) -> list:
     """(name, field, description, start, dependencies) per scalar of one schema entry."""
     name = raw["name"]
     start = raw.get("start")
+    if "components" in raw and "count" in raw:  # an array of vectors: k outer, component inner
+        n = resolve_count(raw["count"], constants, name)
+        comps = raw["components"]
+        return [(name.replace("{k}", str(k + 1)).replace("{c}", c),
+                 raw["field"].replace("{i}", str(k)).replace("{j}", str(j)),
+                 raw["description"].replace("{k}", str(k + 1)).replace("{c}", c), start, [])
+                for k in range(n) for j, c in enumerate(comps)]
     if "components" in raw:
         comps = raw["components"]
         starts = start if isinstance(start, list) else [start] * len(comps)
@@ -529,6 +536,13 @@ def fmi3_header_text(data, entries) -> str:
 def doc_name(e: Entry) -> str:
     raw = e.raw
     name = raw["name"]
+    if "docName" in raw:
+        return f"`{raw['docName']}`"
+    if "count" in raw and "components" in raw:  # name[k].x/y/z, or each component's name
+        comps, base = raw["components"], name.replace("{k}", "k")
+        if name.endswith(".{c}") and all(len(c) == 1 for c in comps):
+            return f"`{base.replace('{c}', '/'.join(comps))}`"
+        return ", ".join(f"`{base.replace('{c}', c)}`" for c in comps)
     if "count" in raw:
         return f"`{name.replace('{k}', 'k')}`"
     if "components" in raw:

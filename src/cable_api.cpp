@@ -8,12 +8,16 @@
 #include <string>
 
 #include "line_file.h"
+#include "mooring_system.h"
 #include "params.h"
 #include "simulation.h"
 
+// One line, or a mooring system of several (docs/systems_mooring.md).
 struct UCCable {
-    explicit UCCable(const UCParams& p) : simulation(p) {}
-    uc::CableSimulation simulation;
+    explicit UCCable(const UCParams& p) : line(std::make_unique<uc::CableSimulation>(p)) {}
+    UCCable(const UCParams& p, const uc::MooringDeck& deck) : system(std::make_unique<uc::MooringSystem>(p, deck)) {}
+    std::unique_ptr<uc::CableSimulation> line;
+    std::unique_ptr<uc::MooringSystem> system;
 };
 
 namespace {
@@ -64,7 +68,7 @@ extern "C" int uc_initialize(UCCable* c, double t0, const UCInputs* in, char* ms
             error = "uc_initialize: NULL pointer";
             return false;
         }
-        return c->simulation.initialize(t0, *in, error);
+        return c->system ? c->system->initialize(t0, *in, error) : c->line->initialize(t0, *in, error);
     });
 }
 
@@ -74,13 +78,13 @@ extern "C" int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, ch
             error = "uc_do_step: NULL pointer";
             return false;
         }
-        return c->simulation.step(t, h, *in, error);
+        return c->system ? c->system->step(t, h, *in, error) : c->line->step(t, h, *in, error);
     });
 }
 
 extern "C" int uc_take_event(UCCable* c, char* text, size_t size) {
     if (!c) return 0;
-    const std::string event = c->simulation.take_event();
+    const std::string event = c->system ? c->system->take_event() : c->line->take_event();
     if (event.empty()) return 0;
     if (text && size) std::snprintf(text, size, "%s", event.c_str());
     return 1;
@@ -92,8 +96,13 @@ extern "C" int uc_interface_derivatives(UCCable* c, double d[72], char* msg, siz
             error = "uc_interface_derivatives: NULL pointer";
             return false;
         }
+        if (c->system) {
+            error = "the interface derivatives of towForce and endForce are not available for a mooring system "
+                    "(its bodies' stiffness is the output body[k].stiffness[i,j])";
+            return false;
+        }
         double m[6][12];
-        const bool ok = c->simulation.interface_derivatives(m, error);
+        const bool ok = c->line->interface_derivatives(m, error);
         for (int i = 0; i < 6; ++i)
             for (int j = 0; j < 12; ++j) d[12 * i + j] = m[i][j];
         return ok;
@@ -102,21 +111,38 @@ extern "C" int uc_interface_derivatives(UCCable* c, double d[72], char* msg, siz
 
 extern "C" void uc_tow_position(const UCCable* c, double p[3]) {
     if (!c || !p) return;
-    const uc::Vec3 x = c->simulation.tow_position();
+    const uc::Vec3 x = c->system ? c->system->tow_position() : c->line->tow_position();
     for (int k = 0; k < 3; ++k) p[k] = x[k];
 }
 
-extern "C" double uc_time(const UCCable* c) { return c ? c->simulation.time() : 0.0; }
-
-extern "C" void uc_get_outputs(const UCCable* c, UCOutputs* out) {
-    if (c && out) *out = c->simulation.outputs();
+extern "C" double uc_time(const UCCable* c) {
+    return !c ? 0.0 : c->system ? c->system->time() : c->line->time();
 }
 
-extern "C" size_t uc_state_size(const UCCable* c) { return c ? c->simulation.state_size() : 0; }
+extern "C" void uc_get_outputs(const UCCable* c, UCOutputs* out) {
+    if (!c || !out) return;
+    if (c->system) {
+        *out = c->system->outputs();
+        return;
+    }
+    *out = c->line->outputs();
+    // the one line is line 1 of a system
+    out->mooringLine[0].fairleadTension = out->towTension;
+    out->mooringLine[0].anchorTension = out->endTension;
+    out->mooringLine[0].minTension = out->minTension;
+    out->mooringLine[0].groundedLength = out->groundedLength;
+}
+
+extern "C" size_t uc_state_size(const UCCable* c) {
+    return !c ? 0 : c->system ? c->system->state_size() : c->line->state_size();
+}
 
 extern "C" int uc_state_save(UCCable* c, void* buffer, size_t size) {
-    if (!c || !buffer || size < c->simulation.state_size()) return 1;
-    c->simulation.save_state(buffer);
+    if (!c || !buffer || size < uc_state_size(c)) return 1;
+    if (c->system)
+        c->system->save_state(buffer);
+    else
+        c->line->save_state(buffer);
     return 0;
 }
 
@@ -126,7 +152,7 @@ extern "C" int uc_state_restore(UCCable* c, const void* buffer, size_t size, cha
             error = "uc_state_restore: NULL pointer";
             return false;
         }
-        return c->simulation.restore_state(buffer, size, error);
+        return c->system ? c->system->restore_state(buffer, size, error) : c->line->restore_state(buffer, size, error);
     });
 }
 
@@ -149,4 +175,35 @@ extern "C" int uc_line_file_apply(const char* text, size_t length, UCParams* p, 
         write_message(notes, notesSize, joined);
         return true;
     });
+}
+
+extern "C" int uc_line_file_is_system(const char* text, size_t length) {
+    try {
+        return text != nullptr && uc::is_mooring_system_deck(std::string_view(text, length)) ? 1 : 0;
+    } catch (...) {
+        return 0;
+    }
+}
+
+extern "C" UCCable* uc_create_system(const UCParams* p, const char* text, size_t length, char* notes, size_t notesSize,
+                                     char* msg, size_t msgSize) {
+    if (notes && notesSize) notes[0] = '\0';
+    UCCable* cable = nullptr;
+    guarded(msg, msgSize, [&](std::string& error) {
+        if (p == nullptr || (text == nullptr && length > 0)) {
+            error = "uc_create_system: NULL pointer";
+            return false;
+        }
+        uc::MooringDeck deck;
+        if (!uc::read_mooring_deck(std::string_view(text ? text : "", length), p->lineFileElements, deck, error))
+            return false;
+        auto made = std::make_unique<UCCable>(*p, deck);
+        if (!made->system->build(error)) return false;
+        std::string joined;
+        for (const std::string& note : deck.notes) joined += (joined.empty() ? "" : "\n") + note;
+        write_message(notes, notesSize, joined);
+        cable = made.release();
+        return true;
+    });
+    return cable;
 }

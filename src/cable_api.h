@@ -59,6 +59,18 @@ typedef struct UCCable UCCable;
 int uc_line_file_apply(const char* text, size_t length, UCParams* p, double towPoint[3], char* notes,
                        size_t notesSize, char* msg, size_t msgSize);
 
+/* 1 when the deck's text describes a mooring system (several lines, points on bodies or a BODIES section;
+ * docs/systems_mooring.md) rather than one line (uc_line_file_apply). */
+int uc_line_file_is_system(const char* text, size_t length);
+
+/* A mooring system from the deck's text: every line takes the parameters *p (checked per line) with its
+ * own properties, far end and the deck's environment. The single-line outputs are line 1's; the system's
+ * are line[k].*, body[k].*, point[k].*; its inputs body[k].*, point[k].* (and current, ...). The other
+ * calls take the result as they take a cable. NULL on failure (msg says why, "line <n>: ..." for a line
+ * of the text); notes as for uc_line_file_apply. */
+UCCable* uc_create_system(const UCParams* p, const char* text, size_t length, char* notes, size_t notesSize,
+                          char* msg, size_t msgSize);
+
 /* Defaults: the Hopland 1993 tow cable, free lower end, hinged top, 20 elements. */
 /* The inputs' start values (zero, but currentScale 1): initialize every UCInputs with it. */
 void uc_inputs_default(UCInputs* in);

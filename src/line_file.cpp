@@ -383,11 +383,12 @@ bool read_line_type(const Row& row, LineType& t, std::string& error) {
     return f.ok();
 }
 
-enum class PointKind { Fixed, Vessel, Free };
+enum class PointKind { Fixed, Vessel, Free, Body };
 
 struct Point {
     int id = 0;
     PointKind kind = PointKind::Free;
+    int body = 0;  // Body: the deck's body ID (its position is relative to the body)
     double position[3] = {0.0, 0.0, 0.0};
     double mass = 0.0, volume = 0.0, CdA = 0.0, Ca = 0.0;
     int row = 0;
@@ -395,7 +396,7 @@ struct Point {
 };
 
 // The attachment word of a point: letters (case-insensitive), maybe followed by a number (Body2).
-bool read_point_kind(Fields& f, std::string_view word, PointKind& kind) {
+bool read_point_kind(Fields& f, std::string_view word, bool bodies, PointKind& kind, int& body) {
     const std::string u = upper(word);
     size_t letters = 0;
     while (letters < u.size() && std::isalpha(static_cast<unsigned char>(u[letters]))) ++letters;
@@ -406,6 +407,12 @@ bool read_point_kind(Fields& f, std::string_view word, PointKind& kind) {
         kind = PointKind::Vessel;
     } else if (is_one_of(head, {"POINT", "CONNECT", "CON", "FREE"})) {
         kind = PointKind::Free;
+    } else if (bodies && head == "BODY" && letters < u.size()) {
+        const std::string digits = u.substr(letters);
+        if (digits.size() > 8 || !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+            return f.fail("unknown point attachment " + quoted(word) + " (Body<ID>, Fixed, Vessel, Coupled or Free)");
+        kind = PointKind::Body;
+        body = std::stoi(digits);
     } else if (head == "BODY" || head == "TURBINE") {
         return f.fail("a point attached to " + quoted(word) + ": bodies are not supported (Fixed, Vessel, Coupled "
                       "or Free points only)");
@@ -415,7 +422,8 @@ bool read_point_kind(Fields& f, std::string_view word, PointKind& kind) {
     return true;
 }
 
-bool read_point(const Row& row, int expectedId, Point& p, std::vector<std::string>& notes, std::string& error) {
+bool read_point(const Row& row, int expectedId, bool bodies, Point& p, std::vector<std::string>& notes,
+                std::string& error) {
     Fields f(row, error);
     const size_t n = row.tokens.size();
     if (n != 9 && n != 12) {
@@ -427,7 +435,7 @@ bool read_point(const Row& row, int expectedId, Point& p, std::vector<std::strin
         return f.fail("point ID " + std::to_string(p.id) + ": IDs must be 1, 2, 3, ... in order (expected " +
                       std::to_string(expectedId) + ")");
     }
-    if (!f.ok() || !read_point_kind(f, row.tokens[1], p.kind)) return false;
+    if (!f.ok() || !read_point_kind(f, row.tokens[1], bodies, p.kind, p.body)) return false;
     static const char* const kAxes[] = {"X", "Y", "Z"};
     for (int k = 0; k < 3; ++k) p.position[k] = f.number(2 + k, kAxes[k]);
     p.mass = f.non_negative(5, "Mass");
@@ -520,6 +528,7 @@ const char* kind_name(PointKind kind) {
     switch (kind) {
         case PointKind::Fixed: return "Fixed";
         case PointKind::Vessel: return "Vessel";
+        case PointKind::Body: return "Body";
         default: return "Free";
     }
 }
@@ -599,29 +608,42 @@ void assign_elements(std::vector<LineFileSection>& sections, int total) {
     }
 }
 
-}  // namespace
 
-int elements_for_segments(int numSegs) { return std::max(1, (numSegs + 1) / 2); }
+// The tables of a deck, checked row by row, and its environment (MoorDyn's defaults, its water depth
+// raised to the deepest point). system: a mooring system's deck (BODIES rows and points on bodies are
+// read); otherwise they are refused as outside one line.
+struct Deck {
+    std::vector<LineType> types;
+    std::vector<Point> points;
+    std::vector<Line> lines;
+    std::vector<Row> bodies;  // the BODIES rows (system only)
+    int bodiesHeader = 0;
+    double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
+};
 
-bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& out, std::string& error) {
-    out = LineFileLine();
+bool parse_deck(std::string_view text, bool system, Deck& deck, std::vector<std::string>& notes, std::string& error) {
     std::vector<std::optional<Section>> sections;
     if (!collect_sections(text, sections, error)) return false;
     auto section = [&](Kind kind) -> const std::optional<Section>& { return sections[static_cast<size_t>(kind)]; };
 
     for (Kind kind : {Kind::Bodies, Kind::Rods, Kind::Failure, Kind::Control, Kind::ExternalLoads, Kind::SyropeIC}) {
+        if (system && kind == Kind::Bodies) continue;
         if (section(kind) && !section(kind)->rows.empty()) {
             error = at_line(section(kind)->rows[0].number, std::string(unsupported(kind)) + " (" + title(kind) +
                                                                 " section)");
             return false;
         }
     }
+    if (section(Kind::Bodies)) {
+        deck.bodies = section(Kind::Bodies)->rows;
+        deck.bodiesHeader = section(Kind::Bodies)->header;
+    }
     if (section(Kind::RodTypes) && !section(Kind::RodTypes)->rows.empty()) {
-        out.notes.push_back(at_line(section(Kind::RodTypes)->header, "ROD TYPES ignored (there are no rods)"));
+        notes.push_back(at_line(section(Kind::RodTypes)->header, "ROD TYPES ignored (there are no rods)"));
     }
     if (section(Kind::Outputs) && !section(Kind::Outputs)->rows.empty()) {
-        out.notes.push_back(at_line(section(Kind::Outputs)->header, "OUTPUTS ignored: the FMU's outputs are its "
-                                                                    "variables (towForce, tension[k], shape.*, ...)"));
+        notes.push_back(at_line(section(Kind::Outputs)->header, "OUTPUTS ignored: the FMU's outputs are its "
+                                                                "variables (towForce, tension[k], shape.*, ...)"));
     }
     for (Kind kind : {Kind::LineTypes, Kind::Points, Kind::Lines}) {
         if (!section(kind)) {
@@ -636,9 +658,9 @@ bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& out,
     }
 
     Options options;
-    if (section(Kind::Options) && !read_options(*section(Kind::Options), options, out.notes, error)) return false;
+    if (section(Kind::Options) && !read_options(*section(Kind::Options), options, notes, error)) return false;
 
-    std::vector<LineType> types;
+    std::vector<LineType>& types = deck.types;
     for (const Row& row : section(Kind::LineTypes)->rows) {
         LineType t{};
         if (!read_line_type(row, t, error)) return false;
@@ -652,14 +674,14 @@ bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& out,
         types.push_back(t);
     }
 
-    std::vector<Point> points;
+    std::vector<Point>& points = deck.points;
     for (const Row& row : section(Kind::Points)->rows) {
         Point p;
-        if (!read_point(row, static_cast<int>(points.size()) + 1, p, out.notes, error)) return false;
+        if (!read_point(row, static_cast<int>(points.size()) + 1, system, p, notes, error)) return false;
         points.push_back(p);
     }
 
-    std::vector<Line> lines;
+    std::vector<Line>& lines = deck.lines;
     for (const Row& row : section(Kind::Lines)->rows) {
         Line l;
         if (!read_line(row, static_cast<int>(lines.size()) + 1, types, static_cast<int>(points.size()), l, error)) {
@@ -669,45 +691,66 @@ bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& out,
         lines.push_back(l);
     }
 
+    deck.gravity = options.gravity;
+    deck.waterDensity = options.waterDensity;
+    deck.waterDepth = options.waterDepth;
+    for (const Point& p : points) {
+        if (p.kind != PointKind::Body && -p.position[2] > deck.waterDepth) {
+            if (options.waterDepth > 0.0) {
+                notes.push_back(at_line(p.row, "point " + std::to_string(p.id) + " lies below WtrDpth: the water "
+                                               "depth is set to its depth, " + number_text(-p.position[2]) +
+                                               " m (as MoorDyn does)"));
+            }
+            deck.waterDepth = -p.position[2];
+        }
+    }
+    return true;
+}
+
+// One MoorDyn line as a section of ours, in our conventions.
+LineFileSection section_of(const Line& l, const LineType& t) {
+    LineFileSection s;
+    s.type = t.name;
+    s.length = l.length;
+    s.diameter = t.diameter;
+    s.massPerLength = t.massPerLength;
+    s.EA = t.EA;
+    s.EI = t.EI;
+    // BA/-zeta < 0: a fraction of critical damping of one MoorDyn segment, converted as MoorDyn does,
+    // BA = zeta (UnstrLen / NumSegs) sqrt(EA Mass/m) (docs/lines.md).
+    s.axialDamping = t.BA >= 0.0 ? t.BA : -t.BA * (l.length / l.numSegs) * std::sqrt(t.EA * t.massPerLength);
+    s.Cdn = t.Cd;
+    s.Cdt = t.CdAx;
+    s.Can = t.Ca;
+    s.Cat = t.CaAx;
+    s.numSegs = l.numSegs;
+    s.row = l.row;
+    return s;
+}
+
+}  // namespace
+
+int elements_for_segments(int numSegs) { return std::max(1, (numSegs + 1) / 2); }
+
+bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& out, std::string& error) {
+    out = LineFileLine();
+    Deck deck;
+    if (!parse_deck(text, false, deck, out.notes, error)) return false;
+    const std::vector<LineType>& types = deck.types;
+    const std::vector<Point>& points = deck.points;
+    const std::vector<Line>& lines = deck.lines;
+
     std::vector<std::pair<int, bool>> chain;
     int farPoint = -1;
     if (!walk_chain(points, lines, chain, farPoint, error)) return false;
 
-    // Environment: MoorDyn's defaults, and its water depth raised to the deepest point.
-    out.gravity = options.gravity;
-    out.waterDensity = options.waterDensity;
-    out.waterDepth = options.waterDepth;
-    for (const Point& p : points) {
-        if (-p.position[2] > out.waterDepth) {
-            if (options.waterDepth > 0.0) {
-                out.notes.push_back(at_line(p.row, "point " + std::to_string(p.id) + " lies below WtrDpth: the water "
-                                                   "depth is set to its depth, " + number_text(-p.position[2]) +
-                                                   " m (as MoorDyn does)"));
-            }
-            out.waterDepth = -p.position[2];
-        }
-    }
+    out.gravity = deck.gravity;
+    out.waterDensity = deck.waterDensity;
+    out.waterDepth = deck.waterDepth;
 
     for (const auto& [index, reversed] : chain) {
         const Line& l = lines[index];
-        const LineType& t = types[l.type];
-        LineFileSection s;
-        s.type = t.name;
-        s.length = l.length;
-        s.diameter = t.diameter;
-        s.massPerLength = t.massPerLength;
-        s.EA = t.EA;
-        s.EI = t.EI;
-        // BA/-zeta < 0: a fraction of critical damping of one MoorDyn segment, converted as MoorDyn does,
-        // BA = zeta (UnstrLen / NumSegs) sqrt(EA Mass/m) (docs/lines.md).
-        s.axialDamping = t.BA >= 0.0 ? t.BA : -t.BA * (l.length / l.numSegs) * std::sqrt(t.EA * t.massPerLength);
-        s.Cdn = t.Cd;
-        s.Cdt = t.CdAx;
-        s.Can = t.Ca;
-        s.Cat = t.CaAx;
-        s.numSegs = l.numSegs;
-        s.row = l.row;
-        out.sections.push_back(s);
+        out.sections.push_back(section_of(l, types[l.type]));
         (void)reversed;  // a line is uniform: its orientation in the file does not matter
     }
     assign_elements(out.sections, elementsTotal);
@@ -829,6 +872,214 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
     p.gravity = line.gravity;
     p.waterDensity = line.waterDensity;
     p.enableCompression = 0;  // MoorDyn's lines are tension-only: a deck's line is the same line
+    return true;
+}
+
+}  // namespace uc
+
+// ------------------------------------------------------------------------------- mooring systems
+namespace uc {
+namespace {
+
+enum class BodyKind { Coupled, Fixed };
+
+struct DeckBody {
+    int id = 0;
+    BodyKind kind = BodyKind::Coupled;
+    double pose[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // X0 Y0 Z0 [m], r0 p0 y0 [rad]
+    int row = 0;
+};
+
+// MoorDyn's BODIES row: ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca* (angles in degrees).
+bool read_body(const Row& row, int expectedId, DeckBody& b, std::vector<std::string>& notes, std::string& error) {
+    Fields f(row, error);
+    if (row.tokens.size() < 8) {
+        return f.fail("a body has the fields ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*; this row has " +
+                      std::to_string(row.tokens.size()));
+    }
+    b.id = f.integer(0, "ID", 1, 1 << 30, "must be positive");
+    if (f.ok() && b.id != expectedId) {
+        return f.fail("body ID " + std::to_string(b.id) + ": IDs must be 1, 2, 3, ... in order (expected " +
+                      std::to_string(expectedId) + ")");
+    }
+    if (!f.ok()) return false;
+    const std::string u = upper(row.tokens[1]);
+    std::string head;
+    for (char c : u) {
+        if (!std::isalpha(static_cast<unsigned char>(c))) break;
+        head += c;
+    }
+    if (is_one_of(head, {"COUPLED", "CPLD", "VESSEL", "VES"})) {
+        b.kind = BodyKind::Coupled;
+    } else if (is_one_of(head, {"FIXED", "FIX", "ANCHOR"})) {
+        b.kind = BodyKind::Fixed;
+    } else if (is_one_of(head, {"FREE"})) {
+        return f.fail("body " + std::to_string(b.id) + " is Free: free bodies are not supported (Coupled bodies, driven "
+                      "by the body[k].* inputs, and Fixed bodies)");
+    } else if (is_one_of(head, {"PINNED", "CPLDPIN", "COUPLEDPINNED"})) {
+        return f.fail("body " + std::to_string(b.id) + " is pinned (coupled in translation, free in rotation): not "
+                      "supported (Coupled and Fixed bodies)");
+    } else {
+        return f.fail("unknown body attachment " + quoted(row.tokens[1]) + " (Coupled or Fixed)");
+    }
+    static const char* const kColumns[] = {"X0", "Y0", "Z0", "r0", "p0", "y0"};
+    const double kDegree = 3.14159265358979323846 / 180.0;
+    for (int k = 0; k < 6; ++k) b.pose[k] = f.number(2 + k, kColumns[k]) * (k < 3 ? 1.0 : kDegree);
+    b.row = row.number;
+    if (f.ok() && b.kind == BodyKind::Coupled && row.tokens.size() > 8) {
+        notes.push_back(at_line(row.number, "the mass, inertia, volume and drag of coupled body " + std::to_string(b.id) +
+                                                " ignored (its motion is given by the body[k].* inputs; the lines' load "
+                                                "on it is the output)"));
+    }
+    return f.ok();
+}
+
+// R = Rx(a0) Ry(a1) Rz(a2): MoorDyn's orientation of a body from its roll, pitch and yaw.
+void rotate_xyz(const double a[3], const double r[3], double out[3]) {
+    const double cx = std::cos(a[0]), sx = std::sin(a[0]), cy = std::cos(a[1]), sy = std::sin(a[1]),
+                 cz = std::cos(a[2]), sz = std::sin(a[2]);
+    const double z1[3] = {cz * r[0] - sz * r[1], sz * r[0] + cz * r[1], r[2]};
+    const double y1[3] = {cy * z1[0] + sy * z1[2], z1[1], -sy * z1[0] + cy * z1[2]};
+    out[0] = y1[0];
+    out[1] = cx * y1[1] - sx * y1[2];
+    out[2] = sx * y1[1] + cx * y1[2];
+}
+
+// Where the end of a line at point p is held.
+bool mooring_end(const Point& p, const std::vector<DeckBody>& bodies, bool bodiesSection, MooringEnd& end,
+                 std::string& error) {
+    switch (p.kind) {
+        case PointKind::Fixed:
+            end.kind = MooringEnd::Kind::Fixed;
+            std::copy(p.position, p.position + 3, end.position);
+            return true;
+        case PointKind::Vessel:
+            if (bodiesSection) {
+                if (p.id > UC_MAX_POINTS) {
+                    error = at_line(p.row, "coupled point " + std::to_string(p.id) + ": the coupled points' inputs "
+                                           "point[k].* go up to k = " + std::to_string(UC_MAX_POINTS) +
+                                           " (give it a smaller ID)");
+                    return false;
+                }
+                end.kind = MooringEnd::Kind::Point;
+                end.point = p.id;
+            } else {
+                end.kind = MooringEnd::Kind::Body;  // a platform's fairlead: rides body 1
+                end.body = 1;
+            }
+            std::copy(p.position, p.position + 3, end.position);
+            return true;
+        case PointKind::Body: {
+            if (p.body < 1 || p.body > static_cast<int>(bodies.size())) {
+                error = at_line(p.row, "point " + std::to_string(p.id) + " is on body " + std::to_string(p.body) +
+                                       ", which the BODIES table does not have");
+                return false;
+            }
+            const DeckBody& b = bodies[p.body - 1];
+            if (b.kind == BodyKind::Fixed) {
+                end.kind = MooringEnd::Kind::Fixed;
+                rotate_xyz(b.pose + 3, p.position, end.position);
+                for (int k = 0; k < 3; ++k) end.position[k] += b.pose[k];
+                return true;
+            }
+            if (p.body > UC_MAX_BODIES) {
+                error = at_line(p.row, "point " + std::to_string(p.id) + " is on coupled body " + std::to_string(p.body) +
+                                       ": the bodies' inputs body[k].* go up to k = " + std::to_string(UC_MAX_BODIES));
+                return false;
+            }
+            end.kind = MooringEnd::Kind::Body;
+            end.body = p.body;
+            std::copy(p.position, p.position + 3, end.position);
+            return true;
+        }
+        case PointKind::Free:
+            error = at_line(p.row, "point " + std::to_string(p.id) + " is a Free point of a mooring system: free points "
+                                   "(joints, buoys, clump weights between lines) are supported in a deck of one chain "
+                                   "of lines only, not yet in a system of several lines or bodies");
+            return false;
+    }
+    return false;
+}
+
+}  // namespace
+
+bool is_mooring_system_deck(std::string_view text) {
+    std::vector<std::optional<Section>> sections;
+    std::string error;
+    if (!collect_sections(text, sections, error)) return false;
+    const auto& lines = sections[static_cast<size_t>(Kind::Lines)];
+    const auto& points = sections[static_cast<size_t>(Kind::Points)];
+    const auto& bodies = sections[static_cast<size_t>(Kind::Bodies)];
+    if (!lines || !points) return false;
+    if (lines->rows.size() > 1 || (bodies && !bodies->rows.empty())) return true;
+    for (const Row& row : points->rows) {
+        if (row.tokens.size() > 1 && upper(row.tokens[1]).rfind("BODY", 0) == 0) return true;
+    }
+    return false;
+}
+
+bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& out, std::string& error) {
+    out = MooringDeck();
+    Deck deck;
+    if (!parse_deck(text, true, deck, out.notes, error)) return false;
+    std::vector<DeckBody> bodies;
+    for (const Row& row : deck.bodies) {
+        DeckBody b;
+        if (!read_body(row, static_cast<int>(bodies.size()) + 1, b, out.notes, error)) return false;
+        bodies.push_back(b);
+        if (b.kind == BodyKind::Coupled) out.bodies = std::max(out.bodies, b.id);
+    }
+    out.bodiesSection = !bodies.empty();
+    if (deck.lines.size() > UC_MAX_LINES) {
+        error = at_line(deck.lines[UC_MAX_LINES].row, "line " + std::to_string(UC_MAX_LINES + 1) + ": a mooring system "
+                                                      "holds at most " + std::to_string(UC_MAX_LINES) + " lines");
+        return false;
+    }
+    for (const Point& p : deck.points) {
+        if (p.lines.empty()) out.notes.push_back(at_line(p.row, "point " + std::to_string(p.id) + " ignored: no line "
+                                                                "is attached to it"));
+    }
+    for (const Line& l : deck.lines) {
+        MooringDeckLine line;
+        line.id = l.id;
+        line.row = l.row;
+        line.section = section_of(l, deck.types[l.type]);
+        line.section.elements = elementsPerLine > 0 ? elementsPerLine : elements_for_segments(l.numSegs);
+        MooringEnd a, b;
+        if (!mooring_end(deck.points[l.end[0]], bodies, out.bodiesSection, a, error) ||
+            !mooring_end(deck.points[l.end[1]], bodies, out.bodiesSection, b, error))
+            return false;
+        if (a.kind == MooringEnd::Kind::Fixed && b.kind == MooringEnd::Kind::Fixed) {
+            error = at_line(l.row, "line " + std::to_string(l.id) + " runs between two fixed points: a line of a "
+                                   "mooring system ends on a coupled body or point");
+            return false;
+        }
+        // The fairlead is the end on a coupled object (AttachB where both are, MoorDyn's usual fairlead).
+        const bool bCoupled = b.kind != MooringEnd::Kind::Fixed;
+        line.fairlead = bCoupled ? b : a;
+        line.far = bCoupled ? a : b;
+        out.lines.push_back(line);
+        if (out.bodies == 0 && line.fairlead.kind == MooringEnd::Kind::Body) out.bodies = 1;
+    }
+    out.waterDepth = deck.waterDepth;
+    out.gravity = deck.gravity;
+    out.waterDensity = deck.waterDensity;
+    return true;
+}
+
+bool mooring_line_params(const MooringDeck& deck, int k, const UCParams& base, UCParams& p, std::string& error) {
+    const MooringDeckLine& l = deck.lines[k];
+    LineFileLine line;
+    line.sections.push_back(l.section);
+    line.waterDepth = deck.waterDepth;
+    line.gravity = deck.gravity;
+    line.waterDensity = deck.waterDensity;
+    line.farEnd = LineFileFarEnd::Anchored;
+    std::copy(l.far.position, l.far.position + 3, line.anchor);
+    p = base;
+    if (!apply_line_file(line, p, error)) return false;
+    if (l.far.kind != MooringEnd::Kind::Fixed) p.bottomEnd = UC_BOTTOM_EXTERNAL;
+    p.mooringSystem = 0;  // each line is one line
     return true;
 }
 

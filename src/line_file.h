@@ -69,4 +69,44 @@ bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& line
 // message when the parameters cannot describe it.
 bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error);
 
+// ------------------------------------------------------------------------------- mooring systems
+// A deck of several lines, of lines on bodies, or with a BODIES section is a mooring system
+// (docs/systems_mooring.md): each line runs from its fairlead, the end on a coupled body or a coupled
+// point, to its anchor (a Fixed point) or to another coupled end.
+
+// Where a line's end is held: on coupled body `body` (1-based, the deck's body ID; with no BODIES section
+// the Vessel points ride body 1) at `position` in the body's frame, on coupled point `point` (its ID in
+// the deck) at `position` (its place in the deck), or fixed at `position`.
+struct MooringEnd {
+    enum class Kind { Body, Point, Fixed } kind = Kind::Fixed;
+    int body = 0, point = 0;
+    double position[3] = {0.0, 0.0, 0.0};
+};
+
+struct MooringDeckLine {
+    int id = 0, row = 0;
+    LineFileSection section;
+    MooringEnd fairlead, far;  // the line runs from its fairlead (s = 0) to its far end
+};
+
+struct MooringDeck {
+    std::vector<MooringDeckLine> lines;  // in the deck's order
+    int bodies = 0;                      // coupled bodies 1 .. bodies are driven by the body[k].* inputs
+    bool bodiesSection = false;          // false: the deck's Vessel points ride body 1
+    double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
+    std::vector<std::string> notes;
+};
+
+// True when the text is a deck (LINES and POINTS readable) with several lines, a point on a body or a
+// BODIES row: a mooring system, not one line. Decks it is false for are read by read_line_file.
+bool is_mooring_system_deck(std::string_view text);
+
+// Reads a mooring system's deck: elementsPerLine is lineFileElements (0: each line's from its NumSegs;
+// N > 0: N per line). False with error = "line <n>: <what>" when the deck is outside what a system holds.
+bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& deck, std::string& error);
+
+// The parameters of line k (0-based) of the system: base with the line's properties, environment and
+// far end (anchored at its Fixed point; driven, bottomEnd 3, where it ends on a coupled object).
+bool mooring_line_params(const MooringDeck& deck, int k, const UCParams& base, UCParams& p, std::string& error);
+
 }  // namespace uc

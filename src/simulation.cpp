@@ -23,12 +23,6 @@ namespace {
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
 constexpr std::uint32_t kStateVersion = 9;
 
-// A driven end in a saved state.
-struct EndHeader {
-    double position[3], velocity[3], acceleration[3], lastVelocityInput[3], lastAccelerationInput[3];
-    double lastAccelerationGiven;
-};
-
 // Fixed-layout header of a saved state; followed by UCOutputs, y, y' and the integrator's history.
 struct StateHeader {
     std::uint32_t magic;
@@ -36,7 +30,7 @@ struct StateHeader {
     std::int32_t nFree;
     std::int32_t nElements;
     double time;
-    EndHeader tow, end;
+    DrivenEndState tow, end;
     double lastStepSize;
     double twistRef[12];
     double lastBeta;
@@ -64,26 +58,6 @@ IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
 }
 
 Vec3 vec(const double v[3]) { return Vec3(v[0], v[1], v[2]); }
-
-void to_header(const DrivenEnd& e, EndHeader& h) {
-    for (int k = 0; k < 3; ++k) {
-        h.position[k] = e.position[k];
-        h.velocity[k] = e.velocity[k];
-        h.acceleration[k] = e.acceleration[k];
-        h.lastVelocityInput[k] = e.lastVelocityInput[k];
-        h.lastAccelerationInput[k] = e.lastAccelerationInput[k];
-    }
-    h.lastAccelerationGiven = e.lastAccelerationGiven ? 1.0 : 0.0;
-}
-
-void from_header(const EndHeader& h, DrivenEnd& e) {
-    e.position = vec(h.position);
-    e.velocity = vec(h.velocity);
-    e.acceleration = vec(h.acceleration);
-    e.lastVelocityInput = vec(h.lastVelocityInput);
-    e.lastAccelerationInput = vec(h.lastAccelerationInput);
-    e.lastAccelerationGiven = h.lastAccelerationGiven != 0.0;
-}
 
 // The jerk of a driven end at the current inputs, from the acceleration inputs of this step and
 // the previous one (both given by the master), trusted per component only as far as the
@@ -133,6 +107,26 @@ TowTrajectory DrivenEnd::next(double t, double h, double lastStep, const Vec3& p
     const Vec3 v1 = velocityInput + h * (a + h * (0.5 * j));
     const Vec3 a1 = a + h * j;
     return TowTrajectory::quintic(t, h, position, velocity, acceleration, p1, v1, a1);
+}
+
+void DrivenEnd::save(DrivenEndState& s) const {
+    for (int k = 0; k < 3; ++k) {
+        s.position[k] = position[k];
+        s.velocity[k] = velocity[k];
+        s.acceleration[k] = acceleration[k];
+        s.lastVelocityInput[k] = lastVelocityInput[k];
+        s.lastAccelerationInput[k] = lastAccelerationInput[k];
+    }
+    s.lastAccelerationGiven = lastAccelerationGiven ? 1.0 : 0.0;
+}
+
+void DrivenEnd::load(const DrivenEndState& s) {
+    position = vec(s.position);
+    velocity = vec(s.velocity);
+    acceleration = vec(s.acceleration);
+    lastVelocityInput = vec(s.lastVelocityInput);
+    lastAccelerationInput = vec(s.lastAccelerationInput);
+    lastAccelerationGiven = s.lastAccelerationGiven != 0.0;
 }
 
 void DrivenEnd::advance(const TowTrajectory& traj, const Vec3& velocityInput, const Vec3& a, bool accelerationGiven) {
@@ -1269,8 +1263,8 @@ void CableSimulation::save_state(void* buffer) {
     header.time = time_;
     const IntegratorStats s = total_stats();
     const double stats[5] = {s.steps, s.residualEvals, s.jacobianEvals, s.nonlinearFailures, s.errorTestFailures};
-    to_header(tow_, header.tow);
-    to_header(end_, header.end);
+    tow_.save(header.tow);
+    end_.save(header.end);
     header.lastStepSize = lastStepSize_;
     const Vec3* frames[4] = {&twistRef_.topTangent, &twistRef_.topNormal, &twistRef_.endTangent, &twistRef_.endNormal};
     for (int f = 0; f < 4; ++f)
@@ -1370,8 +1364,8 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     }
     time_ = header.time;
     set_winch_time(time_);
-    from_header(header.tow, tow_);
-    from_header(header.end, end_);
+    tow_.load(header.tow);
+    end_.load(header.end);
     Vec3* frames[4] = {&twistRef_.topTangent, &twistRef_.topNormal, &twistRef_.endTangent, &twistRef_.endNormal};
     for (int f = 0; f < 4; ++f) *frames[f] = vec(header.twistRef + 3 * f);
     lastBeta_ = header.lastBeta;

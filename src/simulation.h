@@ -21,6 +21,12 @@
 
 namespace uc {
 
+// A driven end in a saved state (plain doubles, fixed layout).
+struct DrivenEndState {
+    double position[3], velocity[3], acceleration[3], lastVelocityInput[3], lastAccelerationInput[3];
+    double lastAccelerationGiven;
+};
+
 // A prescribed end driven by the master's inputs (the tow point; the far end of bottomEnd 3):
 // where its trajectory stands at the current time, and the inputs of the previous step.
 struct DrivenEnd {
@@ -36,6 +42,8 @@ struct DrivenEnd {
     // After a successful step along traj with these inputs.
     void advance(const TowTrajectory& traj, const Vec3& velocityInput, const Vec3& acceleration,
                  bool accelerationGiven);
+    void save(DrivenEndState& s) const;
+    void load(const DrivenEndState& s);
 };
 
 class CableSimulation : public SecondOrderSystem {

@@ -11,6 +11,9 @@
 #define UC_STRING_CAPACITY 4096
 #define UC_MAX_SECTIONS 8
 #define UC_MAX_ATTACHMENTS 8
+#define UC_MAX_LINES 16
+#define UC_MAX_BODIES 4
+#define UC_MAX_POINTS 16
 
 typedef struct UCSection {
     double length; /* section[k].length [m]: unstretched length (must be > 0 when k <= nSections >= 2) */
@@ -41,6 +44,35 @@ typedef struct UCEndLoadDamping {
     double y[3]; /* endLoadDamping.yx, endLoadDamping.yy, endLoadDamping.yz [N.s/m]: row y of D */
     double z[3]; /* endLoadDamping.zx, endLoadDamping.zy, endLoadDamping.zz [N.s/m]: row z of D */
 } UCEndLoadDamping;
+
+typedef struct UCCoupledBody {
+    double position[3]; /* body[k].x/y/z [m]: a mooring system's coupled body k (with no BODIES section in the deck, body 1 carries the Vessel points): position of its reference point */
+    double rotation[3]; /* body[k].roll, body[k].pitch, body[k].yaw [rad]: coupled body k: roll, pitch and yaw angles; the body's orientation is R = Rx(roll) Ry(pitch) Rz(yaw), MoorDyn's convention (docs/systems_mooring.md) */
+    double velocity[3]; /* body[k].vx, body[k].vy, body[k].vz [m/s]: coupled body k: velocity of its reference point */
+    double angularVelocity[3]; /* body[k].wx, body[k].wy, body[k].wz [rad/s]: coupled body k: angular velocity in the earth frame */
+} UCCoupledBody;
+
+typedef struct UCCoupledPoint {
+    double position[3]; /* point[k].x/y/z [m]: a Coupled (Vessel) point of a deck with a BODIES section, k its ID in the deck: position */
+    double velocity[3]; /* point[k].vx, point[k].vy, point[k].vz [m/s]: coupled point k: velocity */
+} UCCoupledPoint;
+
+typedef struct UCMooringLine {
+    double fairleadTension; /* line[k].fairleadTension [N]: line k of a mooring system (the deck's order; 0 beyond its lines): tension at its fairlead, the end on a body or a coupled point */
+    double anchorTension; /* line[k].anchorTension [N]: line k: tension at its other end (the anchor) */
+    double minTension; /* line[k].minTension [N]: line k: smallest tension along it */
+    double groundedLength; /* line[k].groundedLength [m]: line k: unstretched length resting on the seabed */
+} UCMooringLine;
+
+typedef struct UCBodyLoad {
+    double force[3]; /* body[k].force.x/y/z [N]: coupled body k: force of the lines on it */
+    double moment[3]; /* body[k].moment.x/y/z [N.m]: coupled body k: moment of the lines' forces about its reference point (earth axes) */
+    double stiffness[36]; /* body[k].stiffness[i,j]: coupled body k: the 6×6 quasi-static mooring stiffness K[i,j] = −∂(force, moment)ᵢ / ∂(x, y, z, θx, θy, θz)ⱼ of the lines at rest about the present pose (θ a small rotation about the earth axes) (N/m, N/rad, N m/m, N m/rad; docs/systems_mooring.md) */
+} UCBodyLoad;
+
+typedef struct UCPointLoad {
+    double force[3]; /* point[k].force.x/y/z [N]: coupled point k (its ID in the deck): force of the lines on it */
+} UCPointLoad;
 
 typedef struct UCParams {
     double length; /* length [m]: unstretched length */
@@ -113,6 +145,7 @@ typedef struct UCParams {
     double seabedContactSpacing; /* seabedContactSpacing [m]: largest distance along the cable between the points at which the seabed contact is integrated, on elements whose five axial points are farther apart (3-point Gauss rules on up to 16 equal intervals, at most 48 points per element); 0: the five axial points of every element. A coarse mesh on the seabed wants about the length of cable over which a touchdown crosses the contact's smoothing band (5 % of the diameter), sqrt(2 delta / kappa) at a touchdown of curvature kappa: 1-5 m on usual moorings ([docs/model.md](docs/model.md), contact sampling) */
     int solverMaxOrder; /* solver.maxOrder: highest order of the time integrator's variable-order BDF formulas (1–5). 5 (the default) takes the fewest steps where the tolerance is tight; orders 3–5 are not A-stable, so at a loose tolerance lightly damped fast modes (a stiff cable's axial and bending ringing) can hold the steps below the size the error test asks for, and 2, the highest A-stable order, then takes fewer steps for the same answer (the stiff power cable at tensionTolerance 0.1: 25–35 % fewer); 1 is backward Euler, which damps the most ([docs/error_control.md](docs/error_control.md), the integrator's order) */
     double winchMaxAcceleration; /* winch.maxAcceleration [m/s2]: largest acceleration and deceleration of the winch drum: with `winchMode` 1 it ramps towards `winch.rate` and brakes in time to stop at `winch.minLength`/`winch.maxLength`; with `winchMode` 2 the commanded rate stays within that braking envelope (the drum's response is `winch.timeConstant`'s); 0 = no limit (the rate may change at once at a communication point) ([docs/winch.md](docs/winch.md)) */
+    int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
 } UCParams;
 
 typedef struct UCInputs {
@@ -130,6 +163,8 @@ typedef struct UCInputs {
     double winchRate; /* winch.rate [m/s]: winch rate when `winchMode` = 1: positive pays out, negative hauls in (limited by `winch.maxRate` and the length limits) */
     double winchTension; /* winch.tension [N]: tow tension the winch holds when `winchMode` = 2 */
     double currentScale; /* currentScale: factor on the current depth profile: the water moves with `current.x/y` + `currentScale` × profile(depth), so a current that strengthens or turns with the tide at every depth in proportion is this input (with its derivative through `fmi2SetRealInputDerivatives` it changes linearly over a step, and the water's acceleration acts on the line) */
+    UCCoupledBody coupledBody[UC_MAX_BODIES];
+    UCCoupledPoint coupledPoint[UC_MAX_POINTS];
     double towAcceleration[3]; /* (not an FMU variable) [m/s2] from fmi2SetRealInputDerivatives (der(tow.v*) or der(tow.*,2)); 0 if not given */
     int towAccelerationGiven; /* (not an FMU variable) 1 when towAcceleration came from the master for this step; 0: the core estimates it from the last two tow velocity inputs */
     double endAcceleration[3]; /* (not an FMU variable) [m/s2] der(end.v*) from fmi2SetRealInputDerivatives */
@@ -176,6 +211,9 @@ typedef struct UCOutputs {
     double fatigueDamage; /* fatigueDamage: Miner's sum of the tow-tension cycles so far: streaming rainflow count of the tension after every integrator step with the `fatigue.*` S–N curve (0 when `fatigue.area` = 0) */
     double waveElevation; /* waveElevation [m]: elevation of the sea surface at the tow point's horizontal position (0 in calm water) */
     double unstretchedLength; /* unstretchedLength [m]: deployed unstretched length of the line (changes with the winch) */
+    UCMooringLine mooringLine[UC_MAX_LINES];
+    UCBodyLoad bodyLoad[UC_MAX_BODIES];
+    UCPointLoad pointLoad[UC_MAX_POINTS];
 } UCOutputs;
 
 /* X(vr, name, TYPE, CAUSALITY, member): every variable in value-reference order; TYPE is REAL, INTEGER, BOOLEAN or STRING (a NUL-terminated char array), CAUSALITY PARAMETER, INPUT or OUTPUT, member the field of UCParams, UCInputs or UCOutputs */
@@ -462,6 +500,150 @@ typedef struct UCOutputs {
     X(1035, "winch.rate", REAL, INPUT, winchRate) \
     X(1036, "winch.tension", REAL, INPUT, winchTension) \
     X(1037, "currentScale", REAL, INPUT, currentScale) \
+    X(1038, "body[1].x", REAL, INPUT, coupledBody[0].position[0]) \
+    X(1039, "body[1].y", REAL, INPUT, coupledBody[0].position[1]) \
+    X(1040, "body[1].z", REAL, INPUT, coupledBody[0].position[2]) \
+    X(1041, "body[2].x", REAL, INPUT, coupledBody[1].position[0]) \
+    X(1042, "body[2].y", REAL, INPUT, coupledBody[1].position[1]) \
+    X(1043, "body[2].z", REAL, INPUT, coupledBody[1].position[2]) \
+    X(1044, "body[3].x", REAL, INPUT, coupledBody[2].position[0]) \
+    X(1045, "body[3].y", REAL, INPUT, coupledBody[2].position[1]) \
+    X(1046, "body[3].z", REAL, INPUT, coupledBody[2].position[2]) \
+    X(1047, "body[4].x", REAL, INPUT, coupledBody[3].position[0]) \
+    X(1048, "body[4].y", REAL, INPUT, coupledBody[3].position[1]) \
+    X(1049, "body[4].z", REAL, INPUT, coupledBody[3].position[2]) \
+    X(1050, "body[1].roll", REAL, INPUT, coupledBody[0].rotation[0]) \
+    X(1051, "body[1].pitch", REAL, INPUT, coupledBody[0].rotation[1]) \
+    X(1052, "body[1].yaw", REAL, INPUT, coupledBody[0].rotation[2]) \
+    X(1053, "body[2].roll", REAL, INPUT, coupledBody[1].rotation[0]) \
+    X(1054, "body[2].pitch", REAL, INPUT, coupledBody[1].rotation[1]) \
+    X(1055, "body[2].yaw", REAL, INPUT, coupledBody[1].rotation[2]) \
+    X(1056, "body[3].roll", REAL, INPUT, coupledBody[2].rotation[0]) \
+    X(1057, "body[3].pitch", REAL, INPUT, coupledBody[2].rotation[1]) \
+    X(1058, "body[3].yaw", REAL, INPUT, coupledBody[2].rotation[2]) \
+    X(1059, "body[4].roll", REAL, INPUT, coupledBody[3].rotation[0]) \
+    X(1060, "body[4].pitch", REAL, INPUT, coupledBody[3].rotation[1]) \
+    X(1061, "body[4].yaw", REAL, INPUT, coupledBody[3].rotation[2]) \
+    X(1062, "body[1].vx", REAL, INPUT, coupledBody[0].velocity[0]) \
+    X(1063, "body[1].vy", REAL, INPUT, coupledBody[0].velocity[1]) \
+    X(1064, "body[1].vz", REAL, INPUT, coupledBody[0].velocity[2]) \
+    X(1065, "body[2].vx", REAL, INPUT, coupledBody[1].velocity[0]) \
+    X(1066, "body[2].vy", REAL, INPUT, coupledBody[1].velocity[1]) \
+    X(1067, "body[2].vz", REAL, INPUT, coupledBody[1].velocity[2]) \
+    X(1068, "body[3].vx", REAL, INPUT, coupledBody[2].velocity[0]) \
+    X(1069, "body[3].vy", REAL, INPUT, coupledBody[2].velocity[1]) \
+    X(1070, "body[3].vz", REAL, INPUT, coupledBody[2].velocity[2]) \
+    X(1071, "body[4].vx", REAL, INPUT, coupledBody[3].velocity[0]) \
+    X(1072, "body[4].vy", REAL, INPUT, coupledBody[3].velocity[1]) \
+    X(1073, "body[4].vz", REAL, INPUT, coupledBody[3].velocity[2]) \
+    X(1074, "body[1].wx", REAL, INPUT, coupledBody[0].angularVelocity[0]) \
+    X(1075, "body[1].wy", REAL, INPUT, coupledBody[0].angularVelocity[1]) \
+    X(1076, "body[1].wz", REAL, INPUT, coupledBody[0].angularVelocity[2]) \
+    X(1077, "body[2].wx", REAL, INPUT, coupledBody[1].angularVelocity[0]) \
+    X(1078, "body[2].wy", REAL, INPUT, coupledBody[1].angularVelocity[1]) \
+    X(1079, "body[2].wz", REAL, INPUT, coupledBody[1].angularVelocity[2]) \
+    X(1080, "body[3].wx", REAL, INPUT, coupledBody[2].angularVelocity[0]) \
+    X(1081, "body[3].wy", REAL, INPUT, coupledBody[2].angularVelocity[1]) \
+    X(1082, "body[3].wz", REAL, INPUT, coupledBody[2].angularVelocity[2]) \
+    X(1083, "body[4].wx", REAL, INPUT, coupledBody[3].angularVelocity[0]) \
+    X(1084, "body[4].wy", REAL, INPUT, coupledBody[3].angularVelocity[1]) \
+    X(1085, "body[4].wz", REAL, INPUT, coupledBody[3].angularVelocity[2]) \
+    X(1086, "point[1].x", REAL, INPUT, coupledPoint[0].position[0]) \
+    X(1087, "point[1].y", REAL, INPUT, coupledPoint[0].position[1]) \
+    X(1088, "point[1].z", REAL, INPUT, coupledPoint[0].position[2]) \
+    X(1089, "point[2].x", REAL, INPUT, coupledPoint[1].position[0]) \
+    X(1090, "point[2].y", REAL, INPUT, coupledPoint[1].position[1]) \
+    X(1091, "point[2].z", REAL, INPUT, coupledPoint[1].position[2]) \
+    X(1092, "point[3].x", REAL, INPUT, coupledPoint[2].position[0]) \
+    X(1093, "point[3].y", REAL, INPUT, coupledPoint[2].position[1]) \
+    X(1094, "point[3].z", REAL, INPUT, coupledPoint[2].position[2]) \
+    X(1095, "point[4].x", REAL, INPUT, coupledPoint[3].position[0]) \
+    X(1096, "point[4].y", REAL, INPUT, coupledPoint[3].position[1]) \
+    X(1097, "point[4].z", REAL, INPUT, coupledPoint[3].position[2]) \
+    X(1098, "point[5].x", REAL, INPUT, coupledPoint[4].position[0]) \
+    X(1099, "point[5].y", REAL, INPUT, coupledPoint[4].position[1]) \
+    X(1100, "point[5].z", REAL, INPUT, coupledPoint[4].position[2]) \
+    X(1101, "point[6].x", REAL, INPUT, coupledPoint[5].position[0]) \
+    X(1102, "point[6].y", REAL, INPUT, coupledPoint[5].position[1]) \
+    X(1103, "point[6].z", REAL, INPUT, coupledPoint[5].position[2]) \
+    X(1104, "point[7].x", REAL, INPUT, coupledPoint[6].position[0]) \
+    X(1105, "point[7].y", REAL, INPUT, coupledPoint[6].position[1]) \
+    X(1106, "point[7].z", REAL, INPUT, coupledPoint[6].position[2]) \
+    X(1107, "point[8].x", REAL, INPUT, coupledPoint[7].position[0]) \
+    X(1108, "point[8].y", REAL, INPUT, coupledPoint[7].position[1]) \
+    X(1109, "point[8].z", REAL, INPUT, coupledPoint[7].position[2]) \
+    X(1110, "point[9].x", REAL, INPUT, coupledPoint[8].position[0]) \
+    X(1111, "point[9].y", REAL, INPUT, coupledPoint[8].position[1]) \
+    X(1112, "point[9].z", REAL, INPUT, coupledPoint[8].position[2]) \
+    X(1113, "point[10].x", REAL, INPUT, coupledPoint[9].position[0]) \
+    X(1114, "point[10].y", REAL, INPUT, coupledPoint[9].position[1]) \
+    X(1115, "point[10].z", REAL, INPUT, coupledPoint[9].position[2]) \
+    X(1116, "point[11].x", REAL, INPUT, coupledPoint[10].position[0]) \
+    X(1117, "point[11].y", REAL, INPUT, coupledPoint[10].position[1]) \
+    X(1118, "point[11].z", REAL, INPUT, coupledPoint[10].position[2]) \
+    X(1119, "point[12].x", REAL, INPUT, coupledPoint[11].position[0]) \
+    X(1120, "point[12].y", REAL, INPUT, coupledPoint[11].position[1]) \
+    X(1121, "point[12].z", REAL, INPUT, coupledPoint[11].position[2]) \
+    X(1122, "point[13].x", REAL, INPUT, coupledPoint[12].position[0]) \
+    X(1123, "point[13].y", REAL, INPUT, coupledPoint[12].position[1]) \
+    X(1124, "point[13].z", REAL, INPUT, coupledPoint[12].position[2]) \
+    X(1125, "point[14].x", REAL, INPUT, coupledPoint[13].position[0]) \
+    X(1126, "point[14].y", REAL, INPUT, coupledPoint[13].position[1]) \
+    X(1127, "point[14].z", REAL, INPUT, coupledPoint[13].position[2]) \
+    X(1128, "point[15].x", REAL, INPUT, coupledPoint[14].position[0]) \
+    X(1129, "point[15].y", REAL, INPUT, coupledPoint[14].position[1]) \
+    X(1130, "point[15].z", REAL, INPUT, coupledPoint[14].position[2]) \
+    X(1131, "point[16].x", REAL, INPUT, coupledPoint[15].position[0]) \
+    X(1132, "point[16].y", REAL, INPUT, coupledPoint[15].position[1]) \
+    X(1133, "point[16].z", REAL, INPUT, coupledPoint[15].position[2]) \
+    X(1134, "point[1].vx", REAL, INPUT, coupledPoint[0].velocity[0]) \
+    X(1135, "point[1].vy", REAL, INPUT, coupledPoint[0].velocity[1]) \
+    X(1136, "point[1].vz", REAL, INPUT, coupledPoint[0].velocity[2]) \
+    X(1137, "point[2].vx", REAL, INPUT, coupledPoint[1].velocity[0]) \
+    X(1138, "point[2].vy", REAL, INPUT, coupledPoint[1].velocity[1]) \
+    X(1139, "point[2].vz", REAL, INPUT, coupledPoint[1].velocity[2]) \
+    X(1140, "point[3].vx", REAL, INPUT, coupledPoint[2].velocity[0]) \
+    X(1141, "point[3].vy", REAL, INPUT, coupledPoint[2].velocity[1]) \
+    X(1142, "point[3].vz", REAL, INPUT, coupledPoint[2].velocity[2]) \
+    X(1143, "point[4].vx", REAL, INPUT, coupledPoint[3].velocity[0]) \
+    X(1144, "point[4].vy", REAL, INPUT, coupledPoint[3].velocity[1]) \
+    X(1145, "point[4].vz", REAL, INPUT, coupledPoint[3].velocity[2]) \
+    X(1146, "point[5].vx", REAL, INPUT, coupledPoint[4].velocity[0]) \
+    X(1147, "point[5].vy", REAL, INPUT, coupledPoint[4].velocity[1]) \
+    X(1148, "point[5].vz", REAL, INPUT, coupledPoint[4].velocity[2]) \
+    X(1149, "point[6].vx", REAL, INPUT, coupledPoint[5].velocity[0]) \
+    X(1150, "point[6].vy", REAL, INPUT, coupledPoint[5].velocity[1]) \
+    X(1151, "point[6].vz", REAL, INPUT, coupledPoint[5].velocity[2]) \
+    X(1152, "point[7].vx", REAL, INPUT, coupledPoint[6].velocity[0]) \
+    X(1153, "point[7].vy", REAL, INPUT, coupledPoint[6].velocity[1]) \
+    X(1154, "point[7].vz", REAL, INPUT, coupledPoint[6].velocity[2]) \
+    X(1155, "point[8].vx", REAL, INPUT, coupledPoint[7].velocity[0]) \
+    X(1156, "point[8].vy", REAL, INPUT, coupledPoint[7].velocity[1]) \
+    X(1157, "point[8].vz", REAL, INPUT, coupledPoint[7].velocity[2]) \
+    X(1158, "point[9].vx", REAL, INPUT, coupledPoint[8].velocity[0]) \
+    X(1159, "point[9].vy", REAL, INPUT, coupledPoint[8].velocity[1]) \
+    X(1160, "point[9].vz", REAL, INPUT, coupledPoint[8].velocity[2]) \
+    X(1161, "point[10].vx", REAL, INPUT, coupledPoint[9].velocity[0]) \
+    X(1162, "point[10].vy", REAL, INPUT, coupledPoint[9].velocity[1]) \
+    X(1163, "point[10].vz", REAL, INPUT, coupledPoint[9].velocity[2]) \
+    X(1164, "point[11].vx", REAL, INPUT, coupledPoint[10].velocity[0]) \
+    X(1165, "point[11].vy", REAL, INPUT, coupledPoint[10].velocity[1]) \
+    X(1166, "point[11].vz", REAL, INPUT, coupledPoint[10].velocity[2]) \
+    X(1167, "point[12].vx", REAL, INPUT, coupledPoint[11].velocity[0]) \
+    X(1168, "point[12].vy", REAL, INPUT, coupledPoint[11].velocity[1]) \
+    X(1169, "point[12].vz", REAL, INPUT, coupledPoint[11].velocity[2]) \
+    X(1170, "point[13].vx", REAL, INPUT, coupledPoint[12].velocity[0]) \
+    X(1171, "point[13].vy", REAL, INPUT, coupledPoint[12].velocity[1]) \
+    X(1172, "point[13].vz", REAL, INPUT, coupledPoint[12].velocity[2]) \
+    X(1173, "point[14].vx", REAL, INPUT, coupledPoint[13].velocity[0]) \
+    X(1174, "point[14].vy", REAL, INPUT, coupledPoint[13].velocity[1]) \
+    X(1175, "point[14].vz", REAL, INPUT, coupledPoint[13].velocity[2]) \
+    X(1176, "point[15].vx", REAL, INPUT, coupledPoint[14].velocity[0]) \
+    X(1177, "point[15].vy", REAL, INPUT, coupledPoint[14].velocity[1]) \
+    X(1178, "point[15].vz", REAL, INPUT, coupledPoint[14].velocity[2]) \
+    X(1179, "point[16].vx", REAL, INPUT, coupledPoint[15].velocity[0]) \
+    X(1180, "point[16].vy", REAL, INPUT, coupledPoint[15].velocity[1]) \
+    X(1181, "point[16].vz", REAL, INPUT, coupledPoint[15].velocity[2]) \
     X(2001, "towForce.x", REAL, OUTPUT, towForce[0]) \
     X(2002, "towForce.y", REAL, OUTPUT, towForce[1]) \
     X(2003, "towForce.z", REAL, OUTPUT, towForce[2]) \
@@ -631,6 +813,286 @@ typedef struct UCOutputs {
     X(2167, "fatigueDamage", REAL, OUTPUT, fatigueDamage) \
     X(2168, "waveElevation", REAL, OUTPUT, waveElevation) \
     X(2169, "unstretchedLength", REAL, OUTPUT, unstretchedLength) \
+    X(2170, "line[1].fairleadTension", REAL, OUTPUT, mooringLine[0].fairleadTension) \
+    X(2171, "line[2].fairleadTension", REAL, OUTPUT, mooringLine[1].fairleadTension) \
+    X(2172, "line[3].fairleadTension", REAL, OUTPUT, mooringLine[2].fairleadTension) \
+    X(2173, "line[4].fairleadTension", REAL, OUTPUT, mooringLine[3].fairleadTension) \
+    X(2174, "line[5].fairleadTension", REAL, OUTPUT, mooringLine[4].fairleadTension) \
+    X(2175, "line[6].fairleadTension", REAL, OUTPUT, mooringLine[5].fairleadTension) \
+    X(2176, "line[7].fairleadTension", REAL, OUTPUT, mooringLine[6].fairleadTension) \
+    X(2177, "line[8].fairleadTension", REAL, OUTPUT, mooringLine[7].fairleadTension) \
+    X(2178, "line[9].fairleadTension", REAL, OUTPUT, mooringLine[8].fairleadTension) \
+    X(2179, "line[10].fairleadTension", REAL, OUTPUT, mooringLine[9].fairleadTension) \
+    X(2180, "line[11].fairleadTension", REAL, OUTPUT, mooringLine[10].fairleadTension) \
+    X(2181, "line[12].fairleadTension", REAL, OUTPUT, mooringLine[11].fairleadTension) \
+    X(2182, "line[13].fairleadTension", REAL, OUTPUT, mooringLine[12].fairleadTension) \
+    X(2183, "line[14].fairleadTension", REAL, OUTPUT, mooringLine[13].fairleadTension) \
+    X(2184, "line[15].fairleadTension", REAL, OUTPUT, mooringLine[14].fairleadTension) \
+    X(2185, "line[16].fairleadTension", REAL, OUTPUT, mooringLine[15].fairleadTension) \
+    X(2186, "line[1].anchorTension", REAL, OUTPUT, mooringLine[0].anchorTension) \
+    X(2187, "line[2].anchorTension", REAL, OUTPUT, mooringLine[1].anchorTension) \
+    X(2188, "line[3].anchorTension", REAL, OUTPUT, mooringLine[2].anchorTension) \
+    X(2189, "line[4].anchorTension", REAL, OUTPUT, mooringLine[3].anchorTension) \
+    X(2190, "line[5].anchorTension", REAL, OUTPUT, mooringLine[4].anchorTension) \
+    X(2191, "line[6].anchorTension", REAL, OUTPUT, mooringLine[5].anchorTension) \
+    X(2192, "line[7].anchorTension", REAL, OUTPUT, mooringLine[6].anchorTension) \
+    X(2193, "line[8].anchorTension", REAL, OUTPUT, mooringLine[7].anchorTension) \
+    X(2194, "line[9].anchorTension", REAL, OUTPUT, mooringLine[8].anchorTension) \
+    X(2195, "line[10].anchorTension", REAL, OUTPUT, mooringLine[9].anchorTension) \
+    X(2196, "line[11].anchorTension", REAL, OUTPUT, mooringLine[10].anchorTension) \
+    X(2197, "line[12].anchorTension", REAL, OUTPUT, mooringLine[11].anchorTension) \
+    X(2198, "line[13].anchorTension", REAL, OUTPUT, mooringLine[12].anchorTension) \
+    X(2199, "line[14].anchorTension", REAL, OUTPUT, mooringLine[13].anchorTension) \
+    X(2200, "line[15].anchorTension", REAL, OUTPUT, mooringLine[14].anchorTension) \
+    X(2201, "line[16].anchorTension", REAL, OUTPUT, mooringLine[15].anchorTension) \
+    X(2202, "line[1].minTension", REAL, OUTPUT, mooringLine[0].minTension) \
+    X(2203, "line[2].minTension", REAL, OUTPUT, mooringLine[1].minTension) \
+    X(2204, "line[3].minTension", REAL, OUTPUT, mooringLine[2].minTension) \
+    X(2205, "line[4].minTension", REAL, OUTPUT, mooringLine[3].minTension) \
+    X(2206, "line[5].minTension", REAL, OUTPUT, mooringLine[4].minTension) \
+    X(2207, "line[6].minTension", REAL, OUTPUT, mooringLine[5].minTension) \
+    X(2208, "line[7].minTension", REAL, OUTPUT, mooringLine[6].minTension) \
+    X(2209, "line[8].minTension", REAL, OUTPUT, mooringLine[7].minTension) \
+    X(2210, "line[9].minTension", REAL, OUTPUT, mooringLine[8].minTension) \
+    X(2211, "line[10].minTension", REAL, OUTPUT, mooringLine[9].minTension) \
+    X(2212, "line[11].minTension", REAL, OUTPUT, mooringLine[10].minTension) \
+    X(2213, "line[12].minTension", REAL, OUTPUT, mooringLine[11].minTension) \
+    X(2214, "line[13].minTension", REAL, OUTPUT, mooringLine[12].minTension) \
+    X(2215, "line[14].minTension", REAL, OUTPUT, mooringLine[13].minTension) \
+    X(2216, "line[15].minTension", REAL, OUTPUT, mooringLine[14].minTension) \
+    X(2217, "line[16].minTension", REAL, OUTPUT, mooringLine[15].minTension) \
+    X(2218, "line[1].groundedLength", REAL, OUTPUT, mooringLine[0].groundedLength) \
+    X(2219, "line[2].groundedLength", REAL, OUTPUT, mooringLine[1].groundedLength) \
+    X(2220, "line[3].groundedLength", REAL, OUTPUT, mooringLine[2].groundedLength) \
+    X(2221, "line[4].groundedLength", REAL, OUTPUT, mooringLine[3].groundedLength) \
+    X(2222, "line[5].groundedLength", REAL, OUTPUT, mooringLine[4].groundedLength) \
+    X(2223, "line[6].groundedLength", REAL, OUTPUT, mooringLine[5].groundedLength) \
+    X(2224, "line[7].groundedLength", REAL, OUTPUT, mooringLine[6].groundedLength) \
+    X(2225, "line[8].groundedLength", REAL, OUTPUT, mooringLine[7].groundedLength) \
+    X(2226, "line[9].groundedLength", REAL, OUTPUT, mooringLine[8].groundedLength) \
+    X(2227, "line[10].groundedLength", REAL, OUTPUT, mooringLine[9].groundedLength) \
+    X(2228, "line[11].groundedLength", REAL, OUTPUT, mooringLine[10].groundedLength) \
+    X(2229, "line[12].groundedLength", REAL, OUTPUT, mooringLine[11].groundedLength) \
+    X(2230, "line[13].groundedLength", REAL, OUTPUT, mooringLine[12].groundedLength) \
+    X(2231, "line[14].groundedLength", REAL, OUTPUT, mooringLine[13].groundedLength) \
+    X(2232, "line[15].groundedLength", REAL, OUTPUT, mooringLine[14].groundedLength) \
+    X(2233, "line[16].groundedLength", REAL, OUTPUT, mooringLine[15].groundedLength) \
+    X(2234, "body[1].force.x", REAL, OUTPUT, bodyLoad[0].force[0]) \
+    X(2235, "body[1].force.y", REAL, OUTPUT, bodyLoad[0].force[1]) \
+    X(2236, "body[1].force.z", REAL, OUTPUT, bodyLoad[0].force[2]) \
+    X(2237, "body[2].force.x", REAL, OUTPUT, bodyLoad[1].force[0]) \
+    X(2238, "body[2].force.y", REAL, OUTPUT, bodyLoad[1].force[1]) \
+    X(2239, "body[2].force.z", REAL, OUTPUT, bodyLoad[1].force[2]) \
+    X(2240, "body[3].force.x", REAL, OUTPUT, bodyLoad[2].force[0]) \
+    X(2241, "body[3].force.y", REAL, OUTPUT, bodyLoad[2].force[1]) \
+    X(2242, "body[3].force.z", REAL, OUTPUT, bodyLoad[2].force[2]) \
+    X(2243, "body[4].force.x", REAL, OUTPUT, bodyLoad[3].force[0]) \
+    X(2244, "body[4].force.y", REAL, OUTPUT, bodyLoad[3].force[1]) \
+    X(2245, "body[4].force.z", REAL, OUTPUT, bodyLoad[3].force[2]) \
+    X(2246, "body[1].moment.x", REAL, OUTPUT, bodyLoad[0].moment[0]) \
+    X(2247, "body[1].moment.y", REAL, OUTPUT, bodyLoad[0].moment[1]) \
+    X(2248, "body[1].moment.z", REAL, OUTPUT, bodyLoad[0].moment[2]) \
+    X(2249, "body[2].moment.x", REAL, OUTPUT, bodyLoad[1].moment[0]) \
+    X(2250, "body[2].moment.y", REAL, OUTPUT, bodyLoad[1].moment[1]) \
+    X(2251, "body[2].moment.z", REAL, OUTPUT, bodyLoad[1].moment[2]) \
+    X(2252, "body[3].moment.x", REAL, OUTPUT, bodyLoad[2].moment[0]) \
+    X(2253, "body[3].moment.y", REAL, OUTPUT, bodyLoad[2].moment[1]) \
+    X(2254, "body[3].moment.z", REAL, OUTPUT, bodyLoad[2].moment[2]) \
+    X(2255, "body[4].moment.x", REAL, OUTPUT, bodyLoad[3].moment[0]) \
+    X(2256, "body[4].moment.y", REAL, OUTPUT, bodyLoad[3].moment[1]) \
+    X(2257, "body[4].moment.z", REAL, OUTPUT, bodyLoad[3].moment[2]) \
+    X(2258, "body[1].stiffness[1,1]", REAL, OUTPUT, bodyLoad[0].stiffness[0]) \
+    X(2259, "body[1].stiffness[1,2]", REAL, OUTPUT, bodyLoad[0].stiffness[1]) \
+    X(2260, "body[1].stiffness[1,3]", REAL, OUTPUT, bodyLoad[0].stiffness[2]) \
+    X(2261, "body[1].stiffness[1,4]", REAL, OUTPUT, bodyLoad[0].stiffness[3]) \
+    X(2262, "body[1].stiffness[1,5]", REAL, OUTPUT, bodyLoad[0].stiffness[4]) \
+    X(2263, "body[1].stiffness[1,6]", REAL, OUTPUT, bodyLoad[0].stiffness[5]) \
+    X(2264, "body[1].stiffness[2,1]", REAL, OUTPUT, bodyLoad[0].stiffness[6]) \
+    X(2265, "body[1].stiffness[2,2]", REAL, OUTPUT, bodyLoad[0].stiffness[7]) \
+    X(2266, "body[1].stiffness[2,3]", REAL, OUTPUT, bodyLoad[0].stiffness[8]) \
+    X(2267, "body[1].stiffness[2,4]", REAL, OUTPUT, bodyLoad[0].stiffness[9]) \
+    X(2268, "body[1].stiffness[2,5]", REAL, OUTPUT, bodyLoad[0].stiffness[10]) \
+    X(2269, "body[1].stiffness[2,6]", REAL, OUTPUT, bodyLoad[0].stiffness[11]) \
+    X(2270, "body[1].stiffness[3,1]", REAL, OUTPUT, bodyLoad[0].stiffness[12]) \
+    X(2271, "body[1].stiffness[3,2]", REAL, OUTPUT, bodyLoad[0].stiffness[13]) \
+    X(2272, "body[1].stiffness[3,3]", REAL, OUTPUT, bodyLoad[0].stiffness[14]) \
+    X(2273, "body[1].stiffness[3,4]", REAL, OUTPUT, bodyLoad[0].stiffness[15]) \
+    X(2274, "body[1].stiffness[3,5]", REAL, OUTPUT, bodyLoad[0].stiffness[16]) \
+    X(2275, "body[1].stiffness[3,6]", REAL, OUTPUT, bodyLoad[0].stiffness[17]) \
+    X(2276, "body[1].stiffness[4,1]", REAL, OUTPUT, bodyLoad[0].stiffness[18]) \
+    X(2277, "body[1].stiffness[4,2]", REAL, OUTPUT, bodyLoad[0].stiffness[19]) \
+    X(2278, "body[1].stiffness[4,3]", REAL, OUTPUT, bodyLoad[0].stiffness[20]) \
+    X(2279, "body[1].stiffness[4,4]", REAL, OUTPUT, bodyLoad[0].stiffness[21]) \
+    X(2280, "body[1].stiffness[4,5]", REAL, OUTPUT, bodyLoad[0].stiffness[22]) \
+    X(2281, "body[1].stiffness[4,6]", REAL, OUTPUT, bodyLoad[0].stiffness[23]) \
+    X(2282, "body[1].stiffness[5,1]", REAL, OUTPUT, bodyLoad[0].stiffness[24]) \
+    X(2283, "body[1].stiffness[5,2]", REAL, OUTPUT, bodyLoad[0].stiffness[25]) \
+    X(2284, "body[1].stiffness[5,3]", REAL, OUTPUT, bodyLoad[0].stiffness[26]) \
+    X(2285, "body[1].stiffness[5,4]", REAL, OUTPUT, bodyLoad[0].stiffness[27]) \
+    X(2286, "body[1].stiffness[5,5]", REAL, OUTPUT, bodyLoad[0].stiffness[28]) \
+    X(2287, "body[1].stiffness[5,6]", REAL, OUTPUT, bodyLoad[0].stiffness[29]) \
+    X(2288, "body[1].stiffness[6,1]", REAL, OUTPUT, bodyLoad[0].stiffness[30]) \
+    X(2289, "body[1].stiffness[6,2]", REAL, OUTPUT, bodyLoad[0].stiffness[31]) \
+    X(2290, "body[1].stiffness[6,3]", REAL, OUTPUT, bodyLoad[0].stiffness[32]) \
+    X(2291, "body[1].stiffness[6,4]", REAL, OUTPUT, bodyLoad[0].stiffness[33]) \
+    X(2292, "body[1].stiffness[6,5]", REAL, OUTPUT, bodyLoad[0].stiffness[34]) \
+    X(2293, "body[1].stiffness[6,6]", REAL, OUTPUT, bodyLoad[0].stiffness[35]) \
+    X(2294, "body[2].stiffness[1,1]", REAL, OUTPUT, bodyLoad[1].stiffness[0]) \
+    X(2295, "body[2].stiffness[1,2]", REAL, OUTPUT, bodyLoad[1].stiffness[1]) \
+    X(2296, "body[2].stiffness[1,3]", REAL, OUTPUT, bodyLoad[1].stiffness[2]) \
+    X(2297, "body[2].stiffness[1,4]", REAL, OUTPUT, bodyLoad[1].stiffness[3]) \
+    X(2298, "body[2].stiffness[1,5]", REAL, OUTPUT, bodyLoad[1].stiffness[4]) \
+    X(2299, "body[2].stiffness[1,6]", REAL, OUTPUT, bodyLoad[1].stiffness[5]) \
+    X(2300, "body[2].stiffness[2,1]", REAL, OUTPUT, bodyLoad[1].stiffness[6]) \
+    X(2301, "body[2].stiffness[2,2]", REAL, OUTPUT, bodyLoad[1].stiffness[7]) \
+    X(2302, "body[2].stiffness[2,3]", REAL, OUTPUT, bodyLoad[1].stiffness[8]) \
+    X(2303, "body[2].stiffness[2,4]", REAL, OUTPUT, bodyLoad[1].stiffness[9]) \
+    X(2304, "body[2].stiffness[2,5]", REAL, OUTPUT, bodyLoad[1].stiffness[10]) \
+    X(2305, "body[2].stiffness[2,6]", REAL, OUTPUT, bodyLoad[1].stiffness[11]) \
+    X(2306, "body[2].stiffness[3,1]", REAL, OUTPUT, bodyLoad[1].stiffness[12]) \
+    X(2307, "body[2].stiffness[3,2]", REAL, OUTPUT, bodyLoad[1].stiffness[13]) \
+    X(2308, "body[2].stiffness[3,3]", REAL, OUTPUT, bodyLoad[1].stiffness[14]) \
+    X(2309, "body[2].stiffness[3,4]", REAL, OUTPUT, bodyLoad[1].stiffness[15]) \
+    X(2310, "body[2].stiffness[3,5]", REAL, OUTPUT, bodyLoad[1].stiffness[16]) \
+    X(2311, "body[2].stiffness[3,6]", REAL, OUTPUT, bodyLoad[1].stiffness[17]) \
+    X(2312, "body[2].stiffness[4,1]", REAL, OUTPUT, bodyLoad[1].stiffness[18]) \
+    X(2313, "body[2].stiffness[4,2]", REAL, OUTPUT, bodyLoad[1].stiffness[19]) \
+    X(2314, "body[2].stiffness[4,3]", REAL, OUTPUT, bodyLoad[1].stiffness[20]) \
+    X(2315, "body[2].stiffness[4,4]", REAL, OUTPUT, bodyLoad[1].stiffness[21]) \
+    X(2316, "body[2].stiffness[4,5]", REAL, OUTPUT, bodyLoad[1].stiffness[22]) \
+    X(2317, "body[2].stiffness[4,6]", REAL, OUTPUT, bodyLoad[1].stiffness[23]) \
+    X(2318, "body[2].stiffness[5,1]", REAL, OUTPUT, bodyLoad[1].stiffness[24]) \
+    X(2319, "body[2].stiffness[5,2]", REAL, OUTPUT, bodyLoad[1].stiffness[25]) \
+    X(2320, "body[2].stiffness[5,3]", REAL, OUTPUT, bodyLoad[1].stiffness[26]) \
+    X(2321, "body[2].stiffness[5,4]", REAL, OUTPUT, bodyLoad[1].stiffness[27]) \
+    X(2322, "body[2].stiffness[5,5]", REAL, OUTPUT, bodyLoad[1].stiffness[28]) \
+    X(2323, "body[2].stiffness[5,6]", REAL, OUTPUT, bodyLoad[1].stiffness[29]) \
+    X(2324, "body[2].stiffness[6,1]", REAL, OUTPUT, bodyLoad[1].stiffness[30]) \
+    X(2325, "body[2].stiffness[6,2]", REAL, OUTPUT, bodyLoad[1].stiffness[31]) \
+    X(2326, "body[2].stiffness[6,3]", REAL, OUTPUT, bodyLoad[1].stiffness[32]) \
+    X(2327, "body[2].stiffness[6,4]", REAL, OUTPUT, bodyLoad[1].stiffness[33]) \
+    X(2328, "body[2].stiffness[6,5]", REAL, OUTPUT, bodyLoad[1].stiffness[34]) \
+    X(2329, "body[2].stiffness[6,6]", REAL, OUTPUT, bodyLoad[1].stiffness[35]) \
+    X(2330, "body[3].stiffness[1,1]", REAL, OUTPUT, bodyLoad[2].stiffness[0]) \
+    X(2331, "body[3].stiffness[1,2]", REAL, OUTPUT, bodyLoad[2].stiffness[1]) \
+    X(2332, "body[3].stiffness[1,3]", REAL, OUTPUT, bodyLoad[2].stiffness[2]) \
+    X(2333, "body[3].stiffness[1,4]", REAL, OUTPUT, bodyLoad[2].stiffness[3]) \
+    X(2334, "body[3].stiffness[1,5]", REAL, OUTPUT, bodyLoad[2].stiffness[4]) \
+    X(2335, "body[3].stiffness[1,6]", REAL, OUTPUT, bodyLoad[2].stiffness[5]) \
+    X(2336, "body[3].stiffness[2,1]", REAL, OUTPUT, bodyLoad[2].stiffness[6]) \
+    X(2337, "body[3].stiffness[2,2]", REAL, OUTPUT, bodyLoad[2].stiffness[7]) \
+    X(2338, "body[3].stiffness[2,3]", REAL, OUTPUT, bodyLoad[2].stiffness[8]) \
+    X(2339, "body[3].stiffness[2,4]", REAL, OUTPUT, bodyLoad[2].stiffness[9]) \
+    X(2340, "body[3].stiffness[2,5]", REAL, OUTPUT, bodyLoad[2].stiffness[10]) \
+    X(2341, "body[3].stiffness[2,6]", REAL, OUTPUT, bodyLoad[2].stiffness[11]) \
+    X(2342, "body[3].stiffness[3,1]", REAL, OUTPUT, bodyLoad[2].stiffness[12]) \
+    X(2343, "body[3].stiffness[3,2]", REAL, OUTPUT, bodyLoad[2].stiffness[13]) \
+    X(2344, "body[3].stiffness[3,3]", REAL, OUTPUT, bodyLoad[2].stiffness[14]) \
+    X(2345, "body[3].stiffness[3,4]", REAL, OUTPUT, bodyLoad[2].stiffness[15]) \
+    X(2346, "body[3].stiffness[3,5]", REAL, OUTPUT, bodyLoad[2].stiffness[16]) \
+    X(2347, "body[3].stiffness[3,6]", REAL, OUTPUT, bodyLoad[2].stiffness[17]) \
+    X(2348, "body[3].stiffness[4,1]", REAL, OUTPUT, bodyLoad[2].stiffness[18]) \
+    X(2349, "body[3].stiffness[4,2]", REAL, OUTPUT, bodyLoad[2].stiffness[19]) \
+    X(2350, "body[3].stiffness[4,3]", REAL, OUTPUT, bodyLoad[2].stiffness[20]) \
+    X(2351, "body[3].stiffness[4,4]", REAL, OUTPUT, bodyLoad[2].stiffness[21]) \
+    X(2352, "body[3].stiffness[4,5]", REAL, OUTPUT, bodyLoad[2].stiffness[22]) \
+    X(2353, "body[3].stiffness[4,6]", REAL, OUTPUT, bodyLoad[2].stiffness[23]) \
+    X(2354, "body[3].stiffness[5,1]", REAL, OUTPUT, bodyLoad[2].stiffness[24]) \
+    X(2355, "body[3].stiffness[5,2]", REAL, OUTPUT, bodyLoad[2].stiffness[25]) \
+    X(2356, "body[3].stiffness[5,3]", REAL, OUTPUT, bodyLoad[2].stiffness[26]) \
+    X(2357, "body[3].stiffness[5,4]", REAL, OUTPUT, bodyLoad[2].stiffness[27]) \
+    X(2358, "body[3].stiffness[5,5]", REAL, OUTPUT, bodyLoad[2].stiffness[28]) \
+    X(2359, "body[3].stiffness[5,6]", REAL, OUTPUT, bodyLoad[2].stiffness[29]) \
+    X(2360, "body[3].stiffness[6,1]", REAL, OUTPUT, bodyLoad[2].stiffness[30]) \
+    X(2361, "body[3].stiffness[6,2]", REAL, OUTPUT, bodyLoad[2].stiffness[31]) \
+    X(2362, "body[3].stiffness[6,3]", REAL, OUTPUT, bodyLoad[2].stiffness[32]) \
+    X(2363, "body[3].stiffness[6,4]", REAL, OUTPUT, bodyLoad[2].stiffness[33]) \
+    X(2364, "body[3].stiffness[6,5]", REAL, OUTPUT, bodyLoad[2].stiffness[34]) \
+    X(2365, "body[3].stiffness[6,6]", REAL, OUTPUT, bodyLoad[2].stiffness[35]) \
+    X(2366, "body[4].stiffness[1,1]", REAL, OUTPUT, bodyLoad[3].stiffness[0]) \
+    X(2367, "body[4].stiffness[1,2]", REAL, OUTPUT, bodyLoad[3].stiffness[1]) \
+    X(2368, "body[4].stiffness[1,3]", REAL, OUTPUT, bodyLoad[3].stiffness[2]) \
+    X(2369, "body[4].stiffness[1,4]", REAL, OUTPUT, bodyLoad[3].stiffness[3]) \
+    X(2370, "body[4].stiffness[1,5]", REAL, OUTPUT, bodyLoad[3].stiffness[4]) \
+    X(2371, "body[4].stiffness[1,6]", REAL, OUTPUT, bodyLoad[3].stiffness[5]) \
+    X(2372, "body[4].stiffness[2,1]", REAL, OUTPUT, bodyLoad[3].stiffness[6]) \
+    X(2373, "body[4].stiffness[2,2]", REAL, OUTPUT, bodyLoad[3].stiffness[7]) \
+    X(2374, "body[4].stiffness[2,3]", REAL, OUTPUT, bodyLoad[3].stiffness[8]) \
+    X(2375, "body[4].stiffness[2,4]", REAL, OUTPUT, bodyLoad[3].stiffness[9]) \
+    X(2376, "body[4].stiffness[2,5]", REAL, OUTPUT, bodyLoad[3].stiffness[10]) \
+    X(2377, "body[4].stiffness[2,6]", REAL, OUTPUT, bodyLoad[3].stiffness[11]) \
+    X(2378, "body[4].stiffness[3,1]", REAL, OUTPUT, bodyLoad[3].stiffness[12]) \
+    X(2379, "body[4].stiffness[3,2]", REAL, OUTPUT, bodyLoad[3].stiffness[13]) \
+    X(2380, "body[4].stiffness[3,3]", REAL, OUTPUT, bodyLoad[3].stiffness[14]) \
+    X(2381, "body[4].stiffness[3,4]", REAL, OUTPUT, bodyLoad[3].stiffness[15]) \
+    X(2382, "body[4].stiffness[3,5]", REAL, OUTPUT, bodyLoad[3].stiffness[16]) \
+    X(2383, "body[4].stiffness[3,6]", REAL, OUTPUT, bodyLoad[3].stiffness[17]) \
+    X(2384, "body[4].stiffness[4,1]", REAL, OUTPUT, bodyLoad[3].stiffness[18]) \
+    X(2385, "body[4].stiffness[4,2]", REAL, OUTPUT, bodyLoad[3].stiffness[19]) \
+    X(2386, "body[4].stiffness[4,3]", REAL, OUTPUT, bodyLoad[3].stiffness[20]) \
+    X(2387, "body[4].stiffness[4,4]", REAL, OUTPUT, bodyLoad[3].stiffness[21]) \
+    X(2388, "body[4].stiffness[4,5]", REAL, OUTPUT, bodyLoad[3].stiffness[22]) \
+    X(2389, "body[4].stiffness[4,6]", REAL, OUTPUT, bodyLoad[3].stiffness[23]) \
+    X(2390, "body[4].stiffness[5,1]", REAL, OUTPUT, bodyLoad[3].stiffness[24]) \
+    X(2391, "body[4].stiffness[5,2]", REAL, OUTPUT, bodyLoad[3].stiffness[25]) \
+    X(2392, "body[4].stiffness[5,3]", REAL, OUTPUT, bodyLoad[3].stiffness[26]) \
+    X(2393, "body[4].stiffness[5,4]", REAL, OUTPUT, bodyLoad[3].stiffness[27]) \
+    X(2394, "body[4].stiffness[5,5]", REAL, OUTPUT, bodyLoad[3].stiffness[28]) \
+    X(2395, "body[4].stiffness[5,6]", REAL, OUTPUT, bodyLoad[3].stiffness[29]) \
+    X(2396, "body[4].stiffness[6,1]", REAL, OUTPUT, bodyLoad[3].stiffness[30]) \
+    X(2397, "body[4].stiffness[6,2]", REAL, OUTPUT, bodyLoad[3].stiffness[31]) \
+    X(2398, "body[4].stiffness[6,3]", REAL, OUTPUT, bodyLoad[3].stiffness[32]) \
+    X(2399, "body[4].stiffness[6,4]", REAL, OUTPUT, bodyLoad[3].stiffness[33]) \
+    X(2400, "body[4].stiffness[6,5]", REAL, OUTPUT, bodyLoad[3].stiffness[34]) \
+    X(2401, "body[4].stiffness[6,6]", REAL, OUTPUT, bodyLoad[3].stiffness[35]) \
+    X(2402, "point[1].force.x", REAL, OUTPUT, pointLoad[0].force[0]) \
+    X(2403, "point[1].force.y", REAL, OUTPUT, pointLoad[0].force[1]) \
+    X(2404, "point[1].force.z", REAL, OUTPUT, pointLoad[0].force[2]) \
+    X(2405, "point[2].force.x", REAL, OUTPUT, pointLoad[1].force[0]) \
+    X(2406, "point[2].force.y", REAL, OUTPUT, pointLoad[1].force[1]) \
+    X(2407, "point[2].force.z", REAL, OUTPUT, pointLoad[1].force[2]) \
+    X(2408, "point[3].force.x", REAL, OUTPUT, pointLoad[2].force[0]) \
+    X(2409, "point[3].force.y", REAL, OUTPUT, pointLoad[2].force[1]) \
+    X(2410, "point[3].force.z", REAL, OUTPUT, pointLoad[2].force[2]) \
+    X(2411, "point[4].force.x", REAL, OUTPUT, pointLoad[3].force[0]) \
+    X(2412, "point[4].force.y", REAL, OUTPUT, pointLoad[3].force[1]) \
+    X(2413, "point[4].force.z", REAL, OUTPUT, pointLoad[3].force[2]) \
+    X(2414, "point[5].force.x", REAL, OUTPUT, pointLoad[4].force[0]) \
+    X(2415, "point[5].force.y", REAL, OUTPUT, pointLoad[4].force[1]) \
+    X(2416, "point[5].force.z", REAL, OUTPUT, pointLoad[4].force[2]) \
+    X(2417, "point[6].force.x", REAL, OUTPUT, pointLoad[5].force[0]) \
+    X(2418, "point[6].force.y", REAL, OUTPUT, pointLoad[5].force[1]) \
+    X(2419, "point[6].force.z", REAL, OUTPUT, pointLoad[5].force[2]) \
+    X(2420, "point[7].force.x", REAL, OUTPUT, pointLoad[6].force[0]) \
+    X(2421, "point[7].force.y", REAL, OUTPUT, pointLoad[6].force[1]) \
+    X(2422, "point[7].force.z", REAL, OUTPUT, pointLoad[6].force[2]) \
+    X(2423, "point[8].force.x", REAL, OUTPUT, pointLoad[7].force[0]) \
+    X(2424, "point[8].force.y", REAL, OUTPUT, pointLoad[7].force[1]) \
+    X(2425, "point[8].force.z", REAL, OUTPUT, pointLoad[7].force[2]) \
+    X(2426, "point[9].force.x", REAL, OUTPUT, pointLoad[8].force[0]) \
+    X(2427, "point[9].force.y", REAL, OUTPUT, pointLoad[8].force[1]) \
+    X(2428, "point[9].force.z", REAL, OUTPUT, pointLoad[8].force[2]) \
+    X(2429, "point[10].force.x", REAL, OUTPUT, pointLoad[9].force[0]) \
+    X(2430, "point[10].force.y", REAL, OUTPUT, pointLoad[9].force[1]) \
+    X(2431, "point[10].force.z", REAL, OUTPUT, pointLoad[9].force[2]) \
+    X(2432, "point[11].force.x", REAL, OUTPUT, pointLoad[10].force[0]) \
+    X(2433, "point[11].force.y", REAL, OUTPUT, pointLoad[10].force[1]) \
+    X(2434, "point[11].force.z", REAL, OUTPUT, pointLoad[10].force[2]) \
+    X(2435, "point[12].force.x", REAL, OUTPUT, pointLoad[11].force[0]) \
+    X(2436, "point[12].force.y", REAL, OUTPUT, pointLoad[11].force[1]) \
+    X(2437, "point[12].force.z", REAL, OUTPUT, pointLoad[11].force[2]) \
+    X(2438, "point[13].force.x", REAL, OUTPUT, pointLoad[12].force[0]) \
+    X(2439, "point[13].force.y", REAL, OUTPUT, pointLoad[12].force[1]) \
+    X(2440, "point[13].force.z", REAL, OUTPUT, pointLoad[12].force[2]) \
+    X(2441, "point[14].force.x", REAL, OUTPUT, pointLoad[13].force[0]) \
+    X(2442, "point[14].force.y", REAL, OUTPUT, pointLoad[13].force[1]) \
+    X(2443, "point[14].force.z", REAL, OUTPUT, pointLoad[13].force[2]) \
+    X(2444, "point[15].force.x", REAL, OUTPUT, pointLoad[14].force[0]) \
+    X(2445, "point[15].force.y", REAL, OUTPUT, pointLoad[14].force[1]) \
+    X(2446, "point[15].force.z", REAL, OUTPUT, pointLoad[14].force[2]) \
+    X(2447, "point[16].force.x", REAL, OUTPUT, pointLoad[15].force[0]) \
+    X(2448, "point[16].force.y", REAL, OUTPUT, pointLoad[15].force[1]) \
+    X(2449, "point[16].force.z", REAL, OUTPUT, pointLoad[15].force[2]) \
 
 /* X(member, value): the start value of every numeric parameter (Strings start empty: zero-filled) */
 #define UC_SCHEMA_PARAMETER_DEFAULTS(X) \

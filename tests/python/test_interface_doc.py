@@ -47,7 +47,8 @@ def model_variables():
 def test_every_variable_is_documented_with_its_unit_and_default(model_variables):
     rows = readme_rows()
     for v in model_variables:
-        name = re.sub(r"\[\d+\]", "[k]", v.name)  # arrays are documented as name[k]
+        name = re.sub(r"\[\d+,\d+\]", "[i,j]", v.name)  # matrices as name[i,j]
+        name = re.sub(r"\[\d+\]", "[k]", name)  # arrays are documented as name[k]
         assert name in rows, f"{v.name} is missing from docs/interface.md"
         section, unit, default = rows[name]
         assert section == v.causality, f"{v.name}: docs/interface.md lists it under {section}s"

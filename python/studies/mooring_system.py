@@ -1,0 +1,259 @@
+"""Mooring systems read from MoorDyn decks (`lineFile` with several lines and bodies,
+docs/systems_mooring.md) against independent codes fed the same file.
+
+* statics against MoorPy: the deck's Vessel points attached to a MoorPy body at the platform's
+  reference point (what the FMU's body 1 is), each line's fairlead and anchor tension, the body's
+  force and moment and its 6x6 coupled stiffness (`getCoupledStiffnessA`, lines only);
+* dynamics against MoorDyn v2 (PyPI `moordyn`): the platform moving in surge, heave and pitch from
+  rest; MoorDyn is fed the fairleads' motion (its Vessel points), the FMU the body's.
+
+Used by tests/python/test_mooring_system.py and scripts/bench_mooring_system.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import math
+import shutil
+import tempfile
+import time
+import warnings
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ucable.fmu import CableFMU
+from ucable.paths import REPO_ROOT
+from .quiet import Quiet
+
+DECKS = REPO_ROOT / "tests" / "data" / "decks"
+OC4 = DECKS / "oc4_semi.dat"
+MOORDYN_GRAVITY = 9.80665  # what MoorDyn (and so the FMU's deck reader) takes when a deck sets no g
+POSE_NAMES = ("x", "y", "z", "roll", "pitch", "yaw")
+
+
+# ----------------------------------------------------------------------------- the deck in MoorPy
+@dataclass
+class SystemDeck:
+    """What the comparisons need to know of a deck with Vessel points (read by MoorPy's reader)."""
+    path: Path
+    depth: float
+    fairleads: list  # per line (deck order): the Vessel point's position, relative to the platform
+    diameters: list  # per line
+    options: dict
+
+    def option(self, name: str, default: float) -> float:
+        return float(self.options.get(name.lower(), default))
+
+
+def _moorpy_system(path: Path, depth: float = 0.0):
+    import moorpy as mp
+
+    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return mp.System(file=str(path), depth=depth, rho=1025.0, g=MOORDYN_GRAVITY)
+
+
+def read_system_deck(path: Path) -> SystemDeck:
+    s = _moorpy_system(path)
+    depth = float(s.depth) or max(-float(p.r[2]) for p in s.pointList)  # MoorDyn: the deepest point
+    fairleads = []
+    for ln in s.lineList:
+        ends = [s.pointList[n - 1] for n in ln.attached]
+        fairleads.append(np.array(next(p.r for p in ends if p.type == -1), float))
+    return SystemDeck(path=Path(path), depth=depth, fairleads=fairleads,
+                      diameters=[float(ln.type["d_vol"]) for ln in s.lineList],
+                      options={k.lower(): v for k, v in s.MDoptions.items()})
+
+
+def fmu_parameters(deck: SystemDeck, **extra) -> dict:
+    """lineFile plus what the deck does not set, as MoorDyn has it (docs/lines.md): the seabed from kBot
+    and cBot times the lines' diameter, tension-only lines."""
+    d = deck.diameters[0]
+    p = {"lineFile": str(deck.path), "enableSeabed": True, "seabedStiffness": deck.option("kBot", 3.0e6) * d,
+         "seabedDamping": deck.option("cBot", 3.0e5) * d, "enableCompression": False}
+    p.update(extra)
+    return p
+
+
+def moorpy_statics(deck: SystemDeck, pose=(0.0,) * 6) -> dict:
+    """MoorPy with the Vessel points on a coupled body at `pose` (MoorPy's angles: R = Rz Ry Rx):
+    line tensions, the body's force and moment (lines only) and its analytic coupled stiffness."""
+    s = _moorpy_system(deck.path, deck.depth)
+    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        body = s.addBody(-1, np.array(pose, float))
+        for p in s.pointList:
+            if p.type == -1:
+                p.type = 1
+                body.attachPoint(p.number, np.array(p.r, float))
+        s.initialize()
+        s.solveEquilibrium(tol=1e-8, maxIter=2000)
+        K = s.getCoupledStiffnessA(lines_only=True)
+    fair, anch = [], []
+    for ln in s.lineList:
+        a_is_fair = s.pointList[ln.attached[0] - 1].number in body.attachedP
+        fair.append(float(ln.TA if a_is_fair else ln.TB))
+        anch.append(float(ln.TB if a_is_fair else ln.TA))
+    return {"fairlead": fair, "anchor": anch, "load": np.array(body.getForces(lines_only=True), float),
+            "stiffness": np.array(K, float)}
+
+
+def fmu_statics(fmu, deck: SystemDeck, pose=(0.0,) * 6, **extra) -> dict:
+    """The FMU's static equilibrium (initMode 0) with body 1 at `pose`."""
+    n = len(deck.fairleads)
+    with CableFMU(fmu, parameters=fmu_parameters(deck, **extra)) as c:
+        c.initialize(inputs={f"body[1].{name}": v for name, v in zip(POSE_NAMES, pose)})
+        load = [c.get(f"body[1].force.{a}") for a in "xyz"] + [c.get(f"body[1].moment.{a}") for a in "xyz"]
+        K = [[c.get(f"body[1].stiffness[{i},{j}]") for j in range(1, 7)] for i in range(1, 7)]
+        return {"fairlead": [c.get(f"line[{k}].fairleadTension") for k in range(1, n + 1)],
+                "anchor": [c.get(f"line[{k}].anchorTension") for k in range(1, n + 1)],
+                "load": np.array(load), "stiffness": np.array(K)}
+
+
+def stiffness_difference(K: np.ndarray, ref: np.ndarray) -> float:
+    """Largest |K_ij - ref_ij| / sqrt(|ref_ii ref_jj|): each entry against the scale of its row's and
+    column's diagonal (entries that vanish by symmetry have no scale of their own)."""
+    d = np.sqrt(np.abs(np.diag(ref)))
+    return float(np.max(np.abs(K - ref) / np.outer(d, d)))
+
+
+# ----------------------------------------------------------------------------- dynamics
+@dataclass
+class PlatformMotion:
+    """Surge, heave and pitch of the platform's reference point, each q = A (1 - cos(2 pi t / T)) (an
+    oscillation of amplitude A about A, at rest at t = 0, as the single line's surge of
+    line_file_validation)."""
+    surge: tuple = (5.0, 20.0)   # amplitude [m], period [s]
+    heave: tuple = (2.0, 10.0)
+    pitch: tuple = (math.radians(3.0), 25.0)
+
+    def state(self, t: float):
+        """Pose (x, y, z, roll, pitch, yaw), its rate and acceleration at t."""
+        q, v, a = np.zeros(6), np.zeros(6), np.zeros(6)
+        for dof, (amp, period) in ((0, self.surge), (2, self.heave), (4, self.pitch)):
+            w = 2.0 * math.pi / period
+            q[dof] = amp * (1.0 - math.cos(w * t))
+            v[dof] = amp * w * math.sin(w * t)
+            a[dof] = amp * w * w * math.cos(w * t)
+        return q, v, a
+
+
+def body_rotation(roll: float, pitch: float, yaw: float) -> np.ndarray:
+    """R = Rx(roll) Ry(pitch) Rz(yaw), the FMU's (and MoorDyn v2's) orientation of a body."""
+    cx, sx, cy, sy, cz, sz = (math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch), math.cos(yaw),
+                              math.sin(yaw))
+    Rx = np.array([[1, 0, 0], [0, cx, -sx], [0, sx, cx]])
+    Ry = np.array([[cy, 0, sy], [0, 1, 0], [-sy, 0, cy]])
+    Rz = np.array([[cz, -sz, 0], [sz, cz, 0], [0, 0, 1]])
+    return Rx @ Ry @ Rz
+
+
+def fairlead_motion(deck: SystemDeck, q: np.ndarray, v: np.ndarray):
+    """Positions and velocities of the deck's fairleads on the platform at pose q moving at v (the
+    angular velocity the pose's angle rates: pitch only here, where they are the same)."""
+    R = body_rotation(*q[3:])
+    pos, vel = [], []
+    for r in deck.fairleads:
+        arm = R @ r
+        pos.append(q[:3] + arm)
+        vel.append(v[:3] + np.cross(v[3:], arm))
+    return pos, vel
+
+
+@dataclass
+class History:
+    code: str
+    t: np.ndarray
+    fairlead: np.ndarray  # [time, line]
+    cpu: float
+    info: str = ""
+
+
+def fmu_motion(fmu, deck: SystemDeck, motion: PlatformMotion, t_end: float, comm_step: float = 0.1,
+               progress=None, **extra) -> History:
+    """The FMU with body 1 following the motion: pose and rates at the start of each communication step."""
+    times = np.arange(0.0, t_end + 0.5 * comm_step, comm_step)
+    n = len(deck.fairleads)
+    out = np.zeros((len(times), n))
+    names = [f"line[{k}].fairleadTension" for k in range(1, n + 1)]
+    inputs = [f"body[1].{x}" for x in POSE_NAMES] + [f"body[1].{x}" for x in
+                                                     ("vx", "vy", "vz", "wx", "wy", "wz")]
+    with CableFMU(fmu, parameters=fmu_parameters(deck, **extra)) as c:
+        c.initialize()
+        out[0] = c.get_reals(names)
+        cpu0 = time.process_time()
+        for k in range(len(times) - 1):
+            q, v, _ = motion.state(times[k])
+            c.set(dict(zip(inputs, [*q, *v])))
+            c.do_step(comm_step, t=times[k])
+            out[k + 1] = c.get_reals(names)
+            if progress:
+                progress(times[k + 1])
+        cpu = time.process_time() - cpu0
+        steps = c.get("solver.nSteps")
+    return History("FMU", times, out, cpu, f"{steps:.0f} integrator steps (line 1)")
+
+
+@contextlib.contextmanager
+def moordyn_system(path: Path):
+    """A MoorDyn system of a copy of the deck in a temporary directory, silenced, closed at the end."""
+    import moordyn
+
+    with tempfile.TemporaryDirectory() as tmp, Quiet():
+        copy = Path(tmp) / path.name
+        shutil.copy(path, copy)
+        system = moordyn.Create(str(copy))
+        try:
+            yield system
+        finally:
+            moordyn.Close(system)
+
+
+def moordyn_motion(deck: SystemDeck, motion: PlatformMotion, t_end: float, comm_step: float = 0.1,
+                   dt: float | None = None, progress=None) -> History:
+    """MoorDyn fed the same deck: its Vessel points follow the platform, exact position and velocity at
+    the start of every dtM step (MoorDyn moves them linearly within a call); fairlead tensions are the
+    magnitudes of the forces on the points."""
+    import moordyn
+
+    dt = dt or deck.option("dtM", 1e-3)
+    sub = int(math.ceil(comm_step / dt - 1e-9))
+    dt = comm_step / sub
+    times = np.arange(0.0, t_end + 0.5 * comm_step, comm_step)
+    n = len(deck.fairleads)
+    out = np.zeros((len(times), n))
+
+    def flat(q, v):
+        pos, vel = fairlead_motion(deck, q, v)
+        return [float(x) for p in pos for x in p], [float(x) for u in vel for x in u]
+
+    with moordyn_system(deck.path) as system:
+        x, xd = flat(np.zeros(6), np.zeros(6))
+        moordyn.Init(system, x, xd)
+        f = np.array(moordyn.Step(system, x, xd, 0.0, 1e-12)).reshape(n, 3)
+        out[0] = np.linalg.norm(f, axis=1)
+        cpu0 = time.process_time()
+        t = 0.0
+        for k in range(len(times) - 1):
+            for _ in range(sub):
+                q, v, _ = motion.state(t)
+                x, xd = flat(q, v)
+                f = moordyn.Step(system, x, xd, t, dt)
+                t += dt
+            out[k + 1] = np.linalg.norm(np.array(f).reshape(n, 3), axis=1)
+            if progress:
+                progress(times[k + 1])
+        cpu = time.process_time() - cpu0
+    return History("MoorDyn", times, out, cpu, f"dt {dt:.2g} s, {sub * (len(times) - 1)} steps")
+
+
+def rms_difference(a: History, b: History, t_from: float = 0.0) -> dict:
+    """RMS of the fairlead-tension differences over t >= t_from, per line, relative to b's mean."""
+    sel = a.t >= t_from - 1e-9
+    diff = a.fairlead[sel] - b.fairlead[sel]
+    rms = np.sqrt(np.mean(diff ** 2, axis=0))
+    mean = np.mean(b.fairlead[sel], axis=0)
+    return {"rms": rms, "mean": mean, "rel_mean": rms / mean, "worst": float(np.max(rms / mean))}

@@ -1,0 +1,359 @@
+// mooring_system.cpp - the lines of a mooring system driven by the coupled bodies and points
+// (docs/systems_mooring.md).
+#include "mooring_system.h"
+
+#include <cmath>
+#include <memory>
+#include <cstdint>
+#include <cstring>
+
+#include "hydrodynamics.h"
+#include "params.h"
+
+namespace uc {
+namespace {
+
+constexpr std::uint32_t kSystemMagic = 0x5543534D;  // "UCSM"
+constexpr std::uint32_t kSystemVersion = 1;
+
+struct SystemHeader {
+    std::uint32_t magic, version;
+    std::int32_t lines, bodies;
+    double lastStep;
+    std::uint64_t lineSize[UC_MAX_LINES];
+};
+
+Vec3 vec3(const double v[3]) { return Vec3(v[0], v[1], v[2]); }
+
+}  // namespace
+
+Mat3 body_rotation(double roll, double pitch, double yaw) {
+    return (Eigen::AngleAxisd(roll, Vec3::UnitX()) * Eigen::AngleAxisd(pitch, Vec3::UnitY()) *
+            Eigen::AngleAxisd(yaw, Vec3::UnitZ()))
+        .toRotationMatrix();
+}
+
+MooringSystem::MooringSystem(const UCParams& base, const MooringDeck& deck) : base_(base), deck_(deck) {}
+
+bool MooringSystem::build(std::string& error) {
+    if (base_.winchMode != UC_WINCH_FIXED) {
+        error = "winchMode = " + std::to_string(base_.winchMode) + ": a winch is not supported in a mooring system "
+                "(winchMode 0)";
+        return false;
+    }
+    for (size_t k = 0; k < deck_.lines.size(); ++k) {
+        UCParams p;
+        if (!mooring_line_params(deck_, static_cast<int>(k), base_, p, error)) return false;
+        error = check_params(p);
+        if (!error.empty()) {
+            error = "line " + std::to_string(deck_.lines[k].id) + ": " + error;
+            return false;
+        }
+        lines_.push_back(std::make_unique<CableSimulation>(p));
+        const SectionProps& s = lines_.back()->model().section(0);
+        segments_.push_back({s.length, submerged_weight(s.fluid), s.axial.EA});
+    }
+    references_.assign(static_cast<size_t>(deck_.bodies), DrivenEnd());
+    return true;
+}
+
+MooringSystem::Motion MooringSystem::end_motion(const MooringEnd& end, const UCInputs& in) const {
+    const Vec3 local = vec3(end.position);
+    switch (end.kind) {
+        case MooringEnd::Kind::Fixed:
+            return {local, Vec3::Zero()};
+        case MooringEnd::Kind::Point: {
+            const UCCoupledPoint& p = in.coupledPoint[end.point - 1];
+            return {vec3(p.position), vec3(p.velocity)};
+        }
+        case MooringEnd::Kind::Body:
+        default: {
+            const UCCoupledBody& b = in.coupledBody[end.body - 1];
+            const Vec3 arm = body_rotation(b.rotation[0], b.rotation[1], b.rotation[2]) * local;
+            return {vec3(b.position) + arm, vec3(b.velocity) + vec3(b.angularVelocity).cross(arm)};
+        }
+    }
+}
+
+void MooringSystem::line_inputs(int k, const UCInputs& in, UCInputs& li) const {
+    const MooringDeckLine& l = deck_.lines[k];
+    li = in;
+    const Motion top = end_motion(l.fairlead, in), far = end_motion(l.far, in);
+    for (int c = 0; c < 3; ++c) {
+        li.tow[c] = top.position[c];
+        li.towVelocity[c] = top.velocity[c];
+        li.end[c] = far.position[c];
+        li.endVelocity[c] = far.velocity[c];
+    }
+    // The bodies' input derivatives are not passed on: each end's acceleration is estimated from its
+    // velocity inputs (DrivenEnd).
+    std::memset(li.towAcceleration, 0, sizeof li.towAcceleration);
+    li.towAccelerationGiven = 0;
+    std::memset(li.endAcceleration, 0, sizeof li.endAcceleration);
+    li.endAccelerationGiven = 0;
+}
+
+bool MooringSystem::check_inputs(const UCInputs& in, std::string& error) const {
+    for (int b = 0; b < deck_.bodies; ++b) {
+        const UCCoupledBody& body = in.coupledBody[b];
+        for (int c = 0; c < 3; ++c) {
+            if (!std::isfinite(body.position[c]) || !std::isfinite(body.rotation[c]) ||
+                !std::isfinite(body.velocity[c]) || !std::isfinite(body.angularVelocity[c])) {
+                error = "body[" + std::to_string(b + 1) + "].* inputs must be finite numbers";
+                return false;
+            }
+        }
+    }
+    for (const MooringDeckLine& l : deck_.lines) {
+        for (const MooringEnd* e : {&l.fairlead, &l.far}) {
+            if (e->kind != MooringEnd::Kind::Point) continue;
+            const UCCoupledPoint& p = in.coupledPoint[e->point - 1];
+            for (int c = 0; c < 3; ++c) {
+                if (!std::isfinite(p.position[c]) || !std::isfinite(p.velocity[c])) {
+                    error = "point[" + std::to_string(e->point) + "].* inputs must be finite numbers";
+                    return false;
+                }
+            }
+        }
+    }
+    return true;
+}
+
+bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error) {
+    if (!check_inputs(in, error)) return false;
+    UCInputs li;
+    for (size_t k = 0; k < lines_.size(); ++k) {
+        line_inputs(static_cast<int>(k), in, li);
+        if (!lines_[k]->initialize(t0, li, error)) {
+            error = "line " + std::to_string(deck_.lines[k].id) + ": " + error;
+            return false;
+        }
+    }
+    for (int b = 0; b < deck_.bodies; ++b) {
+        const UCCoupledBody& body = in.coupledBody[b];
+        references_[b].reset(vec3(body.position), vec3(body.velocity), Vec3::Zero(), false);
+    }
+    lastStep_ = 0.0;
+    stiffnessWarned_ = false;
+    update_outputs(in);
+    return true;
+}
+
+bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& error) {
+    if (!check_inputs(in, error)) return false;
+    UCInputs li;
+    for (size_t k = 0; k < lines_.size(); ++k) {
+        line_inputs(static_cast<int>(k), in, li);
+        if (!lines_[k]->step(t, h, li, error)) {
+            error = "line " + std::to_string(deck_.lines[k].id) + ": " + error;
+            return false;
+        }
+    }
+    for (int b = 0; b < deck_.bodies; ++b) {
+        const UCCoupledBody& body = in.coupledBody[b];
+        Vec3 a;
+        const TowTrajectory traj =
+            references_[b].next(t, h, lastStep_, vec3(body.position), vec3(body.velocity), Vec3::Zero(), false, a);
+        references_[b].advance(traj, vec3(body.velocity), a, false);
+    }
+    lastStep_ = h;
+    update_outputs(in);
+    return true;
+}
+
+std::string MooringSystem::take_event() {
+    std::string events;
+    events.swap(event_);
+    for (size_t k = 0; k < lines_.size(); ++k) {
+        const std::string e = lines_[k]->take_event();
+        if (!e.empty()) events += (events.empty() ? "" : "; ") + ("line " + std::to_string(deck_.lines[k].id) + ": " + e);
+    }
+    return events;
+}
+
+void MooringSystem::update_outputs(const UCInputs& in) {
+    outputs_ = lines_[0]->outputs();  // the single-line outputs are line 1's
+    std::memset(outputs_.mooringLine, 0, sizeof outputs_.mooringLine);
+    std::memset(outputs_.bodyLoad, 0, sizeof outputs_.bodyLoad);
+    std::memset(outputs_.pointLoad, 0, sizeof outputs_.pointLoad);
+    for (size_t k = 0; k < lines_.size(); ++k) {
+        const UCOutputs& o = lines_[k]->outputs();
+        UCMooringLine& out = outputs_.mooringLine[k];
+        out.fairleadTension = o.towTension;
+        out.anchorTension = o.endTension;
+        out.minTension = o.minTension;
+        out.groundedLength = o.groundedLength;
+        const MooringDeckLine& l = deck_.lines[k];
+        // the fairlead where the line's tow point stands, the far end where its end does
+        const std::pair<const MooringEnd*, std::pair<Vec3, Vec3>> ends[2] = {
+            {&l.fairlead, {vec3(o.towForce), lines_[k]->tow_position()}},
+            {&l.far, {vec3(o.endForce), vec3(o.endPosition)}}};
+        for (const auto& [end, load] : ends) {
+            const auto& [force, at] = load;
+            if (end->kind == MooringEnd::Kind::Point) {
+                for (int c = 0; c < 3; ++c) outputs_.pointLoad[end->point - 1].force[c] += force[c];
+            } else if (end->kind == MooringEnd::Kind::Body) {
+                UCBodyLoad& b = outputs_.bodyLoad[end->body - 1];
+                const Vec3 moment = (at - references_[end->body - 1].position).cross(force);
+                for (int c = 0; c < 3; ++c) {
+                    b.force[c] += force[c];
+                    b.moment[c] += moment[c];
+                }
+            }
+        }
+    }
+    for (int b = 1; b <= deck_.bodies; ++b) {
+        std::string why;
+        if (!body_stiffness(b, in, outputs_.bodyLoad[b - 1].stiffness, &why)) {
+            std::memset(outputs_.bodyLoad[b - 1].stiffness, 0, sizeof outputs_.bodyLoad[b - 1].stiffness);
+            if (!stiffnessWarned_) {
+                stiffnessWarned_ = true;
+                event_ = "body[" + std::to_string(b) + "].stiffness is 0 from t = " + std::to_string(time()) +
+                         " s (reported once): " + why;
+            }
+        }
+    }
+}
+
+bool MooringSystem::static_body_load(int k, int b, const double q[6], const UCInputs& in, Vec3& force, Vec3& moment,
+                                     std::string* why) const {
+    const MooringDeckLine& l = deck_.lines[k];
+    const UCParams& p = lines_[k]->model().params();
+    const Vec3 reference(q[0], q[1], q[2]);
+    const UCCoupledBody& now = in.coupledBody[b - 1];
+    // q[3..5]: a small rotation about the earth axes from the present orientation
+    const Vec3 turn(q[3], q[4], q[5]);
+    const Mat3 R = Eigen::AngleAxisd(turn.norm(), turn.norm() > 0.0 ? Vec3(turn.normalized()) : Vec3::UnitX())
+                       .toRotationMatrix() *
+                   body_rotation(now.rotation[0], now.rotation[1], now.rotation[2]);
+    auto place = [&](const MooringEnd& e) {
+        return e.kind == MooringEnd::Kind::Body && e.body == b ? Vec3(reference + R * vec3(e.position))
+                                                                : end_motion(e, in).position;
+    };
+    const Vec3 top = place(l.fairlead), far = place(l.far);
+    const bool topHigher = top.z() >= far.z();
+    LineProfile profile;
+    const double L = lines_[k]->model().line().length;
+    if (!profile.solve(topHigher ? top : far, topHigher ? far : top, {segments_[k]}, {}, p.enableSeabed != 0,
+                       -p.waterDepth, std::max(lines_[k]->model().line().diameter, 1e-3 * L), why))
+        return false;
+    force.setZero();
+    moment.setZero();
+    const std::pair<const MooringEnd*, Vec3> ends[2] = {
+        {&l.fairlead, topHigher ? profile.top_force() : profile.bottom_force()},
+        {&l.far, topHigher ? profile.bottom_force() : profile.top_force()}};
+    for (const auto& [end, f] : ends) {
+        if (end->kind != MooringEnd::Kind::Body || end->body != b) continue;
+        force += f;
+        moment += (place(*end) - reference).cross(f);
+    }
+    return true;
+}
+
+bool MooringSystem::body_stiffness(int b, const UCInputs& in, double K[36], std::string* why) const {
+    const UCCoupledBody& body = in.coupledBody[b - 1];
+    const double q0[6] = {body.position[0], body.position[1], body.position[2], 0.0, 0.0, 0.0};
+    for (int i = 0; i < 36; ++i) K[i] = 0.0;
+    for (size_t k = 0; k < lines_.size(); ++k) {
+        const MooringDeckLine& l = deck_.lines[k];
+        const bool onBody = (l.fairlead.kind == MooringEnd::Kind::Body && l.fairlead.body == b) ||
+                            (l.far.kind == MooringEnd::Kind::Body && l.far.body == b);
+        if (!onBody) continue;
+        for (int j = 0; j < 6; ++j) {
+            const double d = j < 3 ? kStiffnessStep : kStiffnessAngle;
+            double qp[6], qm[6];
+            std::memcpy(qp, q0, sizeof qp);
+            std::memcpy(qm, q0, sizeof qm);
+            qp[j] += d;
+            qm[j] -= d;
+            Vec3 fp, mp, fm, mm;
+            if (!static_body_load(static_cast<int>(k), b, qp, in, fp, mp, why) ||
+                !static_body_load(static_cast<int>(k), b, qm, in, fm, mm, why)) {
+                if (why) *why = "line " + std::to_string(l.id) + ": " + *why;
+                return false;
+            }
+            for (int i = 0; i < 3; ++i) {
+                K[6 * i + j] -= (fp[i] - fm[i]) / (2.0 * d);
+                K[6 * (i + 3) + j] -= (mp[i] - mm[i]) / (2.0 * d);
+            }
+        }
+    }
+    return true;
+}
+
+size_t MooringSystem::state_size() const {
+    size_t size = sizeof(SystemHeader) + references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs);
+    for (const auto& line : lines_) size += line->state_size();
+    return size;
+}
+
+void MooringSystem::save_state(void* buffer) {
+    SystemHeader header{};
+    header.magic = kSystemMagic;
+    header.version = kSystemVersion;
+    header.lines = static_cast<std::int32_t>(lines_.size());
+    header.bodies = static_cast<std::int32_t>(references_.size());
+    header.lastStep = lastStep_;
+    for (size_t k = 0; k < lines_.size(); ++k) header.lineSize[k] = lines_[k]->state_size();
+    auto* out = static_cast<unsigned char*>(buffer);
+    std::memcpy(out, &header, sizeof header);
+    out += sizeof header;
+    for (const DrivenEnd& e : references_) {
+        DrivenEndState s{};
+        e.save(s);
+        std::memcpy(out, &s, sizeof s);
+        out += sizeof s;
+    }
+    std::memcpy(out, &outputs_, sizeof outputs_);
+    out += sizeof outputs_;
+    for (auto& line : lines_) {
+        line->save_state(out);
+        out += line->state_size();
+    }
+}
+
+bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& error) {
+    SystemHeader header;
+    if (size < sizeof header) {
+        error = "saved state is too short for this mooring system";
+        return false;
+    }
+    const auto* in = static_cast<const unsigned char*>(buffer);
+    std::memcpy(&header, in, sizeof header);
+    if (header.magic != kSystemMagic || header.version != kSystemVersion ||
+        header.lines != static_cast<std::int32_t>(lines_.size()) ||
+        header.bodies != static_cast<std::int32_t>(references_.size())) {
+        error = "saved state does not belong to this mooring system (magic, version or sizes differ)";
+        return false;
+    }
+    size_t expected = sizeof header + references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs);
+    for (size_t k = 0; k < lines_.size(); ++k) expected += header.lineSize[k];
+    if (size != expected) {
+        error = "saved state has the wrong size for this mooring system";
+        return false;
+    }
+    in += sizeof header;
+    std::vector<DrivenEnd> references(references_.size());
+    for (DrivenEnd& e : references) {
+        DrivenEndState s;
+        std::memcpy(&s, in, sizeof s);
+        e.load(s);
+        in += sizeof s;
+    }
+    UCOutputs outputs;
+    std::memcpy(&outputs, in, sizeof outputs);
+    in += sizeof outputs;
+    for (size_t k = 0; k < lines_.size(); ++k) {
+        if (!lines_[k]->restore_state(in, header.lineSize[k], error)) {
+            error = "line " + std::to_string(deck_.lines[k].id) + ": " + error;
+            return false;
+        }
+        in += header.lineSize[k];
+    }
+    references_ = references;
+    outputs_ = outputs;
+    lastStep_ = header.lastStep;
+    return true;
+}
+
+}  // namespace uc

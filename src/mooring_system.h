@@ -1,0 +1,79 @@
+// mooring_system.h - a mooring system read from a deck (docs/systems_mooring.md): several lines, each
+// from its fairlead on a coupled body or a coupled point to an anchor (or another coupled end). Lines
+// joined only through prescribed motion do not act on each other, so each is integrated by its own
+// CableSimulation, exactly as a single line is; the system turns the bodies' and points' inputs into each
+// line's end motion and sums the lines' forces into the bodies' loads and their quasi-static stiffness.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "line_file.h"
+#include "line_profile.h"
+#include "simulation.h"
+
+namespace uc {
+
+// R = Rx(roll) Ry(pitch) Rz(yaw): a body's orientation from its angles, MoorDyn's convention.
+Mat3 body_rotation(double roll, double pitch, double yaw);
+
+class MooringSystem {
+public:
+    // The lines' parameters are base with each line's deck properties; false (error) where one is refused.
+    MooringSystem(const UCParams& base, const MooringDeck& deck);
+    bool build(std::string& error);  // once, after construction
+
+    bool initialize(double t0, const UCInputs& in, std::string& error);
+    bool step(double t, double h, const UCInputs& in, std::string& error);
+    std::string take_event();
+
+    double time() const { return lines_.empty() ? 0.0 : lines_[0]->time(); }
+    const UCOutputs& outputs() const { return outputs_; }
+    Vec3 tow_position() const { return lines_[0]->tow_position(); }
+    int n_lines() const { return static_cast<int>(lines_.size()); }
+    const CableSimulation& line(int k) const { return *lines_[k]; }
+
+    size_t state_size() const;
+    void save_state(void* buffer);
+    bool restore_state(const void* buffer, size_t size, std::string& error);
+
+    // The quasi-static 6x6 stiffness of the lines on body b (1-based) at the body pose of the inputs:
+    // K[6 i + j] = -d(force, moment)_i / d(x, y, z, theta_x, theta_y, theta_z)_j with theta a small
+    // rotation about the earth axes from the present orientation (at zero angles the angles' own
+    // derivatives), by central differences of the lines' static profiles (src/line_profile.h). False
+    // where a line's profile is not solved there.
+    bool body_stiffness(int b, const UCInputs& in, double K[36], std::string* why) const;
+
+    // Steps of the central differences of body_stiffness [m], [rad].
+    static constexpr double kStiffnessStep = 0.01, kStiffnessAngle = 1e-4;
+
+private:
+    struct Motion {
+        Vec3 position, velocity;
+    };
+    // Where an end of a line stands and moves for these inputs.
+    Motion end_motion(const MooringEnd& end, const UCInputs& in) const;
+    void line_inputs(int k, const UCInputs& in, UCInputs& li) const;
+    bool check_inputs(const UCInputs& in, std::string& error) const;
+    void update_outputs(const UCInputs& in);
+    // The force of line k on body b at the pose q of b (position, and a small rotation about the earth
+    // axes from the inputs' orientation), other bodies and points at the inputs', from its static
+    // profile: force and moment about b's reference point.
+    bool static_body_load(int k, int b, const double q[6], const UCInputs& in, Vec3& force, Vec3& moment,
+                          std::string* why) const;
+
+    UCParams base_;
+    MooringDeck deck_;
+    std::vector<std::unique_ptr<CableSimulation>> lines_;
+    std::vector<LineProfile::Segment> segments_;  // per line (one section each)
+    // --- state ---
+    std::vector<DrivenEnd> references_;  // each body's reference point, extrapolated as the fairleads are
+    double lastStep_ = 0.0;
+    UCOutputs outputs_{};
+    bool stiffnessWarned_ = false;
+    std::string event_;
+    std::vector<unsigned char> lineBuffer_;
+};
+
+}  // namespace uc

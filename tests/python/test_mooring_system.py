@@ -1,0 +1,137 @@
+"""Mooring systems through `lineFile` (docs/systems_mooring.md): the OC4 DeepCwind semisubmersible's three
+chains (tests/data/decks/oc4_semi.dat) on the FMU's body 1 against MoorPy fed the same deck, the
+interface of the lines' load on the body, exact state save/restore of the whole system, and what a
+system deck refuses.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from fmpy.fmi2 import fmi2Error
+
+from studies import mooring_system as ms
+from ucable.fmu import FMICallException
+
+DECK = ms.read_system_deck(ms.OC4)
+# Poses of body 1 where MoorPy's orientation (Rz Ry Rx) and the FMU's (Rx Ry Rz) are the same rotation.
+POSES = [(0.0,) * 6, (10.0, 0.0, 0.0, 0.0, 0.0, 0.0), (5.0, 0.0, 2.0, 0.0, math.radians(3.0), 0.0),
+         (-4.0, 3.0, -1.0, 0.0, 0.0, math.radians(10.0))]
+
+
+@pytest.mark.parametrize("pose", POSES, ids=["rest", "surge10", "surge-heave-pitch", "yaw10"])
+def test_oc4_line_tensions_and_stiffness_match_moorpy(fmu_file, pose):
+    """The acceptance's 0.5 % on every line's fairlead and anchor tension, 1 % on the coupled 6x6
+    stiffness (each entry against the scale sqrt(K_ii K_jj) of its row and column), and the body's
+    force to 0.5 % of the vertical load."""
+    ref, ours = ms.moorpy_statics(DECK, pose), ms.fmu_statics(fmu_file, DECK, pose)
+    assert ours["fairlead"] == pytest.approx(ref["fairlead"], rel=5e-3)
+    assert ours["anchor"] == pytest.approx(ref["anchor"], rel=5e-3)
+    assert ms.stiffness_difference(ours["stiffness"], ref["stiffness"]) < 1e-2
+    scale = abs(ref["load"][2])
+    assert np.max(np.abs(ours["load"][:3] - ref["load"][:3])) < 5e-3 * scale
+    assert np.max(np.abs(ours["load"][3:] - ref["load"][3:])) < 5e-3 * scale * 40.0  # arms of 40 m
+
+
+def test_a_third_of_a_turn_in_yaw_permutes_the_three_lines(make_cable):
+    """The deck is symmetric under a turn of 120 degrees about the vertical: the platform offset along x
+    carries the tensions of the platform offset along the turned direction, the lines relabelled."""
+    a, b = make_cable(parameters=ms.fmu_parameters(DECK)), make_cable(parameters=ms.fmu_parameters(DECK))
+    phi = 2.0 * math.pi / 3.0
+    a.initialize(inputs={"body[1].x": 8.0})
+    b.initialize(inputs={"body[1].x": 8.0 * math.cos(phi), "body[1].y": 8.0 * math.sin(phi)})
+    ta = [a.get(f"line[{k}].fairleadTension") for k in (1, 2, 3)]
+    tb = [b.get(f"line[{k}].fairleadTension") for k in (1, 2, 3)]
+    # line k + 1 (cyclically) stands to the turned offset as line k to the offset along x
+    # the deck's anchors are rounded to 1 mm (725.383 for 837.6 sin 60 deg = 725.38293): 7e-5 m of a line
+    # whose fairlead stiffness is 7e4 N/m, 5 N of 1e6
+    assert tb == pytest.approx([ta[2], ta[0], ta[1]], rel=2e-5)
+    assert min(ta) < 0.9 * max(ta)  # the offset loads the lines differently
+
+
+def _run(cable, steps, start=0):
+    history = []
+    for k in range(start, start + steps):
+        t = 0.2 * k
+        q, v, _ = ms.PlatformMotion().state(t)
+        cable.set({**{f"body[1].{n}": x for n, x in zip(ms.POSE_NAMES, q)},
+                   **{f"body[1].{n}": x for n, x in zip(("vx", "vy", "vz", "wx", "wy", "wz"), v)}})
+        cable.do_step(0.2)
+        history.append(cable.get_reals([f"line[{j}].fairleadTension" for j in (1, 2, 3)] +
+                                       [f"body[1].force.{a}" for a in "xyz"] + ["body[1].moment.y"]))
+    return np.array(history)
+
+
+def test_a_saved_state_continues_bit_for_bit_also_in_a_new_instance(make_cable):
+    c = make_cable(parameters=ms.fmu_parameters(DECK))
+    c.initialize()
+    _run(c, 10)
+    state = c.get_state()
+    data = c.serialize_state(state)
+    first = _run(c, 10, start=10)
+    c.set_state(state, time=2.0)
+    again = _run(c, 10, start=10)
+    assert first.tobytes() == again.tobytes()
+    fresh = make_cable(parameters=ms.fmu_parameters(DECK))
+    fresh.set_state(fresh.deserialize_state(data), time=2.0)
+    assert _run(fresh, 10, start=10).tobytes() == first.tobytes()
+
+
+def test_a_single_line_is_line_1_of_a_system(make_cable):
+    c = make_cable(parameters={"lineFile": str(ms.DECKS / "chain.dat"), "enableSeabed": True})
+    c.initialize(inputs={"tow.z": -70.0})
+    assert c.get("line[1].fairleadTension") == c.get("towTension")
+    assert c.get("line[1].anchorTension") == c.get("endTension")
+    assert c.get("line[2].fairleadTension") == 0.0
+
+
+def _refused(make_cable, tmp_path, text: str) -> str:
+    path = tmp_path / "system.dat"
+    path.write_text(text)
+    c = make_cable(parameters={"lineFile": str(path)}, logging_on=True)
+    with pytest.raises(FMICallException) as err:
+        c.initialize()
+    assert err.value.status == fmi2Error
+    return "\n".join(text for status, _, text in c.messages if status == "ERROR")
+
+
+@pytest.mark.parametrize("edit,what", [
+    (("5      Vessel   -40.868", "5      Free     -40.868"),
+     "line 17: point 5 is a Free point of a mooring system: free points"),
+    (("2         main        2         5", "2         main        2         1"),
+     "line 23: line 2 runs between two fixed points"),
+], ids=["free-point", "two-anchors"])
+def test_a_refused_system_deck_names_its_line(make_cable, tmp_path, edit, what):
+    text = ms.OC4.read_text()
+    assert edit[0] in text
+    log = _refused(make_cable, tmp_path, text.replace(edit[0], edit[1], 1))
+    assert what in log, log
+
+
+def test_a_free_body_is_refused_with_the_reason(make_cable, tmp_path):
+    text = ms.OC4.read_text().replace(
+        "---------------------- LINES", "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* "
+        "I* Volume CdA* Ca*\n(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n"
+        "1 Free 0 0 0 0 0 0 1e6 0 0 1000 0 0\n---------------------- LINES", 1)
+    log = _refused(make_cable, tmp_path, text)
+    assert "body 1 is Free: free bodies are not supported" in log, log
+
+
+def test_a_coupled_body_of_the_deck_carries_its_points(make_cable, tmp_path):
+    """The same three chains with their fairleads on a coupled body of a BODIES section (points Body1, at
+    positions relative to it) are the same system as the deck's Vessel points on body 1."""
+    text = ms.OC4.read_text().replace(
+        "---------------------- LINES", "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* "
+        "I* Volume CdA* Ca*\n(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n"
+        "1 Coupled 0 0 0 0 0 0 0 0 0 0 0 0\n---------------------- LINES", 1).replace("Vessel", "Body1")
+    path = tmp_path / "body.dat"
+    path.write_text(text)
+    pose = {"body[1].x": 6.0, "body[1].pitch": 0.03}
+    a = make_cable(parameters={**ms.fmu_parameters(DECK), "lineFile": str(path)})
+    b = make_cable(parameters=ms.fmu_parameters(DECK))
+    a.initialize(inputs=pose)
+    b.initialize(inputs=pose)
+    names = [f"line[{k}].fairleadTension" for k in (1, 2, 3)] + [f"body[1].moment.{x}" for x in "xyz"]
+    assert a.get_reals(names).tobytes() == b.get_reals(names).tobytes()
