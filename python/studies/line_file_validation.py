@@ -83,10 +83,16 @@ def fmu_parameters(deck: Deck, **extra) -> dict:
 
 
 def refined_deck(deck: Deck, factor: int, directory: Path) -> Deck:
+    """The deck with every line in factor x NumSegs segments and dtM / factor (refined_deck_file)."""
+    return read_deck(refined_deck_file(deck.path, factor, directory))
+
+
+def refined_deck_file(source: Path, factor: int, directory: Path) -> Path:
     """The deck with every line in factor x NumSegs segments and dtM / factor, the damping kept in N s
     (BA = -zeta is converted with the original segment length, one line type per line), written to
     directory: the same physics on a finer MoorDyn mesh."""
-    text = deck.path.read_text().splitlines()
+    source = Path(source)
+    text = source.read_text().splitlines()
     section, skip, types, type_rows, line_rows = None, 0, {}, [], []
     for i, row in enumerate(text):
         if "---" in row:
@@ -121,9 +127,9 @@ def refined_deck(deck: Deck, factor: int, directory: Path) -> Deck:
         new_types.append(" ".join([name, *base[1:4], f"{ba:.17g}", *base[5:]]))
         text[i] = " ".join([t[0], name, t[2], t[3], t[4], str(n * factor), *t[6:]])
     text[type_rows[0]:type_rows[-1] + 1] = new_types
-    path = directory / f"{deck.path.stem}_x{factor}{deck.path.suffix}"
+    path = Path(directory) / f"{source.stem}_x{factor}{source.suffix}"
     path.write_text("\n".join(text) + "\n")
-    return read_deck(path)
+    return path
 
 
 # ----------------------------------------------------------------------------- statics

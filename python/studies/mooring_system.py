@@ -213,15 +213,18 @@ def moordyn_system(path: Path):
 
 
 def moordyn_motion(deck: SystemDeck, motion: PlatformMotion, t_end: float, comm_step: float = 0.1,
-                   dt: float | None = None, progress=None) -> History:
-    """MoorDyn fed the same deck: its Vessel points follow the platform, exact position and velocity at
-    the start of every dtM step (MoorDyn moves them linearly within a call); fairlead tensions are the
-    magnitudes of the forces on the points."""
+                   per_step: bool = True, progress=None) -> History:
+    """MoorDyn fed the same deck, its Vessel points following the platform. per_step: moordyn.Step at
+    every dtM of the deck with the exact fairlead position and velocity at its start (the project's way
+    of driving MoorDyn, docs/performance.md: each call pays Python's overhead); otherwise one call per
+    communication step, MoorDyn substepping at dtM and moving the points linearly from the step's start
+    (its coupling to a master). Fairlead tensions are the magnitudes of the forces on the points."""
     import moordyn
 
-    dt = dt or deck.option("dtM", 1e-3)
+    dt = deck.option("dtM", 1e-3)
     sub = int(math.ceil(comm_step / dt - 1e-9))
     dt = comm_step / sub
+    calls = sub if per_step else 1
     times = np.arange(0.0, t_end + 0.5 * comm_step, comm_step)
     n = len(deck.fairleads)
     out = np.zeros((len(times), n))
@@ -238,16 +241,17 @@ def moordyn_motion(deck: SystemDeck, motion: PlatformMotion, t_end: float, comm_
         cpu0 = time.process_time()
         t = 0.0
         for k in range(len(times) - 1):
-            for _ in range(sub):
+            for _ in range(calls):
                 q, v, _ = motion.state(t)
                 x, xd = flat(q, v)
-                f = moordyn.Step(system, x, xd, t, dt)
-                t += dt
+                f = moordyn.Step(system, x, xd, t, comm_step / calls)
+                t += comm_step / calls
             out[k + 1] = np.linalg.norm(np.array(f).reshape(n, 3), axis=1)
             if progress:
                 progress(times[k + 1])
         cpu = time.process_time() - cpu0
-    return History("MoorDyn", times, out, cpu, f"dt {dt:.2g} s, {sub * (len(times) - 1)} steps")
+    how = f"{calls} call{'s' if calls > 1 else ''} per {comm_step:g} s"
+    return History("MoorDyn", times, out, cpu, f"dtM {dt:.2g} s, {how}")
 
 
 def rms_difference(a: History, b: History, t_from: float = 0.0) -> dict:
