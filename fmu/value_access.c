@@ -2,6 +2,7 @@
 #include "value_access.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "simulation.h"
@@ -221,6 +222,71 @@ static int interface_index(UCInstance* inst, fmi2ValueReference vr, const char* 
     return index;
 }
 
+/* dvUnknown = d[rows, cols] dvKnown for the 6 x 12 matrix d (row-major). */
+static void seeded_product(const double d[72], const int rows[], size_t nUnknown, const int cols[], size_t nKnown,
+                           const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
+    for (size_t i = 0; i < nUnknown; ++i) {
+        double sum = 0.0;
+        for (size_t j = 0; j < nKnown; ++j) sum += d[12 * rows[i] + cols[j]] * dvKnown[j];
+        dvUnknown[i] = sum;
+    }
+}
+
+/* The index of the variable vr among body[k].<names[i]> and its body k (0 and a logged error if it is none). */
+static int body_index(UCInstance* inst, fmi2ValueReference vr, const char* const names[], int count, int* body,
+                      const char* which) {
+    const char* function = "fmi2GetDirectionalDerivative";
+    const UCVariable* v = find_or_log(inst, vr, UC_TYPE_REAL, function);
+    if (v == NULL) return -1;
+    int k = 0, consumed = 0;
+    if (sscanf(v->name, "body[%d].%n", &k, &consumed) == 1 && consumed > 0) {
+        const int index = name_index(v->name + consumed, names, count);
+        if (index >= 0 && (*body == 0 || *body == k)) {
+            *body = k;
+            return index;
+        }
+    }
+    uc_log_status(&inst->log, fmi2Error, "%s: no derivative involving %s (a mooring system provides %s, of one body "
+                  "per call)", function, v->name, which);
+    return -1;
+}
+
+/* A mooring system: d body[k].force/moment (t + h) / d body[k].* inputs (t) (uc_body_derivatives). */
+static fmi2Status body_directional_derivative(UCInstance* inst, const fmi2ValueReference unknown[], size_t nUnknown,
+                                              const fmi2ValueReference known[], size_t nKnown,
+                                              const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
+    static const char* const outputs[6] = {"force.x", "force.y", "force.z", "moment.x", "moment.y", "moment.z"};
+    static const char* const inputs[12] = {"x", "y", "z", "roll", "pitch", "yaw", "vx", "vy", "vz", "wx", "wy", "wz"};
+    const char* which = "body[k].force.x/y/z and body[k].moment.x/y/z with respect to body[k].x/y/z, "
+                        "roll/pitch/yaw, vx/vy/vz and wx/wy/wz";
+    const char* function = "fmi2GetDirectionalDerivative";
+    int rows[6], cols[12], body = 0;
+    if (nUnknown > 6 || nKnown > 12) {
+        uc_log_status(&inst->log, fmi2Error, "%s: at most 6 unknowns and 12 knowns per call (%s)", function, which);
+        return fmi2Error;
+    }
+    for (size_t i = 0; i < nUnknown; ++i) {
+        rows[i] = body_index(inst, unknown[i], outputs, 6, &body, which);
+        if (rows[i] < 0) return fmi2Error;
+    }
+    for (size_t j = 0; j < nKnown; ++j) {
+        cols[j] = body_index(inst, known[j], inputs, 12, &body, which);
+        if (cols[j] < 0) return fmi2Error;
+        if (!isfinite(dvKnown[j])) {
+            uc_log_status(&inst->log, fmi2Error, "%s: the seed of body[%d].%s is not a finite number", function, body,
+                          inputs[cols[j]]);
+            return fmi2Error;
+        }
+    }
+    double d[72];
+    if (body > 0 && uc_body_derivatives(inst->cable, body, d, inst->msg, sizeof inst->msg) != 0) {
+        uc_log_status(&inst->log, fmi2Error, "%s: %s", function, inst->msg);
+        return fmi2Error;
+    }
+    seeded_product(d, rows, nUnknown, cols, nKnown, dvKnown, dvUnknown);
+    return fmi2OK;
+}
+
 fmi2Status uc_get_directional_derivative(UCInstance* inst, const fmi2ValueReference unknown[], size_t nUnknown,
                                          const fmi2ValueReference known[], size_t nKnown, const fmi2Real dvKnown[],
                                          fmi2Real dvUnknown[]) {
@@ -234,6 +300,8 @@ fmi2Status uc_get_directional_derivative(UCInstance* inst, const fmi2ValueRefere
         uc_log_status(&inst->log, fmi2Error, "%s: NULL array", function);
         return fmi2Error;
     }
+    if (inst->coreParams.mooringSystem && inst->cable != NULL && inst->coreReady)
+        return body_directional_derivative(inst, unknown, nUnknown, known, nKnown, dvKnown, dvUnknown);
     int rows[6], cols[12];
     if (nUnknown > 6 || nKnown > 12) {
         uc_log_status(&inst->log, fmi2Error,
@@ -266,10 +334,6 @@ fmi2Status uc_get_directional_derivative(UCInstance* inst, const fmi2ValueRefere
         uc_log_status(&inst->log, fmi2Error, "%s: %s", function, inst->msg);
         return fmi2Error;
     }
-    for (size_t i = 0; i < nUnknown; ++i) {
-        double sum = 0.0;
-        for (size_t j = 0; j < nKnown; ++j) sum += d[12 * rows[i] + cols[j]] * dvKnown[j];
-        dvUnknown[i] = sum;
-    }
+    seeded_product(d, rows, nUnknown, cols, nKnown, dvKnown, dvUnknown);
     return fmi2OK;
 }

@@ -109,6 +109,24 @@ extern "C" int uc_interface_derivatives(UCCable* c, double d[72], char* msg, siz
     });
 }
 
+extern "C" int uc_body_derivatives(UCCable* c, int body, double d[72], char* msg, size_t msgSize) {
+    return guarded(msg, msgSize, [&](std::string& error) {
+        if (!c || !d) {
+            error = "uc_body_derivatives: NULL pointer";
+            return false;
+        }
+        if (!c->system) {
+            error = "the body[k].* derivatives belong to a mooring system (lineFile with several lines or bodies)";
+            return false;
+        }
+        double m[6][12];
+        const bool ok = c->system->body_derivatives(body, m, error);
+        for (int i = 0; i < 6; ++i)
+            for (int j = 0; j < 12; ++j) d[12 * i + j] = m[i][j];
+        return ok;
+    });
+}
+
 extern "C" void uc_tow_position(const UCCable* c, double p[3]) {
     if (!c || !p) return;
     const uc::Vec3 x = c->system ? c->system->tow_position() : c->line->tow_position();

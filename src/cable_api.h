@@ -108,6 +108,11 @@ int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, char* msg, si
  * exactly what they are. */
 int uc_interface_derivatives(UCCable* c, double d[72], char* msg, size_t msgSize);
 
+/* The same for coupled body `body` (1-based) of a mooring system: d[12 i + j] = d output_i(t + h) / d input_j(t)
+ * for the outputs body[k].force.x/y/z, body[k].moment.x/y/z (i = 0..5) and the inputs body[k].x, y, z, roll,
+ * pitch, yaw, vx, vy, vz, wx, wy, wz (j = 0..11; docs/systems_mooring.md). Available after the first step. */
+int uc_body_derivatives(UCCable* c, int body, double d[72], char* msg, size_t msgSize);
+
 /* Where the tow point stands now: the end of the last step's trajectory (the previous inputs
  * extrapolated), or the initial tow position. A position input far from it is a displacement. */
 void uc_tow_position(const UCCable* c, double p[3]);

@@ -134,6 +134,7 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
         references_[b].reset(vec3(body.position), vec3(body.velocity), Vec3::Zero(), false);
     }
     lastStep_ = 0.0;
+    lastInputs_ = in;
     stiffnessWarned_ = false;
     update_outputs(in);
     return true;
@@ -157,6 +158,7 @@ bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& er
         references_[b].advance(traj, vec3(body.velocity), a, false);
     }
     lastStep_ = h;
+    lastInputs_ = in;
     update_outputs(in);
     return true;
 }
@@ -281,8 +283,99 @@ bool MooringSystem::body_stiffness(int b, const UCInputs& in, double K[36], std:
     return true;
 }
 
+namespace {
+
+Mat3 cross_matrix(const Vec3& a) {
+    Mat3 m;
+    m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
+    return m;
+}
+
+// d(R r)/d(roll, pitch, yaw) for R = Rx Ry Rz, as the columns of a 3x3 matrix.
+Mat3 rotation_derivative(const double a[3], const Vec3& r) {
+    const Mat3 Rx = Eigen::AngleAxisd(a[0], Vec3::UnitX()).toRotationMatrix();
+    const Mat3 Ry = Eigen::AngleAxisd(a[1], Vec3::UnitY()).toRotationMatrix();
+    const Mat3 Rz = Eigen::AngleAxisd(a[2], Vec3::UnitZ()).toRotationMatrix();
+    Mat3 d;
+    d.col(0) = cross_matrix(Vec3::UnitX()) * Rx * Ry * Rz * r;
+    d.col(1) = Rx * cross_matrix(Vec3::UnitY()) * Ry * Rz * r;
+    d.col(2) = Rx * Ry * cross_matrix(Vec3::UnitZ()) * Rz * r;
+    return d;
+}
+
+}  // namespace
+
+bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error) {
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 12; ++j) d[i][j] = 0.0;
+    if (b < 1 || b > deck_.bodies) {
+        error = "body " + std::to_string(b) + " is not a coupled body of the deck";
+        return false;
+    }
+    const double h = lastStep_;
+    if (!(h > 0.0)) {
+        error = "the interface derivatives are over the next communication step, taken as long as the last one: "
+                "they are available after the first fmi2DoStep";
+        return false;
+    }
+    const UCCoupledBody& body = lastInputs_.coupledBody[b - 1];
+    const Mat3 R = body_rotation(body.rotation[0], body.rotation[1], body.rotation[2]);
+    const Vec3 w = vec3(body.angularVelocity);
+    using Mat312 = Eigen::Matrix<double, 3, 12>;
+    // The reference point at t + h moves with its inputs as a driven end does: 1 per unit position,
+    // 1.5 h per unit velocity (the acceleration from the last two velocity inputs, cosimulation.md).
+    Mat312 dReference = Mat312::Zero();
+    dReference.block<3, 3>(0, 0).setIdentity();
+    dReference.block<3, 3>(0, 6) = 1.5 * h * Mat3::Identity();
+    Eigen::Matrix<double, 6, 12> D = Eigen::Matrix<double, 6, 12>::Zero();
+    for (size_t k = 0; k < lines_.size(); ++k) {
+        const MooringDeckLine& l = deck_.lines[k];
+        const MooringEnd* ends[2] = {&l.fairlead, &l.far};
+        bool on[2];
+        for (int e = 0; e < 2; ++e) on[e] = ends[e]->kind == MooringEnd::Kind::Body && ends[e]->body == b;
+        if (!on[0] && !on[1]) continue;
+        double m[6][12];
+        if (!lines_[k]->interface_derivatives(m, error)) {
+            error = "line " + std::to_string(l.id) + ": " + error;
+            return false;
+        }
+        const Eigen::Map<const Eigen::Matrix<double, 6, 12, Eigen::RowMajor>> lineD(&m[0][0]);
+        // each end's input (position, velocity) per unit body input, and its position at t + h
+        Eigen::Matrix<double, 6, 12> T[2];
+        Mat312 dPosition[2];
+        for (int e = 0; e < 2; ++e) {
+            T[e].setZero();
+            dPosition[e].setZero();
+            if (!on[e]) continue;
+            const Vec3 arm = R * vec3(ends[e]->position);
+            const Mat3 dArm = rotation_derivative(body.rotation, vec3(ends[e]->position));
+            T[e].block<3, 3>(0, 0).setIdentity();
+            T[e].block<3, 3>(0, 3) = dArm;
+            T[e].block<3, 3>(3, 3) = cross_matrix(w) * dArm;
+            T[e].block<3, 3>(3, 6).setIdentity();
+            T[e].block<3, 3>(3, 9) = -cross_matrix(arm);
+            dPosition[e] = T[e].topRows<3>() + 1.5 * h * T[e].bottomRows<3>();
+        }
+        const UCOutputs& o = lines_[k]->outputs();
+        const Vec3 force[2] = {vec3(o.towForce), vec3(o.endForce)};
+        const Vec3 at[2] = {lines_[k]->tow_position(), vec3(o.endPosition)};
+        for (int e = 0; e < 2; ++e) {
+            if (!on[e]) continue;
+            // this end's force per unit body input, through both ends' inputs
+            const Mat312 dForce = lineD.block<3, 6>(3 * e, 0) * T[0] + lineD.block<3, 6>(3 * e, 6) * T[1];
+            const Vec3 arm = at[e] - references_[b - 1].position;
+            D.topRows<3>() += dForce;
+            D.bottomRows<3>() += cross_matrix(arm) * dForce - cross_matrix(force[e]) * (dPosition[e] - dReference);
+        }
+    }
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 12; ++j) d[i][j] = D(i, j);
+    return true;
+}
+
 size_t MooringSystem::state_size() const {
-    size_t size = sizeof(SystemHeader) + references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs);
+    size_t size = sizeof(SystemHeader) + references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) +
+                  sizeof(UCInputs);
     for (const auto& line : lines_) size += line->state_size();
     return size;
 }
@@ -306,6 +399,8 @@ void MooringSystem::save_state(void* buffer) {
     }
     std::memcpy(out, &outputs_, sizeof outputs_);
     out += sizeof outputs_;
+    std::memcpy(out, &lastInputs_, sizeof lastInputs_);
+    out += sizeof lastInputs_;
     for (auto& line : lines_) {
         line->save_state(out);
         out += line->state_size();
@@ -326,7 +421,7 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
         error = "saved state does not belong to this mooring system (magic, version or sizes differ)";
         return false;
     }
-    size_t expected = sizeof header + references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs);
+    size_t expected = sizeof header + references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs);
     for (size_t k = 0; k < lines_.size(); ++k) expected += header.lineSize[k];
     if (size != expected) {
         error = "saved state has the wrong size for this mooring system";
@@ -343,6 +438,9 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     UCOutputs outputs;
     std::memcpy(&outputs, in, sizeof outputs);
     in += sizeof outputs;
+    UCInputs lastInputs;
+    std::memcpy(&lastInputs, in, sizeof lastInputs);
+    in += sizeof lastInputs;
     for (size_t k = 0; k < lines_.size(); ++k) {
         if (!lines_[k]->restore_state(in, header.lineSize[k], error)) {
             error = "line " + std::to_string(deck_.lines[k].id) + ": " + error;
@@ -352,6 +450,7 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     }
     references_ = references;
     outputs_ = outputs;
+    lastInputs_ = lastInputs;
     lastStep_ = header.lastStep;
     return true;
 }

@@ -45,6 +45,13 @@ public:
     // where a line's profile is not solved there.
     bool body_stiffness(int b, const UCInputs& in, double K[36], std::string* why) const;
 
+    // The interface derivatives of body b (1-based) over the next communication step, taken as long as
+    // the last one: d[i][j] = d (force, moment)_i (t + h) / d input_j (t), inputs j = x, y, z, roll,
+    // pitch, yaw, vx, vy, vz, wx, wy, wz of the body: each line's own interface derivatives
+    // (CableSimulation::interface_derivatives) through the fairleads' motion on the body, and the
+    // moment arms' change. Available after the first step.
+    bool body_derivatives(int b, double d[6][12], std::string& error);
+
     // Steps of the central differences of body_stiffness [m], [rad].
     static constexpr double kStiffnessStep = 0.01, kStiffnessAngle = 1e-4;
 
@@ -70,6 +77,7 @@ private:
     // --- state ---
     std::vector<DrivenEnd> references_;  // each body's reference point, extrapolated as the fairleads are
     double lastStep_ = 0.0;
+    UCInputs lastInputs_{};  // of the last step (or the initialization)
     UCOutputs outputs_{};
     bool stiffnessWarned_ = false;
     std::string event_;
