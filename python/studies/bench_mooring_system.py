@@ -1,5 +1,5 @@
 """Work-precision of a mooring system: the OC4 DeepCwind semisubmersible's three chains
-(tests/data/decks/oc4_semi.dat) with the platform in surge 5 m / 20 s, heave 2 m / 10 s and pitch
+(scenes/oc4_semi.dat) with the platform in surge 5 m / 20 s, heave 2 m / 10 s and pitch
 3 deg / 25 s from rest (each A (1 - cos 2 pi t / T)), the FMU (body 1 driven through body[1].*) against
 MoorDyn v2 fed the same deck (its Vessel points driven with the fairleads' motion), run via
 scripts/bench_mooring_system.

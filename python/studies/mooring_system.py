@@ -29,7 +29,7 @@ from ucable.paths import REPO_ROOT
 from .quiet import Quiet
 
 DECKS = REPO_ROOT / "tests" / "data" / "decks"
-OC4 = DECKS / "oc4_semi.dat"
+OC4 = REPO_ROOT / "scenes" / "oc4_semi.dat"  # the deck of the scene oc4_platform
 MOORDYN_GRAVITY = 9.80665  # what MoorDyn (and so the FMU's deck reader) takes when a deck sets no g
 POSE_NAMES = ("x", "y", "z", "roll", "pitch", "yaw")
 

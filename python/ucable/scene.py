@@ -21,9 +21,18 @@ A scene file holds (docs/scenes.md lists every key with its type, unit and defau
     surge = { amplitude = 5.0, period = 10.0, direction = [1.0, 0.0, 0.0] }  # optional oscillation
     heave = { amplitude = 1.5, period = 10.0 }                  # optional vertical oscillation
 
+    [body]                    # optional: body 1 of a mooring system (parameter lineFile, a deck of several
+    start = [0, 0, 0, 0, 0, 0]   # lines; docs/systems_mooring.md): start pose x y z [m], roll pitch yaw [deg],
+    surge = { amplitude = 5.0, period = 20.0 }   # and oscillations about it from rest (sway, heave in m,
+    pitch = { amplitude = 3.0, period = 25.0 }   # roll, pitch, yaw in deg) as the tow's
+
     [winch]                   # optional: the winch's command in stages (sets winchMode 1 or 2)
     ramp = 10.0               # [s] from one stage's value to the next; a rate starts from rest
     stages = [ { rate = 0.5, duration = 600.0 }, { rate = 0.0, duration = 300.0 } ]
+
+A relative `lineFile` is looked up next to the scene file first (the packaged scenes carry their decks).
+With [body] the recorded columns add body 1's load (`body[1].force.*`, `body[1].moment.*`) and each line's
+`line[k].fairleadTension` and `line[k].anchorTension`.
 
 The tow point's velocity is the speed along the heading (plus the oscillations, which start from
 rest: their amplitude grows over `ramp` seconds, one period unless given, with a half cosine), its
@@ -44,6 +53,7 @@ from pathlib import Path
 import numpy as np
 
 from .fmu import NUM_STATIONS, CableFMU, FMICallException
+from .variables import MAX_LINES
 from .paths import find_scene, require_fmu
 from .scene_schema import Checker, SceneFileError, validate
 from .steady_tow import KNOT
@@ -53,6 +63,8 @@ RECORDED = ["towTension", "towTensionMax", "towTensionMin", "towForce.x", "towFo
 ANCHORED_RECORDED = ["endTension", "groundedLength", "anchorUplift"]
 WINCH_RECORDED = ["unstretchedLength"]
 SHAPE = [f"shape.{c}[{k}]" for c in "xyz" for k in range(1, NUM_STATIONS + 1)]
+BODY_RECORDED = [f"body[1].{q}.{c}" for q in ("force", "moment") for c in "xyz"]
+LINES_RECORDED = [f"line[{k}].{q}" for k in range(1, MAX_LINES + 1) for q in ("fairleadTension", "anchorTension")]
 SCENE_SETTINGS = ("duration", "step")
 BOTTOM_ANCHORED = 1
 
@@ -74,15 +86,18 @@ class Scene:
     outputs: list = field(default_factory=list)
     record_shape: bool = True
     winch: dict = field(default_factory=dict)  # {"input", "mode", "table"} from [winch] stages, or {}
+    body: dict = field(default_factory=dict)   # checked [body], or {}
     data: dict = field(default_factory=dict, repr=False)
     source: str = "scene"
+    directory: Path | None = None  # of the scene file (a relative lineFile is looked up there first)
 
     @classmethod
-    def from_data(cls, data: dict, source: str) -> "Scene":
+    def from_data(cls, data: dict, source: str, directory: Path | None = None) -> "Scene":
         c = validate(data, source)
         return cls(name=c["name"], title=c["title"], duration=c["duration"], step=c["step"],
                    parameters=c["parameters"], inputs=c["inputs"], tow=c["tow"], outputs=c["outputs"],
-                   record_shape=c["record_shape"], winch=c["winch"], data=data, source=source)
+                   record_shape=c["record_shape"], winch=c["winch"], body=c["body"], data=data, source=source,
+                   directory=directory)
 
     def with_overrides(self, overrides: dict, source: str = "--set") -> "Scene":
         """A copy with `overrides` applied: scene settings (duration, step, record_shape) or FMU
@@ -99,7 +114,7 @@ class Scene:
                 data[key] = value
             else:
                 data.setdefault("parameters", {})[key] = check.parameter(key, value, where)
-        return Scene.from_data(data, self.source)
+        return Scene.from_data(data, self.source, self.directory)
 
     @property
     def kind(self) -> str:
@@ -131,7 +146,7 @@ def load_scene(source: str | Path | dict) -> Scene:
         raise SceneFileError(str(exc)) from None
     data = dict(read_toml(path))
     data.setdefault("name", path.stem)
-    return Scene.from_data(data, str(source))
+    return Scene.from_data(data, str(source), path.parent)
 
 
 def parse_value(text: str):
@@ -166,6 +181,37 @@ def soft_start(t: np.ndarray, ramp: float):
     de = np.where(inside, 0.5 * w * np.sin(w * t), 0.0)
     dde = np.where(inside, 0.5 * w * w * np.cos(w * t), 0.0)
     return e, de, dde
+
+
+class BodyMotion:
+    """Body 1's pose, rates and their derivatives from a scene's checked [body] table: each degree of
+    freedom its start plus A e(t) sin(w t) (e the soft start); the angular velocity is the angles'
+    rates (exact for a rotation about one axis, to first order in the angles otherwise)."""
+
+    def __init__(self, body: dict):
+        self.body = body
+
+    def at(self, t: float):
+        q = np.array(self.body["start"], dtype=float)
+        q[3:] = np.radians(q[3:])
+        v, a = np.zeros(6), np.zeros(6)
+        for i, dof in enumerate(("surge", "sway", "heave", "roll", "pitch", "yaw")):
+            m = self.body.get(dof)
+            if not m:
+                continue
+            A = m["amplitude"] if i < 3 else math.radians(m["amplitude"])
+            w = 2.0 * math.pi / m["period"]
+            e, de, dde = (float(x) for x in soft_start(np.array([t]), m["ramp"]))
+            s, c = math.sin(w * t), math.cos(w * t)
+            q[i] += A * e * s
+            v[i] += A * (de * s + e * w * c)
+            a[i] += A * (dde * s + 2.0 * de * w * c - e * w * w * s)
+        return q, v, a
+
+    def inputs(self, t: float) -> dict:
+        q, v, _ = self.at(t)
+        names = ("x", "y", "z", "roll", "pitch", "yaw", "vx", "vy", "vz", "wx", "wy", "wz")
+        return {f"body[1].{n}": float(x) for n, x in zip(names, [*q, *v])}
 
 
 class TowMotion:
@@ -278,10 +324,16 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
     n = int(math.ceil(s.duration / s.step - 1e-9))
     times = np.array([min(k * s.step, s.duration) for k in range(n + 1)])
     extra = {"anchored": ANCHORED_RECORDED, "winch": WINCH_RECORDED}.get(s.kind, [])
+    body = BodyMotion(s.body) if s.body else None
+    if body:
+        extra = extra + BODY_RECORDED + LINES_RECORDED
     recorded = list(dict.fromkeys(RECORDED + extra + s.outputs + (SHAPE if s.record_shape else [])))
     data = np.zeros((n + 1, len(recorded)))
     tow = np.zeros((n + 1, 3))
     parameters = dict(s.parameters)
+    deck = parameters.get("lineFile")
+    if deck and s.directory is not None and not Path(deck).is_absolute() and (s.directory / deck).is_file():
+        parameters["lineFile"] = str(s.directory / deck)
     signals = dict(s.inputs)
     if s.winch:
         parameters.setdefault("winchMode", s.winch["mode"])
@@ -293,6 +345,8 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
             x, v, _ = motion.at(t)
             d = {"tow.x": x[0], "tow.y": x[1], "tow.z": x[2], "tow.vx": v[0], "tow.vy": v[1], "tow.vz": v[2]}
             d.update({name: float(signal_at(sig, t)) for name, sig in signals.items()})
+            if body:
+                d.update(body.inputs(t))
             return d
 
         cpu0 = time.process_time()
@@ -319,6 +373,7 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
         raise SceneError(f"{s.source}: the FMU failed at t = {t:g} s: {_fmu_message(cable) or exc}") from exc
     finally:
         cable.free()
-    columns = {name: data[:, i] for i, name in enumerate(recorded)}
+    columns = {name: data[:, i] for i, name in enumerate(recorded)
+               if name not in LINES_RECORDED or np.any(data[:, i] != 0.0)}  # the deck's lines only
     columns.update({"tow.x": tow[:, 0], "tow.y": tow[:, 1], "tow.z": tow[:, 2]})
     return SceneResult(s, times, columns, cpu)

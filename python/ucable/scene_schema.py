@@ -18,7 +18,8 @@ import math
 
 from .variables import VARIABLES
 
-TOP_KEYS = ("title", "duration", "step", "outputs", "record_shape", "parameters", "inputs", "tow", "winch", "name")
+TOP_KEYS = ("title", "duration", "step", "outputs", "record_shape", "parameters", "inputs", "tow", "winch", "body",
+            "name")
 TOW_KEYS = ("start", "speed_kn", "heading_deg", "surge", "heave")
 SURGE_KEYS = ("amplitude", "period", "direction", "ramp")
 HEAVE_KEYS = ("amplitude", "period", "ramp")
@@ -30,6 +31,12 @@ DEFAULT_WINCH_RAMP = 10.0  # [s] from one stage's value to the next
 TOW_INPUTS = ("tow.x", "tow.y", "tow.z", "tow.vx", "tow.vy", "tow.vz")
 WINCH_INPUTS = {"rate": "winch.rate", "tension": "winch.tension"}
 WINCH_MODES = {"rate": 1, "tension": 2}
+# [body]: body 1 of a mooring system (docs/systems_mooring.md); degrees of freedom in the order of its inputs
+BODY_DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
+BODY_KEYS = ("start",) + BODY_DOFS
+OSCILLATION_KEYS = ("amplitude", "period", "ramp")
+BODY_INPUT_NAMES = tuple(f"body[1].{n}" for n in ("x", "y", "z", "roll", "pitch", "yaw", "vx", "vy", "vz",
+                                                   "wx", "wy", "wz"))
 
 
 class SceneFileError(ValueError):
@@ -215,6 +222,32 @@ def validate(data: dict, source: str) -> dict:
 
     tow = c.table(data.get("tow", {}), "[tow]")
     out["tow"] = check_tow(c, tow)
+    body = c.table(data.get("body", {}), "[body]")
+    out["body"] = check_body(c, body) if body else {}
+    if out["body"]:
+        for name in out["inputs"]:
+            if name in BODY_INPUT_NAMES:
+                c.fail(f"[inputs] {name}", "body 1 moves as [body] says (start, surge, sway, heave, roll, pitch, yaw)")
+    return out
+
+
+def check_body(c: Checker, body: dict) -> dict:
+    """[body]: body 1's start pose (x, y, z [m], roll, pitch, yaw [deg]) and oscillations from rest."""
+    c.keys(body, BODY_KEYS, "[body]")
+    start = body.get("start", [0.0] * 6)
+    if not (isinstance(start, list) and len(start) == 6):
+        c.fail("[body] start", "expected six numbers [x, y, z, roll, pitch, yaw] (m, deg)")
+    out = {"start": [c.number(v, f"[body] start[{i + 1}]") for i, v in enumerate(start)]}
+    for dof in BODY_DOFS:
+        if dof not in body:
+            continue
+        where = f"[body] {dof}"
+        m = c.table(body[dof], where)
+        c.keys(m, OSCILLATION_KEYS, where, required=("amplitude", "period"))
+        checked = {"amplitude": c.number(m["amplitude"], f"{where}.amplitude"),
+                   "period": c.number(m["period"], f"{where}.period", positive=True)}
+        checked["ramp"] = c.number(m.get("ramp", checked["period"]), f"{where}.ramp", nonnegative=True)
+        out[dof] = checked
     return out
 
 

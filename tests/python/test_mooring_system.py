@@ -1,5 +1,5 @@
 """Mooring systems through `lineFile` (docs/systems_mooring.md): the OC4 DeepCwind semisubmersible's three
-chains (tests/data/decks/oc4_semi.dat) on the FMU's body 1 against MoorPy fed the same deck, the
+chains (scenes/oc4_semi.dat) on the FMU's body 1 against MoorPy fed the same deck, the
 interface of the lines' load on the body, exact state save/restore of the whole system, and what a
 system deck refuses.
 """
@@ -222,3 +222,15 @@ def test_body_load_derivatives_equal_finite_differences_of_the_step(make_cable, 
             scale = np.abs(FD[rows, cols]).max()
             assert np.abs(D[rows, cols] - FD[rows, cols]).max() < 5e-3 * scale, (rows, cols, D[rows, cols],
                                                                                   FD[rows, cols])
+
+
+def test_the_moored_platform_scene_runs_and_records_the_lines(fmu_file):
+    """scenes/oc4_platform.toml (`ucable run oc4_platform`): its deck found next to it, body 1 moving as
+    [body] says; the recorded line 1 is the single-line towTension, the static start MoorPy's."""
+    from ucable.scene import run_scene
+
+    r = run_scene("oc4_platform", overrides={"duration": 5.0}, fmu=fmu_file)
+    assert r["line[1].fairleadTension"].tobytes() == r["towTension"].tobytes()
+    assert "line[4].fairleadTension" not in r.columns  # three lines in the deck
+    assert r["line[2].fairleadTension"][0] == pytest.approx(ms.moorpy_statics(DECK)["fairlead"][1], rel=5e-3)
+    assert r["body[1].force.z"][0] < -1.8e6 and abs(r["body[1].force.x"][-1]) > 1e3  # the surge has begun
