@@ -241,14 +241,19 @@ def check_body(c: Checker, body: dict) -> dict:
     for dof in BODY_DOFS:
         if dof not in body:
             continue
-        where = f"[body] {dof}"
-        m = c.table(body[dof], where)
-        c.keys(m, OSCILLATION_KEYS, where, required=("amplitude", "period"))
-        checked = {"amplitude": c.number(m["amplitude"], f"{where}.amplitude"),
-                   "period": c.number(m["period"], f"{where}.period", positive=True)}
-        checked["ramp"] = c.number(m.get("ramp", checked["period"]), f"{where}.ramp", nonnegative=True)
-        out[dof] = checked
+        out[dof], _ = check_oscillation(c, body[dof], OSCILLATION_KEYS, f"[body] {dof}")
     return out
+
+
+def check_oscillation(c: Checker, value, allowed, where: str):
+    """An oscillation { amplitude, period [, ramp] ...}: the checked amplitude, period and ramp (default
+    one period), and the table as given."""
+    m = c.table(value, where)
+    c.keys(m, allowed, where, required=("amplitude", "period"))
+    checked = {"amplitude": c.number(m["amplitude"], f"{where}.amplitude"),
+               "period": c.number(m["period"], f"{where}.period", positive=True)}
+    checked["ramp"] = c.number(m.get("ramp", checked["period"]), f"{where}.ramp", nonnegative=True)
+    return checked, m
 
 
 def check_tow(c: Checker, tow: dict) -> dict:
@@ -260,11 +265,7 @@ def check_tow(c: Checker, tow: dict) -> dict:
         if motion not in tow:
             continue
         where = f"[tow] {motion}"
-        m = c.table(tow[motion], where)
-        c.keys(m, allowed, where, required=("amplitude", "period"))
-        checked = {"amplitude": c.number(m["amplitude"], f"{where}.amplitude"),
-                   "period": c.number(m["period"], f"{where}.period", positive=True)}
-        checked["ramp"] = c.number(m.get("ramp", checked["period"]), f"{where}.ramp", nonnegative=True)
+        checked, m = check_oscillation(c, tow[motion], allowed, where)
         if motion == "surge":
             d = c.vector(m.get("direction", [1.0, 0.0, 0.0]), f"{where}.direction")
             if math.hypot(*d) == 0.0:
