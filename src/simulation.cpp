@@ -641,6 +641,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile);
         if (!statics.converged) {
             error = statics.message;
+            if (adviseMesh_) error += mesh_advice(t0, in);
             return false;
         }
     }
