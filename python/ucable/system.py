@@ -130,9 +130,11 @@ class SystemStructure:
             initial = {}
             for iv in s.iterfind("o:InitialValues/o:InitialValue", ns):
                 (v,) = list(iv)
-                kind, text = v.tag.split("}")[1], v.get("value")
-                initial[iv.get("variable")] = (text == "true" if kind == "Boolean" else
-                                               int(text) if kind == "Integer" else float(text))
+                kind, text, name = v.tag.split("}")[1], v.get("value"), iv.get("variable")
+                if kind == "String" and name == "lineFile" and text and not Path(text).is_absolute():
+                    text = str((path.parent / text).resolve())  # a deck next to the system file
+                initial[name] = (text if kind == "String" else text == "true" if kind == "Boolean" else
+                                 int(text) if kind == "Integer" else float(text))
             sims[s.get("name")] = Simulator(s.get("name"), (path.parent / s.get("source")).resolve(), initial)
         conns = []
         for c in root.iterfind("o:Connections/o:VariableConnection", ns):
@@ -205,6 +207,10 @@ RECORD = {
     "cable": ["towTension", "waveElevation", "towForce.x", "towForce.y", "towForce.z", "endTension", "endForce.x", "endForce.y",
               "endForce.z", "endPosition.x", "endPosition.y", "endPosition.z", "endVelocity.x", "endVelocity.y",
               "endVelocity.z"],
+    # a mooring system's cable FMU (systems/moored_platform): its lines and their load on the platform
+    "mooring": ["line[1].fairleadTension", "line[2].fairleadTension", "line[3].fairleadTension",
+                "body[1].force.x", "body[1].force.y", "body[1].force.z", "body[1].moment.x", "body[1].moment.y",
+                "body[1].moment.z"],
     "body": ["position.x", "position.y", "position.z", "velocity.x", "velocity.y", "velocity.z", "force.x",
              "force.y", "force.z"],
 }
@@ -353,13 +359,20 @@ class FmpyMaster:
             u.fmu.free()
 
 
-def _recorded(unit: str, variables) -> list:
-    """The variables of RECORD[unit] that the unit has (a vessel without an autopilot has no thrust)."""
-    return [v for v in RECORD.get(unit, []) if v in variables]
+def _recorded(unit: str, variables, mooring: bool = False) -> list:
+    """The variables of RECORD[unit] that the unit has (a vessel without an autopilot has no thrust), with
+    a mooring system's lines and body load for the cable FMU of a mooring system."""
+    names = RECORD.get(unit, []) + (RECORD["mooring"] if mooring and unit == "cable" else [])
+    return [v for v in names if v in variables]
 
 
-def _record_vrs(units):
-    recorded = {n: _recorded(n, units[n].vars) for n in units}
+def _mooring(system: SystemStructure) -> bool:
+    """Whether the system drives a mooring system's body (a connection to the cable's body[k].* inputs)."""
+    return any(c.target == "cable" and c.input.startswith("body[") for c in system.connections)
+
+
+def _record_vrs(units, mooring: bool = False):
+    recorded = {n: _recorded(n, units[n].vars, mooring) for n in units}
     return {n: (names, units[n].vrs(names)) for n, names in recorded.items() if names}
 
 
@@ -369,7 +382,7 @@ def run_fmpy(system: SystemStructure, parameters: dict, step: float, t_end: floa
     times = np.arange(n + 1) * step
     master = FmpyMaster(system, parameters, ordering, input_derivatives, t_end=times[-1] + 1e-9)
     try:
-        rec = _record_vrs(master.units)
+        rec = _record_vrs(master.units, _mooring(system))
         values = {f"{u}.{v}": np.full(n + 1, math.nan) for u, (names, _) in rec.items() for v in names}
 
         def record(k):
@@ -425,7 +438,8 @@ def run_libcosim(system: SystemStructure, parameters: dict, step: float, t_end: 
         ex.add_observer(obs)
         index = {s.name.decode(): s.index for s in ex.slave_infos()}
         vrs = {u: {v.name.decode(): v.reference for v in ex.slave_variables(i)} for u, i in index.items()}
-        rec = {u: _recorded(u, vrs[u]) for u in index if _recorded(u, vrs[u])}
+        mooring = _mooring(system)
+        rec = {u: _recorded(u, vrs[u], mooring) for u in index if _recorded(u, vrs[u], mooring)}
         for u, names in rec.items():
             for v in names:
                 obs.start_time_series(index[u], vrs[u][v], CosimVariableType.REAL)
@@ -515,7 +529,7 @@ def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: s
 
 # ------------------------------------------------------------------------------------ a shipped system
 COUPLING_OF_SYSTEM = {d: c for c, d in SYSTEM_DIRS.items()}
-SYSTEM_DURATIONS = {"heave_lowering": 300.0}  # the towed-body systems: their manoeuvre's duration
+SYSTEM_DURATIONS = {"heave_lowering": 300.0, "moored_platform": 300.0}  # the towed-body systems: their manoeuvre's
 
 
 def named_duration(name: str, manoeuvre: str = "accelerate", duration: float | None = None) -> float:

@@ -19,7 +19,9 @@
  * freedom j by a |R_j| cos(w t - k.X - p - phi_j), R_j the RAO at the component's period 2 pi / w and the
  * relative heading waves.direction - heading, interpolated linearly (complex amplitudes) in period, held
  * constant beyond the table's periods, periodic in heading. The motion is linear, as the RAOs: the tow point
- * at r (towPoint, body axes) moves by (surge, sway, heave) + (roll, pitch, yaw) x r. waves.rampTime grows the
+ * at r (towPoint, body axes) moves by (surge, sway, heave) + (roll, pitch, yaw) x r; the outputs platform.*
+ * give the reference point's pose and rates in the Earth frame for a mooring FMU's coupled body (the
+ * small angles about the Earth's axes, the yaw on top of the heading). waves.rampTime grows the
  * motion from rest as it grows the sea (the same half cosine), velocity and acceleration its exact time
  * derivatives.
  */
@@ -45,6 +47,8 @@ typedef struct VesselRAOData {
     /* outputs */
     double tow[3], towVelocity[3], towAcceleration[3];
     double motion[N_DOF], waveElevation;
+    /* the reference point's pose in the Earth frame and its rates, for a mooring FMU's body[k].* inputs */
+    double platform[N_DOF], platformRate[N_DOF];
 } VesselRAOData;
 
 /* The derived data: per wave component its frequency and, per degree of freedom, the motion amplitude
@@ -149,6 +153,20 @@ static void update_outputs(VesselRAOData* d, const VesselRAODerived* r, double t
     }
     d->tow[0] += d->x0;
     d->tow[1] += d->y0;
+    /* the reference point: translations and roll/pitch turned by the heading (small rotations about the
+       Earth's axes, to first order as the RAOs are), yaw on top of the heading */
+    const double* motion[2] = {s, v};
+    double* pose[2] = {d->platform, d->platformRate};
+    for (int k = 0; k < 2; ++k) {
+        for (int j = 0; j < N_DOF; j += 3) {
+            pose[k][j] = ch * motion[k][j] - sh * motion[k][j + 1];
+            pose[k][j + 1] = sh * motion[k][j] + ch * motion[k][j + 1];
+            pose[k][j + 2] = motion[k][j + 2];
+        }
+    }
+    d->platform[0] += d->x0;
+    d->platform[1] += d->y0;
+    d->platform[5] += d->heading;
     d->waveElevation = pm_sea_elevation(r->sea, r->n, d->sea.direction, d->sea.rampTime, d->x0, d->y0, t);
 }
 
@@ -202,6 +220,18 @@ static const PMVariable kVariables[] = {
     O(motion[5], "yaw", "rad", "Wave-frequency yaw about z"),
     O(waveElevation, "waveElevation", "m", "Elevation of the sea surface at the RAO reference point (x0, y0)"),
     PM_RAO_FILE_VARIABLE(VesselRAOData, raoFile),
+    O(platform[0], "platform.x", "m", "x of the RAO reference point, Earth frame (to a mooring FMU's body[k].x)"),
+    O(platform[1], "platform.y", "m", "y of the RAO reference point, Earth frame"),
+    O(platform[2], "platform.z", "m", "z of the RAO reference point (its heave)"),
+    O(platform[3], "platform.roll", "rad", "Roll and pitch turned to the Earth's x axis (to body[k].roll)"),
+    O(platform[4], "platform.pitch", "rad", "Roll and pitch turned to the Earth's y axis (to body[k].pitch)"),
+    O(platform[5], "platform.yaw", "rad", "Heading plus yaw (to body[k].yaw)"),
+    O(platformRate[0], "platform.vx", "m/s", "x velocity of the RAO reference point (to body[k].vx)"),
+    O(platformRate[1], "platform.vy", "m/s", "y velocity of the RAO reference point"),
+    O(platformRate[2], "platform.vz", "m/s", "z velocity of the RAO reference point"),
+    O(platformRate[3], "platform.wx", "rad/s", "Angular velocity about the Earth's x axis (to body[k].wx)"),
+    O(platformRate[4], "platform.wy", "rad/s", "Angular velocity about the Earth's y axis"),
+    O(platformRate[5], "platform.wz", "rad/s", "Angular velocity about z"),
 };
 
 const PMModel kPartnerModel = {
