@@ -707,6 +707,18 @@ bool parse_deck(std::string_view text, bool system, Deck& deck, std::vector<std:
     return true;
 }
 
+// A Free point's mass, volume, added mass (CA rho V) and drag area.
+LineFilePoint point_body(const Point& p, double waterDensity) {
+    LineFilePoint q;
+    q.id = p.id;
+    q.mass = p.mass;
+    q.volume = p.volume;
+    q.addedMass = p.Ca * waterDensity * p.volume;
+    q.CdA = p.CdA;
+    q.row = p.row;
+    return q;
+}
+
 // One MoorDyn line as a section of ours, in our conventions.
 LineFileSection section_of(const Line& l, const LineType& t) {
     LineFileSection s;
@@ -755,16 +767,7 @@ bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& out,
     }
     assign_elements(out.sections, elementsTotal);
 
-    auto free_point = [&](const Point& p) {
-        LineFilePoint q;
-        q.id = p.id;
-        q.mass = p.mass;
-        q.volume = p.volume;
-        q.addedMass = p.Ca * out.waterDensity * p.volume;
-        q.CdA = p.CdA;
-        q.row = p.row;
-        return q;
-    };
+    auto free_point = [&](const Point& p) { return point_body(p, out.waterDensity); };
     for (size_t k = 0; k + 1 < chain.size(); ++k) {
         const Line& l = lines[chain[k].first];
         out.joints.push_back(free_point(points[l.end[chain[k].second ? 0 : 1]]));
@@ -993,9 +996,8 @@ bool mooring_end(const Point& p, const std::vector<DeckBody>& bodies, bool bodie
             return true;
         }
         case PointKind::Free:
-            error = at_line(p.row, "point " + std::to_string(p.id) + " is a Free point of a mooring system: free points "
-                                   "(joints, buoys, clump weights between lines) are supported in a deck of one chain "
-                                   "of lines only, not yet in a system of several lines or bodies");
+            error = at_line(p.row, "point " + std::to_string(p.id) + " is a Free point: it holds no line's end "
+                                   "(its lines are joined through it)");
             return false;
     }
     return false;
@@ -1039,28 +1041,89 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
         if (p.lines.empty()) out.notes.push_back(at_line(p.row, "point " + std::to_string(p.id) + " ignored: no line "
                                                                 "is attached to it"));
     }
-    for (const Line& l : deck.lines) {
+    // Each of our lines is a chain of the deck's lines from an end on a coupled object through Free
+    // points that join two lines, to a Fixed point, another coupled end or a Free point at its end.
+    std::vector<bool> used(deck.lines.size(), false);
+    for (size_t first = 0; first < deck.lines.size(); ++first) {
+        if (used[first]) continue;
+        const Line& l0 = deck.lines[first];
+        int start = -1;
+        for (int e : {1, 0}) {  // AttachB first: MoorDyn's usual fairlead
+            const PointKind kind = deck.points[l0.end[e]].kind;
+            if (start < 0 && (kind == PointKind::Vessel || kind == PointKind::Body)) start = l0.end[e];
+        }
+        if (start < 0) continue;  // reached from another line's coupled end, or refused below
         MooringDeckLine line;
-        line.id = l.id;
-        line.row = l.row;
-        line.section = section_of(l, deck.types[l.type]);
-        line.section.elements = elementsPerLine > 0 ? elementsPerLine : elements_for_segments(l.numSegs);
-        MooringEnd a, b;
-        if (!mooring_end(deck.points[l.end[0]], bodies, out.bodiesSection, a, error) ||
-            !mooring_end(deck.points[l.end[1]], bodies, out.bodiesSection, b, error))
-            return false;
-        if (a.kind == MooringEnd::Kind::Fixed && b.kind == MooringEnd::Kind::Fixed) {
-            error = at_line(l.row, "line " + std::to_string(l.id) + " runs between two fixed points: a line of a "
-                                   "mooring system ends on a coupled body or point");
+        line.id = l0.id;
+        line.row = l0.row;
+        if (!mooring_end(deck.points[start], bodies, out.bodiesSection, line.fairlead, error)) return false;
+        int point = start, index = static_cast<int>(first);
+        while (true) {
+            const Line& l = deck.lines[index];
+            used[index] = true;
+            LineFileSection section = section_of(l, deck.types[l.type]);
+            section.elements = elementsPerLine > 0 ? elementsPerLine : elements_for_segments(l.numSegs);
+            line.sections.push_back(section);
+            line.deckLines.push_back(index);
+            const int from = point;
+            point = l.end[l.end[1] == point ? 0 : 1];
+            // the deck line's own fairlead: its end on a coupled object (AttachB where both are), else
+            // the end nearer our fairlead
+            auto coupled = [&](int q) {
+                return deck.points[q].kind == PointKind::Vessel || deck.points[q].kind == PointKind::Body;
+            };
+            const int fairlead = coupled(l.end[1]) ? l.end[1] : coupled(l.end[0]) ? l.end[0] : from;
+            line.flipped.push_back(fairlead == point);
+            const Point& p = deck.points[point];
+            if (p.kind != PointKind::Free) {
+                if (!mooring_end(p, bodies, out.bodiesSection, line.far, error)) return false;
+                break;
+            }
+            if (p.lines.size() == 1) {  // a free far end: a towed body, or none
+                line.farFree = true;
+                line.farBody = point_body(p, deck.waterDensity);
+                break;
+            }
+            if (p.lines.size() > 2) {
+                error = at_line(p.row, "Free point " + std::to_string(p.id) + " joins " + std::to_string(p.lines.size()) +
+                                           " lines: points where several lines meet (bridles, buoys, clump points "
+                                           "with legs) are not supported yet (a free point may join two lines)");
+                return false;
+            }
+            index = p.lines[0] == index ? p.lines[1] : p.lines[0];
+            if (used[index]) {
+                error = at_line(p.row, "the lines through point " + std::to_string(p.id) + " form a closed loop");
+                return false;
+            }
+            line.joints.push_back(point_body(p, deck.waterDensity));
+        }
+        if (line.sections.size() > UC_MAX_SECTIONS) {
+            error = at_line(deck.lines[line.deckLines[UC_MAX_SECTIONS]].row,
+                            "a chain of " + std::to_string(line.sections.size()) + " lines from point " +
+                                std::to_string(deck.points[start].id) + ": at most " + std::to_string(UC_MAX_SECTIONS) +
+                                " lines in a row are supported");
             return false;
         }
-        // The fairlead is the end on a coupled object (AttachB where both are, MoorDyn's usual fairlead).
-        const bool bCoupled = b.kind != MooringEnd::Kind::Fixed;
-        line.fairlead = bCoupled ? b : a;
-        line.far = bCoupled ? a : b;
-        out.lines.push_back(line);
+        if (!line.farFree && line.far.kind == MooringEnd::Kind::Fixed && line.fairlead.kind == MooringEnd::Kind::Fixed) {
+            error = at_line(line.row, "line " + std::to_string(line.id) + " runs between two fixed points");
+            return false;
+        }
         if (out.bodies == 0 && line.fairlead.kind == MooringEnd::Kind::Body) out.bodies = 1;
+        out.lines.push_back(line);
     }
+    for (size_t k = 0; k < deck.lines.size(); ++k) {
+        if (used[k]) continue;
+        const Line& l = deck.lines[k];
+        const bool fixedBoth = deck.points[l.end[0]].kind == PointKind::Fixed && deck.points[l.end[1]].kind == PointKind::Fixed;
+        error = at_line(l.row, "line " + std::to_string(l.id) + (fixedBoth ? " runs between two fixed points"
+                                                                          : " is not reached from a coupled point: "
+                                                                            "every line of a system runs from a "
+                                                                            "coupled body or point, through free "
+                                                                            "points joining two lines, to its end") +
+                                   ": a line of a mooring system ends on a coupled body or point");
+        return false;
+    }
+    out.deckLines = static_cast<int>(deck.lines.size());
     out.waterDepth = deck.waterDepth;
     out.gravity = deck.gravity;
     out.waterDensity = deck.waterDensity;
@@ -1070,15 +1133,21 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
 bool mooring_line_params(const MooringDeck& deck, int k, const UCParams& base, UCParams& p, std::string& error) {
     const MooringDeckLine& l = deck.lines[k];
     LineFileLine line;
-    line.sections.push_back(l.section);
+    line.sections = l.sections;
+    line.joints = l.joints;
     line.waterDepth = deck.waterDepth;
     line.gravity = deck.gravity;
     line.waterDensity = deck.waterDensity;
-    line.farEnd = LineFileFarEnd::Anchored;
-    std::copy(l.far.position, l.far.position + 3, line.anchor);
+    if (l.farFree) {
+        line.body = l.farBody;
+        line.farEnd = l.farBody.empty() ? LineFileFarEnd::Free : LineFileFarEnd::Body;
+    } else {
+        line.farEnd = LineFileFarEnd::Anchored;
+        std::copy(l.far.position, l.far.position + 3, line.anchor);
+    }
     p = base;
     if (!apply_line_file(line, p, error)) return false;
-    if (l.far.kind != MooringEnd::Kind::Fixed) p.bottomEnd = UC_BOTTOM_EXTERNAL;
+    if (!l.farFree && l.far.kind != MooringEnd::Kind::Fixed) p.bottomEnd = UC_BOTTOM_EXTERNAL;
     p.mooringSystem = 0;  // each line is one line
     return true;
 }

@@ -83,14 +83,22 @@ struct MooringEnd {
     double position[3] = {0.0, 0.0, 0.0};
 };
 
+// One of the system's lines: a chain of the deck's lines (its sections) from the fairlead through Free
+// points that join two lines (its joints), to its far end.
 struct MooringDeckLine {
-    int id = 0, row = 0;
-    LineFileSection section;
-    MooringEnd fairlead, far;  // the line runs from its fairlead (s = 0) to its far end
+    int id = 0, row = 0;                     // of its first deck line
+    std::vector<LineFileSection> sections;   // from the fairlead
+    std::vector<LineFilePoint> joints;       // joints[k] between sections k and k + 1
+    std::vector<int> deckLines;              // the deck's line (0-based) of each section
+    std::vector<bool> flipped;               // per section: the deck line's fairlead is at its far end
+    MooringEnd fairlead, far;                // the line runs from its fairlead (s = 0) to its far end
+    bool farFree = false;                    // the far end is a Free point: farBody (a towed body), or none
+    LineFilePoint farBody;
 };
 
 struct MooringDeck {
-    std::vector<MooringDeckLine> lines;  // in the deck's order
+    std::vector<MooringDeckLine> lines;  // in the order of their first deck line
+    int deckLines = 0;                   // lines of the deck (line[k].* outputs: k in the deck's order)
     int bodies = 0;                      // coupled bodies 1 .. bodies are driven by the body[k].* inputs
     bool bodiesSection = false;          // false: the deck's Vessel points ride body 1
     double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;

@@ -2,6 +2,7 @@
 // (docs/systems_mooring.md).
 #include "mooring_system.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <cstdint>
@@ -50,8 +51,24 @@ bool MooringSystem::build(std::string& error) {
             return false;
         }
         lines_.push_back(std::make_unique<CableSimulation>(p));
-        const SectionProps& s = lines_.back()->model().section(0);
-        segments_.push_back({s.length, submerged_weight(s.fluid), s.axial.EA});
+        const CableModel& model = lines_.back()->model();
+        std::vector<LineProfile::Segment> segments;
+        double weight = 0.0;
+        for (int j = 0; j < model.n_sections(); ++j) {
+            const SectionProps& s = model.section(j);
+            segments.push_back({s.length, submerged_weight(s.fluid), s.axial.EA});
+            weight += s.length * submerged_weight(s.fluid);
+        }
+        std::vector<LineProfile::PointLoad> points;
+        for (const NodeAttachment& at : model.attachments()) {
+            const double w = (at.body.mass - model.fluid().rho * at.body.volume) * model.fluid().gravity;
+            points.push_back({at.s, w});
+            weight += w;
+        }
+        if (p.bottomEnd == UC_BOTTOM_TOWED_BODY) weight += (p.bodyMass - p.waterDensity * p.bodyVolume) * p.gravity;
+        segments_.push_back(segments);
+        pointLoads_.push_back(points);
+        hangingWeight_.push_back(weight);
     }
     references_.assign(static_cast<size_t>(deck_.bodies), DrivenEnd());
     return true;
@@ -180,12 +197,25 @@ void MooringSystem::update_outputs(const UCInputs& in) {
     std::memset(outputs_.pointLoad, 0, sizeof outputs_.pointLoad);
     for (size_t k = 0; k < lines_.size(); ++k) {
         const UCOutputs& o = lines_[k]->outputs();
-        UCMooringLine& out = outputs_.mooringLine[k];
-        out.fairleadTension = o.towTension;
-        out.anchorTension = o.endTension;
-        out.minTension = o.minTension;
-        out.groundedLength = o.groundedLength;
         const MooringDeckLine& l = deck_.lines[k];
+        const CableModel& model = lines_[k]->model();
+        const int sections = static_cast<int>(l.deckLines.size());
+        for (int j = 0; j < sections; ++j) {
+            // the elements of section j, whose end forces are the deck line's end tensions at the joints
+            int first = model.n_elements(), last = -1;
+            for (const ElementRun& run : model.runs()) {
+                if (run.section != j) continue;
+                first = std::min(first, run.first);
+                last = std::max(last, run.first + run.count - 1);
+            }
+            UCMooringLine& out = outputs_.mooringLine[l.deckLines[j]];
+            const double start = j == 0 ? o.towTension : lines_[k]->element_end_tension(first, false);
+            const double end = j + 1 == sections ? o.endTension : lines_[k]->element_end_tension(last, true);
+            out.fairleadTension = l.flipped[j] ? end : start;
+            out.anchorTension = l.flipped[j] ? start : end;
+            out.minTension = o.minTension;  // of the whole chain
+            out.groundedLength = o.groundedLength;
+        }
         // the fairlead where the line's tow point stands, the far end where its end does
         const std::pair<const MooringEnd*, std::pair<Vec3, Vec3>> ends[2] = {
             {&l.fairlead, {vec3(o.towForce), lines_[k]->tow_position()}},
@@ -232,15 +262,29 @@ bool MooringSystem::static_body_load(int k, int b, const double q[6], const UCIn
         return e.kind == MooringEnd::Kind::Body && e.body == b ? Vec3(reference + R * vec3(e.position))
                                                                 : end_motion(e, in).position;
     };
-    const Vec3 top = place(l.fairlead), far = place(l.far);
-    const bool topHigher = top.z() >= far.z();
-    LineProfile profile;
-    const double L = lines_[k]->model().line().length;
-    if (!profile.solve(topHigher ? top : far, topHigher ? far : top, {segments_[k]}, {}, p.enableSeabed != 0,
-                       -p.waterDepth, std::max(lines_[k]->model().line().diameter, 1e-3 * L), why))
-        return false;
     force.setZero();
     moment.setZero();
+    const Vec3 top = place(l.fairlead);
+    if (l.farFree) {  // hanging from its fairlead: its weight, wherever the body stands
+        if (l.fairlead.kind == MooringEnd::Kind::Body && l.fairlead.body == b) {
+            force = Vec3(0.0, 0.0, -hangingWeight_[k]);
+            moment = (top - reference).cross(force);
+        }
+        return true;
+    }
+    const Vec3 far = place(l.far);
+    const bool topHigher = top.z() >= far.z();
+    const double L = lines_[k]->model().line().length;
+    std::vector<LineProfile::Segment> segments = segments_[k];
+    std::vector<LineProfile::PointLoad> points = pointLoads_[k];
+    if (!topHigher) {  // the profile runs from the higher end
+        std::reverse(segments.begin(), segments.end());
+        for (LineProfile::PointLoad& q : points) q.s = L - q.s;
+    }
+    LineProfile profile;
+    if (!profile.solve(topHigher ? top : far, topHigher ? far : top, segments, points, p.enableSeabed != 0,
+                       -p.waterDepth, std::max(lines_[k]->model().line().diameter, 1e-3 * L), why))
+        return false;
     const std::pair<const MooringEnd*, Vec3> ends[2] = {
         {&l.fairlead, topHigher ? profile.top_force() : profile.bottom_force()},
         {&l.far, topHigher ? profile.bottom_force() : profile.top_force()}};

@@ -73,7 +73,10 @@ private:
     UCParams base_;
     MooringDeck deck_;
     std::vector<std::unique_ptr<CableSimulation>> lines_;
-    std::vector<LineProfile::Segment> segments_;  // per line (one section each)
+    // per line: its sections and joints for its static profile, from the fairlead (s from there)
+    std::vector<std::vector<LineProfile::Segment>> segments_;
+    std::vector<std::vector<LineProfile::PointLoad>> pointLoads_;
+    std::vector<double> hangingWeight_;  // per line with a free far end: its submerged weight and its body's
     // --- state ---
     std::vector<DrivenEnd> references_;  // each body's reference point, extrapolated as the fairleads are
     double lastStep_ = 0.0;

@@ -77,6 +77,10 @@ public:
     static constexpr int kDerivativeSubsteps = 64;
     bool interface_derivatives(double d[6][12], std::string& error);
 
+    // The axial force at an end of element e (far: at its second node) in the state of the last outputs:
+    // the tension a line of several sections has at its joints (a mooring system's line[k].* outputs).
+    double element_end_tension(int e, bool far) const { return forces_.element[e].segment<3>(far ? 6 : 0).norm(); }
+
     // Free positions q and velocities v of the current state (for tests).
     void free_state(std::vector<double>& q, std::vector<double>& v, std::vector<double>& a) const;
     // The time integrator (for tests of its linear algebra paths).

@@ -40,9 +40,10 @@ class SystemDeck:
     """What the comparisons need to know of a deck with Vessel points (read by MoorPy's reader)."""
     path: Path
     depth: float
-    fairleads: list  # per line (deck order): the Vessel point's position, relative to the platform
+    fairleads: list  # per Vessel point (in the order of the lines on them): its position on the platform
     diameters: list  # per line
     options: dict
+    lines: int = 0   # lines of the deck
 
     def option(self, name: str, default: float) -> float:
         return float(self.options.get(name.lower(), default))
@@ -62,10 +63,30 @@ def read_system_deck(path: Path) -> SystemDeck:
     fairleads = []
     for ln in s.lineList:
         ends = [s.pointList[n - 1] for n in ln.attached]
-        fairleads.append(np.array(next(p.r for p in ends if p.type == -1), float))
+        fairleads += [np.array(p.r, float) for p in ends if p.type == -1]
     return SystemDeck(path=Path(path), depth=depth, fairleads=fairleads,
                       diameters=[float(ln.type["d_vol"]) for ln in s.lineList],
-                      options={k.lower(): v for k, v in s.MDoptions.items()})
+                      options={k.lower(): v for k, v in s.MDoptions.items()}, lines=len(s.lineList))
+
+
+def clumped_oc4(text: str, mass: float = 20000.0, volume: float = 1.0) -> str:
+    """The OC4 deck with each chain in two (400 m from the anchor, the rest to the fairlead) joined by a
+    Free point carrying a clump weight."""
+    text = text.replace("""6      Vessel    20.434  -35.393   -14.0     0       0       0     0""",
+    """6      Vessel    20.434  -35.393   -14.0     0       0       0     0
+7      Free     200.0    346.0    -190.0  {m}  {v}  0     0
+8      Free    -400.0      0.0    -190.0  {m}  {v}  0     0
+9      Free     200.0   -346.0    -190.0  {m}  {v}  0     0""".format(m=mass, v=volume))
+    text = text.replace("""1         main        1         4       835.35     20        -
+2         main        2         5       835.35     20        -
+3         main        3         6       835.35     20        -""",
+    """1         main        1         7       400.0      10        -
+2         main        2         8       400.0      10        -
+3         main        3         9       400.0      10        -
+4         main        7         4       435.35     10        -
+5         main        8         5       435.35     10        -
+6         main        9         6       435.35     10        -""")
+    return text
 
 
 def fmu_parameters(deck: SystemDeck, **extra) -> dict:
@@ -103,7 +124,7 @@ def moorpy_statics(deck: SystemDeck, pose=(0.0,) * 6) -> dict:
 
 def fmu_statics(fmu, deck: SystemDeck, pose=(0.0,) * 6, **extra) -> dict:
     """The FMU's static equilibrium (initMode 0) with body 1 at `pose`."""
-    n = len(deck.fairleads)
+    n = deck.lines
     with CableFMU(fmu, parameters=fmu_parameters(deck, **extra)) as c:
         c.initialize(inputs={f"body[1].{name}": v for name, v in zip(POSE_NAMES, pose)})
         load = [c.get(f"body[1].force.{a}") for a in "xyz"] + [c.get(f"body[1].moment.{a}") for a in "xyz"]
