@@ -1,0 +1,197 @@
+// Mooring systems (src/mooring_system.h, the system part of src/line_file.h; docs/systems_mooring.md): what
+// a deck of several lines becomes, the bodies' orientation convention, the body load as the sum of the
+// lines' forces, and an exact state save/restore of the whole system.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "cable_api.h"
+#include "line_file.h"
+#include "mooring_system.h"
+
+namespace {
+
+// Three chains from a platform's fairleads (Vessel points, no BODIES section: they ride body 1) to anchors;
+// line 3 is two deck lines joined by a Free point with a clump weight, its lower part given anchor first.
+const char* const kPlatform = R"(--------------------- MoorDyn Input File ------------------------------------
+three chains on a platform
+----------------------- LINE TYPES ------------------------------------------
+Name     Diam      MassDen       EA    BA/-zeta    EI    Cd      Ca     CdAx   CaAx
+(-)       (m)      (kg/m)        (N)    (N-s/-)    (-)   (-)     (-)    (-)    (-)
+main     0.0766    113.35     7.536E8     -1.0      0    2.0     0.8    0.4    0.25
+---------------------- POINTS --------------------------------
+ID     Attachment  X        Y         Z      M      V       CdA   CA
+(-)    (-)        (m)      (m)       (m)    (kg)   (m^3)   (m^2)  (-)
+1      Fixed    418.8    725.383  -200.0     0       0       0     0
+2      Fixed   -837.6      0.0    -200.0     0       0       0     0
+3      Fixed    418.8   -725.383  -200.0     0       0       0     0
+4      Vessel    20.434   35.393   -14.0     0       0       0     0
+5      Vessel   -40.868    0.0     -14.0     0       0       0     0
+6      Vessel    20.434  -35.393   -14.0     0       0       0     0
+7      Free     200.0   -346.0    -190.0   20000    1.0     0.5   1.0
+---------------------- LINES --------------------------------------
+ID      LineType   AttachA   AttachB  UnstrLen  NumSegs   Outputs
+(-)       (-)        (-)       (-)       (m)      (-)       (-)
+1         main        1         4       835.35     20        -
+2         main        2         5       835.35     20        -
+3         main        3         7       400.0      10        -
+4         main        6         7       435.35     12        -
+---------------------- OPTIONS ---------------------------------------
+200      WtrDpth
+------------------------- need this line --------------------------------------
+)";
+
+uc::MooringDeck read_platform(int elementsPerLine = 0) {
+    uc::MooringDeck deck;
+    std::string error;
+    EXPECT_TRUE(uc::read_mooring_deck(kPlatform, elementsPerLine, deck, error)) << error;
+    return deck;
+}
+
+UCParams system_parameters() {
+    UCParams p;
+    uc_params_default(&p);
+    p.enableSeabed = 1;
+    p.seabedStiffness = 3e6 * 0.0766;
+    p.seabedDamping = 3e5 * 0.0766;
+    p.enableCompression = 0;
+    return p;
+}
+
+UCInputs platform_inputs(double x, double pitch, double vx) {
+    UCInputs in;
+    uc_inputs_default(&in);
+    in.coupledBody[0].position[0] = x;
+    in.coupledBody[0].rotation[1] = pitch;
+    in.coupledBody[0].velocity[0] = vx;
+    return in;
+}
+
+TEST(MooringDeck, SeveralLinesFromVesselPointsAreASystemOnBodyOne) {
+    EXPECT_TRUE(uc::is_mooring_system_deck(kPlatform));
+    const uc::MooringDeck deck = read_platform();
+    EXPECT_EQ(deck.bodies, 1);
+    EXPECT_FALSE(deck.bodiesSection);
+    EXPECT_EQ(deck.deckLines, 4);
+    ASSERT_EQ(deck.lines.size(), 3u);
+    const uc::MooringDeckLine& l1 = deck.lines[0];
+    EXPECT_EQ(l1.fairlead.kind, uc::MooringEnd::Kind::Body);
+    EXPECT_EQ(l1.fairlead.body, 1);
+    EXPECT_DOUBLE_EQ(l1.fairlead.position[0], 20.434);  // in the body's frame
+    EXPECT_EQ(l1.far.kind, uc::MooringEnd::Kind::Fixed);
+    EXPECT_DOUBLE_EQ(l1.far.position[1], 725.383);
+    ASSERT_EQ(l1.sections.size(), 1u);
+    EXPECT_EQ(l1.sections[0].elements, 10);  // NumSegs 20: ceil(20 / 2)
+    EXPECT_EQ(read_platform(16).lines[0].sections[0].elements, 16);
+}
+
+TEST(MooringDeck, AChainThroughAFreePointIsOneLineOfSections) {
+    const uc::MooringDeck deck = read_platform();
+    // deck lines 3 and 4 meet at the Free point 7: one line from the fairlead (point 6) to the anchor (point 3)
+    const uc::MooringDeckLine& chain = deck.lines[2];
+    ASSERT_EQ(chain.sections.size(), 2u);
+    EXPECT_EQ(chain.deckLines, (std::vector<int>{3, 2}));
+    EXPECT_DOUBLE_EQ(chain.sections[0].length, 435.35);
+    EXPECT_EQ(chain.sections[0].elements, 6);
+    ASSERT_EQ(chain.joints.size(), 1u);
+    EXPECT_DOUBLE_EQ(chain.joints[0].mass, 20000.0);
+    EXPECT_DOUBLE_EQ(chain.joints[0].addedMass, 1.0 * 1025.0 * 1.0);  // CA rho V
+    // deck line 4 has its fairlead at point 6, where our line starts; deck line 3 (points 3 and 7, neither
+    // coupled) at the end nearer our fairlead, the joint: neither is turned round
+    EXPECT_EQ(chain.flipped, (std::vector<bool>{false, false}));
+    EXPECT_DOUBLE_EQ(chain.far.position[0], 418.8);
+
+    UCParams p;
+    std::string error;
+    ASSERT_TRUE(uc::mooring_line_params(deck, 2, system_parameters(), p, error)) << error;
+    EXPECT_EQ(p.nSections, 2);
+    EXPECT_EQ(p.nAttachments, 1);
+    EXPECT_DOUBLE_EQ(p.attachment[0].s, 435.35);
+    EXPECT_EQ(p.bottomEnd, UC_BOTTOM_ANCHORED);
+}
+
+TEST(MooringDeck, WhatASystemCannotHoldIsRefusedNamingTheLine) {
+    auto refused = [](const std::string& from, const std::string& to) {
+        std::string text = kPlatform;
+        const size_t at = text.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        text.replace(at, from.size(), to);
+        uc::MooringDeck deck;
+        std::string error;
+        EXPECT_FALSE(uc::read_mooring_deck(text, 0, deck, error));
+        return error;
+    };
+    EXPECT_EQ(refused("4         main        6         7", "4         main        2         7")
+                  .rfind("line 22: line 3 is not reached from a coupled point", 0), 0u);
+    // a third line to the clump point: a junction
+    EXPECT_EQ(refused("2         main        2         5", "2         main        2         7")
+                  .rfind("line 16: Free point 7 joins 3 lines", 0), 0u);
+}
+
+TEST(MooringSystem, BodyOrientationIsMoorDynsRollPitchYaw) {
+    const double r = 0.3, p = -0.2, y = 1.1;
+    uc::Mat3 Rx, Ry, Rz;
+    Rx << 1, 0, 0, 0, std::cos(r), -std::sin(r), 0, std::sin(r), std::cos(r);
+    Ry << std::cos(p), 0, std::sin(p), 0, 1, 0, -std::sin(p), 0, std::cos(p);
+    Rz << std::cos(y), -std::sin(y), 0, std::sin(y), std::cos(y), 0, 0, 0, 1;
+    EXPECT_LT((uc::body_rotation(r, p, y) - Rx * Ry * Rz).norm(), 1e-15);
+}
+
+TEST(MooringSystem, TheBodyLoadIsTheLinesForcesAndTheirMomentAboutTheReference) {
+    uc::MooringSystem system(system_parameters(), read_platform());
+    std::string error;
+    ASSERT_TRUE(system.build(error)) << error;
+    const UCInputs in = platform_inputs(3.0, 0.02, 0.0);
+    ASSERT_TRUE(system.initialize(0.0, in, error)) << error;
+    uc::Vec3 force = uc::Vec3::Zero(), moment = uc::Vec3::Zero();
+    const uc::Vec3 reference(3.0, 0.0, 0.0);
+    for (int k = 0; k < system.n_lines(); ++k) {
+        const UCOutputs& o = system.line(k).outputs();
+        const uc::Vec3 f(o.towForce[0], o.towForce[1], o.towForce[2]);
+        force += f;
+        moment += (system.line(k).tow_position() - reference).cross(f);
+    }
+    const UCBodyLoad& load = system.outputs().bodyLoad[0];
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_DOUBLE_EQ(load.force[c], force[c]);
+        EXPECT_NEAR(load.moment[c], moment[c], 1e-9 * moment.norm());
+    }
+    // deck line 3's anchor tension is at the joint (the clump): above it the tension is higher by about the
+    // clump's submerged weight (20 t less 1 m3 of water, 186 kN) along the line there
+    const UCMooringLine* lines = system.outputs().mooringLine;
+    EXPECT_GT(lines[3].anchorTension, lines[2].fairleadTension);
+    EXPECT_GT(lines[2].fairleadTension, 0.0);
+    EXPECT_DOUBLE_EQ(lines[3].fairleadTension, system.line(2).outputs().towTension);
+    EXPECT_DOUBLE_EQ(lines[2].anchorTension, system.line(2).outputs().endTension);
+}
+
+TEST(MooringSystem, ASavedStateContinuesBitForBit) {
+    uc::MooringSystem system(system_parameters(), read_platform());
+    std::string error;
+    ASSERT_TRUE(system.build(error)) << error;
+    ASSERT_TRUE(system.initialize(0.0, platform_inputs(0.0, 0.0, 0.0), error)) << error;
+    double t = 0.0;
+    auto step = [&](int k) {
+        const double tt = 0.2 * k;
+        ASSERT_TRUE(system.step(t, 0.2, platform_inputs(std::sin(0.3 * tt), 0.01 * std::sin(0.2 * tt),
+                                                        0.3 * std::cos(0.3 * tt)), error))
+            << error;
+        t += 0.2;
+    };
+    for (int k = 0; k < 5; ++k) step(k);
+    std::vector<unsigned char> state(system.state_size());
+    system.save_state(state.data());
+    const double saved = t;
+    for (int k = 5; k < 10; ++k) step(k);
+    const UCOutputs first = system.outputs();
+    ASSERT_TRUE(system.restore_state(state.data(), state.size(), error)) << error;
+    t = saved;
+    for (int k = 5; k < 10; ++k) step(k);
+    EXPECT_EQ(std::memcmp(&first, &system.outputs(), sizeof first), 0);
+    EXPECT_FALSE(system.restore_state(state.data(), state.size() - 8, error));
+}
+
+}  // namespace
