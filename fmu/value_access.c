@@ -144,6 +144,33 @@ static int component_of(size_t offset, size_t base) {
     return (int)((offset - base) / sizeof(double));
 }
 
+/* A mooring system's body or point input: der(body[k].v*) (order 1) or der(body[k].x/y/z, 2) is the
+ * reference point's acceleration, der(body[k].w*) the angular acceleration; der(point[k].v*) or of its
+ * position (order 2) the point's acceleration. 1 when v was one of them. */
+static int set_body_derivative(UCInstance* inst, const UCVariable* v, int order, double value) {
+    const size_t bodies = offsetof(UCInputs, coupledBody), points = offsetof(UCInputs, coupledPoint);
+    if (v->offset >= bodies && v->offset < bodies + sizeof inst->inputs.coupledBody) {
+        const size_t k = (v->offset - bodies) / sizeof(UCCoupledBody), in = (v->offset - bodies) % sizeof(UCCoupledBody);
+        const int c = (int)((in % (3 * sizeof(double))) / sizeof(double));
+        const int linear = (order == 1 && in / (3 * sizeof(double)) == offsetof(UCCoupledBody, velocity) / (3 * sizeof(double))) ||
+                           (order == 2 && in < 3 * sizeof(double));
+        const int angular = order == 1 && in >= offsetof(UCCoupledBody, angularVelocity);
+        if (!linear && !angular) return 0;
+        inst->inputs.bodyAcceleration[6 * k + (angular ? 3 : 0) + c] = value;
+        inst->inputs.bodyAccelerationGiven[k] = 1;
+        return 1;
+    }
+    if (v->offset >= points && v->offset < points + sizeof inst->inputs.coupledPoint) {
+        const size_t k = (v->offset - points) / sizeof(UCCoupledPoint), in = (v->offset - points) % sizeof(UCCoupledPoint);
+        const int velocity = in >= offsetof(UCCoupledPoint, velocity);
+        if (!((velocity && order == 1) || (!velocity && order == 2))) return 0;
+        inst->inputs.pointAcceleration[3 * k + (int)((in % (3 * sizeof(double))) / sizeof(double))] = value;
+        inst->inputs.pointAccelerationGiven[k] = 1;
+        return 1;
+    }
+    return 0;
+}
+
 static fmi2Status set_one_derivative(UCInstance* inst, const UCVariable* v, int order, double value) {
     const char* function = "fmi2SetRealInputDerivatives";
     int velocity = component_of(v->offset, offsetof(UCInputs, towVelocity));
@@ -174,6 +201,7 @@ static fmi2Status set_one_derivative(UCInstance* inst, const UCVariable* v, int 
         inst->inputs.endAccelerationGiven = 1;
         return fmi2OK;
     }
+    if (set_body_derivative(inst, v, order, value)) return fmi2OK;
     if (order == 1) {
         uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: derivative of %s ignored (held constant over a step%s)",
                function, v->name, position >= 0 ? "; the tow velocity is the input tow.v*" : "");

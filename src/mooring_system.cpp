@@ -78,16 +78,22 @@ MooringSystem::Motion MooringSystem::end_motion(const MooringEnd& end, const UCI
     const Vec3 local = vec3(end.position);
     switch (end.kind) {
         case MooringEnd::Kind::Fixed:
-            return {local, Vec3::Zero()};
+            return {local, Vec3::Zero(), Vec3::Zero(), false};
         case MooringEnd::Kind::Point: {
-            const UCCoupledPoint& p = in.coupledPoint[end.point - 1];
-            return {vec3(p.position), vec3(p.velocity)};
+            const int k = end.point - 1;
+            const UCCoupledPoint& p = in.coupledPoint[k];
+            return {vec3(p.position), vec3(p.velocity), vec3(in.pointAcceleration + 3 * k),
+                    in.pointAccelerationGiven[k] != 0};
         }
         case MooringEnd::Kind::Body:
         default: {
-            const UCCoupledBody& b = in.coupledBody[end.body - 1];
+            const int k = end.body - 1;
+            const UCCoupledBody& b = in.coupledBody[k];
             const Vec3 arm = body_rotation(b.rotation[0], b.rotation[1], b.rotation[2]) * local;
-            return {vec3(b.position) + arm, vec3(b.velocity) + vec3(b.angularVelocity).cross(arm)};
+            const Vec3 w = vec3(b.angularVelocity);
+            const Vec3 a = vec3(in.bodyAcceleration + 6 * k), alpha = vec3(in.bodyAcceleration + 6 * k + 3);
+            return {vec3(b.position) + arm, vec3(b.velocity) + w.cross(arm), a + alpha.cross(arm) + w.cross(w.cross(arm)),
+                    in.bodyAccelerationGiven[k] != 0};
         }
     }
 }
@@ -96,18 +102,18 @@ void MooringSystem::line_inputs(int k, const UCInputs& in, UCInputs& li) const {
     const MooringDeckLine& l = deck_.lines[k];
     li = in;
     const Motion top = end_motion(l.fairlead, in), far = end_motion(l.far, in);
+    // each end's acceleration from its body's or point's input derivatives where the master gives them,
+    // else estimated from its velocity inputs (DrivenEnd)
     for (int c = 0; c < 3; ++c) {
         li.tow[c] = top.position[c];
         li.towVelocity[c] = top.velocity[c];
+        li.towAcceleration[c] = top.accelerationGiven ? top.acceleration[c] : 0.0;
         li.end[c] = far.position[c];
         li.endVelocity[c] = far.velocity[c];
+        li.endAcceleration[c] = far.accelerationGiven ? far.acceleration[c] : 0.0;
     }
-    // The bodies' input derivatives are not passed on: each end's acceleration is estimated from its
-    // velocity inputs (DrivenEnd).
-    std::memset(li.towAcceleration, 0, sizeof li.towAcceleration);
-    li.towAccelerationGiven = 0;
-    std::memset(li.endAcceleration, 0, sizeof li.endAcceleration);
-    li.endAccelerationGiven = 0;
+    li.towAccelerationGiven = top.accelerationGiven ? 1 : 0;
+    li.endAccelerationGiven = far.accelerationGiven ? 1 : 0;
 }
 
 bool MooringSystem::check_inputs(const UCInputs& in, std::string& error) const {
@@ -148,7 +154,9 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
     }
     for (int b = 0; b < deck_.bodies; ++b) {
         const UCCoupledBody& body = in.coupledBody[b];
-        references_[b].reset(vec3(body.position), vec3(body.velocity), Vec3::Zero(), false);
+        const bool given = in.bodyAccelerationGiven[b] != 0;
+        references_[b].reset(vec3(body.position), vec3(body.velocity),
+                             given ? vec3(in.bodyAcceleration + 6 * b) : Vec3::Zero(), given);
     }
     lastStep_ = 0.0;
     lastInputs_ = in;
@@ -169,10 +177,11 @@ bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& er
     }
     for (int b = 0; b < deck_.bodies; ++b) {
         const UCCoupledBody& body = in.coupledBody[b];
+        const bool given = in.bodyAccelerationGiven[b] != 0;
         Vec3 a;
-        const TowTrajectory traj =
-            references_[b].next(t, h, lastStep_, vec3(body.position), vec3(body.velocity), Vec3::Zero(), false, a);
-        references_[b].advance(traj, vec3(body.velocity), a, false);
+        const TowTrajectory traj = references_[b].next(t, h, lastStep_, vec3(body.position), vec3(body.velocity),
+                                                       vec3(in.bodyAcceleration + 6 * b), given, a);
+        references_[b].advance(traj, vec3(body.velocity), a, given);
     }
     lastStep_ = h;
     lastInputs_ = in;
@@ -368,9 +377,11 @@ bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error)
     using Mat312 = Eigen::Matrix<double, 3, 12>;
     // The reference point at t + h moves with its inputs as a driven end does: 1 per unit position,
     // 1.5 h per unit velocity (the acceleration from the last two velocity inputs, cosimulation.md).
+    // (h alone where the master gives the acceleration)
+    const double velocityWeight = references_[b - 1].lastAccelerationGiven ? h : 1.5 * h;
     Mat312 dReference = Mat312::Zero();
     dReference.block<3, 3>(0, 0).setIdentity();
-    dReference.block<3, 3>(0, 6) = 1.5 * h * Mat3::Identity();
+    dReference.block<3, 3>(0, 6) = velocityWeight * Mat3::Identity();
     Eigen::Matrix<double, 6, 12> D = Eigen::Matrix<double, 6, 12>::Zero();
     for (size_t k = 0; k < lines_.size(); ++k) {
         const MooringDeckLine& l = deck_.lines[k];
@@ -398,7 +409,7 @@ bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error)
             T[e].block<3, 3>(3, 3) = cross_matrix(w) * dArm;
             T[e].block<3, 3>(3, 6).setIdentity();
             T[e].block<3, 3>(3, 9) = -cross_matrix(arm);
-            dPosition[e] = T[e].topRows<3>() + 1.5 * h * T[e].bottomRows<3>();
+            dPosition[e] = T[e].topRows<3>() + velocityWeight * T[e].bottomRows<3>();
         }
         const UCOutputs& o = lines_[k]->outputs();
         const Vec3 force[2] = {vec3(o.towForce), vec3(o.endForce)};

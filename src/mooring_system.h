@@ -57,7 +57,8 @@ public:
 
 private:
     struct Motion {
-        Vec3 position, velocity;
+        Vec3 position, velocity, acceleration;
+        bool accelerationGiven;
     };
     // Where an end of a line stands and moves for these inputs.
     Motion end_motion(const MooringEnd& end, const UCInputs& in) const;

@@ -170,6 +170,10 @@ typedef struct UCInputs {
     double endAcceleration[3]; /* (not an FMU variable) [m/s2] der(end.v*) from fmi2SetRealInputDerivatives */
     int endAccelerationGiven; /* (not an FMU variable) as towAccelerationGiven, for the far end */
     double currentRate[2]; /* (not an FMU variable) [m/s2] der(current.x/y) from fmi2SetRealInputDerivatives: the uniform current changes linearly over the step; 0 if not given */
+    double bodyAcceleration[24]; /* (not an FMU variable) [m/s2, rad/s2] per coupled body k (UC_MAX_BODIES x 6, at 6 k): der(body[k].vx/vy/vz) and der(body[k].wx/wy/wz) from fmi2SetRealInputDerivatives */
+    int bodyAccelerationGiven[4]; /* (not an FMU variable) per coupled body: 1 when bodyAcceleration came from the master for this step; 0: estimated from the velocity inputs */
+    double pointAcceleration[48]; /* (not an FMU variable) [m/s2] per coupled point k (UC_MAX_POINTS x 3, at 3 k): der(point[k].vx/vy/vz) */
+    int pointAccelerationGiven[16]; /* (not an FMU variable) per coupled point: 1 when pointAcceleration came from the master for this step */
     double currentScaleRate; /* (not an FMU variable) [1/s] der(currentScale) from fmi2SetRealInputDerivatives: the profile's scale changes linearly over the step; 0 if not given */
 } UCInputs;
 

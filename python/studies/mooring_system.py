@@ -194,8 +194,10 @@ class History:
 
 
 def fmu_motion(fmu, deck: SystemDeck, motion: PlatformMotion, t_end: float, comm_step: float = 0.1,
-               progress=None, **extra) -> History:
-    """The FMU with body 1 following the motion: pose and rates at the start of each communication step."""
+               progress=None, accelerations: bool = False, **extra) -> History:
+    """The FMU with body 1 following the motion: pose and rates at the start of each communication step,
+    with accelerations their input derivatives der(body[1].v*), der(body[1].w*) (the angles' second
+    derivatives: pitch only here, where they are the angular acceleration)."""
     times = np.arange(0.0, t_end + 0.5 * comm_step, comm_step)
     n = len(deck.fairleads)
     out = np.zeros((len(times), n))
@@ -207,8 +209,10 @@ def fmu_motion(fmu, deck: SystemDeck, motion: PlatformMotion, t_end: float, comm
         out[0] = c.get_reals(names)
         cpu0 = time.process_time()
         for k in range(len(times) - 1):
-            q, v, _ = motion.state(times[k])
+            q, v, a = motion.state(times[k])
             c.set(dict(zip(inputs, [*q, *v])))
+            if accelerations:
+                c.set_input_derivatives(inputs[6:], 1, list(a))
             c.do_step(comm_step, t=times[k])
             out[k + 1] = c.get_reals(names)
             if progress:

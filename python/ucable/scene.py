@@ -63,6 +63,7 @@ RECORDED = ["towTension", "towTensionMax", "towTensionMin", "towForce.x", "towFo
 ANCHORED_RECORDED = ["endTension", "groundedLength", "anchorUplift"]
 WINCH_RECORDED = ["unstretchedLength"]
 SHAPE = [f"shape.{c}[{k}]" for c in "xyz" for k in range(1, NUM_STATIONS + 1)]
+BODY_RATES = [f"body[1].{n}" for n in ("vx", "vy", "vz", "wx", "wy", "wz")]
 BODY_RECORDED = [f"body[1].{q}.{c}" for q in ("force", "moment") for c in "xyz"]
 LINES_RECORDED = [f"line[{k}].{q}" for k in range(1, MAX_LINES + 1) for q in ("fairleadTension", "anchorTension")]
 SCENE_SETTINGS = ("duration", "step")
@@ -186,7 +187,8 @@ def soft_start(t: np.ndarray, ramp: float):
 class BodyMotion:
     """Body 1's pose, rates and their derivatives from a scene's checked [body] table: each degree of
     freedom its start plus A e(t) sin(w t) (e the soft start); the angular velocity is the angles'
-    rates (exact for a rotation about one axis, to first order in the angles otherwise)."""
+    rates and the angular acceleration their second derivatives (exact for a rotation about one axis,
+    to first order in the angles otherwise). The accelerations go to the FMU as input derivatives."""
 
     def __init__(self, body: dict):
         self.body = body
@@ -363,6 +365,8 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
             t = times[k]
             cable.set(inputs(t))
             cable.set_input_derivatives(["tow.vx", "tow.vy", "tow.vz"], 1, list(motion.at(t)[2]))
+            if body:
+                cable.set_input_derivatives(BODY_RATES, 1, [float(x) for x in body.at(t)[2]])
             cable.do_step(times[k + 1] - t, t)
             data[k + 1] = cable.get_reals(recorded)
             tow[k + 1] = motion.at(times[k + 1])[0]

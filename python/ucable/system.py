@@ -293,6 +293,10 @@ class FmpyMaster:
         self.derivatives = []  # (target unit, target vrs, source unit, source vrs): der(input) = output
         if input_derivatives:
             pairs = [("vessel", "tow.a", "cable", "tow.v")]
+            if any(c.target == "cable" and c.input.startswith("body[1].") for c in system.connections):
+                # a platform driving a mooring system: its accelerations as der(body[1].v*, w*)
+                pairs += [("vessel", "platform.a", "cable", "body[1].v"),
+                          ("vessel", "platform.alpha", "cable", "body[1].w")]
             if "body" in self.units and any(c.input.startswith("end.") and c.target == "cable"
                                             for c in system.connections):
                 pairs.append(("body", "acceleration.", "cable", "end.v"))

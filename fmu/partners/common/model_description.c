@@ -40,6 +40,7 @@ static const Unit kUnits[] = {
     {"1/s", 0, 0, -1, 0, NULL, 0.0},
     {"rad", 0, 0, 0, 1, "deg", 57.29577951308232},
     {"rad/s", 0, 0, -1, 1, "deg/s", 57.29577951308232},
+    {"rad/s2", 0, 0, -2, 1, "deg/s2", 57.29577951308232},
 };
 #define N_UNITS (sizeof kUnits / sizeof kUnits[0])
 

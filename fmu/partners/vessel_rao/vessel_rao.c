@@ -48,7 +48,7 @@ typedef struct VesselRAOData {
     double tow[3], towVelocity[3], towAcceleration[3];
     double motion[N_DOF], waveElevation;
     /* the reference point's pose in the Earth frame and its rates, for a mooring FMU's body[k].* inputs */
-    double platform[N_DOF], platformRate[N_DOF];
+    double platform[N_DOF], platformRate[N_DOF], platformAcceleration[N_DOF];
 } VesselRAOData;
 
 /* The derived data: per wave component its frequency and, per degree of freedom, the motion amplitude
@@ -155,9 +155,9 @@ static void update_outputs(VesselRAOData* d, const VesselRAODerived* r, double t
     d->tow[1] += d->y0;
     /* the reference point: translations and roll/pitch turned by the heading (small rotations about the
        Earth's axes, to first order as the RAOs are), yaw on top of the heading */
-    const double* motion[2] = {s, v};
-    double* pose[2] = {d->platform, d->platformRate};
-    for (int k = 0; k < 2; ++k) {
+    const double* motion[3] = {s, v, a};
+    double* pose[3] = {d->platform, d->platformRate, d->platformAcceleration};
+    for (int k = 0; k < 3; ++k) {
         for (int j = 0; j < N_DOF; j += 3) {
             pose[k][j] = ch * motion[k][j] - sh * motion[k][j + 1];
             pose[k][j + 1] = sh * motion[k][j] + ch * motion[k][j + 1];
@@ -232,6 +232,12 @@ static const PMVariable kVariables[] = {
     O(platformRate[3], "platform.wx", "rad/s", "Angular velocity about the Earth's x axis (to body[k].wx)"),
     O(platformRate[4], "platform.wy", "rad/s", "Angular velocity about the Earth's y axis"),
     O(platformRate[5], "platform.wz", "rad/s", "Angular velocity about z"),
+    O(platformAcceleration[0], "platform.ax", "m/s2", "x acceleration of the RAO reference point (der(body[k].vx))"),
+    O(platformAcceleration[1], "platform.ay", "m/s2", "y acceleration of the RAO reference point"),
+    O(platformAcceleration[2], "platform.az", "m/s2", "z acceleration of the RAO reference point"),
+    O(platformAcceleration[3], "platform.alphax", "rad/s2", "Angular acceleration about the Earth's x axis (der(body[k].wx))"),
+    O(platformAcceleration[4], "platform.alphay", "rad/s2", "Angular acceleration about the Earth's y axis"),
+    O(platformAcceleration[5], "platform.alphaz", "rad/s2", "Angular acceleration about z"),
 };
 
 const PMModel kPartnerModel = {
