@@ -194,14 +194,15 @@ class History:
 
 
 def fmu_motion(fmu, deck: SystemDeck, motion: PlatformMotion, t_end: float, comm_step: float = 0.1,
-               progress=None, accelerations: bool = False, **extra) -> History:
+               progress=None, accelerations: bool = False, lines: list | None = None, **extra) -> History:
     """The FMU with body 1 following the motion: pose and rates at the start of each communication step,
     with accelerations their input derivatives der(body[1].v*), der(body[1].w*) (the angles' second
-    derivatives: pitch only here, where they are the angular acceleration)."""
+    derivatives: pitch only here, where they are the angular acceleration); lines: the deck lines whose
+    fairlead tension it records (default: 1 .. the number of Vessel points)."""
     times = np.arange(0.0, t_end + 0.5 * comm_step, comm_step)
-    n = len(deck.fairleads)
-    out = np.zeros((len(times), n))
-    names = [f"line[{k}].fairleadTension" for k in range(1, n + 1)]
+    lines = lines or list(range(1, len(deck.fairleads) + 1))
+    out = np.zeros((len(times), len(lines)))
+    names = [f"line[{k}].fairleadTension" for k in lines]
     inputs = [f"body[1].{x}" for x in POSE_NAMES] + [f"body[1].{x}" for x in
                                                      ("vx", "vy", "vz", "wx", "wy", "wz")]
     with CableFMU(fmu, parameters=fmu_parameters(deck, **extra)) as c:
@@ -277,6 +278,31 @@ def moordyn_motion(deck: SystemDeck, motion: PlatformMotion, t_end: float, comm_
         cpu = time.process_time() - cpu0
     how = f"{calls} call{'s' if calls > 1 else ''} per {comm_step:g} s"
     return History("MoorDyn", times, out, cpu, f"dtM {dt:.2g} s, {how}")
+
+
+def settled_deck(path: Path, directory: Path) -> Path:
+    """The deck for MoorDyn with its Free points where MoorPy's statics puts them and a longer, tighter
+    initial settling (TmaxIC 400 s, threshIC 1e-4): MoorDyn's own settling from the deck's guesses leaves
+    clump weights far from their equilibrium (the OC4 clumps: 0.21 MN at the fairleads for 1.48 MN)."""
+    import re
+
+    s = _moorpy_system(path, read_system_deck(path).depth)
+    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        s.initialize()
+        s.solveEquilibrium(tol=1e-8, maxIter=2000)
+    text = Path(path).read_text()
+    for q in s.pointList:
+        if q.type != 0:
+            continue
+        row = re.search(rf"^{q.number}\s+Free\s+\S+\s+\S+\s+\S+(.*)$", text, flags=re.M)
+        text = text[:row.start()] + f"{q.number} Free {q.r[0]:.6f} {q.r[1]:.6f} {q.r[2]:.6f}{row.group(1)}" + \
+            text[row.end():]
+    text = re.sub(r"^\S+(\s+TmaxIC)", r"400.0\1", text, flags=re.M)
+    text = re.sub(r"^\S+(\s+threshIC)", r"0.0001\1", text, flags=re.M)
+    out = Path(directory) / f"{Path(path).stem}_settled{Path(path).suffix}"
+    out.write_text(text)
+    return out
 
 
 def rms_difference(a: History, b: History, t_from: float = 0.0) -> dict:
