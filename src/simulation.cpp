@@ -330,8 +330,9 @@ void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, boo
         layout.anchorResting = ps.towOnTop && ps.profile.rests_at_bottom() && model_.params().bottomEnd == UC_BOTTOM_ANCHORED;
         const Vec3 resting(farPoint.x(), farPoint.y(), model_.resting_height());
         if (layout.anchorResting && std::abs(farPoint.z() - resting.z()) <= 0.5 * model_.line().diameter) solve_for(resting);
-        if (ps.solved && (ps.profile.grounded_length() > 0.0 || !model_.attachments().empty()))
-            layout.nodes = graded_nodes(model_, ps.profile, ps.towOnTop);
+        const int grading = model_.params().meshGrading;
+        if (ps.solved && grading != 0 && (ps.profile.grounded_length() > 0.0 || !model_.attachments().empty()))
+            layout.nodes = graded_nodes(model_, ps.profile, ps.towOnTop, grading == 2);
     }
     meshTow_ = towPoint;
     meshFar_ = farPoint;

@@ -113,6 +113,7 @@ typedef struct UCParams {
     double seabedContactSpacing; /* seabedContactSpacing [m]: largest distance along the cable between the points at which the seabed contact is integrated, on elements whose five axial points are farther apart (3-point Gauss rules on up to 16 equal intervals, at most 48 points per element); 0: the five axial points of every element. A coarse mesh on the seabed wants about the length of cable over which a touchdown crosses the contact's smoothing band (5 % of the diameter), sqrt(2 delta / kappa) at a touchdown of curvature kappa: 1-5 m on usual moorings ([docs/model.md](docs/model.md), contact sampling) */
     int solverMaxOrder; /* solver.maxOrder: highest order of the time integrator's variable-order BDF formulas (1–5). 5 (the default) takes the fewest steps where the tolerance is tight; orders 3–5 are not A-stable, so at a loose tolerance lightly damped fast modes (a stiff cable's axial and bending ringing) can hold the steps below the size the error test asks for, and 2, the highest A-stable order, then takes fewer steps for the same answer (the stiff power cable at tensionTolerance 0.1: 25–35 % fewer); 1 is backward Euler, which damps the most ([docs/error_control.md](docs/error_control.md), the integrator's order) */
     double winchMaxAcceleration; /* winch.maxAcceleration [m/s2]: largest acceleration and deceleration of the winch drum: with `winchMode` 1 it ramps towards `winch.rate` and brakes in time to stop at `winch.minLength`/`winch.maxLength`; with `winchMode` 2 the commanded rate stays within that braking envelope (the drum's response is `winch.timeConstant`'s); 0 = no limit (the rate may change at once at a communication point) ([docs/winch.md](docs/winch.md)) */
+    int meshGrading; /* meshGrading: where the static profile puts the nodes of a line held at both ends that touches the seabed or carries attachments: 0 each section's elements of equal length (between attachments); 1 graded within each section: a node at every touchdown and lift-off, elements short where the line turns; 2 graded along the whole line: the sections' `nElements` (their total) are shared out by the same rule, at least one per section, so a section lying on the seabed does not keep elements the hanging part needs ([docs/model.md](docs/model.md), initial equilibrium) */
 } UCParams;
 
 typedef struct UCInputs {
@@ -425,6 +426,7 @@ typedef struct UCOutputs {
     X(243, "seabedContactSpacing", REAL, PARAMETER, seabedContactSpacing) \
     X(244, "solver.maxOrder", INTEGER, PARAMETER, solverMaxOrder) \
     X(245, "winch.maxAcceleration", REAL, PARAMETER, winchMaxAcceleration) \
+    X(246, "meshGrading", INTEGER, PARAMETER, meshGrading) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -878,6 +880,7 @@ typedef struct UCOutputs {
     X(seabedContactSpacing, 0.0) \
     X(solverMaxOrder, 5) \
     X(winchMaxAcceleration, 0.0) \
+    X(meshGrading, 1) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -1122,6 +1125,7 @@ typedef struct UCOutputs {
     X(seabedContactSpacing, "seabedContactSpacing", 0.0, 100000.0, 0, 0, "[0, 100000]", "a sampling distance cannot be negative") \
     X(solverMaxOrder, "solver.maxOrder", 1.0, 5.0, 0, 0, "[1, 5]", "IDA's BDF formulas have orders 1 to 5") \
     X(winchMaxAcceleration, "winch.maxAcceleration", 0.0, 100.0, 0, 0, "[0, 100]", "a drum accelerates at a finite, non-negative rate (0: no limit)") \
+    X(meshGrading, "meshGrading", 0.0, 2.0, 0, 0, "{0 equal elements, 1 graded in each section, 2 graded along the line}", "unknown mesh grading") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -514,6 +514,8 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              "Highest order of the time integrator's variable-order BDF formulas (1-5): 5 is most efficient at tight tolerances; 2 is A-stable, so lightly damped fast modes (a stiff cable's axial and bending ringing) do not hold the steps of a loose tolerance; 1 is backward Euler"),
     Variable('winch.maxAcceleration', 245, 'parameter', 'Real', 'm/s2', 0.0, 0.0, 100.0,
              'Largest acceleration and deceleration of the winch drum: in winchMode 1 it ramps towards winch.rate and brakes in time to stop at winch.minLength/maxLength; in winchMode 2 the commanded rate is kept within that braking envelope; 0 = no limit (the rate may change at once at a communication point)'),
+    Variable('meshGrading', 246, 'parameter', 'Integer', None, 1, 0.0, 2.0,
+             "Where the static profile puts the nodes of a line held at both ends that touches the seabed or carries attachments: 0 each section's elements of equal length; 1 graded within each section (a node at every touchdown, elements short where the line turns); 2 graded along the whole line: the sections' elements (their total) are shared out where the line turns, at least one per section"),
     Variable('tow.x', 1001, 'input', 'Real', 'm', 0.0, None, None,
              'x coordinate of the tow point'),
     Variable('tow.y', 1002, 'input', 'Real', 'm', 0.0, None, None,
