@@ -71,6 +71,8 @@ bool MooringSystem::build(std::string& error) {
         hangingWeight_.push_back(weight);
     }
     references_.assign(static_cast<size_t>(deck_.bodies), DrivenEnd());
+    derivativeStamp_.assign(static_cast<size_t>(deck_.bodies), -1);
+    derivativeCache_.assign(static_cast<size_t>(deck_.bodies), {});
     return true;
 }
 
@@ -143,6 +145,7 @@ bool MooringSystem::check_inputs(const UCInputs& in, std::string& error) const {
 }
 
 bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error) {
+    ++stamp_;
     if (!check_inputs(in, error)) return false;
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
@@ -166,6 +169,7 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
 }
 
 bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& error) {
+    ++stamp_;
     if (!check_inputs(in, error)) return false;
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
@@ -371,6 +375,11 @@ bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error)
                 "they are available after the first fmi2DoStep";
         return false;
     }
+    std::array<double, 72>& cache = derivativeCache_[b - 1];
+    if (derivativeStamp_[b - 1] == stamp_) {
+        std::memcpy(&d[0][0], cache.data(), sizeof(double) * 72);
+        return true;
+    }
     const UCCoupledBody& body = lastInputs_.coupledBody[b - 1];
     const Mat3 R = body_rotation(body.rotation[0], body.rotation[1], body.rotation[2]);
     const Vec3 w = vec3(body.angularVelocity);
@@ -382,6 +391,8 @@ bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error)
     Mat312 dReference = Mat312::Zero();
     dReference.block<3, 3>(0, 0).setIdentity();
     dReference.block<3, 3>(0, 6) = velocityWeight * Mat3::Identity();
+    const bool accelerations = references_[b - 1].lastAccelerationGiven;
+    const Vec3 alpha = vec3(lastInputs_.bodyAcceleration + 6 * (b - 1) + 3);
     Eigen::Matrix<double, 6, 12> D = Eigen::Matrix<double, 6, 12>::Zero();
     for (size_t k = 0; k < lines_.size(); ++k) {
         const MooringDeckLine& l = deck_.lines[k];
@@ -389,14 +400,9 @@ bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error)
         bool on[2];
         for (int e = 0; e < 2; ++e) on[e] = ends[e]->kind == MooringEnd::Kind::Body && ends[e]->body == b;
         if (!on[0] && !on[1]) continue;
-        double m[6][12];
-        if (!lines_[k]->interface_derivatives(m, error)) {
-            error = "line " + std::to_string(l.id) + ": " + error;
-            return false;
-        }
-        const Eigen::Map<const Eigen::Matrix<double, 6, 12, Eigen::RowMajor>> lineD(&m[0][0]);
-        // each end's input (position, velocity) per unit body input, and its position at t + h
-        Eigen::Matrix<double, 6, 12> T[2];
+        // each end's input (position, velocity, and where the master gives them its acceleration
+        // a + alpha x arm + w x (w x arm)) per unit body input, and its position at t + h
+        Eigen::Matrix<double, 9, 12> T[2];
         Mat312 dPosition[2];
         for (int e = 0; e < 2; ++e) {
             T[e].setZero();
@@ -409,22 +415,45 @@ bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error)
             T[e].block<3, 3>(3, 3) = cross_matrix(w) * dArm;
             T[e].block<3, 3>(3, 6).setIdentity();
             T[e].block<3, 3>(3, 9) = -cross_matrix(arm);
-            dPosition[e] = T[e].topRows<3>() + velocityWeight * T[e].bottomRows<3>();
+            if (accelerations) {
+                T[e].block<3, 3>(6, 3) = (cross_matrix(alpha) + cross_matrix(w) * cross_matrix(w)) * dArm;
+                T[e].block<3, 3>(6, 9) = -cross_matrix(w.cross(arm)) - cross_matrix(w) * cross_matrix(arm);
+            }
+            dPosition[e] = T[e].topRows<3>() + velocityWeight * T[e].middleRows<3>(3) +
+                           (accelerations ? 0.5 * h * h : 0.0) * T[e].bottomRows<3>();
+        }
+        // the line's interface derivatives in the directions of the body's inputs (one integration each)
+        Eigen::Matrix<double, 6, 12> lineD;
+        for (int j = 0; j < 12; ++j) {
+            double seed[CableSimulation::kDerivativeInputs] = {0.0}, out[6];
+            for (int i = 0; i < 6; ++i) {
+                seed[i] = T[0](i, j);
+                seed[6 + i] = T[1](i, j);
+            }
+            for (int i = 0; i < 3; ++i) {
+                seed[12 + i] = T[0](6 + i, j);
+                seed[15 + i] = T[1](6 + i, j);
+            }
+            if (!lines_[k]->interface_derivative(seed, out, error)) {
+                error = "line " + std::to_string(l.id) + ": " + error;
+                return false;
+            }
+            for (int i = 0; i < 6; ++i) lineD(i, j) = out[i];
         }
         const UCOutputs& o = lines_[k]->outputs();
         const Vec3 force[2] = {vec3(o.towForce), vec3(o.endForce)};
         const Vec3 at[2] = {lines_[k]->tow_position(), vec3(o.endPosition)};
         for (int e = 0; e < 2; ++e) {
             if (!on[e]) continue;
-            // this end's force per unit body input, through both ends' inputs
-            const Mat312 dForce = lineD.block<3, 6>(3 * e, 0) * T[0] + lineD.block<3, 6>(3 * e, 6) * T[1];
+            const Mat312 dForce = lineD.middleRows<3>(3 * e);  // this end's force per unit body input
             const Vec3 arm = at[e] - references_[b - 1].position;
             D.topRows<3>() += dForce;
             D.bottomRows<3>() += cross_matrix(arm) * dForce - cross_matrix(force[e]) * (dPosition[e] - dReference);
         }
     }
     for (int i = 0; i < 6; ++i)
-        for (int j = 0; j < 12; ++j) d[i][j] = D(i, j);
+        for (int j = 0; j < 12; ++j) cache[12 * i + j] = d[i][j] = D(i, j);
+    derivativeStamp_[b - 1] = stamp_;
     return true;
 }
 
@@ -463,6 +492,7 @@ void MooringSystem::save_state(void* buffer) {
 }
 
 bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& error) {
+    ++stamp_;
     SystemHeader header;
     if (size < sizeof header) {
         error = "saved state is too short for this mooring system";

@@ -5,6 +5,7 @@
 // line's end motion and sums the lines' forces into the bodies' loads and their quasi-static stiffness.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -86,6 +87,10 @@ private:
     bool stiffnessWarned_ = false;
     std::string event_;
     std::vector<unsigned char> lineBuffer_;
+    // body_derivatives of each body for the state of stamp_ (a master asks column by column)
+    long stamp_ = 0;
+    std::vector<long> derivativeStamp_;
+    std::vector<std::array<double, 72>> derivativeCache_;
 };
 
 }  // namespace uc

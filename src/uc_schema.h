@@ -145,6 +145,7 @@ typedef struct UCParams {
     double seabedContactSpacing; /* seabedContactSpacing [m]: largest distance along the cable between the points at which the seabed contact is integrated, on elements whose five axial points are farther apart (3-point Gauss rules on up to 16 equal intervals, at most 48 points per element); 0: the five axial points of every element. A coarse mesh on the seabed wants about the length of cable over which a touchdown crosses the contact's smoothing band (5 % of the diameter), sqrt(2 delta / kappa) at a touchdown of curvature kappa: 1-5 m on usual moorings ([docs/model.md](docs/model.md), contact sampling) */
     int solverMaxOrder; /* solver.maxOrder: highest order of the time integrator's variable-order BDF formulas (1–5). 5 (the default) takes the fewest steps where the tolerance is tight; orders 3–5 are not A-stable, so at a loose tolerance lightly damped fast modes (a stiff cable's axial and bending ringing) can hold the steps below the size the error test asks for, and 2, the highest A-stable order, then takes fewer steps for the same answer (the stiff power cable at tensionTolerance 0.1: 25–35 % fewer); 1 is backward Euler, which damps the most ([docs/error_control.md](docs/error_control.md), the integrator's order) */
     double winchMaxAcceleration; /* winch.maxAcceleration [m/s2]: largest acceleration and deceleration of the winch drum: with `winchMode` 1 it ramps towards `winch.rate` and brakes in time to stop at `winch.minLength`/`winch.maxLength`; with `winchMode` 2 the commanded rate stays within that braking envelope (the drum's response is `winch.timeConstant`'s); 0 = no limit (the rate may change at once at a communication point) ([docs/winch.md](docs/winch.md)) */
+    int meshGrading; /* meshGrading: where the static profile puts the nodes of a line held at both ends that touches the seabed or carries attachments: 0 each section's elements of equal length (between attachments); 1 graded within each section: a node at every touchdown and lift-off, elements short where the line turns; 2 graded along the whole line: the sections' `nElements` (their total) are shared out by the same rule, at least one per section, so a section lying on the seabed does not keep elements the hanging part needs ([docs/model.md](docs/model.md), initial equilibrium) */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
 } UCParams;
 
@@ -163,11 +164,11 @@ typedef struct UCInputs {
     double winchRate; /* winch.rate [m/s]: winch rate when `winchMode` = 1: positive pays out, negative hauls in (limited by `winch.maxRate` and the length limits) */
     double winchTension; /* winch.tension [N]: tow tension the winch holds when `winchMode` = 2 */
     double currentScale; /* currentScale: factor on the current depth profile: the water moves with `current.x/y` + `currentScale` × profile(depth), so a current that strengthens or turns with the tide at every depth in proportion is this input (with its derivative through `fmi2SetRealInputDerivatives` it changes linearly over a step, and the water's acceleration acts on the line) */
+    double towAcceleration[3]; /* tow.ax, tow.ay, tow.az [m/s2]: tow point acceleration for the coming step: the same as `der(tow.v*)` through `fmi2SetRealInputDerivatives`, for a master that cannot pass input derivatives (connect the vessel's acceleration here); used when set since the last step, otherwise the FMU estimates it from the last two velocity inputs; it is also the input of the derivatives' acceleration columns ([docs/cosimulation.md](docs/cosimulation.md)) */
+    double endAcceleration[3]; /* end.ax, end.ay, end.az [m/s2]: far-end acceleration for the coming step when `bottomEnd` = 3: the same as `der(end.v*)`, used when set since the last step (as `tow.a*`) */
     UCCoupledBody coupledBody[UC_MAX_BODIES];
     UCCoupledPoint coupledPoint[UC_MAX_POINTS];
-    double towAcceleration[3]; /* (not an FMU variable) [m/s2] from fmi2SetRealInputDerivatives (der(tow.v*) or der(tow.*,2)); 0 if not given */
-    int towAccelerationGiven; /* (not an FMU variable) 1 when towAcceleration came from the master for this step; 0: the core estimates it from the last two tow velocity inputs */
-    double endAcceleration[3]; /* (not an FMU variable) [m/s2] der(end.v*) from fmi2SetRealInputDerivatives */
+    int towAccelerationGiven; /* (not an FMU variable) 1 when towAcceleration (the inputs tow.a*) came from the master for this step (fmi2SetRealInputDerivatives or fmi2SetReal); 0: the core estimates it from the last two tow velocity inputs */
     int endAccelerationGiven; /* (not an FMU variable) as towAccelerationGiven, for the far end */
     double currentRate[2]; /* (not an FMU variable) [m/s2] der(current.x/y) from fmi2SetRealInputDerivatives: the uniform current changes linearly over the step; 0 if not given */
     double bodyAcceleration[24]; /* (not an FMU variable) [m/s2, rad/s2] per coupled body k (UC_MAX_BODIES x 6, at 6 k): der(body[k].vx/vy/vz) and der(body[k].wx/wy/wz) from fmi2SetRealInputDerivatives */
@@ -467,6 +468,7 @@ typedef struct UCOutputs {
     X(243, "seabedContactSpacing", REAL, PARAMETER, seabedContactSpacing) \
     X(244, "solver.maxOrder", INTEGER, PARAMETER, solverMaxOrder) \
     X(245, "winch.maxAcceleration", REAL, PARAMETER, winchMaxAcceleration) \
+    X(246, "meshGrading", INTEGER, PARAMETER, meshGrading) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -504,150 +506,156 @@ typedef struct UCOutputs {
     X(1035, "winch.rate", REAL, INPUT, winchRate) \
     X(1036, "winch.tension", REAL, INPUT, winchTension) \
     X(1037, "currentScale", REAL, INPUT, currentScale) \
-    X(1038, "body[1].x", REAL, INPUT, coupledBody[0].position[0]) \
-    X(1039, "body[1].y", REAL, INPUT, coupledBody[0].position[1]) \
-    X(1040, "body[1].z", REAL, INPUT, coupledBody[0].position[2]) \
-    X(1041, "body[2].x", REAL, INPUT, coupledBody[1].position[0]) \
-    X(1042, "body[2].y", REAL, INPUT, coupledBody[1].position[1]) \
-    X(1043, "body[2].z", REAL, INPUT, coupledBody[1].position[2]) \
-    X(1044, "body[3].x", REAL, INPUT, coupledBody[2].position[0]) \
-    X(1045, "body[3].y", REAL, INPUT, coupledBody[2].position[1]) \
-    X(1046, "body[3].z", REAL, INPUT, coupledBody[2].position[2]) \
-    X(1047, "body[4].x", REAL, INPUT, coupledBody[3].position[0]) \
-    X(1048, "body[4].y", REAL, INPUT, coupledBody[3].position[1]) \
-    X(1049, "body[4].z", REAL, INPUT, coupledBody[3].position[2]) \
-    X(1050, "body[1].roll", REAL, INPUT, coupledBody[0].rotation[0]) \
-    X(1051, "body[1].pitch", REAL, INPUT, coupledBody[0].rotation[1]) \
-    X(1052, "body[1].yaw", REAL, INPUT, coupledBody[0].rotation[2]) \
-    X(1053, "body[2].roll", REAL, INPUT, coupledBody[1].rotation[0]) \
-    X(1054, "body[2].pitch", REAL, INPUT, coupledBody[1].rotation[1]) \
-    X(1055, "body[2].yaw", REAL, INPUT, coupledBody[1].rotation[2]) \
-    X(1056, "body[3].roll", REAL, INPUT, coupledBody[2].rotation[0]) \
-    X(1057, "body[3].pitch", REAL, INPUT, coupledBody[2].rotation[1]) \
-    X(1058, "body[3].yaw", REAL, INPUT, coupledBody[2].rotation[2]) \
-    X(1059, "body[4].roll", REAL, INPUT, coupledBody[3].rotation[0]) \
-    X(1060, "body[4].pitch", REAL, INPUT, coupledBody[3].rotation[1]) \
-    X(1061, "body[4].yaw", REAL, INPUT, coupledBody[3].rotation[2]) \
-    X(1062, "body[1].vx", REAL, INPUT, coupledBody[0].velocity[0]) \
-    X(1063, "body[1].vy", REAL, INPUT, coupledBody[0].velocity[1]) \
-    X(1064, "body[1].vz", REAL, INPUT, coupledBody[0].velocity[2]) \
-    X(1065, "body[2].vx", REAL, INPUT, coupledBody[1].velocity[0]) \
-    X(1066, "body[2].vy", REAL, INPUT, coupledBody[1].velocity[1]) \
-    X(1067, "body[2].vz", REAL, INPUT, coupledBody[1].velocity[2]) \
-    X(1068, "body[3].vx", REAL, INPUT, coupledBody[2].velocity[0]) \
-    X(1069, "body[3].vy", REAL, INPUT, coupledBody[2].velocity[1]) \
-    X(1070, "body[3].vz", REAL, INPUT, coupledBody[2].velocity[2]) \
-    X(1071, "body[4].vx", REAL, INPUT, coupledBody[3].velocity[0]) \
-    X(1072, "body[4].vy", REAL, INPUT, coupledBody[3].velocity[1]) \
-    X(1073, "body[4].vz", REAL, INPUT, coupledBody[3].velocity[2]) \
-    X(1074, "body[1].wx", REAL, INPUT, coupledBody[0].angularVelocity[0]) \
-    X(1075, "body[1].wy", REAL, INPUT, coupledBody[0].angularVelocity[1]) \
-    X(1076, "body[1].wz", REAL, INPUT, coupledBody[0].angularVelocity[2]) \
-    X(1077, "body[2].wx", REAL, INPUT, coupledBody[1].angularVelocity[0]) \
-    X(1078, "body[2].wy", REAL, INPUT, coupledBody[1].angularVelocity[1]) \
-    X(1079, "body[2].wz", REAL, INPUT, coupledBody[1].angularVelocity[2]) \
-    X(1080, "body[3].wx", REAL, INPUT, coupledBody[2].angularVelocity[0]) \
-    X(1081, "body[3].wy", REAL, INPUT, coupledBody[2].angularVelocity[1]) \
-    X(1082, "body[3].wz", REAL, INPUT, coupledBody[2].angularVelocity[2]) \
-    X(1083, "body[4].wx", REAL, INPUT, coupledBody[3].angularVelocity[0]) \
-    X(1084, "body[4].wy", REAL, INPUT, coupledBody[3].angularVelocity[1]) \
-    X(1085, "body[4].wz", REAL, INPUT, coupledBody[3].angularVelocity[2]) \
-    X(1086, "point[1].x", REAL, INPUT, coupledPoint[0].position[0]) \
-    X(1087, "point[1].y", REAL, INPUT, coupledPoint[0].position[1]) \
-    X(1088, "point[1].z", REAL, INPUT, coupledPoint[0].position[2]) \
-    X(1089, "point[2].x", REAL, INPUT, coupledPoint[1].position[0]) \
-    X(1090, "point[2].y", REAL, INPUT, coupledPoint[1].position[1]) \
-    X(1091, "point[2].z", REAL, INPUT, coupledPoint[1].position[2]) \
-    X(1092, "point[3].x", REAL, INPUT, coupledPoint[2].position[0]) \
-    X(1093, "point[3].y", REAL, INPUT, coupledPoint[2].position[1]) \
-    X(1094, "point[3].z", REAL, INPUT, coupledPoint[2].position[2]) \
-    X(1095, "point[4].x", REAL, INPUT, coupledPoint[3].position[0]) \
-    X(1096, "point[4].y", REAL, INPUT, coupledPoint[3].position[1]) \
-    X(1097, "point[4].z", REAL, INPUT, coupledPoint[3].position[2]) \
-    X(1098, "point[5].x", REAL, INPUT, coupledPoint[4].position[0]) \
-    X(1099, "point[5].y", REAL, INPUT, coupledPoint[4].position[1]) \
-    X(1100, "point[5].z", REAL, INPUT, coupledPoint[4].position[2]) \
-    X(1101, "point[6].x", REAL, INPUT, coupledPoint[5].position[0]) \
-    X(1102, "point[6].y", REAL, INPUT, coupledPoint[5].position[1]) \
-    X(1103, "point[6].z", REAL, INPUT, coupledPoint[5].position[2]) \
-    X(1104, "point[7].x", REAL, INPUT, coupledPoint[6].position[0]) \
-    X(1105, "point[7].y", REAL, INPUT, coupledPoint[6].position[1]) \
-    X(1106, "point[7].z", REAL, INPUT, coupledPoint[6].position[2]) \
-    X(1107, "point[8].x", REAL, INPUT, coupledPoint[7].position[0]) \
-    X(1108, "point[8].y", REAL, INPUT, coupledPoint[7].position[1]) \
-    X(1109, "point[8].z", REAL, INPUT, coupledPoint[7].position[2]) \
-    X(1110, "point[9].x", REAL, INPUT, coupledPoint[8].position[0]) \
-    X(1111, "point[9].y", REAL, INPUT, coupledPoint[8].position[1]) \
-    X(1112, "point[9].z", REAL, INPUT, coupledPoint[8].position[2]) \
-    X(1113, "point[10].x", REAL, INPUT, coupledPoint[9].position[0]) \
-    X(1114, "point[10].y", REAL, INPUT, coupledPoint[9].position[1]) \
-    X(1115, "point[10].z", REAL, INPUT, coupledPoint[9].position[2]) \
-    X(1116, "point[11].x", REAL, INPUT, coupledPoint[10].position[0]) \
-    X(1117, "point[11].y", REAL, INPUT, coupledPoint[10].position[1]) \
-    X(1118, "point[11].z", REAL, INPUT, coupledPoint[10].position[2]) \
-    X(1119, "point[12].x", REAL, INPUT, coupledPoint[11].position[0]) \
-    X(1120, "point[12].y", REAL, INPUT, coupledPoint[11].position[1]) \
-    X(1121, "point[12].z", REAL, INPUT, coupledPoint[11].position[2]) \
-    X(1122, "point[13].x", REAL, INPUT, coupledPoint[12].position[0]) \
-    X(1123, "point[13].y", REAL, INPUT, coupledPoint[12].position[1]) \
-    X(1124, "point[13].z", REAL, INPUT, coupledPoint[12].position[2]) \
-    X(1125, "point[14].x", REAL, INPUT, coupledPoint[13].position[0]) \
-    X(1126, "point[14].y", REAL, INPUT, coupledPoint[13].position[1]) \
-    X(1127, "point[14].z", REAL, INPUT, coupledPoint[13].position[2]) \
-    X(1128, "point[15].x", REAL, INPUT, coupledPoint[14].position[0]) \
-    X(1129, "point[15].y", REAL, INPUT, coupledPoint[14].position[1]) \
-    X(1130, "point[15].z", REAL, INPUT, coupledPoint[14].position[2]) \
-    X(1131, "point[16].x", REAL, INPUT, coupledPoint[15].position[0]) \
-    X(1132, "point[16].y", REAL, INPUT, coupledPoint[15].position[1]) \
-    X(1133, "point[16].z", REAL, INPUT, coupledPoint[15].position[2]) \
-    X(1134, "point[1].vx", REAL, INPUT, coupledPoint[0].velocity[0]) \
-    X(1135, "point[1].vy", REAL, INPUT, coupledPoint[0].velocity[1]) \
-    X(1136, "point[1].vz", REAL, INPUT, coupledPoint[0].velocity[2]) \
-    X(1137, "point[2].vx", REAL, INPUT, coupledPoint[1].velocity[0]) \
-    X(1138, "point[2].vy", REAL, INPUT, coupledPoint[1].velocity[1]) \
-    X(1139, "point[2].vz", REAL, INPUT, coupledPoint[1].velocity[2]) \
-    X(1140, "point[3].vx", REAL, INPUT, coupledPoint[2].velocity[0]) \
-    X(1141, "point[3].vy", REAL, INPUT, coupledPoint[2].velocity[1]) \
-    X(1142, "point[3].vz", REAL, INPUT, coupledPoint[2].velocity[2]) \
-    X(1143, "point[4].vx", REAL, INPUT, coupledPoint[3].velocity[0]) \
-    X(1144, "point[4].vy", REAL, INPUT, coupledPoint[3].velocity[1]) \
-    X(1145, "point[4].vz", REAL, INPUT, coupledPoint[3].velocity[2]) \
-    X(1146, "point[5].vx", REAL, INPUT, coupledPoint[4].velocity[0]) \
-    X(1147, "point[5].vy", REAL, INPUT, coupledPoint[4].velocity[1]) \
-    X(1148, "point[5].vz", REAL, INPUT, coupledPoint[4].velocity[2]) \
-    X(1149, "point[6].vx", REAL, INPUT, coupledPoint[5].velocity[0]) \
-    X(1150, "point[6].vy", REAL, INPUT, coupledPoint[5].velocity[1]) \
-    X(1151, "point[6].vz", REAL, INPUT, coupledPoint[5].velocity[2]) \
-    X(1152, "point[7].vx", REAL, INPUT, coupledPoint[6].velocity[0]) \
-    X(1153, "point[7].vy", REAL, INPUT, coupledPoint[6].velocity[1]) \
-    X(1154, "point[7].vz", REAL, INPUT, coupledPoint[6].velocity[2]) \
-    X(1155, "point[8].vx", REAL, INPUT, coupledPoint[7].velocity[0]) \
-    X(1156, "point[8].vy", REAL, INPUT, coupledPoint[7].velocity[1]) \
-    X(1157, "point[8].vz", REAL, INPUT, coupledPoint[7].velocity[2]) \
-    X(1158, "point[9].vx", REAL, INPUT, coupledPoint[8].velocity[0]) \
-    X(1159, "point[9].vy", REAL, INPUT, coupledPoint[8].velocity[1]) \
-    X(1160, "point[9].vz", REAL, INPUT, coupledPoint[8].velocity[2]) \
-    X(1161, "point[10].vx", REAL, INPUT, coupledPoint[9].velocity[0]) \
-    X(1162, "point[10].vy", REAL, INPUT, coupledPoint[9].velocity[1]) \
-    X(1163, "point[10].vz", REAL, INPUT, coupledPoint[9].velocity[2]) \
-    X(1164, "point[11].vx", REAL, INPUT, coupledPoint[10].velocity[0]) \
-    X(1165, "point[11].vy", REAL, INPUT, coupledPoint[10].velocity[1]) \
-    X(1166, "point[11].vz", REAL, INPUT, coupledPoint[10].velocity[2]) \
-    X(1167, "point[12].vx", REAL, INPUT, coupledPoint[11].velocity[0]) \
-    X(1168, "point[12].vy", REAL, INPUT, coupledPoint[11].velocity[1]) \
-    X(1169, "point[12].vz", REAL, INPUT, coupledPoint[11].velocity[2]) \
-    X(1170, "point[13].vx", REAL, INPUT, coupledPoint[12].velocity[0]) \
-    X(1171, "point[13].vy", REAL, INPUT, coupledPoint[12].velocity[1]) \
-    X(1172, "point[13].vz", REAL, INPUT, coupledPoint[12].velocity[2]) \
-    X(1173, "point[14].vx", REAL, INPUT, coupledPoint[13].velocity[0]) \
-    X(1174, "point[14].vy", REAL, INPUT, coupledPoint[13].velocity[1]) \
-    X(1175, "point[14].vz", REAL, INPUT, coupledPoint[13].velocity[2]) \
-    X(1176, "point[15].vx", REAL, INPUT, coupledPoint[14].velocity[0]) \
-    X(1177, "point[15].vy", REAL, INPUT, coupledPoint[14].velocity[1]) \
-    X(1178, "point[15].vz", REAL, INPUT, coupledPoint[14].velocity[2]) \
-    X(1179, "point[16].vx", REAL, INPUT, coupledPoint[15].velocity[0]) \
-    X(1180, "point[16].vy", REAL, INPUT, coupledPoint[15].velocity[1]) \
-    X(1181, "point[16].vz", REAL, INPUT, coupledPoint[15].velocity[2]) \
+    X(1038, "tow.ax", REAL, INPUT, towAcceleration[0]) \
+    X(1039, "tow.ay", REAL, INPUT, towAcceleration[1]) \
+    X(1040, "tow.az", REAL, INPUT, towAcceleration[2]) \
+    X(1041, "end.ax", REAL, INPUT, endAcceleration[0]) \
+    X(1042, "end.ay", REAL, INPUT, endAcceleration[1]) \
+    X(1043, "end.az", REAL, INPUT, endAcceleration[2]) \
+    X(1044, "body[1].x", REAL, INPUT, coupledBody[0].position[0]) \
+    X(1045, "body[1].y", REAL, INPUT, coupledBody[0].position[1]) \
+    X(1046, "body[1].z", REAL, INPUT, coupledBody[0].position[2]) \
+    X(1047, "body[2].x", REAL, INPUT, coupledBody[1].position[0]) \
+    X(1048, "body[2].y", REAL, INPUT, coupledBody[1].position[1]) \
+    X(1049, "body[2].z", REAL, INPUT, coupledBody[1].position[2]) \
+    X(1050, "body[3].x", REAL, INPUT, coupledBody[2].position[0]) \
+    X(1051, "body[3].y", REAL, INPUT, coupledBody[2].position[1]) \
+    X(1052, "body[3].z", REAL, INPUT, coupledBody[2].position[2]) \
+    X(1053, "body[4].x", REAL, INPUT, coupledBody[3].position[0]) \
+    X(1054, "body[4].y", REAL, INPUT, coupledBody[3].position[1]) \
+    X(1055, "body[4].z", REAL, INPUT, coupledBody[3].position[2]) \
+    X(1056, "body[1].roll", REAL, INPUT, coupledBody[0].rotation[0]) \
+    X(1057, "body[1].pitch", REAL, INPUT, coupledBody[0].rotation[1]) \
+    X(1058, "body[1].yaw", REAL, INPUT, coupledBody[0].rotation[2]) \
+    X(1059, "body[2].roll", REAL, INPUT, coupledBody[1].rotation[0]) \
+    X(1060, "body[2].pitch", REAL, INPUT, coupledBody[1].rotation[1]) \
+    X(1061, "body[2].yaw", REAL, INPUT, coupledBody[1].rotation[2]) \
+    X(1062, "body[3].roll", REAL, INPUT, coupledBody[2].rotation[0]) \
+    X(1063, "body[3].pitch", REAL, INPUT, coupledBody[2].rotation[1]) \
+    X(1064, "body[3].yaw", REAL, INPUT, coupledBody[2].rotation[2]) \
+    X(1065, "body[4].roll", REAL, INPUT, coupledBody[3].rotation[0]) \
+    X(1066, "body[4].pitch", REAL, INPUT, coupledBody[3].rotation[1]) \
+    X(1067, "body[4].yaw", REAL, INPUT, coupledBody[3].rotation[2]) \
+    X(1068, "body[1].vx", REAL, INPUT, coupledBody[0].velocity[0]) \
+    X(1069, "body[1].vy", REAL, INPUT, coupledBody[0].velocity[1]) \
+    X(1070, "body[1].vz", REAL, INPUT, coupledBody[0].velocity[2]) \
+    X(1071, "body[2].vx", REAL, INPUT, coupledBody[1].velocity[0]) \
+    X(1072, "body[2].vy", REAL, INPUT, coupledBody[1].velocity[1]) \
+    X(1073, "body[2].vz", REAL, INPUT, coupledBody[1].velocity[2]) \
+    X(1074, "body[3].vx", REAL, INPUT, coupledBody[2].velocity[0]) \
+    X(1075, "body[3].vy", REAL, INPUT, coupledBody[2].velocity[1]) \
+    X(1076, "body[3].vz", REAL, INPUT, coupledBody[2].velocity[2]) \
+    X(1077, "body[4].vx", REAL, INPUT, coupledBody[3].velocity[0]) \
+    X(1078, "body[4].vy", REAL, INPUT, coupledBody[3].velocity[1]) \
+    X(1079, "body[4].vz", REAL, INPUT, coupledBody[3].velocity[2]) \
+    X(1080, "body[1].wx", REAL, INPUT, coupledBody[0].angularVelocity[0]) \
+    X(1081, "body[1].wy", REAL, INPUT, coupledBody[0].angularVelocity[1]) \
+    X(1082, "body[1].wz", REAL, INPUT, coupledBody[0].angularVelocity[2]) \
+    X(1083, "body[2].wx", REAL, INPUT, coupledBody[1].angularVelocity[0]) \
+    X(1084, "body[2].wy", REAL, INPUT, coupledBody[1].angularVelocity[1]) \
+    X(1085, "body[2].wz", REAL, INPUT, coupledBody[1].angularVelocity[2]) \
+    X(1086, "body[3].wx", REAL, INPUT, coupledBody[2].angularVelocity[0]) \
+    X(1087, "body[3].wy", REAL, INPUT, coupledBody[2].angularVelocity[1]) \
+    X(1088, "body[3].wz", REAL, INPUT, coupledBody[2].angularVelocity[2]) \
+    X(1089, "body[4].wx", REAL, INPUT, coupledBody[3].angularVelocity[0]) \
+    X(1090, "body[4].wy", REAL, INPUT, coupledBody[3].angularVelocity[1]) \
+    X(1091, "body[4].wz", REAL, INPUT, coupledBody[3].angularVelocity[2]) \
+    X(1092, "point[1].x", REAL, INPUT, coupledPoint[0].position[0]) \
+    X(1093, "point[1].y", REAL, INPUT, coupledPoint[0].position[1]) \
+    X(1094, "point[1].z", REAL, INPUT, coupledPoint[0].position[2]) \
+    X(1095, "point[2].x", REAL, INPUT, coupledPoint[1].position[0]) \
+    X(1096, "point[2].y", REAL, INPUT, coupledPoint[1].position[1]) \
+    X(1097, "point[2].z", REAL, INPUT, coupledPoint[1].position[2]) \
+    X(1098, "point[3].x", REAL, INPUT, coupledPoint[2].position[0]) \
+    X(1099, "point[3].y", REAL, INPUT, coupledPoint[2].position[1]) \
+    X(1100, "point[3].z", REAL, INPUT, coupledPoint[2].position[2]) \
+    X(1101, "point[4].x", REAL, INPUT, coupledPoint[3].position[0]) \
+    X(1102, "point[4].y", REAL, INPUT, coupledPoint[3].position[1]) \
+    X(1103, "point[4].z", REAL, INPUT, coupledPoint[3].position[2]) \
+    X(1104, "point[5].x", REAL, INPUT, coupledPoint[4].position[0]) \
+    X(1105, "point[5].y", REAL, INPUT, coupledPoint[4].position[1]) \
+    X(1106, "point[5].z", REAL, INPUT, coupledPoint[4].position[2]) \
+    X(1107, "point[6].x", REAL, INPUT, coupledPoint[5].position[0]) \
+    X(1108, "point[6].y", REAL, INPUT, coupledPoint[5].position[1]) \
+    X(1109, "point[6].z", REAL, INPUT, coupledPoint[5].position[2]) \
+    X(1110, "point[7].x", REAL, INPUT, coupledPoint[6].position[0]) \
+    X(1111, "point[7].y", REAL, INPUT, coupledPoint[6].position[1]) \
+    X(1112, "point[7].z", REAL, INPUT, coupledPoint[6].position[2]) \
+    X(1113, "point[8].x", REAL, INPUT, coupledPoint[7].position[0]) \
+    X(1114, "point[8].y", REAL, INPUT, coupledPoint[7].position[1]) \
+    X(1115, "point[8].z", REAL, INPUT, coupledPoint[7].position[2]) \
+    X(1116, "point[9].x", REAL, INPUT, coupledPoint[8].position[0]) \
+    X(1117, "point[9].y", REAL, INPUT, coupledPoint[8].position[1]) \
+    X(1118, "point[9].z", REAL, INPUT, coupledPoint[8].position[2]) \
+    X(1119, "point[10].x", REAL, INPUT, coupledPoint[9].position[0]) \
+    X(1120, "point[10].y", REAL, INPUT, coupledPoint[9].position[1]) \
+    X(1121, "point[10].z", REAL, INPUT, coupledPoint[9].position[2]) \
+    X(1122, "point[11].x", REAL, INPUT, coupledPoint[10].position[0]) \
+    X(1123, "point[11].y", REAL, INPUT, coupledPoint[10].position[1]) \
+    X(1124, "point[11].z", REAL, INPUT, coupledPoint[10].position[2]) \
+    X(1125, "point[12].x", REAL, INPUT, coupledPoint[11].position[0]) \
+    X(1126, "point[12].y", REAL, INPUT, coupledPoint[11].position[1]) \
+    X(1127, "point[12].z", REAL, INPUT, coupledPoint[11].position[2]) \
+    X(1128, "point[13].x", REAL, INPUT, coupledPoint[12].position[0]) \
+    X(1129, "point[13].y", REAL, INPUT, coupledPoint[12].position[1]) \
+    X(1130, "point[13].z", REAL, INPUT, coupledPoint[12].position[2]) \
+    X(1131, "point[14].x", REAL, INPUT, coupledPoint[13].position[0]) \
+    X(1132, "point[14].y", REAL, INPUT, coupledPoint[13].position[1]) \
+    X(1133, "point[14].z", REAL, INPUT, coupledPoint[13].position[2]) \
+    X(1134, "point[15].x", REAL, INPUT, coupledPoint[14].position[0]) \
+    X(1135, "point[15].y", REAL, INPUT, coupledPoint[14].position[1]) \
+    X(1136, "point[15].z", REAL, INPUT, coupledPoint[14].position[2]) \
+    X(1137, "point[16].x", REAL, INPUT, coupledPoint[15].position[0]) \
+    X(1138, "point[16].y", REAL, INPUT, coupledPoint[15].position[1]) \
+    X(1139, "point[16].z", REAL, INPUT, coupledPoint[15].position[2]) \
+    X(1140, "point[1].vx", REAL, INPUT, coupledPoint[0].velocity[0]) \
+    X(1141, "point[1].vy", REAL, INPUT, coupledPoint[0].velocity[1]) \
+    X(1142, "point[1].vz", REAL, INPUT, coupledPoint[0].velocity[2]) \
+    X(1143, "point[2].vx", REAL, INPUT, coupledPoint[1].velocity[0]) \
+    X(1144, "point[2].vy", REAL, INPUT, coupledPoint[1].velocity[1]) \
+    X(1145, "point[2].vz", REAL, INPUT, coupledPoint[1].velocity[2]) \
+    X(1146, "point[3].vx", REAL, INPUT, coupledPoint[2].velocity[0]) \
+    X(1147, "point[3].vy", REAL, INPUT, coupledPoint[2].velocity[1]) \
+    X(1148, "point[3].vz", REAL, INPUT, coupledPoint[2].velocity[2]) \
+    X(1149, "point[4].vx", REAL, INPUT, coupledPoint[3].velocity[0]) \
+    X(1150, "point[4].vy", REAL, INPUT, coupledPoint[3].velocity[1]) \
+    X(1151, "point[4].vz", REAL, INPUT, coupledPoint[3].velocity[2]) \
+    X(1152, "point[5].vx", REAL, INPUT, coupledPoint[4].velocity[0]) \
+    X(1153, "point[5].vy", REAL, INPUT, coupledPoint[4].velocity[1]) \
+    X(1154, "point[5].vz", REAL, INPUT, coupledPoint[4].velocity[2]) \
+    X(1155, "point[6].vx", REAL, INPUT, coupledPoint[5].velocity[0]) \
+    X(1156, "point[6].vy", REAL, INPUT, coupledPoint[5].velocity[1]) \
+    X(1157, "point[6].vz", REAL, INPUT, coupledPoint[5].velocity[2]) \
+    X(1158, "point[7].vx", REAL, INPUT, coupledPoint[6].velocity[0]) \
+    X(1159, "point[7].vy", REAL, INPUT, coupledPoint[6].velocity[1]) \
+    X(1160, "point[7].vz", REAL, INPUT, coupledPoint[6].velocity[2]) \
+    X(1161, "point[8].vx", REAL, INPUT, coupledPoint[7].velocity[0]) \
+    X(1162, "point[8].vy", REAL, INPUT, coupledPoint[7].velocity[1]) \
+    X(1163, "point[8].vz", REAL, INPUT, coupledPoint[7].velocity[2]) \
+    X(1164, "point[9].vx", REAL, INPUT, coupledPoint[8].velocity[0]) \
+    X(1165, "point[9].vy", REAL, INPUT, coupledPoint[8].velocity[1]) \
+    X(1166, "point[9].vz", REAL, INPUT, coupledPoint[8].velocity[2]) \
+    X(1167, "point[10].vx", REAL, INPUT, coupledPoint[9].velocity[0]) \
+    X(1168, "point[10].vy", REAL, INPUT, coupledPoint[9].velocity[1]) \
+    X(1169, "point[10].vz", REAL, INPUT, coupledPoint[9].velocity[2]) \
+    X(1170, "point[11].vx", REAL, INPUT, coupledPoint[10].velocity[0]) \
+    X(1171, "point[11].vy", REAL, INPUT, coupledPoint[10].velocity[1]) \
+    X(1172, "point[11].vz", REAL, INPUT, coupledPoint[10].velocity[2]) \
+    X(1173, "point[12].vx", REAL, INPUT, coupledPoint[11].velocity[0]) \
+    X(1174, "point[12].vy", REAL, INPUT, coupledPoint[11].velocity[1]) \
+    X(1175, "point[12].vz", REAL, INPUT, coupledPoint[11].velocity[2]) \
+    X(1176, "point[13].vx", REAL, INPUT, coupledPoint[12].velocity[0]) \
+    X(1177, "point[13].vy", REAL, INPUT, coupledPoint[12].velocity[1]) \
+    X(1178, "point[13].vz", REAL, INPUT, coupledPoint[12].velocity[2]) \
+    X(1179, "point[14].vx", REAL, INPUT, coupledPoint[13].velocity[0]) \
+    X(1180, "point[14].vy", REAL, INPUT, coupledPoint[13].velocity[1]) \
+    X(1181, "point[14].vz", REAL, INPUT, coupledPoint[13].velocity[2]) \
+    X(1182, "point[15].vx", REAL, INPUT, coupledPoint[14].velocity[0]) \
+    X(1183, "point[15].vy", REAL, INPUT, coupledPoint[14].velocity[1]) \
+    X(1184, "point[15].vz", REAL, INPUT, coupledPoint[14].velocity[2]) \
+    X(1185, "point[16].vx", REAL, INPUT, coupledPoint[15].velocity[0]) \
+    X(1186, "point[16].vy", REAL, INPUT, coupledPoint[15].velocity[1]) \
+    X(1187, "point[16].vz", REAL, INPUT, coupledPoint[15].velocity[2]) \
     X(2001, "towForce.x", REAL, OUTPUT, towForce[0]) \
     X(2002, "towForce.y", REAL, OUTPUT, towForce[1]) \
     X(2003, "towForce.z", REAL, OUTPUT, towForce[2]) \
@@ -1344,6 +1352,7 @@ typedef struct UCOutputs {
     X(seabedContactSpacing, 0.0) \
     X(solverMaxOrder, 5) \
     X(winchMaxAcceleration, 0.0) \
+    X(meshGrading, 1) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -1588,6 +1597,7 @@ typedef struct UCOutputs {
     X(seabedContactSpacing, "seabedContactSpacing", 0.0, 100000.0, 0, 0, "[0, 100000]", "a sampling distance cannot be negative") \
     X(solverMaxOrder, "solver.maxOrder", 1.0, 5.0, 0, 0, "[1, 5]", "IDA's BDF formulas have orders 1 to 5") \
     X(winchMaxAcceleration, "winch.maxAcceleration", 0.0, 100.0, 0, 0, "[0, 100]", "a drum accelerates at a finite, non-negative rate (0: no limit)") \
+    X(meshGrading, "meshGrading", 0.0, 2.0, 0, 0, "{0 equal elements, 1 graded in each section, 2 graded along the line}", "unknown mesh grading") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -184,16 +184,31 @@ BODY_INPUTS = [f"body[1].{n}" for n in ms.POSE_NAMES + ("vx", "vy", "vz", "wx", 
 class Drift:
     """Body 1 at an offset, pitched pose, at rest (rates 0) or drifting slowly in all six degrees of freedom."""
 
-    def __init__(self, moving: bool):
+    def __init__(self, moving: bool, accelerating: bool = False):
         self.q0 = np.array([4.0, 0.0, -1.0, 0.0, 0.03, 0.0])
-        self.v = np.array([0.05, 0.02, 0.01, 0.002, 0.003, 0.001]) if moving else np.zeros(6)
+        self.v0 = np.array([0.05, 0.02, 0.01, 0.002, 0.003, 0.001]) if moving else np.zeros(6)
+        self.a = np.array([0.01, -0.005, 0.002, 0.0005, -0.0004, 0.0002]) if accelerating else np.zeros(6)
+        self.accelerating = accelerating
 
     def inputs(self, t):
-        return dict(zip(BODY_INPUTS, [*(self.q0 + self.v * t), *self.v]))
+        v = self.v0 + self.a * t
+        return dict(zip(BODY_INPUTS, [*(self.q0 + self.v0 * t + 0.5 * self.a * t * t), *v]))
+
+    def step(self, cable, h, t, change=None):
+        """Sets the inputs at t (one changed by the given amount) and, when accelerating, their input
+        derivatives der(body[1].v*), der(body[1].w*), then steps."""
+        x = self.inputs(t)
+        for name, delta in (change or {}).items():
+            x[name] += delta
+        cable.set(x)
+        if self.accelerating:
+            cable.set_input_derivatives(BODY_INPUTS[6:], 1, list(self.a))
+        cable.do_step(h, t)
 
 
-@pytest.mark.parametrize("h,moving", [(0.5, False), (0.1, False), (0.1, True)])
-def test_body_load_derivatives_equal_finite_differences_of_the_step(make_cable, h, moving):
+@pytest.mark.parametrize("h,moving,accelerating", [(0.5, False, False), (0.1, False, False), (0.1, True, False),
+                                                   (0.1, True, True)])
+def test_body_load_derivatives_equal_finite_differences_of_the_step(make_cable, h, moving, accelerating):
     """fmi2GetDirectionalDerivative of body[1].force/moment with respect to body[1].* over the next step,
     against central differences of fmi2DoStep with the state rolled back. The perturbations (1 mm,
     1e-5 rad, 1 mm/s, 1e-5 rad/s) keep the lines linear; at tensionTolerance 1e-8 the integration noise
@@ -202,14 +217,14 @@ def test_body_load_derivatives_equal_finite_differences_of_the_step(make_cable, 
     exact to 0.05 % (measured), so the test isolates the chain through the body's motion and arms; the
     slow drift adds the angular-velocity terms (measured 0.19 %). A platform moving fast within the
     step is linearized about the step's start (docs/systems_mooring.md: 0.66 % at 0.1 s, 4.5 % at 0.5 s in
-    the surge-heave-pitch motion)."""
+    the surge-heave-pitch motion). With the body's accelerations passed as input derivatives the fairleads'
+    accelerations move with the angles and the angular velocity too."""
     c = make_cable(parameters={**ms.fmu_parameters(DECK), "tensionTolerance": 1e-8})
-    body = Drift(moving)
+    body = Drift(moving, accelerating)
     c.initialize(inputs=body.inputs(0.0))
     t = 0.0
     for _ in range(4):
-        c.set(body.inputs(t))
-        c.do_step(h, t)
+        body.step(c, h, t)
         t += h
     vo = [c.variables[n].valueReference for n in BODY_LOAD]
     D = np.column_stack([c.slave.getDirectionalDerivative(vo, [c.variables[n].valueReference], [1.0])
@@ -221,10 +236,7 @@ def test_body_load_derivatives_equal_finite_differences_of_the_step(make_cable, 
         values = []
         for sign in (1.0, -1.0):
             c.set_state(state, t)
-            x = body.inputs(t)
-            x[name] += sign * eps
-            c.set(x)
-            c.do_step(h, t)
+            body.step(c, h, t, {name: sign * eps})
             values.append(c.get_reals(BODY_LOAD))
         columns.append((values[0] - values[1]) / (2.0 * eps))
     c.set_state(state, t)

@@ -163,3 +163,18 @@ def test_a_refused_coarse_mesh_names_a_finer_one_that_starts_right(fmu_file, lin
     ref = B.reference(case)
     assert abs(fairlead / ref["fairlead"] - 1.0) < 0.01
     assert abs(anchor / ref["anchor"] - 1.0) < 0.01
+
+
+@pytest.mark.parametrize("line_id", [377, 217, 176])
+def test_grading_along_the_line_starts_sections_on_the_seabed_at_10_elements(fmu_file, line_id):
+    """Lines of 2-3 sections whose bottom section lies on the seabed: shared by length, 10 elements
+    leave too few to the hanging part (the state misses the catenary by over 1 % and is refused).
+    With meshGrading 2 the same 10 elements go where the line turns, and it starts within 0.5 % of
+    MoorPy at both ends (the bound asked of 20 elements)."""
+    pytest.importorskip("moorpy")
+    case = B.draw_case(SEED, line_id)
+    run = B.fmu_run(fmu_file, case, 10, grading=2)
+    assert run["ok"], run["message"]
+    ref = B.reference(case)
+    assert abs(run["towTension"] / ref["fairlead"] - 1.0) < 5e-3
+    assert abs(run["endTension"] / ref["anchor"] - 1.0) < 5e-3
