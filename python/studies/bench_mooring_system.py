@@ -4,7 +4,8 @@
 MoorDyn v2 fed the same deck (its Vessel points driven with the fairleads' motion), run via
 scripts/bench_mooring_system.
 
-Each run's error is the RMS difference of the three fairlead tensions from a converged reference (the
+The FMU gets body 1's pose and rates at every communication point and its accelerations as input
+derivatives, as docs/performance.md drives a tow point. Each run's error is the RMS difference of the three fairlead tensions from a converged reference (the
 FMU's finest run), relative to the reference's mean (the worst line); CPU is time.process_time of the
 stepping loop, Python's overhead included as each code pays it (docs/performance.md). MoorDyn runs at
 the deck's NumSegs and dtM times 2 and 4 (dtM divided alike), stepped at every dtM with the exact
@@ -58,12 +59,13 @@ def compute(fmu, quick: bool = False, comm_step: float = 0.1) -> dict:
     bar = ProgressBar(jobs, label="mooring system")
     n, tol = g["reference"]
     bar.update(0, "reference")
-    ref = ms.fmu_motion(fmu, deck, motion, t_end, comm_step, lineFileElements=n, tensionTolerance=tol)
+    ref = ms.fmu_motion(fmu, deck, motion, t_end, comm_step, accelerations=True, lineFileElements=n,
+                        tensionTolerance=tol)
     rows = []
     for j, (n, tol) in enumerate(g["fmu"]):
         bar.update(j + 1, f"FMU {n} elements")
         extra = {"lineFileElements": n, **({"tensionTolerance": tol} if tol else {})}
-        run = _fastest(lambda: ms.fmu_motion(fmu, deck, motion, t_end, comm_step, **extra))
+        run = _fastest(lambda: ms.fmu_motion(fmu, deck, motion, t_end, comm_step, accelerations=True, **extra))
         rows.append({"code": "FMU", "resolution": f"{n} elements per line",
                      "setting": f"tensionTolerance {tol:g}" if tol else "default tolerances", "run": run})
     with tempfile.TemporaryDirectory() as tmp:
