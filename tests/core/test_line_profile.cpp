@@ -162,3 +162,68 @@ TEST(LineProfile, ABuoyOnTheGroundedPartLiftsTheLineAndItTouchesDownAgain) {
     EXPECT_GT(p.lowest_clearance(), -1e-9 * 578.9);  // nowhere below the seabed
     EXPECT_EQ(p.contacts().size(), 3u);              // the touchdown, the lift-off, the touchdown
 }
+
+TEST(LineProfile, ABuoyLiftsAnArchOfAVerySlackLineBetweenTwoTouchdowns) {
+    // A uniform wire rope of 128.05 m, 23 % longer than the chord, from a fairlead 3 m deep to an
+    // anchor 99.5 m away on a 33.5 m seabed; a buoy lifting 2,460 N at s = 102.88 m sits where the
+    // line would rest without it (line 71 of the statics benchmark). MoorPy (two lines and the buoy as
+    // a free point, rigid seabed): 6,569.91 N at the fairlead, 526.84 N at the anchor, 82.52 m grounded.
+    const double w = 197.82729738220632, EA = 469336853.5510821, L = 128.05272891081387;
+    const double lift = 2459.674633295815, sb = 102.87997527160142, seabed = -33.54743067882633;
+    const Vector3d top(0.0, 0.0, -3.0), bottom(-99.51402445951304, 0.0, seabed);
+    const LineProfile p = solved(top, bottom, {{L, w, EA}}, {{sb, -lift}}, true, seabed);
+    EXPECT_NEAR(p.top_force().norm(), 6569.913547768416, 1e-4 * 6569.9);
+    EXPECT_NEAR(p.bottom_force().norm(), 526.8435826872867, 1e-4 * 526.8);
+    EXPECT_NEAR(p.grounded_length(), 82.51588769050176, 1e-4 * L);
+
+    // the end conditions to round-off (Newton's method stops at 1e-11 of the length)
+    Vector3d r, t;
+    p.at(0.0, r, t);
+    EXPECT_LT((r - top).norm(), 1e-10 * L);
+    p.at(L, r, t);
+    EXPECT_LT((r - bottom).norm(), 1e-10 * L);
+
+    // From the top: the line hangs down to a touchdown, rests, lifts off into the buoy's arch, lands
+    // again and rests to the anchor. With no seabed under the arch, its ends horizontal (V = 0) and one
+    // weight per length, the arch carries exactly the buoy's lift, half on either side of it: an
+    // elastic catenary of parameter a = H / w whose closed form gives its length, span and height.
+    const std::vector<double> c = p.contacts();
+    ASSERT_EQ(c.size(), 3u);
+    const double H = p.bottom_force().x();  // the anchor lies in -x of the fairlead
+    ASSERT_GT(H, 0.0);
+    const double a = H / w, half = 0.5 * lift / w;  // the arch's half length
+    EXPECT_NEAR(c[2] - c[1], 2.0 * half, 1e-9 * L);
+    EXPECT_NEAR(sb - c[1], half, 1e-9 * L);
+    Vector3d lo, hi, buoy;
+    p.at(c[1], hi, t);
+    p.at(c[2], lo, t);
+    p.at(sb, buoy, t);
+    const double span = 2.0 * (a * std::asinh(half / a) + H * half / EA);
+    const double height = a * (std::sqrt(1.0 + std::pow(half / a, 2)) - 1.0) + w * half * half / (2.0 * EA);
+    EXPECT_NEAR((hi - lo).norm(), span, 1e-9 * L);
+    EXPECT_NEAR(buoy.z() - seabed, height, 1e-9 * L);
+    // the hanging part above the first touchdown carries its own weight: V at the top = w c[0]
+    EXPECT_NEAR(-p.top_force().z(), w * c[0], 1e-9 * w * L);
+    EXPECT_NEAR(p.top_force().x(), -H, 1e-12 * H);
+    // the anchor is pulled horizontally; the seabed carries the rest of the weight, w per metre of
+    // the grounded length (non-negative everywhere: no point of the line pulls on it, and the buoy
+    // is not among the resting parts)
+    EXPECT_NEAR(p.bottom_force().z(), 0.0, 1e-9 * w * L);
+    EXPECT_NEAR(w * L - lift + p.top_force().z(), w * p.grounded_length(), 1e-9 * w * L);
+    EXPECT_NEAR(p.grounded_length(), (L - c[2]) + (c[1] - c[0]), 1e-9 * L);
+    EXPECT_GT(sb, c[1]);
+    EXPECT_LT(sb, c[2]);
+    for (double s : c) {  // the line leaves the seabed tangentially at every contact
+        p.at(s, r, t);
+        EXPECT_NEAR(r.z(), seabed, 1e-9 * L);
+        EXPECT_LT(std::abs(t.z()), 1e-9);
+    }
+    // nowhere below the seabed
+    EXPECT_GT(p.lowest_clearance(), -1e-9 * L);
+    double lowest = INFINITY;
+    for (int k = 0; k <= 4000; ++k) {
+        p.at(L * k / 4000.0, r, t);
+        lowest = std::min(lowest, r.z() - seabed);
+    }
+    EXPECT_GT(lowest, -1e-9 * L);
+}
