@@ -491,8 +491,7 @@ bool CableSimulation::verify_statics(std::string& error) const {
         std::snprintf(text, sizeof text,
                       "the static equilibrium found does not hold together at the anchor: the force on the anchor "
                       "(%.6g N) and the line's axial tension there (%.6g N) differ by %.2f %%; refusing it as a "
-                      "start (the mesh does not resolve the line near its anchor; a buoy that lifts the line between "
-                      "two touchdowns is a known case the static solver does not yet solve)",
+                      "start (the mesh does not resolve the line near its anchor)",
                       outputs_.endTension, axial, 100.0 * std::abs(outputs_.endTension - axial) / outputs_.endTension);
         error = text;
         return false;
