@@ -326,3 +326,46 @@ def test_chains_with_clump_weights_in_motion_match_moordyn(fmu_file, tmp_path):
     settled = ms.read_system_deck(refined_deck_file(ms.settled_deck(path, tmp_path), 2, tmp_path))
     theirs = ms.moordyn_motion(settled, motion, 50.0)
     assert np.all(ms.rms_difference(ours, theirs)["rel_mean"] < 1e-2)
+
+
+def test_vessel_points_of_a_deck_with_bodies_follow_the_point_inputs(make_cable, tmp_path):
+    """With a BODIES section the deck's Vessel points are coupled points driven by point[k].* (k their ID):
+    placed and moved where body 1 would carry them, the lines are the same bit for bit, and the points'
+    forces add up to the body's force."""
+    text = ms.OC4.read_text().replace(
+        "---------------------- LINES", "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* "
+        "I* Volume CdA* Ca*\n(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n"
+        "1 Coupled 0 0 0 0 0 0 0 0 0 0 0 0\n---------------------- LINES", 1)
+    path = tmp_path / "points.dat"
+    path.write_text(text)
+    offset, velocity = np.array([3.0, -1.0, 0.5]), np.array([0.2, 0.1, -0.05])
+    points = make_cable(parameters={**ms.fmu_parameters(DECK), "lineFile": str(path)})
+    body = make_cable(parameters=ms.fmu_parameters(DECK))
+
+    def point_inputs(t):
+        x = {}
+        for k, r in zip((4, 5, 6), DECK.fairleads):
+            p = offset + velocity * t + r
+            x.update({f"point[{k}].{c}": float(v) for c, v in zip("xyz", p)})
+            x.update({f"point[{k}].v{c}": float(v) for c, v in zip("xyz", velocity)})
+        return x
+
+    def body_inputs(t):
+        p = offset + velocity * t
+        return {**{f"body[1].{c}": float(v) for c, v in zip("xyz", p)},
+                **{f"body[1].v{c}": float(v) for c, v in zip("xyz", velocity)}}
+
+    points.initialize(inputs=point_inputs(0.0))
+    body.initialize(inputs=body_inputs(0.0))
+    lines = [f"line[{k}].{q}" for k in (1, 2, 3) for q in ("fairleadTension", "anchorTension")]
+    for k in range(4):
+        if k:
+            points.set(point_inputs(0.5 * (k - 1)))
+            points.do_step(0.5)
+            body.set(body_inputs(0.5 * (k - 1)))
+            body.do_step(0.5)
+        assert points.get_reals(lines).tobytes() == body.get_reals(lines).tobytes()
+        total = sum(np.array([points.get(f"point[{j}].force.{c}") for c in "xyz"]) for j in (4, 5, 6))
+        expected = np.array([body.get(f"body[1].force.{c}") for c in "xyz"])
+        assert np.allclose(total, expected, rtol=0.0, atol=1e-9 * np.linalg.norm(expected))
+        assert points.get("body[1].force.z") == 0.0  # no line on the body
