@@ -46,8 +46,9 @@ bool MooringSystem::build(std::string& error) {
         UCParams p;
         if (!mooring_line_params(deck_, static_cast<int>(k), base_, p, error)) return false;
         error = check_params(p);
-        if (!error.empty()) {
-            error = "line " + std::to_string(deck_.lines[k].id) + ": " + error;
+        if (!error.empty()) {  // the deck's line of the file, as the reader names it
+            error = "line " + std::to_string(deck_.lines[k].row) + ": line " + std::to_string(deck_.lines[k].id) +
+                    ": " + error;
             return false;
         }
         lines_.push_back(std::make_unique<CableSimulation>(p));
@@ -151,7 +152,7 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
     for (size_t k = 0; k < lines_.size(); ++k) {
         line_inputs(static_cast<int>(k), in, li);
         if (!lines_[k]->initialize(t0, li, error)) {
-            error = "line " + std::to_string(deck_.lines[k].id) + ": " + error;
+            error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
             return false;
         }
     }
@@ -175,7 +176,7 @@ bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& er
     for (size_t k = 0; k < lines_.size(); ++k) {
         line_inputs(static_cast<int>(k), in, li);
         if (!lines_[k]->step(t, h, li, error)) {
-            error = "line " + std::to_string(deck_.lines[k].id) + ": " + error;
+            error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
             return false;
         }
     }
@@ -198,7 +199,7 @@ std::string MooringSystem::take_event() {
     events.swap(event_);
     for (size_t k = 0; k < lines_.size(); ++k) {
         const std::string e = lines_[k]->take_event();
-        if (!e.empty()) events += (events.empty() ? "" : "; ") + ("line " + std::to_string(deck_.lines[k].id) + ": " + e);
+        if (!e.empty()) events += (events.empty() ? "" : "; ") + ("mooring line " + std::to_string(deck_.lines[k].id) + ": " + e);
     }
     return events;
 }
@@ -328,7 +329,7 @@ bool MooringSystem::body_stiffness(int b, const UCInputs& in, double K[36], std:
             Vec3 fp, mp, fm, mm;
             if (!static_body_load(static_cast<int>(k), b, qp, in, fp, mp, why) ||
                 !static_body_load(static_cast<int>(k), b, qm, in, fm, mm, why)) {
-                if (why) *why = "line " + std::to_string(l.id) + ": " + *why;
+                if (why) *why = "mooring line " + std::to_string(l.id) + ": " + *why;
                 return false;
             }
             for (int i = 0; i < 3; ++i) {
@@ -435,7 +436,7 @@ bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error)
                 seed[15 + i] = T[1](6 + i, j);
             }
             if (!lines_[k]->interface_derivative(seed, out, error)) {
-                error = "line " + std::to_string(l.id) + ": " + error;
+                error = "mooring line " + std::to_string(l.id) + ": " + error;
                 return false;
             }
             for (int i = 0; i < 6; ++i) lineD(i, j) = out[i];
@@ -528,7 +529,7 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     in += sizeof lastInputs;
     for (size_t k = 0; k < lines_.size(); ++k) {
         if (!lines_[k]->restore_state(in, header.lineSize[k], error)) {
-            error = "line " + std::to_string(deck_.lines[k].id) + ": " + error;
+            error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
             return false;
         }
         in += header.lineSize[k];

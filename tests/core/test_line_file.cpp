@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cable_api.h"
+#include "deck_mutation.h"
 #include "line_file.h"
 
 namespace {
@@ -498,42 +499,12 @@ TEST(LineFile, TwelveColumnPointsWithZeroForcesAreRead) {
 // ---- robustness: random truncations and mutations of a valid deck (fixed seed) never crash the reader;
 // a refusal always says where or what.
 
-namespace {
-
-std::string mutate(std::string deck, std::mt19937& rng) {
-    auto pick = [&](size_t n) { return std::uniform_int_distribution<size_t>(0, n - 1)(rng); };
-    static const char kBytes[] = {'\0', '#', '-', '|', ' ', '\t', '\n', '\r', '0', '9', '.', 'e', '+', 'x', '\xff'};
-    const int edits = 1 + static_cast<int>(pick(4));
-    for (int k = 0; k < edits && !deck.empty(); ++k) {
-        const size_t at = pick(deck.size());
-        switch (pick(6)) {
-            case 0: deck.resize(at); break;                                         // truncate
-            case 1: deck[at] = kBytes[pick(sizeof kBytes)]; break;                  // replace a byte
-            case 2: deck.erase(at, 1 + pick(20)); break;                            // delete a run
-            case 3: deck.insert(at, deck.substr(pick(deck.size()), 1 + pick(80))); break;  // duplicate text
-            case 4: deck.insert(at, 1, static_cast<char>(pick(256))); break;        // insert any byte
-            default: {                                                              // swap two lines
-                const size_t a = deck.rfind('\n', at), b = deck.find('\n', at);
-                if (a != std::string::npos && b != std::string::npos && b + 1 < deck.size()) {
-                    const size_t c = deck.find('\n', b + 1);
-                    if (c != std::string::npos) {
-                        const std::string first = deck.substr(a + 1, b - a), second = deck.substr(b + 1, c - b);
-                        deck.replace(a + 1, c - a, second + first);
-                    }
-                }
-            }
-        }
-    }
-    return deck;
-}
-
-}  // namespace
 
 TEST(LineFileFuzz, TruncationsAndMutationsOfAValidDeckNeverCrash) {
     std::mt19937 rng(20240607u);
     int accepted = 0, refused = 0;
     for (int i = 0; i < 20000; ++i) {
-        const std::string deck = mutate(i % 2 ? kChainWireChain : kSingleChain, rng);
+        const std::string deck = mutate_deck(i % 2 ? kChainWireChain : kSingleChain, rng);
         UCParams p;
         uc_params_default(&p);
         p.lineFileElements = static_cast<int>(rng() % 3) * 7;

@@ -3,12 +3,15 @@
 // lines' forces, and an exact state save/restore of the whole system.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <cstring>
 #include <string>
 #include <vector>
 
 #include "cable_api.h"
+#include "deck_mutation.h"
 #include "line_file.h"
 #include "mooring_system.h"
 
@@ -192,6 +195,35 @@ TEST(MooringSystem, ASavedStateContinuesBitForBit) {
     for (int k = 5; k < 10; ++k) step(k);
     EXPECT_EQ(std::memcmp(&first, &system.outputs(), sizeof first), 0);
     EXPECT_FALSE(system.restore_state(state.data(), state.size() - 8, error));
+}
+
+TEST(MooringDeckFuzz, TruncationsAndMutationsOfASystemDeckNeverCrash) {
+    // a refusal always names the deck's line or what is missing; an accepted deck makes its system
+    std::mt19937 rng(20261126u);
+    int accepted = 0, refused = 0;
+    const UCParams p = system_parameters();
+    for (int i = 0; i < 3000; ++i) {
+        const std::string deck = mutate_deck(kPlatform, rng);
+        char notes[2048], msg[512];
+        msg[0] = '\0';
+        UCCable* cable = uc_create_system(&p, deck.data(), deck.size(), notes, sizeof notes, msg, sizeof msg);
+        if (cable != nullptr) {
+            ++accepted;
+            uc_free(cable);
+            continue;
+        }
+        ++refused;
+        const std::string m = msg;
+        ASSERT_FALSE(m.empty()) << "iteration " << i;
+        if (m.rfind("line ", 0) == 0) {  // "line <n>: ..." with n a line of the deck
+            const int line = std::atoi(m.c_str() + 5);
+            const int lines = 1 + static_cast<int>(std::count(deck.begin(), deck.end(), '\n') +
+                                                   std::count(deck.begin(), deck.end(), '\r'));
+            ASSERT_TRUE(line >= 1 && line <= lines) << m << " (deck of " << lines << " lines), iteration " << i;
+        }
+    }
+    EXPECT_GT(accepted, 100);
+    EXPECT_GT(refused, 100);
 }
 
 }  // namespace
