@@ -3,6 +3,8 @@
 // two lines; one to four edits.
 #pragma once
 
+#include <algorithm>
+#include <cstdlib>
 #include <random>
 #include <string>
 
@@ -31,4 +33,15 @@ inline std::string mutate_deck(std::string deck, std::mt19937& rng) {
         }
     }
     return deck;
+}
+
+// A refusal "line <n>: ..." names a line of the deck (1 <= n <= its lines): true, or false for another
+// message (which the caller judges) with *named false; false with *named true for a line out of the deck.
+inline bool names_a_line_of(const std::string& message, const std::string& deck, bool* named) {
+    *named = message.rfind("line ", 0) == 0;
+    if (!*named) return false;
+    const int line = std::atoi(message.c_str() + 5);
+    const int lines = 1 + static_cast<int>(std::count(deck.begin(), deck.end(), '\n') +
+                                           std::count(deck.begin(), deck.end(), '\r'));
+    return line >= 1 && line <= lines;
 }
