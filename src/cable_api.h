@@ -30,6 +30,7 @@ extern "C" {
 #define UC_BOTTOM_ANCHORED 1
 #define UC_BOTTOM_TOWED_BODY 2
 #define UC_BOTTOM_EXTERNAL 3
+#define UC_BOTTOM_PROXY 4
 
 /* torqueMode values */
 #define UC_TORQUE_FREE 0

@@ -57,6 +57,12 @@ struct Loads {
     Vec3 endLoadVelocity = Vec3::Zero();
     Mat3 endLoadDamping = Mat3::Zero();
     Vec3 endCouple = Vec3::Zero();
+    // bottomEnd 4: the estimate of the external body's other forces, applied to the proxy at the far end.
+    Vec3 proxyForce = Vec3::Zero();
+    // Static solver only (bottomEnd 4): a spring of this stiffness [N/m] holds the far end at
+    // endSpringAnchor, so that the statics put the proxy where the external body is.
+    double endSpring = 0.0;
+    Vec3 endSpringAnchor = Vec3::Zero();
     double torque = 0.0;  // H [N.m] (0 unless torsion is enabled)
     // Caps the axial stiffness factor of every strain mode (static solver only: equilibrium is
     // first found on a soft cable, whose large rotations do not turn into huge axial residuals,
@@ -81,6 +87,12 @@ struct ElementForces {
 struct PointBody {
     double mass = 0.0, volume = 0.0, addedMass = 0.0, CdA = 0.0;
     bool fluidInertia = false;  // accelerating water pushes it (enableBodyFluidInertia)
+    // An added-mass matrix (Earth frame) on top of addedMass I; used only when anisotropic, so a body
+    // without one computes exactly as before.
+    Mat3 addedMassMatrix = Mat3::Zero();
+    bool anisotropic = false;
+    // (mass + addedMass) I + addedMassMatrix: the inertia of its translation.
+    Mat3 inertia() const;
 };
 
 // Residual terms of a point body at position r (velocity rd, acceleration rdd) in the water: inertia
@@ -211,6 +223,8 @@ public:
     const SeabedProps& seabed() const { return sections_[0].seabed; }
     const CurrentProfile& current_profile() const { return profile_; }
     const SeaState& sea() const { return sea_; }
+    bool far_end_carries_body() const;  // the internal towed body or the proxy of an external one
+    const PointBody& body() const { return body_; }
     bool far_end_prescribed() const;  // anchored or external
     // The anchor's position: anchor.x/y/z, or on the seabed the height the line rests at there.
     const Vec3& anchor() const { return anchor_; }

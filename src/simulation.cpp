@@ -21,7 +21,7 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 9;
+constexpr std::uint32_t kStateVersion = 10;
 
 // A driven end in a saved state.
 struct EndHeader {
@@ -51,6 +51,7 @@ struct StateHeader {
     // the mesh graded by the static profile for the tow point meshTow (meshGraded 1)
     std::int32_t meshGraded, reserved;
     double meshTow[3], meshFar[3];
+    double proxyForce[3];  // bottomEnd 4: the estimate of the external body's other forces
 };
 
 IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
@@ -165,7 +166,7 @@ double tension_scale(const CableModel& model, const UCOutputs& initial) {
     const LineScales& line = model.line();
     double T = initial.towTension;
     for (double t : initial.tension) T = std::max(T, t);
-    double body = p.bottomEnd == UC_BOTTOM_TOWED_BODY ? p.bodyMass : 0.0;
+    double body = model.far_end_carries_body() ? p.bodyMass : 0.0;
     for (const NodeAttachment& at : model.attachments()) body += at.body.mass;
     const double kPi = 3.14159265358979323846;
     return std::max({T, (line.massPerLength * line.length + body) * p.gravity, kPi * kPi * line.EI / (line.length * line.length),
@@ -349,7 +350,7 @@ bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
     std::vector<double> X(model_.n_global());
     model_.straight_line(towPoint, vec(p.initialDirection), X.data());
     const bool profile = profileApplies_ && profile_guess(X.data());
-    if (model_.far_end_prescribed() && !profile) {
+    if (far_end_held_at_start() && !profile) {
         // Chord from the tow point to the far end, sagging in its vertical plane when the line is
         // slack (a parabola whose length is about the cable length).
         const Vec3 chord = farPoint - towPoint;
@@ -365,7 +366,7 @@ bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
             Eigen::Map<Vec3>(X.data() + 6 * i + 3) = drdxi.normalized() * std::max(D / L, 1.0);
         }
     }
-    if (p.enableSeabed && !model_.far_end_prescribed()) {
+    if (p.enableSeabed && !far_end_held_at_start()) {
         // A free end that reaches the seabed: the straight line bends there and trails along it
         // behind the tow (a line clamped to the seabed instead piles its end into one point, from
         // which the solver found folded equilibria).
@@ -564,7 +565,10 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     loads_.tow = TowTrajectory::at_rest_in_time(tow_.position, tow_.velocity, tow_.acceleration, t0);
     end_.reset(vec(in.end), vec(in.endVelocity), Vec3::Zero(), false);
     loads_.end = TowTrajectory::at_rest_in_time(end_.position, end_.velocity, end_.acceleration, t0);
-    Vec3 farPoint = p.bottomEnd == UC_BOTTOM_EXTERNAL ? end_.position : vec(p.anchor);
+    const bool proxy = p.bottomEnd == UC_BOTTOM_PROXY;
+    Vec3 farPoint = p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy ? end_.position : vec(p.anchor);
+    loads_.proxyForce.setZero();
+    loads_.endSpring = 0.0;
     if (!check_geometry(farPoint, error)) return false;
     // An anchored line, or one whose far end is held at rest, starts from its static profile.
     profileApplies_ = p.bottomEnd == UC_BOTTOM_ANCHORED ||
@@ -594,7 +598,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     // A steady tow only when nothing holds the far end back: free end, internal body, or an
     // external end moving with the tow point. Otherwise the equilibrium is at rest.
     const bool steadyTow = p.bottomEnd == UC_BOTTOM_FREE || p.bottomEnd == UC_BOTTOM_TOWED_BODY ||
-                           (p.bottomEnd == UC_BOTTOM_EXTERNAL && (end_.velocity - tow_.velocity).norm() <= 1e-12);
+                           ((p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy) && (end_.velocity - tow_.velocity).norm() <= 1e-12);
     if (p.initMode == UC_INIT_EQUILIBRIUM && steadyTow) {
         // Steady tow: every node moves with the tow point, tangents do not turn.
         for (int g = 0; g < model_.n_global(); ++g) {
@@ -603,7 +607,9 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         }
     }
     if (p.initMode == UC_INIT_EQUILIBRIUM && !statics_applies(farPoint, error)) return false;
-    if (p.initMode == UC_INIT_EQUILIBRIUM) {
+    if (p.initMode == UC_INIT_EQUILIBRIUM && proxy) {
+        if (!proxy_statics(t0, v, fromProfile, error)) return false;
+    } else if (p.initMode == UC_INIT_EQUILIBRIUM) {
         const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile);
         if (!statics.converged) {
             error = statics.message;
@@ -642,6 +648,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         winchRate_ = y_[1];
     }
     if (sn_.area > 0.0) rainflow_.add(outputs_.towTension, sn_);
+    if (proxy) proxy_output(0.0, Vec3::Zero(), Vec3::Zero(), in);
     outputs_.towTensionMax = outputs_.towTensionMin = outputs_.towTension;
     tensionScale_ = tension_scale(model_, outputs_);
     if (!set_integrator_tolerances(error)) return false;
@@ -745,6 +752,7 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         restartPending_ = false;
     }
     const double tEnd = time_ + h;
+    const Vec3 proxyPosition = vec(outputs_.endPosition), proxyVelocity = vec(outputs_.endVelocity);
     stepTensionMax_ = stepTensionMin_ = outputs_.towTension;  // the tension at the step's start
     const RainflowCounter rainflowAtStart = rainflow_;
     winchTension_ = in.winchTension;
@@ -782,6 +790,7 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     if (externalEnd) end_.advance(loads_.end, endVelocityInput, endAcceleration, in.endAccelerationGiven != 0);
     lastStepSize_ = h;
     update_outputs();
+    if (model_.params().bottomEnd == UC_BOTTOM_PROXY) proxy_output(h, proxyPosition, proxyVelocity, in);
     outputs_.towTensionMax = std::max(stepTensionMax_, outputs_.towTension);
     outputs_.towTensionMin = std::min(stepTensionMin_, outputs_.towTension);
     warn_of_compression();
@@ -1240,6 +1249,71 @@ void CableSimulation::free_state(std::vector<double>& q, std::vector<double>& v,
     }
 }
 
+bool CableSimulation::far_end_held_at_start() const {
+    const UCParams& p = model_.params();
+    return model_.far_end_prescribed() || (p.bottomEnd == UC_BOTTOM_PROXY && p.initMode == UC_INIT_EQUILIBRIUM);
+}
+
+// The spring is ten times as stiff as the stiffest element's axial spring: the equilibrium found with
+// it is well conditioned, and the end stands off the body's position by a tenth of what the cable
+// would stretch under the same force. The anchor is then moved by that offset and the statics solved
+// again from there (each pass takes the offset down by that factor, to round-off in a few passes).
+bool CableSimulation::proxy_statics(double t0, const std::vector<double>& v, bool fromProfile, std::string& error) {
+    constexpr int kPasses = 8;
+    double shortest = model_.element_length(0);
+    for (const ElementRun& run : model_.runs()) shortest = std::min(shortest, run.elementLength);
+    const Vec3 target = end_.position;
+    loads_.endSpring = 10.0 * model_.line().EA / shortest;
+    loads_.endSpringAnchor = target;
+    const int gN = model_.end_offset();
+    const double tolerance = 1e-9 * std::max(model_.line().length, target.norm());
+    for (int pass = 0; pass < kPasses; ++pass) {
+        const StaticsResult statics =
+            solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile || pass > 0);
+        if (!statics.converged) {
+            loads_.endSpring = 0.0;
+            error = statics.message;
+            return false;
+        }
+        std::vector<double> zero(model_.n_free(), 0.0);
+        model_.expand(q_.data(), v.data(), zero.data(), loads_, t0, X_.data(), Xd_.data(), Xdd_.data());
+        const Vec3 offset = Eigen::Map<const Vec3>(X_.data() + gN) - target;
+        if (offset.norm() <= tolerance) break;
+        loads_.endSpringAnchor -= offset;
+    }
+    // The spring's force becomes the proxy's estimated force: the residual, and so the equilibrium,
+    // stay exactly as solved.
+    loads_.proxyForce = -loads_.endSpring * (Eigen::Map<const Vec3>(X_.data() + gN) - loads_.endSpringAnchor);
+    loads_.endSpring = 0.0;
+    return true;
+}
+
+// The proxy's momentum over the step, M (v1 - v0) = h (mean cable force + proxy weight + estimate),
+// gives the mean cable force; with the estimate right and the body on the proxy, that force moves
+// the body as the proxy moved. The tracking force corrects what remains, at a fraction of the
+// one-step gains: T = M [alpha (e + h e' + d) / h^2 + beta e' / h], e and e' the proxy's position and
+// velocity less the body's at the step's start, d the proxy's departure from a trapezoidal path over
+// the step. What the body needs beyond the cable force in the long run is the estimate's error:
+// the estimate integrates the tracking force (a low-pass of time constant proxy.filterTime).
+// docs/cosimulation.md derives the gains' stability. h = 0: at initialization (the cable force alone).
+void CableSimulation::proxy_output(double h, const Vec3& p0, const Vec3& v0, const UCInputs& in) {
+    const UCParams& p = model_.params();
+    const PointBody& body = model_.body();
+    const Vec3 weight(0.0, 0.0, -(body.mass - model_.fluid().rho * body.volume) * model_.fluid().gravity);
+    if (h > 0.0) {
+        const Mat3 M = body.inertia();
+        const Vec3 p1 = vec(outputs_.endPosition), v1 = vec(outputs_.endVelocity);
+        const Vec3 meanCable = M * (v1 - v0) / h - weight - loads_.proxyForce;
+        const Vec3 e = p0 - vec(in.end), ev = v0 - vec(in.endVelocity);
+        const Vec3 departure = p1 - p0 - 0.5 * h * (v0 + v1);
+        const Vec3 tracking = M * (p.proxyTrackingGain * (e + h * ev + departure) / (h * h) + p.proxyTrackingDamping * ev / h);
+        const Vec3 force = meanCable + tracking;
+        for (int k = 0; k < 3; ++k) outputs_.endForce[k] = force[k];
+        loads_.proxyForce -= h / (p.proxyFilterTime + h) * tracking;
+    }
+    for (int k = 0; k < 3; ++k) outputs_.bodyForceEstimate[k] = loads_.proxyForce[k] + weight[k];
+}
+
 void CableSimulation::update_outputs() {
     expand_integrator_state(time_, y_.data(), yp_.data());
     model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), &forces_);
@@ -1293,6 +1367,7 @@ void CableSimulation::save_state(void* buffer) {
     for (int k = 0; k < 3; ++k) {
         header.meshTow[k] = meshTow_[k];
         header.meshFar[k] = meshFar_[k];
+        header.proxyForce[k] = loads_.proxyForce[k];
     }
     historyBuffer_.assign(integrator_->history_size(), 0.0);
     if (history) integrator_->save_history(historyBuffer_.data());
@@ -1372,6 +1447,7 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     set_winch_time(time_);
     from_header(header.tow, tow_);
     from_header(header.end, end_);
+    loads_.proxyForce = vec(header.proxyForce);
     Vec3* frames[4] = {&twistRef_.topTangent, &twistRef_.topNormal, &twistRef_.endTangent, &twistRef_.endNormal};
     for (int f = 0; f < 4; ++f) *frames[f] = vec(header.twistRef + 3 * f);
     lastBeta_ = header.lastBeta;

@@ -84,6 +84,15 @@ private:
     void set_environment(const UCInputs& in);
     // True where the guess is the line's static profile (near the equilibrium).
     bool initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
+    // The far end is held at the start: anchored, external, or the proxy of an external body whose
+    // statics hold it where the body is (bottomEnd 4, initMode 0).
+    bool far_end_held_at_start() const;
+    // bottomEnd 4, initMode 0: the statics with the proxy held at the body's position by a spring,
+    // whose force then becomes the estimate of the body's other forces (the start is in equilibrium).
+    bool proxy_statics(double t0, const std::vector<double>& v, bool fromProfile, std::string& error);
+    // bottomEnd 4, after a step from the proxy's state (p0, v0): the force on the external body
+    // (the proxy's mean cable force plus the tracking force) and the estimate's update.
+    void proxy_output(double h, const Vec3& p0, const Vec3& v0, const UCInputs& in);
     // The static profile of the line from the tow point to its held far end (src/line_profile.h),
     // bending, current and waves left out; false where it does not apply, with the reason in why.
     bool static_profile(const Vec3& towPoint, const Vec3& farPoint, LineProfile& profile, bool& towOnTop,
@@ -166,6 +175,7 @@ private:
     double time_ = 0.0;
     DrivenEnd tow_;             // the tow point
     DrivenEnd end_;             // the far end of bottomEnd 3 (external)
+    // bottomEnd 4: the estimate of the external body's other forces is loads_.proxyForce (saved)
     double lastStepSize_ = 0.0; // of the previous step (0: no input history yet)
     TwistReference twistRef_;  // end frames at initialization (torqueMode 2)
     double lastBeta_ = 0.0;    // geometric twist at the last evaluation, for unwrapping past +-pi

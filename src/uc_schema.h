@@ -36,6 +36,12 @@ typedef struct UCAttachment {
     double CdA; /* attachment[k].CdA [m2]: drag area (0.5 rho CdA |u| u on the relative velocity) */
 } UCAttachment;
 
+typedef struct UCBodyAddedMassMatrix {
+    double x[3]; /* body.addedMassMatrix.xx, body.addedMassMatrix.xy, body.addedMassMatrix.xz [kg]: row x of the towed body's added-mass matrix (`bottomEnd` 2 and 4), Earth frame, added to `body.addedMass` times the identity; all zero (the default): the scalar alone. (m + m_a) I + A must be symmetric positive definite */
+    double y[3]; /* body.addedMassMatrix.yx, body.addedMassMatrix.yy, body.addedMassMatrix.yz [kg]: row y of the towed body's added-mass matrix (`bottomEnd` 2 and 4), Earth frame, added to `body.addedMass` times the identity; all zero (the default): the scalar alone. (m + m_a) I + A must be symmetric positive definite */
+    double z[3]; /* body.addedMassMatrix.zx, body.addedMassMatrix.zy, body.addedMassMatrix.zz [kg]: row z of the towed body's added-mass matrix (`bottomEnd` 2 and 4), Earth frame, added to `body.addedMass` times the identity; all zero (the default): the scalar alone. (m + m_a) I + A must be symmetric positive definite */
+} UCBodyAddedMassMatrix;
+
 typedef struct UCEndLoadDamping {
     double x[3]; /* endLoadDamping.xx, endLoadDamping.xy, endLoadDamping.xz [N.s/m]: row x of the damping matrix D = -∂endLoad/∂v: over a step the far end carries endLoad - D (v - `endLoadVelocity`) at its current velocity v, implicitly integrated (a partner body's drag stays stable at any step) */
     double y[3]; /* endLoadDamping.yx, endLoadDamping.yy, endLoadDamping.yz [N.s/m]: row y of D */
@@ -71,7 +77,7 @@ typedef struct UCParams {
     double currentProfileY[UC_CURRENT_PROFILE_ROWS]; /* currentProfile.y[k] [m/s]: current velocity of row k */
     int topEnd; /* topEnd: tow point: 0 hinged (tangent free), 1 clamped to `topTangent.*` */
     double topTangent[3]; /* topTangent.x/y/z: clamped top direction (normalized internally; `topEnd` = 1) */
-    int bottomEnd; /* bottomEnd: far end: 0 free, 1 anchored at `anchor.*`, 2 internal towed body (`body.*`), 3 external body: the far end follows the `end.*` inputs and `endForce.*` is the force on that body */
+    int bottomEnd; /* bottomEnd: far end: 0 free, 1 anchored at `anchor.*`, 2 internal towed body (`body.*`), 3 external body: the far end follows the `end.*` inputs and `endForce.*` is the force on that body, 4 external body that integrates itself: the cable integrates a proxy of it (`body.mass`, `body.addedMass`, `body.addedMassMatrix.*`, `body.volume`; its other forces estimated from the `end.*` inputs) and `endForce.*` is the force that makes the body follow the proxy ([docs/cosimulation.md](docs/cosimulation.md)) */
     double anchor[3]; /* anchor.x/y/z [m]: anchor position (`bottomEnd` = 1) */
     double bodyMass; /* body.mass [kg]: mass of the internal towed body (`bottomEnd` = 2) */
     double bodyVolume; /* body.volume [m3]: displaced volume of the towed body */
@@ -113,6 +119,10 @@ typedef struct UCParams {
     double seabedContactSpacing; /* seabedContactSpacing [m]: largest distance along the cable between the points at which the seabed contact is integrated, on elements whose five axial points are farther apart (3-point Gauss rules on up to 16 equal intervals, at most 48 points per element); 0: the five axial points of every element. A coarse mesh on the seabed wants about the length of cable over which a touchdown crosses the contact's smoothing band (5 % of the diameter), sqrt(2 delta / kappa) at a touchdown of curvature kappa: 1-5 m on usual moorings ([docs/model.md](docs/model.md), contact sampling) */
     int solverMaxOrder; /* solver.maxOrder: highest order of the time integrator's variable-order BDF formulas (1–5). 5 (the default) takes the fewest steps where the tolerance is tight; orders 3–5 are not A-stable, so at a loose tolerance lightly damped fast modes (a stiff cable's axial and bending ringing) can hold the steps below the size the error test asks for, and 2, the highest A-stable order, then takes fewer steps for the same answer (the stiff power cable at tensionTolerance 0.1: 25–35 % fewer); 1 is backward Euler, which damps the most ([docs/error_control.md](docs/error_control.md), the integrator's order) */
     double winchMaxAcceleration; /* winch.maxAcceleration [m/s2]: largest acceleration and deceleration of the winch drum: with `winchMode` 1 it ramps towards `winch.rate` and brakes in time to stop at `winch.minLength`/`winch.maxLength`; with `winchMode` 2 the commanded rate stays within that braking envelope (the drum's response is `winch.timeConstant`'s); 0 = no limit (the rate may change at once at a communication point) ([docs/winch.md](docs/winch.md)) */
+    UCBodyAddedMassMatrix bodyAddedMassMatrix;
+    double proxyTrackingGain; /* proxy.trackingGain: `bottomEnd` 4: position gain α of the tracking force, as a fraction of M/h² (M the proxy's inertia, h the communication step); 1 with `proxy.trackingDamping` 0.5 would put the body on the proxy in one step, the default 0.1 with 0.3 stays stable under Jacobi with ±50 % inertia error ([docs/cosimulation.md](docs/cosimulation.md)) */
+    double proxyTrackingDamping; /* proxy.trackingDamping: `bottomEnd` 4: velocity gain β of the tracking force, as a fraction of M/h */
+    double proxyFilterTime; /* proxy.filterTime [s]: `bottomEnd` 4: time constant of the low-pass that estimates the external body's other forces (drag, lift, thrust, weight and buoyancy beyond the proxy's) from the tracking force */
 } UCParams;
 
 typedef struct UCInputs {
@@ -176,6 +186,7 @@ typedef struct UCOutputs {
     double fatigueDamage; /* fatigueDamage: Miner's sum of the tow-tension cycles so far: streaming rainflow count of the tension after every integrator step with the `fatigue.*` S–N curve (0 when `fatigue.area` = 0) */
     double waveElevation; /* waveElevation [m]: elevation of the sea surface at the tow point's horizontal position (0 in calm water) */
     double unstretchedLength; /* unstretchedLength [m]: deployed unstretched length of the line (changes with the winch) */
+    double bodyForceEstimate[3]; /* bodyForceEstimate.x/y/z [N]: the external body's forces other than the cable's (weight and buoyancy included) as the proxy far end estimates them (`bottomEnd` 4; 0 otherwise) */
 } UCOutputs;
 
 /* X(vr, name, TYPE, CAUSALITY, member): every variable in value-reference order; TYPE is REAL, INTEGER, BOOLEAN or STRING (a NUL-terminated char array), CAUSALITY PARAMETER, INPUT or OUTPUT, member the field of UCParams, UCInputs or UCOutputs */
@@ -425,6 +436,18 @@ typedef struct UCOutputs {
     X(243, "seabedContactSpacing", REAL, PARAMETER, seabedContactSpacing) \
     X(244, "solver.maxOrder", INTEGER, PARAMETER, solverMaxOrder) \
     X(245, "winch.maxAcceleration", REAL, PARAMETER, winchMaxAcceleration) \
+    X(246, "body.addedMassMatrix.xx", REAL, PARAMETER, bodyAddedMassMatrix.x[0]) \
+    X(247, "body.addedMassMatrix.xy", REAL, PARAMETER, bodyAddedMassMatrix.x[1]) \
+    X(248, "body.addedMassMatrix.xz", REAL, PARAMETER, bodyAddedMassMatrix.x[2]) \
+    X(249, "body.addedMassMatrix.yx", REAL, PARAMETER, bodyAddedMassMatrix.y[0]) \
+    X(250, "body.addedMassMatrix.yy", REAL, PARAMETER, bodyAddedMassMatrix.y[1]) \
+    X(251, "body.addedMassMatrix.yz", REAL, PARAMETER, bodyAddedMassMatrix.y[2]) \
+    X(252, "body.addedMassMatrix.zx", REAL, PARAMETER, bodyAddedMassMatrix.z[0]) \
+    X(253, "body.addedMassMatrix.zy", REAL, PARAMETER, bodyAddedMassMatrix.z[1]) \
+    X(254, "body.addedMassMatrix.zz", REAL, PARAMETER, bodyAddedMassMatrix.z[2]) \
+    X(255, "proxy.trackingGain", REAL, PARAMETER, proxyTrackingGain) \
+    X(256, "proxy.trackingDamping", REAL, PARAMETER, proxyTrackingDamping) \
+    X(257, "proxy.filterTime", REAL, PARAMETER, proxyFilterTime) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -631,6 +654,9 @@ typedef struct UCOutputs {
     X(2167, "fatigueDamage", REAL, OUTPUT, fatigueDamage) \
     X(2168, "waveElevation", REAL, OUTPUT, waveElevation) \
     X(2169, "unstretchedLength", REAL, OUTPUT, unstretchedLength) \
+    X(2170, "bodyForceEstimate.x", REAL, OUTPUT, bodyForceEstimate[0]) \
+    X(2171, "bodyForceEstimate.y", REAL, OUTPUT, bodyForceEstimate[1]) \
+    X(2172, "bodyForceEstimate.z", REAL, OUTPUT, bodyForceEstimate[2]) \
 
 /* X(member, value): the start value of every numeric parameter (Strings start empty: zero-filled) */
 #define UC_SCHEMA_PARAMETER_DEFAULTS(X) \
@@ -878,6 +904,18 @@ typedef struct UCOutputs {
     X(seabedContactSpacing, 0.0) \
     X(solverMaxOrder, 5) \
     X(winchMaxAcceleration, 0.0) \
+    X(bodyAddedMassMatrix.x[0], 0.0) \
+    X(bodyAddedMassMatrix.x[1], 0.0) \
+    X(bodyAddedMassMatrix.x[2], 0.0) \
+    X(bodyAddedMassMatrix.y[0], 0.0) \
+    X(bodyAddedMassMatrix.y[1], 0.0) \
+    X(bodyAddedMassMatrix.y[2], 0.0) \
+    X(bodyAddedMassMatrix.z[0], 0.0) \
+    X(bodyAddedMassMatrix.z[1], 0.0) \
+    X(bodyAddedMassMatrix.z[2], 0.0) \
+    X(proxyTrackingGain, 0.1) \
+    X(proxyTrackingDamping, 0.3) \
+    X(proxyFilterTime, 1.0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -940,7 +978,7 @@ typedef struct UCOutputs {
     X(topTangent[0], "topTangent.x", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "a direction component must be a moderate finite number (the direction is normalized)") \
     X(topTangent[1], "topTangent.y", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "a direction component must be a moderate finite number (the direction is normalized)") \
     X(topTangent[2], "topTangent.z", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "a direction component must be a moderate finite number (the direction is normalized)") \
-    X(bottomEnd, "bottomEnd", 0.0, 3.0, 0, 0, "{0 free, 1 anchored, 2 towed body, 3 external}", "unknown far-end condition") \
+    X(bottomEnd, "bottomEnd", 0.0, 4.0, 0, 0, "{0 free, 1 anchored, 2 towed body, 3 external, 4 external body with proxy}", "unknown far-end condition") \
     X(anchor[0], "anchor.x", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "the anchor must lie within 1000 km of the origin") \
     X(anchor[1], "anchor.y", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "the anchor must lie within 1000 km of the origin") \
     X(anchor[2], "anchor.z", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "the anchor must lie within 1000 km of the origin") \
@@ -1122,6 +1160,18 @@ typedef struct UCOutputs {
     X(seabedContactSpacing, "seabedContactSpacing", 0.0, 100000.0, 0, 0, "[0, 100000]", "a sampling distance cannot be negative") \
     X(solverMaxOrder, "solver.maxOrder", 1.0, 5.0, 0, 0, "[1, 5]", "IDA's BDF formulas have orders 1 to 5") \
     X(winchMaxAcceleration, "winch.maxAcceleration", 0.0, 100.0, 0, 0, "[0, 100]", "a drum accelerates at a finite, non-negative rate (0: no limit)") \
+    X(bodyAddedMassMatrix.x[0], "body.addedMassMatrix.xx", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.x[1], "body.addedMassMatrix.xy", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.x[2], "body.addedMassMatrix.xz", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.y[0], "body.addedMassMatrix.yx", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.y[1], "body.addedMassMatrix.yy", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.y[2], "body.addedMassMatrix.yz", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.z[0], "body.addedMassMatrix.zx", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.z[1], "body.addedMassMatrix.zy", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.z[2], "body.addedMassMatrix.zz", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(proxyTrackingGain, "proxy.trackingGain", 0.0, 1.0, 1, 0, "(0, 1]", "the tracking gain is a fraction of the one-step (dead-beat) gain") \
+    X(proxyTrackingDamping, "proxy.trackingDamping", 0.0, 1.0, 0, 0, "[0, 1]", "the tracking damping is a fraction of the one-step gain M / h") \
+    X(proxyFilterTime, "proxy.filterTime", 0.0, 10000.0, 1, 0, "(0, 10000]", "the estimate's low-pass needs a positive time constant") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

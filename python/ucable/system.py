@@ -14,6 +14,8 @@ Couplings of the towed body (COUPLINGS):
             endLoadVelocity, endLoadDamping): systems/towed_body
   explicit  the TowedBody FMU integrates its own translation from the cable force and the cable's far
             end follows it (bottomEnd 3): systems/towed_body_explicit; unstable above a critical step
+  proxy     the TowedBody FMU integrates its own translation, the cable integrates a proxy with its inertia
+            and returns the force that makes it follow (bottomEnd 4): systems/towed_body_proxy
 
 Initialization follows libcosim: the units enter initialization mode with their start values, then the
 connected values are transferred (outputs read in initialization mode, inputs set) as many times as
@@ -37,7 +39,9 @@ from .fmu import CableFMU
 from .paths import REPO_ROOT, fmu_path, systems_dir
 
 KNOT = 1852.0 / 3600.0
-SYSTEM_DIRS = {"internal": "towed_body_internal", "external": "towed_body", "explicit": "towed_body_explicit"}
+SYSTEM_DIRS = {"internal": "towed_body_internal", "external": "towed_body", "explicit": "towed_body_explicit",
+               "proxy": "towed_body_proxy"}
+SELF_INTEGRATING = ("explicit", "proxy")  # the body FMU integrates its own translation
 COUPLINGS = tuple(SYSTEM_DIRS)
 MASTERS = ("fmpy", "libcosim")
 ORDERINGS = ("gauss-seidel", "jacobi")
@@ -93,6 +97,8 @@ def unit_parameters(coupling: str, body: Body) -> dict:
         return {"cable": {"bottomEnd": 2, **cable_body, "body.CdA": 0.0}, "body": partner}
     if coupling == "explicit":
         return {"cable": {"bottomEnd": 3}, "body": {**partner, "integrateTranslation": True}}
+    if coupling == "proxy":
+        return {"cable": {"bottomEnd": 4, **cable_body}, "body": {**partner, "integrateTranslation": True}}
     raise ValueError(f"coupling must be one of {COUPLINGS}")
 
 
@@ -204,7 +210,7 @@ RECORD = {
     "vessel": ["x", "y", "heading", "speed", "thrust", "tow.x", "tow.y", "tow.z", "waveElevation"],
     "cable": ["towTension", "waveElevation", "towForce.x", "towForce.y", "towForce.z", "endTension", "endForce.x", "endForce.y",
               "endForce.z", "endPosition.x", "endPosition.y", "endPosition.z", "endVelocity.x", "endVelocity.y",
-              "endVelocity.z"],
+              "endVelocity.z", "bodyForceEstimate.x", "bodyForceEstimate.y", "bodyForceEstimate.z"],
     "body": ["position.x", "position.y", "position.z", "velocity.x", "velocity.y", "velocity.z", "force.x",
              "force.y", "force.z"],
 }
@@ -226,8 +232,8 @@ class SystemResult:
     @property
     def body_position(self) -> np.ndarray:
         """(n, 3) position of the towed body, Earth frame: the cable's far end, which carries the body
-        (internal, external), or the body's own state (explicit; the cable's end follows it)."""
-        key = "body.position" if self.coupling == "explicit" else "cable.endPosition"
+        (internal, external), or the body's own state (explicit, proxy: the body integrates itself)."""
+        key = "body.position" if self.coupling in SELF_INTEGRATING else "cable.endPosition"
         return np.column_stack([self.values[f"{key}.{q}"] for q in "xyz"])
 
     def columns(self) -> dict:
@@ -498,7 +504,7 @@ def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: s
     params = unit_parameters(coupling, body)
     params["vessel"] = {**vessel, **(waves or {}), **(vessel_parameters or {})}
     params["cable"] = {**params["cable"], **(cable_parameters or {}), **(waves or {})}
-    if coupling == "explicit":
+    if coupling in SELF_INTEGRATING:
         start = steady_far_end(system, params, body)
         params["body"].update(start)
         # the cable's far end starts there too (its first steady state is computed before the body's
