@@ -611,6 +611,31 @@ bool CableModel::far_end_carries_body() const {
     return params_.bottomEnd == UC_BOTTOM_TOWED_BODY || params_.bottomEnd == UC_BOTTOM_PROXY;
 }
 
+Vec3 ProxyEstimate::force(const Vec3& u, Mat3* dF_du) const {
+    const Vec3 uh(u.x(), u.y(), 0.0), cross(-u.y(), u.x(), 0.0);  // z x u
+    const double root = std::sqrt(uh.squaredNorm() + kProxyFlowFloor * kProxyFlowFloor);
+    const Vec3 flow = along * uh + across * cross;
+    if (dF_du) {
+        Mat3 J = Mat3::Zero();  // d(z x u)/du
+        J(0, 1) = -1.0;
+        J(1, 0) = 1.0;
+        Mat3 P = Mat3::Identity();  // du_h/du
+        P(2, 2) = 0.0;
+        *dF_du = root * (along * P + across * J) + flow * uh.transpose() / root;
+    }
+    return constant + root * flow;
+}
+
+void ProxyEstimate::add(const Vec3& dF, const Vec3& u) {
+    const Vec3 uh(u.x(), u.y(), 0.0), cross(-u.y(), u.x(), 0.0);
+    const double q = uh.squaredNorm() + kProxyFlowFloor * kProxyFlowFloor;
+    const double scale = q * std::sqrt(q);  // |sqrt(q) u_h|^2 / (|u_h|^2 / q)
+    along += dF.dot(uh) / scale;
+    across += dF.dot(cross) / scale;
+    const double share = uh.squaredNorm() / q;  // of the horizontal change: what the flow's frame took
+    constant += dF - share * Vec3(dF.x(), dF.y(), 0.0);
+}
+
 Mat3 PointBody::inertia() const {
     Mat3 M = (mass + addedMass) * Mat3::Identity();
     if (anisotropic) M += addedMassMatrix;
@@ -673,7 +698,9 @@ Vec6 CableModel::end_node_residual(const double* X, const double* Xd, const doub
     const Vec3 rd = Eigen::Map<const Vec3>(Xd + gN);
     R.head<3>() = -loads.endLoad + loads.endLoadDamping * (rd - loads.endLoadVelocity);
     if (params_.bottomEnd == UC_BOTTOM_PROXY) {
-        R.head<3>() -= loads.proxyForce;
+        Vec3 U, A;
+        loads.current.flow(Eigen::Map<const Vec3>(X + gN), U, A, point_wave_cache(0));
+        R.head<3>() -= loads.proxy.force(U - rd);
         if (loads.endSpring > 0.0) R.head<3>() += loads.endSpring * (Eigen::Map<const Vec3>(X + gN) - loads.endSpringAnchor);
     }
     // End couple M: virtual work M . (t x dr')/|r'| = (M x r')/|r'|^2 . dr' on the end tangent.
@@ -700,7 +727,16 @@ void CableModel::end_node_jacobian(const double* X, const double* Xd, const doub
         K.block<3, 3>(3, 3) = -cross_matrix(loads.endCouple) * (Mat3::Identity() / n2 - 2.0 * rp * rp.transpose() / (n2 * n2));
     }
     C.block<3, 3>(0, 0) = loads.endLoadDamping;
-    if (params_.bottomEnd == UC_BOTTOM_PROXY && loads.endSpring > 0.0) K.block<3, 3>(0, 0) += loads.endSpring * Mat3::Identity();
+    if (params_.bottomEnd == UC_BOTTOM_PROXY) {
+        // the estimate's velocity dependence (its dependence on the position through the current's
+        // gradients is left out: a Newton matrix, not the residual)
+        Vec3 U, A;
+        loads.current.flow(Eigen::Map<const Vec3>(X + gN), U, A, point_wave_cache(0));
+        Mat3 dF_du;
+        loads.proxy.force(U - Eigen::Map<const Vec3>(Xd + gN), &dF_du);
+        C.block<3, 3>(0, 0) += dF_du;
+        if (loads.endSpring > 0.0) K.block<3, 3>(0, 0) += loads.endSpring * Mat3::Identity();
+    }
     if (endContact_.footprint > 0.0 && endContact_.seabed.enabled) {
         SeabedJacobian J;
         point_contact_load(endContact_, Eigen::Map<const Vec3>(X + gN), Eigen::Map<const Vec3>(Xd + gN), &J);

@@ -46,6 +46,25 @@ private:
 };
 
 // Everything the residual needs besides the state: prescribed motion and environment.
+// bottomEnd 4: the proxy's estimate of the external body's forces other than the cable's, weight
+// and buoyancy beyond the proxy's own. A hydrodynamic force (drag, a depressor's lift) turns with the
+// flow and grows with its square, so the estimate keeps that part in the flow's frame: with u the
+// horizontal flow relative to the body and q = |u|^2 + s^2 (s = kProxyFlowFloor),
+//   F(u) = constant + sqrt(q) (along u + across (z x u)),
+// a drag law whose coefficients are estimated; at rest it fades into the constant part. Applied at
+// the proxy's velocity inside the implicit step, as a drag.
+struct ProxyEstimate {
+    Vec3 constant = Vec3::Zero();  // [N]
+    double along = 0.0, across = 0.0;  // [N s^2/m^2]
+    // The force at the relative flow u (Earth frame; only the horizontal part enters) and, if dF_du
+    // is not null, its derivative.
+    Vec3 force(const Vec3& u, Mat3* dF_du = nullptr) const;
+    // Adds the force change dF at the flow u: the horizontal part in the flow's frame as far as the
+    // flow is defined (|u|^2 / q of it), the rest to the constant part. force(u) grows by dF exactly.
+    void add(const Vec3& dF, const Vec3& u);
+};
+constexpr double kProxyFlowFloor = 0.05;  // [m/s] s above: below it the horizontal flow has no direction
+
 struct Loads {
     TowTrajectory tow;
     TowTrajectory end;  // far end when bottomEnd = 3 (external body)
@@ -58,7 +77,7 @@ struct Loads {
     Mat3 endLoadDamping = Mat3::Zero();
     Vec3 endCouple = Vec3::Zero();
     // bottomEnd 4: the estimate of the external body's other forces, applied to the proxy at the far end.
-    Vec3 proxyForce = Vec3::Zero();
+    ProxyEstimate proxy;
     // Static solver only (bottomEnd 4): a spring of this stiffness [N/m] holds the far end at
     // endSpringAnchor, so that the statics put the proxy where the external body is.
     double endSpring = 0.0;

@@ -22,6 +22,11 @@ namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
 constexpr std::uint32_t kStateVersion = 10;
+// bottomEnd 4: the estimate's low-pass spans at least this many communication steps. Under Jacobi the
+// body feels the proxy's force a step late; a faster estimate then feeds that lag back into the proxy
+// (the model problem in docs/cosimulation.md: 5 steps keep the gains stable with +-50 % inertia error
+// and no drag at all, 3 do not).
+constexpr double kProxyFilterSteps = 5.0;
 
 // A driven end in a saved state.
 struct EndHeader {
@@ -51,7 +56,7 @@ struct StateHeader {
     // the mesh graded by the static profile for the tow point meshTow (meshGraded 1)
     std::int32_t meshGraded, reserved;
     double meshTow[3], meshFar[3];
-    double proxyForce[3];  // bottomEnd 4: the estimate of the external body's other forces
+    double proxyConstant[3], proxyAlong, proxyAcross;  // bottomEnd 4: the estimate (ProxyEstimate)
 };
 
 IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
@@ -567,7 +572,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     loads_.end = TowTrajectory::at_rest_in_time(end_.position, end_.velocity, end_.acceleration, t0);
     const bool proxy = p.bottomEnd == UC_BOTTOM_PROXY;
     Vec3 farPoint = p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy ? end_.position : vec(p.anchor);
-    loads_.proxyForce.setZero();
+    loads_.proxy = ProxyEstimate();
     loads_.endSpring = 0.0;
     if (!check_geometry(farPoint, error)) return false;
     // An anchored line, or one whose far end is held at rest, starts from its static profile.
@@ -648,7 +653,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         winchRate_ = y_[1];
     }
     if (sn_.area > 0.0) rainflow_.add(outputs_.towTension, sn_);
-    if (proxy) proxy_output(0.0, Vec3::Zero(), Vec3::Zero(), in);
+    if (proxy) proxy_output(0.0, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), in);
     outputs_.towTensionMax = outputs_.towTensionMin = outputs_.towTension;
     tensionScale_ = tension_scale(model_, outputs_);
     if (!set_integrator_tolerances(error)) return false;
@@ -753,6 +758,9 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     }
     const double tEnd = time_ + h;
     const Vec3 proxyPosition = vec(outputs_.endPosition), proxyVelocity = vec(outputs_.endVelocity);
+    const Vec3 proxyEstimate = model_.params().bottomEnd == UC_BOTTOM_PROXY
+                                   ? Vec3(loads_.proxy.force(proxy_flow(proxyPosition, proxyVelocity, time_)))
+                                   : Vec3::Zero();
     stepTensionMax_ = stepTensionMin_ = outputs_.towTension;  // the tension at the step's start
     const RainflowCounter rainflowAtStart = rainflow_;
     winchTension_ = in.winchTension;
@@ -790,7 +798,7 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     if (externalEnd) end_.advance(loads_.end, endVelocityInput, endAcceleration, in.endAccelerationGiven != 0);
     lastStepSize_ = h;
     update_outputs();
-    if (model_.params().bottomEnd == UC_BOTTOM_PROXY) proxy_output(h, proxyPosition, proxyVelocity, in);
+    if (model_.params().bottomEnd == UC_BOTTOM_PROXY) proxy_output(h, proxyPosition, proxyVelocity, proxyEstimate, in);
     outputs_.towTensionMax = std::max(stepTensionMax_, outputs_.towTension);
     outputs_.towTensionMin = std::min(stepTensionMin_, outputs_.towTension);
     warn_of_compression();
@@ -1282,36 +1290,52 @@ bool CableSimulation::proxy_statics(double t0, const std::vector<double>& v, boo
         loads_.endSpringAnchor -= offset;
     }
     // The spring's force becomes the proxy's estimated force: the residual, and so the equilibrium,
-    // stay exactly as solved.
-    loads_.proxyForce = -loads_.endSpring * (Eigen::Map<const Vec3>(X_.data() + gN) - loads_.endSpringAnchor);
+    // stay as solved (to round-off).
+    const Vec3 spring = -loads_.endSpring * (Eigen::Map<const Vec3>(X_.data() + gN) - loads_.endSpringAnchor);
+    loads_.proxy.add(spring, proxy_flow(Eigen::Map<const Vec3>(X_.data() + gN), Eigen::Map<const Vec3>(Xd_.data() + gN), t0));
     loads_.endSpring = 0.0;
     return true;
 }
 
-// The proxy's momentum over the step, M (v1 - v0) = h (mean cable force + proxy weight + estimate),
-// gives the mean cable force; with the estimate right and the body on the proxy, that force moves
-// the body as the proxy moved. The tracking force corrects what remains, at a fraction of the
-// one-step gains: T = M [alpha (e + h e' + d) / h^2 + beta e' / h], e and e' the proxy's position and
-// velocity less the body's at the step's start, d the proxy's departure from a trapezoidal path over
-// the step. What the body needs beyond the cable force in the long run is the estimate's error:
-// the estimate integrates the tracking force (a low-pass of time constant proxy.filterTime).
-// docs/cosimulation.md derives the gains' stability. h = 0: at initialization (the cable force alone).
-void CableSimulation::proxy_output(double h, const Vec3& p0, const Vec3& v0, const UCInputs& in) {
+// The flow relative to the proxy at its position r and velocity v at time t.
+Vec3 CableSimulation::proxy_flow(const Vec3& r, const Vec3& v, double t) const {
+    CurrentField current = loads_.current;
+    current.time = t;
+    Vec3 U, A;
+    current.flow(r, U, A);
+    return U - v;
+}
+
+// The proxy's momentum over the step, M (v1 - v0) = h (mean cable force + proxy weight + mean
+// estimate), gives the mean cable force (the estimate's mean by the trapezoidal rule); with the
+// estimate right and the body on the proxy, that force moves the body as the proxy moved. The
+// tracking force corrects what remains, at a fraction of the one-step gains:
+// T = M [alpha (e + h e' + d) / h^2 + beta e' / h], e and e' the proxy's position and velocity less
+// the body's at the step's start, d the proxy's departure from a trapezoidal path over the step.
+// What the body needs beyond the cable force in the long run is the estimate's error: the estimate
+// integrates the tracking force (a low-pass of time constant proxy.filterTime, at least
+// kProxyFilterSteps steps). docs/cosimulation.md derives the gains' stability. h = 0: at
+// initialization (the cable force alone).
+void CableSimulation::proxy_output(double h, const Vec3& p0, const Vec3& v0, const Vec3& estimate0, const UCInputs& in) {
     const UCParams& p = model_.params();
     const PointBody& body = model_.body();
     const Vec3 weight(0.0, 0.0, -(body.mass - model_.fluid().rho * body.volume) * model_.fluid().gravity);
+    const Vec3 flow = proxy_flow(vec(outputs_.endPosition), vec(outputs_.endVelocity), time_);
     if (h > 0.0) {
         const Mat3 M = body.inertia();
         const Vec3 p1 = vec(outputs_.endPosition), v1 = vec(outputs_.endVelocity);
-        const Vec3 meanCable = M * (v1 - v0) / h - weight - loads_.proxyForce;
+        const Vec3 meanEstimate = 0.5 * (estimate0 + loads_.proxy.force(flow));
+        const Vec3 meanCable = M * (v1 - v0) / h - weight - meanEstimate;
         const Vec3 e = p0 - vec(in.end), ev = v0 - vec(in.endVelocity);
         const Vec3 departure = p1 - p0 - 0.5 * h * (v0 + v1);
         const Vec3 tracking = M * (p.proxyTrackingGain * (e + h * ev + departure) / (h * h) + p.proxyTrackingDamping * ev / h);
         const Vec3 force = meanCable + tracking;
         for (int k = 0; k < 3; ++k) outputs_.endForce[k] = force[k];
-        loads_.proxyForce -= h / (p.proxyFilterTime + h) * tracking;
+        const double tau = std::max(p.proxyFilterTime, kProxyFilterSteps * h);
+        loads_.proxy.add(-h / (tau + h) * tracking, flow);
     }
-    for (int k = 0; k < 3; ++k) outputs_.bodyForceEstimate[k] = loads_.proxyForce[k] + weight[k];
+    const Vec3 estimate = loads_.proxy.force(flow) + weight;
+    for (int k = 0; k < 3; ++k) outputs_.bodyForceEstimate[k] = estimate[k];
 }
 
 void CableSimulation::update_outputs() {
@@ -1364,10 +1388,12 @@ void CableSimulation::save_state(void* buffer) {
     header.winchRate = winchRate_;
     header.winchTop0 = winchTop0_;
     header.meshGraded = graded_ ? 1 : 0;
+    header.proxyAlong = loads_.proxy.along;
+    header.proxyAcross = loads_.proxy.across;
     for (int k = 0; k < 3; ++k) {
         header.meshTow[k] = meshTow_[k];
         header.meshFar[k] = meshFar_[k];
-        header.proxyForce[k] = loads_.proxyForce[k];
+        header.proxyConstant[k] = loads_.proxy.constant[k];
     }
     historyBuffer_.assign(integrator_->history_size(), 0.0);
     if (history) integrator_->save_history(historyBuffer_.data());
@@ -1447,7 +1473,9 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     set_winch_time(time_);
     from_header(header.tow, tow_);
     from_header(header.end, end_);
-    loads_.proxyForce = vec(header.proxyForce);
+    loads_.proxy.constant = vec(header.proxyConstant);
+    loads_.proxy.along = header.proxyAlong;
+    loads_.proxy.across = header.proxyAcross;
     Vec3* frames[4] = {&twistRef_.topTangent, &twistRef_.topNormal, &twistRef_.endTangent, &twistRef_.endNormal};
     for (int f = 0; f < 4; ++f) *frames[f] = vec(header.twistRef + 3 * f);
     lastBeta_ = header.lastBeta;

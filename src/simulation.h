@@ -92,7 +92,8 @@ private:
     bool proxy_statics(double t0, const std::vector<double>& v, bool fromProfile, std::string& error);
     // bottomEnd 4, after a step from the proxy's state (p0, v0): the force on the external body
     // (the proxy's mean cable force plus the tracking force) and the estimate's update.
-    void proxy_output(double h, const Vec3& p0, const Vec3& v0, const UCInputs& in);
+    void proxy_output(double h, const Vec3& p0, const Vec3& v0, const Vec3& estimate0, const UCInputs& in);
+    Vec3 proxy_flow(const Vec3& r, const Vec3& v, double t) const;
     // The static profile of the line from the tow point to its held far end (src/line_profile.h),
     // bending, current and waves left out; false where it does not apply, with the reason in why.
     bool static_profile(const Vec3& towPoint, const Vec3& farPoint, LineProfile& profile, bool& towOnTop,
@@ -175,7 +176,7 @@ private:
     double time_ = 0.0;
     DrivenEnd tow_;             // the tow point
     DrivenEnd end_;             // the far end of bottomEnd 3 (external)
-    // bottomEnd 4: the estimate of the external body's other forces is loads_.proxyForce (saved)
+    // bottomEnd 4: the estimate of the external body's other forces is loads_.proxy (saved)
     double lastStepSize_ = 0.0; // of the previous step (0: no input history yet)
     TwistReference twistRef_;  // end frames at initialization (torqueMode 2)
     double lastBeta_ = 0.0;    // geometric twist at the last evaluation, for unwrapping past +-pi

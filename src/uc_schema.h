@@ -120,9 +120,9 @@ typedef struct UCParams {
     int solverMaxOrder; /* solver.maxOrder: highest order of the time integrator's variable-order BDF formulas (1–5). 5 (the default) takes the fewest steps where the tolerance is tight; orders 3–5 are not A-stable, so at a loose tolerance lightly damped fast modes (a stiff cable's axial and bending ringing) can hold the steps below the size the error test asks for, and 2, the highest A-stable order, then takes fewer steps for the same answer (the stiff power cable at tensionTolerance 0.1: 25–35 % fewer); 1 is backward Euler, which damps the most ([docs/error_control.md](docs/error_control.md), the integrator's order) */
     double winchMaxAcceleration; /* winch.maxAcceleration [m/s2]: largest acceleration and deceleration of the winch drum: with `winchMode` 1 it ramps towards `winch.rate` and brakes in time to stop at `winch.minLength`/`winch.maxLength`; with `winchMode` 2 the commanded rate stays within that braking envelope (the drum's response is `winch.timeConstant`'s); 0 = no limit (the rate may change at once at a communication point) ([docs/winch.md](docs/winch.md)) */
     UCBodyAddedMassMatrix bodyAddedMassMatrix;
-    double proxyTrackingGain; /* proxy.trackingGain: `bottomEnd` 4: position gain α of the tracking force, as a fraction of M/h² (M the proxy's inertia, h the communication step); 1 with `proxy.trackingDamping` 0.5 would put the body on the proxy in one step, the default 0.1 with 0.3 stays stable under Jacobi with ±50 % inertia error ([docs/cosimulation.md](docs/cosimulation.md)) */
+    double proxyTrackingGain; /* proxy.trackingGain: `bottomEnd` 4: position gain α of the tracking force, as a fraction of M/h² (M the proxy's inertia, h the communication step); 1 with `proxy.trackingDamping` 0.5 would put the body on the proxy in one step; the defaults 0.05 and 0.3 stay stable under Gauss-Seidel and Jacobi with ±50 % inertia error ([docs/cosimulation.md](docs/cosimulation.md)) */
     double proxyTrackingDamping; /* proxy.trackingDamping: `bottomEnd` 4: velocity gain β of the tracking force, as a fraction of M/h */
-    double proxyFilterTime; /* proxy.filterTime [s]: `bottomEnd` 4: time constant of the low-pass that estimates the external body's other forces (drag, lift, thrust, weight and buoyancy beyond the proxy's) from the tracking force */
+    double proxyFilterTime; /* proxy.filterTime [s]: `bottomEnd` 4: shortest time constant of the low-pass that estimates the external body's other forces (drag, lift, thrust, weight and buoyancy beyond the proxy's) from the tracking force; the estimate uses the larger of this and five communication steps */
 } UCParams;
 
 typedef struct UCInputs {
@@ -913,7 +913,7 @@ typedef struct UCOutputs {
     X(bodyAddedMassMatrix.z[0], 0.0) \
     X(bodyAddedMassMatrix.z[1], 0.0) \
     X(bodyAddedMassMatrix.z[2], 0.0) \
-    X(proxyTrackingGain, 0.1) \
+    X(proxyTrackingGain, 0.05) \
     X(proxyTrackingDamping, 0.3) \
     X(proxyFilterTime, 1.0) \
 
