@@ -612,28 +612,28 @@ bool CableModel::far_end_carries_body() const {
 }
 
 Vec3 ProxyEstimate::force(const Vec3& u, Mat3* dF_du) const {
-    const Vec3 uh(u.x(), u.y(), 0.0), cross(-u.y(), u.x(), 0.0);  // z x u
-    const double root = std::sqrt(uh.squaredNorm() + kProxyFlowFloor * kProxyFlowFloor);
-    const Vec3 flow = along * uh + across * cross;
+    const Vec3 cross(-u.y(), u.x(), 0.0);  // z x u
+    const double root = std::sqrt(u.squaredNorm() + kProxyFlowFloor * kProxyFlowFloor);
+    const Vec3 flow = along * u + across * cross;
     if (dF_du) {
         Mat3 J = Mat3::Zero();  // d(z x u)/du
         J(0, 1) = -1.0;
         J(1, 0) = 1.0;
-        Mat3 P = Mat3::Identity();  // du_h/du
-        P(2, 2) = 0.0;
-        *dF_du = root * (along * P + across * J) + flow * uh.transpose() / root;
+        *dF_du = root * (along * Mat3::Identity() + across * J) + flow * u.transpose() / root;
     }
     return constant + root * flow;
 }
 
 void ProxyEstimate::add(const Vec3& dF, const Vec3& u) {
-    const Vec3 uh(u.x(), u.y(), 0.0), cross(-u.y(), u.x(), 0.0);
-    const double q = uh.squaredNorm() + kProxyFlowFloor * kProxyFlowFloor;
-    const double scale = q * std::sqrt(q);  // |sqrt(q) u_h|^2 / (|u_h|^2 / q)
-    along += dF.dot(uh) / scale;
-    across += dF.dot(cross) / scale;
-    const double share = uh.squaredNorm() / q;  // of the horizontal change: what the flow's frame took
-    constant += dF - share * Vec3(dF.x(), dF.y(), 0.0);
+    // the basis sqrt(q) u, sqrt(q) z x u (orthogonal): each coefficient takes the share |b|^2 / q^2
+    // of dF's component, the constant part the rest
+    const Vec3 cross(-u.y(), u.x(), 0.0);
+    const double q = u.squaredNorm() + kProxyFlowFloor * kProxyFlowFloor;
+    const double scale = q * std::sqrt(q);
+    const double a = dF.dot(u) / scale, c = dF.dot(cross) / scale;
+    along += a;
+    across += c;
+    constant += dF - std::sqrt(q) * (a * u + c * cross);
 }
 
 Mat3 PointBody::inertia() const {

@@ -653,7 +653,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         winchRate_ = y_[1];
     }
     if (sn_.area > 0.0) rainflow_.add(outputs_.towTension, sn_);
-    if (proxy) proxy_output(0.0, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), in);
+    if (proxy) proxy_output(0.0, Vec3::Zero(), Vec3::Zero(), in);
     outputs_.towTensionMax = outputs_.towTensionMin = outputs_.towTension;
     tensionScale_ = tension_scale(model_, outputs_);
     if (!set_integrator_tolerances(error)) return false;
@@ -758,9 +758,6 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     }
     const double tEnd = time_ + h;
     const Vec3 proxyPosition = vec(outputs_.endPosition), proxyVelocity = vec(outputs_.endVelocity);
-    const Vec3 proxyEstimate = model_.params().bottomEnd == UC_BOTTOM_PROXY
-                                   ? Vec3(loads_.proxy.force(proxy_flow(proxyPosition, proxyVelocity, time_)))
-                                   : Vec3::Zero();
     stepTensionMax_ = stepTensionMin_ = outputs_.towTension;  // the tension at the step's start
     const RainflowCounter rainflowAtStart = rainflow_;
     winchTension_ = in.winchTension;
@@ -798,7 +795,7 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     if (externalEnd) end_.advance(loads_.end, endVelocityInput, endAcceleration, in.endAccelerationGiven != 0);
     lastStepSize_ = h;
     update_outputs();
-    if (model_.params().bottomEnd == UC_BOTTOM_PROXY) proxy_output(h, proxyPosition, proxyVelocity, proxyEstimate, in);
+    if (model_.params().bottomEnd == UC_BOTTOM_PROXY) proxy_output(h, proxyPosition, proxyVelocity, in);
     outputs_.towTensionMax = std::max(stepTensionMax_, outputs_.towTension);
     outputs_.towTensionMin = std::min(stepTensionMin_, outputs_.towTension);
     warn_of_compression();
@@ -1306,36 +1303,69 @@ Vec3 CableSimulation::proxy_flow(const Vec3& r, const Vec3& v, double t) const {
     return U - v;
 }
 
-// The proxy's momentum over the step, M (v1 - v0) = h (mean cable force + proxy weight + mean
-// estimate), gives the mean cable force (the estimate's mean by the trapezoidal rule); with the
-// estimate right and the body on the proxy, that force moves the body as the proxy moved. The
-// tracking force corrects what remains, at a fraction of the one-step gains:
+namespace {
+
+// phi(A) = A (e^A - I)^-1 = g(A)^-1 with g(A) = (e^A - I) / A = I + A/2 + A^2/6 + ..., which is
+// entire and invertible where A's eigenvalues are real (a drag's derivative has no vertical part:
+// A is singular, and phi is I there). g by its Taylor series on A / 2^s, then doubled s times:
+// g(2B) = g(B) (e^B + I) / 2, e^(2B) = (e^B)^2.
+Mat3 bernoulli_phi(const Mat3& A) {
+    const double norm = A.lpNorm<Eigen::Infinity>();
+    int squarings = 0;
+    while (norm / std::ldexp(1.0, squarings) > 0.25) ++squarings;
+    const Mat3 B = A / std::ldexp(1.0, squarings);
+    Mat3 E = Mat3::Identity(), g = Mat3::Identity(), power = Mat3::Identity();
+    double factorial = 1.0;
+    for (int k = 1; k <= 14; ++k) {  // |B| <= 1/4: the remainders are below 1e-17
+        power = power * B;
+        factorial *= k;
+        E += power / factorial;
+        g += power / (factorial * (k + 1));
+    }
+    for (int k = 0; k < squarings; ++k) {
+        g = 0.5 * g * (E + Mat3::Identity());
+        E = E * E;
+    }
+    return g.inverse();
+}
+
+}  // namespace
+
+// The force that makes the body follow the proxy. The body integrates M v' = F + (its other forces)
+// with F held over the step; with its other forces as the estimate says (linearized at the proxy's
+// new velocity v1: the estimate's value there less D (v - v1), D its drag derivative), the held force
+// that takes a body starting at the proxy's old velocity v0 to v1 is
+//   F = -(M / h) phi(M^-1 D h) (v0 - v1) - estimate(v1) - proxy weight,
+// phi(A) = A (e^A - I)^-1 (= M (v1 - v0) / h less the mean of the other forces when D = 0): exact for
+// a body whose drag time M / D is shorter than the step, which a force from the mean acceleration is
+// not. The tracking force corrects what remains, at a fraction of the one-step gains:
 // T = M [alpha (e + h e' + d) / h^2 + beta e' / h], e and e' the proxy's position and velocity less
 // the body's at the step's start, d the proxy's departure from a trapezoidal path over the step.
-// What the body needs beyond the cable force in the long run is the estimate's error: the estimate
-// integrates the tracking force (a low-pass of time constant proxy.filterTime, at least
-// kProxyFilterSteps steps). docs/cosimulation.md derives the gains' stability. h = 0: at
-// initialization (the cable force alone).
-void CableSimulation::proxy_output(double h, const Vec3& p0, const Vec3& v0, const Vec3& estimate0, const UCInputs& in) {
+// What the body needs beyond that in the long run is the estimate's error: the estimate integrates
+// the tracking force (a low-pass of time constant proxy.filterTime, at least kProxyFilterSteps
+// steps). docs/cosimulation.md derives the gains' stability. h = 0: at initialization (the cable
+// force alone).
+void CableSimulation::proxy_output(double h, const Vec3& p0, const Vec3& v0, const UCInputs& in) {
     const UCParams& p = model_.params();
     const PointBody& body = model_.body();
     const Vec3 weight(0.0, 0.0, -(body.mass - model_.fluid().rho * body.volume) * model_.fluid().gravity);
     const Vec3 flow = proxy_flow(vec(outputs_.endPosition), vec(outputs_.endVelocity), time_);
+    Mat3 D;
+    const Vec3 estimate = loads_.proxy.force(flow, &D);
     if (h > 0.0) {
         const Mat3 M = body.inertia();
         const Vec3 p1 = vec(outputs_.endPosition), v1 = vec(outputs_.endVelocity);
-        const Vec3 meanEstimate = 0.5 * (estimate0 + loads_.proxy.force(flow));
-        const Vec3 meanCable = M * (v1 - v0) / h - weight - meanEstimate;
+        const Vec3 follow = -(M / h) * bernoulli_phi(M.inverse() * D * h) * (v0 - v1) - estimate - weight;
         const Vec3 e = p0 - vec(in.end), ev = v0 - vec(in.endVelocity);
         const Vec3 departure = p1 - p0 - 0.5 * h * (v0 + v1);
         const Vec3 tracking = M * (p.proxyTrackingGain * (e + h * ev + departure) / (h * h) + p.proxyTrackingDamping * ev / h);
-        const Vec3 force = meanCable + tracking;
+        const Vec3 force = follow + tracking;
         for (int k = 0; k < 3; ++k) outputs_.endForce[k] = force[k];
         const double tau = std::max(p.proxyFilterTime, kProxyFilterSteps * h);
         loads_.proxy.add(-h / (tau + h) * tracking, flow);
     }
-    const Vec3 estimate = loads_.proxy.force(flow) + weight;
-    for (int k = 0; k < 3; ++k) outputs_.bodyForceEstimate[k] = estimate[k];
+    const Vec3 total = loads_.proxy.force(flow) + weight;
+    for (int k = 0; k < 3; ++k) outputs_.bodyForceEstimate[k] = total[k];
 }
 
 void CableSimulation::update_outputs() {

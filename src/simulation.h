@@ -91,8 +91,9 @@ private:
     // whose force then becomes the estimate of the body's other forces (the start is in equilibrium).
     bool proxy_statics(double t0, const std::vector<double>& v, bool fromProfile, std::string& error);
     // bottomEnd 4, after a step from the proxy's state (p0, v0): the force on the external body
-    // (the proxy's mean cable force plus the tracking force) and the estimate's update.
-    void proxy_output(double h, const Vec3& p0, const Vec3& v0, const Vec3& estimate0, const UCInputs& in);
+    // (the force that takes it along the proxy's velocity, plus the tracking force) and the
+    // estimate's update.
+    void proxy_output(double h, const Vec3& p0, const Vec3& v0, const UCInputs& in);
     Vec3 proxy_flow(const Vec3& r, const Vec3& v, double t) const;
     // The static profile of the line from the tow point to its held far end (src/line_profile.h),
     // bending, current and waves left out; false where it does not apply, with the reason in why.
