@@ -613,27 +613,29 @@ bool CableModel::far_end_carries_body() const {
 
 Vec3 ProxyEstimate::force(const Vec3& u, Mat3* dF_du) const {
     const Vec3 cross(-u.y(), u.x(), 0.0);  // z x u
-    const double root = std::sqrt(u.squaredNorm() + kProxyFlowFloor * kProxyFlowFloor);
+    const double speed = std::sqrt(u.squaredNorm() + kProxyFlowSmoothing * kProxyFlowSmoothing);
     const Vec3 flow = along * u + across * cross;
     if (dF_du) {
         Mat3 J = Mat3::Zero();  // d(z x u)/du
         J(0, 1) = -1.0;
         J(1, 0) = 1.0;
-        *dF_du = root * (along * Mat3::Identity() + across * J) + flow * u.transpose() / root;
+        *dF_du = speed * (along * Mat3::Identity() + across * J) + flow * u.transpose() / speed;
     }
-    return constant + root * flow;
+    return constant + speed * flow;
 }
 
 void ProxyEstimate::add(const Vec3& dF, const Vec3& u) {
-    // the basis sqrt(q) u, sqrt(q) z x u (orthogonal): each coefficient takes the share |b|^2 / q^2
-    // of dF's component, the constant part the rest
+    // the basis |u| u, |u| z x u (orthogonal): each coefficient takes the share w of dF's component
+    // along it, the constant part the rest
     const Vec3 cross(-u.y(), u.x(), 0.0);
-    const double q = u.squaredNorm() + kProxyFlowFloor * kProxyFlowFloor;
-    const double scale = q * std::sqrt(q);
-    const double a = dF.dot(u) / scale, c = dF.dot(cross) / scale;
+    const double speed = std::sqrt(u.squaredNorm() + kProxyFlowSmoothing * kProxyFlowSmoothing);
+    const double u2 = u.squaredNorm(), s4 = std::pow(kProxyFlowScale, 4);
+    const double w = u2 * u2 / (u2 * u2 + s4);
+    const double a = u2 > 0.0 ? w * dF.dot(u) / (speed * u2) : 0.0;
+    const double c = cross.squaredNorm() > 0.0 ? w * dF.dot(cross) / (speed * cross.squaredNorm()) : 0.0;
     along += a;
     across += c;
-    constant += dF - std::sqrt(q) * (a * u + c * cross);
+    constant += dF - speed * (a * u + c * cross);
 }
 
 Mat3 PointBody::inertia() const {

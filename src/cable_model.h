@@ -49,21 +49,23 @@ private:
 // bottomEnd 4: the proxy's estimate of the external body's forces other than the cable's, weight
 // and buoyancy beyond the proxy's own. A hydrodynamic force (drag, a depressor's lift) turns with the
 // flow and grows with its square, so the estimate keeps that part in the flow's frame: with u the
-// flow relative to the body and q = |u|^2 + s^2 (s = kProxyFlowFloor),
-//   F(u) = constant + sqrt(q) (along u + across (z x u)),
-// a drag law whose coefficients are estimated; at rest it fades into the constant part. Applied at
-// the proxy's velocity inside the implicit step, as a drag.
+// flow relative to the body,
+//   F(u) = constant + |u| (along u + across (z x u)),
+// a drag law whose coefficients are estimated. The estimate's changes go to the law with the share
+// w = |u|^4 / (|u|^4 + s^4) (s = kProxyFlowScale) and to the constant part otherwise: what is learnt
+// at a crawl is not blown up by the square of a later speed. Applied at the proxy's velocity inside
+// the implicit step, as a drag.
 struct ProxyEstimate {
     Vec3 constant = Vec3::Zero();  // [N]
     double along = 0.0, across = 0.0;  // [N s^2/m^2]
     // The force at the relative flow u (Earth frame) and, if dF_du is not null, its derivative.
     Vec3 force(const Vec3& u, Mat3* dF_du = nullptr) const;
-    // Adds the force change dF at the flow u: its components along u and z x u to the flow's frame
-    // as far as the flow is defined (|u|^2 / q and |u_h|^2 / q of them), the rest to the constant
-    // part. force(u) grows by dF (to round-off).
+    // Adds the force change dF at the flow u: the share w of its components along u and z x u to the
+    // law, the rest to the constant part. force(u) grows by dF (to round-off).
     void add(const Vec3& dF, const Vec3& u);
 };
-constexpr double kProxyFlowFloor = 0.05;  // [m/s] s above: below it the flow has no direction
+constexpr double kProxyFlowScale = 0.25;       // [m/s] s above
+constexpr double kProxyFlowSmoothing = 1e-3;  // [m/s] |u| as sqrt(|u|^2 + this^2): smooth at rest
 
 struct Loads {
     TowTrajectory tow;

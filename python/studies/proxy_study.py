@@ -53,34 +53,43 @@ def _body_map(M: float, cb: float, h: float) -> np.ndarray:
     return expm(np.array([[0.0, 1.0, 0.0], [0.0, -cb / M, 1.0 / M], [0.0, 0.0, 0.0]]) * h)
 
 
+def _phi(a: float) -> float:
+    """a / (e^a - 1), 1 at a = 0."""
+    return 1.0 if abs(a) < 1e-12 else a / math.expm1(a)
+
+
 def stability_proxy(h: float, M: float, chain: Chain, cb: float, ordering: str, inertia_error: float = 0.0,
-                    alpha: float = ALPHA, beta: float = BETA, tau: float | None = None) -> float:
+                    learned: float = 1.0, alpha: float = ALPHA, beta: float = BETA, tau: float | None = None) -> float:
     """Spectral radius of the proxy far end's one-step map, as the FMUs do it. The cable's axial chain
     (coupling_study.Chain, the tow point held) ends in the proxy: the end node carries the proxy's
-    inertia Mp = M (1 + inertia_error) and the estimate Fe, held over the step, integrated exactly with
-    the chain. After the step the cable returns F = Mp (v1 - v0) / h - Fe + T with the tracking force
-    T = Mp [alpha (e + h e' + d) / h^2 + beta e' / h] (e, e': the proxy's position and velocity less the
-    body's at the step's start, d the proxy's departure from the trapezoidal path) and updates the
-    estimate Fe -= h / (tau + h) T. The body (mass M, its own linear drag cb, which the proxy does not
-    know) integrates exactly with F held: the new F under Gauss-Seidel, the one of the last step under
-    Jacobi."""
+    inertia Mp = M (1 + inertia_error) and the estimate Fe - cp v (its constant part held over the step,
+    its drag law cp = learned * cb at the proxy's velocity), integrated exactly with the chain. After
+    the step the cable returns the force that takes a body with the estimated forces from the proxy's
+    old velocity v0 to its new v1, F = -(Fe - cp v1) - (Mp / h) phi(cp h / Mp) (v0 - v1), plus the
+    tracking force T = Mp [alpha (e + h e' + d) / h^2 + beta e' / h] (e, e': the proxy's position and
+    velocity less the body's at the step's start, d the proxy's departure from the trapezoidal path),
+    and moves the estimate's constant part, Fe -= h / (tau + h) T. The body (mass M, its own linear
+    drag cb) integrates exactly with F held: the new F under Gauss-Seidel, the one of the last step
+    under Jacobi."""
     if tau is None:
         tau = max(FILTER_TIME, FILTER_STEPS * h)
     f = chain.n - 1
     Mp = M * (1.0 + inertia_error)
+    cp = learned * cb
     me = chain.m / 2 + Mp
-    A = np.zeros((2 * f + 3, 2 * f + 3))  # chain, proxy (x, v), the estimate held
+    A = np.zeros((2 * f + 3, 2 * f + 3))  # chain, proxy (x, v), the estimate's constant part held
     A[:2 * f, :2 * f + 2] = chain.free_dynamics()
     A[2 * f, 2 * f + 1] = 1.0
     A[2 * f + 1, f - 1] = chain.k / me
     A[2 * f + 1, 2 * f - 1] = chain.c / me
     A[2 * f + 1, 2 * f] = -chain.k / me
-    A[2 * f + 1, 2 * f + 1] = -chain.c / me
+    A[2 * f + 1, 2 * f + 1] = -(chain.c + cp) / me
     A[2 * f + 1, 2 * f + 2] = 1.0 / me
     E = expm(A * h)
     B = _body_map(M, cb, h)
     jac = ordering == "jacobi"
     gamma = h / (tau + h)
+    follow = Mp / h * _phi(cp * h / Mp)
 
     def step(s):
         xp, vp, Fe = s[2 * f], s[2 * f + 1], s[2 * f + 2]
@@ -89,7 +98,7 @@ def stability_proxy(h: float, M: float, chain: Chain, cb: float, ordering: str, 
         xp1, vp1 = y[2 * f], y[2 * f + 1]
         e, ev = xp - xb, vp - vb
         T = Mp * (alpha * (e + h * ev + (xp1 - xp - 0.5 * h * (vp + vp1))) / h ** 2 + beta * ev / h)
-        F = Mp * (vp1 - vp) / h - Fe + T
+        F = -(Fe - cp * vp1) - follow * (vp - vp1) + T
         body = B @ np.array([xb, vb, F_last if jac else F])
         return np.concatenate([y[:2 * f + 2], [Fe - gamma * T, body[0], body[1], F]])
 
@@ -103,9 +112,10 @@ def drag_damping(mass: float, speed: float = 1.1 * S.KNOT) -> float:
 
 def theory() -> dict:
     """Spectral radii against h omega (omega^2 = k / M, k the last element's axial stiffness) for the
-    body masses and inertia errors, both orderings, without the body's drag (the least damped case) and
-    with it; and the largest radius over a grid of steps 0.01-1 s, masses 25-2500 kg (with added mass),
-    inertia errors -50 ... +50 %, with and without drag."""
+    body masses and inertia errors, both orderings, without the body's drag (the least damped case);
+    and the largest radius over a grid of steps 0.01-1 s, bodies of 20-2000 kg (added mass a quarter),
+    inertia errors -50 ... +50 %: without drag, and with the drag at the slowest tow speed, the
+    estimate's drag law learned (cp = cb), not yet (0) or twice the body's."""
     chain = Chain.hopland()
     hs = np.geomspace(0.01, 2.0, 40)
     out = {"chain": asdict(chain), "steps": hs.tolist(), "curves": {}}
@@ -115,17 +125,18 @@ def theory() -> dict:
             for err in (-0.5, 0.0, 0.5):
                 key = f"{ordering}|{mass:g}|{err:g}"
                 out["curves"][key] = {"Omega": (hs * math.sqrt(chain.k / M)).tolist(),
-                                      "rho": [stability_proxy(h, M, chain, 0.0, ordering, err) for h in hs]}
+                                      "rho": [stability_proxy(h, M, chain, 0.0, ordering, err, 0.0) for h in hs]}
     worst = {}
     for ordering in S.ORDERINGS:
         for err in (-0.5, -0.25, 0.0, 0.25, 0.5):
             rho, where = 0.0, None
             for mass in (20.0, 50.0, 400.0, 2000.0):
-                for cb in (0.0, drag_damping(mass)):
+                for cb, learned in ((0.0, 0.0), (drag_damping(mass), 0.0), (drag_damping(mass), 1.0),
+                                    (drag_damping(mass), 2.0)):
                     for h in (0.01, 0.05, 0.1, 0.2, 0.5, 1.0):
-                        r = stability_proxy(h, mass * 1.25, chain, cb, ordering, err)
+                        r = stability_proxy(h, mass * 1.25, chain, cb, ordering, err, learned)
                         if r > rho:
-                            rho, where = r, {"mass": mass, "drag": cb, "step": h}
+                            rho, where = r, {"mass": mass, "drag": cb, "learned": learned, "step": h}
             worst[f"{ordering}|{err:g}"] = {"rho": rho, **where}
     out["worst"] = worst
     return out
@@ -267,12 +278,13 @@ def markdown(data: dict, figure: str) -> str:
                 _cell_text(_worst(cells, o, h, m, err)) for o in S.ORDERINGS for h in steps) + " |")
     th = data["theory"]
     lines += ["", "Model problem (the cable's axial chain, the proxy at its end, the gains of the defaults): the "
-              "largest amplification factor over steps 0.01–1 s, bodies of 20–2000 kg, with and without their drag:",
+              "largest amplification factor over steps 0.01–1 s, bodies of 20–2000 kg, without drag and with the "
+              "drag at 1.1 kn (its derivative c_b), the estimate's drag law c_p = 0, c_b or 2 c_b:",
               "", "| ordering | inertia error | largest ρ | at |", "|---|---:|---:|---|"]
     for key, w in th["worst"].items():
         ordering, err = key.split("|")
         lines.append(f"| {ordering} | {100 * float(err):+.0f} % | {w['rho']:.4f} | {w['mass']:g} kg, "
-                     f"{w['step']:g} s, drag {w['drag']:.0f} N s/m |")
+                     f"{w['step']:g} s, c_b = {w['drag']:.0f} N s/m, c_p = {w['learned']:g} c_b |")
     lines += ["", f"![proxy amplification factors]({figure})"]
     return "\n".join(lines)
 
