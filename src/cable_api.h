@@ -93,7 +93,7 @@ int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, char* msg, si
 /* The interface derivatives over the next communication step (taken as long as the last one):
  * d[12 i + j] = d output_i(t + h) / d input_j(t) for the outputs towForce x, y, z, endForce x, y, z
  * (i = 0..5) and the inputs tow x, y, z, vx, vy, vz, end x, y, z, vx, vy, vz (j = 0..11; the end
- * columns are 0 unless bottomEnd = 3). Available after the first step; docs/cosimulation.md says
+ * columns are 0 unless bottomEnd = 3 or 4). Available after the first step; docs/cosimulation.md says
  * exactly what they are. */
 int uc_interface_derivatives(UCCable* c, double d[72], char* msg, size_t msgSize);
 

@@ -1586,6 +1586,19 @@ bool CableSimulation::interface_derivatives(double d[6][12], std::string& error)
     Mat6 Kn, Cn, Mn;
     model_.end_node_jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_, Kn, Cn, Mn);
 
+    // bottomEnd 4: the force on the body (proxy_output) moves with the proxy's position p1 and
+    // velocity v1 at t + h as follow + tracking do: dF = [(M / h) phi + D - M alpha / (2 h)] dv1 +
+    // (M alpha / h^2) dp1 (D the estimate's drag derivative; phi's own change with D left out).
+    const bool proxyEnd = model_.params().bottomEnd == UC_BOTTOM_PROXY;
+    Mat3 proxyByVelocity = Mat3::Zero(), proxyByPosition = Mat3::Zero();
+    if (proxyEnd) {
+        const Mat3 Mb = model_.body().inertia();
+        const double alpha = model_.params().proxyTrackingGain;
+        Mat3 D;
+        loads_.proxy.force(proxy_flow(vec(outputs_.endPosition), vec(outputs_.endVelocity), time_), &D);
+        proxyByVelocity = Mb / h * bernoulli_phi(Mb.inverse() * D * h) + D - Mb * alpha / (2.0 * h);
+        proxyByPosition = Mb * alpha / (h * h);
+    }
     double* w = derivativeWork_.data();
     double *fK = w, *fC = w + n, *fM = w + 2 * n, *qm = w + 3 * n, *q0 = w + 4 * n, *vm = w + 5 * n,
            *v0 = w + 6 * n, *rhs = w + 7 * n, *bq = w + 8 * n, *bv = w + 9 * n, *tmp = w + 10 * n;
@@ -1681,8 +1694,18 @@ bool CableSimulation::interface_derivatives(double d[6][12], std::string& error)
             }
             // Accelerations at t + h, from the last substep.
             for (int j = 0; j < n; ++j) tmp[j] = c * v0[j] + bv[j];
+            if (proxyEnd) {  // the force on the body from the proxy's state at t + h
+                Vec3 dp, dv;
+                for (int r = 0; r < 3; ++r) {
+                    const int j = model_.free_index(model_.end_offset() + r);
+                    dp[r] = q0[j];
+                    dv[r] = v0[j];
+                }
+                const Vec3 dF = proxyByVelocity * dv + proxyByPosition * dp;
+                for (int r = 0; r < 3; ++r) out[3 + r][s] = dF[r];
+            }
             // towForce = -(rows 0..2 of element 0), endForce = -(rows 6..8 of element N - 1).
-            for (int k = 0; k < 2; ++k) {
+            for (int k = 0; k < (proxyEnd ? 1 : 2); ++k) {
                 const int g0 = model_.element_offset(elements[k]);
                 for (int r = 0; r < 3; ++r) {
                     const int a = (k == 0 ? 0 : 6) + r;
@@ -1705,6 +1728,19 @@ bool CableSimulation::interface_derivatives(double d[6][12], std::string& error)
     // BDF2's error falls as the square of the substep: Richardson's extrapolation of the two.
     for (int i = 0; i < 6; ++i)
         for (int j = 0; j < 12; ++j) d[i][j] = (4.0 * d[i][j] - coarse[i][j]) / 3.0;
+    if (model_.params().bottomEnd == UC_BOTTOM_PROXY) {
+        // The body's reported state enters the force on it through the tracking force alone (the
+        // estimate moves after the step): exactly -M alpha / h^2 per metre and -M (alpha + beta) / h
+        // per metre per second. The towForce rows' end columns stay 0: the cable does not see the
+        // body within the step.
+        const Mat3 M = model_.body().inertia();
+        const double alpha = model_.params().proxyTrackingGain, beta = model_.params().proxyTrackingDamping;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                d[3 + i][6 + j] = -M(i, j) * alpha / (h * h);
+                d[3 + i][9 + j] = -M(i, j) * (alpha + beta) / h;
+            }
+    }
     std::memcpy(derivativeCache_, d, sizeof derivativeCache_);
     derivativeStamp_ = stateStamp_;
     return true;

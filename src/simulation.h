@@ -62,7 +62,7 @@ public:
     // The interface derivatives over the next communication step (docs/cosimulation.md,
     // "Interface derivatives"): d[i][j] = d output_i (t + h) / d input_j (t), outputs i = towForce
     // x, y, z, endForce x, y, z, inputs j = tow x, y, z, vx, vy, vz, end x, y, z, vx, vy, vz (the
-    // end.* columns are 0 unless bottomEnd = 3), for a next step as long as the last one: the
+    // end.* columns are 0 unless bottomEnd = 3 or 4), for a next step as long as the last one: the
     // cable linearized about its present state, driven by the change of the driven end's quintic
     // that the input change makes, integrated over the step by BDF2 with kDerivativeSubsteps and
     // twice as many substeps, extrapolated (Richardson) to a third-order result.
