@@ -38,6 +38,29 @@ private:
     ShapeValues values_[n];
 };
 
+// Lowest height z of an element's centreline: its cubic's value at the ends and where its slope
+// in the element coordinate xi vanishes inside.
+double lowest_height(const double* Xe, double l) {
+    const double z0 = Xe[2], m0 = l * Xe[5], z1 = Xe[8], m1 = l * Xe[11];
+    const double b = m0, c = 3.0 * (z1 - z0) - 2.0 * m0 - m1, d = 2.0 * (z0 - z1) + m0 + m1;
+    auto z = [&](double xi) { return z0 + xi * (b + xi * (c + xi * d)); };
+    double lowest = std::min(z0, z1);
+    auto consider = [&](double xi) {
+        if (xi > 0.0 && xi < 1.0) lowest = std::min(lowest, z(xi));
+    };
+    if (std::abs(d) < 1e-14 * (std::abs(b) + std::abs(c) + 1e-300)) {
+        if (c != 0.0) consider(-b / (2.0 * c));
+    } else {  // 3 d xi^2 + 2 c xi + b = 0
+        const double disc = c * c - 3.0 * d * b;
+        if (disc >= 0.0) {
+            const double q = -(c + std::copysign(std::sqrt(disc), c));
+            if (q != 0.0) consider(b / q);
+            consider(q / (3.0 * d));
+        }
+    }
+    return lowest;
+}
+
 // Seabed outputs. A point of the line rests on the seabed when its centreline is within half a
 // diameter of the seabed. The contact is a penalty that starts at the seabed, sampled at quadrature
 // points, so a line at rest sinks a little into it and its cubic shape may wave by millimetres
@@ -66,11 +89,11 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
         const double reach = resting_clearance(section);
         const double ds = l / kSeabedSamples;
         const double* Xe = X + model.element_offset(e);
+        out.minSeabedClearance = std::min(out.minSeabedClearance, lowest_height(Xe, l) + p.waterDepth);
         for (int k = e == 0 ? 0 : 1; k <= kSeabedSamples; ++k) {
             const double xi = static_cast<double>(k) / kSeabedSamples;
             const double s = model.runs().size() == 1 ? (e + xi) * l : s0 + xi * l;
             const double clearance = interpolate(shapes.at(k, l).N, Xe).z() + p.waterDepth;
-            out.minSeabedClearance = std::min(out.minSeabedClearance, clearance);
             const double gap = clearance - reach;  // <= 0: resting on the seabed
             if (p.enableSeabed && s > 0.0) {
                 if (gap <= 0.0 && previousGap <= 0.0) {

@@ -12,6 +12,7 @@
 #include "line_profile.h"
 #include "mesh_grading.h"
 #include "outputs.h"
+#include "params.h"
 #include "rainflow.h"
 #include "statics.h"
 #include "sundials_compat.h"
@@ -485,8 +486,7 @@ bool CableSimulation::verify_statics(std::string& error) const {
         if (chord < 0.5 * model_.element_length(e)) {
             std::snprintf(text, sizeof text,
                           "the static equilibrium found is folded: element %d (arc length %.6g to %.6g m) spans %.3g m "
-                          "for %.3g m of cable; refusing it as a start (more elements, or initMode = 1 to start from "
-                          "the guessed shape without equilibrium)",
+                          "for %.3g m of cable; refusing it as a start",
                           e + 1, model_.element_start(e), model_.element_start(e) + model_.element_length(e), chord,
                           model_.element_length(e));
             error = text;
@@ -522,10 +522,44 @@ bool CableSimulation::verify_statics(std::string& error) const {
     std::snprintf(text, sizeof text,
                   "the static equilibrium found differs from the line's elastic catenary, which is exact for it: "
                   "tension %.6g N at the tow point and %.6g N at the far end against %.6g N and %.6g N (%+.2f %% and "
-                  "%+.2f %%); refusing a wrong start (more elements may resolve the line: nElements)",
+                  "%+.2f %%); refusing a wrong start",
                   outputs_.towTension, outputs_.endTension, top, bottom, 100.0 * topError, 100.0 * bottomError);
     error = text;
     return false;
+}
+
+std::string CableSimulation::mesh_advice(double t0, const UCInputs& in) const {
+    const UCParams& p = model_.params();
+    if (p.lineFile[0] != '\0') return "; more elements (lineFileElements) may resolve the line";
+    const bool sections = p.nSections > 1;
+    for (int factor : {2, 4}) {
+        UCParams q = p;
+        if (sections) {
+            for (int k = 0; k < p.nSections; ++k) q.section[k].nElements *= factor;
+        } else {
+            q.nElements *= factor;
+        }
+        if (!check_params(q).empty()) break;  // beyond the elements a line may have
+        CableSimulation trial(q);
+        trial.adviseMesh_ = false;
+        std::string ignored;
+        if (!trial.initialize(t0, in, ignored)) continue;
+        std::string counts;
+        if (sections) {
+            for (int k = 0; k < p.nSections; ++k)
+                counts += (k ? ", " : "") + std::string("section[") + std::to_string(k + 1) +
+                          "].nElements = " + std::to_string(q.section[k].nElements);
+        } else {
+            counts = "nElements = " + std::to_string(q.nElements);
+        }
+        char text[300];
+        std::snprintf(text, sizeof text, "; with %s the same line starts (tow tension %.6g N, far end %.6g N)",
+                      counts.c_str(), trial.outputs_.towTension, trial.outputs_.endTension);
+        return text;
+    }
+    return std::string("; neither twice nor four times the elements (") +
+           (sections ? "section[k].nElements" : "nElements") +
+           ") resolve the line: initMode = 1 starts from the guessed shape without equilibrium";
 }
 
 bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& error) {
@@ -618,6 +652,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile);
         if (!statics.converged) {
             error = statics.message;
+            if (adviseMesh_) error += mesh_advice(t0, in);
             return false;
         }
     }
@@ -644,7 +679,10 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     compressionWarned_ = false;
     rainflow_.reset();
     update_outputs();
-    if (p.initMode == UC_INIT_EQUILIBRIUM && !verify_statics(error)) return false;
+    if (p.initMode == UC_INIT_EQUILIBRIUM && !verify_statics(error)) {
+        if (adviseMesh_) error += mesh_advice(t0, in);
+        return false;
+    }
     if (off_) {  // consistent: the winch runs at the rate of the initial tension
         double R[12];
         model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, R);

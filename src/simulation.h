@@ -107,6 +107,11 @@ private:
     bool statics_applies(const Vec3& farPoint, std::string& error) const;
     // After it, on the outputs: false, with the reason, where its answer is not the line's state.
     bool verify_statics(std::string& error) const;
+    // After a static state not found or refused, for a line given by parameters: the finer mesh
+    // (twice, then four times the elements of every section) on which the same line starts, as
+    // advice to append to the message; which knob to turn where no such mesh was found.
+    std::string mesh_advice(double t0, const UCInputs& in) const;
+    bool adviseMesh_ = true;  // off in the trial runs of mesh_advice
     // Largest relative difference of the end tensions from the exact static profile [-].
     static constexpr double kStaticsCheck = 0.01;
     // Largest relative difference between the anchor force and the axial tension at the anchor of

@@ -12,11 +12,13 @@ first: every piece of MoorPy's solution between its points is the closed-form el
 (with touchdown where it rests on the seabed) of the project."""
 
 import math
+import re
 
 import numpy as np
 import pytest
 
 from studies import bench_statics as B
+from ucable.fmu import CableFMU
 from studies.exact import ElasticCatenary, TouchdownCatenary
 
 SEED = 2026          # the benchmark's default seed: this is its lines 0-11
@@ -136,3 +138,28 @@ def test_a_line_resting_on_a_frictionless_seabed_pulls_its_anchor_horizontally(i
 
 def test_no_run_is_off_by_more_than_one_percent_without_an_error(initialized):
     assert not [r["id"] for r in initialized if r["off"]]
+
+
+@pytest.mark.parametrize("line_id", [107, 217])
+def test_a_refused_coarse_mesh_names_a_finer_one_that_starts_right(fmu_file, line_id):
+    """A line whose touchdown bends within a fraction of an element is refused at 10 elements (the
+    state misses the exact profile by more than 1 %). The refusal names the mesh on which the same
+    line starts; set as named, it initializes within 1 % of MoorPy at both ends (the bound for a
+    start given without an error)."""
+    pytest.importorskip("moorpy")
+    case = B.draw_case(SEED, line_id)
+    coarse = B.fmu_run(fmu_file, case, 10)
+    assert not coarse["ok"]
+    named = dict(re.findall(r"((?:section\[\d\]\.)?nElements) = (\d+)", coarse["message"].split("; with ")[-1]))
+    assert named, coarse["message"]
+    parameters = B.fmu_parameters(case, 10)
+    parameters.update({name: int(n) for name, n in named.items()})
+    c = CableFMU(fmu_file, parameters=parameters)
+    try:
+        c.initialize(inputs={"tow.x": 0.0, "tow.y": 0.0, "tow.z": case.fairlead_z})
+        fairlead, anchor = c.get_reals(["towTension", "endTension"])
+    finally:
+        c.free()
+    ref = B.reference(case)
+    assert abs(fairlead / ref["fairlead"] - 1.0) < 0.01
+    assert abs(anchor / ref["anchor"] - 1.0) < 0.01
