@@ -42,6 +42,7 @@ void uc_instance_drop_core(UCInstance* inst) {
     uc_free(inst->cable);
     inst->cable = NULL;
     inst->coreReady = 0;
+    inst->outputsProvisional = 0;
 }
 
 void uc_instance_reset(UCInstance* inst) {

@@ -45,6 +45,8 @@ typedef struct UCInstance {
 
     UCCable* cable;              /* NULL until initialization is computed */
     int coreReady;               /* cable is initialized from the current params/inputs (or stepped since) */
+    int outputsProvisional;      /* initialization mode: the initialization from the current params/inputs
+                                    failed, outputs hold the provisional values (simulation.h) */
     int towMismatchWarned;       /* the tow position / velocity mismatch was reported in this run */
 
     char msg[UC_MSG_SIZE];       /* scratch for messages of the core */

@@ -17,14 +17,17 @@ static void log_solver_statistics(const UCInstance* inst, const char* when) {
            o->nErrorTestFailures);
 }
 
-static fmi2Status fail_with_core_message(UCInstance* inst, const char* function, const char* what) {
-    uc_log_status(&inst->log, fmi2Error, "%s: %s: %s", function, what,
+static fmi2Status fail_with_core_message(UCInstance* inst, const char* function, const char* what,
+                                        fmi2Status status) {
+    uc_log_status(&inst->log, status, "%s: %s: %s", function, what,
                   inst->msg[0] != '\0' ? inst->msg : "(no reason given)");
     uc_instance_drop_core(inst);
-    return fmi2Error;
+    return status;
 }
 
-fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function) {
+/* The initialization from the present parameters and inputs. Invalid parameters are errors; a failure of the
+ * initialization itself (which the inputs may still change) is logged and returned with status `failure`. */
+static fmi2Status initialize_core(UCInstance* inst, const char* function, fmi2Status failure) {
     if (inst->coreReady) return fmi2OK;
     uc_instance_drop_core(inst);
     inst->msg[0] = '\0';
@@ -36,12 +39,13 @@ fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function) {
     }
     if (uc_params_check(&inst->coreParams, inst->msg, sizeof inst->msg) != 0) {
         return fail_with_core_message(inst, function,
-                                      fromFile ? "invalid parameter (with the line of lineFile)" : "invalid parameter");
+                                      fromFile ? "invalid parameter (with the line of lineFile)" : "invalid parameter",
+                                      fmi2Error);
     }
     inst->cable = uc_create(&inst->coreParams, inst->msg, sizeof inst->msg);
-    if (inst->cable == NULL) return fail_with_core_message(inst, function, "cannot create the cable model");
+    if (inst->cable == NULL) return fail_with_core_message(inst, function, "cannot create the cable model", fmi2Error);
     if (uc_initialize(inst->cable, inst->startTime, &inst->inputs, inst->msg, sizeof inst->msg) != 0) {
-        return fail_with_core_message(inst, function, "initialization failed");
+        return fail_with_core_message(inst, function, "initialization failed", failure);
     }
     uc_get_outputs(inst->cable, &inst->outputs);
     inst->time = inst->startTime;
@@ -52,6 +56,29 @@ fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function) {
            inst->time, inst->outputs.towTension);
     log_solver_statistics(inst, "initialization");
     return fmi2OK;
+}
+
+fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function) {
+    return initialize_core(inst, function, fmi2Error);
+}
+
+fmi2Status uc_sim_initial_outputs(UCInstance* inst, const char* function) {
+    if (inst->coreReady) return fmi2OK;
+    if (inst->outputsProvisional) return fmi2Warning; /* nothing has been set since it failed */
+    const fmi2Status status = initialize_core(inst, function, fmi2Warning);
+    if (status != fmi2Warning) return status;
+    memset(&inst->outputs, 0, sizeof inst->outputs);
+    if (inst->params.bottomEnd == UC_BOTTOM_EXTERNAL) {
+        memcpy(inst->outputs.endPosition, inst->inputs.end, sizeof inst->outputs.endPosition);
+        memcpy(inst->outputs.endVelocity, inst->inputs.endVelocity, sizeof inst->outputs.endVelocity);
+    }
+    inst->outputsProvisional = 1;
+    uc_log_status(&inst->log, fmi2Warning,
+                  "%s: the outputs are provisional until the parameters and inputs set so far give an "
+                  "initialization (all 0, a driven far end at its inputs); it is computed again when a value is "
+                  "set and at fmi2ExitInitializationMode",
+                  function);
+    return fmi2Warning;
 }
 
 static fmi2Status check_step_arguments(UCInstance* inst, double tc, double h) {

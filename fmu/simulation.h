@@ -15,6 +15,14 @@
  * is already cached for the current parameters and inputs. Errors are logged naming `function`. */
 fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function);
 
+/* The outputs read in initialization mode: the initialization from the parameters and inputs set so far
+ * (uc_sim_ensure_initialized; invalid parameters are errors). When the initialization itself fails (a master
+ * reads outputs before it has set the inputs: a driven far end still on the tow point) it is fmi2Warning, not
+ * fmi2Error, and the outputs are provisional: all 0, except that a driven far end (bottomEnd 3) is at its
+ * inputs end.* / end.v*. The failure is logged once; the initialization is tried again when a value is set
+ * and at fmi2ExitInitializationMode (where a failure is an error). */
+fmi2Status uc_sim_initial_outputs(UCInstance* inst, const char* function);
+
 /* fmi2DoStep after the state check: time checks, uc_do_step from the FMU's own time, outputs. */
 fmi2Status uc_sim_do_step(UCInstance* inst, double currentCommunicationPoint, double communicationStepSize);
 

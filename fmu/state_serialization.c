@@ -129,6 +129,7 @@ fmi2Status uc_state_set(UCInstance* inst, fmi2FMUstate state) {
     memcpy(&inst->inputs, &s->inputs, sizeof s->inputs);
     memcpy(&inst->outputs, &s->outputs, sizeof s->outputs);
     inst->coreReady = s->coreSize > 0;
+    inst->outputsProvisional = 0;
     uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "fmi2SetFMUstate: restored state %s at t = %.17g",
            uc_state_name(inst->state), inst->time);
     return fmi2OK;

@@ -39,22 +39,27 @@ static fmi2Status check_arrays(UCInstance* inst, const void* vr, size_t nvr, con
 
 static size_t value_size(UCVarType type) { return type == UC_TYPE_REAL ? sizeof(fmi2Real) : sizeof(fmi2Integer); }
 
-/* Outputs during initialization mode are the InitialUnknowns: compute the initialization on demand. */
+/* Outputs during initialization mode are the InitialUnknowns: compute the initialization on demand
+ * (provisional outputs and fmi2Warning while the values set so far give none: uc_sim_initial_outputs). */
 static fmi2Status ensure_readable(UCInstance* inst, const UCVariable* v, const char* function) {
     if (v->causality != UC_CAUSALITY_OUTPUT || inst->state != UC_STATE_INIT_MODE) return fmi2OK;
-    return uc_sim_ensure_initialized(inst, function);
+    return uc_sim_initial_outputs(inst, function);
 }
 
 fmi2Status uc_get_values(UCInstance* inst, const fmi2ValueReference vr[], size_t nvr, void* values, UCVarType type,
                          const char* function) {
     if (check_arrays(inst, vr, nvr, values, function) != fmi2OK) return fmi2Error;
+    fmi2Status status = fmi2OK;
     for (size_t i = 0; i < nvr; ++i) {
         const UCVariable* v = find_or_log(inst, vr[i], type, function);
-        if (v == NULL || ensure_readable(inst, v, function) != fmi2OK) return fmi2Error;
+        if (v == NULL) return fmi2Error;
+        const fmi2Status readable = ensure_readable(inst, v, function);
+        if (readable != fmi2OK && readable != fmi2Warning) return readable;
+        if (readable == fmi2Warning) status = fmi2Warning;
         memcpy((char*)values + i * value_size(type),
                uc_variable_address_const(v, &inst->params, &inst->inputs, &inst->outputs), value_size(type));
     }
-    return fmi2OK;
+    return status;
 }
 
 static fmi2Status check_settable(UCInstance* inst, const UCVariable* v, const char* function) {
@@ -77,6 +82,28 @@ static fmi2Status check_real_value(UCInstance* inst, const UCVariable* v, double
     return fmi2Error;
 }
 
+/* Component 0..2 if offset lies in the double[3] at base, else -1. */
+static int component_of(size_t offset, size_t base) {
+    if (offset < base || offset >= base + 3 * sizeof(double)) return -1;
+    return (int)((offset - base) / sizeof(double));
+}
+
+/* An acceleration of a driven end is given for the coming step (by fmi2SetRealInputDerivatives or by setting the
+ * inputs tow.a* / end.a*); before initialization that changes the initialization (the first step's end). */
+static void mark_acceleration_given(UCInstance* inst, int* given) {
+    if (*given) return;
+    *given = 1;
+    if (inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
+}
+
+/* The flag of the acceleration input v stores into, or NULL for any other variable. */
+static int* acceleration_flag(UCInstance* inst, const UCVariable* v) {
+    if (v->causality != UC_CAUSALITY_INPUT) return NULL;
+    if (component_of(v->offset, offsetof(UCInputs, towAcceleration)) >= 0) return &inst->inputs.towAccelerationGiven;
+    if (component_of(v->offset, offsetof(UCInputs, endAcceleration)) >= 0) return &inst->inputs.endAccelerationGiven;
+    return NULL;
+}
+
 /* Stores one value; a changed parameter or input before initialization invalidates the cached one. */
 static void store_value(UCInstance* inst, const UCVariable* v, const void* value) {
     void* target = uc_variable_address(v, &inst->params, &inst->inputs, &inst->outputs);
@@ -95,6 +122,8 @@ fmi2Status uc_set_values(UCInstance* inst, const fmi2ValueReference vr[], size_t
         if (type == UC_TYPE_REAL) {
             if (check_real_value(inst, v, *(const fmi2Real*)value, function) != fmi2OK) return fmi2Error;
             store_value(inst, v, value);
+            int* given = acceleration_flag(inst, v);
+            if (given != NULL) mark_acceleration_given(inst, given);
         } else if (type == UC_TYPE_BOOLEAN) {
             fmi2Integer normalized = *(const fmi2Boolean*)value != fmi2False; /* any non-zero is true */
             store_value(inst, v, &normalized);
@@ -137,12 +166,6 @@ fmi2Status uc_set_strings(UCInstance* inst, const fmi2ValueReference vr[], size_
     return fmi2OK;
 }
 
-/* Component 0..2 if offset lies in the double[3] at base, else -1. */
-static int component_of(size_t offset, size_t base) {
-    if (offset < base || offset >= base + 3 * sizeof(double)) return -1;
-    return (int)((offset - base) / sizeof(double));
-}
-
 static fmi2Status set_one_derivative(UCInstance* inst, const UCVariable* v, int order, double value) {
     const char* function = "fmi2SetRealInputDerivatives";
     int velocity = component_of(v->offset, offsetof(UCInputs, towVelocity));
@@ -156,7 +179,7 @@ static fmi2Status set_one_derivative(UCInstance* inst, const UCVariable* v, int 
     if (check_real_value(inst, v, value, function) != fmi2OK) return fmi2Error;
     if ((velocity >= 0 && order == 1) || (position >= 0 && order == 2)) {
         inst->inputs.towAcceleration[velocity >= 0 ? velocity : position] = value;
-        inst->inputs.towAccelerationGiven = 1;
+        mark_acceleration_given(inst, &inst->inputs.towAccelerationGiven);
         return fmi2OK;
     }
     if (order == 1 && v->offset >= offsetof(UCInputs, current) &&
@@ -170,7 +193,7 @@ static fmi2Status set_one_derivative(UCInstance* inst, const UCVariable* v, int 
     }
     if ((endVelocity >= 0 && order == 1) || (endPosition >= 0 && order == 2)) {
         inst->inputs.endAcceleration[endVelocity >= 0 ? endVelocity : endPosition] = value;
-        inst->inputs.endAccelerationGiven = 1;
+        mark_acceleration_given(inst, &inst->inputs.endAccelerationGiven);
         return fmi2OK;
     }
     if (order == 1) {
@@ -226,18 +249,20 @@ fmi2Status uc_get_directional_derivative(UCInstance* inst, const fmi2ValueRefere
                                          fmi2Real dvUnknown[]) {
     static const char* const outputs[6] = {"towForce.x", "towForce.y", "towForce.z",
                                            "endForce.x", "endForce.y", "endForce.z"};
-    static const char* const inputs[12] = {"tow.x", "tow.y", "tow.z", "tow.vx", "tow.vy", "tow.vz",
-                                           "end.x", "end.y", "end.z", "end.vx", "end.vy", "end.vz"};
+    static const char* const inputs[18] = {"tow.x",  "tow.y",  "tow.z",  "tow.vx", "tow.vy", "tow.vz",
+                                           "end.x",  "end.y",  "end.z",  "end.vx", "end.vy", "end.vz",
+                                           "tow.ax", "tow.ay", "tow.az", "end.ax", "end.ay", "end.az"};
     const char* function = "fmi2GetDirectionalDerivative";
     if ((nUnknown > 0 && (unknown == NULL || dvUnknown == NULL)) ||
         (nKnown > 0 && (known == NULL || dvKnown == NULL))) {
         uc_log_status(&inst->log, fmi2Error, "%s: NULL array", function);
         return fmi2Error;
     }
-    int rows[6], cols[12];
-    if (nUnknown > 6 || nKnown > 12) {
+    int rows[6];
+    double seed[18] = {0.0};
+    if (nUnknown > 6 || nKnown > 18) {
         uc_log_status(&inst->log, fmi2Error,
-                      "%s: at most 6 unknowns (towForce.*, endForce.*) and 12 knowns (tow.*, end.*) per call",
+                      "%s: at most 6 unknowns (towForce.*, endForce.*) and 18 knowns (tow.*, end.*) per call",
                       function);
         return fmi2Error;
     }
@@ -246,14 +271,15 @@ fmi2Status uc_get_directional_derivative(UCInstance* inst, const fmi2ValueRefere
         if (rows[i] < 0) return fmi2Error;
     }
     for (size_t j = 0; j < nKnown; ++j) {
-        cols[j] = interface_index(inst, known[j], inputs, 12, "with respect to",
-                                  "with respect to tow.x/y/z, tow.vx/vy/vz, end.x/y/z and end.vx/vy/vz");
-        if (cols[j] < 0) return fmi2Error;
+        const int col = interface_index(inst, known[j], inputs, 18, "with respect to",
+                                        "with respect to tow.x/y/z, tow.vx/vy/vz, tow.ax/ay/az, end.x/y/z, "
+                                        "end.vx/vy/vz and end.ax/ay/az");
+        if (col < 0) return fmi2Error;
         if (!isfinite(dvKnown[j])) {
-            uc_log_status(&inst->log, fmi2Error, "%s: the seed of %s is not a finite number",
-                          function, inputs[cols[j]]);
+            uc_log_status(&inst->log, fmi2Error, "%s: the seed of %s is not a finite number", function, inputs[col]);
             return fmi2Error;
         }
+        seed[col] += dvKnown[j];
     }
     if (inst->cable == NULL || !inst->coreReady) {
         uc_log_status(&inst->log, fmi2Error,
@@ -261,15 +287,11 @@ fmi2Status uc_get_directional_derivative(UCInstance* inst, const fmi2ValueRefere
                       "fmi2DoStep", function);
         return fmi2Error;
     }
-    double d[72];
-    if (uc_interface_derivatives(inst->cable, d, inst->msg, sizeof inst->msg) != 0) {
+    double d[6];
+    if (uc_interface_derivative(inst->cable, seed, d, inst->msg, sizeof inst->msg) != 0) {
         uc_log_status(&inst->log, fmi2Error, "%s: %s", function, inst->msg);
         return fmi2Error;
     }
-    for (size_t i = 0; i < nUnknown; ++i) {
-        double sum = 0.0;
-        for (size_t j = 0; j < nKnown; ++j) sum += d[12 * rows[i] + cols[j]] * dvKnown[j];
-        dvUnknown[i] = sum;
-    }
+    for (size_t i = 0; i < nUnknown; ++i) dvUnknown[i] = d[rows[i]];
     return fmi2OK;
 }

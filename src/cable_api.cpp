@@ -86,17 +86,13 @@ extern "C" int uc_take_event(UCCable* c, char* text, size_t size) {
     return 1;
 }
 
-extern "C" int uc_interface_derivatives(UCCable* c, double d[72], char* msg, size_t msgSize) {
+extern "C" int uc_interface_derivative(UCCable* c, const double seed[18], double out[6], char* msg, size_t msgSize) {
     return guarded(msg, msgSize, [&](std::string& error) {
-        if (!c || !d) {
-            error = "uc_interface_derivatives: NULL pointer";
+        if (!c || !seed || !out) {
+            error = "uc_interface_derivative: NULL pointer";
             return false;
         }
-        double m[6][12];
-        const bool ok = c->simulation.interface_derivatives(m, error);
-        for (int i = 0; i < 6; ++i)
-            for (int j = 0; j < 12; ++j) d[12 * i + j] = m[i][j];
-        return ok;
+        return c->simulation.interface_derivative(seed, out, error);
     });
 }
 

@@ -90,12 +90,13 @@ int uc_initialize(UCCable* c, double t0, const UCInputs* in, char* msg, size_t m
  * last two tow velocity inputs over the last step size (0 on the first step). */
 int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, char* msg, size_t msgSize);
 
-/* The interface derivatives over the next communication step (taken as long as the last one):
- * d[12 i + j] = d output_i(t + h) / d input_j(t) for the outputs towForce x, y, z, endForce x, y, z
- * (i = 0..5) and the inputs tow x, y, z, vx, vy, vz, end x, y, z, vx, vy, vz (j = 0..11; the end
- * columns are 0 unless bottomEnd = 3 or 4). Available after the first step; docs/cosimulation.md says
+/* The interface derivatives over the next communication step (taken as long as the last one) in the
+ * direction seed: out[i] = sum_j d output_i(t + h) / d input_j(t) seed[j] for the outputs towForce x, y, z,
+ * endForce x, y, z (i = 0..5) and the inputs tow x, y, z, vx, vy, vz (j = 0..5), end x, y, z, vx, vy, vz
+ * (6..11), tow ax, ay, az (12..14), end ax, ay, az (15..17) (the end inputs act only when bottomEnd = 3 or 4).
+ * Only the requested direction is computed. Available after the first step; docs/cosimulation.md says
  * exactly what they are. */
-int uc_interface_derivatives(UCCable* c, double d[72], char* msg, size_t msgSize);
+int uc_interface_derivative(UCCable* c, const double seed[18], double out[6], char* msg, size_t msgSize);
 
 /* Where the tow point stands now: the end of the last step's trajectory (the previous inputs
  * extrapolated), or the initial tow position. A position input far from it is a displacement. */

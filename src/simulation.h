@@ -60,14 +60,18 @@ public:
     bool restore_state(const void* buffer, size_t size, std::string& error);
 
     // The interface derivatives over the next communication step (docs/cosimulation.md,
-    // "Interface derivatives"): d[i][j] = d output_i (t + h) / d input_j (t), outputs i = towForce
-    // x, y, z, endForce x, y, z, inputs j = tow x, y, z, vx, vy, vz, end x, y, z, vx, vy, vz (the
-    // end.* columns are 0 unless bottomEnd = 3 or 4), for a next step as long as the last one: the
-    // cable linearized about its present state, driven by the change of the driven end's quintic
-    // that the input change makes, integrated over the step by BDF2 with kDerivativeSubsteps and
-    // twice as many substeps, extrapolated (Richardson) to a third-order result.
+    // "Interface derivatives"): out[i] = sum_j d output_i (t + h) / d input_j (t) seed[j], outputs
+    // i = towForce x, y, z, endForce x, y, z, inputs j = tow x, y, z, vx, vy, vz (0-5), end x, y,
+    // z, vx, vy, vz (6-11), tow ax, ay, az (12-14), end ax, ay, az (15-17) (the end inputs act
+    // only when bottomEnd = 3 or 4), for a next step as long as the last one: the cable linearized about
+    // its present state, driven by the change of the driven end's quintic that the input change
+    // makes, integrated over the step by BDF2 with kDerivativeSubsteps and twice as many substeps,
+    // extrapolated (Richardson) to a third-order result. Only the requested direction is computed:
+    // one integration per call, whatever the number of inputs in it; a column (one input) is kept
+    // until the state changes, so a master asking column by column pays once per column.
     static constexpr int kDerivativeSubsteps = 64;
-    bool interface_derivatives(double d[6][12], std::string& error);
+    static constexpr int kDerivativeInputs = 18;
+    bool interface_derivative(const double seed[kDerivativeInputs], double out[6], std::string& error);
 
     // Free positions q and velocities v of the current state (for tests).
     void free_state(std::vector<double>& q, std::vector<double>& v, std::vector<double>& a) const;
@@ -227,12 +231,20 @@ private:
     OutputWorkspace outputWork_;
     std::vector<double> historyBuffer_;  // the integrator's history on its way to/from a saved state
     std::vector<double> toleranceBuffer_;
-    // interface derivatives (allocated at their first use)
-    std::unique_ptr<UnpivotedBandLU> derivativeLU_;
+    // interface derivatives (allocated at their first use): the linearization at the present
+    // state, the step matrices of the two substep sizes factored, and the columns computed so far
+    bool prepare_derivatives(std::string& error);
+    void derivative_response(const double seed[kDerivativeInputs], double out[6]);
+    std::unique_ptr<UnpivotedBandLU> derivativeLU_[2];
     std::unique_ptr<BandMatrix> derivativeK_, derivativeC_, derivativeM_;
+    Mat12 derivativeKe_[2], derivativeCe_[2], derivativeMe_[2];
+    Mat6 derivativeKn_, derivativeCn_, derivativeMn_;
+    // bottomEnd 4: the force on the body by the proxy's velocity and position at t + h
+    Mat3 derivativeProxyVelocity_ = Mat3::Zero(), derivativeProxyPosition_ = Mat3::Zero();
     std::vector<double> derivativeWork_;
-    double derivativeCache_[6][12] = {};
-    long derivativeStamp_ = -1;  // stateStamp_ of the cached derivatives
+    double derivativeColumns_[kDerivativeInputs][6] = {};
+    bool derivativeColumnDone_[kDerivativeInputs] = {};
+    long derivativeStamp_ = -1;  // stateStamp_ of the linearization and the columns
     long stateStamp_ = 0;        // changes whenever the state does (step, initialization, restore)
 };
 

@@ -140,9 +140,9 @@ typedef struct UCInputs {
     double winchRate; /* winch.rate [m/s]: winch rate when `winchMode` = 1: positive pays out, negative hauls in (limited by `winch.maxRate` and the length limits) */
     double winchTension; /* winch.tension [N]: tow tension the winch holds when `winchMode` = 2 */
     double currentScale; /* currentScale: factor on the current depth profile: the water moves with `current.x/y` + `currentScale` × profile(depth), so a current that strengthens or turns with the tide at every depth in proportion is this input (with its derivative through `fmi2SetRealInputDerivatives` it changes linearly over a step, and the water's acceleration acts on the line) */
-    double towAcceleration[3]; /* (not an FMU variable) [m/s2] from fmi2SetRealInputDerivatives (der(tow.v*) or der(tow.*,2)); 0 if not given */
-    int towAccelerationGiven; /* (not an FMU variable) 1 when towAcceleration came from the master for this step; 0: the core estimates it from the last two tow velocity inputs */
-    double endAcceleration[3]; /* (not an FMU variable) [m/s2] der(end.v*) from fmi2SetRealInputDerivatives */
+    double towAcceleration[3]; /* tow.ax, tow.ay, tow.az [m/s2]: tow point acceleration for the coming step: the same as `der(tow.v*)` through `fmi2SetRealInputDerivatives`, for a master that cannot pass input derivatives (connect the vessel's acceleration here); used when set since the last step, otherwise the FMU estimates it from the last two velocity inputs; it is also the input of the derivatives' acceleration columns ([docs/cosimulation.md](docs/cosimulation.md)) */
+    double endAcceleration[3]; /* end.ax, end.ay, end.az [m/s2]: far-end acceleration for the coming step when `bottomEnd` = 3: the same as `der(end.v*)`, used when set since the last step (as `tow.a*`) */
+    int towAccelerationGiven; /* (not an FMU variable) 1 when towAcceleration (the inputs tow.a*) came from the master for this step (fmi2SetRealInputDerivatives or fmi2SetReal); 0: the core estimates it from the last two tow velocity inputs */
     int endAccelerationGiven; /* (not an FMU variable) as towAccelerationGiven, for the far end */
     double currentRate[2]; /* (not an FMU variable) [m/s2] der(current.x/y) from fmi2SetRealInputDerivatives: the uniform current changes linearly over the step; 0 if not given */
     double currentScaleRate; /* (not an FMU variable) [1/s] der(currentScale) from fmi2SetRealInputDerivatives: the profile's scale changes linearly over the step; 0 if not given */
@@ -485,6 +485,12 @@ typedef struct UCOutputs {
     X(1035, "winch.rate", REAL, INPUT, winchRate) \
     X(1036, "winch.tension", REAL, INPUT, winchTension) \
     X(1037, "currentScale", REAL, INPUT, currentScale) \
+    X(1038, "tow.ax", REAL, INPUT, towAcceleration[0]) \
+    X(1039, "tow.ay", REAL, INPUT, towAcceleration[1]) \
+    X(1040, "tow.az", REAL, INPUT, towAcceleration[2]) \
+    X(1041, "end.ax", REAL, INPUT, endAcceleration[0]) \
+    X(1042, "end.ay", REAL, INPUT, endAcceleration[1]) \
+    X(1043, "end.az", REAL, INPUT, endAcceleration[2]) \
     X(2001, "towForce.x", REAL, OUTPUT, towForce[0]) \
     X(2002, "towForce.y", REAL, OUTPUT, towForce[1]) \
     X(2003, "towForce.z", REAL, OUTPUT, towForce[2]) \

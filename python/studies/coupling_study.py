@@ -441,56 +441,74 @@ def write_csv(path: Path, cells: list) -> None:
             w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in c.items()})
 
 
-def update_doc(doc: Path, section: str) -> None:
+def update_doc(doc: Path, section: str, begin: str = BEGIN, end: str = END) -> None:
+    """The generated section between the markers begin and end (appended when the page has none)."""
     text = doc.read_text()
-    if BEGIN in text and END in text:
-        before, rest = text.split(BEGIN, 1)
-        after = rest.split(END, 1)[1]
+    if begin in text and end in text:
+        before, rest = text.split(begin, 1)
+        after = rest.split(end, 1)[1]
         text = before + section + after
     else:
         text = text.rstrip("\n") + "\n\n" + section + "\n"
     doc.write_text(text)
 
 
-def parse_args(argv):
-    p = argparse.ArgumentParser(prog="scripts/coupling_study", description=__doc__.split("\n")[0],
+def study_parser(prog: str, description: str, steps, masses, manoeuvres, out: Path, out_help: str,
+                 doc_help: str) -> argparse.ArgumentParser:
+    """The command line of a study over steps x masses x manoeuvres with a generated section in a page."""
+    p = argparse.ArgumentParser(prog=prog, description=description,
                                 formatter_class=argparse.ArgumentDefaultsHelpFormatter)
-    p.add_argument("--steps", type=float, nargs="+", default=STEPS, help="communication steps [s]")
-    p.add_argument("--masses", type=float, nargs="+", default=MASSES, help="body masses [kg]")
-    p.add_argument("--manoeuvres", nargs="+", default=MANOEUVRES, choices=list(S.MANOEUVRES))
-    p.add_argument("--out", type=Path, default=REPO_ROOT / "out" / "coupling_study",
-                   help="directory for study.json and the report files")
-    p.add_argument("--doc", type=Path, default=None,
-                   help="write the report into this Markdown file's generated section and the figures and the "
-                        "CSV next to it (docs/cosimulation.md)")
+    p.add_argument("--steps", type=float, nargs="+", default=steps, help="communication steps [s]")
+    p.add_argument("--masses", type=float, nargs="+", default=masses, help="body masses [kg]")
+    p.add_argument("--manoeuvres", nargs="+", default=manoeuvres, choices=list(S.MANOEUVRES))
+    p.add_argument("--out", type=Path, default=out, help=out_help)
+    p.add_argument("--doc", type=Path, default=None, help=doc_help)
     p.add_argument("--from-json", type=Path, default=None, help="report from a saved study.json, no runs")
-    return p.parse_args(argv)
+    return p
+
+
+def study_data(args, label: str, runs: int, compute_data) -> dict:
+    """The study's data: read from --from-json, or computed (compute_data(steps, masses, manoeuvres,
+    progress), with a progress bar over `runs`) and saved as study.json in --out."""
+    args.out.mkdir(parents=True, exist_ok=True)
+    if args.from_json is not None:
+        return json.loads(args.from_json.read_text())
+    require_fmu()
+    bar = ProgressBar(runs, label=label)
+    t0 = time.time()
+    data = compute_data(sorted(args.steps), sorted(args.masses), args.manoeuvres, progress=bar)
+    bar.close(f"done in {time.time() - t0:.0f} s")
+    (args.out / "study.json").write_text(json.dumps(data))
+    return data
+
+
+def publish(args, section: str, begin: str = BEGIN, end: str = END) -> None:
+    """The report into --doc's generated section (between begin and end), else --out/report.md; printed."""
+    if args.doc is not None:
+        update_doc(args.doc, section, begin, end)
+        print(f"updated {args.doc}")
+    else:
+        (args.out / "report.md").write_text(section + "\n")
+    print(section)
+
+
+def parse_args(argv):
+    return study_parser("scripts/coupling_study", __doc__.split("\n")[0], STEPS, MASSES, MANOEUVRES,
+                        REPO_ROOT / "out" / "coupling_study", "directory for study.json and the report files",
+                        "write the report into this Markdown file's generated section and the figures and the "
+                        "CSV next to it (docs/cosimulation.md)").parse_args(argv)
 
 
 def main(argv=None) -> int:
     args = parse_args(sys.argv[1:] if argv is None else argv)
-    args.out.mkdir(parents=True, exist_ok=True)
-    if args.from_json is not None:
-        data = json.loads(args.from_json.read_text())
-    else:
-        require_fmu()
-        n = len(args.manoeuvres) * len(args.masses) * (1 + len(S.ORDERINGS) * len(args.steps) * 3)
-        bar = ProgressBar(n, label="coupling study")
-        data = compute(sorted(args.steps), sorted(args.masses), args.manoeuvres, progress=bar)
-        bar.close("done")
-        (args.out / "study.json").write_text(json.dumps(data))
+    runs = len(args.manoeuvres) * len(args.masses) * (1 + len(S.ORDERINGS) * len(args.steps) * 3)
+    data = study_data(args, "coupling study", runs, compute)
     where = args.doc.parent if args.doc is not None else args.out
     figures = {"regions": "coupling_study.png", "amplification": "coupling_amplification.png",
                "csv": "coupling_study.csv"}
     plot(data, where / figures["regions"], where / figures["amplification"])
     write_csv(where / figures["csv"], data["cells"])
-    section = markdown(data, figures)
-    if args.doc is not None:
-        update_doc(args.doc, section)
-        print(f"updated {args.doc}")
-    else:
-        (args.out / "report.md").write_text(section + "\n")
-    print(section)
+    publish(args, markdown(data, figures))
     return 0
 
 

@@ -6,7 +6,7 @@
     ucable scenes                  the shipped scenes
     ucable scenes show NAME        print a shipped scene (to copy and edit: ucable scenes show turn90 > my.toml)
     ucable scenes format           print the scene format's reference (every key, unit, default)
-    ucable system NAME [--master fmpy|libcosim] [--out DIR]    run a shipped system of FMUs
+    ucable system NAME [--master fmpy|libcosim|newton] [--out DIR]    run a shipped system of FMUs
     ucable fmu                     the path of the FMU
     ucable --version
 
@@ -139,6 +139,9 @@ def cmd_system(a) -> int:
     plot(out / "result.png", r, f"{a.name}: {a.master}, step {r.step:g} s")
     T = r["cable.towTension"]
     print(f"tow tension: start {T[0]:.0f} N, max {max(T):.0f} N, end {T[-1]:.0f} N; wrote {out}/result.csv, result.png")
+    if r.stats:
+        from .newton import summary
+        print(summary(r))
     return 0
 
 
@@ -166,7 +169,9 @@ def build_parser() -> argparse.ArgumentParser:
     sc.add_argument("name", nargs="?")
     y = sub.add_parser("system", help="run a shipped system of FMUs (vessel, cable, towed body); no NAME: list them")
     y.add_argument("name", nargs="?")
-    y.add_argument("--master", choices=("fmpy", "libcosim"), default="fmpy", help="co-simulation master (default fmpy)")
+    y.add_argument("--master", choices=("fmpy", "libcosim", "newton"), default="fmpy",
+                   help="co-simulation master (default fmpy); newton: the reference iterating master, for "
+                        "towed_body_explicit (a body that integrates itself)")
     y.add_argument("--manoeuvre", default="accelerate",
                    help="the vessel's manoeuvre of a towed-body system: accelerate, decelerate, turn90, turn180, "
                         "stop, circle (default accelerate)")

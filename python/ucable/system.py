@@ -6,6 +6,8 @@ OSP system structure file (systems/*/OspSystemStructure.xml) and run by one of t
   the values of the last communication point, as libcosim's fixed-step algorithm). Optionally it passes
   the tow-point acceleration (the vessel's tow.a*) to the cable as the input derivative der(tow.v*).
 - libcosim (libcosimpy): loads the same system file and runs its fixed-step algorithm (Jacobi).
+- newton (ucable.newton): the reference iterating master for a body that integrates itself (the explicit
+  coupling): the cable-body interface solved by Newton's method per step, both FMUs rolled back.
 
 Couplings of the towed body (COUPLINGS):
   internal  the body inside the cable FMU (bottomEnd 2 with body.CdA): systems/towed_body_internal
@@ -43,7 +45,7 @@ SYSTEM_DIRS = {"internal": "towed_body_internal", "external": "towed_body", "exp
                "proxy": "towed_body_proxy"}
 SELF_INTEGRATING = ("explicit", "proxy")  # the body FMU integrates its own translation
 COUPLINGS = tuple(SYSTEM_DIRS)
-MASTERS = ("fmpy", "libcosim")
+MASTERS = ("fmpy", "libcosim", "newton")
 ORDERINGS = ("gauss-seidel", "jacobi")
 GAUSS_SEIDEL_ORDER = ("cable", "body", "vessel")  # the cable first, then the units that use its outputs
 OSP_NS = "http://opensimulationplatform.com/MSMI/OSPSystemStructure"
@@ -225,6 +227,7 @@ class SystemResult:
     master: str
     ordering: str
     step: float
+    stats: dict = field(default_factory=dict)  # the newton master's iteration counts (ucable.newton)
 
     def __getitem__(self, name):
         return self.values[name]
@@ -296,8 +299,8 @@ class FmpyMaster:
             if "body" in self.units and any(c.input.startswith("end.") and c.target == "cable"
                                             for c in system.connections):
                 pairs.append(("body", "acceleration.", "cable", "end.v"))
-            for src, out, dst, inp in pairs:
-                if src in self.units and dst in self.units:
+            for src, out, dst, inp in pairs:  # (a body without an acceleration output gives none)
+                if src in self.units and dst in self.units and all(out + q in self.units[src].vars for q in "xyz"):
                     self.derivatives.append((dst, self.units[dst].vrs([inp + q for q in "xyz"]),
                                              src, self.units[src].vrs([out + q for q in "xyz"])))
         self.t = 0.0
@@ -370,10 +373,16 @@ def _record_vrs(units):
 
 
 def run_fmpy(system: SystemStructure, parameters: dict, step: float, t_end: float, ordering: str,
-             input_derivatives: bool = True, progress=None) -> SystemResult:
+             input_derivatives: bool = True, progress=None, newton: dict | None = None) -> SystemResult:
+    """The system under the fmpy master; with `newton` (the options of ucable.newton.NewtonMaster) the
+    cable-body interface iterated by the Newton master (Gauss-Seidel for the vessel)."""
     n = int(round(t_end / step))
     times = np.arange(n + 1) * step
     master = FmpyMaster(system, parameters, ordering, input_derivatives, t_end=times[-1] + 1e-9)
+    if newton is not None:
+        from .newton import NewtonMaster
+
+        master = NewtonMaster(master, **newton)
     try:
         rec = _record_vrs(master.units)
         values = {f"{u}.{v}": np.full(n + 1, math.nan) for u, (names, _) in rec.items() for v in names}
@@ -403,6 +412,8 @@ def run_fmpy(system: SystemStructure, parameters: dict, step: float, t_end: floa
         raise
     finally:
         master.free()
+    if newton is not None:
+        return SystemResult(times, values, cpu, "", "newton", ordering, step, master.stats.as_dict())
     return SystemResult(times, values, cpu, "", "fmpy", ordering, step)
 
 
@@ -487,21 +498,33 @@ def steady_far_end(system: SystemStructure, parameters: dict, body: Body) -> dic
 def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: str = "fmpy",
         ordering: str = "gauss-seidel", body: Body = Body(), duration: float | None = None,
         input_derivatives: bool = True, cable_parameters: dict | None = None, waves: dict | None = None,
-        vessel_parameters: dict | None = None, progress=None) -> SystemResult:
+        vessel_parameters: dict | None = None, progress=None, body_fmu: Path | None = None,
+        newton: dict | None = None) -> SystemResult:
     """One system run: the manoeuvre flown by the Vessel FMU, the towed body coupled as `coupling`; `waves`
     (waves.* parameters and waterDepth) are given to the vessel, whose wave-frequency motion is then
     superimposed on its manoeuvre, and to the cable: one sea for both; `vessel_parameters` to the vessel
-    alone (raoFile: its RAO table)."""
+    alone (raoFile: its RAO table). `body_fmu`: another body FMU that integrates itself in place of the
+    TowedBody (coupling explicit; the TowedBody's names: parameters mass, addedMass, volume, CdA, CLA,
+    position0.*, velocity0.*, input cableForce.*, outputs position.*, velocity.*). Master newton: the
+    reference iterating master (ucable.newton, options `newton`), coupling explicit."""
     if manoeuvre not in MANOEUVRES:
         raise ValueError(f"manoeuvre must be one of {', '.join(MANOEUVRES)}")
     if master not in MASTERS:
         raise ValueError(f"master must be one of {MASTERS}")
     if master == "libcosim" and ordering != "jacobi":
         raise ValueError("libcosim's fixed-step algorithm is Jacobi: use ordering jacobi")
+    if master == "newton" and coupling != "explicit":
+        raise ValueError("the newton master iterates with a body that integrates itself: coupling explicit")
+    if body_fmu is not None and coupling != "explicit":
+        raise ValueError("a body FMU of its own integrates itself: coupling explicit")
     vessel, default_duration = MANOEUVRES[manoeuvre]
     t_end = default_duration if duration is None else duration
     system = load_system(coupling)
     params = unit_parameters(coupling, body)
+    if body_fmu is not None:
+        unit = system.simulators["body"]
+        unit.source, unit.initial = Path(body_fmu), {}
+        params["body"].pop("integrateTranslation")
     params["vessel"] = {**vessel, **(waves or {}), **(vessel_parameters or {})}
     params["cable"] = {**params["cable"], **(cable_parameters or {}), **(waves or {})}
     if coupling in SELF_INTEGRATING:
@@ -513,6 +536,10 @@ def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: s
         params["cable"].update({f"end.v{q}": start[f"velocity0.{q}"] for q in "xyz"})
     if master == "libcosim":
         result = run_libcosim(system, params, step, t_end, progress)
+    elif master == "newton":
+        b = body.resolved()
+        options = {"body_weight": b.mass * 9.81, **(newton or {})}
+        result = run_fmpy(system, params, step, t_end, "gauss-seidel", True, progress, newton=options)
     else:
         result = run_fmpy(system, params, step, t_end, ordering, input_derivatives, progress)
     result.coupling = coupling
@@ -541,6 +568,9 @@ def run_named(name: str, master: str = "fmpy", step: float | None = None, durati
     `manoeuvre` (their file's vessel flies accelerate); the others run from their start values."""
     if master not in MASTERS:
         raise ValueError(f"master must be one of {', '.join(MASTERS)}")
+    if master == "newton" and COUPLING_OF_SYSTEM.get(name) != "explicit":
+        raise ValueError(f"the newton master iterates with a body that integrates itself: system "
+                         f"{SYSTEM_DIRS['explicit']}, not {name}")
     ordering = "jacobi" if master == "libcosim" else "gauss-seidel"
     system = load_named_system(name)
     h = system.step if step is None else step

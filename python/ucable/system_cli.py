@@ -36,7 +36,13 @@ def parse_args(argv):
                    help="accelerate/decelerate: Hopland speed ramps; turn90/turn180: turns at 2.4 kn; stop; circle")
     p.add_argument("--step", type=float, default=0.5, help="communication step [s]")
     p.add_argument("--coupling", choices=COUPLINGS, default="external", help="how the towed body is coupled")
-    p.add_argument("--master", choices=MASTERS, default="fmpy", help="co-simulation master")
+    p.add_argument("--master", choices=MASTERS, default="fmpy",
+                   help="co-simulation master; newton: the reference iterating master (ucable.newton) for a body "
+                        "that integrates itself (--coupling explicit)")
+    p.add_argument("--body-fmu", type=Path, default=None, metavar="PATH",
+                   help="with --coupling explicit: another body FMU that integrates itself, in place of the "
+                        "TowedBody (its names: mass, addedMass, volume, CdA, CLA, position0.*, velocity0.*; input "
+                        "cableForce.*; outputs position.*, velocity.*)")
     p.add_argument("--ordering", choices=ORDERINGS, default=None,
                    help="fmpy: gauss-seidel (cable first, then body and vessel) or jacobi; libcosim: jacobi "
                         "(default: gauss-seidel for fmpy, jacobi for libcosim)")
@@ -141,7 +147,8 @@ def main(argv=None) -> int:
     try:
         r = run(args.manoeuvre, args.step, args.coupling, args.master, ordering, body, duration,
                 input_derivatives=args.input_derivatives, waves=waves_of(args),
-                vessel_parameters=None if args.rao_file is None else {"raoFile": args.rao_file}, progress=bar)
+                vessel_parameters=None if args.rao_file is None else {"raoFile": args.rao_file}, progress=bar,
+                body_fmu=args.body_fmu)
     except (ValueError, FileNotFoundError) as e:
         sys.exit(f"scripts/system: {e}")
     except FMICallException as e:
@@ -160,6 +167,9 @@ def main(argv=None) -> int:
     T, p = r["cable.towTension"], r.body_position
     print(f"tow tension: start {T[0]:.0f} N, min {np.nanmin(T):.0f} N, max {np.nanmax(T):.0f} N, end {T[-1]:.0f} N; "
           f"body depth {-p[0, 2]:.1f} -> {-p[-1, 2]:.1f} m")
+    if r.stats:
+        from .newton import summary
+        print(summary(r))
     print(f"wrote:\n  {out / 'result.csv'}\n  {out / 'result.png'}")
     return 0
 

@@ -60,3 +60,16 @@ def make_unit():
 def make_cable(fmu_file, make_unit):
     """Factory of cable FMU instances (make_unit on the cable's FMU)."""
     return lambda **kwargs: make_unit(fmu_file, **kwargs)
+
+
+@pytest.fixture(scope="session")
+def towfish_fmu(tmp_path_factory) -> Path:
+    """Towfish.fmu: a towed body FMU of "another vendor" (tests/third_party_body), built for this session
+    by its own script, outside the project's CMake (the C compiler and zip, nothing else)."""
+    import subprocess
+
+    out = tmp_path_factory.mktemp("third_party_body")
+    proc = subprocess.run(["bash", str(REPO_ROOT / "tests" / "third_party_body" / "build.sh"), str(out)],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    return out / "Towfish.fmu"

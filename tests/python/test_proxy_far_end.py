@@ -29,6 +29,28 @@ def test_self_integrating_body_follows_the_internal_body(fmu_file, manoeuvre, or
     assert cell.position_max <= POSITION_BOUND
 
 
+def test_libcosim_runs_the_proxy_system_like_the_fmpy_jacobi_master(fmu_file):
+    """libcosim's fixed-step algorithm calls what the fmpy Jacobi master without input derivatives
+    calls: bit-identical results, the body's own state included."""
+    pytest.importorskip("libcosimpy")
+    lc = S.run("turn90", 0.5, "proxy", "libcosim", "jacobi", S.Body(400.0), duration=60.0)
+    fj = S.run("turn90", 0.5, "proxy", "fmpy", "jacobi", S.Body(400.0), duration=60.0, input_derivatives=False)
+    for key in lc.values:
+        assert np.array_equal(lc[key], fj[key]), key
+
+
+def test_the_proxy_system_file_starts_at_the_steady_far_end(fmu_file):
+    """The start values of the shipped proxy system are the steady far end of its body (to the 1e-9 m
+    of the file's digits), for the body and for the cable's end inputs."""
+    system = S.load_named_system("towed_body_proxy")
+    body, cable = system.simulators["body"].initial, system.simulators["cable"].initial
+    b = S.Body(body["mass"], body["addedMass"], body["volume"], body["CdA"])
+    start = S.steady_far_end(system, {"vessel": system.simulators["vessel"].initial}, b)
+    pairs = [(f"end.{q}", f"position0.{q}") for q in "xyz"] + [(f"end.v{q}", f"velocity0.{q}") for q in "xyz"]
+    for cable_input, body_start in pairs:
+        assert (body[body_start], cable[cable_input]) == pytest.approx((start[body_start],) * 2, abs=1e-9)
+
+
 def test_the_estimate_learns_the_bodys_drag_and_weight(fmu_file):
     """After the Hopland acceleration the proxy's estimate of the body's other forces equals the force
     the body reports (its drag and submerged weight at its velocity): the estimate is what the cable
