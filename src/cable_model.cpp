@@ -629,10 +629,14 @@ void ProxyEstimate::add(const Vec3& dF, const Vec3& u) {
     // along it, the constant part the rest
     const Vec3 cross(-u.y(), u.x(), 0.0);
     const double speed = std::sqrt(u.squaredNorm() + kProxyFlowSmoothing * kProxyFlowSmoothing);
-    const double u2 = u.squaredNorm(), s4 = std::pow(kProxyFlowScale, 4);
-    const double w = u2 * u2 / (u2 * u2 + s4);
-    const double a = u2 > 0.0 ? w * dF.dot(u) / (speed * u2) : 0.0;
-    const double c = cross.squaredNorm() > 0.0 ? w * dF.dot(cross) / (speed * cross.squaredNorm()) : 0.0;
+    const double u2 = u.squaredNorm(), c2 = cross.squaredNorm(), s4 = std::pow(kProxyFlowScale, 4);
+    // the share of each direction by its own flow: across by the horizontal flow alone, which
+    // vanishes where the flow turns vertical (a heaving body), along by the whole
+    const double wa = u2 * u2 / (u2 * u2 + s4), wc = c2 * c2 / (c2 * c2 + s4);
+    // a drag takes energy out of the motion: along stays >= 0 (what would make it negative, a
+    // transient pushing the body ahead of its flow, goes to the constant part)
+    const double a = std::max(u2 > 0.0 ? wa * dF.dot(u) / (speed * u2) : 0.0, -along);
+    const double c = c2 > 0.0 ? wc * dF.dot(cross) / (speed * c2) : 0.0;
     along += a;
     across += c;
     constant += dF - speed * (a * u + c * cross);

@@ -52,8 +52,10 @@ private:
 // flow relative to the body,
 //   F(u) = constant + |u| (along u + across (z x u)),
 // a drag law whose coefficients are estimated. The estimate's changes go to the law with the share
-// w = |u|^4 / (|u|^4 + s^4) (s = kProxyFlowScale) and to the constant part otherwise: what is learnt
-// at a crawl is not blown up by the square of a later speed. Applied at the proxy's velocity inside
+// w = |f|^4 / (|f|^4 + s^4) (s = kProxyFlowScale; f the flow of the term: u along, the horizontal
+// flow across) and to the constant part otherwise: what is learnt at a crawl is not blown up by the
+// square of a later speed. The law's along coefficient stays >= 0 (a drag, never a push along the
+// flow, which would feed the proxy's motion). Applied at the proxy's velocity inside
 // the implicit step, as a drag.
 struct ProxyEstimate {
     Vec3 constant = Vec3::Zero();  // [N]

@@ -1,6 +1,7 @@
-"""Proxy far end study (scripts/proxy_study): a towed body that integrates its own translation (the
-TowedBody FMU with integrateTranslation, a plain causal interface: cable force in, position and velocity
-out) coupled through the proxy far end (bottomEnd 4), computed two ways:
+"""Proxy far end study (scripts/proxy_study): a towed body that integrates its own translation (a plain
+causal interface: cable force in, position and velocity out) coupled through the proxy far end
+(bottomEnd 4): the third party's Towfish FMU (tests/third_party_body, built outside the project's CMake)
+and the project's TowedBody FMU with integrateTranslation, computed two ways:
 
 1. theory: the amplification factor (spectral radius of the one-step map) of the model problem of
    scripts/coupling_study (the cable's axial chain) with the proxy at its end, the external body with
@@ -21,6 +22,7 @@ import argparse
 import json
 import math
 import sys
+import tempfile
 import time
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -45,6 +47,8 @@ SENSITIVITY_MASSES = [50.0, 2000.0]
 # low-pass max(FILTER_TIME, FILTER_STEPS h)
 ALPHA, BETA, FILTER_TIME, FILTER_STEPS = 0.05, 0.3, 1.0, 5.0
 SECTION = "proxy_study"
+BODIES = {"towfish": "the third party's Towfish FMU (tests/third_party_body)",
+          "towedbody": "the project's TowedBody FMU, integrateTranslation = true"}
 
 
 # ------------------------------------------------------------------------------------ theory
@@ -145,6 +149,7 @@ def theory() -> dict:
 # ------------------------------------------------------------------------------------ measurement
 @dataclass
 class Cell:
+    body: str  # BODIES
     manoeuvre: str
     ordering: str
     step: float
@@ -168,44 +173,53 @@ def proxy_parameters(mass: float, inertia_error: float) -> dict:
 
 
 def run_pair(manoeuvre: str, step: float, ordering: str, mass: float, inertia_error: float = 0.0,
-             internal=None, duration: float | None = None):
+             internal=None, duration: float | None = None, body_fmu: Path | None = None):
     """(cell, internal result): the proxy run against the internal body at the same step and ordering
-    (fmpy; Gauss-Seidel passes the tow acceleration, Jacobi passes nothing, as libcosim)."""
+    (fmpy; Gauss-Seidel passes the tow acceleration, Jacobi passes nothing, as libcosim); the body FMU
+    body_fmu (the TowedBody's names) or the TowedBody itself."""
     derivatives = ordering == "gauss-seidel"
     body = S.Body(mass)
+    name = "towedbody" if body_fmu is None else "towfish"
     if internal is None:
         internal = S.run(manoeuvre, step, "internal", "fmpy", ordering, body, duration=duration,
                          input_derivatives=derivatives)
     cpu0 = time.process_time()
     try:
         r = S.run(manoeuvre, step, "proxy", "fmpy", ordering, body, duration=duration,
-                  input_derivatives=derivatives, cable_parameters=proxy_parameters(mass, inertia_error))
+                  input_derivatives=derivatives, cable_parameters=proxy_parameters(mass, inertia_error),
+                  body_fmu=body_fmu)
     except (S.Diverged, FMICallException) as e:
         status = "diverged" if isinstance(e, S.Diverged) else "fmi2Error"
-        return Cell(manoeuvre, ordering, step, mass, inertia_error, status, math.nan, math.nan,
+        return Cell(name, manoeuvre, ordering, step, mass, inertia_error, status, math.nan, math.nan,
                     time.process_time() - cpu0, str(e)[:120]), internal
     rms, _, dp = _compare(r, internal)
     ok = rms <= TENSION_BOUND and dp <= POSITION_BOUND
-    return Cell(manoeuvre, ordering, step, mass, inertia_error, "ok" if ok else "bounds", rms, dp, r.cpu), internal
+    return Cell(name, manoeuvre, ordering, step, mass, inertia_error, "ok" if ok else "bounds", rms, dp,
+                r.cpu), internal
 
 
 def measure(steps=STEPS, masses=MASSES, manoeuvres=MANOEUVRES, errors=INERTIA_ERRORS,
-            sensitivity_masses=SENSITIVITY_MASSES, progress=None) -> list:
+            sensitivity_masses=SENSITIVITY_MASSES, bodies=("towfish",), towfish=None, progress=None) -> list:
+    """The cells; the sensitivity runs with the first of the bodies."""
     cells = []
     done = 0
     for man in manoeuvres:
         for mass in masses:
             for ordering in S.ORDERINGS:
                 for h in steps:
-                    cell, internal = run_pair(man, h, ordering, mass)
-                    cells.append(cell)
-                    done += 1
-                    if progress is not None:
-                        progress.update(done, f"{man} {mass:g} kg {ordering} {h:g} s: {cell.status}")
+                    internal = None
+                    for b in bodies:
+                        fmu = towfish if b == "towfish" else None
+                        cell, internal = run_pair(man, h, ordering, mass, internal=internal, body_fmu=fmu)
+                        cells.append(cell)
+                        done += 1
+                        if progress is not None:
+                            progress.update(done, f"{b} {man} {mass:g} kg {ordering} {h:g} s: {cell.status}")
                     if mass not in sensitivity_masses:
                         continue
+                    fmu = towfish if bodies[0] == "towfish" else None
                     for err in errors:
-                        cells.append(run_pair(man, h, ordering, mass, err, internal)[0])
+                        cells.append(run_pair(man, h, ordering, mass, err, internal, body_fmu=fmu)[0])
                         done += 1
                         if progress is not None:
                             progress.update(done, f"{man} {mass:g} kg {ordering} {h:g} s {err:+.0%}: "
@@ -213,23 +227,28 @@ def measure(steps=STEPS, masses=MASSES, manoeuvres=MANOEUVRES, errors=INERTIA_ER
     return cells
 
 
-def count_runs(steps, masses, manoeuvres, errors, sensitivity_masses) -> int:
+def count_runs(steps, masses, manoeuvres, errors, sensitivity_masses, bodies=("towfish",)) -> int:
     per = len(steps) * len(S.ORDERINGS)
-    return len(manoeuvres) * per * (len(masses) + len([m for m in masses if m in sensitivity_masses]) * len(errors))
+    return len(manoeuvres) * per * (len(masses) * len(bodies) +
+                                    len([m for m in masses if m in sensitivity_masses]) * len(errors))
 
 
 def compute(steps=STEPS, masses=MASSES, manoeuvres=MANOEUVRES, errors=INERTIA_ERRORS,
-            sensitivity_masses=SENSITIVITY_MASSES, progress=None) -> dict:
-    cells = measure(steps, masses, manoeuvres, errors, sensitivity_masses, progress)
+            sensitivity_masses=SENSITIVITY_MASSES, bodies=("towfish",), progress=None) -> dict:
+    from .third_party_study import build_towfish
+
+    with tempfile.TemporaryDirectory(prefix="towfish-") as tmp:
+        towfish = build_towfish(Path(tmp)) if "towfish" in bodies else None
+        cells = measure(steps, masses, manoeuvres, errors, sensitivity_masses, tuple(bodies), towfish, progress)
     return {"steps": list(steps), "masses": list(masses), "manoeuvres": list(manoeuvres), "errors": list(errors),
-            "sensitivity_masses": list(sensitivity_masses), "cells": [asdict(c) for c in cells],
-            "theory": theory()}
+            "sensitivity_masses": list(sensitivity_masses), "bodies": list(bodies),
+            "cells": [asdict(c) for c in cells], "theory": theory()}
 
 
 # ------------------------------------------------------------------------------------ report
-def _worst(cells, ordering, h, m, err):
+def _worst(cells, ordering, h, m, err, body):
     group = [c for c in cells if c["ordering"] == ordering and c["step"] == h and c["mass"] == m
-             and c["inertia_error"] == err]
+             and c["inertia_error"] == err and c["body"] == body]
     rank = {"fmi2Error": 3, "diverged": 2, "bounds": 1, "ok": 0}
     return max(group, key=lambda c: (rank[c["status"]], c["position_max"] if c["position_max"] == c["position_max"]
                                      else 0.0))
@@ -243,31 +262,33 @@ def _cell_text(c) -> str:
 
 
 def markdown(data: dict, figure: str) -> str:
-    cells, steps, masses = data["cells"], data["steps"], data["masses"]
-    lines = [f"Measured by `scripts/proxy_study` (fmpy, the three-FMU system with the TowedBody FMU integrating its own "
+    cells, steps, masses, bodies = data["cells"], data["steps"], data["masses"], data["bodies"]
+    lines = [f"Measured by `scripts/proxy_study` (fmpy, the three-FMU system with a body FMU integrating its own "
              f"translation, {', '.join(data['manoeuvres'])}). Each cell: RMS tow-tension difference to the internal "
              f"body (`bottomEnd` 2, the same numbers, the same step and ordering) in % of the RMS tension / largest "
              f"distance between the two bodies; the worse of the manoeuvres. **Bold**: outside the bounds "
              f"({100 * TENSION_BOUND:g} %, {POSITION_BOUND:g} m) or failed.", ""]
     header = "| body mass | " + " | ".join(f"{o} {h:g} s" for o in S.ORDERINGS for h in steps) + " |"
     rule = "|---|" + "---:|" * (len(steps) * len(S.ORDERINGS))
-    lines += ["**(m + m_a) given exactly**", "", header, rule]
-    for m in masses:
-        lines.append(f"| {m:g} kg | " + " | ".join(_cell_text(_worst(cells, o, h, m, 0.0))
-                                                  for o in S.ORDERINGS for h in steps) + " |")
-    exact = [c for c in cells if c["inertia_error"] == 0.0]
-    ok = [c for c in exact if c["status"] == "ok"]
-    finite = [c for c in exact if c["tension_rms"] == c["tension_rms"]]
-    lines += ["", f"{len(ok)} of {len(exact)} runs within the bounds."]
-    if finite:
-        wt = max(finite, key=lambda c: c["tension_rms"])
-        wp = max(finite, key=lambda c: c["position_max"])
-        lines[-1] += (f" Largest RMS tension difference {100 * wt['tension_rms']:.2g} % ({wt['manoeuvre']}, "
-                      f"{wt['mass']:g} kg, {wt['step']:g} s, {wt['ordering']}), largest position difference "
-                      f"{wp['position_max']:.3g} m ({wp['manoeuvre']}, {wp['mass']:g} kg, {wp['step']:g} s, "
-                      f"{wp['ordering']}).")
-    lines += ["", "**Inertia error**: the proxy's (m + m_a) off by the error (the added-mass matrix adds it; the "
-              "body FMU unchanged), the same cells:", "",
+    for body in bodies:
+        lines += [f"**{BODIES[body]}, (m + m_a) given exactly**", "", header, rule]
+        for m in masses:
+            lines.append(f"| {m:g} kg | " + " | ".join(_cell_text(_worst(cells, o, h, m, 0.0, body))
+                                                      for o in S.ORDERINGS for h in steps) + " |")
+        exact = [c for c in cells if c["inertia_error"] == 0.0 and c["body"] == body]
+        ok = [c for c in exact if c["status"] == "ok"]
+        finite = [c for c in exact if c["tension_rms"] == c["tension_rms"]]
+        lines += ["", f"{len(ok)} of {len(exact)} runs within the bounds."]
+        if finite:
+            wt = max(finite, key=lambda c: c["tension_rms"])
+            wp = max(finite, key=lambda c: c["position_max"])
+            lines[-1] += (f" Largest RMS tension difference {100 * wt['tension_rms']:.2g} % ({wt['manoeuvre']}, "
+                          f"{wt['mass']:g} kg, {wt['step']:g} s, {wt['ordering']}), largest position difference "
+                          f"{wp['position_max']:.3g} m ({wp['manoeuvre']}, {wp['mass']:g} kg, {wp['step']:g} s, "
+                          f"{wp['ordering']}).")
+        lines.append("")
+    lines += [f"**Inertia error** ({BODIES[bodies[0]]}): the proxy's (m + m_a) off by the error (the added-mass "
+              "matrix adds it; the body FMU unchanged), the same cells:", "",
               "| body mass | inertia error | " + " | ".join(f"{o} {h:g} s" for o in S.ORDERINGS for h in steps) + " |",
               "|---|---:|" + "---:|" * (len(steps) * len(S.ORDERINGS))]
     for m in data["sensitivity_masses"]:
@@ -275,7 +296,7 @@ def markdown(data: dict, figure: str) -> str:
             continue
         for err in sorted(data["errors"] + [0.0]):
             lines.append(f"| {m:g} kg | {100 * err:+.0f} % | " + " | ".join(
-                _cell_text(_worst(cells, o, h, m, err)) for o in S.ORDERINGS for h in steps) + " |")
+                _cell_text(_worst(cells, o, h, m, err, bodies[0])) for o in S.ORDERINGS for h in steps) + " |")
     th = data["theory"]
     lines += ["", "Model problem (the cable's axial chain, the proxy at its end, the gains of the defaults): the "
               "largest amplification factor over steps 0.01–1 s, bodies of 20–2000 kg, without drag and with the "
@@ -325,6 +346,8 @@ def parse_args(argv):
                    help="relative errors of the proxy's inertia for the sensitivity table")
     p.add_argument("--sensitivity-masses", type=float, nargs="*", default=SENSITIVITY_MASSES,
                    help="body masses of the sensitivity table")
+    p.add_argument("--bodies", nargs="+", default=list(BODIES), choices=list(BODIES),
+                   help="the body FMUs (the sensitivity table uses the first)")
     p.add_argument("--out", type=Path, default=REPO_ROOT / "out" / "proxy_study", help="directory for study.json")
     p.add_argument("--doc", type=Path, default=None,
                    help="write the report into this Markdown file's generated section and the figure next to it "
@@ -341,9 +364,10 @@ def main(argv=None) -> int:
     else:
         require_fmu()
         steps, masses = sorted(args.steps), sorted(args.masses)
-        bar = ProgressBar(count_runs(steps, masses, args.manoeuvres, args.errors, args.sensitivity_masses),
-                          label="proxy study")
-        data = compute(steps, masses, args.manoeuvres, args.errors, args.sensitivity_masses, progress=bar)
+        bar = ProgressBar(count_runs(steps, masses, args.manoeuvres, args.errors, args.sensitivity_masses,
+                                     args.bodies), label="proxy study")
+        data = compute(steps, masses, args.manoeuvres, args.errors, args.sensitivity_masses, args.bodies,
+                       progress=bar)
         bar.close("done")
         (args.out / "study.json").write_text(json.dumps(data))
     where = args.doc.parent if args.doc is not None else args.out

@@ -504,7 +504,7 @@ def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: s
     (waves.* parameters and waterDepth) are given to the vessel, whose wave-frequency motion is then
     superimposed on its manoeuvre, and to the cable: one sea for both; `vessel_parameters` to the vessel
     alone (raoFile: its RAO table). `body_fmu`: another body FMU that integrates itself in place of the
-    TowedBody (coupling explicit; the TowedBody's names: parameters mass, addedMass, volume, CdA, CLA,
+    TowedBody (coupling explicit or proxy; the TowedBody's names: parameters mass, addedMass, volume, CdA, CLA,
     position0.*, velocity0.*, input cableForce.*, outputs position.*, velocity.*). Master newton: the
     reference iterating master (ucable.newton, options `newton`), coupling explicit."""
     if manoeuvre not in MANOEUVRES:
@@ -515,8 +515,8 @@ def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: s
         raise ValueError("libcosim's fixed-step algorithm is Jacobi: use ordering jacobi")
     if master == "newton" and coupling != "explicit":
         raise ValueError("the newton master iterates with a body that integrates itself: coupling explicit")
-    if body_fmu is not None and coupling != "explicit":
-        raise ValueError("a body FMU of its own integrates itself: coupling explicit")
+    if body_fmu is not None and coupling not in SELF_INTEGRATING:
+        raise ValueError(f"a body FMU of its own integrates itself: coupling {' or '.join(SELF_INTEGRATING)}")
     vessel, default_duration = MANOEUVRES[manoeuvre]
     t_end = default_duration if duration is None else duration
     system = load_system(coupling)
