@@ -1,6 +1,7 @@
 """The proxy far end (bottomEnd 4, docs/cosimulation.md): a towed body that integrates its own
-translation (the TowedBody FMU with integrateTranslation, the plain causal interface: cable force in,
-position and velocity out) coupled behind the Vessel FMU by a master that does not iterate.
+translation (the plain causal interface: cable force in, position and velocity out; the third party's
+Towfish FMU and the TowedBody FMU with integrateTranslation) coupled behind the Vessel FMU by a master
+that does not iterate.
 
 Acceptance: with the body's (m + m_a) given exactly, within 1 % RMS tow tension and 0.2 m body position
 of the internal body (bottomEnd 2, the same numbers, the same step and ordering), Hopland acceleration
@@ -18,12 +19,16 @@ from studies.coupling_study import POSITION_BOUND, TENSION_BOUND, Chain
 from ucable import system as S
 
 
+@pytest.mark.parametrize("body", ["towfish", "towedbody"])
 @pytest.mark.parametrize("manoeuvre", P.MANOEUVRES)
 @pytest.mark.parametrize("ordering", S.ORDERINGS)
 @pytest.mark.parametrize("step", [0.1, 0.5])
 @pytest.mark.parametrize("mass", [50.0, 2000.0])
-def test_self_integrating_body_follows_the_internal_body(fmu_file, manoeuvre, ordering, step, mass):
-    cell, _ = P.run_pair(manoeuvre, step, ordering, mass)
+def test_self_integrating_body_follows_the_internal_body(fmu_file, towfish_fmu, body, manoeuvre, ordering, step,
+                                                         mass):
+    """The third party's Towfish (built outside the project's CMake) and the project's TowedBody with
+    integrateTranslation, each through the proxy far end."""
+    cell, _ = P.run_pair(manoeuvre, step, ordering, mass, body_fmu=towfish_fmu if body == "towfish" else None)
     assert cell.status != "diverged" and cell.status != "fmi2Error", cell.note
     assert cell.tension_rms <= TENSION_BOUND
     assert cell.position_max <= POSITION_BOUND
