@@ -271,7 +271,8 @@ def markdown(data: dict, figure: str) -> str:
     header = "| body mass | " + " | ".join(f"{o} {h:g} s" for o in S.ORDERINGS for h in steps) + " |"
     rule = "|---|" + "---:|" * (len(steps) * len(S.ORDERINGS))
     for body in bodies:
-        lines += [f"**{BODIES[body]}, (m + m_a) given exactly**", "", header, rule]
+        name = BODIES[body][0].upper() + BODIES[body][1:]
+        lines += [f"**{name}, (m + m_a) given exactly**", "", header, rule]
         for m in masses:
             lines.append(f"| {m:g} kg | " + " | ".join(_cell_text(_worst(cells, o, h, m, 0.0, body))
                                                       for o in S.ORDERINGS for h in steps) + " |")
