@@ -70,6 +70,41 @@ TEST(PointBody, AddedMassMatrixIsTheInertiaOfEachDirection) {
     }
 }
 
+TEST(ProxyEstimate, DerivativeIsTheForcesAndAddingMovesTheForceByTheChange) {
+    // The estimate's drag law in the Newton matrix: dF/du against central differences (h = 1e-6 m/s:
+    // truncation ~h^2, cancellation ~1e-16 |F| / h). add(): the force at that flow moves by the change
+    // exactly (to round-off), whatever share the law takes, at speed, at a crawl and in a vertical flow.
+    ProxyEstimate e;
+    e.constant = Vec3(3.0, -2.0, -50.0);
+    e.along = 150.0;
+    e.across = -20.0;
+    for (const Vec3& u : {Vec3(-1.2, 0.3, 0.1), Vec3(0.05, -0.02, 0.01), Vec3(0.0, 0.0, -0.8)}) {
+        Mat3 D;
+        e.force(u, &D);
+        Mat3 numeric;
+        const double h = 1e-6;
+        for (int c = 0; c < 3; ++c) {
+            Vec3 up = u, um = u;
+            up[c] += h;
+            um[c] -= h;
+            numeric.col(c) = (e.force(up) - e.force(um)) / (2 * h);
+        }
+        EXPECT_LT((D - numeric).norm(), 1e-6 * (1.0 + D.norm())) << u.transpose();
+        ProxyEstimate moved = e;
+        const Vec3 dF(40.0, -15.0, 25.0);
+        moved.add(dF, u);
+        EXPECT_LT((moved.force(u) - e.force(u) - dF).norm(), 1e-12 * e.force(u).norm()) << u.transpose();
+        EXPECT_GE(moved.along, 0.0);
+    }
+    // a change against the flow larger than the drag: the law would turn into a push against the
+    // water's drag (along < 0); it stops at 0 and the constant part takes the rest
+    ProxyEstimate pushed = e;
+    const Vec3 flow(-1.0, 0.0, 0.0), against(1e5, 0.0, 0.0);
+    pushed.add(against, flow);
+    EXPECT_EQ(pushed.along, 0.0);
+    EXPECT_LT((pushed.force(flow) - e.force(flow) - against).norm(), 1e-12 * 1e5);
+}
+
 TEST(Parameters, AddedMassMatrixMustBeSymmetricAndLeaveTheInertiaPositive) {
     UCParams p;
     uc_params_default(&p);
