@@ -64,7 +64,10 @@ fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function) {
 
 fmi2Status uc_sim_initial_outputs(UCInstance* inst, const char* function) {
     if (inst->coreReady) return fmi2OK;
-    if (inst->outputsProvisional) return fmi2Warning; /* nothing has been set since it failed */
+    if (inst->outputsProvisional) { /* nothing has been set since it failed: not tried again */
+        uc_log_status(&inst->log, fmi2Warning, "%s: the outputs are still provisional (nothing set since)", function);
+        return fmi2Warning;
+    }
     const fmi2Status status = initialize_core(inst, function, fmi2Warning);
     if (status != fmi2Warning) return status;
     memset(&inst->outputs, 0, sizeof inst->outputs);

@@ -19,8 +19,9 @@ fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function);
  * (uc_sim_ensure_initialized; invalid parameters are errors). When the initialization itself fails (a master
  * reads outputs before it has set the inputs: a driven far end still on the tow point) it is fmi2Warning, not
  * fmi2Error, and the outputs are provisional: all 0, except that a driven far end (bottomEnd 3) is at its
- * inputs end.* / end.v*. The failure is logged once; the initialization is tried again when a value is set
- * and at fmi2ExitInitializationMode (where a failure is an error). */
+ * inputs end.* / end.v*. The failure is logged once (later reads log that the outputs are still provisional);
+ * the initialization is tried again when a value is set and at fmi2ExitInitializationMode (where a failure
+ * is an error). */
 fmi2Status uc_sim_initial_outputs(UCInstance* inst, const char* function);
 
 /* fmi2DoStep after the state check: time checks, uc_do_step from the FMU's own time, outputs. */

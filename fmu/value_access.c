@@ -39,10 +39,12 @@ static fmi2Status check_arrays(UCInstance* inst, const void* vr, size_t nvr, con
 
 static size_t value_size(UCVarType type) { return type == UC_TYPE_REAL ? sizeof(fmi2Real) : sizeof(fmi2Integer); }
 
-/* Outputs during initialization mode are the InitialUnknowns: compute the initialization on demand
- * (provisional outputs and fmi2Warning while the values set so far give none: uc_sim_initial_outputs). */
-static fmi2Status ensure_readable(UCInstance* inst, const UCVariable* v, const char* function) {
+/* Outputs during initialization mode are the InitialUnknowns: compute the initialization on demand, once per
+ * call (provisional outputs and fmi2Warning while the values set so far give none: uc_sim_initial_outputs). */
+static fmi2Status ensure_readable(UCInstance* inst, const UCVariable* v, const char* function, int* checked) {
     if (v->causality != UC_CAUSALITY_OUTPUT || inst->state != UC_STATE_INIT_MODE) return fmi2OK;
+    if (*checked) return fmi2OK;
+    *checked = 1;
     return uc_sim_initial_outputs(inst, function);
 }
 
@@ -50,10 +52,11 @@ fmi2Status uc_get_values(UCInstance* inst, const fmi2ValueReference vr[], size_t
                          const char* function) {
     if (check_arrays(inst, vr, nvr, values, function) != fmi2OK) return fmi2Error;
     fmi2Status status = fmi2OK;
+    int checked = 0;
     for (size_t i = 0; i < nvr; ++i) {
         const UCVariable* v = find_or_log(inst, vr[i], type, function);
         if (v == NULL) return fmi2Error;
-        const fmi2Status readable = ensure_readable(inst, v, function);
+        const fmi2Status readable = ensure_readable(inst, v, function, &checked);
         if (readable != fmi2OK && readable != fmi2Warning) return readable;
         if (readable == fmi2Warning) status = fmi2Warning;
         memcpy((char*)values + i * value_size(type),

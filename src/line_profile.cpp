@@ -66,9 +66,13 @@ void LineProfile::walk(double H, double v, const std::vector<double>& rests, std
             const double before = hanging, P = points_[ip].weight;
             ++ip;
             if (grounded && P < 0.0) {
-                // a buoy cannot rest: the line has lifted off by here (the solution lifts before it)
+                // a buoy cannot rest: the line has lifted off by here (the solution lifts before it,
+                // where v + W reaches 0). Lifted here, the line keeps the deficit v + W < 0 of the
+                // tension it would have if it hung, so that the end conditions keep depending on v:
+                // with V = P after the buoy they would not, Newton's method would find no way from
+                // here to the solution, and lines with a buoy between two touchdowns went unsolved
                 grounded = false;
-                hanging = P;
+                hanging += P;
                 continue;
             }
             if (restLeft > 0.0 && P < 0.0) restLeft = 0.0;  // a buoy ends a resting stretch

@@ -33,7 +33,8 @@ std::vector<int> element_counts(const std::vector<double>& weights, int total) {
 
 }  // namespace
 
-std::vector<double> graded_nodes(const CableModel& model, const LineProfile& profile, bool towOnTop) {
+std::vector<double> graded_nodes(const CableModel& model, const LineProfile& profile, bool towOnTop,
+                                 bool alongLine) {
     const double L = model.line().length;
     auto turning = [&](double s) {  // from the tow point, whichever end the profile starts at
         return towOnTop ? profile.turning(s) : profile.turning(L) - profile.turning(L - s);
@@ -41,26 +42,24 @@ std::vector<double> graded_nodes(const CableModel& model, const LineProfile& pro
     std::vector<double> contacts = profile.contacts();  // where the line reaches or leaves the seabed
     for (double& c : contacts) c = towOnTop ? c : L - c;
     std::vector<double> nodes{0.0};
-    for (int k = 0; k < model.n_sections(); ++k) {
-        const SectionProps& sec = model.section(k);
-        const double s0 = sec.s0, s1 = sec.s0 + sec.length;
-        const double minimum = 1e-3 * sec.length / sec.nElements;  // closer cuts merge
-        std::vector<double> cuts{s0};
-        auto cut = [&](double s) {
-            if (s > s0 + minimum && s < s1 - minimum) cuts.push_back(s);
+    // Grades [s0, s1] with n elements: `fixed` must be nodes (the ends, attachments, section ends
+    // inside), the contacts become nodes unless they lie within `minimum` of another cut.
+    auto grade = [&](double s0, double s1, int n, std::vector<double> fixed) {
+        const double minimum = 1e-3 * (s1 - s0) / n;  // closer cuts merge
+        std::vector<double> cuts{s0, s1};
+        auto near_a_cut = [&](double x) {
+            return std::any_of(cuts.begin(), cuts.end(), [&](double c) { return std::abs(x - c) <= minimum; });
         };
-        for (const NodeAttachment& at : model.attachments()) cut(at.s);
-        for (double c : contacts) cut(c);
-        cuts.push_back(s1);
+        for (double f : fixed)
+            if (f > s0 && f < s1 && !near_a_cut(f)) cuts.push_back(f);
+        for (double c : contacts)
+            if (c > s0 && c < s1 && !near_a_cut(c)) cuts.push_back(c);
         std::sort(cuts.begin(), cuts.end());
-        cuts.erase(std::unique(cuts.begin(), cuts.end(), [&](double a, double b) { return b - a <= minimum; }),
-                   cuts.end());
-        cuts.back() = s1;
         // the monitor on a fine grid with every cut on it
         std::vector<double> s, theta;
         for (size_t j = 0; j + 1 < cuts.size(); ++j) {
-            const int n = std::max(8, static_cast<int>(kSamples * (cuts[j + 1] - cuts[j]) / sec.length));
-            for (int i = 0; i < n; ++i) s.push_back(cuts[j] + (cuts[j + 1] - cuts[j]) * i / n);
+            const int m = std::max(8, static_cast<int>(kSamples * (cuts[j + 1] - cuts[j]) / (s1 - s0)));
+            for (int i = 0; i < m; ++i) s.push_back(cuts[j] + (cuts[j + 1] - cuts[j]) * i / m);
         }
         s.push_back(s1);
         double turned = 0.0, previous = turning(s0);
@@ -72,13 +71,13 @@ std::vector<double> graded_nodes(const CableModel& model, const LineProfile& pro
         }
         const double angleScale = std::max(turned, kGradingAngle);
         std::vector<double> M(s.size());
-        for (size_t i = 0; i < s.size(); ++i) M[i] = (s[i] - s0) / sec.length + theta[i] / angleScale;
+        for (size_t i = 0; i < s.size(); ++i) M[i] = (s[i] - s0) / (s1 - s0) + theta[i] / angleScale;
         auto monitor_at = [&](double x) {
-            return M[std::lower_bound(s.begin(), s.end(), x - 1e-12 * sec.length) - s.begin()];
+            return M[std::lower_bound(s.begin(), s.end(), x - 1e-12 * (s1 - s0)) - s.begin()];
         };
         std::vector<double> weights;
         for (size_t j = 0; j + 1 < cuts.size(); ++j) weights.push_back(monitor_at(cuts[j + 1]) - monitor_at(cuts[j]));
-        const std::vector<int> counts = element_counts(weights, sec.nElements);
+        const std::vector<int> counts = element_counts(weights, n);
         for (size_t j = 0; j + 1 < cuts.size(); ++j) {
             const double m0 = monitor_at(cuts[j]), m1 = monitor_at(cuts[j + 1]);
             for (int i = 1; i < counts[j]; ++i) {
@@ -90,6 +89,23 @@ std::vector<double> graded_nodes(const CableModel& model, const LineProfile& pro
                 nodes.push_back(s[lo] + f * (s[hi] - s[lo]));
             }
             nodes.push_back(cuts[j + 1]);
+        }
+    };
+    std::vector<double> attachments;
+    for (const NodeAttachment& at : model.attachments()) attachments.push_back(at.s);
+    if (alongLine) {
+        // one monitor along the whole line, every section end a node; the elements of all sections
+        std::vector<double> fixed = attachments;
+        int total = 0;
+        for (int k = 0; k < model.n_sections(); ++k) {
+            total += model.section(k).nElements;
+            if (k > 0) fixed.push_back(model.section(k).s0);
+        }
+        grade(0.0, L, std::max(total, model.n_sections()), fixed);
+    } else {
+        for (int k = 0; k < model.n_sections(); ++k) {
+            const SectionProps& sec = model.section(k);
+            grade(sec.s0, sec.s0 + sec.length, sec.nElements, attachments);
         }
     }
     nodes.back() = L;

@@ -18,8 +18,11 @@ namespace uc {
 //   M(s) = s / L_section + theta(s) / max(Theta_section, kGradingAngle),
 // theta the angle the profile turns through, with a node at each attachment and wherever the line
 // reaches or leaves the seabed.
-// `towOnTop`: the profile's top end is the tow point (else the anchor, above it).
-std::vector<double> graded_nodes(const CableModel& model, const LineProfile& profile, bool towOnTop);
+// `towOnTop`: the profile's top end is the tow point (else the anchor, above it). `alongLine`
+// (meshGrading 2): one monitor along the whole line, whose elements (the sections' total) go where
+// it turns, every section end a node and at least one element per section and piece.
+std::vector<double> graded_nodes(const CableModel& model, const LineProfile& profile, bool towOnTop,
+                                 bool alongLine = false);
 
 // Below this total turning [rad] a section's nodes tend to equal spacing.
 constexpr double kGradingAngle = 0.5;

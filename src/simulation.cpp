@@ -336,8 +336,9 @@ void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, boo
         layout.anchorResting = ps.towOnTop && ps.profile.rests_at_bottom() && model_.params().bottomEnd == UC_BOTTOM_ANCHORED;
         const Vec3 resting(farPoint.x(), farPoint.y(), model_.resting_height());
         if (layout.anchorResting && std::abs(farPoint.z() - resting.z()) <= 0.5 * model_.line().diameter) solve_for(resting);
-        if (ps.solved && (ps.profile.grounded_length() > 0.0 || !model_.attachments().empty()))
-            layout.nodes = graded_nodes(model_, ps.profile, ps.towOnTop);
+        const int grading = model_.params().meshGrading;
+        if (ps.solved && grading != 0 && (ps.profile.grounded_length() > 0.0 || !model_.attachments().empty()))
+            layout.nodes = graded_nodes(model_, ps.profile, ps.towOnTop, grading == 2);
     }
     meshTow_ = towPoint;
     meshFar_ = farPoint;
@@ -502,8 +503,7 @@ bool CableSimulation::verify_statics(std::string& error) const {
         std::snprintf(text, sizeof text,
                       "the static equilibrium found does not hold together at the anchor: the force on the anchor "
                       "(%.6g N) and the line's axial tension there (%.6g N) differ by %.2f %%; refusing it as a "
-                      "start (the mesh does not resolve the line near its anchor; a buoy that lifts the line between "
-                      "two touchdowns is a known case the static solver does not yet solve)",
+                      "start (the mesh does not resolve the line near its anchor)",
                       outputs_.endTension, axial, 100.0 * std::abs(outputs_.endTension - axial) / outputs_.endTension);
         error = text;
         return false;

@@ -119,6 +119,7 @@ typedef struct UCParams {
     double seabedContactSpacing; /* seabedContactSpacing [m]: largest distance along the cable between the points at which the seabed contact is integrated, on elements whose five axial points are farther apart (3-point Gauss rules on up to 16 equal intervals, at most 48 points per element); 0: the five axial points of every element. A coarse mesh on the seabed wants about the length of cable over which a touchdown crosses the contact's smoothing band (5 % of the diameter), sqrt(2 delta / kappa) at a touchdown of curvature kappa: 1-5 m on usual moorings ([docs/model.md](docs/model.md), contact sampling) */
     int solverMaxOrder; /* solver.maxOrder: highest order of the time integrator's variable-order BDF formulas (1–5). 5 (the default) takes the fewest steps where the tolerance is tight; orders 3–5 are not A-stable, so at a loose tolerance lightly damped fast modes (a stiff cable's axial and bending ringing) can hold the steps below the size the error test asks for, and 2, the highest A-stable order, then takes fewer steps for the same answer (the stiff power cable at tensionTolerance 0.1: 25–35 % fewer); 1 is backward Euler, which damps the most ([docs/error_control.md](docs/error_control.md), the integrator's order) */
     double winchMaxAcceleration; /* winch.maxAcceleration [m/s2]: largest acceleration and deceleration of the winch drum: with `winchMode` 1 it ramps towards `winch.rate` and brakes in time to stop at `winch.minLength`/`winch.maxLength`; with `winchMode` 2 the commanded rate stays within that braking envelope (the drum's response is `winch.timeConstant`'s); 0 = no limit (the rate may change at once at a communication point) ([docs/winch.md](docs/winch.md)) */
+    int meshGrading; /* meshGrading: where the static profile puts the nodes of a line held at both ends that touches the seabed or carries attachments: 0 each section's elements of equal length (between attachments); 1 graded within each section: a node at every touchdown and lift-off, elements short where the line turns; 2 graded along the whole line: the sections' `nElements` (their total) are shared out by the same rule, at least one per section, so a section lying on the seabed does not keep elements the hanging part needs ([docs/model.md](docs/model.md), initial equilibrium) */
     UCBodyAddedMassMatrix bodyAddedMassMatrix;
     double proxyTrackingGain; /* proxy.trackingGain: `bottomEnd` 4: position gain α of the tracking force, as a fraction of M/h² (M the proxy's inertia, h the communication step); 1 with `proxy.trackingDamping` 0.5 would put the body on the proxy in one step; the defaults 0.05 and 0.3 stay stable under Gauss-Seidel and Jacobi with ±50 % inertia error ([docs/cosimulation.md](docs/cosimulation.md)) */
     double proxyTrackingDamping; /* proxy.trackingDamping: `bottomEnd` 4: velocity gain β of the tracking force, as a fraction of M/h */
@@ -436,18 +437,19 @@ typedef struct UCOutputs {
     X(243, "seabedContactSpacing", REAL, PARAMETER, seabedContactSpacing) \
     X(244, "solver.maxOrder", INTEGER, PARAMETER, solverMaxOrder) \
     X(245, "winch.maxAcceleration", REAL, PARAMETER, winchMaxAcceleration) \
-    X(246, "body.addedMassMatrix.xx", REAL, PARAMETER, bodyAddedMassMatrix.x[0]) \
-    X(247, "body.addedMassMatrix.xy", REAL, PARAMETER, bodyAddedMassMatrix.x[1]) \
-    X(248, "body.addedMassMatrix.xz", REAL, PARAMETER, bodyAddedMassMatrix.x[2]) \
-    X(249, "body.addedMassMatrix.yx", REAL, PARAMETER, bodyAddedMassMatrix.y[0]) \
-    X(250, "body.addedMassMatrix.yy", REAL, PARAMETER, bodyAddedMassMatrix.y[1]) \
-    X(251, "body.addedMassMatrix.yz", REAL, PARAMETER, bodyAddedMassMatrix.y[2]) \
-    X(252, "body.addedMassMatrix.zx", REAL, PARAMETER, bodyAddedMassMatrix.z[0]) \
-    X(253, "body.addedMassMatrix.zy", REAL, PARAMETER, bodyAddedMassMatrix.z[1]) \
-    X(254, "body.addedMassMatrix.zz", REAL, PARAMETER, bodyAddedMassMatrix.z[2]) \
-    X(255, "proxy.trackingGain", REAL, PARAMETER, proxyTrackingGain) \
-    X(256, "proxy.trackingDamping", REAL, PARAMETER, proxyTrackingDamping) \
-    X(257, "proxy.filterTime", REAL, PARAMETER, proxyFilterTime) \
+    X(246, "meshGrading", INTEGER, PARAMETER, meshGrading) \
+    X(247, "body.addedMassMatrix.xx", REAL, PARAMETER, bodyAddedMassMatrix.x[0]) \
+    X(248, "body.addedMassMatrix.xy", REAL, PARAMETER, bodyAddedMassMatrix.x[1]) \
+    X(249, "body.addedMassMatrix.xz", REAL, PARAMETER, bodyAddedMassMatrix.x[2]) \
+    X(250, "body.addedMassMatrix.yx", REAL, PARAMETER, bodyAddedMassMatrix.y[0]) \
+    X(251, "body.addedMassMatrix.yy", REAL, PARAMETER, bodyAddedMassMatrix.y[1]) \
+    X(252, "body.addedMassMatrix.yz", REAL, PARAMETER, bodyAddedMassMatrix.y[2]) \
+    X(253, "body.addedMassMatrix.zx", REAL, PARAMETER, bodyAddedMassMatrix.z[0]) \
+    X(254, "body.addedMassMatrix.zy", REAL, PARAMETER, bodyAddedMassMatrix.z[1]) \
+    X(255, "body.addedMassMatrix.zz", REAL, PARAMETER, bodyAddedMassMatrix.z[2]) \
+    X(256, "proxy.trackingGain", REAL, PARAMETER, proxyTrackingGain) \
+    X(257, "proxy.trackingDamping", REAL, PARAMETER, proxyTrackingDamping) \
+    X(258, "proxy.filterTime", REAL, PARAMETER, proxyFilterTime) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -910,6 +912,7 @@ typedef struct UCOutputs {
     X(seabedContactSpacing, 0.0) \
     X(solverMaxOrder, 5) \
     X(winchMaxAcceleration, 0.0) \
+    X(meshGrading, 1) \
     X(bodyAddedMassMatrix.x[0], 0.0) \
     X(bodyAddedMassMatrix.x[1], 0.0) \
     X(bodyAddedMassMatrix.x[2], 0.0) \
@@ -1166,6 +1169,7 @@ typedef struct UCOutputs {
     X(seabedContactSpacing, "seabedContactSpacing", 0.0, 100000.0, 0, 0, "[0, 100000]", "a sampling distance cannot be negative") \
     X(solverMaxOrder, "solver.maxOrder", 1.0, 5.0, 0, 0, "[1, 5]", "IDA's BDF formulas have orders 1 to 5") \
     X(winchMaxAcceleration, "winch.maxAcceleration", 0.0, 100.0, 0, 0, "[0, 100]", "a drum accelerates at a finite, non-negative rate (0: no limit)") \
+    X(meshGrading, "meshGrading", 0.0, 2.0, 0, 0, "{0 equal elements, 1 graded in each section, 2 graded along the line}", "unknown mesh grading") \
     X(bodyAddedMassMatrix.x[0], "body.addedMassMatrix.xx", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
     X(bodyAddedMassMatrix.x[1], "body.addedMassMatrix.xy", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
     X(bodyAddedMassMatrix.x[2], "body.addedMassMatrix.xz", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \

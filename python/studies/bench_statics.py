@@ -311,8 +311,8 @@ def element_counts(case: Case, n_elements: int) -> list:
     return [int(c) for c in counts]
 
 
-def fmu_parameters(case: Case, n_elements: int) -> dict:
-    p = {"bottomEnd": 1, "anchor.x": case.anchor_x, "anchor.y": 0.0, "anchor.z": -case.depth,
+def fmu_parameters(case: Case, n_elements: int, grading: int = 1) -> dict:
+    p = {"meshGrading": grading, "bottomEnd": 1, "anchor.x": case.anchor_x, "anchor.y": 0.0, "anchor.z": -case.depth,
          "waterDepth": case.depth, "enableSeabed": True, "seabedStiffness": case.stiffness,
          "seabedFriction": 0.0, "enableBending": False, "enableCompression": False,
          "waterDensity": RHO, "gravity": G}
@@ -339,12 +339,12 @@ def fmu_parameters(case: Case, n_elements: int) -> dict:
 FMU_OUTPUTS = ["towTension", "endTension", "tension[21]", "endForce.z"]
 
 
-def fmu_run(fmu, case: Case, n_elements: int) -> dict:
+def fmu_run(fmu, case: Case, n_elements: int, grading: int = 1) -> dict:
     """The FMU's static initialization (initMode 0): success, or the first error message."""
     from ucable.fmu import CableFMU
 
     t0 = time.perf_counter()
-    c = CableFMU(fmu, parameters=fmu_parameters(case, n_elements))
+    c = CableFMU(fmu, parameters=fmu_parameters(case, n_elements, grading))
     try:
         c.initialize(inputs={"tow.x": 0.0, "tow.y": 0.0, "tow.z": case.fairlead_z})
         values = dict(zip(FMU_OUTPUTS, (float(v) for v in c.get_reals(FMU_OUTPUTS))))
@@ -359,7 +359,7 @@ def fmu_run(fmu, case: Case, n_elements: int) -> dict:
 
 
 # ----------------------------------------------------------------------------- the benchmark
-def run_benchmark(fmu, cases: list, meshes: list, progress=None) -> list:
+def run_benchmark(fmu, cases: list, meshes: list, progress=None, grading: int = 1) -> list:
     """One record per line and mesh: the line, its reference (or why it failed) and the FMU's run."""
     records = []
     for i, case in enumerate(cases):
@@ -372,7 +372,7 @@ def run_benchmark(fmu, cases: list, meshes: list, progress=None) -> list:
                    "slack": case.slack, "ref": ref, "ref_error": ref_error,
                    "regime": regime(case, ref) if ref else "reference failed"}
             if ref is not None:
-                run = fmu_run(fmu, case, n)
+                run = fmu_run(fmu, case, n, grading)
                 rec["fmu"] = run
                 if run["ok"]:
                     rec["err_fairlead"] = run["towTension"] / ref["fairlead"] - 1.0
@@ -528,6 +528,9 @@ def parse_args(argv):
     p.add_argument("--elements", type=int, nargs="+", default=[10, 20, 40],
                    help="element counts of the whole line (default 10 20 40)")
     p.add_argument("--seed", type=int, default=2026, help="seed of the draw (default 2026)")
+    p.add_argument("--grading", type=int, choices=(0, 1, 2), default=1,
+                   help="the FMU's meshGrading: 0 equal elements, 1 graded in each section (default), "
+                        "2 graded along the line")
     p.add_argument("--only", type=int, nargs="+", default=None, metavar="ID",
                    help="run only these lines of the draw (reproduce a case; prints each run)")
     p.add_argument("--out", type=Path, default=None, help="write every run as CSV to this file")
@@ -591,7 +594,7 @@ def main(argv=None) -> int:
     bar = ProgressBar(len(cases), label="lines")
     t0 = time.perf_counter()
     records = run_benchmark(args.fmu, list(cases.values()), args.elements,
-                            progress=lambda i, cid: bar.update(i, f"line {cid}"))
+                            progress=lambda i, cid: bar.update(i, f"line {cid}"), grading=args.grading)
     bar.close(f"{len(cases)} lines x {len(args.elements)} meshes")
     if args.out is not None:
         write_csv(args.out, records, cases)
@@ -600,12 +603,14 @@ def main(argv=None) -> int:
         return 0
     data = summary(records)
     command = "scripts/bench_statics " + " ".join(
-        [f"--n {args.n}", "--elements " + " ".join(map(str, args.elements)), f"--seed {args.seed}"])
+        [f"--n {args.n}", "--elements " + " ".join(map(str, args.elements)), f"--seed {args.seed}"]
+        + ([f"--grading {args.grading}"] if args.grading != 1 else []))
     text = markdown(data, command, _shown(args.fmu), cases)
     print(text)
     print(f"\n({time.perf_counter() - t0:.0f} s wall)")
     if args.doc is not None:
-        write_section(args.doc, text, "scripts/bench_statics")
+        # one generated section per grading: mode 1 (the default) and the others side by side
+        write_section(args.doc, text, "scripts/bench_statics" + (f" --grading {args.grading}" if args.grading != 1 else ""))
     return 0
 
 

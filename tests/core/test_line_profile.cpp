@@ -1,6 +1,7 @@
 // The static profile of a line without bending stiffness (multi-segment elastic catenary with point
 // loads and a frictionless seabed): its geometry (ends, stretched arc length, tangents, touchdown),
-// its balance of forces, and the touchdown of a chain mooring solved independently.
+// its balance of forces, the touchdown of a chain mooring solved independently, and the arch a buoy
+// lifts between two touchdowns against its closed form.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -161,4 +162,125 @@ TEST(LineProfile, ABuoyOnTheGroundedPartLiftsTheLineAndItTouchesDownAgain) {
     EXPECT_NEAR(p.grounded_length(), 213.2543899783769, 1e-3 * 578.9);
     EXPECT_GT(p.lowest_clearance(), -1e-9 * 578.9);  // nowhere below the seabed
     EXPECT_EQ(p.contacts().size(), 3u);              // the touchdown, the lift-off, the touchdown
+}
+
+namespace {
+
+// A line whose buoy lifts an arch between two touchdowns, with the arch inside one section of weight
+// w per length: the profile against MoorPy (its points balance to 1e-5 of the tension) and against
+// what such a line must be, each piece between contacts checked by its own balance of forces.
+struct ArchLine {
+    Vector3d top, bottom;  // the anchor on the seabed, in -x of the fairlead
+    std::vector<LineProfile::Segment> segments;
+    double buoyS, lift;    // arc length from the top [m], net lift [N]
+    double fairlead, anchor, grounded;  // MoorPy
+};
+
+// the section at arc length s from the top
+const LineProfile::Segment& section_at(const ArchLine& a, double s) {
+    double start = 0.0;
+    for (const LineProfile::Segment& seg : a.segments) {
+        if (s < start + seg.length) return seg;
+        start += seg.length;
+    }
+    return a.segments.back();
+}
+
+// the weight of the line between arc lengths s0 < s1 from the top
+double weight_between(const ArchLine& a, double s0, double s1) {
+    double start = 0.0, W = 0.0;
+    for (const LineProfile::Segment& seg : a.segments) {
+        W += seg.weight * std::max(0.0, std::min(s1, start + seg.length) - std::max(s0, start));
+        start += seg.length;
+    }
+    return W;
+}
+
+void check_arch(const ArchLine& a) {
+    const double seabed = a.bottom.z();
+    const LineProfile p = solved(a.top, a.bottom, a.segments, {{a.buoyS, -a.lift}}, true, seabed);
+    const double L = p.length();
+    EXPECT_NEAR(p.top_force().norm(), a.fairlead, 1e-4 * a.fairlead);
+    EXPECT_NEAR(p.bottom_force().norm(), a.anchor, 1e-4 * a.anchor);
+    EXPECT_NEAR(p.grounded_length(), a.grounded, 1e-4 * L);
+
+    // the end conditions to round-off (Newton's method stops at 1e-11 of the length)
+    Vector3d r, t;
+    p.at(0.0, r, t);
+    EXPECT_LT((r - a.top).norm(), 1e-10 * L);
+    p.at(L, r, t);
+    EXPECT_LT((r - a.bottom).norm(), 1e-10 * L);
+
+    // From the top: the line hangs down to a touchdown, rests, lifts off into the buoy's arch, lands
+    // again and rests to the anchor. With no seabed under the arch, its ends horizontal (V = 0) and one
+    // weight per length, the arch carries exactly the buoy's lift, half on either side of it: an
+    // elastic catenary of parameter a = H / w whose closed form gives its length, span and height.
+    const std::vector<double> c = p.contacts();
+    ASSERT_EQ(c.size(), 3u);
+    const double H = p.bottom_force().x(), w = section_at(a, a.buoyS).weight, EA = section_at(a, a.buoyS).EA;
+    ASSERT_GT(H, 0.0);
+    ASSERT_EQ(&section_at(a, c[1]), &section_at(a, c[2]));  // the arch inside one section
+    const double cat = H / w, half = 0.5 * a.lift / w;  // the arch's half length
+    EXPECT_NEAR(c[2] - c[1], 2.0 * half, 1e-9 * L);
+    EXPECT_NEAR(a.buoyS - c[1], half, 1e-9 * L);
+    Vector3d lo, hi, buoy;
+    p.at(c[1], hi, t);
+    p.at(c[2], lo, t);
+    p.at(a.buoyS, buoy, t);
+    const double span = 2.0 * (cat * std::asinh(half / cat) + H * half / EA);
+    const double height = cat * (std::sqrt(1.0 + std::pow(half / cat, 2)) - 1.0) + w * half * half / (2.0 * EA);
+    EXPECT_NEAR((hi - lo).norm(), span, 1e-9 * L);
+    EXPECT_NEAR(buoy.z() - seabed, height, 1e-9 * L);
+    // the hanging part above the first touchdown carries its own weight, the rest of the line pulls
+    // horizontally on it: the force at the top is (-H, -W(0, c0))
+    const double total = weight_between(a, 0.0, L);
+    EXPECT_NEAR(-p.top_force().z(), weight_between(a, 0.0, c[0]), 1e-9 * total);
+    EXPECT_NEAR(p.top_force().x(), -H, 1e-12 * H);
+    // the anchor is pulled horizontally; the seabed carries the weight of the resting parts (a
+    // non-negative reaction everywhere: the buoy is not among them, and every contact is tangential,
+    // so no point of the line pulls on the seabed or presses on it with a point force)
+    EXPECT_NEAR(p.bottom_force().z(), 0.0, 1e-9 * total);
+    EXPECT_NEAR(total - a.lift + p.top_force().z(), weight_between(a, c[0], c[1]) + weight_between(a, c[2], L),
+                1e-9 * total);
+    EXPECT_NEAR(p.grounded_length(), (L - c[2]) + (c[1] - c[0]), 1e-9 * L);
+    EXPECT_GT(a.buoyS, c[1]);
+    EXPECT_LT(a.buoyS, c[2]);
+    for (double s : c) {
+        p.at(s, r, t);
+        EXPECT_NEAR(r.z(), seabed, 1e-9 * L);
+        EXPECT_LT(std::abs(t.z()), 1e-9);
+    }
+    // nowhere below the seabed
+    EXPECT_GT(p.lowest_clearance(), -1e-9 * L);
+    double lowest = INFINITY;
+    for (int k = 0; k <= 4000; ++k) {
+        p.at(L * k / 4000.0, r, t);
+        lowest = std::min(lowest, r.z() - seabed);
+    }
+    EXPECT_GT(lowest, -1e-9 * L);
+}
+
+}  // namespace
+
+TEST(LineProfile, ABuoyLiftsAnArchOfAVerySlackUniformLineBetweenTwoTouchdowns) {
+    // A wire rope of 128.05 m, 23 % longer than the chord, from a fairlead 3 m deep to an anchor
+    // 99.5 m away on a 33.5 m seabed; a buoy lifting 2,460 N at s = 102.88 m sits where the line
+    // would rest without it (line 71 of the statics benchmark). MoorPy (two lines and the buoy as a
+    // free point, rigid seabed): 6,569.91 N at the fairlead, 526.84 N at the anchor, 82.52 m grounded.
+    check_arch({Vector3d(0.0, 0.0, -3.0), Vector3d(-99.51402445951304, 0.0, -33.54743067882633),
+                {{128.05272891081387, 197.82729738220632, 469336853.5510821}},
+                102.87997527160142, 2459.674633295815,
+                6569.913547768416, 526.8435826872867, 82.51588769050176});
+}
+
+TEST(LineProfile, ABuoyLiftsAnArchOfAVerySlackTwoSectionLineRestingAcrossItsJoint) {
+    // Wire rope (49.0 m, 79.8 N/m) over polyester (57.9 m, 23.3 N/m), 24 % longer than the chord,
+    // a buoy lifting 367 N at s = 86.72 m in the polyester (line 295 of the statics benchmark): the
+    // line rests across the joint, and again from the arch to the anchor. MoorPy: 3,216.41 N at the
+    // fairlead, 315.104 N at the anchor, 51.04 m grounded (the joint resting on the seabed).
+    check_arch({Vector3d(0.0, 0.0, -5.9191992955538515), Vector3d(-77.92721886310859, 0.0, -42.26963720961942),
+                {{49.02183626323599, 79.81561728654988, 189359159.1110524},
+                 {57.88751308075679, 23.27591639057052, 67918603.01226915}},
+                86.71596898400803, 366.85683593190504,
+                3216.409155744423, 315.10357558075725, 51.04398590597529});
 }

@@ -208,20 +208,3 @@ def test_clump_mooring_read_from_a_moordyn_deck_at_every_mesh(fmu_file, elements
     assert top == pytest.approx(fairlead, rel=BOUND)
     assert end == pytest.approx(anchor, rel=BOUND)
     assert abs(end_z) < 1e-3 * end
-
-
-@pytest.mark.parametrize("elements", [10, 20, 40])
-def test_a_buoy_line_the_profile_cannot_solve_is_refused_not_answered_wrongly(fmu_file, elements):
-    """Line 58 of the statics benchmark: chain - polyester - chain with a 2.84 t, 9.24 m3 buoy on a
-    very slack line, which lifts it between two touchdowns. The profile cannot be solved, the
-    solver starts from a parabola, and its answers were 23 % / 0.16 % / 2.6 % off at the fairlead
-    (463 % / 2.4 % / 175 % at the anchor) at 10 / 20 / 40 elements without an error. The anchor's
-    force against the line's axial tension there tells such a state: it is refused."""
-    from studies import bench_statics as B
-
-    case = B.draw_case(2026, 58)
-    with CableFMU(fmu_file, parameters=B.fmu_parameters(case, elements), logging_on=True) as c:
-        with pytest.raises(Exception):
-            c.initialize(inputs={"tow.z": case.fairlead_z})
-        log = c.log_text()
-    assert "does not hold together at the anchor" in log or "folded" in log

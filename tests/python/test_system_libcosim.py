@@ -96,32 +96,32 @@ def read_status(unit, names):
 def test_outputs_read_before_the_inputs_are_set_are_provisional_not_an_error(make_cable):
     """The cable at bottomEnd 3 with both ends still on the origin (the start values): no initialization
     exists. Reading outputs is fmi2Warning with the provisional values (all 0, the far end at its inputs),
-    the reason and the provisional values logged as warnings once; once the inputs are set the outputs are the initialization's, and
+    the reason logged once, every warning with its message; once the inputs are set the outputs are the initialization's, and
     fmi2ExitInitializationMode succeeds. Left at the origin, fmi2ExitInitializationMode is an error."""
     from fmpy.fmi2 import fmi2OK, fmi2Warning
 
     names = ["towForce.x", "towForce.z", "endForce.z", "towTension", "endPosition.x", "endPosition.z",
              "endVelocity.x"]
-    cable = make_cable(parameters={"bottomEnd": 3}, instance_name="provisional")
+    cable = make_cable(instance_name="provisional")
     cable.slave.setupExperiment(startTime=0.0)
-    cable.set(cable._pending_parameters)
-    cable.set({"end.vx": 0.5})
+    cable.set({"bottomEnd": 3, "end.vx": 0.5})
     cable.slave.enterInitializationMode()
-    for _ in range(2):  # warned once, the failed initialization not repeated
+    for _ in range(2):  # the failed initialization is not repeated; each warning comes with its message
         status, values = read_status(cable, names)
         assert status == fmi2Warning
         assert np.array_equal(values, [0, 0, 0, 0, 0, 0, 0.5])
-        warnings = [m for s, _, m in cable.messages if s == "WARNING"]
-        assert len(warnings) == 2, cable.log_text()
+    warnings = [m for s, _, m in cable.messages if s == "WARNING"]
+    assert len(warnings) == 3, cable.log_text()
     assert "static equilibrium not found" in warnings[0] and "provisional" in warnings[1]
+    assert "still provisional" in warnings[2]
     cable.set({"tow.x": -10.0, "tow.vx": 0.5, "end.x": -75.5, "end.z": -291.8})
     status, values = read_status(cable, names)
     assert status == fmi2OK and values[3] > 1000.0 and values[4:6].tolist() == [-75.5, -291.8]
     cable.slave.exitInitializationMode()
 
-    stuck = make_cable(parameters={"bottomEnd": 3}, instance_name="stuck")
+    stuck = make_cable(instance_name="stuck")
     stuck.slave.setupExperiment(startTime=0.0)
-    stuck.set(stuck._pending_parameters)
+    stuck.set({"bottomEnd": 3})
     stuck.slave.enterInitializationMode()
     assert read_status(stuck, names)[0] == fmi2Warning
     with pytest.raises(FMICallException):
