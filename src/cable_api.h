@@ -30,6 +30,7 @@ extern "C" {
 #define UC_BOTTOM_ANCHORED 1
 #define UC_BOTTOM_TOWED_BODY 2
 #define UC_BOTTOM_EXTERNAL 3
+#define UC_BOTTOM_PROXY 4
 
 /* torqueMode values */
 #define UC_TORQUE_FREE 0
@@ -104,7 +105,7 @@ int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, char* msg, si
 /* The interface derivatives over the next communication step (taken as long as the last one) in the
  * direction seed: out[i] = sum_j d output_i(t + h) / d input_j(t) seed[j] for the outputs towForce x, y, z,
  * endForce x, y, z (i = 0..5) and the inputs tow x, y, z, vx, vy, vz (j = 0..5), end x, y, z, vx, vy, vz
- * (6..11), tow ax, ay, az (12..14), end ax, ay, az (15..17) (the end inputs act only when bottomEnd = 3).
+ * (6..11), tow ax, ay, az (12..14), end ax, ay, az (15..17) (the end inputs act only when bottomEnd = 3 or 4).
  * Only the requested direction is computed. Available after the first step; docs/cosimulation.md says
  * exactly what they are. */
 int uc_interface_derivative(UCCable* c, const double seed[18], double out[6], char* msg, size_t msgSize);

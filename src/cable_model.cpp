@@ -120,8 +120,13 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const Sta
     }
     body_ = PointBody{params.bodyMass, params.bodyVolume, params.bodyAddedMass, params.bodyCdA,
                       params.enableBodyFluidInertia != 0};
+    const double* rows[3] = {params.bodyAddedMassMatrix.x, params.bodyAddedMassMatrix.y, params.bodyAddedMassMatrix.z};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) body_.addedMassMatrix(i, j) = rows[i][j];
+    body_.anisotropic = !body_.addedMassMatrix.isZero(0.0);
+    if (params.bottomEnd == UC_BOTTOM_PROXY) body_.CdA = 0.0;  // its drag is the external body's, estimated
     endContact_.seabed = last.seabed;
-    if (params.bottomEnd == UC_BOTTOM_TOWED_BODY) {
+    if (far_end_carries_body()) {
         endContact_.footprint = body_footprint(body_.mass, body_.volume, last.fluid.diameter);
         endContact_.seabed.smoothing = 0.05 * std::max(body_size(body_.mass, body_.volume), last.fluid.diameter);
     } else if (params.bottomEnd == UC_BOTTOM_FREE) {
@@ -602,6 +607,47 @@ bool CableModel::far_end_prescribed() const {
     return params_.bottomEnd == UC_BOTTOM_ANCHORED || params_.bottomEnd == UC_BOTTOM_EXTERNAL;
 }
 
+bool CableModel::far_end_carries_body() const {
+    return params_.bottomEnd == UC_BOTTOM_TOWED_BODY || params_.bottomEnd == UC_BOTTOM_PROXY;
+}
+
+Vec3 ProxyEstimate::force(const Vec3& u, Mat3* dF_du) const {
+    const Vec3 cross(-u.y(), u.x(), 0.0);  // z x u
+    const double speed = std::sqrt(u.squaredNorm() + kProxyFlowSmoothing * kProxyFlowSmoothing);
+    const Vec3 flow = along * u + across * cross;
+    if (dF_du) {
+        Mat3 J = Mat3::Zero();  // d(z x u)/du
+        J(0, 1) = -1.0;
+        J(1, 0) = 1.0;
+        *dF_du = speed * (along * Mat3::Identity() + across * J) + flow * u.transpose() / speed;
+    }
+    return constant + speed * flow;
+}
+
+void ProxyEstimate::add(const Vec3& dF, const Vec3& u) {
+    // the basis |u| u, |u| z x u (orthogonal): each coefficient takes the share w of dF's component
+    // along it, the constant part the rest
+    const Vec3 cross(-u.y(), u.x(), 0.0);
+    const double speed = std::sqrt(u.squaredNorm() + kProxyFlowSmoothing * kProxyFlowSmoothing);
+    const double u2 = u.squaredNorm(), c2 = cross.squaredNorm(), s4 = std::pow(kProxyFlowScale, 4);
+    // the share of each direction by its own flow: across by the horizontal flow alone, which
+    // vanishes where the flow turns vertical (a heaving body), along by the whole
+    const double wa = u2 * u2 / (u2 * u2 + s4), wc = c2 * c2 / (c2 * c2 + s4);
+    // a drag takes energy out of the motion: along stays >= 0 (what would make it negative, a
+    // transient pushing the body ahead of its flow, goes to the constant part)
+    const double a = std::max(u2 > 0.0 ? wa * dF.dot(u) / (speed * u2) : 0.0, -along);
+    const double c = c2 > 0.0 ? wc * dF.dot(cross) / (speed * c2) : 0.0;
+    along += a;
+    across += c;
+    constant += dF - speed * (a * u + c * cross);
+}
+
+Mat3 PointBody::inertia() const {
+    Mat3 M = (mass + addedMass) * Mat3::Identity();
+    if (anisotropic) M += addedMassMatrix;
+    return M;
+}
+
 namespace {
 
 Mat3 cross_matrix(const Vec3& v) {
@@ -620,9 +666,13 @@ void add_point_body_residual(const PointBody& body, const FluidProps& fluid, con
     const double speed = std::sqrt(u.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
     const double wet = (body.mass - fluid.rho * body.volume) * fluid.gravity;
     R += (body.mass + body.addedMass) * Eigen::Map<const Vec3>(rdd);
+    if (body.anisotropic) R += body.addedMassMatrix * Eigen::Map<const Vec3>(rdd);
     R -= 0.5 * fluid.rho * body.CdA * speed * u;
     R.z() += wet;
-    if (body.fluidInertia && current.accelerates()) R -= (fluid.rho * body.volume + body.addedMass) * A;
+    if (body.fluidInertia && current.accelerates()) {
+        R -= (fluid.rho * body.volume + body.addedMass) * A;
+        if (body.anisotropic) R -= body.addedMassMatrix * A;
+    }
 }
 
 void point_body_jacobian(const PointBody& body, const FluidProps& fluid, const CurrentField& current, WaveExpansion* waveCache,
@@ -639,9 +689,12 @@ void point_body_jacobian(const PointBody& body, const FluidProps& fluid, const C
     } else {
         K.col(2) -= dDrag_du * dU.col(2);  // drag of the body in a sheared current
     }
-    if (body.fluidInertia && current.waves()) K -= (fluid.rho * body.volume + body.addedMass) * dA;
+    if (body.fluidInertia && current.waves()) {
+        K -= (fluid.rho * body.volume + body.addedMass) * dA;
+        if (body.anisotropic) K -= body.addedMassMatrix * dA;
+    }
     C = dDrag_du;
-    M = (body.mass + body.addedMass) * Mat3::Identity();
+    M = body.inertia();
 }
 
 Vec6 CableModel::end_node_residual(const double* X, const double* Xd, const double* Xdd,
@@ -650,12 +703,18 @@ Vec6 CableModel::end_node_residual(const double* X, const double* Xd, const doub
     Vec6 R = Vec6::Zero();
     const Vec3 rd = Eigen::Map<const Vec3>(Xd + gN);
     R.head<3>() = -loads.endLoad + loads.endLoadDamping * (rd - loads.endLoadVelocity);
+    if (params_.bottomEnd == UC_BOTTOM_PROXY) {
+        Vec3 U, A;
+        loads.current.flow(Eigen::Map<const Vec3>(X + gN), U, A, point_wave_cache(0));
+        R.head<3>() -= loads.proxy.force(U - rd);
+        if (loads.endSpring > 0.0) R.head<3>() += loads.endSpring * (Eigen::Map<const Vec3>(X + gN) - loads.endSpringAnchor);
+    }
     // End couple M: virtual work M . (t x dr')/|r'| = (M x r')/|r'|^2 . dr' on the end tangent.
     const Vec3 rp = Eigen::Map<const Vec3>(X + gN + 3);
     R.tail<3>() = -loads.endCouple.cross(rp) / rp.squaredNorm();
     if (endContact_.footprint > 0.0 && endContact_.seabed.enabled)
         R.head<3>() += point_contact_load(endContact_, Eigen::Map<const Vec3>(X + gN), rd, nullptr);
-    if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return R;
+    if (!far_end_carries_body()) return R;
     Vec3 body = R.head<3>();
     add_point_body_residual(body_, fluid(), loads.current, point_wave_cache(0), X + gN, Xd + gN, Xdd + gN, body);
     R.head<3>() = body;
@@ -674,13 +733,23 @@ void CableModel::end_node_jacobian(const double* X, const double* Xd, const doub
         K.block<3, 3>(3, 3) = -cross_matrix(loads.endCouple) * (Mat3::Identity() / n2 - 2.0 * rp * rp.transpose() / (n2 * n2));
     }
     C.block<3, 3>(0, 0) = loads.endLoadDamping;
+    if (params_.bottomEnd == UC_BOTTOM_PROXY) {
+        // the estimate's velocity dependence (its dependence on the position through the current's
+        // gradients is left out: a Newton matrix, not the residual)
+        Vec3 U, A;
+        loads.current.flow(Eigen::Map<const Vec3>(X + gN), U, A, point_wave_cache(0));
+        Mat3 dF_du;
+        loads.proxy.force(U - Eigen::Map<const Vec3>(Xd + gN), &dF_du);
+        C.block<3, 3>(0, 0) += dF_du;
+        if (loads.endSpring > 0.0) K.block<3, 3>(0, 0) += loads.endSpring * Mat3::Identity();
+    }
     if (endContact_.footprint > 0.0 && endContact_.seabed.enabled) {
         SeabedJacobian J;
         point_contact_load(endContact_, Eigen::Map<const Vec3>(X + gN), Eigen::Map<const Vec3>(Xd + gN), &J);
         K.block<3, 3>(0, 0) += J.dr;
         C.block<3, 3>(0, 0) += J.drd;
     }
-    if (params_.bottomEnd != UC_BOTTOM_TOWED_BODY) return;
+    if (!far_end_carries_body()) return;
     Mat3 Kb, Cb, Mb;
     point_body_jacobian(body_, fluid(), loads.current, point_wave_cache(0), X + gN, Xd + gN, Kb, Cb, Mb);
     K.block<3, 3>(0, 0) += Kb;

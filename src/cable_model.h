@@ -46,6 +46,29 @@ private:
 };
 
 // Everything the residual needs besides the state: prescribed motion and environment.
+// bottomEnd 4: the proxy's estimate of the external body's forces other than the cable's, weight
+// and buoyancy beyond the proxy's own. A hydrodynamic force (drag, a depressor's lift) turns with the
+// flow and grows with its square, so the estimate keeps that part in the flow's frame: with u the
+// flow relative to the body,
+//   F(u) = constant + |u| (along u + across (z x u)),
+// a drag law whose coefficients are estimated. The estimate's changes go to the law with the share
+// w = |f|^4 / (|f|^4 + s^4) (s = kProxyFlowScale; f the flow of the term: u along, the horizontal
+// flow across) and to the constant part otherwise: what is learnt at a crawl is not blown up by the
+// square of a later speed. The law's along coefficient stays >= 0 (a drag, never a push along the
+// flow, which would feed the proxy's motion). Applied at the proxy's velocity inside
+// the implicit step, as a drag.
+struct ProxyEstimate {
+    Vec3 constant = Vec3::Zero();  // [N]
+    double along = 0.0, across = 0.0;  // [N s^2/m^2]
+    // The force at the relative flow u (Earth frame) and, if dF_du is not null, its derivative.
+    Vec3 force(const Vec3& u, Mat3* dF_du = nullptr) const;
+    // Adds the force change dF at the flow u: the share w of its components along u and z x u to the
+    // law, the rest to the constant part. force(u) grows by dF (to round-off).
+    void add(const Vec3& dF, const Vec3& u);
+};
+constexpr double kProxyFlowScale = 0.25;       // [m/s] s above
+constexpr double kProxyFlowSmoothing = 1e-3;  // [m/s] |u| as sqrt(|u|^2 + this^2): smooth at rest
+
 struct Loads {
     TowTrajectory tow;
     TowTrajectory end;  // far end when bottomEnd = 3 (external body)
@@ -57,6 +80,12 @@ struct Loads {
     Vec3 endLoadVelocity = Vec3::Zero();
     Mat3 endLoadDamping = Mat3::Zero();
     Vec3 endCouple = Vec3::Zero();
+    // bottomEnd 4: the estimate of the external body's other forces, applied to the proxy at the far end.
+    ProxyEstimate proxy;
+    // Static solver only (bottomEnd 4): a spring of this stiffness [N/m] holds the far end at
+    // endSpringAnchor, so that the statics put the proxy where the external body is.
+    double endSpring = 0.0;
+    Vec3 endSpringAnchor = Vec3::Zero();
     double torque = 0.0;  // H [N.m] (0 unless torsion is enabled)
     // Caps the axial stiffness factor of every strain mode (static solver only: equilibrium is
     // first found on a soft cable, whose large rotations do not turn into huge axial residuals,
@@ -81,6 +110,12 @@ struct ElementForces {
 struct PointBody {
     double mass = 0.0, volume = 0.0, addedMass = 0.0, CdA = 0.0;
     bool fluidInertia = false;  // accelerating water pushes it (enableBodyFluidInertia)
+    // An added-mass matrix (Earth frame) on top of addedMass I; used only when anisotropic, so a body
+    // without one computes exactly as before.
+    Mat3 addedMassMatrix = Mat3::Zero();
+    bool anisotropic = false;
+    // (mass + addedMass) I + addedMassMatrix: the inertia of its translation.
+    Mat3 inertia() const;
 };
 
 // Residual terms of a point body at position r (velocity rd, acceleration rdd) in the water: inertia
@@ -211,6 +246,8 @@ public:
     const SeabedProps& seabed() const { return sections_[0].seabed; }
     const CurrentProfile& current_profile() const { return profile_; }
     const SeaState& sea() const { return sea_; }
+    bool far_end_carries_body() const;  // the internal towed body or the proxy of an external one
+    const PointBody& body() const { return body_; }
     bool far_end_prescribed() const;  // anchored or external
     // The anchor's position: anchor.x/y/z, or on the seabed the height the line rests at there.
     const Vec3& anchor() const { return anchor_; }

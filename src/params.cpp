@@ -140,6 +140,34 @@ std::string check_params(const UCParams& p) {
             return format_violation(name, p.attachment[k].s, range, "the winch's section cannot carry attachments");
         }
     }
+    if (p.bottomEnd == UC_BOTTOM_PROXY && !(p.bodyMass + p.bodyAddedMass > 0.0))
+        return format_violation("body.mass", p.bodyMass, "(0, 1e8] (with body.addedMass)",
+                                "the proxy of an external body (bottomEnd 4) carries the body's inertia: it needs one");
+    {
+        // (m + m_a) I + A: symmetric and positive definite, or the body's inertia has no meaning.
+        const double* A[3] = {p.bodyAddedMassMatrix.x, p.bodyAddedMassMatrix.y, p.bodyAddedMassMatrix.z};
+        double M[3][3];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) M[i][j] = A[i][j] + (i == j ? p.bodyMass + p.bodyAddedMass : 0.0);
+        const char* names[3][3] = {{"xx", "xy", "xz"}, {"yx", "yy", "yz"}, {"zx", "zy", "zz"}};
+        char name[64];
+        for (int i = 0; i < 3; ++i)
+            for (int j = i + 1; j < 3; ++j) {
+                if (A[i][j] == A[j][i]) continue;
+                std::snprintf(name, sizeof name, "body.addedMassMatrix.%s", names[j][i]);
+                char range[64];
+                std::snprintf(range, sizeof range, "{%.17g} (body.addedMassMatrix.%s)", A[i][j], names[i][j]);
+                return format_violation(name, A[j][i], range, "an added-mass matrix is symmetric");
+            }
+        const bool any = A[0][0] != 0.0 || A[0][1] != 0.0 || A[0][2] != 0.0 || A[1][1] != 0.0 || A[1][2] != 0.0 || A[2][2] != 0.0;
+        // leading minors of the symmetric matrix (Sylvester)
+        const double d1 = M[0][0], d2 = M[0][0] * M[1][1] - M[0][1] * M[1][0];
+        const double d3 = M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+                          M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
+        if (any && !(d1 > 0.0 && d2 > 0.0 && d3 > 0.0))
+            return format_violation("body.addedMassMatrix.xx", A[0][0], "a matrix that leaves (body.mass + body.addedMass) I + A positive definite",
+                                    "the body's inertia must be positive in every direction");
+    }
     for (int k = 1; k < p.currentProfileRows; ++k) {
         if (p.currentProfileDepth[k] > p.currentProfileDepth[k - 1]) continue;
         char name[64], range[96];

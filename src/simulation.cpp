@@ -22,7 +22,12 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 9;
+constexpr std::uint32_t kStateVersion = 10;
+// bottomEnd 4: the estimate's low-pass spans at least this many communication steps. Under Jacobi the
+// body feels the proxy's force a step late; a faster estimate then feeds that lag back into the proxy
+// (the model problem in docs/cosimulation.md: 5 steps keep the gains stable with +-50 % inertia error
+// and no drag at all, 3 do not).
+constexpr double kProxyFilterSteps = 5.0;
 
 // Fixed-layout header of a saved state; followed by UCOutputs, y, y' and the integrator's history.
 struct StateHeader {
@@ -46,6 +51,7 @@ struct StateHeader {
     // the mesh graded by the static profile for the tow point meshTow (meshGraded 1)
     std::int32_t meshGraded, reserved;
     double meshTow[3], meshFar[3];
+    double proxyConstant[3], proxyAlong, proxyAcross;  // bottomEnd 4: the estimate (ProxyEstimate)
 };
 
 IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
@@ -160,7 +166,7 @@ double tension_scale(const CableModel& model, const UCOutputs& initial) {
     const LineScales& line = model.line();
     double T = initial.towTension;
     for (double t : initial.tension) T = std::max(T, t);
-    double body = p.bottomEnd == UC_BOTTOM_TOWED_BODY ? p.bodyMass : 0.0;
+    double body = model.far_end_carries_body() ? p.bodyMass : 0.0;
     for (const NodeAttachment& at : model.attachments()) body += at.body.mass;
     const double kPi = 3.14159265358979323846;
     return std::max({T, (line.massPerLength * line.length + body) * p.gravity, kPi * kPi * line.EI / (line.length * line.length),
@@ -345,7 +351,7 @@ bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
     std::vector<double> X(model_.n_global());
     model_.straight_line(towPoint, vec(p.initialDirection), X.data());
     const bool profile = profileApplies_ && profile_guess(X.data());
-    if (model_.far_end_prescribed() && !profile) {
+    if (far_end_held_at_start() && !profile) {
         // Chord from the tow point to the far end, sagging in its vertical plane when the line is
         // slack (a parabola whose length is about the cable length).
         const Vec3 chord = farPoint - towPoint;
@@ -361,7 +367,7 @@ bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
             Eigen::Map<Vec3>(X.data() + 6 * i + 3) = drdxi.normalized() * std::max(D / L, 1.0);
         }
     }
-    if (p.enableSeabed && !model_.far_end_prescribed()) {
+    if (p.enableSeabed && !far_end_held_at_start()) {
         // A free end that reaches the seabed: the straight line bends there and trails along it
         // behind the tow (a line clamped to the seabed instead piles its end into one point, from
         // which the solver found folded equilibria).
@@ -592,7 +598,10 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     loads_.tow = TowTrajectory::at_rest_in_time(tow_.position, tow_.velocity, tow_.acceleration, t0);
     end_.reset(vec(in.end), vec(in.endVelocity), Vec3::Zero(), false);
     loads_.end = TowTrajectory::at_rest_in_time(end_.position, end_.velocity, end_.acceleration, t0);
-    Vec3 farPoint = p.bottomEnd == UC_BOTTOM_EXTERNAL ? end_.position : vec(p.anchor);
+    const bool proxy = p.bottomEnd == UC_BOTTOM_PROXY;
+    Vec3 farPoint = p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy ? end_.position : vec(p.anchor);
+    loads_.proxy = ProxyEstimate();
+    loads_.endSpring = 0.0;
     if (!check_geometry(farPoint, error)) return false;
     // An anchored line, or one whose far end is held at rest, starts from its static profile.
     profileApplies_ = p.bottomEnd == UC_BOTTOM_ANCHORED ||
@@ -622,7 +631,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     // A steady tow only when nothing holds the far end back: free end, internal body, or an
     // external end moving with the tow point. Otherwise the equilibrium is at rest.
     const bool steadyTow = p.bottomEnd == UC_BOTTOM_FREE || p.bottomEnd == UC_BOTTOM_TOWED_BODY ||
-                           (p.bottomEnd == UC_BOTTOM_EXTERNAL && (end_.velocity - tow_.velocity).norm() <= 1e-12);
+                           ((p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy) && (end_.velocity - tow_.velocity).norm() <= 1e-12);
     if (p.initMode == UC_INIT_EQUILIBRIUM && steadyTow) {
         // Steady tow: every node moves with the tow point, tangents do not turn.
         for (int g = 0; g < model_.n_global(); ++g) {
@@ -631,7 +640,9 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         }
     }
     if (p.initMode == UC_INIT_EQUILIBRIUM && !statics_applies(farPoint, error)) return false;
-    if (p.initMode == UC_INIT_EQUILIBRIUM) {
+    if (p.initMode == UC_INIT_EQUILIBRIUM && proxy) {
+        if (!proxy_statics(t0, v, fromProfile, error)) return false;
+    } else if (p.initMode == UC_INIT_EQUILIBRIUM) {
         const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile);
         if (!statics.converged) {
             error = statics.message;
@@ -674,6 +685,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         winchRate_ = y_[1];
     }
     if (sn_.area > 0.0) rainflow_.add(outputs_.towTension, sn_);
+    if (proxy) proxy_output(0.0, Vec3::Zero(), Vec3::Zero(), in);
     outputs_.towTensionMax = outputs_.towTensionMin = outputs_.towTension;
     tensionScale_ = tension_scale(model_, outputs_);
     if (!set_integrator_tolerances(error)) return false;
@@ -777,6 +789,7 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         restartPending_ = false;
     }
     const double tEnd = time_ + h;
+    const Vec3 proxyPosition = vec(outputs_.endPosition), proxyVelocity = vec(outputs_.endVelocity);
     stepTensionMax_ = stepTensionMin_ = outputs_.towTension;  // the tension at the step's start
     const RainflowCounter rainflowAtStart = rainflow_;
     winchTension_ = in.winchTension;
@@ -814,6 +827,7 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     if (externalEnd) end_.advance(loads_.end, endVelocityInput, endAcceleration, in.endAccelerationGiven != 0);
     lastStepSize_ = h;
     update_outputs();
+    if (model_.params().bottomEnd == UC_BOTTOM_PROXY) proxy_output(h, proxyPosition, proxyVelocity, in);
     outputs_.towTensionMax = std::max(stepTensionMax_, outputs_.towTension);
     outputs_.towTensionMin = std::min(stepTensionMin_, outputs_.towTension);
     warn_of_compression();
@@ -1272,6 +1286,120 @@ void CableSimulation::free_state(std::vector<double>& q, std::vector<double>& v,
     }
 }
 
+bool CableSimulation::far_end_held_at_start() const {
+    const UCParams& p = model_.params();
+    return model_.far_end_prescribed() || (p.bottomEnd == UC_BOTTOM_PROXY && p.initMode == UC_INIT_EQUILIBRIUM);
+}
+
+// The spring is ten times as stiff as the stiffest element's axial spring: the equilibrium found with
+// it is well conditioned, and the end stands off the body's position by a tenth of what the cable
+// would stretch under the same force. The anchor is then moved by that offset and the statics solved
+// again from there (each pass takes the offset down by that factor, to round-off in a few passes).
+bool CableSimulation::proxy_statics(double t0, const std::vector<double>& v, bool fromProfile, std::string& error) {
+    constexpr int kPasses = 8;
+    double shortest = model_.element_length(0);
+    for (const ElementRun& run : model_.runs()) shortest = std::min(shortest, run.elementLength);
+    const Vec3 target = end_.position;
+    loads_.endSpring = 10.0 * model_.line().EA / shortest;
+    loads_.endSpringAnchor = target;
+    const int gN = model_.end_offset();
+    const double tolerance = 1e-9 * std::max(model_.line().length, target.norm());
+    for (int pass = 0; pass < kPasses; ++pass) {
+        const StaticsResult statics =
+            solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile || pass > 0);
+        if (!statics.converged) {
+            loads_.endSpring = 0.0;
+            error = statics.message;
+            return false;
+        }
+        std::vector<double> zero(model_.n_free(), 0.0);
+        model_.expand(q_.data(), v.data(), zero.data(), loads_, t0, X_.data(), Xd_.data(), Xdd_.data());
+        const Vec3 offset = Eigen::Map<const Vec3>(X_.data() + gN) - target;
+        if (offset.norm() <= tolerance) break;
+        loads_.endSpringAnchor -= offset;
+    }
+    // The spring's force becomes the proxy's estimated force: the residual, and so the equilibrium,
+    // stay as solved (to round-off).
+    const Vec3 spring = -loads_.endSpring * (Eigen::Map<const Vec3>(X_.data() + gN) - loads_.endSpringAnchor);
+    loads_.proxy.add(spring, proxy_flow(Eigen::Map<const Vec3>(X_.data() + gN), Eigen::Map<const Vec3>(Xd_.data() + gN), t0));
+    loads_.endSpring = 0.0;
+    return true;
+}
+
+// The flow relative to the proxy at its position r and velocity v at time t.
+Vec3 CableSimulation::proxy_flow(const Vec3& r, const Vec3& v, double t) const {
+    CurrentField current = loads_.current;
+    current.time = t;
+    Vec3 U, A;
+    current.flow(r, U, A);
+    return U - v;
+}
+
+namespace {
+
+// phi(A) = A (e^A - I)^-1 = g(A)^-1 with g(A) = (e^A - I) / A = I + A/2 + A^2/6 + ..., which is
+// entire and invertible where A's eigenvalues are real (a drag's derivative has no vertical part:
+// A is singular, and phi is I there). g by its Taylor series on A / 2^s, then doubled s times:
+// g(2B) = g(B) (e^B + I) / 2, e^(2B) = (e^B)^2.
+Mat3 bernoulli_phi(const Mat3& A) {
+    const double norm = A.lpNorm<Eigen::Infinity>();
+    int squarings = 0;
+    while (norm / std::ldexp(1.0, squarings) > 0.25) ++squarings;
+    const Mat3 B = A / std::ldexp(1.0, squarings);
+    Mat3 E = Mat3::Identity(), g = Mat3::Identity(), power = Mat3::Identity();
+    double factorial = 1.0;
+    for (int k = 1; k <= 14; ++k) {  // |B| <= 1/4: the remainders are below 1e-17
+        power = power * B;
+        factorial *= k;
+        E += power / factorial;
+        g += power / (factorial * (k + 1));
+    }
+    for (int k = 0; k < squarings; ++k) {
+        g = 0.5 * g * (E + Mat3::Identity());
+        E = E * E;
+    }
+    return g.inverse();
+}
+
+}  // namespace
+
+// The force that makes the body follow the proxy. The body integrates M v' = F + (its other forces)
+// with F held over the step; with its other forces as the estimate says (linearized at the proxy's
+// new velocity v1: the estimate's value there less D (v - v1), D its drag derivative), the held force
+// that takes a body starting at the proxy's old velocity v0 to v1 is
+//   F = -(M / h) phi(M^-1 D h) (v0 - v1) - estimate(v1) - proxy weight,
+// phi(A) = A (e^A - I)^-1 (= M (v1 - v0) / h less the mean of the other forces when D = 0): exact for
+// a body whose drag time M / D is shorter than the step, which a force from the mean acceleration is
+// not. The tracking force corrects what remains, at a fraction of the one-step gains:
+// T = M [alpha (e + h e' + d) / h^2 + beta e' / h], e and e' the proxy's position and velocity less
+// the body's at the step's start, d the proxy's departure from a trapezoidal path over the step.
+// What the body needs beyond that in the long run is the estimate's error: the estimate integrates
+// the tracking force (a low-pass of time constant proxy.filterTime, at least kProxyFilterSteps
+// steps). docs/cosimulation.md derives the gains' stability. h = 0: at initialization (the cable
+// force alone).
+void CableSimulation::proxy_output(double h, const Vec3& p0, const Vec3& v0, const UCInputs& in) {
+    const UCParams& p = model_.params();
+    const PointBody& body = model_.body();
+    const Vec3 weight(0.0, 0.0, -(body.mass - model_.fluid().rho * body.volume) * model_.fluid().gravity);
+    const Vec3 flow = proxy_flow(vec(outputs_.endPosition), vec(outputs_.endVelocity), time_);
+    Mat3 D;
+    const Vec3 estimate = loads_.proxy.force(flow, &D);
+    if (h > 0.0) {
+        const Mat3 M = body.inertia();
+        const Vec3 p1 = vec(outputs_.endPosition), v1 = vec(outputs_.endVelocity);
+        const Vec3 follow = -(M / h) * bernoulli_phi(M.inverse() * D * h) * (v0 - v1) - estimate - weight;
+        const Vec3 e = p0 - vec(in.end), ev = v0 - vec(in.endVelocity);
+        const Vec3 departure = p1 - p0 - 0.5 * h * (v0 + v1);
+        const Vec3 tracking = M * (p.proxyTrackingGain * (e + h * ev + departure) / (h * h) + p.proxyTrackingDamping * ev / h);
+        const Vec3 force = follow + tracking;
+        for (int k = 0; k < 3; ++k) outputs_.endForce[k] = force[k];
+        const double tau = std::max(p.proxyFilterTime, kProxyFilterSteps * h);
+        loads_.proxy.add(-h / (tau + h) * tracking, flow);
+    }
+    const Vec3 total = loads_.proxy.force(flow) + weight;
+    for (int k = 0; k < 3; ++k) outputs_.bodyForceEstimate[k] = total[k];
+}
+
 void CableSimulation::update_outputs() {
     expand_integrator_state(time_, y_.data(), yp_.data());
     model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), &forces_);
@@ -1322,9 +1450,12 @@ void CableSimulation::save_state(void* buffer) {
     header.winchRate = winchRate_;
     header.winchTop0 = winchTop0_;
     header.meshGraded = graded_ ? 1 : 0;
+    header.proxyAlong = loads_.proxy.along;
+    header.proxyAcross = loads_.proxy.across;
     for (int k = 0; k < 3; ++k) {
         header.meshTow[k] = meshTow_[k];
         header.meshFar[k] = meshFar_[k];
+        header.proxyConstant[k] = loads_.proxy.constant[k];
     }
     historyBuffer_.assign(integrator_->history_size(), 0.0);
     if (history) integrator_->save_history(historyBuffer_.data());
@@ -1404,6 +1535,9 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     set_winch_time(time_);
     tow_.load(header.tow);
     end_.load(header.end);
+    loads_.proxy.constant = vec(header.proxyConstant);
+    loads_.proxy.along = header.proxyAlong;
+    loads_.proxy.across = header.proxyAcross;
     Vec3* frames[4] = {&twistRef_.topTangent, &twistRef_.topNormal, &twistRef_.endTangent, &twistRef_.endNormal};
     for (int f = 0; f < 4; ++f) *frames[f] = vec(header.twistRef + 3 * f);
     lastBeta_ = header.lastBeta;
@@ -1470,6 +1604,18 @@ bool CableSimulation::prepare_derivatives(std::string& error) {
         model_.element_jacobian(elements[k], X_.data(), Xd_.data(), Xdd_.data(), loads_, derivativeKe_[k],
                                 derivativeCe_[k], derivativeMe_[k]);
     model_.end_node_jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_, derivativeKn_, derivativeCn_, derivativeMn_);
+    if (model_.params().bottomEnd == UC_BOTTOM_PROXY) {
+        // The force on the body (proxy_output) moves with the proxy's position p1 and velocity v1 at
+        // t + h as follow + tracking do: dF = [(M / h) phi + D - M alpha / (2 h)] dv1 + (M alpha / h^2) dp1
+        // (D the estimate's drag derivative; phi's own change with D left out).
+        const double h = lastStepSize_;
+        const Mat3 Mb = model_.body().inertia();
+        const double alpha = model_.params().proxyTrackingGain;
+        Mat3 D;
+        loads_.proxy.force(proxy_flow(vec(outputs_.endPosition), vec(outputs_.endVelocity), time_), &D);
+        derivativeProxyVelocity_ = Mb / h * bernoulli_phi(Mb.inverse() * D * h) + D - Mb * alpha / (2.0 * h);
+        derivativeProxyPosition_ = Mb * alpha / (h * h);
+    }
     // The Newton matrix of one BDF2 substep, K + c C + c^2 M, factored for both substep sizes.
     for (int level = 0; level < 2; ++level) {
         const double c = 1.5 * (kDerivativeSubsteps << level) / lastStepSize_;
@@ -1491,6 +1637,12 @@ void CableSimulation::derivative_response(const double seed[kDerivativeInputs], 
     const int n = model_.n_free(), N = model_.n_elements(), bw = model_.free_bandwidth();
     const double h = lastStepSize_;
     const bool externalEnd = model_.params().bottomEnd == UC_BOTTOM_EXTERNAL;
+    const bool proxyEnd = model_.params().bottomEnd == UC_BOTTOM_PROXY;
+    // bottomEnd 4: the body's reported state enters the force on it through the tracking force alone
+    // (the estimate moves after the step), linearly: -M alpha / h^2 per metre, -M (alpha + beta) / h
+    // per metre per second; its acceleration not at all. The towForce rows stay 0: the cable does not
+    // see the body within the step.
+    Vec3 tracking = Vec3::Zero();
     const int elements[2] = {0, N - 1};
     double* w = derivativeWork_.data();
     double *qm = w, *q0 = w + n, *vm = w + 2 * n, *v0 = w + 3 * n, *rhs = w + 4 * n, *bq = w + 5 * n,
@@ -1508,9 +1660,14 @@ void CableSimulation::derivative_response(const double seed[kDerivativeInputs], 
     for (int s = 0; s < kDerivativeInputs; ++s) {
         if (seed[s] == 0.0) continue;
         const bool tow = s < 6 || (s >= 12 && s < 15);
-        if (!tow && !externalEnd) continue;  // the end inputs act only on a driven far end
         const int comp = s % 3;
         const int kind = s >= 12 ? 2 : (s % 6) / 3;  // 0 position, 1 velocity, 2 acceleration
+        if (!tow && proxyEnd && kind < 2) {
+            const UCParams& pp = model_.params();
+            const double gain = kind == 0 ? pp.proxyTrackingGain / (h * h) : (pp.proxyTrackingGain + pp.proxyTrackingDamping) / h;
+            tracking -= seed[s] * gain * model_.body().inertia().col(comp);
+        }
+        if (!tow && !externalEnd) continue;  // the end inputs act on the cable only at a driven far end
         const DrivenEnd& end = tow ? tow_ : end_;
         const int gp = (tow ? 0 : model_.end_offset()) + comp;
         double dp1 = 1.0, dv1 = 0.0, da1 = 0.0;
@@ -1560,6 +1717,7 @@ void CableSimulation::derivative_response(const double seed[kDerivativeInputs], 
         active.push_back(a);
     }
     for (int i = 0; i < 6; ++i) out[i] = 0.0;
+    for (int r = 0; r < 3; ++r) out[3 + r] = tracking[r];
     if (active.empty()) return;
     const int width = 2 * bw + 1;
     const BandMatrix &C = *derivativeC_, &M = *derivativeM_;
@@ -1625,9 +1783,20 @@ void CableSimulation::derivative_response(const double seed[kDerivativeInputs], 
                 result[3 * k + r] = -dR;
             }
         }
+        if (proxyEnd) {  // the force on the body, from the proxy's state at t + h
+            Vec3 dp, dv;
+            for (int r = 0; r < 3; ++r) {
+                const int j = model_.free_index(model_.end_offset() + r);
+                dp[r] = q0[j];
+                dv[r] = v0[j];
+            }
+            const Vec3 dF = derivativeProxyVelocity_ * dv + derivativeProxyPosition_ * dp;
+            for (int r = 0; r < 3; ++r) result[3 + r] = dF[r];
+        }
     }
     // BDF2's error falls as the square of the substep: Richardson's extrapolation of the two.
     for (int i = 0; i < 6; ++i) out[i] = (4.0 * out[i] - coarse[i]) / 3.0;
+    for (int r = 0; r < 3; ++r) out[3 + r] += tracking[r];
 }
 
 bool CableSimulation::interface_derivative(const double seed[kDerivativeInputs], double out[6], std::string& error) {

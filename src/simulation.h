@@ -71,7 +71,7 @@ public:
     // "Interface derivatives"): out[i] = sum_j d output_i (t + h) / d input_j (t) seed[j], outputs
     // i = towForce x, y, z, endForce x, y, z, inputs j = tow x, y, z, vx, vy, vz (0-5), end x, y,
     // z, vx, vy, vz (6-11), tow ax, ay, az (12-14), end ax, ay, az (15-17) (the end inputs act
-    // only when bottomEnd = 3), for a next step as long as the last one: the cable linearized about
+    // only when bottomEnd = 3 or 4), for a next step as long as the last one: the cable linearized about
     // its present state, driven by the change of the driven end's quintic that the input change
     // makes, integrated over the step by BDF2 with kDerivativeSubsteps and twice as many substeps,
     // extrapolated (Richardson) to a third-order result. Only the requested direction is computed:
@@ -100,6 +100,17 @@ private:
     void set_environment(const UCInputs& in);
     // True where the guess is the line's static profile (near the equilibrium).
     bool initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
+    // The far end is held at the start: anchored, external, or the proxy of an external body whose
+    // statics hold it where the body is (bottomEnd 4, initMode 0).
+    bool far_end_held_at_start() const;
+    // bottomEnd 4, initMode 0: the statics with the proxy held at the body's position by a spring,
+    // whose force then becomes the estimate of the body's other forces (the start is in equilibrium).
+    bool proxy_statics(double t0, const std::vector<double>& v, bool fromProfile, std::string& error);
+    // bottomEnd 4, after a step from the proxy's state (p0, v0): the force on the external body
+    // (the force that takes it along the proxy's velocity, plus the tracking force) and the
+    // estimate's update.
+    void proxy_output(double h, const Vec3& p0, const Vec3& v0, const UCInputs& in);
+    Vec3 proxy_flow(const Vec3& r, const Vec3& v, double t) const;
     // The static profile of the line from the tow point to its held far end (src/line_profile.h),
     // bending, current and waves left out; false where it does not apply, with the reason in why.
     bool static_profile(const Vec3& towPoint, const Vec3& farPoint, LineProfile& profile, bool& towOnTop,
@@ -187,6 +198,7 @@ private:
     double time_ = 0.0;
     DrivenEnd tow_;             // the tow point
     DrivenEnd end_;             // the far end of bottomEnd 3 (external)
+    // bottomEnd 4: the estimate of the external body's other forces is loads_.proxy (saved)
     double lastStepSize_ = 0.0; // of the previous step (0: no input history yet)
     TwistReference twistRef_;  // end frames at initialization (torqueMode 2)
     double lastBeta_ = 0.0;    // geometric twist at the last evaluation, for unwrapping past +-pi
@@ -239,6 +251,8 @@ private:
     std::unique_ptr<BandMatrix> derivativeK_, derivativeC_, derivativeM_;
     Mat12 derivativeKe_[2], derivativeCe_[2], derivativeMe_[2];
     Mat6 derivativeKn_, derivativeCn_, derivativeMn_;
+    // bottomEnd 4: the force on the body by the proxy's velocity and position at t + h
+    Mat3 derivativeProxyVelocity_ = Mat3::Zero(), derivativeProxyPosition_ = Mat3::Zero();
     std::vector<double> derivativeWork_;
     double derivativeColumns_[kDerivativeInputs][6] = {};
     bool derivativeColumnDone_[kDerivativeInputs] = {};

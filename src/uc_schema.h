@@ -39,6 +39,12 @@ typedef struct UCAttachment {
     double CdA; /* attachment[k].CdA [m2]: drag area (0.5 rho CdA |u| u on the relative velocity) */
 } UCAttachment;
 
+typedef struct UCBodyAddedMassMatrix {
+    double x[3]; /* body.addedMassMatrix.xx, body.addedMassMatrix.xy, body.addedMassMatrix.xz [kg]: row x of the towed body's added-mass matrix (`bottomEnd` 2 and 4), Earth frame, added to `body.addedMass` times the identity; all zero (the default): the scalar alone. (m + m_a) I + A must be symmetric positive definite */
+    double y[3]; /* body.addedMassMatrix.yx, body.addedMassMatrix.yy, body.addedMassMatrix.yz [kg]: row y of the towed body's added-mass matrix (`bottomEnd` 2 and 4), Earth frame, added to `body.addedMass` times the identity; all zero (the default): the scalar alone. (m + m_a) I + A must be symmetric positive definite */
+    double z[3]; /* body.addedMassMatrix.zx, body.addedMassMatrix.zy, body.addedMassMatrix.zz [kg]: row z of the towed body's added-mass matrix (`bottomEnd` 2 and 4), Earth frame, added to `body.addedMass` times the identity; all zero (the default): the scalar alone. (m + m_a) I + A must be symmetric positive definite */
+} UCBodyAddedMassMatrix;
+
 typedef struct UCEndLoadDamping {
     double x[3]; /* endLoadDamping.xx, endLoadDamping.xy, endLoadDamping.xz [N.s/m]: row x of the damping matrix D = -∂endLoad/∂v: over a step the far end carries endLoad - D (v - `endLoadVelocity`) at its current velocity v, implicitly integrated (a partner body's drag stays stable at any step) */
     double y[3]; /* endLoadDamping.yx, endLoadDamping.yy, endLoadDamping.yz [N.s/m]: row y of D */
@@ -103,7 +109,7 @@ typedef struct UCParams {
     double currentProfileY[UC_CURRENT_PROFILE_ROWS]; /* currentProfile.y[k] [m/s]: current velocity of row k */
     int topEnd; /* topEnd: tow point: 0 hinged (tangent free), 1 clamped to `topTangent.*` */
     double topTangent[3]; /* topTangent.x/y/z: clamped top direction (normalized internally; `topEnd` = 1) */
-    int bottomEnd; /* bottomEnd: far end: 0 free, 1 anchored at `anchor.*`, 2 internal towed body (`body.*`), 3 external body: the far end follows the `end.*` inputs and `endForce.*` is the force on that body */
+    int bottomEnd; /* bottomEnd: far end: 0 free, 1 anchored at `anchor.*`, 2 internal towed body (`body.*`), 3 external body: the far end follows the `end.*` inputs and `endForce.*` is the force on that body, 4 external body that integrates itself: the cable integrates a proxy of it (`body.mass`, `body.addedMass`, `body.addedMassMatrix.*`, `body.volume`; its other forces estimated from the `end.*` inputs) and `endForce.*` is the force that makes the body follow the proxy ([docs/cosimulation.md](docs/cosimulation.md)) */
     double anchor[3]; /* anchor.x/y/z [m]: anchor position (`bottomEnd` = 1) */
     double bodyMass; /* body.mass [kg]: mass of the internal towed body (`bottomEnd` = 2) */
     double bodyVolume; /* body.volume [m3]: displaced volume of the towed body */
@@ -146,6 +152,10 @@ typedef struct UCParams {
     int solverMaxOrder; /* solver.maxOrder: highest order of the time integrator's variable-order BDF formulas (1–5). 5 (the default) takes the fewest steps where the tolerance is tight; orders 3–5 are not A-stable, so at a loose tolerance lightly damped fast modes (a stiff cable's axial and bending ringing) can hold the steps below the size the error test asks for, and 2, the highest A-stable order, then takes fewer steps for the same answer (the stiff power cable at tensionTolerance 0.1: 25–35 % fewer); 1 is backward Euler, which damps the most ([docs/error_control.md](docs/error_control.md), the integrator's order) */
     double winchMaxAcceleration; /* winch.maxAcceleration [m/s2]: largest acceleration and deceleration of the winch drum: with `winchMode` 1 it ramps towards `winch.rate` and brakes in time to stop at `winch.minLength`/`winch.maxLength`; with `winchMode` 2 the commanded rate stays within that braking envelope (the drum's response is `winch.timeConstant`'s); 0 = no limit (the rate may change at once at a communication point) ([docs/winch.md](docs/winch.md)) */
     int meshGrading; /* meshGrading: where the static profile puts the nodes of a line held at both ends that touches the seabed or carries attachments: 0 each section's elements of equal length (between attachments); 1 graded within each section: a node at every touchdown and lift-off, elements short where the line turns; 2 graded along the whole line: the sections' `nElements` (their total) are shared out by the same rule, at least one per section, so a section lying on the seabed does not keep elements the hanging part needs ([docs/model.md](docs/model.md), initial equilibrium) */
+    UCBodyAddedMassMatrix bodyAddedMassMatrix;
+    double proxyTrackingGain; /* proxy.trackingGain: `bottomEnd` 4: position gain α of the tracking force, as a fraction of M/h² (M the proxy's inertia, h the communication step); 1 with `proxy.trackingDamping` 0.5 would put the body on the proxy in one step; the defaults 0.05 and 0.3 stay stable under Gauss-Seidel and Jacobi with ±50 % inertia error ([docs/cosimulation.md](docs/cosimulation.md)) */
+    double proxyTrackingDamping; /* proxy.trackingDamping: `bottomEnd` 4: velocity gain β of the tracking force, as a fraction of M/h */
+    double proxyFilterTime; /* proxy.filterTime [s]: `bottomEnd` 4: shortest time constant of the low-pass that estimates the external body's other forces (drag, lift, thrust, weight and buoyancy beyond the proxy's) from the tracking force; the estimate uses the larger of this and five communication steps */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
 } UCParams;
 
@@ -219,6 +229,7 @@ typedef struct UCOutputs {
     UCMooringLine mooringLine[UC_MAX_LINES];
     UCBodyLoad bodyLoad[UC_MAX_BODIES];
     UCPointLoad pointLoad[UC_MAX_POINTS];
+    double bodyForceEstimate[3]; /* bodyForceEstimate.x/y/z [N]: the external body's forces other than the cable's (weight and buoyancy included) as the proxy far end estimates them (`bottomEnd` 4; 0 otherwise) */
 } UCOutputs;
 
 /* X(vr, name, TYPE, CAUSALITY, member): every variable in value-reference order; TYPE is REAL, INTEGER, BOOLEAN or STRING (a NUL-terminated char array), CAUSALITY PARAMETER, INPUT or OUTPUT, member the field of UCParams, UCInputs or UCOutputs */
@@ -469,6 +480,18 @@ typedef struct UCOutputs {
     X(244, "solver.maxOrder", INTEGER, PARAMETER, solverMaxOrder) \
     X(245, "winch.maxAcceleration", REAL, PARAMETER, winchMaxAcceleration) \
     X(246, "meshGrading", INTEGER, PARAMETER, meshGrading) \
+    X(247, "body.addedMassMatrix.xx", REAL, PARAMETER, bodyAddedMassMatrix.x[0]) \
+    X(248, "body.addedMassMatrix.xy", REAL, PARAMETER, bodyAddedMassMatrix.x[1]) \
+    X(249, "body.addedMassMatrix.xz", REAL, PARAMETER, bodyAddedMassMatrix.x[2]) \
+    X(250, "body.addedMassMatrix.yx", REAL, PARAMETER, bodyAddedMassMatrix.y[0]) \
+    X(251, "body.addedMassMatrix.yy", REAL, PARAMETER, bodyAddedMassMatrix.y[1]) \
+    X(252, "body.addedMassMatrix.yz", REAL, PARAMETER, bodyAddedMassMatrix.y[2]) \
+    X(253, "body.addedMassMatrix.zx", REAL, PARAMETER, bodyAddedMassMatrix.z[0]) \
+    X(254, "body.addedMassMatrix.zy", REAL, PARAMETER, bodyAddedMassMatrix.z[1]) \
+    X(255, "body.addedMassMatrix.zz", REAL, PARAMETER, bodyAddedMassMatrix.z[2]) \
+    X(256, "proxy.trackingGain", REAL, PARAMETER, proxyTrackingGain) \
+    X(257, "proxy.trackingDamping", REAL, PARAMETER, proxyTrackingDamping) \
+    X(258, "proxy.filterTime", REAL, PARAMETER, proxyFilterTime) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -1105,6 +1128,9 @@ typedef struct UCOutputs {
     X(2447, "point[16].force.x", REAL, OUTPUT, pointLoad[15].force[0]) \
     X(2448, "point[16].force.y", REAL, OUTPUT, pointLoad[15].force[1]) \
     X(2449, "point[16].force.z", REAL, OUTPUT, pointLoad[15].force[2]) \
+    X(2450, "bodyForceEstimate.x", REAL, OUTPUT, bodyForceEstimate[0]) \
+    X(2451, "bodyForceEstimate.y", REAL, OUTPUT, bodyForceEstimate[1]) \
+    X(2452, "bodyForceEstimate.z", REAL, OUTPUT, bodyForceEstimate[2]) \
 
 /* X(member, value): the start value of every numeric parameter (Strings start empty: zero-filled) */
 #define UC_SCHEMA_PARAMETER_DEFAULTS(X) \
@@ -1353,6 +1379,18 @@ typedef struct UCOutputs {
     X(solverMaxOrder, 5) \
     X(winchMaxAcceleration, 0.0) \
     X(meshGrading, 1) \
+    X(bodyAddedMassMatrix.x[0], 0.0) \
+    X(bodyAddedMassMatrix.x[1], 0.0) \
+    X(bodyAddedMassMatrix.x[2], 0.0) \
+    X(bodyAddedMassMatrix.y[0], 0.0) \
+    X(bodyAddedMassMatrix.y[1], 0.0) \
+    X(bodyAddedMassMatrix.y[2], 0.0) \
+    X(bodyAddedMassMatrix.z[0], 0.0) \
+    X(bodyAddedMassMatrix.z[1], 0.0) \
+    X(bodyAddedMassMatrix.z[2], 0.0) \
+    X(proxyTrackingGain, 0.05) \
+    X(proxyTrackingDamping, 0.3) \
+    X(proxyFilterTime, 1.0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -1415,7 +1453,7 @@ typedef struct UCOutputs {
     X(topTangent[0], "topTangent.x", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "a direction component must be a moderate finite number (the direction is normalized)") \
     X(topTangent[1], "topTangent.y", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "a direction component must be a moderate finite number (the direction is normalized)") \
     X(topTangent[2], "topTangent.z", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "a direction component must be a moderate finite number (the direction is normalized)") \
-    X(bottomEnd, "bottomEnd", 0.0, 3.0, 0, 0, "{0 free, 1 anchored, 2 towed body, 3 external}", "unknown far-end condition") \
+    X(bottomEnd, "bottomEnd", 0.0, 4.0, 0, 0, "{0 free, 1 anchored, 2 towed body, 3 external, 4 external body with proxy}", "unknown far-end condition") \
     X(anchor[0], "anchor.x", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "the anchor must lie within 1000 km of the origin") \
     X(anchor[1], "anchor.y", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "the anchor must lie within 1000 km of the origin") \
     X(anchor[2], "anchor.z", -1000000.0, 1000000.0, 0, 0, "[-1000000, 1000000]", "the anchor must lie within 1000 km of the origin") \
@@ -1598,6 +1636,18 @@ typedef struct UCOutputs {
     X(solverMaxOrder, "solver.maxOrder", 1.0, 5.0, 0, 0, "[1, 5]", "IDA's BDF formulas have orders 1 to 5") \
     X(winchMaxAcceleration, "winch.maxAcceleration", 0.0, 100.0, 0, 0, "[0, 100]", "a drum accelerates at a finite, non-negative rate (0: no limit)") \
     X(meshGrading, "meshGrading", 0.0, 2.0, 0, 0, "{0 equal elements, 1 graded in each section, 2 graded along the line}", "unknown mesh grading") \
+    X(bodyAddedMassMatrix.x[0], "body.addedMassMatrix.xx", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.x[1], "body.addedMassMatrix.xy", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.x[2], "body.addedMassMatrix.xz", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.y[0], "body.addedMassMatrix.yx", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.y[1], "body.addedMassMatrix.yy", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.y[2], "body.addedMassMatrix.yz", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.z[0], "body.addedMassMatrix.zx", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.z[1], "body.addedMassMatrix.zy", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(bodyAddedMassMatrix.z[2], "body.addedMassMatrix.zz", -100000000.0, 100000000.0, 0, 0, "[-100000000, 100000000]", "an added-mass entry must be a finite number of kilograms") \
+    X(proxyTrackingGain, "proxy.trackingGain", 0.0, 1.0, 1, 0, "(0, 1]", "the tracking gain is a fraction of the one-step (dead-beat) gain") \
+    X(proxyTrackingDamping, "proxy.trackingDamping", 0.0, 1.0, 0, 0, "[0, 1]", "the tracking damping is a fraction of the one-step gain M / h") \
+    X(proxyFilterTime, "proxy.filterTime", 0.0, 10000.0, 1, 0, "(0, 10000]", "the estimate's low-pass needs a positive time constant") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -16,6 +16,8 @@ Couplings of the towed body (COUPLINGS):
             endLoadVelocity, endLoadDamping): systems/towed_body
   explicit  the TowedBody FMU integrates its own translation from the cable force and the cable's far
             end follows it (bottomEnd 3): systems/towed_body_explicit; unstable above a critical step
+  proxy     the TowedBody FMU integrates its own translation, the cable integrates a proxy with its inertia
+            and returns the force that makes it follow (bottomEnd 4): systems/towed_body_proxy
 
 Initialization follows libcosim: the units enter initialization mode with their start values, then the
 connected values are transferred (outputs read in initialization mode, inputs set) as many times as
@@ -39,7 +41,9 @@ from .fmu import CableFMU
 from .paths import REPO_ROOT, fmu_path, systems_dir
 
 KNOT = 1852.0 / 3600.0
-SYSTEM_DIRS = {"internal": "towed_body_internal", "external": "towed_body", "explicit": "towed_body_explicit"}
+SYSTEM_DIRS = {"internal": "towed_body_internal", "external": "towed_body", "explicit": "towed_body_explicit",
+               "proxy": "towed_body_proxy"}
+SELF_INTEGRATING = ("explicit", "proxy")  # the body FMU integrates its own translation
 COUPLINGS = tuple(SYSTEM_DIRS)
 MASTERS = ("fmpy", "libcosim", "newton")
 ORDERINGS = ("gauss-seidel", "jacobi")
@@ -95,6 +99,8 @@ def unit_parameters(coupling: str, body: Body) -> dict:
         return {"cable": {"bottomEnd": 2, **cable_body, "body.CdA": 0.0}, "body": partner}
     if coupling == "explicit":
         return {"cable": {"bottomEnd": 3}, "body": {**partner, "integrateTranslation": True}}
+    if coupling == "proxy":
+        return {"cable": {"bottomEnd": 4, **cable_body}, "body": {**partner, "integrateTranslation": True}}
     raise ValueError(f"coupling must be one of {COUPLINGS}")
 
 
@@ -208,7 +214,7 @@ RECORD = {
     "vessel": ["x", "y", "heading", "speed", "thrust", "tow.x", "tow.y", "tow.z", "waveElevation"],
     "cable": ["towTension", "waveElevation", "towForce.x", "towForce.y", "towForce.z", "endTension", "endForce.x", "endForce.y",
               "endForce.z", "endPosition.x", "endPosition.y", "endPosition.z", "endVelocity.x", "endVelocity.y",
-              "endVelocity.z"],
+              "endVelocity.z", "bodyForceEstimate.x", "bodyForceEstimate.y", "bodyForceEstimate.z"],
     # a mooring system's cable FMU (systems/moored_platform): its lines and their load on the platform
     "mooring": ["line[1].fairleadTension", "line[2].fairleadTension", "line[3].fairleadTension",
                 "body[1].force.x", "body[1].force.y", "body[1].force.z", "body[1].moment.x", "body[1].moment.y",
@@ -235,8 +241,8 @@ class SystemResult:
     @property
     def body_position(self) -> np.ndarray:
         """(n, 3) position of the towed body, Earth frame: the cable's far end, which carries the body
-        (internal, external), or the body's own state (explicit; the cable's end follows it)."""
-        key = "body.position" if self.coupling == "explicit" else "cable.endPosition"
+        (internal, external), or the body's own state (explicit, proxy: the body integrates itself)."""
+        key = "body.position" if self.coupling in SELF_INTEGRATING else "cable.endPosition"
         return np.column_stack([self.values[f"{key}.{q}"] for q in "xyz"])
 
     def columns(self) -> dict:
@@ -516,7 +522,7 @@ def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: s
     (waves.* parameters and waterDepth) are given to the vessel, whose wave-frequency motion is then
     superimposed on its manoeuvre, and to the cable: one sea for both; `vessel_parameters` to the vessel
     alone (raoFile: its RAO table). `body_fmu`: another body FMU that integrates itself in place of the
-    TowedBody (coupling explicit; the TowedBody's names: parameters mass, addedMass, volume, CdA, CLA,
+    TowedBody (coupling explicit or proxy; the TowedBody's names: parameters mass, addedMass, volume, CdA, CLA,
     position0.*, velocity0.*, input cableForce.*, outputs position.*, velocity.*). Master newton: the
     reference iterating master (ucable.newton, options `newton`), coupling explicit."""
     if manoeuvre not in MANOEUVRES:
@@ -527,8 +533,8 @@ def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: s
         raise ValueError("libcosim's fixed-step algorithm is Jacobi: use ordering jacobi")
     if master == "newton" and coupling != "explicit":
         raise ValueError("the newton master iterates with a body that integrates itself: coupling explicit")
-    if body_fmu is not None and coupling != "explicit":
-        raise ValueError("a body FMU of its own integrates itself: coupling explicit")
+    if body_fmu is not None and coupling not in SELF_INTEGRATING:
+        raise ValueError(f"a body FMU of its own integrates itself: coupling {' or '.join(SELF_INTEGRATING)}")
     vessel, default_duration = MANOEUVRES[manoeuvre]
     t_end = default_duration if duration is None else duration
     system = load_system(coupling)
@@ -539,7 +545,7 @@ def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: s
         params["body"].pop("integrateTranslation")
     params["vessel"] = {**vessel, **(waves or {}), **(vessel_parameters or {})}
     params["cable"] = {**params["cable"], **(cable_parameters or {}), **(waves or {})}
-    if coupling == "explicit":
+    if coupling in SELF_INTEGRATING:
         start = steady_far_end(system, params, body)
         params["body"].update(start)
         # the cable's far end starts there too (its first steady state is computed before the body's

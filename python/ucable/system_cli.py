@@ -27,7 +27,9 @@ def parse_args(argv):
                "FMU supplies the body's hydrodynamic force with its velocity linearization and the cable "
                "FMU integrates the body (systems/towed_body/OspSystemStructure.xml); explicit = the "
                "TowedBody FMU integrates its own translation (the old coupling, unstable above a few "
-               "hundredths of a second). Body values not given are scaled from the default body (400 kg, "
+               "hundredths of a second); proxy = the TowedBody FMU integrates its own translation and the cable "
+               "FMU integrates a proxy with its inertia and returns the force that makes it follow "
+               "(bottomEnd 4, systems/towed_body_proxy/OspSystemStructure.xml). Body values not given are scaled from the default body (400 kg, "
                "0.1 m3, 100 kg added mass, 0.3 m2 drag area) to --body-mass: same density, added mass a "
                "quarter of the mass, drag area with mass^(2/3).")
     p.add_argument("manoeuvre", choices=list(MANOEUVRES),

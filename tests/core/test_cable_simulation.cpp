@@ -241,6 +241,25 @@ TEST(AssembledJacobian, MatchesFiniteDifferencesWinchPayingOut) {
     check_assembled_jacobian(p, 0.8);
 }
 
+TEST(AssembledJacobian, MatchesFiniteDifferencesTowedBodyWithAddedMassMatrix) {
+    // An anisotropic, non-diagonal added mass: the mass block is the residual's derivative too.
+    UCParams p = towed_body_line();
+    const double rows[3][3] = {{30, 5, -2}, {5, 60, 4}, {-2, 4, 90}};
+    for (int j = 0; j < 3; ++j) {
+        p.bodyAddedMassMatrix.x[j] = rows[0][j];
+        p.bodyAddedMassMatrix.y[j] = rows[1][j];
+        p.bodyAddedMassMatrix.z[j] = rows[2][j];
+    }
+    check_assembled_jacobian(p);
+}
+
+TEST(AssembledJacobian, MatchesFiniteDifferencesProxyFarEnd) {
+    // bottomEnd 4: the proxy carries the body's inertia and weight, no drag of its own.
+    UCParams p = towed_body_line();
+    p.bottomEnd = UC_BOTTOM_PROXY;
+    check_assembled_jacobian(p);
+}
+
 TEST(AssembledJacobian, MatchesFiniteDifferencesTowedBodyClamped) {
     UCParams p = towed_body_line();
     p.topEnd = UC_TOP_CLAMPED;

@@ -34,6 +34,8 @@ class Tow:
         self.end_offset = np.array([-200.0, 0.0, -150.0])
         if bottom_end == 2:
             params.update({"body.mass": 400.0, "body.CdA": 0.3})
+        if bottom_end == 4:
+            params.update({"body.mass": 400.0, "body.addedMass": 100.0, "body.volume": 0.1})
         self.cable = make_cable(parameters=params)
         self.cable.initialize(0.0, inputs=self.inputs())
         for _ in range(4):
@@ -112,6 +114,22 @@ def test_end_force_derivatives_of_a_driven_far_end(make_cable, h):
     FD = tow.finite_differences(TOW_FORCE + END_FORCE, inputs)
     for rows in (slice(0, 3), slice(3, 6)):
         assert relative_error(D[rows], FD[rows]) < BOUND, (rows, D[rows], FD[rows])
+
+
+@pytest.mark.parametrize("h", [1.0, 0.1])
+def test_proxy_far_end_derivatives(make_cable, h):
+    """bottomEnd 4: the tow force and the force on the body by the tow inputs within the documented
+    bound (the proxy's inertia and its estimate's drag law are in the linearization, the force on the
+    body follows from the proxy's state at the step's end); the body's reported state does not reach
+    the cable within a step (tow force by end.*: exactly 0) and enters the force on the body through
+    the tracking force alone, linearly: its columns are exact (to the finite differences' round-off)."""
+    tow = Tow(make_cable, h, 4)
+    D = tow.derivatives(TOW_FORCE + END_FORCE, TOW + END)
+    FD = tow.finite_differences(TOW_FORCE + END_FORCE, TOW + END)
+    assert relative_error(D[:3, :6], FD[:3, :6]) < BOUND, (D[:3, :6], FD[:3, :6])
+    assert relative_error(D[3:, :6], FD[3:, :6]) < BOUND, (D[3:, :6], FD[3:, :6])
+    assert np.all(FD[:3, 6:] == 0.0) and np.all(D[:3, 6:] == 0.0)
+    assert relative_error(D[3:, 6:], FD[3:, 6:]) < 1e-6, (D[3:, 6:], FD[3:, 6:])
 
 
 @pytest.mark.parametrize("h", [1.0, 0.5, 0.05])
