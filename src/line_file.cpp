@@ -1041,22 +1041,47 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
         if (p.lines.empty()) out.notes.push_back(at_line(p.row, "point " + std::to_string(p.id) + " ignored: no line "
                                                                 "is attached to it"));
     }
-    // Each of our lines is a chain of the deck's lines from an end on a coupled object through Free
-    // points that join two lines, to a Fixed point, another coupled end or a Free point at its end.
+    // Free points where three or more lines meet are the system's free nodes.
+    std::vector<int> nodeOf(deck.points.size(), -1);
+    for (size_t i = 0; i < deck.points.size(); ++i) {
+        const Point& p = deck.points[i];
+        if (p.kind != PointKind::Free || p.lines.size() < 3) continue;
+        nodeOf[i] = static_cast<int>(out.nodes.size());
+        MooringNode node;
+        node.point = point_body(p, deck.waterDensity);
+        std::copy(p.position, p.position + 3, node.position);
+        out.nodes.push_back(node);
+    }
+    auto node_end = [&](int q, MooringEnd& end) {
+        end = MooringEnd();
+        end.kind = MooringEnd::Kind::Node;
+        end.node = nodeOf[q];
+        std::copy(deck.points[q].position, deck.points[q].position + 3, end.position);
+    };
+    // Each of our lines is a chain of the deck's lines from an end on a coupled object (or, for lines
+    // no coupled object holds, on a free node) through Free points that join two lines, to a Fixed
+    // point, another coupled end, a free node or a Free point at its end.
     std::vector<bool> used(deck.lines.size(), false);
+    for (int pass = 0; pass < 2; ++pass)
     for (size_t first = 0; first < deck.lines.size(); ++first) {
         if (used[first]) continue;
         const Line& l0 = deck.lines[first];
         int start = -1;
         for (int e : {1, 0}) {  // AttachB first: MoorDyn's usual fairlead
             const PointKind kind = deck.points[l0.end[e]].kind;
-            if (start < 0 && (kind == PointKind::Vessel || kind == PointKind::Body)) start = l0.end[e];
+            if (start < 0 && (pass == 0 ? (kind == PointKind::Vessel || kind == PointKind::Body)
+                                        : nodeOf[l0.end[e]] >= 0))
+                start = l0.end[e];
         }
-        if (start < 0) continue;  // reached from another line's coupled end, or refused below
+        if (start < 0) continue;  // reached from another line's coupled end or a node, or refused below
         MooringDeckLine line;
         line.id = l0.id;
         line.row = l0.row;
-        if (!mooring_end(deck.points[start], bodies, out.bodiesSection, line.fairlead, error)) return false;
+        if (pass == 1) {
+            node_end(start, line.fairlead);
+        } else if (!mooring_end(deck.points[start], bodies, out.bodiesSection, line.fairlead, error)) {
+            return false;
+        }
         int point = start, index = static_cast<int>(first);
         while (true) {
             const Line& l = deck.lines[index];
@@ -1084,11 +1109,9 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
                 line.farBody = point_body(p, deck.waterDensity);
                 break;
             }
-            if (p.lines.size() > 2) {
-                error = at_line(p.row, "Free point " + std::to_string(p.id) + " joins " + std::to_string(p.lines.size()) +
-                                           " lines: points where several lines meet (bridles, buoys, clump points "
-                                           "with legs) are not supported yet (a free point may join two lines)");
-                return false;
+            if (p.lines.size() > 2) {  // a free node: the line ends there
+                node_end(point, line.far);
+                break;
             }
             index = p.lines[0] == index ? p.lines[1] : p.lines[0];
             if (used[index]) {
@@ -1116,11 +1139,13 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
         const Line& l = deck.lines[k];
         const bool fixedBoth = deck.points[l.end[0]].kind == PointKind::Fixed && deck.points[l.end[1]].kind == PointKind::Fixed;
         error = at_line(l.row, "line " + std::to_string(l.id) + (fixedBoth ? " runs between two fixed points"
-                                                                          : " is not reached from a coupled point: "
-                                                                            "every line of a system runs from a "
-                                                                            "coupled body or point, through free "
-                                                                            "points joining two lines, to its end") +
-                                   ": a line of a mooring system ends on a coupled body or point");
+                                                                          : " is not reached from a coupled point "
+                                                                            "or a free node: every line of a system "
+                                                                            "runs from a coupled body or point or a "
+                                                                            "free point where three or more lines "
+                                                                            "meet, through free points joining two "
+                                                                            "lines, to its end") +
+                                   ": a line of a mooring system ends on a coupled body or point or a free node");
         return false;
     }
     out.deckLines = static_cast<int>(deck.lines.size());

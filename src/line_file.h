@@ -76,10 +76,12 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error);
 
 // Where a line's end is held: on coupled body `body` (1-based, the deck's body ID; with no BODIES section
 // the Vessel points ride body 1) at `position` in the body's frame, on coupled point `point` (its ID in
-// the deck) at `position` (its place in the deck), or fixed at `position`.
+// the deck) at `position` (its place in the deck), fixed at `position`, or on free node `node` (0-based
+// index into MooringDeck::nodes: a Free point where three or more lines meet; `position` is its place
+// in the deck, the start of its static equilibrium's search).
 struct MooringEnd {
-    enum class Kind { Body, Point, Fixed } kind = Kind::Fixed;
-    int body = 0, point = 0;
+    enum class Kind { Body, Point, Fixed, Node } kind = Kind::Fixed;
+    int body = 0, point = 0, node = 0;
     double position[3] = {0.0, 0.0, 0.0};
 };
 
@@ -96,8 +98,16 @@ struct MooringDeckLine {
     LineFilePoint farBody;
 };
 
+// A Free point where three or more lines meet: its position is an unknown of the system, found from the
+// equilibrium of its weight, buoyancy, drag and the lines' forces.
+struct MooringNode {
+    LineFilePoint point;                 // mass, volume, added mass, drag area
+    double position[3] = {0.0, 0.0, 0.0};  // in the deck: the first guess
+};
+
 struct MooringDeck {
     std::vector<MooringDeckLine> lines;  // in the order of their first deck line
+    std::vector<MooringNode> nodes;      // the free nodes, in the deck's order of points
     int deckLines = 0;                   // lines of the deck (line[k].* outputs: k in the deck's order)
     int bodies = 0;                      // coupled bodies 1 .. bodies are driven by the body[k].* inputs
     bool bodiesSection = false;          // false: the deck's Vessel points ride body 1

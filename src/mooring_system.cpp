@@ -26,6 +26,10 @@ struct SystemHeader {
 
 Vec3 vec3(const double v[3]) { return Vec3(v[0], v[1], v[2]); }
 
+bool on_node(const MooringDeckLine& l) {
+    return l.fairlead.kind == MooringEnd::Kind::Node || (!l.farFree && l.far.kind == MooringEnd::Kind::Node);
+}
+
 }  // namespace
 
 Mat3 body_rotation(double roll, double pitch, double yaw) {
@@ -72,6 +76,7 @@ bool MooringSystem::build(std::string& error) {
         hangingWeight_.push_back(weight);
     }
     references_.assign(static_cast<size_t>(deck_.bodies), DrivenEnd());
+    for (const MooringNode& n : deck_.nodes) nodes_.push_back(vec3(n.position));
     derivativeStamp_.assign(static_cast<size_t>(deck_.bodies), -1);
     derivativeCache_.assign(static_cast<size_t>(deck_.bodies), {});
     return true;
@@ -82,6 +87,8 @@ MooringSystem::Motion MooringSystem::end_motion(const MooringEnd& end, const UCI
     switch (end.kind) {
         case MooringEnd::Kind::Fixed:
             return {local, Vec3::Zero(), Vec3::Zero(), false};
+        case MooringEnd::Kind::Node:
+            return {nodes_[end.node], Vec3::Zero(), Vec3::Zero(), false};
         case MooringEnd::Kind::Point: {
             const int k = end.point - 1;
             const UCCoupledPoint& p = in.coupledPoint[k];
@@ -150,12 +157,15 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
     if (!check_inputs(in, error)) return false;
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
+        if (on_node(deck_.lines[k])) continue;  // initialized at the nodes' equilibrium
         line_inputs(static_cast<int>(k), in, li);
         if (!lines_[k]->initialize(t0, li, error)) {
             error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
             return false;
         }
     }
+    t0_ = t0;
+    if (!nodes_.empty() && !solve_nodes(t0, in, error)) return false;
     for (int b = 0; b < deck_.bodies; ++b) {
         const UCCoupledBody& body = in.coupledBody[b];
         const bool given = in.bodyAccelerationGiven[b] != 0;
@@ -172,6 +182,11 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
 bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& error) {
     ++stamp_;
     if (!check_inputs(in, error)) return false;
+    if (!nodes_.empty()) {
+        error = "a mooring system with free points where three or more lines meet has its statics (the "
+                "initialization) but no dynamics yet: fmi2DoStep is not supported for it";
+        return false;
+    }
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
         line_inputs(static_cast<int>(k), in, li);
@@ -248,6 +263,11 @@ void MooringSystem::update_outputs(const UCInputs& in) {
             }
         }
     }
+    for (size_t n = 0; n < nodes_.size(); ++n) {
+        const int id = deck_.nodes[n].point.id;
+        if (id > UC_MAX_POINTS) continue;  // beyond the outputs point[k].position.*
+        for (int c = 0; c < 3; ++c) outputs_.pointLoad[id - 1].position[c] = nodes_[n][c];
+    }
     for (int b = 1; b <= deck_.bodies; ++b) {
         std::string why;
         if (!body_stiffness(b, in, outputs_.bodyLoad[b - 1].stiffness, &why)) {
@@ -264,7 +284,6 @@ void MooringSystem::update_outputs(const UCInputs& in) {
 bool MooringSystem::static_body_load(int k, int b, const double q[6], const UCInputs& in, Vec3& force, Vec3& moment,
                                      std::string* why) const {
     const MooringDeckLine& l = deck_.lines[k];
-    const UCParams& p = lines_[k]->model().params();
     const Vec3 reference(q[0], q[1], q[2]);
     const UCCoupledBody& now = in.coupledBody[b - 1];
     // q[3..5]: a small rotation about the earth axes from the present orientation
@@ -278,15 +297,27 @@ bool MooringSystem::static_body_load(int k, int b, const double q[6], const UCIn
     };
     force.setZero();
     moment.setZero();
-    const Vec3 top = place(l.fairlead);
-    if (l.farFree) {  // hanging from its fairlead: its weight, wherever the body stands
-        if (l.fairlead.kind == MooringEnd::Kind::Body && l.fairlead.body == b) {
-            force = Vec3(0.0, 0.0, -hangingWeight_[k]);
-            moment = (top - reference).cross(force);
-        }
+    const Vec3 top = place(l.fairlead), far = l.farFree ? top : place(l.far);
+    Vec3 onEnd[2];
+    if (!profile_end_forces(k, top, far, onEnd[0], onEnd[1], why)) return false;
+    for (int e = 0; e < 2; ++e) {
+        const MooringEnd& end = e == 0 ? l.fairlead : l.far;
+        if (end.kind != MooringEnd::Kind::Body || end.body != b || (e == 1 && l.farFree)) continue;
+        force += onEnd[e];
+        moment += ((e == 0 ? top : far) - reference).cross(onEnd[e]);
+    }
+    return true;
+}
+
+bool MooringSystem::profile_end_forces(int k, const Vec3& top, const Vec3& far, Vec3& onTop, Vec3& onFar,
+                                       std::string* why) const {
+    const MooringDeckLine& l = deck_.lines[k];
+    const UCParams& p = lines_[k]->model().params();
+    if (l.farFree) {  // hanging from its fairlead: its weight, wherever the fairlead stands
+        onTop = Vec3(0.0, 0.0, -hangingWeight_[k]);
+        onFar.setZero();
         return true;
     }
-    const Vec3 far = place(l.far);
     const bool topHigher = top.z() >= far.z();
     const double L = lines_[k]->model().line().length;
     std::vector<LineProfile::Segment> segments = segments_[k];
@@ -299,14 +330,130 @@ bool MooringSystem::static_body_load(int k, int b, const double q[6], const UCIn
     if (!profile.solve(topHigher ? top : far, topHigher ? far : top, segments, points, p.enableSeabed != 0,
                        -p.waterDepth, std::max(lines_[k]->model().line().diameter, 1e-3 * L), why))
         return false;
-    const std::pair<const MooringEnd*, Vec3> ends[2] = {
-        {&l.fairlead, topHigher ? profile.top_force() : profile.bottom_force()},
-        {&l.far, topHigher ? profile.bottom_force() : profile.top_force()}};
-    for (const auto& [end, f] : ends) {
-        if (end->kind != MooringEnd::Kind::Body || end->body != b) continue;
-        force += f;
-        moment += (place(*end) - reference).cross(f);
+    onTop = topHigher ? profile.top_force() : profile.bottom_force();
+    onFar = topHigher ? profile.bottom_force() : profile.top_force();
+    return true;
+}
+
+Vec3 MooringSystem::node_load(int n, const Vec3& x, const UCInputs& in) const {
+    const LineFilePoint& p = deck_.nodes[n].point;
+    const FluidProps& fluid = lines_[0]->model().fluid();
+    CurrentField current;
+    current.uniform = Vec3(in.current[0], in.current[1], 0.0);
+    current.profile = &lines_[0]->model().current_profile();
+    current.scale = in.currentScale;
+    const Vec3 U = current.at(x.z(), nullptr);
+    return Vec3(0.0, 0.0, -(p.mass - fluid.rho * p.volume) * fluid.gravity) + 0.5 * fluid.rho * p.CdA * U.norm() * U;
+}
+
+bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, bool profile, Eigen::VectorXd& r,
+                                  std::string& error) {
+    r.setZero(x.size());
+    for (size_t n = 0; n < nodes_.size(); ++n) nodes_[n] = x.segment<3>(3 * n);
+    for (size_t n = 0; n < nodes_.size(); ++n) r.segment<3>(3 * n) = node_load(static_cast<int>(n), nodes_[n], in);
+    UCInputs li;
+    for (size_t k = 0; k < lines_.size(); ++k) {
+        const MooringDeckLine& l = deck_.lines[k];
+        if (!on_node(l)) continue;
+        Vec3 onEnd[2];
+        if (profile) {
+            const Vec3 top = end_motion(l.fairlead, in).position;
+            const Vec3 far = l.farFree ? top : end_motion(l.far, in).position;
+            if (!profile_end_forces(static_cast<int>(k), top, far, onEnd[0], onEnd[1], &error)) {
+                error = "mooring line " + std::to_string(l.id) + ": " + error;
+                return false;
+            }
+        } else {
+            line_inputs(static_cast<int>(k), in, li);
+            if (!lines_[k]->initialize(t0_, li, error)) {
+                error = "mooring line " + std::to_string(l.id) + ": " + error;
+                return false;
+            }
+            onEnd[0] = vec3(lines_[k]->outputs().towForce);
+            onEnd[1] = vec3(lines_[k]->outputs().endForce);
+        }
+        if (l.fairlead.kind == MooringEnd::Kind::Node) r.segment<3>(3 * l.fairlead.node) += onEnd[0];
+        if (!l.farFree && l.far.kind == MooringEnd::Kind::Node) r.segment<3>(3 * l.far.node) += onEnd[1];
     }
+    return true;
+}
+
+bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& error) {
+    t0_ = t0;
+    const int m = static_cast<int>(3 * nodes_.size());
+    Eigen::VectorXd x(m), r(m), rt(m), xt(m);
+    for (size_t n = 0; n < nodes_.size(); ++n) x.segment<3>(3 * n) = vec3(deck_.nodes[n].position);
+    // the force scale: the weights of the lines and nodes that meet at the nodes
+    double scale = 0.0, shortest = 1e300;
+    for (size_t k = 0; k < lines_.size(); ++k) {
+        if (!on_node(deck_.lines[k])) continue;
+        scale += std::abs(hangingWeight_[k]);
+        shortest = std::min(shortest, lines_[k]->model().line().length);
+    }
+    for (size_t n = 0; n < nodes_.size(); ++n) scale += node_load(static_cast<int>(n), x.segment<3>(3 * n), in).norm();
+    const double maxStep = 0.25 * shortest;  // a Newton step moves a node by at most this [m]
+    Eigen::MatrixXd J(m, m);
+    bool haveJacobian = false;
+    nodeIterations_ = 0;
+    // Newton's method with a backtracking line search on |r|; the Jacobian by central differences of
+    // the residual (kept through the iterations with the lines' own static solutions, where each
+    // evaluation is a static solve of the lines: a chord method that converges linearly and fast, the
+    // profiles' Jacobian being that of the lines' solutions within their discretization).
+    auto newton = [&](bool profile, double tolerance, std::string& why) -> bool {
+        if (!node_residual(x, in, profile, r, why)) return false;
+        for (int it = 0; it < 60; ++it, ++nodeIterations_) {
+            if (r.lpNorm<Eigen::Infinity>() <= tolerance) return true;
+            if (profile || !haveJacobian) {
+                const double d = 1e-3;  // [m]: the profiles are smooth; truncation ~d^2
+                Eigen::VectorXd rp(m), rm(m);
+                for (int j = 0; j < m; ++j) {
+                    xt = x;
+                    xt[j] += d;
+                    if (!node_residual(xt, in, profile, rp, why)) return false;
+                    xt[j] = x[j] - d;
+                    if (!node_residual(xt, in, profile, rm, why)) return false;
+                    J.col(j) = (rp - rm) / (2.0 * d);
+                }
+                haveJacobian = true;
+            }
+            Eigen::VectorXd dx = -J.fullPivLu().solve(r);
+            if (!dx.allFinite()) {
+                why = "the free points' stiffness is singular";
+                return false;
+            }
+            const double longest = dx.lpNorm<Eigen::Infinity>();
+            if (longest > maxStep) dx *= maxStep / longest;
+            double a = 1.0;
+            bool accepted = false;
+            for (int halving = 0; halving < 30 && !accepted; ++halving, a *= 0.5) {
+                xt = x + a * dx;
+                std::string trial;
+                accepted = node_residual(xt, in, profile, rt, trial) && rt.norm() < (1.0 - 1e-4 * a) * r.norm();
+            }
+            if (!accepted && !profile && dx.lpNorm<Eigen::Infinity>() < 10.0 * kNodeTolerance)
+                return true;  // at the level of the lines' static solutions' own tolerance
+            if (!accepted) {
+                why = "the line search found no smaller residual (" + std::to_string(r.norm()) + " N)";
+                return false;
+            }
+            x = xt;
+            r = rt;
+            if (!profile && (a * dx).lpNorm<Eigen::Infinity>() < kNodeTolerance) return true;
+        }
+        why = "no convergence in 60 iterations (residual " + std::to_string(r.lpNorm<Eigen::Infinity>()) + " N)";
+        return false;
+    };
+    std::string why;
+    // the exact catenaries first (where every line at a node has one), then the lines' own solutions
+    // (x moves only by accepted steps: where the profiles stop short, the lines' solutions go on from there)
+    newton(true, 1e-12 * scale, why);
+    if (!newton(false, 1e-9 * scale, why)) {
+        error = "the static equilibrium of the free points: " + why;
+        return false;
+    }
+    // the lines stand initialized where the last residual put them: at x, unless a trial came after it
+    if (!node_residual(x, in, false, r, error)) return false;
+    nodeResidual_ = r.lpNorm<Eigen::Infinity>();
     return true;
 }
 
@@ -319,6 +466,11 @@ bool MooringSystem::body_stiffness(int b, const UCInputs& in, double K[36], std:
         const bool onBody = (l.fairlead.kind == MooringEnd::Kind::Body && l.fairlead.body == b) ||
                             (l.far.kind == MooringEnd::Kind::Body && l.far.body == b);
         if (!onBody) continue;
+        if (on_node(l)) {
+            if (why) *why = "mooring line " + std::to_string(l.id) + " ends on a free point where three or more lines "
+                            "meet: the stiffness with the points' equilibrium is not computed";
+            return false;
+        }
         for (int j = 0; j < 6; ++j) {
             const double d = j < 3 ? kStiffnessStep : kStiffnessAngle;
             double qp[6], qm[6];

@@ -55,6 +55,24 @@ public:
 
     // Steps of the central differences of body_stiffness [m], [rad].
     static constexpr double kStiffnessStep = 0.01, kStiffnessAngle = 1e-4;
+    // The free points' statics stop when a Newton step with the lines' solutions moves them less [m].
+    static constexpr double kNodeTolerance = 1e-6;
+
+    // The free nodes (Free points where three or more lines meet): their positions, found at the
+    // initialization by the static equilibrium of each node (docs/systems_mooring.md, "Free points").
+    int n_nodes() const { return static_cast<int>(nodes_.size()); }
+    const Vec3& node_position(int n) const { return nodes_[n]; }
+    // The net static force on the free nodes (3 per node) with the nodes at x: their weight and
+    // buoyancy, the current's drag and the lines' end forces, from the lines' exact static profiles
+    // (profile = true: elastic catenaries, no current on the lines) or from the lines' own static
+    // solutions (profile = false: each line initialized with its ends there). False where a line has no
+    // solution there.
+    bool node_residual(const Eigen::VectorXd& x, const UCInputs& in, bool profile, Eigen::VectorXd& r,
+                       std::string& error);
+    // Newton iterations of the statics, and the residual left (largest component, N), of the last
+    // initialization.
+    int node_iterations() const { return nodeIterations_; }
+    double node_residual_norm() const { return nodeResidual_; }
 
 private:
     struct Motion {
@@ -71,6 +89,13 @@ private:
     // profile: force and moment about b's reference point.
     bool static_body_load(int k, int b, const double q[6], const UCInputs& in, Vec3& force, Vec3& moment,
                           std::string* why) const;
+    // The static forces of line k on its fairlead and far end with them at top and far, from its
+    // profile (a line with a free far end: its weight on the fairlead).
+    bool profile_end_forces(int k, const Vec3& top, const Vec3& far, Vec3& onTop, Vec3& onFar, std::string* why) const;
+    // The free nodes' static equilibrium (Newton with a line search), the lines initialized there.
+    bool solve_nodes(double t0, const UCInputs& in, std::string& error);
+    // The weight, buoyancy and current drag on node n at x.
+    Vec3 node_load(int n, const Vec3& x, const UCInputs& in) const;
 
     UCParams base_;
     MooringDeck deck_;
@@ -81,6 +106,10 @@ private:
     std::vector<double> hangingWeight_;  // per line with a free far end: its submerged weight and its body's
     // --- state ---
     std::vector<DrivenEnd> references_;  // each body's reference point, extrapolated as the fairleads are
+    std::vector<Vec3> nodes_;            // the free nodes' positions
+    int nodeIterations_ = 0;
+    double nodeResidual_ = 0.0;
+    double t0_ = 0.0;
     double lastStep_ = 0.0;
     UCInputs lastInputs_{};  // of the last step (or the initialization)
     UCOutputs outputs_{};

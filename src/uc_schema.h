@@ -78,6 +78,7 @@ typedef struct UCBodyLoad {
 
 typedef struct UCPointLoad {
     double force[3]; /* point[k].force.x/y/z [N]: coupled point k (its ID in the deck): force of the lines on it */
+    double position[3]; /* point[k].position.x/y/z [m]: a mooring system's Free point k (its ID in the deck) where three or more lines meet: its position, found by the system's statics (0 for other points) */
 } UCPointLoad;
 
 typedef struct UCParams {
@@ -1131,6 +1132,54 @@ typedef struct UCOutputs {
     X(2450, "bodyForceEstimate.x", REAL, OUTPUT, bodyForceEstimate[0]) \
     X(2451, "bodyForceEstimate.y", REAL, OUTPUT, bodyForceEstimate[1]) \
     X(2452, "bodyForceEstimate.z", REAL, OUTPUT, bodyForceEstimate[2]) \
+    X(2453, "point[1].position.x", REAL, OUTPUT, pointLoad[0].position[0]) \
+    X(2454, "point[1].position.y", REAL, OUTPUT, pointLoad[0].position[1]) \
+    X(2455, "point[1].position.z", REAL, OUTPUT, pointLoad[0].position[2]) \
+    X(2456, "point[2].position.x", REAL, OUTPUT, pointLoad[1].position[0]) \
+    X(2457, "point[2].position.y", REAL, OUTPUT, pointLoad[1].position[1]) \
+    X(2458, "point[2].position.z", REAL, OUTPUT, pointLoad[1].position[2]) \
+    X(2459, "point[3].position.x", REAL, OUTPUT, pointLoad[2].position[0]) \
+    X(2460, "point[3].position.y", REAL, OUTPUT, pointLoad[2].position[1]) \
+    X(2461, "point[3].position.z", REAL, OUTPUT, pointLoad[2].position[2]) \
+    X(2462, "point[4].position.x", REAL, OUTPUT, pointLoad[3].position[0]) \
+    X(2463, "point[4].position.y", REAL, OUTPUT, pointLoad[3].position[1]) \
+    X(2464, "point[4].position.z", REAL, OUTPUT, pointLoad[3].position[2]) \
+    X(2465, "point[5].position.x", REAL, OUTPUT, pointLoad[4].position[0]) \
+    X(2466, "point[5].position.y", REAL, OUTPUT, pointLoad[4].position[1]) \
+    X(2467, "point[5].position.z", REAL, OUTPUT, pointLoad[4].position[2]) \
+    X(2468, "point[6].position.x", REAL, OUTPUT, pointLoad[5].position[0]) \
+    X(2469, "point[6].position.y", REAL, OUTPUT, pointLoad[5].position[1]) \
+    X(2470, "point[6].position.z", REAL, OUTPUT, pointLoad[5].position[2]) \
+    X(2471, "point[7].position.x", REAL, OUTPUT, pointLoad[6].position[0]) \
+    X(2472, "point[7].position.y", REAL, OUTPUT, pointLoad[6].position[1]) \
+    X(2473, "point[7].position.z", REAL, OUTPUT, pointLoad[6].position[2]) \
+    X(2474, "point[8].position.x", REAL, OUTPUT, pointLoad[7].position[0]) \
+    X(2475, "point[8].position.y", REAL, OUTPUT, pointLoad[7].position[1]) \
+    X(2476, "point[8].position.z", REAL, OUTPUT, pointLoad[7].position[2]) \
+    X(2477, "point[9].position.x", REAL, OUTPUT, pointLoad[8].position[0]) \
+    X(2478, "point[9].position.y", REAL, OUTPUT, pointLoad[8].position[1]) \
+    X(2479, "point[9].position.z", REAL, OUTPUT, pointLoad[8].position[2]) \
+    X(2480, "point[10].position.x", REAL, OUTPUT, pointLoad[9].position[0]) \
+    X(2481, "point[10].position.y", REAL, OUTPUT, pointLoad[9].position[1]) \
+    X(2482, "point[10].position.z", REAL, OUTPUT, pointLoad[9].position[2]) \
+    X(2483, "point[11].position.x", REAL, OUTPUT, pointLoad[10].position[0]) \
+    X(2484, "point[11].position.y", REAL, OUTPUT, pointLoad[10].position[1]) \
+    X(2485, "point[11].position.z", REAL, OUTPUT, pointLoad[10].position[2]) \
+    X(2486, "point[12].position.x", REAL, OUTPUT, pointLoad[11].position[0]) \
+    X(2487, "point[12].position.y", REAL, OUTPUT, pointLoad[11].position[1]) \
+    X(2488, "point[12].position.z", REAL, OUTPUT, pointLoad[11].position[2]) \
+    X(2489, "point[13].position.x", REAL, OUTPUT, pointLoad[12].position[0]) \
+    X(2490, "point[13].position.y", REAL, OUTPUT, pointLoad[12].position[1]) \
+    X(2491, "point[13].position.z", REAL, OUTPUT, pointLoad[12].position[2]) \
+    X(2492, "point[14].position.x", REAL, OUTPUT, pointLoad[13].position[0]) \
+    X(2493, "point[14].position.y", REAL, OUTPUT, pointLoad[13].position[1]) \
+    X(2494, "point[14].position.z", REAL, OUTPUT, pointLoad[13].position[2]) \
+    X(2495, "point[15].position.x", REAL, OUTPUT, pointLoad[14].position[0]) \
+    X(2496, "point[15].position.y", REAL, OUTPUT, pointLoad[14].position[1]) \
+    X(2497, "point[15].position.z", REAL, OUTPUT, pointLoad[14].position[2]) \
+    X(2498, "point[16].position.x", REAL, OUTPUT, pointLoad[15].position[0]) \
+    X(2499, "point[16].position.y", REAL, OUTPUT, pointLoad[15].position[1]) \
+    X(2500, "point[16].position.z", REAL, OUTPUT, pointLoad[15].position[2]) \
 
 /* X(member, value): the start value of every numeric parameter (Strings start empty: zero-filled) */
 #define UC_SCHEMA_PARAMETER_DEFAULTS(X) \

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <cstring>
 #include <string>
@@ -129,9 +130,81 @@ TEST(MooringDeck, WhatASystemCannotHoldIsRefusedNamingTheLine) {
     };
     EXPECT_EQ(refused("4         main        6         7", "4         main        2         7")
                   .rfind("line 22: line 3 is not reached from a coupled point", 0), 0u);
-    // a third line to the clump point: a junction
-    EXPECT_EQ(refused("2         main        2         5", "2         main        2         7")
-                  .rfind("line 16: Free point 7 joins 3 lines", 0), 0u);
+}
+
+TEST(MooringDeck, AFreePointWhereThreeLinesMeetIsANodeWhereTheyEnd) {
+    // line 2 to the clump point too: lines 2 (from its anchor), 3 (from its anchor) and 4 (from the
+    // platform) meet at point 7
+    std::string text = kPlatform;
+    const std::string from = "2         main        2         5";
+    text.replace(text.find(from), from.size(), "2         main        2         7");
+    uc::MooringDeck deck;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(text, 0, deck, error)) << error;
+    ASSERT_EQ(deck.nodes.size(), 1u);
+    EXPECT_EQ(deck.nodes[0].point.id, 7);
+    EXPECT_DOUBLE_EQ(deck.nodes[0].point.mass, 20000.0);
+    ASSERT_EQ(deck.lines.size(), 4u);
+    int atNode = 0;
+    for (const uc::MooringDeckLine& l : deck.lines) {
+        EXPECT_EQ(l.sections.size(), 1u);  // the node ends them: no chain runs through it
+        atNode += (l.fairlead.kind == uc::MooringEnd::Kind::Node) + (l.far.kind == uc::MooringEnd::Kind::Node);
+    }
+    EXPECT_EQ(atNode, 3);
+}
+
+// Three weightless elastic legs (their mass that of the water they displace) from anchors on a circle of
+// radius 30 m to a buoy 40 m above them: straight legs 50 m long. With the unstretched length L each
+// pulls with T = EA (50 / L - 1), and the buoy is in equilibrium there when its net buoyancy is 3 T 40/50.
+TEST(MooringSystem, FreePointStaticsOfASymmetricBuoyHaveTheClosedFormAnswer) {
+    const double pi = 3.14159265358979323846, rho = 1025.0, g = 9.80665, d = 0.05, EA = 1e7, L = 49.9;
+    const double tension = EA * (50.0 / L - 1.0), buoyancy = 3.0 * tension * 0.8;
+    char buffer[2048];
+    std::snprintf(buffer, sizeof buffer, R"(--- MoorDyn Input File ---
+three weightless legs
+----------------------- LINE TYPES ------------------------------------------
+Name     Diam      MassDen       EA    BA/-zeta    EI    Cd      Ca     CdAx   CaAx
+(-)       (m)      (kg/m)        (N)    (N-s/-)    (-)   (-)     (-)    (-)    (-)
+leg      %.17g    %.17g     %.17g     -1.0      0    1.2     1.0    0.05   0.0
+---------------------- POINTS --------------------------------
+ID     Attachment  X        Y         Z      M      V       CdA   CA
+(-)    (-)        (m)      (m)       (m)    (kg)   (m^3)   (m^2)  (-)
+1      Fixed    30.0      0.0     -100.0     0       0       0     0
+2      Fixed    %.17g   %.17g  -100.0     0       0       0     0
+3      Fixed    %.17g   %.17g  -100.0     0       0       0     0
+4      Free      3.0      -2.0      -50.0     0     %.17g    1.0     1.0
+---------------------- LINES --------------------------------------
+ID      LineType   AttachA   AttachB  UnstrLen  NumSegs   Outputs
+(-)       (-)        (-)       (-)       (m)      (-)       (-)
+1         leg         1         4        %.17g      10        -
+2         leg         2         4        %.17g      10        -
+3         leg         3         4        %.17g      10        -
+---------------------- OPTIONS ---------------------------------------
+100      WtrDpth
+------------------------- need this line --------------------------------------
+)",
+                  d, rho * pi / 4.0 * d * d, EA, 30.0 * std::cos(2.0 * pi / 3.0), 30.0 * std::sin(2.0 * pi / 3.0),
+                  30.0 * std::cos(4.0 * pi / 3.0), 30.0 * std::sin(4.0 * pi / 3.0), buoyancy / (rho * g), L, L, L);
+    uc::MooringDeck deck;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(buffer, 0, deck, error)) << error;
+    uc::MooringSystem system(system_parameters(), deck);
+    ASSERT_TRUE(system.build(error)) << error;
+    UCInputs in;
+    uc_inputs_default(&in);
+    ASSERT_TRUE(system.initialize(0.0, in, error)) << error;  // from a guess 3.6 m off to the side, 10 m low
+    ASSERT_EQ(system.n_nodes(), 1);
+    const uc::Vec3 x = system.node_position(0);
+    EXPECT_NEAR(x.x(), 0.0, 1e-5);
+    EXPECT_NEAR(x.y(), 0.0, 1e-5);
+    EXPECT_NEAR(x.z(), -60.0, 1e-5);
+    const UCOutputs& o = system.outputs();
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(o.mooringLine[k].fairleadTension, tension, 1e-6 * tension) << "line " << k + 1;
+        EXPECT_NEAR(o.mooringLine[k].anchorTension, tension, 1e-6 * tension) << "line " << k + 1;
+    }
+    for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(o.pointLoad[3].position[c], x[c]);
+    EXPECT_LE(system.node_residual_norm(), 1e-6 * buoyancy);
 }
 
 TEST(MooringSystem, BodyOrientationIsMoorDynsRollPitchYaw) {

@@ -110,18 +110,6 @@ def test_a_refused_system_deck_names_its_line(make_cable, tmp_path, edit, what):
     assert what in log, log
 
 
-def test_a_free_point_where_three_lines_meet_is_refused_with_the_reason(make_cable, tmp_path):
-    """A bridle: point 4 made a Free point where lines 1 and 2 (to two anchors) and a new pennant to the
-    platform (point 5) meet."""
-    text = ms.OC4.read_text().replace("4      Vessel    20.434", "4      Free      20.434", 1)
-    text = text.replace("2         main        2         5", "2         main        2         4", 1)
-    text = text.replace("3         main        3         6       835.35     20        -",
-                        "3         main        3         6       835.35     20        -\n"
-                        "4         main        4         5       70.0       4         -", 1)
-    log = _refused(make_cable, tmp_path, text)
-    assert "line 16: Free point 4 joins 3 lines: points where several lines meet" in log, log
-
-
 def test_a_free_body_is_refused_with_the_reason(make_cable, tmp_path):
     text = ms.OC4.read_text().replace(
         "---------------------- LINES", "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* "
