@@ -275,6 +275,7 @@ struct Options {
     double waterDepth = 0.0;  // MoorDyn's default: 0, then the depth of the deepest point
     double gravity = kMoorDynGravity;
     double waterDensity = kMoorDynWaterDensity;
+    bool noInitialConditions = false;  // TmaxIC 0: MoorDyn generates no initial conditions
 };
 
 bool is_one_of(const std::string& name, std::initializer_list<const char*> names) {
@@ -319,6 +320,11 @@ bool read_options(const Section& section, Options& options, std::vector<std::str
         } else if (is_one_of(name, {"dtm", "dt", "cfl", "tscheme", "dtout"})) {
             notes.push_back(at_line(row.number, name_shown + " ignored: the FMU's integrator chooses its own steps "
                                                         "(relTol, absTol) between communication points"));
+        } else if (is_one_of(name, {"tmaxic", "ictmax"}) && to_number(row.tokens[0]) && *to_number(row.tokens[0]) == 0.0) {
+            options.noInitialConditions = true;
+            notes.push_back(at_line(row.number, name_shown + " 0: free points where three or more lines meet start at "
+                                                        "rest where the deck places them (as MoorDyn starts them "
+                                                        "without generating initial conditions); otherwise ignored"));
         } else if (is_one_of(name, {"dtic", "icdt", "tmaxic", "ictmax", "cdscaleic", "icdfac", "threshic", "icthresh",
                                     "gendynamicic", "icgendynamic", "fileic", "icfile"})) {
             notes.push_back(at_line(row.number, name_shown + " ignored: the FMU starts from its own static equilibrium "
@@ -619,6 +625,7 @@ struct Deck {
     std::vector<Row> bodies;  // the BODIES rows (system only)
     int bodiesHeader = 0;
     double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
+    bool noInitialConditions = false;
 };
 
 bool parse_deck(std::string_view text, bool system, Deck& deck, std::vector<std::string>& notes, std::string& error) {
@@ -693,6 +700,7 @@ bool parse_deck(std::string_view text, bool system, Deck& deck, std::vector<std:
 
     deck.gravity = options.gravity;
     deck.waterDensity = options.waterDensity;
+    deck.noInitialConditions = options.noInitialConditions;
     deck.waterDepth = options.waterDepth;
     for (const Point& p : points) {
         if (p.kind != PointKind::Body && -p.position[2] > deck.waterDepth) {
@@ -1149,6 +1157,7 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
         return false;
     }
     out.deckLines = static_cast<int>(deck.lines.size());
+    out.nodesFromDeck = deck.noInitialConditions;
     out.waterDepth = deck.waterDepth;
     out.gravity = deck.gravity;
     out.waterDensity = deck.waterDensity;

@@ -111,6 +111,7 @@ struct MooringDeck {
     int deckLines = 0;                   // lines of the deck (line[k].* outputs: k in the deck's order)
     int bodies = 0;                      // coupled bodies 1 .. bodies are driven by the body[k].* inputs
     bool bodiesSection = false;          // false: the deck's Vessel points ride body 1
+    bool nodesFromDeck = false;          // TmaxIC 0: the free nodes start at rest at their deck positions
     double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
     std::vector<std::string> notes;
 };

@@ -15,16 +15,18 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kSystemMagic = 0x5543534D;  // "UCSM"
-constexpr std::uint32_t kSystemVersion = 1;
+constexpr std::uint32_t kSystemVersion = 2;
 
 struct SystemHeader {
     std::uint32_t magic, version;
-    std::int32_t lines, bodies;
+    std::int32_t lines, bodies, nodes, reserved;
     double lastStep;
     std::uint64_t lineSize[UC_MAX_LINES];
 };
 
 Vec3 vec3(const double v[3]) { return Vec3(v[0], v[1], v[2]); }
+
+constexpr int kNodeStateDoubles = 18;  // per free node: position, velocity, acceleration, its lines' end inputs
 
 bool on_node(const MooringDeckLine& l) {
     return l.fairlead.kind == MooringEnd::Kind::Node || (!l.farFree && l.far.kind == MooringEnd::Kind::Node);
@@ -76,7 +78,13 @@ bool MooringSystem::build(std::string& error) {
         hangingWeight_.push_back(weight);
     }
     references_.assign(static_cast<size_t>(deck_.bodies), DrivenEnd());
-    for (const MooringNode& n : deck_.nodes) nodes_.push_back(vec3(n.position));
+    for (const MooringNode& n : deck_.nodes) {
+        nodes_.push_back(vec3(n.position));
+        nodeInput_.push_back({vec3(n.position), Vec3::Zero(), Vec3::Zero()});
+    }
+    nodeVelocity_.assign(nodes_.size(), Vec3::Zero());
+    nodeAcceleration_.assign(nodes_.size(), Vec3::Zero());
+    nodeLineStart_.resize(lines_.size());
     derivativeStamp_.assign(static_cast<size_t>(deck_.bodies), -1);
     derivativeCache_.assign(static_cast<size_t>(deck_.bodies), {});
     return true;
@@ -87,8 +95,10 @@ MooringSystem::Motion MooringSystem::end_motion(const MooringEnd& end, const UCI
     switch (end.kind) {
         case MooringEnd::Kind::Fixed:
             return {local, Vec3::Zero(), Vec3::Zero(), false};
-        case MooringEnd::Kind::Node:
-            return {nodes_[end.node], Vec3::Zero(), Vec3::Zero(), false};
+        case MooringEnd::Kind::Node: {
+            const NodeInput& n = nodeInput_[end.node];
+            return {n.position, n.velocity, n.acceleration, true};
+        }
         case MooringEnd::Kind::Point: {
             const int k = end.point - 1;
             const UCCoupledPoint& p = in.coupledPoint[k];
@@ -182,19 +192,16 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
 bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& error) {
     ++stamp_;
     if (!check_inputs(in, error)) return false;
-    if (!nodes_.empty()) {
-        error = "a mooring system with free points where three or more lines meet has its statics (the "
-                "initialization) but no dynamics yet: fmi2DoStep is not supported for it";
-        return false;
-    }
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
+        if (on_node(deck_.lines[k])) continue;  // stepped with the nodes
         line_inputs(static_cast<int>(k), in, li);
         if (!lines_[k]->step(t, h, li, error)) {
             error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
             return false;
         }
     }
+    if (!nodes_.empty() && !step_nodes(t, h, in, error)) return false;
     for (int b = 0; b < deck_.bodies; ++b) {
         const UCCoupledBody& body = in.coupledBody[b];
         const bool given = in.bodyAccelerationGiven[b] != 0;
@@ -335,21 +342,24 @@ bool MooringSystem::profile_end_forces(int k, const Vec3& top, const Vec3& far, 
     return true;
 }
 
-Vec3 MooringSystem::node_load(int n, const Vec3& x, const UCInputs& in) const {
+Vec3 MooringSystem::node_load(int n, const Vec3& x, const UCInputs& in, const Vec3& v) const {
     const LineFilePoint& p = deck_.nodes[n].point;
     const FluidProps& fluid = lines_[0]->model().fluid();
     CurrentField current;
     current.uniform = Vec3(in.current[0], in.current[1], 0.0);
     current.profile = &lines_[0]->model().current_profile();
     current.scale = in.currentScale;
-    const Vec3 U = current.at(x.z(), nullptr);
-    return Vec3(0.0, 0.0, -(p.mass - fluid.rho * p.volume) * fluid.gravity) + 0.5 * fluid.rho * p.CdA * U.norm() * U;
+    const Vec3 w = current.at(x.z(), nullptr) - v;  // the water's velocity relative to the node
+    return Vec3(0.0, 0.0, -(p.mass - fluid.rho * p.volume) * fluid.gravity) + 0.5 * fluid.rho * p.CdA * w.norm() * w;
 }
 
 bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, bool profile, Eigen::VectorXd& r,
                                   std::string& error) {
     r.setZero(x.size());
-    for (size_t n = 0; n < nodes_.size(); ++n) nodes_[n] = x.segment<3>(3 * n);
+    for (size_t n = 0; n < nodes_.size(); ++n) {
+        nodes_[n] = x.segment<3>(3 * n);
+        nodeInput_[n] = {nodes_[n], Vec3::Zero(), Vec3::Zero()};
+    }
     for (size_t n = 0; n < nodes_.size(); ++n) r.segment<3>(3 * n) = node_load(static_cast<int>(n), nodes_[n], in);
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
@@ -445,15 +455,100 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
     };
     std::string why;
     // the exact catenaries first (where every line at a node has one), then the lines' own solutions
-    // (x moves only by accepted steps: where the profiles stop short, the lines' solutions go on from there)
-    newton(true, 1e-12 * scale, why);
-    if (!newton(false, 1e-9 * scale, why)) {
+    // (x moves only by accepted steps: where the profiles stop short, the lines' solutions go on from there);
+    // none where the deck starts the nodes where it places them
+    if (!deck_.nodesFromDeck) newton(true, 1e-12 * scale, why);
+    if (!deck_.nodesFromDeck && !newton(false, 1e-9 * scale, why)) {
         error = "the static equilibrium of the free points: " + why;
         return false;
     }
     // the lines stand initialized where the last residual put them: at x, unless a trial came after it
     if (!node_residual(x, in, false, r, error)) return false;
     nodeResidual_ = r.lpNorm<Eigen::Infinity>();
+    nodeVelocity_.assign(nodes_.size(), Vec3::Zero());
+    nodeAcceleration_.assign(nodes_.size(), Vec3::Zero());
+    return true;
+}
+
+bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::string& error) {
+    const int m = static_cast<int>(3 * nodes_.size());
+    for (size_t k = 0; k < lines_.size(); ++k) {
+        if (!on_node(deck_.lines[k])) continue;
+        nodeLineStart_[k].resize(lines_[k]->state_size());
+        lines_[k]->save_state(nodeLineStart_[k].data());
+    }
+    const std::vector<Vec3> x0 = nodes_, v0 = nodeVelocity_, a0 = nodeAcceleration_;
+    // The nodes move as Newmark's average acceleration has them (trapezoidal: second order, no numerical
+    // damping, unconditionally stable): with the acceleration A at t + h,
+    //   v(t + h) = v0 + h (a0 + A) / 2,   x(t + h) = x0 + h v0 + h^2 (a0 + A) / 4,
+    // and the lines' ends follow them (the driven end's quintic from (x0, v0, a0) to that state). A solves
+    // the nodes' equations of motion at t + h, (M + added mass) A = weight, buoyancy, drag + the lines'
+    // forces at t + h, by Newton's method with the Jacobian by differences of the lines' steps.
+    auto residual = [&](const Eigen::VectorXd& A, Eigen::VectorXd& r, std::string& why) -> bool {
+        std::vector<Vec3> v1(nodes_.size());
+        for (size_t n = 0; n < nodes_.size(); ++n) {
+            const Vec3 a = A.segment<3>(3 * n), mean = 0.5 * (a0[n] + a);
+            v1[n] = v0[n] + h * mean;
+            nodes_[n] = x0[n] + h * v0[n] + 0.5 * h * h * mean;
+            // the inputs whose extrapolation to t + h is that state: x + v h + a h^2 / 2, v + a h, a
+            const Vec3 v = v1[n] - h * a;
+            nodeInput_[n] = {nodes_[n] - h * v - 0.5 * h * h * a, v, a};
+            const LineFilePoint& p = deck_.nodes[n].point;
+            r.segment<3>(3 * n) = node_load(static_cast<int>(n), nodes_[n], in, v1[n]) - (p.mass + p.addedMass) * a;
+        }
+        UCInputs li;
+        for (size_t k = 0; k < lines_.size(); ++k) {
+            const MooringDeckLine& l = deck_.lines[k];
+            if (!on_node(l)) continue;
+            line_inputs(static_cast<int>(k), in, li);
+            if (!lines_[k]->restore_state(nodeLineStart_[k].data(), nodeLineStart_[k].size(), why) ||
+                !lines_[k]->step(t, h, li, why)) {
+                why = "mooring line " + std::to_string(l.id) + ": " + why;
+                return false;
+            }
+            const UCOutputs& o = lines_[k]->outputs();
+            if (l.fairlead.kind == MooringEnd::Kind::Node) r.segment<3>(3 * l.fairlead.node) += vec3(o.towForce);
+            if (!l.farFree && l.far.kind == MooringEnd::Kind::Node) r.segment<3>(3 * l.far.node) += vec3(o.endForce);
+        }
+        for (size_t n = 0; n < nodes_.size(); ++n) nodeVelocity_[n] = v1[n];
+        return true;
+    };
+    Eigen::VectorXd A(m), r(m), rp(m);
+    for (size_t n = 0; n < nodes_.size(); ++n) A.segment<3>(3 * n) = a0[n];
+    if (!residual(A, r, error)) return false;
+    // the Jacobian by one-sided differences, each moving the nodes by 1e-4 m at t + h
+    const double d = 4e-4 / (h * h);
+    Eigen::MatrixXd J(m, m);
+    for (int j = 0; j < m; ++j) {
+        Eigen::VectorXd Ap = A;
+        Ap[j] += d;
+        if (!residual(Ap, rp, error)) return false;
+        J.col(j) = (rp - r) / d;
+    }
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(J);
+    // Converged when a correction moves the nodes by less than kNodeTolerance at t + h, or when the
+    // corrections stop shrinking below 100 times that: the lines' forces carry the noise of their
+    // integrators' error control (each trial steps them anew), which the corrections then follow.
+    double moved = HUGE_VAL;
+    bool converged = false;
+    for (nodeIterations_ = 1; nodeIterations_ <= kNodeIterations && !converged; ++nodeIterations_) {
+        const Eigen::VectorXd dA = -lu.solve(r);
+        if (!dA.allFinite()) {
+            error = "the free points' equations of motion: singular Jacobian";
+            return false;
+        }
+        A += dA;
+        if (!residual(A, r, error)) return false;  // the lines stand at the last A
+        const double last = moved;
+        moved = 0.25 * h * h * dA.lpNorm<Eigen::Infinity>();
+        converged = moved < kNodeTolerance || (moved < 100.0 * kNodeTolerance && moved > 0.5 * last);
+    }
+    if (!converged) {
+        error = "the free points' equations of motion did not converge in " + std::to_string(kNodeIterations) +
+                " iterations (last correction " + std::to_string(moved) + " m)";
+        return false;
+    }
+    for (size_t n = 0; n < nodes_.size(); ++n) nodeAcceleration_[n] = A.segment<3>(3 * n);
     return true;
 }
 
@@ -612,7 +707,7 @@ bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error)
 
 size_t MooringSystem::state_size() const {
     size_t size = sizeof(SystemHeader) + references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) +
-                  sizeof(UCInputs);
+                  sizeof(UCInputs) + nodes_.size() * kNodeStateDoubles * sizeof(double);
     for (const auto& line : lines_) size += line->state_size();
     return size;
 }
@@ -623,6 +718,7 @@ void MooringSystem::save_state(void* buffer) {
     header.version = kSystemVersion;
     header.lines = static_cast<std::int32_t>(lines_.size());
     header.bodies = static_cast<std::int32_t>(references_.size());
+    header.nodes = static_cast<std::int32_t>(nodes_.size());
     header.lastStep = lastStep_;
     for (size_t k = 0; k < lines_.size(); ++k) header.lineSize[k] = lines_[k]->state_size();
     auto* out = static_cast<unsigned char*>(buffer);
@@ -638,6 +734,15 @@ void MooringSystem::save_state(void* buffer) {
     out += sizeof outputs_;
     std::memcpy(out, &lastInputs_, sizeof lastInputs_);
     out += sizeof lastInputs_;
+    for (size_t n = 0; n < nodes_.size(); ++n) {
+        const Vec3* parts[kNodeStateDoubles / 3] = {&nodes_[n], &nodeVelocity_[n], &nodeAcceleration_[n],
+                                                    &nodeInput_[n].position, &nodeInput_[n].velocity,
+                                                    &nodeInput_[n].acceleration};
+        for (const Vec3* v : parts) {
+            std::memcpy(out, v->data(), 3 * sizeof(double));
+            out += 3 * sizeof(double);
+        }
+    }
     for (auto& line : lines_) {
         line->save_state(out);
         out += line->state_size();
@@ -655,11 +760,13 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     std::memcpy(&header, in, sizeof header);
     if (header.magic != kSystemMagic || header.version != kSystemVersion ||
         header.lines != static_cast<std::int32_t>(lines_.size()) ||
-        header.bodies != static_cast<std::int32_t>(references_.size())) {
+        header.bodies != static_cast<std::int32_t>(references_.size()) ||
+        header.nodes != static_cast<std::int32_t>(nodes_.size())) {
         error = "saved state does not belong to this mooring system (magic, version or sizes differ)";
         return false;
     }
-    size_t expected = sizeof header + references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs);
+    size_t expected = sizeof header + references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs) +
+                      nodes_.size() * kNodeStateDoubles * sizeof(double);
     for (size_t k = 0; k < lines_.size(); ++k) expected += header.lineSize[k];
     if (size != expected) {
         error = "saved state has the wrong size for this mooring system";
@@ -679,6 +786,9 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     UCInputs lastInputs;
     std::memcpy(&lastInputs, in, sizeof lastInputs);
     in += sizeof lastInputs;
+    std::vector<double> nodeState(nodes_.size() * kNodeStateDoubles);
+    if (!nodeState.empty()) std::memcpy(nodeState.data(), in, nodeState.size() * sizeof(double));
+    in += nodeState.size() * sizeof(double);
     for (size_t k = 0; k < lines_.size(); ++k) {
         if (!lines_[k]->restore_state(in, header.lineSize[k], error)) {
             error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
@@ -687,6 +797,12 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
         in += header.lineSize[k];
     }
     references_ = references;
+    for (size_t n = 0; n < nodes_.size(); ++n) {
+        Vec3* parts[kNodeStateDoubles / 3] = {&nodes_[n], &nodeVelocity_[n], &nodeAcceleration_[n],
+                                              &nodeInput_[n].position, &nodeInput_[n].velocity,
+                                              &nodeInput_[n].acceleration};
+        for (int i = 0; i < kNodeStateDoubles / 3; ++i) *parts[i] = Vec3(nodeState.data() + kNodeStateDoubles * n + 3 * i);
+    }
     outputs_ = outputs;
     lastInputs_ = lastInputs;
     lastStep_ = header.lastStep;

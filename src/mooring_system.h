@@ -56,7 +56,9 @@ public:
     // Steps of the central differences of body_stiffness [m], [rad].
     static constexpr double kStiffnessStep = 0.01, kStiffnessAngle = 1e-4;
     // The free points' statics stop when a Newton step with the lines' solutions moves them less [m].
+    // (and the dynamics' when a Newton correction moves them less), in at most kNodeIterations.
     static constexpr double kNodeTolerance = 1e-6;
+    static constexpr int kNodeIterations = 12;
 
     // The free nodes (Free points where three or more lines meet): their positions, found at the
     // initialization by the static equilibrium of each node (docs/systems_mooring.md, "Free points").
@@ -69,8 +71,9 @@ public:
     // solution there.
     bool node_residual(const Eigen::VectorXd& x, const UCInputs& in, bool profile, Eigen::VectorXd& r,
                        std::string& error);
-    // Newton iterations of the statics, and the residual left (largest component, N), of the last
-    // initialization.
+    const Vec3& node_velocity(int n) const { return nodeVelocity_[n]; }
+    // Newton iterations of the statics (of the last initialization) or of the last step's dynamics, and
+    // the statics' residual left (largest component, N).
     int node_iterations() const { return nodeIterations_; }
     double node_residual_norm() const { return nodeResidual_; }
 
@@ -94,8 +97,11 @@ private:
     bool profile_end_forces(int k, const Vec3& top, const Vec3& far, Vec3& onTop, Vec3& onFar, std::string* why) const;
     // The free nodes' static equilibrium (Newton with a line search), the lines initialized there.
     bool solve_nodes(double t0, const UCInputs& in, std::string& error);
-    // The weight, buoyancy and current drag on node n at x.
-    Vec3 node_load(int n, const Vec3& x, const UCInputs& in) const;
+    // The weight, buoyancy and current drag on node n at x moving at v.
+    Vec3 node_load(int n, const Vec3& x, const UCInputs& in, const Vec3& v = Vec3::Zero()) const;
+    // One communication step of the lines that end at free nodes, coupled implicitly through the nodes'
+    // equations of motion (docs/systems_mooring.md, "Dynamics").
+    bool step_nodes(double t, double h, const UCInputs& in, std::string& error);
 
     UCParams base_;
     MooringDeck deck_;
@@ -107,6 +113,12 @@ private:
     // --- state ---
     std::vector<DrivenEnd> references_;  // each body's reference point, extrapolated as the fairleads are
     std::vector<Vec3> nodes_;            // the free nodes' positions
+    std::vector<Vec3> nodeVelocity_, nodeAcceleration_;
+    struct NodeInput {                   // what the lines at node n are given as their end's inputs
+        Vec3 position, velocity, acceleration;
+    };
+    std::vector<NodeInput> nodeInput_;
+    std::vector<std::vector<unsigned char>> nodeLineStart_;  // the node lines' states at the step's start
     int nodeIterations_ = 0;
     double nodeResidual_ = 0.0;
     double t0_ = 0.0;

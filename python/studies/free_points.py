@@ -14,6 +14,8 @@ from __future__ import annotations
 import contextlib
 import io
 import re
+import tempfile
+import time
 import warnings
 from pathlib import Path
 
@@ -102,3 +104,122 @@ def bridle(text: str) -> str:
     text = text.replace("2         main        2         5", "2         main        2         4", 1)
     return re.sub(r"(3         main        3         6       835.35     20        -)",
                   r"\1\n4         main        4         5       70.0       4         -", text, count=1)
+
+
+# ----------------------------------------------------------------------------- dynamics: a release
+def displaced_deck(path: Path, directory: Path, point: int, position) -> Path:
+    """The deck with free point `point` placed at `position` and TmaxIC 0: MoorDyn starts it there at rest
+    without generating initial conditions, and so does the FMU (each line in its static shape with its
+    ends there)."""
+    text = Path(path).read_text()
+    row = re.search(rf"^{point}(\s+)Free\s+\S+\s+\S+\s+\S+(.*)$", text, flags=re.M)
+    x, y, z = position
+    text = text[:row.start()] + f"{point}{row.group(1)}Free {x:.6f} {y:.6f} {z:.6f}{row.group(2)}" + text[row.end():]
+    text = re.sub(r"^\S+(\s+TmaxIC)", r"0.0\1", text, flags=re.M | re.I)
+    out = Path(directory) / f"{Path(path).stem}_released{Path(path).suffix}"
+    out.write_text(text)
+    return out
+
+
+def refined_deck(path: Path, directory: Path, segments: int) -> Path:
+    """The deck with every line in `segments` segments and MoorDyn's time step dtM scaled from 1 ms at 20
+    segments (its explicit integration's stability limit shrinks with the segments' length)."""
+    text = Path(path).read_text()
+    lines = text.splitlines()
+    start = next(i for i, s in enumerate(lines) if re.match(r"^-+\s*LINES\b", s.strip(), flags=re.I))
+    for i in range(start + 3, len(lines)):
+        f = lines[i].split()
+        if len(f) < 7 or lines[i].lstrip().startswith("---"):
+            break
+        f[5] = str(segments)
+        lines[i] = "  ".join(f)
+    text = "\n".join(lines) + "\n"
+    text = re.sub(r"^\S+(\s+dtM)", f"{0.02 / segments:.6g}\\1", text, flags=re.M)
+    out = Path(directory) / f"{Path(path).stem}_{segments}{Path(path).suffix}"
+    out.write_text(text)
+    return out
+
+
+def fmu_release(fmu, path: Path, point: int, t_end: float, comm_step: float = 0.1, progress=None,
+                **extra) -> dict:
+    """The FMU from the deck's start: every line's tension at AttachB (the buoy) and the point's
+    position at each communication point."""
+    deck = read_system_deck(path)
+    times = np.arange(0.0, t_end + 0.5 * comm_step, comm_step)
+    names = [f"line[{k}].fairleadTension" for k in range(1, deck.lines + 1)] + \
+        [f"point[{point}].position.{a}" for a in "xyz"]
+    out = np.zeros((len(times), len(names)))
+    with CableFMU(fmu, parameters={**fmu_parameters(deck), "lineFile": str(path), **extra}) as c:
+        c.initialize()
+        out[0] = c.get_reals(names)
+        cpu0 = time.process_time()
+        for k in range(len(times) - 1):
+            c.do_step(comm_step, t=times[k])
+            out[k + 1] = c.get_reals(names)
+            if progress:
+                progress(times[k + 1])
+        cpu = time.process_time() - cpu0
+    return {"t": times, "tension": out[:, :deck.lines], "position": out[:, deck.lines:], "cpu": cpu}
+
+
+# MoorDyn runs in a process of its own that loads nothing else: loaded after MoorPy or the FMU's
+# modules, MoorDyn 2.7's Create crashes at random on these decks (a segmentation fault, most runs).
+_MOORDYN_RUN = r"""
+import math, shutil, sys, tempfile, time
+from pathlib import Path
+import numpy as np
+import moordyn
+
+deck, point, n_lines, t_end, h, out = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4]), \
+    float(sys.argv[5]), sys.argv[6]
+times = np.arange(0.0, t_end + 0.5 * h, h)
+tension = np.zeros((len(times), n_lines))
+position = np.zeros((len(times), 3))
+with tempfile.TemporaryDirectory() as tmp:
+    copy = Path(tmp) / Path(deck).name
+    shutil.copy(deck, copy)
+    system = moordyn.Create(str(copy))
+    moordyn.Init(system, [], [])
+    lines = [moordyn.GetLine(system, k) for k in range(1, n_lines + 1)]
+    ends = [moordyn.GetLineN(ln) for ln in lines]
+    handle = moordyn.GetPoint(system, point)
+
+    def record(i):
+        # MoorDyn's tensions are its segments', half a segment from the end node: extrapolated linearly
+        # from the last two segments (node N - 1 has their mean) to node N
+        tension[i] = [2.0 * np.linalg.norm(moordyn.GetLineNodeTen(ln, n)) -
+                      np.linalg.norm(moordyn.GetLineNodeTen(ln, n - 1)) for ln, n in zip(lines, ends)]
+        position[i] = moordyn.GetPointPos(handle)
+
+    record(0)
+    cpu0 = time.process_time()
+    for k in range(len(times) - 1):
+        moordyn.Step(system, [], [], times[k], h)
+        record(k + 1)
+    cpu = time.process_time() - cpu0
+    moordyn.Close(system)
+np.savez(out, t=times, tension=tension, position=position, cpu=cpu)
+"""
+
+
+def moordyn_release(path: Path, point: int, t_end: float, comm_step: float = 0.1) -> dict:
+    """MoorDyn v2 fed the same deck (no coupled objects: one call per communication step, MoorDyn
+    substepping at dtM): each line's tension at its end B and the point's position (tensions from
+    t = comm_step: MoorDyn computes them in its first step)."""
+    import subprocess
+    import sys
+
+    deck = read_system_deck(path)
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "moordyn.npz"
+        subprocess.run([sys.executable, "-c", _MOORDYN_RUN, str(path), str(point), str(deck.lines), str(t_end),
+                        str(comm_step), str(out)], check=True, capture_output=True)
+        with np.load(out) as data:
+            return {k: (float(data[k]) if k == "cpu" else np.array(data[k])) for k in data.files}
+
+
+def rms_difference(a: dict, b: dict, t_from: float = 0.0) -> float:
+    """Largest over the lines of the RMS tension difference over t >= t_from, relative to b's mean."""
+    sel = a["t"] >= t_from - 1e-9
+    diff = a["tension"][sel] - b["tension"][sel]
+    return float(np.max(np.sqrt(np.mean(diff ** 2, axis=0)) / np.mean(b["tension"][sel], axis=0)))
