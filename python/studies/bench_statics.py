@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import dataclasses
 import io
 import math
 import re
@@ -36,6 +37,7 @@ REFERENCE_BALANCE = 1e-5       # MoorPy's free points balanced to this fraction 
 OFF_BOUND = 0.01               # a run off by more than this without an error is the worst defect
 ACCEPT_INIT_RATE = 0.995       # the acceptance of the static solver (docs/statics_benchmark.md)
 ACCEPT_P95, ACCEPT_MAX = 0.002, 0.005
+STIFFNESS_RANGE = (3e5, 1e8)  # seabedStiffness of the draw [N/m2], log-uniform
 STIFFNESS_BANDS = [(3e5, 1e6), (1e6, 1e7), (1e7, 1e8 * (1 + 1e-12))]
 REGIMES = ["touchdown", "suspended", "nearly taut"]
 
@@ -180,7 +182,7 @@ def draw_case(seed: int, case_id: int) -> Case:
         else:  # a buoy of 30 % of its displacement, lifting 5-40 % of the line's weight
             volume = _loguniform(rng, 0.05, 0.4) * line_weight / (0.7 * RHO * G)
             attachments.append(Attachment("buoy", s, 0.3 * RHO * volume, volume))
-    return Case(case_id, family, depth, fairlead_z, -span, _loguniform(rng, 3e5, 1e8), sections, attachments)
+    return Case(case_id, family, depth, fairlead_z, -span, _loguniform(rng, *STIFFNESS_RANGE), sections, attachments)
 
 
 def draw_cases(seed: int, n: int) -> list:
@@ -386,6 +388,26 @@ def run_benchmark(fmu, cases: list, meshes: list, progress=None, grading: int = 
     return records
 
 
+def stiffness_pairs(fmu, cases: list, meshes: list, grading: int = 1, progress=None) -> dict:
+    """Each line at the softest and the stiffest seabed of the draw (3e5 and 1e8 N/m2), no reference:
+    per mesh, how many start at both, at neither, only at the soft one and only at the stiff one, and
+    the lines (id, mesh) that start on the soft seabed but not on the stiff one."""
+    soft, stiff = STIFFNESS_RANGE
+    counts = {n: {"both": 0, "neither": 0, "soft only": 0, "stiff only": 0} for n in meshes}
+    lost = []
+    for i, case in enumerate(cases):
+        for n in meshes:
+            ok = [fmu_run(fmu, dataclasses.replace(case, stiffness=k), n, grading)["ok"] for k in (soft, stiff)]
+            key = {(True, True): "both", (False, False): "neither", (True, False): "soft only",
+                   (False, True): "stiff only"}[tuple(ok)]
+            counts[n][key] += 1
+            if key == "soft only":
+                lost.append((case.id, n))
+        if progress is not None:
+            progress(i + 1, case.id)
+    return {"counts": counts, "lost": lost}
+
+
 def band(stiffness: float) -> str:
     for lo, hi in STIFFNESS_BANDS:
         if lo <= stiffness < hi:
@@ -482,6 +504,17 @@ def table(rows: list, first: str) -> list:
     return out
 
 
+def pairs_markdown(pairs: dict, stiffness: tuple) -> str:
+    soft, stiff = stiffness
+    out = [f"| elements | start at {soft:g} and {stiff:g} | at neither | at {soft:g} only | at {stiff:g} only |",
+           "|---|---|---|---|---|"]
+    for n, c in pairs["counts"].items():
+        out.append(f"| {n} | {c['both']} | {c['neither']} | {c['soft only']} | {c['stiff only']} |")
+    lost = ", ".join(f"line {i} at {n}" for i, n in pairs["lost"]) or "none"
+    out.append(f"\nStarting at {soft:g} N/m2 but not at {stiff:g}: {lost}.")
+    return "\n".join(out)
+
+
 def markdown(data: dict, command: str, fmu_label: str, cases: dict) -> str:
     a = data["all"]
     at20 = next((r for r in data["by_mesh"] if r["group"] == 20), None)
@@ -531,6 +564,9 @@ def parse_args(argv):
     p.add_argument("--grading", type=int, choices=(0, 1, 2), default=1,
                    help="the FMU's meshGrading: 0 equal elements, 1 graded in each section (default), "
                         "2 graded along the line")
+    p.add_argument("--stiffness-pairs", action="store_true",
+                   help="instead of the comparison with MoorPy: start every line on the softest and the stiffest "
+                        "seabed of the draw and count where the stiff one fails and the soft one does not")
     p.add_argument("--only", type=int, nargs="+", default=None, metavar="ID",
                    help="run only these lines of the draw (reproduce a case; prints each run)")
     p.add_argument("--out", type=Path, default=None, help="write every run as CSV to this file")
@@ -593,6 +629,18 @@ def main(argv=None) -> int:
     cases = {k: draw_case(args.seed, k) for k in ids}
     bar = ProgressBar(len(cases), label="lines")
     t0 = time.perf_counter()
+    if args.stiffness_pairs:
+        pairs = stiffness_pairs(args.fmu, list(cases.values()), args.elements, args.grading,
+                                progress=lambda i, cid: bar.update(i, f"line {cid}"))
+        bar.close(f"{len(cases)} lines x {len(args.elements)} meshes x 2 seabeds")
+        text = (f"Measured with `scripts/bench_statics --n {args.n} --elements {' '.join(map(str, args.elements))} "
+                f"--seed {args.seed} --stiffness-pairs" + (f" --grading {args.grading}`" if args.grading != 1 else "`")
+                + ":\n\n" + pairs_markdown(pairs, STIFFNESS_RANGE))
+        print(text)
+        if args.doc is not None:
+            write_section(args.doc, text, "scripts/bench_statics --stiffness-pairs"
+                          + (f" --grading {args.grading}" if args.grading != 1 else ""))
+        return 0
     records = run_benchmark(args.fmu, list(cases.values()), args.elements,
                             progress=lambda i, cid: bar.update(i, f"line {cid}"), grading=args.grading)
     bar.close(f"{len(cases)} lines x {len(args.elements)} meshes")

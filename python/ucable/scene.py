@@ -203,7 +203,7 @@ class BodyMotion:
                 continue
             A = m["amplitude"] if i < 3 else math.radians(m["amplitude"])
             w = 2.0 * math.pi / m["period"]
-            e, de, dde = (float(x) for x in soft_start(np.array([t]), m["ramp"]))
+            e, de, dde = (float(x[0]) for x in soft_start(np.array([t]), m["ramp"]))
             s, c = math.sin(w * t), math.cos(w * t)
             q[i] += A * e * s
             v[i] += A * (de * s + e * w * c)

@@ -11,6 +11,7 @@ tension), and no run is off by more than 1 % without an error. The reference its
 first: every piece of MoorPy's solution between its points is the closed-form elastic catenary
 (with touchdown where it rests on the seabed) of the project."""
 
+import dataclasses
 import math
 import re
 
@@ -212,3 +213,13 @@ def test_a_buoy_between_two_touchdowns_starts_within_half_a_percent_of_moorpy(bu
     assert r["ref"]["grounded"] > 0.0 and r["ref"]["anchor_vertical"] == 0.0
     assert r["fmu"]["ok"], r["fmu"]["message"]
     assert abs(r["err_fairlead" if end == "fairlead" else "err_anchor"]) <= B.ACCEPT_MAX
+
+
+@pytest.mark.parametrize("line_id", [3, 377])
+def test_graded_along_the_line_the_stiff_seabed_starts_where_the_soft_one_does(fmu_file, line_id):
+    """Lines of three sections that start at 10 elements on the softest seabed of the draw but, graded
+    in each section, not on the stiffest: graded along the line they start on both."""
+    case = B.draw_case(SEED, line_id)
+    for stiffness in B.STIFFNESS_RANGE:
+        run = B.fmu_run(fmu_file, dataclasses.replace(case, stiffness=stiffness), 10, grading=2)
+        assert run["ok"], (stiffness, run["message"])
