@@ -892,14 +892,34 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
 namespace uc {
 namespace {
 
-enum class BodyKind { Coupled, Fixed };
+enum class BodyKind { Coupled, Fixed, Free };
 
 struct DeckBody {
     int id = 0;
     BodyKind kind = BodyKind::Coupled;
     double pose[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // X0 Y0 Z0 [m], r0 p0 y0 [rad]
+    double mass = 0.0, volume = 0.0, cg[3] = {0.0, 0.0, 0.0}, CdA = 0.0;  // a Free body's
     int row = 0;
 };
+
+// A field of one number or three separated by '|' (MoorDyn's CG*, I*, CdA*, Ca*); one number c is
+// (0, 0, c) for the centre of gravity (oneIsZ), (c, c, c) otherwise.
+bool vector_field(Fields& f, const Row& row, size_t i, const char* name, bool oneIsZ, double out[3]) {
+    if (i >= row.tokens.size()) return f.fail(std::string("a Free body needs its ") + name);
+    std::vector<double> v;
+    std::string_view t = row.tokens[i];
+    while (true) {
+        const size_t bar = t.find('|');
+        const auto x = to_number(t.substr(0, bar));
+        if (!x) return f.fail(std::string(name) + " " + quoted(row.tokens[i]) + " is not one number or three separated by '|'");
+        v.push_back(*x);
+        if (bar == std::string_view::npos) break;
+        t = t.substr(bar + 1);
+    }
+    if (v.size() != 1 && v.size() != 3) return f.fail(std::string(name) + " " + quoted(row.tokens[i]) + ": one number or three");
+    for (int k = 0; k < 3; ++k) out[k] = v.size() == 3 ? v[k] : (oneIsZ ? (k == 2 ? v[0] : 0.0) : v[0]);
+    return true;
+}
 
 // MoorDyn's BODIES row: ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca* (angles in degrees).
 bool read_body(const Row& row, int expectedId, DeckBody& b, std::vector<std::string>& notes, std::string& error) {
@@ -925,8 +945,7 @@ bool read_body(const Row& row, int expectedId, DeckBody& b, std::vector<std::str
     } else if (is_one_of(head, {"FIXED", "FIX", "ANCHOR"})) {
         b.kind = BodyKind::Fixed;
     } else if (is_one_of(head, {"FREE"})) {
-        return f.fail("body " + std::to_string(b.id) + " is Free: free bodies are not supported (Coupled bodies, driven "
-                      "by the body[k].* inputs, and Fixed bodies)");
+        b.kind = BodyKind::Free;
     } else if (is_one_of(head, {"PINNED", "CPLDPIN", "COUPLEDPINNED"})) {
         return f.fail("body " + std::to_string(b.id) + " is pinned (coupled in translation, free in rotation): not "
                       "supported (Coupled and Fixed bodies)");
@@ -937,6 +956,22 @@ bool read_body(const Row& row, int expectedId, DeckBody& b, std::vector<std::str
     const double kDegree = 3.14159265358979323846 / 180.0;
     for (int k = 0; k < 6; ++k) b.pose[k] = f.number(2 + k, kColumns[k]) * (k < 3 ? 1.0 : kDegree);
     b.row = row.number;
+    if (f.ok() && b.kind == BodyKind::Free) {
+        if (row.tokens.size() < 14) {
+            return f.fail("a Free body has the fields ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*; this "
+                          "row has " + std::to_string(row.tokens.size()));
+        }
+        double inertia[3], CdA[3], Ca[3];
+        b.mass = f.non_negative(8, "Mass");
+        b.volume = f.non_negative(11, "Volume");
+        if (!f.ok() || !vector_field(f, row, 9, "CG", true, b.cg) || !vector_field(f, row, 10, "I", false, inertia) ||
+            !vector_field(f, row, 12, "CdA", false, CdA) || !vector_field(f, row, 13, "Ca", false, Ca))
+            return false;
+        b.CdA = CdA[0];
+        if (CdA[1] != CdA[0] || CdA[2] != CdA[0])
+            notes.push_back(at_line(row.number, "body " + std::to_string(b.id) + ": its drag area is taken as CdA = " +
+                                                    number_text(CdA[0]) + " m2 in every direction"));
+    }
     if (f.ok() && b.kind == BodyKind::Coupled && row.tokens.size() > 8) {
         notes.push_back(at_line(row.number, "the mass, inertia, volume and drag of coupled body " + std::to_string(b.id) +
                                                 " ignored (its motion is given by the body[k].* inputs; the lines' load "
@@ -957,8 +992,8 @@ void rotate_xyz(const double a[3], const double r[3], double out[3]) {
 }
 
 // Where the end of a line at point p is held.
-bool mooring_end(const Point& p, const std::vector<DeckBody>& bodies, bool bodiesSection, MooringEnd& end,
-                 std::string& error) {
+bool mooring_end(const Point& p, const std::vector<DeckBody>& bodies, const std::vector<int>& bodyNode,
+                 bool bodiesSection, MooringEnd& end, std::string& error) {
     switch (p.kind) {
         case PointKind::Fixed:
             end.kind = MooringEnd::Kind::Fixed;
@@ -987,6 +1022,12 @@ bool mooring_end(const Point& p, const std::vector<DeckBody>& bodies, bool bodie
                 return false;
             }
             const DeckBody& b = bodies[p.body - 1];
+            if (b.kind == BodyKind::Free) {  // a free node: at its position in the body's frame
+                end.kind = MooringEnd::Kind::Node;
+                end.node = bodyNode[p.body - 1];
+                std::copy(p.position, p.position + 3, end.position);
+                return true;
+            }
             if (b.kind == BodyKind::Fixed) {
                 end.kind = MooringEnd::Kind::Fixed;
                 rotate_xyz(b.pose + 3, p.position, end.position);
@@ -1060,6 +1101,28 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
         std::copy(p.position, p.position + 3, node.position);
         out.nodes.push_back(node);
     }
+    // Free bodies are free nodes too (six unknowns), after the points
+    std::vector<int> bodyNode(bodies.size(), -1);
+    for (const DeckBody& b : bodies) {
+        if (b.kind != BodyKind::Free) continue;
+        bodyNode[b.id - 1] = static_cast<int>(out.nodes.size());
+        MooringNode node;
+        node.body = true;
+        node.point.id = b.id;
+        node.point.mass = b.mass;
+        node.point.volume = b.volume;
+        node.point.CdA = b.CdA;
+        node.point.row = b.row;
+        std::copy(b.pose, b.pose + 3, node.position);
+        std::copy(b.pose + 3, b.pose + 6, node.angles);
+        std::copy(b.cg, b.cg + 3, node.cg);
+        out.nodes.push_back(node);
+    }
+    auto on_free_body = [&](int q) {
+        const Point& p = deck.points[q];
+        return p.kind == PointKind::Body && p.body >= 1 && p.body <= static_cast<int>(bodies.size()) &&
+               bodies[p.body - 1].kind == BodyKind::Free;
+    };
     auto node_end = [&](int q, MooringEnd& end) {
         end = MooringEnd();
         end.kind = MooringEnd::Kind::Node;
@@ -1077,17 +1140,17 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
         int start = -1;
         for (int e : {1, 0}) {  // AttachB first: MoorDyn's usual fairlead
             const PointKind kind = deck.points[l0.end[e]].kind;
-            if (start < 0 && (pass == 0 ? (kind == PointKind::Vessel || kind == PointKind::Body)
-                                        : nodeOf[l0.end[e]] >= 0))
+            if (start < 0 && (pass == 0 ? (kind == PointKind::Vessel || (kind == PointKind::Body && !on_free_body(l0.end[e])))
+                                        : (nodeOf[l0.end[e]] >= 0 || on_free_body(l0.end[e]))))
                 start = l0.end[e];
         }
         if (start < 0) continue;  // reached from another line's coupled end or a node, or refused below
         MooringDeckLine line;
         line.id = l0.id;
         line.row = l0.row;
-        if (pass == 1) {
+        if (pass == 1 && nodeOf[start] >= 0) {
             node_end(start, line.fairlead);
-        } else if (!mooring_end(deck.points[start], bodies, out.bodiesSection, line.fairlead, error)) {
+        } else if (!mooring_end(deck.points[start], bodies, bodyNode, out.bodiesSection, line.fairlead, error)) {
             return false;
         }
         int point = start, index = static_cast<int>(first);
@@ -1109,7 +1172,7 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
             line.flipped.push_back(fairlead == point);
             const Point& p = deck.points[point];
             if (p.kind != PointKind::Free) {
-                if (!mooring_end(p, bodies, out.bodiesSection, line.far, error)) return false;
+                if (!mooring_end(p, bodies, bodyNode, out.bodiesSection, line.far, error)) return false;
                 break;
             }
             if (p.lines.size() == 1) {  // a free far end: a towed body, or none
@@ -1155,6 +1218,18 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
                                                                             "lines, to its end") +
                                    ": a line of a mooring system ends on a coupled body or point or a free node");
         return false;
+    }
+    for (const MooringNode& node : out.nodes) {
+        if (!node.body) continue;
+        bool held = false;
+        for (const MooringDeckLine& l : out.lines)
+            for (const MooringEnd* e : {&l.fairlead, &l.far})
+                held = held || (e->kind == MooringEnd::Kind::Node && out.nodes[e->node].body && out.nodes[e->node].point.id == node.point.id);
+        if (!held) {
+            error = at_line(node.point.row, "Free body " + std::to_string(node.point.id) + " holds no line: a free body of "
+                                            "a mooring system is held by the lines on its points");
+            return false;
+        }
     }
     out.deckLines = static_cast<int>(deck.lines.size());
     out.nodesFromDeck = deck.noInitialConditions;

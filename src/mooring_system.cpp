@@ -26,7 +26,8 @@ struct SystemHeader {
 
 Vec3 vec3(const double v[3]) { return Vec3(v[0], v[1], v[2]); }
 
-constexpr int kNodeStateDoubles = 18;  // per free node: position, velocity, acceleration, its lines' end inputs
+constexpr int kNodeStateDoubles = 27;  // per free node: position, velocity, acceleration, its lines' end inputs,
+                                       // orientation (3 x 3)
 
 bool on_node(const MooringDeckLine& l) {
     return l.fairlead.kind == MooringEnd::Kind::Node || (!l.farFree && l.far.kind == MooringEnd::Kind::Node);
@@ -81,6 +82,9 @@ bool MooringSystem::build(std::string& error) {
     for (const MooringNode& n : deck_.nodes) {
         nodes_.push_back(vec3(n.position));
         nodeInput_.push_back({vec3(n.position), Vec3::Zero(), Vec3::Zero()});
+        nodeRotation_.push_back(n.body ? body_rotation(n.angles[0], n.angles[1], n.angles[2]) : Mat3::Identity());
+        nodeOffset_.push_back(nodeUnknowns_);
+        nodeUnknowns_ += n.body ? 6 : 3;
     }
     nodeVelocity_.assign(nodes_.size(), Vec3::Zero());
     nodeAcceleration_.assign(nodes_.size(), Vec3::Zero());
@@ -97,6 +101,8 @@ MooringSystem::Motion MooringSystem::end_motion(const MooringEnd& end, const UCI
             return {local, Vec3::Zero(), Vec3::Zero(), false};
         case MooringEnd::Kind::Node: {
             const NodeInput& n = nodeInput_[end.node];
+            if (deck_.nodes[end.node].body)  // statics only: at rest
+                return {n.position + nodeRotation_[end.node] * local, Vec3::Zero(), Vec3::Zero(), true};
             return {n.position, n.velocity, n.acceleration, true};
         }
         case MooringEnd::Kind::Point: {
@@ -272,6 +278,17 @@ void MooringSystem::update_outputs(const UCInputs& in) {
     }
     for (size_t n = 0; n < nodes_.size(); ++n) {
         const int id = deck_.nodes[n].point.id;
+        if (deck_.nodes[n].body) {
+            if (id > UC_MAX_BODIES) continue;  // beyond the outputs body[k].pose.*
+            const Mat3& R = nodeRotation_[n];  // R = Rx Ry Rz: R(0,2) = sin(pitch)
+            const double angles[3] = {std::atan2(-R(1, 2), R(2, 2)), std::asin(std::clamp(R(0, 2), -1.0, 1.0)),
+                                      std::atan2(-R(0, 1), R(0, 0))};
+            for (int c = 0; c < 3; ++c) {
+                outputs_.bodyLoad[id - 1].posePosition[c] = nodes_[n][c];
+                outputs_.bodyLoad[id - 1].poseAngles[c] = angles[c];
+            }
+            continue;
+        }
         if (id > UC_MAX_POINTS) continue;  // beyond the outputs point[k].position.*
         for (int c = 0; c < 3; ++c) outputs_.pointLoad[id - 1].position[c] = nodes_[n][c];
     }
@@ -357,10 +374,21 @@ bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, 
                                   std::string& error) {
     r.setZero(x.size());
     for (size_t n = 0; n < nodes_.size(); ++n) {
-        nodes_[n] = x.segment<3>(3 * n);
+        const MooringNode& node = deck_.nodes[n];
+        const int o = nodeOffset_[n];
+        nodes_[n] = x.segment<3>(o);
         nodeInput_[n] = {nodes_[n], Vec3::Zero(), Vec3::Zero()};
+        r.segment<3>(o) = node_load(static_cast<int>(n), nodes_[n], in);
+        if (!node.body) continue;
+        // a body: x holds a rotation about the earth axes from the deck's orientation; its weight acts at
+        // its centre of gravity, its buoyancy and drag at its reference point
+        const Vec3 turn = x.segment<3>(o + 3);
+        nodeRotation_[n] = Eigen::AngleAxisd(turn.norm(), turn.norm() > 0.0 ? Vec3(turn.normalized()) : Vec3::UnitX())
+                               .toRotationMatrix() *
+                           body_rotation(node.angles[0], node.angles[1], node.angles[2]);
+        const double g = lines_[0]->model().fluid().gravity;
+        r.segment<3>(o + 3) = (nodeRotation_[n] * vec3(node.cg)).cross(Vec3(0.0, 0.0, -node.point.mass * g));
     }
-    for (size_t n = 0; n < nodes_.size(); ++n) r.segment<3>(3 * n) = node_load(static_cast<int>(n), nodes_[n], in);
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
         const MooringDeckLine& l = deck_.lines[k];
@@ -382,17 +410,23 @@ bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, 
             onEnd[0] = vec3(lines_[k]->outputs().towForce);
             onEnd[1] = vec3(lines_[k]->outputs().endForce);
         }
-        if (l.fairlead.kind == MooringEnd::Kind::Node) r.segment<3>(3 * l.fairlead.node) += onEnd[0];
-        if (!l.farFree && l.far.kind == MooringEnd::Kind::Node) r.segment<3>(3 * l.far.node) += onEnd[1];
+        const MooringEnd* ends[2] = {&l.fairlead, l.farFree ? nullptr : &l.far};
+        for (int e = 0; e < 2; ++e) {
+            if (!ends[e] || ends[e]->kind != MooringEnd::Kind::Node) continue;
+            const int n = ends[e]->node, o = nodeOffset_[n];
+            r.segment<3>(o) += onEnd[e];
+            if (deck_.nodes[n].body)
+                r.segment<3>(o + 3) += (end_motion(*ends[e], in).position - nodes_[n]).cross(onEnd[e]);
+        }
     }
     return true;
 }
 
 bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& error) {
     t0_ = t0;
-    const int m = static_cast<int>(3 * nodes_.size());
-    Eigen::VectorXd x(m), r(m), rt(m), xt(m);
-    for (size_t n = 0; n < nodes_.size(); ++n) x.segment<3>(3 * n) = vec3(deck_.nodes[n].position);
+    const int m = nodeUnknowns_;
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(m), r(m), rt(m), xt(m);
+    for (size_t n = 0; n < nodes_.size(); ++n) x.segment<3>(nodeOffset_[n]) = vec3(deck_.nodes[n].position);
     // the force scale: the weights of the lines and nodes that meet at the nodes
     double scale = 0.0, shortest = 1e300;
     for (size_t k = 0; k < lines_.size(); ++k) {
@@ -400,7 +434,9 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
         scale += std::abs(hangingWeight_[k]);
         shortest = std::min(shortest, lines_[k]->model().line().length);
     }
-    for (size_t n = 0; n < nodes_.size(); ++n) scale += node_load(static_cast<int>(n), x.segment<3>(3 * n), in).norm();
+    for (size_t n = 0; n < nodes_.size(); ++n)
+        scale += node_load(static_cast<int>(n), x.segment<3>(nodeOffset_[n]), in).norm() +
+                 deck_.nodes[n].point.mass * lines_[0]->model().fluid().gravity;
     const double maxStep = 0.25 * shortest;  // a Newton step moves a node by at most this [m]
     Eigen::MatrixXd J(m, m);
     bool haveJacobian = false;
@@ -431,8 +467,15 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
                 why = "the free points' stiffness is singular";
                 return false;
             }
-            const double longest = dx.lpNorm<Eigen::Infinity>();
-            if (longest > maxStep) dx *= maxStep / longest;
+            // a node moves by at most maxStep, a body turns by at most kMaxTurn, per step
+            double shrink = 1.0;
+            for (size_t n = 0; n < nodes_.size(); ++n) {
+                const int o = nodeOffset_[n];
+                shrink = std::min(shrink, maxStep / std::max(dx.segment<3>(o).lpNorm<Eigen::Infinity>(), 1e-300));
+                if (deck_.nodes[n].body)
+                    shrink = std::min(shrink, kMaxTurn / std::max(dx.segment<3>(o + 3).lpNorm<Eigen::Infinity>(), 1e-300));
+            }
+            dx *= shrink;
             double a = 1.0;
             bool accepted = false;
             for (int halving = 0; halving < 30 && !accepted; ++halving, a *= 0.5) {
@@ -440,7 +483,8 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
                 std::string trial;
                 accepted = node_residual(xt, in, profile, rt, trial) && rt.norm() < (1.0 - 1e-4 * a) * r.norm();
             }
-            if (!accepted && !profile && dx.lpNorm<Eigen::Infinity>() < 10.0 * kNodeTolerance)
+            if (!accepted && !profile && dx.lpNorm<Eigen::Infinity>() < 10.0 * kNodeTolerance &&
+                r.lpNorm<Eigen::Infinity>() < 1e-4 * scale)
                 return true;  // at the level of the lines' static solutions' own tolerance
             if (!accepted) {
                 why = "the line search found no smaller residual (" + std::to_string(r.norm()) + " N)";
@@ -471,6 +515,13 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
 }
 
 bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::string& error) {
+    for (const MooringNode& node : deck_.nodes) {
+        if (node.body) {
+            error = "free body " + std::to_string(node.point.id) + ": a mooring system's free bodies have their "
+                    "statics (the initialization) but no dynamics yet";
+            return false;
+        }
+    }
     const int m = static_cast<int>(3 * nodes_.size());
     for (size_t k = 0; k < lines_.size(); ++k) {
         if (!on_node(deck_.lines[k])) continue;
@@ -735,13 +786,14 @@ void MooringSystem::save_state(void* buffer) {
     std::memcpy(out, &lastInputs_, sizeof lastInputs_);
     out += sizeof lastInputs_;
     for (size_t n = 0; n < nodes_.size(); ++n) {
-        const Vec3* parts[kNodeStateDoubles / 3] = {&nodes_[n], &nodeVelocity_[n], &nodeAcceleration_[n],
-                                                    &nodeInput_[n].position, &nodeInput_[n].velocity,
-                                                    &nodeInput_[n].acceleration};
+        const Vec3* parts[6] = {&nodes_[n], &nodeVelocity_[n], &nodeAcceleration_[n], &nodeInput_[n].position,
+                                &nodeInput_[n].velocity, &nodeInput_[n].acceleration};
         for (const Vec3* v : parts) {
             std::memcpy(out, v->data(), 3 * sizeof(double));
             out += 3 * sizeof(double);
         }
+        std::memcpy(out, nodeRotation_[n].data(), 9 * sizeof(double));
+        out += 9 * sizeof(double);
     }
     for (auto& line : lines_) {
         line->save_state(out);
@@ -798,10 +850,11 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     }
     references_ = references;
     for (size_t n = 0; n < nodes_.size(); ++n) {
-        Vec3* parts[kNodeStateDoubles / 3] = {&nodes_[n], &nodeVelocity_[n], &nodeAcceleration_[n],
-                                              &nodeInput_[n].position, &nodeInput_[n].velocity,
-                                              &nodeInput_[n].acceleration};
-        for (int i = 0; i < kNodeStateDoubles / 3; ++i) *parts[i] = Vec3(nodeState.data() + kNodeStateDoubles * n + 3 * i);
+        Vec3* parts[6] = {&nodes_[n], &nodeVelocity_[n], &nodeAcceleration_[n], &nodeInput_[n].position,
+                          &nodeInput_[n].velocity, &nodeInput_[n].acceleration};
+        const double* at = nodeState.data() + kNodeStateDoubles * n;
+        for (int i = 0; i < 6; ++i) *parts[i] = Vec3(at + 3 * i);
+        nodeRotation_[n] = Eigen::Map<const Mat3>(at + 18);
     }
     outputs_ = outputs;
     lastInputs_ = lastInputs;

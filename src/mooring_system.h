@@ -59,6 +59,7 @@ public:
     // (and the dynamics' when a Newton correction moves them less), in at most kNodeIterations.
     static constexpr double kNodeTolerance = 1e-6;
     static constexpr int kNodeIterations = 12;
+    static constexpr double kMaxTurn = 0.2;  // [rad] a free body turns by at most this per Newton step
 
     // The free nodes (Free points where three or more lines meet): their positions, found at the
     // initialization by the static equilibrium of each node (docs/systems_mooring.md, "Free points").
@@ -72,6 +73,7 @@ public:
     bool node_residual(const Eigen::VectorXd& x, const UCInputs& in, bool profile, Eigen::VectorXd& r,
                        std::string& error);
     const Vec3& node_velocity(int n) const { return nodeVelocity_[n]; }
+    const Mat3& node_rotation(int n) const { return nodeRotation_[n]; }  // a free body's (identity for a point)
     // Newton iterations of the statics (of the last initialization) or of the last step's dynamics, and
     // the statics' residual left (largest component, N).
     int node_iterations() const { return nodeIterations_; }
@@ -114,6 +116,9 @@ private:
     std::vector<DrivenEnd> references_;  // each body's reference point, extrapolated as the fairleads are
     std::vector<Vec3> nodes_;            // the free nodes' positions
     std::vector<Vec3> nodeVelocity_, nodeAcceleration_;
+    std::vector<Mat3> nodeRotation_;     // a free body's orientation (identity for a point)
+    std::vector<int> nodeOffset_;        // of each node's unknowns (3 for a point, 6 for a body)
+    int nodeUnknowns_ = 0;
     struct NodeInput {                   // what the lines at node n are given as their end's inputs
         Vec3 position, velocity, acceleration;
     };

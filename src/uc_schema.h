@@ -74,6 +74,8 @@ typedef struct UCBodyLoad {
     double force[3]; /* body[k].force.x/y/z [N]: coupled body k: force of the lines on it */
     double moment[3]; /* body[k].moment.x/y/z [N.m]: coupled body k: moment of the lines' forces about its reference point (earth axes) */
     double stiffness[36]; /* body[k].stiffness[i,j]: coupled body k: the 6×6 quasi-static mooring stiffness K[i,j] = −∂(force, moment)ᵢ / ∂(x, y, z, θx, θy, θz)ⱼ of the lines at rest about the present pose (θ a small rotation about the earth axes) (N/m, N/rad, N m/m, N m/rad; docs/systems_mooring.md) */
+    double posePosition[3]; /* body[k].pose.x/y/z [m]: a mooring system's Free body k (its ID in the deck): its reference point's position, found by the system's statics (0 for other bodies) */
+    double poseAngles[3]; /* body[k].pose.roll, body[k].pose.pitch, body[k].pose.yaw [rad]: a mooring system's Free body k: its roll, pitch and yaw angles (R = Rx Ry Rz, MoorDyn's), found by the system's statics (0 for other bodies) */
 } UCBodyLoad;
 
 typedef struct UCPointLoad {
@@ -1180,6 +1182,30 @@ typedef struct UCOutputs {
     X(2498, "point[16].position.x", REAL, OUTPUT, pointLoad[15].position[0]) \
     X(2499, "point[16].position.y", REAL, OUTPUT, pointLoad[15].position[1]) \
     X(2500, "point[16].position.z", REAL, OUTPUT, pointLoad[15].position[2]) \
+    X(2501, "body[1].pose.x", REAL, OUTPUT, bodyLoad[0].posePosition[0]) \
+    X(2502, "body[1].pose.y", REAL, OUTPUT, bodyLoad[0].posePosition[1]) \
+    X(2503, "body[1].pose.z", REAL, OUTPUT, bodyLoad[0].posePosition[2]) \
+    X(2504, "body[2].pose.x", REAL, OUTPUT, bodyLoad[1].posePosition[0]) \
+    X(2505, "body[2].pose.y", REAL, OUTPUT, bodyLoad[1].posePosition[1]) \
+    X(2506, "body[2].pose.z", REAL, OUTPUT, bodyLoad[1].posePosition[2]) \
+    X(2507, "body[3].pose.x", REAL, OUTPUT, bodyLoad[2].posePosition[0]) \
+    X(2508, "body[3].pose.y", REAL, OUTPUT, bodyLoad[2].posePosition[1]) \
+    X(2509, "body[3].pose.z", REAL, OUTPUT, bodyLoad[2].posePosition[2]) \
+    X(2510, "body[4].pose.x", REAL, OUTPUT, bodyLoad[3].posePosition[0]) \
+    X(2511, "body[4].pose.y", REAL, OUTPUT, bodyLoad[3].posePosition[1]) \
+    X(2512, "body[4].pose.z", REAL, OUTPUT, bodyLoad[3].posePosition[2]) \
+    X(2513, "body[1].pose.roll", REAL, OUTPUT, bodyLoad[0].poseAngles[0]) \
+    X(2514, "body[1].pose.pitch", REAL, OUTPUT, bodyLoad[0].poseAngles[1]) \
+    X(2515, "body[1].pose.yaw", REAL, OUTPUT, bodyLoad[0].poseAngles[2]) \
+    X(2516, "body[2].pose.roll", REAL, OUTPUT, bodyLoad[1].poseAngles[0]) \
+    X(2517, "body[2].pose.pitch", REAL, OUTPUT, bodyLoad[1].poseAngles[1]) \
+    X(2518, "body[2].pose.yaw", REAL, OUTPUT, bodyLoad[1].poseAngles[2]) \
+    X(2519, "body[3].pose.roll", REAL, OUTPUT, bodyLoad[2].poseAngles[0]) \
+    X(2520, "body[3].pose.pitch", REAL, OUTPUT, bodyLoad[2].poseAngles[1]) \
+    X(2521, "body[3].pose.yaw", REAL, OUTPUT, bodyLoad[2].poseAngles[2]) \
+    X(2522, "body[4].pose.roll", REAL, OUTPUT, bodyLoad[3].poseAngles[0]) \
+    X(2523, "body[4].pose.pitch", REAL, OUTPUT, bodyLoad[3].poseAngles[1]) \
+    X(2524, "body[4].pose.yaw", REAL, OUTPUT, bodyLoad[3].poseAngles[2]) \
 
 /* X(member, value): the start value of every numeric parameter (Strings start empty: zero-filled) */
 #define UC_SCHEMA_PARAMETER_DEFAULTS(X) \

@@ -25,6 +25,7 @@ from ucable.fmu import CableFMU
 from .mooring_system import DECKS, _moorpy_system, fmu_parameters, read_system_deck
 
 BUOY = DECKS / "subsurface_buoy.dat"
+BUOY_BODY = DECKS / "subsurface_buoy_body.dat"  # the buoy as a Free body, the legs on its rim
 WATER_DENSITY = 1025.0
 
 
@@ -50,10 +51,35 @@ def free_point_ids(path: Path) -> list:
     return [p.number for p in s.pointList if p.type == 0 and counts[p.number] >= 3]
 
 
+def free_bodies(path: Path) -> dict:
+    """The deck's Free bodies: {ID: [the positions of the points on it in its frame]}."""
+    s = _moorpy_system(path)
+    return {b.number: [np.array(r, float) for r in b.rPointRel] for b in s.bodyList if b.type == 0}
+
+
+def _fmu_rotation(roll, pitch, yaw):  # R = Rx Ry Rz (MoorDyn's, the FMU's)
+    from .mooring_system import body_rotation
+    return body_rotation(roll, pitch, yaw)
+
+
+def _moorpy_rotation(roll, pitch, yaw):  # R = Rz Ry Rx (MoorPy's)
+    cx, sx, cy, sy, cz, sz = np.cos(roll), np.sin(roll), np.cos(pitch), np.sin(pitch), np.cos(yaw), np.sin(yaw)
+    Rx = np.array([[1, 0, 0], [0, cx, -sx], [0, sx, cx]])
+    Ry = np.array([[cy, 0, sy], [0, 1, 0], [-sy, 0, cy]])
+    Rz = np.array([[cz, -sz, 0], [sz, cz, 0], [0, 0, 1]])
+    return Rz @ Ry @ Rx
+
+
+def _body_points(pose, rotation, local) -> list:
+    R = rotation(*pose[3:])
+    return [np.asarray(pose[:3]) + R @ r for r in local]
+
+
 def moorpy_statics(path: Path, current: float = 0.0) -> dict:
-    """MoorPy's equilibrium of the deck's free points, the deck's Vessel points where the deck puts them,
-    in a uniform current along x: each free point's position, each line's tension at AttachB (the fairlead
-    side in the decks here) and AttachA."""
+    """MoorPy's equilibrium of the deck's free points and bodies, the deck's Vessel points where the deck
+    puts them, in a uniform current along x: each free point's position, each free body's pose and the
+    positions of the points on it, each line's tension at AttachB (the fairlead side in the decks here)
+    and AttachA. A body's drag in the current is given to MoorPy as a force at its reference point."""
     deck = read_system_deck(path)
     s = _moorpy_system(path, deck.depth)
     with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
@@ -64,11 +90,20 @@ def moorpy_statics(path: Path, current: float = 0.0) -> dict:
         for p in s.pointList:  # the point's drag at rest in the current (MoorPy has none on points)
             if p.type == 0:
                 p.fExt = np.array([0.5 * WATER_DENSITY * p.CdA * current * abs(current), 0.0, 0.0])
+        for b in s.bodyList:
+            if b.type == 0:
+                b.f6Ext = np.array([0.5 * WATER_DENSITY * b.CdA[0] * current * abs(current), 0, 0, 0, 0, 0])
         s.initialize()
         for _ in range(3):  # MoorPy's line drag is that of the previous solution: iterate it to its fixed point
             s.solveEquilibrium(tol=1e-8, maxIter=2000)
     points = {p.number: np.array(p.r, float) for p in s.pointList}
-    return {"points": {k: points[k] for k in free_point_ids(path)},
+    bodies = free_bodies(path)
+    poses = {b.number: np.array(b.r6, float) for b in s.bodyList if b.number in bodies}
+    points = {k: points[k] for k in free_point_ids(path)}
+    for k, local in bodies.items():
+        for j, x in enumerate(_body_points(poses[k], _moorpy_rotation, local)):
+            points[f"body{k}.{j}"] = x
+    return {"points": points, "poses": poses,
             "fairlead": [float(ln.TB) for ln in s.lineList], "anchor": [float(ln.TA) for ln in s.lineList]}
 
 
@@ -78,13 +113,19 @@ def fmu_statics(fmu, path: Path, current: float = 0.0, **extra) -> dict:
     with CableFMU(fmu, parameters={**fmu_parameters(deck), "lineFile": str(path), **extra}) as c:
         c.initialize(inputs={"current.x": current})
         points = {k: np.array([c.get(f"point[{k}].position.{a}") for a in "xyz"]) for k in free_point_ids(path)}
-        return {"points": points,
+        poses = {k: np.array([c.get(f"body[{k}].pose.{a}") for a in ("x", "y", "z", "roll", "pitch", "yaw")])
+                 for k in free_bodies(path)}
+        for k, local in free_bodies(path).items():
+            for j, x in enumerate(_body_points(poses[k], _fmu_rotation, local)):
+                points[f"body{k}.{j}"] = x
+        return {"points": points, "poses": poses,
                 "fairlead": [c.get(f"line[{k}].fairleadTension") for k in range(1, deck.lines + 1)],
                 "anchor": [c.get(f"line[{k}].anchorTension") for k in range(1, deck.lines + 1)]}
 
 
 def compare(ours: dict, ref: dict) -> dict:
-    """Largest distance between the free points' positions [m] and largest relative tension difference."""
+    """Largest distance between the free points' (and the free bodies' points') positions [m] and largest
+    relative tension difference."""
     distance = max(float(np.linalg.norm(ours["points"][k] - ref["points"][k])) for k in ref["points"])
     tension = max(abs(a - b) / b for key in ("fairlead", "anchor") for a, b in zip(ours[key], ref[key]))
     return {"distance": distance, "tension": float(tension)}

@@ -110,13 +110,13 @@ def test_a_refused_system_deck_names_its_line(make_cable, tmp_path, edit, what):
     assert what in log, log
 
 
-def test_a_free_body_is_refused_with_the_reason(make_cable, tmp_path):
+def test_a_free_body_that_holds_no_line_is_refused_with_the_reason(make_cable, tmp_path):
     text = ms.OC4.read_text().replace(
         "---------------------- LINES", "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* "
         "I* Volume CdA* Ca*\n(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n"
         "1 Free 0 0 0 0 0 0 1e6 0 0 1000 0 0\n---------------------- LINES", 1)
     log = _refused(make_cable, tmp_path, text)
-    assert "body 1 is Free: free bodies are not supported" in log, log
+    assert "line 22: Free body 1 holds no line" in log, log
 
 
 def test_a_coupled_body_of_the_deck_carries_its_points(make_cable, tmp_path):
