@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <random>
 #include <cstring>
 #include <string>
@@ -153,58 +154,108 @@ TEST(MooringDeck, AFreePointWhereThreeLinesMeetIsANodeWhereTheyEnd) {
     EXPECT_EQ(atNode, 3);
 }
 
-// Three weightless elastic legs (their mass that of the water they displace) from anchors on a circle of
-// radius 30 m to a buoy 40 m above them: straight legs 50 m long. With the unstretched length L each
-// pulls with T = EA (50 / L - 1), and the buoy is in equilibrium there when its net buoyancy is 3 T 40/50.
+// Three weightless elastic legs (their mass that of the water they displace) from anchors on a circle to a
+// buoy: straight legs, 30 m across and 40 m up, 50 m long. With the unstretched length L each pulls with
+// T = EA (50 / L - 1), and the buoy is in equilibrium there when its net buoyancy is 3 T 40/50. As a free
+// point the legs meet at it (anchors 30 m out, the point 40 m above them); as a free body (its centre of
+// gravity 1 m below its reference point) they hold its rim 2 m out and 1 m down (anchors 32 m out, the
+// reference point 41 m above them), and it stands upright.
+struct WeightlessLegs {
+    static constexpr double kPi = 3.14159265358979323846, kRho = 1025.0, kG = 9.80665, kEA = 1e7, kL = 49.9;
+    double tension = kEA * (50.0 / kL - 1.0), buoyancy = 3.0 * tension * 0.8;
+
+    std::string deck(bool body) const {
+        const double d = 0.05, mass = body ? 2000.0 : 0.0, volume = (buoyancy / kG + mass) / kRho;
+        const double radius = body ? 32.0 : 30.0;
+        std::string text = "--- MoorDyn Input File ---\nthree weightless legs\n"
+                           "----------------------- LINE TYPES ------------------------------------------\n"
+                           "Name Diam MassDen EA BA/-zeta EI Cd Ca CdAx CaAx\n(-) (m) (kg/m) (N) (N-s/-) (-) (-) (-) (-) (-)\n";
+        char row[512];
+        std::snprintf(row, sizeof row, "leg %.17g %.17g %.17g -1.0 0 1.2 1.0 0.05 0.0\n", d, kRho * kPi / 4.0 * d * d, kEA);
+        text += row;
+        if (body) {
+            text += "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*\n"
+                    "(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n";
+            // the deck's guess: 3.6 m to the side, 9 m low, turned by 5, -3 and 10 degrees
+            std::snprintf(row, sizeof row, "1 Free 3.0 -2.0 -50.0 5 -3 10 %.17g 0|0|-1 1000 %.17g 1.0 1.0\n", mass, volume);
+            text += row;
+        }
+        text += "---------------------- POINTS --------------------------------\nID Attachment X Y Z M V CdA CA\n"
+                "(-) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n";
+        for (int k = 0; k < 3; ++k) {
+            const double a = 2.0 * kPi * k / 3.0;
+            std::snprintf(row, sizeof row, "%d Fixed %.17g %.17g -100.0 0 0 0 0\n", k + 1, radius * std::cos(a),
+                          radius * std::sin(a));
+            text += row;
+        }
+        for (int k = 0; body && k < 3; ++k) {
+            const double a = 2.0 * kPi * k / 3.0;
+            std::snprintf(row, sizeof row, "%d Body1 %.17g %.17g -1.0 0 0 0 0\n", k + 4, 2.0 * std::cos(a), 2.0 * std::sin(a));
+            text += row;
+        }
+        if (!body) {  // the deck's guess: 3.6 m to the side, 10 m low
+            std::snprintf(row, sizeof row, "4 Free 3.0 -2.0 -50.0 0 %.17g 1.0 1.0\n", volume);
+            text += row;
+        }
+        text += "---------------------- LINES --------------------------------------\n"
+                "ID LineType AttachA AttachB UnstrLen NumSegs Outputs\n(-) (-) (-) (-) (m) (-) (-)\n";
+        for (int k = 0; k < 3; ++k) {
+            std::snprintf(row, sizeof row, "%d leg %d %d %.17g 10 -\n", k + 1, k + 1, body ? k + 4 : 4, kL);
+            text += row;
+        }
+        return text + "---------------------- OPTIONS ---------------------------------------\n100 WtrDpth\n"
+                      "------------------------- need this line --------------------------------------\n";
+    }
+
+    // The system of the deck, initialized (its statics solved).
+    std::unique_ptr<uc::MooringSystem> solve(bool body) const {
+        uc::MooringDeck read;
+        std::string error;
+        EXPECT_TRUE(uc::read_mooring_deck(deck(body), 0, read, error)) << error;
+        auto system = std::make_unique<uc::MooringSystem>(system_parameters(), read);
+        EXPECT_TRUE(system->build(error)) << error;
+        UCInputs in;
+        uc_inputs_default(&in);
+        EXPECT_TRUE(system->initialize(0.0, in, error)) << error;
+        return system;
+    }
+
+    void expect_tensions(const UCOutputs& o) const {
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(o.mooringLine[k].fairleadTension, tension, 1e-6 * tension) << "line " << k + 1;
+            EXPECT_NEAR(o.mooringLine[k].anchorTension, tension, 1e-6 * tension) << "line " << k + 1;
+        }
+    }
+};
+
 TEST(MooringSystem, FreePointStaticsOfASymmetricBuoyHaveTheClosedFormAnswer) {
-    const double pi = 3.14159265358979323846, rho = 1025.0, g = 9.80665, d = 0.05, EA = 1e7, L = 49.9;
-    const double tension = EA * (50.0 / L - 1.0), buoyancy = 3.0 * tension * 0.8;
-    char buffer[2048];
-    std::snprintf(buffer, sizeof buffer, R"(--- MoorDyn Input File ---
-three weightless legs
------------------------ LINE TYPES ------------------------------------------
-Name     Diam      MassDen       EA    BA/-zeta    EI    Cd      Ca     CdAx   CaAx
-(-)       (m)      (kg/m)        (N)    (N-s/-)    (-)   (-)     (-)    (-)    (-)
-leg      %.17g    %.17g     %.17g     -1.0      0    1.2     1.0    0.05   0.0
----------------------- POINTS --------------------------------
-ID     Attachment  X        Y         Z      M      V       CdA   CA
-(-)    (-)        (m)      (m)       (m)    (kg)   (m^3)   (m^2)  (-)
-1      Fixed    30.0      0.0     -100.0     0       0       0     0
-2      Fixed    %.17g   %.17g  -100.0     0       0       0     0
-3      Fixed    %.17g   %.17g  -100.0     0       0       0     0
-4      Free      3.0      -2.0      -50.0     0     %.17g    1.0     1.0
----------------------- LINES --------------------------------------
-ID      LineType   AttachA   AttachB  UnstrLen  NumSegs   Outputs
-(-)       (-)        (-)       (-)       (m)      (-)       (-)
-1         leg         1         4        %.17g      10        -
-2         leg         2         4        %.17g      10        -
-3         leg         3         4        %.17g      10        -
----------------------- OPTIONS ---------------------------------------
-100      WtrDpth
-------------------------- need this line --------------------------------------
-)",
-                  d, rho * pi / 4.0 * d * d, EA, 30.0 * std::cos(2.0 * pi / 3.0), 30.0 * std::sin(2.0 * pi / 3.0),
-                  30.0 * std::cos(4.0 * pi / 3.0), 30.0 * std::sin(4.0 * pi / 3.0), buoyancy / (rho * g), L, L, L);
-    uc::MooringDeck deck;
-    std::string error;
-    ASSERT_TRUE(uc::read_mooring_deck(buffer, 0, deck, error)) << error;
-    uc::MooringSystem system(system_parameters(), deck);
-    ASSERT_TRUE(system.build(error)) << error;
-    UCInputs in;
-    uc_inputs_default(&in);
-    ASSERT_TRUE(system.initialize(0.0, in, error)) << error;  // from a guess 3.6 m off to the side, 10 m low
-    ASSERT_EQ(system.n_nodes(), 1);
-    const uc::Vec3 x = system.node_position(0);
+    const WeightlessLegs legs;
+    const auto system = legs.solve(false);
+    ASSERT_EQ(system->n_nodes(), 1);
+    const uc::Vec3 x = system->node_position(0);
     EXPECT_NEAR(x.x(), 0.0, 1e-5);
     EXPECT_NEAR(x.y(), 0.0, 1e-5);
     EXPECT_NEAR(x.z(), -60.0, 1e-5);
-    const UCOutputs& o = system.outputs();
-    for (int k = 0; k < 3; ++k) {
-        EXPECT_NEAR(o.mooringLine[k].fairleadTension, tension, 1e-6 * tension) << "line " << k + 1;
-        EXPECT_NEAR(o.mooringLine[k].anchorTension, tension, 1e-6 * tension) << "line " << k + 1;
+    legs.expect_tensions(system->outputs());
+    for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(system->outputs().pointLoad[3].position[c], x[c]);
+    EXPECT_LE(system->node_residual_norm(), 1e-6 * legs.buoyancy);
+}
+
+TEST(MooringSystem, FreeBodyStaticsOfASymmetricBuoyHaveTheClosedFormAnswer) {
+    const WeightlessLegs legs;
+    const auto system = legs.solve(true);
+    ASSERT_EQ(system->n_nodes(), 1);
+    const uc::Vec3 x = system->node_position(0);
+    EXPECT_NEAR(x.x(), 0.0, 1e-5);
+    EXPECT_NEAR(x.y(), 0.0, 1e-5);
+    EXPECT_NEAR(x.z(), -59.0, 1e-5);
+    EXPECT_LT((system->node_rotation(0) - uc::Mat3::Identity()).cwiseAbs().maxCoeff(), 1e-6);  // upright, unturned
+    legs.expect_tensions(system->outputs());
+    const UCBodyLoad& pose = system->outputs().bodyLoad[0];
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_DOUBLE_EQ(pose.posePosition[c], x[c]);
+        EXPECT_NEAR(pose.poseAngles[c], 0.0, 1e-6);
     }
-    for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(o.pointLoad[3].position[c], x[c]);
-    EXPECT_LE(system.node_residual_norm(), 1e-6 * buoyancy);
 }
 
 TEST(MooringSystem, BodyOrientationIsMoorDynsRollPitchYaw) {
