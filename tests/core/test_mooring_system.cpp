@@ -220,6 +220,15 @@ struct WeightlessLegs {
         return system;
     }
 
+    // The node over the middle of the anchors at height z, the lines' tensions T, the residual left small.
+    void expect_solution(const uc::MooringSystem& system, double z) const {
+        ASSERT_EQ(system.n_nodes(), 1);
+        const uc::Vec3 x = system.node_position(0);
+        EXPECT_LT((x - uc::Vec3(0.0, 0.0, z)).cwiseAbs().maxCoeff(), 1e-5) << x.transpose();
+        expect_tensions(system.outputs());
+        EXPECT_LE(system.node_residual_norm(), 1e-6 * buoyancy);
+    }
+
     void expect_tensions(const UCOutputs& o) const {
         for (int k = 0; k < 3; ++k) {
             EXPECT_NEAR(o.mooringLine[k].fairleadTension, tension, 1e-6 * tension) << "line " << k + 1;
@@ -231,29 +240,18 @@ struct WeightlessLegs {
 TEST(MooringSystem, FreePointStaticsOfASymmetricBuoyHaveTheClosedFormAnswer) {
     const WeightlessLegs legs;
     const auto system = legs.solve(false);
-    ASSERT_EQ(system->n_nodes(), 1);
-    const uc::Vec3 x = system->node_position(0);
-    EXPECT_NEAR(x.x(), 0.0, 1e-5);
-    EXPECT_NEAR(x.y(), 0.0, 1e-5);
-    EXPECT_NEAR(x.z(), -60.0, 1e-5);
-    legs.expect_tensions(system->outputs());
-    for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(system->outputs().pointLoad[3].position[c], x[c]);
-    EXPECT_LE(system->node_residual_norm(), 1e-6 * legs.buoyancy);
+    legs.expect_solution(*system, -60.0);
+    for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(system->outputs().pointLoad[3].position[c], system->node_position(0)[c]);
 }
 
 TEST(MooringSystem, FreeBodyStaticsOfASymmetricBuoyHaveTheClosedFormAnswer) {
     const WeightlessLegs legs;
     const auto system = legs.solve(true);
-    ASSERT_EQ(system->n_nodes(), 1);
-    const uc::Vec3 x = system->node_position(0);
-    EXPECT_NEAR(x.x(), 0.0, 1e-5);
-    EXPECT_NEAR(x.y(), 0.0, 1e-5);
-    EXPECT_NEAR(x.z(), -59.0, 1e-5);
+    legs.expect_solution(*system, -59.0);
     EXPECT_LT((system->node_rotation(0) - uc::Mat3::Identity()).cwiseAbs().maxCoeff(), 1e-6);  // upright, unturned
-    legs.expect_tensions(system->outputs());
     const UCBodyLoad& pose = system->outputs().bodyLoad[0];
     for (int c = 0; c < 3; ++c) {
-        EXPECT_DOUBLE_EQ(pose.posePosition[c], x[c]);
+        EXPECT_DOUBLE_EQ(pose.posePosition[c], system->node_position(0)[c]);
         EXPECT_NEAR(pose.poseAngles[c], 0.0, 1e-6);
     }
 }
