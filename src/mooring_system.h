@@ -3,6 +3,9 @@
 // joined only through prescribed motion do not act on each other, so each is integrated by its own
 // CableSimulation, exactly as a single line is; the system turns the bodies' and points' inputs into each
 // line's end motion and sums the lines' forces into the bodies' loads and their quasi-static stiffness.
+// Free points where three or more lines meet and free bodies (free nodes) end the lines there: their
+// statics are solved by Newton's method on the lines' static solutions, and the free points are stepped
+// with their lines, the node's motion found within each step from its equation of motion.
 #pragma once
 
 #include <array>
