@@ -898,7 +898,8 @@ struct DeckBody {
     int id = 0;
     BodyKind kind = BodyKind::Coupled;
     double pose[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // X0 Y0 Z0 [m], r0 p0 y0 [rad]
-    double mass = 0.0, volume = 0.0, cg[3] = {0.0, 0.0, 0.0}, CdA = 0.0;  // a Free body's
+    double mass = 0.0, volume = 0.0, cg[3] = {0.0, 0.0, 0.0}, CdA = 0.0, Ca = 0.0;  // a Free body's
+    double inertia[3] = {0.0, 0.0, 0.0};
     int row = 0;
 };
 
@@ -961,13 +962,14 @@ bool read_body(const Row& row, int expectedId, DeckBody& b, std::vector<std::str
             return f.fail("a Free body has the fields ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*; this "
                           "row has " + std::to_string(row.tokens.size()));
         }
-        double inertia[3], CdA[3], Ca[3];
+        double CdA[3], Ca[3];
         b.mass = f.non_negative(8, "Mass");
         b.volume = f.non_negative(11, "Volume");
-        if (!f.ok() || !vector_field(f, row, 9, "CG", true, b.cg) || !vector_field(f, row, 10, "I", false, inertia) ||
+        if (!f.ok() || !vector_field(f, row, 9, "CG", true, b.cg) || !vector_field(f, row, 10, "I", false, b.inertia) ||
             !vector_field(f, row, 12, "CdA", false, CdA) || !vector_field(f, row, 13, "Ca", false, Ca))
             return false;
         b.CdA = CdA[0];
+        b.Ca = Ca[0];
         if (CdA[1] != CdA[0] || CdA[2] != CdA[0])
             notes.push_back(at_line(row.number, "body " + std::to_string(b.id) + ": its drag area is taken as CdA = " +
                                                     number_text(CdA[0]) + " m2 in every direction"));
@@ -1112,6 +1114,8 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
         node.point.mass = b.mass;
         node.point.volume = b.volume;
         node.point.CdA = b.CdA;
+        node.point.addedMass = b.Ca * deck.waterDensity * b.volume;  // translational, isotropic
+        std::copy(b.inertia, b.inertia + 3, node.inertia);
         node.point.row = b.row;
         std::copy(b.pose, b.pose + 3, node.position);
         std::copy(b.pose + 3, b.pose + 6, node.angles);

@@ -106,6 +106,7 @@ struct MooringNode {
     bool body = false;                   // a Free body: six unknowns, its points in its frame
     double angles[3] = {0.0, 0.0, 0.0};  // a body's roll, pitch, yaw in the deck [rad] (R = Rx Ry Rz)
     double cg[3] = {0.0, 0.0, 0.0};      // a body's centre of gravity in its frame; its buoyancy acts at its reference
+    double inertia[3] = {0.0, 0.0, 0.0}; // a body's moments of inertia about its centre of gravity, body axes [kg m2]
 };
 
 struct MooringDeck {

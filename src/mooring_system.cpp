@@ -26,8 +26,8 @@ struct SystemHeader {
 
 Vec3 vec3(const double v[3]) { return Vec3(v[0], v[1], v[2]); }
 
-constexpr int kNodeStateDoubles = 27;  // per free node: position, velocity, acceleration, its lines' end inputs,
-                                       // orientation (3 x 3)
+constexpr int kNodeStateDoubles = 34;  // per free node: position, velocity, acceleration, its lines' end inputs,
+                                       // orientation (3 x 3), angular velocity and acceleration, the step
 
 bool on_node(const MooringDeckLine& l) {
     return l.fairlead.kind == MooringEnd::Kind::Node || (!l.farFree && l.far.kind == MooringEnd::Kind::Node);
@@ -88,6 +88,8 @@ bool MooringSystem::build(std::string& error) {
     }
     nodeVelocity_.assign(nodes_.size(), Vec3::Zero());
     nodeAcceleration_.assign(nodes_.size(), Vec3::Zero());
+    nodeOmega_.assign(nodes_.size(), Vec3::Zero());
+    nodeAlpha_.assign(nodes_.size(), Vec3::Zero());
     nodeLineStart_.resize(lines_.size());
     derivativeStamp_.assign(static_cast<size_t>(deck_.bodies), -1);
     derivativeCache_.assign(static_cast<size_t>(deck_.bodies), {});
@@ -101,8 +103,15 @@ MooringSystem::Motion MooringSystem::end_motion(const MooringEnd& end, const UCI
             return {local, Vec3::Zero(), Vec3::Zero(), false};
         case MooringEnd::Kind::Node: {
             const NodeInput& n = nodeInput_[end.node];
-            if (deck_.nodes[end.node].body)  // statics only: at rest
-                return {n.position + nodeRotation_[end.node] * local, Vec3::Zero(), Vec3::Zero(), true};
+            if (deck_.nodes[end.node].body) {  // the point on the body at t + h, as inputs extrapolated there
+                const int k = end.node;
+                const Vec3 arm = nodeRotation_[k] * local, w = nodeOmega_[k];
+                const Vec3 P = nodes_[k] + arm, V = nodeVelocity_[k] + w.cross(arm),
+                           A = nodeAcceleration_[k] + nodeAlpha_[k].cross(arm) + w.cross(w.cross(arm));
+                const double h = nodeStep_;
+                const Vec3 v = V - h * A;
+                return {P - h * v - 0.5 * h * h * A, v, A, true};
+            }
             return {n.position, n.velocity, n.acceleration, true};
         }
         case MooringEnd::Kind::Point: {
@@ -424,6 +433,11 @@ bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, 
 
 bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& error) {
     t0_ = t0;
+    nodeStep_ = 0.0;  // at rest
+    nodeVelocity_.assign(nodes_.size(), Vec3::Zero());
+    nodeAcceleration_.assign(nodes_.size(), Vec3::Zero());
+    nodeOmega_.assign(nodes_.size(), Vec3::Zero());
+    nodeAlpha_.assign(nodes_.size(), Vec3::Zero());
     const int m = nodeUnknowns_;
     Eigen::VectorXd x = Eigen::VectorXd::Zero(m), r(m), rt(m), xt(m);
     for (size_t n = 0; n < nodes_.size(); ++n) x.segment<3>(nodeOffset_[n]) = vec3(deck_.nodes[n].position);
@@ -509,43 +523,64 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
     // the lines stand initialized where the last residual put them: at x, unless a trial came after it
     if (!node_residual(x, in, false, r, error)) return false;
     nodeResidual_ = r.lpNorm<Eigen::Infinity>();
-    nodeVelocity_.assign(nodes_.size(), Vec3::Zero());
-    nodeAcceleration_.assign(nodes_.size(), Vec3::Zero());
     return true;
 }
 
 bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::string& error) {
-    for (const MooringNode& node : deck_.nodes) {
-        if (node.body) {
-            error = "free body " + std::to_string(node.point.id) + ": a mooring system's free bodies have their "
-                    "statics (the initialization) but no dynamics yet";
-            return false;
-        }
-    }
-    const int m = static_cast<int>(3 * nodes_.size());
+    const int m = nodeUnknowns_;
     for (size_t k = 0; k < lines_.size(); ++k) {
         if (!on_node(deck_.lines[k])) continue;
         nodeLineStart_[k].resize(lines_[k]->state_size());
         lines_[k]->save_state(nodeLineStart_[k].data());
     }
-    const std::vector<Vec3> x0 = nodes_, v0 = nodeVelocity_, a0 = nodeAcceleration_;
+    const std::vector<Vec3> x0 = nodes_, v0 = nodeVelocity_, a0 = nodeAcceleration_, w0 = nodeOmega_,
+                            alpha0 = nodeAlpha_;
+    const std::vector<Mat3> R0 = nodeRotation_;
+    nodeStep_ = h;
     // The nodes move as Newmark's average acceleration has them (trapezoidal: second order, no numerical
     // damping, unconditionally stable): with the acceleration A at t + h,
     //   v(t + h) = v0 + h (a0 + A) / 2,   x(t + h) = x0 + h v0 + h^2 (a0 + A) / 4,
     // and the lines' ends follow them (the driven end's quintic from (x0, v0, a0) to that state). A solves
     // the nodes' equations of motion at t + h, (M + added mass) A = weight, buoyancy, drag + the lines'
     // forces at t + h, by Newton's method with the Jacobian by differences of the lines' steps.
+    // A free body turns the same way: its angular velocity and the small rotation over the step,
+    //   w(t + h) = w0 + h (alpha0 + alpha) / 2,   R(t + h) = Rot(h w0 + h^2 (alpha0 + alpha) / 4) R0,
+    // its equations about its reference point with its centre of gravity c = R CG (its inertia I about it):
+    //   M a_cg + m_a a = F,   c x M a_cg + I alpha + w x (I w) = the moment of the loads,
+    //   a_cg = a + alpha x c + w x (w x c).
+    const double g = lines_[0]->model().fluid().gravity;
     auto residual = [&](const Eigen::VectorXd& A, Eigen::VectorXd& r, std::string& why) -> bool {
         std::vector<Vec3> v1(nodes_.size());
         for (size_t n = 0; n < nodes_.size(); ++n) {
-            const Vec3 a = A.segment<3>(3 * n), mean = 0.5 * (a0[n] + a);
+            const MooringNode& node = deck_.nodes[n];
+            const int o = nodeOffset_[n];
+            const Vec3 a = A.segment<3>(o), mean = 0.5 * (a0[n] + a);
             v1[n] = v0[n] + h * mean;
             nodes_[n] = x0[n] + h * v0[n] + 0.5 * h * h * mean;
             // the inputs whose extrapolation to t + h is that state: x + v h + a h^2 / 2, v + a h, a
             const Vec3 v = v1[n] - h * a;
             nodeInput_[n] = {nodes_[n] - h * v - 0.5 * h * h * a, v, a};
-            const LineFilePoint& p = deck_.nodes[n].point;
-            r.segment<3>(3 * n) = node_load(static_cast<int>(n), nodes_[n], in, v1[n]) - (p.mass + p.addedMass) * a;
+            const LineFilePoint& p = node.point;
+            if (!node.body) {
+                r.segment<3>(o) = node_load(static_cast<int>(n), nodes_[n], in, v1[n]) - (p.mass + p.addedMass) * a;
+                continue;
+            }
+            const Vec3 alpha = A.segment<3>(o + 3), spin = 0.5 * (alpha0[n] + alpha);
+            const Vec3 w = w0[n] + h * spin, turn = h * w0[n] + 0.5 * h * h * spin;
+            nodeRotation_[n] = Eigen::AngleAxisd(turn.norm(), turn.norm() > 0.0 ? Vec3(turn.normalized()) : Vec3::UnitX())
+                                   .toRotationMatrix() *
+                               R0[n];
+            nodeVelocity_[n] = v1[n];
+            nodeAcceleration_[n] = a;
+            nodeOmega_[n] = w;
+            nodeAlpha_[n] = alpha;
+            const Mat3& R = nodeRotation_[n];
+            const Vec3 c = R * vec3(node.cg);
+            const Mat3 I = R * Vec3(node.inertia[0], node.inertia[1], node.inertia[2]).asDiagonal() * R.transpose();
+            const Vec3 acg = a + alpha.cross(c) + w.cross(w.cross(c));
+            r.segment<3>(o) = node_load(static_cast<int>(n), nodes_[n], in, v1[n]) - p.mass * acg - p.addedMass * a;
+            r.segment<3>(o + 3) = c.cross(Vec3(0.0, 0.0, -p.mass * g)) - c.cross(p.mass * acg) - I * alpha -
+                                  w.cross(I * w);
         }
         UCInputs li;
         for (size_t k = 0; k < lines_.size(); ++k) {
@@ -558,48 +593,73 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
                 return false;
             }
             const UCOutputs& o = lines_[k]->outputs();
-            if (l.fairlead.kind == MooringEnd::Kind::Node) r.segment<3>(3 * l.fairlead.node) += vec3(o.towForce);
-            if (!l.farFree && l.far.kind == MooringEnd::Kind::Node) r.segment<3>(3 * l.far.node) += vec3(o.endForce);
+            const MooringEnd* ends[2] = {&l.fairlead, l.farFree ? nullptr : &l.far};
+            const Vec3 force[2] = {vec3(o.towForce), vec3(o.endForce)};
+            for (int e = 0; e < 2; ++e) {
+                if (!ends[e] || ends[e]->kind != MooringEnd::Kind::Node) continue;
+                const int n = ends[e]->node, at = nodeOffset_[n];
+                r.segment<3>(at) += force[e];
+                if (deck_.nodes[n].body)
+                    r.segment<3>(at + 3) += (nodeRotation_[n] * vec3(ends[e]->position)).cross(force[e]);
+            }
         }
         for (size_t n = 0; n < nodes_.size(); ++n) nodeVelocity_[n] = v1[n];
         return true;
     };
     Eigen::VectorXd A(m), r(m), rp(m);
-    for (size_t n = 0; n < nodes_.size(); ++n) A.segment<3>(3 * n) = a0[n];
+    for (size_t n = 0; n < nodes_.size(); ++n) {
+        A.segment<3>(nodeOffset_[n]) = a0[n];
+        if (deck_.nodes[n].body) A.segment<3>(nodeOffset_[n] + 3) = alpha0[n];
+    }
     if (!residual(A, r, error)) return false;
-    // the Jacobian by one-sided differences, each moving the nodes by 1e-4 m at t + h
+    // the Jacobian by one-sided differences, each moving the nodes by 1e-4 m (a body: turning it by 1e-4
+    // rad) at t + h; taken again where the corrections shrink slowly (a body's rotation, a snap)
     const double d = 4e-4 / (h * h);
     Eigen::MatrixXd J(m, m);
-    for (int j = 0; j < m; ++j) {
-        Eigen::VectorXd Ap = A;
-        Ap[j] += d;
-        if (!residual(Ap, rp, error)) return false;
-        J.col(j) = (rp - r) / d;
-    }
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(J);
+    Eigen::FullPivLU<Eigen::MatrixXd> lu;
+    auto jacobian = [&](std::string& why) -> bool {
+        for (int j = 0; j < m; ++j) {
+            Eigen::VectorXd Ap = A;
+            Ap[j] += d;
+            if (!residual(Ap, rp, why)) return false;
+            J.col(j) = (rp - r) / d;
+        }
+        lu.compute(J);
+        return true;
+    };
+    if (!jacobian(error)) return false;
+    int refreshed = 0;
     // Converged when a correction moves the nodes by less than kNodeTolerance at t + h, or when the
     // corrections stop shrinking below 100 times that: the lines' forces carry the noise of their
     // integrators' error control (each trial steps them anew), which the corrections then follow.
     double moved = HUGE_VAL;
     bool converged = false;
     for (nodeIterations_ = 1; nodeIterations_ <= kNodeIterations && !converged; ++nodeIterations_) {
-        const Eigen::VectorXd dA = -lu.solve(r);
+        Eigen::VectorXd dA = -lu.solve(r);
         if (!dA.allFinite()) {
             error = "the free points' equations of motion: singular Jacobian";
             return false;
         }
+        // a correction moves the nodes at t + h by at most kMaxCorrection (m, or rad for a body's turn):
+        // trials far off would make the lines' integrators work through motions they never have
+        const double reach = 0.25 * h * h * dA.lpNorm<Eigen::Infinity>();
+        if (reach > kMaxCorrection) dA *= kMaxCorrection / reach;
         A += dA;
         if (!residual(A, r, error)) return false;  // the lines stand at the last A
         const double last = moved;
         moved = 0.25 * h * h * dA.lpNorm<Eigen::Infinity>();
         converged = moved < kNodeTolerance || (moved < 100.0 * kNodeTolerance && moved > 0.5 * last);
+        if (!converged && moved > 0.25 * last && refreshed < kJacobianRefreshes) {
+            ++refreshed;
+            if (!jacobian(error)) return false;  // the next correction steps the lines anew from A
+        }
     }
     if (!converged) {
         error = "the free points' equations of motion did not converge in " + std::to_string(kNodeIterations) +
                 " iterations (last correction " + std::to_string(moved) + " m)";
         return false;
     }
-    for (size_t n = 0; n < nodes_.size(); ++n) nodeAcceleration_[n] = A.segment<3>(3 * n);
+    for (size_t n = 0; n < nodes_.size(); ++n) nodeAcceleration_[n] = A.segment<3>(nodeOffset_[n]);
     return true;
 }
 
@@ -794,6 +854,10 @@ void MooringSystem::save_state(void* buffer) {
         }
         std::memcpy(out, nodeRotation_[n].data(), 9 * sizeof(double));
         out += 9 * sizeof(double);
+        const double more[7] = {nodeOmega_[n].x(), nodeOmega_[n].y(), nodeOmega_[n].z(), nodeAlpha_[n].x(),
+                                nodeAlpha_[n].y(), nodeAlpha_[n].z(), nodeStep_};
+        std::memcpy(out, more, sizeof more);
+        out += sizeof more;
     }
     for (auto& line : lines_) {
         line->save_state(out);
@@ -855,6 +919,9 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
         const double* at = nodeState.data() + kNodeStateDoubles * n;
         for (int i = 0; i < 6; ++i) *parts[i] = Vec3(at + 3 * i);
         nodeRotation_[n] = Eigen::Map<const Mat3>(at + 18);
+        nodeOmega_[n] = Vec3(at + 27);
+        nodeAlpha_[n] = Vec3(at + 30);
+        nodeStep_ = at[33];
     }
     outputs_ = outputs;
     lastInputs_ = lastInputs;

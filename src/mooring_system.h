@@ -4,7 +4,7 @@
 // CableSimulation, exactly as a single line is; the system turns the bodies' and points' inputs into each
 // line's end motion and sums the lines' forces into the bodies' loads and their quasi-static stiffness.
 // Free points where three or more lines meet and free bodies (free nodes) end the lines there: their
-// statics are solved by Newton's method on the lines' static solutions, and the free points are stepped
+// statics are solved by Newton's method on the lines' static solutions, and the free nodes are stepped
 // with their lines, the node's motion found within each step from its equation of motion.
 #pragma once
 
@@ -61,7 +61,8 @@ public:
     // The free points' statics stop when a Newton step with the lines' solutions moves them less [m].
     // (and the dynamics' when a Newton correction moves them less), in at most kNodeIterations.
     static constexpr double kNodeTolerance = 1e-6;
-    static constexpr int kNodeIterations = 12;
+    static constexpr int kNodeIterations = 20, kJacobianRefreshes = 4;
+    static constexpr double kMaxCorrection = 0.2;
     static constexpr double kMaxTurn = 0.2;  // [rad] a free body turns by at most this per Newton step
 
     // The free nodes (Free points where three or more lines meet): their positions, found at the
@@ -120,6 +121,8 @@ private:
     std::vector<Vec3> nodes_;            // the free nodes' positions
     std::vector<Vec3> nodeVelocity_, nodeAcceleration_;
     std::vector<Mat3> nodeRotation_;     // a free body's orientation (identity for a point)
+    std::vector<Vec3> nodeOmega_, nodeAlpha_;  // a free body's angular velocity and acceleration
+    double nodeStep_ = 0.0;              // the step the nodes' state is at the end of (0: at rest)
     std::vector<int> nodeOffset_;        // of each node's unknowns (3 for a point, 6 for a body)
     int nodeUnknowns_ = 0;
     struct NodeInput {                   // what the lines at node n are given as their end's inputs

@@ -181,14 +181,27 @@ def refined_deck(path: Path, directory: Path, segments: int) -> Path:
     return out
 
 
+def displaced_body_deck(path: Path, directory: Path, body: int, pose) -> Path:
+    """The deck with free body `body` placed at `pose` (x, y, z [m], roll, pitch, yaw [deg]) and TmaxIC 0."""
+    text = Path(path).read_text()
+    row = re.search(rf"^{body}(\s+)Free(\s+\S+){{6}}(.*)$", text, flags=re.M)
+    text = text[:row.start()] + f"{body}{row.group(1)}Free " + " ".join(f"{v:.6f}" for v in pose) + \
+        f"{row.group(3)}" + text[row.end():]
+    text = re.sub(r"^\S+(\s+TmaxIC)", r"0.0\1", text, flags=re.M | re.I)
+    out = Path(directory) / f"{Path(path).stem}_released{Path(path).suffix}"
+    out.write_text(text)
+    return out
+
+
 def fmu_release(fmu, path: Path, point: int, t_end: float, comm_step: float = 0.1, progress=None,
-                **extra) -> dict:
+                body: int = 0, **extra) -> dict:
     """The FMU from the deck's start: every line's tension at AttachB (the buoy) and the point's
-    position at each communication point."""
+    position (or with body, that free body's pose) at each communication point."""
     deck = read_system_deck(path)
     times = np.arange(0.0, t_end + 0.5 * comm_step, comm_step)
     names = [f"line[{k}].fairleadTension" for k in range(1, deck.lines + 1)] + \
-        [f"point[{point}].position.{a}" for a in "xyz"]
+        ([f"body[{body}].pose.{a}" for a in ("x", "y", "z", "roll", "pitch", "yaw")] if body else
+         [f"point[{point}].position.{a}" for a in "xyz"])
     out = np.zeros((len(times), len(names)))
     with CableFMU(fmu, parameters={**fmu_parameters(deck), "lineFile": str(path), **extra}) as c:
         c.initialize()
@@ -200,7 +213,8 @@ def fmu_release(fmu, path: Path, point: int, t_end: float, comm_step: float = 0.
             if progress:
                 progress(times[k + 1])
         cpu = time.process_time() - cpu0
-    return {"t": times, "tension": out[:, :deck.lines], "position": out[:, deck.lines:], "cpu": cpu}
+    return {"t": times, "tension": out[:, :deck.lines], ("pose" if body else "position"): out[:, deck.lines:],
+            "cpu": cpu}
 
 
 # MoorDyn runs in a process of its own that loads nothing else: loaded after MoorPy or the FMU's
