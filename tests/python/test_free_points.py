@@ -123,10 +123,14 @@ def test_the_released_free_body_swings_and_settles_at_its_equilibrium(fmu_file, 
     assert np.max(np.abs(run["pose"][run["t"] >= 40.0, 3:5])) < 0.02  # upright again (from 0.087 rad)
 
 
-def test_a_saved_state_of_the_buoy_continues_bit_for_bit(make_cable, tmp_path):
-    path = _released(tmp_path)
+@pytest.mark.parametrize("body", [False, True], ids=["free-point", "free-body"])
+def test_a_saved_state_of_the_buoy_continues_bit_for_bit(make_cable, tmp_path, body):
+    path = (fp.displaced_body_deck(fp.BUOY_BODY, tmp_path, 1, (*DISPLACED, 5.0, -3.0, 0.0)) if body
+            else _released(tmp_path))
     params = {**ms.fmu_parameters(ms.read_system_deck(path)), "lineFile": str(path)}
-    names = [f"line[{k}].fairleadTension" for k in (1, 2, 3)] + [f"point[4].position.{a}" for a in "xyz"]
+    names = [f"line[{k}].fairleadTension" for k in (1, 2, 3)] + (
+        [f"body[1].pose.{a}" for a in ("x", "y", "z", "roll", "pitch", "yaw")] if body else
+        [f"point[4].position.{a}" for a in "xyz"])
 
     def run(cable, start, steps):
         out = []
