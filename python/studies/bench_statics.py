@@ -37,6 +37,7 @@ REFERENCE_BALANCE = 1e-5       # MoorPy's free points balanced to this fraction 
 OFF_BOUND = 0.01               # a run off by more than this without an error is the worst defect
 ACCEPT_INIT_RATE = 0.995       # the acceptance of the static solver (docs/statics_benchmark.md)
 ACCEPT_P95, ACCEPT_MAX = 0.002, 0.005
+DEFAULT_GRADING = 2  # the FMU's default meshGrading: graded along the whole line
 STIFFNESS_RANGE = (3e5, 1e8)  # seabedStiffness of the draw [N/m2], log-uniform
 STIFFNESS_BANDS = [(3e5, 1e6), (1e6, 1e7), (1e7, 1e8 * (1 + 1e-12))]
 REGIMES = ["touchdown", "suspended", "nearly taut"]
@@ -313,7 +314,7 @@ def element_counts(case: Case, n_elements: int) -> list:
     return [int(c) for c in counts]
 
 
-def fmu_parameters(case: Case, n_elements: int, grading: int = 1) -> dict:
+def fmu_parameters(case: Case, n_elements: int, grading: int = DEFAULT_GRADING) -> dict:
     p = {"meshGrading": grading, "bottomEnd": 1, "anchor.x": case.anchor_x, "anchor.y": 0.0, "anchor.z": -case.depth,
          "waterDepth": case.depth, "enableSeabed": True, "seabedStiffness": case.stiffness,
          "seabedFriction": 0.0, "enableBending": False, "enableCompression": False,
@@ -341,7 +342,7 @@ def fmu_parameters(case: Case, n_elements: int, grading: int = 1) -> dict:
 FMU_OUTPUTS = ["towTension", "endTension", "tension[21]", "endForce.z"]
 
 
-def fmu_run(fmu, case: Case, n_elements: int, grading: int = 1) -> dict:
+def fmu_run(fmu, case: Case, n_elements: int, grading: int = DEFAULT_GRADING) -> dict:
     """The FMU's static initialization (initMode 0): success, or the first error message."""
     from ucable.fmu import CableFMU
 
@@ -361,7 +362,7 @@ def fmu_run(fmu, case: Case, n_elements: int, grading: int = 1) -> dict:
 
 
 # ----------------------------------------------------------------------------- the benchmark
-def run_benchmark(fmu, cases: list, meshes: list, progress=None, grading: int = 1) -> list:
+def run_benchmark(fmu, cases: list, meshes: list, progress=None, grading: int = DEFAULT_GRADING) -> list:
     """One record per line and mesh: the line, its reference (or why it failed) and the FMU's run."""
     records = []
     for i, case in enumerate(cases):
@@ -388,7 +389,7 @@ def run_benchmark(fmu, cases: list, meshes: list, progress=None, grading: int = 
     return records
 
 
-def stiffness_pairs(fmu, cases: list, meshes: list, grading: int = 1, progress=None) -> dict:
+def stiffness_pairs(fmu, cases: list, meshes: list, grading: int = DEFAULT_GRADING, progress=None) -> dict:
     """Each line at the softest and the stiffest seabed of the draw (3e5 and 1e8 N/m2), no reference:
     per mesh, how many start at both, at neither, only at the soft one and only at the stiff one, and
     the lines (id, mesh) that start on the soft seabed but not on the stiff one."""
@@ -561,9 +562,9 @@ def parse_args(argv):
     p.add_argument("--elements", type=int, nargs="+", default=[10, 20, 40],
                    help="element counts of the whole line (default 10 20 40)")
     p.add_argument("--seed", type=int, default=2026, help="seed of the draw (default 2026)")
-    p.add_argument("--grading", type=int, choices=(0, 1, 2), default=1,
-                   help="the FMU's meshGrading: 0 equal elements, 1 graded in each section (default), "
-                        "2 graded along the line")
+    p.add_argument("--grading", type=int, choices=(0, 1, 2), default=DEFAULT_GRADING,
+                   help="the FMU's meshGrading: 0 equal elements, 1 graded in each section, "
+                        "2 graded along the line (default, as the FMU's)")
     p.add_argument("--stiffness-pairs", action="store_true",
                    help="instead of the comparison with MoorPy: start every line on the softest and the stiffest "
                         "seabed of the draw and count where the stiff one fails and the soft one does not")
@@ -634,12 +635,12 @@ def main(argv=None) -> int:
                                 progress=lambda i, cid: bar.update(i, f"line {cid}"))
         bar.close(f"{len(cases)} lines x {len(args.elements)} meshes x 2 seabeds")
         text = (f"Measured with `scripts/bench_statics --n {args.n} --elements {' '.join(map(str, args.elements))} "
-                f"--seed {args.seed} --stiffness-pairs" + (f" --grading {args.grading}`" if args.grading != 1 else "`")
+                f"--seed {args.seed} --stiffness-pairs" + (f" --grading {args.grading}`" if args.grading != DEFAULT_GRADING else "`")
                 + ":\n\n" + pairs_markdown(pairs, STIFFNESS_RANGE))
         print(text)
         if args.doc is not None:
             write_section(args.doc, text, "scripts/bench_statics --stiffness-pairs"
-                          + (f" --grading {args.grading}" if args.grading != 1 else ""))
+                          + (f" --grading {args.grading}" if args.grading != DEFAULT_GRADING else ""))
         return 0
     records = run_benchmark(args.fmu, list(cases.values()), args.elements,
                             progress=lambda i, cid: bar.update(i, f"line {cid}"), grading=args.grading)
@@ -652,13 +653,13 @@ def main(argv=None) -> int:
     data = summary(records)
     command = "scripts/bench_statics " + " ".join(
         [f"--n {args.n}", "--elements " + " ".join(map(str, args.elements)), f"--seed {args.seed}"]
-        + ([f"--grading {args.grading}"] if args.grading != 1 else []))
+        + ([f"--grading {args.grading}"] if args.grading != DEFAULT_GRADING else []))
     text = markdown(data, command, _shown(args.fmu), cases)
     print(text)
     print(f"\n({time.perf_counter() - t0:.0f} s wall)")
     if args.doc is not None:
-        # one generated section per grading: mode 1 (the default) and the others side by side
-        write_section(args.doc, text, "scripts/bench_statics" + (f" --grading {args.grading}" if args.grading != 1 else ""))
+        # one generated section per grading: the default and the others side by side
+        write_section(args.doc, text, "scripts/bench_statics" + (f" --grading {args.grading}" if args.grading != DEFAULT_GRADING else ""))
     return 0
 
 

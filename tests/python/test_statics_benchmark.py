@@ -143,18 +143,19 @@ def test_no_run_is_off_by_more_than_one_percent_without_an_error(initialized):
 
 @pytest.mark.parametrize("line_id", [107, 217, 58])
 def test_a_refused_coarse_mesh_names_a_finer_one_that_starts_right(fmu_file, line_id):
-    """A line whose touchdown bends within a fraction of an element is refused at 10 elements (the
-    state misses the exact profile by more than 1 %), and so is line 58, whose buoy lifts an arch
-    of a catenary parameter of 10 m between two touchdowns on a bottom chain of 3 elements. The
-    refusal names the mesh on which the same line starts; set as named, it initializes within 1 %
-    of MoorPy at both ends (the bound for a start given without an error)."""
+    """Graded in each section (meshGrading 1), a line whose touchdown bends within a fraction of an
+    element is refused at 10 elements (the state misses the exact profile by more than 1 %), and so
+    is line 58, whose buoy lifts an arch of a catenary parameter of 10 m between two touchdowns on a
+    bottom chain of 3 elements. The refusal names the mesh on which the same line starts; set as
+    named, it initializes within 1 % of MoorPy at both ends (the bound for a start given without an
+    error)."""
     pytest.importorskip("moorpy")
     case = B.draw_case(SEED, line_id)
-    coarse = B.fmu_run(fmu_file, case, 10)
+    coarse = B.fmu_run(fmu_file, case, 10, grading=1)
     assert not coarse["ok"]
     named = dict(re.findall(r"((?:section\[\d\]\.)?nElements) = (\d+)", coarse["message"].split("; with ")[-1]))
     assert named, coarse["message"]
-    parameters = B.fmu_parameters(case, 10)
+    parameters = B.fmu_parameters(case, 10, grading=1)
     parameters.update({name: int(n) for name, n in named.items()})
     c = CableFMU(fmu_file, parameters=parameters)
     try:
@@ -184,12 +185,8 @@ def test_grading_along_the_line_starts_sections_on_the_seabed_at_10_elements(fmu
 
 # Lines where a buoy lifts a very slack line between two touchdowns (an arch over the buoy and the
 # line resting on either side of it): the static profile solves them exactly, and the FMU starts
-# from it. At 20 elements line 58's bottom chain has 6 elements in proportion to its length, one of
-# them for a half of the arch over the buoy (61 degrees of turn on a catenary parameter of 10 m):
-# its anchor tension is 0.68 % low, within the 1 % the check against the profile allows but not the
-# 0.5 % of the acceptance (docs/statics_benchmark.md).
+# from it.
 BUOY_ARCH_LINES = [58, 295, 71, 325, 356]
-BUOY_ARCH_GAPS = {(58, "anchor")}
 
 
 @pytest.fixture(scope="module")
@@ -199,10 +196,7 @@ def buoy_arch_records(fmu_file):
                                                 [ELEMENTS])}
 
 
-@pytest.mark.parametrize("line_id,end", [
-    pytest.param(k, end, marks=[pytest.mark.xfail(strict=True, reason="6 elements on the bottom chain: -0.68 %")]
-                 if (k, end) in BUOY_ARCH_GAPS else [])
-    for k in BUOY_ARCH_LINES for end in ("fairlead", "anchor")])
+@pytest.mark.parametrize("line_id,end", [(k, end) for k in BUOY_ARCH_LINES for end in ("fairlead", "anchor")])
 def test_a_buoy_between_two_touchdowns_starts_within_half_a_percent_of_moorpy(buoy_arch_records, line_id, end):
     """Before, the profile of these lines was not found: the FMU started from a parabola and its
     state was refused (not holding together at the anchor, folded, or stalled). Now each initializes
