@@ -132,7 +132,8 @@ fmi2Status uc_sim_do_step(UCInstance* inst, double tc, double h) {
     fmi2Status status = check_step_arguments(inst, tc, h);
     if (status != fmi2OK) return status;
     inst->msg[0] = '\0';
-    if (!inst->towMismatchWarned) {
+    /* a mooring system's lines take their fairleads from the body and point inputs, not tow.* */
+    if (!inst->towMismatchWarned && !inst->coreParams.mooringSystem) {
         double p[3];
         uc_tow_position(inst->cable, p);
         const double dx = inst->inputs.tow[0] - p[0], dy = inst->inputs.tow[1] - p[1], dz = inst->inputs.tow[2] - p[2];

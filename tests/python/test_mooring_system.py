@@ -79,6 +79,15 @@ def test_a_saved_state_continues_bit_for_bit_also_in_a_new_instance(make_cable):
     assert _run(fresh, 10, start=10).tobytes() == first.tobytes()
 
 
+def test_a_system_does_not_warn_about_the_unused_tow_inputs(make_cable):
+    """The lines of a system take their fairleads from the body inputs; tow.* (left at 0) is not a
+    tow point that jumps."""
+    c = make_cable(parameters=ms.fmu_parameters(DECK))
+    c.initialize()
+    _run(c, 3)
+    assert not [m for s, _, m in c.messages if s in ("WARNING", "ERROR")]
+
+
 def test_a_single_line_is_line_1_of_a_system(make_cable):
     c = make_cable(parameters={"lineFile": str(ms.DECKS / "chain.dat"), "enableSeabed": True})
     c.initialize(inputs={"tow.z": -70.0})
