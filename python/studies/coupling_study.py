@@ -123,6 +123,20 @@ def stability_old(h: float, M: float, chain: Chain, ordering: str) -> float:
     return _spectral_radius(step, dim)
 
 
+def end_mass_system(chain: Chain, me: float, damping: float) -> np.ndarray:
+    """The chain's free dynamics with its end node (x_n, v_n) of mass `me` under a damping force
+    -damping v_n, and one more state held over the step (its column in v_n's row left to the caller)."""
+    f = chain.n - 1
+    A = np.zeros((2 * f + 3, 2 * f + 3))
+    A[:2 * f, :2 * f + 2] = chain.free_dynamics()
+    A[2 * f, 2 * f + 1] = 1.0
+    A[2 * f + 1, f - 1] = chain.k / me
+    A[2 * f + 1, 2 * f - 1] = chain.c / me
+    A[2 * f + 1, 2 * f] = -chain.k / me
+    A[2 * f + 1, 2 * f + 1] = -(chain.c + damping) / me
+    return A
+
+
 def stability_new(h: float, M: float, chain: Chain, cp: float, damping: float, ordering: str) -> float:
     """Spectral radius of the implicit coupling's one-step map: the body's mass M on the end node inside
     the cable's implicit step (solved exactly here), the partner's force -cp v given at the velocity v_r
@@ -132,13 +146,7 @@ def stability_new(h: float, M: float, chain: Chain, cp: float, damping: float, o
     D = 0 is a partner that gives none (its force lags)."""
     f = chain.n - 1
     me = chain.m / 2 + M
-    A = np.zeros((2 * f + 3, 2 * f + 3))  # chain, end (x_n, v_n), v_r held
-    A[:2 * f, :2 * f + 2] = chain.free_dynamics()
-    A[2 * f, 2 * f + 1] = 1.0
-    A[2 * f + 1, f - 1] = chain.k / me
-    A[2 * f + 1, 2 * f - 1] = chain.c / me
-    A[2 * f + 1, 2 * f] = -chain.k / me
-    A[2 * f + 1, 2 * f + 1] = -(chain.c + damping) / me
+    A = end_mass_system(chain, me, damping)  # chain, end (x_n, v_n), v_r held
     A[2 * f + 1, 2 * f + 2] = (damping - cp) / me
     E = expm(A * h)
     jac = ordering == "jacobi"

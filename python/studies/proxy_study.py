@@ -35,7 +35,7 @@ from ucable.fmu import FMICallException
 from ucable.paths import REPO_ROOT, require_fmu
 from ucable.progress import ProgressBar
 
-from .coupling_study import POSITION_BOUND, TENSION_BOUND, Chain, _compare, _spectral_radius
+from .coupling_study import POSITION_BOUND, TENSION_BOUND, Chain, _compare, _spectral_radius, end_mass_system
 from .doc_section import write_section
 
 MASSES = [50.0, 200.0, 400.0, 1000.0, 2000.0]
@@ -81,13 +81,7 @@ def stability_proxy(h: float, M: float, chain: Chain, cb: float, ordering: str, 
     Mp = M * (1.0 + inertia_error)
     cp = learned * cb
     me = chain.m / 2 + Mp
-    A = np.zeros((2 * f + 3, 2 * f + 3))  # chain, proxy (x, v), the estimate's constant part held
-    A[:2 * f, :2 * f + 2] = chain.free_dynamics()
-    A[2 * f, 2 * f + 1] = 1.0
-    A[2 * f + 1, f - 1] = chain.k / me
-    A[2 * f + 1, 2 * f - 1] = chain.c / me
-    A[2 * f + 1, 2 * f] = -chain.k / me
-    A[2 * f + 1, 2 * f + 1] = -(chain.c + cp) / me
+    A = end_mass_system(chain, me, cp)  # chain, proxy (x, v), the estimate's constant part held
     A[2 * f + 1, 2 * f + 2] = 1.0 / me
     E = expm(A * h)
     B = _body_map(M, cb, h)
