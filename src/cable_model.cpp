@@ -648,15 +648,6 @@ Mat3 PointBody::inertia() const {
     return M;
 }
 
-namespace {
-
-Mat3 cross_matrix(const Vec3& v) {
-    Mat3 m;
-    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-    return m;
-}
-
-}  // namespace
 
 void add_point_body_residual(const PointBody& body, const FluidProps& fluid, const CurrentField& current, WaveExpansion* waveCache,
                              const double* r, const double* rd, const double* rdd, Vec3& R) {
@@ -730,7 +721,7 @@ void CableModel::end_node_jacobian(const double* X, const double* Xd, const doub
     if (!loads.endCouple.isZero(0.0)) {
         const Vec3 rp = Eigen::Map<const Vec3>(X + gN + 3);
         const double n2 = rp.squaredNorm();
-        K.block<3, 3>(3, 3) = -cross_matrix(loads.endCouple) * (Mat3::Identity() / n2 - 2.0 * rp * rp.transpose() / (n2 * n2));
+        K.block<3, 3>(3, 3) = -skew(loads.endCouple) * (Mat3::Identity() / n2 - 2.0 * rp * rp.transpose() / (n2 * n2));
     }
     C.block<3, 3>(0, 0) = loads.endLoadDamping;
     if (params_.bottomEnd == UC_BOTTOM_PROXY) {

@@ -272,16 +272,6 @@ double bending_energy(const ElementTables& e, double EI, const double* X) {
     return energy;
 }
 
-namespace {
-
-Mat3 skew(const Vec3& v) {
-    Mat3 m;
-    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-    return m;
-}
-
-}  // namespace
-
 void add_torque_force(const ElementTables& e, double H, const double* X, double* R) {
     // (r' x r'') dN_a is a polynomial of degree 5: the 5 axial points integrate it exactly.
     for (int g = 0; g < ElementTables::nAxial; ++g) {

@@ -68,6 +68,13 @@ struct ElementTables {
 // contactSpacing > 0: seabed contact sampled at most that far apart (see ElementTables::contact).
 ElementTables make_element_tables(double length, int loadPoints, int axialModes, double contactSpacing = 0.0);
 
+// The matrix of the cross product with v: skew(v) w = v x w.
+inline Mat3 skew(const Vec3& v) {
+    Mat3 m;
+    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+    return m;
+}
+
 // Interpolates a 3-vector field from the element's 12 nodal values.
 inline Vec3 interpolate(const double (&N)[4], const double* X) {
     Vec3 r = Vec3::Zero();

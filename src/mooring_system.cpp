@@ -701,21 +701,15 @@ bool MooringSystem::body_stiffness(int b, const UCInputs& in, double K[36], std:
 
 namespace {
 
-Mat3 cross_matrix(const Vec3& a) {
-    Mat3 m;
-    m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-    return m;
-}
-
 // d(R r)/d(roll, pitch, yaw) for R = Rx Ry Rz, as the columns of a 3x3 matrix.
 Mat3 rotation_derivative(const double a[3], const Vec3& r) {
     const Mat3 Rx = Eigen::AngleAxisd(a[0], Vec3::UnitX()).toRotationMatrix();
     const Mat3 Ry = Eigen::AngleAxisd(a[1], Vec3::UnitY()).toRotationMatrix();
     const Mat3 Rz = Eigen::AngleAxisd(a[2], Vec3::UnitZ()).toRotationMatrix();
     Mat3 d;
-    d.col(0) = cross_matrix(Vec3::UnitX()) * Rx * Ry * Rz * r;
-    d.col(1) = Rx * cross_matrix(Vec3::UnitY()) * Ry * Rz * r;
-    d.col(2) = Rx * Ry * cross_matrix(Vec3::UnitZ()) * Rz * r;
+    d.col(0) = skew(Vec3::UnitX()) * Rx * Ry * Rz * r;
+    d.col(1) = Rx * skew(Vec3::UnitY()) * Ry * Rz * r;
+    d.col(2) = Rx * Ry * skew(Vec3::UnitZ()) * Rz * r;
     return d;
 }
 
@@ -771,12 +765,12 @@ bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error)
             const Mat3 dArm = rotation_derivative(body.rotation, vec3(ends[e]->position));
             T[e].block<3, 3>(0, 0).setIdentity();
             T[e].block<3, 3>(0, 3) = dArm;
-            T[e].block<3, 3>(3, 3) = cross_matrix(w) * dArm;
+            T[e].block<3, 3>(3, 3) = skew(w) * dArm;
             T[e].block<3, 3>(3, 6).setIdentity();
-            T[e].block<3, 3>(3, 9) = -cross_matrix(arm);
+            T[e].block<3, 3>(3, 9) = -skew(arm);
             if (accelerations) {
-                T[e].block<3, 3>(6, 3) = (cross_matrix(alpha) + cross_matrix(w) * cross_matrix(w)) * dArm;
-                T[e].block<3, 3>(6, 9) = -cross_matrix(w.cross(arm)) - cross_matrix(w) * cross_matrix(arm);
+                T[e].block<3, 3>(6, 3) = (skew(alpha) + skew(w) * skew(w)) * dArm;
+                T[e].block<3, 3>(6, 9) = -skew(w.cross(arm)) - skew(w) * skew(arm);
             }
             dPosition[e] = T[e].topRows<3>() + velocityWeight * T[e].middleRows<3>(3) +
                            (accelerations ? 0.5 * h * h : 0.0) * T[e].bottomRows<3>();
@@ -807,7 +801,7 @@ bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error)
             const Mat312 dForce = lineD.middleRows<3>(3 * e);  // this end's force per unit body input
             const Vec3 arm = at[e] - references_[b - 1].position;
             D.topRows<3>() += dForce;
-            D.bottomRows<3>() += cross_matrix(arm) * dForce - cross_matrix(force[e]) * (dPosition[e] - dReference);
+            D.bottomRows<3>() += skew(arm) * dForce - skew(force[e]) * (dPosition[e] - dReference);
         }
     }
     for (int i = 0; i < 6; ++i)
