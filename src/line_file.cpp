@@ -898,27 +898,52 @@ struct DeckBody {
     int id = 0;
     BodyKind kind = BodyKind::Coupled;
     double pose[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // X0 Y0 Z0 [m], r0 p0 y0 [rad]
-    double mass = 0.0, volume = 0.0, cg[3] = {0.0, 0.0, 0.0}, CdA = 0.0, Ca = 0.0;  // a Free body's
+    double mass = 0.0, volume = 0.0, cg[3] = {0.0, 0.0, 0.0};  // a Free body's
     double inertia[3] = {0.0, 0.0, 0.0};
+    double CdA[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // body axes: translations x, y, z, rotations about them
+    double Ca[3] = {0.0, 0.0, 0.0};                  // translations in body axes
     int row = 0;
 };
 
-// A field of one number or three separated by '|' (MoorDyn's CG*, I*, CdA*, Ca*); one number c is
-// (0, 0, c) for the centre of gravity (oneIsZ), (c, c, c) otherwise.
-bool vector_field(Fields& f, const Row& row, size_t i, const char* name, bool oneIsZ, double out[3]) {
+// The numbers of a field separated by '|' (MoorDyn's CG*, I*, CdA*, Ca*), of one of the counts allowed.
+bool bar_numbers(Fields& f, const Row& row, size_t i, const char* name, std::initializer_list<size_t> counts,
+                 std::vector<double>& v) {
     if (i >= row.tokens.size()) return f.fail(std::string("a Free body needs its ") + name);
-    std::vector<double> v;
+    v.clear();
     std::string_view t = row.tokens[i];
     while (true) {
         const size_t bar = t.find('|');
         const auto x = to_number(t.substr(0, bar));
-        if (!x) return f.fail(std::string(name) + " " + quoted(row.tokens[i]) + " is not one number or three separated by '|'");
+        if (!x) return f.fail(std::string(name) + " " + quoted(row.tokens[i]) + " is not numbers separated by '|'");
         v.push_back(*x);
         if (bar == std::string_view::npos) break;
         t = t.substr(bar + 1);
     }
-    if (v.size() != 1 && v.size() != 3) return f.fail(std::string(name) + " " + quoted(row.tokens[i]) + ": one number or three");
+    if (std::find(counts.begin(), counts.end(), v.size()) == counts.end()) {
+        std::string allowed;
+        for (size_t c : counts) allowed += (allowed.empty() ? "" : ", ") + std::to_string(c);
+        return f.fail(std::string(name) + " " + quoted(row.tokens[i]) + ": " + allowed + " numbers");
+    }
+    return true;
+}
+
+// A field of one number or three (CG*, I*, Ca*); one number c is (0, 0, c) for the centre of gravity
+// (oneIsZ), (c, c, c) otherwise.
+bool vector_field(Fields& f, const Row& row, size_t i, const char* name, bool oneIsZ, double out[3]) {
+    std::vector<double> v;
+    if (!bar_numbers(f, row, i, name, {1, 3}, v)) return false;
     for (int k = 0; k < 3; ++k) out[k] = v.size() == 3 ? v[k] : (oneIsZ ? (k == 2 ? v[0] : 0.0) : v[0]);
+    return true;
+}
+
+// CdA* as MoorDyn's documentation has it: one number for all six directions, two (translations,
+// rotations), three (per body axis, for translation and rotation alike) or six.
+bool drag_field(Fields& f, const Row& row, size_t i, double out[6]) {
+    std::vector<double> v;
+    if (!bar_numbers(f, row, i, "CdA", {1, 2, 3, 6}, v)) return false;
+    for (int k = 0; k < 6; ++k) {
+        out[k] = v.size() == 1 ? v[0] : v.size() == 2 ? v[k / 3] : v.size() == 3 ? v[k % 3] : v[k];
+    }
     return true;
 }
 
@@ -962,17 +987,11 @@ bool read_body(const Row& row, int expectedId, DeckBody& b, std::vector<std::str
             return f.fail("a Free body has the fields ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*; this "
                           "row has " + std::to_string(row.tokens.size()));
         }
-        double CdA[3], Ca[3];
         b.mass = f.non_negative(8, "Mass");
         b.volume = f.non_negative(11, "Volume");
         if (!f.ok() || !vector_field(f, row, 9, "CG", true, b.cg) || !vector_field(f, row, 10, "I", false, b.inertia) ||
-            !vector_field(f, row, 12, "CdA", false, CdA) || !vector_field(f, row, 13, "Ca", false, Ca))
+            !drag_field(f, row, 12, b.CdA) || !vector_field(f, row, 13, "Ca", false, b.Ca))
             return false;
-        b.CdA = CdA[0];
-        b.Ca = Ca[0];
-        if (CdA[1] != CdA[0] || CdA[2] != CdA[0])
-            notes.push_back(at_line(row.number, "body " + std::to_string(b.id) + ": its drag area is taken as CdA = " +
-                                                    number_text(CdA[0]) + " m2 in every direction"));
     }
     if (f.ok() && b.kind == BodyKind::Coupled && row.tokens.size() > 8) {
         notes.push_back(at_line(row.number, "the mass, inertia, volume and drag of coupled body " + std::to_string(b.id) +
@@ -1113,8 +1132,8 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
         node.point.id = b.id;
         node.point.mass = b.mass;
         node.point.volume = b.volume;
-        node.point.CdA = b.CdA;
-        node.point.addedMass = b.Ca * deck.waterDensity * b.volume;  // translational, isotropic
+        std::copy(b.CdA, b.CdA + 6, node.CdA);
+        std::copy(b.Ca, b.Ca + 3, node.Ca);
         std::copy(b.inertia, b.inertia + 3, node.inertia);
         node.point.row = b.row;
         std::copy(b.pose, b.pose + 3, node.position);

@@ -101,12 +101,14 @@ struct MooringDeckLine {
 // A Free point where three or more lines meet: its position is an unknown of the system, found from the
 // equilibrium of its weight, buoyancy, drag and the lines' forces.
 struct MooringNode {
-    LineFilePoint point;                 // mass, volume, added mass, drag area (a body: its ID, mass, volume, CdA)
+    LineFilePoint point;                 // mass, volume, added mass, drag area (a body: its ID, mass, volume)
     double position[3] = {0.0, 0.0, 0.0};  // in the deck: the first guess (a body: its reference point)
     bool body = false;                   // a Free body: six unknowns, its points in its frame
     double angles[3] = {0.0, 0.0, 0.0};  // a body's roll, pitch, yaw in the deck [rad] (R = Rx Ry Rz)
-    double cg[3] = {0.0, 0.0, 0.0};      // a body's centre of gravity in its frame; its buoyancy acts at its reference
+    double cg[3] = {0.0, 0.0, 0.0};      // a body's centre of gravity in its frame (its weight and buoyancy act there)
     double inertia[3] = {0.0, 0.0, 0.0}; // a body's moments of inertia about its centre of gravity, body axes [kg m2]
+    double CdA[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // a body's drag areas in its axes: translations, rotations [m2]
+    double Ca[3] = {0.0, 0.0, 0.0};      // a body's added-mass coefficients of translation in its axes (of rho V)
 };
 
 struct MooringDeck {

@@ -26,6 +26,12 @@ struct SystemHeader {
 
 Vec3 vec3(const double v[3]) { return Vec3(v[0], v[1], v[2]); }
 
+// The rotation by the angle |turn| about turn's direction.
+Mat3 rotation_vector(const Vec3& turn) {
+    const double angle = turn.norm();
+    return Eigen::AngleAxisd(angle, angle > 0.0 ? Vec3(turn / angle) : Vec3::UnitX()).toRotationMatrix();
+}
+
 constexpr int kNodeStateDoubles = 34;  // per free node: position, velocity, acceleration, its lines' end inputs,
                                        // orientation (3 x 3), angular velocity and acceleration, the step
 
@@ -368,15 +374,40 @@ bool MooringSystem::profile_end_forces(int k, const Vec3& top, const Vec3& far, 
     return true;
 }
 
-Vec3 MooringSystem::node_load(int n, const Vec3& x, const UCInputs& in, const Vec3& v) const {
-    const LineFilePoint& p = deck_.nodes[n].point;
-    const FluidProps& fluid = lines_[0]->model().fluid();
+Vec3 MooringSystem::water_velocity(const Vec3& x, const UCInputs& in) const {
     CurrentField current;
     current.uniform = Vec3(in.current[0], in.current[1], 0.0);
     current.profile = &lines_[0]->model().current_profile();
     current.scale = in.currentScale;
-    const Vec3 w = current.at(x.z(), nullptr) - v;  // the water's velocity relative to the node
+    return current.at(x.z(), nullptr);
+}
+
+Vec3 MooringSystem::node_load(int n, const Vec3& x, const UCInputs& in, const Vec3& v) const {
+    const LineFilePoint& p = deck_.nodes[n].point;
+    const FluidProps& fluid = lines_[0]->model().fluid();
+    const Vec3 w = water_velocity(x, in) - v;  // the water's velocity relative to the node
     return Vec3(0.0, 0.0, -(p.mass - fluid.rho * p.volume) * fluid.gravity) + 0.5 * fluid.rho * p.CdA * w.norm() * w;
+}
+
+void MooringSystem::body_load(int n, const Vec3& x, const Mat3& R, const Vec3& v, const Vec3& omega,
+                              const UCInputs& in, Vec3& force, Vec3& moment) const {
+    const MooringNode& node = deck_.nodes[n];
+    const FluidProps& fluid = lines_[0]->model().fluid();
+    // weight and buoyancy together at the centre of gravity, as MoorDyn v2 applies them
+    const Vec3 net(0.0, 0.0, (fluid.rho * node.point.volume - node.point.mass) * fluid.gravity);
+    // drag in the body's axes: of translation at the reference point in the water's velocity relative to it,
+    // of rotation against the angular velocity (MoorDyn's CdA* of rotation, its moment 1/2 rho CdA w |w|)
+    const Vec3 u = R.transpose() * (water_velocity(x, in) - v), spin = R.transpose() * omega;
+    const Vec3 dragArea(node.CdA[0], node.CdA[1], node.CdA[2]), turnArea(node.CdA[3], node.CdA[4], node.CdA[5]);
+    force = net + 0.5 * fluid.rho * u.norm() * (R * dragArea.cwiseProduct(u));
+    moment = (R * Vec3(node.cg[0], node.cg[1], node.cg[2])).cross(net) -
+             0.5 * fluid.rho * spin.norm() * (R * turnArea.cwiseProduct(spin));
+}
+
+Mat3 MooringSystem::body_added_mass(int n, const Mat3& R) const {
+    const MooringNode& node = deck_.nodes[n];
+    const double rhoV = lines_[0]->model().fluid().rho * node.point.volume;
+    return R * (rhoV * Vec3(node.Ca[0], node.Ca[1], node.Ca[2])).asDiagonal() * R.transpose();
 }
 
 bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, bool profile, Eigen::VectorXd& r,
@@ -387,16 +418,17 @@ bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, 
         const int o = nodeOffset_[n];
         nodes_[n] = x.segment<3>(o);
         nodeInput_[n] = {nodes_[n], Vec3::Zero(), Vec3::Zero()};
-        r.segment<3>(o) = node_load(static_cast<int>(n), nodes_[n], in);
-        if (!node.body) continue;
-        // a body: x holds a rotation about the earth axes from the deck's orientation; its weight acts at
-        // its centre of gravity, its buoyancy and drag at its reference point
-        const Vec3 turn = x.segment<3>(o + 3);
-        nodeRotation_[n] = Eigen::AngleAxisd(turn.norm(), turn.norm() > 0.0 ? Vec3(turn.normalized()) : Vec3::UnitX())
-                               .toRotationMatrix() *
-                           body_rotation(node.angles[0], node.angles[1], node.angles[2]);
-        const double g = lines_[0]->model().fluid().gravity;
-        r.segment<3>(o + 3) = (nodeRotation_[n] * vec3(node.cg)).cross(Vec3(0.0, 0.0, -node.point.mass * g));
+        if (!node.body) {
+            r.segment<3>(o) = node_load(static_cast<int>(n), nodes_[n], in);
+            continue;
+        }
+        // a body: x holds a rotation about the earth axes from the deck's orientation; its weight and
+        // buoyancy at its centre of gravity, its drag in the current at its reference point (body_load)
+        nodeRotation_[n] = rotation_vector(x.segment<3>(o + 3)) * body_rotation(node.angles[0], node.angles[1], node.angles[2]);
+        Vec3 force, moment;
+        body_load(static_cast<int>(n), nodes_[n], nodeRotation_[n], Vec3::Zero(), Vec3::Zero(), in, force, moment);
+        r.segment<3>(o) = force;
+        r.segment<3>(o + 3) = moment;
     }
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
@@ -527,15 +559,89 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
 }
 
 bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::string& error) {
-    const int m = nodeUnknowns_;
+    // The step in one piece first; where its coupled iteration does not converge, again from the step's
+    // start in 2, 4, ... equal substeps (the same step on each, the coupled ends of the nodes' lines
+    // extrapolated from their inputs to each substep's start).
+    std::vector<std::vector<unsigned char>> start;
+    save_node_lines(start);
+    const NodeState state0 = node_state();
+    std::string why;
+    int worst = 0;
+    for (int pieces = 1; pieces <= kMaxSubsteps; pieces *= 2) {
+        if (pieces > 1) {  // back to the step's start
+            for (size_t k = 0; k < lines_.size(); ++k) {
+                if (!start[k].empty() && !lines_[k]->restore_state(start[k].data(), start[k].size(), error)) return false;
+            }
+            set_node_state(state0);
+        }
+        const double hs = h / pieces;
+        bool ok = true;
+        for (int j = 0; j < pieces && ok; ++j) ok = node_step(t + j * hs, hs, pieces > 1 ? j * hs : -1.0, in, worst, why);
+        if (ok) {
+            nodeSubsteps_ = pieces;
+            if (pieces > 1 && !substepsReported_) {
+                substepsReported_ = true;
+                event_ = "from t = " + std::to_string(t) + " s the free nodes' step of " + std::to_string(h) +
+                         " s is split into " + std::to_string(pieces) + " substeps where its coupled iteration does not "
+                         "converge in one (reported once)";
+            }
+            return true;
+        }
+    }
+    const MooringNode& node = deck_.nodes[worst];
+    error = (node.body ? "free body " : "free point ") + std::to_string(node.point.id) + ": " + why + "; also in " +
+            std::to_string(kMaxSubsteps) + " substeps of " + std::to_string(h / kMaxSubsteps) +
+            " s: take a shorter communication step";
+    return false;
+}
+
+void MooringSystem::shift_coupled_ends(int k, double shift, UCInputs& li) const {
+    const MooringDeckLine& l = deck_.lines[k];
+    UCInputs last;
+    line_inputs(k, lastInputs_, last);
+    auto shifted = [&](double p[3], double v[3], double a[3], int& given, const double lastV[3]) {
+        for (int c = 0; c < 3; ++c) {  // the acceleration a driven end would take from its inputs
+            if (!given) a[c] = lastStep_ > 0.0 ? (v[c] - lastV[c]) / lastStep_ : 0.0;
+            p[c] += shift * (v[c] + 0.5 * shift * a[c]);
+            v[c] += shift * a[c];
+        }
+        given = 1;
+    };
+    auto coupled = [](const MooringEnd& e) { return e.kind == MooringEnd::Kind::Body || e.kind == MooringEnd::Kind::Point; };
+    if (coupled(l.fairlead)) shifted(li.tow, li.towVelocity, li.towAcceleration, li.towAccelerationGiven, last.towVelocity);
+    if (!l.farFree && coupled(l.far)) shifted(li.end, li.endVelocity, li.endAcceleration, li.endAccelerationGiven, last.endVelocity);
+}
+
+MooringSystem::NodeState MooringSystem::node_state() const {
+    return {nodes_, nodeVelocity_, nodeAcceleration_, nodeOmega_, nodeAlpha_, nodeRotation_, nodeInput_, nodeStep_};
+}
+
+void MooringSystem::set_node_state(const NodeState& s) {
+    nodes_ = s.x;
+    nodeVelocity_ = s.v;
+    nodeAcceleration_ = s.a;
+    nodeOmega_ = s.omega;
+    nodeAlpha_ = s.alpha;
+    nodeRotation_ = s.R;
+    nodeInput_ = s.input;
+    nodeStep_ = s.step;
+}
+
+void MooringSystem::save_node_lines(std::vector<std::vector<unsigned char>>& into) {
+    into.resize(lines_.size());
     for (size_t k = 0; k < lines_.size(); ++k) {
         if (!on_node(deck_.lines[k])) continue;
-        nodeLineStart_[k].resize(lines_[k]->state_size());
-        lines_[k]->save_state(nodeLineStart_[k].data());
+        into[k].resize(lines_[k]->state_size());
+        lines_[k]->save_state(into[k].data());
     }
-    const std::vector<Vec3> x0 = nodes_, v0 = nodeVelocity_, a0 = nodeAcceleration_, w0 = nodeOmega_,
-                            alpha0 = nodeAlpha_;
-    const std::vector<Mat3> R0 = nodeRotation_;
+}
+
+bool MooringSystem::node_step(double t, double h, double shift, const UCInputs& in, int& worst, std::string& error) {
+    const int m = nodeUnknowns_;
+    save_node_lines(nodeLineStart_);
+    const NodeState start = node_state();
+    const std::vector<Vec3>&x0 = start.x, &v0 = start.v, &a0 = start.a, &w0 = start.omega, &alpha0 = start.alpha;
+    const std::vector<Mat3>& R0 = start.R;
     nodeStep_ = h;
     // The nodes move as Newmark's average acceleration has them (trapezoidal: second order, no numerical
     // damping, unconditionally stable): with the acceleration A at t + h,
@@ -548,7 +654,6 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
     // its equations about its reference point with its centre of gravity c = R CG (its inertia I about it):
     //   M a_cg + m_a a = F,   c x M a_cg + I alpha + w x (I w) = the moment of the loads,
     //   a_cg = a + alpha x c + w x (w x c).
-    const double g = lines_[0]->model().fluid().gravity;
     auto residual = [&](const Eigen::VectorXd& A, Eigen::VectorXd& r, std::string& why) -> bool {
         std::vector<Vec3> v1(nodes_.size());
         for (size_t n = 0; n < nodes_.size(); ++n) {
@@ -567,9 +672,7 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
             }
             const Vec3 alpha = A.segment<3>(o + 3), spin = 0.5 * (alpha0[n] + alpha);
             const Vec3 w = w0[n] + h * spin, turn = h * w0[n] + 0.5 * h * h * spin;
-            nodeRotation_[n] = Eigen::AngleAxisd(turn.norm(), turn.norm() > 0.0 ? Vec3(turn.normalized()) : Vec3::UnitX())
-                                   .toRotationMatrix() *
-                               R0[n];
+            nodeRotation_[n] = rotation_vector(turn) * R0[n];
             nodeVelocity_[n] = v1[n];
             nodeAcceleration_[n] = a;
             nodeOmega_[n] = w;
@@ -578,15 +681,17 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
             const Vec3 c = R * vec3(node.cg);
             const Mat3 I = R * Vec3(node.inertia[0], node.inertia[1], node.inertia[2]).asDiagonal() * R.transpose();
             const Vec3 acg = a + alpha.cross(c) + w.cross(w.cross(c));
-            r.segment<3>(o) = node_load(static_cast<int>(n), nodes_[n], in, v1[n]) - p.mass * acg - p.addedMass * a;
-            r.segment<3>(o + 3) = c.cross(Vec3(0.0, 0.0, -p.mass * g)) - c.cross(p.mass * acg) - I * alpha -
-                                  w.cross(I * w);
+            Vec3 force, moment;
+            body_load(static_cast<int>(n), nodes_[n], R, v1[n], w, in, force, moment);
+            r.segment<3>(o) = force - p.mass * acg - body_added_mass(static_cast<int>(n), R) * a;
+            r.segment<3>(o + 3) = moment - c.cross(p.mass * acg) - I * alpha - w.cross(I * w);
         }
         UCInputs li;
         for (size_t k = 0; k < lines_.size(); ++k) {
             const MooringDeckLine& l = deck_.lines[k];
             if (!on_node(l)) continue;
             line_inputs(static_cast<int>(k), in, li);
+            if (shift >= 0.0) shift_coupled_ends(static_cast<int>(k), shift, li);
             if (!lines_[k]->restore_state(nodeLineStart_[k].data(), nodeLineStart_[k].size(), why) ||
                 !lines_[k]->step(t, h, li, why)) {
                 why = "mooring line " + std::to_string(l.id) + ": " + why;
@@ -637,7 +742,7 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
     for (nodeIterations_ = 1; nodeIterations_ <= kNodeIterations && !converged; ++nodeIterations_) {
         Eigen::VectorXd dA = -lu.solve(r);
         if (!dA.allFinite()) {
-            error = "the free points' equations of motion: singular Jacobian";
+            error = "its equations of motion: singular Jacobian";
             return false;
         }
         // a correction moves the nodes at t + h by at most kMaxCorrection (m, or rad for a body's turn):
@@ -648,6 +753,10 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
         if (!residual(A, r, error)) return false;  // the lines stand at the last A
         const double last = moved;
         moved = 0.25 * h * h * dA.lpNorm<Eigen::Infinity>();
+        for (size_t n = 0; n < nodes_.size(); ++n) {  // the node that moves most: named where it fails
+            const int size = deck_.nodes[n].body ? 6 : 3;
+            if (0.25 * h * h * dA.segment(nodeOffset_[n], size).lpNorm<Eigen::Infinity>() >= moved) worst = static_cast<int>(n);
+        }
         converged = moved < kNodeTolerance || (moved < 100.0 * kNodeTolerance && moved > 0.5 * last);
         if (!converged && moved > 0.25 * last && refreshed < kJacobianRefreshes) {
             ++refreshed;
@@ -655,8 +764,9 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
         }
     }
     if (!converged) {
-        error = "the free points' equations of motion did not converge in " + std::to_string(kNodeIterations) +
-                " iterations (last correction " + std::to_string(moved) + " m)";
+        error = "its equations of motion did not converge in " + std::to_string(kNodeIterations) +
+                " iterations over a step of " + std::to_string(h) + " s (last correction " + std::to_string(moved) +
+                " m or rad)";
         return false;
     }
     for (size_t n = 0; n < nodes_.size(); ++n) nodeAcceleration_[n] = A.segment<3>(nodeOffset_[n]);

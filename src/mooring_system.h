@@ -64,6 +64,8 @@ public:
     static constexpr int kNodeIterations = 20, kJacobianRefreshes = 4;
     static constexpr double kMaxCorrection = 0.2;
     static constexpr double kMaxTurn = 0.2;  // [rad] a free body turns by at most this per Newton step
+    // The free nodes' step is split into at most this many substeps where it does not converge in one.
+    static constexpr int kMaxSubsteps = 16;
 
     // The free nodes (Free points where three or more lines meet): their positions, found at the
     // initialization by the static equilibrium of each node (docs/systems_mooring.md, "Free points").
@@ -81,6 +83,7 @@ public:
     // Newton iterations of the statics (of the last initialization) or of the last step's dynamics, and
     // the statics' residual left (largest component, N).
     int node_iterations() const { return nodeIterations_; }
+    int node_substeps() const { return nodeSubsteps_; }  // of the last step (1: in one piece)
     double node_residual_norm() const { return nodeResidual_; }
 
 private:
@@ -103,11 +106,41 @@ private:
     bool profile_end_forces(int k, const Vec3& top, const Vec3& far, Vec3& onTop, Vec3& onFar, std::string* why) const;
     // The free nodes' static equilibrium (Newton with a line search), the lines initialized there.
     bool solve_nodes(double t0, const UCInputs& in, std::string& error);
-    // The weight, buoyancy and current drag on node n at x moving at v.
+    // The current's velocity at x.
+    Vec3 water_velocity(const Vec3& x, const UCInputs& in) const;
+    // The weight, buoyancy and current drag on node n (a point) at x moving at v.
     Vec3 node_load(int n, const Vec3& x, const UCInputs& in, const Vec3& v = Vec3::Zero()) const;
+    // The loads on free body n other than its lines' and its inertia, as MoorDyn v2 has them, at x with
+    // orientation R moving at v and turning at omega: force, and moment about the reference point.
+    void body_load(int n, const Vec3& x, const Mat3& R, const Vec3& v, const Vec3& omega, const UCInputs& in,
+                   Vec3& force, Vec3& moment) const;
+    // Free body n's added mass of translation (rho V Ca in its axes) in the earth axes at orientation R.
+    Mat3 body_added_mass(int n, const Mat3& R) const;
     // One communication step of the lines that end at free nodes, coupled implicitly through the nodes'
     // equations of motion (docs/systems_mooring.md, "Dynamics").
+    struct NodeInput {                   // what the lines at node n are given as their end's inputs
+        Vec3 position, velocity, acceleration;
+    };
+    struct NodeState {                   // the free nodes' motion (a step's start, to go back to)
+        std::vector<Vec3> x, v, a, omega, alpha;
+        std::vector<Mat3> R;
+        std::vector<NodeInput> input;
+        double step;
+    };
+    NodeState node_state() const;
+    void set_node_state(const NodeState& s);
+    // The states of the lines at free nodes (empty for the others).
+    void save_node_lines(std::vector<std::vector<unsigned char>>& into);
+    // (In one piece, or in substeps where the coupled iteration does not converge.)
     bool step_nodes(double t, double h, const UCInputs& in, std::string& error);
+    // One step of [t, t + h] by the coupled iteration; shift >= 0: a substep that starts shift after the
+    // communication step's, the coupled ends extrapolated there. worst: the node that moves most in the
+    // last correction (named where it fails).
+    bool node_step(double t, double h, double shift, const UCInputs& in, int& worst, std::string& error);
+    // Line k's inputs li (for the communication step's start) with its ends on coupled bodies and points
+    // extrapolated by shift with their accelerations (given, or the difference of the last two velocity
+    // inputs, as a driven end takes it), the accelerations marked as given.
+    void shift_coupled_ends(int k, double shift, UCInputs& li) const;
 
     UCParams base_;
     MooringDeck deck_;
@@ -125,18 +158,15 @@ private:
     double nodeStep_ = 0.0;              // the step the nodes' state is at the end of (0: at rest)
     std::vector<int> nodeOffset_;        // of each node's unknowns (3 for a point, 6 for a body)
     int nodeUnknowns_ = 0;
-    struct NodeInput {                   // what the lines at node n are given as their end's inputs
-        Vec3 position, velocity, acceleration;
-    };
     std::vector<NodeInput> nodeInput_;
     std::vector<std::vector<unsigned char>> nodeLineStart_;  // the node lines' states at the step's start
-    int nodeIterations_ = 0;
+    int nodeIterations_ = 0, nodeSubsteps_ = 1;
     double nodeResidual_ = 0.0;
     double t0_ = 0.0;
     double lastStep_ = 0.0;
     UCInputs lastInputs_{};  // of the last step (or the initialization)
     UCOutputs outputs_{};
-    bool stiffnessWarned_ = false;
+    bool stiffnessWarned_ = false, substepsReported_ = false;
     std::string event_;
     std::vector<unsigned char> lineBuffer_;
     // body_derivatives of each body for the state of stamp_ (a master asks column by column)

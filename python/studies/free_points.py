@@ -75,24 +75,36 @@ def _body_points(pose, rotation, local) -> list:
     return [np.asarray(pose[:3]) + R @ r for r in local]
 
 
-def moorpy_statics(path: Path, current: float = 0.0) -> dict:
+def _current(current) -> np.ndarray:
+    """A uniform current: a speed along x, or its (x, y) components."""
+    c = np.atleast_1d(np.asarray(current, float))
+    return np.array([c[0], c[1] if len(c) > 1 else 0.0, 0.0])
+
+
+def moorpy_statics(path: Path, current=0.0) -> dict:
     """MoorPy's equilibrium of the deck's free points and bodies, the deck's Vessel points where the deck
-    puts them, in a uniform current along x: each free point's position, each free body's pose and the
+    puts them, in a uniform current (along x, or (x, y)): each free point's position, each free body's pose and the
     positions of the points on it, each line's tension at AttachB (the fairlead side in the decks here)
-    and AttachA. A body's drag in the current is given to MoorPy as a force at its reference point."""
+    and AttachA. A body's drag in the current is given to MoorPy as a force at its reference point (its drag
+    areas in its axes at the deck's orientation), and its buoyancy is placed at its centre of gravity, as
+    MoorDyn v2 applies a body's weight and buoyancy."""
     deck = read_system_deck(path)
     s = _moorpy_system(path, deck.depth)
+    U = _current(current)
     with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        if current:
+        if U.any():
             s.currentMod = 1
-            s.current = np.array([current, 0.0, 0.0])
+            s.current = U
         for p in s.pointList:  # the point's drag at rest in the current (MoorPy has none on points)
             if p.type == 0:
-                p.fExt = np.array([0.5 * WATER_DENSITY * p.CdA * current * abs(current), 0.0, 0.0])
+                p.fExt = 0.5 * WATER_DENSITY * p.CdA * np.linalg.norm(U) * U
         for b in s.bodyList:
             if b.type == 0:
-                b.f6Ext = np.array([0.5 * WATER_DENSITY * b.CdA[0] * current * abs(current), 0, 0, 0, 0, 0])
+                b.rM = np.array(b.rCG, float)  # MoorDyn's buoyancy acts at the centre of gravity (MoorPy's at rM)
+                R = _fmu_rotation(*np.asarray(b.r6[3:], float))
+                drag = 0.5 * WATER_DENSITY * np.linalg.norm(U) * R @ (np.asarray(b.CdA, float)[:3] * (R.T @ U))
+                b.f6Ext = np.concatenate([drag, np.zeros(3)])
         s.initialize()
         for _ in range(3):  # MoorPy's line drag is that of the previous solution: iterate it to its fixed point
             s.solveEquilibrium(tol=1e-8, maxIter=2000)
@@ -107,11 +119,12 @@ def moorpy_statics(path: Path, current: float = 0.0) -> dict:
             "fairlead": [float(ln.TB) for ln in s.lineList], "anchor": [float(ln.TA) for ln in s.lineList]}
 
 
-def fmu_statics(fmu, path: Path, current: float = 0.0, **extra) -> dict:
-    """The FMU's static start (initMode 0) of the deck in a uniform current along x."""
+def fmu_statics(fmu, path: Path, current=0.0, **extra) -> dict:
+    """The FMU's static start (initMode 0) of the deck in a uniform current (along x, or (x, y))."""
     deck = read_system_deck(path)
+    U = _current(current)
     with CableFMU(fmu, parameters={**fmu_parameters(deck), "lineFile": str(path), **extra}) as c:
-        c.initialize(inputs={"current.x": current})
+        c.initialize(inputs={"current.x": U[0], "current.y": U[1]})
         points = {k: np.array([c.get(f"point[{k}].position.{a}") for a in "xyz"]) for k in free_point_ids(path)}
         poses = {k: np.array([c.get(f"body[{k}].pose.{a}") for a in ("x", "y", "z", "roll", "pitch", "yaw")])
                  for k in free_bodies(path)}

@@ -256,6 +256,41 @@ TEST(MooringSystem, FreeBodyStaticsOfASymmetricBuoyHaveTheClosedFormAnswer) {
     }
 }
 
+TEST(MooringDeck, AFreeBodysDragAreasAndAddedMassAreReadPerAxisAsMoorDynDocumentsThem) {
+    // CdA*: one value for all six directions, two (translations, rotations), three (per axis, for both) or
+    // six; Ca*: one value or three (translations in the body's axes)
+    const WeightlessLegs legs;
+    const std::string text = legs.deck(true), row = " 1.0 1.0\n";  // the body row ends with CdA* Ca*
+    const size_t at = text.find(row);
+    ASSERT_NE(at, std::string::npos);
+    const struct {
+        const char* fields;
+        double CdA[6], Ca[3];
+    } cases[] = {{" 2 0.5\n", {2, 2, 2, 2, 2, 2}, {0.5, 0.5, 0.5}},
+                 {" 2|7 1|2|3\n", {2, 2, 2, 7, 7, 7}, {1, 2, 3}},
+                 {" 1|2|3 1\n", {1, 2, 3, 1, 2, 3}, {1, 1, 1}},
+                 {" 1|2|3|4|5|6 1\n", {1, 2, 3, 4, 5, 6}, {1, 1, 1}}};
+    for (const auto& c : cases) {
+        std::string deck = text;
+        deck.replace(at, row.size(), c.fields);
+        uc::MooringDeck read;
+        std::string error;
+        ASSERT_TRUE(uc::read_mooring_deck(deck, 0, read, error)) << c.fields << error;
+        ASSERT_EQ(read.nodes.size(), 1u);
+        for (int k = 0; k < 6; ++k) EXPECT_EQ(read.nodes[0].CdA[k], c.CdA[k]) << c.fields << " CdA " << k;
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(read.nodes[0].Ca[k], c.Ca[k]) << c.fields << " Ca " << k;
+    }
+    const std::pair<const char*, const char*> wrong[] = {{" 1|2|3|4 1\n", "CdA '1|2|3|4'"}, {" 1 1|2\n", "Ca '1|2'"}};
+    for (const auto& [fields, named] : wrong) {
+        std::string deck = text;
+        deck.replace(at, row.size(), fields);
+        uc::MooringDeck read;
+        std::string error;
+        EXPECT_FALSE(uc::read_mooring_deck(deck, 0, read, error)) << fields;
+        EXPECT_NE(error.find(named), std::string::npos) << error;
+    }
+}
+
 TEST(MooringSystem, BodyOrientationIsMoorDynsRollPitchYaw) {
     const double r = 0.3, p = -0.2, y = 1.1;
     uc::Mat3 Rx, Ry, Rz;
