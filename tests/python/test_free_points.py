@@ -82,6 +82,10 @@ def _released(tmp_path):
     return fp.displaced_deck(fp.BUOY, tmp_path, 4, DISPLACED)
 
 
+def _released_body(tmp_path):
+    return fp.displaced_body_deck(fp.BUOY_BODY, tmp_path, 1, (*DISPLACED, 5.0, -3.0, 0.0))
+
+
 @pytest.mark.parametrize("step", [1.0, 0.5])
 def test_the_released_buoy_oscillates_and_settles_at_its_equilibrium(fmu_file, tmp_path, step):
     """Released at rest 4.6 m from its equilibrium (the deck's TmaxIC 0), stepped at 0.5 and 1 s: the
@@ -128,8 +132,7 @@ def test_the_released_free_body_swings_and_settles_at_its_equilibrium(fmu_file, 
     the body's point 4 over 0-20, 20-40, 40-60, 60-80 s: 5.17, 0.40, 0.24, 0.17 m; the FMU's at 0.1 s: 5.17,
     0.36, 0.26, 0.16 m; docs/systems_mooring.md.)"""
     still = fp.fmu_statics(fmu_file, fp.BUOY_BODY)["poses"][1]
-    path = fp.displaced_body_deck(fp.BUOY_BODY, tmp_path, 1, (*DISPLACED, 5.0, -3.0, 0.0))
-    run = fp.fmu_release(fmu_file, path, 4, 80.0, step, body=1)
+    run = fp.fmu_release(fmu_file, _released_body(tmp_path), 4, 80.0, step, body=1)
     distance = np.linalg.norm(run["pose"][:, :3] - still[:3], axis=1)
     swings = [distance[(run["t"] >= t0) & (run["t"] < t0 + 20.0)].max() for t0 in (0.0, 30.0, 60.0)]
     assert swings[0] > swings[1] > swings[2]
@@ -137,10 +140,32 @@ def test_the_released_free_body_swings_and_settles_at_its_equilibrium(fmu_file, 
     assert np.max(np.abs(run["pose"][run["t"] >= 40.0, 3:5])) < 0.02  # upright again (from 0.087 rad)
 
 
+def test_the_released_free_body_matches_moordyn(fmu_file, tmp_path):
+    """The free body's release against MoorDyn v2 fed the same deck (docs/systems_mooring.md): the FMU at 20
+    elements per leg and 0.05 s steps, MoorDyn at 40 segments. Both converged (40 elements, 0.025 s; 160
+    segments) they differ by 1.53 % of the mean tension, MoorDyn's own change from 40 to 160 segments is
+    0.89 %; this pair measured 1.63 %. Asserted within the acceptance's 2 %."""
+    path = _released_body(tmp_path)
+    ref = fp.moordyn_release(fp.refined_deck(path, tmp_path, 40), 4, 30.0, 0.1)
+    ours = fp.fmu_release(fmu_file, path, 4, 30.0, 0.05, body=1, lineFileElements=20)
+    ours = {"t": ours["t"][::2], "tension": ours["tension"][::2]}
+    assert fp.rms_difference(ours, ref, 1.0) < 0.02
+
+
+@pytest.mark.slow
+def test_the_released_free_body_matches_moordyn_with_both_converged(fmu_file, tmp_path):
+    """The converged pair: the FMU at 40 elements per leg and 0.025 s steps, MoorDyn at 160 segments
+    (dtM 0.125 ms): measured 1.53 % (MoorDyn's own change from 80 to 160 segments: 0.87 %)."""
+    path = _released_body(tmp_path)
+    ref = fp.moordyn_release(fp.refined_deck(path, tmp_path, 160), 4, 30.0, 0.1)
+    ours = fp.fmu_release(fmu_file, path, 4, 30.0, 0.025, body=1, lineFileElements=40)
+    ours = {"t": ours["t"][::4], "tension": ours["tension"][::4]}
+    assert fp.rms_difference(ours, ref, 1.0) < 0.02
+
+
 @pytest.mark.parametrize("body", [False, True], ids=["free-point", "free-body"])
 def test_a_saved_state_of_the_buoy_continues_bit_for_bit(make_cable, tmp_path, body):
-    path = (fp.displaced_body_deck(fp.BUOY_BODY, tmp_path, 1, (*DISPLACED, 5.0, -3.0, 0.0)) if body
-            else _released(tmp_path))
+    path = _released_body(tmp_path) if body else _released(tmp_path)
     params = {**ms.fmu_parameters(ms.read_system_deck(path)), "lineFile": str(path)}
     names = [f"line[{k}].fairleadTension" for k in (1, 2, 3)] + (
         [f"body[1].pose.{a}" for a in ("x", "y", "z", "roll", "pitch", "yaw")] if body else
