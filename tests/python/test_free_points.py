@@ -163,6 +163,24 @@ def test_the_released_free_body_matches_moordyn_with_both_converged(fmu_file, tm
     assert fp.rms_difference(ours, ref, 1.0) < 0.02
 
 
+def test_a_step_the_coupled_iteration_cannot_take_in_one_piece_is_split_into_substeps(make_cable, tmp_path):
+    """The buoy body with its centre of gravity 3 m below its reference point and no rotational drag
+    (CdA* 3|0): its coupled iteration does not converge over a step of 1 s from the release (measured
+    before the substeps: fmi2DoStep failed at t = 0); the step is taken in substeps, logged once, and the
+    release goes on."""
+    path = _released_body(tmp_path)
+    params = {**ms.fmu_parameters(ms.read_system_deck(path)), "lineFile": str(path)}
+    path.write_text(path.read_text().replace("0|0|-1.0 ", "0|0|-3.0 ").replace("15.0    3.0   1.0", "15.0    3.0|0.0   1.0"))
+    c = make_cable(parameters=params, logging_on=True)
+    c.initialize()
+    for k in range(10):
+        c.do_step(1.0, t=float(k))
+    tensions = c.get_reals([f"line[{k}].fairleadTension" for k in (1, 2, 3)])
+    assert all(np.isfinite(tensions)) and min(tensions) > 0.0
+    splits = [m for _, _, m in c.messages if "substeps" in m]
+    assert len(splits) == 1 and "t = 0.000000 s" in splits[0], splits
+
+
 @pytest.mark.parametrize("body", [False, True], ids=["free-point", "free-body"])
 def test_a_saved_state_of_the_buoy_continues_bit_for_bit(make_cable, tmp_path, body):
     path = _released_body(tmp_path) if body else _released(tmp_path)
