@@ -559,14 +559,16 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
 }
 
 bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::string& error) {
-    // The step in one piece first; where its coupled iteration does not converge, again from the step's
-    // start in 2, 4, ... equal substeps (the same step on each, the coupled ends of the nodes' lines
-    // extrapolated from their inputs to each substep's start).
+    // The step in one piece first; where its error estimate exceeds kNodeStepError, again from the step's
+    // start in as many substeps as bring it within, and where its coupled iteration does not converge in
+    // 2, 4, ... equal substeps (the same step on each, the coupled ends of the nodes' lines extrapolated
+    // from their inputs to each substep's start).
     std::vector<std::vector<unsigned char>> start;
     save_node_lines(start);
     const NodeState state0 = node_state();
     std::string why;
     int worst = 0;
+    double estimate = 0.0;  // of the step in one piece where it is split for its error
     for (int pieces = 1; pieces <= kMaxSubsteps; pieces *= 2) {
         if (pieces > 1) {  // back to the step's start
             for (size_t k = 0; k < lines_.size(); ++k) {
@@ -577,13 +579,27 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
         const double hs = h / pieces;
         bool ok = true;
         for (int j = 0; j < pieces && ok; ++j) ok = node_step(t + j * hs, hs, pieces > 1 ? j * hs : -1.0, in, worst, why);
+        if (ok && pieces == 1) {
+            // its error estimated from the change of the accelerations, as h^3: the substeps that bring
+            // it within kNodeStepError (each then errs by 1 / pieces^3 of the step's)
+            estimate = node_step_error(h, state0);
+            if (estimate > kNodeStepError) {
+                int want = 2;
+                while (want < kMaxSubsteps && want * want * want * kNodeStepError < estimate) want *= 2;
+                pieces = want / 2;  // the loop doubles it
+                continue;
+            }
+        }
         if (ok) {
             nodeSubsteps_ = pieces;
             if (pieces > 1 && !substepsReported_) {
                 substepsReported_ = true;
-                event_ = "from t = " + std::to_string(t) + " s the free nodes' step of " + std::to_string(h) +
-                         " s is split into " + std::to_string(pieces) + " substeps where its coupled iteration does not "
-                         "converge in one (reported once)";
+                event_ = "from t = " + std::to_string(t) + " s the free nodes' step of " + std::to_string(h) + " s is split into " +
+                         std::to_string(pieces) + " substeps where " +
+                         (estimate > kNodeStepError ? "its estimated error in one piece (" + std::to_string(estimate) + " m) exceeds " +
+                                                          std::to_string(kNodeStepError) + " m"
+                                                    : std::string("its coupled iteration does not converge in one")) +
+                         " (reported once)";
             }
             return true;
         }
@@ -610,6 +626,25 @@ void MooringSystem::shift_coupled_ends(int k, double shift, UCInputs& li) const 
     auto coupled = [](const MooringEnd& e) { return e.kind == MooringEnd::Kind::Body || e.kind == MooringEnd::Kind::Point; };
     if (coupled(l.fairlead)) shifted(li.tow, li.towVelocity, li.towAcceleration, li.towAccelerationGiven, last.towVelocity);
     if (!l.farFree && coupled(l.far)) shifted(li.end, li.endVelocity, li.endAcceleration, li.endAccelerationGiven, last.endVelocity);
+}
+
+double MooringSystem::node_step_error(double h, const NodeState& start) const {
+    // Newmark's average acceleration errs in position over a step by about h^2 / 12 times the change of
+    // the acceleration over it; a body's turn by as much of its angular acceleration's, times the reach
+    // of its points
+    double e = 0.0;
+    for (size_t n = 0; n < nodes_.size(); ++n) {
+        e = std::max(e, h * h / 12.0 * (nodeAcceleration_[n] - start.a[n]).norm());
+        if (!deck_.nodes[n].body) continue;
+        double reach = 0.0;
+        for (const MooringDeckLine& l : deck_.lines) {
+            for (const MooringEnd* end : {&l.fairlead, &l.far}) {
+                if (end->kind == MooringEnd::Kind::Node && end->node == static_cast<int>(n)) reach = std::max(reach, vec3(end->position).norm());
+            }
+        }
+        e = std::max(e, h * h / 12.0 * (nodeAlpha_[n] - start.alpha[n]).norm() * reach);
+    }
+    return e;
 }
 
 MooringSystem::NodeState MooringSystem::node_state() const {

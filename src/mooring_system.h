@@ -64,8 +64,10 @@ public:
     static constexpr int kNodeIterations = 20, kJacobianRefreshes = 4;
     static constexpr double kMaxCorrection = 0.2;
     static constexpr double kMaxTurn = 0.2;  // [rad] a free body turns by at most this per Newton step
-    // The free nodes' step is split into at most this many substeps where it does not converge in one.
+    // The free nodes' step is split into at most this many substeps where it does not converge in one,
+    // or where its estimated error in the nodes' positions exceeds kNodeStepError [m].
     static constexpr int kMaxSubsteps = 16;
+    static constexpr double kNodeStepError = 0.01;
 
     // The free nodes (Free points where three or more lines meet): their positions, found at the
     // initialization by the static equilibrium of each node (docs/systems_mooring.md, "Free points").
@@ -128,10 +130,14 @@ private:
         double step;
     };
     NodeState node_state() const;
+    // The error of the step just taken from start over h in the nodes' positions (a body's: at the reach
+    // of its points), estimated from the change of their accelerations [m].
+    double node_step_error(double h, const NodeState& start) const;
     void set_node_state(const NodeState& s);
     // The states of the lines at free nodes (empty for the others).
     void save_node_lines(std::vector<std::vector<unsigned char>>& into);
-    // (In one piece, or in substeps where the coupled iteration does not converge.)
+    // (In one piece, or in substeps where its error estimate is too large or its coupled iteration does
+    // not converge.)
     bool step_nodes(double t, double h, const UCInputs& in, std::string& error);
     // One step of [t, t + h] by the coupled iteration; shift >= 0: a substep that starts shift after the
     // communication step's, the coupled ends extrapolated there. worst: the node that moves most in the
