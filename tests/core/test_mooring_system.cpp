@@ -129,8 +129,33 @@ TEST(MooringDeck, WhatASystemCannotHoldIsRefusedNamingTheLine) {
         EXPECT_FALSE(uc::read_mooring_deck(text, 0, deck, error));
         return error;
     };
-    EXPECT_EQ(refused("4         main        6         7", "4         main        2         7")
-                  .rfind("line 22: line 3 is not reached from a coupled point", 0), 0u);
+    // lines 3 and 4 between free points 7 and 8 in a closed loop: nothing holds them
+    std::string text = kPlatform;
+    const std::string point7 = "7      Free     200.0   -346.0    -190.0   20000    1.0     0.5   1.0";
+    text.replace(text.find(point7), point7.size(), point7 + "\n8      Free     210.0   -346.0    -190.0   0 0 0 0");
+    const std::string lines = "3         main        3         7       400.0      10        -\n4         main        6         7";
+    text.replace(text.find(lines), lines.size(), "3 main 8 7 400.0 10 -\n4 main 7 8 435.35 12 -");
+    uc::MooringDeck deck;
+    std::string error;
+    EXPECT_FALSE(uc::read_mooring_deck(text, 0, deck, error));
+    EXPECT_EQ(error.rfind("line 23: line 3 is not reached from a coupled point, a free node or a Fixed point", 0), 0u)
+        << error;
+    (void)refused;
+}
+
+TEST(MooringDeck, ALineNoCoupledObjectHoldsRunsFromItsFixedPoint) {
+    // line 4 from the anchor 2 to the clump point: lines 3 and 4 are a chain between two anchors
+    std::string text = kPlatform;
+    const std::string from = "4         main        6         7";
+    text.replace(text.find(from), from.size(), "4         main        2         7");
+    uc::MooringDeck deck;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(text, 0, deck, error)) << error;
+    ASSERT_EQ(deck.lines.size(), 3u);
+    const uc::MooringDeckLine& chain = deck.lines[2];
+    EXPECT_EQ(chain.fairlead.kind, uc::MooringEnd::Kind::Fixed);
+    EXPECT_EQ(chain.far.kind, uc::MooringEnd::Kind::Fixed);
+    EXPECT_EQ(chain.sections.size(), 2u);
 }
 
 TEST(MooringDeck, AFreePointWhereThreeLinesMeetIsANodeWhereTheyEnd) {
