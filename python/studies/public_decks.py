@@ -15,8 +15,8 @@ point the FMU takes as the tow point: the higher of two, on a tie the one at Att
 deck as it reads it. What the deck does not set is set as MoorDyn has it (docs/lines.md): the seabed
 from kBot and cBot times the diameter, tension-only lines.
 
-    python -m studies.public_decks                      # the kept decks: table of the comparison
-    python -m studies.public_decks --census MOORDYN MOORPY [--json FILE]   # the census table
+    python -m studies.public_decks [--doc docs/systems_mooring.md]      # the kept decks: their table
+    python -m studies.public_decks --census MOORDYN MOORPY [--json FILE] [--doc docs/systems_mooring.md]
 """
 
 from __future__ import annotations
@@ -209,12 +209,16 @@ def survey(fmu) -> dict:
     return {p.name: compare(fmu, p) for p in decks()}
 
 
+def _difference(r: dict) -> str:
+    return f"{100 * r['worst']:.3f} %" if r["worst"] is not None else f"MoorPy fails: {r['moorpy']}"
+
+
 def markdown(results: dict) -> str:
     out = ["| deck | read as | lines | largest tension difference from MoorPy |", "|---|---|---|---|"]
     for name, r in results.items():
         if r["status"] == "ok":
-            out.append(f"| `{name}` | {'system' if r['system'] else 'one line'} | {len(r['lines'])} | "
-                       f"{100 * r['worst']:.3f} % |")
+            out.append(f"| `{name}` | {'system' if r['system'] else 'one line'} | {len(r['outputs'])} | "
+                       f"{_difference(r)} |")
         else:
             out.append(f"| `{name}` | refused: {r['reason']} | | |")
     return "\n".join(out)
@@ -249,7 +253,6 @@ def census(fmu, moordyn: Path, moorpy: Path, progress=None) -> list:
         if progress:
             progress(label)
         r = compare(fmu, path)
-        r.pop("outputs", None)
         results.append({"deck": label, **r})
     return results
 
@@ -257,7 +260,7 @@ def census(fmu, moordyn: Path, moorpy: Path, progress=None) -> list:
 # The reasons of the census table: (pattern on the FMU's message or MoorPy's failure, the reason shown).
 REASONS = [
     (r"rods are not supported", "rods"),
-    (r"Syrope", "Syrope lines"),
+    (r"the Syrope model", "Syrope lines"),
     (r"SeafloorFile|bathymetry", "a bathymetry file"),
     (r"viscoelastic", "viscoelastic EA"),
     (r"Cl = ", "vortex-induced vibration (`Cl`)"),
@@ -287,10 +290,10 @@ def census_markdown(results: list) -> str:
            f"mooring systems), {len(results) - len(loaded)} refused.", "",
            "| deck | FMU | largest tension difference from MoorPy |", "|---|---|---|"]
     for r in sorted(loaded, key=lambda r: r["deck"]):
-        diff = (f"{100 * r['worst']:.3f} %" if r["worst"] is not None
-                else f"MoorPy fails: {r['moorpy']}")
-        out.append(f"| `{r['deck']}` | {'system' if r['system'] else 'one line'}, {len(r['lines']) or ''} | {diff} |"
-                   .replace(", |", " |"))
+        n = len(r["lines"])
+        lines = f"{n} line{'s' if n > 1 else ''}" if r["system"] and n else ""
+        out.append(f"| `{r['deck']}` | {'system' if r['system'] else 'one line'}{', ' + lines if lines else ''} | "
+                   f"{_difference(r)} |")
     out += ["", "| reason refused | decks | the FMU's message (first deck) |", "|---|---|---|"]
     groups: dict = {}
     for r in results:
@@ -312,16 +315,21 @@ def main(argv=None) -> int:  # pragma: no cover
                     help="checkouts of FloatingArrayDesign/MoorDyn and NREL/MoorPy: the census of their decks")
     ap.add_argument("--json", type=Path, help="also write the results as JSON")
     ap.add_argument("--fmu", type=Path, default=None, help="the FMU (default: the build's)")
+    ap.add_argument("--doc", type=Path, help="also write the table into this Markdown file, between "
+                    "<!-- BEGIN public_decks[_census] --> and <!-- END ... -->")
     args = ap.parse_args(argv)
     fmu = args.fmu or fmu_path()
     if args.census:
         results = census(fmu, *args.census, progress=lambda d: print(d, file=sys.stderr, flush=True))
-        text = census_markdown(results)
+        text, name = census_markdown(results), "public_decks_census"
     else:
         results = survey(fmu)
-        text = markdown(results)
+        text, name = markdown(results), "public_decks"
     if args.json:
         args.json.write_text(json.dumps(results, indent=1, default=str))
+    if args.doc:
+        from .doc_section import write_section
+        write_section(args.doc, text, name)
     print(text)
     return 0
 
