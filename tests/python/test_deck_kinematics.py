@@ -111,3 +111,32 @@ def test_external_kinematics_leave_the_water_to_the_fmus_sea_state(fmu_file, tmp
             c.free()
     assert np.array_equal(forces[0], forces[1])
     assert forces[2][1] - forces[0][1] > 1000.0  # the cable pushed along +y pulls the fairlead along +y
+
+
+def test_a_system_deck_takes_its_current_profile_to_every_line(fmu_file, tmp_path):
+    """The OC4 platform's three chains with `Currents` 1 and current_profile.txt: every line's tensions
+    are bit for bit those of the still-water deck with the same profile set as parameters, and differ
+    from the still water's."""
+    from studies import mooring_system as ms
+
+    text = ms.OC4.read_text()
+    assert "0.001    dtM" in text
+    current = tmp_path / "current"
+    current.mkdir()
+    (current / "oc4.dat").write_text(text.replace("0.001    dtM", "0.001    dtM\n1        Currents", 1))
+    (current / "current_profile.txt").write_text("header\nnames\nunits\n-200 0.3 0.2 0\n0 1.0 0.0 0\n")
+    (tmp_path / "oc4.dat").write_text(text)
+    base = ms.fmu_parameters(ms.read_system_deck(ms.OC4))
+    profile = {"currentProfileRows": 2, "currentProfile.depth[1]": 0.0, "currentProfile.x[1]": 1.0,
+               "currentProfile.y[1]": 0.0, "currentProfile.depth[2]": 200.0, "currentProfile.x[2]": 0.3,
+               "currentProfile.y[2]": 0.2}
+    tensions = []
+    for deck, extra in ((current / "oc4.dat", {}), (tmp_path / "oc4.dat", profile), (tmp_path / "oc4.dat", {})):
+        c = CableFMU(fmu_file, parameters=base | {"lineFile": str(deck)} | extra, logging_on=True)
+        try:
+            c.initialize()
+            tensions.append([c.get(f"line[{k}].{n}") for k in (1, 2, 3) for n in ("fairleadTension", "anchorTension")])
+        finally:
+            c.free()
+    assert tensions[0] == tensions[1]
+    assert max(abs(a / b - 1) for a, b in zip(tensions[0], tensions[2])) > 1e-3
