@@ -530,8 +530,8 @@ bool read_sea(const Options& options, const LineFileCompanions& companions, Line
             notes.push_back(at_line(waveRow, "WaveKin 7: the one component of wave_frequencies.txt is the regular "
                                              "wave waves.mode 1, height " + number_text(sea.waveHeight) + " m, period " +
                                              number_text(sea.wavePeriod) + " s, direction " +
-                                             number_text(sea.waveDirection) + " rad, Wheeler stretching (waves.* set "
-                                             "by the deck)"));
+                                             number_text(sea.waveDirection) + " rad, Wheeler stretching (in place of "
+                                             "the parameters waves.*)"));
             break;
         default:
             return refuse(waveRow, "WaveKin", waveKin, "not a MoorDyn v2 option (0 to 7)");
@@ -543,7 +543,7 @@ bool read_sea(const Options& options, const LineFileCompanions& companions, Line
             if (!read_current_profile(*text, sea, what)) return refuse(currentRow, "Currents", currents, what);
             notes.push_back(at_line(currentRow, "Currents 1: the steady profile of current_profile.txt is the current "
                                                 "profile currentProfile.* (" + std::to_string(sea.profileRows) +
-                                                " rows; set by the deck, added to the inputs current.x/y)"));
+                                                " rows, in place of the parameters'; added to the inputs current.x/y)"));
             break;
         case 2:
             return refuse(currentRow, "Currents", currents, "a current profile changing in time "
