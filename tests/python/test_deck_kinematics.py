@@ -32,9 +32,9 @@ def test_a_steady_current_profile_file_is_the_fmus_current_profile(fmu_file, tmp
 def test_the_deck_current_loads_the_chain_as_moordyn_does(fmu_file, tmp_path):
     """The chain in the sheared current across its plane: the FMU's static fairlead force against
     MoorDyn's (40 segments, run to rest for 200 s with the fairlead held). Measured: the current's
-    lateral force 4551.8 N against MoorDyn's 4560.2 N (0.18 %; 4553.7 N at 80 segments: MoorDyn converging
-    on the FMU), the whole force 0.015 % apart (MoorDyn's still-water discretization error at 40 segments
-    is 2e-4, docs/lines.md)."""
+    lateral force 4550.8 N against MoorDyn's 4560.2 N (0.21 %; 4553.7 N at 80 segments against the FMU's
+    4551.4 N at 40 elements: converging on each other), the whole force 0.022 % apart (MoorDyn's
+    still-water discretization error at 40 segments is 2e-4, docs/lines.md)."""
     r = dc.compare(fmu_file, tmp_path, segments=40, t_end=200.0)
     assert r["fmu"][1] == pytest.approx(r["moordyn"][1], rel=5e-3)
     assert r["difference"] < 5e-4
