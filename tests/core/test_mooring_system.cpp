@@ -272,63 +272,94 @@ TEST(MooringSystem, FreeBodyStaticsOfASymmetricBuoyHaveTheClosedFormAnswer) {
 // K_p = P - P (P + L1 + L2)^-1 P. Body 1's 6x6 stiffness about its reference point (the origin) follows from
 // the fairlead's motion x + theta x a and the moment a x f of its force f = -T0 n0:
 // [[K_p, -K_p [a]x], [[a]x K_p, -[a]x K_p [a]x - [f]x [a]x]].
-TEST(MooringSystem, TheStiffnessWithAFreePointRebalancedIsTheStringsInSeries) {
-    constexpr double kRho = 1025.0, kG = 9.80665, kEA = 1e7, kD = 0.05, kT0 = 2000.0;
-    const uc::Vec3 node(0.0, 0.0, -50.0);
+struct StringBridle {
+    static constexpr double kRho = 1025.0, kG = 9.80665, kEA = 1e7, kD = 0.05, kT0 = 2000.0;
+    const uc::Vec3 node{0.0, 0.0, -50.0};
     const std::vector<uc::Vec3> ends = {{40.0, 0.0, -20.0}, {-30.0, 40.0, -80.0}, {-30.0, -40.0, -80.0}};
-    const double l1 = (ends[1] - node).norm(), T[3] = {kT0, 0.8 * kT0 * l1 / 60.0, 0.8 * kT0 * l1 / 60.0};
-    std::string text = weightless_leg_deck("a bridle of weightless strings", kD, kEA);
-    char row[512];
-    text += "---------------------- POINTS --------------------------------\nID Attachment X Y Z M V CdA CA\n"
-            "(-) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n";
-    for (int k = 0; k < 3; ++k) {
-        std::snprintf(row, sizeof row, "%d %s %.17g %.17g %.17g 0 0 0 0\n", k + 1, k == 0 ? "Vessel" : "Fixed",
-                      ends[k].x(), ends[k].y(), ends[k].z());
-        text += row;
-    }
-    // where the deck puts the point, 4 mm from its equilibrium, it starts (TmaxIC 0: the system's statics
-    // leave it there): the stiffness re-balances it (further off, the 1 cm the strings stretch, one would slacken)
-    std::snprintf(row, sizeof row, "4 Free 0.003 0.002 -50.002 0 %.17g 0 0\n", 0.2 * kT0 / (kRho * kG));
-    text += row;
-    text += "---------------------- LINES --------------------------------------\n"
-            "ID LineType AttachA AttachB UnstrLen NumSegs Outputs\n(-) (-) (-) (-) (m) (-) (-)\n";
-    for (int k = 0; k < 3; ++k) {
-        std::snprintf(row, sizeof row, "%d leg %d 4 %.17g 10 -\n", k + 1, k + 1, (ends[k] - node).norm() / (1.0 + T[k] / kEA));
-        text += row;
-    }
-    text += "---------------------- OPTIONS ---------------------------------------\n100 WtrDpth\n0 TmaxIC\n"
-            "------------------------- need this line --------------------------------------\n";
-    uc::MooringDeck deck;
-    std::string error;
-    ASSERT_TRUE(uc::read_mooring_deck(text, 0, deck, error)) << error;
-    uc::MooringSystem system(system_parameters(), deck);
-    ASSERT_TRUE(system.build(error)) << error;
-    UCInputs in;
-    uc_inputs_default(&in);
-    ASSERT_TRUE(system.initialize(0.0, in, error)) << error;
-    ASSERT_GT((system.node_position(0) - node).norm(), 0.004);
-    system.update_stiffness();
-    EXPECT_EQ(system.take_event(), "");
-    const double* K = system.outputs().bodyLoad[0].stiffness;
+    const double l1 = (ends[1] - node).norm();
+    const double T[3] = {kT0, 0.8 * kT0 * l1 / 60.0, 0.8 * kT0 * l1 / 60.0};
 
-    auto string = [&](int k) -> uc::Mat3 {
-        const uc::Vec3 n = (ends[k] - node).normalized();
-        const double l = (ends[k] - node).norm(), L = l / (1.0 + T[k] / kEA);
-        return kEA / L * n * n.transpose() + T[k] / l * (uc::Mat3::Identity() - n * n.transpose());
-    };
-    const uc::Mat3 P = string(0), legs = string(1) + string(2);
-    const uc::Mat3 Kp = P - P * (P + legs).inverse() * P;
-    const uc::Vec3 a = ends[0], f = -T[0] * (ends[0] - node).normalized();
-    Eigen::Matrix<double, 6, 6> expected;
-    expected << Kp, -Kp * uc::skew(a), uc::skew(a) * Kp, -uc::skew(a) * Kp * uc::skew(a) - uc::skew(f) * uc::skew(a);
+    // The system initialized with the point where the deck puts it, at `start` (TmaxIC 0: the system's statics
+    // leave it there, and the stiffness re-balances it).
+    std::unique_ptr<uc::MooringSystem> start_at(const uc::Vec3& start) const {
+        std::string text = weightless_leg_deck("a bridle of weightless strings", kD, kEA);
+        char row[512];
+        text += "---------------------- POINTS --------------------------------\nID Attachment X Y Z M V CdA CA\n"
+                "(-) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n";
+        for (int k = 0; k < 3; ++k) {
+            std::snprintf(row, sizeof row, "%d %s %.17g %.17g %.17g 0 0 0 0\n", k + 1, k == 0 ? "Vessel" : "Fixed",
+                          ends[k].x(), ends[k].y(), ends[k].z());
+            text += row;
+        }
+        std::snprintf(row, sizeof row, "4 Free %.17g %.17g %.17g 0 %.17g 0 0\n", start.x(), start.y(), start.z(),
+                      0.2 * kT0 / (kRho * kG));
+        text += row;
+        text += "---------------------- LINES --------------------------------------\n"
+                "ID LineType AttachA AttachB UnstrLen NumSegs Outputs\n(-) (-) (-) (-) (m) (-) (-)\n";
+        for (int k = 0; k < 3; ++k) {
+            std::snprintf(row, sizeof row, "%d leg %d 4 %.17g 10 -\n", k + 1, k + 1,
+                          (ends[k] - node).norm() / (1.0 + T[k] / kEA));
+            text += row;
+        }
+        text += "---------------------- OPTIONS ---------------------------------------\n100 WtrDpth\n0 TmaxIC\n"
+                "------------------------- need this line --------------------------------------\n";
+        uc::MooringDeck deck;
+        std::string error;
+        EXPECT_TRUE(uc::read_mooring_deck(text, 0, deck, error)) << error;
+        auto system = std::make_unique<uc::MooringSystem>(system_parameters(), deck);
+        EXPECT_TRUE(system->build(error)) << error;
+        UCInputs in;
+        uc_inputs_default(&in);
+        EXPECT_TRUE(system->initialize(0.0, in, error)) << error;
+        EXPECT_LT((system->node_position(0) - start).norm(), 1e-12);
+        return system;
+    }
+
+    Eigen::Matrix<double, 6, 6> expected() const {
+        auto string = [&](int k) -> uc::Mat3 {
+            const uc::Vec3 n = (ends[k] - node).normalized();
+            const double l = (ends[k] - node).norm(), L = l / (1.0 + T[k] / kEA);
+            return kEA / L * n * n.transpose() + T[k] / l * (uc::Mat3::Identity() - n * n.transpose());
+        };
+        const uc::Mat3 P = string(0), legs = string(1) + string(2);
+        const uc::Mat3 Kp = P - P * (P + legs).inverse() * P;
+        const uc::Vec3 a = ends[0], f = -T[0] * (ends[0] - node).normalized();
+        Eigen::Matrix<double, 6, 6> K;
+        K << Kp, -Kp * uc::skew(a), uc::skew(a) * Kp, -uc::skew(a) * Kp * uc::skew(a) - uc::skew(f) * uc::skew(a);
+        return K;
+    }
+};
+
+TEST(MooringSystem, TheStiffnessWithAFreePointRebalancedIsTheStringsInSeries) {
+    const StringBridle bridle;
+    // 4 mm from its balance (further off than the 1 cm the strings stretch, one would slacken)
+    const auto system = bridle.start_at(bridle.node + uc::Vec3(0.003, 0.002, -0.002));
+    system->update_stiffness();
+    EXPECT_EQ(system->take_event(), "");
+    const double* K = system->outputs().bodyLoad[0].stiffness;
+    const Eigen::Matrix<double, 6, 6> expected = bridle.expected();
     // central differences of exact profiles: truncation (1 mm / 50 m)^2; the profiles' closure (1e-11 of the
     // length: 5e-10 m, 1e-4 N on the strings' axial stiffness EA / L = 2e5 N/m) over the 2 mm difference: 0.05 N/m
+    const double arm = bridle.ends[0].norm();
     for (int i = 0; i < 6; ++i)
         for (int j = 0; j < 6; ++j) {
-            const double arms = (i < 3 ? 1.0 : a.norm()) * (j < 3 ? 1.0 : a.norm());
+            const double arms = (i < 3 ? 1.0 : arm) * (j < 3 ? 1.0 : arm);
             EXPECT_NEAR(K[6 * i + j], expected(i, j), 0.05 * arms + 1e-6 * std::abs(expected(i, j)))
                 << "K[" << i + 1 << "," << j + 1 << "]";
         }
+}
+
+TEST(MooringSystem, AStiffnessThatIsNotFoundIsZeroAndTheEventSaysWhy) {
+    const StringBridle bridle;
+    // 2.4 m off its balance the pennant is slack: a weightless slack line has no profile
+    const auto system = bridle.start_at(bridle.node + uc::Vec3(2.0, 1.0, 1.0));
+    system->update_stiffness();
+    const std::string event = system->take_event();
+    EXPECT_NE(event.find("body[1].stiffness is 0"), std::string::npos) << event;
+    EXPECT_NE(event.find("mooring line 1"), std::string::npos) << event;
+    for (int i = 0; i < 36; ++i) EXPECT_EQ(system->outputs().bodyLoad[0].stiffness[i], 0.0);
+    system->update_stiffness();  // reported once
+    EXPECT_EQ(system->take_event(), "");
 }
 
 TEST(MooringSystem, BodyOrientationIsMoorDynsRollPitchYaw) {
