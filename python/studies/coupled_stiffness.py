@@ -25,7 +25,7 @@ import numpy as np
 
 from ucable.fmu import CableFMU
 from .doc_section import write_section
-from .free_points import _moorpy_rotation, bridle
+from .free_points import WATER_DENSITY, _moorpy_rotation, bridle, without_line_drag, write_variant
 from .mooring_system import DECKS, OC4, POSE_NAMES, PlatformMotion, _moorpy_system, clumped_oc4, fmu_parameters, \
     read_system_deck, stiffness_difference
 from .public_decks import PUBLIC
@@ -48,10 +48,11 @@ def _turned(pose, axis: int, angle: float) -> np.ndarray:
     return np.concatenate([pose[:3], _angles_zyx(R)])
 
 
-def _moorpy_coupled(path: Path, poses: dict):
+def _moorpy_coupled(path: Path, poses: dict, current: float = 0.0):
     """MoorPy's system of the deck, solved, with its coupled bodies at `poses` ({deck body ID: pose}, the
     others at the deck's), or (a deck without bodies) a coupled body 1 at poses[1] carrying the Vessel points,
-    as the FMU's body 1 does."""
+    as the FMU's body 1 does. A current along x acts on the free points and bodies as the constant drag it
+    is on them at rest (MoorPy has no current on points or bodies), at a body's reference point."""
     deck = read_system_deck(path)
     s = _moorpy_system(path, deck.depth)
     with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
@@ -65,6 +66,13 @@ def _moorpy_coupled(path: Path, poses: dict):
         for b in s.bodyList:
             if b.type == -1 and b.number in poses:
                 b.setPosition(np.array(poses[b.number], float))
+        drag = 0.5 * WATER_DENSITY * current * abs(current)
+        for p in s.pointList:
+            if p.type == 0:
+                p.fExt = np.array([drag * p.CdA, 0.0, 0.0])
+        for b in s.bodyList:
+            if b.type == 0:
+                b.f6Ext = np.array([drag * b.CdA[0], 0.0, 0.0, 0.0, 0.0, 0.0])
         s.initialize()
         s.solveEquilibrium(tol=1e-8, maxIter=2000)
     return s
@@ -84,11 +92,11 @@ def _solved_load(s, body, pose) -> np.ndarray:
         return np.array(body.getForces(lines_only=True), float)
 
 
-def moorpy_stiffness(path: Path, poses: dict, body: int = 1) -> dict:
+def moorpy_stiffness(path: Path, poses: dict, body: int = 1, current: float = 0.0) -> dict:
     """MoorPy's coupled stiffness of coupled body `body` (its deck ID; the coupled bodies at `poses`), the free
     points and bodies re-solved: analytic (its block of `getCoupledStiffnessA`) and by central differences of
     its statics, the other coupled bodies held."""
-    s = _moorpy_coupled(path, poses)
+    s = _moorpy_coupled(path, poses, current)
     coupled = [b for b in s.bodyList if b.type == -1]
     k = [b.number for b in coupled].index(body)
     with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
@@ -110,35 +118,40 @@ def moorpy_stiffness(path: Path, poses: dict, body: int = 1) -> dict:
     return {"analytic": analytic, "differences": K}
 
 
-def fmu_stiffness(fmu, path: Path, poses: dict, body: int = 1, **extra) -> np.ndarray:
-    """The FMU's body[body].stiffness after its static start (initMode 0), the coupled bodies at `poses`."""
+def fmu_stiffness(fmu, path: Path, poses: dict, body: int = 1, current: float = 0.0, **extra) -> np.ndarray:
+    """The FMU's body[body].stiffness after its static start (initMode 0), the coupled bodies at `poses`, in a
+    uniform current along x."""
     deck = read_system_deck(path)
     inputs = {f"body[{k}].{name}": float(v) for k, pose in poses.items() for name, v in zip(POSE_NAMES, pose)}
+    inputs["current.x"] = current
     with CableFMU(fmu, parameters=fmu_parameters(deck, **extra)) as c:
         c.initialize(inputs=inputs)
         return np.array([[c.get(f"body[{body}].stiffness[{i},{j}]") for j in range(1, 7)] for i in range(1, 7)])
 
 
 def cases(directory: Path) -> dict:
-    """The systems compared: {name: (deck path, the coupled bodies' poses, the body)}; the bridle deck is
-    written into directory."""
+    """The systems compared: {name: (deck path, the coupled bodies' poses, the body[, current along x])}; the
+    bridle deck and the buoy's deck without the lines' drag are written into directory."""
     bridled = Path(directory) / "oc4_bridle.dat"
     bridled.write_text(bridle(OC4.read_text()))
     two = PUBLIC / "mp_tests_case9.dat"
+    without_drag = write_variant(BUOY_LEG, directory, without_line_drag)  # the current on the buoy alone
     return {"OC4 bridle, at rest": (bridled, {1: np.zeros(6)}, 1),
             "OC4 bridle, surge 5 m, heave 2 m, pitch 3 deg":
                 (bridled, {1: (5.0, 0.0, 2.0, 0.0, np.radians(3.0), 0.0)}, 1),
             "platform with a leg through a buoy body, at rest": (BUOY_LEG, {1: np.zeros(6)}, 1),
             "platform with a leg through a buoy body, surge -6 m, sway 4 m, yaw 5 deg":
                 (BUOY_LEG, {1: (-6.0, 4.0, 0.0, 0.0, 0.0, np.radians(5.0))}, 1),
+            "platform with a leg through a buoy body, a 1 m/s current on the buoy":
+                (without_drag, {1: np.zeros(6)}, 1, 1.0),
             "two bodies sharing a line (MoorPy's case9), body 1": (two, coupled_poses(two), 1),
             "two bodies sharing a line (MoorPy's case9), body 2": (two, coupled_poses(two), 2)}
 
 
-def compare_case(fmu, path: Path, poses: dict, body: int) -> dict:
+def compare_case(fmu, path: Path, poses: dict, body: int, current: float = 0.0) -> dict:
     """The FMU's stiffness against MoorPy's two: the largest |dK_ij| / sqrt(K_ii K_jj)."""
-    ref = moorpy_stiffness(path, poses, body)
-    ours = fmu_stiffness(fmu, path, poses, body)
+    ref = moorpy_stiffness(path, poses, body, current)
+    ours = fmu_stiffness(fmu, path, poses, body, current)
     return {"K": ours, "diagonal": np.diag(ours),
             "vs_differences": stiffness_difference(ours, ref["differences"]),
             "vs_analytic": stiffness_difference(ours, ref["analytic"]),
