@@ -51,7 +51,7 @@ static fmi2Status ensure_readable(UCInstance* inst, const UCVariable* v, const c
 }
 
 /* body[k].stiffness is computed when it is read, at the first read after a step (docs/systems_mooring.md,
- * "Mooring stiffness": a quarter to a third of a step's cost). */
+ * "Mooring stiffness": a fifth of a step's cost). */
 static int is_stiffness(const UCVariable* v) {
     if (v->causality != UC_CAUSALITY_OUTPUT) return 0;
     for (size_t b = 0; b < UC_MAX_BODIES; ++b) {

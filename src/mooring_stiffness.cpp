@@ -5,7 +5,8 @@
 // reach through free nodes (3 per point, 6 per free body: reference point and a small rotation about the
 // earth axes). Their generalized forces are the lines' static end forces (from each line's exact elastic
 // catenary, src/line_profile.h) and, on a node, its weight, buoyancy and current drag at rest. With J the
-// Jacobian of those forces (central differences), K = -J, and the nodes held in balance to first order
+// Jacobian of those forces (each line's end forces by central differences in its ends' positions, chained
+// through the rigid motion of what they are on), K = -J, and the nodes held in balance to first order
 // (dG_f = 0), body b's stiffness is the Schur complement K_cc - K_cf K_ff^-1 K_fc.
 #include <algorithm>
 #include <cmath>
@@ -57,29 +58,63 @@ int MooringSystem::stiffness_holder(const MooringEnd& e, int b, const std::vecto
     return -1;
 }
 
-bool MooringSystem::add_stiffness_loads(int k, int b, const std::vector<Holder>& holders,
-                                        const std::vector<int>& nodeHolder, const UCInputs& in, Eigen::VectorXd& G,
-                                        std::string* why) const {
+Vec3 MooringSystem::stiffness_place(const MooringEnd& e, int b, const std::vector<Holder>& holders,
+                                    const std::vector<int>& nodeHolder, const UCInputs& in) const {
+    const int h = stiffness_holder(e, b, nodeHolder);
+    if (h < 0) return end_motion(e, in).position;  // an anchor, a coupled point or another body: held
+    if (e.kind == MooringEnd::Kind::Node && !deck_.nodes[e.node].body) return holders[h].reference;
+    return holders[h].reference + holders[h].rotation * Eigen::Map<const Vec3>(e.position);
+}
+
+bool MooringSystem::add_line_jacobian(int k, int b, const std::vector<Holder>& holders,
+                                      const std::vector<int>& nodeHolder, const UCInputs& in, Eigen::VectorXd& G,
+                                      Eigen::MatrixXd& J, std::string* why) const {
     const MooringDeckLine& l = deck_.lines[k];
-    auto place = [&](const MooringEnd& e) -> Vec3 {
-        const int h = stiffness_holder(e, b, nodeHolder);
-        if (h < 0) return end_motion(e, in).position;  // an anchor, a coupled point or another body: held
-        if (e.kind == MooringEnd::Kind::Node && !deck_.nodes[e.node].body) return holders[h].reference;
-        return holders[h].reference + holders[h].rotation * Eigen::Map<const Vec3>(e.position);
-    };
-    const Vec3 at[2] = {place(l.fairlead), l.farFree ? place(l.fairlead) : place(l.far)};
-    Vec3 on[2];
-    if (!profile_end_forces(k, at[0], at[1], on[0], on[1], why)) {
+    const MooringEnd* ends[2] = {&l.fairlead, l.farFree ? nullptr : &l.far};
+    int h[2];
+    Vec3 at[2], on[2];
+    for (int e = 0; e < 2; ++e) h[e] = ends[e] ? stiffness_holder(*ends[e], b, nodeHolder) : -1;
+    at[0] = stiffness_place(l.fairlead, b, holders, nodeHolder, in);
+    at[1] = l.farFree ? at[0] : stiffness_place(l.far, b, holders, nodeHolder, in);
+    auto forces = [&](const Vec3 (&x)[2], Vec3 (&f)[2]) -> bool {
+        if (profile_end_forces(k, x[0], x[1], f[0], f[1], why)) return true;
         if (why) *why = "mooring line " + std::to_string(l.id) + ": " + *why;
         return false;
-    }
-    const MooringEnd* ends[2] = {&l.fairlead, l.farFree ? nullptr : &l.far};
+    };
+    if (!forces(at, on)) return false;
+    // D(3 r + i, 3 e + c) = d (force on end r)_i / d (end e)_c, by central differences of the profile
+    Eigen::Matrix<double, 6, 6> D = Eigen::Matrix<double, 6, 6>::Zero();
     for (int e = 0; e < 2; ++e) {
-        const int h = ends[e] ? stiffness_holder(*ends[e], b, nodeHolder) : -1;
-        if (h < 0) continue;
-        const Holder& holder = holders[h];
-        G.segment<3>(holder.offset) += on[e];
-        if (holder.dofs == 6) G.segment<3>(holder.offset + 3) += (at[e] - holder.reference).cross(on[e]);
+        if (h[e] < 0) continue;
+        for (int c = 0; c < 3; ++c) {
+            Vec3 x[2] = {at[0], at[1]}, fp[2], fm[2];
+            x[e][c] = at[e][c] + kStiffnessStep;
+            if (!forces(x, fp)) return false;
+            x[e][c] = at[e][c] - kStiffnessStep;
+            if (!forces(x, fm)) return false;
+            for (int r = 0; r < 2; ++r) D.block<3, 1>(3 * r, 3 * e + c) = (fp[r] - fm[r]) / (2.0 * kStiffnessStep);
+        }
+    }
+    // chained through each end's motion with its holder's coordinates, dp = dx - [a]x dtheta (a the arm from
+    // the holder's reference point), into the forces and their moments a x f on the holders
+    for (int r = 0; r < 2; ++r) {
+        if (h[r] < 0) continue;
+        const Holder& row = holders[h[r]];
+        const Vec3 arm = at[r] - row.reference;
+        G.segment<3>(row.offset) += on[r];
+        if (row.dofs == 6) {
+            G.segment<3>(row.offset + 3) += arm.cross(on[r]);
+            J.block<3, 3>(row.offset + 3, row.offset + 3) += skew(on[r]) * skew(arm);  // the arm turns with it
+        }
+        for (int e = 0; e < 2; ++e) {
+            if (h[e] < 0) continue;
+            const Holder& col = holders[h[e]];
+            Eigen::Matrix<double, 3, 6> dF;
+            dF.leftCols<3>() = D.block<3, 3>(3 * r, 3 * e);
+            dF.rightCols<3>() = -D.block<3, 3>(3 * r, 3 * e) * skew(at[e] - col.reference);
+            J.block(row.offset, col.offset, 3, col.dofs) += dF.leftCols(col.dofs);
+            if (row.dofs == 6) J.block(row.offset + 3, col.offset, 3, col.dofs) += (skew(arm) * dF).leftCols(col.dofs);
+        }
     }
     return true;
 }
@@ -100,48 +135,40 @@ bool MooringSystem::body_stiffness(int b, const UCInputs& in, double K[36], std:
     std::vector<int> nodeHolder(nodes_.size(), -1);
     for (size_t h = 1; h < holders.size(); ++h) nodeHolder[holders[h].node] = static_cast<int>(h);
     const int n = holders.back().offset + holders.back().dofs;
-    // the lines with an end on a holder, and their holders
-    std::vector<int> lines;
-    std::vector<std::array<int, 2>> lineHolders;
+    std::vector<int> lines;  // with an end on a holder
     for (size_t k = 0; k < lines_.size(); ++k) {
         const MooringDeckLine& l = deck_.lines[k];
-        const std::array<int, 2> h = {stiffness_holder(l.fairlead, b, nodeHolder),
-                                      l.farFree ? -1 : stiffness_holder(l.far, b, nodeHolder)};
-        if (h[0] < 0 && h[1] < 0) continue;
-        lines.push_back(static_cast<int>(k));
-        lineHolders.push_back(h);
+        if (stiffness_holder(l.fairlead, b, nodeHolder) >= 0 || (!l.farFree && stiffness_holder(l.far, b, nodeHolder) >= 0))
+            lines.push_back(static_cast<int>(k));
     }
-    // J = dG/dq column by column: a holder's coordinate moved both ways, the loads that move with it; and
-    // G_f, the nodes' unbalanced forces, where they stand
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
+    // G (the nodes' unbalanced forces G_f among them) and J = dG/dq where the holders stand: each line's
+    // end forces differenced in its ends' positions and chained through the holders' motion; a node's own
+    // loads (a free body's weight turns with it) differenced in its coordinates
+    Eigen::MatrixXd J(n, n);
     Eigen::VectorXd G(n), Gp(n), Gm(n);
-    auto loads = [&](int moved, Eigen::VectorXd& out) -> bool {
-        out.setZero();
-        for (size_t h = 1; h < holders.size(); ++h)
-            if (moved < 0 || static_cast<int>(h) == moved) add_node_loads(holders[h], in, out);
-        for (size_t i = 0; i < lines.size(); ++i) {
-            if (moved >= 0 && lineHolders[i][0] != moved && lineHolders[i][1] != moved) continue;
-            if (!add_stiffness_loads(lines[i], b, holders, nodeHolder, in, out, why)) return false;
-        }
-        return true;
-    };
     auto jacobian = [&]() -> bool {
-        for (size_t h = 0; h < holders.size(); ++h) {
+        J.setZero();
+        G.setZero();
+        for (size_t h = 1; h < holders.size(); ++h) {
             const Holder rest = holders[h];
+            add_node_loads(rest, in, G);
             for (int j = 0; j < rest.dofs; ++j) {
                 const double d = j < 3 ? kStiffnessStep : kStiffnessAngle;
                 for (int sign : {1, -1}) {
-                    holders[h] = rest;
+                    Holder moved = rest;
                     if (j < 3)
-                        holders[h].reference[j] += sign * d;
+                        moved.reference[j] += sign * d;
                     else
-                        holders[h].rotation = turn_matrix(sign * d * Vec3::Unit(j - 3)) * rest.rotation;
-                    if (!loads(static_cast<int>(h), sign > 0 ? Gp : Gm)) return false;
+                        moved.rotation = turn_matrix(sign * d * Vec3::Unit(j - 3)) * rest.rotation;
+                    Eigen::VectorXd& out = sign > 0 ? Gp : Gm;
+                    out.setZero();
+                    add_node_loads(moved, in, out);
                 }
-                holders[h] = rest;
-                J.col(rest.offset + j) = (Gp - Gm) / (2.0 * d);
+                J.col(rest.offset + j) += (Gp - Gm) / (2.0 * d);
             }
         }
+        for (int k : lines)
+            if (!add_line_jacobian(k, b, holders, nodeHolder, in, G, J, why)) return false;
         return true;
     };
     if (!jacobian()) return false;
@@ -157,7 +184,6 @@ bool MooringSystem::body_stiffness(int b, const UCInputs& in, double K[36], std:
             if (why) *why = "the stiffness of the free nodes its lines reach is singular";
             return false;
         }
-        if (!loads(-1, G)) return false;
         Eigen::VectorXd dx = -lu.solve(G.tail(m));
         // converged when a step moves the nodes by less than kStiffnessBalance (m, rad), or by little more
         // where the steps stop shrinking (the profiles' own tolerance)

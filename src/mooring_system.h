@@ -51,7 +51,7 @@ public:
     // profile is not solved there or the nodes' stiffness is singular.
     bool body_stiffness(int b, const UCInputs& in, double K[36], std::string* why) const;
     // body[k].stiffness of every coupled body into the outputs, at the last inputs' poses: computed when
-    // asked, once per step (it costs a quarter to a third of a step; docs/systems_mooring.md). A body where
+    // asked, once per step (it costs a fifth of a step; docs/systems_mooring.md). A body where
     // body_stiffness fails gets 0, and an event says why (once per run).
     void update_stiffness();
 
@@ -62,9 +62,10 @@ public:
     // moment arms' change. Available after the first step.
     bool body_derivatives(int b, double d[6][12], std::string& error);
 
-    // Steps of the central differences of body_stiffness [m], [rad]: each line's force is differenced with
-    // its other end held, where a short taut line (a bridle's pennant, its sag 0.5 m) is strongly non-linear
-    // (truncation ~ (step / sag)^2: 1.6e-4 of the diagonal at 0.01 m, 1.7e-6 at 1 mm; docs/systems_mooring.md).
+    // Steps of the central differences of body_stiffness: of each line's ends [m] (with the other end held,
+    // where a short taut line, a bridle's pennant of sag 0.5 m, is strongly non-linear: truncation ~
+    // (step / sag)^2, 4e-5 of the diagonal at 0.01 m, 4e-7 at 1 mm; docs/systems_mooring.md), and of a free
+    // body's own weight in its rotation [rad].
     static constexpr double kStiffnessStep = 0.001, kStiffnessAngle = 1e-5;
     // The stiffness re-balances the free nodes on the lines' profiles until a Newton step moves them by
     // less than kStiffnessBalance [m, rad], each step moving a node by at most kStiffnessReach [m].
@@ -115,11 +116,15 @@ private:
     std::vector<Holder> stiffness_holders(int b, const UCInputs& in) const;
     // The holder of a line's end (-1: held where it is), nodeHolder[n] that of node n (-1: none).
     int stiffness_holder(const MooringEnd& e, int b, const std::vector<int>& nodeHolder) const;
-    // G += line k's static end forces on the holders (on a 6-dof holder also their moment about its
-    // reference point), its ends placed by the holders' poses; and a node's own weight, buoyancy and
-    // current drag at rest (a free body's weight at its centre of gravity).
-    bool add_stiffness_loads(int k, int b, const std::vector<Holder>& holders, const std::vector<int>& nodeHolder,
-                             const UCInputs& in, Eigen::VectorXd& G, std::string* why) const;
+    // Where end e stands with the holders at their poses (a held end: at its inputs).
+    Vec3 stiffness_place(const MooringEnd& e, int b, const std::vector<Holder>& holders,
+                         const std::vector<int>& nodeHolder, const UCInputs& in) const;
+    // G += line k's static end forces on the holders (on a 6-dof holder also their moment about its reference
+    // point), J += their derivatives in the holders' coordinates: the forces differenced in the ends'
+    // positions (src/line_profile.h), chained through the holders' rigid motion, and the turning arms.
+    bool add_line_jacobian(int k, int b, const std::vector<Holder>& holders, const std::vector<int>& nodeHolder,
+                           const UCInputs& in, Eigen::VectorXd& G, Eigen::MatrixXd& J, std::string* why) const;
+    // G += a node's own weight, buoyancy and current drag at rest (a free body's weight at its centre of gravity).
     void add_node_loads(const Holder& holder, const UCInputs& in, Eigen::VectorXd& G) const;
     // The static forces of line k on its fairlead and far end with them at top and far, from its
     // profile (a line with a free far end: its weight on the fairlead).
