@@ -543,6 +543,8 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              'bottomEnd 4: velocity gain of the tracking force, as a fraction beta of M / h'),
     Variable('proxy.filterTime', 258, 'parameter', 'Real', 's', 1.0, 0.0, 10000.0,
              "bottomEnd 4: shortest time constant of the low-pass estimate of the external body's other forces (drag, weight and buoyancy beyond the proxy's, lift, thrust); the estimate uses the larger of this and five communication steps"),
+    Variable('seabedRest', 259, 'parameter', 'Integer', None, 1, 0.0, 1.0,
+             "Where a line at rest lies on the penalty seabed: 1 (default) at z = -waterDepth, the contact surface raised by each section's (and attachment's) rest penetration, so that statics agree with a rigid seabed at every seabedStiffness; 0 the contact surface at z = -waterDepth, a resting line sinking into it by w / seabedStiffness (as MoorDyn's kBot)"),
     Variable('tow.x', 1001, 'input', 'Real', 'm', 0.0, None, None,
              'x coordinate of the tow point'),
     Variable('tow.y', 1002, 'input', 'Real', 'm', 0.0, None, None,
