@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <new>
 #include <string>
@@ -145,6 +146,17 @@ extern "C" void uc_get_outputs(const UCCable* c, UCOutputs* out) {
     out->mooringLine[0].anchorTension = out->endTension;
     out->mooringLine[0].minTension = out->minTension;
     out->mooringLine[0].groundedLength = out->groundedLength;
+}
+
+extern "C" int uc_update_stiffness(UCCable* c, UCOutputs* out, char* msg, size_t msgSize) {
+    if (!c || !out || !c->system) return 0;
+    return guarded(msg, msgSize, [&](std::string&) {
+        c->system->update_stiffness();
+        const UCOutputs& o = c->system->outputs();
+        for (int b = 0; b < UC_MAX_BODIES; ++b)
+            std::memcpy(out->bodyLoad[b].stiffness, o.bodyLoad[b].stiffness, sizeof o.bodyLoad[b].stiffness);
+        return true;
+    });
 }
 
 extern "C" size_t uc_state_size(const UCCable* c) {

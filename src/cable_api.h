@@ -145,6 +145,11 @@ void uc_tow_position(const UCCable* c, double p[3]);
 
 double uc_time(const UCCable* c);
 void uc_get_outputs(const UCCable* c, UCOutputs* out);
+/* A mooring system's body[k].stiffness (docs/systems_mooring.md, "Mooring stiffness") into out: computed at the
+ * first call after an initialization, a step or a restore, copied at the next; nothing for a single line. A
+ * body whose stiffness is not computed gets 0 and an event (uc_take_event) says why; 1 (msg) only on an
+ * internal error. */
+int uc_update_stiffness(UCCable* c, UCOutputs* out, char* msg, size_t msgSize);
 
 /* Exact state save/restore: a plain byte copy of everything that determines the future.
  * The state holds the integrator's history (step size, order, divided differences), so the run
