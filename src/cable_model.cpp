@@ -128,7 +128,11 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const Sta
     endContact_.seabed = last.seabed;
     if (far_end_carries_body()) {
         endContact_.footprint = body_footprint(body_.mass, body_.volume, last.fluid.diameter);
+        endContact_.seabed.depth = params.waterDepth;
         endContact_.seabed.smoothing = 0.05 * std::max(body_size(body_.mass, body_.volume), last.fluid.diameter);
+        if (params.seabedRest == 1)
+            rest_at_depth(endContact_.seabed,
+                          (body_.mass - params.waterDensity * body_.volume) * params.gravity / endContact_.footprint);
     } else if (params.bottomEnd == UC_BOTTOM_FREE) {
         // The 5-point rule's outer point sits 0.0469 l from the element's end: the tip beyond it.
         endContact_.footprint = 0.0469101 * runs_.back().elementLength;
@@ -222,6 +226,7 @@ void CableModel::build_sections(const UCParams& p) {
         s.seabed.damping = p.seabedDamping;
         s.seabed.friction = p.seabedFriction;
         s.seabed.smoothing = 0.05 * in.diameter;
+        if (p.seabedRest == 1) rest_at_depth(s.seabed, submerged_weight(s.fluid));
         sections_.push_back(s);
         s0 += in.length;
     }
@@ -367,7 +372,11 @@ void CableModel::place_attachments(const std::vector<std::pair<double, PointBody
         const double d = sections_[k].fluid.diameter;
         at.contact.footprint = body_footprint(at.body.mass, at.body.volume, d);
         at.contact.seabed = sections_[k].seabed;
+        at.contact.seabed.depth = params_.waterDepth;
         at.contact.seabed.smoothing = 0.05 * std::max(body_size(at.body.mass, at.body.volume), d);
+        if (params_.seabedRest == 1)
+            rest_at_depth(at.contact.seabed, (at.body.mass - params_.waterDensity * at.body.volume) * params_.gravity /
+                                                 at.contact.footprint);
         attachments_.push_back(at);
     }
 }

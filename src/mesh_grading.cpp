@@ -8,6 +8,7 @@ namespace uc {
 namespace {
 
 constexpr int kSamples = 4096;  // per section, to integrate and invert the monitor M(s)
+constexpr double kTinyTension = 1e-9;  // [N] floor of the tension whose logarithm grades
 
 // Elements per piece: at least one each, the rest by the largest shortfall against the share
 // of the monitor.
@@ -39,6 +40,7 @@ std::vector<double> graded_nodes(const CableModel& model, const LineProfile& pro
     auto turning = [&](double s) {  // from the tow point, whichever end the profile starts at
         return towOnTop ? profile.turning(s) : profile.turning(L) - profile.turning(L - s);
     };
+    auto profile_tension = [&](double s) { return towOnTop ? profile.tension(s) : profile.tension(L - s); };
     std::vector<double> contacts = profile.contacts();  // where the line reaches or leaves the seabed
     for (double& c : contacts) c = towOnTop ? c : L - c;
     std::vector<double> nodes{0.0};
@@ -55,23 +57,45 @@ std::vector<double> graded_nodes(const CableModel& model, const LineProfile& pro
         for (double c : contacts)
             if (c > s0 && c < s1 && !near_a_cut(c)) cuts.push_back(c);
         std::sort(cuts.begin(), cuts.end());
-        // the monitor on a fine grid with every cut on it
-        std::vector<double> s, theta;
+        // the monitor on a fine grid with every cut on it, denser towards the cuts (geometric
+        // steps from each end resolve a touchdown whose H / w is far below the uniform step)
+        std::vector<double> s, theta, logT;
+        std::vector<size_t> pieceOf;  // the piece between cuts each sample lies in
         for (size_t j = 0; j + 1 < cuts.size(); ++j) {
-            const int m = std::max(8, static_cast<int>(kSamples * (cuts[j + 1] - cuts[j]) / (s1 - s0)));
-            for (int i = 0; i < m; ++i) s.push_back(cuts[j] + (cuts[j + 1] - cuts[j]) * i / m);
+            const double a = cuts[j], b = cuts[j + 1];
+            const int m = std::max(8, static_cast<int>(kSamples * (b - a) / (s1 - s0)));
+            std::vector<double> piece;
+            for (int i = 0; i < m; ++i) piece.push_back(a + (b - a) * i / m);
+            for (double d = (b - a) / m / 2; d > 1e-7 * (b - a); d /= 2) {
+                piece.push_back(a + d);
+                piece.push_back(b - d);
+            }
+            std::sort(piece.begin(), piece.end());
+            s.insert(s.end(), piece.begin(), piece.end());
+            pieceOf.insert(pieceOf.end(), piece.size(), j);
         }
         s.push_back(s1);
+        pieceOf.push_back(cuts.size() - 2);
         double turned = 0.0, previous = turning(s0);
-        for (double si : s) {
-            const double t = turning(si);
+        // the tension's logarithm, counted inside each piece only (it jumps at a point load's cut)
+        double stretched = 0.0, previousLog = 0.0;
+        for (size_t i = 0; i < s.size(); ++i) {
+            const double t = turning(s[i]);
             turned += std::abs(t - previous);
             previous = t;
             theta.push_back(turned);
+            const double l = std::log(std::max(profile_tension(s[i]), kTinyTension));
+            // not from a cut: a point load there makes the tension on its two sides differ
+            if (i > 0 && pieceOf[i] == pieceOf[i - 1] && s[i - 1] != cuts[pieceOf[i]])
+                stretched += std::abs(l - previousLog);
+            previousLog = l;
+            logT.push_back(stretched);
         }
         const double angleScale = std::max(turned, kGradingAngle);
+        const double logScale = std::max(stretched, kGradingLogTension);
         std::vector<double> M(s.size());
-        for (size_t i = 0; i < s.size(); ++i) M[i] = (s[i] - s0) / (s1 - s0) + theta[i] / angleScale;
+        for (size_t i = 0; i < s.size(); ++i)
+            M[i] = (s[i] - s0) / (s1 - s0) + theta[i] / angleScale + logT[i] / logScale;
         auto monitor_at = [&](double x) {
             return M[std::lower_bound(s.begin(), s.end(), x - 1e-12 * (s1 - s0)) - s.begin()];
         };

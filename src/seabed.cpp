@@ -57,6 +57,10 @@ double resting_penetration(const SeabedProps& p, double weight) {
     return std::sqrt(2.0 * p.smoothing * ramp);
 }
 
+void rest_at_depth(SeabedProps& p, double weight) {
+    if (p.enabled && p.stiffness > 0.0 && weight > 0.0) p.depth -= resting_penetration(p, weight);
+}
+
 // The cubic Hermite curve is the Bezier curve with control points r0, r0 + l t0 / 3, r1 - l t1 / 3,
 // r1, and lies in their convex hull: it is nowhere lower than the lowest of their heights.
 bool above_contact(const ElementTables& e, const SeabedProps& p, const double* X) {

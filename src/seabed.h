@@ -46,6 +46,11 @@ Vec3 point_contact_load(const PointContact& c, const Vec3& r, const Vec3& rd, Se
 // Penetration [m] at which a line of this submerged weight per length [N/m] rests on the seabed.
 double resting_penetration(const SeabedProps& p, double weight);
 
+// `seabedRest` 1: the contact surface raised by the rest penetration of this weight per length
+// (of contact footprint), so that what rests there lies at z = -waterDepth. Nothing for a buoyant
+// or weightless part, or a disabled seabed.
+void rest_at_depth(SeabedProps& p, double weight);
+
 // True when no point of the element (its 12 DOFs at X) can touch the contact band, so that
 // seabed_load is exactly zero at every sampling point, which can then be skipped without changing a
 // bit of the result.

@@ -160,6 +160,7 @@ typedef struct UCParams {
     double proxyTrackingGain; /* proxy.trackingGain: `bottomEnd` 4: position gain α of the tracking force, as a fraction of M/h² (M the proxy's inertia, h the communication step); 1 with `proxy.trackingDamping` 0.5 would put the body on the proxy in one step; the defaults 0.05 and 0.3 stay stable under Gauss-Seidel and Jacobi with ±50 % inertia error ([docs/cosimulation.md](docs/cosimulation.md)) */
     double proxyTrackingDamping; /* proxy.trackingDamping: `bottomEnd` 4: velocity gain β of the tracking force, as a fraction of M/h */
     double proxyFilterTime; /* proxy.filterTime [s]: `bottomEnd` 4: shortest time constant of the low-pass that estimates the external body's other forces (drag, lift, thrust, weight and buoyancy beyond the proxy's) from the tracking force; the estimate uses the larger of this and five communication steps */
+    int seabedRest; /* seabedRest: where a line at rest lies on the penalty seabed: 1 (the default) at z = -`waterDepth`: the contact surface of each section and attachment is raised by its own rest penetration (its weight over the contact stiffness, plus half the smoothing band), so the static state agrees with a rigid seabed at every `seabedStiffness` and the stiffness acts on changes of load about the rest; 0 the contact surface at z = -`waterDepth`, a resting line sinking into it by its rest penetration, as MoorDyn's `kBot` ([docs/model.md](docs/model.md), seabed) */
     int bodyOrientation; /* bodyOrientation: a mooring system's coupled bodies: which inputs give their orientation: 0 `body[k].roll/pitch/yaw` with R = Rx(roll) Ry(pitch) Rz(yaw), MoorDyn's; 1 the unit quaternion `body[k].q0/q1/q2/q3`, scalar first; 2 `body[k].roll/pitch/yaw` with R = Rz(yaw) Ry(pitch) Rx(roll), OpenFAST's and MoorPy's ([docs/systems_mooring.md](docs/systems_mooring.md)) */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
 } UCParams;
@@ -497,7 +498,8 @@ typedef struct UCOutputs {
     X(256, "proxy.trackingGain", REAL, PARAMETER, proxyTrackingGain) \
     X(257, "proxy.trackingDamping", REAL, PARAMETER, proxyTrackingDamping) \
     X(258, "proxy.filterTime", REAL, PARAMETER, proxyFilterTime) \
-    X(259, "bodyOrientation", INTEGER, PARAMETER, bodyOrientation) \
+    X(259, "seabedRest", INTEGER, PARAMETER, seabedRest) \
+    X(260, "bodyOrientation", INTEGER, PARAMETER, bodyOrientation) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -1485,6 +1487,7 @@ typedef struct UCOutputs {
     X(proxyTrackingGain, 0.05) \
     X(proxyTrackingDamping, 0.3) \
     X(proxyFilterTime, 1.0) \
+    X(seabedRest, 1) \
     X(bodyOrientation, 0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
@@ -1747,6 +1750,7 @@ typedef struct UCOutputs {
     X(proxyTrackingGain, "proxy.trackingGain", 0.0, 1.0, 1, 0, "(0, 1]", "the tracking gain is a fraction of the one-step (dead-beat) gain") \
     X(proxyTrackingDamping, "proxy.trackingDamping", 0.0, 1.0, 0, 0, "[0, 1]", "the tracking damping is a fraction of the one-step gain M / h") \
     X(proxyFilterTime, "proxy.filterTime", 0.0, 10000.0, 1, 0, "(0, 10000]", "the estimate's low-pass needs a positive time constant") \
+    X(seabedRest, "seabedRest", 0.0, 1.0, 0, 0, "{0 sinking by the rest penetration as in MoorDyn, 1 resting at the seabed's depth}", "unknown seabed rest level") \
     X(bodyOrientation, "bodyOrientation", 0.0, 2.0, 0, 0, "{0 angles R = Rx Ry Rz, 1 quaternion, 2 angles R = Rz Ry Rx}", "unknown orientation input of the coupled bodies") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
