@@ -48,6 +48,50 @@ static char* read_file(const char* path, size_t* length, int* error) {
     return text;
 }
 
+/* The files next to the deck that its options ask for (MoorDyn's current_profile.txt, ...): read from the
+ * deck's directory; one that cannot be read is left out, and the reader refuses the deck naming it. */
+#define UC_MAX_COMPANIONS 4
+typedef struct Companions {
+    UCLineFileCompanion files[UC_MAX_COMPANIONS];
+    char* texts[UC_MAX_COMPANIONS];
+    char names[256];
+    int n;
+} Companions;
+
+static void read_companions(const char* path, const char* text, size_t length, Companions* c) {
+    memset(c, 0, sizeof *c);
+    uc_line_file_companions(text, length, c->names, sizeof c->names);
+    size_t dir = strlen(path);
+    while (dir > 0 && path[dir - 1] != '/' && path[dir - 1] != '\\') --dir;
+    for (char* name = c->names; *name != '\0' && c->n < UC_MAX_COMPANIONS;) {
+        char* end = strchr(name, '\n');
+        if (end == NULL) break;
+        *end = '\0';
+        char* full = malloc(dir + strlen(name) + 1);
+        if (full != NULL) {
+            memcpy(full, path, dir);
+            strcpy(full + dir, name);
+            size_t n = 0;
+            int error = 0;
+            char* companion = read_file(full, &n, &error);
+            free(full);
+            if (companion != NULL) {
+                c->texts[c->n] = companion;
+                c->files[c->n].name = name;
+                c->files[c->n].text = companion;
+                c->files[c->n].length = n;
+                ++c->n;
+            }
+        }
+        name = end + 1;
+    }
+}
+
+static void free_companions(Companions* c) {
+    for (int k = 0; k < c->n; ++k) free(c->texts[k]);
+    c->n = 0;
+}
+
 /* The candidate paths of lineFile (file_lookup.h); the resources directory from fmuResourceLocation. */
 static int candidate_paths(const UCInstance* inst, char* candidates[2]) {
     char* dir = NULL;
@@ -78,8 +122,11 @@ static fmi2Status apply_text(UCInstance* inst, UCParams* p, const char* function
     double vessel[3] = {0.0, 0.0, 0.0};
     char* notes = malloc(UC_NOTES_SIZE);
     inst->msg[0] = '\0';
-    const int rc = uc_line_file_apply(text, length, p, vessel, notes, notes != NULL ? UC_NOTES_SIZE : 0, inst->msg,
-                                      sizeof inst->msg);
+    Companions companions;
+    read_companions(path, text, length, &companions);
+    const int rc = uc_line_file_apply_with(text, length, companions.files, companions.n, p, vessel, notes,
+                                           notes != NULL ? UC_NOTES_SIZE : 0, inst->msg, sizeof inst->msg);
+    free_companions(&companions);
     if (rc != 0 && uc_line_file_is_system(text, length)) {
         /* a mooring system: made from the text by uc_line_file_create_system */
         free(notes);
@@ -113,7 +160,11 @@ static fmi2Status create_system(UCInstance* inst, const UCParams* p, const char*
                                 const char* text, size_t length, UCCable** cable) {
     char* notes = malloc(UC_NOTES_SIZE);
     inst->msg[0] = '\0';
-    *cable = uc_create_system(p, text, length, notes, notes != NULL ? UC_NOTES_SIZE : 0, inst->msg, sizeof inst->msg);
+    Companions companions;
+    read_companions(path, text, length, &companions);
+    *cable = uc_create_system_with(p, text, length, companions.files, companions.n, notes,
+                                   notes != NULL ? UC_NOTES_SIZE : 0, inst->msg, sizeof inst->msg);
+    free_companions(&companions);
     if (*cable == NULL) {
         uc_log_status(&inst->log, fmi2Error, "%s: lineFile %s, %s", function, path, inst->msg);
         free(notes);

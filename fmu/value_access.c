@@ -2,6 +2,7 @@
 #include "value_access.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -49,17 +50,42 @@ static fmi2Status ensure_readable(UCInstance* inst, const UCVariable* v, const c
     return uc_sim_initial_outputs(inst, function);
 }
 
+/* body[k].stiffness is computed when it is read, at the first read after a step (docs/systems_mooring.md,
+ * "Mooring stiffness": a fifth of a step's cost). */
+static int is_stiffness(const UCVariable* v) {
+    if (v->causality != UC_CAUSALITY_OUTPUT) return 0;
+    for (size_t b = 0; b < UC_MAX_BODIES; ++b) {
+        const size_t first = offsetof(UCOutputs, bodyLoad) + b * sizeof(UCBodyLoad) + offsetof(UCBodyLoad, stiffness);
+        if (v->offset >= first && v->offset < first + sizeof(((UCBodyLoad*)0)->stiffness)) return 1;
+    }
+    return 0;
+}
+
+static fmi2Status ensure_stiffness(UCInstance* inst, const UCVariable* v, const char* function, int* done) {
+    if (*done || !is_stiffness(v) || !inst->coreReady || inst->cable == NULL) return fmi2OK;
+    *done = 1;
+    if (uc_update_stiffness(inst->cable, &inst->outputs, inst->msg, sizeof inst->msg) != 0) {
+        uc_log_status(&inst->log, fmi2Error, "%s: body stiffness: %s", function, inst->msg);
+        return fmi2Error;
+    }
+    if (uc_take_event(inst->cable, inst->msg, sizeof inst->msg)) {
+        uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: %s", function, inst->msg);
+    }
+    return fmi2OK;
+}
+
 fmi2Status uc_get_values(UCInstance* inst, const fmi2ValueReference vr[], size_t nvr, void* values, UCVarType type,
                          const char* function) {
     if (check_arrays(inst, vr, nvr, values, function) != fmi2OK) return fmi2Error;
     fmi2Status status = fmi2OK;
-    int checked = 0;
+    int checked = 0, stiffness = 0;
     for (size_t i = 0; i < nvr; ++i) {
         const UCVariable* v = find_or_log(inst, vr[i], type, function);
         if (v == NULL) return fmi2Error;
         const fmi2Status readable = ensure_readable(inst, v, function, &checked);
         if (readable != fmi2OK && readable != fmi2Warning) return readable;
         if (readable == fmi2Warning) status = fmi2Warning;
+        if (ensure_stiffness(inst, v, function, &stiffness) != fmi2OK) return fmi2Error;
         memcpy((char*)values + i * value_size(type),
                uc_variable_address_const(v, &inst->params, &inst->inputs, &inst->outputs), value_size(type));
     }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <new>
 #include <string>
@@ -148,6 +149,17 @@ extern "C" void uc_get_outputs(const UCCable* c, UCOutputs* out) {
     out->mooringLine[0].groundedLength = out->groundedLength;
 }
 
+extern "C" int uc_update_stiffness(UCCable* c, UCOutputs* out, char* msg, size_t msgSize) {
+    if (!c || !out || !c->system) return 0;
+    return guarded(msg, msgSize, [&](std::string&) {
+        c->system->update_stiffness();
+        const UCOutputs& o = c->system->outputs();
+        for (int b = 0; b < UC_MAX_BODIES; ++b)
+            std::memcpy(out->bodyLoad[b].stiffness, o.bodyLoad[b].stiffness, sizeof o.bodyLoad[b].stiffness);
+        return true;
+    });
+}
+
 extern "C" size_t uc_state_size(const UCCable* c) {
     return !c ? 0 : c->system ? c->system->state_size() : c->line->state_size();
 }
@@ -171,8 +183,41 @@ extern "C" int uc_state_restore(UCCable* c, const void* buffer, size_t size, cha
     });
 }
 
+namespace {
+
+uc::LineFileCompanions companion_texts(const UCLineFileCompanion* companions, int n) {
+    uc::LineFileCompanions out;
+    for (int k = 0; companions && k < n; ++k) {
+        if (!companions[k].name || (!companions[k].text && companions[k].length > 0)) continue;
+        out.push_back({companions[k].name, std::string(companions[k].text ? companions[k].text : "", companions[k].length)});
+    }
+    return out;
+}
+
+}  // namespace
+
+extern "C" int uc_line_file_companions(const char* text, size_t length, char* names, size_t namesSize) {
+    try {
+        const std::vector<std::string> found =
+            text ? uc::line_file_companions(std::string_view(text, length)) : std::vector<std::string>();
+        std::string joined;
+        for (const std::string& name : found) joined += name + "\n";
+        write_message(names, namesSize, joined);
+        return static_cast<int>(found.size());
+    } catch (...) {
+        write_message(names, namesSize, "");
+        return 0;
+    }
+}
+
 extern "C" int uc_line_file_apply(const char* text, size_t length, UCParams* p, double towPoint[3], char* notes,
                                   size_t notesSize, char* msg, size_t msgSize) {
+    return uc_line_file_apply_with(text, length, nullptr, 0, p, towPoint, notes, notesSize, msg, msgSize);
+}
+
+extern "C" int uc_line_file_apply_with(const char* text, size_t length, const UCLineFileCompanion* companions, int n,
+                                       UCParams* p, double towPoint[3], char* notes, size_t notesSize, char* msg,
+                                       size_t msgSize) {
     if (notes && notesSize) notes[0] = '\0';
     return guarded(msg, msgSize, [&](std::string& error) {
         if ((text == nullptr && length > 0) || p == nullptr) {
@@ -180,7 +225,8 @@ extern "C" int uc_line_file_apply(const char* text, size_t length, UCParams* p, 
             return false;
         }
         uc::LineFileLine line;
-        if (!uc::read_line_file(std::string_view(text ? text : "", length), p->lineFileElements, line, error) ||
+        if (!uc::read_line_file(std::string_view(text ? text : "", length), p->lineFileElements, line, error,
+                                companion_texts(companions, n)) ||
             !uc::apply_line_file(line, *p, error)) {
             return false;
         }
@@ -202,6 +248,12 @@ extern "C" int uc_line_file_is_system(const char* text, size_t length) {
 
 extern "C" UCCable* uc_create_system(const UCParams* p, const char* text, size_t length, char* notes, size_t notesSize,
                                      char* msg, size_t msgSize) {
+    return uc_create_system_with(p, text, length, nullptr, 0, notes, notesSize, msg, msgSize);
+}
+
+extern "C" UCCable* uc_create_system_with(const UCParams* p, const char* text, size_t length,
+                                          const UCLineFileCompanion* companions, int n, char* notes, size_t notesSize,
+                                          char* msg, size_t msgSize) {
     if (notes && notesSize) notes[0] = '\0';
     UCCable* cable = nullptr;
     guarded(msg, msgSize, [&](std::string& error) {
@@ -210,7 +262,8 @@ extern "C" UCCable* uc_create_system(const UCParams* p, const char* text, size_t
             return false;
         }
         uc::MooringDeck deck;
-        if (!uc::read_mooring_deck(std::string_view(text ? text : "", length), p->lineFileElements, deck, error))
+        if (!uc::read_mooring_deck(std::string_view(text ? text : "", length), p->lineFileElements, deck, error,
+                                   companion_texts(companions, n)))
             return false;
         auto made = std::make_unique<UCCable>(*p, deck);
         if (!made->system->build(error)) return false;

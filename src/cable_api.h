@@ -80,6 +80,26 @@ int uc_line_file_is_system(const char* text, size_t length);
 UCCable* uc_create_system(const UCParams* p, const char* text, size_t length, char* notes, size_t notesSize,
                           char* msg, size_t msgSize);
 
+/* A file MoorDyn reads from the deck's directory (current_profile.txt, wave_frequencies.txt): its name and
+ * its text (length bytes). */
+typedef struct UCLineFileCompanion {
+    const char* name;
+    const char* text;
+    size_t length;
+} UCLineFileCompanion;
+
+/* The names of the files next to the deck that its kinematics options ask for (docs/lines.md), each
+ * followed by '\n', into names (NUL-terminated; may be NULL). Returns their number. */
+int uc_line_file_companions(const char* text, size_t length, char* names, size_t namesSize);
+
+/* uc_line_file_apply and uc_create_system with the companion files read (n of them; a file the deck needs
+ * and the caller could not read is left out: the deck is then refused naming it). */
+int uc_line_file_apply_with(const char* text, size_t length, const UCLineFileCompanion* companions, int n,
+                            UCParams* p, double towPoint[3], char* notes, size_t notesSize, char* msg, size_t msgSize);
+UCCable* uc_create_system_with(const UCParams* p, const char* text, size_t length,
+                               const UCLineFileCompanion* companions, int n, char* notes, size_t notesSize,
+                               char* msg, size_t msgSize);
+
 /* Defaults: the Hopland 1993 tow cable, free lower end, hinged top, 20 elements. */
 /* The inputs' start values (zero, but currentScale 1): initialize every UCInputs with it. */
 void uc_inputs_default(UCInputs* in);
@@ -135,6 +155,11 @@ void uc_tow_position(const UCCable* c, double p[3]);
 
 double uc_time(const UCCable* c);
 void uc_get_outputs(const UCCable* c, UCOutputs* out);
+/* A mooring system's body[k].stiffness (docs/systems_mooring.md, "Mooring stiffness") into out: computed at the
+ * first call after an initialization, a step or a restore, copied at the next; nothing for a single line. A
+ * body whose stiffness is not computed gets 0 and an event (uc_take_event) says why; 1 (msg) only on an
+ * internal error. */
+int uc_update_stiffness(UCCable* c, UCOutputs* out, char* msg, size_t msgSize);
 
 /* Exact state save/restore: a plain byte copy of everything that determines the future.
  * The state holds the integrator's history (step size, order, divided differences), so the run

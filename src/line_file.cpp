@@ -4,6 +4,7 @@
 #include "line_file.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -276,6 +277,7 @@ struct Options {
     double gravity = kMoorDynGravity;
     double waterDensity = kMoorDynWaterDensity;
     bool noInitialConditions = false;  // TmaxIC 0: MoorDyn generates no initial conditions
+    std::pair<int, int> waveKin{0, 0}, currents{0, 0};  // MoorDyn's kinematics options: (value, line of the file)
 };
 
 bool is_one_of(const std::string& name, std::initializer_list<const char*> names) {
@@ -305,12 +307,8 @@ bool read_options(const Section& section, Options& options, std::vector<std::str
         } else if (is_one_of(name, {"rho", "rhow", "wtrdnsty"})) {
             options.waterDensity = f.number(0, name_shown.c_str(), 0.0, HUGE_VAL, "a density must not be negative");
         } else if (is_one_of(name, {"wavekin", "currents"})) {
-            const double v = f.number(0, name_shown.c_str());
-            if (f.ok() && v != 0.0) {
-                return f.fail(name_shown + " = " + shown(row.tokens[0]) +
-                              ": MoorDyn's wave and current kinematics are not supported (0 only; the current is "
-                              "given by the FMU's current.* inputs and currentProfile.* parameters)");
-            }
+            const int v = f.integer(0, name_shown.c_str(), 0, 1000, "an option number");
+            if (f.ok()) (name == "wavekin" ? options.waveKin : options.currents) = {v, row.number};
         } else if (name == "seafloorfile") {
             return f.fail("SeafloorFile: a bathymetry file is not supported (the seabed is flat, at WtrDpth)");
         } else if (is_one_of(name, {"kbot", "kb", "cbot", "cb", "frictioncoefficient", "fricdamp", "statdynfricscale"})) {
@@ -336,6 +334,228 @@ bool read_options(const Section& section, Options& options, std::vector<std::str
             notes.push_back(at_line(row.number, "unknown option " + quoted(row.tokens[1]) + " ignored"));
         }
         if (!f.ok()) return false;
+    }
+    return true;
+}
+
+// ------------------------------------------------------------------------------------------- kinematics
+// MoorDyn's WaveKin and Currents options (docs/lines.md, "Options and environment"): what the FMU's sea
+// state holds is read into it, the rest refused naming the option, its value and why.
+const char* kCurrentProfileFile = "current_profile.txt";
+const char* kWaveFrequenciesFile = "wave_frequencies.txt";
+
+const LineFileCompanion* companion(const LineFileCompanions& companions, const char* name) {
+    for (const LineFileCompanion& c : companions) {
+        if (c.name == name) return &c;
+    }
+    return nullptr;
+}
+
+// The rows of numbers of a companion file from its line `first` (1-based), blank lines skipped.
+struct NumberRow {
+    int number = 0;
+    std::vector<double> values;
+};
+
+bool number_rows(const LineFileCompanion& file, int first, std::vector<NumberRow>& rows, std::string& what) {
+    const std::vector<std::string_view> lines = split_lines(file.text);
+    for (size_t i = static_cast<size_t>(first - 1); i < lines.size(); ++i) {
+        NumberRow row{static_cast<int>(i) + 1, {}};
+        for (std::string_view token : tokenize(lines[i])) {
+            const std::optional<double> v = to_number(token);
+            if (!v) {
+                what = file.name + " line " + std::to_string(row.number) + ": " + quoted(token) + " is not a number";
+                return false;
+            }
+            row.values.push_back(*v);
+        }
+        if (!row.values.empty()) rows.push_back(row);
+    }
+    return true;
+}
+
+// Drops the rows of a piecewise-linear profile (depth increasing) that the others give by MoorDyn's
+// interpolation (linear between rows, constant beyond the ends) to round-off of the largest speed.
+void drop_redundant_rows(std::vector<std::array<double, 3>>& rows) {
+    double scale = 0.0;
+    for (const auto& r : rows) scale = std::max({scale, std::abs(r[1]), std::abs(r[2])});
+    const double tol = 1e-9 * std::max(scale, 1e-300);
+    auto same = [&](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+        return std::abs(a[1] - b[1]) <= tol && std::abs(a[2] - b[2]) <= tol;
+    };
+    while (rows.size() > 1 && same(rows[rows.size() - 1], rows[rows.size() - 2])) rows.pop_back();
+    while (rows.size() > 1 && same(rows[0], rows[1])) rows.erase(rows.begin());
+    std::vector<std::array<double, 3>> kept{rows.front()};
+    for (size_t i = 1; i + 1 < rows.size(); ++i) {
+        // row i may go when every row from the last kept one to row i + 1 lies on their chord
+        const auto& a = kept.back();
+        const auto& b = rows[i + 1];
+        bool onChord = true;
+        for (size_t j = 0; j <= i && onChord; ++j) {
+            const auto& r = rows[j];
+            if (r[0] <= a[0]) continue;
+            const double f = (r[0] - a[0]) / (b[0] - a[0]);
+            std::array<double, 3> line{r[0], a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])};
+            onChord = same(r, line);
+        }
+        if (!onChord) kept.push_back(rows[i]);
+    }
+    if (rows.size() > 1) kept.push_back(rows.back());
+    rows = kept;
+}
+
+// Currents 1: MoorDyn's steady profile, rows "z ux [uy [uz]]" from the file's fourth line, z increasing,
+// linear in z between rows and constant beyond; as the FMU's profile of depths -z.
+bool read_current_profile(const LineFileCompanion& file, LineFileSea& sea, std::string& what) {
+    std::vector<NumberRow> rows;
+    if (!number_rows(file, 4, rows, what)) return false;
+    if (rows.empty()) {
+        what = file.name + " has no rows of the profile (\"z ux uy uz\" from its fourth line)";
+        return false;
+    }
+    std::vector<std::array<double, 3>> profile;  // depth, ux, uy; depth increasing
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const NumberRow& r = rows[i];
+        const std::string at = file.name + " line " + std::to_string(r.number) + ": ";
+        if (r.values.size() < 2 || r.values.size() > 4) {
+            what = at + "a row is z ux [uy [uz]]";
+            return false;
+        }
+        if (r.values.size() == 4 && r.values[3] != 0.0) {
+            what = at + "uz = " + number_text(r.values[3]) + ": a vertical current is not supported (the FMU's "
+                        "current is horizontal)";
+            return false;
+        }
+        if (i > 0 && !(r.values[0] > rows[i - 1].values[0])) {
+            what = at + "z = " + number_text(r.values[0]) + ": z must increase row by row (MoorDyn interpolates "
+                        "between rows in that order)";
+            return false;
+        }
+        profile.insert(profile.begin(), {-r.values[0], r.values[1], r.values.size() > 2 ? r.values[2] : 0.0});
+    }
+    const size_t given = profile.size();
+    drop_redundant_rows(profile);
+    if (profile.size() > UC_CURRENT_PROFILE_ROWS) {
+        what = file.name + ": a profile of " + std::to_string(given) + " rows, " + std::to_string(profile.size()) +
+               " of them off the straight lines between their neighbours: the FMU's current profile "
+               "(currentProfile.*) holds " + std::to_string(UC_CURRENT_PROFILE_ROWS) + " rows";
+        return false;
+    }
+    sea.profileRows = static_cast<int>(profile.size());
+    for (size_t k = 0; k < profile.size(); ++k) {
+        sea.profileDepth[k] = profile[k][0];
+        sea.profileX[k] = profile[k][1];
+        sea.profileY[k] = profile[k][2];
+    }
+    return true;
+}
+
+// WaveKin 7: MoorDyn sums the components "omega Re(A) Im(A) [direction]" of the file, each the elevation
+// |A| sin(omega t - k x + arg A) (x along the direction); one component with arg A = pi/2 is the FMU's
+// regular wave of amplitude |A|, a cos(k x - omega t), crest at the origin at t = 0.
+bool read_wave_components(const LineFileCompanion& file, LineFileSea& sea, std::string& what) {
+    std::vector<NumberRow> rows;
+    if (!number_rows(file, 1, rows, what)) return false;
+    std::vector<const NumberRow*> waves;
+    for (const NumberRow& r : rows) {
+        if (r.values.size() < 3 || r.values.size() > 4) {
+            what = file.name + " line " + std::to_string(r.number) + ": a row is omega Re(A) Im(A) [direction]";
+            return false;
+        }
+        if (r.values[1] != 0.0 || r.values[2] != 0.0) waves.push_back(&r);
+    }
+    if (waves.size() != 1) {
+        what = file.name + " has " + std::to_string(waves.size()) + " components of non-zero amplitude: the FMU's "
+               "waves are one regular wave (waves.mode 1) or a JONSWAP sea of its own components (waves.mode 2), "
+               "not a given list of components";
+        return false;
+    }
+    const NumberRow& w = *waves[0];
+    const double omega = w.values[0], re = w.values[1], im = w.values[2], amplitude = std::hypot(re, im);
+    const std::string at = file.name + " line " + std::to_string(w.number) + ": ";
+    if (!(omega > 0.0)) {
+        what = at + "a component of frequency " + number_text(omega) + " rad/s is not a wave";
+        return false;
+    }
+    if (!(im > 0.0) || std::abs(re) > 1e-12 * amplitude) {
+        what = at + "the component's phase arg A = " + number_text(std::atan2(im, re)) + " rad: the FMU's regular "
+               "wave has its crest at the origin at t = 0 (arg A = pi/2, A = i |A|)";
+        return false;
+    }
+    sea.regularWave = true;
+    sea.waveHeight = 2.0 * amplitude;
+    sea.wavePeriod = 2.0 * 3.14159265358979323846 / omega;
+    sea.waveDirection = w.values.size() > 3 ? w.values[3] : 0.0;
+    return true;
+}
+
+// The deck's kinematics options into the FMU's sea state, or the refusal naming the option and why.
+bool read_sea(const Options& options, const LineFileCompanions& companions, LineFileSea& sea,
+              std::vector<std::string>& notes, std::string& error) {
+    const auto [waveKin, waveRow] = options.waveKin;
+    const auto [currents, currentRow] = options.currents;
+    auto refuse = [&](int row, const char* name, int value, const std::string& why) {
+        error = at_line(row, std::string(name) + " = " + std::to_string(value) + ": " + why);
+        return false;
+    };
+    auto file = [&](int row, const char* name, int value, const char* fileName, const LineFileCompanion*& out) {
+        out = companion(companions, fileName);
+        if (out) return true;
+        return refuse(row, name, value, std::string("MoorDyn reads ") + fileName + " from the deck's directory: "
+                                                    "it could not be read there");
+    };
+    const LineFileCompanion* text = nullptr;
+    std::string what;
+    switch (waveKin) {
+        case 0: break;
+        case 1:
+            notes.push_back(at_line(waveRow, "WaveKin 1 (water kinematics set by the program driving MoorDyn): the "
+                                             "water moves as the FMU's sea state, waves.* and current.*, set by the "
+                                             "importer"));
+            break;
+        case 2:
+            return refuse(waveRow, "WaveKin", waveKin, "waves from the spectrum of wave_frequencies.txt precomputed on "
+                          "the grid of water_grid.txt are not supported: the FMU's waves are a regular wave (waves.mode "
+                          "1) or a JONSWAP sea of its own components (waves.mode 2); WaveKin 7 with one component is "
+                          "read as the regular wave");
+        case 3:
+            return refuse(waveRow, "WaveKin", waveKin, "waves from the elevation record wave_elevation.txt are not "
+                          "supported: the FMU's waves are a regular wave (waves.mode 1) or a JONSWAP sea of its own "
+                          "components (waves.mode 2)");
+        case 4: case 5: case 6:
+            return refuse(waveRow, "WaveKin", waveKin, "not implemented in MoorDyn v2 either");
+        case 7:
+            if (!file(waveRow, "WaveKin", waveKin, kWaveFrequenciesFile, text)) return false;
+            if (!read_wave_components(*text, sea, what)) return refuse(waveRow, "WaveKin", waveKin, what);
+            notes.push_back(at_line(waveRow, "WaveKin 7: the one component of wave_frequencies.txt is the regular "
+                                             "wave waves.mode 1, height " + number_text(sea.waveHeight) + " m, period " +
+                                             number_text(sea.wavePeriod) + " s, direction " +
+                                             number_text(sea.waveDirection) + " rad, Wheeler stretching (in place of "
+                                             "the parameters waves.*)"));
+            break;
+        default:
+            return refuse(waveRow, "WaveKin", waveKin, "not a MoorDyn v2 option (0 to 7)");
+    }
+    switch (currents) {
+        case 0: break;
+        case 1:
+            if (!file(currentRow, "Currents", currents, kCurrentProfileFile, text)) return false;
+            if (!read_current_profile(*text, sea, what)) return refuse(currentRow, "Currents", currents, what);
+            notes.push_back(at_line(currentRow, "Currents 1: the steady profile of current_profile.txt is the current "
+                                                "profile currentProfile.* (" + std::to_string(sea.profileRows) +
+                                                " rows, in place of the parameters'; added to the inputs current.x/y)"));
+            break;
+        case 2:
+            return refuse(currentRow, "Currents", currents, "a current profile changing in time "
+                          "(current_profile_dynamic.txt) is not supported: the FMU's profile is steady (Currents 1), "
+                          "scaled in time only by the input currentScale");
+        case 3: case 4:
+            return refuse(currentRow, "Currents", currents, "not implemented in MoorDyn v2 either");
+        case 5:
+            return refuse(currentRow, "Currents", currents, "a current on a grid in x, y, z and time "
+                          "(current_profile_4d.txt) is not supported: the FMU's current varies with depth only");
+        default:
+            return refuse(currentRow, "Currents", currents, "not a MoorDyn v2 option (0 to 5)");
     }
     return true;
 }
@@ -539,26 +759,52 @@ const char* kind_name(PointKind kind) {
     }
 }
 
-// The lines in order from the vessel point: (line index, reversed) pairs, and the far-end point.
+// The lines in order from the vessel point: (line index, reversed) pairs, and the far-end point. A deck
+// without a Vessel or Coupled point starts at a Fixed point (towFixed): the higher of two (on a tie, the
+// one at AttachB of its line, MoorDyn's fairlead end), the other the anchor; or the one, the line hanging
+// from it to a Free end.
 bool walk_chain(const std::vector<Point>& points, const std::vector<Line>& lines,
-                std::vector<std::pair<int, bool>>& chain, int& farPoint, std::string& error) {
-    int vessel = -1, fixed = -1;
+                std::vector<std::pair<int, bool>>& chain, int& farPoint, bool& towFixed, std::string& error) {
+    int vessel = -1;
+    std::vector<int> fixed;
+    auto refuse = [&](int q, int first, const char* which, const char* rule) {
+        error = at_line(points[q].row, std::string("a ") + which + " " + kind_name(points[q].kind) + " point (the first is point " +
+                                           std::to_string(points[first].id) + "): " + rule);
+        return false;
+    };
+    const char* oneLine = "one line from one vessel point to one anchor is supported";
     for (size_t i = 0; i < points.size(); ++i) {
         const Point& p = points[i];
-        int& slot = p.kind == PointKind::Vessel ? vessel : fixed;
-        if (p.kind == PointKind::Free) continue;
-        if (slot >= 0) {
-            error = at_line(p.row, std::string("a second ") + kind_name(p.kind) + " point (the first is point " +
-                                       std::to_string(points[slot].id) + "): one line from one vessel point to one "
-                                       "anchor is supported");
+        if (p.kind == PointKind::Vessel) {
+            if (vessel >= 0) return refuse(static_cast<int>(i), vessel, "second", oneLine);
+            vessel = static_cast<int>(i);
+        } else if (p.kind == PointKind::Fixed) {
+            if (vessel >= 0 && !fixed.empty()) return refuse(static_cast<int>(i), fixed[0], "second", oneLine);
+            fixed.push_back(static_cast<int>(i));
+        }
+    }
+    if (vessel >= 0 && fixed.size() > 1) return refuse(fixed[1], fixed[0], "second", oneLine);
+    if (fixed.size() > 2) {
+        return refuse(fixed[2], fixed[0], "third", "without a Vessel or Coupled point one line between two Fixed "
+                                                   "points is supported");
+    }
+    towFixed = vessel < 0;
+    if (towFixed) {
+        if (fixed.empty()) {
+            error = "the POINTS table has no Vessel, Coupled or Fixed point: the tow point, where the line starts";
             return false;
         }
-        slot = static_cast<int>(i);
+        auto at_attach_b = [&](int q) {
+            return !points[q].lines.empty() && lines[points[q].lines[0]].end[1] == q;
+        };
+        vessel = fixed[0];
+        if (fixed.size() == 2) {
+            const double z0 = points[fixed[0]].position[2], z1 = points[fixed[1]].position[2];
+            if (z1 > z0 || (z1 == z0 && at_attach_b(fixed[1]) && !at_attach_b(fixed[0]))) vessel = fixed[1];
+        }
+        fixed.erase(std::find(fixed.begin(), fixed.end(), vessel));
     }
-    if (vessel < 0) {
-        error = "the POINTS table has no Vessel or Coupled point: the tow point, where the line starts";
-        return false;
-    }
+    const int fixedPoint = fixed.empty() ? -1 : fixed[0];
     for (const Point& p : points) {
         if (p.lines.empty()) {
             error = at_line(p.row, "point " + std::to_string(p.id) + " is not attached to any line");
@@ -596,9 +842,9 @@ bool walk_chain(const std::vector<Point>& points, const std::vector<Line>& lines
         error = at_line(points[farPoint].row, "the lines form a closed loop");
         return false;
     }
-    if (fixed >= 0 && fixed != farPoint) {
-        error = at_line(points[fixed].row, "the Fixed point " + std::to_string(points[fixed].id) +
-                                               " is not the far end of the chain");
+    if (fixedPoint >= 0 && fixedPoint != farPoint) {
+        error = at_line(points[fixedPoint].row, "the Fixed point " + std::to_string(points[fixedPoint].id) +
+                                                    " is not the far end of the chain");
         return false;
     }
     return true;
@@ -626,9 +872,11 @@ struct Deck {
     int bodiesHeader = 0;
     double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
     bool noInitialConditions = false;
+    LineFileSea sea;
 };
 
-bool parse_deck(std::string_view text, bool system, Deck& deck, std::vector<std::string>& notes, std::string& error) {
+bool parse_deck(std::string_view text, bool system, const LineFileCompanions& companions, Deck& deck,
+                std::vector<std::string>& notes, std::string& error) {
     std::vector<std::optional<Section>> sections;
     if (!collect_sections(text, sections, error)) return false;
     auto section = [&](Kind kind) -> const std::optional<Section>& { return sections[static_cast<size_t>(kind)]; };
@@ -666,6 +914,7 @@ bool parse_deck(std::string_view text, bool system, Deck& deck, std::vector<std:
 
     Options options;
     if (section(Kind::Options) && !read_options(*section(Kind::Options), options, notes, error)) return false;
+    if (!read_sea(options, companions, deck.sea, notes, error)) return false;
 
     std::vector<LineType>& types = deck.types;
     for (const Row& row : section(Kind::LineTypes)->rows) {
@@ -752,21 +1001,36 @@ LineFileSection section_of(const Line& l, const LineType& t) {
 
 int elements_for_segments(int numSegs) { return std::max(1, (numSegs + 1) / 2); }
 
-bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& out, std::string& error) {
+std::vector<std::string> line_file_companions(std::string_view text) {
+    std::vector<std::optional<Section>> sections;
+    std::string error;
+    std::vector<std::string> names, notes;
+    Options options;
+    if (!collect_sections(text, sections, error)) return names;
+    const auto& o = sections[static_cast<size_t>(Kind::Options)];
+    if (!o || !read_options(*o, options, notes, error)) return names;
+    if (options.waveKin.first == 7) names.push_back(kWaveFrequenciesFile);
+    if (options.currents.first == 1) names.push_back(kCurrentProfileFile);
+    return names;
+}
+
+bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& out, std::string& error,
+                    const LineFileCompanions& companions) {
     out = LineFileLine();
     Deck deck;
-    if (!parse_deck(text, false, deck, out.notes, error)) return false;
+    if (!parse_deck(text, false, companions, deck, out.notes, error)) return false;
     const std::vector<LineType>& types = deck.types;
     const std::vector<Point>& points = deck.points;
     const std::vector<Line>& lines = deck.lines;
 
     std::vector<std::pair<int, bool>> chain;
     int farPoint = -1;
-    if (!walk_chain(points, lines, chain, farPoint, error)) return false;
+    if (!walk_chain(points, lines, chain, farPoint, out.towFixed, error)) return false;
 
     out.gravity = deck.gravity;
     out.waterDensity = deck.waterDensity;
     out.waterDepth = deck.waterDepth;
+    out.sea = deck.sea;
 
     for (const auto& [index, reversed] : chain) {
         const Line& l = lines[index];
@@ -782,6 +1046,13 @@ bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& out,
     }
     const Point& vessel = points[lines[chain.front().first].end[chain.front().second ? 1 : 0]];
     std::copy(vessel.position, vessel.position + 3, out.towPoint);
+    if (out.towFixed) {
+        out.notes.push_back(at_line(vessel.row, "no Vessel or Coupled point: the Fixed point " + std::to_string(vessel.id) +
+                                                    " is the tow point, which follows the inputs tow.*: hold them at "
+                                                    "its X Y Z = (" + number_text(vessel.position[0]) + ", " +
+                                                    number_text(vessel.position[1]) + ", " +
+                                                    number_text(vessel.position[2]) + ") m, at rest"));
+    }
     const Point& far = points[farPoint];
     if (far.kind == PointKind::Fixed) {
         out.farEnd = LineFileFarEnd::Anchored;
@@ -883,6 +1154,23 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
     p.gravity = line.gravity;
     p.waterDensity = line.waterDensity;
     p.enableCompression = 0;  // MoorDyn's lines are tension-only: a deck's line is the same line
+    const LineFileSea& sea = line.sea;
+    if (sea.profileRows > 0) {
+        p.currentProfileRows = sea.profileRows;
+        for (int k = 0; k < sea.profileRows; ++k) {
+            p.currentProfileDepth[k] = sea.profileDepth[k];
+            p.currentProfileX[k] = sea.profileX[k];
+            p.currentProfileY[k] = sea.profileY[k];
+        }
+    }
+    if (sea.regularWave) {
+        p.wavesMode = 1;
+        p.wavesHeight = sea.waveHeight;
+        p.wavesPeriod = sea.wavePeriod;
+        p.wavesDirection = sea.waveDirection;
+        p.wavesStretching = 1;  // MoorDyn's Wheeler stretching
+        p.wavesRampTime = 0.0;
+    }
     return true;
 }
 
@@ -1071,10 +1359,11 @@ bool is_mooring_system_deck(std::string_view text) {
     return false;
 }
 
-bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& out, std::string& error) {
+bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& out, std::string& error,
+                       const LineFileCompanions& companions) {
     out = MooringDeck();
     Deck deck;
-    if (!parse_deck(text, true, deck, out.notes, error)) return false;
+    if (!parse_deck(text, true, companions, deck, out.notes, error)) return false;
     std::vector<DeckBody> bodies;
     for (const Row& row : deck.bodies) {
         DeckBody b;
@@ -1134,18 +1423,27 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
         std::copy(deck.points[q].position, deck.points[q].position + 3, end.position);
     };
     // Each of our lines is a chain of the deck's lines from an end on a coupled object (or, for lines
-    // no coupled object holds, on a free node) through Free points that join two lines, to a Fixed
-    // point, another coupled end, a free node or a Free point at its end.
+    // no coupled object holds, on a free node; then, for lines neither holds, at a Fixed point) through
+    // Free points that join two lines, to a Fixed point, another coupled end, a free node or a Free point
+    // at its end.
     std::vector<bool> used(deck.lines.size(), false);
-    for (int pass = 0; pass < 2; ++pass)
+    auto fixed_end = [&](int q) {
+        const Point& p = deck.points[q];
+        return p.kind == PointKind::Fixed || (p.kind == PointKind::Body && p.body >= 1 &&
+                                              p.body <= static_cast<int>(bodies.size()) &&
+                                              bodies[p.body - 1].kind == BodyKind::Fixed);
+    };
+    for (int pass = 0; pass < 3; ++pass)
     for (size_t first = 0; first < deck.lines.size(); ++first) {
         if (used[first]) continue;
         const Line& l0 = deck.lines[first];
         int start = -1;
         for (int e : {1, 0}) {  // AttachB first: MoorDyn's usual fairlead
             const PointKind kind = deck.points[l0.end[e]].kind;
-            if (start < 0 && (pass == 0 ? (kind == PointKind::Vessel || (kind == PointKind::Body && !on_free_body(l0.end[e])))
-                                        : (nodeOf[l0.end[e]] >= 0 || on_free_body(l0.end[e]))))
+            if (start < 0 && (pass == 0 ? (kind == PointKind::Vessel || (kind == PointKind::Body && !on_free_body(l0.end[e]) &&
+                                                                         !fixed_end(l0.end[e])))
+                              : pass == 1 ? (nodeOf[l0.end[e]] >= 0 || on_free_body(l0.end[e]))
+                                          : fixed_end(l0.end[e])))
                 start = l0.end[e];
         }
         if (start < 0) continue;  // reached from another line's coupled end or a node, or refused below
@@ -1202,25 +1500,17 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
                                 " lines in a row are supported");
             return false;
         }
-        if (!line.farFree && line.far.kind == MooringEnd::Kind::Fixed && line.fairlead.kind == MooringEnd::Kind::Fixed) {
-            error = at_line(line.row, "line " + std::to_string(line.id) + " runs between two fixed points");
-            return false;
-        }
         if (out.bodies == 0 && line.fairlead.kind == MooringEnd::Kind::Body) out.bodies = 1;
         out.lines.push_back(line);
     }
     for (size_t k = 0; k < deck.lines.size(); ++k) {
         if (used[k]) continue;
         const Line& l = deck.lines[k];
-        const bool fixedBoth = deck.points[l.end[0]].kind == PointKind::Fixed && deck.points[l.end[1]].kind == PointKind::Fixed;
-        error = at_line(l.row, "line " + std::to_string(l.id) + (fixedBoth ? " runs between two fixed points"
-                                                                          : " is not reached from a coupled point "
-                                                                            "or a free node: every line of a system "
-                                                                            "runs from a coupled body or point or a "
-                                                                            "free point where three or more lines "
-                                                                            "meet, through free points joining two "
-                                                                            "lines, to its end") +
-                                   ": a line of a mooring system ends on a coupled body or point or a free node");
+        error = at_line(l.row, "line " + std::to_string(l.id) + " is not reached from a coupled point, a free node "
+                                                                "or a Fixed point: every line of a system runs from "
+                                                                "one of them through free points joining two lines "
+                                                                "to its end (the lines through its points form a "
+                                                                "closed loop)");
         return false;
     }
     for (const MooringNode& node : out.nodes) {
@@ -1240,6 +1530,7 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
     out.waterDepth = deck.waterDepth;
     out.gravity = deck.gravity;
     out.waterDensity = deck.waterDensity;
+    out.sea = deck.sea;
     return true;
 }
 
@@ -1251,6 +1542,7 @@ bool mooring_line_params(const MooringDeck& deck, int k, const UCParams& base, U
     line.waterDepth = deck.waterDepth;
     line.gravity = deck.gravity;
     line.waterDensity = deck.waterDensity;
+    line.sea = deck.sea;
     if (l.farFree) {
         line.body = l.farBody;
         line.farEnd = l.farBody.empty() ? LineFileFarEnd::Free : LineFileFarEnd::Body;

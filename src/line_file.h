@@ -40,6 +40,27 @@ struct LineFilePoint {
 
 enum class LineFileFarEnd { Anchored, Body, Free };
 
+// The water's motion a deck's kinematics options describe, in the FMU's terms (docs/lines.md, "Options and
+// environment"): MoorDyn's steady current profile (Currents 1) as the currentProfile.* parameters, one
+// wave component (WaveKin 7) as the regular wave of waves.*.
+struct LineFileSea {
+    int profileRows = 0;  // > 0: the deck sets the current profile
+    double profileDepth[UC_CURRENT_PROFILE_ROWS] = {}, profileX[UC_CURRENT_PROFILE_ROWS] = {},
+           profileY[UC_CURRENT_PROFILE_ROWS] = {};
+    bool regularWave = false;  // the deck sets waves.mode 1 with these
+    double waveHeight = 0.0, wavePeriod = 0.0, waveDirection = 0.0;
+};
+
+// The text of a file MoorDyn reads from the deck's directory (current_profile.txt, wave_frequencies.txt).
+struct LineFileCompanion {
+    std::string name, text;
+};
+using LineFileCompanions = std::vector<LineFileCompanion>;
+
+// The names of the files next to the deck that its options ask for (empty when none): the caller reads
+// them from the deck's directory and hands their text to read_line_file or read_mooring_deck.
+std::vector<std::string> line_file_companions(std::string_view text);
+
 // The line of a deck: what the parameters need, plus notes for the log.
 struct LineFileLine {
     std::vector<LineFileSection> sections;  // from the tow point
@@ -48,7 +69,9 @@ struct LineFileLine {
     double anchor[3] = {0.0, 0.0, 0.0};     // the Fixed point (Anchored)
     LineFilePoint body;                     // the Free point at the far end (Body)
     double towPoint[3] = {0.0, 0.0, 0.0};   // the Vessel/Coupled point (the tow.* inputs drive it)
+    bool towFixed = false;                  // the tow point is the deck's Fixed point (no Vessel point)
     double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
+    LineFileSea sea;
     std::vector<std::string> notes;         // "line <n>: ..." : what was ignored or adjusted
 };
 
@@ -63,7 +86,9 @@ int elements_for_segments(int numSegs);
 // line's elements from its NumSegs; N > 0, about N over the whole line in proportion to the lengths.
 // Returns false with error = "line <n>: <what>" (or "<what>" for the deck as a whole) when the text is
 // not a readable deck or describes something outside the supported subset.
-bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& line, std::string& error);
+// companions: the files next to the deck that line_file_companions names (a missing one is an error naming it).
+bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& line, std::string& error,
+                    const LineFileCompanions& companions = {});
 
 // Writes the line into the parameters (line properties, elements, far end, environment). False with a
 // message when the parameters cannot describe it.
@@ -117,6 +142,7 @@ struct MooringDeck {
     bool bodiesSection = false;          // false: the deck's Vessel points ride body 1
     bool nodesFromDeck = false;          // TmaxIC 0: the free nodes start at rest at their deck positions
     double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
+    LineFileSea sea;
     std::vector<std::string> notes;
 };
 
@@ -126,7 +152,8 @@ bool is_mooring_system_deck(std::string_view text);
 
 // Reads a mooring system's deck: elementsPerLine is lineFileElements (0: each line's from its NumSegs;
 // N > 0: N per line). False with error = "line <n>: <what>" when the deck is outside what a system holds.
-bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& deck, std::string& error);
+bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& deck, std::string& error,
+                       const LineFileCompanions& companions = {});
 
 // The parameters of line k (0-based) of the system: base with the line's properties, environment and
 // far end (anchored at its Fixed point; driven, bottomEnd 3, where it ends on a coupled object).

@@ -237,7 +237,7 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
     lastStep_ = 0.0;
     lastInputs_ = in;
     stiffnessWarned_ = false;
-    update_outputs(in);
+    update_outputs();
     return true;
 }
 
@@ -264,7 +264,7 @@ bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& er
     }
     lastStep_ = h;
     lastInputs_ = in;
-    update_outputs(in);
+    update_outputs();
     return true;
 }
 
@@ -278,7 +278,7 @@ std::string MooringSystem::take_event() {
     return events;
 }
 
-void MooringSystem::update_outputs(const UCInputs& in) {
+void MooringSystem::update_outputs() {
     outputs_ = lines_[0]->outputs();  // the single-line outputs are line 1's
     std::memset(outputs_.mooringLine, 0, sizeof outputs_.mooringLine);
     std::memset(outputs_.bodyLoad, 0, sizeof outputs_.bodyLoad);
@@ -338,45 +338,7 @@ void MooringSystem::update_outputs(const UCInputs& in) {
         if (id > UC_MAX_POINTS) continue;  // beyond the outputs point[k].position.*
         for (int c = 0; c < 3; ++c) outputs_.pointLoad[id - 1].position[c] = nodes_[n][c];
     }
-    for (int b = 1; b <= deck_.bodies; ++b) {
-        std::string why;
-        if (!body_stiffness(b, in, outputs_.bodyLoad[b - 1].stiffness, &why)) {
-            std::memset(outputs_.bodyLoad[b - 1].stiffness, 0, sizeof outputs_.bodyLoad[b - 1].stiffness);
-            if (!stiffnessWarned_) {
-                stiffnessWarned_ = true;
-                event_ = "body[" + std::to_string(b) + "].stiffness is 0 from t = " + std::to_string(time()) +
-                         " s (reported once): " + why;
-            }
-        }
-    }
-}
-
-bool MooringSystem::static_body_load(int k, int b, const double q[6], const UCInputs& in, Vec3& force, Vec3& moment,
-                                     std::string* why) const {
-    const MooringDeckLine& l = deck_.lines[k];
-    const Vec3 reference(q[0], q[1], q[2]);
-    const UCCoupledBody& now = in.coupledBody[b - 1];
-    // q[3..5]: a small rotation about the earth axes from the present orientation
-    const Vec3 turn(q[3], q[4], q[5]);
-    const Mat3 R = Eigen::AngleAxisd(turn.norm(), turn.norm() > 0.0 ? Vec3(turn.normalized()) : Vec3::UnitX())
-                       .toRotationMatrix() *
-                   coupled_body_rotation(now, base_.bodyOrientation);
-    auto place = [&](const MooringEnd& e) {
-        return e.kind == MooringEnd::Kind::Body && e.body == b ? Vec3(reference + R * vec3(e.position))
-                                                                : end_motion(e, in).position;
-    };
-    force.setZero();
-    moment.setZero();
-    const Vec3 top = place(l.fairlead), far = l.farFree ? top : place(l.far);
-    Vec3 onEnd[2];
-    if (!profile_end_forces(k, top, far, onEnd[0], onEnd[1], why)) return false;
-    for (int e = 0; e < 2; ++e) {
-        const MooringEnd& end = e == 0 ? l.fairlead : l.far;
-        if (end.kind != MooringEnd::Kind::Body || end.body != b || (e == 1 && l.farFree)) continue;
-        force += onEnd[e];
-        moment += ((e == 0 ? top : far) - reference).cross(onEnd[e]);
-    }
-    return true;
+    stiffnessCurrent_ = false;  // body[k].stiffness: computed when read (update_stiffness)
 }
 
 bool MooringSystem::profile_end_forces(int k, const Vec3& top, const Vec3& far, Vec3& onTop, Vec3& onFar,
@@ -700,42 +662,6 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
     return true;
 }
 
-bool MooringSystem::body_stiffness(int b, const UCInputs& in, double K[36], std::string* why) const {
-    const UCCoupledBody& body = in.coupledBody[b - 1];
-    const double q0[6] = {body.position[0], body.position[1], body.position[2], 0.0, 0.0, 0.0};
-    for (int i = 0; i < 36; ++i) K[i] = 0.0;
-    for (size_t k = 0; k < lines_.size(); ++k) {
-        const MooringDeckLine& l = deck_.lines[k];
-        const bool onBody = (l.fairlead.kind == MooringEnd::Kind::Body && l.fairlead.body == b) ||
-                            (l.far.kind == MooringEnd::Kind::Body && l.far.body == b);
-        if (!onBody) continue;
-        if (on_node(l)) {
-            if (why) *why = "mooring line " + std::to_string(l.id) + " ends on a free point where three or more lines "
-                            "meet: the stiffness with the points' equilibrium is not computed";
-            return false;
-        }
-        for (int j = 0; j < 6; ++j) {
-            const double d = j < 3 ? kStiffnessStep : kStiffnessAngle;
-            double qp[6], qm[6];
-            std::memcpy(qp, q0, sizeof qp);
-            std::memcpy(qm, q0, sizeof qm);
-            qp[j] += d;
-            qm[j] -= d;
-            Vec3 fp, mp, fm, mm;
-            if (!static_body_load(static_cast<int>(k), b, qp, in, fp, mp, why) ||
-                !static_body_load(static_cast<int>(k), b, qm, in, fm, mm, why)) {
-                if (why) *why = "mooring line " + std::to_string(l.id) + ": " + *why;
-                return false;
-            }
-            for (int i = 0; i < 3; ++i) {
-                K[6 * i + j] -= (fp[i] - fm[i]) / (2.0 * d);
-                K[6 * (i + 3) + j] -= (mp[i] - mm[i]) / (2.0 * d);
-            }
-        }
-    }
-    return true;
-}
-
 namespace {
 
 // d(R r)/d(the orientation inputs) of a coupled body, as bodyOrientation reads them: the columns for roll,
@@ -970,6 +896,7 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
         in += header.lineSize[k];
     }
     references_ = references;
+    stiffnessCurrent_ = false;
     for (size_t n = 0; n < nodes_.size(); ++n) {
         Vec3* parts[6] = {&nodes_[n], &nodeVelocity_[n], &nodeAcceleration_[n], &nodeInput_[n].position,
                           &nodeInput_[n].velocity, &nodeInput_[n].acceleration};

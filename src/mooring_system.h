@@ -50,9 +50,15 @@ public:
     // The quasi-static 6x6 stiffness of the lines on body b (1-based) at the body pose of the inputs:
     // K[6 i + j] = -d(force, moment)_i / d(x, y, z, theta_x, theta_y, theta_z)_j with theta a small
     // rotation about the earth axes from the present orientation (at zero angles the angles' own
-    // derivatives), by central differences of the lines' static profiles (src/line_profile.h). False
-    // where a line's profile is not solved there.
+    // derivatives), the free nodes its lines reach re-balanced where they stand (their coordinates
+    // condensed), the other coupled bodies and points held at their inputs; by central differences of
+    // the lines' static profiles (src/line_profile.h; src/mooring_stiffness.cpp). False where a line's
+    // profile is not solved there or the nodes' stiffness is singular.
     bool body_stiffness(int b, const UCInputs& in, double K[36], std::string* why) const;
+    // body[k].stiffness of every coupled body into the outputs, at the last inputs' poses: computed when
+    // asked, once per step (it costs a fifth of a step; docs/systems_mooring.md). A body where
+    // body_stiffness fails gets 0, and an event says why (once per run).
+    void update_stiffness();
 
     // The interface derivatives of body b (1-based) over the next communication step, taken as long as
     // the last one: d[i][j] = d (force, moment)_i (t + h) / d input_j (t), inputs j = x, y, z, roll,
@@ -62,8 +68,14 @@ public:
     // the moment arms' change. Available after the first step.
     bool body_derivatives(int b, double d[6][UC_BODY_DERIVATIVE_INPUTS], std::string& error);
 
-    // Steps of the central differences of body_stiffness [m], [rad].
-    static constexpr double kStiffnessStep = 0.01, kStiffnessAngle = 1e-4;
+    // Steps of the central differences of body_stiffness: of each line's ends [m] (with the other end held,
+    // where a short taut line, a bridle's pennant of sag 0.5 m, is strongly non-linear: truncation ~
+    // (step / sag)^2, 4e-5 of the diagonal at 0.01 m, 4e-7 at 1 mm; docs/systems_mooring.md), and of a free
+    // body's own weight in its rotation [rad].
+    static constexpr double kStiffnessStep = 0.001, kStiffnessAngle = 1e-5;
+    // The stiffness re-balances the free nodes on the lines' profiles until a Newton step moves them by
+    // less than kStiffnessBalance [m, rad], each step moving a node by at most kStiffnessReach [m].
+    static constexpr double kStiffnessBalance = 1e-8, kStiffnessReach = 2.0;
     // A quaternion input (bodyOrientation 1) is refused where its norm is off 1 by more than this, and
     // normalized (reported once) where by more than kQuaternionReportedNorm.
     static constexpr double kQuaternionNormTolerance = 0.01, kQuaternionReportedNorm = 1e-6;
@@ -101,12 +113,28 @@ private:
     Motion end_motion(const MooringEnd& end, const UCInputs& in) const;
     void line_inputs(int k, const UCInputs& in, UCInputs& li) const;
     bool check_inputs(const UCInputs& in, std::string& error);  // reports a normalized quaternion once
-    void update_outputs(const UCInputs& in);
-    // The force of line k on body b at the pose q of b (position, and a small rotation about the earth
-    // axes from the inputs' orientation), other bodies and points at the inputs', from its static
-    // profile: force and moment about b's reference point.
-    bool static_body_load(int k, int b, const double q[6], const UCInputs& in, Vec3& force, Vec3& moment,
-                          std::string* why) const;
+    void update_outputs();
+    // What body b's stiffness moves (src/mooring_stiffness.cpp): the body (holder 0) and the free nodes
+    // its lines reach, each with its generalized coordinates from offset (3 for a point, 6 for a body:
+    // its reference point and a small rotation about the earth axes) and its pose.
+    struct Holder {
+        int node, offset, dofs;  // node: the free node (-1: body b)
+        Vec3 reference;
+        Mat3 rotation;
+    };
+    std::vector<Holder> stiffness_holders(int b, const UCInputs& in) const;
+    // The holder of a line's end (-1: held where it is), nodeHolder[n] that of node n (-1: none).
+    int stiffness_holder(const MooringEnd& e, int b, const std::vector<int>& nodeHolder) const;
+    // Where end e stands with the holders at their poses (a held end: at its inputs).
+    Vec3 stiffness_place(const MooringEnd& e, int b, const std::vector<Holder>& holders,
+                         const std::vector<int>& nodeHolder, const UCInputs& in) const;
+    // G += line k's static end forces on the holders (on a 6-dof holder also their moment about its reference
+    // point), J += their derivatives in the holders' coordinates: the forces differenced in the ends'
+    // positions (src/line_profile.h), chained through the holders' rigid motion, and the turning arms.
+    bool add_line_jacobian(int k, int b, const std::vector<Holder>& holders, const std::vector<int>& nodeHolder,
+                           const UCInputs& in, Eigen::VectorXd& G, Eigen::MatrixXd& J, std::string* why) const;
+    // G += a node's own weight, buoyancy and current drag at rest (a free body's weight at its centre of gravity).
+    void add_node_loads(const Holder& holder, const UCInputs& in, Eigen::VectorXd& G) const;
     // The static forces of line k on its fairlead and far end with them at top and far, from its
     // profile (a line with a free far end: its weight on the fairlead).
     bool profile_end_forces(int k, const Vec3& top, const Vec3& far, Vec3& onTop, Vec3& onFar, std::string* why) const;
@@ -147,6 +175,7 @@ private:
     UCOutputs outputs_{};
     bool stiffnessWarned_ = false;
     bool quaternionNormalized_ = false;  // a quaternion input off unit norm was reported (once)
+    bool stiffnessCurrent_ = false;  // outputs_'s body stiffness is that of the present state
     std::string event_;
     std::vector<unsigned char> lineBuffer_;
     // body_derivatives of each body for the state of stamp_ (a master asks column by column)

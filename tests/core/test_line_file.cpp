@@ -387,7 +387,8 @@ TEST(LineFileRefuses, BodiesRodsAndOtherObjects) {
 TEST(LineFileRefuses, SeveralChainsAndPoints) {
     const std::string coupled = "2     Coupled    0       0     -70    0      0       0      0";
     const std::string line1 = "1     chain      1        2        900       40       -";
-    expect_refused(edit(kSingleChain, "2     Coupled", "2     Free   "), "", "no Vessel or Coupled point");
+    expect_refused(edit(edit(kSingleChain, "2     Coupled", "2     Free   "), "1     Fixed ", "1     Free  "), "",
+                   "no Vessel, Coupled or Fixed point");
     std::string d = edit(kSingleChain, "1     Fixed ", "1     Vessel");
     expect_refused(d, "2     Coupled", "a second Vessel point (the first is point 1)");
     d = edit(edit(kSingleChain, coupled,
@@ -457,9 +458,9 @@ TEST(LineFileRefuses, NonLinearAndOtherUnsupportedLineProperties) {
     d = edit(kSingleChain, "1.0   0.2   0.0\n", "1.0   0.2\n");
     expect_refused(d, "1.0   0.2\n", "this row has 9");
     d = edit(kSingleChain, "0.002    dtM", "2 WaveKin");
-    expect_refused(d, "2 WaveKin", "WaveKin = 2: MoorDyn's wave and current kinematics are not supported");
-    d = edit(kSingleChain, "0.002    dtM", "1 Currents");
-    expect_refused(d, "1 Currents", "Currents = 1");
+    expect_refused(d, "2 WaveKin", "WaveKin = 2: waves from the spectrum of wave_frequencies.txt");
+    d = edit(kSingleChain, "0.002    dtM", "1 Currents");  // its file is not handed over
+    expect_refused(d, "1 Currents", "Currents = 1: MoorDyn reads current_profile.txt from the deck's directory");
     d = edit(kSingleChain, "320      WtrDpth", "bathy.txt WtrDpth");
     expect_refused(d, "bathy.txt", "a bathymetry file is not supported");
     d = edit(kSingleChain, "0.002    dtM", "sea.txt SeafloorFile");
@@ -526,4 +527,119 @@ TEST(LineFileFuzz, TruncationsAndMutationsOfAValidDeckNeverCrash) {
     // Both outcomes occur (the mutations are neither all harmless nor all fatal).
     EXPECT_GT(accepted, 1000);
     EXPECT_GT(refused, 1000);
+}
+
+// ------------------------------------------------------------------ no Vessel point: a Fixed tow point
+TEST(LineFileFixedTowPoint, ALineHangingFromAFixedPointHasItAsTowPoint) {
+    // the anchor at the top, the Vessel point made a Free end with a mass: the line hangs from point 1
+    const std::string d = edit(edit(kSingleChain, "1     Fixed      -850    0     -320", "1     Fixed      0       0     -10 "),
+                               "2     Coupled    0       0     -70    0", "2     Free       0       0     -70    500");
+    const Read r = read(d);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_TRUE(r.line.towFixed);
+    EXPECT_EQ(r.line.farEnd, uc::LineFileFarEnd::Body);
+    EXPECT_DOUBLE_EQ(r.line.towPoint[2], -10.0);
+    EXPECT_DOUBLE_EQ(r.line.body.mass, 500.0);
+    EXPECT_TRUE(has_note(r.line, "the Fixed point 1 is the tow point"));
+}
+
+TEST(LineFileFixedTowPoint, BetweenTwoFixedPointsTheHigherIsTheTowPoint) {
+    const Read r = read(edit(kSingleChain, "2     Coupled", "2     Fixed  "));
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_TRUE(r.line.towFixed);
+    EXPECT_DOUBLE_EQ(r.line.towPoint[2], -70.0);   // point 2, above point 1
+    EXPECT_DOUBLE_EQ(r.line.anchor[0], -850.0);
+    // on a tie, the point at AttachB of its line (MoorDyn's fairlead end)
+    const Read tie = read(edit(edit(kSingleChain, "2     Coupled    0       0     -70", "2     Fixed      0       0     -320"),
+                               "chain      1        2", "chain      2        1"));
+    ASSERT_TRUE(tie.ok) << tie.error;
+    EXPECT_DOUBLE_EQ(tie.line.towPoint[0], -850.0);
+    // a third Fixed point is refused
+    const std::string coupled = "2     Coupled    0       0     -70    0      0       0      0";
+    const std::string three = edit(edit(kSingleChain, coupled,
+                                        "2     Fixed      0       0     -70    0      0       0      0\n"
+                                        "3     Fixed      10      0     -70    0      0       0      0"),
+                                   "1     chain      1        2        900       40       -",
+                                   "1 chain 1 2 900 40 -\n2 chain 3 2 10 1 -");
+    expect_refused(three, "3     Fixed", "a third Fixed point (the first is point 1)");
+}
+
+// ------------------------------------------------------------------ kinematics options
+Read read_with(const std::string& text, const uc::LineFileCompanions& files) {
+    Read r;
+    r.ok = uc::read_line_file(text, 0, r.line, r.error, files);
+    return r;
+}
+
+TEST(LineFileKinematics, ASteadyCurrentProfileIsTheFmusProfileWithoutItsRedundantRows) {
+    const std::string d = edit(kSingleChain, "0.002    dtM", "1 Currents");
+    EXPECT_EQ(uc::line_file_companions(d), std::vector<std::string>{"current_profile.txt"});
+    // 7 rows, z increasing; the rows at -300 and -250 lie on the chord of their neighbours, -320 repeats -310
+    const std::string profile = "--- currents\ncomment\nz ux uy uz\n-320 0.1 0 0\n-310 0.1 0 0\n-300 0.2 0.05 0\n"
+                                "-250 0.7 0.3 0\n-200 1.2 0.55 0\n\n-100 1.0 0.5\n0 1.5\n";
+    const Read r = read_with(d, {{"current_profile.txt", profile}});
+    ASSERT_TRUE(r.ok) << r.error;
+    ASSERT_EQ(r.line.sea.profileRows, 4);
+    const double depth[] = {0, 100, 200, 310}, ux[] = {1.5, 1.0, 1.2, 0.1}, uy[] = {0, 0.5, 0.55, 0.1 * 0};
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_DOUBLE_EQ(r.line.sea.profileDepth[k], depth[k]);
+        EXPECT_DOUBLE_EQ(r.line.sea.profileX[k], ux[k]);
+        EXPECT_DOUBLE_EQ(r.line.sea.profileY[k], uy[k]);
+    }
+    UCParams p;
+    uc_params_default(&p);
+    std::string error;
+    ASSERT_TRUE(uc::apply_line_file(r.line, p, error)) << error;
+    EXPECT_EQ(p.currentProfileRows, 4);
+    EXPECT_DOUBLE_EQ(p.currentProfileDepth[3], 310.0);
+    EXPECT_DOUBLE_EQ(p.currentProfileX[3], 0.1);
+}
+
+TEST(LineFileKinematics, WhatTheFmusSeaCannotHoldIsRefusedNamingOptionAndValue) {
+    const std::string d = edit(kSingleChain, "0.002    dtM", "1 Currents");
+    auto refused = [&](const std::string& deck, const uc::LineFileCompanions& files) {
+        const Read r = read_with(deck, files);
+        EXPECT_FALSE(r.ok);
+        return r.error;
+    };
+    std::string many = "a\nb\nc\n";
+    for (int k = 0; k < 12; ++k) many += std::to_string(-12 + k) + " " + std::to_string(k % 2) + " 0 0\n";
+    EXPECT_NE(refused(d, {{"current_profile.txt", many}}).find("a profile of 12 rows, 12 of them off the straight "
+                                                                 "lines between their neighbours"), std::string::npos);
+    EXPECT_NE(refused(d, {{"current_profile.txt", "a\nb\nc\n-10 1 0 0.2\n"}}).find("a vertical current"), std::string::npos);
+    EXPECT_NE(refused(d, {{"current_profile.txt", "a\nb\nc\n0 1\n-10 1\n"}}).find("z must increase"), std::string::npos);
+    for (const auto& [option, what] : std::vector<std::pair<std::string, std::string>>{
+             {"2 Currents", "Currents = 2: a current profile changing in time"},
+             {"3 Currents", "Currents = 3: not implemented in MoorDyn v2 either"},
+             {"5 Currents", "Currents = 5: a current on a grid in x, y, z and time"},
+             {"3 WaveKin", "WaveKin = 3: waves from the elevation record"},
+             {"5 WaveKin", "WaveKin = 5: not implemented in MoorDyn v2 either"},
+             {"9 WaveKin", "WaveKin = 9: not a MoorDyn v2 option"}}) {
+        expect_refused(edit(kSingleChain, "0.002    dtM", option), option, what);
+    }
+    const std::string w = edit(kSingleChain, "0.002    dtM", "7 WaveKin");
+    EXPECT_NE(refused(w, {{"wave_frequencies.txt", "0 0 0\n0.35 1 0\n0.4 0 1 1.57\n"}}).find("has 2 components"),
+              std::string::npos);
+    EXPECT_NE(refused(w, {{"wave_frequencies.txt", "0 0 0\n0.4 1 0\n"}}).find("arg A = 0 rad"), std::string::npos);
+}
+
+TEST(LineFileKinematics, OneWaveComponentIsTheRegularWaveAndExternalKinematicsTheFmusSea) {
+    const std::string w = edit(kSingleChain, "0.002    dtM", "7 WaveKin");
+    const Read r = read_with(w, {{"wave_frequencies.txt", "0.0 0.0 0.0\n0.5 0.0 1.5 0.3\n"}});
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_TRUE(r.line.sea.regularWave);
+    EXPECT_DOUBLE_EQ(r.line.sea.waveHeight, 3.0);
+    EXPECT_DOUBLE_EQ(r.line.sea.wavePeriod, 4.0 * std::acos(0.0) / 0.5);
+    EXPECT_DOUBLE_EQ(r.line.sea.waveDirection, 0.3);
+    UCParams p;
+    uc_params_default(&p);
+    std::string error;
+    ASSERT_TRUE(uc::apply_line_file(r.line, p, error)) << error;
+    EXPECT_EQ(p.wavesMode, 1);
+    EXPECT_EQ(p.wavesStretching, 1);
+    const Read external = read(edit(kSingleChain, "0.002    dtM", "1 WaveKin"));
+    ASSERT_TRUE(external.ok) << external.error;
+    EXPECT_TRUE(has_note(external.line, "WaveKin 1 (water kinematics set by the program driving MoorDyn)"));
+    EXPECT_EQ(external.line.sea.profileRows, 0);
+    EXPECT_FALSE(external.line.sea.regularWave);
 }

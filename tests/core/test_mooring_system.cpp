@@ -129,8 +129,33 @@ TEST(MooringDeck, WhatASystemCannotHoldIsRefusedNamingTheLine) {
         EXPECT_FALSE(uc::read_mooring_deck(text, 0, deck, error));
         return error;
     };
-    EXPECT_EQ(refused("4         main        6         7", "4         main        2         7")
-                  .rfind("line 22: line 3 is not reached from a coupled point", 0), 0u);
+    // lines 3 and 4 between free points 7 and 8 in a closed loop: nothing holds them
+    std::string text = kPlatform;
+    const std::string point7 = "7      Free     200.0   -346.0    -190.0   20000    1.0     0.5   1.0";
+    text.replace(text.find(point7), point7.size(), point7 + "\n8      Free     210.0   -346.0    -190.0   0 0 0 0");
+    const std::string lines = "3         main        3         7       400.0      10        -\n4         main        6         7";
+    text.replace(text.find(lines), lines.size(), "3 main 8 7 400.0 10 -\n4 main 7 8 435.35 12 -");
+    uc::MooringDeck deck;
+    std::string error;
+    EXPECT_FALSE(uc::read_mooring_deck(text, 0, deck, error));
+    EXPECT_EQ(error.rfind("line 23: line 3 is not reached from a coupled point, a free node or a Fixed point", 0), 0u)
+        << error;
+    (void)refused;
+}
+
+TEST(MooringDeck, ALineNoCoupledObjectHoldsRunsFromItsFixedPoint) {
+    // line 4 from the anchor 2 to the clump point: lines 3 and 4 are a chain between two anchors
+    std::string text = kPlatform;
+    const std::string from = "4         main        6         7";
+    text.replace(text.find(from), from.size(), "4         main        2         7");
+    uc::MooringDeck deck;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(text, 0, deck, error)) << error;
+    ASSERT_EQ(deck.lines.size(), 3u);
+    const uc::MooringDeckLine& chain = deck.lines[2];
+    EXPECT_EQ(chain.fairlead.kind, uc::MooringEnd::Kind::Fixed);
+    EXPECT_EQ(chain.far.kind, uc::MooringEnd::Kind::Fixed);
+    EXPECT_EQ(chain.sections.size(), 2u);
 }
 
 TEST(MooringDeck, AFreePointWhereThreeLinesMeetIsANodeWhereTheyEnd) {
@@ -154,6 +179,17 @@ TEST(MooringDeck, AFreePointWhereThreeLinesMeetIsANodeWhereTheyEnd) {
     EXPECT_EQ(atNode, 3);
 }
 
+// A deck's title and its LINE TYPES table of one type, `leg`, of diameter d and axial stiffness EA,
+// weightless in water (its mass that of the water it displaces, 1025 kg/m3).
+std::string weightless_leg_deck(const char* title, double d, double EA) {
+    constexpr double kPi = 3.14159265358979323846, kRho = 1025.0;
+    char row[512];
+    std::snprintf(row, sizeof row, "leg %.17g %.17g %.17g -1.0 0 1.2 1.0 0.05 0.0\n", d, kRho * kPi / 4.0 * d * d, EA);
+    return std::string("--- MoorDyn Input File ---\n") + title +
+           "\n----------------------- LINE TYPES ------------------------------------------\n"
+           "Name Diam MassDen EA BA/-zeta EI Cd Ca CdAx CaAx\n(-) (m) (kg/m) (N) (N-s/-) (-) (-) (-) (-) (-)\n" + row;
+}
+
 // Three weightless elastic legs (their mass that of the water they displace) from anchors on a circle to a
 // buoy: straight legs, 30 m across and 40 m up, 50 m long. With the unstretched length L each pulls with
 // T = EA (50 / L - 1), and the buoy is in equilibrium there when its net buoyancy is 3 T 40/50. As a free
@@ -167,12 +203,8 @@ struct WeightlessLegs {
     std::string deck(bool body) const {
         const double d = 0.05, mass = body ? 2000.0 : 0.0, volume = (buoyancy / kG + mass) / kRho;
         const double radius = body ? 32.0 : 30.0;
-        std::string text = "--- MoorDyn Input File ---\nthree weightless legs\n"
-                           "----------------------- LINE TYPES ------------------------------------------\n"
-                           "Name Diam MassDen EA BA/-zeta EI Cd Ca CdAx CaAx\n(-) (m) (kg/m) (N) (N-s/-) (-) (-) (-) (-) (-)\n";
+        std::string text = weightless_leg_deck("three weightless legs", d, kEA);
         char row[512];
-        std::snprintf(row, sizeof row, "leg %.17g %.17g %.17g -1.0 0 1.2 1.0 0.05 0.0\n", d, kRho * kPi / 4.0 * d * d, kEA);
-        text += row;
         if (body) {
             text += "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*\n"
                     "(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n";
@@ -254,6 +286,105 @@ TEST(MooringSystem, FreeBodyStaticsOfASymmetricBuoyHaveTheClosedFormAnswer) {
         EXPECT_DOUBLE_EQ(pose.posePosition[c], system->node_position(0)[c]);
         EXPECT_NEAR(pose.poseAngles[c], 0.0, 1e-6);
     }
+}
+
+// A bridle of weightless straight lines (their mass that of the water they displace): a pennant from the
+// platform's fairlead a = (40, 0, -20) down to a buoyant free point at (0, 0, -50), two legs from there to
+// anchors at (-30, +-40, -80). The lengths make the tensions T0 = 2 kN in the pennant and T1 = 0.8 T0 l1 / 60
+// in each leg (l the stretched lengths, 50 and sqrt(3400) m), which the point's net buoyancy 0.2 T0 balances.
+// A straight elastic string's end stiffness is (EA / L) n n^T + (T / l) (I - n n^T) (n its direction): with
+// the free point re-balanced the fairlead's is the pennant's P in series with the legs',
+// K_p = P - P (P + L1 + L2)^-1 P. Body 1's 6x6 stiffness about its reference point (the origin) follows from
+// the fairlead's motion x + theta x a and the moment a x f of its force f = -T0 n0:
+// [[K_p, -K_p [a]x], [[a]x K_p, -[a]x K_p [a]x - [f]x [a]x]].
+struct StringBridle {
+    static constexpr double kRho = 1025.0, kG = 9.80665, kEA = 1e7, kD = 0.05, kT0 = 2000.0;
+    const uc::Vec3 node{0.0, 0.0, -50.0};
+    const std::vector<uc::Vec3> ends = {{40.0, 0.0, -20.0}, {-30.0, 40.0, -80.0}, {-30.0, -40.0, -80.0}};
+    const double l1 = (ends[1] - node).norm();
+    const double T[3] = {kT0, 0.8 * kT0 * l1 / 60.0, 0.8 * kT0 * l1 / 60.0};
+
+    // The system initialized with the point where the deck puts it, at `start` (TmaxIC 0: the system's statics
+    // leave it there, and the stiffness re-balances it).
+    std::unique_ptr<uc::MooringSystem> start_at(const uc::Vec3& start) const {
+        std::string text = weightless_leg_deck("a bridle of weightless strings", kD, kEA);
+        char row[512];
+        text += "---------------------- POINTS --------------------------------\nID Attachment X Y Z M V CdA CA\n"
+                "(-) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n";
+        for (int k = 0; k < 3; ++k) {
+            std::snprintf(row, sizeof row, "%d %s %.17g %.17g %.17g 0 0 0 0\n", k + 1, k == 0 ? "Vessel" : "Fixed",
+                          ends[k].x(), ends[k].y(), ends[k].z());
+            text += row;
+        }
+        std::snprintf(row, sizeof row, "4 Free %.17g %.17g %.17g 0 %.17g 0 0\n", start.x(), start.y(), start.z(),
+                      0.2 * kT0 / (kRho * kG));
+        text += row;
+        text += "---------------------- LINES --------------------------------------\n"
+                "ID LineType AttachA AttachB UnstrLen NumSegs Outputs\n(-) (-) (-) (-) (m) (-) (-)\n";
+        for (int k = 0; k < 3; ++k) {
+            std::snprintf(row, sizeof row, "%d leg %d 4 %.17g 10 -\n", k + 1, k + 1,
+                          (ends[k] - node).norm() / (1.0 + T[k] / kEA));
+            text += row;
+        }
+        text += "---------------------- OPTIONS ---------------------------------------\n100 WtrDpth\n0 TmaxIC\n"
+                "------------------------- need this line --------------------------------------\n";
+        uc::MooringDeck deck;
+        std::string error;
+        EXPECT_TRUE(uc::read_mooring_deck(text, 0, deck, error)) << error;
+        auto system = std::make_unique<uc::MooringSystem>(system_parameters(), deck);
+        EXPECT_TRUE(system->build(error)) << error;
+        UCInputs in;
+        uc_inputs_default(&in);
+        EXPECT_TRUE(system->initialize(0.0, in, error)) << error;
+        EXPECT_LT((system->node_position(0) - start).norm(), 1e-12);
+        return system;
+    }
+
+    Eigen::Matrix<double, 6, 6> expected() const {
+        auto string = [&](int k) -> uc::Mat3 {
+            const uc::Vec3 n = (ends[k] - node).normalized();
+            const double l = (ends[k] - node).norm(), L = l / (1.0 + T[k] / kEA);
+            return kEA / L * n * n.transpose() + T[k] / l * (uc::Mat3::Identity() - n * n.transpose());
+        };
+        const uc::Mat3 P = string(0), legs = string(1) + string(2);
+        const uc::Mat3 Kp = P - P * (P + legs).inverse() * P;
+        const uc::Vec3 a = ends[0], f = -T[0] * (ends[0] - node).normalized();
+        Eigen::Matrix<double, 6, 6> K;
+        K << Kp, -Kp * uc::skew(a), uc::skew(a) * Kp, -uc::skew(a) * Kp * uc::skew(a) - uc::skew(f) * uc::skew(a);
+        return K;
+    }
+};
+
+TEST(MooringSystem, TheStiffnessWithAFreePointRebalancedIsTheStringsInSeries) {
+    const StringBridle bridle;
+    // 4 mm from its balance (further off than the 1 cm the strings stretch, one would slacken)
+    const auto system = bridle.start_at(bridle.node + uc::Vec3(0.003, 0.002, -0.002));
+    system->update_stiffness();
+    EXPECT_EQ(system->take_event(), "");
+    const double* K = system->outputs().bodyLoad[0].stiffness;
+    const Eigen::Matrix<double, 6, 6> expected = bridle.expected();
+    // central differences of exact profiles: truncation (1 mm / 50 m)^2; the profiles' closure (1e-11 of the
+    // length: 5e-10 m, 1e-4 N on the strings' axial stiffness EA / L = 2e5 N/m) over the 2 mm difference: 0.05 N/m
+    const double arm = bridle.ends[0].norm();
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) {
+            const double arms = (i < 3 ? 1.0 : arm) * (j < 3 ? 1.0 : arm);
+            EXPECT_NEAR(K[6 * i + j], expected(i, j), 0.05 * arms + 1e-6 * std::abs(expected(i, j)))
+                << "K[" << i + 1 << "," << j + 1 << "]";
+        }
+}
+
+TEST(MooringSystem, AStiffnessThatIsNotFoundIsZeroAndTheEventSaysWhy) {
+    const StringBridle bridle;
+    // 2.4 m off its balance the pennant is slack: a weightless slack line has no profile
+    const auto system = bridle.start_at(bridle.node + uc::Vec3(2.0, 1.0, 1.0));
+    system->update_stiffness();
+    const std::string event = system->take_event();
+    EXPECT_NE(event.find("body[1].stiffness is 0"), std::string::npos) << event;
+    EXPECT_NE(event.find("mooring line 1"), std::string::npos) << event;
+    for (int i = 0; i < 36; ++i) EXPECT_EQ(system->outputs().bodyLoad[0].stiffness[i], 0.0);
+    system->update_stiffness();  // reported once
+    EXPECT_EQ(system->take_event(), "");
 }
 
 // The rotations about x, y and z by the angles r, p, y, written out.

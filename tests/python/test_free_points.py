@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from studies import coupled_stiffness as cs
 from studies import free_points as fp
 from studies import mooring_system as ms
 from ucable.fmu import FMICallException
@@ -59,6 +60,63 @@ def test_the_buoy_as_a_free_body_matches_moorpy(fmu_file, tmp_path):
     drift, ref = _check(fmu_file, fp.write_variant(fp.BUOY_BODY, tmp_path, fp.without_line_drag), current=1.0)
     assert drift["poses"][1][0] > 0.05 and abs(drift["poses"][1][4]) > 1e-3  # pushed along x, pitched
     assert drift["poses"][1][4] == pytest.approx(ref["poses"][1][4], rel=0.02)
+
+
+# ----------------------------------------------------------------------------- the coupled stiffness
+# The FMU's stiffness (the free nodes re-balanced on the lines' catenaries and condensed) and MoorPy's (its
+# statics re-solved) rest on the same exact elastic catenaries: they differ by the finite differences'
+# truncation, the FMU's (1 mm steps of each line with its other end held: (1 mm / the sag of the tautest
+# line)^2, 5e-6 for the bridle's 70 m pennant, its sag 0.47 m) and MoorPy's (0.05 m steps of its whole
+# statics: 1.3e-5 where its analytic stiffness is exact, the two bodies sharing a taut line), and the statics'
+# tolerances (1e-8 m). MoorPy's `getCoupledStiffnessA` condenses a free body's rotations approximately: up to
+# 5e-4 from its own finite differences, inside the acceptance's 1 %. In the current (the lines' drag taken
+# away, MoorPy given the buoy's drag as a constant force) the buoy's balance moves: left out, the drag would
+# leave the stiffness 5e-4 from MoorPy's.
+STIFFNESS_TOLERANCE = 3e-5
+
+
+@pytest.mark.parametrize("case", [
+    "OC4 bridle, at rest", "OC4 bridle, surge 5 m, heave 2 m, pitch 3 deg",
+    "platform with a leg through a buoy body, at rest",
+    "platform with a leg through a buoy body, surge -6 m, sway 4 m, yaw 5 deg",
+    "platform with a leg through a buoy body, a 1 m/s current on the buoy",
+    "two bodies sharing a line (MoorPy's case9), body 1", "two bodies sharing a line (MoorPy's case9), body 2"])
+def test_the_coupled_stiffness_with_the_free_nodes_rebalanced_matches_moorpy(fmu_file, tmp_path, case):
+    """Each entry against the scale sqrt(K_ii K_jj) of its row and column: within the finite differences'
+    truncation of MoorPy's re-solved statics, and within the acceptance's 1 % of its analytic stiffness."""
+    r = cs.compare_case(fmu_file, *cs.cases(tmp_path)[case])
+    assert r["vs_differences"] < STIFFNESS_TOLERANCE, r["K"]
+    assert r["vs_analytic"] < 1e-2
+    if "buoy body" not in case:  # no free body: MoorPy's analytic stiffness is exact too
+        assert r["vs_analytic"] < STIFFNESS_TOLERANCE
+
+
+def test_the_stiffness_read_is_that_of_the_present_state(make_cable, tmp_path):
+    """body[1].stiffness is computed when it is read: read at every step or only at the last, after a restore
+    of a saved state or in the run that saved it, it is the same, bit for bit, and it follows the motion."""
+    path = cs.cases(tmp_path)["OC4 bridle, at rest"][0]
+    names = cs.STIFFNESS_NAMES
+
+    def run(cable, read_every):
+        cable.initialize()
+        first = cable.get_reals(names) if read_every else None
+        for k in range(3):
+            cable.set({"body[1].x": 0.5 * (k + 1), "body[1].vx": 5.0})
+            cable.do_step(0.1, t=0.1 * k)
+            if read_every:
+                cable.get_reals(names)
+        return first, cable.get_reals(names)
+
+    parameters = ms.fmu_parameters(ms.read_system_deck(path))
+    every, last = make_cable(parameters=parameters), make_cable(parameters=parameters)
+    start, moved = run(every, True)
+    assert np.array_equal(run(last, False)[1], moved)
+    assert abs(moved[0] / start[0] - 1.0) > 1e-3  # the platform 1.5 m along x: the bridle's surge stiffness changed
+    state = every.get_state()
+    every.do_step(0.1, t=0.3)
+    assert not np.array_equal(every.get_reals(names), moved)
+    every.set_state(state, time=0.3)
+    assert np.array_equal(every.get_reals(names), moved)
 
 
 # ----------------------------------------------------------------------------- dynamics

@@ -1,15 +1,100 @@
-"""The public MoorDyn and MoorPy decks that carry only lines, points and coupled bodies
-(tests/data/decks/public, python/studies/public_decks.py): each one loads, as one line or as a mooring
-system, and every line's fairlead and anchor tension matches MoorPy's statics of the same file within the
-0.5 % asked of a deck (docs/systems_mooring.md, "Public decks")."""
+"""The public MoorDyn and MoorPy decks the FMU loads (tests/data/decks/public, python/studies/public_decks.py):
+each one loads, as one line or as a mooring system, and every line's fairlead and anchor tension matches
+MoorPy's statics of the same file within the 0.5 % asked of a deck (docs/systems_mooring.md, "Public
+decks"). Where MoorPy's own equilibrium fails (named below, checked to fail), the FMU is checked against
+the closed form of the deck's statics."""
 
+import math
+
+import numpy as np
 import pytest
 
 from studies import public_decks as pd
+from ucable.fmu import CableFMU
+
+# MoorPy 1.3.0 finds no equilibrium of these: a neutrally buoyant line hanging from a fixed point (it
+# leaves the weight of the end mass unbalanced), a beam between two fixed points above the water
+# (tensions NaN), a W-shaped chain between two fixed points on a buoy (point 2 left with 13.5 kN
+# unbalanced, its iteration wandering).
+MOORPY_FAILS = {"md_tests_Mooring_lifting", "md_tests_Mooring_BeamSimplySupported", "mp_tests_case6"}
+GRAVITY = 9.80665
 
 
 @pytest.mark.parametrize("path", pd.decks(), ids=lambda p: p.stem)
 def test_a_public_deck_loads_and_matches_moorpy(fmu_file, path):
     result = pd.compare(fmu_file, path)
     assert result["status"] == "ok", result.get("reason")
-    assert result["worst"] < 5e-3, result["lines"]
+    assert (result["moorpy"] is not None) == (path.stem in MOORPY_FAILS), result["moorpy"]
+    if result["moorpy"] is None:
+        assert result["worst"] < 5e-3, result["lines"]
+
+
+def _statics(fmu_file, name, tow):
+    c = CableFMU(fmu_file, parameters={"lineFile": str(pd.PUBLIC / name), "enableCompression": False,
+                                       "enableSeabed": True}, logging_on=True)
+    c.initialize(inputs={f"tow.{k}": v for k, v in zip("xyz", tow)})
+    return c
+
+
+def test_a_neutral_line_hanging_from_a_fixed_point_carries_its_end_mass(fmu_file):
+    """lifting: a line of 7.85398 kg/m and 0.1 m in water of 1000 kg/m3 (net -1.6e-6 kg/m: neutral)
+    hangs from the Fixed point at the origin, the tow point, with 1000 kg at its free end: the tension
+    is the end mass's weight, 9806.65 N, along the whole line."""
+    c = _statics(fmu_file, "md_tests_Mooring_lifting.txt", (0.0, 0.0, 0.0))
+    try:
+        weight = 1000.0 * GRAVITY
+        assert c.get("towTension") == pytest.approx(weight, rel=1e-6)
+        assert c.get("endTension") == pytest.approx(weight, rel=1e-6)
+        assert any("the Fixed point 1 is the tow point" in t for _, _, t in c.messages)
+    finally:
+        c.free()
+
+
+def test_a_beam_between_two_fixed_points_sags_as_the_tie_beam(fmu_file):
+    """BeamSimplySupported: 10 m of 100 kg/m, EI 1e7 N m2, EA 1.5e9 N, pinned between two Fixed points
+    10 m apart, 10 m above the water (no buoyancy): the end reactions carry half the weight each, and
+    the mid-span deflection is the tie-beam's, w/T (L^2/8 + (1/cosh(kL/2) - 1)/k^2), k^2 = T/EI, its
+    axial force T from the stretch T L/EA = 1/2 the integral of the slope squared (T = 6009 N: mid
+    deflection 12.69 mm). The deflection is insensitive to T (12.67 mm at T = 7345 N), T is not (it
+    rests on a stretch of 4e-6); the FMU's T is 7345 N and is not compared."""
+    EI, EA, L, w = 1e7, 1.5e9, 10.0, 100.0 * GRAVITY
+
+    def mid_deflection(T):
+        k = math.sqrt(T / EI)
+        return w / T * (L * L / 8 + (1 / math.cosh(k * L / 2) - 1) / k ** 2)
+
+    def stretch_mismatch(T):
+        k = math.sqrt(T / EI)
+        x = np.linspace(0.0, L, 20001)
+        slope = w / T * ((L - 2 * x) / 2 + np.sinh(k * (x - L / 2)) / math.cosh(k * L / 2) / k)
+        return T * L / EA - 0.5 * np.trapezoid(slope ** 2, x)
+
+    lo, hi = 100.0, 1e6
+    for _ in range(100):
+        mid = math.sqrt(lo * hi)
+        lo, hi = (mid, hi) if stretch_mismatch(mid) < 0 else (lo, mid)
+    c = _statics(fmu_file, "md_tests_Mooring_BeamSimplySupported.txt", (10.0, 0.0, 10.0))
+    try:
+        assert -c.get("towForce.z") == pytest.approx(w * L / 2, rel=1e-6)
+        assert -c.get("endForce.z") == pytest.approx(w * L / 2, rel=1e-6)
+        sag = 10.0 - c.shape()["shape.z"][10]  # station 11 of 21: mid-span
+        assert sag == pytest.approx(mid_deflection(lo), rel=5e-3)
+    finally:
+        c.free()
+
+
+def test_a_chain_between_two_fixed_points_on_a_buoy_balances_its_loads(fmu_file):
+    """case6: 1320 m of 500 kg/m, 0.2 m chain from a Fixed point at the surface through a 200 m3 buoy
+    to another, part of it on the frictionless seabed: the forces on its two ends balance horizontally
+    (to 1e-6 of its weight), and vertically they leave the seabed a reaction between 0 and the weight
+    of the chain (MoorPy's equilibrium of this deck leaves the buoy 13.5 kN out of balance)."""
+    c = _statics(fmu_file, "mp_tests_case6.dat", (0.0, 400.0, 0.0))
+    try:
+        per_metre = (500.0 - 1025.0 * math.pi * 0.1 ** 2) * GRAVITY
+        weight, buoyancy = per_metre * 1320.0, 1025.0 * GRAVITY * 200.0
+        ends = np.array([c.get(f"towForce.{k}") + c.get(f"endForce.{k}") for k in "xyz"])
+        assert np.max(np.abs(ends[:2])) < 1e-6 * weight, ends
+        seabed = ends[2] - (buoyancy - weight)
+        assert c.get("groundedLength") > 0.0 and 0.0 < seabed < weight, (seabed, c.get("groundedLength"))
+    finally:
+        c.free()

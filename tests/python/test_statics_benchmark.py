@@ -217,3 +217,36 @@ def test_graded_along_the_line_the_stiff_seabed_starts_where_the_soft_one_does(f
     for stiffness in B.STIFFNESS_RANGE:
         run = B.fmu_run(fmu_file, dataclasses.replace(case, stiffness=stiffness), 10, grading=2)
         assert run["ok"], (stiffness, run["message"])
+
+
+@pytest.mark.parametrize("line_id", [33, 107, 123])
+def test_a_touchdown_with_a_small_bottom_tension_starts_within_half_a_percent_at_20_elements(fmu_file, line_id):
+    """Long chains whose anchor carries 0.4-1 % of the fairlead tension: above the touchdown the
+    line rises nearly vertically and its horizontal offset grows as (H/w) ln(s), which nodes spread by
+    the turning angle alone left to one long top element (refused at 20 elements, the anchor 1.5-6.6 %
+    off the exact profile). Graded by ln(tension) as well, they start within the acceptance's 0.5 %
+    of MoorPy at both ends."""
+    pytest.importorskip("moorpy")
+    case = B.draw_case(SEED, line_id)
+    run = B.fmu_run(fmu_file, case, ELEMENTS)
+    assert run["ok"], run["message"]
+    ref = B.reference(case)
+    assert abs(run["towTension"] / ref["fairlead"] - 1.0) <= B.ACCEPT_MAX
+    assert abs(run["endTension"] / ref["anchor"] - 1.0) <= B.ACCEPT_MAX
+
+
+@pytest.mark.parametrize("line_id", [28, 87, 387])
+def test_the_anchor_tension_does_not_drift_with_the_seabed_stiffness(fmu_file, line_id):
+    """Lines whose bottom tension is sensitive to the height of the resting part (a clump resting at
+    a joint; heavy chain under a light section): sunk into a soft seabed by w/k they were 1.0-1.5 %
+    off MoorPy's rigid seabed at the anchor. Resting at the seabed's depth (seabedRest 1, the
+    default) they start within 0.5 % of MoorPy at both ends on the softest and the stiffest seabed of
+    the draw (3e5 and 1e8 N/m2)."""
+    pytest.importorskip("moorpy")
+    case = B.draw_case(SEED, line_id)
+    ref = B.reference(case)
+    for stiffness in B.STIFFNESS_RANGE:
+        run = B.fmu_run(fmu_file, dataclasses.replace(case, stiffness=stiffness), ELEMENTS)
+        assert run["ok"], (stiffness, run["message"])
+        assert abs(run["towTension"] / ref["fairlead"] - 1.0) <= B.ACCEPT_MAX, stiffness
+        assert abs(run["endTension"] / ref["anchor"] - 1.0) <= B.ACCEPT_MAX, stiffness
