@@ -92,7 +92,7 @@ std::vector<double> graded_nodes(const CableModel& model, const LineProfile& pro
             logT.push_back(stretched);
         }
         const double angleScale = std::max(turned, kGradingAngle);
-        const double logScale = std::max(stretched, kGradingLogTension);
+        const double logScale = std::max(stretched / kGradingLogTensionWeight, kGradingLogTension);
         std::vector<double> M(s.size());
         for (size_t i = 0; i < s.size(); ++i)
             M[i] = (s[i] - s0) / (s1 - s0) + theta[i] / angleScale + logT[i] / logScale;

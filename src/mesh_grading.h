@@ -16,7 +16,7 @@ namespace uc {
 // its number of elements (one more per piece where attachments and the touchdown cut it into more
 // pieces than it has elements); inside a section the nodes sit at equal steps of
 //   M(s) = s / L_section + theta(s) / max(Theta_section, kGradingAngle)
-//          + lambda(s) / max(Lambda_section, kGradingLogTension),
+//          + lambda(s) / max(Lambda_section / kGradingLogTensionWeight, kGradingLogTension),
 // theta the angle the profile turns through, lambda the change of ln(tension) (counted inside the
 // pieces between attachments and contacts: a point load makes it jump), with a node at each
 // attachment and wherever the line reaches or leaves the seabed. Equal steps of ln(tension) space
@@ -29,11 +29,13 @@ std::vector<double> graded_nodes(const CableModel& model, const LineProfile& pro
 
 // Below this total turning [rad] a section's nodes tend to equal spacing.
 constexpr double kGradingAngle = 0.5;
-// Below this total change of ln(tension) (a tension ratio of e^2 = 7.4) the tension term grades in
-// proportion: it grades fully only a line whose bottom tension H is small against its top's, where
-// the line rises nearly vertically and its horizontal offset grows as (H / w) ln(s) above the
-// touchdown. A line whose tension changes little keeps the mesh the arc length and the turning give
-// it (the work-precision benchmark's snapping chain: ratio 1.18).
+// The tension term is lambda(s) / max(Lambda / kGradingLogTensionWeight, kGradingLogTension): it
+// counts half the change of ln(tension) up to a total of 3 (a tension ratio of e^6 = 400 along the
+// piece) and grades with the weight 3 beyond. It matters where the bottom tension H is small
+// against the top's: there the line rises nearly vertically and its horizontal offset grows as
+// (H / w) ln(s) above the touchdown. A line whose tension changes little keeps nearly the mesh the
+// arc length and the turning give it (the work-precision benchmark's snapping chain: ratio 1.18).
 constexpr double kGradingLogTension = 2.0;
+constexpr double kGradingLogTensionWeight = 3.0;
 
 }  // namespace uc

@@ -524,8 +524,35 @@ bool CableSimulation::verify_statics(std::string& error) const {
 
 std::string CableSimulation::mesh_advice(double t0, const UCInputs& in) const {
     const UCParams& p = model_.params();
-    if (p.lineFile[0] != '\0') return "; more elements (lineFileElements) may resolve the line";
     const bool sections = p.nSections > 1;
+    if (p.lineFile[0] != '\0') {
+        // A deck's line: lineFileElements gives every deck line (section) the same count. More
+        // elements resolve a sharp touchdown; fewer can settle a short, very stiff line whose
+        // elements are far stiffer in bending than its weight can bend.
+        int n = p.nElements;
+        if (sections)
+            for (int k = 0; k < p.nSections; ++k) n = std::max(n, p.section[k].nElements);
+        for (int count : {2 * n, 4 * n, n / 2, 1}) {
+            if (count < 1 || count == n) continue;
+            UCParams q = p;
+            if (sections) {
+                for (int k = 0; k < p.nSections; ++k) q.section[k].nElements = count;
+            } else {
+                q.nElements = count;
+            }
+            if (!check_params(q).empty()) continue;
+            CableSimulation trial(q);
+            trial.adviseMesh_ = false;
+            std::string ignored;
+            if (!trial.initialize(t0, in, ignored)) continue;
+            char text[300];
+            std::snprintf(text, sizeof text,
+                          "; with lineFileElements = %d the same line starts (tow tension %.6g N, far end %.6g N)",
+                          count, trial.outputs_.towTension, trial.outputs_.endTension);
+            return text;
+        }
+        return "; neither more nor fewer elements (lineFileElements) resolve the line";
+    }
     for (int factor : {2, 4}) {
         UCParams q = p;
         if (sections) {

@@ -5,6 +5,7 @@ decks"). Where MoorPy's own equilibrium fails (named below, checked to fail), th
 the closed form of the deck's statics."""
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -98,3 +99,24 @@ def test_a_chain_between_two_fixed_points_on_a_buoy_balances_its_loads(fmu_file)
         assert c.get("groundedLength") > 0.0 and 0.0 < seabed < weight, (seabed, c.get("groundedLength"))
     finally:
         c.free()
+
+
+def test_a_refused_deck_names_the_element_count_on_which_it_starts(fmu_file):
+    """MoorDyn's tripod: a short, very stiff float (0.63 m, EI 9.3e7 N m2) on a tether from the node
+    where three bridles meet. At the deck's NumSegs its line's static solution is not found; the
+    refusal tries other element counts per deck line and names one that starts, and set as named the
+    deck loads, with every line in tension."""
+    path = pd.PUBLIC.parent / "refused" / "md_tests_Mooring_tripod.txt"
+    refused = CableFMU(fmu_file, parameters={"lineFile": str(path)}, logging_on=True)
+    try:
+        with pytest.raises(Exception):
+            refused.initialize()
+        errors = [m[2] for m in refused.messages if m[0] == "ERROR"]
+    finally:
+        refused.free()
+    named = re.search(r"with lineFileElements = (\d+) the same line starts", " ".join(errors))
+    assert named, errors
+    with CableFMU(fmu_file, parameters={"lineFile": str(path), "lineFileElements": int(named.group(1))}) as c:
+        c.initialize()
+        tensions = [c.get(f"line[{k}].fairleadTension") for k in (1, 2, 3)]
+    assert all(t > 0.0 and math.isfinite(t) for t in tensions), tensions

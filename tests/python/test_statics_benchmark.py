@@ -141,7 +141,7 @@ def test_no_run_is_off_by_more_than_one_percent_without_an_error(initialized):
     assert not [r["id"] for r in initialized if r["off"]]
 
 
-@pytest.mark.parametrize("line_id", [107, 217, 58])
+@pytest.mark.parametrize("line_id", [33, 217, 58])
 def test_a_refused_coarse_mesh_names_a_finer_one_that_starts_right(fmu_file, line_id):
     """Graded in each section (meshGrading 1), a line whose touchdown bends within a fraction of an
     element is refused at 10 elements (the state misses the exact profile by more than 1 %), and so
