@@ -206,7 +206,8 @@ static int set_body_derivative(UCInstance* inst, const UCVariable* v, int order,
         const int c = (int)((in % (3 * sizeof(double))) / sizeof(double));
         const int linear = (order == 1 && in / (3 * sizeof(double)) == offsetof(UCCoupledBody, velocity) / (3 * sizeof(double))) ||
                            (order == 2 && in < 3 * sizeof(double));
-        const int angular = order == 1 && in >= offsetof(UCCoupledBody, angularVelocity);
+        const int angular = order == 1 && in >= offsetof(UCCoupledBody, angularVelocity) &&
+                            in < offsetof(UCCoupledBody, angularVelocity) + sizeof(double[3]);
         if (!linear && !angular) return 0;
         inst->inputs.bodyAcceleration[6 * k + (angular ? 3 : 0) + c] = value;
         inst->inputs.bodyAccelerationGiven[k] = 1;
@@ -302,12 +303,12 @@ static int interface_index(UCInstance* inst, fmi2ValueReference vr, const char* 
     return index;
 }
 
-/* dvUnknown = d[rows, cols] dvKnown for the 6 x 12 matrix d (row-major). */
-static void seeded_product(const double d[72], const int rows[], size_t nUnknown, const int cols[], size_t nKnown,
-                           const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
+/* dvUnknown = d[rows, cols] dvKnown for the 6 x UC_BODY_DERIVATIVE_INPUTS matrix d (row-major). */
+static void seeded_product(const double d[6 * UC_BODY_DERIVATIVE_INPUTS], const int rows[], size_t nUnknown,
+                           const int cols[], size_t nKnown, const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
     for (size_t i = 0; i < nUnknown; ++i) {
         double sum = 0.0;
-        for (size_t j = 0; j < nKnown; ++j) sum += d[12 * rows[i] + cols[j]] * dvKnown[j];
+        for (size_t j = 0; j < nKnown; ++j) sum += d[UC_BODY_DERIVATIVE_INPUTS * rows[i] + cols[j]] * dvKnown[j];
         dvUnknown[i] = sum;
     }
 }
@@ -336,13 +337,16 @@ static fmi2Status body_directional_derivative(UCInstance* inst, const fmi2ValueR
                                               const fmi2ValueReference known[], size_t nKnown,
                                               const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
     static const char* const outputs[6] = {"force.x", "force.y", "force.z", "moment.x", "moment.y", "moment.z"};
-    static const char* const inputs[12] = {"x", "y", "z", "roll", "pitch", "yaw", "vx", "vy", "vz", "wx", "wy", "wz"};
+    static const char* const inputs[UC_BODY_DERIVATIVE_INPUTS] = {"x",  "y",  "z",  "roll", "pitch", "yaw",
+                                                                  "vx", "vy", "vz", "wx",   "wy",    "wz",
+                                                                  "q0", "q1", "q2", "q3"};
     const char* which = "body[k].force.x/y/z and body[k].moment.x/y/z with respect to body[k].x/y/z, "
-                        "roll/pitch/yaw, vx/vy/vz and wx/wy/wz";
+                        "roll/pitch/yaw, vx/vy/vz, wx/wy/wz and q0/q1/q2/q3";
     const char* function = "fmi2GetDirectionalDerivative";
-    int rows[6], cols[12], body = 0;
-    if (nUnknown > 6 || nKnown > 12) {
-        uc_log_status(&inst->log, fmi2Error, "%s: at most 6 unknowns and 12 knowns per call (%s)", function, which);
+    int rows[6], cols[UC_BODY_DERIVATIVE_INPUTS], body = 0;
+    if (nUnknown > 6 || nKnown > UC_BODY_DERIVATIVE_INPUTS) {
+        uc_log_status(&inst->log, fmi2Error, "%s: at most 6 unknowns and %d knowns per call (%s)", function,
+                      UC_BODY_DERIVATIVE_INPUTS, which);
         return fmi2Error;
     }
     for (size_t i = 0; i < nUnknown; ++i) {
@@ -350,7 +354,7 @@ static fmi2Status body_directional_derivative(UCInstance* inst, const fmi2ValueR
         if (rows[i] < 0) return fmi2Error;
     }
     for (size_t j = 0; j < nKnown; ++j) {
-        cols[j] = body_index(inst, known[j], inputs, 12, &body, which);
+        cols[j] = body_index(inst, known[j], inputs, UC_BODY_DERIVATIVE_INPUTS, &body, which);
         if (cols[j] < 0) return fmi2Error;
         if (!isfinite(dvKnown[j])) {
             uc_log_status(&inst->log, fmi2Error, "%s: the seed of body[%d].%s is not a finite number", function, body,
@@ -358,7 +362,7 @@ static fmi2Status body_directional_derivative(UCInstance* inst, const fmi2ValueR
             return fmi2Error;
         }
     }
-    double d[72];
+    double d[6 * UC_BODY_DERIVATIVE_INPUTS];
     if (body > 0 && uc_body_derivatives(inst->cable, body, d, inst->msg, sizeof inst->msg) != 0) {
         uc_log_status(&inst->log, fmi2Error, "%s: %s", function, inst->msg);
         return fmi2Error;

@@ -108,9 +108,10 @@ def expand(raw: dict, constants: dict) -> list:
     if "components" in raw and "count" in raw:  # an array of vectors: k outer, component inner
         n = resolve_count(raw["count"], constants, name)
         comps = raw["components"]
+        starts = start if isinstance(start, list) else [start] * len(comps)  # one per component
         return [(name.replace("{k}", str(k + 1)).replace("{c}", c),
                  raw["field"].replace("{i}", str(k)).replace("{j}", str(j)),
-                 raw["description"].replace("{k}", str(k + 1)).replace("{c}", c), start, [])
+                 raw["description"].replace("{k}", str(k + 1)).replace("{c}", c), starts[j], [])
                 for k in range(n) for j, c in enumerate(comps)]
     if "components" in raw:
         comps = raw["components"]
@@ -424,25 +425,73 @@ def xml_text(data, scalars) -> str:
 
 # --------------------------------------------------------------------------------------------- FMI 3.0
 # The FMI 3.0 variant (build/fmi3/UnderwaterCable.fmu, docs/fmi3.md): the same variables with the same
-# names and value references, typed Float64 / Int32 / Boolean / String; the outputs at the stations
-# (name "x[{k}]", count UC_NUM_STATIONS) are one array variable "x" of that many elements, with the
-# value reference of its first element. FMI 3.0 also asks for the independent variable: time, 0.
+# value references, typed Float64 / Int32 / Boolean / String. A variable counted by one of the schema's
+# [fmi3] arrayCounts (the stations, a mooring system's lines, bodies and points) is an array there, named
+# as in FMI 2.0 without "[{k}]" (an fmi3Name may replace that name): "shape.x[{k}]" becomes "shape.x",
+# "line[{k}].fairleadTension" "line.fairleadTension", a vector "body[{k}].force.{c}" one array per
+# component ("body.force.x", ...), a matrix "body[{k}].stiffness[{c}]" with components "i,j" one array
+# of three dimensions ("body.stiffness", [k, i, j]). An array has the value reference of its first element;
+# its elements are FMI 2.0 scalars at a constant stride (1, or the number of components of a vector
+# of arrays). FMI 3.0 also asks for the independent variable: time, 0.
 FMI3_TYPES = {"Real": "Float64", "Integer": "Int32", "Boolean": "Boolean", "String": "String"}
 FMI3_TIME_VR = 0
 
 
-def fmi3_variables(entries, constants):
-    """(name, first scalar, count) per FMI 3.0 variable, in the order of the FMI 2.0 scalars."""
-    stations = int(constants["UC_NUM_STATIONS"])
+@dataclass
+class Fmi3Variable:
+    """One FMI 3.0 variable: a scalar, or an array of FMI 2.0 scalars (row-major order)."""
+    name: str
+    elements: list          # the FMI 2.0 scalars, in the array's row-major order
+    dimensions: tuple       # () for a scalar
+    description: str
+
+    @property
+    def first(self) -> Scalar:
+        return self.elements[0]
+
+    @property
+    def stride(self) -> int:
+        return self.elements[1].vr - self.elements[0].vr if len(self.elements) > 1 else 1
+
+
+def fmi3_arrays_of(e: Entry, counts) -> list:
+    """The FMI 3.0 arrays of one schema entry counted by one of counts, or [] if it stays scalars."""
+    raw = e.raw
+    if raw.get("count") not in counts:
+        return []
+    if raw["type"] != "Real" or raw["causality"] == "parameter" or "[{k}]" not in raw["name"]:
+        raise SystemExit(f"schema: {raw['name']}: an FMI 3.0 array is a Real input or output named with [{{k}}]")
+    base = raw.get("fmi3Name", raw["name"].replace("[{k}]", ""))
+    comps = raw.get("components")
+    if comps is None:
+        n = len(e.scalars)
+        return [Fmi3Variable(base, e.scalars, (n,), raw["description"].replace("{k}", "k"))]
+    n = len(e.scalars) // len(comps)
+    matrix = [re.fullmatch(r"(\d+),(\d+)", c) for c in comps]
+    if all(matrix) and base.endswith("[{c}]"):  # components "i,j": one array [k, i, j]
+        rows, cols = (max(int(m.group(g)) for m in matrix) for g in (1, 2))
+        if [(int(m.group(1)), int(m.group(2))) for m in matrix] != [(i, j) for i in range(1, rows + 1)
+                                                                   for j in range(1, cols + 1)]:
+            raise SystemExit(f"schema: {raw['name']}: matrix components must run row by row")
+        return [Fmi3Variable(base[:-len("[{c}]")], e.scalars, (n, rows, cols),
+                             raw["description"].replace("{k}", "k").replace("{c}", "i,j"))]
+    return [Fmi3Variable(base.replace("{c}", c), e.scalars[j::len(comps)], (n,),
+                         raw["description"].replace("{k}", "k").replace("{c}", c))
+            for j, c in enumerate(comps)]
+
+
+def fmi3_variables(data, entries) -> list:
+    """The FMI 3.0 variables (time not included), in the order of their FMI 2.0 scalars."""
+    counts = set(data.get("fmi3", {}).get("arrayCounts", []))
     variables = []
     for e in entries:
-        raw = e.raw
-        if raw["causality"] == "output" and raw.get("count") == "UC_NUM_STATIONS" and raw["name"].endswith("[{k}]"):
-            assert len(e.scalars) == stations
-            variables.append((raw.get("fmi3Name", raw["name"][:-len("[{k}]")]), e.scalars[0], stations))
-        else:
-            variables += [(s.name, s, 1) for s in e.scalars]
-    names = [name for name, _, _ in variables]
+        arrays = fmi3_arrays_of(e, counts)
+        variables += arrays or [Fmi3Variable(s.name, [s], (), s.description) for s in e.scalars]
+    for v in variables:  # the adapter maps an array's element i to the scalar first + i * stride
+        if any(b.vr - a.vr != v.stride for a, b in zip(v.elements, v.elements[1:])) or v.stride < 1:
+            raise SystemExit(f"schema: the FMI 2.0 value references of the FMI 3.0 array {v.name} are not at a "
+                             "constant stride")
+    names = [v.name for v in variables]
     if len(set(names)) != len(names):
         dup = sorted({n for n in names if names.count(n) > 1})
         raise SystemExit(f"schema: FMI 3.0 names {dup} are not unique (an array named like another variable: "
@@ -474,11 +523,10 @@ def fmi3_xml_text(data, entries) -> str:
     out.append("  <ModelVariables>")
     out.append(f'    <Float64 name="time" valueReference="{FMI3_TIME_VR}" causality="independent" '
                'variability="continuous" description="Simulation time" unit="s"/>')
-    variables = fmi3_variables(entries, data.get("constants", {}))
-    for name, s, count in variables:
-        kind = FMI3_TYPES[s.type]
-        description = s.description if count == 1 else s.entry["description"].replace("{k}", "k")
-        attrs = xml_variable_attributes(name, s, description)
+    variables = fmi3_variables(data, entries)
+    for v in variables:
+        s, kind = v.first, FMI3_TYPES[v.first.type]
+        attrs = xml_variable_attributes(v.name, s, v.description)
         if s.unit:
             attrs += f' unit="{xml_attr(s.unit)}"'
         if s.lo is not None:
@@ -492,11 +540,10 @@ def fmi3_xml_text(data, entries) -> str:
                 start = "true" if s.start else "false"
             elif kind == "Int32":
                 start = str(int(s.start))
-            else:
-                start = fmt_number(float(s.start))
+            else:  # an array's start: every element's, row-major
+                start = " ".join(fmt_number(float(x.start)) for x in v.elements)
             attrs += f' start="{start}"'
-        if count > 1:
-            children.append(f'<Dimension start="{count}"/>')
+        children += [f'<Dimension start="{n}"/>' for n in v.dimensions]
         if children:
             out.append(f"    <{kind} {attrs}>")
             out += [f"      {c}" for c in children]
@@ -504,29 +551,38 @@ def fmi3_xml_text(data, entries) -> str:
         else:
             out.append(f"    <{kind} {attrs}/>")
     out.append("  </ModelVariables>")
-    by_name = {s.name: s for e in entries for s in e.scalars}
+    fmi3_vr = {x.name: v.first.vr for v in variables for x in v.elements}  # an element's FMI 3.0 variable
     out.append("  <ModelStructure>")
-    outputs = [(s, count) for _, s, count in variables if s.causality == "output"]
-    for s, count in outputs:
-        out.append(f'    <Output valueReference="{s.vr}"{xml_dependencies(s, lambda d: by_name[d].vr)}/>')
-    for s, count in outputs:
+    outputs = [v.first for v in variables if v.first.causality == "output"]
+    for s in outputs:
+        out.append(f'    <Output valueReference="{s.vr}"{fmi3_dependencies(s, fmi3_vr)}/>')
+    for s in outputs:
         out.append(f'    <InitialUnknown valueReference="{s.vr}"/>')
     out.append("  </ModelStructure>")
     out.append("</fmiModelDescription>")
     return "\n".join(out) + "\n"
 
 
+def fmi3_dependencies(s: Scalar, fmi3_vr: dict) -> str:
+    """An output's dependencies by the value references of the FMI 3.0 variables that hold them."""
+    vrs = list(dict.fromkeys(fmi3_vr[d] for d in s.dependencies))
+    if not vrs:
+        return ""
+    return f' dependencies="{" ".join(map(str, vrs))}" dependenciesKind="{" ".join("dependent" for _ in vrs)}"'
+
+
 def fmi3_header_text(data, entries) -> str:
-    """The FMI 3.0 adapter's table of array variables: X(value reference, number of elements)."""
-    rows = [(s.vr, count, name) for name, s, count in fmi3_variables(entries, data.get("constants", {})) if count > 1]
+    """The FMI 3.0 adapter's table of array variables: X(value reference, elements, stride, name)."""
+    arrays = [v for v in fmi3_variables(data, entries) if v.dimensions]
     out = [f"/* {GENERATED_NOTE} */",
            "/* The FMI 3.0 variant's array variables (docs/fmi3.md): each has the value reference of its first",
-           " * element among the FMI 2.0 scalars, which follow it consecutively. */",
+           " * element; element i (row-major) is the FMI 2.0 scalar first + i * stride. */",
            "#ifndef UC_FMI3_ARRAYS_H", "#define UC_FMI3_ARRAYS_H", "",
-           f"#define UC_FMI3_TIME_VR {FMI3_TIME_VR}", "",
-           "/* X(valueReference, elements, name) */",
+           f"#define UC_FMI3_TIME_VR {FMI3_TIME_VR}",
+           f"#define UC_FMI3_MAX_ELEMENTS {max(len(v.elements) for v in arrays)}", "",
+           "/* X(valueReference, elements, stride, name) */",
            "#define UC_FMI3_ARRAYS(X) \\"]
-    out += [f'    X({vr}, {count}, "{name}") \\' for vr, count, name in rows]
+    out += [f'    X({v.first.vr}, {len(v.elements)}, {v.stride}, "{v.name}") \\' for v in arrays]
     out[-1] = out[-1].rstrip(" \\")
     out += ["", "#endif", ""]
     return "\n".join(out)

@@ -106,7 +106,8 @@ extern "C" int uc_interface_derivative(UCCable* c, const double seed[18], double
     });
 }
 
-extern "C" int uc_body_derivatives(UCCable* c, int body, double d[72], char* msg, size_t msgSize) {
+extern "C" int uc_body_derivatives(UCCable* c, int body, double d[6 * UC_BODY_DERIVATIVE_INPUTS], char* msg,
+                                   size_t msgSize) {
     return guarded(msg, msgSize, [&](std::string& error) {
         if (!c || !d) {
             error = "uc_body_derivatives: NULL pointer";
@@ -116,10 +117,10 @@ extern "C" int uc_body_derivatives(UCCable* c, int body, double d[72], char* msg
             error = "the body[k].* derivatives belong to a mooring system (lineFile with several lines or bodies)";
             return false;
         }
-        double m[6][12];
+        double m[6][UC_BODY_DERIVATIVE_INPUTS];
         const bool ok = c->system->body_derivatives(body, m, error);
         for (int i = 0; i < 6; ++i)
-            for (int j = 0; j < 12; ++j) d[12 * i + j] = m[i][j];
+            for (int j = 0; j < UC_BODY_DERIVATIVE_INPUTS; ++j) d[UC_BODY_DERIVATIVE_INPUTS * i + j] = m[i][j];
         return ok;
     });
 }

@@ -46,6 +46,14 @@ extern "C" {
 #define UC_WINCH_RATE 1
 #define UC_WINCH_TENSION 2
 
+/* bodyOrientation: the inputs of a mooring system's coupled body's orientation */
+#define UC_ORIENTATION_ANGLES_XYZ 0 /* body[k].roll/pitch/yaw, R = Rx(roll) Ry(pitch) Rz(yaw) (MoorDyn's) */
+#define UC_ORIENTATION_QUATERNION 1 /* body[k].q0/q1/q2/q3, scalar first */
+#define UC_ORIENTATION_ANGLES_ZYX 2 /* body[k].roll/pitch/yaw, R = Rz(yaw) Ry(pitch) Rx(roll) (OpenFAST's, MoorPy's) */
+
+/* The body inputs of uc_body_derivatives: x, y, z, roll, pitch, yaw, vx, vy, vz, wx, wy, wz, q0, q1, q2, q3 */
+#define UC_BODY_DERIVATIVE_INPUTS 16
+
 /* initMode values */
 #define UC_INIT_EQUILIBRIUM 0
 #define UC_INIT_STRAIGHT 1
@@ -130,10 +138,12 @@ int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, char* msg, si
  * exactly what they are. */
 int uc_interface_derivative(UCCable* c, const double seed[18], double out[6], char* msg, size_t msgSize);
 
-/* The same for coupled body `body` (1-based) of a mooring system: d[12 i + j] = d output_i(t + h) / d input_j(t)
- * for the outputs body[k].force.x/y/z, body[k].moment.x/y/z (i = 0..5) and the inputs body[k].x, y, z, roll,
- * pitch, yaw, vx, vy, vz, wx, wy, wz (j = 0..11; docs/systems_mooring.md). Available after the first step. */
-int uc_body_derivatives(UCCable* c, int body, double d[72], char* msg, size_t msgSize);
+/* The same for coupled body `body` (1-based) of a mooring system: d[UC_BODY_DERIVATIVE_INPUTS i + j] =
+ * d output_i(t + h) / d input_j(t) for the outputs body[k].force.x/y/z, body[k].moment.x/y/z (i = 0..5) and
+ * the inputs body[k].x, y, z, roll, pitch, yaw, vx, vy, vz, wx, wy, wz, q0, q1, q2, q3 (j = 0..15; the
+ * orientation inputs that bodyOrientation does not read have 0; docs/systems_mooring.md). Available after
+ * the first step. */
+int uc_body_derivatives(UCCable* c, int body, double d[6 * UC_BODY_DERIVATIVE_INPUTS], char* msg, size_t msgSize);
 
 /* Where the tow point stands now: the end of the last step's trajectory (the previous inputs
  * extrapolated), or the initial tow position. A position input far from it is a displacement. */

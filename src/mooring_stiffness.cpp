@@ -20,7 +20,7 @@ std::vector<MooringSystem::Holder> MooringSystem::stiffness_holders(int b, const
     const UCCoupledBody& body = in.coupledBody[b - 1];
     std::vector<Holder> holders;
     holders.push_back({-1, 0, 6, Eigen::Map<const Vec3>(body.position),
-                       body_rotation(body.rotation[0], body.rotation[1], body.rotation[2])});
+                       coupled_body_rotation(body, base_.bodyOrientation)});
     // the free nodes a line on body b reaches, directly or through other nodes (not through other coupled
     // bodies: they stay where their inputs put them)
     std::vector<int> nodeHolder(nodes_.size(), -1);

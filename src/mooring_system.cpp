@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 
 #include "hydrodynamics.h"
@@ -45,6 +46,20 @@ Mat3 body_rotation(double roll, double pitch, double yaw) {
     return (Eigen::AngleAxisd(roll, Vec3::UnitX()) * Eigen::AngleAxisd(pitch, Vec3::UnitY()) *
             Eigen::AngleAxisd(yaw, Vec3::UnitZ()))
         .toRotationMatrix();
+}
+
+Mat3 coupled_body_rotation(const UCCoupledBody& body, int orientation) {
+    const double* a = body.rotation;
+    if (orientation == UC_ORIENTATION_QUATERNION) {
+        const double* q = body.quaternion;
+        return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+    }
+    if (orientation == UC_ORIENTATION_ANGLES_ZYX) {
+        return (Eigen::AngleAxisd(a[2], Vec3::UnitZ()) * Eigen::AngleAxisd(a[1], Vec3::UnitY()) *
+                Eigen::AngleAxisd(a[0], Vec3::UnitX()))
+            .toRotationMatrix();
+    }
+    return body_rotation(a[0], a[1], a[2]);
 }
 
 MooringSystem::MooringSystem(const UCParams& base, const MooringDeck& deck) : base_(base), deck_(deck) {}
@@ -130,7 +145,7 @@ MooringSystem::Motion MooringSystem::end_motion(const MooringEnd& end, const UCI
         default: {
             const int k = end.body - 1;
             const UCCoupledBody& b = in.coupledBody[k];
-            const Vec3 arm = body_rotation(b.rotation[0], b.rotation[1], b.rotation[2]) * local;
+            const Vec3 arm = coupled_body_rotation(b, base_.bodyOrientation) * local;
             const Vec3 w = vec3(b.angularVelocity);
             const Vec3 a = vec3(in.bodyAcceleration + 6 * k), alpha = vec3(in.bodyAcceleration + 6 * k + 3);
             return {vec3(b.position) + arm, vec3(b.velocity) + w.cross(arm), a + alpha.cross(arm) + w.cross(w.cross(arm)),
@@ -157,7 +172,7 @@ void MooringSystem::line_inputs(int k, const UCInputs& in, UCInputs& li) const {
     li.endAccelerationGiven = far.accelerationGiven ? 1 : 0;
 }
 
-bool MooringSystem::check_inputs(const UCInputs& in, std::string& error) const {
+bool MooringSystem::check_inputs(const UCInputs& in, std::string& error) {
     for (int b = 0; b < deck_.bodies; ++b) {
         const UCCoupledBody& body = in.coupledBody[b];
         for (int c = 0; c < 3; ++c) {
@@ -166,6 +181,28 @@ bool MooringSystem::check_inputs(const UCInputs& in, std::string& error) const {
                 error = "body[" + std::to_string(b + 1) + "].* inputs must be finite numbers";
                 return false;
             }
+        }
+        if (base_.bodyOrientation != UC_ORIENTATION_QUATERNION) continue;
+        // The quaternion is normalized; one whose norm is off 1 by more than kQuaternionNormTolerance is
+        // no unit quaternion carried with round-off or drift (vector-first order, angles, a zero left in).
+        const double* q = body.quaternion;
+        const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        const std::string name = "body[" + std::to_string(b + 1) + "].q0/q1/q2/q3";
+        if (!std::isfinite(norm) || std::abs(norm - 1.0) > kQuaternionNormTolerance) {
+            char text[256];
+            std::snprintf(text, sizeof text, "%s = (%.9g, %.9g, %.9g, %.9g) has norm %.9g: not a unit quaternion "
+                          "(bodyOrientation = 1 reads the body's orientation as (cos(phi/2), n sin(phi/2)), scalar "
+                          "first; the norm may differ from 1 by %g)", name.c_str(), q[0], q[1], q[2], q[3], norm,
+                          kQuaternionNormTolerance);
+            error = text;
+            return false;
+        }
+        if (std::abs(norm - 1.0) > kQuaternionReportedNorm && !quaternionNormalized_) {
+            quaternionNormalized_ = true;
+            char text[200];
+            std::snprintf(text, sizeof text, "%s has norm %.12g at t = %g s: normalized (reported once)",
+                          name.c_str(), norm, time());
+            event_ += (event_.empty() ? "" : "; ") + std::string(text);
         }
     }
     for (const MooringDeckLine& l : deck_.lines) {
@@ -772,12 +809,31 @@ bool MooringSystem::node_step(double t, double h, double shift, const UCInputs& 
 
 namespace {
 
-// d(R r)/d(roll, pitch, yaw) for R = Rx Ry Rz, as the columns of a 3x3 matrix.
-Mat3 rotation_derivative(const double a[3], const Vec3& r) {
+// d(R r)/d(the orientation inputs) of a coupled body, as bodyOrientation reads them: the columns for roll,
+// pitch, yaw (R = Rx Ry Rz or Rz Ry Rx; the fourth 0) or for q0..q3 (R of the normalized quaternion).
+Eigen::Matrix<double, 3, 4> rotation_derivative(const UCCoupledBody& body, int orientation, const Vec3& r) {
+    Eigen::Matrix<double, 3, 4> d = Eigen::Matrix<double, 3, 4>::Zero();
+    if (orientation == UC_ORIENTATION_QUATERNION) {
+        // R r = r + 2 q0 (v x r) + 2 v x (v x r) for a unit q = (q0, v); q = p / |p| of the input p
+        const double* p = body.quaternion;
+        const double n = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3]);
+        const Eigen::Vector4d q = Eigen::Vector4d(p[0], p[1], p[2], p[3]) / n;
+        const Vec3 v = q.tail<3>();
+        d.col(0) = 2.0 * v.cross(r);
+        d.rightCols<3>() = -2.0 * q[0] * skew(r) + 2.0 * (v.dot(r) * Mat3::Identity() + v * r.transpose() -
+                                                          2.0 * r * v.transpose());
+        return d * (Eigen::Matrix4d::Identity() - q * q.transpose()) / n;
+    }
+    const double* a = body.rotation;
     const Mat3 Rx = Eigen::AngleAxisd(a[0], Vec3::UnitX()).toRotationMatrix();
     const Mat3 Ry = Eigen::AngleAxisd(a[1], Vec3::UnitY()).toRotationMatrix();
     const Mat3 Rz = Eigen::AngleAxisd(a[2], Vec3::UnitZ()).toRotationMatrix();
-    Mat3 d;
+    if (orientation == UC_ORIENTATION_ANGLES_ZYX) {
+        d.col(0) = Rz * Ry * Rx * skew(Vec3::UnitX()) * r;
+        d.col(1) = Rz * Ry * skew(Vec3::UnitY()) * Rx * r;
+        d.col(2) = Rz * skew(Vec3::UnitZ()) * Ry * Rx * r;
+        return d;
+    }
     d.col(0) = skew(Vec3::UnitX()) * Rx * Ry * Rz * r;
     d.col(1) = Rx * skew(Vec3::UnitY()) * Ry * Rz * r;
     d.col(2) = Rx * Ry * skew(Vec3::UnitZ()) * Rz * r;
@@ -786,9 +842,10 @@ Mat3 rotation_derivative(const double a[3], const Vec3& r) {
 
 }  // namespace
 
-bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error) {
+bool MooringSystem::body_derivatives(int b, double d[6][UC_BODY_DERIVATIVE_INPUTS], std::string& error) {
+    constexpr int N = UC_BODY_DERIVATIVE_INPUTS;
     for (int i = 0; i < 6; ++i)
-        for (int j = 0; j < 12; ++j) d[i][j] = 0.0;
+        for (int j = 0; j < N; ++j) d[i][j] = 0.0;
     if (b < 1 || b > deck_.bodies) {
         error = "body " + std::to_string(b) + " is not a coupled body of the deck";
         return false;
@@ -799,25 +856,28 @@ bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error)
                 "they are available after the first fmi2DoStep";
         return false;
     }
-    std::array<double, 72>& cache = derivativeCache_[b - 1];
+    std::array<double, 6 * N>& cache = derivativeCache_[b - 1];
     if (derivativeStamp_[b - 1] == stamp_) {
-        std::memcpy(&d[0][0], cache.data(), sizeof(double) * 72);
+        std::memcpy(&d[0][0], cache.data(), sizeof(double) * 6 * N);
         return true;
     }
     const UCCoupledBody& body = lastInputs_.coupledBody[b - 1];
-    const Mat3 R = body_rotation(body.rotation[0], body.rotation[1], body.rotation[2]);
+    const Mat3 R = coupled_body_rotation(body, base_.bodyOrientation);
     const Vec3 w = vec3(body.angularVelocity);
-    using Mat312 = Eigen::Matrix<double, 3, 12>;
+    using Mat3N = Eigen::Matrix<double, 3, N>;
+    // the orientation inputs' columns: roll, pitch, yaw (3 to 5) or q0..q3 (12 to 15)
+    const bool quaternion = base_.bodyOrientation == UC_ORIENTATION_QUATERNION;
+    const int turn = quaternion ? 12 : 3, turns = quaternion ? 4 : 3;
     // The reference point at t + h moves with its inputs as a driven end does: 1 per unit position,
     // 1.5 h per unit velocity (the acceleration from the last two velocity inputs, cosimulation.md).
     // (h alone where the master gives the acceleration)
     const double velocityWeight = references_[b - 1].lastAccelerationGiven ? h : 1.5 * h;
-    Mat312 dReference = Mat312::Zero();
+    Mat3N dReference = Mat3N::Zero();
     dReference.block<3, 3>(0, 0).setIdentity();
     dReference.block<3, 3>(0, 6) = velocityWeight * Mat3::Identity();
     const bool accelerations = references_[b - 1].lastAccelerationGiven;
     const Vec3 alpha = vec3(lastInputs_.bodyAcceleration + 6 * (b - 1) + 3);
-    Eigen::Matrix<double, 6, 12> D = Eigen::Matrix<double, 6, 12>::Zero();
+    Eigen::Matrix<double, 6, N> D = Eigen::Matrix<double, 6, N>::Zero();
     for (size_t k = 0; k < lines_.size(); ++k) {
         const MooringDeckLine& l = deck_.lines[k];
         const MooringEnd* ends[2] = {&l.fairlead, &l.far};
@@ -826,29 +886,32 @@ bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error)
         if (!on[0] && !on[1]) continue;
         // each end's input (position, velocity, and where the master gives them its acceleration
         // a + alpha x arm + w x (w x arm)) per unit body input, and its position at t + h
-        Eigen::Matrix<double, 9, 12> T[2];
-        Mat312 dPosition[2];
+        Eigen::Matrix<double, 9, N> T[2];
+        Mat3N dPosition[2];
         for (int e = 0; e < 2; ++e) {
             T[e].setZero();
             dPosition[e].setZero();
             if (!on[e]) continue;
             const Vec3 arm = R * vec3(ends[e]->position);
-            const Mat3 dArm = rotation_derivative(body.rotation, vec3(ends[e]->position));
+            const Eigen::Matrix<double, 3, 4> dArm = rotation_derivative(body, base_.bodyOrientation,
+                                                                         vec3(ends[e]->position));
             T[e].block<3, 3>(0, 0).setIdentity();
-            T[e].block<3, 3>(0, 3) = dArm;
-            T[e].block<3, 3>(3, 3) = skew(w) * dArm;
             T[e].block<3, 3>(3, 6).setIdentity();
             T[e].block<3, 3>(3, 9) = -skew(arm);
-            if (accelerations) {
-                T[e].block<3, 3>(6, 3) = (skew(alpha) + skew(w) * skew(w)) * dArm;
-                T[e].block<3, 3>(6, 9) = -skew(w.cross(arm)) - skew(w) * skew(arm);
+            for (int c = 0; c < turns; ++c) {
+                T[e].block<3, 1>(0, turn + c) = dArm.col(c);
+                T[e].block<3, 1>(3, turn + c) = skew(w) * dArm.col(c);
+                if (accelerations) T[e].block<3, 1>(6, turn + c) = (skew(alpha) + skew(w) * skew(w)) * dArm.col(c);
             }
+            if (accelerations) T[e].block<3, 3>(6, 9) = -skew(w.cross(arm)) - skew(w) * skew(arm);
             dPosition[e] = T[e].topRows<3>() + velocityWeight * T[e].middleRows<3>(3) +
                            (accelerations ? 0.5 * h * h : 0.0) * T[e].bottomRows<3>();
         }
-        // the line's interface derivatives in the directions of the body's inputs (one integration each)
-        Eigen::Matrix<double, 6, 12> lineD;
-        for (int j = 0; j < 12; ++j) {
+        // the line's interface derivatives in the directions of the body's inputs (one integration each;
+        // none for the orientation inputs that bodyOrientation does not read)
+        Eigen::Matrix<double, 6, N> lineD = Eigen::Matrix<double, 6, N>::Zero();
+        for (int j = 0; j < N; ++j) {
+            if (T[0].col(j).isZero(0.0) && T[1].col(j).isZero(0.0)) continue;
             double seed[CableSimulation::kDerivativeInputs] = {0.0}, out[6];
             for (int i = 0; i < 6; ++i) {
                 seed[i] = T[0](i, j);
@@ -869,14 +932,14 @@ bool MooringSystem::body_derivatives(int b, double d[6][12], std::string& error)
         const Vec3 at[2] = {lines_[k]->tow_position(), vec3(o.endPosition)};
         for (int e = 0; e < 2; ++e) {
             if (!on[e]) continue;
-            const Mat312 dForce = lineD.middleRows<3>(3 * e);  // this end's force per unit body input
+            const Mat3N dForce = lineD.middleRows<3>(3 * e);  // this end's force per unit body input
             const Vec3 arm = at[e] - references_[b - 1].position;
             D.topRows<3>() += dForce;
             D.bottomRows<3>() += skew(arm) * dForce - skew(force[e]) * (dPosition[e] - dReference);
         }
     }
     for (int i = 0; i < 6; ++i)
-        for (int j = 0; j < 12; ++j) cache[12 * i + j] = d[i][j] = D(i, j);
+        for (int j = 0; j < N; ++j) cache[N * i + j] = d[i][j] = D(i, j);
     derivativeStamp_[b - 1] = stamp_;
     return true;
 }

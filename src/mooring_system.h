@@ -24,6 +24,11 @@ Mat3 body_rotation(double roll, double pitch, double yaw);
 // The rotation by the angle |turn| about turn's direction (a rotation vector).
 Mat3 turn_matrix(const Vec3& turn);
 
+// A coupled body's orientation from its inputs as bodyOrientation reads them: UC_ORIENTATION_ANGLES_XYZ
+// body_rotation of its angles, UC_ORIENTATION_QUATERNION its quaternion q0..q3 (scalar first) normalized,
+// UC_ORIENTATION_ANGLES_ZYX R = Rz(yaw) Ry(pitch) Rx(roll) (OpenFAST's and MoorPy's).
+Mat3 coupled_body_rotation(const UCCoupledBody& body, int orientation);
+
 class MooringSystem {
 public:
     // The lines' parameters are base with each line's deck properties; false (error) where one is refused.
@@ -59,10 +64,11 @@ public:
 
     // The interface derivatives of body b (1-based) over the next communication step, taken as long as
     // the last one: d[i][j] = d (force, moment)_i (t + h) / d input_j (t), inputs j = x, y, z, roll,
-    // pitch, yaw, vx, vy, vz, wx, wy, wz of the body: each line's own interface derivatives
-    // (CableSimulation::interface_derivatives) through the fairleads' motion on the body, and the
-    // moment arms' change. Available after the first step.
-    bool body_derivatives(int b, double d[6][12], std::string& error);
+    // pitch, yaw, vx, vy, vz, wx, wy, wz, q0, q1, q2, q3 of the body (UC_BODY_DERIVATIVE_INPUTS; the
+    // orientation inputs that bodyOrientation does not read have 0): each line's own interface
+    // derivatives (CableSimulation::interface_derivatives) through the fairleads' motion on the body, and
+    // the moment arms' change. Available after the first step.
+    bool body_derivatives(int b, double d[6][UC_BODY_DERIVATIVE_INPUTS], std::string& error);
 
     // Steps of the central differences of body_stiffness: of each line's ends [m] (with the other end held,
     // where a short taut line, a bridle's pennant of sag 0.5 m, is strongly non-linear: truncation ~
@@ -72,6 +78,9 @@ public:
     // The stiffness re-balances the free nodes on the lines' profiles until a Newton step moves them by
     // less than kStiffnessBalance [m, rad], each step moving a node by at most kStiffnessReach [m].
     static constexpr double kStiffnessBalance = 1e-8, kStiffnessReach = 2.0;
+    // A quaternion input (bodyOrientation 1) is refused where its norm is off 1 by more than this, and
+    // normalized (reported once) where by more than kQuaternionReportedNorm.
+    static constexpr double kQuaternionNormTolerance = 0.01, kQuaternionReportedNorm = 1e-6;
     // The free points' statics stop when a Newton step with the lines' solutions moves them less [m].
     // (and the dynamics' when a Newton correction moves them less), in at most kNodeIterations.
     static constexpr double kNodeTolerance = 1e-6;
@@ -110,7 +119,7 @@ private:
     // Where an end of a line stands and moves for these inputs.
     Motion end_motion(const MooringEnd& end, const UCInputs& in) const;
     void line_inputs(int k, const UCInputs& in, UCInputs& li) const;
-    bool check_inputs(const UCInputs& in, std::string& error) const;
+    bool check_inputs(const UCInputs& in, std::string& error);  // reports a normalized quaternion once
     void update_outputs();
     // What body b's stiffness moves (src/mooring_stiffness.cpp): the body (holder 0) and the free nodes
     // its lines reach, each with its generalized coordinates from offset (3 for a point, 6 for a body:
@@ -203,13 +212,14 @@ private:
     UCInputs lastInputs_{};  // of the last step (or the initialization)
     UCOutputs outputs_{};
     bool stiffnessWarned_ = false, substepsReported_ = false;
+    bool quaternionNormalized_ = false;  // a quaternion input off unit norm was reported (once)
     bool stiffnessCurrent_ = false;  // outputs_'s body stiffness is that of the present state
     std::string event_;
     std::vector<unsigned char> lineBuffer_;
     // body_derivatives of each body for the state of stamp_ (a master asks column by column)
     long stamp_ = 0;
     std::vector<long> derivativeStamp_;
-    std::vector<std::array<double, 72>> derivativeCache_;
+    std::vector<std::array<double, 6 * UC_BODY_DERIVATIVE_INPUTS>> derivativeCache_;
 };
 
 }  // namespace uc

@@ -53,9 +53,10 @@ typedef struct UCEndLoadDamping {
 
 typedef struct UCCoupledBody {
     double position[3]; /* body[k].x/y/z [m]: a mooring system's coupled body k (with no BODIES section in the deck, body 1 carries the Vessel points): position of its reference point */
-    double rotation[3]; /* body[k].roll, body[k].pitch, body[k].yaw [rad]: coupled body k: roll, pitch and yaw angles; the body's orientation is R = Rx(roll) Ry(pitch) Rz(yaw), MoorDyn's convention (docs/systems_mooring.md) */
+    double rotation[3]; /* body[k].roll, body[k].pitch, body[k].yaw [rad]: coupled body k: roll, pitch and yaw angles; the body's orientation is R = Rx(roll) Ry(pitch) Rz(yaw), MoorDyn's convention, with `bodyOrientation` 0 (the default), R = Rz(yaw) Ry(pitch) Rx(roll), OpenFAST's and MoorPy's, with 2 ([docs/systems_mooring.md](docs/systems_mooring.md)) */
     double velocity[3]; /* body[k].vx, body[k].vy, body[k].vz [m/s]: coupled body k: velocity of its reference point */
     double angularVelocity[3]; /* body[k].wx, body[k].wy, body[k].wz [rad/s]: coupled body k: angular velocity in the earth frame */
+    double quaternion[4]; /* body[k].q0, body[k].q1, body[k].q2, body[k].q3: coupled body k, when `bodyOrientation` = 1: its orientation as a unit quaternion (q0, q1, q2, q3) = (cos ½φ, n sin ½φ) for a turn φ about the unit axis n, scalar first; normalized, refused if its norm is off 1 by more than 1 % */
 } UCCoupledBody;
 
 typedef struct UCCoupledPoint {
@@ -160,6 +161,7 @@ typedef struct UCParams {
     double proxyTrackingDamping; /* proxy.trackingDamping: `bottomEnd` 4: velocity gain β of the tracking force, as a fraction of M/h */
     double proxyFilterTime; /* proxy.filterTime [s]: `bottomEnd` 4: shortest time constant of the low-pass that estimates the external body's other forces (drag, lift, thrust, weight and buoyancy beyond the proxy's) from the tracking force; the estimate uses the larger of this and five communication steps */
     int seabedRest; /* seabedRest: where a line at rest lies on the penalty seabed: 1 (the default) at z = -`waterDepth`: the contact surface of each section and attachment is raised by its own rest penetration (its weight over the contact stiffness, plus half the smoothing band), so the static state agrees with a rigid seabed at every `seabedStiffness` and the stiffness acts on changes of load about the rest; 0 the contact surface at z = -`waterDepth`, a resting line sinking into it by its rest penetration, as MoorDyn's `kBot` ([docs/model.md](docs/model.md), seabed) */
+    int bodyOrientation; /* bodyOrientation: a mooring system's coupled bodies: which inputs give their orientation: 0 `body[k].roll/pitch/yaw` with R = Rx(roll) Ry(pitch) Rz(yaw), MoorDyn's; 1 the unit quaternion `body[k].q0/q1/q2/q3`, scalar first; 2 `body[k].roll/pitch/yaw` with R = Rz(yaw) Ry(pitch) Rx(roll), OpenFAST's and MoorPy's ([docs/systems_mooring.md](docs/systems_mooring.md)) */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
 } UCParams;
 
@@ -497,6 +499,7 @@ typedef struct UCOutputs {
     X(257, "proxy.trackingDamping", REAL, PARAMETER, proxyTrackingDamping) \
     X(258, "proxy.filterTime", REAL, PARAMETER, proxyFilterTime) \
     X(259, "seabedRest", INTEGER, PARAMETER, seabedRest) \
+    X(260, "bodyOrientation", INTEGER, PARAMETER, bodyOrientation) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -684,6 +687,22 @@ typedef struct UCOutputs {
     X(1185, "point[16].vx", REAL, INPUT, coupledPoint[15].velocity[0]) \
     X(1186, "point[16].vy", REAL, INPUT, coupledPoint[15].velocity[1]) \
     X(1187, "point[16].vz", REAL, INPUT, coupledPoint[15].velocity[2]) \
+    X(1188, "body[1].q0", REAL, INPUT, coupledBody[0].quaternion[0]) \
+    X(1189, "body[1].q1", REAL, INPUT, coupledBody[0].quaternion[1]) \
+    X(1190, "body[1].q2", REAL, INPUT, coupledBody[0].quaternion[2]) \
+    X(1191, "body[1].q3", REAL, INPUT, coupledBody[0].quaternion[3]) \
+    X(1192, "body[2].q0", REAL, INPUT, coupledBody[1].quaternion[0]) \
+    X(1193, "body[2].q1", REAL, INPUT, coupledBody[1].quaternion[1]) \
+    X(1194, "body[2].q2", REAL, INPUT, coupledBody[1].quaternion[2]) \
+    X(1195, "body[2].q3", REAL, INPUT, coupledBody[1].quaternion[3]) \
+    X(1196, "body[3].q0", REAL, INPUT, coupledBody[2].quaternion[0]) \
+    X(1197, "body[3].q1", REAL, INPUT, coupledBody[2].quaternion[1]) \
+    X(1198, "body[3].q2", REAL, INPUT, coupledBody[2].quaternion[2]) \
+    X(1199, "body[3].q3", REAL, INPUT, coupledBody[2].quaternion[3]) \
+    X(1200, "body[4].q0", REAL, INPUT, coupledBody[3].quaternion[0]) \
+    X(1201, "body[4].q1", REAL, INPUT, coupledBody[3].quaternion[1]) \
+    X(1202, "body[4].q2", REAL, INPUT, coupledBody[3].quaternion[2]) \
+    X(1203, "body[4].q3", REAL, INPUT, coupledBody[3].quaternion[3]) \
     X(2001, "towForce.x", REAL, OUTPUT, towForce[0]) \
     X(2002, "towForce.y", REAL, OUTPUT, towForce[1]) \
     X(2003, "towForce.z", REAL, OUTPUT, towForce[2]) \
@@ -1469,10 +1488,15 @@ typedef struct UCOutputs {
     X(proxyTrackingDamping, 0.3) \
     X(proxyFilterTime, 1.0) \
     X(seabedRest, 1) \
+    X(bodyOrientation, 0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
     X(currentScale, 1.0) \
+    X(coupledBody[0].quaternion[0], 1.0) \
+    X(coupledBody[1].quaternion[0], 1.0) \
+    X(coupledBody[2].quaternion[0], 1.0) \
+    X(coupledBody[3].quaternion[0], 1.0) \
 
 /* X(member, name, lo, hi, loOpen, hiOpen, rangeText, why): the admissible interval of every numeric parameter (closed or open at each end) */
 #define UC_SCHEMA_PARAMETER_RANGES(X) \
@@ -1727,6 +1751,7 @@ typedef struct UCOutputs {
     X(proxyTrackingDamping, "proxy.trackingDamping", 0.0, 1.0, 0, 0, "[0, 1]", "the tracking damping is a fraction of the one-step gain M / h") \
     X(proxyFilterTime, "proxy.filterTime", 0.0, 10000.0, 1, 0, "(0, 10000]", "the estimate's low-pass needs a positive time constant") \
     X(seabedRest, "seabedRest", 0.0, 1.0, 0, 0, "{0 sinking by the rest penetration as in MoorDyn, 1 resting at the seabed's depth}", "unknown seabed rest level") \
+    X(bodyOrientation, "bodyOrientation", 0.0, 2.0, 0, 0, "{0 angles R = Rx Ry Rz, 1 quaternion, 2 angles R = Rz Ry Rx}", "unknown orientation input of the coupled bodies") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -1,8 +1,9 @@
 /*
  * fmi3Functions.c - the FMI 3.0 co-simulation interface of the cable FMU (docs/fmi3.md), over the FMI 2.0
  * adapter: one instance of it inside each FMI 3.0 instance, the same state machine, logging, states and
- * checks. What FMI 3.0 adds or names differently is translated here: arrays (the stations' outputs, one
- * value reference each, expanded to the FMI 2.0 scalars that follow it), the independent variable time,
+ * checks. What FMI 3.0 adds or names differently is translated here: arrays (the stations' outputs, a
+ * mooring system's lines, bodies and points: one value reference each, expanded to its FMI 2.0 scalars at
+ * the stride uc_fmi3_arrays.h gives), the independent variable time,
  * fmi3EnterInitializationMode with the experiment's times, fmi3DoStep's extra results, the log callback
  * without printf formatting and the resource directory as a path. The FMI 3.0 functions that a
  * co-simulation FMU without event mode, clocks or the other integer types does not provide are present
@@ -198,13 +199,23 @@ FMI3_EXPORT fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentComm
 
 /* ---- values ---------------------------------------------------------------------------------------- */
 
-/* Elements of the variable vr: the array's length, or 1 for a scalar. */
-static size_t elements(fmi3ValueReference vr) {
-#define UC_FMI3_ARRAY_LENGTH(first, count, name) \
-    if (vr == (first)) return (count);
+/* Elements of the variable vr (the array's length, or 1 for a scalar) and the value-reference stride of
+ * its FMI 2.0 scalars: element i is the scalar vr + i * stride. */
+static size_t elements_and_stride(fmi3ValueReference vr, fmi2ValueReference* stride) {
+    *stride = 1;
+#define UC_FMI3_ARRAY_LENGTH(first, count, step, name) \
+    if (vr == (first)) {                               \
+        *stride = (step);                              \
+        return (count);                                \
+    }
     UC_FMI3_ARRAYS(UC_FMI3_ARRAY_LENGTH)
 #undef UC_FMI3_ARRAY_LENGTH
     return 1;
+}
+
+static size_t elements(fmi3ValueReference vr) {
+    fmi2ValueReference stride;
+    return elements_and_stride(vr, &stride);
 }
 
 static fmi3Status count_mismatch(UCInstance* inst, const char* function, size_t nValueReferences, size_t nValues) {
@@ -213,9 +224,10 @@ static fmi3Status count_mismatch(UCInstance* inst, const char* function, size_t 
     return fmi3Error;
 }
 
-/* Float64 get and set, variable by variable: an array is its elements' consecutive FMI 2.0 scalars (the
- * arrays are the stations' outputs: UC_NUM_STATIONS elements). */
-#define UC_FMI3_ARRAY_FITS(first, count, name) _Static_assert((count) <= UC_NUM_STATIONS, name " fits");
+/* Float64 get and set, variable by variable: an array is its elements' FMI 2.0 scalars (the stations'
+ * outputs, a mooring system's lines, bodies and points), at most UC_FMI3_MAX_ELEMENTS of them. */
+#define UC_FMI3_ARRAY_FITS(first, count, step, name) \
+    _Static_assert((count) <= UC_FMI3_MAX_ELEMENTS && (step) >= 1, name " fits");
 UC_FMI3_ARRAYS(UC_FMI3_ARRAY_FITS)
 #undef UC_FMI3_ARRAY_FITS
 
@@ -230,15 +242,16 @@ static fmi3Status access_float64(fmi3Instance instance, const fmi3ValueReference
     size_t at = 0;
     fmi2Status worst = fmi2OK;
     for (size_t k = 0; k < nvr; ++k) {
-        const size_t n = elements(vr[k]);
+        fmi2ValueReference stride;
+        const size_t n = elements_and_stride(vr[k], &stride);
         if (at + n > nValues) return count_mismatch(inst, function, nvr, nValues);
         fmi2Status status;
         if (vr[k] == UC_FMI3_TIME_VR && !set) {
             values[at] = inst->time;
             status = fmi2OK;
         } else {
-            fmi2ValueReference scalars[UC_NUM_STATIONS];
-            for (size_t i = 0; i < n; ++i) scalars[i] = vr[k] + (fmi2ValueReference)i;
+            fmi2ValueReference scalars[UC_FMI3_MAX_ELEMENTS];
+            for (size_t i = 0; i < n; ++i) scalars[i] = vr[k] + (fmi2ValueReference)i * stride;
             status = set ? fmi2SetReal(inst, scalars, n, values + at) : fmi2GetReal(inst, scalars, n, values + at);
         }
         if (status > worst) worst = status;
@@ -345,19 +358,75 @@ FMI3_EXPORT fmi3Status fmi3DeserializeFMUState(fmi3Instance instance, const fmi3
                                                (fmi2FMUstate*)FMUState);
 }
 
+/* The derivatives of arrays with respect to arrays of as many elements (a mooring system's body.force.* and
+ * body.moment.* against body.x ... body.wz): FMI 2.0 gives them body by body, the load on body k against
+ * body k's inputs, so element k of the unknowns is taken against element k of the knowns; the entries
+ * between different elements (bodies) are 0, as FMI 2.0 has none. An element whose seeds are all 0 has
+ * sensitivities 0 (no FMI 2.0 call: a deck's bodies beyond its own have neither inputs nor loads). */
+enum { UC_FMI3_MAX_DERIVATIVE_VARIABLES = 32 };
+
+static fmi3Status array_directional_derivative(UCInstance* inst, const fmi3ValueReference unknowns[], size_t nUnknowns,
+                                               const fmi3ValueReference knowns[], size_t nKnowns,
+                                               const fmi3Float64 seed[], size_t nSeed, fmi3Float64 sensitivity[],
+                                               size_t nSensitivity) {
+    const char* function = "fmi3GetDirectionalDerivative";
+    fmi2ValueReference u[UC_FMI3_MAX_DERIVATIVE_VARIABLES], k[UC_FMI3_MAX_DERIVATIVE_VARIABLES];
+    fmi2ValueReference uStride[UC_FMI3_MAX_DERIVATIVE_VARIABLES], kStride[UC_FMI3_MAX_DERIVATIVE_VARIABLES];
+    fmi2Real s[UC_FMI3_MAX_DERIVATIVE_VARIABLES], ds[UC_FMI3_MAX_DERIVATIVE_VARIABLES];
+    const size_t n = elements(unknowns[0]);
+    int same = nUnknowns <= UC_FMI3_MAX_DERIVATIVE_VARIABLES && nKnowns <= UC_FMI3_MAX_DERIVATIVE_VARIABLES;
+    for (size_t i = 0; same && i < nUnknowns; ++i) same = elements_and_stride(unknowns[i], &uStride[i]) == n;
+    for (size_t j = 0; same && j < nKnowns; ++j) same = elements_and_stride(knowns[j], &kStride[j]) == n;
+    if (!same || nSeed != nKnowns * n || nSensitivity != nUnknowns * n) {
+        uc_log_status(&inst->log, fmi2Error, "%s: with arrays, every unknown and known is an array of the same length "
+                      "(a mooring system's body.force.*, body.moment.* against body.x ... body.wz, at most %d of "
+                      "each), one seed per known element and one sensitivity per unknown element (%zu knowns, %zu "
+                      "seeds, %zu unknowns, %zu sensitivities)", function, (int)UC_FMI3_MAX_DERIVATIVE_VARIABLES,
+                      nKnowns, nSeed, nUnknowns, nSensitivity);
+        return fmi3Error;
+    }
+    for (size_t e = 0; e < n; ++e) {
+        int seeded = 0;
+        for (size_t j = 0; j < nKnowns; ++j) {
+            k[j] = knowns[j] + (fmi2ValueReference)e * kStride[j];
+            s[j] = seed[j * n + e];
+            seeded |= s[j] != 0.0;
+        }
+        for (size_t i = 0; i < nUnknowns; ++i) {
+            u[i] = unknowns[i] + (fmi2ValueReference)e * uStride[i];
+            ds[i] = 0.0;
+        }
+        if (seeded) {
+            const fmi2Status status = fmi2GetDirectionalDerivative(inst, u, nUnknowns, k, nKnowns, s, ds);
+            if (status > fmi2Warning) return (fmi3Status)status;
+        }
+        for (size_t i = 0; i < nUnknowns; ++i) sensitivity[i * n + e] = ds[i];
+    }
+    return fmi3OK;
+}
+
 FMI3_EXPORT fmi3Status fmi3GetDirectionalDerivative(fmi3Instance instance, const fmi3ValueReference unknowns[],
                                                     size_t nUnknowns, const fmi3ValueReference knowns[], size_t nKnowns,
                                                     const fmi3Float64 seed[], size_t nSeed, fmi3Float64 sensitivity[],
                                                     size_t nSensitivity) {
     UCInstance* inst = inner(instance);
     if (inst == NULL) return fmi3Error;
+    if ((nUnknowns > 0 && (unknowns == NULL || sensitivity == NULL)) || (nKnowns > 0 && (knowns == NULL || seed == NULL))) {
+        uc_log_status(&inst->log, fmi2Error, "fmi3GetDirectionalDerivative: NULL array");
+        return fmi3Error;
+    }
     int arrays = 0;
-    for (size_t k = 0; k < nUnknowns && unknowns != NULL; ++k) arrays |= elements(unknowns[k]) > 1;
-    for (size_t k = 0; k < nKnowns && knowns != NULL; ++k) arrays |= elements(knowns[k]) > 1;
-    if (nSeed != nKnowns || nSensitivity != nUnknowns || arrays) {
+    for (size_t k = 0; k < nUnknowns; ++k) arrays |= elements(unknowns[k]) > 1;
+    for (size_t k = 0; k < nKnowns; ++k) arrays |= elements(knowns[k]) > 1;
+    if (arrays && nUnknowns > 0) {
+        return array_directional_derivative(inst, unknowns, nUnknowns, knowns, nKnowns, seed, nSeed, sensitivity,
+                                            nSensitivity);
+    }
+    if (nSeed != nKnowns || nSensitivity != nUnknowns) {
         uc_log_status(&inst->log, fmi2Error, "fmi3GetDirectionalDerivative: the derivatives are of scalar outputs "
-                      "(towForce.*, endForce.*) with respect to scalar inputs: one seed per known and one "
-                      "sensitivity per unknown (%zu knowns, %zu seeds, %zu unknowns, %zu sensitivities)",
+                      "(towForce.*, endForce.*) with respect to scalar inputs, or of a mooring system's body arrays "
+                      "with respect to its body input arrays: one seed per known and one sensitivity per unknown "
+                      "(%zu knowns, %zu seeds, %zu unknowns, %zu sensitivities)",
                       nKnowns, nSeed, nUnknowns, nSensitivity);
         return fmi3Error;
     }

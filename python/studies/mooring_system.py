@@ -122,11 +122,11 @@ def moorpy_statics(deck: SystemDeck, pose=(0.0,) * 6) -> dict:
             "stiffness": np.array(K, float)}
 
 
-def fmu_statics(fmu, deck: SystemDeck, pose=(0.0,) * 6, **extra) -> dict:
-    """The FMU's static equilibrium (initMode 0) with body 1 at `pose`."""
+def fmu_statics(fmu, deck: SystemDeck, pose=(0.0,) * 6, inputs=None, **extra) -> dict:
+    """The FMU's static equilibrium (initMode 0) with body 1 at `pose` (or the given body inputs)."""
     n = deck.lines
     with CableFMU(fmu, parameters=fmu_parameters(deck, **extra)) as c:
-        c.initialize(inputs={f"body[1].{name}": v for name, v in zip(POSE_NAMES, pose)})
+        c.initialize(inputs=inputs or {f"body[1].{name}": v for name, v in zip(POSE_NAMES, pose)})
         load = [c.get(f"body[1].force.{a}") for a in "xyz"] + [c.get(f"body[1].moment.{a}") for a in "xyz"]
         K = [[c.get(f"body[1].stiffness[{i},{j}]") for j in range(1, 7)] for i in range(1, 7)]
         return {"fairlead": [c.get(f"line[{k}].fairleadTension") for k in range(1, n + 1)],

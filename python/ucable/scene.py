@@ -24,7 +24,8 @@ A scene file holds (docs/scenes.md lists every key with its type, unit and defau
     [body]                    # optional: body 1 of a mooring system (parameter lineFile, a deck of several
     start = [0, 0, 0, 0, 0, 0]   # lines; docs/systems_mooring.md): start pose x y z [m], roll pitch yaw [deg],
     surge = { amplitude = 5.0, period = 20.0 }   # and oscillations about it from rest (sway, heave in m,
-    pitch = { amplitude = 3.0, period = 25.0 }   # roll, pitch, yaw in deg) as the tow's
+    pitch = { amplitude = 3.0, period = 25.0 }   # roll, pitch, yaw in deg) as the tow's; with the parameter
+                              # bodyOrientation = 1 the angles go to the FMU as their quaternion (R = Rx Ry Rz)
 
     [winch]                   # optional: the winch's command in stages (sets winchMode 1 or 2)
     ramp = 10.0               # [s] from one stage's value to the next; a rate starts from rest
@@ -53,6 +54,7 @@ from pathlib import Path
 import numpy as np
 
 from .fmu import NUM_STATIONS, CableFMU, FMICallException
+from .orientation import ANGLES_XYZ, QUATERNION, quaternion_from_angles
 from .variables import MAX_LINES
 from .paths import find_scene, require_fmu
 from .scene_schema import Checker, SceneFileError, validate
@@ -210,10 +212,17 @@ class BodyMotion:
             a[i] += A * (dde * s + 2.0 * de * w * c - e * w * w * s)
         return q, v, a
 
-    def inputs(self, t: float) -> dict:
+    def inputs(self, t: float, orientation: int = ANGLES_XYZ) -> dict:
+        """Body 1's inputs at t; with orientation (bodyOrientation) QUATERNION the angles are passed as the
+        quaternion of R = Rx Ry Rz of them, the orientation the FMU's angles give by default."""
         q, v, _ = self.at(t)
         names = ("x", "y", "z", "roll", "pitch", "yaw", "vx", "vy", "vz", "wx", "wy", "wz")
-        return {f"body[1].{n}": float(x) for n, x in zip(names, [*q, *v])}
+        d = {f"body[1].{n}": float(x) for n, x in zip(names, [*q, *v])}
+        if orientation == QUATERNION:
+            for n in ("roll", "pitch", "yaw"):
+                del d[f"body[1].{n}"]
+            d.update({f"body[1].q{i}": x for i, x in enumerate(quaternion_from_angles(*q[3:]))})
+        return d
 
 
 class TowMotion:
@@ -348,7 +357,7 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
             d = {"tow.x": x[0], "tow.y": x[1], "tow.z": x[2], "tow.vx": v[0], "tow.vy": v[1], "tow.vz": v[2]}
             d.update({name: float(signal_at(sig, t)) for name, sig in signals.items()})
             if body:
-                d.update(body.inputs(t))
+                d.update(body.inputs(t, int(parameters.get("bodyOrientation", ANGLES_XYZ))))
             return d
 
         cpu0 = time.process_time()

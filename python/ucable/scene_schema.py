@@ -36,7 +36,7 @@ BODY_DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 BODY_KEYS = ("start",) + BODY_DOFS
 OSCILLATION_KEYS = ("amplitude", "period", "ramp")
 BODY_INPUT_NAMES = tuple(f"body[1].{n}" for n in ("x", "y", "z", "roll", "pitch", "yaw", "vx", "vy", "vz",
-                                                   "wx", "wy", "wz"))
+                                                   "wx", "wy", "wz", "q0", "q1", "q2", "q3"))
 
 
 class SceneFileError(ValueError):

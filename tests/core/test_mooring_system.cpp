@@ -422,13 +422,38 @@ TEST(MooringSystem, AStiffnessThatIsNotFoundIsZeroAndTheEventSaysWhy) {
     EXPECT_EQ(system->take_event(), "");
 }
 
+// The rotations about x, y and z by the angles r, p, y, written out.
+struct AxisRotations {
+    uc::Mat3 Rx, Ry, Rz;
+    AxisRotations(double r, double p, double y) {
+        Rx << 1, 0, 0, 0, std::cos(r), -std::sin(r), 0, std::sin(r), std::cos(r);
+        Ry << std::cos(p), 0, std::sin(p), 0, 1, 0, -std::sin(p), 0, std::cos(p);
+        Rz << std::cos(y), -std::sin(y), 0, std::sin(y), std::cos(y), 0, 0, 0, 1;
+    }
+};
+
 TEST(MooringSystem, BodyOrientationIsMoorDynsRollPitchYaw) {
     const double r = 0.3, p = -0.2, y = 1.1;
-    uc::Mat3 Rx, Ry, Rz;
-    Rx << 1, 0, 0, 0, std::cos(r), -std::sin(r), 0, std::sin(r), std::cos(r);
-    Ry << std::cos(p), 0, std::sin(p), 0, 1, 0, -std::sin(p), 0, std::cos(p);
-    Rz << std::cos(y), -std::sin(y), 0, std::sin(y), std::cos(y), 0, 0, 0, 1;
-    EXPECT_LT((uc::body_rotation(r, p, y) - Rx * Ry * Rz).norm(), 1e-15);
+    const AxisRotations a(r, p, y);
+    EXPECT_LT((uc::body_rotation(r, p, y) - a.Rx * a.Ry * a.Rz).norm(), 1e-15);
+}
+
+TEST(MooringSystem, ACoupledBodysOrientationIsReadAsBodyOrientationSays) {
+    const double r = 0.3, p = -0.2, y = 1.1;
+    const AxisRotations a(r, p, y);
+    const uc::Mat3 &Rx = a.Rx, &Ry = a.Ry, &Rz = a.Rz;
+    UCCoupledBody body{};
+    body.rotation[0] = r, body.rotation[1] = p, body.rotation[2] = y;
+    // the quaternion of Rx Ry Rz: the product of the three half-angle quaternions, scaled by 1.004
+    const Eigen::Quaterniond q = Eigen::Quaterniond(Eigen::AngleAxisd(r, uc::Vec3::UnitX())) *
+                                 Eigen::Quaterniond(Eigen::AngleAxisd(p, uc::Vec3::UnitY())) *
+                                 Eigen::Quaterniond(Eigen::AngleAxisd(y, uc::Vec3::UnitZ()));
+    body.quaternion[0] = 1.004 * q.w(), body.quaternion[1] = 1.004 * q.x();
+    body.quaternion[2] = 1.004 * q.y(), body.quaternion[3] = 1.004 * q.z();
+    EXPECT_EQ(uc::coupled_body_rotation(body, UC_ORIENTATION_ANGLES_XYZ), uc::body_rotation(r, p, y));
+    EXPECT_LT((uc::coupled_body_rotation(body, UC_ORIENTATION_QUATERNION) - Rx * Ry * Rz).norm(), 1e-15);
+    EXPECT_LT((uc::coupled_body_rotation(body, UC_ORIENTATION_ANGLES_ZYX) - Rz * Ry * Rx).norm(), 1e-15);
+    EXPECT_GT((Rz * Ry * Rx - Rx * Ry * Rz).norm(), 0.1);  // two different rotations at these angles
 }
 
 TEST(MooringSystem, TheBodyLoadIsTheLinesForcesAndTheirMomentAboutTheReference) {

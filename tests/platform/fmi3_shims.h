@@ -1,7 +1,7 @@
 /*
  * fmi3_shims.h - for uc_fmu_driver_fmi3: the FMI 2.0 calls of fmu_driver.c carried out with the FMI 3.0
  * variant's functions, so both libraries run the same scenes. The outputs are read by FMI 3.0 variable: an
- * array's first element stands for the array (its elements follow in the FMI 2.0 order).
+ * array's elements are FMI 2.0 scalars at the stride uc_fmi3_arrays.h gives.
  */
 #include <stdbool.h>
 
@@ -55,9 +55,6 @@ static fmi2Status shim_enter_initialization_mode(fmi2Component c) {
     return (fmi2Status)fmi3.EnterInitializationMode(c, false, 0.0, fmi3.startTime, fmi3.stopTimeDefined, fmi3.stopTime);
 }
 static fmi2Status shim_exit_initialization_mode(fmi2Component c) { return (fmi2Status)fmi3.ExitInitializationMode(c); }
-static fmi2Status shim_set_real(fmi2Component c, const fmi2ValueReference vr[], size_t n, const fmi2Real v[]) {
-    return (fmi2Status)fmi3.SetFloat64(c, vr, n, v, n);
-}
 static fmi2Status shim_set_integer(fmi2Component c, const fmi2ValueReference vr[], size_t n, const fmi2Integer v[]) {
     return (fmi2Status)fmi3.SetInt32(c, vr, n, v, n);
 }
@@ -70,22 +67,60 @@ static fmi2Status shim_set_boolean(fmi2Component c, const fmi2ValueReference vr[
 static fmi2Status shim_set_string(fmi2Component c, const fmi2ValueReference vr[], size_t n, const fmi2String v[]) {
     return (fmi2Status)fmi3.SetString(c, vr, n, v, n);
 }
-/* The FMI 2.0 value references of whole arrays, read as the FMI 3.0 arrays. */
-static int inside_array(fmi2ValueReference vr) {
-#define UC_SHIM_INSIDE(first, count, name) \
-    if (vr > (first) && vr < (first) + (count)) return 1;
-    UC_FMI3_ARRAYS(UC_SHIM_INSIDE)
-#undef UC_SHIM_INSIDE
+/* The FMI 3.0 array (its first value reference and length) that holds the FMI 2.0 scalar vr as element
+ * *index; 0 for a scalar. */
+static int array_element(fmi2ValueReference vr, fmi3ValueReference* first, size_t* count, size_t* index) {
+#define UC_SHIM_ELEMENT(f, n, stride, name)                                       \
+    if (vr >= (f) && vr < (f) + (n) * (stride) && (vr - (f)) % (stride) == 0) { \
+        *first = (f);                                                            \
+        *count = (n);                                                            \
+        *index = (vr - (f)) / (stride);                                          \
+        return 1;                                                                \
+    }
+    UC_FMI3_ARRAYS(UC_SHIM_ELEMENT)
+#undef UC_SHIM_ELEMENT
     return 0;
 }
+/* The FMI 2.0 scalars read through the FMI 3.0 variables that hold them: a scalar as it is, an element from
+ * its array (read once while the next scalars are elements of the same array). */
 static fmi2Status shim_get_real(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Real v[]) {
-    fmi3ValueReference* vr3 = malloc(n * sizeof *vr3 + 1);
-    size_t m = 0;
-    for (size_t k = 0; k < n; ++k)
-        if (!inside_array(vr[k])) vr3[m++] = vr[k];
-    const fmi3Status status = fmi3.GetFloat64(c, vr3, m, v, n);
-    free(vr3);
-    return (fmi2Status)status;
+    fmi3Float64 array[UC_FMI3_MAX_ELEMENTS];
+    fmi3ValueReference cached = 0, first;
+    size_t count, index;
+    fmi3Status worst = fmi3OK;
+    for (size_t k = 0; k < n; ++k) {
+        fmi3Status status = fmi3OK;
+        if (!array_element(vr[k], &first, &count, &index)) {
+            status = fmi3.GetFloat64(c, &vr[k], 1, &v[k], 1);
+        } else {
+            if (first != cached) {
+                status = fmi3.GetFloat64(c, &first, 1, array, count);
+                cached = status <= fmi3Warning ? first : 0;
+            }
+            v[k] = array[index];
+        }
+        if (status > worst) worst = status;
+        if (worst > fmi3Warning) break;
+    }
+    return (fmi2Status)worst;
+}
+/* An element of an array is set with the array's other elements as they are. */
+static fmi2Status shim_set_real(fmi2Component c, const fmi2ValueReference vr[], size_t n, const fmi2Real v[]) {
+    fmi3Float64 array[UC_FMI3_MAX_ELEMENTS];
+    fmi3ValueReference first;
+    size_t count, index;
+    for (size_t k = 0; k < n; ++k) {
+        fmi3Status status;
+        if (!array_element(vr[k], &first, &count, &index)) {
+            status = fmi3.SetFloat64(c, &vr[k], 1, &v[k], 1);
+        } else {
+            status = fmi3.GetFloat64(c, &first, 1, array, count);
+            array[index] = v[k];
+            if (status <= fmi3Warning) status = fmi3.SetFloat64(c, &first, 1, array, count);
+        }
+        if (status > fmi3Warning) return (fmi2Status)status;
+    }
+    return fmi2OK;
 }
 static fmi2Status shim_set_input_derivatives(fmi2Component c, const fmi2ValueReference vr[], size_t n,
                                              const fmi2Integer order[], const fmi2Real v[]) {

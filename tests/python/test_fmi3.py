@@ -1,7 +1,8 @@
 """The FMI 3.0 variant (build/fmi3/UnderwaterCable.fmu, docs/fmi3.md) through fmpy's FMI 3.0 importer:
-valid, both platforms in it, the stations as arrays, and the same cable as the FMI 2.0 FMU: the Hopland
-manoeuvre gives the same bits, a serialized state continues bit for bit in a fresh instance, the interface
-derivatives equal the FMI 2.0 ones, and the FMU's messages arrive as plain text."""
+valid, both platforms in it, the stations and a mooring system's lines, bodies and points as arrays, and
+the same cable as the FMI 2.0 FMU: the Hopland manoeuvre and the OC4 platform's moorings give the same
+bits, a serialized state continues bit for bit in a fresh instance, the interface derivatives (the single
+line's and the platform's) equal the FMI 2.0 ones, and the FMU's messages arrive as plain text."""
 
 import shutil
 import zipfile
@@ -13,7 +14,9 @@ from fmpy.fmi2 import FMU2Slave
 from fmpy.fmi3 import FMU3Slave
 from fmpy.validation import validate_fmu
 
+from studies import mooring_system as ms
 from studies.manoeuvre import NUM_STATIONS, hopland_accelerate, tow_inputs
+from ucable.variables import MAX_BODIES, MAX_LINES, MAX_POINTS
 
 STEP = 0.5
 T_END = 90.0   # through the 60 s ramp and 30 s beyond
@@ -60,6 +63,19 @@ class Cable:
         names = list(values)
         vrs = [self.vr[n] for n in names]
         (self.fmu.setFloat64 if self.fmi3 else self.fmu.setReal)(vrs, [values[n] for n in names])
+
+    def set_parameters(self, values):
+        """Parameters of any type, by name (the same names in both FMUs)."""
+        types = {v.name: v.type for v in self.md.modelVariables}
+        for name, value in values.items():
+            if types[name] == "String":
+                self.fmu.setString([self.vr[name]], [str(value)])
+            elif types[name] == "Boolean":
+                self.fmu.setBoolean([self.vr[name]], [bool(value)])
+            elif types[name] in ("Integer", "Int32"):
+                (self.fmu.setInt32 if self.fmi3 else self.fmu.setInteger)([self.vr[name]], [int(value)])
+            else:
+                self.set({name: value})
 
     def outputs(self):
         """The scalars, then the arrays' elements, as one array."""
@@ -162,3 +178,114 @@ def test_fmi3_messages_arrive_as_plain_text(fmi3_file):
     assert "length" in text and "%%" not in text, text
     cable.fmu.freeInstance()
     shutil.rmtree(cable.dir, ignore_errors=True)
+
+
+# A mooring system: FMI 2.0 family name (k the index, c the component) -> the FMI 3.0 arrays of it,
+# each with its number of elements (k outer).
+SYSTEM_OUTPUTS = [("line[{k}].fairleadTension", "", MAX_LINES), ("line[{k}].anchorTension", "", MAX_LINES),
+                  ("line[{k}].minTension", "", MAX_LINES), ("line[{k}].groundedLength", "", MAX_LINES),
+                  ("body[{k}].force.{c}", "xyz", MAX_BODIES), ("body[{k}].moment.{c}", "xyz", MAX_BODIES),
+                  ("point[{k}].force.{c}", "xyz", MAX_POINTS)]
+BODY_RATES = ("vx", "vy", "vz", "wx", "wy", "wz")
+
+
+class System(Cable):
+    """The OC4 platform's moorings (scenes/oc4_semi.dat) in either FMU: body 1's pose and rates as inputs,
+    the lines', bodies' and points' outputs read as FMI 2.0 scalars or FMI 3.0 arrays, in the FMI 2.0 order
+    (k outer, component inner)."""
+
+    def set_body(self, pose_and_rates):
+        names = ms.POSE_NAMES + BODY_RATES
+        if self.fmi3:  # body.x = [body 1, body 2, body 3, body 4]
+            self.set_arrays({f"body.{n}": [x, 0.0, 0.0, 0.0] for n, x in zip(names, pose_and_rates)})
+        else:
+            self.set({f"body[1].{n}": x for n, x in zip(names, pose_and_rates)})
+
+    def set_arrays(self, arrays):
+        names = list(arrays)
+        self.fmu.setFloat64([self.vr[n] for n in names], [x for n in names for x in arrays[n]])
+
+    def outputs(self):
+        values = []
+        for family, components, count in SYSTEM_OUTPUTS:
+            comps = components or [""]
+            if self.fmi3:
+                name = family.replace("[{k}]", "")
+                arrays = [self.fmu.getFloat64([self.vr[name.replace("{c}", c)]], nValues=count) for c in comps]
+                values += [arrays[j][k] for k in range(count) for j in range(len(comps))]
+            else:
+                values += self.fmu.getReal([self.vr[family.replace("{k}", str(k)).replace("{c}", c)]
+                                            for k in range(1, count + 1) for c in comps])
+        if self.fmi3:
+            values += self.fmu.getFloat64([self.vr["body.stiffness"]], nValues=MAX_BODIES * 36)
+        else:
+            values += self.fmu.getReal([self.vr[f"body[{k}].stiffness[{i},{j}]"] for k in range(1, MAX_BODIES + 1)
+                                        for i in range(1, 7) for j in range(1, 7)])
+        return np.array(values)
+
+
+def test_the_system_arrays_of_the_fmi3_fmu(fmi3_file):
+    """A mooring system's names in FMI 3.0: its FMI 2.0 names without [k], one array per component, the
+    stiffness one array [body, i, j], each on the value reference of its first FMI 2.0 element."""
+    md2 = {v.name: v for v in read_model_description(str(fmi3_file.parent.parent / "UnderwaterCable.fmu")).modelVariables}
+    md3 = {v.name: v for v in read_model_description(str(fmi3_file)).modelVariables}
+    dims = {n: [int(d.start) for d in v.dimensions] for n, v in md3.items() if v.dimensions}
+    expected = {"line.fairleadTension": [MAX_LINES], "body.force.x": [MAX_BODIES], "body.moment.z": [MAX_BODIES],
+                "body.stiffness": [MAX_BODIES, 6, 6], "body.x": [MAX_BODIES], "body.roll": [MAX_BODIES],
+                "body.wz": [MAX_BODIES], "point.x": [MAX_POINTS], "point.vz": [MAX_POINTS],
+                "point.force.y": [MAX_POINTS], "point.position.x": [MAX_POINTS], "body.pose.yaw": [MAX_BODIES],
+                "shape.x": [NUM_STATIONS]}
+    assert {n: dims.get(n) for n in expected} == expected
+    for name in expected:
+        first = name.replace("body.", "body[1].").replace("point.", "point[1].").replace("line.", "line[1].")
+        first = first + "[1,1]" if name == "body.stiffness" else first
+        first = first + "[1]" if name == "shape.x" else first
+        assert md3[name].valueReference == md2[first].valueReference, name
+    assert md3["body.x"].start == "0 0 0 0" and md3["body.x"].causality == "input"
+    assert "body[1].x" not in md3 and "line[1].fairleadTension" not in md3
+
+
+def test_the_oc4_moorings_through_fmi3_arrays_are_bit_identical_to_fmi2(fmi3_file, fmu_file):
+    """The OC4 platform's three chains with body 1 in surge, heave and pitch for 10 s at 0.2 s steps: every
+    line, body and point output (the stiffness included) the same bits through the FMI 3.0 arrays as through
+    the FMI 2.0 scalars; then the directional derivatives of the body's load with respect to its inputs
+    (FMI 3.0: the arrays body.force.*, body.moment.* against body.x ... body.wz, seeded on element 1) equal
+    the FMI 2.0 ones of body 1, and the other bodies' elements (not in the deck) are 0."""
+    deck = ms.read_system_deck(ms.OC4)
+    motion, h = ms.PlatformMotion(), 0.2
+    runs, derivatives = [], []
+    for path, fmi3 in ((fmu_file, False), (fmi3_file, True)):
+        system = System(path, fmi3)
+        system.set_parameters(ms.fmu_parameters(deck))
+        q, v, _ = motion.state(0.0)
+        system.set_body([*q, *v])
+        system.initialize({})
+        rows = [system.outputs()]
+        for k in range(50):
+            q, v, _ = motion.state(k * h)
+            system.set_body([*q, *v])
+            system.fmu.doStep(k * h, h)
+            rows.append(system.outputs())
+        runs.append(np.array(rows))
+        loads = [f"body{{k}}.{a}.{c}" for a in ("force", "moment") for c in "xyz"]
+        inputs = ms.POSE_NAMES + BODY_RATES
+        if fmi3:
+            unknowns = [system.vr[n.format(k="")] for n in loads]
+            columns = [system.fmu.getDirectionalDerivative(unknowns, [system.vr[f"body.{n}"]], [1.0, 0.0, 0.0, 0.0],
+                                                           nSensitivity=6 * MAX_BODIES) for n in inputs]
+            columns = np.array(columns).reshape(len(inputs), 6, MAX_BODIES)
+            assert np.all(columns[:, :, 1:] == 0.0)
+            derivatives.append(columns[:, :, 0])
+        else:
+            unknowns = [system.vr[n.format(k="[1]")] for n in loads]
+            derivatives.append(np.array([system.fmu.getDirectionalDerivative(unknowns, [system.vr[f"body[1].{n}"]], [1.0])
+                                         for n in inputs]))
+        system.close()
+    fmi2, fmi3 = runs
+    assert fmi2.shape == (51, 4 * MAX_LINES + 6 * MAX_BODIES + 3 * MAX_POINTS + 36 * MAX_BODIES)
+    tensions = fmi2[:, :3]
+    assert tensions.min() > 5e5 and np.ptp(tensions[:, 0]) > 1e5  # three loaded chains, line 1 pulled by the surge
+    assert np.all(fmi2[:, [4 * MAX_LINES, 4 * MAX_LINES + 2]] != 0.0)  # body 1's force x, z (y: 0 by symmetry)
+    assert np.array_equal(fmi2, fmi3), f"max difference {np.max(np.abs(fmi2 - fmi3))}"
+    assert np.any(derivatives[0] != 0.0)
+    assert np.array_equal(derivatives[0], derivatives[1])

@@ -25,7 +25,8 @@ def readme_rows():
         if section is None or not line.startswith("| `"):
             continue
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
-        for token in re.findall(r"`([^`]+)`", cells[0]):
+        tokens = re.findall(r"`([^`]+)`", cells[0])
+        for j, token in enumerate(tokens):
             names = [token]
             m = re.fullmatch(r"(.+)\.([a-z](?:/[a-z])+)", token)  # a vector: name.x/y/z or name.x/y
             if m:
@@ -34,6 +35,8 @@ def readme_rows():
                 default = cells[2] if section != "output" else None
                 if default is not None and len(names) > 1:
                     default = re.findall(r"[-+0-9.e]+", default.split("(")[-1])[k]
+                elif default is not None and len(tokens) > 1 and default.startswith("("):
+                    default = re.findall(r"[-+0-9.e]+", default)[j]  # one per name: `a`, `b` | (1, 0)
                 rows[name] = (section, cells[1], default)
     return rows
 

@@ -14,6 +14,7 @@ from fmpy.fmi2 import fmi2Error
 
 from studies import mooring_system as ms
 from ucable.fmu import FMICallException
+from ucable.orientation import ANGLES_XYZ, ANGLES_ZYX, QUATERNION, quaternion_from_angles
 
 DECK = ms.read_system_deck(ms.OC4)
 # Poses of body 1 where MoorPy's orientation (Rz Ry Rx) and the FMU's (Rx Ry Rz) are the same rotation.
@@ -26,13 +27,112 @@ def test_oc4_line_tensions_and_stiffness_match_moorpy(fmu_file, pose):
     """The acceptance's 0.5 % on every line's fairlead and anchor tension, 1 % on the coupled 6x6
     stiffness (each entry against the scale sqrt(K_ii K_jj) of its row and column), and the body's
     force to 0.5 % of the vertical load."""
-    ref, ours = ms.moorpy_statics(DECK, pose), ms.fmu_statics(fmu_file, DECK, pose)
+    _assert_matches_moorpy(ms.fmu_statics(fmu_file, DECK, pose), ms.moorpy_statics(DECK, pose))
+
+
+def _assert_matches_moorpy(ours: dict, ref: dict):
+    """The acceptance's bounds on the statics of body 1 against MoorPy's."""
     assert ours["fairlead"] == pytest.approx(ref["fairlead"], rel=5e-3)
     assert ours["anchor"] == pytest.approx(ref["anchor"], rel=5e-3)
     assert ms.stiffness_difference(ours["stiffness"], ref["stiffness"]) < 1e-2
     scale = abs(ref["load"][2])
     assert np.max(np.abs(ours["load"][:3] - ref["load"][:3])) < 5e-3 * scale
     assert np.max(np.abs(ours["load"][3:] - ref["load"][3:])) < 5e-3 * scale * 40.0  # arms of 40 m
+
+
+# A pose turned about all three axes, where the two angle conventions are different rotations.
+COMBINED_POSE = (4.0, -3.0, 1.0, math.radians(4.0), math.radians(-6.0), math.radians(15.0))
+
+
+@pytest.mark.parametrize("orientation", [ANGLES_ZYX, QUATERNION], ids=["openfast-angles", "quaternion"])
+def test_a_pose_turned_about_three_axes_matches_moorpy(fmu_file, orientation):
+    """MoorPy composes its angles R = Rz Ry Rx: the FMU given the same angles with bodyOrientation 2, or
+    their quaternion with bodyOrientation 1, matches its statics as at the single-axis poses (0.5 % on
+    the tensions, 1 % on the stiffness; measured 0.001 % and 8e-10); the same angles read as MoorDyn's
+    R = Rx Ry Rz (bodyOrientation 0) are another rotation, 1 % off in the tensions, 2.4 % in the stiffness."""
+    ref = ms.moorpy_statics(DECK, COMBINED_POSE)
+    x, angles = COMBINED_POSE[:3], COMBINED_POSE[3:]
+    if orientation == QUATERNION:
+        q = quaternion_from_angles(*angles, convention=ANGLES_ZYX)
+        inputs = {**{f"body[1].{n}": v for n, v in zip("xyz", x)}, **{f"body[1].q{i}": v for i, v in enumerate(q)}}
+        ours = ms.fmu_statics(fmu_file, DECK, inputs=inputs, bodyOrientation=QUATERNION)
+    else:
+        ours = ms.fmu_statics(fmu_file, DECK, COMBINED_POSE, bodyOrientation=ANGLES_ZYX)
+    _assert_matches_moorpy(ours, ref)
+    moordyn = ms.fmu_statics(fmu_file, DECK, COMBINED_POSE)
+    assert ms.stiffness_difference(moordyn["stiffness"], ref["stiffness"]) > 1e-2
+    assert moordyn["fairlead"] != pytest.approx(ref["fairlead"], rel=5e-3)
+
+
+def _turning(t):
+    """Body 1 moving in all six degrees of freedom, turning about all three axes at once: pose, rates."""
+    w = np.array([0.3, 0.2, 0.5, 0.4, 0.25, 0.1])
+    amplitude = np.array([3.0, 2.0, 1.0, 0.05, 0.06, 0.15])
+    return amplitude * np.sin(w * t), amplitude * w * np.cos(w * t)
+
+
+def _turning_run(make_cable, orientation, tolerance, scale=1.0, steps=50, h=0.2, logging_on=False):
+    """Line tensions and body 1's load over `steps` steps of _turning, its orientation given as the angles
+    of R = Rx Ry Rz (bodyOrientation 0) or their quaternion times scale (1)."""
+    c = make_cable(parameters=ms.fmu_parameters(DECK, bodyOrientation=orientation, tensionTolerance=tolerance,
+                                                positionTolerance=tolerance), logging_on=logging_on)
+
+    def inputs(t):
+        q, v = _turning(t)
+        d = {f"body[1].{n}": x for n, x in zip(ms.POSE_NAMES[:3] + ("vx", "vy", "vz", "wx", "wy", "wz"),
+                                                [*q[:3], *v])}
+        if orientation == QUATERNION:
+            d.update({f"body[1].q{i}": scale * x for i, x in enumerate(quaternion_from_angles(*q[3:]))})
+        else:
+            d.update({f"body[1].{n}": x for n, x in zip(ms.POSE_NAMES[3:], q[3:])})
+        return d
+
+    names = [f"line[{k}].fairleadTension" for k in (1, 2, 3)] + BODY_LOAD
+    c.initialize(inputs=inputs(0.0))
+    rows = [c.get_reals(names)]
+    for k in range(steps):
+        c.set(inputs(k * h))
+        c.do_step(h, k * h)
+        rows.append(c.get_reals(names))
+    return np.array(rows), c
+
+
+def test_a_pose_as_angles_and_as_its_quaternion_gives_the_same_loads(make_cable):
+    """Body 1 turning about all three axes for 10 s, its orientation given as MoorDyn's angles
+    (bodyOrientation 0) and as their quaternion (1): the two rotation matrices differ by round-off (1e-16),
+    so the static start and the first step agree to round-off; from there the lines' integrators choose
+    their steps on outputs that differ by round-off, and the runs differ by what their error control
+    leaves: measured 1.1e-4, 2.8e-6 and 5.2e-8 of each output's largest value at tolerances 1e-3, 1e-5
+    and 1e-7. Bound at 1e-7: 10 times the tolerance."""
+    tolerance = 1e-7
+    angles, _ = _turning_run(make_cable, ANGLES_XYZ, tolerance)
+    quaternion, _ = _turning_run(make_cable, QUATERNION, tolerance)
+    scale = np.abs(angles).max(axis=0)
+    assert np.all(scale > 1e4)
+    assert np.max(np.abs(quaternion[:2] - angles[:2]) / scale) < 1e-12
+    assert np.max(np.abs(quaternion - angles) / scale) < 10.0 * tolerance
+
+
+def test_a_quaternion_off_unit_norm_is_normalized_or_refused(make_cable):
+    """bodyOrientation 1: a quaternion 0.5 % too long is normalized (the static start the same to round-off,
+    reported once); one 2 % too long is refused with its norm, as is one of zeros."""
+    unit, _ = _turning_run(make_cable, QUATERNION, 1e-3, steps=3)
+    longer, c = _turning_run(make_cable, QUATERNION, 1e-3, scale=1.005, steps=3, logging_on=True)
+    assert np.max(np.abs(longer[0] - unit[0]) / np.abs(unit[0]).max()) < 1e-12
+    reports = [m for _, _, m in c.messages if "normalized" in m]
+    assert len(reports) == 1 and "body[1].q0/q1/q2/q3 has norm 1.005" in reports[0], reports
+    for scale in (1.02, 0.0):
+        with pytest.raises(FMICallException) as err:
+            _turning_run(make_cable, QUATERNION, 1e-3, scale=scale, steps=1, logging_on=True)
+        assert err.value.status == fmi2Error
+
+
+def test_a_refused_quaternion_names_the_body_and_its_norm(make_cable):
+    c = make_cable(parameters=ms.fmu_parameters(DECK, bodyOrientation=QUATERNION), logging_on=True)
+    with pytest.raises(FMICallException):
+        c.initialize(inputs={"body[1].q0": 0.0, "body[1].q1": 0.0, "body[1].q2": 0.0, "body[1].q3": 0.9})
+    log = "\n".join(m for s, _, m in c.messages if s == "ERROR")
+    assert "body[1].q0/q1/q2/q3 = (0, 0, 0, 0.9) has norm 0.9: not a unit quaternion" in log, log
 
 
 def test_a_third_of_a_turn_in_yaw_permutes_the_three_lines(make_cable):
@@ -190,18 +290,33 @@ BODY_LOAD = [f"body[1].force.{a}" for a in "xyz"] + [f"body[1].moment.{a}" for a
 BODY_INPUTS = [f"body[1].{n}" for n in ms.POSE_NAMES + ("vx", "vy", "vz", "wx", "wy", "wz")]
 
 
-class Drift:
-    """Body 1 at an offset, pitched pose, at rest (rates 0) or drifting slowly in all six degrees of freedom."""
+def body_inputs(orientation: int) -> list:
+    """Body 1's inputs as bodyOrientation reads them: x, y, z, its orientation (roll, pitch, yaw or q0..q3),
+    vx, vy, vz, wx, wy, wz."""
+    if orientation != QUATERNION:
+        return BODY_INPUTS
+    return BODY_INPUTS[:3] + [f"body[1].q{i}" for i in range(4)] + BODY_INPUTS[6:]
 
-    def __init__(self, moving: bool, accelerating: bool = False):
-        self.q0 = np.array([4.0, 0.0, -1.0, 0.0, 0.03, 0.0])
+
+class Drift:
+    """Body 1 at an offset, pitched pose, at rest (rates 0) or drifting slowly in all six degrees of freedom;
+    with an orientation (bodyOrientation) other than 0 at a pose turned about all three axes, its angles
+    passed as that orientation's inputs (1: the quaternion of R = Rx Ry Rz of them)."""
+
+    def __init__(self, moving: bool, accelerating: bool = False, orientation: int = 0):
+        turned = [0.02, 0.03, 0.05] if orientation else [0.0, 0.03, 0.0]
+        self.q0 = np.array([4.0, 0.0, -1.0, *turned])
         self.v0 = np.array([0.05, 0.02, 0.01, 0.002, 0.003, 0.001]) if moving else np.zeros(6)
         self.a = np.array([0.01, -0.005, 0.002, 0.0005, -0.0004, 0.0002]) if accelerating else np.zeros(6)
         self.accelerating = accelerating
+        self.orientation = orientation
+        self.names = body_inputs(orientation)
 
     def inputs(self, t):
         v = self.v0 + self.a * t
-        return dict(zip(BODY_INPUTS, [*(self.q0 + self.v0 * t + 0.5 * self.a * t * t), *v]))
+        q = self.q0 + self.v0 * t + 0.5 * self.a * t * t
+        turn = quaternion_from_angles(*q[3:]) if self.orientation == QUATERNION else q[3:]
+        return dict(zip(self.names, [*q[:3], *turn, *v]))
 
     def step(self, cable, h, t, change=None):
         """Sets the inputs at t (one changed by the given amount) and, when accelerating, their input
@@ -215,9 +330,10 @@ class Drift:
         cable.do_step(h, t)
 
 
-@pytest.mark.parametrize("h,moving,accelerating", [(0.5, False, False), (0.1, False, False), (0.1, True, False),
-                                                   (0.1, True, True)])
-def test_body_load_derivatives_equal_finite_differences_of_the_step(make_cable, h, moving, accelerating):
+@pytest.mark.parametrize("h,moving,accelerating,orientation", [
+    (0.5, False, False, ANGLES_XYZ), (0.1, False, False, ANGLES_XYZ), (0.1, True, False, ANGLES_XYZ),
+    (0.1, True, True, ANGLES_XYZ), (0.1, True, True, QUATERNION), (0.1, True, True, ANGLES_ZYX)])
+def test_body_load_derivatives_equal_finite_differences_of_the_step(make_cable, h, moving, accelerating, orientation):
     """fmi2GetDirectionalDerivative of body[1].force/moment with respect to body[1].* over the next step,
     against central differences of fmi2DoStep with the state rolled back. The perturbations (1 mm,
     1e-5 rad, 1 mm/s, 1e-5 rad/s) keep the lines linear; at tensionTolerance 1e-8 the integration noise
@@ -227,9 +343,12 @@ def test_body_load_derivatives_equal_finite_differences_of_the_step(make_cable, 
     slow drift adds the angular-velocity terms (measured 0.19 %). A platform moving fast within the
     step is linearized about the step's start (docs/systems_mooring.md: 0.66 % at 0.1 s, 4.5 % at 0.5 s in
     the surge-heave-pitch motion). With the body's accelerations passed as input derivatives the fairleads'
-    accelerations move with the angles and the angular velocity too."""
-    c = make_cable(parameters={**ms.fmu_parameters(DECK), "tensionTolerance": 1e-8})
-    body = Drift(moving, accelerating)
+    accelerations move with the angles and the angular velocity too. With the orientation as a quaternion
+    (bodyOrientation 1, perturbed by 1e-5 each, the normalization's radial direction included) or as the
+    angles of R = Rz Ry Rx (2) the derivatives are with respect to those inputs, at a pose turned about all
+    three axes; the orientation inputs not read have none."""
+    c = make_cable(parameters={**ms.fmu_parameters(DECK), "tensionTolerance": 1e-8, "bodyOrientation": orientation})
+    body = Drift(moving, accelerating, orientation)
     c.initialize(inputs=body.inputs(0.0))
     t = 0.0
     for _ in range(4):
@@ -237,10 +356,13 @@ def test_body_load_derivatives_equal_finite_differences_of_the_step(make_cable, 
         t += h
     vo = [c.variables[n].valueReference for n in BODY_LOAD]
     D = np.column_stack([c.slave.getDirectionalDerivative(vo, [c.variables[n].valueReference], [1.0])
-                         for n in BODY_INPUTS])
+                         for n in body.names])
+    unread = [n for n in body_inputs(QUATERNION) + BODY_INPUTS if n not in body.names]
+    assert all(c.slave.getDirectionalDerivative(vo, [c.variables[n].valueReference], [1.0]) == [0.0] * 6
+               for n in unread)
     state = c.get_state()
     columns = []
-    for name in BODY_INPUTS:
+    for name in body.names:
         eps = 1e-3 if name.split(".")[1] in ("x", "y", "z", "vx", "vy", "vz") else 1e-5
         values = []
         for sign in (1.0, -1.0):
@@ -250,8 +372,9 @@ def test_body_load_derivatives_equal_finite_differences_of_the_step(make_cable, 
         columns.append((values[0] - values[1]) / (2.0 * eps))
     c.set_state(state, t)
     FD = np.column_stack(columns)
+    turns = len(body.names) - 9  # the orientation inputs: 3 angles or 4 quaternion components
     for rows in (slice(0, 3), slice(3, 6)):
-        for cols in (slice(0, 3), slice(3, 6), slice(6, 9), slice(9, 12)):
+        for cols in (slice(0, 3), slice(3, 3 + turns), slice(3 + turns, 6 + turns), slice(6 + turns, 9 + turns)):
             scale = np.abs(FD[rows, cols]).max()
             assert np.abs(D[rows, cols] - FD[rows, cols]).max() < 5e-3 * scale, (rows, cols, D[rows, cols],
                                                                                   FD[rows, cols])
@@ -267,6 +390,20 @@ def test_the_moored_platform_scene_runs_and_records_the_lines(fmu_file):
     assert "line[4].fairleadTension" not in r.columns  # three lines in the deck
     assert r["line[2].fairleadTension"][0] == pytest.approx(ms.moorpy_statics(DECK)["fairlead"][1], rel=5e-3)
     assert r["body[1].force.z"][0] < -1.8e6 and abs(r["body[1].force.x"][-1]) > 1e3  # the surge has begun
+
+
+def test_the_moored_platform_scene_passes_a_quaternion_with_body_orientation_1(fmu_file):
+    """`--set bodyOrientation=1`: the scene's angles go to the FMU as their quaternion, the same platform
+    motion: every recorded column within 10 times the integrators' tolerance (1e-7) of the angles' run
+    (the pitch of 3 degrees left out would change the moments by far more)."""
+    from ucable.scene import run_scene
+
+    tight = {"duration": 5.0, "tensionTolerance": 1e-7, "positionTolerance": 1e-7}
+    angles = run_scene("oc4_platform", overrides=tight, fmu=fmu_file)
+    quaternion = run_scene("oc4_platform", overrides={**tight, "bodyOrientation": 1}, fmu=fmu_file)
+    for name in ["body[1].moment.y", "body[1].force.x"] + [f"line[{k}].fairleadTension" for k in (1, 2, 3)]:
+        scale = np.abs(angles[name]).max()
+        assert scale > 1e3 and np.abs(quaternion[name] - angles[name]).max() < 1e-6 * scale, name
 
 
 def test_the_vessel_rao_fmu_drives_the_platform_under_fmpy_and_libcosim(fmu_file):
