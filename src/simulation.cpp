@@ -412,7 +412,7 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
     const char* farName = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor.x/y/z" : "end.x/y/z";
     if (model_.far_end_prescribed()) {
         const Vec3 d = farPoint - tow_.position;
-        const double reach = kReach * model_.line().length;
+        const double reach = 1.1 * model_.line().length;
         if (d.norm() > reach) {
             // Name the coordinate that is farthest off, with the range the others leave it.
             int k = 0;
@@ -422,8 +422,8 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
             const char* prefix = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor" : "end";
             std::snprintf(buffer, sizeof buffer,
                           "%s.%c = %.17g is outside [%.6g, %.6g]: the far end must lie within the reach of the "
-                          "stretched cable, 2 x length = %.6g m from the tow point (it is %.6g m away; more than "
-                          "100 %% strain, beyond the elastic range of any rope or spring)",
+                          "stretched cable, 1.1 x length = %.6g m from the tow point (it is %.6g m away; more than "
+                          "10 %% strain, which no cable survives)",
                           prefix, "xyz"[k], farPoint[k], tow_.position[k] - half, tow_.position[k] + half, reach,
                           d.norm());
             error = buffer;

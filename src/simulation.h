@@ -130,10 +130,6 @@ private:
     bool adviseMesh_ = true;  // off in the trial runs of mesh_advice
     // Largest relative difference of the end tensions from the exact static profile [-].
     static constexpr double kStaticsCheck = 0.01;
-    // The farthest a prescribed far end may be from the tow point, in line lengths: a line stretched
-    // further is a unit or placement error (chain breaks near 1 % strain, fibre ropes near 20 %, a
-    // spring line of a test deck may stretch by tens of percent).
-    static constexpr double kReach = 2.0;
     // Largest relative difference between the anchor force and the axial tension at the anchor of
     // a line without bending stiffness: the acceptance's 0.2 % (both measure the anchor tension).
     static constexpr double kAnchorCheck = 2e-3;

@@ -266,7 +266,7 @@ REASONS = [
     (r"Cl = ", "vortex-induced vibration (`Cl`)"),
     (r"WaveKin = (\d+)", "`WaveKin` {0}"),
     (r"Currents = (\d+)", "`Currents` {0}"),
-    (r"outside \[.*reach of the stretched cable", "a line stretched beyond 100 % at the deck's positions"),
+    (r"outside \[.*reach of the stretched cable", "a line stretched beyond 10 % at the deck's positions"),
     (r"no static equilibrium", "no static equilibrium (a line longer than the way down and across)"),
     (r"static equilibrium not found", "static equilibrium not found"),
     (r"pinned", "a pinned body"),

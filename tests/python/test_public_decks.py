@@ -101,15 +101,12 @@ def test_a_chain_between_two_fixed_points_on_a_buoy_balances_its_loads(fmu_file)
         c.free()
 
 
-@pytest.mark.parametrize("name, lines", [("md_tests_Mooring_tripod.txt", 3),
-                                         ("md_tests_Mooring_body_tests_bodyDrag.txt", 1)])
-def test_a_refused_deck_names_the_element_count_on_which_it_starts(fmu_file, name, lines):
+def test_a_refused_deck_names_the_element_count_on_which_it_starts(fmu_file):
     """MoorDyn's tripod: a short, very stiff float (0.63 m, EI 9.3e7 N m2) on a tether from the node
-    where three bridles meet; its bodyDrag: a free body on one element of a soft spring (EA 500 N)
-    stretched 11 %. At the deck's NumSegs a line's static solution is not found; the refusal tries
-    other element counts per deck line and names one that starts, and set as named the deck loads,
-    with every line in tension."""
-    path = pd.PUBLIC.parent / "refused" / name
+    where three bridles meet. At the deck's NumSegs its line's static solution is not found; the
+    refusal tries other element counts per deck line and names one that starts, and set as named the
+    deck loads, with every line in tension."""
+    path = pd.PUBLIC.parent / "refused" / "md_tests_Mooring_tripod.txt"
     refused = CableFMU(fmu_file, parameters={"lineFile": str(path)}, logging_on=True)
     try:
         with pytest.raises(Exception):
@@ -121,5 +118,5 @@ def test_a_refused_deck_names_the_element_count_on_which_it_starts(fmu_file, nam
     assert named, errors
     with CableFMU(fmu_file, parameters={"lineFile": str(path), "lineFileElements": int(named.group(1))}) as c:
         c.initialize()
-        tensions = [c.get(f"line[{k}].fairleadTension") for k in range(1, lines + 1)]
+        tensions = [c.get(f"line[{k}].fairleadTension") for k in (1, 2, 3)]
     assert all(t > 0.0 and math.isfinite(t) for t in tensions), tensions
