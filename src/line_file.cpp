@@ -622,6 +622,17 @@ struct Point {
 };
 
 // The attachment word of a point: letters (case-insensitive), maybe followed by a number (Body2).
+// The row's first field, its ID: 1, 2, 3, ... in the order of the section's rows (`what`: "point",
+// "line", "body"). False (the error set) where it is not.
+bool read_id(Fields& f, const char* what, int expectedId, int& id) {
+    id = f.integer(0, "ID", 1, 1 << 30, "must be positive");
+    if (f.ok() && id != expectedId) {
+        return f.fail(std::string(what) + " ID " + std::to_string(id) + ": IDs must be 1, 2, 3, ... in order (expected " +
+                      std::to_string(expectedId) + ")");
+    }
+    return f.ok();
+}
+
 bool read_point_kind(Fields& f, std::string_view word, bool bodies, PointKind& kind, int& body) {
     const std::string u = upper(word);
     size_t letters = 0;
@@ -656,12 +667,8 @@ bool read_point(const Row& row, int expectedId, bool bodies, Point& p, std::vect
         return f.fail("a point has 9 fields (ID Attachment X Y Z Mass Volume CdA CA), or 12 with FX FY FZ after "
                       "Volume; this row has " + std::to_string(n));
     }
-    p.id = f.integer(0, "ID", 1, 1 << 30, "must be positive");
-    if (f.ok() && p.id != expectedId) {
-        return f.fail("point ID " + std::to_string(p.id) + ": IDs must be 1, 2, 3, ... in order (expected " +
-                      std::to_string(expectedId) + ")");
-    }
-    if (!f.ok() || !read_point_kind(f, row.tokens[1], bodies, p.kind, p.body)) return false;
+    if (!read_id(f, "point", expectedId, p.id) || !read_point_kind(f, row.tokens[1], bodies, p.kind, p.body))
+        return false;
     static const char* const kAxes[] = {"X", "Y", "Z"};
     for (int k = 0; k < 3; ++k) p.position[k] = f.number(2 + k, kAxes[k]);
     p.mass = f.non_negative(5, "Mass");
@@ -723,12 +730,7 @@ bool read_line(const Row& row, int expectedId, const std::vector<LineType>& type
         return f.fail("a line has the fields ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs; this row has " +
                       std::to_string(row.tokens.size()));
     }
-    l.id = f.integer(0, "ID", 1, 1 << 30, "must be positive");
-    if (f.ok() && l.id != expectedId) {
-        return f.fail("line ID " + std::to_string(l.id) + ": IDs must be 1, 2, 3, ... in order (expected " +
-                      std::to_string(expectedId) + ")");
-    }
-    if (!f.ok()) return false;
+    if (!read_id(f, "line", expectedId, l.id)) return false;
     l.type = -1;
     for (size_t k = 0; k < types.size(); ++k) {
         if (types[k].name == row.tokens[1]) l.type = static_cast<int>(k);
@@ -1242,12 +1244,7 @@ bool read_body(const Row& row, int expectedId, DeckBody& b, std::vector<std::str
         return f.fail("a body has the fields ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*; this row has " +
                       std::to_string(row.tokens.size()));
     }
-    b.id = f.integer(0, "ID", 1, 1 << 30, "must be positive");
-    if (f.ok() && b.id != expectedId) {
-        return f.fail("body ID " + std::to_string(b.id) + ": IDs must be 1, 2, 3, ... in order (expected " +
-                      std::to_string(expectedId) + ")");
-    }
-    if (!f.ok()) return false;
+    if (!read_id(f, "body", expectedId, b.id)) return false;
     const std::string u = upper(row.tokens[1]);
     std::string head;
     for (char c : u) {

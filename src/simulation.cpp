@@ -525,6 +525,37 @@ bool CableSimulation::verify_statics(std::string& error) const {
 std::string CableSimulation::mesh_advice(double t0, const UCInputs& in) const {
     const UCParams& p = model_.params();
     const bool sections = p.nSections > 1;
+    // The same line with each section's elements as `count` gives them; true with the advice where it
+    // starts. Out of the parameters' range: `beyond`.
+    auto trial_starts = [&](auto&& count, const std::string& named, std::string& advice, bool& beyond) {
+        UCParams q = p;
+        if (sections) {
+            for (int k = 0; k < p.nSections; ++k) q.section[k].nElements = count(p.section[k].nElements);
+        } else {
+            q.nElements = count(p.nElements);
+        }
+        beyond = !check_params(q).empty();
+        if (beyond) return false;
+        CableSimulation trial(q);
+        trial.adviseMesh_ = false;
+        std::string ignored;
+        if (!trial.initialize(t0, in, ignored)) return false;
+        std::string counts = named;
+        if (counts.empty() && sections) {
+            for (int k = 0; k < p.nSections; ++k)
+                counts += (k ? ", " : "") + std::string("section[") + std::to_string(k + 1) +
+                          "].nElements = " + std::to_string(q.section[k].nElements);
+        } else if (counts.empty()) {
+            counts = "nElements = " + std::to_string(q.nElements);
+        }
+        char text[300];
+        std::snprintf(text, sizeof text, "; with %s the same line starts (tow tension %.6g N, far end %.6g N)",
+                      counts.c_str(), trial.outputs_.towTension, trial.outputs_.endTension);
+        advice = text;
+        return true;
+    };
+    std::string advice;
+    bool beyond = false;
     if (p.lineFile[0] != '\0') {
         // A deck's line: lineFileElements gives every deck line (section) the same count. More
         // elements resolve a sharp touchdown; fewer can settle a short, very stiff line whose
@@ -534,49 +565,15 @@ std::string CableSimulation::mesh_advice(double t0, const UCInputs& in) const {
             for (int k = 0; k < p.nSections; ++k) n = std::max(n, p.section[k].nElements);
         for (int count : {2 * n, 4 * n, 8 * n, 16 * n, n / 2, 1}) {
             if (count < 1 || count == n) continue;
-            UCParams q = p;
-            if (sections) {
-                for (int k = 0; k < p.nSections; ++k) q.section[k].nElements = count;
-            } else {
-                q.nElements = count;
-            }
-            if (!check_params(q).empty()) continue;
-            CableSimulation trial(q);
-            trial.adviseMesh_ = false;
-            std::string ignored;
-            if (!trial.initialize(t0, in, ignored)) continue;
-            char text[300];
-            std::snprintf(text, sizeof text,
-                          "; with lineFileElements = %d the same line starts (tow tension %.6g N, far end %.6g N)",
-                          count, trial.outputs_.towTension, trial.outputs_.endTension);
-            return text;
+            if (trial_starts([count](int) { return count; }, "lineFileElements = " + std::to_string(count), advice,
+                             beyond))
+                return advice;
         }
         return "; neither more nor fewer elements (lineFileElements) resolve the line";
     }
     for (int factor : {2, 4}) {
-        UCParams q = p;
-        if (sections) {
-            for (int k = 0; k < p.nSections; ++k) q.section[k].nElements *= factor;
-        } else {
-            q.nElements *= factor;
-        }
-        if (!check_params(q).empty()) break;  // beyond the elements a line may have
-        CableSimulation trial(q);
-        trial.adviseMesh_ = false;
-        std::string ignored;
-        if (!trial.initialize(t0, in, ignored)) continue;
-        std::string counts;
-        if (sections) {
-            for (int k = 0; k < p.nSections; ++k)
-                counts += (k ? ", " : "") + std::string("section[") + std::to_string(k + 1) +
-                          "].nElements = " + std::to_string(q.section[k].nElements);
-        } else {
-            counts = "nElements = " + std::to_string(q.nElements);
-        }
-        char text[300];
-        std::snprintf(text, sizeof text, "; with %s the same line starts (tow tension %.6g N, far end %.6g N)",
-                      counts.c_str(), trial.outputs_.towTension, trial.outputs_.endTension);
-        return text;
+        if (trial_starts([factor](int elements) { return factor * elements; }, "", advice, beyond)) return advice;
+        if (beyond) break;  // beyond the elements a line may have
     }
     return std::string("; neither twice nor four times the elements (") +
            (sections ? "section[k].nElements" : "nElements") +
