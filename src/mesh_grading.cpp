@@ -35,7 +35,7 @@ std::vector<int> element_counts(const std::vector<double>& weights, int total) {
 }  // namespace
 
 std::vector<double> graded_nodes(const CableModel& model, const LineProfile& profile, bool towOnTop,
-                                 bool alongLine) {
+                                 bool alongLine, const GradingWeights& weights) {
     const double L = model.line().length;
     auto turning = [&](double s) {  // from the tow point, whichever end the profile starts at
         return towOnTop ? profile.turning(s) : profile.turning(L) - profile.turning(L - s);
@@ -91,8 +91,8 @@ std::vector<double> graded_nodes(const CableModel& model, const LineProfile& pro
             previousLog = l;
             logT.push_back(stretched);
         }
-        const double angleScale = std::max(turned, kGradingAngle);
-        const double logScale = std::max(stretched / kGradingLogTensionWeight, kGradingLogTension);
+        const double angleScale = std::max(turned, kGradingAngle) / weights.angle;
+        const double logScale = std::max(stretched / weights.logTensionWeight, weights.logTension);
         std::vector<double> M(s.size());
         for (size_t i = 0; i < s.size(); ++i)
             M[i] = (s[i] - s0) / (s1 - s0) + theta[i] / angleScale + logT[i] / logScale;

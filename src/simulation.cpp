@@ -49,7 +49,7 @@ struct StateHeader {
     std::int32_t winchLimit;
     double winchMeshTop, winchLength, winchRate, winchTop0;
     // the mesh graded by the static profile for the tow point meshTow (meshGraded 1)
-    std::int32_t meshGraded, reserved;
+    std::int32_t meshGraded, meshGrading;  // meshGrading: which of kGradings
     double meshTow[3], meshFar[3];
     double proxyConstant[3], proxyAlong, proxyAcross;  // bottomEnd 4: the estimate (ProxyEstimate)
 };
@@ -315,7 +315,7 @@ bool CableSimulation::profile_guess(double* X) const {
 // Nodes graded by the static profile for an anchored line that rests on the seabed or carries
 // attachments (src/mesh_grading.h); the model is built again where its mesh changes. The profile is
 // kept (profile_) for the ends the model holds: the guess, the refusal and the check read it.
-void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, bool apply) {
+void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, bool apply, int grading) {
     ProfileState& ps = profile_;
     auto solve_for = [&](const Vec3& far) {
         ps.far = far;
@@ -330,12 +330,13 @@ void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, boo
         layout.anchorResting = ps.towOnTop && ps.profile.rests_at_bottom() && model_.params().bottomEnd == UC_BOTTOM_ANCHORED;
         const Vec3 resting(farPoint.x(), farPoint.y(), model_.resting_height());
         if (layout.anchorResting && std::abs(farPoint.z() - resting.z()) <= 0.5 * model_.line().diameter) solve_for(resting);
-        const int grading = model_.params().meshGrading;
-        if (ps.solved && grading != 0 && (ps.profile.grounded_length() > 0.0 || !model_.attachments().empty()))
-            layout.nodes = graded_nodes(model_, ps.profile, ps.towOnTop, grading == 2);
+        const int mode = model_.params().meshGrading;
+        if (ps.solved && mode != 0 && (ps.profile.grounded_length() > 0.0 || !model_.attachments().empty()))
+            layout.nodes = graded_nodes(model_, ps.profile, ps.towOnTop, mode == 2, kGradings[grading]);
     }
     meshTow_ = towPoint;
     meshFar_ = farPoint;
+    grading_ = grading;
     const bool graded = !layout.nodes.empty() || layout.anchorResting;
     if (graded != graded_ || !(layout == layout_)) {
         graded_ = graded;
@@ -630,76 +631,98 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     // An anchored line, or one whose far end is held at rest, starts from its static profile.
     profileApplies_ = p.bottomEnd == UC_BOTTOM_ANCHORED ||
                       (p.bottomEnd == UC_BOTTOM_EXTERNAL && end_.velocity.isZero(0.0));
-    grade_mesh(tow_.position, farPoint, profileApplies_);
-    if (p.bottomEnd == UC_BOTTOM_ANCHORED) farPoint = model_.anchor();  // on the seabed: where the line rests
-
-    const int n = model_.n_free();
-    const bool fromProfile = initial_guess(tow_.position, farPoint, q_);
-    {
-        // Twist reference frames from the initial guess (planar: no geometric twist).
-        std::vector<double> zero(n, 0.0);
-        model_.expand(q_.data(), zero.data(), zero.data(), loads_, t0, X_.data(), Xd_.data(), Xdd_.data());
-        twistRef_ = make_twist_reference(model_, X_.data());
-        lastBeta_ = 0.0;
-        if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
-            error = "torque and twist inputs must be finite numbers";
-            return false;
-        }
-        const UCParams& pp = model_.params();
-        loads_.torque = !pp.enableTorsion ? 0.0
-                        : pp.torqueMode == UC_TORQUE_PRESCRIBED ? in.torque
-                        : pp.torqueMode == UC_TORQUE_ROTATION   ? model_.torque_for_twist(in.twist)
-                                                                : 0.0;
-    }
-    std::vector<double> v(n, 0.0);
-    // A steady tow only when nothing holds the far end back: free end, internal body, or an
-    // external end moving with the tow point. Otherwise the equilibrium is at rest.
-    const bool steadyTow = p.bottomEnd == UC_BOTTOM_FREE || p.bottomEnd == UC_BOTTOM_TOWED_BODY ||
-                           ((p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy) && (end_.velocity - tow_.velocity).norm() <= 1e-12);
-    if (p.initMode == UC_INIT_EQUILIBRIUM && steadyTow) {
-        // Steady tow: every node moves with the tow point, tangents do not turn.
-        for (int g = 0; g < model_.n_global(); ++g) {
-            const int j = model_.free_index(g);
-            if (j >= 0 && g % 6 < 3) v[j] = tow_.velocity[g % 6];
-        }
-    }
-    if (p.initMode == UC_INIT_EQUILIBRIUM && !statics_applies(farPoint, error)) return false;
-    if (p.initMode == UC_INIT_EQUILIBRIUM && proxy) {
-        if (!proxy_statics(t0, v, fromProfile, error)) return false;
-    } else if (p.initMode == UC_INIT_EQUILIBRIUM) {
-        const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile);
-        if (!statics.converged) {
-            error = statics.message;
-            if (adviseMesh_) error += mesh_advice(t0, in);
-            return false;
-        }
-    }
-    if (!solve_consistent_acceleration(model_, *staticSolver_, loads_, t0, q_, v, a_)) {
-        error = "the mass matrix is singular: check massPerLength and the end conditions";
+    if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
+        error = "torque and twist inputs must be finite numbers";
         return false;
     }
-    for (int j = 0; j < n; ++j) {
-        y_[2 * (j + off_)] = q_[j];
-        y_[2 * (j + off_) + 1] = v[j];
-        yp_[2 * (j + off_)] = v[j];
-        yp_[2 * (j + off_) + 1] = a_[j];
-    }
-    if (off_) {
-        y_[0] = model_.top_length();
-        winchTension_ = in.winchTension;
-        winchTopAtStep_ = y_[0];
-    }
-    time_ = t0;
-    lastStepSize_ = 0.0;
-    statsBase_ = IntegratorStats();
-    integratorStarted_ = false;
-    restartPending_ = true;
-    compressionWarned_ = false;
-    rainflow_.reset();
-    update_outputs();
-    if (p.initMode == UC_INIT_EQUILIBRIUM && !verify_statics(error)) {
-        if (adviseMesh_) error += mesh_advice(t0, in);
-        return false;
+    const Vec3 givenFar = farPoint;
+    // The line at rest on the mesh the grading-th of kGradings places (where the mesh is graded):
+    // false with the reason, `retry` where the static solve or its check failed.
+    bool retry = false;
+    auto start = [&](int grading) {
+        retry = false;
+        farPoint = givenFar;
+        grade_mesh(tow_.position, farPoint, profileApplies_, grading);
+        if (p.bottomEnd == UC_BOTTOM_ANCHORED) farPoint = model_.anchor();  // on the seabed: where the line rests
+        const int n = model_.n_free();
+        const bool fromProfile = initial_guess(tow_.position, farPoint, q_);
+        {
+            // Twist reference frames from the initial guess (planar: no geometric twist).
+            std::vector<double> zero(n, 0.0);
+            model_.expand(q_.data(), zero.data(), zero.data(), loads_, t0, X_.data(), Xd_.data(), Xdd_.data());
+            twistRef_ = make_twist_reference(model_, X_.data());
+            lastBeta_ = 0.0;
+            const UCParams& pp = model_.params();
+            loads_.torque = !pp.enableTorsion ? 0.0
+                            : pp.torqueMode == UC_TORQUE_PRESCRIBED ? in.torque
+                            : pp.torqueMode == UC_TORQUE_ROTATION   ? model_.torque_for_twist(in.twist)
+                                                                    : 0.0;
+        }
+        std::vector<double> v(n, 0.0);
+        // A steady tow only when nothing holds the far end back: free end, internal body, or an
+        // external end moving with the tow point. Otherwise the equilibrium is at rest.
+        const bool steadyTow = p.bottomEnd == UC_BOTTOM_FREE || p.bottomEnd == UC_BOTTOM_TOWED_BODY ||
+                               ((p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy) && (end_.velocity - tow_.velocity).norm() <= 1e-12);
+        if (p.initMode == UC_INIT_EQUILIBRIUM && steadyTow) {
+            // Steady tow: every node moves with the tow point, tangents do not turn.
+            for (int g = 0; g < model_.n_global(); ++g) {
+                const int j = model_.free_index(g);
+                if (j >= 0 && g % 6 < 3) v[j] = tow_.velocity[g % 6];
+            }
+        }
+        if (p.initMode == UC_INIT_EQUILIBRIUM && !statics_applies(farPoint, error)) return false;
+        if (p.initMode == UC_INIT_EQUILIBRIUM && proxy) {
+            if (!proxy_statics(t0, v, fromProfile, error)) return false;
+        } else if (p.initMode == UC_INIT_EQUILIBRIUM) {
+            const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile);
+            if (!statics.converged) {
+                error = statics.message;
+                retry = true;
+                return false;
+            }
+        }
+        if (!solve_consistent_acceleration(model_, *staticSolver_, loads_, t0, q_, v, a_)) {
+            error = "the mass matrix is singular: check massPerLength and the end conditions";
+            return false;
+        }
+        for (int j = 0; j < n; ++j) {
+            y_[2 * (j + off_)] = q_[j];
+            y_[2 * (j + off_) + 1] = v[j];
+            yp_[2 * (j + off_)] = v[j];
+            yp_[2 * (j + off_) + 1] = a_[j];
+        }
+        if (off_) {
+            y_[0] = model_.top_length();
+            winchTension_ = in.winchTension;
+            winchTopAtStep_ = y_[0];
+        }
+        time_ = t0;
+        lastStepSize_ = 0.0;
+        statsBase_ = IntegratorStats();
+        integratorStarted_ = false;
+        restartPending_ = true;
+        compressionWarned_ = false;
+        rainflow_.reset();
+        update_outputs();
+        if (p.initMode == UC_INIT_EQUILIBRIUM && !verify_statics(error)) {
+            retry = true;
+            return false;
+        }
+        return true;
+    };
+    // A graded mesh whose equilibrium fails is graded again by the other gradings, with the same
+    // elements (docs/model.md, "Initial equilibrium"); the refusal gives the first grading's reason.
+    std::string firstError;
+    for (int grading = 0; !start(grading); ++grading) {
+        if (grading == 0) firstError = error;
+        if (!retry || !graded_ || layout_.nodes.empty() || grading + 1 == kGradingCount) {
+            if (grading > 0) {
+                error = firstError;
+                grade_mesh(tow_.position, givenFar, profileApplies_, 0);
+            }
+            if (retry && adviseMesh_) error += mesh_advice(t0, in);
+            return false;
+        }
     }
     if (off_) {  // consistent: the winch runs at the rate of the initial tension
         double R[12];
@@ -1474,6 +1497,7 @@ void CableSimulation::save_state(void* buffer) {
     header.winchRate = winchRate_;
     header.winchTop0 = winchTop0_;
     header.meshGraded = graded_ ? 1 : 0;
+    header.meshGrading = grading_;
     header.proxyAlong = loads_.proxy.along;
     header.proxyAcross = loads_.proxy.across;
     for (int k = 0; k < 3; ++k) {
@@ -1514,8 +1538,10 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
         const Vec3 tow(header.meshTow[0], header.meshTow[1], header.meshTow[2]);
         const Vec3 far(header.meshFar[0], header.meshFar[1], header.meshFar[2]);
         if (header.magic == kStateMagic && header.version == kStateVersion && tow.allFinite() && far.allFinite() &&
-            (header.meshGraded != (graded_ ? 1 : 0) || tow != meshTow_ || far != meshFar_))
-            grade_mesh(tow, far, header.meshGraded == 1);
+            header.meshGrading >= 0 && header.meshGrading < kGradingCount &&
+            (header.meshGraded != (graded_ ? 1 : 0) || tow != meshTow_ || far != meshFar_ ||
+             header.meshGrading != grading_))
+            grade_mesh(tow, far, header.meshGraded == 1, header.meshGrading);
     }
     if (size != state_size()) {
         error = "saved state has the wrong size for this cable (different nElements or end conditions)";

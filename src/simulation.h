@@ -118,7 +118,8 @@ private:
     bool profile_guess(double* X) const;  // from profile_, false where it was not solved
     // The mesh graded by the static profile where `apply` and the profile does (else each section's
     // own), the model built again where that changes it.
-    void grade_mesh(const Vec3& towPoint, const Vec3& farPoint, bool apply);
+    // `grading`: which of kGradings (src/mesh_grading.h) places the nodes.
+    void grade_mesh(const Vec3& towPoint, const Vec3& farPoint, bool apply, int grading = 0);
     // Before the static solver: false, with the reason, where the line has no static equilibrium.
     bool statics_applies(const Vec3& farPoint, std::string& error) const;
     // After it, on the outputs: false, with the reason, where its answer is not the line's state.
@@ -219,6 +220,7 @@ private:
     // the mesh graded by the static profile at initialization (empty: each section's own), and the
     // tow point it was graded for (a restored state's mesh is graded again from it)
     bool graded_ = false;
+    int grading_ = 0;  // which of kGradings graded it (the first whose equilibrium passed the check)
     StaticLayout layout_;
     Vec3 meshTow_ = Vec3::Zero(), meshFar_ = Vec3::Zero();
     bool profileApplies_ = false;  // an anchored line, or a far end held at rest
