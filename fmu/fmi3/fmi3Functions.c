@@ -218,10 +218,18 @@ static size_t elements(fmi3ValueReference vr) {
     return elements_and_stride(vr, &stride);
 }
 
-static fmi3Status count_mismatch(UCInstance* inst, const char* function, size_t nValueReferences, size_t nValues) {
+/* `expected`: the elements of the value references, all together. */
+static fmi3Status count_mismatch(UCInstance* inst, const char* function, size_t nValueReferences, size_t expected,
+                                 size_t nValues) {
     uc_log_status(&inst->log, fmi2Error, "%s: %zu values for %zu value references of %zu elements in all", function,
-                  nValues, nValueReferences, nValues);
+                  nValues, nValueReferences, expected);
     return fmi3Error;
+}
+
+static size_t total_elements(const fmi3ValueReference vr[], size_t nvr) {
+    size_t total = 0;
+    for (size_t k = 0; k < nvr; ++k) total += elements(vr[k]);
+    return total;
 }
 
 /* Float64 get and set, variable by variable: an array is its elements' FMI 2.0 scalars (the stations'
@@ -244,7 +252,7 @@ static fmi3Status access_float64(fmi3Instance instance, const fmi3ValueReference
     for (size_t k = 0; k < nvr; ++k) {
         fmi2ValueReference stride;
         const size_t n = elements_and_stride(vr[k], &stride);
-        if (at + n > nValues) return count_mismatch(inst, function, nvr, nValues);
+        if (at + n > nValues) return count_mismatch(inst, function, nvr, total_elements(vr, nvr), nValues);
         fmi2Status status;
         if (vr[k] == UC_FMI3_TIME_VR && !set) {
             values[at] = inst->time;
@@ -258,7 +266,7 @@ static fmi3Status access_float64(fmi3Instance instance, const fmi3ValueReference
         if (worst > fmi2Warning) return (fmi3Status)worst;
         at += n;
     }
-    if (at != nValues) return count_mismatch(inst, function, nvr, nValues);
+    if (at != nValues) return count_mismatch(inst, function, nvr, at, nValues);
     return (fmi3Status)worst;
 }
 
@@ -276,7 +284,7 @@ FMI3_EXPORT fmi3Status fmi3SetFloat64(fmi3Instance instance, const fmi3ValueRefe
 /* Scalar-only types: one value per value reference. */
 static int scalar_counts(fmi3Instance instance, size_t nvr, size_t nValues, const char* function) {
     if (inner(instance) != NULL && nvr != nValues) {
-        count_mismatch(inner(instance), function, nvr, nValues);
+        count_mismatch(inner(instance), function, nvr, nvr, nValues);
         return 0;
     }
     return inner(instance) != NULL;

@@ -180,6 +180,20 @@ def test_fmi3_messages_arrive_as_plain_text(fmi3_file):
     shutil.rmtree(cable.dir, ignore_errors=True)
 
 
+@pytest.mark.parametrize("n_values", [NUM_STATIONS - 1, NUM_STATIONS + 1])
+def test_fmi3_an_array_read_into_the_wrong_count_is_refused_with_both_counts(fmi3_file, n_values):
+    """One array of NUM_STATIONS elements read into too few or too many values: fmi3Error, and the
+    message gives the values passed and the elements asked for."""
+    messages = []
+    cable = Cable(fmi3_file, True, messages)
+    cable.initialize(tow_inputs(hopland_accelerate()[0], 0.0))
+    with pytest.raises(Exception):
+        cable.fmu.getFloat64([cable.vr["tension"]], nValues=n_values)
+    text = "\n".join(messages)
+    assert f"{n_values} values for 1 value references of {NUM_STATIONS} elements in all" in text, text
+    cable.close()
+
+
 # A mooring system: FMI 2.0 family name (k the index, c the component) -> the FMI 3.0 arrays of it,
 # each with its number of elements (k outer).
 SYSTEM_OUTPUTS = [("line[{k}].fairleadTension", "", MAX_LINES), ("line[{k}].anchorTension", "", MAX_LINES),
