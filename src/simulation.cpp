@@ -330,12 +330,8 @@ void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, boo
         layout.anchorResting = ps.towOnTop && ps.profile.rests_at_bottom() && model_.params().bottomEnd == UC_BOTTOM_ANCHORED;
         const Vec3 resting(farPoint.x(), farPoint.y(), model_.resting_height());
         if (layout.anchorResting && std::abs(farPoint.z() - resting.z()) <= 0.5 * model_.line().diameter) solve_for(resting);
-        // Only without bending stiffness: there the profile is the line's statics, and it turns at the
-        // touchdown at once; with it, the bending length rounds that corner, the catenary's turning
-        // is no measure of where the line bends, and equal elements serve its dynamics better.
         const int mode = model_.params().meshGrading;
-        if (ps.solved && mode != 0 && model_.line().EI == 0.0 &&
-            (ps.profile.grounded_length() > 0.0 || !model_.attachments().empty()))
+        if (ps.solved && mode != 0 && (ps.profile.grounded_length() > 0.0 || !model_.attachments().empty()))
             layout.nodes = graded_nodes(model_, ps.profile, ps.towOnTop, mode == 2, kGradings[grading]);
     }
     meshTow_ = towPoint;
