@@ -235,7 +235,8 @@ def make_cases():
             "as well, from 3 to 40 elements, with the contact sampled every 2 m (seabedContactSpacing; "
             "off by default: the five axial points of each element; docs/model.md), and with that and "
             "the integrator's BDF formulas kept at the A-stable orders 1-2 (solver.maxOrder = 2; default 5; "
-            "docs/error_control.md)."),
+            "docs/error_control.md), and with all that on equal elements (meshGrading 0: by default the "
+            "nodes are graded by the static profile, which leaves the top of the cable coarser)."),
         # and the loosest setting with the error test of the tangents along and across the cable,
         # also with the position tolerance at 10 cm (and on coarser meshes: the cheap end)
         fmu_grid=dict(full=[(n, tol) for n in (10, 20, 40) for tol in (1e-1, 1e-2, 1e-3, 1e-4)]
@@ -245,7 +246,9 @@ def make_cases():
                       + [(n, 1e-1, {"projectedErrorControl": True, "positionTolerance": 0.1, "seabedContactSpacing": 2.0})
                          for n in (6, 10, 15, 20)]
                       + [(n, 1e-1, {"projectedErrorControl": True, "positionTolerance": 0.1, "seabedContactSpacing": 2.0,
-                                    "solver.maxOrder": 2}) for n in (6, 10, 15, 20, 40)],
+                                    "solver.maxOrder": 2}) for n in (6, 10, 15, 20, 40)]
+                      + [(n, 1e-1, {"meshGrading": 0, "projectedErrorControl": True, "positionTolerance": 0.1,
+                                    "seabedContactSpacing": 2.0, "solver.maxOrder": 2}) for n in (6, 10, 15, 20, 40)],
                       quick=[(10, 1e-3)]),
         md_grid=dict(full=[(n, 0.9) for n in (20, 40, 80)], quick=[(20, 0.9)]),
         reference=dict(full=(80, 1e-6), quick=(20, 1e-5)), still_twin=True,
