@@ -131,6 +131,9 @@ private:
     bool adviseMesh_ = true;  // off in the trial runs of mesh_advice
     // Largest relative difference of the end tensions from the exact static profile [-].
     static constexpr double kStaticsCheck = 0.01;
+    // The check applies to a line with bending stiffness whose bending length at its smallest
+    // tension is at most this fraction of its length [-].
+    static constexpr double kWeakBending = 1e-3;
     // Largest relative difference between the anchor force and the axial tension at the anchor of
     // a line without bending stiffness: the acceptance's 0.2 % (both measure the anchor tension).
     static constexpr double kAnchorCheck = 2e-3;
