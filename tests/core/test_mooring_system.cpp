@@ -49,6 +49,14 @@ ID      LineType   AttachA   AttachB  UnstrLen  NumSegs   Outputs
 ------------------------- need this line --------------------------------------
 )";
 
+// `text` with its first `from` replaced by `to` (`from` must be in it).
+std::string edited(std::string text, const std::string& from, const std::string& to) {
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
 uc::MooringDeck read_platform(int elementsPerLine = 0) {
     uc::MooringDeck deck;
     std::string error;
@@ -119,35 +127,21 @@ TEST(MooringDeck, AChainThroughAFreePointIsOneLineOfSections) {
 }
 
 TEST(MooringDeck, WhatASystemCannotHoldIsRefusedNamingTheLine) {
-    auto refused = [](const std::string& from, const std::string& to) {
-        std::string text = kPlatform;
-        const size_t at = text.find(from);
-        EXPECT_NE(at, std::string::npos) << from;
-        text.replace(at, from.size(), to);
-        uc::MooringDeck deck;
-        std::string error;
-        EXPECT_FALSE(uc::read_mooring_deck(text, 0, deck, error));
-        return error;
-    };
     // lines 3 and 4 between free points 7 and 8 in a closed loop: nothing holds them
-    std::string text = kPlatform;
     const std::string point7 = "7      Free     200.0   -346.0    -190.0   20000    1.0     0.5   1.0";
-    text.replace(text.find(point7), point7.size(), point7 + "\n8      Free     210.0   -346.0    -190.0   0 0 0 0");
     const std::string lines = "3         main        3         7       400.0      10        -\n4         main        6         7";
-    text.replace(text.find(lines), lines.size(), "3 main 8 7 400.0 10 -\n4 main 7 8 435.35 12 -");
+    const std::string text = edited(edited(kPlatform, point7, point7 + "\n8      Free     210.0   -346.0    -190.0   0 0 0 0"),
+                                    lines, "3 main 8 7 400.0 10 -\n4 main 7 8 435.35 12 -");
     uc::MooringDeck deck;
     std::string error;
     EXPECT_FALSE(uc::read_mooring_deck(text, 0, deck, error));
     EXPECT_EQ(error.rfind("line 23: line 3 is not reached from a coupled point, a free node or a Fixed point", 0), 0u)
         << error;
-    (void)refused;
 }
 
 TEST(MooringDeck, ALineNoCoupledObjectHoldsRunsFromItsFixedPoint) {
     // line 4 from the anchor 2 to the clump point: lines 3 and 4 are a chain between two anchors
-    std::string text = kPlatform;
-    const std::string from = "4         main        6         7";
-    text.replace(text.find(from), from.size(), "4         main        2         7");
+    const std::string text = edited(kPlatform, "4         main        6         7", "4         main        2         7");
     uc::MooringDeck deck;
     std::string error;
     ASSERT_TRUE(uc::read_mooring_deck(text, 0, deck, error)) << error;
@@ -161,9 +155,7 @@ TEST(MooringDeck, ALineNoCoupledObjectHoldsRunsFromItsFixedPoint) {
 TEST(MooringDeck, AFreePointWhereThreeLinesMeetIsANodeWhereTheyEnd) {
     // line 2 to the clump point too: lines 2 (from its anchor), 3 (from its anchor) and 4 (from the
     // platform) meet at point 7
-    std::string text = kPlatform;
-    const std::string from = "2         main        2         5";
-    text.replace(text.find(from), from.size(), "2         main        2         7");
+    const std::string text = edited(kPlatform, "2         main        2         5", "2         main        2         7");
     uc::MooringDeck deck;
     std::string error;
     ASSERT_TRUE(uc::read_mooring_deck(text, 0, deck, error)) << error;

@@ -62,6 +62,43 @@ def make_cable(fmu_file, make_unit):
     return lambda **kwargs: make_unit(fmu_file, **kwargs)
 
 
+@pytest.fixture
+def graded_state_continuation(fmu_file):
+    """continuation(parameters, tow_z, elsewhere, outputs) -> (first, second): an anchored line started
+    with its tow point at (0, 0, tow_z) steps 2 s of surge, its state is serialized, and it steps 3 s
+    more (first); a fresh instance initialized with the tow point moved by `elsewhere` (another mesh)
+    takes the state and steps the same 3 s (second). A state that carries its mesh gives equal arrays."""
+    import math
+
+    import numpy as np
+    from ucable.fmu import CableFMU
+
+    def advance(c, t0, steps, tow_z, outputs):
+        out = []
+        for k in range(steps):
+            t = t0 + 0.5 * k
+            c.set({"tow.x": math.sin(0.3 * (t + 0.5)), "tow.vx": 0.3 * math.cos(0.3 * (t + 0.5)), "tow.z": tow_z})
+            c.do_step(0.5, t=t)
+            out.append(c.get_reals(outputs))
+        return np.array(out)
+
+    def continuation(parameters, tow_z, elsewhere, outputs):
+        with CableFMU(fmu_file, parameters=parameters) as c, CableFMU(fmu_file, parameters=parameters) as fresh:
+            c.initialize(inputs={"tow.z": tow_z})
+            advance(c, 0.0, 4, tow_z, outputs)
+            data = c.serialize_state(state := c.get_state())
+            c.free_state(state)
+            first = advance(c, 2.0, 6, tow_z, outputs)
+            fresh.initialize(inputs={**elsewhere, "tow.z": tow_z})
+            restored = fresh.deserialize_state(data)
+            fresh.set_state(restored)
+            second = advance(fresh, 2.0, 6, tow_z, outputs)
+            fresh.free_state(restored)
+        return first, second
+
+    return continuation
+
+
 @pytest.fixture(scope="session")
 def towfish_fmu(tmp_path_factory) -> Path:
     """Towfish.fmu: a towed body FMU of "another vendor" (tests/third_party_body), built for this session

@@ -282,31 +282,10 @@ def test_the_stiff_seabed_starts_a_touchdown_of_centimetres_where_the_soft_one_d
         assert run["ok"], (stiffness, run["message"])
 
 
-def test_a_regraded_state_continues_bit_identically_in_a_fresh_instance(fmu_file):
+def test_a_regraded_state_continues_bit_identically_in_a_fresh_instance(graded_state_continuation):
     """A state carries which grading placed its nodes: a fresh instance, initialized at another
     tow point (whose first grading starts), grades again as the state's and continues exactly."""
     case = B.draw_case(SEED, 33)
-    parameters = B.fmu_parameters(case, 10)
-
-    def advance(c, t0, steps):
-        out = []
-        for k in range(steps):
-            t = t0 + 0.5 * k
-            c.set({"tow.x": math.sin(0.3 * (t + 0.5)), "tow.vx": 0.3 * math.cos(0.3 * (t + 0.5)),
-                   "tow.z": case.fairlead_z})
-            c.do_step(0.5, t=t)
-            out.append(c.get_reals(["towTension", "endTension", "shape.z[20]"]))
-        return np.array(out)
-
-    with CableFMU(fmu_file, parameters=parameters) as c, CableFMU(fmu_file, parameters=parameters) as fresh:
-        c.initialize(inputs={"tow.z": case.fairlead_z})
-        advance(c, 0.0, 4)
-        data = c.serialize_state(state := c.get_state())
-        c.free_state(state)
-        first = advance(c, 2.0, 6)
-        fresh.initialize(inputs={"tow.x": 40.0, "tow.z": case.fairlead_z})
-        restored = fresh.deserialize_state(data)
-        fresh.set_state(restored)
-        second = advance(fresh, 2.0, 6)
-        fresh.free_state(restored)
+    first, second = graded_state_continuation(B.fmu_parameters(case, 10), case.fairlead_z, {"tow.x": 40.0},
+                                               ["towTension", "endTension", "shape.z[20]"])
     assert np.array_equal(first, second), f"max difference {np.max(np.abs(first - second))}"

@@ -162,32 +162,12 @@ def test_tow_cable_reaching_the_seabed_starts_with_its_end_on_it(fmu_file, depth
     assert tension == pytest.approx(steady, rel=5e-3)
 
 
-def test_graded_state_continues_bit_identically_in_a_fresh_instance(fmu_file):
+def test_graded_state_continues_bit_identically_in_a_fresh_instance(graded_state_continuation):
     """The mesh graded at the touchdown is made at initialization; a state carries the end points it
     was graded for, and a fresh instance initialized elsewhere grades again from them."""
     p = dict(TENSION_ONLY, waterDepth=150.0, length=600.0, nElements=12, EI=0.0, **CHAIN,
              **{"anchor.x": -555.0, "anchor.z": -150.0})
-
-    def advance(c, t0, steps):
-        out = []
-        for k in range(steps):
-            t = t0 + 0.5 * k
-            c.set({"tow.x": math.sin(0.3 * (t + 0.5)), "tow.vx": 0.3 * math.cos(0.3 * (t + 0.5)), "tow.z": -20.0})
-            c.do_step(0.5, t=t)
-            out.append(c.get_reals(["towTension", "endTension", "shape.z[15]"]))
-        return np.array(out)
-
-    with CableFMU(fmu_file, parameters=p) as c, CableFMU(fmu_file, parameters=p) as fresh:
-        c.initialize(inputs={"tow.z": -20.0})
-        advance(c, 0.0, 4)
-        data = c.serialize_state(state := c.get_state())
-        c.free_state(state)
-        first = advance(c, 2.0, 6)
-        fresh.initialize(inputs={"tow.x": 30.0, "tow.z": -20.0})  # another mesh
-        restored = fresh.deserialize_state(data)
-        fresh.set_state(restored)
-        second = advance(fresh, 2.0, 6)
-        fresh.free_state(restored)
+    first, second = graded_state_continuation(p, -20.0, {"tow.x": 30.0}, ["towTension", "endTension", "shape.z[15]"])
     assert np.array_equal(first, second), f"max difference {np.max(np.abs(first - second))}"
 
 
