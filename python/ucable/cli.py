@@ -4,10 +4,13 @@
     ucable sweep SCENE --vary NAME=V1,V2,... [--vary ...] [--set NAME=VALUE ...] [--workers N]
                  [--scheduler ADDRESS] [--out DIR]
     ucable scenes                  the shipped scenes
-    ucable scenes show NAME        print a shipped scene (to copy and edit: ucable scenes show turn90 > my.toml)
+    ucable scenes show NAME        print a shipped scene (to copy and edit: ucable scenes show turn90 > my.toml);
+                                   on stderr, the files it needs beside it (its lineFile deck)
+    ucable scenes copy NAME DIR    copy a shipped scene and the decks it names into DIR
     ucable scenes format           print the scene format's reference (every key, unit, default)
     ucable system NAME [--master fmpy|libcosim|newton] [--out DIR]    run a shipped system of FMUs
-    ucable fmu                     the path of the FMU
+    ucable fmu                     the path of the FMU (on stderr: the platforms it and its FMI 3.0 variant
+                                   carry binaries for, and how to add win64)
     ucable --version
 
 SCENE is a scene file (TOML; the format: ucable scenes format) or the name of a shipped scene. NAME is
@@ -17,9 +20,10 @@ DIR/result.png, with --animate also DIR/result.gif; sweep writes DIR/results.csv
 combination: the varied values, towTensionMax, towTensionMin, towTensionFinal, endDepthFinal,
 cpuSeconds, status, error) and DIR/summary.png.
 
-Exit codes: 0 done; 1 a run failed (the FMU's message is printed), or some runs of a sweep failed;
-2 a mistake in the scene or the command line (one line naming the file and the key). --debug
-shows the traceback of any error.
+Exit codes: 0 done; 1 a run failed (the FMU's message is printed), some runs of a sweep failed, or a
+Python module a feature needs is missing (the command that installs it is printed); 2 a mistake in the
+scene or the command line (one line naming the file and the key), including a scene the FMU refuses
+at the start. Every error is one line; --debug shows its traceback.
 """
 
 from __future__ import annotations
@@ -99,18 +103,64 @@ def cmd_sweep(a) -> int:
     return 0
 
 
+def scene_files(scene, directory: Path) -> list[Path]:
+    """The files a scene names (its lineFile deck) that lie beside it, and the decks' own companion
+    files named in their options (a file name ending in .dat, .txt or .csv beside the deck)."""
+    deck = scene.parameters.get("lineFile")
+    if not deck or Path(deck).is_absolute() or not (directory / deck).is_file():
+        return []
+    deck = directory / deck
+    files = [deck]
+    for token in deck.read_text(errors="replace").split():
+        if token.lower().endswith((".dat", ".txt", ".csv")) and (deck.parent / token).is_file():
+            files.append(deck.parent / token)
+    return list(dict.fromkeys(files))
+
+
+def copy_scene(path: Path, files: list[Path], target: Path | None) -> int:
+    """ucable scenes copy NAME DIR: the scene file and the files it needs into DIR (made if needed);
+    files already there are not overwritten."""
+    import shutil
+
+    from .scene_schema import SceneFileError
+
+    if target is None:
+        raise SceneFileError(f"scenes copy {path.stem}: give the directory to copy it to (DIR)")
+    target.mkdir(parents=True, exist_ok=True)
+    copied = []
+    for source in [path, *files]:
+        destination = target / source.relative_to(path.parent)
+        if destination.exists():
+            raise SceneFileError(f"scenes copy {path.stem}: {destination} exists (not overwritten)")
+    for source in [path, *files]:
+        destination = target / source.relative_to(path.parent)
+        destination.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(source, destination)
+        copied.append(str(destination))
+    print(f"copied {', '.join(copied)}; run it with: ucable run {target / path.name}")
+    return 0
+
+
 def cmd_scenes(a) -> int:
     from .paths import find_scene, scene_format_doc, scenes_dir
     from .scene import load_scene
+    from .scene_schema import SceneFileError
 
     if a.action == "format":
         sys.stdout.write(scene_format_doc().read_text())
         return 0
-    if a.action == "show":
+    if a.action in ("show", "copy"):
         if not a.name:
-            raise SystemExit("ucable scenes show: give the NAME of a shipped scene (ucable scenes lists them)")
-        load_scene(a.name)  # a shipped scene by name (a mistake: the names there are)
-        sys.stdout.write(find_scene(a.name).read_text())
+            raise SceneFileError(f"scenes {a.action}: give the NAME of a shipped scene (ucable scenes lists them)")
+        scene = load_scene(a.name)  # a shipped scene by name (a mistake: the names there are)
+        path = find_scene(a.name)
+        decks = scene_files(scene, path.parent)
+        if a.action == "copy":
+            return copy_scene(path, decks, a.dir)
+        sys.stdout.write(path.read_text())
+        if decks:
+            print(f"ucable: the scene {path.stem} needs {', '.join(d.name for d in decks)} beside it: "
+                  f"ucable scenes copy {path.stem} DIR copies them with it", file=sys.stderr)
         return 0
     for path in sorted(scenes_dir().glob("*.toml")):
         print(f"{path.stem:28s} {load_scene(path).title}")
@@ -130,6 +180,10 @@ def cmd_system(a) -> int:
 
         raise SceneFileError(f"no system {a.name!r}{suggestion(a.name, S.system_names()) or ''} "
                              f"(shipped: {', '.join(S.system_names())})")
+    if a.master == "libcosim":
+        from .optional import require
+
+        require("libcosimpy", "--master libcosim")
     out = a.out or Path("out") / "system" / a.name
     out.mkdir(parents=True, exist_ok=True)
     bar = ProgressBar(S.named_duration(a.name, a.manoeuvre, a.duration), label=a.name)
@@ -165,8 +219,9 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--scheduler", default=None, help="address of a running Dask scheduler (default: a local cluster)")
     s.add_argument("--out", type=Path, default=None, help="output directory (default out/SCENE_sweep)")
     sc = sub.add_parser("scenes", help="list the shipped scenes; print one (scenes show NAME) or the format (scenes format)")
-    sc.add_argument("action", nargs="?", choices=("list", "show", "format"), default="list")
+    sc.add_argument("action", nargs="?", choices=("list", "show", "copy", "format"), default="list")
     sc.add_argument("name", nargs="?")
+    sc.add_argument("dir", nargs="?", type=Path, help="scenes copy: the directory to copy the scene and its decks to")
     y = sub.add_parser("system", help="run a shipped system of FMUs (vessel, cable, towed body); no NAME: list them")
     y.add_argument("name", nargs="?")
     y.add_argument("--master", choices=("fmpy", "libcosim", "newton"), default="fmpy",
@@ -191,34 +246,56 @@ def dispatch(a) -> int:
         return cmd_scenes(a)
     if a.command == "system":
         return cmd_system(a)
-    from .paths import require_fmu
+    from .paths import describe_fmus, require_fmu
 
     print(require_fmu())
+    print(f"ucable: {describe_fmus()}", file=sys.stderr)
     return 0
+
+
+def one_line(text) -> str:
+    return " ".join(str(text).split())
+
+
+def show_warning(message, category, filename, lineno, file=None, line=None) -> None:
+    """Warnings on one line: 'ucable: warning: ...'."""
+    print(f"ucable: warning: {one_line(message)}", file=sys.stderr)
 
 
 def main(argv=None) -> int:
     a = build_parser().parse_args(argv)
-    from .fmu import FMICallException
-    from .paths import MissingFMUError
-    from .scene import SceneError
+    import warnings
+
+    from .optional import missing_message
     from .scene_schema import SceneFileError
 
+    previous = warnings.showwarning
+    warnings.showwarning = show_warning
     try:
         return dispatch(a)
     except SceneFileError as exc:
         if a.debug:
             raise
-        print(f"ucable: {exc}", file=sys.stderr)
+        print(f"ucable: {one_line(exc)}", file=sys.stderr)
         return EXIT_USAGE
-    except (SceneError, MissingFMUError, FMICallException, FileNotFoundError, ValueError, RuntimeError) as exc:
+    except ImportError as exc:  # a module a feature needs (libcosimpy for --master libcosim, ...)
         if a.debug:
             raise
-        print(f"ucable: {exc}", file=sys.stderr)
+        print(f"ucable: {missing_message(exc)}", file=sys.stderr)
         return EXIT_FAILED
     except KeyboardInterrupt:
         print("ucable: interrupted", file=sys.stderr)
         return 130
+    except Exception as exc:  # the FMU's failure, a file that cannot be written, ...: one line
+        if a.debug:
+            raise
+        known = type(exc).__name__ in ("SceneError", "MissingFMUError", "FMICallException", "Diverged")
+        what = "" if known or isinstance(exc, (OSError, ValueError, RuntimeError)) else f"{type(exc).__name__}: "
+        print(f"ucable: {what}{one_line(exc)} (--debug shows the traceback)" if what else f"ucable: {one_line(exc)}",
+              file=sys.stderr)
+        return EXIT_FAILED
+    finally:
+        warnings.showwarning = previous
 
 
 if __name__ == "__main__":

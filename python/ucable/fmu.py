@@ -16,7 +16,7 @@ from __future__ import annotations
 import atexit
 import itertools
 import shutil
-from ctypes import byref
+import weakref
 from pathlib import Path
 
 import numpy as np
@@ -42,13 +42,21 @@ def _cleanup() -> None:
 atexit.register(_cleanup)
 
 
-# fmpy's logger proxy (it formats the printf-style message in C) keeps ONE Python logger per
-# process: the last one registered receives every instance's messages, and it dangles once that
-# instance is gone. So every CableFMU registers the same process-wide logger, kept alive for the
-# process, and tells the FMU its own number as the componentEnvironment the FMU passes back with
-# each message; the logger hands the message to the instance with that number.
-_instances: dict = {}  # componentEnvironment number -> live CableFMU
+# The FMU formats its messages itself and hands the logger a text in which '%' and '#' are doubled
+# (a printf format without arguments), so the wrapper needs no formatting proxy: fmpy's logger proxy
+# keeps ONE Python logger per process, and whoever registers next (fmpy.simulate_fmu(logger=...), another
+# wrapper) leaves the earlier instances calling a logger that may be gone (a crash). Every CableFMU
+# passes the same process-wide logger, kept alive for the process, directly to the FMU, with its own
+# number as the componentEnvironment the FMU passes back with each message; the logger hands the message
+# to the live instance with that number (held weakly: an instance dropped without free() is collected,
+# and its finalizer frees the FMU instance).
+_instances: "weakref.WeakValueDictionary[int, CableFMU]" = weakref.WeakValueDictionary()
 _numbers = itertools.count(1)
+
+
+def _unescape(message: bytes | None) -> str:
+    text = message.decode("utf-8", "replace") if message else ""
+    return text.replace("%%", "%").replace("##", "#")
 
 
 def _dispatch_log(env, instance, status, category, message) -> None:
@@ -58,6 +66,14 @@ def _dispatch_log(env, instance, status, category, message) -> None:
 
 
 _process_logger = fmi2CallbackLoggerTYPE(_dispatch_log)
+
+
+def _release(slave, state: dict) -> None:
+    """Frees the FMU instance once (free(), or the finalizer of an instance dropped without it); the
+    slave holds the callbacks, so they live as long as the FMU instance."""
+    if not state["freed"]:
+        state["freed"] = True
+        slave.freeInstance()
 
 
 def load(path: str | Path | None = None):
@@ -87,35 +103,31 @@ class CableFMU:
         self.time = None
         self._initialized = False
 
-        # Callbacks must outlive the instance (the FMU keeps the pointers): keep references. The
-        # logger is the process-wide one; componentEnvironment routes its messages back here.
+        # Callbacks must outlive the FMU instance (it keeps the pointers): the slave keeps them, and
+        # the logger is the process-wide one; componentEnvironment routes its messages back here.
         self._number = next(_numbers)
-        _instances[self._number] = self
         self._callbacks = fmi2CallbackFunctions()
         self._callbacks.logger = _process_logger
         self._callbacks.componentEnvironment = self._number
         self._callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
         self._callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-        try:  # fmpy's C proxy formats the printf-style message before it reaches Python
-            from fmpy.logging import addLoggerProxy
-            addLoggerProxy(byref(self._callbacks))
-        except Exception:  # pragma: no cover - proxy missing on exotic platforms
-            pass
 
         self.slave = FMU2Slave(guid=md.guid, unzipDirectory=self.unzipdir,
                                modelIdentifier=md.coSimulation.modelIdentifier,
                                instanceName=instance_name)
+        _instances[self._number] = self
         try:
             self.slave.instantiate(callbacks=self._callbacks, loggingOn=logging_on)
         except BaseException:
             _instances.pop(self._number, None)
             raise
+        self._release_state = {"freed": False}
+        self._finalizer = weakref.finalize(self, _release, self.slave, self._release_state)
         self._pending_parameters = dict(parameters or {})
-        self._freed = False
 
     # ------------------------------------------------------------------ logging
     def _log(self, _env, _instance, status, category, message):
-        text = message.decode("utf-8", "replace") if message else ""
+        text = _unescape(message)
         label = STATUS_LABELS[status] if 0 <= status < len(STATUS_LABELS) else str(status)
         cat = category.decode("utf-8", "replace") if category else ""
         self.messages.append((label, cat, text))
@@ -231,12 +243,15 @@ class CableFMU:
         self.slave.terminate()
 
     def free(self) -> None:
-        if not self._freed:
-            self._freed = True
-            try:
-                self.slave.freeInstance()
-            finally:
-                _instances.pop(self._number, None)
+        """Frees the FMU instance (also done when the CableFMU is collected or at exit)."""
+        try:
+            self._finalizer()
+        finally:
+            _instances.pop(self._number, None)
+
+    @property
+    def _freed(self) -> bool:
+        return self._release_state["freed"]
 
     def __enter__(self):
         return self

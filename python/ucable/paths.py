@@ -37,6 +37,38 @@ def require_fmu() -> Path:
     return path
 
 
+def fmi3_fmu_path() -> Path:
+    """The FMI 3.0 variant beside the FMU: fmi3/UnderwaterCable.fmu in the package or the build."""
+    return fmu_path().parent / "fmi3" / "UnderwaterCable.fmu"
+
+
+def fmu_platforms(path: Path) -> list[str]:
+    """The platforms an FMU carries binaries for (the folders under binaries/ of the zip)."""
+    import zipfile
+
+    with zipfile.ZipFile(path) as z:
+        return sorted({n.split("/")[1] for n in z.namelist() if n.startswith("binaries/") and n.count("/") >= 2
+                       and n.split("/")[1]})
+
+
+WIN64_HINT = ("for win64 as well: bash scripts/setup --platforms linux64,win64, then pip install . again "
+              "(or bash scripts/build --platforms linux64,win64 in a clone)")
+
+
+def describe_fmus() -> str:
+    """One line: the platforms of the FMU and of its FMI 3.0 variant, and how to get win64 when missing."""
+    fmu = require_fmu()
+    said = f"FMI 2.0: {', '.join(fmu_platforms(fmu)) or 'no binaries'}"
+    fmi3 = fmi3_fmu_path()
+    if fmi3.is_file():
+        said += f"; FMI 3.0 variant {fmi3}: {', '.join(fmu_platforms(fmi3)) or 'no binaries'}"
+    else:
+        said += "; no FMI 3.0 variant beside it"
+    if not any(p in ("win64", "x86_64-windows") for p in fmu_platforms(fmu)):
+        said += f"; {WIN64_HINT}"
+    return said
+
+
 def scenes_dir() -> Path:
     """The scene files: installed with the package, or the clone's scenes/."""
     packaged = PACKAGE_DIR / "scenes"

@@ -46,8 +46,10 @@ from __future__ import annotations
 
 import copy
 import math
+import re
 import time
 import tomllib
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -287,9 +289,9 @@ class SceneResult:
         return s
 
     def write_csv(self, path: Path) -> None:
-        names = ["time"] + list(self.columns)
-        data = np.column_stack([self.time] + [self.columns[n] for n in self.columns])
-        np.savetxt(path, data, delimiter=",", header=",".join(names), comments="", fmt="%.10g")
+        from .tables import write_columns
+
+        write_columns(path, {"time": self.time, **self.columns})
 
     def shapes(self) -> np.ndarray | None:
         """The recorded stations, shape [time, station, xyz], or None without record_shape."""
@@ -317,9 +319,75 @@ def _fmu_message(cable: CableFMU) -> str:
         if status not in ("ERROR", "FATAL"):
             continue
         text = message.split(": ", 1)[1] if message.startswith("fmi2") and ": " in message else message
+        text = text.replace(str(cable.unzipdir), "<the FMU>")  # fmpy's temporary directory says nothing
         if text not in said:
             said.append(text)
     return "; ".join(said)
+
+
+class SceneWarning(UserWarning):
+    """Something in a scene that runs but may not be what was meant (the CLI prints it on one line)."""
+
+
+_VESSEL_POINT = re.compile(r"(?:not the file's vessel point|hold them at its X Y Z =) \(([^,()]+), ([^,()]+), ([^,()]+)\)")
+
+
+def deck_path(deck: str, directory: Path | None, where: str = "[parameters] lineFile") -> str:
+    """The file a scene's lineFile names: an absolute path, else next to the scene file, else in the
+    current directory; a SceneFileError saying where it looked when it is in none of them."""
+    path = Path(deck).expanduser()
+    if path.is_absolute():
+        if path.is_file():
+            return str(path)
+        raise SceneFileError(f"{where} = {deck!r}: no such file")
+    for base in ([directory] if directory is not None else []) + [Path.cwd()]:
+        if (base / path).is_file():
+            return str((base / path).resolve())
+    near = f"next to the scene ({directory}) or " if directory is not None else ""
+    raise SceneFileError(f"{where} = {deck!r}: no such file {near}in the current directory ({Path.cwd()}); "
+                         f"a shipped scene's decks come with it: ucable scenes copy NAME DIR")
+
+
+def deck_vessel_point(fmu, parameters: dict) -> list | None:
+    """The tow point of a one-line deck (its Vessel or Coupled point, or the Fixed point the line starts
+    from), as the FMU reads it: a probe instance with the tow point at the origin logs the point when it
+    lies elsewhere. None for a mooring system or a deck whose point is the origin."""
+    probe = CableFMU(fmu, parameters=parameters, logging_on=True)
+    try:
+        try:
+            probe.initialize(0.0)
+        except FMICallException:
+            pass  # the start from the origin may fail; the point is logged before
+        for _, _, message in probe.messages:
+            m = _VESSEL_POINT.search(message)
+            if m:
+                return [float(x) for x in m.groups()]
+        return None
+    finally:
+        probe.free()
+
+
+def tow_start(s: "Scene", fmu, parameters: dict) -> dict:
+    """The [tow] table to run with: a one-line deck's tow point where the scene gives no [tow] start
+    (the start the deck says); a SceneWarning when the scene's start differs from the deck's point."""
+    tow = dict(s.tow)
+    if not parameters.get("lineFile") or s.body:
+        return tow
+    point = deck_vessel_point(fmu, parameters)
+    if point is None:
+        return tow
+    given = "start" in s.data.get("tow", {})
+    if not given:
+        tow["start"] = point
+    elif any(abs(a - b) > 1e-9 * max(1.0, abs(b)) for a, b in zip(tow["start"], point)):
+        def show(v):
+            return "(" + ", ".join(f"{x:g}" for x in v) + ")"
+
+        warnings.warn(SceneWarning(
+            f"{s.source}: [tow] start = {show(tow['start'])} m is not the deck's tow point {show(point)} m "
+            f"(lineFile {parameters['lineFile']!r}): the line starts from [tow] start; leave [tow] start out "
+            f"to start at the deck's point"), stacklevel=3)
+    return tow
 
 
 def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, fmu: str | Path | None = None,
@@ -331,7 +399,6 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
     s = scene if isinstance(scene, Scene) else load_scene(scene)
     if overrides:
         s = s.with_overrides(overrides)
-    motion = TowMotion(s.tow, s.duration, s.step)
     n = int(math.ceil(s.duration / s.step - 1e-9))
     times = np.array([min(k * s.step, s.duration) for k in range(n + 1)])
     extra = {"anchored": ANCHORED_RECORDED, "winch": WINCH_RECORDED}.get(s.kind, [])
@@ -342,14 +409,15 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
     data = np.zeros((n + 1, len(recorded)))
     tow = np.zeros((n + 1, 3))
     parameters = dict(s.parameters)
-    deck = parameters.get("lineFile")
-    if deck and s.directory is not None and not Path(deck).is_absolute() and (s.directory / deck).is_file():
-        parameters["lineFile"] = str(s.directory / deck)
+    if parameters.get("lineFile"):
+        parameters["lineFile"] = deck_path(parameters["lineFile"], s.directory)
     signals = dict(s.inputs)
     if s.winch:
         parameters.setdefault("winchMode", s.winch["mode"])
         signals[s.winch["input"]] = s.winch["table"]
-    cable = CableFMU(fmu or require_fmu(), parameters=parameters)
+    fmu = fmu or require_fmu()
+    motion = TowMotion(tow_start(s, fmu, parameters), s.duration, s.step)
+    cable = CableFMU(fmu, parameters=parameters)
     t = 0.0
     try:
         def inputs(t):
@@ -363,11 +431,11 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
         cpu0 = time.process_time()
         try:
             cable.initialize(0.0, s.duration, inputs=inputs(0.0))
-        except FMICallException as exc:
+        except FMICallException as exc:  # a refusal at the start is the scene's mistake, not a failure of the run
             said = _fmu_message(cable) or str(exc)
-            if "invalid parameter" in said:  # the scene's mistake, not a failure of the run
+            if "invalid parameter" in said:
                 raise SceneFileError(f"{s.source}: {said}") from exc
-            raise SceneError(f"{s.source}: the FMU could not start: {said}") from exc
+            raise SceneFileError(f"{s.source}: the FMU could not start: {said}") from exc
         data[0] = cable.get_reals(recorded)
         tow[0] = motion.at(0.0)[0]
         for k in range(n):
@@ -386,7 +454,8 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
         raise SceneError(f"{s.source}: the FMU failed at t = {t:g} s: {_fmu_message(cable) or exc}") from exc
     finally:
         cable.free()
-    columns = {name: data[:, i] for i, name in enumerate(recorded)
-               if name not in LINES_RECORDED or np.any(data[:, i] != 0.0)}  # the deck's lines only
+    requested = set(s.outputs)
+    columns = {name: data[:, i] for i, name in enumerate(recorded)  # of the lines added with [body], the deck's
+               if name in requested or name not in LINES_RECORDED or np.any(data[:, i] != 0.0)}
     columns.update({"tow.x": tow[:, 0], "tow.y": tow[:, 1], "tow.z": tow[:, 2]})
     return SceneResult(s, times, columns, cpu)

@@ -200,12 +200,14 @@ def validate(data: dict, source: str) -> dict:
     out["record_shape"] = record
 
     parameters = c.table(data.get("parameters", {}), "[parameters]")
+    check_dotted_keys(c, parameters, "[parameters]")
     out["parameters"] = {k: c.parameter(k, v, f"[parameters] {k}") for k, v in parameters.items()}
 
     winch = c.table(data.get("winch", {}), "[winch]")
     out["winch"] = check_winch(c, winch, out["parameters"]) if winch else {}
 
     inputs = c.table(data.get("inputs", {}), "[inputs]")
+    check_dotted_keys(c, inputs, "[inputs]")
     known_inputs = [n for n, v in VARIABLES.items() if v.causality == "input"]
     out["inputs"] = {}
     for name, value in inputs.items():
@@ -229,6 +231,28 @@ def validate(data: dict, source: str) -> dict:
             if name in BODY_INPUT_NAMES:
                 c.fail(f"[inputs] {name}", "body 1 moves as [body] says (start, surge, sway, heave, roll, pitch, yaw)")
     return out
+
+
+def _dotted(table: dict, prefix: str = ""):
+    """(dotted name, value) of the leaves of nested tables; a { times, values } table is a leaf."""
+    for key, value in table.items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict) and not set(value) <= set(TABLE_KEYS):
+            yield from _dotted(value, name + ".")
+        else:
+            yield name, value
+
+
+def check_dotted_keys(c: Checker, table: dict, where: str) -> None:
+    """An unquoted dotted key (body.mass = 400) is a nested table in TOML: a SceneFileError telling to
+    quote the name ("body.mass" = 400) when the dotted name is a variable of the FMU."""
+    for key, value in table.items():
+        if key in VARIABLES or not isinstance(value, dict) or set(value) <= set(TABLE_KEYS):
+            continue
+        for name, leaf in _dotted(value, key + "."):
+            if name in VARIABLES:
+                c.fail(f"{where} {name}", f"an unquoted dotted key makes a TOML table: quote the name, "
+                                          f"\"{name}\" = {_show(leaf)}")
 
 
 def check_body(c: Checker, body: dict) -> dict:

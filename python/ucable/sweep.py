@@ -8,15 +8,16 @@ same tasks go to that cluster (its workers need the `ucable` package installed).
 
 from __future__ import annotations
 
-import csv
 import itertools
 import time
 import traceback
+from pathlib import Path
 
 import numpy as np
 
 from .scene import Scene, SceneError, load_scene, parse_value, run_scene
 from .scene_schema import SceneFileError
+from .tables import write_rows
 
 SUMMARY = ["towTensionMax", "towTensionMin", "towTensionFinal", "endDepthFinal"]
 EXTRA_SUMMARY = ["anchorTensionMax", "lengthFinal"]  # anchored lines, winch scenes
@@ -48,12 +49,15 @@ def combinations(vary: dict) -> list[dict]:
     return [dict(zip(names, values)) for values in itertools.product(*(vary[n] for n in names))]
 
 
-def run_case(scene_data: dict, overrides: dict) -> dict:
-    """One combination (runs on a worker): the summary row, or the error."""
+def run_case(scene_data: dict, overrides: dict, directory: str | None = None) -> dict:
+    """One combination (runs on a worker): the summary row, or the error. `directory` is the scene
+    file's (a relative lineFile is looked up there first, as `ucable run` does)."""
     row = dict(overrides)
     t0 = time.process_time()
     try:
-        result = run_scene(load_scene(scene_data), overrides)
+        scene = load_scene(scene_data)
+        scene.directory = Path(directory) if directory else None
+        result = run_scene(scene, overrides)
         row.update(result.summary())
         row["cpuSeconds"] = result.cpu
         row["status"] = "ok"
@@ -86,7 +90,8 @@ def run_sweep(scene: Scene, vary: dict, fixed: dict | None = None, workers: int 
         cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None)
     client = Client(scheduler if scheduler is not None else cluster)
     try:
-        futures = {client.submit(run_case, base, case, pure=False): i for i, case in enumerate(cases)}
+        directory = str(scene.directory) if scene.directory is not None else None
+        futures = {client.submit(run_case, base, case, directory, pure=False): i for i, case in enumerate(cases)}
         rows = [None] * len(cases)
         for done, future in enumerate(as_completed(futures), start=1):
             rows[futures[future]] = future.result()
@@ -102,11 +107,7 @@ def run_sweep(scene: Scene, vary: dict, fixed: dict | None = None, workers: int 
 def write_results(rows: list[dict], names: list[str], path) -> None:
     extra = [k for k in EXTRA_SUMMARY if any(k in r for r in rows)]
     columns = names + SUMMARY + extra + ["cpuSeconds", "status", "error"]
-    with open(path, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=columns, extrasaction="ignore")
-        writer.writeheader()
-        for r in rows:
-            writer.writerow({c: f"{v:.10g}" if isinstance(v := r.get(c, ""), float) else v for c in columns})
+    write_rows(path, columns, rows)
 
 
 def _numeric(values) -> bool:

@@ -439,6 +439,9 @@ def run_libcosim(system: SystemStructure, parameters: dict, step: float, t_end: 
                  progress=None) -> SystemResult:
     """The system under libcosim's fixed-step algorithm (Jacobi); the system file is rewritten with the
     step, absolute FMU paths and the extra start values."""
+    from .optional import require
+
+    require("libcosimpy", "--master libcosim")
     from libcosimpy.CosimEnums import CosimVariableType
     from libcosimpy.CosimExecution import CosimExecution
     from libcosimpy.CosimLogging import CosimLogLevel, log_output_level

@@ -84,9 +84,9 @@ def waves_of(args) -> dict | None:
 
 
 def write_csv(path: Path, columns: dict) -> None:
-    names = list(columns)
-    data = np.column_stack([columns[n] for n in names])
-    np.savetxt(path, data, delimiter=",", header=",".join(names), comments="", fmt="%.10g")
+    from .tables import write_columns
+
+    write_columns(path, columns)
 
 
 def plot(path: Path, r, title: str) -> None:

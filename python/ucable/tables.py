@@ -1,0 +1,52 @@
+"""The one CSV writer of the package (result.csv of a scene or a system, results.csv of a sweep).
+
+Written by the csv module: a column name holding a comma (`body[1].stiffness[1,2]`) or a quote is
+quoted, so csv, pandas and numpy (numpy.loadtxt, or numpy.genfromtxt with the names taken from the
+csv module's header, as `read_columns` does) read as many names as values in every row. Numbers are
+written with ten significant digits.
+"""
+
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+import numpy as np
+
+
+def _cell(value):
+    if isinstance(value, (float, np.floating)):
+        return f"{float(value):.10g}"
+    if isinstance(value, (np.integer,)):
+        return int(value)
+    return value
+
+
+def write_columns(path: str | Path, columns: dict) -> None:
+    """Columns of equal length (name -> sequence), one row per index."""
+    names = list(columns)
+    data = [np.asarray(columns[n]) for n in names]
+    with open(path, "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(names)
+        for row in zip(*data):
+            writer.writerow([_cell(v) for v in row])
+
+
+def write_rows(path: str | Path, names: list[str], rows: list[dict]) -> None:
+    """Rows given as dicts; a name a row lacks is an empty cell, keys not in `names` are left out."""
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=names, extrasaction="ignore")
+        writer.writeheader()
+        for r in rows:
+            writer.writerow({n: _cell(r.get(n, "")) for n in names})
+
+
+def read_columns(path: str | Path) -> dict:
+    """A CSV written by write_columns as name -> numpy array (the names exactly as written)."""
+    with open(path, newline="") as f:
+        names = next(csv.reader(f))
+    data = np.genfromtxt(path, delimiter=",", skip_header=1, ndmin=2)
+    if data.shape[1] != len(names):
+        raise ValueError(f"{path}: {len(names)} column names but {data.shape[1]} values per row")
+    return {n: data[:, i] for i, n in enumerate(names)}
