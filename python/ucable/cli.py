@@ -73,9 +73,11 @@ def cmd_run(a) -> int:
 
 
 def cmd_sweep(a) -> int:
+    from .optional import require
     from .scene import load_scene
     from .sweep import check_vary, combinations, parse_vary, plot_summary, run_sweep, write_results
 
+    require("dask.distributed", "ucable sweep")
     scene = load_scene(a.scene)
     vary = parse_vary(a.vary)
     fixed = parse_sets(a.set)
@@ -92,9 +94,17 @@ def cmd_sweep(a) -> int:
     bar.close(f"{n} runs, {cpu:.1f} s CPU in the runs")
     names = list(vary)
     write_results(rows, names, out / "results.csv")
-    plot_summary(rows, names, out / "summary.png", f"{scene.title}: sweep")
     failed = [r for r in rows if r["status"] != "ok"]
-    print(f"wrote {out}/results.csv, summary.png")
+    written = "results.csv"
+    if len(failed) == len(rows):
+        print("ucable: warning: every run failed: no summary.png", file=sys.stderr)
+    else:
+        try:  # the table is written; a plot that cannot be drawn does not lose it
+            plot_summary(rows, names, out / "summary.png", f"{scene.title}: sweep")
+            written += ", summary.png"
+        except Exception as exc:
+            print(f"ucable: warning: summary.png not written: {type(exc).__name__}: {one_line(exc)}", file=sys.stderr)
+    print(f"wrote {out}/{written}")
     if failed:
         for r in failed:
             print(f"failed: {', '.join(f'{k}={r[k]}' for k in names)}: {r['error']}", file=sys.stderr)

@@ -343,7 +343,7 @@ def deck_path(deck: str, directory: Path | None, where: str = "[parameters] line
     for base in ([directory] if directory is not None else []) + [Path.cwd()]:
         if (base / path).is_file():
             return str((base / path).resolve())
-    near = f"next to the scene ({directory}) or " if directory is not None else ""
+    near = f"next to the scene ({directory}) or " if directory is not None and directory != Path.cwd() else ""
     raise SceneFileError(f"{where} = {deck!r}: no such file {near}in the current directory ({Path.cwd()}); "
                          f"a shipped scene's decks come with it: ucable scenes copy NAME DIR")
 
@@ -410,7 +410,7 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
     tow = np.zeros((n + 1, 3))
     parameters = dict(s.parameters)
     if parameters.get("lineFile"):
-        parameters["lineFile"] = deck_path(parameters["lineFile"], s.directory)
+        parameters["lineFile"] = deck_path(parameters["lineFile"], s.directory, f"{s.source}: [parameters] lineFile")
     signals = dict(s.inputs)
     if s.winch:
         parameters.setdefault("winchMode", s.winch["mode"])

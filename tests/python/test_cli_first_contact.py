@@ -18,9 +18,8 @@ import pytest
 
 from ucable.cli import main
 from ucable.fmu import CableFMU
-from ucable.scene import SceneResult, SceneWarning, load_scene, run_scene
+from ucable.scene import SceneResult, load_scene, run_scene
 from ucable.scene_schema import SceneFileError
-from ucable.tables import read_columns
 
 ROOT = Path(__file__).resolve().parents[2]
 DECKS = ROOT / "tests" / "data" / "decks"
@@ -37,6 +36,18 @@ def cli(*args, fmu_file=None, cwd=None, prelude=""):
         env["UC_FMU"] = str(fmu_file)
     return subprocess.run([sys.executable, "-c", code, *map(str, args)], capture_output=True, text=True,
                           cwd=cwd, env=env, timeout=600)
+
+
+def read_columns(path):
+    from ucable.tables import read_columns
+
+    return read_columns(path)
+
+
+def scene_warning():
+    from ucable.scene import SceneWarning
+
+    return SceneWarning
 
 
 def one_line_error(p, code):
@@ -87,11 +98,11 @@ def test_recorded_stiffness_of_a_mooring_system(fmu_file, tmp_path):
                         ", ".join(f'"{n}"' for n in MATRIX) + "]")
     (tmp_path / "s.toml").write_text(text)
     assert main(["run", str(tmp_path / "s.toml"), "--out", str(tmp_path / "o")]) == 0
-    back = read_columns(tmp_path / "o" / "result.csv")
-    assert set(MATRIX) <= set(back) and np.all(back["body[1].stiffness[1,1]"] > 0.0)
     with open(tmp_path / "o" / "result.csv", newline="") as f:
         rows = list(csv.reader(f))
     assert {len(r) for r in rows} == {len(rows[0])}
+    back = read_columns(tmp_path / "o" / "result.csv")
+    assert set(MATRIX) <= set(back) and np.all(back["body[1].stiffness[1,1]"] > 0.0)
 
 
 def test_requested_line_outputs_are_kept_when_zero(fmu_file):
@@ -147,6 +158,38 @@ def test_summary_plot_of_a_sweep_where_every_run_failed(tmp_path):
                 for v in values]
         plot_summary(rows, [name], tmp_path / f"{name}.png", "all failed")
         assert (tmp_path / f"{name}.png").stat().st_size > 0
+
+
+def fake_sweep(status):
+    from ucable.sweep import SUMMARY
+
+    def run_sweep(scene, vary, fixed, workers, scheduler, progress):
+        rows = [{"Cdn": v, **{k: 1e4 for k in SUMMARY}, "cpuSeconds": 0.1, "status": status, "error": ""}
+                for v in vary["Cdn"]]
+        return rows, 0.1
+    return run_sweep
+
+
+def test_a_summary_plot_that_fails_keeps_the_table_and_says_so(tmp_path, monkeypatch, capsys):
+    import ucable.sweep
+
+    def crash(*args):
+        raise OverflowError("In draw_path: Exceeded cell block limit")
+    monkeypatch.setattr(ucable.sweep, "run_sweep", fake_sweep("ok"))
+    monkeypatch.setattr(ucable.sweep, "plot_summary", crash)
+    assert main(["sweep", "hopland_accelerate", "--vary", "Cdn=1.2,1.4", "--out", str(tmp_path / "s")]) == 0
+    err = capsys.readouterr().err
+    assert "ucable: warning: summary.png not written: OverflowError: In draw_path" in err
+    assert (tmp_path / "s" / "results.csv").is_file() and not (tmp_path / "s" / "summary.png").exists()
+
+
+def test_a_sweep_where_every_run_failed_draws_no_summary(tmp_path, monkeypatch, capsys):
+    import ucable.sweep
+
+    monkeypatch.setattr(ucable.sweep, "run_sweep", fake_sweep("error"))
+    assert main(["sweep", "hopland_accelerate", "--vary", "Cdn=1.2,1.4", "--out", str(tmp_path / "s")]) == 1
+    assert "every run failed: no summary.png" in capsys.readouterr().err
+    assert (tmp_path / "s" / "results.csv").is_file() and not (tmp_path / "s" / "summary.png").exists()
 
 
 # ------------------------------------------------------------------------------- scenes copy/show
@@ -235,7 +278,7 @@ def test_a_one_line_deck_starts_at_its_vessel_point(fmu_file, tmp_path):
     import warnings
 
     with warnings.catch_warnings():
-        warnings.simplefilter("error", SceneWarning)
+        warnings.simplefilter("error", scene_warning())
         r = run_scene(load_scene(write_deck_scene(tmp_path)), fmu=fmu_file)
     assert r["tow.z"][0] == -20.0 and r["tow.x"][0] == 0.0
     assert r["towTension"][0] == pytest.approx(deck_start_tension(fmu_file, (0.0, 0.0, -20.0)), rel=1e-9)
@@ -243,7 +286,7 @@ def test_a_one_line_deck_starts_at_its_vessel_point(fmu_file, tmp_path):
 
 
 def test_a_tow_start_other_than_the_decks_is_said(fmu_file, tmp_path):
-    with pytest.warns(SceneWarning, match=r"\[tow\] start = \(0, 0, -10\) m is not the deck's tow point \(0, 0, -20\)"):
+    with pytest.warns(scene_warning(), match=r"\[tow\] start = \(0, 0, -10\) m is not the deck's tow point \(0, 0, -20\)"):
         r = run_scene(load_scene(write_deck_scene(tmp_path, "[0.0, 0.0, -10.0]")), fmu=fmu_file)
     assert r["tow.z"][0] == -10.0
 

@@ -104,11 +104,11 @@ def test_a_parameter_the_fmu_refuses_is_a_scene_mistake(tmp_path, capsys, fmu_fi
     assert err.count("fmi2") == 0  # the FMI function names are not repeated at the user
 
 
-def test_a_run_the_fmu_fails_on_is_one_line_exit_1(tmp_path, capsys, fmu_file):
-    """Not a key's mistake but a state the FMU cannot start from (the tow point below the seabed):
-    its message, one line, exit code 1."""
+def test_a_start_the_fmu_refuses_is_one_line_exit_2(tmp_path, capsys, fmu_file):
+    """Not a key's mistake but a state the FMU cannot start from (the tow point below the seabed): a
+    mistake in the scene all the same, its message, one line, exit code 2."""
     path = write(tmp_path, "[parameters]\nenableSeabed = true\nwaterDepth = 100.0\n[tow]\nstart = [0.0, 0.0, -150.0]\n")
-    assert main(["run", str(path), "--out", str(tmp_path / "o")]) == 1
+    assert main(["run", str(path), "--out", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err.strip()
     assert err.startswith(f"ucable: {path}: the FMU could not start: ") and "below the seabed" in err, err
     assert "\n" not in err
