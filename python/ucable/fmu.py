@@ -90,12 +90,15 @@ class CableFMU:
     """One instance of the UnderwaterCable FMU, addressed by variable names.
 
     Log messages of the FMU are collected in `self.messages` as (status label, category, text)
-    and, if `echo_log` is true, printed as well.
+    and, if `echo_log` is true, printed as well; a path inside the FMU's temporary extraction reads
+    <UnderwaterCable.fmu>/resources/...
     """
 
     def __init__(self, path: str | Path | None = None, parameters: dict | None = None,
                  instance_name: str = "cable", logging_on: bool = False, echo_log: bool = False):
         self.unzipdir, self.model_description = load(path)
+        # messages name the FMU's files as <UnderwaterCable.fmu>/..., not fmpy's temporary extraction
+        self._extracted_as = (str(self.unzipdir), f"<{Path(path if path is not None else require_fmu()).name}>")
         md = self.model_description
         self.variables = {v.name: v for v in md.modelVariables}
         self.messages: list = []
@@ -127,7 +130,7 @@ class CableFMU:
 
     # ------------------------------------------------------------------ logging
     def _log(self, _env, _instance, status, category, message):
-        text = _unescape(message)
+        text = _unescape(message).replace(*self._extracted_as)
         label = STATUS_LABELS[status] if 0 <= status < len(STATUS_LABELS) else str(status)
         cat = category.decode("utf-8", "replace") if category else ""
         self.messages.append((label, cat, text))

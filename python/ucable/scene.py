@@ -319,7 +319,6 @@ def _fmu_message(cable: CableFMU) -> str:
         if status not in ("ERROR", "FATAL"):
             continue
         text = message.split(": ", 1)[1] if message.startswith("fmi2") and ": " in message else message
-        text = text.replace(str(cable.unzipdir), "<the FMU>")  # fmpy's temporary directory says nothing
         if text not in said:
             said.append(text)
     return "; ".join(said)

@@ -224,6 +224,19 @@ def test_a_deck_that_is_not_there_is_a_scene_mistake_without_temporary_paths(fmu
     assert "ucable scenes copy" in err and "resources" not in err and "/tmp/tmp" not in err
 
 
+def test_fmu_messages_name_the_fmu_not_its_temporary_extraction(fmu_file):
+    from ucable.fmu import FMICallException
+
+    unit = CableFMU(fmu_file, parameters={"lineFile": "no_such_deck.dat"})
+    try:
+        with pytest.raises(FMICallException):
+            unit.initialize(0.0)
+        said = unit.log_text()
+        assert f"<{fmu_file.name}>/resources/no_such_deck.dat" in said and str(unit.unzipdir) not in said, said
+    finally:
+        unit.free()
+
+
 # ------------------------------------------------------------------------- optional modules
 @pytest.mark.parametrize("module, args, says", [
     ("libcosimpy", ["system", "towed_body", "--master", "libcosim", "--duration", "1"], 'pip install "ucable[libcosim]"'),
