@@ -117,8 +117,9 @@ def test_pip_install_runs_from_outside_the_clone(tmp_path):
     env_dir = tmp_path / "v"
     venv.create(env_dir, with_pip=True)
     pip = env_dir / "bin" / "pip"
-    p = subprocess.run([str(pip), "install", "-q", str(ROOT)], capture_output=True, text=True, timeout=3000)
+    p = subprocess.run([str(pip), "install", "-v", str(ROOT)], capture_output=True, text=True, timeout=3000)
     assert p.returncode == 0, p.stdout + p.stderr
+    assert "UnderwaterCable: the FMUs (FMI 2.0 and the FMI 3.0 variant) carry" in p.stdout + p.stderr  # CMake says
     py = env_dir / "bin" / "python"
     work = tmp_path / "elsewhere"
     work.mkdir()
@@ -131,6 +132,9 @@ def test_pip_install_runs_from_outside_the_clone(tmp_path):
     def ucable_cli(*args, timeout=600):
         return subprocess.run([exe, *args], capture_output=True, text=True, cwd=work, env=env, timeout=timeout)
 
+    f = ucable_cli("fmu")  # the platforms, after pip hid the build's output; the FMI 3.0 variant installed too
+    assert f.returncode == 0 and "site-packages" in f.stdout, f.stderr
+    assert f.stderr.startswith("ucable: FMI 2.0: linux64") and "FMI 3.0 variant" in f.stderr, f.stderr
     v = ucable_cli("--version")
     assert v.returncode == 0 and v.stdout.strip() == f"ucable {ucable.__version__}", v.stdout + v.stderr
     y = ucable_cli("system", "towed_body", "--duration", "20", "--out", "sys")
