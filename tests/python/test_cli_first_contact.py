@@ -249,6 +249,12 @@ def test_a_missing_optional_module_is_one_line_with_its_install_command(fmu_file
     assert f"the Python module {module!r} is not installed" in err and says in err, err
 
 
+@pytest.mark.parametrize("args", [["rnu", "turn90"], ["system", "towed_body", "--master", "fmpi"], ["sweep", "turn90"]])
+def test_a_command_line_mistake_is_one_line_exit_2(args):
+    err = one_line_error(cli(*args), 2)
+    assert err.startswith("ucable") and "--help" in err, err
+
+
 def test_an_unexpected_error_is_one_line(tmp_path, fmu_file):
     (tmp_path / "o").write_text("a file where the output directory should be")
     err = one_line_error(cli("run", "hopland_accelerate", "--out", tmp_path / "o", fmu_file=fmu_file), 1)
