@@ -56,6 +56,7 @@ from pathlib import Path
 import numpy as np
 
 from .fmu import NUM_STATIONS, CableFMU, FMICallException
+from .fmu import load as load_fmu
 from .orientation import ANGLES_XYZ, QUATERNION, quaternion_from_angles
 from .variables import MAX_LINES
 from .paths import find_scene, require_fmu
@@ -331,9 +332,11 @@ class SceneWarning(UserWarning):
 _VESSEL_POINT = re.compile(r"(?:not the file's vessel point|hold them at its X Y Z =) \(([^,()]+), ([^,()]+), ([^,()]+)\)")
 
 
-def deck_path(deck: str, directory: Path | None, where: str = "[parameters] lineFile") -> str:
+def deck_path(deck: str, directory: Path | None, where: str = "[parameters] lineFile",
+              resources: Path | None = None) -> str:
     """The file a scene's lineFile names: an absolute path, else next to the scene file, else in the
-    current directory; a SceneFileError saying where it looked when it is in none of them."""
+    current directory, else (the name kept, the FMU finds it) in the FMU's resources; a SceneFileError
+    saying where it looked when it is in none of them."""
     path = Path(deck).expanduser()
     if path.is_absolute():
         if path.is_file():
@@ -342,6 +345,8 @@ def deck_path(deck: str, directory: Path | None, where: str = "[parameters] line
     for base in ([directory] if directory is not None else []) + [Path.cwd()]:
         if (base / path).is_file():
             return str((base / path).resolve())
+    if resources is not None and (resources / path).is_file():
+        return deck
     near = f"next to the scene ({directory}) or " if directory is not None and directory != Path.cwd() else ""
     raise SceneFileError(f"{where} = {deck!r}: no such file {near}in the current directory ({Path.cwd()}); "
                          f"a shipped scene's decks come with it: ucable scenes copy NAME DIR")
@@ -408,13 +413,14 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
     data = np.zeros((n + 1, len(recorded)))
     tow = np.zeros((n + 1, 3))
     parameters = dict(s.parameters)
+    fmu = fmu or require_fmu()
     if parameters.get("lineFile"):
-        parameters["lineFile"] = deck_path(parameters["lineFile"], s.directory, f"{s.source}: [parameters] lineFile")
+        parameters["lineFile"] = deck_path(parameters["lineFile"], s.directory, f"{s.source}: [parameters] lineFile",
+                                           Path(load_fmu(fmu)[0]) / "resources")
     signals = dict(s.inputs)
     if s.winch:
         parameters.setdefault("winchMode", s.winch["mode"])
         signals[s.winch["input"]] = s.winch["table"]
-    fmu = fmu or require_fmu()
     motion = TowMotion(tow_start(s, fmu, parameters), s.duration, s.step)
     cable = CableFMU(fmu, parameters=parameters)
     t = 0.0

@@ -341,3 +341,20 @@ def test_the_wheel_installs_the_fmi3_variant_and_says_the_platforms():
 
     message = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["scikit-build"]["messages"]["after-success"]
     assert "ucable fmu" in message and "{" not in message
+
+
+def test_a_deck_in_the_fmus_resources_is_found_by_its_name(fmu_file, tmp_path, monkeypatch):
+    """A relative lineFile in none of the scene's directory and the current one, but in the FMU's
+    resources (an FMU that carries decks), goes to the FMU by its name, which finds it there."""
+    from ucable.fmu import load
+
+    resources = Path(load(fmu_file)[0]) / "resources"
+    resources.mkdir(exist_ok=True)
+    shutil.copyfile(DECKS / "chain.dat", resources / "resource_chain.dat")
+    monkeypatch.chdir(tmp_path)
+    try:
+        r = run_scene(load_scene({**load_scene(write_deck_scene(tmp_path)).data, "parameters":
+                                  {"lineFile": "resource_chain.dat"}}), fmu=fmu_file)
+        assert r["tow.z"][0] == -70.0  # chain.dat's Vessel point
+    finally:
+        (resources / "resource_chain.dat").unlink()
