@@ -143,3 +143,15 @@ def test_instances_dropped_without_free_are_freed(fmu_file, venv_python):
     alive, per_instance_kib = done.stdout.split()
     assert alive == "0"
     assert float(per_instance_kib) < 40.0, f"{per_instance_kib} KiB per instance dropped without free()"
+
+
+def test_instances_alive_at_exit_are_freed_cleanly(fmu_file, venv_python):
+    done = run_child(venv_python, f"""
+        from ucable.fmu import CableFMU
+        kept = [CableFMU({str(fmu_file)!r}, logging_on=True) for _ in range(3)]
+        for unit in kept:
+            unit.initialize()
+            unit.do_step(0.5, 0.0)
+        print("exiting")
+    """)
+    assert done.returncode == 0 and done.stdout.strip() == "exiting", done.stderr[-2000:]
