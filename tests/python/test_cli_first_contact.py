@@ -140,12 +140,12 @@ def test_cli_sweep_of_a_deck_scene_from_another_directory(fmu_file, tmp_path):
     scenes = tmp_path / "scenes"
     scenes.mkdir()
     path = write_deck_scene(scenes)
-    p = cli("sweep", path, "--vary", "Cdn=1.2,1.4", "--workers", "1", "--out", tmp_path / "s", fmu_file=fmu_file,
+    p = cli("sweep", path, "--vary", "Cdn=1.2", "--workers", "1", "--out", tmp_path / "s", fmu_file=fmu_file,
             cwd=tmp_path)
     assert p.returncode == 0, p.stderr
     with open(tmp_path / "s" / "results.csv") as f:
         rows = list(csv.DictReader(f))
-    assert [r["status"] for r in rows] == ["ok", "ok"], rows
+    assert [r["status"] for r in rows] == ["ok"], rows
     assert (tmp_path / "s" / "summary.png").stat().st_size > 0
 
 
