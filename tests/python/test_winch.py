@@ -25,10 +25,13 @@ STEP = 0.5
 
 def winch_cable(make_cable, length, mode=1, min_length=50.0, max_length=600.0, max_rate=1.0,
                 parameters_extra=None, **kwargs):
+    """The scene body on the Hopland cable with a winch; the drum without an acceleration limit
+    (winch.maxAcceleration 0: the rate applied over each step is the one set) unless
+    parameters_extra says otherwise."""
     params = {**DeployBody().fmu_parameters(), "length": length,
               "nElements": elements_for_length(length, NOMINAL), "initMode": 0,
               "winchMode": mode, "winch.minLength": min_length, "winch.maxLength": max_length,
-              "winch.maxRate": max_rate, **(parameters_extra or {})}
+              "winch.maxRate": max_rate, "winch.maxAcceleration": 0.0, **(parameters_extra or {})}
     return make_cable(parameters=params, **kwargs)
 
 
