@@ -10,7 +10,8 @@ between communication points, and the tensions do not depend on the master's ste
   step as a master without derivatives sets it (drum at its default acceleration), and held with
   no acceleration limit (winch.maxAcceleration 0, the former default);
 * the ramped pay-out: the deploy scene's body on 100 m at 2 kn paid out 0 -> 0.5 m/s in 10 s: the
-  0.5 s steps' towTensionMax / towTensionMin against the tension sampled every 0.01 s, step by step.
+  0.5 s steps' towTensionMax / towTensionMin against the tension sampled every 0.01 s, step by step
+  (the fine run with the derivative: the drum's true course), with and without the derivative.
 
     python -m studies.winch_steps [--quick] [--out DIR]
 """
@@ -90,22 +91,27 @@ def extremes(data: dict, held: bool = False, fmu=None):
     return float(np.max(tmax)), float(np.min(tmin)), time.process_time() - t0
 
 
-def step_errors(coarse: float = 0.5, fine: float = 0.01, duration: float = 30.0, extra: dict | None = None, fmu=None):
-    """The ramped pay-out at the coarse step: each step's towTensionMax/towTensionMin against the largest
-    and smallest tension sampled every `fine` seconds in the same interval (the fine run's samples,
-    both ends included). Returns (largest relative difference of the maxima, of the minima, the coarse
-    run's overall max and min, the fine samples' overall max and min)."""
-    rc = run_scene(payout(coarse, duration, extra), fmu=fmu)
+def step_errors(coarse: float = 0.5, fine: float = 0.01, duration: float = 30.0, extra: dict | None = None, fmu=None,
+                held: bool = False):
+    """The ramped pay-out at the coarse step (held: the rate held over each step, no derivative): each
+    step's towTensionMax/towTensionMin against the largest and smallest tension sampled every `fine`
+    seconds in the same interval by the scene runner (the fine run's samples, both ends included).
+    Returns (largest relative difference of the maxima, of the minima, the coarse run's overall max and
+    min, the fine samples' overall max and min)."""
+    if held:
+        _, _, cmax, cmin = run_held(payout(coarse, duration, extra), fmu)
+    else:
+        rc = run_scene(payout(coarse, duration, extra), fmu=fmu)
+        cmax, cmin = rc["towTensionMax"], rc["towTensionMin"]
     rf = run_scene(payout(fine, duration, extra), fmu=fmu)
     per = int(round(coarse / fine))
     T = rf["towTension"]
     dmax = dmin = 0.0
-    for k in range(1, len(rc.time)):
+    for k in range(1, len(cmax)):
         window = T[(k - 1) * per:k * per + 1]
-        dmax = max(dmax, abs(rc["towTensionMax"][k] - window.max()) / window.max())
-        dmin = max(dmin, abs(rc["towTensionMin"][k] - window.min()) / window.min())
-    return dmax, dmin, (float(rc["towTensionMax"].max()), float(rc["towTensionMin"].min())), \
-        (float(T.max()), float(T.min()))
+        dmax = max(dmax, abs(cmax[k] - window.max()) / window.max())
+        dmin = max(dmin, abs(cmin[k] - window.min()) / window.min())
+    return dmax, dmin, (float(cmax.max()), float(cmin.min())), (float(T.max()), float(T.min()))
 
 
 def main(argv=None) -> int:
@@ -132,13 +138,34 @@ def main(argv=None) -> int:
         print(f"| {h:g} | " + " | ".join(cells) + " |")
         sys.stdout.flush()
     print()
+    print("The shipped recover scene: towTensionMax / towTensionMin [N] against its "
+          f"{a.reference_step:g} s run with the derivative")
+    print()
+    recover = load_scene("recover").data
+    ref_max, ref_min, _ = extremes({**recover, "step": a.reference_step})
+    print(f"reference {a.reference_step:g} s: {ref_max:.1f} / {ref_min:.1f} N")
+    print()
+    print("| step [s] | rate with derivative | held, default drum (0.2 m/s²) | held, no drum limit (0) |")
+    print("|---:|---:|---:|---:|")
+    for h in a.steps:
+        cells = []
+        for held, extra in ((False, {}), (True, {}), (True, {"winch.maxAcceleration": 0.0})):
+            d = {**recover, "step": h, "parameters": {**recover["parameters"], **extra}}
+            tmax, tmin, _ = extremes(d, held=held)
+            cells.append(f"{tmax:.0f} ({100 * (tmax / ref_max - 1):+.2f} %) / {tmin:.0f} "
+                         f"({100 * (tmin / ref_min - 1):+.2f} %)")
+        print(f"| {h:g} | " + " | ".join(cells) + " |")
+        sys.stdout.flush()
+    print()
     print("Ramped pay-out at 0.5 s against the tension sampled every 0.01 s (largest difference over the steps):")
     print()
     print("| drum | towTensionMax | towTensionMin | coarse max / min [N] | 0.01 s max / min [N] |")
     print("|---|---:|---:|---:|---:|")
-    for label, extra in (("rate with derivative, default drum", None),
-                         ("rate with derivative, no drum limit", {"winch.maxAcceleration": 0.0})):
-        dmax, dmin, (cmax, cmin), (fmax, fmin) = step_errors(extra=extra)
+    for label, extra, held in (("rate with derivative, default drum", None, False),
+                               ("rate with derivative, no drum limit", {"winch.maxAcceleration": 0.0}, False),
+                               ("held, default drum", None, True),
+                               ("held, no drum limit", {"winch.maxAcceleration": 0.0}, True)):
+        dmax, dmin, (cmax, cmin), (fmax, fmin) = step_errors(extra=extra, held=held)
         print(f"| {label} | {100 * dmax:.3f} % | {100 * dmin:.3f} % | {cmax:.0f} / {cmin:.0f} | {fmax:.0f} / {fmin:.0f} |")
     return 0
 

@@ -224,7 +224,9 @@ TEST(WinchDrum, FollowsARampedCommandGivenWithItsSlope) {
         rate = s.rate1;
         const WinchStep staircase = plan_winch_step(command, held, length, h, lim);
         held = staircase.rate1;
-        if (k > 0) EXPECT_GT(std::fabs(staircase.rate(0.25 * h) - slope * (t0 + 0.25 * h)), 1e-3);
+        if (k > 0) {
+            EXPECT_GT(std::fabs(staircase.rate(0.25 * h) - slope * (t0 + 0.25 * h)), 1e-3);
+        }
     }
     EXPECT_NEAR(length, 100.0 + slope * 100.0 / 2.0, 1e-9);
 }

@@ -245,7 +245,8 @@ def test_a_fast_winch_on_a_fine_mesh_remeshes_many_elements_per_step(make_cable)
     element is merged first, so it never runs out), then paid out again."""
     cable = make_cable(parameters={"length": 20.0, "nElements": 20, "bottomEnd": 2, "body.mass": 400.0,
                                    "body.volume": 0.1, "body.CdA": 0.3, "winchMode": 1, "winch.minLength": 5.0,
-                                   "winch.maxLength": 200.0, "winch.maxRate": 20.0}, logging_on=True)
+                                   "winch.maxLength": 200.0, "winch.maxRate": 20.0,
+                                   "winch.maxAcceleration": 0.0}, logging_on=True)
     cable.initialize()
     t = 0.0
     for rate, h, n, length in ((10.0, 2.0, 5, 120.0), (-10.0, 2.0, 10, 5.0), (3.0, 0.5, 10, 20.0)):
