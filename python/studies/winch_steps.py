@@ -114,49 +114,44 @@ def step_errors(coarse: float = 0.5, fine: float = 0.01, duration: float = 30.0,
     return dmax, dmin, (float(cmax.max()), float(cmin.min())), (float(T.max()), float(T.min()))
 
 
+def recover(step: float, extra: dict | None = None) -> dict:
+    """The shipped recover scene at `step`, with parameter overrides."""
+    d = load_scene("recover").data
+    return {**d, "step": step, "parameters": {**d["parameters"], **(extra or {})}}
+
+
+DRUMS = ((False, None), (True, None), (True, {"winch.maxAcceleration": 0.0}))  # (held, parameters)
+
+
+def step_table(title: str, scene, steps, reference_step: float) -> None:
+    """Prints the extremes of scene(step, extra) at each step, with the rate given with its derivative,
+    held at the default drum and held without a drum limit, against the reference step's."""
+    ref_max, ref_min, cpu = extremes(scene(reference_step))
+    print(f"{title}: towTensionMax / towTensionMin [N] and their difference from the {reference_step:g} s run "
+          f"with the derivative ({ref_max:.1f} / {ref_min:.1f} N, {cpu:.1f} s CPU)")
+    print()
+    print("| step [s] | rate with derivative | held, default drum (0.2 m/s²) | held, no drum limit (0) |")
+    print("|---:|---:|---:|---:|")
+    for h in steps:
+        cells = []
+        for held, extra in DRUMS:
+            tmax, tmin, _ = extremes(scene(h, extra=extra), held=held)
+            cells.append(f"{tmax:.0f} ({100 * (tmax / ref_max - 1):+.2f} %) / {tmin:.0f} "
+                         f"({100 * (tmin / ref_min - 1):+.2f} %)")
+        print(f"| {h:g} | " + " | ".join(cells) + " |")
+        sys.stdout.flush()
+    print()
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--quick", action="store_true", help="the tests' 40 s variant of the tow job")
     ap.add_argument("--steps", type=float, nargs="+", default=[0.1, 0.5, 1.0])
     ap.add_argument("--reference-step", type=float, default=0.05)
     a = ap.parse_args(argv)
-    job = quick_tow_job if a.quick else tow_job
-    print(f"Tow job ({'40 s variant' if a.quick else '300 s'}): towTensionMax / towTensionMin [N] and their "
-          f"difference from the {a.reference_step:g} s run with the derivative")
-    print()
-    ref_max, ref_min, cpu = extremes(job(a.reference_step))
-    print(f"reference {a.reference_step:g} s: {ref_max:.1f} / {ref_min:.1f} N ({cpu:.1f} s CPU)")
-    print()
-    print("| step [s] | rate with derivative | held, default drum (0.2 m/s²) | held, no drum limit (0) |")
-    print("|---:|---:|---:|---:|")
-    for h in a.steps:
-        cells = []
-        for held, extra in ((False, None), (True, None), (True, {"winch.maxAcceleration": 0.0})):
-            tmax, tmin, _ = extremes(job(h, extra=extra), held=held)
-            cells.append(f"{tmax:.0f} ({100 * (tmax / ref_max - 1):+.2f} %) / {tmin:.0f} "
-                         f"({100 * (tmin / ref_min - 1):+.2f} %)")
-        print(f"| {h:g} | " + " | ".join(cells) + " |")
-        sys.stdout.flush()
-    print()
-    print("The shipped recover scene: towTensionMax / towTensionMin [N] against its "
-          f"{a.reference_step:g} s run with the derivative")
-    print()
-    recover = load_scene("recover").data
-    ref_max, ref_min, _ = extremes({**recover, "step": a.reference_step})
-    print(f"reference {a.reference_step:g} s: {ref_max:.1f} / {ref_min:.1f} N")
-    print()
-    print("| step [s] | rate with derivative | held, default drum (0.2 m/s²) | held, no drum limit (0) |")
-    print("|---:|---:|---:|---:|")
-    for h in a.steps:
-        cells = []
-        for held, extra in ((False, {}), (True, {}), (True, {"winch.maxAcceleration": 0.0})):
-            d = {**recover, "step": h, "parameters": {**recover["parameters"], **extra}}
-            tmax, tmin, _ = extremes(d, held=held)
-            cells.append(f"{tmax:.0f} ({100 * (tmax / ref_max - 1):+.2f} %) / {tmin:.0f} "
-                         f"({100 * (tmin / ref_min - 1):+.2f} %)")
-        print(f"| {h:g} | " + " | ".join(cells) + " |")
-        sys.stdout.flush()
-    print()
+    step_table("Tow job, 40 s variant" if a.quick else "Tow job, 300 s", quick_tow_job if a.quick else tow_job,
+               a.steps, a.reference_step)
+    step_table("The shipped recover scene", recover, a.steps, a.reference_step)
     print("Ramped pay-out at 0.5 s against the tension sampled every 0.01 s (largest difference over the steps):")
     print()
     print("| drum | towTensionMax | towTensionMin | coarse max / min [N] | 0.01 s max / min [N] |")
