@@ -1161,6 +1161,14 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
         event_ = event_.empty() ? std::string(text) : event_ + "; " + text;
     }
     winchLimit_ = limit;
+    if (limit != 0 && limits.maxAcceleration > 0.0 && winchRate_ != 0.0 && winchStep_.rate1 == 0.0) {
+        // braking along its envelope, the drum comes to rest at the limit within this step
+        char text[200];
+        std::snprintf(text, sizeof text, "winch: at t = %.6g s the drum stops at winch.%s = %.6g m",
+                      time_ + winchStep_.rampTime, limit > 0 ? "maxLength" : "minLength",
+                      limit > 0 ? limits.maxLength : limits.minLength);
+        event_ = event_.empty() ? std::string(text) : event_ + "; " + text;
+    }
     return true;
 }
 

@@ -153,7 +153,8 @@ WinchStep plan_step(double command, double rate0, double length, double h, const
     double lo = rate0 - A * h, hi = rate0 + A * h;
     // the largest end rate whose pay-out stays within the room to maxLength, the smallest whose
     // haul-in stays within that to minLength (slack: how far past them a drum may be)
-    const double room = limits.maxLength - length, roomIn = limits.minLength - length;
+    // (a length past a limit by round-off stays there: it is neither pushed further nor pulled back)
+    const double room = std::max(0.0, limits.maxLength - length), roomIn = std::min(0.0, limits.minLength - length);
     auto fits_out = [&](double r, double slack) { return reach(ramp_to(rate0, r, A, follow, h), A, h).out <= room + slack; };
     auto fits_in = [&](double r, double slack) { return reach(ramp_to(rate0, r, A, follow, h), A, h).in >= roomIn - slack; };
     // A drum already too fast to brake in time (a state from before the limit was set, a length

@@ -188,10 +188,11 @@ def winch_events(cable: CableFMU) -> list:
     winch.maxRate), one line each with the time and the value: 'winch: at t = ...'."""
     out = []
     for _, _, message in cable.messages:
-        for part in message.split("; "):
-            k = part.find("winch: at t = ")
-            if k >= 0 and part[k:] not in out:
-                out.append(part[k:])
+        k = message.find("winch: at t = ")
+        for part in message[k:].split("; winch: ") if k >= 0 else []:
+            line = part if part.startswith("winch: ") else "winch: " + part
+            if line not in out:
+                out.append(line)
     return out
 
 

@@ -263,6 +263,20 @@ TEST(WinchDrum, WithoutAnAccelerationLimitRunsAtTheRampedCommand) {
     EXPECT_GE(capped.length(0.5), 0.0);
 }
 
+// A drum at rest a round-off past its limit (the sum of a braking's steps) stays there: it neither
+// hauls in nor pays out further, whatever it is asked.
+TEST(WinchDrum, ADrumRestingPastALimitByRoundOffStaysThere) {
+    const WinchLimits lim{95.0, 104.0, 0.8, 0.2};
+    for (const double past : {1e-13, 1e-11}) {
+        const WinchStep out = plan_winch_step(1.0, 0.0, 104.0 + past, 0.5, lim);
+        EXPECT_EQ(out.rate1, 0.0);
+        EXPECT_NEAR(out.length(0.5), 0.0, 1e-12);
+        const WinchStep in = plan_winch_step(-1.0, 0.0, 95.0 - past, 0.5, lim);
+        EXPECT_EQ(in.rate1, 0.0);
+        EXPECT_NEAR(in.length(0.5), 0.0, 1e-12);
+    }
+}
+
 // A command beyond maxRate is flagged (the simulation logs its arrival once).
 TEST(WinchDrum, ACommandBeyondMaxRateIsFlagged) {
     const WinchLimits lim{50.0, 600.0, 1.0, 0.2};

@@ -131,7 +131,8 @@ def test_run_prints_the_limits_the_winch_reaches(fmu_file, tmp_path, capsys):
     out = capsys.readouterr().out
     lines = [line for line in out.splitlines() if line.startswith("winch: at t = ")]
     assert any("winch.maxRate = 0.8 m/s" in line for line in lines), out
-    assert any("winch.maxLength = 104 m" in line for line in lines), out
+    assert any("brakes to stop at winch.maxLength = 104 m" in line for line in lines), out
+    assert any("the drum stops at winch.maxLength = 104 m" in line for line in lines), out
     scene = limit_scene(tmp_path, '[ { rate = -0.5, duration = 30.0 } ]')
     assert cli.main(["run", str(scene), "--out", str(tmp_path / "out2")]) == 0
     out = capsys.readouterr().out
