@@ -155,24 +155,32 @@ WinchStep plan_step(double command, double rate0, double length, double h, const
     // haul-in stays within that to minLength (slack: how far past them a drum may be)
     // (a length past a limit by round-off stays there: it is neither pushed further nor pulled back)
     const double room = std::max(0.0, limits.maxLength - length), roomIn = std::min(0.0, limits.minLength - length);
-    auto fits_out = [&](double r, double slack) { return reach(ramp_to(rate0, r, A, follow, h), A, h).out <= room + slack; };
-    auto fits_in = [&](double r, double slack) { return reach(ramp_to(rate0, r, A, follow, h), A, h).in >= roomIn - slack; };
+    // (the drum at +-A to its end rate, then holding it)
+    auto fits_out = [&](double r, double slack) { return reach(ramp_to(rate0, r, A), A, h).out <= room + slack; };
+    auto fits_in = [&](double r, double slack) { return reach(ramp_to(rate0, r, A), A, h).in >= roomIn - slack; };
     // A drum already too fast to brake in time (a state from before the limit was set, a length
     // outside the limits) stops at the limit at once, as without an acceleration limit. The slack
     // is the round-off of a drum braking along its envelope (its stop distance computed two ways).
     const double slack = kLengthSlack * std::max(1.0, std::fabs(length));
-    const bool tooFast = !fits_out(lo, slack) || !fits_in(hi, slack);
-    const bool cutOut = tooFast || !fits_out(hi, 0.0), cutIn = tooFast || !fits_in(lo, 0.0);
-    // near a length limit the drum brakes along its envelope: it holds its rate between its ramps
-    if (follow != 0.0 && (cutOut || cutIn)) return plan_step(command, rate0, length, h, limits, 0.0);
-    if (tooFast) return hard_step(command, length, h, limits);
+    if (follow != 0.0) {
+        // following the command when that keeps the drum able to brake within the limits (to
+        // round-off: a ramp that ends on a limit); else, near a limit, the drum brakes along its
+        // envelope, holding its rate between its ramps
+        WinchStep s = ramp_to(rate0, std::clamp(wanted, lo, hi), A, follow, h);
+        const Reach r = reach(s, A, h);
+        if (!(r.out <= room + slack && r.in >= roomIn - slack)) return plan_step(command, rate0, length, h, limits, 0.0);
+        s.saturated = s.rate1 != command;
+        return s;
+    }
+    if (!fits_out(lo, slack) || !fits_in(hi, slack)) return hard_step(command, length, h, limits);
+    const bool cutOut = !fits_out(hi, 0.0), cutIn = !fits_in(lo, 0.0);
     const double outLo = lo, inHi = hi;  // the bisections start from what fits
     if (cutOut) hi = boundary(outLo, hi, [&](double r) { return fits_out(r, 0.0); });
     if (cutIn) lo = boundary(inHi, lo, [&](double r) { return fits_in(r, 0.0); });
     double rate1 = std::clamp(wanted, lo, hi);
     // braking onto a limit: the bisection's last bits of a rate are a drum at rest
     if ((cutOut || cutIn) && std::fabs(rate1) <= kLengthSlack * A * h) rate1 = 0.0;
-    WinchStep s = ramp_to(rate0, rate1, A, follow, h);
+    WinchStep s = ramp_to(rate0, rate1, A);
     s.saturated = rate1 != command;
     s.limit = (rate1 < wanted && cutOut) ? 1 : (rate1 > wanted && cutIn) ? -1 : 0;
     return s;

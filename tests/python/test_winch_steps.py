@@ -14,6 +14,7 @@ import pytest
 from ucable import cli
 from ucable.scene import load_scene
 from ucable.steady_tow import KNOT
+from ucable.scene import run_scene
 from studies.winch_steps import extremes, payout, quick_tow_job, step_errors
 
 
@@ -41,6 +42,21 @@ def test_the_recover_scene_start_does_not_depend_on_the_step(fmu_file):
     ref = extremes({**recover, "duration": 30.0, "step": 0.05}, fmu=fmu_file)
     tmax, tmin, _ = extremes({**recover, "duration": 30.0, "step": 1.0}, fmu=fmu_file)
     assert tmax == pytest.approx(ref[0], rel=0.01) and tmin == pytest.approx(ref[1], rel=0.01), (tmax, tmin, ref)
+
+
+def test_a_ramped_payout_onto_the_length_limit_follows_the_table_to_the_limit(fmu_file):
+    """Paid out 0 -> 0.5 m/s in 4 s, 6 s at 0.5 m/s and back to rest in 4 s: 5 m, onto winch.maxLength
+    105 m. The deployed length is the table's integral at every communication point, to the limit: the
+    drum follows the ramp down onto it (it does not brake early along its envelope and stop short)."""
+    d = payout(0.5, 24.0, {"winch.maxLength": 105.0})
+    d["winch"] = {"ramp": 4.0, "stages": [{"rate": 0.5, "duration": 10.0}, {"rate": 0.0, "duration": 14.0}]}
+    r = run_scene(d, fmu=fmu_file)
+    table = r.scene.winch["table"]
+    fine = np.linspace(0.0, 24.0, 24001)
+    rate = np.interp(fine, table["times"], table["values"])
+    paid = np.concatenate([[0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) * np.diff(fine))])
+    np.testing.assert_allclose(r["unstretchedLength"], 100.0 + np.interp(r.time, fine, paid), rtol=0, atol=1e-6)
+    assert r["unstretchedLength"][-1] == pytest.approx(105.0, abs=1e-9)
 
 
 def test_ramped_payout_extremes_within_each_step_match_the_tension_sampled_at_10_ms(fmu_file):
