@@ -168,7 +168,9 @@ WinchStep plan_step(double command, double rate0, double length, double h, const
         // envelope, holding its rate between its ramps
         WinchStep s = ramp_to(rate0, std::clamp(wanted, lo, hi), A, follow, h);
         const Reach r = reach(s, A, h);
-        if (!(r.out <= room + slack && r.in >= roomIn - slack)) return plan_step(command, rate0, length, h, limits, 0.0);
+        if (!(r.out <= room + slack && r.in >= roomIn - slack)) {
+            return plan_step(command, rate0, length, h, limits, 0.0);
+        }
         s.saturated = s.rate1 != command;
         return s;
     }
@@ -194,7 +196,8 @@ WinchStep plan_winch_step(double requested, double rate0, double length, double 
     const double command = requested + slope * h;  // the command at the step's end
     WinchStep s;
     if (!(A > 0.0)) {
-        s = slope == 0.0 ? hard_step(requested, length, h, limits) : free_step(requested, rate0, slope, length, h, limits);
+        s = slope == 0.0 ? hard_step(requested, length, h, limits)
+                         : free_step(requested, rate0, slope, length, h, limits);
     } else {
         // the drum follows the command's slope while the command is within +-maxRate
         const bool within = std::fabs(command) <= limits.maxRate && std::fabs(requested) <= limits.maxRate;

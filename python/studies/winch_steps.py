@@ -161,7 +161,8 @@ def main(argv=None) -> int:
                                ("held, default drum", None, True),
                                ("held, no drum limit", {"winch.maxAcceleration": 0.0}, True)):
         dmax, dmin, (cmax, cmin), (fmax, fmin) = step_errors(extra=extra, held=held)
-        print(f"| {label} | {100 * dmax:.3f} % | {100 * dmin:.3f} % | {cmax:.0f} / {cmin:.0f} | {fmax:.0f} / {fmin:.0f} |")
+        print(f"| {label} | {100 * dmax:.3f} % | {100 * dmin:.3f} % | {cmax:.0f} / {cmin:.0f} | "
+              f"{fmax:.0f} / {fmin:.0f} |")
     return 0
 
 

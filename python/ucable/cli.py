@@ -17,11 +17,11 @@ DIR/result.png, with --animate also DIR/result.gif; sweep writes DIR/results.csv
 combination: the varied values, towTensionMax, towTensionMin, towTensionFinal, endDepthFinal,
 cpuSeconds, status, error) and DIR/summary.png.
 
-run, sweep and system warn when the communication step is longer than a tenth of the shortest period or
-ramp in the scene (the tow's oscillations and speed or heading ramps, the waves' period, the winch's
-ramps, the ramps of input tables; a system: beyond the steps its accuracy is documented for); with
---strict that warning is a refusal (exit code 2). run prints the winch's events: a length limit (winch.minLength, winch.maxLength) or winch.maxRate reached, with
-the time and the value.
+run, sweep and system warn when the communication step is longer than a tenth of the shortest period
+or ramp in the scene (the tow's oscillations and speed or heading ramps, the waves' period, the
+winch's ramps, the ramps of input tables; a system: beyond the steps its accuracy is documented
+for); with --strict that warning is a refusal (exit code 2). run prints the winch's events: a length
+limit (winch.minLength, winch.maxLength) or winch.maxRate reached, with the time and the value.
 
 Exit codes: 0 done; 1 a run failed (the FMU's message is printed), or some runs of a sweep failed;
 2 a mistake in the scene or the command line (one line naming the file and the key), or with
