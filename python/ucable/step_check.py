@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import math
 
+from .variables import VARIABLES
+
 STEP_FRACTION = 0.1  # the longest step, as a fraction of the shortest period or ramp
 
 
@@ -51,8 +53,9 @@ def scene_periods(scene) -> list:
             out.append((float(m["period"]), f"[body] {dof}.period"))
             if m.get("ramp", 0.0) > 0.0 and m["ramp"] != m["period"]:
                 out.append((float(m["ramp"]), f"[body] {dof}.ramp"))
-    p = scene.parameters
-    if p.get("waves.mode", 0) and float(p.get("waves.height", 0.0)) > 0.0 and "waves.period" in p:
+    p = {name: v.start for name, v in VARIABLES.items() if name.startswith("waves.")}
+    p.update(scene.parameters)  # the FMU's defaults where the scene is silent
+    if p["waves.mode"] and float(p["waves.height"]) > 0.0:
         out.append((float(p["waves.period"]), "[parameters] waves.period"))
     if scene.winch:
         out += _table_segments(scene.winch["table"], f"[winch] stages ({scene.winch['input']})")
