@@ -169,6 +169,7 @@ fmi2Status uc_sim_do_step(UCInstance* inst, double tc, double h) {
     inst->inputs.endAccelerationGiven = 0;
     memset(inst->inputs.currentRate, 0, sizeof inst->inputs.currentRate);
     inst->inputs.currentScaleRate = 0.0;
+    inst->inputs.winchRateRate = 0.0;
     memset(inst->inputs.bodyAcceleration, 0, sizeof inst->inputs.bodyAcceleration);
     memset(inst->inputs.bodyAccelerationGiven, 0, sizeof inst->inputs.bodyAccelerationGiven);
     memset(inst->inputs.pointAcceleration, 0, sizeof inst->inputs.pointAcceleration);

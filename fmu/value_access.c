@@ -249,6 +249,10 @@ static fmi2Status set_one_derivative(UCInstance* inst, const UCVariable* v, int 
         inst->inputs.currentScaleRate = value;
         return fmi2OK;
     }
+    if (order == 1 && v->offset == offsetof(UCInputs, winchRate)) {
+        inst->inputs.winchRateRate = value;
+        return fmi2OK;
+    }
     if ((endVelocity >= 0 && order == 1) || (endPosition >= 0 && order == 2)) {
         inst->inputs.endAcceleration[endVelocity >= 0 ? endVelocity : endPosition] = value;
         mark_acceleration_given(inst, &inst->inputs.endAccelerationGiven);

@@ -624,6 +624,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         winchStep_ = WinchStep::hold(0.0);
         winchTop0_ = start.topLength;
         winchLimit_ = 0;
+        winchRateLimited_ = false;
         model_.set_top_length(winchTop0_);
         winchLength_ = model_.line().length;
     }
@@ -1128,7 +1129,24 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
     winchTop0_ = model_.top_length();
     if (p.winchMode == UC_WINCH_TENSION) return true;  // the rate follows the tension, step by step
     const double requested = in.winchRate;
-    winchStep_ = plan_winch_step(requested, winchRate_, winchLength_, h, limits);
+    if (!std::isfinite(in.winchRateRate)) {
+        char text[160];
+        std::snprintf(text, sizeof text, "der(winch.rate) = %g m/s2: the input derivative must be a finite number",
+                      in.winchRateRate);
+        error = text;
+        return false;
+    }
+    winchStep_ = plan_winch_step(requested, winchRate_, winchLength_, h, limits, in.winchRateRate);
+    // maxRate cut the command: log the arrival once.
+    if (winchStep_.rateLimited && !winchRateLimited_) {
+        char text[300];
+        std::snprintf(text, sizeof text,
+                      "winch: at t = %.6g s winch.rate %.6g m/s is beyond winch.maxRate = %.6g m/s: the drum runs at "
+                      "most at winch.maxRate (deployed length %.6g m)",
+                      time_, requested + in.winchRateRate * h, limits.maxRate, winchLength_);
+        event_ = event_.empty() ? std::string(text) : event_ + "; " + text;
+    }
+    winchRateLimited_ = winchStep_.rateLimited;
     // A length limit cut the request (not the speed limit): log the arrival once.
     const int limit = winchStep_.limit;
     if (limit != 0 && limit != winchLimit_) {
@@ -1140,9 +1158,17 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
                       limit > 0 ? "maxLength" : "minLength", limit > 0 ? limits.maxLength : limits.minLength,
                       limit > 0 ? "paying out" : "hauling in", winchLength_ + winchStep_.length(h), requested,
                       winchStep_.rate1);
-        event_ = text;
+        event_ = event_.empty() ? std::string(text) : event_ + "; " + text;
     }
     winchLimit_ = limit;
+    if (limit != 0 && limits.maxAcceleration > 0.0 && winchRate_ != 0.0 && winchStep_.rate1 == 0.0) {
+        // braking along its envelope, the drum comes to rest at the limit within this step
+        char text[200];
+        std::snprintf(text, sizeof text, "winch: at t = %.6g s the drum stops at winch.%s = %.6g m",
+                      time_ + winchStep_.rampTime, limit > 0 ? "maxLength" : "minLength",
+                      limit > 0 ? limits.maxLength : limits.minLength);
+        event_ = event_.empty() ? std::string(text) : event_ + "; " + text;
+    }
     return true;
 }
 

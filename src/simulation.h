@@ -218,6 +218,7 @@ private:
     double winchRate_ = 0.0, winchTop0_ = 0.0;  // the rate at time_ (rate winch: the drum's)
     WinchStep winchStep_;       // the rate winch's drum over the step from time_ (a hold between steps)
     int winchLimit_ = 0;        // -1 / +1: at the shortest / longest length (logged once per arrival)
+    bool winchRateLimited_ = false;  // winch.maxRate cut the command (logged once per arrival)
     std::string event_;
     bool compressionWarned_ = false;  // the compression warning is given once per instance
     // the mesh graded by the static profile at initialization (empty: each section's own), and the

@@ -154,7 +154,7 @@ typedef struct UCParams {
     int projectedErrorControl; /* projectedErrorControl: error test of the time integrator along and across the cable: the local error of each node's tangent along its direction is held to the tension tolerance (its length is 1 + strain), the part across it (a rotation, which strains nothing to first order) to `positionTolerance` over the element length; false: every component to the tighter of the two. Not used while `relTol` or `absTol` is positive ([docs/error_control.md](docs/error_control.md)) */
     double seabedContactSpacing; /* seabedContactSpacing [m]: largest distance along the cable between the points at which the seabed contact is integrated, on elements whose five axial points are farther apart (3-point Gauss rules on up to 16 equal intervals, at most 48 points per element); 0: the five axial points of every element. A coarse mesh on the seabed wants about the length of cable over which a touchdown crosses the contact's smoothing band (5 % of the diameter), sqrt(2 delta / kappa) at a touchdown of curvature kappa: 1-5 m on usual moorings ([docs/model.md](docs/model.md), contact sampling) */
     int solverMaxOrder; /* solver.maxOrder: highest order of the time integrator's variable-order BDF formulas (1–5). 5 (the default) takes the fewest steps where the tolerance is tight; orders 3–5 are not A-stable, so at a loose tolerance lightly damped fast modes (a stiff cable's axial and bending ringing) can hold the steps below the size the error test asks for, and 2, the highest A-stable order, then takes fewer steps for the same answer (the stiff power cable at tensionTolerance 0.1: 25–35 % fewer); 1 is backward Euler, which damps the most ([docs/error_control.md](docs/error_control.md), the integrator's order) */
-    double winchMaxAcceleration; /* winch.maxAcceleration [m/s2]: largest acceleration and deceleration of the winch drum: with `winchMode` 1 it ramps towards `winch.rate` and brakes in time to stop at `winch.minLength`/`winch.maxLength`; with `winchMode` 2 the commanded rate stays within that braking envelope (the drum's response is `winch.timeConstant`'s); 0 = no limit (the rate may change at once at a communication point) ([docs/winch.md](docs/winch.md)) */
+    double winchMaxAcceleration; /* winch.maxAcceleration [m/s2]: largest acceleration and deceleration of the winch drum; the default 0.2 m/s² is a winch drive that takes 5 s to reach 1 m/s ([docs/winch.md](docs/winch.md), the drum). With `winchMode` 1 it ramps towards `winch.rate` (and, once caught up, follows the input derivative of `winch.rate` when the master gives it) and brakes in time to stop at `winch.minLength`/`winch.maxLength`; with `winchMode` 2 the commanded rate stays within that braking envelope (the drum's response is `winch.timeConstant`'s); 0 = no limit (the rate may change at once at a communication point) */
     int meshGrading; /* meshGrading: where the static profile puts the nodes of a line held at both ends that touches the seabed or carries attachments: 0 each section's elements of equal length (between attachments); 1 graded within each section: a node at every touchdown and lift-off, elements short where the line turns; 2 (the default) graded along the whole line: the sections' `nElements` (their total) are shared out by the same rule, at least one per section, so a section lying on the seabed does not keep elements the hanging part needs ([docs/model.md](docs/model.md), initial equilibrium) */
     UCBodyAddedMassMatrix bodyAddedMassMatrix;
     double proxyTrackingGain; /* proxy.trackingGain: `bottomEnd` 4: position gain α of the tracking force, as a fraction of M/h² (M the proxy's inertia, h the communication step); 1 with `proxy.trackingDamping` 0.5 would put the body on the proxy in one step; the defaults 0.05 and 0.3 stay stable under Gauss-Seidel and Jacobi with ±50 % inertia error ([docs/cosimulation.md](docs/cosimulation.md)) */
@@ -177,7 +177,7 @@ typedef struct UCInputs {
     double twist; /* twist [rad]: rotation of the far end's material frame relative to the tow point's when `torqueMode` = 2 */
     double endLoadVelocity[3]; /* endLoadVelocity.x/y/z [m/s]: far-end velocity at which the partner evaluated `endLoad` (the point of its linearization `endLoadDamping`) */
     UCEndLoadDamping endLoadDamping;
-    double winchRate; /* winch.rate [m/s]: winch rate when `winchMode` = 1: positive pays out, negative hauls in (limited by `winch.maxRate` and the length limits) */
+    double winchRate; /* winch.rate [m/s]: winch rate when `winchMode` = 1: positive pays out, negative hauls in (limited by `winch.maxRate` and the length limits); its input derivative (`fmi2SetRealInputDerivatives`, order 1) makes the command a ramp over the step, which the drum follows */
     double winchTension; /* winch.tension [N]: tow tension the winch holds when `winchMode` = 2 */
     double currentScale; /* currentScale: factor on the current depth profile: the water moves with `current.x/y` + `currentScale` × profile(depth), so a current that strengthens or turns with the tide at every depth in proportion is this input (with its derivative through `fmi2SetRealInputDerivatives` it changes linearly over a step, and the water's acceleration acts on the line) */
     double towAcceleration[3]; /* tow.ax, tow.ay, tow.az [m/s2]: tow point acceleration for the coming step: the same as `der(tow.v*)` through `fmi2SetRealInputDerivatives`, for a master that cannot pass input derivatives (connect the vessel's acceleration here); used when set since the last step, otherwise the FMU estimates it from the last two velocity inputs; it is also the input of the derivatives' acceleration columns ([docs/cosimulation.md](docs/cosimulation.md)) */
@@ -192,6 +192,7 @@ typedef struct UCInputs {
     double pointAcceleration[48]; /* (not an FMU variable) [m/s2] per coupled point k (UC_MAX_POINTS x 3, at 3 k): der(point[k].vx/vy/vz) */
     int pointAccelerationGiven[16]; /* (not an FMU variable) per coupled point: 1 when pointAcceleration came from the master for this step */
     double currentScaleRate; /* (not an FMU variable) [1/s] der(currentScale) from fmi2SetRealInputDerivatives: the profile's scale changes linearly over the step; 0 if not given */
+    double winchRateRate; /* (not an FMU variable) [m/s2] der(winch.rate) from fmi2SetRealInputDerivatives: the rate command changes linearly over the step; 0 if not given */
 } UCInputs;
 
 typedef struct UCOutputs {
@@ -1473,7 +1474,7 @@ typedef struct UCOutputs {
     X(projectedErrorControl, 0) \
     X(seabedContactSpacing, 0.0) \
     X(solverMaxOrder, 5) \
-    X(winchMaxAcceleration, 0.0) \
+    X(winchMaxAcceleration, 0.2) \
     X(meshGrading, 2) \
     X(bodyAddedMassMatrix.x[0], 0.0) \
     X(bodyAddedMassMatrix.x[1], 0.0) \

@@ -44,42 +44,62 @@ WinchRate limit_winch_rate(double requested, double length, double h, const Winc
 }
 
 double WinchStep::length(double tau) const {
-    const double ramp = std::min(tau, rampTime);
-    return rate0 * ramp + 0.5 * acceleration * ramp * ramp + rate1 * (tau - ramp);
+    const double ramp = std::min(tau, rampTime), after = std::max(0.0, tau - rampTime);
+    return rate0 * ramp + 0.5 * acceleration * ramp * ramp + rateCaught * after + 0.5 * follow * after * after;
 }
 
-double WinchStep::rate(double tau) const { return tau < rampTime ? rate0 + acceleration * tau : rate1; }
+double WinchStep::rate(double tau) const {
+    return tau < rampTime ? rate0 + acceleration * tau : rateCaught + follow * (tau - rampTime);
+}
 
 namespace {
 
-// The step from rate0 to rate1 at acceleration A (|rate1 - rate0| <= A h).
-WinchStep ramp_to(double rate0, double rate1, double A) {
+// The step from rate0 to rate1 at the step's end (h): at +-A until it meets the command, whose slope
+// `follow` (|follow| <= A, |rate1 - rate0| <= A h) it follows after that; follow 0: at +-A to rate1,
+// then held.
+WinchStep ramp_to(double rate0, double rate1, double A, double follow = 0.0, double h = 0.0) {
     WinchStep s;
-    s.rate0 = rate0;
+    s.rate0 = s.rateCaught = rate0;
     s.rate1 = rate1;
-    s.rampTime = std::fabs(rate1 - rate0) / A;
-    s.acceleration = rate1 > rate0 ? A : rate1 < rate0 ? -A : 0.0;
+    if (follow == 0.0) {
+        s.rampTime = std::fabs(rate1 - rate0) / A;
+        s.acceleration = rate1 > rate0 ? A : rate1 < rate0 ? -A : 0.0;
+        s.rateCaught = rate1;
+        return s;
+    }
+    // rate0 + a r + follow (h - r) = rate1 with a = +-A: the drum catches up in r, then follows
+    const double D = rate1 - rate0 - follow * h;
+    s.follow = follow;
+    if (D == 0.0) return s;
+    s.acceleration = D > 0.0 ? A : -A;
+    s.rampTime = std::min(h, std::fabs(D) / (A - (D > 0.0 ? follow : -follow)));
+    s.rateCaught = rate0 + s.acceleration * s.rampTime;
     return s;
 }
 
-// The farthest the line gets paid out (above the step's start) along the step to rate1 and a
-// braking at A after it, and the farthest it gets hauled in (negative): both grow with rate1.
+// The farthest the line gets paid out (above the step's start) along the step and a braking at A
+// after it, and the farthest it gets hauled in (negative): both grow with the end rate.
 struct Reach {
     double out, in;
 };
-Reach reach(double rate0, double rate1, double A, double h) {
-    const WinchStep s = ramp_to(rate0, rate1, A);
+Reach reach(const WinchStep& s, double A, double h) {
     const double end = s.length(h);
     Reach r{std::max(0.0, end), std::min(0.0, end)};
-    // where the rate passes 0 inside the step (the length turns there), and the braking after it
-    if (rate0 * rate1 < 0.0) {
-        const double turn = rate0 * rate0 / (2.0 * A);
-        if (rate0 > 0.0) r.out = std::max(r.out, turn);
-        else r.in = std::min(r.in, -turn);
+    auto see = [&r](double x) {
+        r.out = std::max(r.out, x);
+        r.in = std::min(r.in, x);
+    };
+    // where the rate passes 0 inside the step (the length turns there)
+    if (s.acceleration != 0.0 && s.rate0 * s.acceleration < 0.0 && -s.rate0 / s.acceleration < s.rampTime) {
+        see(-s.rate0 * s.rate0 / (2.0 * s.acceleration));
     }
-    const double stop = rate1 * rate1 / (2.0 * A);
-    if (rate1 > 0.0) r.out = std::max(r.out, end + stop);
-    if (rate1 < 0.0) r.in = std::min(r.in, end - stop);
+    if (s.follow != 0.0 && s.rateCaught * s.follow < 0.0) {
+        const double turn = s.rampTime - s.rateCaught / s.follow;
+        if (turn < h) see(s.length(turn));
+    }
+    const double stop = std::isfinite(A) ? s.rate1 * s.rate1 / (2.0 * A) : 0.0;
+    if (s.rate1 > 0.0) r.out = std::max(r.out, end + stop);
+    if (s.rate1 < 0.0) r.in = std::min(r.in, end - stop);
     return r;
 }
 
@@ -96,38 +116,65 @@ double boundary(double good, double bad, Fits fits) {
 }
 constexpr double kLengthSlack = 1e-12;  // relative to the deployed length
 
-}  // namespace
-
-namespace {
-
 // The drum without an acceleration limit: at the rate limit_winch_rate allows over the whole step.
 WinchStep hard_step(double requested, double length, double h, const WinchLimits& limits) {
     const WinchRate r = limit_winch_rate(requested, length, h, limits);
-    WinchStep s;
-    s.rate0 = s.rate1 = r.rate;
+    WinchStep s = WinchStep::hold(r.rate);
     s.saturated = r.saturated;
     const double wanted = std::clamp(requested, -limits.maxRate, limits.maxRate);
     s.limit = r.rate < wanted ? 1 : r.rate > wanted ? -1 : 0;
     return s;
 }
 
-}  // namespace
+// Without an acceleration limit and with a command that changes over the step: the drum runs at the
+// command (within +-maxRate) when that keeps the length within the limits; else it holds the rate
+// hard_step allows for the command's mean over the step.
+WinchStep free_step(double requested, double rate0, double slope, double length, double h,
+                    const WinchLimits& limits) {
+    double r0 = std::clamp(requested, -limits.maxRate, limits.maxRate);
+    // a command that continues the drum's rate (to round-off) does not jump it: no axial shock, no restart
+    if (std::fabs(r0 - rate0) <= 1e-12 * std::max(1.0, std::fabs(rate0))) r0 = rate0;
+    const double r1 = std::clamp(requested + slope * h, -limits.maxRate, limits.maxRate);
+    WinchStep s;
+    s.rate0 = r0;
+    s.rate1 = s.rateCaught = r1;
+    s.rampTime = h;
+    s.acceleration = (r1 - r0) / h;
+    const Reach r = reach(s, INFINITY, h);
+    if (r.out <= limits.maxLength - length && r.in >= limits.minLength - length) return s;
+    return hard_step(requested + 0.5 * slope * h, length, h, limits);
+}
 
-WinchStep plan_winch_step(double requested, double rate0, double length, double h, const WinchLimits& limits) {
+// plan_winch_step with the drum following the command's slope `follow` once caught up (0: holding).
+WinchStep plan_step(double command, double rate0, double length, double h, const WinchLimits& limits,
+                    double follow) {
     const double A = limits.maxAcceleration;
-    if (!(A > 0.0)) return hard_step(requested, length, h, limits);
-    const double wanted = std::clamp(requested, -limits.maxRate, limits.maxRate);
+    const double wanted = std::clamp(command, -limits.maxRate, limits.maxRate);
     double lo = rate0 - A * h, hi = rate0 + A * h;
     // the largest end rate whose pay-out stays within the room to maxLength, the smallest whose
     // haul-in stays within that to minLength (slack: how far past them a drum may be)
-    const double room = limits.maxLength - length, roomIn = limits.minLength - length;
-    auto fits_out = [&](double r, double slack) { return reach(rate0, r, A, h).out <= room + slack; };
-    auto fits_in = [&](double r, double slack) { return reach(rate0, r, A, h).in >= roomIn - slack; };
+    // (a length past a limit by round-off stays there: it is neither pushed further nor pulled back)
+    const double room = std::max(0.0, limits.maxLength - length), roomIn = std::min(0.0, limits.minLength - length);
+    // (the drum at +-A to its end rate, then holding it)
+    auto fits_out = [&](double r, double slack) { return reach(ramp_to(rate0, r, A), A, h).out <= room + slack; };
+    auto fits_in = [&](double r, double slack) { return reach(ramp_to(rate0, r, A), A, h).in >= roomIn - slack; };
     // A drum already too fast to brake in time (a state from before the limit was set, a length
     // outside the limits) stops at the limit at once, as without an acceleration limit. The slack
     // is the round-off of a drum braking along its envelope (its stop distance computed two ways).
     const double slack = kLengthSlack * std::max(1.0, std::fabs(length));
-    if (!fits_out(lo, slack) || !fits_in(hi, slack)) return hard_step(requested, length, h, limits);
+    if (follow != 0.0) {
+        // following the command when that keeps the drum able to brake within the limits (to
+        // round-off: a ramp that ends on a limit); else, near a limit, the drum brakes along its
+        // envelope, holding its rate between its ramps
+        WinchStep s = ramp_to(rate0, std::clamp(wanted, lo, hi), A, follow, h);
+        const Reach r = reach(s, A, h);
+        if (!(r.out <= room + slack && r.in >= roomIn - slack)) {
+            return plan_step(command, rate0, length, h, limits, 0.0);
+        }
+        s.saturated = s.rate1 != command;
+        return s;
+    }
+    if (!fits_out(lo, slack) || !fits_in(hi, slack)) return hard_step(command, length, h, limits);
     const bool cutOut = !fits_out(hi, 0.0), cutIn = !fits_in(lo, 0.0);
     const double outLo = lo, inHi = hi;  // the bisections start from what fits
     if (cutOut) hi = boundary(outLo, hi, [&](double r) { return fits_out(r, 0.0); });
@@ -136,8 +183,27 @@ WinchStep plan_winch_step(double requested, double rate0, double length, double 
     // braking onto a limit: the bisection's last bits of a rate are a drum at rest
     if ((cutOut || cutIn) && std::fabs(rate1) <= kLengthSlack * A * h) rate1 = 0.0;
     WinchStep s = ramp_to(rate0, rate1, A);
-    s.saturated = rate1 != requested;
+    s.saturated = rate1 != command;
     s.limit = (rate1 < wanted && cutOut) ? 1 : (rate1 > wanted && cutIn) ? -1 : 0;
+    return s;
+}
+
+}  // namespace
+
+WinchStep plan_winch_step(double requested, double rate0, double length, double h, const WinchLimits& limits,
+                          double slope) {
+    const double A = limits.maxAcceleration;
+    const double command = requested + slope * h;  // the command at the step's end
+    WinchStep s;
+    if (!(A > 0.0)) {
+        s = slope == 0.0 ? hard_step(requested, length, h, limits)
+                         : free_step(requested, rate0, slope, length, h, limits);
+    } else {
+        // the drum follows the command's slope while the command is within +-maxRate
+        const bool within = std::fabs(command) <= limits.maxRate && std::fabs(requested) <= limits.maxRate;
+        s = plan_step(command, rate0, length, h, limits, within ? std::clamp(slope, -A, A) : 0.0);
+    }
+    s.rateLimited = std::fabs(requested) > limits.maxRate || std::fabs(command) > limits.maxRate;
     return s;
 }
 

@@ -44,27 +44,36 @@ struct WinchRate {
 WinchRate limit_winch_rate(double requested, double length, double h, const WinchLimits& limits);
 
 // The drum's motion over a step of h seconds with a finite acceleration A: from `rate0` it
-// accelerates at +-A towards `rate1` (reached after |rate1 - rate0| / A <= h), then holds it.
+// accelerates at `acceleration` (+-A) until rampTime, then follows the command's slope `follow`
+// (|follow| <= A; 0 for a command held over the step) to `rate1` at the step's end.
 struct WinchStep {
     double rate0 = 0.0, rate1 = 0.0, acceleration = 0.0;  // acceleration: +-A, or 0 once rate1 holds
-    double rampTime = 0.0;                                // when rate1 is reached
+    double rampTime = 0.0;                                // when the drum has caught up with the command
+    double follow = 0.0;                                  // [m/s2] the acceleration after rampTime
+    double rateCaught = 0.0;                              // [m/s] the rate at rampTime
     bool saturated = false;  // the request was cut by maxRate or by a length limit
     int limit = 0;           // -1 / +1: a length limit (minLength / maxLength) cut it
+    bool rateLimited = false;  // maxRate cut the request
     // Paid out since the step's start after tau seconds, and the rate then.
     double length(double tau) const;
     double rate(double tau) const;
     // A drum holding `rate` (the state between steps).
     static WinchStep hold(double rate) {
         WinchStep s;
-        s.rate0 = s.rate1 = rate;
+        s.rate0 = s.rate1 = s.rateCaught = rate;
         return s;
     }
 };
 
 // The step of a drum at `rate0` asked for `requested`, `length` deployed: the requested rate within
 // +-maxRate and what the acceleration reaches in h, and no faster than lets the drum brake at A to a
-// stop at the length limits (it stops exactly there). limits.maxAcceleration must be positive.
-WinchStep plan_winch_step(double requested, double rate0, double length, double h, const WinchLimits& limits);
+// stop at the length limits (it stops exactly there). `slope`: the command's derivative over the step
+// (the master's input derivative of winch.rate; 0 when not given): the command at the step's end is
+// requested + slope h, and the drum, once it has caught up with the command at +-A, follows its
+// slope (within +-A) instead of holding, so a ramped command reaches the drum as a ramp. Without an
+// acceleration limit (A = 0) the drum runs at the command, requested + slope t, within the limits.
+WinchStep plan_winch_step(double requested, double rate0, double length, double h, const WinchLimits& limits,
+                          double slope = 0.0);
 
 // The braking envelope of a drum with acceleration A: the fastest rate (+ pays out) at `length` from
 // which it can still stop within the limits; the constant-tension winch's command is held within it.

@@ -1,14 +1,14 @@
 """ucable: run scenes of the UnderwaterCable FMU, sweep them on Dask, run the shipped systems.
 
-    ucable run SCENE [--set NAME=VALUE ...] [--out DIR] [--animate]
+    ucable run SCENE [--set NAME=VALUE ...] [--out DIR] [--animate] [--strict]
     ucable sweep SCENE --vary NAME=V1,V2,... [--vary ...] [--set NAME=VALUE ...] [--workers N]
-                 [--scheduler ADDRESS] [--out DIR]
+                 [--scheduler ADDRESS] [--out DIR] [--strict]
     ucable scenes                  the shipped scenes
     ucable scenes show NAME        print a shipped scene (to copy and edit: ucable scenes show turn90 > my.toml);
                                    on stderr, the files it needs beside it (its lineFile deck)
     ucable scenes copy NAME DIR    copy a shipped scene and the decks it names into DIR
     ucable scenes format           print the scene format's reference (every key, unit, default)
-    ucable system NAME [--master fmpy|libcosim|newton] [--out DIR]    run a shipped system of FMUs
+    ucable system NAME [--master fmpy|libcosim|newton] [--step H] [--out DIR] [--strict]    run a shipped system
     ucable fmu                     the path of the FMU (on stderr: the platforms it and its FMI 3.0 variant
                                    carry binaries for, and how to add win64)
     ucable --version
@@ -20,10 +20,16 @@ DIR/result.png, with --animate also DIR/result.gif; sweep writes DIR/results.csv
 combination: the varied values, towTensionMax, towTensionMin, towTensionFinal, endDepthFinal,
 cpuSeconds, status, error) and DIR/summary.png.
 
+run, sweep and system warn when the communication step is longer than a tenth of the shortest period
+or ramp in the scene (the tow's oscillations and speed or heading ramps, the waves' period, the
+winch's ramps, the ramps of input tables; a system: beyond the steps its accuracy is documented
+for); with --strict that warning is a refusal (exit code 2). run prints the winch's events: a length
+limit (winch.minLength, winch.maxLength) or winch.maxRate reached, with the time and the value.
+
 Exit codes: 0 done; 1 a run failed (the FMU's message is printed), some runs of a sweep failed, or a
 Python module a feature needs is missing (the command that installs it is printed); 2 a mistake in the
 scene or the command line (one line naming the file and the key), including a scene the FMU refuses
-at the start. Every error is one line; --debug shows its traceback.
+at the start, or with --strict a step too long for the scene. Every error is one line; --debug shows its traceback.
 """
 
 from __future__ import annotations
@@ -51,10 +57,25 @@ def parse_sets(items) -> dict:
     return out
 
 
+def check_steps(scenes, strict: bool) -> None:
+    """Warns (stderr) when a scene's step is too long for it (step_check); with strict, refuses."""
+    from .scene_schema import SceneFileError
+    from .step_check import step_warnings
+
+    said = []
+    for scene in scenes:
+        said += [w for w in step_warnings(scene) if w not in said]
+    if said and strict:
+        raise SceneFileError(f"{said[0]} (refused: --strict)")
+    for w in said:
+        print(f"ucable: warning: {w}", file=sys.stderr)
+
+
 def cmd_run(a) -> int:
     from .scene import load_scene, run_scene
 
     scene = load_scene(a.scene).with_overrides(parse_sets(a.set))
+    check_steps([scene], a.strict)
     out = a.out or Path("out") / scene.name
     out.mkdir(parents=True, exist_ok=True)
     bar = ProgressBar(scene.duration, label=scene.name)
@@ -66,6 +87,8 @@ def cmd_run(a) -> int:
     if a.animate:
         result.animate(out / "result.gif")
         written.append("result.gif")
+    for event in result.events:
+        print(event)
     s = result.summary()
     print(f"tow tension max {s['towTensionMax']:.1f} N, min {s['towTensionMin']:.1f} N, final "
           f"{s['towTensionFinal']:.1f} N; far end {s['endDepthFinal']:.2f} m deep; wrote {out}/: {', '.join(written)}")
@@ -82,6 +105,7 @@ def cmd_sweep(a) -> int:
     vary = parse_vary(a.vary)
     fixed = parse_sets(a.set)
     check_vary(scene.with_overrides(fixed), vary)  # every value checked before anything runs
+    check_steps([scene.with_overrides({**fixed, **c}, source="--vary") for c in combinations(vary)], a.strict)
     n = len(combinations(vary))
     out = a.out or Path("out") / f"{scene.name}_sweep"
     out.mkdir(parents=True, exist_ok=True)
@@ -185,15 +209,23 @@ def cmd_system(a) -> int:
         for name in S.system_names():
             print(name)
         return 0
-    if a.name not in S.system_names():
-        from .scene_schema import SceneFileError, suggestion
+    from .scene_schema import SceneFileError, suggestion
 
+    if a.name not in S.system_names():
         raise SceneFileError(f"no system {a.name!r}{suggestion(a.name, S.system_names()) or ''} "
                              f"(shipped: {', '.join(S.system_names())})")
     if a.master == "libcosim":
         from .optional import require
 
         require("libcosimpy", "--master libcosim")
+
+    from .step_check import system_step_warnings
+
+    warned = system_step_warnings(a.name, a.master, a.step)
+    if warned and a.strict:
+        raise SceneFileError(f"{warned[0]} (refused: --strict)")
+    for w in warned:
+        print(f"ucable: warning: {w}", file=sys.stderr)
     out = a.out or Path("out") / "system" / a.name
     out.mkdir(parents=True, exist_ok=True)
     bar = ProgressBar(S.named_duration(a.name, a.manoeuvre, a.duration), label=a.name)
@@ -228,6 +260,8 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--set", action="append", metavar="NAME=VALUE", help="a parameter or setting (repeatable)")
     r.add_argument("--out", type=Path, default=None, help="output directory (default out/SCENE)")
     r.add_argument("--animate", action="store_true", help="also write result.gif, the 3-D shape over the run")
+    r.add_argument("--strict", action="store_true", help="refuse (exit code 2) what is otherwise a warning: a step "
+                   "too long for the scene")
     s = sub.add_parser("sweep", help="run the cartesian product of parameter values on Dask")
     s.add_argument("scene")
     s.add_argument("--vary", action="append", required=True, metavar="NAME=V1,V2,...")
@@ -235,6 +269,8 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--workers", type=int, default=2, help="local worker processes (default 2)")
     s.add_argument("--scheduler", default=None, help="address of a running Dask scheduler (default: a local cluster)")
     s.add_argument("--out", type=Path, default=None, help="output directory (default out/SCENE_sweep)")
+    s.add_argument("--strict", action="store_true", help="refuse (exit code 2) what is otherwise a warning: a step "
+                   "too long for a combination")
     sc = sub.add_parser("scenes", help="list the shipped scenes; print one (scenes show NAME) or the format (scenes format)")
     sc.add_argument("action", nargs="?", choices=("list", "show", "copy", "format"), default="list")
     sc.add_argument("name", nargs="?")
@@ -250,6 +286,8 @@ def build_parser() -> argparse.ArgumentParser:
     y.add_argument("--step", type=float, default=None, help="communication step [s] (default: the system file's)")
     y.add_argument("--duration", type=float, default=None, help="simulated time [s]")
     y.add_argument("--out", type=Path, default=None, help="output directory (default out/system/NAME)")
+    y.add_argument("--strict", action="store_true", help="refuse (exit code 2) a step beyond the accuracy the "
+                   "system documents (otherwise a warning)")
     sub.add_parser("fmu", help="print the path of the FMU")
     return ap
 

@@ -39,7 +39,9 @@ The tow point's velocity is the speed along the heading (plus the oscillations, 
 rest: their amplitude grows over `ramp` seconds, one period unless given, with a half cosine), its
 position the velocity integrated over a grid 20 times finer than the step, and its acceleration is
 passed to the FMU as the input derivative, as a master that knows the vessel's motion does. The
-other inputs take their value at the start of each communication step.
+other inputs take their value at the start of each communication step; the winch's rate goes with
+its derivative, the slope of its table over the step, so that a ramp reaches the drum as a ramp
+(exact on a piecewise-linear table whose corners are communication points).
 """
 
 from __future__ import annotations
@@ -175,6 +177,28 @@ def signal_at(signal, t):
     return np.full_like(np.asarray(t, dtype=float), float(signal)) if np.ndim(t) else float(signal)
 
 
+def signal_slope(signal, t0: float, t1: float) -> float:
+    """The mean slope of a checked signal over [t0, t1]: its derivative there when the table is linear
+    over the interval, and in any case the slope that brings it to its value at t1."""
+    if not isinstance(signal, dict):
+        return 0.0
+    return float((np.interp(t1, signal["times"], signal["values"]) -
+                  np.interp(t0, signal["times"], signal["values"])) / (t1 - t0))
+
+
+def winch_events(cable: CableFMU) -> list:
+    """The winch's events the FMU logged (a length limit reached, the drum braking to it, the rate cut by
+    winch.maxRate), one line each with the time and the value: 'winch: at t = ...'."""
+    out = []
+    for _, _, message in cable.messages:
+        k = message.find("winch: at t = ")
+        for part in message[k:].split("; winch: ") if k >= 0 else []:
+            line = part if part.startswith("winch: ") else "winch: " + part
+            if line not in out:
+                out.append(line)
+    return out
+
+
 def soft_start(t: np.ndarray, ramp: float):
     """The envelope e(t) = (1 - cos(pi t / ramp)) / 2 up to `ramp`, 1 after, and its two derivatives:
     an oscillation multiplied by it starts from rest (zero position, velocity and acceleration)."""
@@ -272,6 +296,7 @@ class SceneResult:
     time: np.ndarray
     columns: dict  # name -> array over time
     cpu: float
+    events: list = field(default_factory=list)  # the winch's events (winch_events)
 
     def __getitem__(self, name: str) -> np.ndarray:
         return self.columns[name]
@@ -423,6 +448,8 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
         signals[s.winch["input"]] = s.winch["table"]
     motion = TowMotion(tow_start(s, fmu, parameters), s.duration, s.step)
     cable = CableFMU(fmu, parameters=parameters)
+    cable.slave.setDebugLogging(True, ["logEvents"])  # the winch's limits (winch_events)
+    rate_signal = signals.get("winch.rate") if isinstance(signals.get("winch.rate"), dict) else None
     t = 0.0
     try:
         def inputs(t):
@@ -447,6 +474,8 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
             t = times[k]
             cable.set(inputs(t))
             cable.set_input_derivatives(["tow.vx", "tow.vy", "tow.vz"], 1, list(motion.at(t)[2]))
+            if rate_signal is not None:
+                cable.set_input_derivatives(["winch.rate"], 1, [signal_slope(rate_signal, t, times[k + 1])])
             if body:
                 cable.set_input_derivatives(BODY_RATES, 1, [float(x) for x in body.at(t)[2]])
             cable.do_step(times[k + 1] - t, t)
@@ -458,9 +487,10 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
     except FMICallException as exc:  # say what the FMU said (the variable it refused, the failure)
         raise SceneError(f"{s.source}: the FMU failed at t = {t:g} s: {_fmu_message(cable) or exc}") from exc
     finally:
+        events = winch_events(cable)
         cable.free()
     requested = set(s.outputs)
     columns = {name: data[:, i] for i, name in enumerate(recorded)  # of the lines added with [body], the deck's
                if name in requested or name not in LINES_RECORDED or np.any(data[:, i] != 0.0)}
     columns.update({"tow.x": tow[:, 0], "tow.y": tow[:, 1], "tow.z": tow[:, 2]})
-    return SceneResult(s, times, columns, cpu)
+    return SceneResult(s, times, columns, cpu, events)

@@ -205,6 +205,87 @@ TEST(WinchDrum, WithoutAnAccelerationLimitItIsTheRateLimitOverTheStep) {
     }
 }
 
+// A ramped command given with its slope (the master's input derivative of winch.rate): the drum
+// follows the ramp exactly (its rate at every instant is the command's), while the same command held
+// over each step (no derivative) leaves the drum a staircase behind it.
+TEST(WinchDrum, FollowsARampedCommandGivenWithItsSlope) {
+    const WinchLimits lim{50.0, 600.0, 1.0, 0.2};
+    const double slope = 0.05, h = 0.5;  // 0 -> 0.5 m/s in 10 s
+    double rate = 0.0, length = 100.0, held = 0.0;
+    for (int k = 0; k < 20; ++k) {
+        const double t0 = k * h, command = slope * t0;
+        const WinchStep s = plan_winch_step(command, rate, length, h, lim, slope);
+        for (int i = 0; i <= 8; ++i) {
+            const double tau = h * i / 8.0;
+            ASSERT_NEAR(s.rate(tau), slope * (t0 + tau), 1e-12) << "step " << k << " tau " << tau;
+        }
+        ASSERT_NEAR(s.length(h), slope * ((t0 + h) * (t0 + h) - t0 * t0) / 2.0, 1e-12);
+        length += s.length(h);
+        rate = s.rate1;
+        const WinchStep staircase = plan_winch_step(command, held, length, h, lim);
+        held = staircase.rate1;
+        if (k > 0) {
+            EXPECT_GT(std::fabs(staircase.rate(0.25 * h) - slope * (t0 + 0.25 * h)), 1e-3);
+        }
+    }
+    EXPECT_NEAR(length, 100.0 + slope * 100.0 / 2.0, 1e-9);
+}
+
+// A drum behind the command catches up at +-A, then follows the command's slope; the rate stays
+// continuous and never changes faster than A.
+TEST(WinchDrum, CatchesUpWithARampAtItsAccelerationThenFollowsIt) {
+    const WinchLimits lim{50.0, 600.0, 1.0, 0.2};
+    const WinchStep s = plan_winch_step(0.3, 0.1, 100.0, 2.0, lim, 0.05);  // the command: 0.3 -> 0.4 m/s
+    EXPECT_DOUBLE_EQ(s.rate0, 0.1);
+    EXPECT_NEAR(s.rate1, 0.4, 1e-12);
+    EXPECT_NEAR(s.rampTime, 0.2 / (0.2 - 0.05), 1e-12);  // closes 0.2 m/s at A - slope
+    EXPECT_NEAR(s.rate(s.rampTime), 0.3 + 0.05 * s.rampTime, 1e-12);  // met the command
+    for (int i = 1; i <= 40; ++i) {
+        const double a = (s.rate(0.05 * i) - s.rate(0.05 * (i - 1))) / 0.05;
+        EXPECT_LE(std::fabs(a), 0.2 * (1 + 1e-9));
+    }
+    // a slope steeper than A: the drum accelerates at A
+    const WinchStep fast = plan_winch_step(0.0, 0.0, 100.0, 1.0, lim, 0.5);
+    EXPECT_NEAR(fast.rate1, 0.2, 1e-12);
+    EXPECT_NEAR(fast.length(1.0), 0.1, 1e-12);
+}
+
+// Without an acceleration limit the drum runs at the command, requested + slope t, within maxRate; a
+// length limit in the way falls back to the rate limit over the step.
+TEST(WinchDrum, WithoutAnAccelerationLimitRunsAtTheRampedCommand) {
+    const WinchLimits lim{50.0, 600.0, 1.0, 0.0};
+    const WinchStep s = plan_winch_step(0.2, 0.0, 100.0, 0.5, lim, 0.1);
+    EXPECT_DOUBLE_EQ(s.rate(0.0), 0.2);
+    EXPECT_NEAR(s.rate(0.5), 0.25, 1e-12);
+    EXPECT_NEAR(s.length(0.5), 0.5 * (0.2 + 0.25) * 0.5, 1e-12);
+    const WinchStep capped = plan_winch_step(0.2, 0.0, 599.95, 0.5, lim, 0.1);
+    EXPECT_LE(599.95 + capped.length(0.5), 600.0 + 1e-12);
+    EXPECT_GE(capped.length(0.5), 0.0);
+}
+
+// A drum at rest a round-off past its limit (the sum of a braking's steps) stays there: it neither
+// hauls in nor pays out further, whatever it is asked.
+TEST(WinchDrum, ADrumRestingPastALimitByRoundOffStaysThere) {
+    const WinchLimits lim{95.0, 104.0, 0.8, 0.2};
+    for (const double past : {1e-13, 1e-11}) {
+        const WinchStep out = plan_winch_step(1.0, 0.0, 104.0 + past, 0.5, lim);
+        EXPECT_EQ(out.rate1, 0.0);
+        EXPECT_NEAR(out.length(0.5), 0.0, 1e-12);
+        const WinchStep in = plan_winch_step(-1.0, 0.0, 95.0 - past, 0.5, lim);
+        EXPECT_EQ(in.rate1, 0.0);
+        EXPECT_NEAR(in.length(0.5), 0.0, 1e-12);
+    }
+}
+
+// A command beyond maxRate is flagged (the simulation logs its arrival once).
+TEST(WinchDrum, ACommandBeyondMaxRateIsFlagged) {
+    const WinchLimits lim{50.0, 600.0, 1.0, 0.2};
+    EXPECT_TRUE(plan_winch_step(1.5, 1.0, 100.0, 0.5, lim).rateLimited);
+    EXPECT_TRUE(plan_winch_step(0.9, 0.9, 100.0, 0.5, lim, 0.5).rateLimited);  // 1.15 m/s at the step's end
+    EXPECT_FALSE(plan_winch_step(0.9, 0.9, 100.0, 0.5, lim).rateLimited);
+    EXPECT_NEAR(plan_winch_step(1.5, 1.0, 100.0, 0.5, lim).rate1, 1.0, 1e-15);
+}
+
 TEST(WinchRate, ConstantTensionPaysOutAboveTheTargetAndHaulsInBelow) {
     EXPECT_GT(constant_tension_rate(12e3, 10e3, 1e-4, 1.0), 0.0);
     EXPECT_LT(constant_tension_rate(8e3, 10e3, 1e-4, 1.0), 0.0);
@@ -230,6 +311,7 @@ TEST(WinchLine, MassIsConservedThroughSplitsAndMerges) {
     p.winchMinLength = 40.0;
     p.winchMaxLength = 250.0;
     p.winchMaxRate = 2.0;
+    p.winchMaxAcceleration = 0.0;  // the rate the test integrates is the drum's (no ramp)
     CableSimulation sim(p);
     UCInputs in{};
     const double V = 1852.0 / 3600.0 * 2.0, h = 0.5;

@@ -25,10 +25,13 @@ STEP = 0.5
 
 def winch_cable(make_cable, length, mode=1, min_length=50.0, max_length=600.0, max_rate=1.0,
                 parameters_extra=None, **kwargs):
+    """The scene body on the Hopland cable with a winch; the drum without an acceleration limit
+    (winch.maxAcceleration 0: the rate applied over each step is the one set) unless
+    parameters_extra says otherwise."""
     params = {**DeployBody().fmu_parameters(), "length": length,
               "nElements": elements_for_length(length, NOMINAL), "initMode": 0,
               "winchMode": mode, "winch.minLength": min_length, "winch.maxLength": max_length,
-              "winch.maxRate": max_rate, **(parameters_extra or {})}
+              "winch.maxRate": max_rate, "winch.maxAcceleration": 0.0, **(parameters_extra or {})}
     return make_cable(parameters=params, **kwargs)
 
 
@@ -242,7 +245,8 @@ def test_a_fast_winch_on_a_fine_mesh_remeshes_many_elements_per_step(make_cable)
     element is merged first, so it never runs out), then paid out again."""
     cable = make_cable(parameters={"length": 20.0, "nElements": 20, "bottomEnd": 2, "body.mass": 400.0,
                                    "body.volume": 0.1, "body.CdA": 0.3, "winchMode": 1, "winch.minLength": 5.0,
-                                   "winch.maxLength": 200.0, "winch.maxRate": 20.0}, logging_on=True)
+                                   "winch.maxLength": 200.0, "winch.maxRate": 20.0,
+                                   "winch.maxAcceleration": 0.0}, logging_on=True)
     cable.initialize()
     t = 0.0
     for rate, h, n, length in ((10.0, 2.0, 5, 120.0), (-10.0, 2.0, 10, 5.0), (3.0, 0.5, 10, 20.0)):
