@@ -61,19 +61,30 @@ from .scene_schema import Checker, SceneFileError, validate
 from .steady_tow import KNOT
 
 RECORDED = ["towTension", "towTensionMax", "towTensionMin", "towForce.x", "towForce.y", "towForce.z",
-            "endPosition.x", "endPosition.y", "endPosition.z", "minTension"]
+            "endPosition.x", "endPosition.y", "endPosition.z", "minTension", "layback", "topDeclination"]
 ANCHORED_RECORDED = ["endTension", "groundedLength", "anchorUplift"]
 WINCH_RECORDED = ["unstretchedLength"]
 SHAPE = [f"shape.{c}[{k}]" for c in "xyz" for k in range(1, NUM_STATIONS + 1)]
+STATIONS = [f"{q}[{k}]" for q in ("tension", "curvature") for k in range(1, NUM_STATIONS + 1)]  # with the shape
 BODY_RATES = [f"body[1].{n}" for n in ("vx", "vy", "vz", "wx", "wy", "wz")]
 BODY_RECORDED = [f"body[1].{q}.{c}" for q in ("force", "moment") for c in "xyz"]
-LINES_RECORDED = [f"line[{k}].{q}" for k in range(1, MAX_LINES + 1) for q in ("fairleadTension", "anchorTension")]
+LINES_RECORDED = [f"line[{k}].{q}" for k in range(1, MAX_LINES + 1)
+                  for q in ("fairleadTension", "anchorTension", "groundedLength")]
+BODY_POSE = [f"body[1].{n}" for n in ("x", "y", "z", "roll", "pitch", "yaw")]  # the scene's motion of body 1
 SCENE_SETTINGS = ("duration", "step")
+TOW_SETTINGS = {"speed_kn": "speed_kn", "heading": "heading_deg", "heading_deg": "heading_deg"}  # NAME -> [tow] key
 BOTTOM_ANCHORED = 1
 
 
 class SceneError(RuntimeError):
-    """A scene the FMU failed on while running; the message holds what the FMU logged."""
+    """A scene the FMU failed on while running; the message holds what the FMU logged. `partial` is the
+    result up to the last communication point reached (None when the FMU failed at its start), `stopped`
+    the time of the step that failed."""
+
+    def __init__(self, message: str, partial: "SceneResult | None" = None, stopped: float | None = None):
+        super().__init__(message)
+        self.partial = partial
+        self.stopped = stopped
 
 
 @dataclass
@@ -103,14 +114,17 @@ class Scene:
                    directory=directory)
 
     def with_overrides(self, overrides: dict, source: str = "--set") -> "Scene":
-        """A copy with `overrides` applied: scene settings (duration, step, record_shape) or FMU
-        parameters; each is checked (a SceneFileError names `source` and the key)."""
+        """A copy with `overrides` applied: scene settings (duration, step, record_shape), the tow's
+        constant speed_kn or heading [deg] (replacing the [tow] table's), or FMU parameters; each is
+        checked (a SceneFileError names `source` and the key)."""
         check = Checker(None)
         data = copy.deepcopy(self.data)
         for key, value in overrides.items():
             where = f"{source} {key}"
             if key in SCENE_SETTINGS:
                 data[key] = check.number(value, where, positive=True)
+            elif key in TOW_SETTINGS:
+                data.setdefault("tow", {})[TOW_SETTINGS[key]] = check.number(value, where, nonnegative=key == "speed_kn")
             elif key == "record_shape":
                 if not isinstance(value, bool):
                     check.fail(where, "expected true or false")
@@ -269,6 +283,7 @@ class SceneResult:
     time: np.ndarray
     columns: dict  # name -> array over time
     cpu: float
+    seabed: float | None = None  # the seabed's depth when the FMU has one (enableSeabed; a deck's WtrDpth)
 
     def __getitem__(self, name: str) -> np.ndarray:
         return self.columns[name]
@@ -287,9 +302,23 @@ class SceneResult:
         return s
 
     def write_csv(self, path: Path) -> None:
-        names = ["time"] + list(self.columns)
-        data = np.column_stack([self.time] + [self.columns[n] for n in self.columns])
-        np.savetxt(path, data, delimiter=",", header=",".join(names), comments="", fmt="%.10g")
+        """result.csv: time and every column, named with its unit (angles in degrees: ucable.results)."""
+        from .results import labelled, write_table
+
+        write_table(path, labelled({"time": self.time, **self.columns}))
+
+    def table(self) -> list:
+        """The results table (ucable.summary): extremes with their times, per line, body and tow."""
+        from .summary import scene_summary
+
+        return scene_summary(self)
+
+    def write_summary(self, path: Path) -> None:
+        """summary.csv: the results table."""
+        from .results import write_table
+        from .summary import summary_columns
+
+        write_table(path, summary_columns(self.table()))
 
     def shapes(self) -> np.ndarray | None:
         """The recorded stations, shape [time, station, xyz], or None without record_shape."""
@@ -304,10 +333,10 @@ class SceneResult:
 
         plot_result(self, path)
 
-    def animate(self, path: Path, frames: int = 120) -> None:
+    def animate(self, path: Path, frames: int = 120, progress: bool = False) -> None:
         from .scene_plots import animate_result
 
-        animate_result(self, path, frames)
+        animate_result(self, path, frames, progress)
 
 
 def _fmu_message(cable: CableFMU) -> str:
@@ -338,9 +367,10 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
     body = BodyMotion(s.body) if s.body else None
     if body:
         extra = extra + BODY_RECORDED + LINES_RECORDED
-    recorded = list(dict.fromkeys(RECORDED + extra + s.outputs + (SHAPE if s.record_shape else [])))
+    recorded = list(dict.fromkeys(RECORDED + extra + s.outputs + (SHAPE + STATIONS if s.record_shape else [])))
     data = np.zeros((n + 1, len(recorded)))
     tow = np.zeros((n + 1, 3))
+    pose = np.zeros((n + 1, 6))
     parameters = dict(s.parameters)
     deck = parameters.get("lineFile")
     if deck and s.directory is not None and not Path(deck).is_absolute() and (s.directory / deck).is_file():
@@ -351,6 +381,8 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
         signals[s.winch["input"]] = s.winch["table"]
     cable = CableFMU(fmu or require_fmu(), parameters=parameters)
     t = 0.0
+    done = -1  # the last communication point reached
+    cpu0 = time.process_time()
     try:
         def inputs(t):
             x, v, _ = motion.at(t)
@@ -368,8 +400,11 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
             if "invalid parameter" in said:  # the scene's mistake, not a failure of the run
                 raise SceneFileError(f"{s.source}: {said}") from exc
             raise SceneError(f"{s.source}: the FMU could not start: {said}") from exc
+        seabed = float(cable.get("waterDepth")) if cable.get("enableSeabed") else None
         data[0] = cable.get_reals(recorded)
         tow[0] = motion.at(0.0)[0]
+        pose[0] = body.at(0.0)[0] if body else 0.0
+        done = 0
         for k in range(n):
             t = times[k]
             cable.set(inputs(t))
@@ -379,14 +414,31 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
             cable.do_step(times[k + 1] - t, t)
             data[k + 1] = cable.get_reals(recorded)
             tow[k + 1] = motion.at(times[k + 1])[0]
+            pose[k + 1] = body.at(times[k + 1])[0] if body else 0.0
+            done = k + 1
             if progress is not None:
                 progress(times[k + 1])
         cpu = time.process_time() - cpu0
     except FMICallException as exc:  # say what the FMU said (the variable it refused, the failure)
-        raise SceneError(f"{s.source}: the FMU failed at t = {t:g} s: {_fmu_message(cable) or exc}") from exc
+        rows = slice(0, done + 1)  # the communication points reached: a failed run keeps them
+        partial = None if done < 0 else SceneResult(
+            s, times[rows], _columns(recorded, data[rows], tow[rows], pose[rows] if body else None),
+            time.process_time() - cpu0, seabed)
+        raise SceneError(f"{s.source}: the FMU failed at t = {t:g} s: {_fmu_message(cable) or exc}",
+                         partial, float(t)) from exc
     finally:
         cable.free()
+    return SceneResult(s, times, _columns(recorded, data, tow, pose if body else None), cpu, seabed)
+
+
+def _columns(recorded: list, data: np.ndarray, tow: np.ndarray, pose: np.ndarray | None) -> dict:
+    """The result's columns: the recorded outputs (of line[k].* the deck's lines only, those whose
+    fairlead tension is not zero throughout), the tow point, body 1's pose when the scene moves it."""
+    lines = {name.split(".")[0] for i, name in enumerate(recorded)
+             if name.endswith(".fairleadTension") and name in LINES_RECORDED and np.any(data[:, i] != 0.0)}
     columns = {name: data[:, i] for i, name in enumerate(recorded)
-               if name not in LINES_RECORDED or np.any(data[:, i] != 0.0)}  # the deck's lines only
+               if name not in LINES_RECORDED or name.split(".")[0] in lines}
     columns.update({"tow.x": tow[:, 0], "tow.y": tow[:, 1], "tow.z": tow[:, 2]})
-    return SceneResult(s, times, columns, cpu)
+    if pose is not None:
+        columns.update({name: pose[:, i] for i, name in enumerate(BODY_POSE)})
+    return columns

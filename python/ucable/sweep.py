@@ -100,13 +100,17 @@ def run_sweep(scene: Scene, vary: dict, fixed: dict | None = None, workers: int 
 
 
 def write_results(rows: list[dict], names: list[str], path) -> None:
+    """results.csv: one row per combination, each column named with its unit (a varied name's from the
+    variable schema, its values as given: `length [m]`, `speed_kn [kn]`, `heading [deg]`)."""
+    from .results import TEXT_COLUMNS, label, schema_unit
+
     extra = [k for k in EXTRA_SUMMARY if any(k in r for r in rows)]
     columns = names + SUMMARY + extra + ["cpuSeconds", "status", "error"]
     with open(path, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=columns, extrasaction="ignore")
-        writer.writeheader()
+        writer = csv.writer(f)
+        writer.writerow([label(c, None if c in TEXT_COLUMNS else schema_unit(c)) for c in columns])
         for r in rows:
-            writer.writerow({c: f"{v:.10g}" if isinstance(v := r.get(c, ""), float) else v for c in columns})
+            writer.writerow([f"{v:.10g}" if isinstance(v := r.get(c, ""), float) else v for c in columns])
 
 
 def _numeric(values) -> bool:
