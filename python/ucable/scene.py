@@ -400,7 +400,7 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
             if "invalid parameter" in said:  # the scene's mistake, not a failure of the run
                 raise SceneFileError(f"{s.source}: {said}") from exc
             raise SceneError(f"{s.source}: the FMU could not start: {said}") from exc
-        seabed = float(cable.get("waterDepth")) if cable.get("enableSeabed") else None
+        seabed = seabed_depth(cable, parameters)
         data[0] = cable.get_reals(recorded)
         tow[0] = motion.at(0.0)[0]
         pose[0] = body.at(0.0)[0] if body else 0.0
@@ -429,6 +429,43 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
     finally:
         cable.free()
     return SceneResult(s, times, _columns(recorded, data, tow, pose if body else None), cpu, seabed)
+
+
+def deck_water_depth(path) -> float | None:
+    """A MoorDyn deck's water depth as MoorDyn takes it: its OPTIONS row `VALUE WtrDpth`, else the depth
+    of its deepest point (the POINTS, CONNECTIONS or NODES table's Z); None when neither is found."""
+    try:
+        text = Path(path).read_text(errors="replace")
+    except OSError:
+        return None
+    section, deepest = "", None
+    for row in text.splitlines():
+        tokens = row.split()
+        if row.lstrip().startswith("---"):
+            section = row.upper()
+            continue
+        if len(tokens) >= 2 and tokens[1].lower() == "wtrdpth":
+            try:
+                return float(tokens[0])
+            except ValueError:
+                return None
+        if any(k in section for k in ("POINT", "CONNECTION", "NODE")) and len(tokens) >= 5 and tokens[0].isdigit():
+            try:
+                z = float(tokens[4])
+            except ValueError:
+                continue
+            deepest = -z if deepest is None else max(deepest, -z)
+    return deepest
+
+
+def seabed_depth(cable: CableFMU, parameters: dict) -> float | None:
+    """The depth of the seabed the run has, for the plots: a deck's WtrDpth (MoorDyn always has its seabed
+    there) unless the scene sets waterDepth, else the FMU's waterDepth when enableSeabed is on; None
+    without a seabed."""
+    deck = deck_water_depth(parameters["lineFile"]) if parameters.get("lineFile") else None
+    if deck is not None and "waterDepth" not in parameters:
+        return deck
+    return float(cable.get("waterDepth")) if cable.get("enableSeabed") else None
 
 
 def _columns(recorded: list, data: np.ndarray, tow: np.ndarray, pose: np.ndarray | None) -> dict:

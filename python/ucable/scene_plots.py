@@ -185,7 +185,7 @@ def _anchored_panels(ax, result) -> None:
     ax[1].plot(t, c["groundedLength"], color="saddlebrown")
     ax[1].set_ylabel("grounded length [m]")
     for q, color in zip("xyz", ("tab:blue", "tab:orange", "tab:green")):
-        ax[2].plot(t, c[f"tow.{q}"] - c[f"tow.{q}"][0], color=color, label=f"{q} - {c[f'tow.{q}'][0]:g} m")
+        ax[2].plot(t, c[f"tow.{q}"] - c[f"tow.{q}"][0], color=color, label=f"{q} from {c[f'tow.{q}'][0]:g} m")
     ax[2].set_ylabel("fairlead motion [m]")
     ax[2].legend(fontsize=7)
     for i in (0, 1, 2):
@@ -285,9 +285,9 @@ def animate_result(result, path, frames: int = 120, progress: bool = False) -> N
     the horizontal distance from the tow point when the line turns) and plan view (x-y) to equal scale,
     the line coloured by its tension (the stations' tension; one colour without them), the tow point
     (vessel or fairlead) and its track, the far end (a body's marker), the surface and the seabed. With
-    `progress` a progress bar on stderr."""
+    `progress` a progress bar on stderr. The axes, ticks, tracks and seabed are drawn once; each frame
+    draws the moving artists over that background (the cost of a frame is the line, not the figure)."""
     plt = _pyplot()
-    from matplotlib import animation
     from matplotlib.collections import LineCollection
 
     from .progress import ProgressBar
@@ -299,52 +299,51 @@ def animate_result(result, path, frames: int = 120, progress: bool = False) -> N
     h, hlabel = side_coordinate(shapes)
     T = station_table(result, "tension")
     tension = None if T is None else 0.5 * (T[:, 1:] + T[:, :-1]) / 1e3  # per segment, kN
-    fig, (side, plan) = plt.subplots(2, 1, figsize=(8, 7.5), gridspec_kw={"height_ratios": [1, 1]})
-    zlo = -result.seabed * 1.03 if result.seabed is not None else None
-    zmin, zmax = _limits(np.append(shapes[..., 2], [0.0] + ([zlo] if zlo is not None else [])))
+    fig, (side, plan) = plt.subplots(1, 2, figsize=(11, 5), layout="constrained")
+    zlo = [-result.seabed * 1.03] if result.seabed is not None else []
+    zmin, zmax = _limits(np.concatenate([shapes[..., 2].ravel(), [0.0], zlo]))
     side.set_xlim(*_limits(h))
     side.set_ylim(zmin, zmax)
-    side.set_aspect("equal", adjustable="datalim")
     side.axhline(0.0, color="tab:blue", lw=1.0, alpha=0.6)
     if result.seabed is not None:
-        side.axhspan(zmin - 1e6, -result.seabed, color="saddlebrown", alpha=0.35, lw=0)
-        side.axhline(-result.seabed, color="saddlebrown", lw=1.2)
+        side.axhspan(zmin, -result.seabed, color="saddlebrown", alpha=0.35, lw=0)
+        side.axhline(-result.seabed, color="saddlebrown", lw=1.2, label="seabed")
     side.set_xlabel(hlabel)
     side.set_ylabel("z [m]")
     c = result.columns
     body = "body[1].x" in c
     vx, vy = (c["body[1].x"], c["body[1].y"]) if body else (c["tow.x"], c["tow.y"])
-    plan.set_xlim(*_limits(np.concatenate([shapes[..., 0].ravel(), vx])))
-    plan.set_ylim(*_limits(np.concatenate([shapes[..., 1].ravel(), vy])))
-    plan.set_aspect("equal", adjustable="datalim")
+    xlim = _limits(np.concatenate([shapes[..., 0].ravel(), vx]))
+    ylo, yhi = _limits(np.concatenate([shapes[..., 1].ravel(), vy]))
+    half = max(0.5 * (yhi - ylo), 0.15 * (xlim[1] - xlim[0]))  # a line in the x-z plane: a strip, not a hair
+    plan.set_xlim(*xlim)
+    plan.set_ylim(0.5 * (ylo + yhi) - half, 0.5 * (ylo + yhi) + half)
     plan.set_xlabel("x [m]")
     plan.set_ylabel("y [m]")
-    plan.plot(vx, vy, color="0.7", lw=1.0, label="vessel track" if not body else "body 1 track")
-    norm = plt.Normalize(*(_limits(tension, 0.0) if tension is not None else (0.0, 1.0)))
-    lines = []
+    plan.plot(vx, vy, color="0.6", lw=1.0, label="body 1 track" if body else "tow point (vessel) track")
     for a in (side, plan):
-        lc = LineCollection([], cmap="plasma", norm=norm, lw=2.5)
+        a.set_aspect("equal", adjustable="box")
+        a.grid(alpha=0.3)
+    norm = plt.Normalize(*(_limits(tension, 0.0) if tension is not None else (0.0, 1.0)))
+    lines = [LineCollection([], cmap="plasma", norm=norm, lw=2.5, animated=True) for _ in (side, plan)]
+    for a, lc in zip((side, plan), lines):
         if tension is None:
             lc.set_color("tab:blue")
         a.add_collection(lc)
-        lines.append(lc)
-        a.grid(alpha=0.3)
     if tension is not None:
-        fig.colorbar(lines[0], ax=[side, plan], label="tension [kN]", shrink=0.8)
-    top_side, = side.plot([], [], "kv", ms=10, label="tow point")
-    end_side, = side.plot([], [], "s", color="tab:green", ms=7, label="far end")
-    top_plan, = plan.plot([], [], "k^", ms=9)
-    end_plan, = plan.plot([], [], "s", color="tab:green", ms=6)
-    side.legend(fontsize=7, loc="lower left")
-    plan.legend(fontsize=7, loc="lower left")
-    label = fig.suptitle("")
-    bar = ProgressBar(len(idx), label="animation") if progress else None
+        fig.colorbar(lines[0], ax=[side, plan], label="tension [kN]", shrink=0.7)
+    top_side, = side.plot([], [], "kv", ms=10, label="tow point (vessel, fairlead)", animated=True)
+    end_side, = side.plot([], [], "s", color="tab:green", ms=7, label="far end", animated=True)
+    top_plan, = plan.plot([], [], "k^", ms=9, animated=True)
+    end_plan, = plan.plot([], [], "s", color="tab:green", ms=6, animated=True)
+    side.legend(fontsize=7)
+    plan.legend(fontsize=7)
+    label = fig.suptitle("", animated=True)
+    moving = [*lines, top_side, end_side, top_plan, end_plan, label]
 
     def frame(i):
         s = shapes[i]
-        side_xy = np.column_stack([h[i], s[:, 2]])
-        plan_xy = s[:, :2]
-        for lc, xy in zip(lines, (side_xy, plan_xy)):
+        for lc, xy in zip(lines, (np.column_stack([h[i], s[:, 2]]), s[:, :2])):
             lc.set_segments(np.stack([xy[:-1], xy[1:]], axis=1))
             if tension is not None:
                 lc.set_array(tension[i])
@@ -353,12 +352,50 @@ def animate_result(result, path, frames: int = 120, progress: bool = False) -> N
         top_plan.set_data([s[0, 0]], [s[0, 1]])
         end_plan.set_data([s[-1, 0]], [s[-1, 1]])
         label.set_text(f"{result.scene.title}\nt = {result.time[i]:.1f} s")
-        return [*lines, top_side, end_side, top_plan, end_plan, label]
 
-    anim = animation.FuncAnimation(fig, frame, frames=idx, blit=False)
-    writer = animation.FFMpegWriter(fps=15) if str(path).endswith(".mp4") else animation.PillowWriter(fps=15)
-    anim.save(str(path), writer=writer, dpi=72,
-              progress_callback=(lambda k, n: bar.update(k + 1, f"frame {k + 1}/{n}")) if bar else None)
+    bar = ProgressBar(len(idx), label="animation") if progress else None
+    images = render_frames(fig, moving, frame, idx, dpi=72,
+                           progress=(lambda k: bar.update(k, f"frame {k}/{len(idx)}")) if bar else None)
+    plt.close(fig)
+    write_movie(images, path, fps=15)
     if bar:
         bar.close(f"{len(idx)} frames")
-    plt.close(fig)
+
+
+def render_frames(fig, moving: list, frame, indices, dpi: float, progress=None) -> list:
+    """Frames as RGB images: the figure without its `moving` (animated) artists drawn once, then for each
+    index frame(i) updates them and they are drawn over a copy of that background."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from PIL import Image
+
+    fig.set_dpi(dpi)
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    background = canvas.copy_from_bbox(fig.bbox)
+    images = []
+    for k, i in enumerate(indices, start=1):
+        frame(i)
+        canvas.restore_region(background)
+        for artist in moving:
+            fig.draw_artist(artist)
+        images.append(Image.fromarray(np.asarray(canvas.buffer_rgba())[..., :3].copy()))
+        if progress is not None:
+            progress(k)
+    return images
+
+
+def write_movie(images: list, path, fps: float) -> None:
+    """A GIF (Pillow; one palette for every frame, so the colours do not flicker) or, for a .mp4 path, an
+    MP4 through ffmpeg."""
+    path = str(path)
+    if path.endswith(".mp4"):
+        import subprocess
+
+        w, h = images[0].size
+        cmd = ["ffmpeg", "-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", f"{w}x{h}",
+               "-r", str(fps), "-i", "-", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", path]
+        subprocess.run(cmd, input=b"".join(im.tobytes() for im in images), check=True)
+        return
+    palette = images[len(images) // 2].quantize(colors=255)
+    frames = [im.quantize(palette=palette, dither=0) for im in images]
+    frames[0].save(path, save_all=True, append_images=frames[1:], duration=int(round(1000 / fps)), loop=0)

@@ -113,14 +113,17 @@ def test_summary_of_a_mooring_system_holds_each_line_and_the_body(tmp_path, fmu_
     assert "body[1].pitch [deg]" in r.headers  # the scene's pose, its angles in degrees
 
 
-@pytest.mark.parametrize("scene, kind, first_panel_lines", [("hopland_accelerate", "tow", 1), ("chain_mooring", "anchored", 2),
-                                                            ("oc4_platform", "mooring", 6)])
-def test_the_plot_suits_the_kind_of_scene(fmu_file, scene, kind, first_panel_lines):
+@pytest.mark.parametrize("scene, kind, first_panel_lines, seabed", [
+    ("hopland_accelerate", "tow", 1, None), ("chain_mooring", "anchored", 2, 320.0),
+    ("oc4_platform", "mooring", 6, 200.0)])
+def test_the_plot_suits_the_kind_of_scene(fmu_file, scene, kind, first_panel_lines, seabed):
     """Per-line tensions for a mooring (fairlead and anchor of each of its 3 lines), the fairlead and anchor
     of an anchored line, the tow tension of a tow; the plan view holds the vessel's (tow point's, body's)
-    track; a range graph where the stations are recorded."""
+    track; a range graph where the stations are recorded; the seabed where the run has one (the OC4 deck
+    has no WtrDpth: MoorDyn's seabed is at its deepest point, the anchors 200 m down)."""
     r = run_scene(scene, overrides={"duration": 2.0}, fmu=fmu_file)
     assert plot_kind(r) == kind
+    assert r.seabed == seabed
     fig = result_figure(r)
     ax = fig.axes
     assert len(ax[0].lines) == first_panel_lines
