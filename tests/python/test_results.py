@@ -13,7 +13,6 @@ from ucable.cli import main
 from ucable.fmu import FMICallException
 from ucable.results import bare_name, labelled, write_table
 from ucable.scene import CableFMU, run_scene
-from ucable.scene_plots import plot_kind, result_figure
 from ucable.steady_tow import KNOT
 from ucable.system import system_names
 
@@ -121,6 +120,8 @@ def test_the_plot_suits_the_kind_of_scene(fmu_file, scene, kind, first_panel_lin
     of an anchored line, the tow tension of a tow; the plan view holds the vessel's (tow point's, body's)
     track; a range graph where the stations are recorded; the seabed where the run has one (the OC4 deck
     has no WtrDpth: MoorDyn's seabed is at its deepest point, the anchors 200 m down)."""
+    from ucable.scene_plots import plot_kind, result_figure
+
     r = run_scene(scene, overrides={"duration": 2.0}, fmu=fmu_file)
     assert plot_kind(r) == kind
     assert r.seabed == seabed
