@@ -63,8 +63,9 @@ def cmd_run(a) -> int:
         bar.close()
         if exc.partial is not None:  # keep what was computed, and say where it stopped
             written = write_run(exc.partial, out)
+            n = len(exc.partial.time)
             print(f"ucable: the run stopped at t = {exc.stopped:g} s of {scene.duration:g} s; wrote the "
-                  f"{len(exc.partial.time)} rows up to t = {exc.partial.time[-1]:g} s to {out}/: {', '.join(written)}",
+                  f"{n} row{'s' if n > 1 else ''} up to t = {exc.partial.time[-1]:g} s to {out}/: {', '.join(written)}",
                   file=sys.stderr)
         raise
     bar.close(f"{scene.duration:g} s simulated in {result.cpu:.2f} s CPU")
@@ -138,6 +139,7 @@ def cmd_scenes(a) -> int:
 def cmd_system(a) -> int:
     from . import system as S
     from .results import labelled, system_units, write_table
+    from .summary import format_table, summary_columns, system_summary
     from .system_cli import plot
 
     if a.name is None:
@@ -155,9 +157,11 @@ def cmd_system(a) -> int:
     r = S.run_named(a.name, a.master, a.step, a.duration, a.manoeuvre, progress=bar)
     bar.close(f"{r.time[-1]:g} s simulated in {len(r.time) - 1} steps, {r.cpu:.2f} s CPU")
     write_table(out / "result.csv", labelled(r.columns(), system_units(S.load_named_system(a.name))))
+    table = system_summary(r)
+    write_table(out / "summary.csv", summary_columns(table))
     plot(out / "result.png", r, f"{a.name}: {a.master}, step {r.step:g} s")
-    T = r["cable.towTension"]
-    print(f"tow tension: start {T[0]:.0f} N, max {max(T):.0f} N, end {T[-1]:.0f} N; wrote {out}/result.csv, result.png")
+    print(format_table(table))
+    print(f"wrote {out}/: result.csv, summary.csv, result.png")
     if r.stats:
         from .newton import summary
         print(summary(r))

@@ -110,6 +110,35 @@ def scene_summary(result) -> list[Extreme]:
     return rows
 
 
+def system_summary(r) -> list[Extreme]:
+    """The table of a system's result (ucable.system.SystemResult): a mooring system's lines (fairlead
+    tension), the lines' force on the platform and its horizontal offset; a towed body's tow tension, the
+    tension at the body, its depth and its layback behind the vessel's tow point."""
+    t, v = r.time, r.values
+    if "cable.line[1].fairleadTension" in v:
+        rows = []
+        k = 1
+        while f"cable.line[{k}].fairleadTension" in v:
+            rows.append(extreme(f"line[{k}].fairleadTension", f"line {k}: fairlead tension", t,
+                                v[f"cable.line[{k}].fairleadTension"]))
+            k += 1
+        F = np.linalg.norm(np.column_stack([v[f"cable.body[1].force.{q}"] for q in "xyz"]), axis=1)
+        rows.append(extreme("body[1].force", "platform: magnitude of the lines' force", t, F, unit="N"))
+        if "vessel.platform.x" in v:
+            x, y = v["vessel.platform.x"], v["vessel.platform.y"]
+            rows.append(extreme("body[1].offset", "platform: horizontal offset from its start", t,
+                                np.hypot(x - x[0], y - y[0]), unit="m"))
+        return rows
+    p = r.body_position
+    rows = [extreme("towTension", "tow tension", t, v["cable.towTension"]),
+            extreme("endTension", "tension at the body", t, v["cable.endTension"]),
+            extreme("bodyDepth", "towed body's depth below the surface", t, -p[:, 2], unit="m")]
+    if "vessel.tow.x" in v:
+        rows.append(extreme("layback", "horizontal distance tow point - body", t,
+                            np.hypot(p[:, 0] - v["vessel.tow.x"], p[:, 1] - v["vessel.tow.y"]), unit="m"))
+    return rows
+
+
 def summary_columns(rows: list[Extreme]) -> dict:
     """The table as columns for results.write_table (summary.csv)."""
     return {"quantity": [r.quantity for r in rows], "unit": [r.unit for r in rows],

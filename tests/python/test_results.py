@@ -196,13 +196,30 @@ def test_system_lists_the_systems_with_their_descriptions(capsys):
     assert described["towed_body_internal"].startswith("Vessel -> cable with the towed body inside the cable FMU")
 
 
-def test_system_writes_units_in_the_column_names(tmp_path, fmu_file, capsys):
+def test_system_writes_units_in_the_column_names_and_its_results_table(tmp_path, fmu_file, capsys):
     out = tmp_path / "sys"
-    assert main(["system", "towed_body", "--duration", "1", "--out", str(out)]) == 0
+    assert main(["system", "towed_body", "--duration", "2", "--out", str(out)]) == 0
     r = read_results(out / "result.csv")
     assert r.headers[:5] == ["time [s]", "towTension [N]", "body.x [m]", "body.y [m]", "body.z [m]"]
     assert "vessel.heading [deg]" in r.headers and "cable.endForce.z [N]" in r.headers
     assert all(bare_name(h)[1] is not None for h in r.headers), r.headers
+    s, t = read_results(out / "summary.csv"), r["time"]
+    assert list(s["quantity"]) == ["towTension", "endTension", "bodyDepth", "layback"]
+    check_extreme(s, "towTension", t, r["towTension"])
+    check_extreme(s, "bodyDepth", t, -r["body.z"])
+    check_extreme(s, "layback", t, np.hypot(r["body.x"] - r["vessel.tow.x"], r["body.y"] - r["vessel.tow.y"]))
+    assert "bodyDepth [m]" in capsys.readouterr().out
+
+
+def test_a_mooring_system_gets_its_lines_and_the_platform_in_the_table(tmp_path, fmu_file, capsys):
+    out = tmp_path / "sys"
+    assert main(["system", "moored_platform", "--duration", "4", "--out", str(out)]) == 0
+    r, s = read_results(out / "result.csv"), read_results(out / "summary.csv")
+    assert list(s["quantity"]) == [f"line[{k}].fairleadTension" for k in (1, 2, 3)] + ["body[1].force",
+                                                                                          "body[1].offset"]
+    for k in (1, 2, 3):
+        check_extreme(s, f"line[{k}].fairleadTension", r["time"], r[f"cable.line[{k}].fairleadTension"])
+    assert "vessel.platform.pitch [deg]" in r.headers
 
 
 def test_animation_has_every_frame_and_shows_progress(tmp_path, fmu_file, capsys):
