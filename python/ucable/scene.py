@@ -124,7 +124,8 @@ class Scene:
             if key in SCENE_SETTINGS:
                 data[key] = check.number(value, where, positive=True)
             elif key in TOW_SETTINGS:
-                data.setdefault("tow", {})[TOW_SETTINGS[key]] = check.number(value, where, nonnegative=key == "speed_kn")
+                speed = key == "speed_kn"
+                data.setdefault("tow", {})[TOW_SETTINGS[key]] = check.number(value, where, nonnegative=speed)
             elif key == "record_shape":
                 if not isinstance(value, bool):
                     check.fail(where, "expected true or false")

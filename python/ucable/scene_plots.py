@@ -101,11 +101,15 @@ def draw_range(ax, result) -> bool:
     shapes = result.shapes()
     if T is None or shapes is None:
         return False
-    s = arc_length(shapes[0])
+    L = result.columns.get("unstretchedLength")
+    if L is not None and np.ptp(L) > 1e-6 * max(abs(L[0]), 1.0):  # the stations move along a changing length
+        s, xlabel = np.linspace(0.0, 1.0, NUM_STATIONS), "fraction of the paid-out length from the tow point"
+    else:
+        s, xlabel = arc_length(shapes[0]), "arc length from the tow point at t = 0 [m]"
     ax.fill_between(s, T.min(axis=0) / 1e3, T.max(axis=0) / 1e3, color="tab:blue", alpha=0.25,
                     label="tension min-max over the run")
     ax.plot(s, T[-1] / 1e3, color="tab:blue", lw=1.2, label=f"tension at t = {result.time[-1]:g} s")
-    ax.set_xlabel("arc length from the tow point at t = 0 [m]")
+    ax.set_xlabel(xlabel)
     ax.set_ylabel("tension [kN]", color="tab:blue")
     ax.set_title("range graph")
     K = station_table(result, "curvature")
@@ -163,7 +167,7 @@ def _tow_panels(ax, result) -> None:
     ax[1].invert_yaxis()
     if "layback" in c:
         a2 = ax[1].twinx()
-        a2.plot(t, c["layback"], color="tab:orange", label="layback")
+        a2.plot(t, c["layback"], color="tab:orange", ls="--", label="layback")
         a2.set_ylabel("layback [m]", color="tab:orange")
     if "unstretchedLength" in c:
         ax[2].plot(t, c["unstretchedLength"], color="tab:purple")
