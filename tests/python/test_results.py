@@ -164,9 +164,11 @@ def test_a_failed_run_keeps_its_rows_and_says_where_it_stopped(tmp_path, fmu_fil
     assert (out / "summary.csv").is_file() and (out / "result.png").is_file()
 
 
-def test_speed_and_heading_set_the_tow(fmu_file):
+def test_speed_and_heading_set_the_tow(fmu_file, capsys):
     r = run_scene("hopland_accelerate", overrides={"duration": 4.0, "speed_kn": 2.0, "heading": 90.0}, fmu=fmu_file)
     assert r["tow.y"][-1] == pytest.approx(4.0 * 2.0 * KNOT, rel=1e-9) and abs(r["tow.x"][-1]) < 1e-9
+    assert main(["run", "hopland_accelerate", "--set", "speed_kn=-1"]) == 2
+    assert capsys.readouterr().err.strip() == "ucable: --set speed_kn: must not be negative, got -1"
 
 
 def test_sweep_varies_speed_and_heading_with_units_in_the_columns(fmu_file, tmp_path, capsys):
