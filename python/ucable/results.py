@@ -11,6 +11,7 @@ by the full header and by the bare name.
 from __future__ import annotations
 
 import csv
+import io
 import math
 import re
 
@@ -85,13 +86,22 @@ def _cell(v) -> str:
     return str(v)
 
 
+def _numeric(values) -> bool:
+    return isinstance(values, np.ndarray) and values.dtype.kind in "fiu"
+
+
 def write_table(path, columns: dict) -> None:
-    """A CSV of equally long columns (the header quoted where a name holds a comma)."""
+    """A CSV of equally long columns (the header quoted where a name holds a comma); numbers with 10
+    significant digits."""
     names = list(columns)
     values = [columns[n] for n in names]
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(names)
+        if all(_numeric(v) for v in values):  # one format per row, as numpy.savetxt
+            line = ",".join(["%.10g"] * len(values)) + "\n"
+            f.writelines(line % tuple(row) for row in np.column_stack(values))
+            return
         for row in zip(*values):
             w.writerow([_cell(v) for v in row])
 
@@ -139,12 +149,18 @@ def read_results(path) -> Results:
     `ucable system`: ucable.read_results("out/x/result.csv")["towTension"] is the array of the
     column `towTension [N]`."""
     with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    if not rows:
-        raise ValueError(f"{path}: empty, no header")
-    headers, body = rows[0], rows[1:]
-    columns = [_column([r[i] if i < len(r) else "" for r in body]) for i in range(len(headers))]
-    return Results(headers, columns)
+        headers = next(csv.reader(f), None)
+        if headers is None:
+            raise ValueError(f"{path}: empty, no header")
+        body = f.read()
+    if not body.strip():
+        return Results(headers, [np.zeros(0) for _ in headers])
+    try:  # all numbers (result.csv): numpy's parser
+        data = np.loadtxt(io.StringIO(body), delimiter=",", ndmin=2).reshape(-1, len(headers))
+        return Results(headers, list(data.T.copy()))
+    except ValueError:  # text columns too (a sweep's status and error)
+        rows = list(csv.reader(io.StringIO(body)))
+        return Results(headers, [_column([r[i] if i < len(r) else "" for r in rows]) for i in range(len(headers))])
 
 
 def fmu_units(path) -> dict:
