@@ -423,13 +423,13 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
     except FMICallException as exc:  # say what the FMU said (the variable it refused, the failure)
         rows = slice(0, done + 1)  # the communication points reached: a failed run keeps them
         partial = None if done < 0 else SceneResult(
-            s, times[rows], _columns(recorded, data[rows], tow[rows], pose[rows] if body else None),
+            s, times[rows], _columns(recorded, data[rows], tow[rows], pose[rows] if body else None, s.outputs),
             time.process_time() - cpu0, seabed)
         raise SceneError(f"{s.source}: the FMU failed at t = {t:g} s: {_fmu_message(cable) or exc}",
                          partial, float(t)) from exc
     finally:
         cable.free()
-    return SceneResult(s, times, _columns(recorded, data, tow, pose if body else None), cpu, seabed)
+    return SceneResult(s, times, _columns(recorded, data, tow, pose if body else None, s.outputs), cpu, seabed)
 
 
 def deck_water_depth(path) -> float | None:
@@ -469,13 +469,15 @@ def seabed_depth(cable: CableFMU, parameters: dict) -> float | None:
     return float(cable.get("waterDepth")) if cable.get("enableSeabed") else None
 
 
-def _columns(recorded: list, data: np.ndarray, tow: np.ndarray, pose: np.ndarray | None) -> dict:
-    """The result's columns: the recorded outputs (of line[k].* the deck's lines only, those whose
-    fairlead tension is not zero throughout), the tow point, body 1's pose when the scene moves it."""
+def _columns(recorded: list, data: np.ndarray, tow: np.ndarray, pose: np.ndarray | None,
+             requested: list) -> dict:
+    """The result's columns: the recorded outputs (of the line[k].* a mooring scene adds, the deck's lines
+    only, those whose fairlead tension is not zero throughout; every `requested` one), the tow point,
+    body 1's pose when the scene moves it."""
     lines = {name.split(".")[0] for i, name in enumerate(recorded)
              if name.endswith(".fairleadTension") and name in LINES_RECORDED and np.any(data[:, i] != 0.0)}
     columns = {name: data[:, i] for i, name in enumerate(recorded)
-               if name not in LINES_RECORDED or name.split(".")[0] in lines}
+               if name not in LINES_RECORDED or name in requested or name.split(".")[0] in lines}
     columns.update({"tow.x": tow[:, 0], "tow.y": tow[:, 1], "tow.z": tow[:, 2]})
     if pose is not None:
         columns.update({name: pose[:, i] for i, name in enumerate(BODY_POSE)})

@@ -233,3 +233,14 @@ def test_animation_has_every_frame_and_shows_progress(tmp_path, fmu_file, capsys
     with Image.open(out / "result.gif") as gif:
         assert gif.n_frames == 31  # every communication point of 3 s at 0.1 s
     assert "animation" in capsys.readouterr().err
+
+
+def test_requested_line_outputs_are_kept(fmu_file):
+    """A scene's `outputs` are recorded as asked: of the default tow (a free far end, no seabed) line 1's
+    grounded length is 0 throughout and its anchor tension nearly so, and both are columns (only the
+    line[k] columns a mooring scene adds for every possible line are left out for lines its deck does not
+    have)."""
+    asked = ["line[1].anchorTension", "line[1].groundedLength"]
+    r = run_scene({"name": "t", "duration": 1.0, "step": 0.5, "outputs": asked}, fmu=fmu_file)
+    assert r["line[1].groundedLength"].tolist() == [0.0, 0.0, 0.0]
+    assert np.max(np.abs(r["line[1].anchorTension"])) < 1e-3  # N, of a free end
