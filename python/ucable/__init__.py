@@ -5,6 +5,7 @@
     cable = ucable.CableFMU(parameters={"length": 300.0})   # one instance, variables by name
     result = ucable.run_scene("hopland_accelerate", overrides={"Cdn": 1.4})   # a scene file, run
     result["towTension"]                   # named outputs as numpy arrays
+    table = ucable.read_results("out/x/result.csv")   # a written table: table["towTension"] is "towTension [N]"
 
 Scenes (TOML files: parameters, tow-point manoeuvre, step, duration) and the command line
 (`ucable run`, `ucable sweep` on Dask) are in ucable.scene and ucable.cli; docs/package.md.
@@ -21,6 +22,9 @@ def __getattr__(name):  # the heavier modules load on first use
     if name == "CableFMU":
         from .fmu import CableFMU
         return CableFMU
+    if name == "read_results":
+        from .results import read_results
+        return read_results
     if name in ("Scene", "load_scene", "run_scene", "SceneResult"):
         from . import scene
         return getattr(scene, name)

@@ -14,11 +14,13 @@
     ucable --version
 
 SCENE is a scene file (TOML; the format: ucable scenes format) or the name of a shipped scene. NAME is
-any FMU parameter by its name, or the scene's duration or step. run writes DIR/result.csv (the
-outputs and, by default, every station's position shape.x[k], shape.y[k], shape.z[k]) and
+any FMU parameter by its name, the scene's duration or step, or the tow's speed_kn [kn] or heading
+[deg]. run writes DIR/result.csv (the outputs and, by default, every station's position, tension and
+curvature), DIR/summary.csv (the results table it prints: max and min with their times) and
 DIR/result.png, with --animate also DIR/result.gif; sweep writes DIR/results.csv (one row per
 combination: the varied values, towTensionMax, towTensionMin, towTensionFinal, endDepthFinal,
-cpuSeconds, status, error) and DIR/summary.png.
+cpuSeconds, status, error) and DIR/summary.png. Every column is named with its unit, angles in
+degrees (`towTension [N]`, `topDeclination [deg]`); ucable.read_results reads them back.
 
 run, sweep and system warn when the communication step is longer than a tenth of the shortest period
 or ramp in the scene (the tow's oscillations and speed or heading ramps, the waves' period, the
@@ -72,27 +74,44 @@ def check_steps(scenes, strict: bool) -> None:
 
 
 def cmd_run(a) -> int:
-    from .scene import load_scene, run_scene
+    from .scene import SceneError, load_scene, run_scene
+    from .summary import format_table
 
     scene = load_scene(a.scene).with_overrides(parse_sets(a.set))
     check_steps([scene], a.strict)
     out = a.out or Path("out") / scene.name
     out.mkdir(parents=True, exist_ok=True)
     bar = ProgressBar(scene.duration, label=scene.name)
-    result = run_scene(scene, progress=lambda t: bar.update(t, f"t = {t:7.1f} s"))
+    try:
+        result = run_scene(scene, progress=lambda t: bar.update(t, f"t = {t:7.1f} s"))
+    except SceneError as exc:
+        bar.close()
+        if exc.partial is not None:  # keep what was computed, and say where it stopped
+            written = write_run(exc.partial, out)
+            n = len(exc.partial.time)
+            print(f"ucable: the run stopped at t = {exc.stopped:g} s of {scene.duration:g} s; wrote the "
+                  f"{n} row{'s' if n > 1 else ''} up to t = {exc.partial.time[-1]:g} s to {out}/: {', '.join(written)}",
+                  file=sys.stderr)
+        raise
     bar.close(f"{scene.duration:g} s simulated in {result.cpu:.2f} s CPU")
-    result.write_csv(out / "result.csv")
-    result.plot(out / "result.png")
-    written = ["result.csv", "result.png"]
-    if a.animate:
-        result.animate(out / "result.gif")
-        written.append("result.gif")
+    written = write_run(result, out, animate=a.animate)
     for event in result.events:
         print(event)
-    s = result.summary()
-    print(f"tow tension max {s['towTensionMax']:.1f} N, min {s['towTensionMin']:.1f} N, final "
-          f"{s['towTensionFinal']:.1f} N; far end {s['endDepthFinal']:.2f} m deep; wrote {out}/: {', '.join(written)}")
+    print(format_table(result.table()))
+    print(f"wrote {out}/: {', '.join(written)}")
     return 0
+
+
+def write_run(result, out: Path, animate: bool = False) -> list[str]:
+    """result.csv, summary.csv, result.png (and result.gif) of a run (or of the part a failed run reached)."""
+    result.write_csv(out / "result.csv")
+    result.write_summary(out / "summary.csv")
+    result.plot(out / "result.png")
+    written = ["result.csv", "summary.csv", "result.png"]
+    if animate:
+        result.animate(out / "result.gif", progress=True)
+        written.append("result.gif")
+    return written
 
 
 def cmd_sweep(a) -> int:
@@ -203,11 +222,14 @@ def cmd_scenes(a) -> int:
 
 def cmd_system(a) -> int:
     from . import system as S
-    from .system_cli import plot, write_csv
+    from .results import labelled, system_units
+    from .tables import write_columns
+    from .summary import format_table, summary_columns, system_summary
+    from .system_cli import plot
 
     if a.name is None:
         for name in S.system_names():
-            print(name)
+            print(f"{name:28s} {S.system_description(name)}")
         return 0
     from .scene_schema import SceneFileError, suggestion
 
@@ -231,10 +253,12 @@ def cmd_system(a) -> int:
     bar = ProgressBar(S.named_duration(a.name, a.manoeuvre, a.duration), label=a.name)
     r = S.run_named(a.name, a.master, a.step, a.duration, a.manoeuvre, progress=bar)
     bar.close(f"{r.time[-1]:g} s simulated in {len(r.time) - 1} steps, {r.cpu:.2f} s CPU")
-    write_csv(out / "result.csv", r.columns())
+    write_columns(out / "result.csv", labelled(r.columns(), system_units(S.load_named_system(a.name))))
+    table = system_summary(r)
+    write_columns(out / "summary.csv", summary_columns(table))
     plot(out / "result.png", r, f"{a.name}: {a.master}, step {r.step:g} s")
-    T = r["cable.towTension"]
-    print(f"tow tension: start {T[0]:.0f} N, max {max(T):.0f} N, end {T[-1]:.0f} N; wrote {out}/result.csv, result.png")
+    print(format_table(table))
+    print(f"wrote {out}/: result.csv, summary.csv, result.png")
     if r.stats:
         from .newton import summary
         print(summary(r))
@@ -259,12 +283,14 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("scene")
     r.add_argument("--set", action="append", metavar="NAME=VALUE", help="a parameter or setting (repeatable)")
     r.add_argument("--out", type=Path, default=None, help="output directory (default out/SCENE)")
-    r.add_argument("--animate", action="store_true", help="also write result.gif, the 3-D shape over the run")
+    r.add_argument("--animate", action="store_true",
+                   help="also write result.gif: the line's side and plan views over the run, coloured by tension")
     r.add_argument("--strict", action="store_true", help="refuse (exit code 2) what is otherwise a warning: a step "
                    "too long for the scene")
     s = sub.add_parser("sweep", help="run the cartesian product of parameter values on Dask")
     s.add_argument("scene")
-    s.add_argument("--vary", action="append", required=True, metavar="NAME=V1,V2,...")
+    s.add_argument("--vary", action="append", required=True, metavar="NAME=V1,V2,...",
+                   help="a parameter, duration, step, or the tow's speed_kn [kn] or heading [deg] (repeatable)")
     s.add_argument("--set", action="append", metavar="NAME=VALUE", help="held for every combination")
     s.add_argument("--workers", type=int, default=2, help="local worker processes (default 2)")
     s.add_argument("--scheduler", default=None, help="address of a running Dask scheduler (default: a local cluster)")

@@ -66,19 +66,30 @@ from .scene_schema import Checker, SceneFileError, validate
 from .steady_tow import KNOT
 
 RECORDED = ["towTension", "towTensionMax", "towTensionMin", "towForce.x", "towForce.y", "towForce.z",
-            "endPosition.x", "endPosition.y", "endPosition.z", "minTension"]
+            "endPosition.x", "endPosition.y", "endPosition.z", "minTension", "layback", "topDeclination"]
 ANCHORED_RECORDED = ["endTension", "groundedLength", "anchorUplift"]
 WINCH_RECORDED = ["unstretchedLength"]
 SHAPE = [f"shape.{c}[{k}]" for c in "xyz" for k in range(1, NUM_STATIONS + 1)]
+STATIONS = [f"{q}[{k}]" for q in ("tension", "curvature") for k in range(1, NUM_STATIONS + 1)]  # with the shape
 BODY_RATES = [f"body[1].{n}" for n in ("vx", "vy", "vz", "wx", "wy", "wz")]
 BODY_RECORDED = [f"body[1].{q}.{c}" for q in ("force", "moment") for c in "xyz"]
-LINES_RECORDED = [f"line[{k}].{q}" for k in range(1, MAX_LINES + 1) for q in ("fairleadTension", "anchorTension")]
+LINES_RECORDED = [f"line[{k}].{q}" for k in range(1, MAX_LINES + 1)
+                  for q in ("fairleadTension", "anchorTension", "groundedLength")]
+BODY_POSE = [f"body[1].{n}" for n in ("x", "y", "z", "roll", "pitch", "yaw")]  # the scene's motion of body 1
 SCENE_SETTINGS = ("duration", "step")
+TOW_SETTINGS = {"speed_kn": "speed_kn", "heading": "heading_deg", "heading_deg": "heading_deg"}  # NAME -> [tow] key
 BOTTOM_ANCHORED = 1
 
 
 class SceneError(RuntimeError):
-    """A scene the FMU failed on while running; the message holds what the FMU logged."""
+    """A scene the FMU failed on while running; the message holds what the FMU logged. `partial` is the
+    result up to the last communication point reached (None when the FMU failed at its start), `stopped`
+    the time of the step that failed."""
+
+    def __init__(self, message: str, partial: "SceneResult | None" = None, stopped: float | None = None):
+        super().__init__(message)
+        self.partial = partial
+        self.stopped = stopped
 
 
 @dataclass
@@ -108,14 +119,18 @@ class Scene:
                    directory=directory)
 
     def with_overrides(self, overrides: dict, source: str = "--set") -> "Scene":
-        """A copy with `overrides` applied: scene settings (duration, step, record_shape) or FMU
-        parameters; each is checked (a SceneFileError names `source` and the key)."""
+        """A copy with `overrides` applied: scene settings (duration, step, record_shape), the tow's
+        constant speed_kn or heading [deg] (replacing the [tow] table's), or FMU parameters; each is
+        checked (a SceneFileError names `source` and the key)."""
         check = Checker(None)
         data = copy.deepcopy(self.data)
         for key, value in overrides.items():
             where = f"{source} {key}"
             if key in SCENE_SETTINGS:
                 data[key] = check.number(value, where, positive=True)
+            elif key in TOW_SETTINGS:
+                speed = key == "speed_kn"
+                data.setdefault("tow", {})[TOW_SETTINGS[key]] = check.number(value, where, nonnegative=speed)
             elif key == "record_shape":
                 if not isinstance(value, bool):
                     check.fail(where, "expected true or false")
@@ -296,6 +311,7 @@ class SceneResult:
     time: np.ndarray
     columns: dict  # name -> array over time
     cpu: float
+    seabed: float | None = None  # the seabed's depth when the FMU has one (enableSeabed; a deck's WtrDpth)
     events: list = field(default_factory=list)  # the winch's events (winch_events)
 
     def __getitem__(self, name: str) -> np.ndarray:
@@ -315,9 +331,24 @@ class SceneResult:
         return s
 
     def write_csv(self, path: Path) -> None:
+        """result.csv: time and every column, named with its unit (angles in degrees: ucable.results)."""
+        from .results import labelled
         from .tables import write_columns
 
-        write_columns(path, {"time": self.time, **self.columns})
+        write_columns(path, labelled({"time": self.time, **self.columns}))
+
+    def table(self) -> list:
+        """The results table (ucable.summary): extremes with their times, per line, body and tow."""
+        from .summary import scene_summary
+
+        return scene_summary(self)
+
+    def write_summary(self, path: Path) -> None:
+        """summary.csv: the results table."""
+        from .summary import summary_columns
+        from .tables import write_columns
+
+        write_columns(path, summary_columns(self.table()))
 
     def shapes(self) -> np.ndarray | None:
         """The recorded stations, shape [time, station, xyz], or None without record_shape."""
@@ -332,10 +363,10 @@ class SceneResult:
 
         plot_result(self, path)
 
-    def animate(self, path: Path, frames: int = 120) -> None:
+    def animate(self, path: Path, frames: int = 120, progress: bool = False) -> None:
         from .scene_plots import animate_result
 
-        animate_result(self, path, frames)
+        animate_result(self, path, frames, progress)
 
 
 def _fmu_message(cable: CableFMU) -> str:
@@ -434,9 +465,10 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
     body = BodyMotion(s.body) if s.body else None
     if body:
         extra = extra + BODY_RECORDED + LINES_RECORDED
-    recorded = list(dict.fromkeys(RECORDED + extra + s.outputs + (SHAPE if s.record_shape else [])))
+    recorded = list(dict.fromkeys(RECORDED + extra + s.outputs + (SHAPE + STATIONS if s.record_shape else [])))
     data = np.zeros((n + 1, len(recorded)))
     tow = np.zeros((n + 1, 3))
+    pose = np.zeros((n + 1, 6))
     parameters = dict(s.parameters)
     fmu = fmu or require_fmu()
     if parameters.get("lineFile"):
@@ -451,6 +483,8 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
     cable.slave.setDebugLogging(True, ["logEvents"])  # the winch's limits (winch_events)
     rate_signal = signals.get("winch.rate") if isinstance(signals.get("winch.rate"), dict) else None
     t = 0.0
+    done = -1  # the last communication point reached
+    cpu0 = time.process_time()
     try:
         def inputs(t):
             x, v, _ = motion.at(t)
@@ -468,8 +502,11 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
             if "invalid parameter" in said:
                 raise SceneFileError(f"{s.source}: {said}") from exc
             raise SceneFileError(f"{s.source}: the FMU could not start: {said}") from exc
+        seabed = seabed_depth(cable, parameters)
         data[0] = cable.get_reals(recorded)
         tow[0] = motion.at(0.0)[0]
+        pose[0] = body.at(0.0)[0] if body else 0.0
+        done = 0
         for k in range(n):
             t = times[k]
             cable.set(inputs(t))
@@ -481,16 +518,71 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
             cable.do_step(times[k + 1] - t, t)
             data[k + 1] = cable.get_reals(recorded)
             tow[k + 1] = motion.at(times[k + 1])[0]
+            pose[k + 1] = body.at(times[k + 1])[0] if body else 0.0
+            done = k + 1
             if progress is not None:
                 progress(times[k + 1])
         cpu = time.process_time() - cpu0
     except FMICallException as exc:  # say what the FMU said (the variable it refused, the failure)
-        raise SceneError(f"{s.source}: the FMU failed at t = {t:g} s: {_fmu_message(cable) or exc}") from exc
+        rows = slice(0, done + 1)  # the communication points reached: a failed run keeps them
+        partial = None if done < 0 else SceneResult(
+            s, times[rows], _columns(recorded, data[rows], tow[rows], pose[rows] if body else None, s.outputs),
+            time.process_time() - cpu0, seabed)
+        raise SceneError(f"{s.source}: the FMU failed at t = {t:g} s: {_fmu_message(cable) or exc}",
+                         partial, float(t)) from exc
     finally:
         events = winch_events(cable)
         cable.free()
-    requested = set(s.outputs)
-    columns = {name: data[:, i] for i, name in enumerate(recorded)  # of the lines added with [body], the deck's
-               if name in requested or name not in LINES_RECORDED or np.any(data[:, i] != 0.0)}
+    return SceneResult(s, times, _columns(recorded, data, tow, pose if body else None, s.outputs), cpu, seabed, events)
+
+
+def deck_water_depth(path) -> float | None:
+    """A MoorDyn deck's water depth as MoorDyn takes it: its OPTIONS row `VALUE WtrDpth`, else the depth
+    of its deepest point (the POINTS, CONNECTIONS or NODES table's Z); None when neither is found."""
+    try:
+        text = Path(path).read_text(errors="replace")
+    except OSError:
+        return None
+    section, deepest = "", None
+    for row in text.splitlines():
+        tokens = row.split()
+        if row.lstrip().startswith("---"):
+            section = row.upper()
+            continue
+        if len(tokens) >= 2 and tokens[1].lower() == "wtrdpth":
+            try:
+                return float(tokens[0])
+            except ValueError:
+                return None
+        if any(k in section for k in ("POINT", "CONNECTION", "NODE")) and len(tokens) >= 5 and tokens[0].isdigit():
+            try:
+                z = float(tokens[4])
+            except ValueError:
+                continue
+            deepest = -z if deepest is None else max(deepest, -z)
+    return deepest
+
+
+def seabed_depth(cable: CableFMU, parameters: dict) -> float | None:
+    """The depth of the seabed the run has, for the plots: a deck's WtrDpth (MoorDyn always has its seabed
+    there) unless the scene sets waterDepth, else the FMU's waterDepth when enableSeabed is on; None
+    without a seabed."""
+    deck = deck_water_depth(parameters["lineFile"]) if parameters.get("lineFile") else None
+    if deck is not None and "waterDepth" not in parameters:
+        return deck
+    return float(cable.get("waterDepth")) if cable.get("enableSeabed") else None
+
+
+def _columns(recorded: list, data: np.ndarray, tow: np.ndarray, pose: np.ndarray | None,
+             requested: list) -> dict:
+    """The result's columns: the recorded outputs (of the line[k].* a mooring scene adds, the deck's lines
+    only, those whose fairlead tension is not zero throughout; every `requested` one), the tow point,
+    body 1's pose when the scene moves it."""
+    lines = {name.split(".")[0] for i, name in enumerate(recorded)
+             if name.endswith(".fairleadTension") and name in LINES_RECORDED and np.any(data[:, i] != 0.0)}
+    columns = {name: data[:, i] for i, name in enumerate(recorded)
+               if name not in LINES_RECORDED or name in requested or name.split(".")[0] in lines}
     columns.update({"tow.x": tow[:, 0], "tow.y": tow[:, 1], "tow.z": tow[:, 2]})
-    return SceneResult(s, times, columns, cpu, events)
+    if pose is not None:
+        columns.update({name: pose[:, i] for i, name in enumerate(BODY_POSE)})
+    return columns

@@ -105,9 +105,14 @@ def run_sweep(scene: Scene, vary: dict, fixed: dict | None = None, workers: int 
 
 
 def write_results(rows: list[dict], names: list[str], path) -> None:
+    """results.csv: one row per combination, each column named with its unit (a varied name's from the
+    variable schema, its values as given: `length [m]`, `speed_kn [kn]`, `heading [deg]`)."""
+    from .results import TEXT_COLUMNS, label, schema_unit
+
     extra = [k for k in EXTRA_SUMMARY if any(k in r for r in rows)]
     columns = names + SUMMARY + extra + ["cpuSeconds", "status", "error"]
-    write_rows(path, columns, rows)
+    headers = {c: label(c, None if c in TEXT_COLUMNS else schema_unit(c)) for c in columns}
+    write_rows(path, list(headers.values()), [{headers[c]: r.get(c, "") for c in columns} for r in rows])
 
 
 def _numeric(values) -> bool:

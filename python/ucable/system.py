@@ -28,6 +28,7 @@ the inputs it has then (the body's drag at the tow velocity included).
 from __future__ import annotations
 
 import math
+import re
 import tempfile
 import time as timer
 import xml.etree.ElementTree as ET
@@ -192,6 +193,16 @@ def system_names() -> list[str]:
     return sorted(p.parent.name for p in systems_dir().glob("*/OspSystemStructure.xml"))
 
 
+def system_description(name: str) -> str:
+    """A shipped system's description: the first sentence of its system file's leading comment."""
+    text = (systems_dir() / name / "OspSystemStructure.xml").read_text()
+    m = re.search(r"<!--(.*?)-->", text, re.S)
+    if not m:
+        return ""
+    words = " ".join(m.group(1).split())
+    return re.split(r":\s|\.\s|\.$", words, maxsplit=1)[0]
+
+
 def load_named_system(name: str) -> SystemStructure:
     """A shipped system file by its folder's name, its FMUs resolved to the cable FMU in use and the
     partners next to it."""
@@ -211,7 +222,8 @@ def load_system(coupling: str) -> SystemStructure:
 
 # ------------------------------------------------------------------------------------ results
 RECORD = {
-    "vessel": ["x", "y", "heading", "speed", "thrust", "tow.x", "tow.y", "tow.z", "waveElevation"],
+    "vessel": ["x", "y", "heading", "speed", "thrust", "tow.x", "tow.y", "tow.z", "waveElevation", "platform.x",
+               "platform.y", "platform.z", "platform.roll", "platform.pitch", "platform.yaw"],
     "cable": ["towTension", "waveElevation", "towForce.x", "towForce.y", "towForce.z", "endTension", "endForce.x", "endForce.y",
               "endForce.z", "endPosition.x", "endPosition.y", "endPosition.z", "endVelocity.x", "endVelocity.y",
               "endVelocity.z", "bodyForceEstimate.x", "bodyForceEstimate.y", "bodyForceEstimate.z"],

@@ -94,6 +94,8 @@ def plot(path: Path, r, title: str) -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    if "cable.line[1].fairleadTension" in r.values:  # a mooring system: its lines and the platform
+        return plot_mooring(path, r, title)
     t, p = r.time, r.body_position
     fig, ax = plt.subplots(2, 2, figsize=(13, 8.5))
     a = ax[0, 0]
@@ -122,12 +124,61 @@ def plot(path: Path, r, title: str) -> None:
     a.set(xlabel="x [m]", ylabel="y [m]", title="plan view")
     a.set_aspect("equal", adjustable="datalim")
     a.legend(fontsize=8)
+    save(fig, ax, path, title)
+
+
+def save(fig, ax, path: Path, title: str) -> None:
+    import matplotlib.pyplot as plt
+
     for a in ax.ravel():
         a.grid(True, alpha=0.3)
     fig.suptitle(title)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
+
+
+def plot_mooring(path: Path, r, title: str) -> None:
+    """A mooring system's result: each line's fairlead tension, the lines' force on the platform, the
+    platform's motion (the vessel FMU's platform.*), its track in plan."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    t, v = r.time, r.values
+    fig, ax = plt.subplots(2, 2, figsize=(13, 8.5))
+    a = ax[0, 0]
+    k = 1
+    while f"cable.line[{k}].fairleadTension" in v:
+        a.plot(t, v[f"cable.line[{k}].fairleadTension"] / 1e3, label=f"line {k}")
+        k += 1
+    a.set(xlabel="time [s]", ylabel="fairlead tension [kN]", title="line tensions")
+    a.legend(fontsize=8)
+    a = ax[0, 1]
+    for q in "xyz":
+        a.plot(t, v[f"cable.body[1].force.{q}"] / 1e3, label=f"F{q}")
+    a.set(xlabel="time [s]", ylabel="force [kN]", title="the lines' force on the platform")
+    a.legend(fontsize=8)
+    a = ax[1, 0]
+    has_pose = "vessel.platform.x" in v
+    if has_pose:
+        for q in "xyz":
+            a.plot(t, v[f"vessel.platform.{q}"], label=f"{q} [m]")
+        a2 = a.twinx()
+        for q, c in zip(("roll", "pitch", "yaw"), ("tab:red", "tab:purple", "tab:brown")):
+            a2.plot(t, np.degrees(v[f"vessel.platform.{q}"]), ls=":", color=c, label=f"{q} [deg]")
+        a2.set_ylabel("angles [deg] (dotted)")
+        a2.legend(fontsize=8, loc="upper right")
+    a.set(xlabel="time [s]", ylabel="position [m]", title="platform motion")
+    a.legend(fontsize=8, loc="upper left")
+    a = ax[1, 1]
+    if has_pose:
+        a.plot(v["vessel.platform.x"], v["vessel.platform.y"], color="k", label="platform track")
+        a.plot(v["vessel.platform.x"][-1], v["vessel.platform.y"][-1], "k^")
+    a.set(xlabel="x [m]", ylabel="y [m]", title="plan view")
+    a.set_aspect("equal", adjustable="datalim")
+    a.legend(fontsize=8)
+    save(fig, ax, path, title)
 
 
 def main(argv=None) -> int:

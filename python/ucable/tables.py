@@ -2,7 +2,7 @@
 
 Written by the csv module: a column name holding a comma (`body[1].stiffness[1,2]`) or a quote is
 quoted, so csv, pandas and numpy (numpy.loadtxt, or numpy.genfromtxt with the names taken from the
-csv module's header, as `read_columns` does) read as many names as values in every row. Numbers are
+csv module's header, as `ucable.read_results` does) read as many names as values in every row. Numbers are
 written with ten significant digits.
 """
 
@@ -15,6 +15,8 @@ import numpy as np
 
 
 def _cell(value):
+    if isinstance(value, (bool, np.bool_)):
+        return str(bool(value)).lower()
     if isinstance(value, (float, np.floating)):
         return f"{float(value):.10g}"
     if isinstance(value, (np.integer,)):
@@ -22,13 +24,22 @@ def _cell(value):
     return value
 
 
+def _numeric(values) -> bool:
+    return isinstance(values, np.ndarray) and values.dtype.kind in "fiu"
+
+
 def write_columns(path: str | Path, columns: dict) -> None:
-    """Columns of equal length (name -> sequence), one row per index."""
+    """Columns of equal length (name -> sequence), one row per index; all-numeric tables are written
+    with one format per row, as numpy.savetxt (fast for long runs)."""
     names = list(columns)
-    data = [np.asarray(columns[n]) for n in names]
+    data = [columns[n] if _numeric(columns[n]) else list(columns[n]) for n in names]
     with open(path, "w", newline="") as f:
         writer = csv.writer(f)
         writer.writerow(names)
+        if all(_numeric(v) for v in data):
+            line = ",".join(["%.10g"] * len(data)) + "\n"
+            f.writelines(line % tuple(row) for row in np.column_stack(data))
+            return
         for row in zip(*data):
             writer.writerow([_cell(v) for v in row])
 
@@ -40,13 +51,3 @@ def write_rows(path: str | Path, names: list[str], rows: list[dict]) -> None:
         writer.writeheader()
         for r in rows:
             writer.writerow({n: _cell(r.get(n, "")) for n in names})
-
-
-def read_columns(path: str | Path) -> dict:
-    """A CSV written by write_columns as name -> numpy array (the names exactly as written)."""
-    with open(path, newline="") as f:
-        names = next(csv.reader(f))
-    data = np.genfromtxt(path, delimiter=",", skip_header=1, ndmin=2)
-    if data.shape[1] != len(names):
-        raise ValueError(f"{path}: {len(names)} column names but {data.shape[1]} values per row")
-    return {n: data[:, i] for i, n in enumerate(names)}

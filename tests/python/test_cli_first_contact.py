@@ -18,6 +18,7 @@ import pytest
 
 from ucable.cli import main
 from ucable.fmu import CableFMU
+from ucable.results import labelled
 from ucable.scene import SceneResult, load_scene, run_scene
 from ucable.scene_schema import SceneFileError
 
@@ -39,9 +40,9 @@ def cli(*args, fmu_file=None, cwd=None, prelude=""):
 
 
 def read_columns(path):
-    from ucable.tables import read_columns
+    from ucable import read_results
 
-    return read_columns(path)
+    return read_results(path)
 
 
 def scene_warning():
@@ -76,9 +77,11 @@ def test_result_csv_with_matrix_columns_is_read_by_csv_numpy_and_pandas(tmp_path
     t = np.array([0.0, 0.5, 1.0])
     columns = {"towTension": 1e3 * (1 + t), **{n: -1e4 * (k + 1) + t for k, n in enumerate(MATRIX)}, "tow.x": t}
     SceneResult(None, t, columns, 0.0).write_csv(tmp_path / "result.csv")
-    check_readers(tmp_path / "result.csv", ["time", *columns], 3)
+    headers = list(labelled({"time": t, **columns}))  # each name with its unit
+    assert headers[0] == "time [s]" and headers[2] == "body[1].stiffness[1,1] [N/m]"
+    check_readers(tmp_path / "result.csv", headers, 3)
     back = read_columns(tmp_path / "result.csv")
-    assert list(back) == ["time", *columns]
+    assert back.headers == headers
     for name, values in columns.items():
         np.testing.assert_array_equal(back[name], values)
 

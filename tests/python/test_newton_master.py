@@ -22,6 +22,7 @@ import sys
 import numpy as np
 import pytest
 
+from ucable import read_results
 from ucable import system as S
 from ucable.fmu import FMICallException
 from studies.coupling_study import POSITION_BOUND, TENSION_BOUND
@@ -54,7 +55,7 @@ def test_the_newton_master_runs_the_shipped_explicit_system(fmu_file, tmp_path):
                                "UC_FMU": str(fmu_file)})
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert "newton:" in proc.stdout, proc.stdout
-    data = np.genfromtxt(out / "result.csv", delimiter=",", names=True)
+    data = read_results(out / "result.csv")
     ref = S.run("accelerate", 0.5, "internal", duration=100.0)
     T = data["towTension"]
     assert np.sqrt(np.mean((T - ref["cable.towTension"]) ** 2)) <= TENSION_BOUND * np.sqrt(

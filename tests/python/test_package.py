@@ -2,7 +2,6 @@
 two-worker `ucable sweep` on a local Dask cluster whose rows equal single runs, a failing
 combination kept as a row; and (slow) `pip install .` into a fresh venv used from outside the clone."""
 
-import csv
 import os
 import subprocess
 import sys
@@ -26,8 +25,7 @@ def cli_env(fmu_file):
 
 
 def read_csv(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
+    return ucable.read_results(path).records()
 
 
 def test_api_finds_the_fmu_and_the_scenes(fmu_file):
@@ -139,8 +137,9 @@ def test_pip_install_runs_from_outside_the_clone(tmp_path):
     assert v.returncode == 0 and v.stdout.strip() == f"ucable {ucable.__version__}", v.stdout + v.stderr
     y = ucable_cli("system", "towed_body", "--duration", "20", "--out", "sys")
     assert y.returncode == 0, y.stderr
-    rows = read_csv(work / "sys" / "result.csv")
-    assert len(rows) == 41 and float(rows[-1]["towTension"]) > 0.0  # 20 s at the file's 0.5 s step
+    table = ucable.read_results(work / "sys" / "result.csv")
+    assert table.headers[:2] == ["time [s]", "towTension [N]"]
+    assert table.rows == 41 and table["towTension"][-1] > 0.0  # 20 s at the file's 0.5 s step
     show = ucable_cli("scenes", "show", "turn90")
     assert show.returncode == 0, show.stderr
     (work / "my.toml").write_text(show.stdout.replace("duration = 300.0", "duration = 10.0"))

@@ -2,7 +2,6 @@
 code 2, no traceback (--debug shows it); time-varying inputs { times, values }, winch stages, motions
 that start from rest; the shape recorded by default; `ucable scenes show`, `ucable --version`."""
 
-import csv
 import math
 import subprocess
 import sys
@@ -164,8 +163,7 @@ def test_constant_speed_and_heading_are_accepted():
 
 
 def read_rows(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
+    return ucable.read_results(path).records()
 
 
 def test_time_varying_current_and_winch_reach_the_fmu(tmp_path, fmu_file):
@@ -257,8 +255,9 @@ def test_scenes_format_prints_the_reference(capsys):
 def test_system_runs_a_shipped_system(tmp_path, fmu_file, name):
     out = tmp_path / "sys"
     assert main(["system", name, "--duration", "2", "--out", str(out)]) == 0
-    rows = read_rows(out / "result.csv")
-    assert list(rows[0])[:5] == ["time", "towTension", "body.x", "body.y", "body.z"]
+    table = ucable.read_results(out / "result.csv")
+    assert table.headers[:5] == ["time [s]", "towTension [N]", "body.x [m]", "body.y [m]", "body.z [m]"]
+    rows = table.records()
     assert float(rows[-1]["time"]) == pytest.approx(2.0) and float(rows[-1]["towTension"]) > 0.0
     assert (out / "result.png").stat().st_size > 0
 
