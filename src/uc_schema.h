@@ -192,6 +192,7 @@ typedef struct UCInputs {
     double pointAcceleration[48]; /* (not an FMU variable) [m/s2] per coupled point k (UC_MAX_POINTS x 3, at 3 k): der(point[k].vx/vy/vz) */
     int pointAccelerationGiven[16]; /* (not an FMU variable) per coupled point: 1 when pointAcceleration came from the master for this step */
     double currentScaleRate; /* (not an FMU variable) [1/s] der(currentScale) from fmi2SetRealInputDerivatives: the profile's scale changes linearly over the step; 0 if not given */
+    int stepBudget; /* (not an FMU variable) integrator steps the coming communication step may take (the adapter lowers it while an input is beyond its physical bound); 0: the integrator's own limit */
 } UCInputs;
 
 typedef struct UCOutputs {
