@@ -44,6 +44,7 @@ typedef struct {
     const char* unit;         /* m/s2 or rad/s2 */
     const char* velocityUnit; /* m/s or rad/s */
     unsigned char* warned;    /* 3 flags */
+    int flags;                /* UC_ACCELERATION_AS_INPUT(k): component k is an input value, not a derivative */
 } Quantity;
 
 static void check_quantity(UCInputChecks* c, const Quantity* q, double h, Report* r) {
@@ -58,7 +59,9 @@ static void check_quantity(UCInputChecks* c, const Quantity* q, double h, Report
         q->warned[k] = 1;
         report_add(r, "%s = %.4g %s (%.4g before) while %s changed by %.4g %s (mean %.4g %s, %.3g %s apart): %s",
                    q->names[k], q->a[k], q->unit, q->a0[k], q->velocities[k], dv, q->velocityUnit, dv / h, q->unit,
-                   miss, q->unit, q->a[k] == 0.0 && q->a0[k] == 0.0 ? "taken as not set" : "used as given");
+                   miss, q->unit,
+                   (q->flags & UC_ACCELERATION_AS_INPUT(k)) && q->a[k] == 0.0 && q->a0[k] == 0.0 ? "taken as not set"
+                                                                                                : "used as given");
     }
 }
 
@@ -83,14 +86,14 @@ static void check_accelerations(UCInstance* inst, Report* r) {
     Quantity q;
     if (!inst->coreParams.mooringSystem && in->towAccelerationGiven && old->towAccelerationGiven) {
         q = (Quantity){in->towAcceleration, old->towAcceleration, in->towVelocity, old->towVelocity, {{0}}, {{0}},
-                       "m/s2", "m/s", warned};
+                       "m/s2", "m/s", warned, in->towAccelerationGiven};
         name_components(&q, "tow.a%c", "tow.v%c", 0);
         check_quantity(c, &q, h, r);
     }
     if (!inst->coreParams.mooringSystem && inst->coreParams.bottomEnd == UC_BOTTOM_EXTERNAL &&
         in->endAccelerationGiven && old->endAccelerationGiven) {
         q = (Quantity){in->endAcceleration, old->endAcceleration, in->endVelocity, old->endVelocity, {{0}}, {{0}},
-                       "m/s2", "m/s", warned + 3};
+                       "m/s2", "m/s", warned + 3, in->endAccelerationGiven};
         name_components(&q, "end.a%c", "end.v%c", 0);
         check_quantity(c, &q, h, r);
     }
@@ -99,11 +102,11 @@ static void check_accelerations(UCInstance* inst, Report* r) {
         if (!in->bodyAccelerationGiven[b] || !old->bodyAccelerationGiven[b]) continue;
         const UCCoupledBody *body = &in->coupledBody[b], *before = &old->coupledBody[b];
         q = (Quantity){in->bodyAcceleration + 6 * b, old->bodyAcceleration + 6 * b, body->velocity, before->velocity,
-                       {{0}}, {{0}}, "m/s2", "m/s", warned + 6 + 6 * b};
+                       {{0}}, {{0}}, "m/s2", "m/s", warned + 6 + 6 * b, 0};
         name_components(&q, "der(body[%d].v%c)", "body[%d].v%c", b + 1);
         check_quantity(c, &q, h, r);
         q = (Quantity){in->bodyAcceleration + 6 * b + 3, old->bodyAcceleration + 6 * b + 3, body->angularVelocity,
-                       before->angularVelocity, {{0}}, {{0}}, "rad/s2", "rad/s", warned + 9 + 6 * b};
+                       before->angularVelocity, {{0}}, {{0}}, "rad/s2", "rad/s", warned + 9 + 6 * b, 0};
         name_components(&q, "der(body[%d].w%c)", "body[%d].w%c", b + 1);
         check_quantity(c, &q, h, r);
     }
@@ -111,7 +114,7 @@ static void check_accelerations(UCInstance* inst, Report* r) {
         if (!in->pointAccelerationGiven[p] || !old->pointAccelerationGiven[p]) continue;
         q = (Quantity){in->pointAcceleration + 3 * p, old->pointAcceleration + 3 * p, in->coupledPoint[p].velocity,
                        old->coupledPoint[p].velocity, {{0}}, {{0}}, "m/s2", "m/s",
-                       warned + 6 + 6 * UC_MAX_BODIES + 3 * p};
+                       warned + 6 + 6 * UC_MAX_BODIES + 3 * p, 0};
         name_components(&q, "der(point[%d].v%c)", "point[%d].v%c", p + 1);
         check_quantity(c, &q, h, r);
     }
@@ -254,9 +257,9 @@ int uc_input_checks_before_step(UCInstance* inst, double h) {
     if (accelerations.parts > 0) {
         uc_log_status(&inst->log, fmi2Warning,
                       "fmi2DoStep at t = %.9g: acceleration inputs disagree with the change of the velocity inputs "
-                      "over the last step: %s. One held at 0 while the velocity changes is taken as not set (the FMU "
-                      "estimates it from the velocity inputs); any other is used as given: check its unit, frame and "
-                      "sign, or leave it unset (reported once per variable; fmi2Terminate counts the later ones)",
+                      "over the last step: %s. An input tow.a*/end.a* held at 0 while the velocity changes is taken as "
+                      "not set (the FMU estimates it from the velocity inputs); any other is used as given: check its "
+                      "unit, frame and sign, or leave it unset (reported once per variable; fmi2Terminate counts the later ones)",
                       inst->time, accelerations.text);
         warned = 1;
     }

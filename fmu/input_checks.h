@@ -43,8 +43,8 @@ struct UCInstance;
 /* A new run (initialization): nothing to compare with, nothing reported. */
 void uc_input_checks_reset(UCInputChecks* checks);
 
-/* Before the step of size h at the FMU's time: the checks, each reported once (fmi2Warning) per run. Returns
- * fmi2Warning if it logged one, else fmi2OK. */
+/* Before the step of size h at the FMU's time: the checks, each reported once (logged with fmi2Warning) per
+ * run. Returns 1 if it logged one, else 0. */
 int uc_input_checks_before_step(struct UCInstance* inst, double h);
 
 /* After a successful step: the inputs it used become the previous ones. */

@@ -118,19 +118,20 @@ static int component_of(size_t offset, size_t base) {
     return (int)((offset - base) / sizeof(double));
 }
 
-/* An acceleration of a driven end is given for the coming step (by fmi2SetRealInputDerivatives or by setting the
- * inputs tow.a* / end.a*); before initialization that changes the initialization (the first step's end). */
-static void mark_acceleration_given(UCInstance* inst, int* given) {
-    if (*given) return;
-    *given = 1;
-    if (inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
+/* Component c of an acceleration of a driven end is given for the coming step, by fmi2SetRealInputDerivatives
+ * (asInput 0) or by setting the input tow.a* / end.a* (asInput 1: UC_ACCELERATION_AS_INPUT); before
+ * initialization that changes the initialization (the first step's end). */
+static void mark_acceleration_given(UCInstance* inst, int* given, int c, int asInput) {
+    const int before = *given;
+    *given = asInput ? (before | 1 | UC_ACCELERATION_AS_INPUT(c)) : ((before | 1) & ~UC_ACCELERATION_AS_INPUT(c));
+    if (before == 0 && inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
 }
 
-/* The flag of the acceleration input v stores into, or NULL for any other variable. */
-static int* acceleration_flag(UCInstance* inst, const UCVariable* v) {
+/* The flag of the acceleration input v stores into and its component *c, or NULL for any other variable. */
+static int* acceleration_flag(UCInstance* inst, const UCVariable* v, int* c) {
     if (v->causality != UC_CAUSALITY_INPUT) return NULL;
-    if (component_of(v->offset, offsetof(UCInputs, towAcceleration)) >= 0) return &inst->inputs.towAccelerationGiven;
-    if (component_of(v->offset, offsetof(UCInputs, endAcceleration)) >= 0) return &inst->inputs.endAccelerationGiven;
+    if ((*c = component_of(v->offset, offsetof(UCInputs, towAcceleration))) >= 0) return &inst->inputs.towAccelerationGiven;
+    if ((*c = component_of(v->offset, offsetof(UCInputs, endAcceleration))) >= 0) return &inst->inputs.endAccelerationGiven;
     return NULL;
 }
 
@@ -165,8 +166,9 @@ fmi2Status uc_set_values(UCInstance* inst, const fmi2ValueReference vr[], size_t
         const UCVariable* v = uc_variable_find(vr[i], type);
         if (type == UC_TYPE_REAL) {
             store_value(inst, v, value);
-            int* given = acceleration_flag(inst, v);
-            if (given != NULL) mark_acceleration_given(inst, given);
+            int c;
+            int* given = acceleration_flag(inst, v, &c);
+            if (given != NULL) mark_acceleration_given(inst, given, c, 1);
         } else if (type == UC_TYPE_BOOLEAN) {
             fmi2Integer normalized = *(const fmi2Boolean*)value != fmi2False; /* any non-zero is true */
             store_value(inst, v, &normalized);
@@ -292,8 +294,10 @@ fmi2Status uc_set_input_derivatives(UCInstance* inst, const fmi2ValueReference v
             continue;
         }
         *target = values[i];
-        if (given == &inst->inputs.towAccelerationGiven || given == &inst->inputs.endAccelerationGiven) {
-            mark_acceleration_given(inst, given);
+        if (given == &inst->inputs.towAccelerationGiven) {
+            mark_acceleration_given(inst, given, (int)(target - inst->inputs.towAcceleration), 0);
+        } else if (given == &inst->inputs.endAccelerationGiven) {
+            mark_acceleration_given(inst, given, (int)(target - inst->inputs.endAcceleration), 0);
         } else if (given != NULL) {
             *given = 1;
         }

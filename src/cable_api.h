@@ -161,6 +161,11 @@ void uc_tow_position(const UCCable* c, double p[3]);
  * period stays within it), else 0. Accelerations held at 0 while the velocity changes disagree by all of
  * dv / h; an acceleration in the wrong unit or frame by most of it. */
 double uc_acceleration_disagreement(double a0, double a1, double dv, double h);
+/* UCInputs.towAccelerationGiven (endAccelerationGiven): 0 when the master gave no acceleration for the step;
+ * otherwise bit 0, and UC_ACCELERATION_AS_INPUT(k) when component k is the input tow.a{k} (end.a{k}) set as a
+ * value (fmi2SetReal) rather than an input derivative. Only such a component, held at 0 while its velocity
+ * input changes, is taken as not set (a master that fills every input with 0; docs/interface.md). */
+#define UC_ACCELERATION_AS_INPUT(k) (2 << (k))
 #define UC_ACCELERATION_FLOOR 0.01
 #define UC_ACCELERATION_MARGIN 0.5
 

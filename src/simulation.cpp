@@ -113,22 +113,24 @@ void DrivenEnd::reset(const Vec3& p, const Vec3& v, const Vec3& a, bool accelera
 }
 
 TowTrajectory DrivenEnd::next(double t, double h, double lastStep, const Vec3& positionInput,
-                              const Vec3& velocityInput, const Vec3& accelerationInput, bool accelerationGiven,
+                              const Vec3& velocityInput, const Vec3& accelerationInput, int accelerationFlags,
                               Vec3& a) const {
     // The acceleration is the master's input derivative when given; otherwise the difference of
     // the last two velocity inputs (0 before there are two), so that an accelerating tow sampled
-    // at communication points is still followed smoothly. A component given as 0 here and at the
-    // previous communication point while its velocity input changed over the step (beyond
-    // uc_acceleration_disagreement's allowance) is a master that fills every input with 0, not an
-    // acceleration: it is estimated from the velocities too (docs/interface.md, "How the FMU reads
-    // a driven end").
+    // at communication points is still followed smoothly. A component set as the input tow.a* (not
+    // an input derivative) to 0 here and at the previous communication point while its velocity
+    // input changed over the step (beyond uc_acceleration_disagreement's allowance) is a master
+    // that fills every input with 0, not an acceleration: it is estimated from the velocities too
+    // (docs/interface.md, "How the FMU reads a driven end").
+    const bool accelerationGiven = accelerationFlags != 0;
     const Vec3 estimate = lastStep > 0.0 ? Vec3((velocityInput - lastVelocityInput) / lastStep) : Vec3::Zero();
     a = accelerationGiven ? accelerationInput : estimate;  // what the next step remembers
     Vec3 used = a;
     bool zeroHeld[3] = {false, false, false};
     if (accelerationGiven && lastAccelerationGiven && lastStep > 0.0) {
         for (int k = 0; k < 3; ++k) {
-            zeroHeld[k] = accelerationInput[k] == 0.0 && lastAccelerationInput[k] == 0.0 &&
+            zeroHeld[k] = (accelerationFlags & UC_ACCELERATION_AS_INPUT(k)) != 0 && accelerationInput[k] == 0.0 &&
+                          lastAccelerationInput[k] == 0.0 &&
                           uc_acceleration_disagreement(0.0, 0.0, velocityInput[k] - lastVelocityInput[k], lastStep) > 0.0;
             if (zeroHeld[k]) used[k] = estimate[k];
         }
@@ -857,11 +859,11 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     const Vec3 towVelocityInput = vec(in.towVelocity), endVelocityInput = vec(in.endVelocity);
     Vec3 towAcceleration, endAcceleration;
     loads_.tow = tow_.next(time_, h, lastStepSize_, vec(in.tow), towVelocityInput, vec(in.towAcceleration),
-                           in.towAccelerationGiven != 0, towAcceleration);
+                           in.towAccelerationGiven, towAcceleration);
     const bool externalEnd = model_.params().bottomEnd == UC_BOTTOM_EXTERNAL;
     if (externalEnd) {
         loads_.end = end_.next(time_, h, lastStepSize_, vec(in.end), endVelocityInput, vec(in.endAcceleration),
-                               in.endAccelerationGiven != 0, endAcceleration);
+                               in.endAccelerationGiven, endAcceleration);
     }
     loads_.torque = cable_torque(in);
 

@@ -218,12 +218,19 @@ static size_t elements(fmi3ValueReference vr) {
     return elements_and_stride(vr, &stride);
 }
 
-/* `expected`: the elements of the value references, all together. A refusal, as the FMI 2.0 adapter's: the
- * instance goes to the error state. */
+/* `expected`: the elements of the value references, all together. */
 static fmi3Status count_mismatch(UCInstance* inst, const char* function, size_t nValueReferences, size_t expected,
                                  size_t nValues) {
     uc_log_status(&inst->log, fmi2Error, "%s: %zu values for %zu value references of %zu elements in all", function,
                   nValues, nValueReferences, expected);
+    return fmi3Error;
+}
+
+/* A setter's refusal before it reaches the FMI 2.0 adapter: as the adapter's own, the instance goes to the
+ * error state (it does not step on with or without the values). */
+static fmi3Status refuse_set(UCInstance* inst, const char* function, size_t nValueReferences, size_t expected,
+                             size_t nValues) {
+    count_mismatch(inst, function, nValueReferences, expected, nValues);
     return (fmi3Status)uc_instance_finish(inst, fmi2Error);
 }
 
@@ -262,7 +269,7 @@ static fmi3Status set_float64(fmi3Instance instance, const fmi3ValueReference vr
         return (fmi3Status)uc_instance_finish(inst, fmi2Error);
     }
     const size_t expected = total_elements(vr, nvr);
-    if (expected != nValues) return count_mismatch(inst, function, nvr, expected, nValues);
+    if (expected != nValues) return refuse_set(inst, function, nvr, expected, nValues);
     for (size_t k = 0; k < nvr; ++k) {
         if (vr[k] == UC_FMI3_TIME_VR) {
             uc_log_status(&inst->log, fmi2Error, "%s: time (value reference %u) is the independent variable and "
@@ -288,7 +295,7 @@ static fmi3Status get_float64(fmi3Instance instance, const fmi3ValueReference vr
     if (inst == NULL) return fmi3Error;
     if (nvr > 0 && (vr == NULL || values == NULL)) {
         uc_log_status(&inst->log, fmi2Error, "%s: vr or values is NULL with nvr = %zu", function, nvr);
-        return (fmi3Status)uc_instance_finish(inst, fmi2Error);
+        return fmi3Error;
     }
     const size_t expected = total_elements(vr, nvr);
     if (expected != nValues) return count_mismatch(inst, function, nvr, expected, nValues);
@@ -323,10 +330,14 @@ FMI3_EXPORT fmi3Status fmi3SetFloat64(fmi3Instance instance, const fmi3ValueRefe
     return set_float64(instance, valueReferences, nValueReferences, values, nValues);
 }
 
-/* Scalar-only types: one value per value reference. */
+/* Scalar-only types: one value per value reference (a setter's mismatch is a refusal: refuse_set). */
 static int scalar_counts(fmi3Instance instance, size_t nvr, size_t nValues, const char* function) {
     if (inner(instance) != NULL && nvr != nValues) {
-        count_mismatch(inner(instance), function, nvr, nvr, nValues);
+        if (strncmp(function, "fmi3Set", 7) == 0) {
+            refuse_set(inner(instance), function, nvr, nvr, nValues);
+        } else {
+            count_mismatch(inner(instance), function, nvr, nvr, nValues);
+        }
         return 0;
     }
     return inner(instance) != NULL;

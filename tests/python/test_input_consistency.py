@@ -138,6 +138,26 @@ def test_accelerations_held_at_zero_follow_the_estimate_of_a_master_without_them
     assert np.max(np.abs(t_zero - t_without)) < 0.005 * np.ptp(t_without)
 
 
+def test_an_input_derivative_held_at_zero_is_used_as_given(make_cable):
+    """der(tow.vz) = 0 through fmi2SetRealInputDerivatives while tow.vz changes: a deliberate statement (a
+    master that iterates or differences with it), used as given with one warning; the same zeros set as the
+    input tow.az are taken as not set, so the two runs differ."""
+    c = make_cable()
+    w = W
+    c.initialize(inputs={"tow.vz": A * w})
+    tensions = []
+    for k in range(40):
+        t = 0.5 * k
+        c.set({"tow.z": A * math.sin(w * t), "tow.vz": A * w * math.cos(w * t)})
+        c.set_input_derivatives(["tow.vz"], 1, [0.0])
+        c.do_step(0.5, t=t)
+        tensions.append(c.get("towTension"))
+    messages = [m for m in warnings_of(c) if "disagree with the change of the velocity" in m]
+    assert len(messages) == 1 and "tow.az = 0 m/s2" in messages[0] and "used as given" in messages[0], messages
+    _, t_input = heave_run(make_cable, 0.5, 40, lambda t, a: 0.0)
+    assert np.max(np.abs(np.array(tensions) - t_input)) > 0.05 * np.ptp(t_input)
+
+
 def test_an_acceleration_that_disagrees_is_used_as_given_with_one_warning(make_cable):
     """tow.az with the wrong sign: one warning naming it, its value, the velocity change and the
     disagreement (m/s2), 'used as given'; the run goes on with it (its tensions differ from the right ones)."""
