@@ -123,16 +123,23 @@ static void check_accelerations(UCInstance* inst, Report* r) {
 /* ---- inputs beyond a physical bound ------------------------------------------------------------------ */
 
 /* The largest |component| of v[0..n) beyond bound: reported once per group (flag), and remembered as the step's
- * implausible input (the integrator's budget names it). */
-static void check_bound(UCInputChecks* c, Report* r, unsigned char* flag, const char* name, const double* v, int n,
-                        double bound, const char* unit) {
+ * implausible input (the integrator's budget names it). The name is format with the index k (1-based; 0: none),
+ * written only when an input is beyond its bound (the checks cost comparisons, not formatting, per step). */
+static void check_bound(UCInputChecks* c, Report* r, unsigned char* flag, const char* format, int k, const double* v,
+                        int n, double bound, const char* unit) {
     int worst = -1;
-    for (int k = 0; k < n; ++k)
-        if (fabs(v[k]) > bound && (worst < 0 || fabs(v[k]) > fabs(v[worst]))) worst = k;
+    for (int i = 0; i < n; ++i)
+        if (fabs(v[i]) > bound && (worst < 0 || fabs(v[i]) > fabs(v[worst]))) worst = i;
     if (worst < 0) return;
+    char name[sizeof c->implausibleName];
+    if (k > 0) {
+        snprintf(name, sizeof name, format, k);
+    } else {
+        snprintf(name, sizeof name, "%s", format);
+    }
     if (!c->implausible || fabs(v[worst]) / bound > fabs(c->implausibleValue) / c->implausibleBound) {
         c->implausible = 1;
-        snprintf(c->implausibleName, sizeof c->implausibleName, "%s", name);
+        memcpy(c->implausibleName, name, sizeof name);
         c->implausibleValue = v[worst];
         c->implausibleUnit = unit;
         c->implausibleBound = bound;
@@ -147,46 +154,41 @@ static void check_bounds(UCInstance* inst, Report* r) {
     UCInputChecks* c = &inst->inputChecks;
     const UCInputs* in = &inst->inputs;
     unsigned char* f = c->bound;
-    char name[64];
     c->implausible = 0;
     c->implausibleValue = 0.0;
     c->implausibleBound = 1.0;
     if (!inst->coreParams.mooringSystem) {
-        check_bound(c, r, f + 0, "tow.x/y/z", in->tow, 3, UC_INPUT_MAX_POSITION, "m");
-        check_bound(c, r, f + 1, "tow.vx/vy/vz", in->towVelocity, 3, UC_INPUT_MAX_SPEED, "m/s");
-        check_bound(c, r, f + 2, in->towAccelerationGiven ? "tow.ax/ay/az (or der(tow.v*))" : "tow.ax/ay/az",
+        check_bound(c, r, f + 0, "tow.x/y/z", 0, in->tow, 3, UC_INPUT_MAX_POSITION, "m");
+        check_bound(c, r, f + 1, "tow.vx/vy/vz", 0, in->towVelocity, 3, UC_INPUT_MAX_SPEED, "m/s");
+        check_bound(c, r, f + 2, in->towAccelerationGiven ? "tow.ax/ay/az (or der(tow.v*))" : "tow.ax/ay/az", 0,
                     in->towAcceleration, 3, UC_INPUT_MAX_ACCELERATION, "m/s2");
         if (inst->coreParams.bottomEnd == UC_BOTTOM_EXTERNAL || inst->coreParams.bottomEnd == UC_BOTTOM_PROXY) {
-            check_bound(c, r, f + 3, "end.x/y/z", in->end, 3, UC_INPUT_MAX_POSITION, "m");
-            check_bound(c, r, f + 4, "end.vx/vy/vz", in->endVelocity, 3, UC_INPUT_MAX_SPEED, "m/s");
-            check_bound(c, r, f + 5, "end.ax/ay/az", in->endAcceleration, 3, UC_INPUT_MAX_ACCELERATION, "m/s2");
+            check_bound(c, r, f + 3, "end.x/y/z", 0, in->end, 3, UC_INPUT_MAX_POSITION, "m");
+            check_bound(c, r, f + 4, "end.vx/vy/vz", 0, in->endVelocity, 3, UC_INPUT_MAX_SPEED, "m/s");
+            check_bound(c, r, f + 5, "end.ax/ay/az", 0, in->endAcceleration, 3, UC_INPUT_MAX_ACCELERATION, "m/s2");
         }
     }
-    check_bound(c, r, f + 6, "current.x/y", in->current, 2, UC_INPUT_MAX_SPEED, "m/s");
+    check_bound(c, r, f + 6, "current.x/y", 0, in->current, 2, UC_INPUT_MAX_SPEED, "m/s");
     if (!inst->coreParams.mooringSystem) return;
     for (int b = 0; b < UC_MAX_BODIES; ++b) {
         const UCCoupledBody* body = &in->coupledBody[b];
         unsigned char* g = f + 7 + 5 * b;
-        snprintf(name, sizeof name, "body[%d].x/y/z", b + 1);
-        check_bound(c, r, g, name, body->position, 3, UC_INPUT_MAX_POSITION, "m");
-        snprintf(name, sizeof name, "body[%d].vx/vy/vz", b + 1);
-        check_bound(c, r, g + 1, name, body->velocity, 3, UC_INPUT_MAX_SPEED, "m/s");
-        snprintf(name, sizeof name, "body[%d].wx/wy/wz", b + 1);
-        check_bound(c, r, g + 2, name, body->angularVelocity, 3, UC_INPUT_MAX_ANGULAR_SPEED, "rad/s");
-        snprintf(name, sizeof name, "der(body[%d].vx/vy/vz)", b + 1);
-        check_bound(c, r, g + 3, name, in->bodyAcceleration + 6 * b, 3, UC_INPUT_MAX_ACCELERATION, "m/s2");
-        snprintf(name, sizeof name, "der(body[%d].wx/wy/wz)", b + 1);
-        check_bound(c, r, g + 4, name, in->bodyAcceleration + 6 * b + 3, 3, UC_INPUT_MAX_ANGULAR_ACCELERATION,
-                    "rad/s2");
+        check_bound(c, r, g, "body[%d].x/y/z", b + 1, body->position, 3, UC_INPUT_MAX_POSITION, "m");
+        check_bound(c, r, g + 1, "body[%d].vx/vy/vz", b + 1, body->velocity, 3, UC_INPUT_MAX_SPEED, "m/s");
+        check_bound(c, r, g + 2, "body[%d].wx/wy/wz", b + 1, body->angularVelocity, 3, UC_INPUT_MAX_ANGULAR_SPEED,
+                    "rad/s");
+        check_bound(c, r, g + 3, "der(body[%d].vx/vy/vz)", b + 1, in->bodyAcceleration + 6 * b, 3,
+                    UC_INPUT_MAX_ACCELERATION, "m/s2");
+        check_bound(c, r, g + 4, "der(body[%d].wx/wy/wz)", b + 1, in->bodyAcceleration + 6 * b + 3, 3,
+                    UC_INPUT_MAX_ANGULAR_ACCELERATION, "rad/s2");
     }
     for (int p = 0; p < UC_MAX_POINTS; ++p) {
         unsigned char* g = f + 7 + 5 * UC_MAX_BODIES + 3 * p;
-        snprintf(name, sizeof name, "point[%d].x/y/z", p + 1);
-        check_bound(c, r, g, name, in->coupledPoint[p].position, 3, UC_INPUT_MAX_POSITION, "m");
-        snprintf(name, sizeof name, "point[%d].vx/vy/vz", p + 1);
-        check_bound(c, r, g + 1, name, in->coupledPoint[p].velocity, 3, UC_INPUT_MAX_SPEED, "m/s");
-        snprintf(name, sizeof name, "der(point[%d].vx/vy/vz)", p + 1);
-        check_bound(c, r, g + 2, name, in->pointAcceleration + 3 * p, 3, UC_INPUT_MAX_ACCELERATION, "m/s2");
+        check_bound(c, r, g, "point[%d].x/y/z", p + 1, in->coupledPoint[p].position, 3, UC_INPUT_MAX_POSITION, "m");
+        check_bound(c, r, g + 1, "point[%d].vx/vy/vz", p + 1, in->coupledPoint[p].velocity, 3, UC_INPUT_MAX_SPEED,
+                    "m/s");
+        check_bound(c, r, g + 2, "der(point[%d].vx/vy/vz)", p + 1, in->pointAcceleration + 3 * p, 3,
+                    UC_INPUT_MAX_ACCELERATION, "m/s2");
     }
 }
 

@@ -29,7 +29,7 @@ typedef struct UCInputChecks {
     double previousStep;  /* its size */
     double previousEnd;   /* the time it ended at: the comparison holds while the FMU is there (NaN: none) */
     unsigned char warned[UC_MAX_BODIES * 6 + UC_MAX_POINTS * 3 + 6]; /* acceleration disagreement reported */
-    unsigned char bound[64]; /* which groups of inputs were reported beyond their bound */
+    unsigned char bound[7 + 5 * UC_MAX_BODIES + 3 * UC_MAX_POINTS]; /* which groups were reported beyond a bound */
     int disagreements;    /* further disagreements after the first report of each variable */
     int implausible;      /* an input of the coming step is beyond its bound (the step's integrator budget) */
     char implausibleName[96]; /* ... which one, and its value */
