@@ -153,6 +153,7 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
 }
 
 static fmi2Status terminate(UCInstance* inst) {
+    uc_input_checks_summary(inst);
     inst->state = UC_STATE_TERMINATED; /* the core is kept: values stay readable */
     return fmi2OK;
 }

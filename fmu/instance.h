@@ -8,6 +8,7 @@
 
 #include "cable_api.h"
 #include "fmi2FunctionTypes.h"
+#include "input_checks.h"
 #include "logging.h"
 
 /* Machine states as bits, so that each function declares the set of states it may be called in. */
@@ -48,6 +49,7 @@ typedef struct UCInstance {
     int outputsProvisional;      /* initialization mode: the initialization from the current params/inputs
                                     failed, outputs hold the provisional values (simulation.h) */
     int towMismatchWarned;       /* the tow position / velocity mismatch was reported in this run */
+    UCInputChecks inputChecks;   /* the inputs of the last step and what was reported (input_checks.h) */
 
     char msg[UC_MSG_SIZE];       /* scratch for messages of the core */
 } UCInstance;

@@ -59,6 +59,7 @@ static fmi2Status initialize_core(UCInstance* inst, const char* function, fmi2St
     inst->lastSuccessfulTime = inst->startTime;
     inst->coreReady = 1;
     inst->towMismatchWarned = 0;
+    uc_input_checks_reset(&inst->inputChecks);
     uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: initialized at t = %.9g, towTension = %.6g N", function,
            inst->time, inst->outputs.towTension);
     log_solver_statistics(inst, "initialization");
@@ -132,32 +133,29 @@ fmi2Status uc_sim_do_step(UCInstance* inst, double tc, double h) {
     fmi2Status status = check_step_arguments(inst, tc, h);
     if (status != fmi2OK) return status;
     inst->msg[0] = '\0';
-    /* a mooring system's lines take their fairleads from the body and point inputs, not tow.* */
-    if (!inst->towMismatchWarned && !inst->coreParams.mooringSystem) {
-        double p[3];
-        uc_tow_position(inst->cable, p);
-        const double dx = inst->inputs.tow[0] - p[0], dy = inst->inputs.tow[1] - p[1], dz = inst->inputs.tow[2] - p[2];
-        const double distance = sqrt(dx * dx + dy * dy + dz * dz);
-        if (distance > UC_TOW_MISMATCH_TOLERANCE) {
-            inst->towMismatchWarned = 1;
-            uc_log_status(&inst->log, fmi2Warning,
-                          "fmi2DoStep at t = %.9g: the tow position input (%.6g, %.6g, %.6g) is %.3g m from where the "
-                          "tow point stands (%.6g, %.6g, %.6g), the previous inputs extrapolated with their velocity: "
-                          "the tow point moves there within this step, a real displacement that shows as a tension "
-                          "spike. Give positions that agree with the integral of the velocity inputs (tolerance %g m; "
-                          "reported once per run)",
-                          inst->time, inst->inputs.tow[0], inst->inputs.tow[1], inst->inputs.tow[2], distance, p[0],
-                          p[1], p[2], UC_TOW_MISMATCH_TOLERANCE);
-        }
-    }
+    /* accelerations against velocities, the tow point against its extrapolation, bounds: logged warnings (the
+     * step itself is fine: fmi2DoStep returns what it did) */
+    uc_input_checks_before_step(inst, h);
     /* The FMU's own time, not tc: the master's tc carries its round-off (FMI 2.0 section 4.2.4). */
+    const UCInputChecks* checks = &inst->inputChecks;
+    inst->inputs.stepBudget = checks->implausible ? UC_IMPLAUSIBLE_STEP_BUDGET : 0;
     if (uc_do_step(inst->cable, inst->time, h, &inst->inputs, inst->msg, sizeof inst->msg) != 0) {
+        if (checks->implausible) {
+            uc_log_status(&inst->log, fmi2Error, "fmi2DoStep: step from t = %.17g to %.17g failed with %s = %.6g %s "
+                          "beyond %g %s (a physical bound; at most %d integrator steps while an input is beyond "
+                          "one): check that input's unit and frame: %s", inst->time, inst->time + h,
+                          checks->implausibleName, checks->implausibleValue, checks->implausibleUnit,
+                          checks->implausibleBound, checks->implausibleUnit, UC_IMPLAUSIBLE_STEP_BUDGET,
+                          inst->msg[0] != '\0' ? inst->msg : "(no reason given)");
+            return fmi2Error;
+        }
         uc_log_status(&inst->log, fmi2Error, "fmi2DoStep: step from t = %.17g to %.17g failed: %s", inst->time,
                       inst->time + h, inst->msg[0] != '\0' ? inst->msg : "(no reason given)");
         return fmi2Error;
     }
     inst->time = uc_time(inst->cable);
     inst->lastSuccessfulTime = inst->time;
+    uc_input_checks_after_step(inst, h);
     uc_get_outputs(inst->cable, &inst->outputs);
     if (uc_take_event(inst->cable, inst->msg, sizeof inst->msg)) {
         uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "fmi2DoStep: %s", inst->msg);

@@ -14,6 +14,9 @@
  * bytes (as the saved states compare and copy them). Returns 1 if target changed, 0 if it held value
  * already, -1 (logged as fmi2Error naming function and the variable name) for NULL or a string longer
  * than size - 1 bytes. */
+/* 0 if value can be stored in size bytes; -1 (logged as uc_store_string does) for NULL or too long. */
+int uc_string_fits(const UCLogger* log, const char* function, const char* name, size_t size, const char* value);
+
 int uc_store_string(const UCLogger* log, const char* function, const char* name, char* target, size_t size,
                     const char* value);
 

@@ -118,19 +118,20 @@ static int component_of(size_t offset, size_t base) {
     return (int)((offset - base) / sizeof(double));
 }
 
-/* An acceleration of a driven end is given for the coming step (by fmi2SetRealInputDerivatives or by setting the
- * inputs tow.a* / end.a*); before initialization that changes the initialization (the first step's end). */
-static void mark_acceleration_given(UCInstance* inst, int* given) {
-    if (*given) return;
-    *given = 1;
-    if (inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
+/* Component c of an acceleration of a driven end is given for the coming step, by fmi2SetRealInputDerivatives
+ * (asInput 0) or by setting the input tow.a* / end.a* (asInput 1: UC_ACCELERATION_AS_INPUT); before
+ * initialization that changes the initialization (the first step's end). */
+static void mark_acceleration_given(UCInstance* inst, int* given, int c, int asInput) {
+    const int before = *given;
+    *given = asInput ? (before | 1 | UC_ACCELERATION_AS_INPUT(c)) : ((before | 1) & ~UC_ACCELERATION_AS_INPUT(c));
+    if (before == 0 && inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
 }
 
-/* The flag of the acceleration input v stores into, or NULL for any other variable. */
-static int* acceleration_flag(UCInstance* inst, const UCVariable* v) {
+/* The flag of the acceleration input v stores into and its component *c, or NULL for any other variable. */
+static int* acceleration_flag(UCInstance* inst, const UCVariable* v, int* c) {
     if (v->causality != UC_CAUSALITY_INPUT) return NULL;
-    if (component_of(v->offset, offsetof(UCInputs, towAcceleration)) >= 0) return &inst->inputs.towAccelerationGiven;
-    if (component_of(v->offset, offsetof(UCInputs, endAcceleration)) >= 0) return &inst->inputs.endAccelerationGiven;
+    if ((*c = component_of(v->offset, offsetof(UCInputs, towAcceleration))) >= 0) return &inst->inputs.towAccelerationGiven;
+    if ((*c = component_of(v->offset, offsetof(UCInputs, endAcceleration))) >= 0) return &inst->inputs.endAccelerationGiven;
     return NULL;
 }
 
@@ -142,18 +143,32 @@ static void store_value(UCInstance* inst, const UCVariable* v, const void* value
     if (inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
 }
 
+/* A setter validates every value before it writes any (a refusal changes nothing, FMI 2.0 section 2.1.3):
+ * the variable, whether it may be set now, and the value. NULL (logged) if value i may not be stored. */
+static const UCVariable* validated(UCInstance* inst, fmi2ValueReference vr, UCVarType type, const void* value,
+                                   const char* function) {
+    const UCVariable* v = find_or_log(inst, vr, type, function);
+    if (v == NULL || check_settable(inst, v, function) != fmi2OK) return NULL;
+    if (type == UC_TYPE_REAL && check_real_value(inst, v, *(const fmi2Real*)value, function) != fmi2OK) return NULL;
+    if (type == UC_TYPE_STRING && uc_string_fits(&inst->log, function, v->name, v->size, value) != 0) return NULL;
+    return v;
+}
+
 fmi2Status uc_set_values(UCInstance* inst, const fmi2ValueReference vr[], size_t nvr, const void* values,
                          UCVarType type, const char* function) {
     if (check_arrays(inst, vr, nvr, values, function) != fmi2OK) return fmi2Error;
     for (size_t i = 0; i < nvr; ++i) {
+        if (validated(inst, vr[i], type, (const char*)values + i * value_size(type), function) == NULL)
+            return fmi2Error;
+    }
+    for (size_t i = 0; i < nvr; ++i) {
         const void* value = (const char*)values + i * value_size(type);
-        const UCVariable* v = find_or_log(inst, vr[i], type, function);
-        if (v == NULL || check_settable(inst, v, function) != fmi2OK) return fmi2Error;
+        const UCVariable* v = uc_variable_find(vr[i], type);
         if (type == UC_TYPE_REAL) {
-            if (check_real_value(inst, v, *(const fmi2Real*)value, function) != fmi2OK) return fmi2Error;
             store_value(inst, v, value);
-            int* given = acceleration_flag(inst, v);
-            if (given != NULL) mark_acceleration_given(inst, given);
+            int c;
+            int* given = acceleration_flag(inst, v, &c);
+            if (given != NULL) mark_acceleration_given(inst, given, c, 1);
         } else if (type == UC_TYPE_BOOLEAN) {
             fmi2Integer normalized = *(const fmi2Boolean*)value != fmi2False; /* any non-zero is true */
             store_value(inst, v, &normalized);
@@ -177,29 +192,26 @@ fmi2Status uc_get_strings(UCInstance* inst, const fmi2ValueReference vr[], size_
 }
 
 /* The instance's copy of one string (string_value.h); a changed parameter drops the core built from it. */
-static fmi2Status store_string(UCInstance* inst, const UCVariable* v, const char* value, const char* function) {
+static void store_string(UCInstance* inst, const UCVariable* v, const char* value, const char* function) {
     char* target = (char*)uc_variable_address(v, &inst->params, &inst->inputs, &inst->outputs);
     const int changed = uc_store_string(&inst->log, function, v->name, target, v->size, value);
-    if (changed < 0) return fmi2Error;
-    if (changed && inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
-    return fmi2OK;
+    if (changed > 0 && inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
 }
 
 fmi2Status uc_set_strings(UCInstance* inst, const fmi2ValueReference vr[], size_t nvr, const fmi2String values[],
                           const char* function) {
     if (check_arrays(inst, vr, nvr, values, function) != fmi2OK) return fmi2Error;
-    for (size_t i = 0; i < nvr; ++i) {
-        const UCVariable* v = find_or_log(inst, vr[i], UC_TYPE_STRING, function);
-        if (v == NULL || check_settable(inst, v, function) != fmi2OK) return fmi2Error;
-        if (store_string(inst, v, values[i], function) != fmi2OK) return fmi2Error;
-    }
+    for (size_t i = 0; i < nvr; ++i)
+        if (validated(inst, vr[i], UC_TYPE_STRING, values[i], function) == NULL) return fmi2Error;
+    for (size_t i = 0; i < nvr; ++i) store_string(inst, uc_variable_find(vr[i], UC_TYPE_STRING), values[i], function);
     return fmi2OK;
 }
 
 /* A mooring system's body or point input: der(body[k].v*) (order 1) or der(body[k].x/y/z, 2) is the
  * reference point's acceleration, der(body[k].w*) the angular acceleration; der(point[k].v*) or of its
- * position (order 2) the point's acceleration. 1 when v was one of them. */
-static int set_body_derivative(UCInstance* inst, const UCVariable* v, int order, double value) {
+ * position (order 2) the point's acceleration. Where the value goes (NULL if v is none of them); `given`
+ * the flag it sets. */
+static double* body_derivative_target(UCInstance* inst, const UCVariable* v, int order, int** given) {
     const size_t bodies = offsetof(UCInputs, coupledBody), points = offsetof(UCInputs, coupledPoint);
     if (v->offset >= bodies && v->offset < bodies + sizeof inst->inputs.coupledBody) {
         const size_t k = (v->offset - bodies) / sizeof(UCCoupledBody), in = (v->offset - bodies) % sizeof(UCCoupledBody);
@@ -208,67 +220,57 @@ static int set_body_derivative(UCInstance* inst, const UCVariable* v, int order,
                            (order == 2 && in < 3 * sizeof(double));
         const int angular = order == 1 && in >= offsetof(UCCoupledBody, angularVelocity) &&
                             in < offsetof(UCCoupledBody, angularVelocity) + sizeof(double[3]);
-        if (!linear && !angular) return 0;
-        inst->inputs.bodyAcceleration[6 * k + (angular ? 3 : 0) + c] = value;
-        inst->inputs.bodyAccelerationGiven[k] = 1;
-        return 1;
+        if (!linear && !angular) return NULL;
+        *given = &inst->inputs.bodyAccelerationGiven[k];
+        return &inst->inputs.bodyAcceleration[6 * k + (angular ? 3 : 0) + c];
     }
     if (v->offset >= points && v->offset < points + sizeof inst->inputs.coupledPoint) {
         const size_t k = (v->offset - points) / sizeof(UCCoupledPoint), in = (v->offset - points) % sizeof(UCCoupledPoint);
         const int velocity = in >= offsetof(UCCoupledPoint, velocity);
-        if (!((velocity && order == 1) || (!velocity && order == 2))) return 0;
-        inst->inputs.pointAcceleration[3 * k + (int)((in % (3 * sizeof(double))) / sizeof(double))] = value;
-        inst->inputs.pointAccelerationGiven[k] = 1;
-        return 1;
+        if (!((velocity && order == 1) || (!velocity && order == 2))) return NULL;
+        *given = &inst->inputs.pointAccelerationGiven[k];
+        return &inst->inputs.pointAcceleration[3 * k + (int)((in % (3 * sizeof(double))) / sizeof(double))];
     }
-    return 0;
+    return NULL;
 }
 
-static fmi2Status set_one_derivative(UCInstance* inst, const UCVariable* v, int order, double value) {
+/* Where a derivative of `order` of the input v is kept: *target and the flag *given it sets (*given NULL: no
+ * flag; *target NULL: accepted and ignored, the input held over the step). fmi2Error (logged) if it is refused. */
+static fmi2Status derivative_target(UCInstance* inst, const UCVariable* v, int order, double value, double** target,
+                                    int** given) {
     const char* function = "fmi2SetRealInputDerivatives";
-    int velocity = component_of(v->offset, offsetof(UCInputs, towVelocity));
-    int position = component_of(v->offset, offsetof(UCInputs, tow));
-    int endVelocity = component_of(v->offset, offsetof(UCInputs, endVelocity));
-    int endPosition = component_of(v->offset, offsetof(UCInputs, end));
+    const int velocity = component_of(v->offset, offsetof(UCInputs, towVelocity));
+    const int position = component_of(v->offset, offsetof(UCInputs, tow));
+    const int endVelocity = component_of(v->offset, offsetof(UCInputs, endVelocity));
+    const int endPosition = component_of(v->offset, offsetof(UCInputs, end));
+    *target = NULL;
+    *given = NULL;
     if (v->causality != UC_CAUSALITY_INPUT) {
         uc_log_status(&inst->log, fmi2Error, "%s: %s is not an input", function, v->name);
         return fmi2Error;
     }
     if (check_real_value(inst, v, value, function) != fmi2OK) return fmi2Error;
     if ((velocity >= 0 && order == 1) || (position >= 0 && order == 2)) {
-        inst->inputs.towAcceleration[velocity >= 0 ? velocity : position] = value;
-        mark_acceleration_given(inst, &inst->inputs.towAccelerationGiven);
-        return fmi2OK;
+        *target = &inst->inputs.towAcceleration[velocity >= 0 ? velocity : position];
+        *given = &inst->inputs.towAccelerationGiven;
+    } else if (order == 1 && v->offset >= offsetof(UCInputs, current) &&
+               v->offset < offsetof(UCInputs, current) + sizeof inst->inputs.current) {
+        *target = &inst->inputs.currentRate[(v->offset - offsetof(UCInputs, current)) / sizeof(double)];
+    } else if (order == 1 && v->offset == offsetof(UCInputs, currentScale)) {
+        *target = &inst->inputs.currentScaleRate;
+    } else if (order == 1 && v->offset == offsetof(UCInputs, winchRate)) {
+        *target = &inst->inputs.winchRateRate;
+    } else if ((endVelocity >= 0 && order == 1) || (endPosition >= 0 && order == 2)) {
+        *target = &inst->inputs.endAcceleration[endVelocity >= 0 ? endVelocity : endPosition];
+        *given = &inst->inputs.endAccelerationGiven;
+    } else if ((*target = body_derivative_target(inst, v, order, given)) == NULL && order != 1) {
+        uc_log_status(&inst->log, fmi2Error,
+                      "%s: derivative of order %d of %s is not supported (order 1 of tow.vx/vy/vz, order 2 of "
+                      "tow.x/y/z, order 1 of other inputs)",
+                      function, order, v->name);
+        return fmi2Error;
     }
-    if (order == 1 && v->offset >= offsetof(UCInputs, current) &&
-        v->offset < offsetof(UCInputs, current) + sizeof inst->inputs.current) {
-        inst->inputs.currentRate[(v->offset - offsetof(UCInputs, current)) / sizeof(double)] = value;
-        return fmi2OK;
-    }
-    if (order == 1 && v->offset == offsetof(UCInputs, currentScale)) {
-        inst->inputs.currentScaleRate = value;
-        return fmi2OK;
-    }
-    if (order == 1 && v->offset == offsetof(UCInputs, winchRate)) {
-        inst->inputs.winchRateRate = value;
-        return fmi2OK;
-    }
-    if ((endVelocity >= 0 && order == 1) || (endPosition >= 0 && order == 2)) {
-        inst->inputs.endAcceleration[endVelocity >= 0 ? endVelocity : endPosition] = value;
-        mark_acceleration_given(inst, &inst->inputs.endAccelerationGiven);
-        return fmi2OK;
-    }
-    if (set_body_derivative(inst, v, order, value)) return fmi2OK;
-    if (order == 1) {
-        uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: derivative of %s ignored (held constant over a step%s)",
-               function, v->name, position >= 0 ? "; the tow velocity is the input tow.v*" : "");
-        return fmi2OK;
-    }
-    uc_log_status(&inst->log, fmi2Error,
-                  "%s: derivative of order %d of %s is not supported (order 1 of tow.vx/vy/vz, order 2 of "
-                  "tow.x/y/z, order 1 of other inputs)",
-                  function, order, v->name);
-    return fmi2Error;
+    return fmi2OK;
 }
 
 fmi2Status uc_set_input_derivatives(UCInstance* inst, const fmi2ValueReference vr[], size_t nvr,
@@ -278,9 +280,29 @@ fmi2Status uc_set_input_derivatives(UCInstance* inst, const fmi2ValueReference v
         check_arrays(inst, vr, nvr, order, function) != fmi2OK) {
         return fmi2Error;
     }
-    for (size_t i = 0; i < nvr; ++i) {
+    double* target;
+    int* given;
+    for (size_t i = 0; i < nvr; ++i) { /* every derivative is checked before any is kept */
         const UCVariable* v = find_or_log(inst, vr[i], UC_TYPE_REAL, function);
-        if (v == NULL || set_one_derivative(inst, v, order[i], values[i]) != fmi2OK) return fmi2Error;
+        if (v == NULL || derivative_target(inst, v, order[i], values[i], &target, &given) != fmi2OK) return fmi2Error;
+    }
+    for (size_t i = 0; i < nvr; ++i) {
+        const UCVariable* v = uc_variable_find(vr[i], UC_TYPE_REAL);
+        derivative_target(inst, v, order[i], values[i], &target, &given);
+        if (target == NULL) {
+            uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: derivative of %s ignored (held constant over a step%s)",
+                   function, v->name,
+                   component_of(v->offset, offsetof(UCInputs, tow)) >= 0 ? "; the tow velocity is the input tow.v*" : "");
+            continue;
+        }
+        *target = values[i];
+        if (given == &inst->inputs.towAccelerationGiven) {
+            mark_acceleration_given(inst, given, (int)(target - inst->inputs.towAcceleration), 0);
+        } else if (given == &inst->inputs.endAccelerationGiven) {
+            mark_acceleration_given(inst, given, (int)(target - inst->inputs.endAcceleration), 0);
+        } else if (given != NULL) {
+            *given = 1;
+        }
     }
     return fmi2OK;
 }

@@ -153,6 +153,22 @@ void uc_tow_position(const UCCable* c, double p[3]);
  * extrapolation of consistent inputs misses by millimetres (jerk h^3 / 6). */
 #define UC_TOW_MISMATCH_TOLERANCE 0.05
 
+/* How far two acceleration inputs disagree with the velocity inputs between them [m/s2 or rad/s2]: a0 at the
+ * previous communication point, a1 at this one, dv the change of the velocity input over the step h between
+ * them. The mean acceleration dv / h of any acceleration that moves monotonically from a0 to a1 lies between
+ * them; the distance of dv / h from that interval is returned when it exceeds UC_ACCELERATION_FLOOR +
+ * UC_ACCELERATION_MARGIN times the largest of |dv / h|, |a0|, |a1| (a smooth motion sampled three times per
+ * period stays within it), else 0. Accelerations held at 0 while the velocity changes disagree by all of
+ * dv / h; an acceleration in the wrong unit or frame by most of it. */
+double uc_acceleration_disagreement(double a0, double a1, double dv, double h);
+/* UCInputs.towAccelerationGiven (endAccelerationGiven): 0 when the master gave no acceleration for the step;
+ * otherwise bit 0, and UC_ACCELERATION_AS_INPUT(k) when component k is the input tow.a{k} (end.a{k}) set as a
+ * value (fmi2SetReal) rather than an input derivative. Only such a component, held at 0 while its velocity
+ * input changes, is taken as not set (a master that fills every input with 0; docs/interface.md). */
+#define UC_ACCELERATION_AS_INPUT(k) (2 << (k))
+#define UC_ACCELERATION_FLOOR 0.01
+#define UC_ACCELERATION_MARGIN 0.5
+
 double uc_time(const UCCable* c);
 void uc_get_outputs(const UCCable* c, UCOutputs* out);
 /* A mooring system's body[k].stiffness (docs/systems_mooring.md, "Mooring stiffness") into out: computed at the

@@ -412,18 +412,19 @@ bool Integrator::restart(double t, const double* y, const double* yp, std::strin
     return true;
 }
 
-bool Integrator::advance(double tEnd, std::string& error) {
+bool Integrator::advance(double tEnd, std::string& error, long maxSteps) {
     const Advancing guard(this);
+    const long limit = maxSteps > 0 ? std::min(maxSteps, kMaxStepsPerCall) : kMaxStepsPerCall;
     int flag = IDASetStopTime(ida_, tEnd);
     double tReached = 0.0;
     long steps = 0;
     auto* m = static_cast<IDAMem>(ida_);
     while (flag >= 0) {
-        if (++steps > kMaxStepsPerCall) {
+        if (++steps > limit) {
             flag = IDA_TOO_MUCH_WORK;
             char text[200];
             std::snprintf(text, sizeof text, "%ld steps taken before reaching the end of the communication step",
-                          kMaxStepsPerCall);
+                          limit);
             lastMessage_ = text;
             break;
         }

@@ -89,8 +89,9 @@ public:
     // Restarts the integrator at (t, y, y') (first order, fresh step size selection).
     bool restart(double t, const double* y, const double* yp, std::string& error);
     // Integrates to exactly tEnd (used as the stop time). On failure error names the SUNDIALS
-    // flag and the time reached; y, y' then hold the last successful state.
-    bool advance(double tEnd, std::string& error);
+    // flag and the time reached; y, y' then hold the last successful state. maxSteps > 0: at most
+    // that many steps (else the integrator's own limit), failing with IDA_TOO_MUCH_WORK.
+    bool advance(double tEnd, std::string& error, long maxSteps = 0);
 
     // The integrator's history (IDA's divided differences, step size, order, coefficients and
     // counters) as a block of history_size() doubles, so that a saved state continues exactly as

@@ -89,6 +89,20 @@ Vec3 jerk_estimate(const Vec3& a, const Vec3& aLast, const Vec3& v, const Vec3& 
 
 }  // namespace
 
+}  // namespace uc
+
+extern "C" double uc_acceleration_disagreement(double a0, double a1, double dv, double h) {
+    if (!(h > 0.0)) return 0.0;
+    const double mean = dv / h;
+    const double low = std::min(a0, a1), high = std::max(a0, a1);
+    const double miss = mean < low ? low - mean : mean > high ? mean - high : 0.0;
+    const double allowance =
+        UC_ACCELERATION_FLOOR + UC_ACCELERATION_MARGIN * std::max({std::fabs(mean), std::fabs(a0), std::fabs(a1)});
+    return miss > allowance ? miss : 0.0;
+}
+
+namespace uc {
+
 void DrivenEnd::reset(const Vec3& p, const Vec3& v, const Vec3& a, bool accelerationGiven) {
     position = p;
     velocity = v;
@@ -99,20 +113,36 @@ void DrivenEnd::reset(const Vec3& p, const Vec3& v, const Vec3& a, bool accelera
 }
 
 TowTrajectory DrivenEnd::next(double t, double h, double lastStep, const Vec3& positionInput,
-                              const Vec3& velocityInput, const Vec3& accelerationInput, bool accelerationGiven,
+                              const Vec3& velocityInput, const Vec3& accelerationInput, int accelerationFlags,
                               Vec3& a) const {
     // The acceleration is the master's input derivative when given; otherwise the difference of
     // the last two velocity inputs (0 before there are two), so that an accelerating tow sampled
-    // at communication points is still followed smoothly.
-    a = accelerationGiven ? accelerationInput
-        : lastStep > 0.0  ? Vec3((velocityInput - lastVelocityInput) / lastStep)
-                          : Vec3::Zero();
-    const Vec3 j = accelerationGiven && lastAccelerationGiven && lastStep > 0.0
-                       ? jerk_estimate(a, lastAccelerationInput, velocityInput, lastVelocityInput, lastStep)
-                       : Vec3::Zero();
-    const Vec3 p1 = positionInput + h * (velocityInput + h * (0.5 * a + h * (j / 6.0)));
-    const Vec3 v1 = velocityInput + h * (a + h * (0.5 * j));
-    const Vec3 a1 = a + h * j;
+    // at communication points is still followed smoothly. A component set as the input tow.a* (not
+    // an input derivative) to 0 here and at the previous communication point while its velocity
+    // input changed over the step (beyond uc_acceleration_disagreement's allowance) is a master
+    // that fills every input with 0, not an acceleration: it is estimated from the velocities too
+    // (docs/interface.md, "How the FMU reads a driven end").
+    const bool accelerationGiven = accelerationFlags != 0;
+    const Vec3 estimate = lastStep > 0.0 ? Vec3((velocityInput - lastVelocityInput) / lastStep) : Vec3::Zero();
+    a = accelerationGiven ? accelerationInput : estimate;  // what the next step remembers
+    Vec3 used = a;
+    bool zeroHeld[3] = {false, false, false};
+    if (accelerationGiven && lastAccelerationGiven && lastStep > 0.0) {
+        for (int k = 0; k < 3; ++k) {
+            zeroHeld[k] = (accelerationFlags & UC_ACCELERATION_AS_INPUT(k)) != 0 && accelerationInput[k] == 0.0 &&
+                          lastAccelerationInput[k] == 0.0 &&
+                          uc_acceleration_disagreement(0.0, 0.0, velocityInput[k] - lastVelocityInput[k], lastStep) > 0.0;
+            if (zeroHeld[k]) used[k] = estimate[k];
+        }
+    }
+    Vec3 j = accelerationGiven && lastAccelerationGiven && lastStep > 0.0
+                 ? jerk_estimate(used, lastAccelerationInput, velocityInput, lastVelocityInput, lastStep)
+                 : Vec3::Zero();
+    for (int k = 0; k < 3; ++k)
+        if (zeroHeld[k]) j[k] = 0.0;
+    const Vec3 p1 = positionInput + h * (velocityInput + h * (0.5 * used + h * (j / 6.0)));
+    const Vec3 v1 = velocityInput + h * (used + h * (0.5 * j));
+    const Vec3 a1 = used + h * j;
     return TowTrajectory::quintic(t, h, position, velocity, acceleration, p1, v1, a1);
 }
 
@@ -830,11 +860,11 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     const Vec3 towVelocityInput = vec(in.towVelocity), endVelocityInput = vec(in.endVelocity);
     Vec3 towAcceleration, endAcceleration;
     loads_.tow = tow_.next(time_, h, lastStepSize_, vec(in.tow), towVelocityInput, vec(in.towAcceleration),
-                           in.towAccelerationGiven != 0, towAcceleration);
+                           in.towAccelerationGiven, towAcceleration);
     const bool externalEnd = model_.params().bottomEnd == UC_BOTTOM_EXTERNAL;
     if (externalEnd) {
         loads_.end = end_.next(time_, h, lastStepSize_, vec(in.end), endVelocityInput, vec(in.endAcceleration),
-                               in.endAccelerationGiven != 0, endAcceleration);
+                               in.endAccelerationGiven, endAcceleration);
     }
     loads_.torque = cable_torque(in);
 
@@ -851,7 +881,7 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     winchTension_ = in.winchTension;
     const double topAtStart = model_.winch() ? model_.top_length() : 0.0;
     winchTopAtStep_ = topAtStart;
-    if (!integrator_->advance(tEnd, error)) {
+    if (!integrator_->advance(tEnd, error, in.stepBudget)) {
         rainflow_ = rainflowAtStart;  // the state stays at the last communication point
         restartPending_ = true;  // the state stays at the last communication point
         winchLength_ = winchLengthAtStart;

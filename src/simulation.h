@@ -37,8 +37,9 @@ struct DrivenEnd {
     void reset(const Vec3& p, const Vec3& v, const Vec3& a, bool accelerationGiven);
     // The trajectory over [t, t + h] towards the inputs (position, velocity and, if given, the
     // acceleration) extrapolated to t + h; lastStep is the previous step's size (0: none).
+    // accelerationGiven: as UCInputs.towAccelerationGiven (0, or bit 0 and UC_ACCELERATION_AS_INPUT bits).
     TowTrajectory next(double t, double h, double lastStep, const Vec3& positionInput, const Vec3& velocityInput,
-                       const Vec3& accelerationInput, bool accelerationGiven, Vec3& acceleration) const;
+                       const Vec3& accelerationInput, int accelerationGiven, Vec3& acceleration) const;
     // After a successful step along traj with these inputs.
     void advance(const TowTrajectory& traj, const Vec3& velocityInput, const Vec3& acceleration,
                  bool accelerationGiven);

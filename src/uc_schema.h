@@ -180,11 +180,11 @@ typedef struct UCInputs {
     double winchRate; /* winch.rate [m/s]: winch rate when `winchMode` = 1: positive pays out, negative hauls in (limited by `winch.maxRate` and the length limits); its input derivative (`fmi2SetRealInputDerivatives`, order 1) makes the command a ramp over the step, which the drum follows */
     double winchTension; /* winch.tension [N]: tow tension the winch holds when `winchMode` = 2 */
     double currentScale; /* currentScale: factor on the current depth profile: the water moves with `current.x/y` + `currentScale` × profile(depth), so a current that strengthens or turns with the tide at every depth in proportion is this input (with its derivative through `fmi2SetRealInputDerivatives` it changes linearly over a step, and the water's acceleration acts on the line) */
-    double towAcceleration[3]; /* tow.ax, tow.ay, tow.az [m/s2]: tow point acceleration for the coming step: the same as `der(tow.v*)` through `fmi2SetRealInputDerivatives`, for a master that cannot pass input derivatives (connect the vessel's acceleration here); used when set since the last step, otherwise the FMU estimates it from the last two velocity inputs; it is also the input of the derivatives' acceleration columns ([docs/cosimulation.md](docs/cosimulation.md)) */
+    double towAcceleration[3]; /* tow.ax, tow.ay, tow.az [m/s2]: tow point acceleration for the coming step: the same as `der(tow.v*)` through `fmi2SetRealInputDerivatives`, for a master that cannot pass input derivatives (connect the vessel's acceleration here); used when set since the last step (a component held at 0 while its velocity changes is taken as not set: [docs/interface.md](docs/interface.md#how-the-fmu-reads-a-driven-end)), otherwise the FMU estimates it from the last two velocity inputs; it is also the input of the derivatives' acceleration columns ([docs/cosimulation.md](docs/cosimulation.md)) */
     double endAcceleration[3]; /* end.ax, end.ay, end.az [m/s2]: far-end acceleration for the coming step when `bottomEnd` = 3: the same as `der(end.v*)`, used when set since the last step (as `tow.a*`) */
     UCCoupledBody coupledBody[UC_MAX_BODIES];
     UCCoupledPoint coupledPoint[UC_MAX_POINTS];
-    int towAccelerationGiven; /* (not an FMU variable) 1 when towAcceleration (the inputs tow.a*) came from the master for this step (fmi2SetRealInputDerivatives or fmi2SetReal); 0: the core estimates it from the last two tow velocity inputs */
+    int towAccelerationGiven; /* (not an FMU variable) non-zero when towAcceleration (the inputs tow.a*) came from the master for this step (fmi2SetRealInputDerivatives or fmi2SetReal; UC_ACCELERATION_AS_INPUT(k) marks a component set as the input value); 0: the core estimates it from the last two tow velocity inputs */
     int endAccelerationGiven; /* (not an FMU variable) as towAccelerationGiven, for the far end */
     double currentRate[2]; /* (not an FMU variable) [m/s2] der(current.x/y) from fmi2SetRealInputDerivatives: the uniform current changes linearly over the step; 0 if not given */
     double bodyAcceleration[24]; /* (not an FMU variable) [m/s2, rad/s2] per coupled body k (UC_MAX_BODIES x 6, at 6 k): der(body[k].vx/vy/vz) and der(body[k].wx/wy/wz) from fmi2SetRealInputDerivatives */
@@ -193,6 +193,7 @@ typedef struct UCInputs {
     int pointAccelerationGiven[16]; /* (not an FMU variable) per coupled point: 1 when pointAcceleration came from the master for this step */
     double currentScaleRate; /* (not an FMU variable) [1/s] der(currentScale) from fmi2SetRealInputDerivatives: the profile's scale changes linearly over the step; 0 if not given */
     double winchRateRate; /* (not an FMU variable) [m/s2] der(winch.rate) from fmi2SetRealInputDerivatives: the rate command changes linearly over the step; 0 if not given */
+    int stepBudget; /* (not an FMU variable) integrator steps the coming communication step may take (the adapter lowers it while an input is beyond its physical bound); 0: the integrator's own limit */
 } UCInputs;
 
 typedef struct UCOutputs {

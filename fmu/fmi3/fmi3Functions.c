@@ -226,6 +226,14 @@ static fmi3Status count_mismatch(UCInstance* inst, const char* function, size_t 
     return fmi3Error;
 }
 
+/* A setter's refusal before it reaches the FMI 2.0 adapter: as the adapter's own, the instance goes to the
+ * error state (it does not step on with or without the values). */
+static fmi3Status refuse_set(UCInstance* inst, const char* function, size_t nValueReferences, size_t expected,
+                             size_t nValues) {
+    count_mismatch(inst, function, nValueReferences, expected, nValues);
+    return (fmi3Status)uc_instance_finish(inst, fmi2Error);
+}
+
 static size_t total_elements(const fmi3ValueReference vr[], size_t nvr) {
     size_t total = 0;
     for (size_t k = 0; k < nvr; ++k) total += elements(vr[k]);
@@ -239,52 +247,97 @@ static size_t total_elements(const fmi3ValueReference vr[], size_t nvr) {
 UC_FMI3_ARRAYS(UC_FMI3_ARRAY_FITS)
 #undef UC_FMI3_ARRAY_FITS
 
-static fmi3Status access_float64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
-                                 fmi3Float64* values, size_t nValues, int set, const char* function) {
+/* The FMI 2.0 scalars of the variables vr[0..nvr), in order (nScalars of them, the caller checked the count). */
+static void expand_scalars(const fmi3ValueReference vr[], size_t nvr, fmi2ValueReference scalars[]) {
+    size_t at = 0;
+    for (size_t k = 0; k < nvr; ++k) {
+        fmi2ValueReference stride;
+        const size_t n = elements_and_stride(vr[k], &stride);
+        for (size_t i = 0; i < n; ++i) scalars[at++] = vr[k] + (fmi2ValueReference)i * stride;
+    }
+}
+
+/* fmi3SetFloat64: the count is checked and every value goes to the FMI 2.0 adapter in one fmi2SetReal, which
+ * checks them all before it writes any: a refusal leaves every variable as it was. */
+static fmi3Status set_float64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
+                              const fmi3Float64* values, size_t nValues) {
+    const char* function = "fmi3SetFloat64";
+    UCInstance* inst = inner(instance);
+    if (inst == NULL) return fmi3Error;
+    if (nvr > 0 && (vr == NULL || values == NULL)) {
+        uc_log_status(&inst->log, fmi2Error, "%s: vr or values is NULL with nvr = %zu", function, nvr);
+        return (fmi3Status)uc_instance_finish(inst, fmi2Error);
+    }
+    const size_t expected = total_elements(vr, nvr);
+    if (expected != nValues) return refuse_set(inst, function, nvr, expected, nValues);
+    for (size_t k = 0; k < nvr; ++k) {
+        if (vr[k] == UC_FMI3_TIME_VR) {
+            uc_log_status(&inst->log, fmi2Error, "%s: time (value reference %u) is the independent variable and "
+                          "cannot be set", function, (unsigned)vr[k]);
+            return (fmi3Status)uc_instance_finish(inst, fmi2Error);
+        }
+    }
+    fmi2ValueReference* scalars = malloc((nValues + 1) * sizeof *scalars);
+    if (scalars == NULL) {
+        uc_log_status(&inst->log, fmi2Error, "%s: out of memory for %zu values", function, nValues);
+        return (fmi3Status)uc_instance_finish(inst, fmi2Error);
+    }
+    expand_scalars(vr, nvr, scalars);
+    const fmi2Status status = fmi2SetReal(inst, scalars, nValues, values);
+    free(scalars);
+    return (fmi3Status)status;
+}
+
+static fmi3Status get_float64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Float64* values,
+                              size_t nValues) {
+    const char* function = "fmi3GetFloat64";
     UCInstance* inst = inner(instance);
     if (inst == NULL) return fmi3Error;
     if (nvr > 0 && (vr == NULL || values == NULL)) {
         uc_log_status(&inst->log, fmi2Error, "%s: vr or values is NULL with nvr = %zu", function, nvr);
         return fmi3Error;
     }
+    const size_t expected = total_elements(vr, nvr);
+    if (expected != nValues) return count_mismatch(inst, function, nvr, expected, nValues);
     size_t at = 0;
     fmi2Status worst = fmi2OK;
     for (size_t k = 0; k < nvr; ++k) {
         fmi2ValueReference stride;
         const size_t n = elements_and_stride(vr[k], &stride);
-        if (at + n > nValues) return count_mismatch(inst, function, nvr, total_elements(vr, nvr), nValues);
         fmi2Status status;
-        if (vr[k] == UC_FMI3_TIME_VR && !set) {
+        if (vr[k] == UC_FMI3_TIME_VR) {
             values[at] = inst->time;
             status = fmi2OK;
         } else {
             fmi2ValueReference scalars[UC_FMI3_MAX_ELEMENTS];
             for (size_t i = 0; i < n; ++i) scalars[i] = vr[k] + (fmi2ValueReference)i * stride;
-            status = set ? fmi2SetReal(inst, scalars, n, values + at) : fmi2GetReal(inst, scalars, n, values + at);
+            status = fmi2GetReal(inst, scalars, n, values + at);
         }
         if (status > worst) worst = status;
         if (worst > fmi2Warning) return (fmi3Status)worst;
         at += n;
     }
-    if (at != nValues) return count_mismatch(inst, function, nvr, at, nValues);
     return (fmi3Status)worst;
 }
 
 FMI3_EXPORT fmi3Status fmi3GetFloat64(fmi3Instance instance, const fmi3ValueReference valueReferences[],
                                       size_t nValueReferences, fmi3Float64 values[], size_t nValues) {
-    return access_float64(instance, valueReferences, nValueReferences, values, nValues, 0, "fmi3GetFloat64");
+    return get_float64(instance, valueReferences, nValueReferences, values, nValues);
 }
 
 FMI3_EXPORT fmi3Status fmi3SetFloat64(fmi3Instance instance, const fmi3ValueReference valueReferences[],
                                       size_t nValueReferences, const fmi3Float64 values[], size_t nValues) {
-    return access_float64(instance, valueReferences, nValueReferences, (fmi3Float64*)values, nValues, 1,
-                          "fmi3SetFloat64");
+    return set_float64(instance, valueReferences, nValueReferences, values, nValues);
 }
 
-/* Scalar-only types: one value per value reference. */
+/* Scalar-only types: one value per value reference (a setter's mismatch is a refusal: refuse_set). */
 static int scalar_counts(fmi3Instance instance, size_t nvr, size_t nValues, const char* function) {
     if (inner(instance) != NULL && nvr != nValues) {
-        count_mismatch(inner(instance), function, nvr, nvr, nValues);
+        if (strncmp(function, "fmi3Set", 7) == 0) {
+            refuse_set(inner(instance), function, nvr, nvr, nValues);
+        } else {
+            count_mismatch(inner(instance), function, nvr, nvr, nValues);
+        }
         return 0;
     }
     return inner(instance) != NULL;

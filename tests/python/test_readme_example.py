@@ -2,6 +2,7 @@
 state: it starts in the steady tow at 2.4 kn and stays there, the far end 174.5 m deep (the depth
 docs/cosimulation.md reports for 2.4 kn; the README prints it to 0.1 m)."""
 
+import os
 import re
 import subprocess
 import sys
@@ -17,8 +18,12 @@ def readme_example() -> str:
 
 
 def test_readme_fmpy_example_runs_without_warnings(fmu_file, tmp_path):
-    code = readme_example().replace('"build/UnderwaterCable.fmu"', repr(str(fmu_file)))
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=tmp_path, timeout=300)
+    """As printed: the FMU from ucable.fmu_path() (here UC_FMU names the one under test)."""
+    code = readme_example()
+    assert "ucable.fmu_path()" in code and "build/" not in code
+    env = dict(os.environ, UC_FMU=str(fmu_file), PYTHONPATH=str(ROOT / "python"))
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=tmp_path, timeout=300,
+                         env=env)
     assert out.returncode == 0, out.stderr
     assert "Warning" not in out.stdout + out.stderr, out.stdout + out.stderr
     m = re.search(r"tow tension (\d+) N, end depth ([\d.]+) m", out.stdout)
