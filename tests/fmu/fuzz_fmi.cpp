@@ -89,6 +89,7 @@ public:
         for (const UCVariable& v : vars_) {
             if (v.causality == UC_CAUSALITY_OUTPUT) outputs_.push_back(v.vr);
             if (std::strcmp(v.name, "lineFile") == 0) lineFileVr_ = v.vr;
+            if (v.causality == UC_CAUSALITY_INPUT) inputs_.push_back(&v - vars_.data());
         }
         for (const std::string& path : opt_.decks) {
             deckTexts_.push_back(read_text(path));
@@ -126,7 +127,9 @@ public:
         for (const auto& [name, count] : perFunction_) std::printf("  %-30s %lld\n", name.c_str(), count);
         if (!opt_.decks.empty()) {
             std::printf("decks: %lld instances given a deck (%lld of them edited), %lld deck edits between calls, "
-                        "%lld restores after an edit refused, %lld continued (the edit changed no value)\n",
+                        "%lld restores of a state whose deck was edited since refused, %lld accepted (restored into the "
+                        "instance still built from the deck it was saved with, a single line's state, which keeps its "
+                        "line, a state without a core, or an edit that changed no value)\n",
                         deckInstances_, deckMutated_, deckEdits_, editedRefused_, editedRestored_);
         }
         return violations_ == 0 ? 0 : 1;
@@ -249,7 +252,9 @@ private:
         *chosen = nullptr;
         if (chance(0.08)) return chance(0.5) ? (fmi2ValueReference)integer(0, 5000) : 0xFFFFFFFFu;
         for (int tries = 0; tries < 20; ++tries) {
-            const UCVariable& v = any_variable();
+            // deck mode: mostly the inputs (the deck, not random parameters, makes the system)
+            const bool input = !opt_.decks.empty() && !inputs_.empty() && chance(0.8);
+            const UCVariable& v = input ? vars_[inputs_[integer(0, (int)inputs_.size() - 1)]] : any_variable();
             if (v.type == type || chance(0.05)) {
                 *chosen = &v;
                 return v.vr;
@@ -608,7 +613,9 @@ private:
             }
         } else if (action < 86) {  // serialize, corrupt, deserialize
             if (s.states.empty()) return;
-            fmi2FMUstate st = s.states[integer(0, (int)s.states.size() - 1)];
+            const int which = integer(0, (int)s.states.size() - 1);
+            fmi2FMUstate st = s.states[which];
+            const bool editedSince = s.stateDecks[which] != s.deckText;  // its deck file changed since
             size_t size = 0;
             trace("fmi2SerializedFMUstateSize");
             const fmi2Status sizeStatus = fmi().SerializedFMUstateSize(s.c, st, &size);
@@ -650,6 +657,7 @@ private:
             if (chance(0.7)) {
                 trace("fmi2SetFMUstate (deserialized, " + what + ")");
                 const fmi2Status set = fmi().SetFMUstate(target.c, restored);
+                if (editedSince && what == "intact") ++(set == fmi2OK ? editedRestored_ : editedRefused_);
                 if (set == fmi2OK) {
                     target.inError = false;
                     double t = 0.0;
@@ -711,6 +719,7 @@ private:
     // deck mode
     std::vector<std::string> deckTexts_;
     fmi2ValueReference lineFileVr_ = 0;
+    std::vector<size_t> inputs_;  // indices into vars_
     long long deckInstances_ = 0, deckMutated_ = 0, deckEdits_ = 0, editedRefused_ = 0, editedRestored_ = 0;
 };
 
