@@ -348,6 +348,26 @@ TEST(MooringDeck, AFreeBodysImplausibleInertiaDragAddedMassOrMassAndVolumeAreRef
     EXPECT_TRUE(uc::read_mooring_deck(with("0 0|0|-1 1000 20 1.0 1.0"), 0, read, error)) << error;
 }
 
+TEST(MooringDeck, AFreePointsNegativeMassVolumeDragOrAddedMassAreRefusedNamingTheRowAndValue) {
+    // (no mass and no volume is a plain connection point: accepted, as MoorDyn's)
+    const std::string row = "7      Free     200.0   -346.0    -190.0   20000    1.0     0.5   1.0";
+    const std::pair<const char*, const char*> refused[] = {
+        {"7      Free     200.0   -346.0    -190.0   -20000    1.0     0.5   1.0", "line 16: Mass = -20000: must not be negative"},
+        {"7      Free     200.0   -346.0    -190.0   20000    -1.0     0.5   1.0", "line 16: Volume = -1.0: must not be negative"},
+        {"7      Free     200.0   -346.0    -190.0   20000    1.0     -0.5   1.0", "line 16: CdA = -0.5: must not be negative"},
+        {"7      Free     200.0   -346.0    -190.0   20000    1.0     0.5   -1.0", "line 16: CA = -1.0: must not be negative"},
+    };
+    uc::MooringDeck read;
+    std::string error;
+    for (const auto& [to, named] : refused) {
+        EXPECT_FALSE(uc::read_mooring_deck(edited(kPlatform, row, to), 0, read, error)) << to;
+        EXPECT_NE(error.find(named), std::string::npos) << error;
+    }
+    EXPECT_TRUE(uc::read_mooring_deck(edited(kPlatform, row, "7      Free     200.0   -346.0    -190.0   0 0 0 0"), 0,
+                                      read, error))
+        << error;
+}
+
 // A bridle of weightless straight lines (their mass that of the water they displace): a pennant from the
 // platform's fairlead a = (40, 0, -20) down to a buoyant free point at (0, 0, -50), two legs from there to
 // anchors at (-30, +-40, -80). The lengths make the tensions T0 = 2 kN in the pennant and T1 = 0.8 T0 l1 / 60

@@ -314,3 +314,31 @@ def test_a_state_restored_after_its_deck_was_edited_is_refused_naming_the_file_a
     again = make_cable(parameters=params)
     again.set_state(again.deserialize_state(data), time=0.6)
     again.do_step(0.2, t=0.6)
+
+
+ROW = "3000   0|0|-1.0   5000     15.0    3.0   1.0"  # Mass CG* I* Volume CdA* Ca* of the buoy body
+
+
+@pytest.mark.parametrize("fields, named", [
+    ("3000   0|0|-1.0   -5000     15.0    3.0   1.0",
+     "I = -5000: Free body 1's moment of inertia about its x axis is -5000 kg m2"),
+    ("3000   0|0|-1.0   5000     15.0    -3.0   1.0", "CdA = -3.0: Free body 1's drag area in x is -3 m2"),
+    ("3000   0|0|-1.0   5000     15.0    3.0   -1.0",
+     "Ca = -1.0: Free body 1's added-mass coefficient in x is -1"),
+    ("0   0|0|-1.0   5000     0    3.0   1.0",
+     "Mass = 0 kg and Volume = 0 m3: Free body 1 has neither mass nor volume"),
+], ids=["inertia", "drag", "added-mass", "no-mass-no-volume"])
+def test_an_implausible_free_body_is_refused_at_the_start_naming_the_row_and_the_value(
+        make_cable, tmp_path, fields, named):
+    """A free body's negative inertia, drag area or added-mass coefficient, or neither mass nor volume:
+    fmi2Error at the initialization naming the deck's row and the value (they were accepted, and the run
+    failed later asking for a shorter communication step, or with negative drag ran on)."""
+    text = fp.BUOY_BODY.read_text()
+    assert ROW in text
+    path = tmp_path / "buoy_body.dat"
+    path.write_text(text.replace(ROW, fields, 1))
+    c = make_cable(parameters={**ms.fmu_parameters(ms.read_system_deck(fp.BUOY_BODY)), "lineFile": str(path)})
+    with pytest.raises(FMICallException):
+        c.initialize()
+    refusal = [m for _, _, m in c.messages if named in m]
+    assert refusal and "line 12: " in refusal[0] and str(path) in refusal[0], c.log_text()
