@@ -185,6 +185,15 @@ std::vector<char> serialized_now(Instance& inst, long* undefined) {
     return bytes;
 }
 
+// Appends inst's serialized state to all; the offset of the first undefined byte in all (under valgrind) in
+// *undefined, where it is the first.
+void append_serialized(Instance& inst, std::vector<char>& all, long* undefined) {
+    long at = -1;
+    const std::vector<char> bytes = serialized_now(inst, &at);
+    if (at >= 0 && *undefined < 0) *undefined = static_cast<long>(all.size()) + at;
+    all.insert(all.end(), bytes.begin(), bytes.end());
+}
+
 // A winch that pays out 3 m and hauls in 1.6 m of 1 m elements (splits and merges), its state serialized
 // after every step (a remesh restarts the integrator: the states just after one hold a short history).
 std::vector<char> winch_run(long* undefined) {
@@ -202,10 +211,7 @@ std::vector<char> winch_run(long* undefined) {
     for (int k = 0; k < 50; ++k) {  // short steps: some end a few integrator steps after a remesh
         EXPECT_EQ(inst.setReal("winch.rate", k < 30 ? 5.0 : -4.0), fmi2OK);
         EXPECT_EQ(inst.steps(1, 0.02, &t), fmi2OK) << inst.log.all();
-        long at = -1;
-        const std::vector<char> bytes = serialized_now(inst, &at);
-        if (at >= 0 && *undefined < 0) *undefined = static_cast<long>(all.size()) + at;
-        all.insert(all.end(), bytes.begin(), bytes.end());
+        append_serialized(inst, all, undefined);
     }
     EXPECT_NEAR(inst.getReal("unstretchedLength"), 21.4, 1e-9);
     return all;
@@ -221,35 +227,31 @@ std::vector<char> free_body_run(long* undefined) {
     std::vector<char> all;
     for (int k = 0; k < 3; ++k) {
         EXPECT_EQ(inst.steps(1, 0.2, &t), fmi2OK) << inst.log.all();
-        long at = -1;
-        const std::vector<char> bytes = serialized_now(inst, &at);
-        if (at >= 0 && *undefined < 0) *undefined = static_cast<long>(all.size()) + at;
-        all.insert(all.end(), bytes.begin(), bytes.end());
+        append_serialized(inst, all, undefined);
     }
     return all;
+}
+
+// Run twice (another instance initialized in between: another heap history): the same bytes, all defined.
+void expect_the_same_defined_bytes(std::vector<char> (*run)(long*)) {
+    long undefinedA = -1, undefinedB = -1;
+    const std::vector<char> a = run(&undefinedA);
+    Instance other("between");
+    set_tow_inputs(other);
+    ASSERT_EQ(other.initialize(0.0, 100.0), fmi2OK);
+    const std::vector<char> b = run(&undefinedB);
+    EXPECT_EQ(undefinedA, -1) << "first undefined byte of " << a.size();
+    EXPECT_EQ(undefinedB, -1) << "first undefined byte of " << b.size();
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_TRUE(a == b);
 }
 
 }  // namespace
 
 TEST(FmuStateBytes, TwoIdenticalWinchRunsWithRemeshesSerializeTheSameDefinedBytes) {
-    long undefinedA = -1, undefinedB = -1;
-    const std::vector<char> a = winch_run(&undefinedA);
-    Instance other("between");  // another heap history before the second run
-    set_tow_inputs(other);
-    ASSERT_EQ(other.initialize(0.0, 100.0), fmi2OK);
-    const std::vector<char> b = winch_run(&undefinedB);
-    EXPECT_EQ(undefinedA, -1) << "first undefined byte of " << a.size();
-    EXPECT_EQ(undefinedB, -1) << "first undefined byte of " << b.size();
-    ASSERT_EQ(a.size(), b.size());
-    EXPECT_TRUE(a == b);
+    expect_the_same_defined_bytes(winch_run);
 }
 
 TEST(FmuStateBytes, TwoIdenticalRunsOfASystemWithAFreeBodySerializeTheSameDefinedBytes) {
-    long undefinedA = -1, undefinedB = -1;
-    const std::vector<char> a = free_body_run(&undefinedA);
-    const std::vector<char> b = free_body_run(&undefinedB);
-    EXPECT_EQ(undefinedA, -1) << "first undefined byte of " << a.size();
-    EXPECT_EQ(undefinedB, -1) << "first undefined byte of " << b.size();
-    ASSERT_EQ(a.size(), b.size());
-    EXPECT_TRUE(a == b);
+    expect_the_same_defined_bytes(free_body_run);
 }
