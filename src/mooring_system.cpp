@@ -1112,8 +1112,9 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
                 ", " + std::to_string(header.bodies) + " and " + std::to_string(header.nodes);
         return false;
     }
-    size_t expected = sizeof header + description_.size() * sizeof(double) + references_.size() * sizeof(DrivenEndState) +
-                      sizeof(UCOutputs) + sizeof(UCInputs) + nodes_.size() * kNodeStateDoubles * sizeof(double);
+    size_t expected = sizeof header + description_.size() * sizeof(double) +
+                      references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs) +
+                      nodes_.size() * kNodeStateDoubles * sizeof(double);
     for (size_t k = 0; k < lines_.size(); ++k) {
         if (header.lineSize[k] > size) break;  // (the sum below cannot wrap)
         expected += header.lineSize[k];

@@ -332,7 +332,8 @@ TEST(MooringDeck, AFreeBodysImplausibleInertiaDragAddedMassOrMassAndVolumeAreRef
     ASSERT_TRUE(uc::read_mooring_deck(with("2000 0|0|-1 1000 20 1.0 1.0"), 0, read, error)) << error;
     const std::pair<const char*, const char*> refused[] = {
         {"2000 0|0|-1 -1000 20 1.0 1.0", "I = -1000: Free body 1's moment of inertia about its x axis is -1000 kg m2"},
-        {"2000 0|0|-1 1000|0|1000 20 1.0 1.0", "I = 1000|0|1000: Free body 1's moment of inertia about its y axis is 0 kg m2"},
+        {"2000 0|0|-1 1000|0|1000 20 1.0 1.0",
+         "I = 1000|0|1000: Free body 1's moment of inertia about its y axis is 0 kg m2"},
         {"2000 0|0|-1 1000 20 -1.0 1.0", "CdA = -1.0: Free body 1's drag area in x is -1 m2"},
         {"2000 0|0|-1 1000 20 1|1|1|1|1|-2 1.0", "drag area in rotation about z is -2 m2"},
         {"2000 0|0|-1 1000 20 1.0 1|-0.5|1", "Ca = 1|-0.5|1: Free body 1's added-mass coefficient in y is -0.5"},
@@ -350,12 +351,12 @@ TEST(MooringDeck, AFreeBodysImplausibleInertiaDragAddedMassOrMassAndVolumeAreRef
 
 TEST(MooringDeck, AFreePointsNegativeMassVolumeDragOrAddedMassAreRefusedNamingTheRowAndValue) {
     // (no mass and no volume is a plain connection point: accepted, as MoorDyn's)
-    const std::string row = "7      Free     200.0   -346.0    -190.0   20000    1.0     0.5   1.0";
-    const std::pair<const char*, const char*> refused[] = {
-        {"7      Free     200.0   -346.0    -190.0   -20000    1.0     0.5   1.0", "line 16: Mass = -20000: must not be negative"},
-        {"7      Free     200.0   -346.0    -190.0   20000    -1.0     0.5   1.0", "line 16: Volume = -1.0: must not be negative"},
-        {"7      Free     200.0   -346.0    -190.0   20000    1.0     -0.5   1.0", "line 16: CdA = -0.5: must not be negative"},
-        {"7      Free     200.0   -346.0    -190.0   20000    1.0     0.5   -1.0", "line 16: CA = -1.0: must not be negative"},
+    const std::string head = "7      Free     200.0   -346.0    -190.0   ", row = head + "20000    1.0     0.5   1.0";
+    const std::pair<std::string, const char*> refused[] = {
+        {head + "-20000    1.0     0.5   1.0", "line 16: Mass = -20000: must not be negative"},
+        {head + "20000    -1.0     0.5   1.0", "line 16: Volume = -1.0: must not be negative"},
+        {head + "20000    1.0     -0.5   1.0", "line 16: CdA = -0.5: must not be negative"},
+        {head + "20000    1.0     0.5   -1.0", "line 16: CA = -1.0: must not be negative"},
     };
     uc::MooringDeck read;
     std::string error;
@@ -363,9 +364,7 @@ TEST(MooringDeck, AFreePointsNegativeMassVolumeDragOrAddedMassAreRefusedNamingTh
         EXPECT_FALSE(uc::read_mooring_deck(edited(kPlatform, row, to), 0, read, error)) << to;
         EXPECT_NE(error.find(named), std::string::npos) << error;
     }
-    EXPECT_TRUE(uc::read_mooring_deck(edited(kPlatform, row, "7      Free     200.0   -346.0    -190.0   0 0 0 0"), 0,
-                                      read, error))
-        << error;
+    EXPECT_TRUE(uc::read_mooring_deck(edited(kPlatform, row, head + "0 0 0 0"), 0, read, error)) << error;
 }
 
 // A bridle of weightless straight lines (their mass that of the water they displace): a pennant from the
