@@ -107,7 +107,12 @@ static fmi2Status restore_core(UCInstance* inst, const UCSavedState* s) {
         if (uc_sim_create_core(inst, &s->coreParams, "fmi2SetFMUstate") != fmi2OK) return fmi2Error;
     }
     if (uc_state_restore(inst->cable, s->core, s->coreSize, inst->msg, sizeof inst->msg) != 0) {
-        uc_log_status(&inst->log, fmi2Error, "fmi2SetFMUstate: cannot restore the cable state: %s", inst->msg);
+        if (s->coreParams.mooringSystem) { /* the system was made from lineFile: name it */
+            uc_log_status(&inst->log, fmi2Error, "fmi2SetFMUstate: lineFile %s: cannot restore the mooring system's "
+                          "state: %s", s->coreParams.lineFile, inst->msg);
+        } else {
+            uc_log_status(&inst->log, fmi2Error, "fmi2SetFMUstate: cannot restore the cable state: %s", inst->msg);
+        }
         uc_instance_drop_core(inst);
         return fmi2Error;
     }

@@ -225,6 +225,14 @@ Integrator::Integrator(SUNContext context, int n, int bandwidth, SecondOrderSyst
     bool ok = true;
     ok = ok && route_messages();
     ok = ok && IDAInit(ida_, &Integrator::residual_callback, 0.0, y_, yp_) == IDA_SUCCESS;
+    if (ok) {
+        // IDA fills the history arrays beyond phi[1] only as the order rises, and allocates them without
+        // initializing them: zeroed here, a saved history holds no stale heap bytes (states are the same
+        // bytes for the same run).
+        auto* m = static_cast<IDAMem>(ida_);
+        for (int j = 2; j < MXORDP1; ++j)
+            if (m->ida_phi[j]) N_VConst(0.0, m->ida_phi[j]);
+    }
     ok = ok && IDASetUserData(ida_, this) == IDA_SUCCESS;
     ok = ok && IDASetLinearSolver(ida_, solver_, J_) == IDA_SUCCESS;
     ok = ok && IDASetJacFn(ida_, &Integrator::jacobian_callback) == IDA_SUCCESS;

@@ -1237,6 +1237,33 @@ bool drag_field(Fields& f, const Row& row, size_t i, double out[6]) {
     return true;
 }
 
+// A Free body's inertia, drag and added mass as its equations of motion need them: each moment of inertia
+// positive, drag areas and added-mass coefficients not negative, and mass or volume (a body with neither
+// has no inertia of translation). False (the error naming the column and the value) where not.
+bool free_body_plausible(Fields& f, const Row& row, const DeckBody& b) {
+    static const char* const kAxes[6] = {"x", "y", "z", "rotation about x", "rotation about y", "rotation about z"};
+    const std::string id = "Free body " + std::to_string(b.id);
+    for (int k = 0; k < 3; ++k) {
+        if (!(b.inertia[k] > 0.0))
+            return f.fail("I = " + shown(row.tokens[10]) + ": " + id + "'s moment of inertia about its " + kAxes[k] +
+                          " axis is " + number_text(b.inertia[k]) + " kg m2; it must be positive");
+    }
+    for (int k = 0; k < 6; ++k) {
+        if (b.CdA[k] < 0.0)
+            return f.fail("CdA = " + shown(row.tokens[12]) + ": " + id + "'s drag area in " + kAxes[k] + " is " +
+                          number_text(b.CdA[k]) + " m2; it must not be negative");
+    }
+    for (int k = 0; k < 3; ++k) {
+        if (b.Ca[k] < 0.0)
+            return f.fail("Ca = " + shown(row.tokens[13]) + ": " + id + "'s added-mass coefficient in " + kAxes[k] +
+                          " is " + number_text(b.Ca[k]) + "; it must not be negative");
+    }
+    if (b.mass == 0.0 && b.volume == 0.0)
+        return f.fail("Mass = 0 kg and Volume = 0 m3: " + id + " has neither mass nor volume, so no inertia of "
+                      "translation and no weight (give its mass, or its volume for a buoy)");
+    return true;
+}
+
 // MoorDyn's BODIES row: ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca* (angles in degrees).
 bool read_body(const Row& row, int expectedId, DeckBody& b, std::vector<std::string>& notes, std::string& error) {
     Fields f(row, error);
@@ -1277,6 +1304,7 @@ bool read_body(const Row& row, int expectedId, DeckBody& b, std::vector<std::str
         if (!f.ok() || !vector_field(f, row, 9, "CG", true, b.cg) || !vector_field(f, row, 10, "I", false, b.inertia) ||
             !drag_field(f, row, 12, b.CdA) || !vector_field(f, row, 13, "Ca", false, b.Ca))
             return false;
+        if (!free_body_plausible(f, row, b)) return false;
     }
     if (f.ok() && b.kind == BodyKind::Coupled && row.tokens.size() > 8) {
         notes.push_back(at_line(row.number, "the mass, inertia, volume and drag of coupled body " + std::to_string(b.id) +

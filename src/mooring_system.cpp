@@ -16,13 +16,14 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kSystemMagic = 0x5543534D;  // "UCSM"
-constexpr std::uint32_t kSystemVersion = 2;
+constexpr std::uint32_t kSystemVersion = 3;
 
 struct SystemHeader {
     std::uint32_t magic, version;
     std::int32_t lines, bodies, nodes, reserved;
     double lastStep;
     std::uint64_t lineSize[UC_MAX_LINES];
+    std::uint64_t described;  // values of the system's description that follow the header
 };
 
 Vec3 vec3(const double v[3]) { return Vec3(v[0], v[1], v[2]); }
@@ -98,7 +99,9 @@ bool MooringSystem::build(std::string& error) {
         segments_.push_back(segments);
         pointLoads_.push_back(points);
         hangingWeight_.push_back(weight);
+        describe_line(static_cast<int>(k), p);
     }
+    describe_nodes();
     references_.assign(static_cast<size_t>(deck_.bodies), DrivenEnd());
     for (const MooringNode& n : deck_.nodes) {
         nodes_.push_back(vec3(n.position));
@@ -115,6 +118,72 @@ bool MooringSystem::build(std::string& error) {
     derivativeStamp_.assign(static_cast<size_t>(deck_.bodies), -1);
     derivativeCache_.assign(static_cast<size_t>(deck_.bodies), {});
     return true;
+}
+
+// The numeric parameters of the schema (Strings, such as lineFile itself, name no value of the system).
+#define UC_DESCRIBE_VARIABLE(vr, name, TYPE, CAUSALITY, member) UC_DESCRIBE_##CAUSALITY##_##TYPE(name, member)
+#define UC_DESCRIBE_PARAMETER_REAL(name, member) add(name, p.member);
+#define UC_DESCRIBE_PARAMETER_INTEGER(name, member) add(name, p.member);
+#define UC_DESCRIBE_PARAMETER_BOOLEAN(name, member) add(name, p.member);
+#define UC_DESCRIBE_PARAMETER_STRING(name, member)
+#define UC_DESCRIBE_INPUT_REAL(name, member)
+#define UC_DESCRIBE_INPUT_INTEGER(name, member)
+#define UC_DESCRIBE_INPUT_BOOLEAN(name, member)
+#define UC_DESCRIBE_INPUT_STRING(name, member)
+#define UC_DESCRIBE_OUTPUT_REAL(name, member)
+#define UC_DESCRIBE_OUTPUT_INTEGER(name, member)
+#define UC_DESCRIBE_OUTPUT_BOOLEAN(name, member)
+#define UC_DESCRIBE_OUTPUT_STRING(name, member)
+
+void MooringSystem::describe_line(int k, const UCParams& p) {
+    const MooringDeckLine& l = deck_.lines[k];
+    const std::string prefix = "line " + std::to_string(l.id) + " (deck row " + std::to_string(l.row) + "): ";
+    auto add = [&](const std::string& name, double value) { description_.push_back({prefix + name, value}); };
+    UC_SCHEMA_VARIABLES(UC_DESCRIBE_VARIABLE)
+    const MooringEnd* ends[2] = {&l.fairlead, &l.far};
+    static const char* const kEnds[2] = {"fairlead", "far end"};
+    for (int e = 0; e < 2; ++e) {
+        const std::string end = kEnds[e];
+        add(end + " kind", static_cast<double>(ends[e]->kind));
+        add(end + " body", ends[e]->body);
+        add(end + " point", ends[e]->point);
+        add(end + " node", ends[e]->node);
+        for (int i = 0; i < 3; ++i) add(end + " position[" + std::to_string(i) + "] [m]", ends[e]->position[i]);
+    }
+    add("far end free", l.farFree ? 1.0 : 0.0);
+    add("far body mass [kg]", l.farBody.mass);
+    add("far body volume [m3]", l.farBody.volume);
+    add("far body added mass [kg]", l.farBody.addedMass);
+    add("far body CdA [m2]", l.farBody.CdA);
+}
+
+void MooringSystem::describe_nodes() {
+    auto add = [&](const std::string& name, double value) { description_.push_back({name, value}); };
+    add("deck: lines", deck_.deckLines);
+    add("deck: coupled bodies", deck_.bodies);
+    add("deck: BODIES section", deck_.bodiesSection ? 1.0 : 0.0);
+    add("deck: free nodes start at the deck's positions (TmaxIC 0)", deck_.nodesFromDeck ? 1.0 : 0.0);
+    add("deck: WtrDpth [m]", deck_.waterDepth);
+    add("deck: gravity [m/s2]", deck_.gravity);
+    add("deck: water density [kg/m3]", deck_.waterDensity);
+    for (const MooringNode& n : deck_.nodes) {
+        const std::string prefix = (n.body ? "free body " : "free point ") + std::to_string(n.point.id) +
+                                   " (deck row " + std::to_string(n.point.row) + "): ";
+        auto three = [&](const std::string& name, const double* v, int count = 3) {
+            for (int i = 0; i < count; ++i) add(prefix + name + "[" + std::to_string(i) + "]", v[i]);
+        };
+        add(prefix + "mass [kg]", n.point.mass);
+        add(prefix + "volume [m3]", n.point.volume);
+        add(prefix + "added mass [kg]", n.point.addedMass);
+        add(prefix + "CdA [m2]", n.point.CdA);
+        three("position [m]", n.position);
+        add(prefix + "body", n.body ? 1.0 : 0.0);
+        three("angles [rad]", n.angles);
+        three("CG [m]", n.cg);
+        three("inertia [kg m2]", n.inertia);
+        three("CdA [m2]", n.CdA, 6);
+        three("Ca [-]", n.Ca);
+    }
 }
 
 MooringSystem::Motion MooringSystem::end_motion(const MooringEnd& end, const UCInputs& in) const {
@@ -945,8 +1014,9 @@ bool MooringSystem::body_derivatives(int b, double d[6][UC_BODY_DERIVATIVE_INPUT
 }
 
 size_t MooringSystem::state_size() const {
-    size_t size = sizeof(SystemHeader) + references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) +
-                  sizeof(UCInputs) + nodes_.size() * kNodeStateDoubles * sizeof(double);
+    size_t size = sizeof(SystemHeader) + description_.size() * sizeof(double) +
+                  references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs) +
+                  nodes_.size() * kNodeStateDoubles * sizeof(double);
     for (const auto& line : lines_) size += line->state_size();
     return size;
 }
@@ -960,9 +1030,14 @@ void MooringSystem::save_state(void* buffer) {
     header.nodes = static_cast<std::int32_t>(nodes_.size());
     header.lastStep = lastStep_;
     for (size_t k = 0; k < lines_.size(); ++k) header.lineSize[k] = lines_[k]->state_size();
+    header.described = description_.size();
     auto* out = static_cast<unsigned char*>(buffer);
     std::memcpy(out, &header, sizeof header);
     out += sizeof header;
+    for (const DescribedValue& d : description_) {
+        std::memcpy(out, &d.value, sizeof d.value);
+        out += sizeof d.value;
+    }
     for (const DrivenEnd& e : references_) {
         DrivenEndState s{};
         e.save(s);
@@ -993,6 +1068,28 @@ void MooringSystem::save_state(void* buffer) {
     }
 }
 
+// Bit for bit: a state continues exactly as saved only on the very system it was saved from.
+bool MooringSystem::same_description(const unsigned char* saved, std::string& error) const {
+    size_t differ = 0, first = 0;
+    double then = 0.0;
+    for (size_t i = 0; i < description_.size(); ++i) {
+        double value;
+        std::memcpy(&value, saved + i * sizeof value, sizeof value);
+        if (std::memcmp(&value, &description_[i].value, sizeof value) == 0) continue;
+        if (differ++ == 0) {
+            first = i;
+            then = value;
+        }
+    }
+    if (differ == 0) return true;
+    char text[160];
+    std::snprintf(text, sizeof text, " = %.17g now, %.17g in the state", description_[first].value, then);
+    error = "the deck is not the one the state was saved with: " + description_[first].name + text +
+            (differ > 1 ? " (and " + std::to_string(differ - 1) + " more values differ)" : std::string()) +
+            "; restore the deck the state was saved with, or initialize anew";
+    return false;
+}
+
 bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& error) {
     ++stamp_;
     SystemHeader header;
@@ -1002,21 +1099,33 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     }
     const auto* in = static_cast<const unsigned char*>(buffer);
     std::memcpy(&header, in, sizeof header);
-    if (header.magic != kSystemMagic || header.version != kSystemVersion ||
-        header.lines != static_cast<std::int32_t>(lines_.size()) ||
-        header.bodies != static_cast<std::int32_t>(references_.size()) ||
-        header.nodes != static_cast<std::int32_t>(nodes_.size())) {
-        error = "saved state does not belong to this mooring system (magic, version or sizes differ)";
+    if (header.magic != kSystemMagic || header.version != kSystemVersion) {
+        error = "saved state is not a state of a mooring system of this version (magic or version differ)";
         return false;
     }
-    size_t expected = sizeof header + references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs) +
+    if (header.lines != static_cast<std::int32_t>(lines_.size()) ||
+        header.bodies != static_cast<std::int32_t>(references_.size()) ||
+        header.nodes != static_cast<std::int32_t>(nodes_.size()) || header.described != description_.size()) {
+        error = "the deck is not the one the state was saved with: it makes " + std::to_string(lines_.size()) +
+                " lines, " + std::to_string(references_.size()) + " coupled bodies and " +
+                std::to_string(nodes_.size()) + " free nodes now, the state's " + std::to_string(header.lines) +
+                ", " + std::to_string(header.bodies) + " and " + std::to_string(header.nodes);
+        return false;
+    }
+    size_t expected = sizeof header + description_.size() * sizeof(double) +
+                      references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs) +
                       nodes_.size() * kNodeStateDoubles * sizeof(double);
-    for (size_t k = 0; k < lines_.size(); ++k) expected += header.lineSize[k];
+    for (size_t k = 0; k < lines_.size(); ++k) {
+        if (header.lineSize[k] > size) break;  // (the sum below cannot wrap)
+        expected += header.lineSize[k];
+    }
     if (size != expected) {
         error = "saved state has the wrong size for this mooring system";
         return false;
     }
     in += sizeof header;
+    if (!same_description(in, error)) return false;
+    in += description_.size() * sizeof(double);
     std::vector<DrivenEnd> references(references_.size());
     for (DrivenEnd& e : references) {
         DrivenEndState s;

@@ -47,7 +47,18 @@ public:
 
     size_t state_size() const;
     void save_state(void* buffer);
+    // Refuses (false, error naming the first value that differs) a state saved by a system built from
+    // another deck: a state carries every value the system was built from (its description).
     bool restore_state(const void* buffer, size_t size, std::string& error);
+
+    // Every number the system was built from, named: each line's parameters (the deck's line with the
+    // instance's parameters), its ends, the free nodes' mass, volume, drag, added mass, inertia and pose,
+    // the deck's environment. Saved with each state; a restore compares it bit for bit.
+    struct DescribedValue {
+        std::string name;  // "line 2 (deck row 14): length" ...
+        double value;
+    };
+    const std::vector<DescribedValue>& description() const { return description_; }
 
     // The quasi-static 6x6 stiffness of the lines on body b (1-based) at the body pose of the inputs:
     // K[6 i + j] = -d(force, moment)_i / d(x, y, z, theta_x, theta_y, theta_z)_j with theta a small
@@ -194,6 +205,11 @@ private:
     std::vector<std::vector<LineProfile::Segment>> segments_;
     std::vector<std::vector<LineProfile::PointLoad>> pointLoads_;
     std::vector<double> hangingWeight_;  // per line with a free far end: its submerged weight and its body's
+    std::vector<DescribedValue> description_;  // see description()
+    void describe_line(int k, const UCParams& p);  // appends line k's values (its parameters p, its ends)
+    void describe_nodes();                         // appends the deck's environment and the free nodes'
+    // Whether the description saved at `saved` is this system's (else false, error naming what differs).
+    bool same_description(const unsigned char* saved, std::string& error) const;
     // --- state ---
     std::vector<DrivenEnd> references_;  // each body's reference point, extrapolated as the fairleads are
     std::vector<Vec3> nodes_;            // the free nodes' positions

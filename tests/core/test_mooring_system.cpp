@@ -315,6 +315,58 @@ TEST(MooringDeck, AFreeBodysDragAreasAndAddedMassAreReadPerAxisAsMoorDynDocument
     }
 }
 
+TEST(MooringDeck, AFreeBodysImplausibleInertiaDragAddedMassOrMassAndVolumeAreRefusedNamingTheRowAndValue) {
+    // the body row of the deck, rewritten field by field (Mass CG* I* Volume CdA* Ca*)
+    const WeightlessLegs legs;
+    const std::string text = legs.deck(true), head = "1 Free 3.0 -2.0 -50.0 5 -3 10 ";
+    const size_t at = text.find(head), end = text.find('\n', at);
+    ASSERT_NE(at, std::string::npos);
+    const size_t rowNumber = static_cast<size_t>(std::count(text.begin(), text.begin() + at, '\n')) + 1;
+    auto with = [&](const std::string& fields) {
+        std::string deck = text;
+        deck.replace(at, end - at, head + fields);
+        return deck;
+    };
+    uc::MooringDeck read;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(with("2000 0|0|-1 1000 20 1.0 1.0"), 0, read, error)) << error;
+    const std::pair<const char*, const char*> refused[] = {
+        {"2000 0|0|-1 -1000 20 1.0 1.0", "I = -1000: Free body 1's moment of inertia about its x axis is -1000 kg m2"},
+        {"2000 0|0|-1 1000|0|1000 20 1.0 1.0",
+         "I = 1000|0|1000: Free body 1's moment of inertia about its y axis is 0 kg m2"},
+        {"2000 0|0|-1 1000 20 -1.0 1.0", "CdA = -1.0: Free body 1's drag area in x is -1 m2"},
+        {"2000 0|0|-1 1000 20 1|1|1|1|1|-2 1.0", "drag area in rotation about z is -2 m2"},
+        {"2000 0|0|-1 1000 20 1.0 1|-0.5|1", "Ca = 1|-0.5|1: Free body 1's added-mass coefficient in y is -0.5"},
+        {"0 0|0|-1 1000 0 1.0 1.0", "Mass = 0 kg and Volume = 0 m3: Free body 1 has neither mass nor volume"},
+        {"-5 0|0|-1 1000 20 1.0 1.0", "Mass = -5: must not be negative"},
+    };
+    for (const auto& [fields, named] : refused) {
+        EXPECT_FALSE(uc::read_mooring_deck(with(fields), 0, read, error)) << fields;
+        EXPECT_NE(error.find("line " + std::to_string(rowNumber) + ": "), std::string::npos) << fields << ": " << error;
+        EXPECT_NE(error.find(named), std::string::npos) << fields << ": " << error;
+    }
+    // a buoy of no mass (its volume gives it inertia through the added mass and a weight) is a body
+    EXPECT_TRUE(uc::read_mooring_deck(with("0 0|0|-1 1000 20 1.0 1.0"), 0, read, error)) << error;
+}
+
+TEST(MooringDeck, AFreePointsNegativeMassVolumeDragOrAddedMassAreRefusedNamingTheRowAndValue) {
+    // (no mass and no volume is a plain connection point: accepted, as MoorDyn's)
+    const std::string head = "7      Free     200.0   -346.0    -190.0   ", row = head + "20000    1.0     0.5   1.0";
+    const std::pair<std::string, const char*> refused[] = {
+        {head + "-20000    1.0     0.5   1.0", "line 16: Mass = -20000: must not be negative"},
+        {head + "20000    -1.0     0.5   1.0", "line 16: Volume = -1.0: must not be negative"},
+        {head + "20000    1.0     -0.5   1.0", "line 16: CdA = -0.5: must not be negative"},
+        {head + "20000    1.0     0.5   -1.0", "line 16: CA = -1.0: must not be negative"},
+    };
+    uc::MooringDeck read;
+    std::string error;
+    for (const auto& [to, named] : refused) {
+        EXPECT_FALSE(uc::read_mooring_deck(edited(kPlatform, row, to), 0, read, error)) << to;
+        EXPECT_NE(error.find(named), std::string::npos) << error;
+    }
+    EXPECT_TRUE(uc::read_mooring_deck(edited(kPlatform, row, head + "0 0 0 0"), 0, read, error)) << error;
+}
+
 // A bridle of weightless straight lines (their mass that of the water they displace): a pennant from the
 // platform's fairlead a = (40, 0, -20) down to a buoyant free point at (0, 0, -50), two legs from there to
 // anchors at (-30, +-40, -80). The lengths make the tensions T0 = 2 kN in the pennant and T1 = 0.8 T0 l1 / 60
@@ -500,6 +552,51 @@ TEST(MooringSystem, ASavedStateContinuesBitForBit) {
     for (int k = 5; k < 10; ++k) step(k);
     EXPECT_EQ(std::memcmp(&first, &system.outputs(), sizeof first), 0);
     EXPECT_FALSE(system.restore_state(state.data(), state.size() - 8, error));
+}
+
+TEST(MooringSystem, AStateIsRefusedByASystemOfAnEditedDeckNamingWhatDiffers) {
+    // saved from the platform's deck, restored into systems of the deck edited: refused, naming the first
+    // value that differs and both its values (a silent mix would step the state with the new lines)
+    auto built = [](const std::string& text) {
+        uc::MooringDeck deck;
+        std::string error;
+        EXPECT_TRUE(uc::read_mooring_deck(text, 0, deck, error)) << error;
+        auto system = std::make_unique<uc::MooringSystem>(system_parameters(), deck);
+        EXPECT_TRUE(system->build(error)) << error;
+        return system;
+    };
+    std::string error;
+    auto saver = built(kPlatform);
+    ASSERT_TRUE(saver->initialize(0.0, platform_inputs(0.0, 0.0, 0.0), error)) << error;
+    ASSERT_TRUE(saver->step(0.0, 0.2, platform_inputs(0.1, 0.0, 0.5), error)) << error;
+    std::vector<unsigned char> state(saver->state_size());
+    saver->save_state(state.data());
+    const struct {
+        const char *from, *to, *named;
+    } edits[] = {
+        {"1         main        1         4       835.35", "1         main        1         4       845.35",
+         "line 1 (deck row 20): length = 845.35000000000002 now, 835.35000000000002 in the state"},
+        {"7.536E8", "3.768E8", "line 1 (deck row 20): EA = 376800000 now, 753600000 in the state"},
+        {"7      Free     200.0   -346.0    -190.0   20000", "7      Free     200.0   -346.0    -190.0   40000",
+         "= 40000 now, 20000 in the state"},
+        {"200      WtrDpth", "210      WtrDpth", "waterDepth = 210 now, 200 in the state"},
+    };
+    for (const auto& e : edits) {
+        auto edited_system = built(edited(kPlatform, e.from, e.to));
+        ASSERT_EQ(edited_system->state_size(), state.size()) << e.to;  // the same shape: only the values tell
+        EXPECT_FALSE(edited_system->restore_state(state.data(), state.size(), error)) << e.to;
+        EXPECT_NE(error.find("the deck is not the one the state was saved with: "), std::string::npos) << error;
+        EXPECT_NE(error.find(e.named), std::string::npos) << e.to << ": " << error;
+    }
+    // another line (the deck's lines 3 and 4 are one line of the system): the shape differs, refused all the same
+    auto more = built(edited(kPlatform, "4         main        6         7       435.35     12        -",
+                             "4         main        6         7       435.35     12        -\n"
+                             "5         main        1         5       835.35     20        -"));
+    EXPECT_FALSE(more->restore_state(state.data(), state.size(), error));
+    EXPECT_NE(error.find("the deck is not the one the state was saved with: it makes 4 lines"), std::string::npos)
+        << error;
+    // the deck it was saved with: restored
+    EXPECT_TRUE(built(kPlatform)->restore_state(state.data(), state.size(), error)) << error;
 }
 
 TEST(MooringDeckFuzz, TruncationsAndMutationsOfASystemDeckNeverCrash) {

@@ -15,14 +15,25 @@
 // scripts/fuzz_fmi). --trace prints each call before it is made, so the last line before a crash is
 // the culprit; the sequence depends only on --seed (and the FMU's return values).
 //
-//   uc_fmi_fuzz [--calls N] [--seed S] [--seconds T] [--trace]
+// --decks: deck mode. Most instances are given a lineFile, a private copy of one of the project's decks
+// (mooring systems with coupled bodies and points, free points and free bodies, OC4; single lines), some
+// of them with one number of a data row changed; the body[k].* and point[k].* inputs get plausible
+// poses and velocities, and the fuzzer also edits an instance's deck copy between calls (a state saved
+// before is then refused by fmi2SetFMUstate where the edit changed a value the system was built from;
+// the run counts those refusals).
+//
+//   uc_fmi_fuzz [--calls N] [--seed S] [--seconds T] [--trace] [--decks [FILE,FILE,...]]
+#include <unistd.h>
+
 #include <chrono>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <limits>
+#include <sstream>
 #include <map>
 #include <random>
 #include <string>
@@ -38,7 +49,23 @@ struct Options {
     uint64_t seed = 1;
     double seconds = 1e30;
     bool trace = false;
+    std::vector<std::string> decks;  // deck mode when not empty
 };
+
+// The decks of deck mode by default: the project's mooring-system and line decks and the OC4 scene.
+std::vector<std::string> default_decks() {
+    const std::string data = UC_TEST_DATA_DIR "/decks/";
+    return {data + "platform_buoy_leg.dat", data + "subsurface_buoy_body.dat", data + "subsurface_buoy.dat",
+            data + "clump_weight.dat",      data + "chain_wire_chain.dat",     data + "clump_on_seabed.dat",
+            data + "chain.dat",             UC_SCENES_DIR "/oc4_semi.dat"};
+}
+
+std::string read_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
 
 struct Slot {
     fmi2Component c = nullptr;
@@ -48,6 +75,9 @@ struct Slot {
     int phase = 0;                // 0 instantiated, 1 initialization mode, 2 stepping, 3 other (terminated, error)
     bool steppedOk = false;       // the last call was a successful fmi2DoStep
     std::vector<fmi2FMUstate> states;
+    // deck mode: the instance's private deck file, its text now, and per state the text it was saved with
+    std::string deckPath, deckText;
+    std::vector<std::string> stateDecks;
 };
 
 class Fuzzer {
@@ -58,7 +88,19 @@ public:
         vars_.assign(table, table + n);
         for (const UCVariable& v : vars_) {
             if (v.causality == UC_CAUSALITY_OUTPUT) outputs_.push_back(v.vr);
+            if (std::strcmp(v.name, "lineFile") == 0) lineFileVr_ = v.vr;
+            if (v.causality == UC_CAUSALITY_INPUT) inputs_.push_back(&v - vars_.data());
         }
+        for (const std::string& path : opt_.decks) {
+            deckTexts_.push_back(read_text(path));
+            if (deckTexts_.back().empty()) std::fprintf(stderr, "fuzz_fmi: deck %s is empty or unreadable\n", path.c_str());
+        }
+        for (int k = 0; k < 3; ++k) {
+            slots_[k].deckPath = "/tmp/uc_fmi_fuzz_" + std::to_string(getpid()) + "_" + std::to_string(k) + ".dat";
+        }
+    }
+    ~Fuzzer() {
+        for (Slot& s : slots_) std::remove(s.deckPath.c_str());
     }
 
     int run() {
@@ -83,6 +125,13 @@ public:
                     "successful steps %lld\n",
                     status_[0], status_[1], status_[2], status_[3], status_[4], okSteps_);
         for (const auto& [name, count] : perFunction_) std::printf("  %-30s %lld\n", name.c_str(), count);
+        if (!opt_.decks.empty()) {
+            std::printf("decks: %lld instances given a deck (%lld of them edited), %lld deck edits between calls, "
+                        "%lld restores of a state whose deck was edited since refused, %lld accepted (restored into the "
+                        "instance still built from the deck it was saved with, a single line's state, which keeps its "
+                        "line, a state without a core, or an edit that changed no value)\n",
+                        deckInstances_, deckMutated_, deckEdits_, editedRefused_, editedRestored_);
+        }
         return violations_ == 0 ? 0 : 1;
     }
 
@@ -120,6 +169,14 @@ private:
             if (name.rfind("current", 0) == 0) return uniform(-1.5, 1.5);
             if (name == "winch.rate") return uniform(-3.0, 3.0);
             if (name == "winch.tension") return uniform(0.0, 3e4);
+            if (name.rfind("body[", 0) == 0 || name.rfind("point[", 0) == 0) {
+                const std::string member = name.substr(name.find("].") + 2);
+                if (member == "x" || member == "y" || member == "z") return uniform(-10.0, 10.0);
+                if (member == "roll" || member == "pitch" || member == "yaw") return uniform(-0.2, 0.2);
+                if (member[0] == 'q') return member == "q0" ? uniform(0.98, 1.0) : uniform(-0.1, 0.1);
+                if (member[0] == 'w') return uniform(-0.1, 0.1);
+                return uniform(-2.0, 2.0);  // velocities
+            }
             return uniform(-2e3, 2e3);  // endLoad, endCouple, ...
         }
         // A section's or an attachment's member: the same magnitudes as the line's own.
@@ -195,7 +252,9 @@ private:
         *chosen = nullptr;
         if (chance(0.08)) return chance(0.5) ? (fmi2ValueReference)integer(0, 5000) : 0xFFFFFFFFu;
         for (int tries = 0; tries < 20; ++tries) {
-            const UCVariable& v = any_variable();
+            // deck mode: mostly the inputs (the deck, not random parameters, makes the system)
+            const bool input = !opt_.decks.empty() && !inputs_.empty() && chance(0.8);
+            const UCVariable& v = input ? vars_[inputs_[integer(0, (int)inputs_.size() - 1)]] : any_variable();
             if (v.type == type || chance(0.05)) {
                 *chosen = &v;
                 return v.vr;
@@ -210,6 +269,53 @@ private:
         if (r < 0.6) return 0.5;
         if (r < 0.9) return std::pow(10.0, uniform(-6.0, 0.7));
         return uniform(-1.0, 20.0);
+    }
+
+    // ---- deck mode -----------------------------------------------------------------------------------
+    // text with one number of a data row (a row starting with a digit) scaled, negated or zeroed.
+    std::string mutated_deck(const std::string& text) {
+        std::vector<size_t> starts;  // of the numbers after a row's first field
+        size_t row = 0;
+        while (row < text.size()) {
+            const size_t end = std::min(text.find('\n', row), text.size());
+            if (std::isdigit(static_cast<unsigned char>(text[row]))) {
+                for (size_t i = row + 1; i < end; ++i) {
+                    const unsigned char c = static_cast<unsigned char>(text[i]);
+                    const unsigned char before = static_cast<unsigned char>(text[i - 1]);
+                    if ((std::isdigit(c) || c == '-') && (before == ' ' || before == '\t' || before == '|')) starts.push_back(i);
+                }
+            }
+            row = end + 1;
+        }
+        if (starts.empty()) return text;
+        const size_t at = starts[integer(0, (int)starts.size() - 1)];
+        size_t end = at;
+        while (end < text.size() && std::strchr("0123456789.eE+-", text[end]) != nullptr) ++end;
+        const double value = std::atof(text.substr(at, end - at).c_str());
+        static const double kFactors[] = {0.0, -1.0, 0.5, 2.0, 1.01, 1e-6, 1e6};
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.9g", value * kFactors[integer(0, 6)] + (chance(0.2) ? 10.0 : 0.0));
+        return text.substr(0, at) + buf + text.substr(end);
+    }
+
+    void write_deck(Slot& s, const std::string& text) {
+        std::ofstream out(s.deckPath, std::ios::binary | std::ios::trunc);
+        out << text;
+        s.deckText = text;
+    }
+
+    // Gives a new instance a deck (most of the time): a private copy, maybe with one number changed.
+    void give_deck(Slot& s) {
+        if (opt_.decks.empty() || s.c == nullptr || !chance(0.9)) return;
+        const std::string& text = deckTexts_[integer(0, (int)deckTexts_.size() - 1)];
+        const bool mutate = chance(0.25);
+        write_deck(s, mutate ? mutated_deck(text) : text);
+        ++deckInstances_;
+        if (mutate) ++deckMutated_;
+        trace("fmi2SetString(lineFile " + s.deckPath + ")");
+        const fmi2ValueReference vr = lineFileVr_;
+        const fmi2String value = s.deckPath.c_str();
+        after(s, "fmi2SetString", fmi().SetString(s.c, &vr, 1, &value));
     }
 
     // ---- bookkeeping ---------------------------------------------------------------------------------
@@ -249,6 +355,7 @@ private:
             if (st != nullptr) fmi().FreeFMUstate(s.c, &st);
         }
         s.states.clear();
+        s.stateDecks.clear();
     }
 
     void free_slot(Slot& s) {
@@ -279,6 +386,8 @@ private:
         s.time = 0.0;
         s.inError = false;
         s.steppedOk = false;
+        s.deckText.clear();
+        give_deck(s);
     }
 
     // A call that moves the instance along the normal life cycle (so that random sequences also reach
@@ -355,6 +464,11 @@ private:
         }
         char buf[256];
         if (chance(0.5) && progress(s)) return;
+        if (!s.deckText.empty() && chance(0.01)) {  // deck mode: the instance's deck file edited
+            write_deck(s, mutated_deck(s.deckText));
+            ++deckEdits_;
+            return;
+        }
         const int action = integer(0, 99);
         if (action < 4) {  // setup experiment
             const double start = chance(0.9) ? uniform(0.0, 10.0) : hostile_double();
@@ -458,19 +572,25 @@ private:
             fmi2FMUstate st = nullptr;
             const bool reuse = !s.states.empty() && chance(0.3);
             fmi2FMUstate* target = reuse ? &s.states[integer(0, (int)s.states.size() - 1)] : &st;
+            const size_t reused = reuse ? (size_t)(target - s.states.data()) : 0;
             const fmi2Status status = fmi().GetFMUstate(s.c, target);
+            if (reuse && status == fmi2OK) s.stateDecks[reused] = s.deckText;
             if (!reuse && st != nullptr) {
                 if (s.states.size() >= 4) {
                     fmi().FreeFMUstate(s.c, &s.states.front());
                     s.states.erase(s.states.begin());
+                    s.stateDecks.erase(s.stateDecks.begin());
                 }
                 s.states.push_back(st);
+                s.stateDecks.push_back(s.deckText);
             }
             after(s, "fmi2GetFMUstate", status);
         } else if (action < 78) {  // restore a state
             if (s.states.empty()) return;
             trace("fmi2SetFMUstate");
-            const fmi2Status st = fmi().SetFMUstate(s.c, s.states[integer(0, (int)s.states.size() - 1)]);
+            const int which = integer(0, (int)s.states.size() - 1);
+            const fmi2Status st = fmi().SetFMUstate(s.c, s.states[which]);
+            if (s.stateDecks[which] != s.deckText) ++(st == fmi2OK ? editedRestored_ : editedRefused_);
             if (st == fmi2OK) {
                 s.inError = false;
                 double t = 0.0;
@@ -487,10 +607,15 @@ private:
             const int k = integer(0, (int)s.states.size() - 1);
             trace("fmi2FreeFMUstate");
             after(s, "fmi2FreeFMUstate", fmi().FreeFMUstate(s.c, &s.states[k]));
-            if (s.states[k] == nullptr) s.states.erase(s.states.begin() + k);
+            if (s.states[k] == nullptr) {
+                s.states.erase(s.states.begin() + k);
+                s.stateDecks.erase(s.stateDecks.begin() + k);
+            }
         } else if (action < 86) {  // serialize, corrupt, deserialize
             if (s.states.empty()) return;
-            fmi2FMUstate st = s.states[integer(0, (int)s.states.size() - 1)];
+            const int which = integer(0, (int)s.states.size() - 1);
+            fmi2FMUstate st = s.states[which];
+            const bool editedSince = s.stateDecks[which] != s.deckText;  // its deck file changed since
             size_t size = 0;
             trace("fmi2SerializedFMUstateSize");
             const fmi2Status sizeStatus = fmi().SerializedFMUstateSize(s.c, st, &size);
@@ -532,6 +657,7 @@ private:
             if (chance(0.7)) {
                 trace("fmi2SetFMUstate (deserialized, " + what + ")");
                 const fmi2Status set = fmi().SetFMUstate(target.c, restored);
+                if (editedSince && what == "intact") ++(set == fmi2OK ? editedRestored_ : editedRefused_);
                 if (set == fmi2OK) {
                     target.inError = false;
                     double t = 0.0;
@@ -590,16 +716,23 @@ private:
     long long status_[5] = {0, 0, 0, 0, 0};
     int violations_ = 0;
     std::map<std::string, long long> perFunction_;
+    // deck mode
+    std::vector<std::string> deckTexts_;
+    fmi2ValueReference lineFileVr_ = 0;
+    std::vector<size_t> inputs_;  // indices into vars_
+    long long deckInstances_ = 0, deckMutated_ = 0, deckEdits_ = 0, editedRefused_ = 0, editedRestored_ = 0;
 };
 
 void usage() {
     std::printf(
-        "usage: uc_fmi_fuzz [--calls N] [--seed S] [--seconds T] [--trace]\n"
+        "usage: uc_fmi_fuzz [--calls N] [--seed S] [--seconds T] [--trace] [--decks [FILE,FILE,...]]\n"
         "  Random FMI call sequences with hostile arguments against UnderwaterCable.so.\n"
         "  --calls N    stop after N random actions (default 100000)\n"
         "  --seed S     PRNG seed (default 1): the same seed gives the same sequence\n"
         "  --seconds T  also stop after T seconds of wall time\n"
-        "  --trace      print every call to stderr before making it\n");
+        "  --trace      print every call to stderr before making it\n"
+        "  --decks      deck mode: instances read lineFile, a private copy of one of the decks (default: the\n"
+        "               project's mooring systems and lines, OC4), some edited; body/point inputs fuzzed\n");
 }
 
 }  // namespace
@@ -610,6 +743,14 @@ int main(int argc, char** argv) {
         const std::string a = argv[i];
         if (a == "--trace") {
             o.trace = true;
+        } else if (a == "--decks") {
+            o.decks = default_decks();
+            if (i + 1 < argc && argv[i + 1][0] != '-') {  // a comma-separated list of its own
+                o.decks.clear();
+                std::stringstream list(argv[++i]);
+                for (std::string path; std::getline(list, path, ',');)
+                    if (!path.empty()) o.decks.push_back(path);
+            }
         } else if ((a == "--calls" || a == "--seed" || a == "--seconds") && i + 1 < argc) {
             const char* v = argv[++i];
             if (a == "--calls") o.calls = std::atoll(v);

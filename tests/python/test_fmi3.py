@@ -303,3 +303,38 @@ def test_the_oc4_moorings_through_fmi3_arrays_are_bit_identical_to_fmi2(fmi3_fil
     assert np.array_equal(fmi2, fmi3), f"max difference {np.max(np.abs(fmi2 - fmi3))}"
     assert np.any(derivatives[0] != 0.0)
     assert np.array_equal(derivatives[0], derivatives[1])
+
+
+def test_an_fmi3_state_of_the_oc4_moorings_is_refused_after_the_deck_was_edited(fmi3_file, tmp_path):
+    """fmi3SetFMUState of a deserialized state in a new instance after the deck file was edited (line 1
+    10 m longer): fmi3Error naming the file and the value, not a run on the edited deck's lines."""
+    path = tmp_path / "oc4_semi.dat"
+    text = ms.OC4.read_text()
+    path.write_text(text)
+    parameters = {**ms.fmu_parameters(ms.read_system_deck(ms.OC4)), "lineFile": str(path)}
+    motion, h = ms.PlatformMotion(), 0.2
+    system = System(fmi3_file, True)
+    system.set_parameters(parameters)
+    q, v, _ = motion.state(0.0)
+    system.set_body([*q, *v])
+    system.initialize({})
+    for k in range(3):
+        q, v, _ = motion.state(k * h)
+        system.set_body([*q, *v])
+        system.fmu.doStep(k * h, h)
+    state = system.fmu.getFMUState()
+    data = system.fmu.serializeFMUState(state)
+    system.fmu.freeFMUState(state)
+    system.close()
+    before = "1         main        1         4       835.35"
+    assert before in text
+    path.write_text(text.replace(before, "1         main        1         4       845.35", 1))
+    messages = []
+    fresh = System(fmi3_file, True, messages=messages)
+    fresh.set_parameters(parameters)
+    restored = fresh.fmu.deserializeFMUState(data)
+    with pytest.raises(Exception):
+        fresh.fmu.setFMUState(restored)
+    refusal = [m for m in messages if "fmi2SetFMUstate" in m or "SetFMUState" in m]
+    assert refusal and f"lineFile {path}" in refusal[-1], messages
+    assert "length = 845.35000000000002 now, 835.35000000000002 in the state" in refusal[-1], refusal

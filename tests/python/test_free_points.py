@@ -278,3 +278,67 @@ def test_a_saved_state_of_the_buoy_continues_bit_for_bit(make_cable, tmp_path, b
     fresh = make_cable(parameters=params)
     fresh.set_state(fresh.deserialize_state(data), time=1.0)
     assert run(fresh, 5, 5).tobytes() == first.tobytes()
+
+
+@pytest.mark.parametrize("edit", ["leg", "mass", "EA"])
+def test_a_state_restored_after_its_deck_was_edited_is_refused_naming_the_file_and_the_value(
+        make_cable, tmp_path, edit):
+    """A mooring system's state carries every value its deck gave: restored (fmi2SetFMUstate after
+    fmi2DeSerializeFMUstate, in a new instance) after the deck file was edited (a leg 10 m longer, the free
+    body's mass doubled, EA halved) it is refused, naming the file and what differs, not stepped with the
+    new deck's lines (which moved the body's moment by tens of MN m at the first step)."""
+    path = _released_body(tmp_path)
+    params = {**ms.fmu_parameters(ms.read_system_deck(path)), "lineFile": str(path)}
+    c = make_cable(parameters=params)
+    c.initialize()
+    for k in range(3):
+        c.do_step(0.2, t=0.2 * k)
+    data = c.serialize_state(c.get_state())
+    text = path.read_text()
+    edits = {"leg": ("1         leg         1         4        128.5", "1         leg         1         4        138.5",
+                     "length = 138.5 now, 128.5 in the state"),
+             "mass": ("3000   0|0|-1.0", "6000   0|0|-1.0", "mass [kg] = 6000 now, 3000 in the state"),
+             "EA": ("5.0E8", "2.5E8", "EA = 250000000 now, 500000000 in the state")}
+    before, after, named = edits[edit]
+    assert before in text
+    path.write_text(text.replace(before, after, 1))
+    fresh = make_cable(parameters=params)
+    state = fresh.deserialize_state(data)
+    with pytest.raises(FMICallException):
+        fresh.set_state(state, time=0.6)
+    refusals = [m for _, _, m in fresh.messages if "fmi2SetFMUstate" in m]
+    assert refusals and f"lineFile {path}" in refusals[-1] and named in refusals[-1], fresh.log_text()
+    assert "the deck is not the one the state was saved with" in refusals[-1]
+    # the deck restored: the state continues
+    path.write_text(text)
+    again = make_cable(parameters=params)
+    again.set_state(again.deserialize_state(data), time=0.6)
+    again.do_step(0.2, t=0.6)
+
+
+ROW = "3000   0|0|-1.0   5000     15.0    3.0   1.0"  # Mass CG* I* Volume CdA* Ca* of the buoy body
+
+
+@pytest.mark.parametrize("fields, named", [
+    ("3000   0|0|-1.0   -5000     15.0    3.0   1.0",
+     "I = -5000: Free body 1's moment of inertia about its x axis is -5000 kg m2"),
+    ("3000   0|0|-1.0   5000     15.0    -3.0   1.0", "CdA = -3.0: Free body 1's drag area in x is -3 m2"),
+    ("3000   0|0|-1.0   5000     15.0    3.0   -1.0",
+     "Ca = -1.0: Free body 1's added-mass coefficient in x is -1"),
+    ("0   0|0|-1.0   5000     0    3.0   1.0",
+     "Mass = 0 kg and Volume = 0 m3: Free body 1 has neither mass nor volume"),
+], ids=["inertia", "drag", "added-mass", "no-mass-no-volume"])
+def test_an_implausible_free_body_is_refused_at_the_start_naming_the_row_and_the_value(
+        make_cable, tmp_path, fields, named):
+    """A free body's negative inertia, drag area or added-mass coefficient, or neither mass nor volume:
+    fmi2Error at the initialization naming the deck's row and the value (they were accepted, and the run
+    failed later asking for a shorter communication step, or with negative drag ran on)."""
+    text = fp.BUOY_BODY.read_text()
+    assert ROW in text
+    path = tmp_path / "buoy_body.dat"
+    path.write_text(text.replace(ROW, fields, 1))
+    c = make_cable(parameters={**ms.fmu_parameters(ms.read_system_deck(fp.BUOY_BODY)), "lineFile": str(path)})
+    with pytest.raises(FMICallException):
+        c.initialize()
+    refusal = [m for _, _, m in c.messages if named in m]
+    assert refusal and "line 12: " in refusal[0] and str(path) in refusal[0], c.log_text()

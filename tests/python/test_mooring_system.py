@@ -235,7 +235,7 @@ def test_a_free_body_that_holds_no_line_is_refused_with_the_reason(make_cable, t
     text = ms.OC4.read_text().replace(
         "---------------------- LINES", "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* "
         "I* Volume CdA* Ca*\n(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n"
-        "1 Free 0 0 0 0 0 0 1e6 0 0 1000 0 0\n---------------------- LINES", 1)
+        "1 Free 0 0 0 0 0 0 1e6 0 1e7 1000 0 0\n---------------------- LINES", 1)
     log = _refused(make_cable, tmp_path, text)
     assert "line 22: Free body 1 holds no line" in log, log
 
