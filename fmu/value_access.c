@@ -149,6 +149,7 @@ fmi2Status uc_set_values(UCInstance* inst, const fmi2ValueReference vr[], size_t
         const void* value = (const char*)values + i * value_size(type);
         const UCVariable* v = find_or_log(inst, vr[i], type, function);
         if (v == NULL || check_settable(inst, v, function) != fmi2OK) return fmi2Error;
+        uc_instance_mark_set(inst, v);
         if (type == UC_TYPE_REAL) {
             if (check_real_value(inst, v, *(const fmi2Real*)value, function) != fmi2OK) return fmi2Error;
             store_value(inst, v, value);
@@ -191,6 +192,7 @@ fmi2Status uc_set_strings(UCInstance* inst, const fmi2ValueReference vr[], size_
     for (size_t i = 0; i < nvr; ++i) {
         const UCVariable* v = find_or_log(inst, vr[i], UC_TYPE_STRING, function);
         if (v == NULL || check_settable(inst, v, function) != fmi2OK) return fmi2Error;
+        uc_instance_mark_set(inst, v);
         if (store_string(inst, v, values[i], function) != fmi2OK) return fmi2Error;
     }
     return fmi2OK;
