@@ -100,7 +100,14 @@ def survey_deck(fmu, path: Path, moordyn: bool = True) -> dict:
     out["moordyn"] = ref
     for label in ("after", "before"):
         r = out[label]
+        # a line whose two end tensions match MoorPy's the other way round: the FMU names its ends the other way
+        r["swapped"] = [k + 1 for k, (fr, f, ar, a) in enumerate(r.get("lines", []))
+                        if max(abs(f / ar - 1), abs(a / fr - 1)) < 1e-3 < max(abs(f / fr - 1), abs(a / ar - 1))]
         r["worst_moordyn"] = None
+        r["moordyn_vs_moorpy"] = None
+        if ref and "error" not in ref and r.get("lines") and not r["system"]:
+            fr, _, ar, _ = r["lines"][0]
+            r["moordyn_vs_moorpy"] = max(abs(ref["fairlead"] / fr - 1.0), abs(ref["anchor"] / ar - 1.0))
         if ref and "error" not in ref and r["status"] == "ok" and not r["system"]:
             (f, a), = r["outputs"]
             r["worst_moordyn"] = max(abs(f / ref["fairlead"] - 1.0), abs(a / ref["anchor"] - 1.0))
@@ -174,7 +181,12 @@ def _differences(r: dict) -> str:
     elif r.get("moorpy"):
         parts.append("MoorPy fails")
     if r.get("worst_moordyn") is not None:
-        parts.append(f"MoorDyn {_percent(r['worst_moordyn'])}")
+        off = r.get("moordyn_vs_moorpy")
+        parts.append(f"MoorDyn {_percent(r['worst_moordyn'])}" +
+                     (f" (MoorDyn's own start is {_percent(off)} from MoorPy's)" if off and off > 0.05 else ""))
+    if r.get("swapped"):
+        parts.append(f"line {', '.join(map(str, r['swapped']))}: both end tensions match MoorPy's within 0.1 % the "
+                     "other way round (fairleadTension is the far end's)")
     return ", ".join(parts) or "no reference"
 
 
