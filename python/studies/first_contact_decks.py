@@ -19,6 +19,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import re
 import sys
 import tempfile
 import time
@@ -207,7 +208,7 @@ def markdown(data: dict) -> str:
            "| deck | user set | before | now | verdict | warnings now |", "|---|---|---|---|---|---|"]
     for d in decks:
         a, b = d["after"], d["before"]
-        warned = "; ".join(w.split(": ", 1)[-1][:160] for w in a["warnings"]) or ""
+        warned = "; ".join(re.sub(r"^lineFile \S+, ", "", w.split(": ", 1)[-1])[:160] for w in a["warnings"])
         warned = warned.replace("|", "\\|")
         name = d["deck"] if d["public"] else f"{d['deck']} (repository's)"
         out.append(f"| `{name}` | `lineFile` | {_differences(b)} | {_differences(a).replace('|', '/')} | "
