@@ -4,6 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "variables.h"
+
 static char* copy_string(const char* s) {
     if (s == NULL) return NULL;
     size_t n = strlen(s) + 1;
@@ -22,6 +24,13 @@ UCInstance* uc_instance_new(const char* instanceName, const char* resourceLocati
         uc_instance_free(inst);
         return NULL;
     }
+    size_t count = 0;
+    uc_variables(&count);
+    inst->setByImporter = calloc(count, 1);
+    if (inst->setByImporter == NULL) {
+        uc_instance_free(inst);
+        return NULL;
+    }
     inst->log.callback = logger;
     inst->log.environment = environment;
     inst->log.instanceName = inst->instanceName;
@@ -35,6 +44,7 @@ void uc_instance_free(UCInstance* inst) {
     uc_instance_drop_core(inst);
     free(inst->instanceName);
     free(inst->resourceLocation);
+    free(inst->setByImporter);
     free(inst);
 }
 
@@ -59,7 +69,27 @@ void uc_instance_reset(UCInstance* inst) {
     memcpy(&inst->coreParams, &inst->params, sizeof inst->coreParams);
     uc_inputs_default(&inst->inputs);
     memset(&inst->outputs, 0, sizeof inst->outputs);
+    size_t count = 0;
+    uc_variables(&count);
+    memset(inst->setByImporter, 0, count);
     inst->msg[0] = '\0';
+}
+
+void uc_instance_mark_set(UCInstance* inst, const UCVariable* v) {
+    size_t count = 0;
+    const UCVariable* table = uc_variables(&count);
+    if (v < table || v >= table + count || inst->setByImporter[v - table]) return;
+    inst->setByImporter[v - table] = 1;
+    /* a deck's parameter set now keeps its value over the deck's: the initialization changes */
+    if (v->causality == UC_CAUSALITY_PARAMETER && inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
+}
+
+int uc_instance_was_set(const UCInstance* inst, const char* name) {
+    size_t count = 0;
+    const UCVariable* table = uc_variables(&count);
+    for (size_t k = 0; k < count; ++k)
+        if (strcmp(table[k].name, name) == 0) return inst->setByImporter[k];
+    return 0;
 }
 
 const char* uc_state_name(UCMachineState state) {

@@ -51,6 +51,9 @@ typedef struct UCInstance {
     int towMismatchWarned;       /* the tow position / velocity mismatch was reported in this run */
     UCInputChecks inputChecks;   /* the inputs of the last step and what was reported (input_checks.h) */
 
+    unsigned char* setByImporter; /* one flag per row of the variable table (variables.h): the importer set it
+                                     since instantiation or fmi2Reset (uc_instance_mark_set) */
+
     char msg[UC_MSG_SIZE];       /* scratch for messages of the core */
 } UCInstance;
 
@@ -70,6 +73,12 @@ fmi2Status uc_instance_check(UCInstance* inst, unsigned int allowedStates, const
 
 /* Applies the status to the machine: fmi2Error -> error state, fmi2Fatal -> fatal. Returns status. */
 fmi2Status uc_instance_finish(UCInstance* inst, fmi2Status status);
+
+/* Records that the importer set variable v (a row of uc_variables); uc_instance_was_set asks by name
+ * (0 for a name not in the table). A lineFile deck leaves such parameters as the importer set them. */
+struct UCVariable;
+void uc_instance_mark_set(UCInstance* inst, const struct UCVariable* v);
+int uc_instance_was_set(const UCInstance* inst, const char* name);
 
 const char* uc_state_name(UCMachineState state);
 

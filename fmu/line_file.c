@@ -112,7 +112,12 @@ static void log_notes(UCInstance* inst, const char* function, const char* path, 
     for (const char* line = notes; *line != '\0';) {
         const char* end = strchr(line, '\n');
         const int length = end != NULL ? (int)(end - line) : (int)strlen(line);
-        uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: lineFile %s, %.*s", function, path, length, line);
+        /* "warning: ...": a deck option the FMU honours otherwise than MoorDyn (line_file.h) */
+        if (strncmp(line, "warning: ", 9) == 0) {
+            uc_log_status(&inst->log, fmi2Warning, "%s: lineFile %s, %.*s", function, path, length - 9, line + 9);
+        } else {
+            uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: lineFile %s, %.*s", function, path, length, line);
+        }
         line += length + (end != NULL);
     }
 }
@@ -207,7 +212,28 @@ static fmi2Status with_text(UCInstance* inst, UCParams* p, const UCParams* param
     return status;
 }
 
+/* The UC_DECK_KEEP_* bits of the parameters the importer set explicitly (docs/lines.md, "Seabed"):
+ * those keep their value over the deck's. */
+static int deck_keep(const UCInstance* inst) {
+    static const struct {
+        const char* name;
+        int bit;
+    } kept[] = {{"waterDepth", UC_DECK_KEEP_WATER_DEPTH},
+                {"gravity", UC_DECK_KEEP_GRAVITY},
+                {"waterDensity", UC_DECK_KEEP_WATER_DENSITY},
+                {"enableSeabed", UC_DECK_KEEP_ENABLE_SEABED},
+                {"seabedStiffness", UC_DECK_KEEP_SEABED_STIFFNESS},
+                {"seabedDamping", UC_DECK_KEEP_SEABED_DAMPING},
+                {"seabedFriction", UC_DECK_KEEP_SEABED_FRICTION},
+                {"enableCompression", UC_DECK_KEEP_ENABLE_COMPRESSION}};
+    int bits = 0;
+    for (size_t k = 0; k < sizeof kept / sizeof kept[0]; ++k)
+        if (uc_instance_was_set(inst, kept[k].name)) bits |= kept[k].bit;
+    return bits;
+}
+
 fmi2Status uc_line_file_load(UCInstance* inst, UCParams* p, const char* function) {
+    p->deckKeep = deck_keep(inst);
     return with_text(inst, p, NULL, NULL, function);
 }
 

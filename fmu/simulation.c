@@ -62,6 +62,14 @@ static fmi2Status initialize_core(UCInstance* inst, const char* function, fmi2St
     uc_input_checks_reset(&inst->inputChecks);
     uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: initialized at t = %.9g, towTension = %.6g N", function,
            inst->time, inst->outputs.towTension);
+    /* what the initialization found worth a word (a static strain beyond steel's): a warning */
+    if (uc_take_event(inst->cable, inst->msg, sizeof inst->msg)) {
+        if (strncmp(inst->msg, "warning: ", 9) == 0) {
+            uc_log_status(&inst->log, fmi2Warning, "%s: %s", function, inst->msg + 9);
+        } else {
+            uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: %s", function, inst->msg);
+        }
+    }
     log_solver_statistics(inst, "initialization");
     return fmi2OK;
 }

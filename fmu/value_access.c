@@ -164,6 +164,7 @@ fmi2Status uc_set_values(UCInstance* inst, const fmi2ValueReference vr[], size_t
     for (size_t i = 0; i < nvr; ++i) {
         const void* value = (const char*)values + i * value_size(type);
         const UCVariable* v = uc_variable_find(vr[i], type);
+        uc_instance_mark_set(inst, v);
         if (type == UC_TYPE_REAL) {
             store_value(inst, v, value);
             int c;
@@ -203,7 +204,11 @@ fmi2Status uc_set_strings(UCInstance* inst, const fmi2ValueReference vr[], size_
     if (check_arrays(inst, vr, nvr, values, function) != fmi2OK) return fmi2Error;
     for (size_t i = 0; i < nvr; ++i)
         if (validated(inst, vr[i], UC_TYPE_STRING, values[i], function) == NULL) return fmi2Error;
-    for (size_t i = 0; i < nvr; ++i) store_string(inst, uc_variable_find(vr[i], UC_TYPE_STRING), values[i], function);
+    for (size_t i = 0; i < nvr; ++i) {
+        const UCVariable* v = uc_variable_find(vr[i], UC_TYPE_STRING);
+        uc_instance_mark_set(inst, v);
+        store_string(inst, v, values[i], function);
+    }
     return fmi2OK;
 }
 

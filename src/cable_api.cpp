@@ -231,6 +231,8 @@ extern "C" int uc_line_file_apply_with(const char* text, size_t length, const UC
             return false;
         }
         if (towPoint) std::copy(line.towPoint, line.towPoint + 3, towPoint);
+        for (std::string& note : uc::deck_environment_notes(line, line.sections.back().diameter, *p))
+            line.notes.push_back(std::move(note));
         std::string joined;
         for (const std::string& note : line.notes) joined += (joined.empty() ? "" : "\n") + note;
         write_message(notes, notesSize, joined);
@@ -267,6 +269,7 @@ extern "C" UCCable* uc_create_system_with(const UCParams* p, const char* text, s
             return false;
         auto made = std::make_unique<UCCable>(*p, deck);
         if (!made->system->build(error)) return false;
+        for (std::string& note : uc::mooring_environment_notes(deck, *p)) deck.notes.push_back(std::move(note));
         std::string joined;
         for (const std::string& note : deck.notes) joined += (joined.empty() ? "" : "\n") + note;
         write_message(notes, notesSize, joined);

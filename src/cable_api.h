@@ -41,6 +41,17 @@ extern "C" {
 #define UC_TOP_HINGED 0
 #define UC_TOP_CLAMPED 1
 
+/* deckKeep bits: the parameters a lineFile deck also sets that the importer set explicitly, and which then
+ * keep the importer's value (docs/lines.md, "Seabed") */
+#define UC_DECK_KEEP_WATER_DEPTH (1 << 0)
+#define UC_DECK_KEEP_GRAVITY (1 << 1)
+#define UC_DECK_KEEP_WATER_DENSITY (1 << 2)
+#define UC_DECK_KEEP_ENABLE_SEABED (1 << 3)
+#define UC_DECK_KEEP_SEABED_STIFFNESS (1 << 4)
+#define UC_DECK_KEEP_SEABED_DAMPING (1 << 5)
+#define UC_DECK_KEEP_SEABED_FRICTION (1 << 6)
+#define UC_DECK_KEEP_ENABLE_COMPRESSION (1 << 7)
+
 /* winchMode */
 #define UC_WINCH_FIXED 0
 #define UC_WINCH_RATE 1

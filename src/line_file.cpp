@@ -278,6 +278,8 @@ struct Options {
     double waterDensity = kMoorDynWaterDensity;
     bool noInitialConditions = false;  // TmaxIC 0: MoorDyn generates no initial conditions
     std::pair<int, int> waveKin{0, 0}, currents{0, 0};  // MoorDyn's kinematics options: (value, line of the file)
+    int waterDepthRow = 0, gravityRow = 0, waterDensityRow = 0;
+    LineFileSeabed seabed;  // MoorDyn's seabed (its defaults where the deck is silent)
 };
 
 bool is_one_of(const std::string& name, std::initializer_list<const char*> names) {
@@ -302,22 +304,37 @@ bool read_options(const Section& section, Options& options, std::vector<std::str
                               " is not a number (a bathymetry file is not supported: the seabed is flat)");
             }
             options.waterDepth = f.number(0, "WtrDpth", 0.0, HUGE_VAL, "a water depth must not be negative");
+            options.waterDepthRow = row.number;
         } else if (is_one_of(name, {"g", "gravity"})) {
             options.gravity = f.number(0, name_shown.c_str(), 0.0, HUGE_VAL, "gravity must not be negative");
+            options.gravityRow = row.number;
         } else if (is_one_of(name, {"rho", "rhow", "wtrdnsty"})) {
             options.waterDensity = f.number(0, name_shown.c_str(), 0.0, HUGE_VAL, "a density must not be negative");
+            options.waterDensityRow = row.number;
         } else if (is_one_of(name, {"wavekin", "currents"})) {
             const int v = f.integer(0, name_shown.c_str(), 0, 1000, "an option number");
             if (f.ok()) (name == "wavekin" ? options.waveKin : options.currents) = {v, row.number};
         } else if (name == "seafloorfile") {
             return f.fail("SeafloorFile: a bathymetry file is not supported (the seabed is flat, at WtrDpth)");
-        } else if (is_one_of(name, {"kbot", "kb", "cbot", "cb", "frictioncoefficient", "fricdamp", "statdynfricscale"})) {
-            notes.push_back(at_line(row.number, name_shown + " ignored: the seabed contact is set by the FMU's parameters "
-                                                        "enableSeabed, seabedStiffness (per unit length: kBot x Diam), "
-                                                        "seabedDamping (cBot x Diam) and seabedFriction"));
+        } else if (is_one_of(name, {"kbot", "kb"})) {
+            options.seabed.kBot = f.number(0, name_shown.c_str(), 0.0, HUGE_VAL, "a seabed stiffness must not be negative");
+            options.seabed.kBotRow = row.number;
+        } else if (is_one_of(name, {"cbot", "cb"})) {
+            options.seabed.cBot = f.number(0, name_shown.c_str(), 0.0, HUGE_VAL, "a seabed damping must not be negative");
+            options.seabed.cBotRow = row.number;
+        } else if (name == "frictioncoefficient") {
+            options.seabed.friction = f.number(0, name_shown.c_str(), 0.0, 10.0, "a friction coefficient in [0, 10]");
+            options.seabed.frictionRow = row.number;
+        } else if (name == "fricdamp") {
+            options.seabed.fricDamp = f.number(0, name_shown.c_str(), 0.0, HUGE_VAL, "must not be negative");
+            options.seabed.fricDampRow = row.number;
+        } else if (name == "statdynfricscale") {
+            options.seabed.statDynFricScale = f.number(0, name_shown.c_str(), 0.0, HUGE_VAL, "must not be negative");
+            options.seabed.statDynFricScaleRow = row.number;
         } else if (is_one_of(name, {"dtm", "dt", "cfl", "tscheme", "dtout"})) {
-            notes.push_back(at_line(row.number, name_shown + " ignored: the FMU's integrator chooses its own steps "
-                                                        "(relTol, absTol) between communication points"));
+            notes.push_back(at_line(row.number, name_shown + " ignored, not applicable: MoorDyn's own time step, scheme or output "
+                                                        "period; the FMU's integrator chooses its steps from its "
+                                                        "tolerances between communication points"));
         } else if (is_one_of(name, {"tmaxic", "ictmax"}) && to_number(row.tokens[0]) && *to_number(row.tokens[0]) == 0.0) {
             options.noInitialConditions = true;
             notes.push_back(at_line(row.number, name_shown + " 0: free points where three or more lines meet start at "
@@ -325,13 +342,17 @@ bool read_options(const Section& section, Options& options, std::vector<std::str
                                                         "without generating initial conditions); otherwise ignored"));
         } else if (is_one_of(name, {"dtic", "icdt", "tmaxic", "ictmax", "cdscaleic", "icdfac", "threshic", "icthresh",
                                     "gendynamicic", "icgendynamic", "fileic", "icfile"})) {
-            notes.push_back(at_line(row.number, name_shown + " ignored: the FMU starts from its own static equilibrium "
-                                                        "(initMode)"));
-        } else if (is_one_of(name, {"writelog", "writeunits", "disableoutput", "disableouttime", "dtwave",
-                                    "unifycurrentgrid"})) {
-            notes.push_back(at_line(row.number, name_shown + " ignored: not used by the FMU"));
+            notes.push_back(at_line(row.number, name_shown + " ignored, not applicable: it steers MoorDyn's generation of "
+                                                        "initial conditions; the FMU solves the static equilibrium "
+                                                        "itself (initMode)"));
+        } else if (is_one_of(name, {"writelog", "writeunits", "disableoutput", "disableouttime"})) {
+            notes.push_back(at_line(row.number, name_shown + " ignored, not applicable: MoorDyn's own files and output"));
+        } else if (is_one_of(name, {"dtwave", "unifycurrentgrid"})) {
+            notes.push_back(at_line(row.number, name_shown + " ignored, not applicable: it concerns MoorDyn's grids of wave and "
+                                                        "current kinematics, which the FMU refuses (WaveKin, Currents)"));
         } else {
-            notes.push_back(at_line(row.number, "unknown option " + quoted(row.tokens[1]) + " ignored"));
+            notes.push_back(at_line(row.number, "unknown option " + quoted(row.tokens[1]) +
+                                                    " ignored (MoorDyn ignores it too, with a warning)"));
         }
         if (!f.ok()) return false;
     }
@@ -873,7 +894,9 @@ struct Deck {
     std::vector<Row> bodies;  // the BODIES rows (system only)
     int bodiesHeader = 0;
     double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
+    int waterDepthRow = 0, gravityRow = 0, waterDensityRow = 0;
     bool noInitialConditions = false;
+    LineFileSeabed seabed;
     LineFileSea sea;
 };
 
@@ -953,6 +976,10 @@ bool parse_deck(std::string_view text, bool system, const LineFileCompanions& co
     deck.waterDensity = options.waterDensity;
     deck.noInitialConditions = options.noInitialConditions;
     deck.waterDepth = options.waterDepth;
+    deck.waterDepthRow = options.waterDepthRow;
+    deck.gravityRow = options.gravityRow;
+    deck.waterDensityRow = options.waterDensityRow;
+    deck.seabed = options.seabed;
     for (const Point& p : points) {
         if (p.kind != PointKind::Body && -p.position[2] > deck.waterDepth) {
             if (options.waterDepth > 0.0) {
@@ -1032,6 +1059,10 @@ bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& out,
     out.gravity = deck.gravity;
     out.waterDensity = deck.waterDensity;
     out.waterDepth = deck.waterDepth;
+    out.waterDepthRow = deck.waterDepthRow;
+    out.gravityRow = deck.gravityRow;
+    out.waterDensityRow = deck.waterDensityRow;
+    out.seabed = deck.seabed;
     out.sea = deck.sea;
 
     for (const auto& [index, reversed] : chain) {
@@ -1152,10 +1183,20 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
             p.bottomEnd = UC_BOTTOM_FREE;
             break;
     }
-    p.waterDepth = line.waterDepth;
-    p.gravity = line.gravity;
-    p.waterDensity = line.waterDensity;
-    p.enableCompression = 0;  // MoorDyn's lines are tension-only: a deck's line is the same line
+    // The environment and MoorDyn's seabed, which is always there at WtrDpth (docs/lines.md, "Seabed"),
+    // except where the importer set the parameter explicitly (p.deckKeep).
+    const int keep = p.deckKeep;
+    const LineFileSeabed& bed = line.seabed;
+    const double d = line.sections.back().diameter;  // the section on the seabed at the anchor
+    if (!(keep & UC_DECK_KEEP_WATER_DEPTH)) p.waterDepth = line.waterDepth;
+    if (!(keep & UC_DECK_KEEP_GRAVITY)) p.gravity = line.gravity;
+    if (!(keep & UC_DECK_KEEP_WATER_DENSITY)) p.waterDensity = line.waterDensity;
+    if (!(keep & UC_DECK_KEEP_ENABLE_SEABED)) p.enableSeabed = bed.kBot > 0.0 ? 1 : 0;
+    if (!(keep & UC_DECK_KEEP_SEABED_STIFFNESS) && bed.kBot > 0.0) p.seabedStiffness = bed.kBot * d;
+    if (!(keep & UC_DECK_KEEP_SEABED_DAMPING) && bed.kBot > 0.0) p.seabedDamping = bed.cBot * d;
+    if (!(keep & UC_DECK_KEEP_SEABED_FRICTION)) p.seabedFriction = bed.friction;
+    // MoorDyn's lines are tension-only: a deck's line is the same line
+    if (!(keep & UC_DECK_KEEP_ENABLE_COMPRESSION)) p.enableCompression = 0;
     const LineFileSea& sea = line.sea;
     if (sea.profileRows > 0) {
         p.currentProfileRows = sea.profileRows;
@@ -1574,8 +1615,104 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
     out.waterDepth = deck.waterDepth;
     out.gravity = deck.gravity;
     out.waterDensity = deck.waterDensity;
+    out.waterDepthRow = deck.waterDepthRow;
+    out.gravityRow = deck.gravityRow;
+    out.waterDensityRow = deck.waterDensityRow;
+    out.seabed = deck.seabed;
     out.sea = deck.sea;
     return true;
+}
+
+std::vector<std::string> deck_environment_notes(const LineFileLine& line, double bottomDiameter,
+                                                const UCParams& importer) {
+    std::vector<std::string> out;
+    auto brief = [](double v) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.9g", v);
+        return std::string(buffer);
+    };
+    const int keep = importer.deckKeep;
+    const LineFileSeabed& bed = line.seabed;
+    // "<option> <value> (line n)" or "<option> <value> (MoorDyn's default: the deck does not set it)"
+    auto option = [&](const char* name, double value, const char* unit, int row) {
+        return std::string(name) + " " + brief(value) + unit +
+               (row > 0 ? " (line " + std::to_string(row) + ")" : " (MoorDyn's default: the deck does not set it)");
+    };
+    auto kept = [&](const char* parameter, double value, const std::string& deck) {
+        out.push_back(std::string(parameter) + " = " + brief(value) + " set through the FMI is used, not " + deck +
+                      ": a parameter the importer sets explicitly overrides the deck");
+    };
+    if (keep & UC_DECK_KEEP_WATER_DEPTH) kept("waterDepth", importer.waterDepth, option("WtrDpth", line.waterDepth, " m", line.waterDepthRow));
+    if (keep & UC_DECK_KEEP_GRAVITY) kept("gravity", importer.gravity, option("g", line.gravity, " m/s2", line.gravityRow));
+    if (keep & UC_DECK_KEEP_WATER_DENSITY) {
+        kept("waterDensity", importer.waterDensity, option("rho", line.waterDensity, " kg/m3", line.waterDensityRow));
+    }
+    if (keep & UC_DECK_KEEP_ENABLE_COMPRESSION) {
+        out.push_back(std::string("enableCompression = ") + (importer.enableCompression ? "true" : "false") +
+                      " set through the FMI is used, not MoorDyn's tension-only lines: a parameter the importer sets "
+                      "explicitly overrides the deck");
+    }
+    // bottomDiameter 0: a mooring system, each line's own
+    const std::string diam = bottomDiameter > 0.0 ? " x Diam " + brief(bottomDiameter) + " m"
+                                                  : " x Diam of each line's section at its far end";
+    if (keep & UC_DECK_KEEP_ENABLE_SEABED) {
+        out.push_back(std::string("enableSeabed = ") + (importer.enableSeabed ? "true" : "false") +
+                      " set through the FMI is used, not the deck's seabed (MoorDyn always has one at WtrDpth): a "
+                      "parameter the importer sets explicitly overrides the deck");
+    } else if (bed.kBot <= 0.0) {
+        out.push_back(option("kBot", bed.kBot, " Pa/m", bed.kBotRow) + ": no seabed contact (enableSeabed = false), "
+                      "as MoorDyn has none with a zero stiffness");
+    } else {
+        out.push_back("the seabed is on at WtrDpth as MoorDyn has it (enableSeabed = true, unless set through the FMI)");
+    }
+    if (bed.kBot > 0.0) {
+        if (keep & UC_DECK_KEEP_SEABED_STIFFNESS) {
+            kept("seabedStiffness", importer.seabedStiffness, option("kBot", bed.kBot, " Pa/m", bed.kBotRow) + diam);
+        } else {
+            out.push_back("seabedStiffness = " + (bottomDiameter > 0.0 ? brief(bed.kBot * bottomDiameter) + " N/m2" : "") + " from " +
+                          option("kBot", bed.kBot, " Pa/m", bed.kBotRow) + diam);
+        }
+        if (keep & UC_DECK_KEEP_SEABED_DAMPING) {
+            kept("seabedDamping", importer.seabedDamping, option("cBot", bed.cBot, " Pa s/m", bed.cBotRow) + diam);
+        } else {
+            out.push_back("seabedDamping = " + (bottomDiameter > 0.0 ? brief(bed.cBot * bottomDiameter) + " N.s/m2" : "") + " from " +
+                          option("cBot", bed.cBot, " Pa s/m", bed.cBotRow) + diam);
+        }
+        bool several = false;
+        for (const LineFileSection& s : line.sections) several = several || s.diameter != bottomDiameter;
+        if (several && bottomDiameter > 0.0) {
+            out.push_back("the sections' diameters differ: the seabed contact per unit length is that of Diam " +
+                          brief(bottomDiameter) + " m, the section at the far end (MoorDyn's is each line's "
+                          "own; the static state does not depend on it, seabedRest)");
+        }
+    }
+    if (keep & UC_DECK_KEEP_SEABED_FRICTION) {
+        kept("seabedFriction", importer.seabedFriction, option("FrictionCoefficient", bed.friction, "", bed.frictionRow));
+    } else if (bed.friction > 0.0) {
+        out.push_back("warning: seabedFriction = " + option("FrictionCoefficient", bed.friction, "", bed.frictionRow) +
+                      ": the FMU's seabed friction is Coulomb's, regularized below 0.01 m/s; MoorDyn's is a damping "
+                      "of each node's sliding, FricDamp x FrictionCoefficient x speed (" +
+                      option("FricDamp", bed.fricDamp, " N.s/m", bed.fricDampRow) + "), saturating at " +
+                      option("StatDynFricScale", bed.statDynFricScale, "", bed.statDynFricScaleRow) +
+                      " x the Coulomb force, and so weaker at slow sliding: statics agree, motions on the seabed "
+                      "do not (set seabedFriction = 0 for a line sliding as in MoorDyn at low speed)");
+    } else if (bed.fricDampRow > 0 || bed.statDynFricScaleRow > 0) {
+        out.push_back("FricDamp and StatDynFricScale have no effect: FrictionCoefficient is 0 (no seabed friction, "
+                      "as in MoorDyn)");
+    }
+    return out;
+}
+
+std::vector<std::string> mooring_environment_notes(const MooringDeck& deck, const UCParams& importer) {
+    LineFileLine env;
+    env.waterDepth = deck.waterDepth;
+    env.gravity = deck.gravity;
+    env.waterDensity = deck.waterDensity;
+    env.waterDepthRow = deck.waterDepthRow;
+    env.gravityRow = deck.gravityRow;
+    env.waterDensityRow = deck.waterDensityRow;
+    env.seabed = deck.seabed;
+    return deck_environment_notes(env, 0.0, importer);
 }
 
 bool mooring_line_params(const MooringDeck& deck, int k, const UCParams& base, UCParams& p, std::string& error) {
@@ -1586,6 +1723,7 @@ bool mooring_line_params(const MooringDeck& deck, int k, const UCParams& base, U
     line.waterDepth = deck.waterDepth;
     line.gravity = deck.gravity;
     line.waterDensity = deck.waterDensity;
+    line.seabed = deck.seabed;
     line.sea = deck.sea;
     if (l.farFree) {
         line.body = l.farBody;

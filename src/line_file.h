@@ -61,6 +61,15 @@ using LineFileCompanions = std::vector<LineFileCompanion>;
 // them from the deck's directory and hands their text to read_line_file or read_mooring_deck.
 std::vector<std::string> line_file_companions(std::string_view text);
 
+// MoorDyn's seabed, which is always there at WtrDpth (docs/lines.md, "Seabed"): kBot and cBot per unit of
+// projected area [Pa/m, Pa s/m], the friction options; the deck's values, MoorDyn's defaults where it is
+// silent. row: the line of the file that sets the option, 0 when the deck is silent.
+struct LineFileSeabed {
+    double kBot = 3.0e6, cBot = 3.0e5;  // MoorDyn's defaults
+    double friction = 0.0, fricDamp = 200.0, statDynFricScale = 1.0;
+    int kBotRow = 0, cBotRow = 0, frictionRow = 0, fricDampRow = 0, statDynFricScaleRow = 0;
+};
+
 // The line of a deck: what the parameters need, plus notes for the log.
 struct LineFileLine {
     std::vector<LineFileSection> sections;  // from the tow point
@@ -71,6 +80,8 @@ struct LineFileLine {
     double towPoint[3] = {0.0, 0.0, 0.0};   // the Vessel/Coupled point (the tow.* inputs drive it)
     bool towFixed = false;                  // the tow point is the deck's Fixed point (no Vessel point)
     double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
+    int waterDepthRow = 0, gravityRow = 0, waterDensityRow = 0;  // the rows that set them (0: MoorDyn's default)
+    LineFileSeabed seabed;
     LineFileSea sea;
     std::vector<std::string> notes;         // "line <n>: ..." : what was ignored or adjusted
 };
@@ -90,9 +101,21 @@ int elements_for_segments(int numSegs);
 bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& line, std::string& error,
                     const LineFileCompanions& companions = {});
 
-// Writes the line into the parameters (line properties, elements, far end, environment). False with a
-// message when the parameters cannot describe it.
+// Writes the line into the parameters (line properties, elements, far end, environment, the seabed as
+// MoorDyn has it: on at WtrDpth, seabedStiffness kBot x Diam, seabedDamping cBot x Diam, seabedFriction
+// FrictionCoefficient, Diam that of the line's last section, the one on the seabed at its anchor). The
+// environment and seabed parameters whose bit is set in p.deckKeep (UC_DECK_KEEP_*: set explicitly by the
+// importer) keep the value p holds. False with a message when the parameters cannot describe it.
 bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error);
+
+// What the log says about the deck's environment and seabed against the parameters: for each of
+// waterDepth, gravity, waterDensity, enableSeabed, seabedStiffness, seabedDamping, seabedFriction and
+// enableCompression, which value is used (the deck's, or the importer's where its UC_DECK_KEEP_* bit is set
+// in importer.deckKeep, the importer's value in `importer`) and why; lines starting "warning: " are
+// fmi2Warnings (the friction law differs from MoorDyn's). bottomDiameter: Diam of the section on the seabed
+// (0: a mooring system's, each line's own).
+std::vector<std::string> deck_environment_notes(const LineFileLine& line, double bottomDiameter,
+                                                const UCParams& importer);
 
 // ------------------------------------------------------------------------------- mooring systems
 // A deck of several lines, of lines on bodies, or with a BODIES section is a mooring system
@@ -144,9 +167,14 @@ struct MooringDeck {
     bool bodiesSection = false;          // false: the deck's Vessel points ride body 1
     bool nodesFromDeck = false;          // TmaxIC 0: the free nodes start at rest at their deck positions
     double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
+    int waterDepthRow = 0, gravityRow = 0, waterDensityRow = 0;
+    LineFileSeabed seabed;
     LineFileSea sea;
     std::vector<std::string> notes;
 };
+
+// deck_environment_notes for a mooring system (each line's seabed contact from its far-end section's Diam).
+std::vector<std::string> mooring_environment_notes(const MooringDeck& deck, const UCParams& importer);
 
 // True when the text is a deck (LINES and POINTS readable) with several lines, a point on a body or a
 // BODIES row: a mooring system, not one line. Decks it is false for are read by read_line_file.

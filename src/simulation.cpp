@@ -439,24 +439,39 @@ double CableSimulation::cable_torque(const UCInputs& in) {
 
 bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) const {
     const UCParams& p = model_.params();
-    char buffer[400];
+    char buffer[600];
     const char* farName = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor.x/y/z" : "end.x/y/z";
     if (model_.far_end_prescribed()) {
         const Vec3 d = farPoint - tow_.position;
         const double reach = 1.1 * model_.line().length;
         if (d.norm() > reach) {
-            // Name the coordinate that is farthest off, with the range the others leave it.
-            int k = 0;
-            d.cwiseAbs().maxCoeff(&k);
-            const double others = d.squaredNorm() - d[k] * d[k];
-            const double half = std::sqrt(std::max(0.0, reach * reach - others));
-            const char* prefix = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor" : "end";
-            std::snprintf(buffer, sizeof buffer,
-                          "%s.%c = %.17g is outside [%.6g, %.6g]: the far end must lie within the reach of the "
-                          "stretched cable, 1.1 x length = %.6g m from the tow point (it is %.6g m away; more than "
-                          "10 %% strain, which no cable survives)",
-                          prefix, "xyz"[k], farPoint[k], tow_.position[k] - half, tow_.position[k] + half, reach,
-                          d.norm());
+            if (p.lineFile[0] != '\0') {
+                // A deck's points are where its author put them: the line's length is what is short.
+                std::snprintf(buffer, sizeof buffer,
+                              "the line is too short for where its ends are: %.6g m unstretched (the deck's "
+                              "UnstrLen), its far end (%.6g, %.6g, %.6g) is %.6g m from the tow point (%.6g, %.6g, "
+                              "%.6g), a stretch of %.3g %%, more than the 10 %% any cable survives; lengthen the "
+                              "line to at least %.6g m or bring its ends within %.6g m of each other",
+                              model_.line().length, farPoint.x(), farPoint.y(), farPoint.z(), d.norm(),
+                              tow_.position.x(), tow_.position.y(), tow_.position.z(),
+                              100.0 * (d.norm() / model_.line().length - 1.0), d.norm() / 1.1, reach);
+            } else {
+                // Name the coordinate that is farthest off, with the range the others leave it, and the
+                // length the line would need where the anchor is meant to be there.
+                int k = 0;
+                d.cwiseAbs().maxCoeff(&k);
+                const double others = d.squaredNorm() - d[k] * d[k];
+                const double half = std::sqrt(std::max(0.0, reach * reach - others));
+                const char* prefix = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor" : "end";
+                std::snprintf(buffer, sizeof buffer,
+                              "%s.%c = %.17g is outside [%.6g, %.6g]: the far end must lie within the reach of the "
+                              "stretched cable, 1.1 x length = %.6g m from the tow point (it is %.6g m away; more "
+                              "than 10 %% strain, which no cable survives); or the line is too short: %s = %.6g m, "
+                              "at least %.6g m reaches it",
+                              prefix, "xyz"[k], farPoint[k], tow_.position[k] - half, tow_.position[k] + half, reach,
+                              d.norm(), p.nSections > 1 ? "the sections' length" : "length", model_.line().length,
+                              d.norm() / 1.1);
+            }
             error = buffer;
             return false;
         }
@@ -478,6 +493,92 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
         error = buffer;
         return false;
     }
+    return true;
+}
+
+namespace {
+
+// "<EA's name> = <EA> N<where>: <what>, <why>; <cause>": a strain no line of that EA should have, and the
+// unit EA was likely meant in (the factor of 1e3, 1e6 or 1e9 that brings the strain below a percent).
+std::string strain_message(const CableModel& model, int section, double strain, const std::string& what,
+                           const char* why) {
+    const UCParams& p = model.params();
+    const double EA = model.section(section).axial.EA;
+    const std::string name = model.n_sections() > 1 ? "section[" + std::to_string(section + 1) + "].EA" : "EA";
+    const std::string where = p.lineFile[0] != '\0' && model.n_sections() > 1
+                                  ? " (the deck's line " + std::to_string(section + 1) + " from the fairlead)"
+                                  : "";
+    std::string cause = "; check EA, its unit and the line's weight";
+    for (const auto& [factor, unit] : {std::pair<double, const char*>{1e3, "kN"}, {1e6, "MN"}, {1e9, "GN"}}) {
+        if (strain / factor < 0.01) {
+            char text[200];
+            std::snprintf(text, sizeof text, ": did you mean %.6g %s (%.6g N)?", EA, unit, EA * factor);
+            cause = text;
+            break;
+        }
+    }
+    char head[200];
+    std::snprintf(head, sizeof head, "%s = %.6g N%s: ", name.c_str(), EA, where.c_str());
+    return head + what + ", " + why + cause;
+}
+
+int section_index(const CableModel& model, const SectionProps& section) {
+    for (int k = 0; k < model.n_sections(); ++k)
+        if (&model.section(k) == &section) return k;
+    return 0;
+}
+
+}  // namespace
+
+bool CableSimulation::check_weight_strain(std::string& error) const {
+    // The line's whole weight in water over a section's EA: a tension the line may carry (all of it
+    // hanging), so a strain it may reach; beyond 100 % no line of that EA carries its own weight.
+    double weight = 0.0;
+    for (int k = 0; k < model_.n_sections(); ++k)
+        weight += std::abs(submerged_weight(model_.section(k).fluid)) * model_.section(k).length;
+    for (int k = 0; k < model_.n_sections(); ++k) {
+        const double strain = weight / model_.section(k).axial.EA;
+        if (!(strain > kWeightStrainRefused)) continue;
+        char what[200];
+        std::snprintf(what, sizeof what, "the line's weight in water (%.6g N) would stretch it %.3g %%", weight,
+                      100.0 * strain);
+        error = strain_message(model_, k, strain, what, "far beyond what any cable, chain or rope stretches");
+        return false;
+    }
+    return true;
+}
+
+bool CableSimulation::check_static_strain(std::string& error) {
+    // Each element's mean strain from its chord (at most its arc: a curved element's is underestimated,
+    // never over): the nodes' tangents carry the element's bending too, and are no measure of it.
+    double worst = 0.0;
+    int worstElement = -1;
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const int g = model_.element_offset(e);
+        const double chord = (Eigen::Map<const Vec3>(X_.data() + g + 6) - Eigen::Map<const Vec3>(X_.data() + g)).norm();
+        const double strain = chord / model_.element_length(e) - 1.0;
+        if (strain > worst) {
+            worst = strain;
+            worstElement = e;
+        }
+    }
+    if (worstElement < 0 || !(worst > kStrainWarned)) return true;
+    const SectionProps& section = model_.element_section(worstElement);
+    const bool refuse = worst > kStrainRefused;
+    char what[200];
+    std::snprintf(what, sizeof what, "the line stretches %.3g %% at rest (%.6g N of tension over %.6g to %.6g m)",
+                  100.0 * worst, section.axial.EA * worst, model_.element_start(worstElement),
+                  model_.element_start(worstElement) + model_.element_length(worstElement));
+    const std::string text =
+        strain_message(model_, section_index(model_, section), worst, what,
+                       refuse ? "more than any cable, chain or rope stretches before it breaks (nylon, the most "
+                                "extensible, at about 25 %); refusing the start"
+                              : "more than steel wire or chain stretches before it breaks (about 3 %)");
+    if (refuse) {
+        error = text;
+        return false;
+    }
+    event_ = event_.empty() ? "warning: " + text : event_ + "; warning: " + text;
     return true;
 }
 
@@ -667,6 +768,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     loads_.proxy = ProxyEstimate();
     loads_.endSpring = 0.0;
     if (!check_geometry(farPoint, error)) return false;
+    if (!check_weight_strain(error)) return false;
     // An anchored line, or one whose far end is held at rest, starts from its static profile.
     profileApplies_ = p.bottomEnd == UC_BOTTOM_ANCHORED ||
                       (p.bottomEnd == UC_BOTTOM_EXTERNAL && end_.velocity.isZero(0.0));
@@ -763,6 +865,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
             return false;
         }
     }
+    if (p.initMode == UC_INIT_EQUILIBRIUM && !check_static_strain(error)) return false;
     if (off_) {  // consistent: the winch runs at the rate of the initial tension
         double R[12];
         model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, R);

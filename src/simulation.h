@@ -139,6 +139,19 @@ private:
     // a line without bending stiffness: the acceptance's 0.2 % (both measure the anchor tension).
     static constexpr double kAnchorCheck = 2e-3;
     bool check_geometry(const Vec3& farPoint, std::string& error) const;
+    // After the static state is accepted: its largest strain (an element's chord over its length). Beyond
+    // kStrainRefused, false with the section, its EA and the likely cause (EA in the wrong unit);
+    // beyond kStrainWarned, a warning event.
+    bool check_static_strain(std::string& error);
+    // Before the static solver: false where the line's whole weight in water over a section's EA
+    // exceeds kWeightStrainRefused (EA in the wrong unit), which no static solve would settle.
+    bool check_weight_strain(std::string& error) const;
+    static constexpr double kWeightStrainRefused = 1.0;
+    // Nylon, the most extensible rope moored or towed with, breaks at about 20-25 % elongation; steel
+    // wire and chain below 3 %: a static strain beyond a quarter is no line's (docs/model.md).
+    static constexpr double kStrainRefused = 0.25;
+    // Beyond it every steel line and most fibre ropes are past breaking at rest: worth a word.
+    static constexpr double kStrainWarned = 0.05;
     void update_outputs();
     void warn_of_compression();
     bool set_integrator_tolerances(std::string& error);

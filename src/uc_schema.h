@@ -163,6 +163,7 @@ typedef struct UCParams {
     int seabedRest; /* seabedRest: where a line at rest lies on the penalty seabed: 1 (the default) at z = -`waterDepth`: the contact surface of each section and attachment is raised by its own rest penetration (its weight over the contact stiffness, plus half the smoothing band), so the static state agrees with a rigid seabed at every `seabedStiffness` and the stiffness acts on changes of load about the rest; 0 the contact surface at z = -`waterDepth`, a resting line sinking into it by its rest penetration, as MoorDyn's `kBot` ([docs/model.md](docs/model.md), seabed) */
     int bodyOrientation; /* bodyOrientation: a mooring system's coupled bodies: which inputs give their orientation: 0 `body[k].roll/pitch/yaw` with R = Rx(roll) Ry(pitch) Rz(yaw), MoorDyn's; 1 the unit quaternion `body[k].q0/q1/q2/q3`, scalar first; 2 `body[k].roll/pitch/yaw` with R = Rz(yaw) Ry(pitch) Rx(roll), OpenFAST's and MoorPy's ([docs/systems_mooring.md](docs/systems_mooring.md)) */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
+    int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
 } UCParams;
 
 typedef struct UCInputs {

@@ -233,12 +233,13 @@ class History:
 
 
 def fmu_surge(fmu, deck: Deck, surge: Surge, t_end: float, comm_step: float = 0.1, progress=None,
-              **extra) -> History:
-    """The FMU through the surge: position, velocity and acceleration (an input derivative) at the start
-    of each communication step (the FMU follows a cubic in time from them)."""
+              parameters=None, **extra) -> History:
+    """The FMU through the surge (any motion with state(t), e.g. a heave): position, velocity and
+    acceleration (an input derivative) at the start of each communication step (the FMU follows a cubic
+    in time from them). parameters: the FMU's parameters (default fmu_parameters(deck, **extra))."""
     times = np.arange(0.0, t_end + 0.5 * comm_step, comm_step)
     fair, anch = np.zeros(len(times)), np.zeros(len(times))
-    c = CableFMU(fmu, parameters=fmu_parameters(deck, **extra))
+    c = CableFMU(fmu, parameters=parameters if parameters is not None else fmu_parameters(deck, **extra))
     try:
         x0 = deck.fairlead
         c.initialize(inputs={"tow.x": x0[0], "tow.y": x0[1], "tow.z": x0[2]})

@@ -142,9 +142,10 @@ def _relative(ours: float, ref: float) -> float:
     return abs(ours - ref) / max(abs(ref), 1e-12)
 
 
-def load(fmu, path: Path, s=None, options=None) -> dict:
+def load(fmu, path: Path, s=None, options=None, given=None) -> dict:
     """The FMU's initialization of the deck, inputs from MoorPy's reading where it has one:
-    {"status": "refused", "reason"} or {"status": "ok", "system", "outputs": ...}."""
+    {"status": "refused", "reason", "warnings"} or {"status": "ok", "system", "outputs", "warnings"}.
+    given: the FMU's parameters (default: parameters(), the deck completed as MoorDyn has it)."""
     options = options or {}
     inputs, diameter = {}, 0.1
     if s is not None and s.lineList:
@@ -156,7 +157,9 @@ def load(fmu, path: Path, s=None, options=None) -> dict:
         tow = tow_point(s) if not s.bodyList else None
         if tow is not None:
             inputs.update({f"tow.{c}": float(v) for c, v in zip("xyz", tow.r)})
-    c = CableFMU(fmu, parameters=parameters(path, options, diameter), logging_on=True)
+    c = CableFMU(fmu, parameters=given if given is not None else parameters(path, options, diameter),
+                 logging_on=True)
+    warned = lambda: [text for status, _, text in c.messages if status == "WARNING"]  # noqa: E731
     try:
         c.initialize(inputs=inputs)
         system = any("a mooring system" in text for _, _, text in c.messages)
@@ -166,21 +169,21 @@ def load(fmu, path: Path, s=None, options=None) -> dict:
                        for k in range(1, n + 1)]
         else:
             outputs = [(c.get("towTension"), c.get("endTension"))]
-        return {"status": "ok", "system": system, "outputs": outputs}
+        return {"status": "ok", "system": system, "outputs": outputs, "warnings": warned()}
     except FMICallException:
         errors = [text for status, _, text in c.messages if status == "ERROR"]
         reason = errors[0] if errors else "(no message)"
-        return {"status": "refused", "reason": reason.split(f"lineFile {path}, ")[-1]}
+        return {"status": "refused", "reason": reason.split(f"lineFile {path}, ")[-1], "warnings": warned()}
     finally:
         c.free()
 
 
-def compare(fmu, path: Path) -> dict:
+def compare(fmu, path: Path, given=None) -> dict:
     """{"status": "refused", "reason", "moorpy"} or {"status": "ok", "system", "lines": [(MoorPy fairlead,
     FMU fairlead, MoorPy anchor, FMU anchor)], "worst", "moorpy"}: "moorpy" is None, or why MoorPy fails
-    (then no comparison: "worst" None)."""
+    (then no comparison: "worst" None). given: the FMU's parameters (load)."""
     s, options, why = moorpy_system(path)
-    result = load(fmu, path, s if s is not None and s.lineList else None, options)
+    result = load(fmu, path, s if s is not None and s.lineList else None, options, given)
     result["moorpy"] = why
     if result["status"] != "ok" or why is not None:
         result.setdefault("lines", [])
@@ -266,7 +269,7 @@ REASONS = [
     (r"Cl = ", "vortex-induced vibration (`Cl`)"),
     (r"WaveKin = (\d+)", "`WaveKin` {0}"),
     (r"Currents = (\d+)", "`Currents` {0}"),
-    (r"outside \[.*reach of the stretched cable", "a line stretched beyond 10 % at the deck's positions"),
+    (r"the line is too short for where its ends are", "a line stretched beyond 10 % at the deck's positions"),
     (r"no static equilibrium", "no static equilibrium (a line longer than the way down and across)"),
     (r"static equilibrium not found", "static equilibrium not found"),
     (r"pinned", "a pinned body"),

@@ -150,7 +150,9 @@ TEST(LineFile, ChainWireChainIsOrientedFromTheVesselPointWithJointsInOrder) {
     EXPECT_EQ(l.gravity, 9.81);
     EXPECT_EQ(l.waterDensity, 1025.0);
     EXPECT_TRUE(has_note(l, "line 22: dtM ignored")) << l.notes.size();
-    EXPECT_TRUE(has_note(l, "line 23: kBot ignored"));
+    EXPECT_EQ(l.seabed.kBot, 3.0e6);
+    EXPECT_EQ(l.seabed.kBotRow, 23);
+    EXPECT_FALSE(has_note(l, "kBot ignored"));
 }
 
 TEST(LineFile, LineTypeColumnsMapOntoOurCoefficients) {
@@ -267,11 +269,11 @@ TEST(LineFile, OutputsAndIgnoredOptionsAreNotedWithTheirLine) {
 TEST(LineFile, ApplyWritesTheLineAndKeepsTheOtherParameters) {
     UCParams p;
     uc_params_default(&p);
-    p.seabedStiffness = 2.5e6;
-    p.enableSeabed = 1;
+    p.seabedStiffness = 2.5e6;  // set explicitly by the importer: kept over the deck's
+    p.deckKeep = UC_DECK_KEEP_SEABED_STIFFNESS;
     p.relTol = 1e-7;
     double tow[3] = {1, 1, 1};
-    char notes[1024], msg[512];
+    char notes[4096], msg[512];
     const std::string deck = kSingleChain;
     ASSERT_EQ(uc_line_file_apply(deck.data(), deck.size(), &p, tow, notes, sizeof notes, msg, sizeof msg), 0) << msg;
     EXPECT_EQ(p.length, 900.0);
@@ -294,8 +296,11 @@ TEST(LineFile, ApplyWritesTheLineAndKeepsTheOtherParameters) {
     EXPECT_EQ(p.gravity, uc::kMoorDynGravity);
     EXPECT_EQ(p.waterDensity, 1025.0);
     EXPECT_EQ(p.seabedStiffness, 2.5e6);
-    EXPECT_EQ(p.enableSeabed, 1);
+    EXPECT_EQ(p.enableSeabed, 1);  // MoorDyn's seabed, always there
+    EXPECT_EQ(p.seabedDamping, 3.0e5 * 0.0766);
     EXPECT_EQ(p.relTol, 1e-7);
+    EXPECT_NE(std::strstr(notes, "seabedStiffness = 2500000 set through the FMI is used, not kBot 3000000 Pa/m"),
+              nullptr) << notes;
     EXPECT_EQ(tow[0], 0.0);
     EXPECT_EQ(tow[2], -70.0);
     EXPECT_NE(std::strstr(notes, "line 17: dtM ignored"), nullptr) << notes;
@@ -303,6 +308,83 @@ TEST(LineFile, ApplyWritesTheLineAndKeepsTheOtherParameters) {
     p.lineFileElements = 7;
     ASSERT_EQ(uc_line_file_apply(deck.data(), deck.size(), &p, nullptr, nullptr, 0, msg, sizeof msg), 0) << msg;
     EXPECT_EQ(p.nElements, 7);
+}
+
+// MoorDyn always has a seabed at WtrDpth: kBot and cBot per unit of projected area, on the line's
+// diameter, its friction coefficient; MoorDyn's defaults (3e6 Pa/m, 3e5 Pa s/m, no friction) where the
+// deck is silent. The parameters' own values (seabed off, 1e5 N/m2, 1000 N s/m2) do not survive the deck.
+TEST(LineFileSeabed, TheDecksSeabedIsOnWithKBotAndCBotTimesTheDiameter) {
+    UCParams p;
+    uc_params_default(&p);
+    ASSERT_EQ(p.enableSeabed, 0);
+    double tow[3];
+    char notes[4096], msg[512];
+    const std::string silent = kSingleChain;
+    ASSERT_EQ(uc_line_file_apply(silent.data(), silent.size(), &p, tow, notes, sizeof notes, msg, sizeof msg), 0) << msg;
+    EXPECT_EQ(p.enableSeabed, 1);
+    EXPECT_EQ(p.seabedStiffness, 3.0e6 * 0.0766);
+    EXPECT_EQ(p.seabedDamping, 3.0e5 * 0.0766);
+    EXPECT_EQ(p.seabedFriction, 0.0);
+    EXPECT_NE(std::strstr(notes, "seabedStiffness = 229800 N/m2 from kBot 3000000 Pa/m (MoorDyn's default"), nullptr)
+        << notes;
+
+    const std::string set = edit(kSingleChain, "320      WtrDpth", "320 WtrDpth\n1.0e5 kBot\n1.0e4 cBot\n0.5 FrictionCoefficient");
+    uc_params_default(&p);
+    ASSERT_EQ(uc_line_file_apply(set.data(), set.size(), &p, tow, notes, sizeof notes, msg, sizeof msg), 0) << msg;
+    EXPECT_EQ(p.enableSeabed, 1);
+    EXPECT_EQ(p.seabedStiffness, 1.0e5 * 0.0766);
+    EXPECT_EQ(p.seabedDamping, 1.0e4 * 0.0766);
+    EXPECT_EQ(p.seabedFriction, 0.5);
+    // MoorDyn's friction is a saturated damping of each node, the FMU's Coulomb's: a warning says so
+    EXPECT_NE(std::strstr(notes, "warning: seabedFriction = FrictionCoefficient 0.5 (line "), nullptr) << notes;
+
+    const std::string none = edit(kSingleChain, "320      WtrDpth", "320 WtrDpth\n0 kBot");
+    uc_params_default(&p);
+    ASSERT_EQ(uc_line_file_apply(none.data(), none.size(), &p, tow, notes, sizeof notes, msg, sizeof msg), 0) << msg;
+    EXPECT_EQ(p.enableSeabed, 0);  // MoorDyn has no contact at a zero stiffness
+}
+
+// What the importer set explicitly (deckKeep) keeps its value, and the notes say which value won.
+TEST(LineFileSeabed, ParametersTheImporterSetKeepTheirValueOverTheDecks) {
+    UCParams p;
+    uc_params_default(&p);
+    p.enableSeabed = 0;
+    p.waterDepth = 400.0;
+    p.seabedDamping = 77.0;
+    p.enableCompression = 1;
+    p.deckKeep = UC_DECK_KEEP_ENABLE_SEABED | UC_DECK_KEEP_WATER_DEPTH | UC_DECK_KEEP_SEABED_DAMPING |
+                 UC_DECK_KEEP_ENABLE_COMPRESSION;
+    double tow[3];
+    char notes[4096], msg[512];
+    const std::string deck = kSingleChain;
+    ASSERT_EQ(uc_line_file_apply(deck.data(), deck.size(), &p, tow, notes, sizeof notes, msg, sizeof msg), 0) << msg;
+    EXPECT_EQ(p.enableSeabed, 0);
+    EXPECT_EQ(p.waterDepth, 400.0);
+    EXPECT_EQ(p.seabedDamping, 77.0);
+    EXPECT_EQ(p.enableCompression, 1);
+    EXPECT_EQ(p.seabedStiffness, 3.0e6 * 0.0766);  // not set: the deck's
+    EXPECT_EQ(p.gravity, uc::kMoorDynGravity);      // the deck is silent: MoorDyn's
+    for (const char* said : {"enableSeabed = false set through the FMI is used, not the deck's seabed",
+                             "waterDepth = 400 set through the FMI is used, not WtrDpth 320 m (line 18)",
+                             "seabedDamping = 77 set through the FMI is used, not cBot 300000 Pa s/m (MoorDyn's default",
+                             "enableCompression = true set through the FMI is used"}) {
+        EXPECT_NE(std::strstr(notes, said), nullptr) << said << "\n" << notes;
+    }
+}
+
+// Every line of a mooring system gets the seabed from its own far-end section's diameter.
+TEST(LineFileSeabed, EachLineOfASystemGetsKBotTimesItsOwnDiameter) {
+    uc::MooringDeck deck;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(kChainWireChain, 0, deck, error)) << error;
+    UCParams base, p;
+    uc_params_default(&base);
+    ASSERT_TRUE(uc::mooring_line_params(deck, 0, base, p, error)) << error;
+    EXPECT_EQ(p.enableSeabed, 1);
+    EXPECT_EQ(p.seabedStiffness, 3.0e6 * 0.138);  // the chain at the anchor
+    base.deckKeep = UC_DECK_KEEP_ENABLE_SEABED;
+    ASSERT_TRUE(uc::mooring_line_params(deck, 0, base, p, error)) << error;
+    EXPECT_EQ(p.enableSeabed, 0);
 }
 
 TEST(LineFile, ApplyRefusesMoreElementsThanTheModelTakesNamingTheLine) {

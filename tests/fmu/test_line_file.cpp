@@ -82,6 +82,11 @@ void set_chain_by_parameters(Instance& inst) {
     inst.setReal("waterDepth", 320.0);
     inst.setReal("gravity", 9.81);
     inst.setReal("waterDensity", 1025.0);
+    // the deck's seabed damping (MoorDyn's default cBot, the deck is silent, x Diam) and tension-only law
+    inst.setReal("seabedDamping", 3.0e5 * 0.0766);
+    const fmi2ValueReference compression = vr_of("enableCompression");
+    const fmi2Boolean off = fmi2False;
+    fmi().SetBoolean(inst.c, &compression, 1, &off);
 }
 
 // What a line file does not describe: set alongside it (or with the parameters).

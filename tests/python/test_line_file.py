@@ -28,6 +28,10 @@ CHAIN_BY_PARAMETERS = {
     "Cdn": 2.4, "Cdt": 0.2, "Can": 1.0, "Cat": 0.0, "nElements": 20, "bottomEnd": 1,
     "anchor.x": m.ANCHOR_X, "anchor.y": 0.0, "anchor.z": -m.DEPTH,
     "waterDepth": m.DEPTH, "gravity": 9.81, "waterDensity": 1025.0,
+    # the deck's seabed, MoorDyn's: on at WtrDpth, its default kBot and cBot (3e6 Pa/m, 3e5 Pa s/m: the
+    # deck is silent) x Diam
+    "enableSeabed": True, "seabedStiffness": 3.0e6 * 0.0766, "seabedDamping": 3.0e5 * 0.0766,
+    "enableCompression": False,  # MoorDyn's tension-only lines, as the deck sets
 }
 # What the deck does not describe, set alongside it.
 SCENE = {"enableSeabed": True, "seabedStiffness": 1e6, "enableBending": False}
@@ -178,7 +182,8 @@ def _chain_section(k: int, length: float, segments: int) -> dict:
 
 CLUMP_BY_PARAMETERS = {
     **{k: v for k, v in CHAIN_BY_PARAMETERS.items() if k in ("bottomEnd", "anchor.x", "anchor.y", "anchor.z",
-                                                               "waterDepth", "gravity", "waterDensity")},
+                                                               "waterDepth", "gravity", "waterDensity",
+                                                               "seabedDamping", "enableCompression")},
     "nSections": 2, **_chain_section(1, 400.0, 18), **_chain_section(2, 500.0, 22),
     "nAttachments": 1, "attachment[1].s": 400.0, "attachment[1].mass": 20000.0, "attachment[1].volume": 2.5,
     "attachment[1].CdA": 3.0, "attachment[1].addedMass": 1.0 * 1025.0 * 2.5,
