@@ -60,3 +60,28 @@ def test_a_line_above_the_water_starts_and_matches_the_reference(runs, line, n):
     # the statics benchmark's acceptance at 20 elements (max 0.5 %) holds at 10 for these lines
     assert run["towTension"] == pytest.approx(ref["fairlead"], rel=5e-3)
     assert run["endTension"] == pytest.approx(ref["anchor"], rel=5e-3)
+
+
+def test_a_beam_deck_in_air_without_bending_starts_at_its_dry_catenary(fmu_file):
+    """MoorDyn's BeamSimplySupported deck (10 m of 100 kg/m, EA 1.5e9 N, between two Fixed points
+    10 m apart, 10 m above the water) run without bending: a taut elastic catenary of the dry weight,
+    10 = 2 (H / w) asinh(w L / 2H) + H L / EA. Its check compared with the submerged weight and
+    refused the start (181.9 kN against 114.1 kN)."""
+    import math
+
+    from scipy.optimize import brentq
+
+    from studies import public_decks as pd
+    from ucable.fmu import CableFMU
+
+    L, EA, w = 10.0, 1.5e9, 100.0 * 9.80665
+    H = brentq(lambda H: 2.0 * H / w * math.asinh(w * L / (2.0 * H)) + H * L / EA - 10.0, 1e3, 1e8, xtol=1e-6)
+    expected = math.hypot(H, 0.5 * w * L)
+    c = CableFMU(fmu_file, parameters={"lineFile": str(pd.PUBLIC / "md_tests_Mooring_BeamSimplySupported.txt"),
+                                       "enableCompression": False, "enableSeabed": True, "enableBending": False})
+    try:
+        c.initialize(inputs={"tow.x": 10.0, "tow.y": 0.0, "tow.z": 10.0})
+        assert c.get("towTension") == pytest.approx(expected, rel=2e-3)
+        assert c.get("endTension") == pytest.approx(expected, rel=2e-3)
+    finally:
+        c.free()
