@@ -193,7 +193,7 @@ int waterline_points(const ElementTables& e, double diameter, const double* X, Q
     if (n == 1) return 0;  // inside the hull's band but never crossing it: phi is smooth on the element
     cuts[n++] = 1.0;
     std::sort(cuts, cuts + n);
-    const GaussRule rule = gauss_rule(kWaterlinePoints);
+    const GaussRule rule = gauss_rule(e.nLoad);
     int count = 0;
     for (int k = 0; k + 1 < n; ++k) {
         const double a = cuts[k], width = cuts[k + 1] - cuts[k];

@@ -84,12 +84,11 @@ Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& 
                 const Mat3& dU, bool waves, const Vec3& A, const Mat3& dA, PointLoadJacobian* J);
 
 // An element that crosses the waterline band (|z| < d/2, where the submerged fraction ramps) is
-// integrated piecewise: the Gauss rule of kWaterlinePoints on each piece between the crossings of
-// z = -d/2 and z = +d/2, so that its part in air weighs its dry weight and its part in water its
-// submerged weight whatever its length (the element's own load points may all lie on one side).
-// Fills `points` and returns their number; 0 for an element that does not cross the band.
-constexpr int kWaterlinePoints = 4;
-constexpr int kMaxWaterlinePoints = 7 * kWaterlinePoints;  // up to 6 crossings of a cubic
+// integrated piecewise: the element's own Gauss rule (nLoad points) on each piece between the
+// crossings of z = -d/2 and z = +d/2, so that its part in air weighs its dry weight and its part in
+// water its submerged weight whatever its length (the element's own load points may all lie on one
+// side). Fills `points` and returns their number; 0 for an element that does not cross the band.
+constexpr int kMaxWaterlinePoints = 7 * 5;  // up to 6 crossings of a cubic, at most 5 points a piece
 int waterline_points(const ElementTables& e, double diameter, const double* X, QuadPoint* points);
 
 // Element integrals: R_a += int N_a F ds; K, C, M get dR/dX, dR/dXdot, dR/dXddot. waveCache (null, or
