@@ -177,6 +177,14 @@ int waterline_points(const ElementTables& e, double diameter, const double* X, Q
     for (int k = 0; k < ne; ++k)
         if (extrema[k] > 0.0 && extrema[k] < 1.0) ends[nm++] = extrema[k];
     ends[nm++] = 1.0;
+    // Only an element that crosses the surface itself: one that reaches it from one side (a tow
+    // point on the surface) keeps its own load points, as a fully submerged line is validated.
+    double zmax = -INFINITY, zmin = INFINITY;
+    for (int k = 0; k < nm; ++k) {
+        zmax = std::max(zmax, z(ends[k]));
+        zmin = std::min(zmin, z(ends[k]));
+    }
+    if (!(zmax > 0.0 && zmin < 0.0)) return 0;
     // The crossings of z = +-d/2 on each monotone piece (bisection): phi is smooth between them.
     for (int k = 0; k + 1 < nm; ++k) {
         for (double level : {-half, half}) {

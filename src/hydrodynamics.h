@@ -83,11 +83,11 @@ inline double dry_weight(const FluidProps& f) { return f.massPerLength * f.gravi
 Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd, const Vec3& U,
                 const Mat3& dU, bool waves, const Vec3& A, const Mat3& dA, PointLoadJacobian* J);
 
-// An element that crosses the waterline band (|z| < d/2, where the submerged fraction ramps) is
-// integrated piecewise: the element's own Gauss rule (nLoad points) on each piece between the
+// An element that crosses the water surface (z above 0 and below it; the submerged fraction ramps
+// over |z| < d/2) is integrated piecewise: the element's own Gauss rule (nLoad points) on each piece between the
 // crossings of z = -d/2 and z = +d/2, so that its part in air weighs its dry weight and its part in
 // water its submerged weight whatever its length (the element's own load points may all lie on one
-// side). Fills `points` and returns their number; 0 for an element that does not cross the band.
+// side). Fills `points` and returns their number; 0 for an element that does not cross the surface.
 constexpr int kMaxWaterlinePoints = 7 * 5;  // up to 6 crossings of a cubic, at most 5 points a piece
 int waterline_points(const ElementTables& e, double diameter, const double* X, QuadPoint* points);
 

@@ -59,8 +59,10 @@ double LineProfile::surface_crossing(const Piece& p, double H, double l, bool in
     for (int k = 0; k + 1 < n; ++k) {
         double a = ends[k], b = ends[k + 1];
         const double fa = below(a), fb = below(b);
-        // from the water up into the air (below goes from >= 0 to < 0), or down from the air
-        const bool crosses = inAir ? (fa <= 0.0 && fb > 0.0) : (fa >= 0.0 && fb < 0.0);
+        // from the water up into the air (below goes from >= 0 to < 0), or down from the air; an
+        // end on the surface (a tow point at z = 0) that round-off puts a hair across stays
+        const double hair = 1e-9 * length_;
+        const bool crosses = inAir ? (fa <= 0.0 && fb > hair) : (fa >= 0.0 && fb < -hair);
         if (!crosses) continue;
         for (int it = 0; it < 200 && b - a > 1e-13 * length_; ++it) {
             const double m = 0.5 * (a + b);

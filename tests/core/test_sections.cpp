@@ -172,7 +172,6 @@ double hanging_elongation_error(int joint, int nElements) {
     CableSimulation sim(p);
     std::string error;
     UCInputs in{};
-    in.tow[2] = -1.0;  // below the surface: the whole line submerged (docs/model.md, the waterline)
     if (!sim.initialize(0.0, in, error)) {
         ADD_FAILURE() << error;
         return INFINITY;
@@ -180,7 +179,7 @@ double hanging_elongation_error(int joint, int nElements) {
     const double w = (m - p.waterDensity * kPi * d * d / 4) * p.gravity;
     // T(s) = w (2L - s): int_0^L T / EA1 + int_L^2L T / EA2
     const double exact = w * 1.5 * L * L / EA[0] + w * 0.5 * L * L / EA[1];
-    const double elongation = -sim.outputs().endPosition[2] - 1.0 - 2 * L;
+    const double elongation = -sim.outputs().endPosition[2] - 2 * L;
     return std::abs(elongation - exact) / exact;
 }
 
@@ -198,8 +197,7 @@ TEST(Sections, StretchAcrossAnEAJump) {
     EXPECT_LT(coarse, 1e-3);
 }
 
-// An attachment's weight, buoyancy and the line's are carried by the tow point, to round-off (the
-// tow point below the surface: the line's top half diameter would otherwise cross the waterline).
+// An attachment's weight, buoyancy and the line's are carried by the tow point, to round-off.
 TEST(Sections, AttachmentEquilibriumClosesToRoundOff) {
     UCParams p;
     uc_params_default(&p);
@@ -207,9 +205,7 @@ TEST(Sections, AttachmentEquilibriumClosesToRoundOff) {
     p.attachment[0] = UCAttachment{137.3, 500.0, 0.1, 50.0, 2.0};
     CableSimulation sim(p);
     std::string error;
-    UCInputs in{};
-    in.tow[2] = -1.0;
-    ASSERT_TRUE(sim.initialize(0.0, in, error)) << error;
+    ASSERT_TRUE(sim.initialize(0.0, UCInputs{}, error)) << error;
     const double A = kPi * p.diameter * p.diameter / 4;
     const double wet = ((p.massPerLength - p.waterDensity * A) * p.length + 500.0 - p.waterDensity * 0.1) * p.gravity;
     EXPECT_NEAR(sim.outputs().towForce[2], -wet, 1e-10 * wet);
