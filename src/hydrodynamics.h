@@ -73,6 +73,8 @@ double submerged_fraction(double z, double diameter);
 
 // Weight less buoyancy per unit length of a fully submerged line [N/m] (negative: it floats).
 inline double submerged_weight(const FluidProps& f) { return (f.massPerLength - f.rho * f.area) * f.gravity; }
+// Weight per unit length in air [N/m].
+inline double dry_weight(const FluidProps& f) { return f.massPerLength * f.gravity; }
 
 // Per-length load F at one point in water moving with velocity U (gradient dU = dU/dr) and, when
 // `waves` (the water accelerates), accelerating with A (gradient dA): Morison drag on the relative
@@ -80,6 +82,14 @@ inline double submerged_weight(const FluidProps& f) { return (f.massPerLength - 
 // mass). Fills J when non-null.
 Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd, const Vec3& U,
                 const Mat3& dU, bool waves, const Vec3& A, const Mat3& dA, PointLoadJacobian* J);
+
+// An element that crosses the water surface (z above 0 and below it; the submerged fraction ramps
+// over |z| < d/2) is integrated piecewise: the element's own Gauss rule (nLoad points) on each piece between the
+// crossings of z = -d/2 and z = +d/2, so that its part in air weighs its dry weight and its part in
+// water its submerged weight whatever its length (the element's own load points may all lie on one
+// side). Fills `points` and returns their number; 0 for an element that does not cross the surface.
+constexpr int kMaxWaterlinePoints = 7 * 5;  // up to 6 crossings of a cubic, at most 5 points a piece
+int waterline_points(const ElementTables& e, double diameter, const double* X, QuadPoint* points);
 
 // Element integrals: R_a += int N_a F ds; K, C, M get dR/dX, dR/dXdot, dR/dXddot. waveCache (null, or
 // one slot per load point) holds the waves' expansions of the element's load points.

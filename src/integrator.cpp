@@ -528,8 +528,9 @@ bool Integrator::set_max_order(int order, std::string& error) {
     return true;
 }
 
-bool Integrator::set_tolerances(const std::vector<double>& atol, double relTol, double absTol, std::string& error) {
-    if (atol.size() != static_cast<size_t>(2 * n_)) {
+bool Integrator::set_tolerances(const std::vector<double>& atol, double relTol, double absTol, std::string& error,
+                                const std::vector<double>* scales) {
+    if (atol.size() != static_cast<size_t>(2 * n_) || (scales && scales->size() != atol.size())) {
         error = "internal: wrong number of tolerances";
         return false;
     }
@@ -540,6 +541,11 @@ bool Integrator::set_tolerances(const std::vector<double>& atol, double relTol, 
         }
     }
     atol_ = atol;
+    if (scales) {
+        scale_ = *scales;
+    } else {
+        scale_.assign(atol.size(), 0.0);
+    }
     relTol_ = relTol;
     absTol_ = absTol;
     const int flag = IDAWFtolerances(ida_, &Integrator::error_weights);
@@ -627,7 +633,9 @@ int Integrator::error_weights(N_Vector y, N_Vector ewt, void* user) {
     for (int i = 0; i < 2 * self->n_; ++i) {
         double tol = self->atol_[i];
         if (scalar) {
-            const double s = self->relTol_ * std::fabs(yy[i]) + self->absTol_;  // 0 where relTol alone meets y = 0
+            // relative to |y|, but never to less than the unknown's scale: a velocity or a tangent
+            // component passing through 0 would otherwise ask for an error of 0
+            const double s = self->relTol_ * std::max(std::fabs(yy[i]), self->scale_[i]) + self->absTol_;
             if (s > 0.0) tol = std::min(tol, s);
         }
         if (!(tol > 0.0)) return -1;

@@ -60,9 +60,11 @@ public:
     Integrator& operator=(const Integrator&) = delete;
 
     // Per-component absolute tolerances of the local error test (2n values, interleaved like y):
-    // IDA's error weights become 1 / atol_i, or 1 / min(atol_i, relTol |y_i| + absTol) where the
-    // scalar tolerances are positive (they can only tighten the test).
-    bool set_tolerances(const std::vector<double>& atol, double relTol, double absTol, std::string& error);
+    // IDA's error weights become 1 / atol_i, or 1 / min(atol_i, relTol max(|y_i|, scale_i) + absTol)
+    // where the scalar tolerances are positive (they can only tighten the test); `scales` (2n
+    // values, null: 0) are the unknowns' magnitudes, below which relTol does not tighten further.
+    bool set_tolerances(const std::vector<double>& atol, double relTol, double absTol, std::string& error,
+                        const std::vector<double>* scales = nullptr);
 
     // The highest order of the BDF formulas (1-5; IDA's default is 5). Orders above 2 are not
     // A-stable: lightly damped fast modes can hold their steps at a loose tolerance.
@@ -153,6 +155,7 @@ private:
     double cj_ = 0.0;  // of the stored matrices
     std::vector<double> atol_;  // per-component absolute tolerances (empty: IDA's scalar ones)
     double relTol_ = 0.0, absTol_ = 0.0;
+    std::vector<double> scale_;  // of each unknown, the floor of |y| in relTol |y|
     std::vector<ProjectedBlock> blocks_;
     std::vector<char> inBlock_;        // per unknown: 1 if a block measures it
     std::vector<double> directions_;   // unit direction of each block at the start of the step

@@ -41,6 +41,38 @@ void LineProfile::piece_offset(const Piece& p, double H, double l, double& dx, d
     dx += H * l / p.EA;
 }
 
+double LineProfile::surface_crossing(const Piece& p, double H, double l, bool inAir) const {
+    if (!std::isfinite(surfaceHeight_) || p.grounded) return l;
+    // z is monotone on either side of the vertex (V = 0) inside the piece
+    double ends[3] = {0.0, l, l};
+    int n = 2;
+    const double vertex = p.weight != 0.0 ? -p.V0 / p.weight : -1.0;
+    if (vertex > 0.0 && vertex < l) {
+        ends[1] = vertex;
+        n = 3;
+    }
+    auto below = [&](double u) {  // height below the surface (positive: in water)
+        double dx, dz;
+        piece_offset(p, H, u, dx, dz);
+        return surfaceHeight_ - (p.z0 + dz);
+    };
+    for (int k = 0; k + 1 < n; ++k) {
+        double a = ends[k], b = ends[k + 1];
+        const double fa = below(a), fb = below(b);
+        // from the water up into the air (below goes from >= 0 to < 0), or down from the air; an
+        // end on the surface (a tow point at z = 0) that round-off puts a hair across stays
+        const double hair = 1e-9 * length_;
+        const bool crosses = inAir ? (fa <= 0.0 && fb > hair) : (fa >= 0.0 && fb < -hair);
+        if (!crosses) continue;
+        for (int it = 0; it < 200 && b - a > 1e-13 * length_; ++it) {
+            const double m = 0.5 * (a + b);
+            ((below(m) > 0.0) == inAir ? b : a) = m;
+        }
+        return b;
+    }
+    return l;
+}
+
 void LineProfile::walk(double H, double v, const std::vector<double>& rests, std::vector<Piece>& pieces, double& x,
                        double& z, std::vector<double>* minima) const {
     pieces.clear();
@@ -50,6 +82,7 @@ void LineProfile::walk(double H, double v, const std::vector<double>& rests, std
     double u = 0.0;
     double hanging = v;  // the vertical tension: v + W(u) from the lower end while it rests there
     bool grounded = seabed_ && v < 0.0;
+    bool inAir = surfaceHeight_ < 0.0;  // the lower end above the water
     size_t ip = 0;
     int found = 0;         // local minima of the hanging line passed so far
     double restLeft = 0.0;  // of the resting stretch at the last minimum, across sections
@@ -63,7 +96,8 @@ void LineProfile::walk(double H, double v, const std::vector<double>& rests, std
     };
     auto apply_points = [&](double upTo) {
         while (ip < points_.size() && points_[ip].s <= upTo + snap) {
-            const double before = hanging, P = points_[ip].weight;
+            const double before = hanging;
+            const double P = inAir && std::isfinite(points_[ip].dryWeight) ? points_[ip].dryWeight : points_[ip].weight;
             ++ip;
             if (grounded && P < 0.0) {
                 // a buoy cannot rest: the line has lifted off by here (the solution lifts before it,
@@ -112,11 +146,23 @@ void LineProfile::walk(double H, double v, const std::vector<double>& rests, std
                 if (lifts) grounded = false;
                 continue;
             }
-            if (hanging < 0.0 && seg.weight > 0.0 && hanging + seg.weight * l > 0.0) {
+            const double w = inAir && std::isfinite(seg.dryWeight) ? seg.dryWeight : seg.weight;
+            const bool vertex = hanging < 0.0 && w > 0.0 && hanging + w * l > 0.0;
+            const double lv = vertex ? -hanging / w : l;
+            const Piece piece{u, lv, w, seg.EA, hanging, x, z, false};
+            const double lc = surface_crossing(piece, H, lv, inAir);
+            if (lc < lv) {
+                // the line crosses the water surface here: its weight per length changes
+                push(piece, lc);
+                u += lc;
+                hanging += w * lc;
+                inAir = !inAir;
+                continue;
+            }
+            if (vertex) {
                 // a local minimum inside this piece (the vertex, V = 0); where it rests on the
                 // seabed, it lies there for rests[found] (>= 0) of its length
-                const double lv = -hanging / seg.weight;
-                push(Piece{u, lv, seg.weight, seg.EA, hanging, x, z, false}, lv);
+                push(piece, lv);
                 u += lv;
                 hanging = 0.0;
                 if (minima) minima->push_back(z);
@@ -124,9 +170,9 @@ void LineProfile::walk(double H, double v, const std::vector<double>& rests, std
                 ++found;
                 continue;
             }
-            push(Piece{u, l, seg.weight, seg.EA, hanging, x, z, false}, l);
+            push(piece, l);
             u += l;
-            hanging += seg.weight * l;
+            hanging += w * l;
         }
         u = end;
     }
@@ -134,7 +180,7 @@ void LineProfile::walk(double H, double v, const std::vector<double>& rests, std
 
 bool LineProfile::solve(const Eigen::Vector3d& top, const Eigen::Vector3d& bottom, const std::vector<Segment>& segments,
                         const std::vector<PointLoad>& points, bool seabed, double seabedZ, double onSeabed,
-                        std::string* why) {
+                        std::string* why, double surfaceZ) {
     auto fail = [&](const char* reason) {
         if (why) *why = reason;
         return false;
@@ -154,7 +200,7 @@ bool LineProfile::solve(const Eigen::Vector3d& top, const Eigen::Vector3d& botto
     segments_.assign(segments.rbegin(), segments.rend());
     points_.clear();
     for (const PointLoad& p : points) {
-        if (p.s > 0.0 && p.s < length_) points_.push_back({length_ - p.s, p.weight});
+        if (p.s > 0.0 && p.s < length_) points_.push_back({length_ - p.s, p.weight, p.dryWeight});
         if (p.s > 0.0 && p.s < length_) weight += p.weight;
     }
     std::sort(points_.begin(), points_.end(), [](const PointLoad& a, const PointLoad& b) { return a.s < b.s; });
@@ -163,6 +209,7 @@ bool LineProfile::solve(const Eigen::Vector3d& top, const Eigen::Vector3d& botto
     seabed_ = seabed && bottom.z() - seabedZ <= onSeabed;
     seabedOn_ = seabed;
     seabedHeight_ = seabedZ - bottom.z();
+    surfaceHeight_ = surfaceZ - bottom.z();
     if (seabed_ && Z > 0.0 && length_ >= X + Z && weight > 0.0) {
         // Even inextensible it reaches down and across with length to spare: resting on a
         // frictionless seabed it has no tension and no one shape.

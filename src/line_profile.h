@@ -6,6 +6,7 @@
 // (one at the touchdown, graded where the line turns), and the check of the solver's answer.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -19,19 +20,23 @@ public:
         double length;  // unstretched [m]
         double weight;  // submerged weight per unstretched length [N/m] (negative: buoyant)
         double EA;      // [N]
+        double dryWeight = NAN;  // weight per unstretched length in air [N/m] (NaN: `weight`)
     };
     struct PointLoad {
         double s;       // unstretched arc length from the top end [m]
         double weight;  // submerged weight [N] (negative: a buoy)
+        double dryWeight = NAN;  // weight in air [N] (NaN: `weight`)
     };
 
     // Segments in order from the top end. With `seabed`, a lower end within `onSeabed` of the seabed
     // at z = seabedZ rests on it, and so does the line from there up to the touchdown. False, with the
     // reason in `why`, where no profile applies: both ends on one vertical, or a line that rests on
     // the seabed with no tension at all (longer than the way down and across), or no solution found.
+    // Above the water surface at z = surfaceZ the line and its point loads weigh their dry weight,
+    // below it their submerged weight (the surface splits a piece where the line crosses it).
     bool solve(const Eigen::Vector3d& top, const Eigen::Vector3d& bottom, const std::vector<Segment>& segments,
                const std::vector<PointLoad>& points, bool seabed, double seabedZ, double onSeabed,
-               std::string* why = nullptr);
+               std::string* why = nullptr, double surfaceZ = INFINITY);
 
     // Position and unit tangent (pointing from the top end towards the lower end) at unstretched
     // arc length s from the top end.
@@ -70,6 +75,9 @@ private:
     void walk(double H, double v, const std::vector<double>& rests, std::vector<Piece>& pieces, double& x, double& z,
               std::vector<double>* minima) const;
     static void piece_offset(const Piece& p, double H, double l, double& dx, double& dz);
+    // Length along piece p (of length l) to where it first crosses the surface, from the side
+    // `inAir` says it starts on; l where it does not.
+    double surface_crossing(const Piece& p, double H, double l, bool inAir) const;
     const Piece& piece_at(double u) const;
     // The solution's pieces, grounded length and clearance (-infinity where it is not exact).
     void settle(double H, double v, const std::vector<double>& rests, bool exact);
@@ -79,6 +87,7 @@ private:
     std::vector<Piece> pieces_;
     Eigen::Vector3d bottom_ = Eigen::Vector3d::Zero(), u_ = Eigen::Vector3d::UnitX();
     double length_ = 0.0, H_ = 0.0, grounded_ = 0.0, clearance_ = 0.0, seabedHeight_ = 0.0;
+    double surfaceHeight_ = INFINITY;  // of the water surface above the lower end [m]
     bool seabed_ = false;    // the lower end rests on the seabed
     bool seabedOn_ = false;  // there is a seabed
 };

@@ -86,13 +86,13 @@ bool MooringSystem::build(std::string& error) {
         double weight = 0.0;
         for (int j = 0; j < model.n_sections(); ++j) {
             const SectionProps& s = model.section(j);
-            segments.push_back({s.length, submerged_weight(s.fluid), s.axial.EA});
+            segments.push_back({s.length, submerged_weight(s.fluid), s.axial.EA, dry_weight(s.fluid)});
             weight += s.length * submerged_weight(s.fluid);
         }
         std::vector<LineProfile::PointLoad> points;
         for (const NodeAttachment& at : model.attachments()) {
             const double w = (at.body.mass - model.fluid().rho * at.body.volume) * model.fluid().gravity;
-            points.push_back({at.s, w});
+            points.push_back({at.s, w, at.body.mass * model.fluid().gravity});
             weight += w;
         }
         if (p.bottomEnd == UC_BOTTOM_TOWED_BODY) weight += (p.bodyMass - p.waterDensity * p.bodyVolume) * p.gravity;
@@ -435,7 +435,7 @@ bool MooringSystem::profile_end_forces(int k, const Vec3& top, const Vec3& far, 
     }
     LineProfile profile;
     if (!profile.solve(topHigher ? top : far, topHigher ? far : top, segments, points, p.enableSeabed != 0,
-                       -p.waterDepth, std::max(lines_[k]->model().line().diameter, 1e-3 * L), why))
+                       -p.waterDepth, std::max(lines_[k]->model().line().diameter, 1e-3 * L), why, 0.0))
         return false;
     onTop = topHigher ? profile.top_force() : profile.bottom_force();
     onFar = topHigher ? profile.bottom_force() : profile.top_force();

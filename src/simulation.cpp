@@ -307,17 +307,18 @@ bool CableSimulation::static_profile(const Vec3& towPoint, const Vec3& anchor, L
     std::vector<LineProfile::Segment> segments;
     for (int k = 0; k < model_.n_sections(); ++k) {
         const SectionProps& sec = model_.section(k);
-        segments.push_back({sec.length, submerged_weight(sec.fluid), sec.axial.EA});
+        segments.push_back({sec.length, submerged_weight(sec.fluid), sec.axial.EA, dry_weight(sec.fluid)});
     }
     std::vector<LineProfile::PointLoad> points;
     const double L = model_.line().length;
     for (const NodeAttachment& at : model_.attachments()) {
         const double weight = (at.body.mass - model_.fluid().rho * at.body.volume) * model_.fluid().gravity;
-        points.push_back({towOnTop ? at.s : L - at.s, weight});
+        points.push_back({towOnTop ? at.s : L - at.s, weight, at.body.mass * model_.fluid().gravity});
     }
     if (!towOnTop) std::reverse(segments.begin(), segments.end());
+    // the line weighs its dry weight above the water surface at z = 0, as the elements do
     return profile.solve(towOnTop ? towPoint : anchor, towOnTop ? anchor : towPoint, segments, points,
-                         p.enableSeabed != 0, -p.waterDepth, std::max(model_.line().diameter, 1e-3 * L), why);
+                         p.enableSeabed != 0, -p.waterDepth, std::max(model_.line().diameter, 1e-3 * L), why, 0.0);
 }
 
 // An anchored line starts from its static profile, into X; false where that does not apply. From
@@ -1072,6 +1073,10 @@ bool CableSimulation::set_integrator_tolerances(std::string& error) {
     const double rms = 1.0 / std::sqrt(2.0 * unknowns());
     std::vector<double>& atol = toleranceBuffer_;
     atol.assign(2 * unknowns(), INFINITY);
+    // relTol |y| counts |y| at least at the unknown's scale: the line's length for a node position
+    // (and the winch's length), 1 for a tangent, these over tau for their rates, which pass through 0
+    std::vector<double> magnitude(2 * unknowns(), 0.0);
+    const double lineScale = model_.line().length;
     // Each unknown gets the tolerance of the elements it belongs to (the smaller one at a node
     // between two sections).
     for (int e = 0; e < model_.n_elements(); ++e) {
@@ -1086,14 +1091,19 @@ bool CableSimulation::set_integrator_tolerances(std::string& error) {
                                       : std::min(rms * p.positionTolerance / l, strain);
             atol[2 * j] = std::min(atol[2 * j], a);
             atol[2 * j + 1] = std::min(atol[2 * j + 1], a / tau);
+            const double y = position ? lineScale : 1.0;
+            magnitude[2 * j] = std::max(magnitude[2 * j], y);
+            magnitude[2 * j + 1] = std::max(magnitude[2 * j + 1], y / tau);
             // the winch's length and rate: those of the top element's positions
             if (off_ && e == 0 && position) {
                 atol[0] = std::min(atol[0], a);
                 atol[1] = std::min(atol[1], a / tau);
+                magnitude[0] = lineScale;
+                magnitude[1] = std::max(magnitude[1], lineScale / tau);
             }
         }
     }
-    if (!integrator_->set_tolerances(atol, p.relTol, p.absTol, error)) return false;
+    if (!integrator_->set_tolerances(atol, p.relTol, p.absTol, error, &magnitude)) return false;
     if (!integrator_->set_max_order(p.solverMaxOrder, error)) return false;
     return integrator_->set_projected_tolerances(projected_blocks(), error);
 }

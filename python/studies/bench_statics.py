@@ -156,13 +156,15 @@ def draw_length(rng, span: float, height: float, taut: bool) -> float:
     return start + rng.uniform(0.0, 0.98) * (span + height - start)
 
 
-def draw_case(seed: int, case_id: int) -> Case:
+def draw_case(seed: int, case_id: int, above_water: bool = False) -> Case:
     """Line `case_id` of the benchmark with `seed`: its own generator, so it never depends on how
-    many lines are drawn."""
+    many lines are drawn. `above_water`: the fairlead 1-30 m above the surface (uniform)."""
     rng = np.random.default_rng([seed, case_id])
     family = list(FAMILIES)[rng.choice(len(FAMILIES), p=list(FAMILIES.values()))]
     depth = _loguniform(rng, 30.0, 1500.0)
     fairlead_z = -max(3.0, rng.uniform(0.02, 0.15) * depth)
+    if above_water:
+        fairlead_z = float(np.random.default_rng([seed, case_id, 1]).uniform(1.0, 30.0))
     height = depth + fairlead_z
     span = _loguniform(rng, 0.3, 5.0) * height
     length = draw_length(rng, span, height, taut=family not in ("clump", "buoy") and rng.uniform() < 1.0 / 3.0)
@@ -186,8 +188,8 @@ def draw_case(seed: int, case_id: int) -> Case:
     return Case(case_id, family, depth, fairlead_z, -span, _loguniform(rng, *STIFFNESS_RANGE), sections, attachments)
 
 
-def draw_cases(seed: int, n: int) -> list:
-    return [draw_case(seed, k) for k in range(n)]
+def draw_cases(seed: int, n: int, above_water: bool = False) -> list:
+    return [draw_case(seed, k, above_water) for k in range(n)]
 
 
 # ----------------------------------------------------------------------------- the reference
@@ -282,9 +284,26 @@ def reference_system(case: Case, tol: float = 1e-8):
     return ms
 
 
+def air_reference(case: Case) -> dict:
+    """A line whose fairlead is above the water: the shooting solution of studies.air_catenary (dry
+    weight in air, submerged in water); MoorPy blends one weight over a line that leaves the water."""
+    from .air_catenary import NoSolution, solve
+
+    sections = [(s.length, s.weight, s.massPerLength * G, s.EA) for s in case.sections[::-1]]
+    points = [(case.length - a.s, (a.mass - RHO * a.volume) * G, a.mass * G) for a in case.attachments]
+    try:
+        ref = solve(sections, points, case.depth, -case.anchor_x, case.fairlead_z)
+    except NoSolution as e:
+        raise ReferenceFailed(str(e)) from None
+    return {**ref, "resting_points": 0}
+
+
 def reference(case: Case) -> dict:
-    """MoorPy's equilibrium: fairlead and anchor tension, the line's vertical force on the anchor,
-    the grounded length and the free points resting on the seabed."""
+    """MoorPy's equilibrium (the shooting reference where the fairlead is above the water):
+    fairlead and anchor tension, the line's vertical force on the anchor, the grounded length and
+    the free points resting on the seabed."""
+    if case.fairlead_z > 0.0:
+        return air_reference(case)
     ms = reference_system(case)
     bottom, top = ms.lineList[0], ms.lineList[-1]
     grounded = sum(float(line.LBot) for line in ms.lineList)
@@ -520,7 +539,7 @@ def markdown(data: dict, command: str, fmu_label: str, cases: dict) -> str:
     a = data["all"]
     at20 = next((r for r in data["by_mesh"] if r["group"] == 20), None)
     out = [f"Measured with `{command}` (FMU: {fmu_label}): {data['lines']} lines at "
-           f"{', '.join(str(n) for n in data['meshes'])} elements, {data['runs']} runs; MoorPy failed on "
+           f"{', '.join(str(n) for n in data['meshes'])} elements, {data['runs']} runs; the reference failed on "
            f"{len(data['reference_failed'])} lines (excluded).", "",
            f"**All runs**: {a['initialized']} of {a['runs']} initialize ({100 * a['rate']:.1f} %); "
            f"{a['off']} runs are off by more than 1 % without an error."]
@@ -549,7 +568,7 @@ def markdown(data: dict, command: str, fmu_label: str, cases: dict) -> str:
         out.append(f"| {r['id']} | {r['elements']} | {r['regime']} | {100 * r['err_fairlead']:+.3g} | "
                    f"{100 * r['err_anchor']:+.3g} | {100 * r['err_axial']:+.3g} | {cases[r['id']].describe()} |")
     if data["reference_failed"]:
-        out += ["", "MoorPy failed on: " + "; ".join(f"line {i} ({m})" for i, m in data["reference_failed"]) + "."]
+        out += ["", "The reference failed on: " + "; ".join(f"line {i} ({m})" for i, m in data["reference_failed"]) + "."]
     return "\n".join(out)
 
 
@@ -568,6 +587,9 @@ def parse_args(argv):
     p.add_argument("--stiffness-pairs", action="store_true",
                    help="instead of the comparison with MoorPy: start every line on the softest and the stiffest "
                         "seabed of the draw and count where the stiff one fails and the soft one does not")
+    p.add_argument("--above-water", action="store_true",
+                   help="the same lines with the fairlead 1-30 m above the surface; the reference is the shooting "
+                        "solution of studies.air_catenary (dry weight in air)")
     p.add_argument("--only", type=int, nargs="+", default=None, metavar="ID",
                    help="run only these lines of the draw (reproduce a case; prints each run)")
     p.add_argument("--out", type=Path, default=None, help="write every run as CSV to this file")
@@ -627,7 +649,7 @@ def main(argv=None) -> int:
         print(f"no FMU at {args.fmu}: build first (scripts/build) or pass --fmu", file=sys.stderr)
         return 2
     ids = args.only if args.only is not None else range(args.n)
-    cases = {k: draw_case(args.seed, k) for k in ids}
+    cases = {k: draw_case(args.seed, k, args.above_water) for k in ids}
     bar = ProgressBar(len(cases), label="lines")
     t0 = time.perf_counter()
     if args.stiffness_pairs:
@@ -653,13 +675,15 @@ def main(argv=None) -> int:
     data = summary(records)
     command = "scripts/bench_statics " + " ".join(
         [f"--n {args.n}", "--elements " + " ".join(map(str, args.elements)), f"--seed {args.seed}"]
-        + ([f"--grading {args.grading}"] if args.grading != DEFAULT_GRADING else []))
+        + ([f"--grading {args.grading}"] if args.grading != DEFAULT_GRADING else [])
+        + (["--above-water"] if args.above_water else []))
     text = markdown(data, command, _shown(args.fmu), cases)
     print(text)
     print(f"\n({time.perf_counter() - t0:.0f} s wall)")
     if args.doc is not None:
         # one generated section per grading: the default and the others side by side
-        write_section(args.doc, text, "scripts/bench_statics" + (f" --grading {args.grading}" if args.grading != DEFAULT_GRADING else ""))
+        write_section(args.doc, text, "scripts/bench_statics" + (f" --grading {args.grading}" if args.grading != DEFAULT_GRADING else "")
+                      + (" --above-water" if args.above_water else ""))
     return 0
 
 
