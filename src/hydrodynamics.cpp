@@ -177,17 +177,13 @@ int waterline_points(const ElementTables& e, double diameter, const double* X, Q
     for (int k = 0; k < ne; ++k)
         if (extrema[k] > 0.0 && extrema[k] < 1.0) ends[nm++] = extrema[k];
     ends[nm++] = 1.0;
-    // Only an element that crosses the surface itself: one that reaches it from one side (a tow
-    // point on the surface) keeps its own load points, as a fully submerged line is validated.
-    double zmax = -INFINITY, zmin = INFINITY;
-    for (int k = 0; k < nm; ++k) {
-        zmax = std::max(zmax, z(ends[k]));
-        zmin = std::min(zmin, z(ends[k]));
-    }
-    if (!(zmax > 0.0 && zmin < 0.0)) return 0;
-    // The crossings of z = +-d/2 on each monotone piece (bisection): phi is smooth between them.
+    // The crossings of z = +d/2 on each monotone piece (bisection): above it the line is dry and phi
+    // smooth. Only this level is cut: an element that reaches it from below (a cut at its end) gets
+    // the element's own rule, so the load stays continuous as an element rises out of the water; a
+    // cut at -d/2 would be interior for an element hanging from a tow point on the surface and jump
+    // the load when the element first reaches +d/2 (the band |z| < d/2 is left to the element's rule).
     for (int k = 0; k + 1 < nm; ++k) {
-        for (double level : {-half, half}) {
+        for (double level : {half}) {
             double a = ends[k], b = ends[k + 1];
             const double fa = z(a) - level, fb = z(b) - level;
             if (!(fa < 0.0 && fb > 0.0) && !(fa > 0.0 && fb < 0.0)) continue;
@@ -198,7 +194,7 @@ int waterline_points(const ElementTables& e, double diameter, const double* X, Q
             cuts[n++] = 0.5 * (a + b);
         }
     }
-    if (n == 1) return 0;  // inside the hull's band but never crossing it: phi is smooth on the element
+    if (n == 1) return 0;  // never crossing +d/2: the element's own rule, as a submerged line
     cuts[n++] = 1.0;
     std::sort(cuts, cuts + n);
     const GaussRule rule = gauss_rule(e.nLoad);

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import re
 import sys
 import tempfile
@@ -118,16 +117,10 @@ def survey_deck(fmu, path: Path, moordyn: bool = True) -> dict:
 
 # ------------------------------------------------------------------------------------------- heave
 @dataclass
-class Heave:
-    """The fairlead at its deck position + (0, 0, A (1 - cos w t)): at rest at t = 0 (Surge's interface)."""
-    amplitude: float = 2.0
+class Heave(lfv.Surge):
+    """The fairlead at its deck position + (0, 0, A (1 - cos w t)): at rest at t = 0."""
     period: float = 10.0
-
-    def state(self, t):
-        w = 2.0 * math.pi / self.period
-        e = np.array([0.0, 0.0, 1.0])
-        return (self.amplitude * (1.0 - math.cos(w * t)) * e, self.amplitude * w * math.sin(w * t) * e,
-                self.amplitude * w * w * math.cos(w * t) * e)
+    axis: tuple = (0.0, 0.0, 1.0)
 
 
 def heave(fmu, name: str, motion: Heave, t_end: float = 40.0, t_from: float = 10.0) -> dict:

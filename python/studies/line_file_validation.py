@@ -211,13 +211,14 @@ def moordyn_statics(deck: Deck) -> dict:
 # ----------------------------------------------------------------------------- dynamics
 @dataclass
 class Surge:
-    """Fairlead at deck.fairlead + (A (1 - cos w t), 0, 0): at rest at t = 0."""
+    """Fairlead at deck.fairlead + A (1 - cos w t) along `axis` (x: surge): at rest at t = 0."""
     amplitude: float = 2.0
     period: float = 15.0
+    axis: tuple = (1.0, 0.0, 0.0)
 
     def state(self, t):
         w = 2.0 * math.pi / self.period
-        e = np.array([1.0, 0.0, 0.0])
+        e = np.array(self.axis)
         return (self.amplitude * (1.0 - math.cos(w * t)) * e, self.amplitude * w * math.sin(w * t) * e,
                 self.amplitude * w * w * math.cos(w * t) * e)
 

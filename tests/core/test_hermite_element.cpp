@@ -333,7 +333,31 @@ TEST(HydroTerm, AnElementAcrossTheWaterlineWeighsItsPartInAirDry) {
     Vec12 R = Vec12::Zero();
     add_hydro_force(e, p, current, X.data(), zero.data(), zero.data(), R.data());
     const double dry = m * p.gravity, wet = (m - p.rho * p.area) * p.gravity;
-    EXPECT_NEAR(R[2] + R[8], 2.0 * dry + 8.0 * wet, 1e-9 * (2.0 * dry + 8.0 * wet));
+    // The band |z| < d/2, where the submerged fraction ramps, is left to the element's rule on its
+    // piece: at most the band's length d weighed wrongly (dry against wet).
+    EXPECT_NEAR(R[2] + R[8], 2.0 * dry + 8.0 * wet, (dry - wet) * d);
+}
+
+// The load is continuous in the nodes as an element hanging from a tow point rises out of the water:
+// its top node on the surface (z = 0) and at the band's top (z = d/2), approached from either side.
+TEST(HydroTerm, TheLoadOfAnElementRisingOutOfTheWaterIsContinuous) {
+    const double l = 10.0, d = 0.1, m = 20.0;
+    FluidProps p{1025.0, 9.81, m, 3.14159265358979 * d * d / 4, d, 1.2, 0.0, 1.0, 0.0, true};
+    const ElementTables e = make_element_tables(l, 3, 3);
+    const Vec12 zero = Vec12::Zero();
+    CurrentField current;
+    auto vertical_load = [&](double zTop) {
+        Vec12 X = Vec12::Zero();
+        X.segment<3>(0) = Vec3(0.0, 0.0, zTop);
+        X.segment<3>(3) = Vec3(0.0, 0.0, -1.0);
+        X.segment<3>(6) = Vec3(0.0, 0.0, zTop - l);
+        X.segment<3>(9) = Vec3(0.0, 0.0, -1.0);
+        Vec12 R = Vec12::Zero();
+        add_hydro_force(e, p, current, X.data(), zero.data(), zero.data(), R.data());
+        return R[2] + R[8];
+    };
+    const double eps = 1e-9, slope = m * p.gravity;  // the load changes by at most dry weight x dz
+    for (double z : {0.0, 0.5 * d}) EXPECT_NEAR(vertical_load(z + eps), vertical_load(z - eps), 10.0 * slope * eps) << z;
 }
 
 TEST(HydroTerm, JacobianAcrossTheSurfaceMatchesFiniteDifferences) {

@@ -31,6 +31,15 @@ def fmu_file() -> Path:
 
 
 @pytest.fixture(scope="session")
+def fmi3_file(fmu_file) -> Path:
+    """The FMI 3.0 variant built beside the FMU (scripts/build)."""
+    path = fmu_file.parent / "fmi3" / "UnderwaterCable.fmu"
+    if not path.is_file():
+        pytest.fail(f"no FMI 3.0 FMU at {path}: build first: scripts/build", pytrace=False)
+    return path
+
+
+@pytest.fixture(scope="session")
 def venv_python() -> str:
     """The interpreter running the tests (the .venv one when run through scripts/test)."""
     return sys.executable

@@ -25,14 +25,6 @@ SCALARS = ["towTension", "towForce.x", "towForce.z", "endPosition.x", "endPositi
 ARRAYS = ["shape.x", "shape.z", "tension"]
 
 
-@pytest.fixture(scope="module")
-def fmi3_file(fmu_file):
-    path = fmu_file.parent / "fmi3" / "UnderwaterCable.fmu"
-    if not path.is_file():
-        pytest.fail(f"no FMI 3.0 FMU at {path}: build first: scripts/build", pytrace=False)
-    return path
-
-
 class Cable:
     """One instance of either FMU, addressed by the FMI 2.0 names (arrays as name[k] in FMI 2.0)."""
 

@@ -152,14 +152,6 @@ def test_fmi2_refused_setter_changes_nothing(fmu_file, case, mode, call):
     assert run_case(fmu_file, False, mode, call) == [], case
 
 
-@pytest.fixture(scope="module")
-def fmi3_file(fmu_file):
-    path = fmu_file.parent / "fmi3" / "UnderwaterCable.fmu"
-    if not path.is_file():
-        pytest.fail(f"no FMI 3.0 FMU at {path}: build first: scripts/build", pytrace=False)
-    return path
-
-
 @pytest.mark.parametrize("case,mode,call", FMI3_CASES, ids=[c[0] for c in FMI3_CASES])
 def test_fmi3_refused_setter_changes_nothing(fmi3_file, case, mode, call):
     assert run_case(fmi3_file, True, mode, call) == [], case
