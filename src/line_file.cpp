@@ -1518,15 +1518,18 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
                                               p.body <= static_cast<int>(bodies.size()) &&
                                               bodies[p.body - 1].kind == BodyKind::Fixed);
     };
+    // a point held by the importer: a Vessel/Coupled point or a point on a Coupled body
+    auto coupled = [&](int q) {
+        const PointKind kind = deck.points[q].kind;
+        return kind == PointKind::Vessel || (kind == PointKind::Body && !on_free_body(q) && !fixed_end(q));
+    };
     for (int pass = 0; pass < 3; ++pass)
     for (size_t first = 0; first < deck.lines.size(); ++first) {
         if (used[first]) continue;
         const Line& l0 = deck.lines[first];
         int start = -1;
         for (int e : {1, 0}) {  // AttachB first: MoorDyn's usual fairlead
-            const PointKind kind = deck.points[l0.end[e]].kind;
-            if (start < 0 && (pass == 0 ? (kind == PointKind::Vessel || (kind == PointKind::Body && !on_free_body(l0.end[e]) &&
-                                                                         !fixed_end(l0.end[e])))
+            if (start < 0 && (pass == 0 ? coupled(l0.end[e])
                               : pass == 1 ? (nodeOf[l0.end[e]] >= 0 || on_free_body(l0.end[e]))
                                           : fixed_end(l0.end[e])))
                 start = l0.end[e];
@@ -1550,11 +1553,8 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
             line.deckLines.push_back(index);
             const int from = point;
             point = l.end[l.end[1] == point ? 0 : 1];
-            // the deck line's own fairlead: its end on a coupled object (AttachB where both are), else
-            // the end nearer our fairlead
-            auto coupled = [&](int q) {
-                return deck.points[q].kind == PointKind::Vessel || deck.points[q].kind == PointKind::Body;
-            };
+            // the deck line's own fairlead: its end on a coupled object (AttachB where both are; a point on
+            // a Free or Fixed body is none), else the end nearer our fairlead
             const int fairlead = coupled(l.end[1]) ? l.end[1] : coupled(l.end[0]) ? l.end[0] : from;
             line.flipped.push_back(fairlead == point);
             const Point& p = deck.points[point];

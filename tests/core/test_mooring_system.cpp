@@ -171,6 +171,71 @@ TEST(MooringDeck, AFreePointWhereThreeLinesMeetIsANodeWhereTheyEnd) {
     EXPECT_EQ(atNode, 3);
 }
 
+// A platform (Coupled body 1) with two chains given platform end first (AttachA): line 1 to a point on a
+// Fixed body 2 (an anchor the body places, 380 m out and 166 m below the fairlead, 20 m above the seabed),
+// line 2 to a point on a Free body 3 (a buoy) when `buoy`. Their fairlead is the platform's end.
+std::string platform_end_first_deck(bool buoy) {
+    std::string text = R"(--- MoorDyn Input File ---
+chains given platform end first
+----------------------- LINE TYPES ------------------------------------------
+Name Diam MassDen EA BA/-zeta EI Cd Ca CdAx CaAx
+(-) (m) (kg/m) (N) (N-s/-) (-) (-) (-) (-) (-)
+main 0.0766 113.35 7.536E8 -1.0 0 2.0 0.8 0.4 0.25
+---------------------- BODIES --------------------------------
+ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*
+(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)
+1 Coupled 0 0 0 0 0 0 0 0 0 0 0 0
+2 Fixed 400 0 -180 0 0 0 0 0 0 0 0 0
+)";
+    if (buoy) text += "3 Free 0 150 -80 0 0 0 10000 0 20000 60 6 1\n";
+    text += R"(---------------------- POINTS --------------------------------
+ID Attachment X Y Z M V CdA CA
+(-) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
+1 Body1 20 0 -14 0 0 0 0
+2 Body2 0 0 0 0 0 0 0
+)";
+    if (buoy) text += "3 Body1 0 20 -14 0 0 0 0\n4 Body3 0 0 1.5 0 0 0 0\n";
+    text += "---------------------- LINES --------------------------------------\n"
+            "ID LineType AttachA AttachB UnstrLen NumSegs Outputs\n(-) (-) (-) (-) (m) (-) (-)\n"
+            "1 main 1 2 420.0 20 -\n";
+    if (buoy) text += "2 main 3 4 140.0 20 -\n";
+    return text + "---------------------- OPTIONS ---------------------------------------\n200 WtrDpth\n"
+                  "------------------------- need this line --------------------------------------\n";
+}
+
+TEST(MooringDeck, ALinesFairleadIsItsEndOnTheCoupledBodyNotOnAFixedOrFreeBody) {
+    uc::MooringDeck deck;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(platform_end_first_deck(true), 0, deck, error)) << error;
+    ASSERT_EQ(deck.lines.size(), 2u);
+    for (const uc::MooringDeckLine& l : deck.lines) {
+        EXPECT_EQ(l.fairlead.kind, uc::MooringEnd::Kind::Body) << "line " << l.id;
+        EXPECT_EQ(l.fairlead.body, 1) << "line " << l.id;
+        // the walk starts at the platform, as does the deck line: not turned round
+        EXPECT_EQ(l.flipped, (std::vector<bool>{false})) << "line " << l.id;
+    }
+}
+
+TEST(MooringSystem, AChainToAFixedBodysPointIsTautestAtThePlatform) {
+    // Hanging clear of the seabed, the chain's tension grows upwards by its weight in water per metre times
+    // the height: dT/dz = w / (1 + T/EA), w = (113.35 kg/m - rho pi d^2/4) g. The fairlead, 166 m above
+    // the anchor, is the tauter end; the chain's strain T/EA (under 0.2 %) bounds the difference from w 166 m.
+    constexpr double kPi = 3.14159265358979323846;
+    const double w = (113.35 - 1025.0 * kPi / 4.0 * 0.0766 * 0.0766) * 9.80665, rise = w * 166.0;
+    uc::MooringDeck deck;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(platform_end_first_deck(false), 0, deck, error)) << error;
+    uc::MooringSystem system(system_parameters(), deck);
+    ASSERT_TRUE(system.build(error)) << error;
+    UCInputs in;
+    uc_inputs_default(&in);
+    ASSERT_TRUE(system.initialize(0.0, in, error)) << error;
+    const UCMooringLine& line = system.outputs().mooringLine[0];
+    EXPECT_LT(line.fairleadTension / 7.536e8, 2e-3);
+    EXPECT_NEAR(line.fairleadTension - line.anchorTension, rise, 5e-3 * rise)
+        << "fairlead " << line.fairleadTension << " N, anchor " << line.anchorTension << " N";
+}
+
 // A deck's title and its LINE TYPES table of one type, `leg`, of diameter d and axial stiffness EA,
 // weightless in water (its mass that of the water it displaces, 1025 kg/m3).
 std::string weightless_leg_deck(const char* title, double d, double EA) {

@@ -111,3 +111,19 @@ def test_a_line_too_short_for_its_anchor_is_refused_naming_its_length(make_cable
     errors = _refusal(make_cable, {"lineFile": str(deck)}, {"tow.z": -70.0})
     assert "the line is too short for where its ends are: 500 m unstretched (the deck's UnstrLen)" in errors, errors
     assert "anchor.x" not in errors, errors
+
+
+def test_a_pennant_given_platform_end_first_names_its_ends_as_moorpy_does(fmu_file):
+    """platform_buoy_leg.dat's pennant runs from the platform's fairlead (AttachA) to a point on the Free
+    buoy body (AttachB): its fairleadTension is the platform's end, anchorTension the buoy's, each within
+    the 0.5 % asked of a deck of MoorPy's tension at that end (the two ends differ by the chain's weight in
+    water over the height between them, 22 % of the fairlead's tension: swapped, one was 28 % off)."""
+    pytest.importorskip("moorpy")
+    path = fc.OWN / "platform_buoy_leg.dat"
+    r = pd.compare(fmu_file, path, given=fc.as_user(path))
+    assert r["status"] == "ok", r.get("reason")
+    for k, (fr, f, ar, a) in enumerate(r["lines"], start=1):
+        assert f == pytest.approx(fr, rel=5e-3), f"line {k}: fairleadTension {f} N, MoorPy's {fr} N"
+        assert a == pytest.approx(ar, rel=5e-3), f"line {k}: anchorTension {a} N, MoorPy's {ar} N"
+    fr, f, ar, a = r["lines"][0]
+    assert f > a  # the platform's end of the hanging pennant is its tauter end
