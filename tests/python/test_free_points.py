@@ -342,3 +342,38 @@ def test_an_implausible_free_body_is_refused_at_the_start_naming_the_row_and_the
         c.initialize()
     refusal = [m for _, _, m in c.messages if named in m]
     assert refusal and "line 12: " in refusal[0] and str(path) in refusal[0], c.log_text()
+
+
+@pytest.mark.parametrize("running", ["system", "line"])
+def test_a_refused_state_of_an_edited_deck_leaves_the_running_instance_as_it_was(make_cable, tmp_path, running):
+    """A refused fmi2SetFMUstate changes nothing: a running instance (the buoy system of the edited deck, or a
+    single line, whose core is not the state's) given the state of the deck before its edit refuses it and
+    steps on bit for bit as an instance that never saw the call (the refusal dropped the instance's core and
+    put the state's parameters in place of its own)."""
+    path = _released_body(tmp_path)
+    params = {**ms.fmu_parameters(ms.read_system_deck(path)), "lineFile": str(path)}
+    saver = make_cable(parameters=params)
+    saver.initialize()
+    for k in range(3):
+        saver.do_step(0.2, t=0.2 * k)
+    data = saver.serialize_state(saver.get_state())
+    path.write_text(path.read_text().replace("3000   0|0|-1.0", "6000   0|0|-1.0", 1))
+    own = params if running == "system" else {"nElements": 12}
+    names = ([f"line[{k}].fairleadTension" for k in (1, 2, 3)] + [f"body[1].pose.{a}" for a in ("x", "z", "pitch")]
+             if running == "system" else ["towForce.x", "towForce.z", "endPosition.z"])
+    outputs = []
+    for refused in (True, False):
+        c = make_cable(parameters=own)
+        c.initialize()
+        c.do_step(0.2, t=0.0)
+        if refused:
+            state = c.deserialize_state(data)
+            with pytest.raises(FMICallException):
+                c.set_state(state)
+            c.free_state(state)
+            assert "the deck is not the one the state was saved with" in c.log_text()
+        for k in range(1, 3):
+            c.do_step(0.2, t=0.2 * k)
+            outputs.append(c.get_reals(names))
+    assert np.isfinite(outputs[0]).all()
+    assert np.array(outputs[:2]).tobytes() == np.array(outputs[2:]).tobytes()
