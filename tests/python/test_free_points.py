@@ -280,6 +280,18 @@ def test_a_saved_state_of_the_buoy_continues_bit_for_bit(make_cable, tmp_path, b
     assert run(fresh, 5, 5).tobytes() == first.tobytes()
 
 
+def _buoy_state_at(make_cable, tmp_path, t_end, h=0.2):
+    """The released buoy body's deck (a copy in tmp_path), its FMU parameters and its serialized state after
+    steps of h to t_end."""
+    path = _released_body(tmp_path)
+    params = {**ms.fmu_parameters(ms.read_system_deck(path)), "lineFile": str(path)}
+    c = make_cable(parameters=params)
+    c.initialize()
+    for k in range(int(round(t_end / h))):
+        c.do_step(h, t=h * k)
+    return path, params, c.serialize_state(c.get_state())
+
+
 @pytest.mark.parametrize("edit", ["leg", "mass", "EA"])
 def test_a_state_restored_after_its_deck_was_edited_is_refused_naming_the_file_and_the_value(
         make_cable, tmp_path, edit):
@@ -287,13 +299,7 @@ def test_a_state_restored_after_its_deck_was_edited_is_refused_naming_the_file_a
     fmi2DeSerializeFMUstate, in a new instance) after the deck file was edited (a leg 10 m longer, the free
     body's mass doubled, EA halved) it is refused, naming the file and what differs, not stepped with the
     new deck's lines (which moved the body's moment by tens of MN m at the first step)."""
-    path = _released_body(tmp_path)
-    params = {**ms.fmu_parameters(ms.read_system_deck(path)), "lineFile": str(path)}
-    c = make_cable(parameters=params)
-    c.initialize()
-    for k in range(3):
-        c.do_step(0.2, t=0.2 * k)
-    data = c.serialize_state(c.get_state())
+    path, params, data = _buoy_state_at(make_cable, tmp_path, 0.6)
     text = path.read_text()
     edits = {"leg": ("1         leg         1         4        128.5", "1         leg         1         4        138.5",
                      "length = 138.5 now, 128.5 in the state"),
@@ -350,13 +356,7 @@ def test_a_refused_state_of_an_edited_deck_leaves_the_running_instance_as_it_was
     single line, whose core is not the state's) given the state of the deck before its edit refuses it and
     steps on bit for bit as an instance that never saw the call (the refusal dropped the instance's core and
     put the state's parameters in place of its own)."""
-    path = _released_body(tmp_path)
-    params = {**ms.fmu_parameters(ms.read_system_deck(path)), "lineFile": str(path)}
-    saver = make_cable(parameters=params)
-    saver.initialize()
-    for k in range(3):
-        saver.do_step(0.2, t=0.2 * k)
-    data = saver.serialize_state(saver.get_state())
+    path, params, data = _buoy_state_at(make_cable, tmp_path, 0.6)
     path.write_text(path.read_text().replace("3000   0|0|-1.0", "6000   0|0|-1.0", 1))
     own = params if running == "system" else {"nElements": 12}
     names = ([f"line[{k}].fairleadTension" for k in (1, 2, 3)] + [f"body[1].pose.{a}" for a in ("x", "z", "pitch")]
