@@ -46,6 +46,19 @@
         return uc_instance_finish(inst, status);                                                             \
     } while (0)
 
+/* As GUARDED, for a call whose refusal (fmi2Error from `body`) changes nothing in the instance: a state to
+ * restore that is refused (corrupted or truncated bytes, another version, an edited deck) leaves the
+ * instance, its machine state included, as it was, so it goes on as if the call had not been made. An
+ * illegal call sequence still puts it into the error state; `body` sets that state itself where its failure
+ * did change the instance. */
+#define REFUSABLE(c, mask, function, body)                                                                  \
+    do {                                                                                                     \
+        UCInstance* inst = (UCInstance*)(c);                                                                 \
+        fmi2Status status = uc_instance_check(inst, (mask), (function));                                     \
+        if (status != fmi2OK) return uc_instance_finish(inst, status);                                       \
+        return (body);                                                                                       \
+    } while (0)
+
 /* ---- common functions ------------------------------------------------------------------------------- */
 
 const char* fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
@@ -212,7 +225,7 @@ fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
 }
 
 fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
-    GUARDED(c, MASK_FMU_STATE, "fmi2SetFMUstate", uc_state_set(inst, FMUstate));
+    REFUSABLE(c, MASK_FMU_STATE, "fmi2SetFMUstate", uc_state_set(inst, FMUstate));
 }
 
 fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
@@ -230,8 +243,8 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byt
 
 fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size,
                                    fmi2FMUstate* FMUstate) {
-    GUARDED(c, MASK_FMU_STATE, "fmi2DeSerializeFMUstate",
-            uc_state_deserialize(inst, serializedState, size, FMUstate));
+    REFUSABLE(c, MASK_FMU_STATE, "fmi2DeSerializeFMUstate",
+              uc_state_deserialize(inst, serializedState, size, FMUstate));
 }
 
 /* ---- derivatives ---------------------------------------------------------------------------------- */

@@ -93,7 +93,7 @@ static void free_companions(Companions* c) {
 }
 
 /* The candidate paths of lineFile (file_lookup.h); the resources directory from fmuResourceLocation. */
-static int candidate_paths(const UCInstance* inst, char* candidates[2]) {
+static int candidate_paths(const UCInstance* inst, const char* lineFile, char* candidates[2]) {
     char* dir = NULL;
     if (inst->resourceLocation != NULL) {
         const size_t size = strlen(inst->resourceLocation) + 1;
@@ -103,7 +103,7 @@ static int candidate_paths(const UCInstance* inst, char* candidates[2]) {
             dir = NULL;
         }
     }
-    const int n = uc_file_candidates(inst->params.lineFile, dir, candidates);
+    const int n = uc_file_candidates(lineFile, dir, candidates);
     free(dir);
     return n;
 }
@@ -183,8 +183,10 @@ static fmi2Status create_system(UCInstance* inst, const UCParams* p, const char*
 /* Reads lineFile and hands its text to apply (p) or create (cable). */
 static fmi2Status with_text(UCInstance* inst, UCParams* p, const UCParams* params, UCCable** cable,
                             const char* function) {
+    /* the file the parameters in use name: a restore builds from its state's before it takes them */
+    const char* lineFile = params != NULL ? params->lineFile : p->lineFile;
     char* candidates[2] = {NULL, NULL};
-    const int n = candidate_paths(inst, candidates);
+    const int n = candidate_paths(inst, lineFile, candidates);
     char tried[1024] = "";
     fmi2Status status = fmi2Error;
     int done = 0;
@@ -203,8 +205,8 @@ static fmi2Status with_text(UCInstance* inst, UCParams* p, const UCParams* param
     }
     if (!done) {
         uc_log_status(&inst->log, fmi2Error, "%s: lineFile = '%s' cannot be read: tried %s%s", function,
-                      inst->params.lineFile, n > 0 ? tried : "nothing (out of memory)",
-                      !uc_file_is_absolute(inst->params.lineFile) && inst->resourceLocation == NULL
+                      lineFile, n > 0 ? tried : "nothing (out of memory)",
+                      !uc_file_is_absolute(lineFile) && inst->resourceLocation == NULL
                           ? "; no resources directory was given to fmi2Instantiate"
                           : "");
     }

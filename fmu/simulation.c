@@ -43,7 +43,7 @@ static fmi2Status initialize_core(UCInstance* inst, const char* function, fmi2St
                                       fmi2Error);
     }
     if (inst->coreParams.mooringSystem) {
-        if (uc_sim_create_core(inst, &inst->coreParams, function) != fmi2OK) {
+        if (uc_sim_create_core(inst, &inst->coreParams, &inst->cable, function) != fmi2OK) {
             uc_instance_drop_core(inst);
             return fmi2Error;
         }
@@ -100,11 +100,11 @@ fmi2Status uc_sim_initial_outputs(UCInstance* inst, const char* function) {
     return fmi2Warning;
 }
 
-fmi2Status uc_sim_create_core(UCInstance* inst, const UCParams* p, const char* function) {
+fmi2Status uc_sim_create_core(UCInstance* inst, const UCParams* p, UCCable** cable, const char* function) {
     inst->msg[0] = '\0';
-    if (p->mooringSystem) return uc_line_file_create_system(inst, p, &inst->cable, function);
-    inst->cable = uc_create(p, inst->msg, sizeof inst->msg);
-    if (inst->cable != NULL) return fmi2OK;
+    if (p->mooringSystem) return uc_line_file_create_system(inst, p, cable, function);
+    *cable = uc_create(p, inst->msg, sizeof inst->msg);
+    if (*cable != NULL) return fmi2OK;
     uc_log_status(&inst->log, fmi2Error, "%s: cannot create the cable model: %s", function, inst->msg);
     return fmi2Error;
 }

@@ -24,9 +24,10 @@ fmi2Status uc_sim_ensure_initialized(UCInstance* inst, const char* function);
  * is an error). */
 fmi2Status uc_sim_initial_outputs(UCInstance* inst, const char* function);
 
-/* Creates inst->cable for the parameters p: one line (uc_create), or the mooring system of lineFile
- * (p->mooringSystem). Errors are logged naming `function`. */
-fmi2Status uc_sim_create_core(UCInstance* inst, const UCParams* p, const char* function);
+/* Creates *cable for the parameters p: one line (uc_create), or the mooring system of p->lineFile
+ * (p->mooringSystem); the instance itself is not changed (inst->cable neither: a restore builds into a
+ * temporary). Errors are logged naming `function`. */
+fmi2Status uc_sim_create_core(UCInstance* inst, const UCParams* p, UCCable** cable, const char* function);
 
 /* fmi2DoStep after the state check: time checks, uc_do_step from the FMU's own time, outputs. */
 fmi2Status uc_sim_do_step(UCInstance* inst, double currentCommunicationPoint, double communicationStepSize);

@@ -99,31 +99,46 @@ fmi2Status uc_state_get(UCInstance* inst, fmi2FMUstate* state) {
     return fmi2OK;
 }
 
-static fmi2Status restore_core(UCInstance* inst, const UCSavedState* s) {
-    if (inst->cable == NULL || memcmp(&inst->coreParams, &s->coreParams, sizeof s->coreParams) != 0) {
-        uc_instance_drop_core(inst);
-        /* a mooring system is made from its deck again: the saved parameters name it (lineFile) */
-        if (s->coreParams.mooringSystem) memcpy(&inst->params, &s->params, sizeof s->params);
-        if (uc_sim_create_core(inst, &s->coreParams, "fmi2SetFMUstate") != fmi2OK) return fmi2Error;
-    }
-    if (uc_state_restore(inst->cable, s->core, s->coreSize, inst->msg, sizeof inst->msg) != 0) {
+/* The core of the state into *core: the instance's own core restored in place when it was made with the same
+ * parameters (the cheap path of a master that rolls back every step), otherwise a new core (for a mooring
+ * system from the deck the state's lineFile names) that only replaces the instance's once the state is in it.
+ * A refusal leaves the instance's core as it was: the core checks a state (size, version, a system's deck
+ * values) before it changes anything. Only a state that passes those checks and then fails inside the core
+ * in place (corrupted integrator history) leaves it unusable: it is dropped and the instance goes to the
+ * error state. *core is set only on success. */
+static fmi2Status restore_core(UCInstance* inst, const UCSavedState* s, UCCable** core) {
+    const int inPlace = inst->cable != NULL && memcmp(&inst->coreParams, &s->coreParams, sizeof s->coreParams) == 0;
+    UCCable* target = inst->cable;
+    if (!inPlace && uc_sim_create_core(inst, &s->coreParams, &target, "fmi2SetFMUstate") != fmi2OK) return fmi2Error;
+    const int rc = uc_state_restore(target, s->core, s->coreSize, inst->msg, sizeof inst->msg);
+    if (rc != 0) {
         if (s->coreParams.mooringSystem) { /* the system was made from lineFile: name it */
             uc_log_status(&inst->log, fmi2Error, "fmi2SetFMUstate: lineFile %s: cannot restore the mooring system's "
                           "state: %s", s->coreParams.lineFile, inst->msg);
         } else {
             uc_log_status(&inst->log, fmi2Error, "fmi2SetFMUstate: cannot restore the cable state: %s", inst->msg);
         }
-        uc_instance_drop_core(inst);
+        if (!inPlace) {
+            uc_free(target);
+        } else if (rc == 2) { /* partly restored: neither the instance's nor the state's */
+            uc_instance_drop_core(inst);
+            inst->state = UC_STATE_ERROR;
+        }
         return fmi2Error;
     }
+    *core = target;
     return fmi2OK;
 }
 
 fmi2Status uc_state_set(UCInstance* inst, fmi2FMUstate state) {
     const UCSavedState* s = as_saved_state(inst, state, "fmi2SetFMUstate");
     if (s == NULL) return fmi2Error;
-    if (s->coreSize > 0 && restore_core(inst, s) != fmi2OK) return fmi2Error;
-    if (s->coreSize == 0) uc_instance_drop_core(inst);
+    UCCable* core = NULL;
+    if (s->coreSize > 0 && restore_core(inst, s, &core) != fmi2OK) return fmi2Error; /* the instance unchanged */
+    if (core != inst->cable) { /* commit: the state's core replaces the instance's (none without one) */
+        uc_instance_drop_core(inst);
+        inst->cable = core;
+    }
     inst->state = (UCMachineState)s->machineState;
 #define UC_RESTORE_FIELD(field, kind) inst->field = s->field;
     UC_ADAPTER_SCALARS(UC_RESTORE_FIELD)

@@ -174,13 +174,16 @@ extern "C" int uc_state_save(UCCable* c, void* buffer, size_t size) {
 }
 
 extern "C" int uc_state_restore(UCCable* c, const void* buffer, size_t size, char* msg, size_t msgSize) {
-    return guarded(msg, msgSize, [&](std::string& error) {
+    bool changed = false;
+    const int rc = guarded(msg, msgSize, [&](std::string& error) {
         if (!c || !buffer) {
             error = "uc_state_restore: NULL pointer";
             return false;
         }
-        return c->system ? c->system->restore_state(buffer, size, error) : c->line->restore_state(buffer, size, error);
+        return c->system ? c->system->restore_state(buffer, size, error, &changed)
+                         : c->line->restore_state(buffer, size, error, &changed);
     });
+    return rc != 0 && changed ? 2 : rc;
 }
 
 namespace {

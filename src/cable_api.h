@@ -198,6 +198,8 @@ int uc_take_event(UCCable* c, char* text, size_t size);
 
 size_t uc_state_size(const UCCable* c);
 int uc_state_save(UCCable* c, void* buffer, size_t size);
+/* 0: restored; 1: refused (msg) before anything changed (a state of another size, version or deck);
+ * 2: failed (msg) after the core had started taking the state: the core is no longer usable. */
 int uc_state_restore(UCCable* c, const void* buffer, size_t size, char* msg, size_t msgSize);
 
 #ifdef __cplusplus

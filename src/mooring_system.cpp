@@ -1090,8 +1090,9 @@ bool MooringSystem::same_description(const unsigned char* saved, std::string& er
     return false;
 }
 
-bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& error) {
-    ++stamp_;
+bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& error, bool* changed) {
+    if (changed) *changed = false;
+    ++stamp_;  // (only what the cached derivatives were computed for: computed again)
     SystemHeader header;
     if (size < sizeof header) {
         error = "saved state is too short for this mooring system";
@@ -1143,7 +1144,9 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     if (!nodeState.empty()) std::memcpy(nodeState.data(), in, nodeState.size() * sizeof(double));
     in += nodeState.size() * sizeof(double);
     for (size_t k = 0; k < lines_.size(); ++k) {
-        if (!lines_[k]->restore_state(in, header.lineSize[k], error)) {
+        bool lineChanged = false;
+        if (!lines_[k]->restore_state(in, header.lineSize[k], error, &lineChanged)) {
+            if (changed) *changed = k > 0 || lineChanged;
             error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
             return false;
         }

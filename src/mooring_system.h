@@ -48,8 +48,10 @@ public:
     size_t state_size() const;
     void save_state(void* buffer);
     // Refuses (false, error naming the first value that differs) a state saved by a system built from
-    // another deck: a state carries every value the system was built from (its description).
-    bool restore_state(const void* buffer, size_t size, std::string& error);
+    // another deck: a state carries every value the system was built from (its description). A refusal
+    // of a state's size, version or deck values comes before anything changes; *changed (if given) tells
+    // whether a later failure (a line's integrator history) left the system partly restored.
+    bool restore_state(const void* buffer, size_t size, std::string& error, bool* changed = nullptr);
 
     // Every number the system was built from, named: each line's parameters (the deck's line with the
     // instance's parameters), its ends, the free nodes' mass, volume, drag, added mass, inertia and pose,

@@ -1696,7 +1696,10 @@ void CableSimulation::save_state(void* buffer) {
     std::memcpy(out, historyBuffer_.data(), historyBuffer_.size() * sizeof(double));
 }
 
-bool CableSimulation::restore_state(const void* buffer, size_t size, std::string& error) {
+bool CableSimulation::restore_state(const void* buffer, size_t size, std::string& error, bool* changed) {
+    bool ignored = false;
+    bool& touched = changed ? *changed : ignored;
+    touched = false;
     ++stateStamp_;  // the cached interface derivatives are stale from here on
     if (model_.winch() && size >= sizeof(StateHeader)) {
         // A state of a winch's line may have another mesh than the present one: take its mesh first.
@@ -1705,8 +1708,10 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
         const WinchMesh mesh = model_.winch_mesh();
         if (header.magic == kStateMagic && header.version == kStateVersion && header.winchElements > 0 &&
             header.winchElements <= 100000 && std::isfinite(header.winchMeshTop) && header.winchMeshTop > 0.0 &&
-            (header.winchElements != mesh.elements || header.winchMeshTop != mesh.topLength))
+            (header.winchElements != mesh.elements || header.winchMeshTop != mesh.topLength)) {
+            touched = true;
             rebuild(WinchMesh{header.winchElements, header.winchMeshTop});
+        }
     }
     if (size >= sizeof(StateHeader)) {
         // A graded mesh is graded again for the tow point it was made for.
@@ -1717,8 +1722,10 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
         if (header.magic == kStateMagic && header.version == kStateVersion && tow.allFinite() && far.allFinite() &&
             header.meshGrading >= 0 && header.meshGrading < kGradingCount &&
             (header.meshGraded != (graded_ ? 1 : 0) || tow != meshTow_ || far != meshFar_ ||
-             header.meshGrading != grading_))
+             header.meshGrading != grading_)) {
+            touched = true;
             grade_mesh(tow, far, header.meshGraded == 1, header.meshGrading);
+        }
     }
     if (size != state_size()) {
         error = "saved state has the wrong size for this cable (different nElements or end conditions)";
@@ -1732,6 +1739,7 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
         error = "saved state does not belong to this cable model (magic, version or sizes differ)";
         return false;
     }
+    touched = true;
     in += sizeof header;
     std::memcpy(&outputs_, in, sizeof outputs_);
     in += sizeof outputs_;

@@ -66,7 +66,9 @@ public:
 
     size_t state_size() const;
     void save_state(void* buffer);
-    bool restore_state(const void* buffer, size_t size, std::string& error);
+    // false (error) for a state of another size or version before anything changes; *changed (if given)
+    // tells whether the failure came after the line had started taking the state (its mesh, its history).
+    bool restore_state(const void* buffer, size_t size, std::string& error, bool* changed = nullptr);
 
     // The interface derivatives over the next communication step (docs/cosimulation.md,
     // "Interface derivatives"): out[i] = sum_j d output_i (t + h) / d input_j (t) seed[j], outputs

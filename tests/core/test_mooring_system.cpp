@@ -649,7 +649,9 @@ TEST(MooringSystem, AStateIsRefusedByASystemOfAnEditedDeckNamingWhatDiffers) {
     for (const auto& e : edits) {
         auto edited_system = built(edited(kPlatform, e.from, e.to));
         ASSERT_EQ(edited_system->state_size(), state.size()) << e.to;  // the same shape: only the values tell
-        EXPECT_FALSE(edited_system->restore_state(state.data(), state.size(), error)) << e.to;
+        bool changed = true;
+        EXPECT_FALSE(edited_system->restore_state(state.data(), state.size(), error, &changed)) << e.to;
+        EXPECT_FALSE(changed) << e.to << ": a refusal comes before anything changes";
         EXPECT_NE(error.find("the deck is not the one the state was saved with: "), std::string::npos) << error;
         EXPECT_NE(error.find(e.named), std::string::npos) << e.to << ": " << error;
     }

@@ -350,6 +350,19 @@ private:
         phase_after(s, function, status);
     }
 
+    // A refused fmi2SetFMUstate or fmi2DeSerializeFMUstate changes nothing, the machine state included: the
+    // instance is where it was (one whose core failed part-way is in the error state, which the next call
+    // finds out, since no check here expects an fmi2OK).
+    void after_refusable(Slot& s, const char* function, fmi2Status status) {
+        const bool wasError = s.inError;
+        const int phase = s.phase;
+        after(s, function, status);
+        if (status == fmi2Error) {
+            s.inError = wasError;
+            s.phase = phase;
+        }
+    }
+
     void free_states(Slot& s) {
         for (fmi2FMUstate& st : s.states) {
             if (st != nullptr) fmi().FreeFMUstate(s.c, &st);
@@ -600,7 +613,7 @@ private:
                 s.phase = stepping ? 2 : 0;
                 s.log.lines.clear();
             }
-            after(s, "fmi2SetFMUstate", st);
+            after_refusable(s, "fmi2SetFMUstate", st);
             if (st == fmi2OK) s.inError = false;
         } else if (action < 80) {  // free a state
             if (s.states.empty()) return;
@@ -652,7 +665,7 @@ private:
             trace("fmi2DeSerializeFMUstate (" + what + ")");
             const fmi2Status ds = fmi().DeSerializeFMUstate(target.c, bytes.empty() ? nullptr : bytes.data(),
                                                             bytes.size(), &restored);
-            after(target, "fmi2DeSerializeFMUstate", ds);
+            after_refusable(target, "fmi2DeSerializeFMUstate", ds);
             if (ds != fmi2OK || restored == nullptr) return;
             if (chance(0.7)) {
                 trace("fmi2SetFMUstate (deserialized, " + what + ")");
@@ -666,7 +679,7 @@ private:
                     target.phase = stepping ? 2 : 0;
                     target.log.lines.clear();
                 }
-                after(target, "fmi2SetFMUstate", set);
+                after_refusable(target, "fmi2SetFMUstate", set);
                 if (set == fmi2OK) target.inError = false;
             }
             trace("fmi2FreeFMUstate (deserialized)");

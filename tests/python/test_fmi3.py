@@ -330,3 +330,26 @@ def test_an_fmi3_state_of_the_oc4_moorings_is_refused_after_the_deck_was_edited(
     refusal = [m for m in messages if "fmi2SetFMUstate" in m or "SetFMUState" in m]
     assert refusal and f"lineFile {path}" in refusal[-1], messages
     assert "length = 845.35000000000002 now, 835.35000000000002 in the state" in refusal[-1], refusal
+
+
+def test_a_refused_fmi3_serialized_state_leaves_a_fresh_instance_to_run(fmi3_file):
+    """fmi3DeserializeFMUState of a truncated buffer: fmi3Error, and the fresh instance then initializes and
+    runs bit for bit as one that never saw the call (the refusal put it into the error state)."""
+    profile, _ = hopland_accelerate()
+    origin = Cable(fmi3_file, True)
+    origin.initialize(tow_inputs(profile, 0.0))
+    origin.advance(profile, 0.0, 2.0)
+    state = origin.fmu.getFMUState()
+    data = origin.fmu.serializeFMUState(state)
+    origin.fmu.freeFMUState(state)
+    origin.close()
+    runs = []
+    for refused in (True, False):
+        fresh = Cable(fmi3_file, True)
+        if refused:
+            with pytest.raises(Exception):
+                fresh.fmu.deserializeFMUState(data[:-3])
+        fresh.initialize(tow_inputs(profile, 0.0))
+        runs.append(fresh.advance(profile, 0.0, 2.0))
+        fresh.close()
+    assert runs[0].tobytes() == runs[1].tobytes()

@@ -280,6 +280,18 @@ def test_a_saved_state_of_the_buoy_continues_bit_for_bit(make_cable, tmp_path, b
     assert run(fresh, 5, 5).tobytes() == first.tobytes()
 
 
+def _buoy_state_at(make_cable, tmp_path, t_end, h=0.2):
+    """The released buoy body's deck (a copy in tmp_path), its FMU parameters and its serialized state after
+    steps of h to t_end."""
+    path = _released_body(tmp_path)
+    params = {**ms.fmu_parameters(ms.read_system_deck(path)), "lineFile": str(path)}
+    c = make_cable(parameters=params)
+    c.initialize()
+    for k in range(int(round(t_end / h))):
+        c.do_step(h, t=h * k)
+    return path, params, c.serialize_state(c.get_state())
+
+
 @pytest.mark.parametrize("edit", ["leg", "mass", "EA"])
 def test_a_state_restored_after_its_deck_was_edited_is_refused_naming_the_file_and_the_value(
         make_cable, tmp_path, edit):
@@ -287,13 +299,7 @@ def test_a_state_restored_after_its_deck_was_edited_is_refused_naming_the_file_a
     fmi2DeSerializeFMUstate, in a new instance) after the deck file was edited (a leg 10 m longer, the free
     body's mass doubled, EA halved) it is refused, naming the file and what differs, not stepped with the
     new deck's lines (which moved the body's moment by tens of MN m at the first step)."""
-    path = _released_body(tmp_path)
-    params = {**ms.fmu_parameters(ms.read_system_deck(path)), "lineFile": str(path)}
-    c = make_cable(parameters=params)
-    c.initialize()
-    for k in range(3):
-        c.do_step(0.2, t=0.2 * k)
-    data = c.serialize_state(c.get_state())
+    path, params, data = _buoy_state_at(make_cable, tmp_path, 0.6)
     text = path.read_text()
     edits = {"leg": ("1         leg         1         4        128.5", "1         leg         1         4        138.5",
                      "length = 138.5 now, 128.5 in the state"),
@@ -342,3 +348,32 @@ def test_an_implausible_free_body_is_refused_at_the_start_naming_the_row_and_the
         c.initialize()
     refusal = [m for _, _, m in c.messages if named in m]
     assert refusal and "line 12: " in refusal[0] and str(path) in refusal[0], c.log_text()
+
+
+@pytest.mark.parametrize("running", ["system", "line"])
+def test_a_refused_state_of_an_edited_deck_leaves_the_running_instance_as_it_was(make_cable, tmp_path, running):
+    """A refused fmi2SetFMUstate changes nothing: a running instance (the buoy system of the edited deck, or a
+    single line, whose core is not the state's) given the state of the deck before its edit refuses it and
+    steps on bit for bit as an instance that never saw the call (the refusal dropped the instance's core and
+    put the state's parameters in place of its own)."""
+    path, params, data = _buoy_state_at(make_cable, tmp_path, 0.6)
+    path.write_text(path.read_text().replace("3000   0|0|-1.0", "6000   0|0|-1.0", 1))
+    own = params if running == "system" else {"nElements": 12}
+    names = ([f"line[{k}].fairleadTension" for k in (1, 2, 3)] + [f"body[1].pose.{a}" for a in ("x", "z", "pitch")]
+             if running == "system" else ["towForce.x", "towForce.z", "endPosition.z"])
+    outputs = []
+    for refused in (True, False):
+        c = make_cable(parameters=own)
+        c.initialize()
+        c.do_step(0.2, t=0.0)
+        if refused:
+            state = c.deserialize_state(data)
+            with pytest.raises(FMICallException):
+                c.set_state(state)
+            c.free_state(state)
+            assert "the deck is not the one the state was saved with" in c.log_text()
+        for k in range(1, 3):
+            c.do_step(0.2, t=0.2 * k)
+            outputs.append(c.get_reals(names))
+    assert np.isfinite(outputs[0]).all()
+    assert np.array(outputs[:2]).tobytes() == np.array(outputs[2:]).tobytes()
