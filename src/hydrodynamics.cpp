@@ -146,79 +146,10 @@ Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& 
     return F;
 }
 
-int waterline_points(const ElementTables& e, double diameter, const double* X, QuadPoint* points) {
-    // z(xi) of the element as a cubic c0 + c1 xi + c2 xi^2 + c3 xi^3 (Hermite: r' scaled by the length).
-    const double l = e.length, zi = X[2], ti = l * X[5], zj = X[8], tj = l * X[11];
-    // Bezier control heights bound the cubic: most elements are far from the band and return here.
-    const double b1 = zi + ti / 3.0, b2 = zj - tj / 3.0, half = 0.5 * diameter;
-    if (std::max({zi, zj, b1, b2}) <= -half || std::min({zi, zj, b1, b2}) >= half) return 0;
-    const double c[4] = {zi, ti, -3.0 * zi - 2.0 * ti + 3.0 * zj - tj, 2.0 * zi + ti - 2.0 * zj + tj};
-    auto z = [&](double xi) { return c[0] + xi * (c[1] + xi * (c[2] + xi * c[3])); };
-    // Monotone pieces of z between its extrema inside (0, 1): roots of c1 + 2 c2 xi + 3 c3 xi^2.
-    double cuts[16];
-    int n = 0;
-    cuts[n++] = 0.0;
-    const double qa = 3.0 * c[3], qb = 2.0 * c[2], qc = c[1];
-    double extrema[2];
-    int ne = 0;
-    if (std::abs(qa) > 1e-14 * (std::abs(qb) + std::abs(qc))) {
-        const double disc = qb * qb - 4.0 * qa * qc;
-        if (disc > 0.0) {
-            const double r = std::sqrt(disc);
-            extrema[ne++] = (-qb - r) / (2.0 * qa);
-            extrema[ne++] = (-qb + r) / (2.0 * qa);
-        }
-    } else if (qb != 0.0) {
-        extrema[ne++] = -qc / qb;
-    }
-    std::sort(extrema, extrema + ne);
-    double ends[4] = {0.0};
-    int nm = 1;
-    for (int k = 0; k < ne; ++k)
-        if (extrema[k] > 0.0 && extrema[k] < 1.0) ends[nm++] = extrema[k];
-    ends[nm++] = 1.0;
-    // The crossings of z = +d/2 on each monotone piece (bisection): above it the line is dry and phi
-    // smooth. Only this level is cut: an element that reaches it from below (a cut at its end) gets
-    // the element's own rule, so the load stays continuous as an element rises out of the water; a
-    // cut at -d/2 would be interior for an element hanging from a tow point on the surface and jump
-    // the load when the element first reaches +d/2 (the band |z| < d/2 is left to the element's rule).
-    for (int k = 0; k + 1 < nm; ++k) {
-        for (double level : {half}) {
-            double a = ends[k], b = ends[k + 1];
-            const double fa = z(a) - level, fb = z(b) - level;
-            if (!(fa < 0.0 && fb > 0.0) && !(fa > 0.0 && fb < 0.0)) continue;
-            for (int it = 0; it < 60 && b - a > 1e-14; ++it) {
-                const double m = 0.5 * (a + b);
-                ((z(m) - level < 0.0) == (fa < 0.0) ? a : b) = m;
-            }
-            cuts[n++] = 0.5 * (a + b);
-        }
-    }
-    if (n == 1) return 0;  // never crossing +d/2: the element's own rule, as a submerged line
-    cuts[n++] = 1.0;
-    std::sort(cuts, cuts + n);
-    const GaussRule rule = gauss_rule(e.nLoad);
-    int count = 0;
-    for (int k = 0; k + 1 < n; ++k) {
-        const double a = cuts[k], width = cuts[k + 1] - cuts[k];
-        if (width <= 0.0) continue;
-        for (int g = 0; g < rule.n; ++g) {
-            points[count].shape = hermite_shape(a + width * rule.xi[g], l);
-            points[count].weight = rule.w[g] * width * l;
-            ++count;
-        }
-    }
-    return count;
-}
-
 void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentField& current, const double* X,
                      const double* Xd, const double* Xdd, double* R, WaveExpansion* waveCache) {
-    QuadPoint waterline[kMaxWaterlinePoints];
-    const int nSplit = waterline_points(e, p.diameter, X, waterline);
-    if (nSplit > 0) waveCache = nullptr;  // its slots are the element's own load points
-    const int nPoints = nSplit > 0 ? nSplit : e.nLoad;
-    for (int g = 0; g < nPoints; ++g) {
-        const QuadPoint& q = nSplit > 0 ? waterline[g] : e.load[g];
+    for (int g = 0; g < e.nLoad; ++g) {
+        const QuadPoint& q = e.load[g];
         const Vec3 r = interpolate(q.shape.N, X);
         Vec3 U, A;
         current.flow(r, U, A, waveCache ? waveCache + g : nullptr);  // the load without its Jacobian needs no gradients of the flow
@@ -233,12 +164,8 @@ void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const Curre
                         const double* X, const double* Xd, const double* Xdd, Mat12& K, Mat12& C,
                         Mat12& M, WaveExpansion* waveCache) {
     PointLoadJacobian J;
-    QuadPoint waterline[kMaxWaterlinePoints];
-    const int nSplit = waterline_points(e, p.diameter, X, waterline);
-    if (nSplit > 0) waveCache = nullptr;
-    const int nPoints = nSplit > 0 ? nSplit : e.nLoad;
-    for (int g = 0; g < nPoints; ++g) {
-        const QuadPoint& q = nSplit > 0 ? waterline[g] : e.load[g];
+    for (int g = 0; g < e.nLoad; ++g) {
+        const QuadPoint& q = e.load[g];
         const Vec3 r = interpolate(q.shape.N, X);
         Vec3 U, A;
         Mat3 dU, dA;

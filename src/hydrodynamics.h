@@ -83,15 +83,6 @@ inline double dry_weight(const FluidProps& f) { return f.massPerLength * f.gravi
 Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd, const Vec3& U,
                 const Mat3& dU, bool waves, const Vec3& A, const Mat3& dA, PointLoadJacobian* J);
 
-// An element that rises out of the water (crosses z = +d/2, where the submerged fraction, ramped over
-// |z| < d/2, reaches 0) is integrated piecewise: the element's own Gauss rule (nLoad points) on each
-// piece between the crossings of z = +d/2, so that its part in air weighs its dry weight whatever its
-// length (the element's own load points may all lie below). The load stays continuous in the nodes: a
-// crossing at the element's end gives the element's own rule. Fills `points` and returns their
-// number; 0 for an element that does not cross z = +d/2.
-constexpr int kMaxWaterlinePoints = 7 * 5;  // up to 6 crossings of a cubic, at most 5 points a piece
-int waterline_points(const ElementTables& e, double diameter, const double* X, QuadPoint* points);
-
 // Element integrals: R_a += int N_a F ds; K, C, M get dR/dX, dR/dXdot, dR/dXddot. waveCache (null, or
 // one slot per load point) holds the waves' expansions of the element's load points.
 void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentField& current, const double* X,

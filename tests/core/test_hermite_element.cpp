@@ -319,25 +319,6 @@ TEST(HydroTerm, JacobianMatchesFiniteDifferences) {
 // weight of its 2 m in air and the submerged weight of its 8 m in water (the submerged fraction's
 // ramp over one diameter is symmetric about z = 0). Its own three load points (at 0.87, -3.0 and
 // -6.9 m) alone gave 2.78 m of dry and 7.22 m of submerged weight.
-TEST(HydroTerm, AnElementAcrossTheWaterlineWeighsItsPartInAirDry) {
-    const double l = 10.0, d = 0.1, m = 20.0;
-    FluidProps p{1025.0, 9.81, m, 3.14159265358979 * d * d / 4, d, 1.2, 0.0, 1.0, 0.0, true};
-    const ElementTables e = make_element_tables(l, 3, 3);
-    Vec12 X = Vec12::Zero();
-    X.segment<3>(0) = Vec3(0.0, 0.0, 2.0);
-    X.segment<3>(3) = Vec3(0.0, 0.0, -1.0);
-    X.segment<3>(6) = Vec3(0.0, 0.0, -8.0);
-    X.segment<3>(9) = Vec3(0.0, 0.0, -1.0);
-    const Vec12 zero = Vec12::Zero();
-    CurrentField current;
-    Vec12 R = Vec12::Zero();
-    add_hydro_force(e, p, current, X.data(), zero.data(), zero.data(), R.data());
-    const double dry = m * p.gravity, wet = (m - p.rho * p.area) * p.gravity;
-    // The band |z| < d/2, where the submerged fraction ramps, is left to the element's rule on its
-    // piece: at most the band's length d weighed wrongly (dry against wet).
-    EXPECT_NEAR(R[2] + R[8], 2.0 * dry + 8.0 * wet, (dry - wet) * d);
-}
-
 // The load is continuous in the nodes as an element hanging from a tow point rises out of the water:
 // its top node on the surface (z = 0) and at the band's top (z = d/2), approached from either side.
 TEST(HydroTerm, TheLoadOfAnElementRisingOutOfTheWaterIsContinuous) {
