@@ -531,6 +531,10 @@ int section_index(const CableModel& model, const SectionProps& section) {
 
 }  // namespace
 
+void CableSimulation::add_event(const std::string& text) {
+    event_ = event_.empty() ? text : event_ + "; " + text;
+}
+
 bool CableSimulation::check_weight_strain(std::string& error) const {
     // The line's whole weight in water over a section's EA: a tension the line may carry (all of it
     // hanging), so a strain it may reach; beyond 100 % no line of that EA carries its own weight.
@@ -579,7 +583,7 @@ bool CableSimulation::check_static_strain(std::string& error) {
         error = text;
         return false;
     }
-    event_ = event_.empty() ? "warning: " + text : event_ + "; warning: " + text;
+    add_event("warning: " + text);
     return true;
 }
 
@@ -1045,7 +1049,7 @@ void CableSimulation::warn_of_compression() {
                   "element of it carries before buckling (%.4g N): the two-sided axial law (enableCompression = "
                   "true) pushes where a cable goes slack; a line that can go slack wants enableCompression = false",
                   time_, -outputs_.minTension, buckling);
-    event_ = event_.empty() ? std::string(text) : event_ + "; " + text;
+    add_event(text);
 }
 
 // The integrator's absolute tolerance of each unknown from the physical ones. A local error of
@@ -1287,7 +1291,7 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
                       "winch: at t = %.6g s winch.rate %.6g m/s is beyond winch.maxRate = %.6g m/s: the drum runs at "
                       "most at winch.maxRate (deployed length %.6g m)",
                       time_, requested + in.winchRateRate * h, limits.maxRate, winchLength_);
-        event_ = event_.empty() ? std::string(text) : event_ + "; " + text;
+        add_event(text);
     }
     winchRateLimited_ = winchStep_.rateLimited;
     // A length limit cut the request (not the speed limit): log the arrival once.
@@ -1301,7 +1305,7 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
                       limit > 0 ? "maxLength" : "minLength", limit > 0 ? limits.maxLength : limits.minLength,
                       limit > 0 ? "paying out" : "hauling in", winchLength_ + winchStep_.length(h), requested,
                       winchStep_.rate1);
-        event_ = event_.empty() ? std::string(text) : event_ + "; " + text;
+        add_event(text);
     }
     winchLimit_ = limit;
     if (limit != 0 && limits.maxAcceleration > 0.0 && winchRate_ != 0.0 && winchStep_.rate1 == 0.0) {
@@ -1310,7 +1314,7 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
         std::snprintf(text, sizeof text, "winch: at t = %.6g s the drum stops at winch.%s = %.6g m",
                       time_ + winchStep_.rampTime, limit > 0 ? "maxLength" : "minLength",
                       limit > 0 ? limits.maxLength : limits.minLength);
-        event_ = event_.empty() ? std::string(text) : event_ + "; " + text;
+        add_event(text);
     }
     return true;
 }

@@ -145,6 +145,8 @@ private:
     // kStrainRefused, false with the section, its EA and the likely cause (EA in the wrong unit);
     // beyond kStrainWarned, a warning event.
     bool check_static_strain(std::string& error);
+    // Appends a message to the step's event text (several are joined by "; ").
+    void add_event(const std::string& text);
     // Before the static solver: false where the line's whole weight in water over a section's EA
     // exceeds kWeightStrainRefused (EA in the wrong unit), which no static solve would settle.
     bool check_weight_strain(std::string& error) const;
