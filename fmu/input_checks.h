@@ -10,7 +10,7 @@
 #ifndef UNDERWATERCABLE_FMU_INPUT_CHECKS_H
 #define UNDERWATERCABLE_FMU_INPUT_CHECKS_H
 
-#include "cable_api.h"
+#include "api/cable_api.h"
 
 /* Bounds beyond which an input is not a physical motion (a unit or frame mistake, a diverged partner). */
 #define UC_INPUT_MAX_POSITION 1e6       /* m: the anchor's range */

@@ -6,7 +6,7 @@
 #ifndef UNDERWATERCABLE_FMU_INSTANCE_H
 #define UNDERWATERCABLE_FMU_INSTANCE_H
 
-#include "cable_api.h"
+#include "api/cable_api.h"
 #include "fmi2FunctionTypes.h"
 #include "input_checks.h"
 #include "logging.h"

@@ -1,5 +1,5 @@
 /* variables.c - the value-reference table (see variables.h), expanded from the variable schema
- * (schema/variables.toml, generated into src/uc_schema.h): sorted by value reference. */
+ * (schema/variables.toml, generated into src/generated/uc_schema.h): sorted by value reference. */
 #include "variables.h"
 
 #include <stdlib.h>

@@ -11,7 +11,7 @@
 
 #include <stddef.h>
 
-#include "cable_api.h"
+#include "api/cable_api.h"
 
 #ifdef __cplusplus
 extern "C" {

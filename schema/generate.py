@@ -6,7 +6,7 @@
 
 Generated (each file says so in its first lines; never edit them by hand):
 
-    src/uc_schema.h                 UCParams / UCInputs / UCOutputs and X-macro lists of the variables
+    src/generated/uc_schema.h                 UCParams / UCInputs / UCOutputs and X-macro lists of the variables
                                     (value-reference table, defaults, range checks)
     modelDescription.xml            the FMI 2.0 model description (CMake fills in guid and version)
     docs/interface.md               the tables between the "generated from schema" markers
@@ -39,7 +39,7 @@ except ModuleNotFoundError:  # pragma: no cover
 ROOT = Path(__file__).resolve().parents[1]
 SCHEMA = ROOT / "schema" / "variables.toml"
 
-OUT_HEADER = ROOT / "src" / "uc_schema.h"
+OUT_HEADER = ROOT / "src" / "generated" / "uc_schema.h"
 OUT_XML = ROOT / "modelDescription.xml"
 OUT_README = ROOT / "docs" / "interface.md"  # the interface tables (the README links to them)
 OUT_PYTHON = ROOT / "python" / "ucable" / "variables.py"
@@ -276,9 +276,9 @@ def header_text(data, entries, scalars) -> str:
     structs = member_tree(entries, data.get("internal", []), constants)
     out = [f"/* uc_schema.h - {GENERATED_NOTE}",
            " *",
-           " * The parameter, input and output structs of the core's C API (src/cable_api.h) and X-macro",
-           " * lists of every FMU variable: the adapter's value-reference table (fmu/variables.c), the",
-           " * parameter defaults and range checks (src/params.cpp). */",
+           " * The parameter, input and output structs of the core (src/model/parameters.h, read by the C API) and",
+           " * X-macro lists of every FMU variable: the adapter's value-reference table (fmu/variables.c), the",
+           " * parameter defaults (src/api/cable_api.cpp) and range checks (src/model/params.cpp). */",
            "#ifndef UNDERWATERCABLE_UC_SCHEMA_H", "#define UNDERWATERCABLE_UC_SCHEMA_H", ""]
     for k, v in constants.items():
         out.append(f"#define {k} {v}")

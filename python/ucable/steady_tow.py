@@ -23,7 +23,7 @@ Equilibrium of the piece of cable below arc length s: d(T t)/ds = -f, i.e. with 
   dphi/dsigma = -(e Dn - w cos(phi)) / T
   dx/dsigma   =  (1 + T/EA) cos(phi),    dz/dsigma = (1 + T/EA) sin(phi)
 where e = 1 when drag acts per unit UNSTRETCHED length (the default, and what the FMU does:
-src/hydrodynamics.cpp integrates all loads over the unstretched arc length) and e = 1 + T/EA when
+src/terms/hydrodynamics.cpp integrates all loads over the unstretched arc length) and e = 1 + T/EA when
 it acts per unit stretched length (the wetted length grows with the stretch; option
 drag_per_stretched_length=True). Weight and buoyancy act per unit unstretched length (mass is
 conserved; the cable volume is taken as conserved too). On the Hopland cable T/EA < 1e-4, so the

@@ -1,5 +1,5 @@
 /* chain_driver.c - the chain mooring of scripts/bench_work_precision (case "mooring") through the core
- * C API (src/cable_api.h), for scripts/profile_callgrind --scenes chain (and chain_still): 835 m,
+ * C API (src/api/cable_api.h), for scripts/profile_callgrind --scenes chain (and chain_still): 835 m,
  * 117 kg/m, volume-equivalent d 0.137 m, EA 7.5e8 N, no bending stiffness, tension only, anchored on a
  * 200 m deep seabed at (-800, 0, -200) m with the benchmark's contact (3e6 Pa/m and 3e5 Pa s/m times
  * d, no friction), fairlead at (0, 0, -20) m surging `amplitude` at 12 s along x (amplitude ramped in
@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cable_api.h"
+#include "api/cable_api.h"
 #include "driver.h"
 
 int main(int argc, char** argv) {

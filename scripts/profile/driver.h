@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cable_api.h"
+#include "api/cable_api.h"
 
 /* Position, velocity and acceleration of A r(t) sin(w t), w = 2 pi / T, with the amplitude ramped in over
  * the first period, r = 3 tau^2 - 2 tau^3, tau = t / T. */

@@ -1,4 +1,4 @@
-/* hopland_driver.c - fixed short Hopland run through the core C API (src/cable_api.h), for
+/* hopland_driver.c - fixed short Hopland run through the core C API (src/api/cable_api.h), for
  * scripts/profile_callgrind: steady tow at 1.1 kn, then the 2.4 kn ramp, 0.5 s steps, with the
  * exact tow acceleration. Usage: hopland_driver [t_end=60] [nElements=20]. Prints the integrator
  * statistics as "key value" lines. */
@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cable_api.h"
+#include "api/cable_api.h"
 #include "driver.h"
 
 int main(int argc, char** argv) {

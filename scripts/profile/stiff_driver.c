@@ -1,5 +1,5 @@
 /* stiff_driver.c - the stiff power cable of scripts/bench_work_precision through the core C API
- * (src/cable_api.h), for scripts/profile_callgrind --scenes stiff: 250 m, 60 kg/m, d 0.2 m, EA 7e8 N,
+ * (src/api/cable_api.h), for scripts/profile_callgrind --scenes stiff: 250 m, 60 kg/m, d 0.2 m, EA 7e8 N,
  * EI 2e4 N m2, anchored on a 100 m deep seabed at (-210, 0, -100) m with the benchmark's contact
  * (3e6 Pa/m and 3e5 Pa s/m times d), fairlead at (0, 0, -10) m surging 3 m at 8 s along x (amplitude
  * ramped in over the first period), 0.05 s communication steps with the exact acceleration.
@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cable_api.h"
+#include "api/cable_api.h"
 #include "driver.h"
 
 int main(int argc, char** argv) {

@@ -86,7 +86,7 @@ def markdown(runs: dict) -> str:
              "`bash scripts/profile_callgrind --compare before=DIR --doc` (valgrind callgrind: instruction "
              "counts, repeatable on this shared machine; wall time is not). Each checkout's core library "
              "(Release, -g) is linked with the C drivers of scripts/profile/, which drive it through "
-             "src/cable_api.h with the exact tow acceleration. Columns: the checkouts compared (`now` is "
+             "src/api/cable_api.h with the exact tow acceleration. Columns: the checkouts compared (`now` is "
              "this one).", ""]
     for scene, by_label in runs.items():
         labels = list(by_label)

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "cable_api.h"
+#include "api/cable_api.h"
 
 namespace uc::testing {
 

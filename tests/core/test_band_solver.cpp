@@ -8,9 +8,10 @@
 
 #include <sundials/sundials_context.h>
 
-#include "band_solver.h"
-#include "simulation.h"
-#include "sundials_compat.h"
+#include "api/cable_api.h"
+#include "numerics/band_solver.h"
+#include "line/simulation.h"
+#include "numerics/sundials_compat.h"
 
 using namespace uc;
 

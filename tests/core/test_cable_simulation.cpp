@@ -7,9 +7,9 @@
 #include <random>
 #include <vector>
 
-#include "cable_api.h"
-#include "cable_model.h"
-#include "simulation.h"
+#include "api/cable_api.h"
+#include "model/cable_model.h"
+#include "line/simulation.h"
 #include "cantilever.h"
 
 using namespace uc;
@@ -18,7 +18,7 @@ using uc::testing::cantilever;
 namespace {
 
 constexpr double kKnot = 1852.0 / 3600.0;
-constexpr double kPi = 3.14159265358979323846;
+using uc::kPi;
 
 UCInputs tow_inputs(double speed) {
     UCInputs in{};

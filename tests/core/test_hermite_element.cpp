@@ -5,9 +5,9 @@
 #include <cmath>
 #include <random>
 
-#include "hermite_element.h"
-#include "hydrodynamics.h"
-#include "seabed.h"
+#include "terms/hermite_element.h"
+#include "terms/hydrodynamics.h"
+#include "terms/seabed.h"
 
 using namespace uc;
 

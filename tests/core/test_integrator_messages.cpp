@@ -1,6 +1,6 @@
 // SUNDIALS' own messages (IDA's errors, the text of a failure) reach the integrator's report and are never
 // printed: an FMU must not write to stdout or stderr. SUNDIALS 6 hands them to an error handler, 7 to the
-// context's logger, which prints errors to stderr and warnings to stdout unless routed (src/integrator.cpp).
+// context's logger, which prints errors to stderr and warnings to stdout unless routed (src/numerics/integrator.cpp).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -8,8 +8,8 @@
 
 #include <sundials/sundials_context.h>
 
-#include "integrator.h"
-#include "sundials_compat.h"
+#include "numerics/integrator.h"
+#include "numerics/sundials_compat.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The MoorDyn v2 input file reader (src/line_file.cpp, docs/lines.md): what a supported deck becomes
+// The MoorDyn v2 input file reader (src/deck/line_file.cpp, docs/lines.md): what a supported deck becomes
 // in our conventions, that every kind of unsupported or malformed deck is refused naming its line, and
 // that random truncations and mutations of a valid deck never crash it.
 #include <gtest/gtest.h>
@@ -9,9 +9,9 @@
 #include <random>
 #include <string>
 
-#include "cable_api.h"
+#include "api/cable_api.h"
 #include "deck_mutation.h"
-#include "line_file.h"
+#include "deck/line_file.h"
 
 namespace {
 

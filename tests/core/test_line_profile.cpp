@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "line_profile.h"
+#include "model/line_profile.h"
 
 using uc::LineProfile;
 using Eigen::Vector3d;

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "cable_api.h"
-#include "simulation.h"
+#include "api/cable_api.h"
+#include "line/simulation.h"
 
 using namespace uc;
 

@@ -5,14 +5,14 @@
 #include <cmath>
 #include <string>
 
-#include "cable_api.h"
-#include "simulation.h"
+#include "api/cable_api.h"
+#include "line/simulation.h"
 
 using namespace uc;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using uc::kPi;
 
 // Elastic catenary lying on a frictionless seabed: a grounded part of unstretched length Lb
 // (horizontal tension H throughout) and a suspended part Ls = L - Lb rising from the touchdown

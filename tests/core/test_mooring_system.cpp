@@ -1,4 +1,4 @@
-// Mooring systems (src/mooring_system.h, the system part of src/line_file.h; docs/systems_mooring.md): what
+// Mooring systems (src/system/mooring_system.h, the system part of src/deck/line_file.h; docs/systems_mooring.md): what
 // a deck of several lines becomes, the bodies' orientation convention, the body load as the sum of the
 // lines' forces, and an exact state save/restore of the whole system.
 #include <gtest/gtest.h>
@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "cable_api.h"
+#include "api/cable_api.h"
 #include "deck_mutation.h"
-#include "line_file.h"
-#include "mooring_system.h"
+#include "deck/line_file.h"
+#include "system/mooring_system.h"
 
 namespace {
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "cable_api.h"
-#include "simulation.h"
+#include "api/cable_api.h"
+#include "line/simulation.h"
 
 namespace {
 long g_allocations = 0;

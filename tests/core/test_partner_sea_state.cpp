@@ -1,5 +1,5 @@
 // The partner FMUs' sea state (C, fmu/partners/vessel_rao/sea_state.c) against the cable's (C++,
-// src/waves.cpp): given the same waves.* parameters both must generate the same components (amplitudes,
+// src/terms/waves.cpp): given the same waves.* parameters both must generate the same components (amplitudes,
 // frequencies, wavenumbers, SplitMix64 phases) and so the same elevation, so that a vessel driven by its
 // RAOs and the cable see one sea. The two evaluate the same expressions in the same order: agreement to
 // round-off, 1e-12 relative (elevations: of the wave height).
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "cable_api.h"
-#include "waves.h"
+#include "api/cable_api.h"
+#include "terms/waves.h"
 
 extern "C" {
 #include "sea_state.h"

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "cable_api.h"
-#include "cable_model.h"
-#include "simulation.h"
+#include "api/cable_api.h"
+#include "model/cable_model.h"
+#include "line/simulation.h"
 
 using namespace uc;
 

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "rainflow.h"
+#include "line/rainflow.h"
 
 namespace {
 

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <string>
 
-#include "cable_api.h"
-#include "cable_model.h"
-#include "simulation.h"
+#include "api/cable_api.h"
+#include "model/cable_model.h"
+#include "line/simulation.h"
 #include "cantilever.h"
 
 using namespace uc;
@@ -16,7 +16,7 @@ using uc::testing::cantilever;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using uc::kPi;
 
 void copy_line_into_section(const UCParams& p, double length, int nElements, UCSection& s) {
     s.length = length;

@@ -6,14 +6,14 @@
 #include <random>
 #include <string>
 
-#include "cable_api.h"
-#include "simulation.h"
+#include "api/cable_api.h"
+#include "line/simulation.h"
 
 using namespace uc;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using uc::kPi;
 
 // Hinged-hinged rod along x: tow point fixed at the origin, far end anchored at L (1 + T/EA),
 // weightless (gravity 0), light drag for damping.

@@ -4,15 +4,15 @@
 
 #include <cmath>
 
-#include "cable_api.h"
-#include "hydrodynamics.h"
-#include "waves.h"
+#include "api/cable_api.h"
+#include "terms/hydrodynamics.h"
+#include "terms/waves.h"
 
 using namespace uc;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using uc::kPi;
 constexpr double g = 9.80665;
 
 UCParams regular(double H, double T, double depth, double direction = 0.0) {

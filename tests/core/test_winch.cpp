@@ -8,10 +8,10 @@
 #include <cstdint>
 #include <string>
 
-#include "cable_api.h"
-#include "hermite_element.h"
-#include "simulation.h"
-#include "winch.h"
+#include "api/cable_api.h"
+#include "terms/hermite_element.h"
+#include "line/simulation.h"
+#include "line/winch.h"
 
 namespace uc {
 namespace {

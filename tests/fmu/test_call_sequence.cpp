@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "cable_api.h"
+#include "api/cable_api.h"
 #include "fmu_harness.h"
 
 TEST(CallSequence, DoStepBeforeInitializationIsIllegal) {

@@ -35,7 +35,7 @@ def read_result(path):
     return names, [body[k:k + width] for k in range(0, len(body), width)]
 
 
-# Outputs computed from the state by the C library's acos, asin and atan2 (src/outputs.cpp): glibc and
+# Outputs computed from the state by the C library's acos, asin and atan2 (src/line/outputs.cpp): glibc and
 # MinGW-w64's runtime each return a result within 1 ulp of the exact value, so the two may differ by 2 ulps.
 ANGLES = ("topDeclination", "topAzimuth", "anchorUplift")
 ANGLE_ULPS = 2

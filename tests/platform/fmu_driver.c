@@ -40,7 +40,7 @@
 
 #include "fmi2Functions.h"
 #include "uc_guid.h"
-#include "uc_schema.h"
+#include "generated/uc_schema.h"
 
 #define KNOT (1852.0 / 3600.0)
 

@@ -2,7 +2,7 @@
 
 Every parameter of modelDescription.xml is driven through fmi2SetReal/SetInteger/SetBoolean with an
 inadmissible value. Out-of-range finite values must give fmi2Error at fmi2ExitInitializationMode
-(uc_params_check, src/params.cpp) with a log line "<variable> = <value> is outside <range>: <why>";
+(uc_params_check, src/model/params.cpp) with a log line "<variable> = <value> is outside <range>: <why>";
 NaN and inf are rejected already by fmi2SetReal. A parameter without a case below fails
 test_every_parameter_has_a_validation_case: add its range check and its case.
 """

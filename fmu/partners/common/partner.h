@@ -1,7 +1,7 @@
 /*
  * partner.h - the interface between the generic FMI 2.0 co-simulation adapter of the partner FMUs
  * (partner_fmi.c) and one partner model (vessel/vessel.c, towed_body/towed_body.c): the same split as
- * the cable's (fmu/ <-> src/cable_api.h). The model knows no FMI call sequence, the adapter no physics.
+ * the cable's (fmu/ <-> src/api/cable_api.h). The model knows no FMI call sequence, the adapter no physics.
  *
  * A model keeps everything in one plain struct of doubles, its "data": parameters, inputs, states and
  * outputs. Saving an FMU state is then a byte copy. Its variables are one table (name, causality,

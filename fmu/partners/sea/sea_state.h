@@ -1,7 +1,7 @@
 /*
  * sea_state.h - the wave components of the cable FMU's sea state, generated in C for the partner FMUs:
  * the same regular wave or JONSWAP discretization, the same finite-depth dispersion and the same
- * SplitMix64 phases as the cable's own sea state (src/waves.cpp), so that a partner given the same
+ * SplitMix64 phases as the cable's own sea state (src/terms/waves.cpp), so that a partner given the same
  * waves.* parameters sees the same sea as the cable (tests/fmu/test_sea_state.cpp compares the two).
  *
  * Convention: a component of amplitude a, frequency w, wavenumber k, direction of travel beta (from +x

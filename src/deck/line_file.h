@@ -1,0 +1,193 @@
+// line_file.h - a line described by a MoorDyn v2 input file ("deck"): the text is parsed into one
+// chain of lines from the vessel point to the far end, in this model's conventions, and written into
+// the parameters. The supported subset of the format and every conversion of MoorDyn's conventions
+// into ours are in docs/lines.md. No I/O here: the caller reads the file and hands over its text.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/types.h"
+#include "model/parameters.h"
+
+namespace uc {
+
+// One MoorDyn line as a section of our line, oriented from the tow point, in our conventions.
+struct LineFileSection {
+    std::string type;       // the name of its line type
+    double length = 0.0;    // UnstrLen [m]
+    double diameter = 0.0;  // Diam: MoorDyn's volume-equivalent diameter is ours (hydrodynamic and displacement)
+    double massPerLength = 0.0;
+    double EA = 0.0;
+    double EI = 0.0;
+    double axialDamping = 0.0;  // [N.s]: BA, or -zeta converted with MoorDyn's segment length
+    double Cdn = 0.0, Cdt = 0.0, Can = 0.0, Cat = 0.0;  // Cd, CdAx, Ca, CaAx
+    int numSegs = 0;        // MoorDyn's NumSegs
+    int elements = 0;       // our cubic elements (docs/lines.md: the rule, or lineFileElements)
+    int row = 0;            // line of the file of its LINES entry
+};
+
+// A Free point: a joint between two sections, or a body at the free far end.
+struct LineFilePoint {
+    int id = 0;
+    double mass = 0.0;       // M [kg]
+    double volume = 0.0;     // V [m3]
+    double addedMass = 0.0;  // CA rho V [kg]
+    double CdA = 0.0;        // [m2]
+    int row = 0;
+    bool empty() const { return mass == 0.0 && volume == 0.0 && addedMass == 0.0 && CdA == 0.0; }
+};
+
+enum class LineFileFarEnd { Anchored, Body, Free };
+
+// The water's motion a deck's kinematics options describe, in the FMU's terms (docs/lines.md, "Options and
+// environment"): MoorDyn's steady current profile (Currents 1) as the currentProfile.* parameters, one
+// wave component (WaveKin 7) as the regular wave of waves.*.
+struct LineFileSea {
+    int profileRows = 0;  // > 0: the deck sets the current profile
+    double profileDepth[UC_CURRENT_PROFILE_ROWS] = {}, profileX[UC_CURRENT_PROFILE_ROWS] = {},
+           profileY[UC_CURRENT_PROFILE_ROWS] = {};
+    bool regularWave = false;  // the deck sets waves.mode 1 with these
+    double waveHeight = 0.0, wavePeriod = 0.0, waveDirection = 0.0;
+};
+
+// The text of a file MoorDyn reads from the deck's directory (current_profile.txt, wave_frequencies.txt).
+struct LineFileCompanion {
+    std::string name, text;
+};
+using LineFileCompanions = std::vector<LineFileCompanion>;
+
+// The names of the files next to the deck that its options ask for (empty when none): the caller reads
+// them from the deck's directory and hands their text to read_line_file or read_mooring_deck.
+std::vector<std::string> line_file_companions(std::string_view text);
+
+// MoorDyn's seabed, which is always there at WtrDpth (docs/lines.md, "Seabed"): kBot and cBot per unit of
+// projected area [Pa/m, Pa s/m], the friction options; the deck's values, MoorDyn's defaults where it is
+// silent. row: the line of the file that sets the option, 0 when the deck is silent.
+struct LineFileSeabed {
+    double kBot = 3.0e6, cBot = 3.0e5;  // MoorDyn's defaults
+    double friction = 0.0, fricDamp = 200.0, statDynFricScale = 1.0;
+    int kBotRow = 0, cBotRow = 0, frictionRow = 0, fricDampRow = 0, statDynFricScaleRow = 0;
+};
+
+// The line of a deck: what the parameters need, plus notes for the log.
+struct LineFileLine {
+    std::vector<LineFileSection> sections;  // from the tow point
+    std::vector<LineFilePoint> joints;      // joints[k] between sections k and k + 1
+    LineFileFarEnd farEnd = LineFileFarEnd::Anchored;
+    double anchor[3] = {0.0, 0.0, 0.0};     // the Fixed point (Anchored)
+    LineFilePoint body;                     // the Free point at the far end (Body)
+    double towPoint[3] = {0.0, 0.0, 0.0};   // the Vessel/Coupled point (the tow.* inputs drive it)
+    bool towFixed = false;                  // the tow point is the deck's Fixed point (no Vessel point)
+    double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
+    int waterDepthRow = 0, gravityRow = 0, waterDensityRow = 0;  // the rows that set them (0: MoorDyn's default)
+    LineFileSeabed seabed;
+    LineFileSea sea;
+    std::vector<std::string> notes;         // "line <n>: ..." : what was ignored or adjusted
+};
+
+// MoorDyn's default options (what MoorDyn-C uses when the deck does not set them).
+constexpr double kMoorDynGravity = 9.80665;
+constexpr double kMoorDynWaterDensity = 1025.0;
+
+// Our elements for a MoorDyn line of numSegs segments when lineFileElements = 0 (docs/lines.md).
+int elements_for_segments(int numSegs);
+
+// Parses the text of a MoorDyn v2 input file. elementsTotal is the parameter lineFileElements: 0, each
+// line's elements from its NumSegs; N > 0, about N over the whole line in proportion to the lengths.
+// Returns false with error = "line <n>: <what>" (or "<what>" for the deck as a whole) when the text is
+// not a readable deck or describes something outside the supported subset.
+// companions: the files next to the deck that line_file_companions names (a missing one is an error naming it).
+bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& line, std::string& error,
+                    const LineFileCompanions& companions = {});
+
+// Writes the line into the parameters (line properties, elements, far end, environment, the seabed as
+// MoorDyn has it: on at WtrDpth, seabedStiffness kBot x Diam, seabedDamping cBot x Diam, seabedFriction
+// FrictionCoefficient, Diam that of the line's last section, the one on the seabed at its anchor). The
+// environment and seabed parameters whose bit is set in p.deckKeep (UC_DECK_KEEP_*: set explicitly by the
+// importer) keep the value p holds. False with a message when the parameters cannot describe it.
+bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error);
+
+// What the log says about the deck's environment and seabed against the parameters: for each of
+// waterDepth, gravity, waterDensity, enableSeabed, seabedStiffness, seabedDamping, seabedFriction and
+// enableCompression, which value is used (the deck's, or the importer's where its UC_DECK_KEEP_* bit is set
+// in importer.deckKeep, the importer's value in `importer`) and why; lines starting "warning: " are
+// fmi2Warnings (the friction law differs from MoorDyn's). bottomDiameter: Diam of the section on the seabed
+// (0: a mooring system's, each line's own).
+std::vector<std::string> deck_environment_notes(const LineFileLine& line, double bottomDiameter,
+                                                const UCParams& importer);
+
+// ------------------------------------------------------------------------------- mooring systems
+// A deck of several lines, of lines on bodies, or with a BODIES section is a mooring system
+// (docs/systems_mooring.md): each line runs from its fairlead, the end on a coupled body or a coupled
+// point, to its anchor (a Fixed point) or to another coupled end.
+
+// Where a line's end is held: on coupled body `body` (1-based, the deck's body ID; with no BODIES section
+// the Vessel points ride body 1) at `position` in the body's frame, on coupled point `point` (its ID in
+// the deck) at `position` (its place in the deck), fixed at `position`, or on free node `node` (0-based
+// index into MooringDeck::nodes: a Free point where three or more lines meet; `position` is its place
+// in the deck, the start of its static equilibrium's search).
+struct MooringEnd {
+    enum class Kind { Body, Point, Fixed, Node } kind = Kind::Fixed;
+    int body = 0, point = 0, node = 0;
+    double position[3] = {0.0, 0.0, 0.0};
+};
+
+// One of the system's lines: a chain of the deck's lines (its sections) from the fairlead through Free
+// points that join two lines (its joints), to its far end.
+struct MooringDeckLine {
+    int id = 0, row = 0;                     // of its first deck line
+    std::vector<LineFileSection> sections;   // from the fairlead
+    std::vector<LineFilePoint> joints;       // joints[k] between sections k and k + 1
+    std::vector<int> deckLines;              // the deck's line (0-based) of each section
+    std::vector<bool> flipped;               // per section: the deck line's fairlead is at its far end
+    MooringEnd fairlead, far;                // the line runs from its fairlead (s = 0) to its far end
+    bool farFree = false;                    // the far end is a Free point: farBody (a towed body), or none
+    LineFilePoint farBody;
+};
+
+// A Free point where three or more lines meet: its position is an unknown of the system, found from the
+// equilibrium of its weight, buoyancy, drag and the lines' forces.
+struct MooringNode {
+    LineFilePoint point;                 // mass, volume, added mass, drag area (a body: its ID, mass, volume)
+    double position[3] = {0.0, 0.0, 0.0};  // in the deck: the first guess (a body: its reference point)
+    bool body = false;                   // a Free body: six unknowns, its points in its frame
+    double angles[3] = {0.0, 0.0, 0.0};  // a body's roll, pitch, yaw in the deck [rad] (R = Rx Ry Rz)
+    double cg[3] = {0.0, 0.0, 0.0};      // a body's centre of gravity in its frame (its weight and buoyancy act there)
+    double inertia[3] = {0.0, 0.0, 0.0}; // a body's moments of inertia about its centre of gravity, body axes [kg m2]
+    double CdA[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // a body's drag areas in its axes: translations, rotations [m2]
+    double Ca[3] = {0.0, 0.0, 0.0};      // a body's added-mass coefficients of translation in its axes (of rho V)
+};
+
+struct MooringDeck {
+    std::vector<MooringDeckLine> lines;  // in the order of their first deck line
+    std::vector<MooringNode> nodes;      // the free nodes, in the deck's order of points
+    int deckLines = 0;                   // lines of the deck (line[k].* outputs: k in the deck's order)
+    int bodies = 0;                      // coupled bodies 1 .. bodies are driven by the body[k].* inputs
+    bool bodiesSection = false;          // false: the deck's Vessel points ride body 1
+    bool nodesFromDeck = false;          // TmaxIC 0: the free nodes start at rest at their deck positions
+    double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
+    int waterDepthRow = 0, gravityRow = 0, waterDensityRow = 0;
+    LineFileSeabed seabed;
+    LineFileSea sea;
+    std::vector<std::string> notes;
+};
+
+// deck_environment_notes for a mooring system (each line's seabed contact from its far-end section's Diam).
+std::vector<std::string> mooring_environment_notes(const MooringDeck& deck, const UCParams& importer);
+
+// True when the text is a deck (LINES and POINTS readable) with several lines, a point on a body or a
+// BODIES row: a mooring system, not one line. Decks it is false for are read by read_line_file.
+bool is_mooring_system_deck(std::string_view text);
+
+// Reads a mooring system's deck: elementsPerLine is lineFileElements (0: each line's from its NumSegs;
+// N > 0: N per line). False with error = "line <n>: <what>" when the deck is outside what a system holds.
+bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& deck, std::string& error,
+                       const LineFileCompanions& companions = {});
+
+// The parameters of line k (0-based) of the system: base with the line's properties, environment and
+// far end (anchored at its Fixed point; driven, bottomEnd 3, where it ends on a coupled object).
+bool mooring_line_params(const MooringDeck& deck, int k, const UCParams& base, UCParams& p, std::string& error);
+
+}  // namespace uc

@@ -1,0 +1,291 @@
+// simulation.h - one cable in time: the immutable CableModel plus the mutable state (time,
+// IDA vectors, prescribed-end state, statistics, outputs) and the workspace, allocated once.
+// Save/restore of the state is a plain byte copy (the MuJoCo mjModel/mjData split).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <sundials/sundials_context.h>
+
+#include "numerics/band_solver.h"
+#include "model/parameters.h"
+#include "model/cable_model.h"
+#include "numerics/integrator.h"
+#include "model/line_profile.h"
+#include "line/outputs.h"
+#include "line/rainflow.h"
+#include "line/torsion.h"
+#include "line/winch.h"
+
+namespace uc {
+
+// How far two acceleration inputs disagree with the velocity inputs between them (uc_acceleration_disagreement
+// in api/cable_api.h says exactly how): 0 when they agree within the allowance.
+double acceleration_disagreement(double a0, double a1, double dv, double h);
+
+// A driven end in a saved state (plain doubles, fixed layout).
+struct DrivenEndState {
+    double position[3], velocity[3], acceleration[3], lastVelocityInput[3], lastAccelerationInput[3];
+    double lastAccelerationGiven;
+};
+
+// A prescribed end driven by the master's inputs (the tow point; the far end of bottomEnd 3):
+// where its trajectory stands at the current time, and the inputs of the previous step.
+struct DrivenEnd {
+    Vec3 position = Vec3::Zero(), velocity = Vec3::Zero(), acceleration = Vec3::Zero();
+    Vec3 lastVelocityInput = Vec3::Zero(), lastAccelerationInput = Vec3::Zero();
+    bool lastAccelerationGiven = false;
+
+    void reset(const Vec3& p, const Vec3& v, const Vec3& a, bool accelerationGiven);
+    // The trajectory over [t, t + h] towards the inputs (position, velocity and, if given, the
+    // acceleration) extrapolated to t + h; lastStep is the previous step's size (0: none).
+    // accelerationGiven: as UCInputs.towAccelerationGiven (0, or bit 0 and UC_ACCELERATION_AS_INPUT bits).
+    TowTrajectory next(double t, double h, double lastStep, const Vec3& positionInput, const Vec3& velocityInput,
+                       const Vec3& accelerationInput, int accelerationGiven, Vec3& acceleration) const;
+    // After a successful step along traj with these inputs.
+    void advance(const TowTrajectory& traj, const Vec3& velocityInput, const Vec3& acceleration,
+                 bool accelerationGiven);
+    void save(DrivenEndState& s) const;
+    void load(const DrivenEndState& s);
+};
+
+class CableSimulation : public SecondOrderSystem {
+public:
+    explicit CableSimulation(const UCParams& params);
+    ~CableSimulation() override;
+    CableSimulation(const CableSimulation&) = delete;
+    CableSimulation& operator=(const CableSimulation&) = delete;
+
+    const CableModel& model() const { return model_; }
+    double time() const { return time_; }
+    const UCOutputs& outputs() const { return outputs_; }
+    const Vec3& tow_position() const { return tow_.position; }
+
+    bool initialize(double t0, const UCInputs& in, std::string& error);
+    bool step(double t, double h, const UCInputs& in, std::string& error);
+    // The event of the last step to log (a winch limit reached), or empty; cleared by the call.
+    std::string take_event();
+
+    size_t state_size() const;
+    void save_state(void* buffer);
+    // false (error) for a state of another size or version before anything changes; *changed (if given)
+    // tells whether the failure came after the line had started taking the state (its mesh, its history).
+    bool restore_state(const void* buffer, size_t size, std::string& error, bool* changed = nullptr);
+
+    // The interface derivatives over the next communication step (docs/cosimulation.md,
+    // "Interface derivatives"): out[i] = sum_j d output_i (t + h) / d input_j (t) seed[j], outputs
+    // i = towForce x, y, z, endForce x, y, z, inputs j = tow x, y, z, vx, vy, vz (0-5), end x, y,
+    // z, vx, vy, vz (6-11), tow ax, ay, az (12-14), end ax, ay, az (15-17) (the end inputs act
+    // only when bottomEnd = 3 or 4), for a next step as long as the last one: the cable linearized about
+    // its present state, driven by the change of the driven end's quintic that the input change
+    // makes, integrated over the step by BDF2 with kDerivativeSubsteps and twice as many substeps,
+    // extrapolated (Richardson) to a third-order result. Only the requested direction is computed:
+    // one integration per call, whatever the number of inputs in it; a column (one input) is kept
+    // until the state changes, so a master asking column by column pays once per column.
+    static constexpr int kDerivativeSubsteps = 64;
+    static constexpr int kDerivativeInputs = 18;
+    bool interface_derivative(const double seed[kDerivativeInputs], double out[6], std::string& error);
+
+    // The axial force at an end of element e (far: at its second node) in the state of the last outputs:
+    // the tension a line of several sections has at its joints (a mooring system's line[k].* outputs).
+    double element_end_tension(int e, bool far) const { return forces_.element[e].segment<3>(far ? 6 : 0).norm(); }
+
+    // Free positions q and velocities v of the current state (for tests).
+    void free_state(std::vector<double>& q, std::vector<double>& v, std::vector<double>& a) const;
+    // The time integrator (for tests of its linear algebra paths).
+    Integrator& integrator() { return *integrator_; }
+
+private:
+    int residual(double t, const double* y, const double* yp, double* r) override;
+    int jacobian(double t, const double* y, const double* yp, const EntrySink& sink) override;
+    void step_completed(double t, const double* y, const double* yp) override;
+    // q_, v_, a_ and the global X_, Xd_, Xdd_ from the integrator's y, y' at time t.
+    void expand_integrator_state(double t, const double* y, const double* yp);
+
+    void set_environment(const UCInputs& in);
+    // True where the guess is the line's static profile (near the equilibrium).
+    bool initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
+    // The far end is held at the start: anchored, external, or the proxy of an external body whose
+    // statics hold it where the body is (bottomEnd 4, initMode 0).
+    bool far_end_held_at_start() const;
+    // bottomEnd 4, initMode 0: the statics with the proxy held at the body's position by a spring,
+    // whose force then becomes the estimate of the body's other forces (the start is in equilibrium).
+    bool proxy_statics(double t0, const std::vector<double>& v, bool fromProfile, std::string& error);
+    // bottomEnd 4, after a step from the proxy's state (p0, v0): the force on the external body
+    // (the force that takes it along the proxy's velocity, plus the tracking force) and the
+    // estimate's update.
+    void proxy_output(double h, const Vec3& p0, const Vec3& v0, const UCInputs& in);
+    Vec3 proxy_flow(const Vec3& r, const Vec3& v, double t) const;
+    // The static profile of the line from the tow point to its held far end (src/model/line_profile.h),
+    // bending, current and waves left out; false where it does not apply, with the reason in why.
+    bool static_profile(const Vec3& towPoint, const Vec3& farPoint, LineProfile& profile, bool& towOnTop,
+                        std::string* why) const;
+    bool profile_guess(double* X) const;  // from profile_, false where it was not solved
+    // The mesh graded by the static profile where `apply` and the profile does (else each section's
+    // own), the model built again where that changes it.
+    // `grading`: which of kGradings (src/model/mesh_grading.h) places the nodes.
+    void grade_mesh(const Vec3& towPoint, const Vec3& farPoint, bool apply, int grading = 0);
+    // Before the static solver: false, with the reason, where the line has no static equilibrium.
+    bool statics_applies(const Vec3& farPoint, std::string& error) const;
+    // After it, on the outputs: false, with the reason, where its answer is not the line's state.
+    bool verify_statics(std::string& error) const;
+    // After a static state not found or refused, for a line given by parameters: the finer mesh
+    // (twice, then four times the elements of every section) on which the same line starts, as
+    // advice to append to the message; which knob to turn where no such mesh was found.
+    std::string mesh_advice(double t0, const UCInputs& in) const;
+    bool adviseMesh_ = true;  // off in the trial runs of mesh_advice
+    // Largest relative difference of the end tensions from the exact static profile [-].
+    static constexpr double kStaticsCheck = 0.01;
+    // The check applies to a line with bending stiffness whose bending length at its smallest
+    // tension is at most this fraction of its length [-].
+    static constexpr double kWeakBending = 1e-3;
+    // Largest relative difference between the anchor force and the axial tension at the anchor of
+    // a line without bending stiffness: the acceptance's 0.2 % (both measure the anchor tension).
+    static constexpr double kAnchorCheck = 2e-3;
+    bool check_geometry(const Vec3& farPoint, std::string& error) const;
+    // After the static state is accepted: its largest strain (an element's chord over its length). Beyond
+    // kStrainRefused, false with the section, its EA and the likely cause (EA in the wrong unit);
+    // beyond kStrainWarned, a warning event.
+    bool check_static_strain(std::string& error);
+    // Appends a message to the step's event text (several are joined by "; ").
+    void add_event(const std::string& text);
+    // Before the static solver: false where the line's whole weight in water over a section's EA
+    // exceeds kWeightStrainRefused (EA in the wrong unit), which no static solve would settle.
+    bool check_weight_strain(std::string& error) const;
+    static constexpr double kWeightStrainRefused = 1.0;
+    // Nylon, the most extensible rope moored or towed with, breaks at about 20-25 % elongation; steel
+    // wire and chain below 3 %: a static strain beyond a quarter is no line's (docs/model.md).
+    static constexpr double kStrainRefused = 0.25;
+    // Beyond it every steel line and most fibre ropes are past breaking at rest: worth a word.
+    static constexpr double kStrainWarned = 0.05;
+    void update_outputs();
+    void warn_of_compression();
+    bool set_integrator_tolerances(std::string& error);
+    // An element's length (the winch's nominal one for its top element), the strain tolerance
+    // (tensionTolerance x the tension scale / EA, times rms) and the time scale tau over which a
+    // velocity error matters as a position error does (the Kelvin-Voigt time, at least an axial wave's
+    // transit of the element).
+    struct ElementScales {
+        double length, strain, tau;
+    };
+    ElementScales element_scales(int e, double rms) const;
+    // The projected error blocks of projectedErrorControl (empty when it is off).
+    std::vector<Integrator::ProjectedBlock> projected_blocks() const;
+    double cable_torque(const UCInputs& in);
+    IntegratorStats total_stats() const;
+    // The winch (docs/winch.md): the top element's length at time t; the rate for the step ahead;
+    // splitting or merging the top element at a communication point; a new mesh, with everything
+    // sized by the number of unknowns made again (at a remesh or a restore only).
+    void set_winch_time(double t);
+    // The constant-tension winch (winchMode 2): the top element's length is an unknown of the
+    // integrator (index 0, before the line's); its rate follows, with the lag winch.timeConstant, the
+    // rate the tow tension commands, implicitly with the line.
+    int unknowns() const { return model_.n_free() + off_; }
+    int unknowns_bandwidth() const;
+    void allocate();
+    double tension_winch_rate(double tension, double topLength, double* slope) const;
+    // The tension the constant-tension winch controls: the force of the cable on the tow point along
+    // the line's tangent there (R: the top element's residual at the expanded state X_), negative
+    // in compression, so that a compressed line is hauled in, never paid out.
+    double line_tension(const double* R) const;
+    bool winch_rate(const UCInputs& in, double h, std::string& error);
+    WinchLimits winch_limits() const;
+    bool remesh(double change, std::string& error);  // change: of the top element over the step ahead
+    bool remesh_once(RemeshAction action, bool balance, std::string& error);
+    static constexpr int kMaxRemeshPasses = 100000;
+    // Moves the global DOFs [g, g + count) of X (count <= 12) to where their own equations
+    // of motion hold with the velocities Xd and accelerations Xdd (Newton on the elements that share
+    // them): a node the remesh makes or changes starts in the motion the line had there.
+    void balance_dofs(int g, int count, std::vector<double>& X, const std::vector<double>& Xd,
+                      const std::vector<double>& Xdd);
+    static constexpr int kMaxBalanceIterations = 8;
+    // Nodes below the top element balanced after a remesh: each one more takes the transient of
+    // the new mesh's discretization a node further from the tow point (a split on 15 m elements:
+    // 0.053, 0.029, 0.0017, 0.0017, 0.0011 % of the tension with 1 to 5 nodes).
+    static constexpr int kBalanceNodes = 4;
+    // The residual rows of the global DOFs [g, g + count) and (J not null) their Jacobian block.
+    void dof_residual(int g, int count, const std::vector<double>& X, const std::vector<double>& Xd,
+                      const std::vector<double>& Xdd, Eigen::VectorXd& R, Eigen::MatrixXd* J);
+    // From the positions q_ and velocities v_ at time_: the consistent accelerations, the state
+    // y_, yp_, and a restart of the integrator.
+    bool restart_from(std::string& error);
+    void rebuild(const WinchMesh& mesh);
+    void replace_model(CableModel&& model);
+
+    CableModel model_;
+    int off_ = 0;  // 1: the constant-tension winch's unknown comes first in the integrator's vectors
+    SUNContext context_ = nullptr;
+    std::unique_ptr<Integrator> integrator_;
+    std::unique_ptr<BandSolver> staticSolver_;
+
+    // --- state (what save/restore copies) ---
+    double time_ = 0.0;
+    DrivenEnd tow_;             // the tow point
+    DrivenEnd end_;             // the far end of bottomEnd 3 (external)
+    // bottomEnd 4: the estimate of the external body's other forces is loads_.proxy (saved)
+    double lastStepSize_ = 0.0; // of the previous step (0: no input history yet)
+    TwistReference twistRef_;  // end frames at initialization (torqueMode 2)
+    double lastBeta_ = 0.0;    // geometric twist at the last evaluation, for unwrapping past +-pi
+    std::vector<double> y_, yp_;  // IDA vectors at time_: y = [q_0, v_0, q_1, v_1, ...]
+    IntegratorStats statsBase_;   // statistics folded in at integrator restarts
+    bool integratorStarted_ = false;  // the integrator's own counters belong to this state
+    UCOutputs outputs_{};
+    double tensionScale_ = 0.0;  // of the error control, fixed at initialization
+    RainflowCounter rainflow_;   // online fatigue count of the tow tension (sn_.area > 0)
+    bool restartPending_ = true;
+    // the winch: over a step from time_ the top element's length is winchTop0_ + winchStep_.length(t - time_)
+    double winchLength_ = 0.0;  // deployed unstretched length at time_
+    double winchRate_ = 0.0, winchTop0_ = 0.0;  // the rate at time_ (rate winch: the drum's)
+    WinchStep winchStep_;       // the rate winch's drum over the step from time_ (a hold between steps)
+    int winchLimit_ = 0;        // -1 / +1: at the shortest / longest length (logged once per arrival)
+    bool winchRateLimited_ = false;  // winch.maxRate cut the command (logged once per arrival)
+    std::string event_;
+    bool compressionWarned_ = false;  // the compression warning is given once per instance
+    // the mesh graded by the static profile at initialization (empty: each section's own), and the
+    // tow point it was graded for (a restored state's mesh is graded again from it)
+    bool graded_ = false;
+    int grading_ = 0;  // which of kGradings graded it (the first whose equilibrium passed the check)
+    StaticLayout layout_;
+    Vec3 meshTow_ = Vec3::Zero(), meshFar_ = Vec3::Zero();
+    bool profileApplies_ = false;  // an anchored line, or a far end held at rest
+    // The static profile for the ends the model holds (grade_mesh solves it once per initialization).
+    struct ProfileState {
+        LineProfile profile;
+        bool solved = false, towOnTop = true;
+        std::string why;  // why it was not solved
+        Vec3 far = Vec3::Zero();  // the far end it was solved for
+    };
+    ProfileState profile_;
+
+    // --- per-step environment and workspace ---
+    SNCurve sn_;  // from the fatigue.* parameters
+    // set by every step from its inputs and state, before it is integrated
+    double winchTension_ = 0.0;    // the constant-tension winch's set tension over the step
+    double winchTopAtStep_ = 0.0;  // the top element's length at the step's start
+    double stepTensionMax_ = 0.0, stepTensionMin_ = 0.0;  // over the internal steps of the current step
+    Loads loads_;
+    std::vector<double> q_, v_, a_, X_, Xd_, Xdd_, R_;
+    ElementForces forces_;
+    OutputWorkspace outputWork_;
+    std::vector<double> historyBuffer_;  // the integrator's history on its way to/from a saved state
+    std::vector<double> toleranceBuffer_;
+    // interface derivatives (allocated at their first use): the linearization at the present
+    // state, the step matrices of the two substep sizes factored, and the columns computed so far
+    bool prepare_derivatives(std::string& error);
+    void derivative_response(const double seed[kDerivativeInputs], double out[6]);
+    std::unique_ptr<UnpivotedBandLU> derivativeLU_[2];
+    std::unique_ptr<BandMatrix> derivativeK_, derivativeC_, derivativeM_;
+    Mat12 derivativeKe_[2], derivativeCe_[2], derivativeMe_[2];
+    Mat6 derivativeKn_, derivativeCn_, derivativeMn_;
+    // bottomEnd 4: the force on the body by the proxy's velocity and position at t + h
+    Mat3 derivativeProxyVelocity_ = Mat3::Zero(), derivativeProxyPosition_ = Mat3::Zero();
+    std::vector<double> derivativeWork_;
+    double derivativeColumns_[kDerivativeInputs][6] = {};
+    bool derivativeColumnDone_[kDerivativeInputs] = {};
+    long derivativeStamp_ = -1;  // stateStamp_ of the linearization and the columns
+    long stateStamp_ = 0;        // changes whenever the state does (step, initialization, restore)
+};
+
+}  // namespace uc

@@ -1,0 +1,181 @@
+// params.cpp - defaults (the start values of schema/variables.toml) and the single place where parameters are validated.
+#include "model/params.h"
+#include "terms/waves.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+namespace uc {
+namespace {
+
+std::string format_violation(const char* name, double value, const char* range, const char* why) {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, "%s = %.17g is outside %s: %s", name, value, range, why);
+    return buffer;
+}
+
+// Each check returns true when the value violates it and then fills `message`.
+bool positive(std::string& message, const char* name, double v, const char* why) {
+    if (std::isfinite(v) && v > 0.0) return false;
+    message = format_violation(name, v, "(0, inf)", why);
+    return true;
+}
+
+bool in_range(std::string& message, const char* name, double v, double lo, double hi,
+              const char* range, const char* why) {
+    if (std::isfinite(v) && v >= lo && v <= hi) return false;
+    message = format_violation(name, v, range, why);
+    return true;
+}
+
+bool unit_direction(std::string& message, const char* name, const double v[3]) {
+    for (int k = 0; k < 3; ++k) {
+        if (!std::isfinite(v[k])) {
+            char component[128];
+            std::snprintf(component, sizeof component, "%s.%c", name, "xyz"[k]);
+            message = format_violation(component, v[k], "(-inf, inf)", "it must be a finite number");
+            return true;
+        }
+    }
+    const double norm = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (norm > 1e-12) return false;
+    char what[128];
+    std::snprintf(what, sizeof what, "|%s|", name);
+    message = format_violation(what, norm, "(0, inf)", "a direction needs a non-zero vector");
+    return true;
+}
+
+// The interval of the schema (schema/variables.toml), open or closed at each end.
+bool outside_schema_range(std::string& message, const char* name, double v, double lo, double hi, bool loOpen,
+                          bool hiOpen, const char* range, const char* why) {
+    const bool inside = std::isfinite(v) && (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi);
+    if (inside) return false;
+    message = format_violation(name, v, range, why);
+    return true;
+}
+
+}  // namespace
+
+std::string check_params(const UCParams& p) {
+    std::string m;
+#define UC_CHECK_RANGE(member, name, lo, hi, loOpen, hiOpen, range, why) \
+    if (outside_schema_range(m, name, static_cast<double>(p.member), lo, hi, loOpen, hiOpen, range, why)) return m;
+    UC_SCHEMA_PARAMETER_RANGES(UC_CHECK_RANGE)
+#undef UC_CHECK_RANGE
+#define UC_CHECK_BOOLEAN(member, name) \
+    if (in_range(m, name, p.member, 0, 1, "{0, 1}", "a switch is on or off")) return m;
+    UC_SCHEMA_BOOLEAN_PARAMETERS(UC_CHECK_BOOLEAN)
+#undef UC_CHECK_BOOLEAN
+    // Conditions between parameters, beyond the ranges of the schema.
+    if (unit_direction(m, "initialDirection", p.initialDirection)) return m;
+    if (p.topEnd == UC_TOP_CLAMPED && unit_direction(m, "topTangent", p.topTangent)) return m;
+    if (p.enableTorsion && p.torqueMode == UC_TORQUE_ROTATION &&
+        positive(m, "GJ", p.GJ, "a prescribed end rotation makes a torque only through GJ"))
+        return m;
+    if (p.enableSeabed && positive(m, "seabedStiffness", p.seabedStiffness, "an enabled seabed needs a contact stiffness"))
+        return m;
+    if (p.wavesMode != 0 && p.wavesHeight > 0.0 &&
+        positive(m, "gravity", p.gravity, "waves need gravity: it sets their wavelength (w^2 = g k tanh(k h))"))
+        return m;
+    if (p.wavesMode != 0 && p.wavesHeight > 0.0) {  // breaking: H over the (peak) wavelength above 1/7
+        const double k = wave_number(2.0 * kPi / p.wavesPeriod, p.waterDepth, p.gravity);
+        const double limit = 2.0 * kPi / k / 7.0;
+        if (p.wavesHeight > limit) {
+            char range[160];
+            std::snprintf(range, sizeof range, "[0, %.6g] (a seventh of the wavelength of waves.period in waterDepth)", limit);
+            return format_violation("waves.height", p.wavesHeight, range, "steeper waves break");
+        }
+    }
+    // Sections and attachments: every section in use has a length; attachments lie on the line.
+    double lineLength = p.length;
+    if (p.nSections >= 2) {
+        lineLength = 0.0;
+        for (int k = 0; k < p.nSections; ++k) {
+            char name[64];
+            std::snprintf(name, sizeof name, "section[%d].length", k + 1);
+            if (!(p.section[k].length > 0.0))
+                return format_violation(name, p.section[k].length, "(0, 1e5]", "every section in use (k <= nSections) needs a positive length");
+            if (p.enableTorsion && p.torqueMode == UC_TORQUE_ROTATION) {
+                std::snprintf(name, sizeof name, "section[%d].GJ", k + 1);
+                if (positive(m, name, p.section[k].GJ, "a prescribed end rotation makes a torque only through GJ")) return m;
+            }
+            lineLength += p.section[k].length;
+        }
+    }
+    for (int k = 0; k < p.nAttachments; ++k) {
+        const double s = p.attachment[k].s;
+        if (s > 0.0 && s <= lineLength * (1.0 + 1e-12)) continue;
+        char name[64], range[96];
+        std::snprintf(name, sizeof name, "attachment[%d].s", k + 1);
+        std::snprintf(range, sizeof range, "(0, %.17g] (the line's length)", lineLength);
+        return format_violation(name, s, range, "an attachment lies on the line, beyond the tow point");
+    }
+    if (p.winchMode != 0) {
+        char range[160];
+        if (!(p.winchMinLength < p.winchMaxLength)) {
+            std::snprintf(range, sizeof range, "(0, %.17g) (below winch.maxLength)", p.winchMaxLength);
+            return format_violation("winch.minLength", p.winchMinLength, range, "the winch needs room between its limits");
+        }
+        if (lineLength < p.winchMinLength || lineLength > p.winchMaxLength) {
+            std::snprintf(range, sizeof range, "[%.17g, %.17g] (winch.minLength, winch.maxLength)", p.winchMinLength,
+                          p.winchMaxLength);
+            return format_violation(p.nSections >= 2 ? "section[1].length" : "length", lineLength, range,
+                                    "the run starts with the line's length, within the winch's limits");
+        }
+        const double first = p.nSections >= 2 ? p.section[0].length : p.length;
+        const double below = lineLength - first;  // the sections the winch cannot haul in
+        if (p.winchMinLength <= below) {
+            std::snprintf(range, sizeof range, "(%.17g, %.17g) (beyond the sections after the first)", below,
+                          p.winchMaxLength);
+            return format_violation("winch.minLength", p.winchMinLength, range,
+                                    "the winch hauls in the first section only");
+        }
+        for (int k = 0; k < p.nAttachments; ++k) {
+            if (p.attachment[k].s >= first) continue;
+            char name[64];
+            std::snprintf(name, sizeof name, "attachment[%d].s", k + 1);
+            std::snprintf(range, sizeof range, "[%.17g, %.17g] (beyond the first section, which the winch pays out)",
+                          first, lineLength);
+            return format_violation(name, p.attachment[k].s, range, "the winch's section cannot carry attachments");
+        }
+    }
+    if (p.bottomEnd == UC_BOTTOM_PROXY && !(p.bodyMass + p.bodyAddedMass > 0.0))
+        return format_violation("body.mass", p.bodyMass, "(0, 1e8] (with body.addedMass)",
+                                "the proxy of an external body (bottomEnd 4) carries the body's inertia: it needs one");
+    {
+        // (m + m_a) I + A: symmetric and positive definite, or the body's inertia has no meaning.
+        const double* A[3] = {p.bodyAddedMassMatrix.x, p.bodyAddedMassMatrix.y, p.bodyAddedMassMatrix.z};
+        double M[3][3];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) M[i][j] = A[i][j] + (i == j ? p.bodyMass + p.bodyAddedMass : 0.0);
+        const char* names[3][3] = {{"xx", "xy", "xz"}, {"yx", "yy", "yz"}, {"zx", "zy", "zz"}};
+        char name[64];
+        for (int i = 0; i < 3; ++i)
+            for (int j = i + 1; j < 3; ++j) {
+                if (A[i][j] == A[j][i]) continue;
+                std::snprintf(name, sizeof name, "body.addedMassMatrix.%s", names[j][i]);
+                char range[64];
+                std::snprintf(range, sizeof range, "{%.17g} (body.addedMassMatrix.%s)", A[i][j], names[i][j]);
+                return format_violation(name, A[j][i], range, "an added-mass matrix is symmetric");
+            }
+        const bool any = A[0][0] != 0.0 || A[0][1] != 0.0 || A[0][2] != 0.0 || A[1][1] != 0.0 || A[1][2] != 0.0 || A[2][2] != 0.0;
+        // leading minors of the symmetric matrix (Sylvester)
+        const double d1 = M[0][0], d2 = M[0][0] * M[1][1] - M[0][1] * M[1][0];
+        const double d3 = M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+                          M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
+        if (any && !(d1 > 0.0 && d2 > 0.0 && d3 > 0.0))
+            return format_violation("body.addedMassMatrix.xx", A[0][0], "a matrix that leaves (body.mass + body.addedMass) I + A positive definite",
+                                    "the body's inertia must be positive in every direction");
+    }
+    for (int k = 1; k < p.currentProfileRows; ++k) {
+        if (p.currentProfileDepth[k] > p.currentProfileDepth[k - 1]) continue;
+        char name[64], range[96];
+        std::snprintf(name, sizeof name, "currentProfile.depth[%d]", k + 1);
+        std::snprintf(range, sizeof range, "(%.17g, inf)", p.currentProfileDepth[k - 1]);
+        return format_violation(name, p.currentProfileDepth[k], range, "profile depths must increase row by row");
+    }
+    return std::string();
+}
+
+}  // namespace uc

@@ -1,0 +1,243 @@
+// mooring_system.h - a mooring system read from a deck (docs/systems_mooring.md): several lines, each
+// from its fairlead on a coupled body or a coupled point to an anchor (or another coupled end). Lines
+// joined only through prescribed motion do not act on each other, so each is integrated by its own
+// CableSimulation, exactly as a single line is; the system turns the bodies' and points' inputs into each
+// line's end motion and sums the lines' forces into the bodies' loads and their quasi-static stiffness.
+// Free points where three or more lines meet and free bodies (free nodes) end the lines there: their
+// statics are solved by Newton's method on the lines' static solutions, and the free nodes are stepped
+// with their lines, the node's motion found within each step from its equation of motion.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "deck/line_file.h"
+#include "model/line_profile.h"
+#include "line/simulation.h"
+
+namespace uc {
+
+// R = Rx(roll) Ry(pitch) Rz(yaw): a body's orientation from its angles, MoorDyn's convention.
+Mat3 body_rotation(double roll, double pitch, double yaw);
+// The rotation by the angle |turn| about turn's direction (a rotation vector).
+Mat3 turn_matrix(const Vec3& turn);
+
+// A coupled body's orientation from its inputs as bodyOrientation reads them: UC_ORIENTATION_ANGLES_XYZ
+// body_rotation of its angles, UC_ORIENTATION_QUATERNION its quaternion q0..q3 (scalar first) normalized,
+// UC_ORIENTATION_ANGLES_ZYX R = Rz(yaw) Ry(pitch) Rx(roll) (OpenFAST's and MoorPy's).
+Mat3 coupled_body_rotation(const UCCoupledBody& body, int orientation);
+
+class MooringSystem {
+public:
+    // The lines' parameters are base with each line's deck properties; false (error) where one is refused.
+    MooringSystem(const UCParams& base, const MooringDeck& deck);
+    bool build(std::string& error);  // once, after construction
+
+    bool initialize(double t0, const UCInputs& in, std::string& error);
+    bool step(double t, double h, const UCInputs& in, std::string& error);
+    std::string take_event();
+
+    double time() const { return lines_.empty() ? 0.0 : lines_[0]->time(); }
+    const UCOutputs& outputs() const { return outputs_; }
+    Vec3 tow_position() const { return lines_[0]->tow_position(); }
+    int n_lines() const { return static_cast<int>(lines_.size()); }
+    const CableSimulation& line(int k) const { return *lines_[k]; }
+
+    size_t state_size() const;
+    void save_state(void* buffer);
+    // Refuses (false, error naming the first value that differs) a state saved by a system built from
+    // another deck: a state carries every value the system was built from (its description). A refusal
+    // of a state's size, version or deck values comes before anything changes; *changed (if given) tells
+    // whether a later failure (a line's integrator history) left the system partly restored.
+    bool restore_state(const void* buffer, size_t size, std::string& error, bool* changed = nullptr);
+
+    // Every number the system was built from, named: each line's parameters (the deck's line with the
+    // instance's parameters), its ends, the free nodes' mass, volume, drag, added mass, inertia and pose,
+    // the deck's environment. Saved with each state; a restore compares it bit for bit.
+    struct DescribedValue {
+        std::string name;  // "line 2 (deck row 14): length" ...
+        double value;
+    };
+    const std::vector<DescribedValue>& description() const { return description_; }
+
+    // The quasi-static 6x6 stiffness of the lines on body b (1-based) at the body pose of the inputs:
+    // K[6 i + j] = -d(force, moment)_i / d(x, y, z, theta_x, theta_y, theta_z)_j with theta a small
+    // rotation about the earth axes from the present orientation (at zero angles the angles' own
+    // derivatives), the free nodes its lines reach re-balanced where they stand (their coordinates
+    // condensed), the other coupled bodies and points held at their inputs; by central differences of
+    // the lines' static profiles (src/model/line_profile.h; src/system/mooring_stiffness.cpp). False where a line's
+    // profile is not solved there or the nodes' stiffness is singular.
+    bool body_stiffness(int b, const UCInputs& in, double K[36], std::string* why) const;
+    // body[k].stiffness of every coupled body into the outputs, at the last inputs' poses: computed when
+    // asked, once per step (it costs a fifth of a step; docs/systems_mooring.md). A body where
+    // body_stiffness fails gets 0, and an event says why (once per run).
+    void update_stiffness();
+
+    // The interface derivatives of body b (1-based) over the next communication step, taken as long as
+    // the last one: d[i][j] = d (force, moment)_i (t + h) / d input_j (t), inputs j = x, y, z, roll,
+    // pitch, yaw, vx, vy, vz, wx, wy, wz, q0, q1, q2, q3 of the body (UC_BODY_DERIVATIVE_INPUTS; the
+    // orientation inputs that bodyOrientation does not read have 0): each line's own interface
+    // derivatives (CableSimulation::interface_derivatives) through the fairleads' motion on the body, and
+    // the moment arms' change. Available after the first step.
+    bool body_derivatives(int b, double d[6][UC_BODY_DERIVATIVE_INPUTS], std::string& error);
+
+    // Steps of the central differences of body_stiffness: of each line's ends [m] (with the other end held,
+    // where a short taut line, a bridle's pennant of sag 0.5 m, is strongly non-linear: truncation ~
+    // (step / sag)^2, 4e-5 of the diagonal at 0.01 m, 4e-7 at 1 mm; docs/systems_mooring.md), and of a free
+    // body's own weight in its rotation [rad].
+    static constexpr double kStiffnessStep = 0.001, kStiffnessAngle = 1e-5;
+    // The stiffness re-balances the free nodes on the lines' profiles until a Newton step moves them by
+    // less than kStiffnessBalance [m, rad], each step moving a node by at most kStiffnessReach [m].
+    static constexpr double kStiffnessBalance = 1e-8, kStiffnessReach = 2.0;
+    // A quaternion input (bodyOrientation 1) is refused where its norm is off 1 by more than this, and
+    // normalized (reported once) where by more than kQuaternionReportedNorm.
+    static constexpr double kQuaternionNormTolerance = 0.01, kQuaternionReportedNorm = 1e-6;
+    // The free points' statics stop when a Newton step with the lines' solutions moves them less [m].
+    // (and the dynamics' when a Newton correction moves them less), in at most kNodeIterations.
+    static constexpr double kNodeTolerance = 1e-6;
+    static constexpr int kNodeIterations = 20, kJacobianRefreshes = 4;
+    static constexpr double kMaxCorrection = 0.2;
+    static constexpr double kMaxTurn = 0.2;  // [rad] a free body turns by at most this per Newton step
+    // The free nodes' step is split into at most this many substeps where it does not converge in one,
+    // or where its estimated error in the nodes' positions exceeds kNodeStepError [m].
+    static constexpr int kMaxSubsteps = 16;
+    static constexpr double kNodeStepError = 0.01;
+
+    // The free nodes (Free points where three or more lines meet): their positions, found at the
+    // initialization by the static equilibrium of each node (docs/systems_mooring.md, "Free points").
+    int n_nodes() const { return static_cast<int>(nodes_.size()); }
+    const Vec3& node_position(int n) const { return nodes_[n]; }
+    // The net static force on the free nodes (3 per node) with the nodes at x: their weight and
+    // buoyancy, the current's drag and the lines' end forces, from the lines' exact static profiles
+    // (profile = true: elastic catenaries, no current on the lines) or from the lines' own static
+    // solutions (profile = false: each line initialized with its ends there). False where a line has no
+    // solution there.
+    bool node_residual(const Eigen::VectorXd& x, const UCInputs& in, bool profile, Eigen::VectorXd& r,
+                       std::string& error);
+    const Vec3& node_velocity(int n) const { return nodeVelocity_[n]; }
+    const Mat3& node_rotation(int n) const { return nodeRotation_[n]; }  // a free body's (identity for a point)
+    // Newton iterations of the statics (of the last initialization) or of the last step's dynamics, and
+    // the statics' residual left (largest component, N).
+    int node_iterations() const { return nodeIterations_; }
+    int node_substeps() const { return nodeSubsteps_; }  // of the last step (1: in one piece)
+    double node_residual_norm() const { return nodeResidual_; }
+
+private:
+    struct Motion {
+        Vec3 position, velocity, acceleration;
+        bool accelerationGiven;
+    };
+    // Where an end of a line stands and moves for these inputs.
+    Motion end_motion(const MooringEnd& end, const UCInputs& in) const;
+    void line_inputs(int k, const UCInputs& in, UCInputs& li) const;
+    bool check_inputs(const UCInputs& in, std::string& error);  // reports a normalized quaternion once
+    void update_outputs();
+    // What body b's stiffness moves (src/system/mooring_stiffness.cpp): the body (holder 0) and the free nodes
+    // its lines reach, each with its generalized coordinates from offset (3 for a point, 6 for a body:
+    // its reference point and a small rotation about the earth axes) and its pose.
+    struct Holder {
+        int node, offset, dofs;  // node: the free node (-1: body b)
+        Vec3 reference;
+        Mat3 rotation;
+    };
+    std::vector<Holder> stiffness_holders(int b, const UCInputs& in) const;
+    // The holder of a line's end (-1: held where it is), nodeHolder[n] that of node n (-1: none).
+    int stiffness_holder(const MooringEnd& e, int b, const std::vector<int>& nodeHolder) const;
+    // Where end e stands with the holders at their poses (a held end: at its inputs).
+    Vec3 stiffness_place(const MooringEnd& e, int b, const std::vector<Holder>& holders,
+                         const std::vector<int>& nodeHolder, const UCInputs& in) const;
+    // G += line k's static end forces on the holders (on a 6-dof holder also their moment about its reference
+    // point), J += their derivatives in the holders' coordinates: the forces differenced in the ends'
+    // positions (src/model/line_profile.h), chained through the holders' rigid motion, and the turning arms.
+    bool add_line_jacobian(int k, int b, const std::vector<Holder>& holders, const std::vector<int>& nodeHolder,
+                           const UCInputs& in, Eigen::VectorXd& G, Eigen::MatrixXd& J, std::string* why) const;
+    // G += a node's own weight, buoyancy and current drag at rest (a free body's weight at its centre of gravity).
+    void add_node_loads(const Holder& holder, const UCInputs& in, Eigen::VectorXd& G) const;
+    // The static forces of line k on its fairlead and far end with them at top and far, from its
+    // profile (a line with a free far end: its weight on the fairlead).
+    bool profile_end_forces(int k, const Vec3& top, const Vec3& far, Vec3& onTop, Vec3& onFar, std::string* why) const;
+    // The free nodes' static equilibrium (Newton with a line search), the lines initialized there.
+    bool solve_nodes(double t0, const UCInputs& in, std::string& error);
+    // The current's velocity at x.
+    Vec3 water_velocity(const Vec3& x, const UCInputs& in) const;
+    // The weight, buoyancy and current drag on node n (a point) at x moving at v.
+    Vec3 node_load(int n, const Vec3& x, const UCInputs& in, const Vec3& v = Vec3::Zero()) const;
+    // The loads on free body n other than its lines' and its inertia, as MoorDyn v2 has them, at x with
+    // orientation R moving at v and turning at omega: force, and moment about the reference point.
+    void body_load(int n, const Vec3& x, const Mat3& R, const Vec3& v, const Vec3& omega, const UCInputs& in,
+                   Vec3& force, Vec3& moment) const;
+    // Free body n's added mass of translation (rho V Ca in its axes) in the earth axes at orientation R.
+    Mat3 body_added_mass(int n, const Mat3& R) const;
+    // One communication step of the lines that end at free nodes, coupled implicitly through the nodes'
+    // equations of motion (docs/systems_mooring.md, "Dynamics").
+    struct NodeInput {                   // what the lines at node n are given as their end's inputs
+        Vec3 position, velocity, acceleration;
+    };
+    struct NodeState {                   // the free nodes' motion (a step's start, to go back to)
+        std::vector<Vec3> x, v, a, omega, alpha;
+        std::vector<Mat3> R;
+        std::vector<NodeInput> input;
+        double step;
+    };
+    NodeState node_state() const;
+    // The error of the step just taken from start over h in the nodes' positions (a body's: at the reach
+    // of its points), estimated from the change of their accelerations [m].
+    double node_step_error(double h, const NodeState& start) const;
+    void set_node_state(const NodeState& s);
+    // The states of the lines at free nodes (empty for the others).
+    void save_node_lines(std::vector<std::vector<unsigned char>>& into);
+    // (In one piece, or in substeps where its error estimate is too large or its coupled iteration does
+    // not converge.)
+    bool step_nodes(double t, double h, const UCInputs& in, std::string& error);
+    // One step of [t, t + h] by the coupled iteration; shift >= 0: a substep that starts shift after the
+    // communication step's, the coupled ends extrapolated there. worst: the node that moves most in the
+    // last correction (named where it fails).
+    bool node_step(double t, double h, double shift, const UCInputs& in, int& worst, std::string& error);
+    // Line k's inputs li (for the communication step's start) with its ends on coupled bodies and points
+    // extrapolated by shift with their accelerations (given, or the difference of the last two velocity
+    // inputs, as a driven end takes it), the accelerations marked as given.
+    void shift_coupled_ends(int k, double shift, UCInputs& li) const;
+
+    UCParams base_;
+    MooringDeck deck_;
+    std::vector<std::unique_ptr<CableSimulation>> lines_;
+    // per line: its sections and joints for its static profile, from the fairlead (s from there)
+    std::vector<std::vector<LineProfile::Segment>> segments_;
+    std::vector<std::vector<LineProfile::PointLoad>> pointLoads_;
+    std::vector<double> hangingWeight_;  // per line with a free far end: its submerged weight and its body's
+    std::vector<DescribedValue> description_;  // see description()
+    void describe_line(int k, const UCParams& p);  // appends line k's values (its parameters p, its ends)
+    void describe_nodes();                         // appends the deck's environment and the free nodes'
+    // Whether the description saved at `saved` is this system's (else false, error naming what differs).
+    bool same_description(const unsigned char* saved, std::string& error) const;
+    // --- state ---
+    std::vector<DrivenEnd> references_;  // each body's reference point, extrapolated as the fairleads are
+    std::vector<Vec3> nodes_;            // the free nodes' positions
+    std::vector<Vec3> nodeVelocity_, nodeAcceleration_;
+    std::vector<Mat3> nodeRotation_;     // a free body's orientation (identity for a point)
+    std::vector<Vec3> nodeOmega_, nodeAlpha_;  // a free body's angular velocity and acceleration
+    double nodeStep_ = 0.0;              // the step the nodes' state is at the end of (0: at rest)
+    std::vector<int> nodeOffset_;        // of each node's unknowns (3 for a point, 6 for a body)
+    int nodeUnknowns_ = 0;
+    std::vector<NodeInput> nodeInput_;
+    std::vector<std::vector<unsigned char>> nodeLineStart_;  // the node lines' states at the step's start
+    int nodeIterations_ = 0, nodeSubsteps_ = 1;
+    double nodeResidual_ = 0.0;
+    double t0_ = 0.0;
+    double lastStep_ = 0.0;
+    UCInputs lastInputs_{};  // of the last step (or the initialization)
+    UCOutputs outputs_{};
+    bool stiffnessWarned_ = false, substepsReported_ = false;
+    bool quaternionNormalized_ = false;  // a quaternion input off unit norm was reported (once)
+    bool stiffnessCurrent_ = false;  // outputs_'s body stiffness is that of the present state
+    std::string event_;
+    std::vector<unsigned char> lineBuffer_;
+    // body_derivatives of each body for the state of stamp_ (a master asks column by column)
+    long stamp_ = 0;
+    std::vector<long> derivativeStamp_;
+    std::vector<std::array<double, 6 * UC_BODY_DERIVATIVE_INPUTS>> derivativeCache_;
+};
+
+}  // namespace uc

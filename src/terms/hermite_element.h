@@ -1,0 +1,132 @@
+// hermite_element.h - cubic Hermite cable element: shape functions, quadrature, and the
+// internal forces (axial, bending) with their exact Jacobians (docs/model.md).
+//
+// Element DOF order (12): [r_i, r'_i, r_j, r'_j], each a 3-vector; block a = 0..3.
+// r(xi) = H1 r_i + l H2 r'_i + H3 r_j + l H4 r'_j,  xi = (s - s_i)/l in [0, 1].
+// Every force here is a *residual* contribution: R = M r'' + f_internal - f_external.
+#pragma once
+
+#include "core/types.h"
+
+namespace uc {
+
+// Scalar shape functions N_a and their arc-length derivatives dN_a/ds, d2N_a/ds2 at one point.
+struct ShapeValues {
+    double N[4];
+    double dN[4];
+    double d2N[4];
+};
+
+ShapeValues hermite_shape(double xi, double length);
+
+// Gauss-Legendre rule mapped to [0, 1]; weights sum to 1. n = 1..5.
+struct GaussRule {
+    int n;
+    double xi[5];
+    double w[5];
+};
+
+GaussRule gauss_rule(int n);
+
+// A quadrature point of an element: shape values and weight * element length.
+struct QuadPoint {
+    ShapeValues shape;
+    double weight;  // w * l: integrates over unstretched arc length
+};
+
+// Precomputed, immutable element tables of one element length (one per run of equal elements).
+struct ElementTables {
+    double length = 0.0;
+    // Axial strain: sampled at 5 Gauss points and projected (L2, per element) onto the first
+    // `axialModes` Legendre polynomials; the tension is the projected field. Projecting onto
+    // fewer modes than the strain has removes membrane locking (docs/model.md).
+    static constexpr int nAxial = 5;
+    QuadPoint axial[nAxial];
+    int axialModes = 3;
+    double axialModeWeight[3] = {1.0, 1.0, 1.0};  // stiffness factor of each projected strain mode
+    double legendre[3][nAxial];  // orthonormal Legendre polynomials on [0, 1] at the axial points
+    int nLoad = 0;
+    QuadPoint load[5];
+    // Seabed contact: nContact points (3-point Gauss rules on equal intervals) when the line asks
+    // for contact sampled more densely than the axial points (seabedContactSpacing); 0: the axial
+    // points serve.
+    static constexpr int kMaxContact = 48;
+    int nContact = 0;
+    QuadPoint contact[kMaxContact];
+    Mat4 mass;     // int N_a N_b ds (exact)
+    Mat4 bending;  // int N''_a N''_b ds (exact)
+};
+
+// contactSpacing > 0: seabed contact sampled at most that far apart (see ElementTables::contact).
+ElementTables make_element_tables(double length, int loadPoints, int axialModes, double contactSpacing = 0.0);
+
+// The matrix of the cross product with v: skew(v) w = v x w.
+inline Mat3 skew(const Vec3& v) {
+    Mat3 m;
+    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+    return m;
+}
+
+// Interpolates a 3-vector field from the element's 12 nodal values.
+inline Vec3 interpolate(const double (&N)[4], const double* X) {
+    Vec3 r = Vec3::Zero();
+    for (int a = 0; a < 4; ++a) r += N[a] * Eigen::Map<const Vec3>(X + 3 * a);
+    return r;
+}
+
+// Axial tension P = EA (|r'| - 1) + c d|r'|/dt, projected (see ElementTables). Two-sided
+// (compression allowed) by default; tension-only (a chain or rope that goes slack) when
+// tensionOnly is set: the element's mean tension is slack_law(P mean), a C1 ramp that equals it
+// above kSlackStrain EA and is 0 below -kSlackStrain EA (so the law shifts the stretch by at most
+// kSlackStrain where it matters); the softened higher strain modes stay two-sided.
+struct AxialProps {
+    double EA;
+    double damping;
+    // Caps every strain mode's stiffness factor (the static solver starts on a soft cable).
+    double modeCap = 1.0;
+    bool tensionOnly = false;
+};
+
+constexpr double kSlackStrain = 1e-5;
+
+// The tension-only law T(P) and its slope dT/dP, for the half-width `width` of the ramp:
+// 0 below -width, (P + width)^2 / (4 width) inside, P above.
+struct SlackLaw {
+    double tension, slope;
+};
+inline SlackLaw slack_law(double P, double width) {
+    if (P >= width) return {P, 1.0};
+    if (P <= -width) return {0.0, 0.0};
+    const double u = P + width;
+    return {u * u / (4.0 * width), u / (2.0 * width)};
+}
+
+// Adds int T t dN_a ds (t = r'/|r'|, T the projected tension) to R (12 values).
+void add_axial_force(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
+                     double* R);
+// Adds dR/dX to K and dR/dXdot to C.
+void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
+                        Mat12& K, Mat12& C);
+// Projected tension at the ElementTables::nAxial sampling points; rp (may be null) receives r' there.
+void axial_tensions(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
+                    double* T, Vec3* rp = nullptr);
+// Axial strain energy 0.5 EA int (projected strain)^2 ds (for tests).
+double axial_energy(const ElementTables& e, const AxialProps& p, const double* X);
+
+// Bending: R_a += EI sum_b B_ab X_b with B = int N''_a N''_b ds, energy 0.5 EI int |r''|^2 ds.
+void add_bending_force(const ElementTables& e, double EI, const double* X, double* R);
+void add_bending_jacobian(const ElementTables& e, double EI, Mat12& K);
+double bending_energy(const ElementTables& e, double EI, const double* X);
+
+// Torque H (constant along the cable, Garrett's rod; the paper's eq. 9):
+// the strong-form term -(H r' x r'')' gives, after integration by parts, the residual
+// R_a -= H int (r' x r'') dN_a ds. Its Jacobian is not symmetric (a constant torque is not
+// conservative under general end conditions).
+void add_torque_force(const ElementTables& e, double H, const double* X, double* R);
+void add_torque_jacobian(const ElementTables& e, double H, const double* X, Mat12& K);
+
+// Structural (consistent) mass: R_a += m sum_b M_ab Xdd_b.
+void add_mass_force(const ElementTables& e, double massPerLength, const double* Xdd, double* R);
+void add_mass_jacobian(const ElementTables& e, double massPerLength, Mat12& M);
+
+}  // namespace uc

@@ -1,0 +1,185 @@
+// hydrodynamics.cpp - weight/buoyancy, Morison drag and added mass at quadrature points.
+#include "terms/hydrodynamics.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace uc {
+namespace {
+
+
+// d(phi)/dz of the submerged fraction.
+double submerged_fraction_slope(double z, double diameter) {
+    const double x = 0.5 - z / diameter;
+    return (x > 0.0 && x < 1.0) ? -1.0 / diameter : 0.0;
+}
+
+}  // namespace
+
+Vec3 CurrentField::at(double z, Vec3* slope, Vec3* acceleration) const {
+    Vec3 u = uniform;
+    if (!rate.isZero(0.0)) u += rate * (time - rateStart);  // a current changing over the step
+    if (slope) slope->setZero();
+    if (acceleration) *acceleration = rate;  // a uniform current changing over the step accelerates the water
+    if (profile == nullptr || profile->rows == 0) return u;
+    const CurrentProfile& p = *profile;
+    // The profile times currentScale, which may change linearly over the step.
+    const double factor = profileScale * (scale + scaleRate * (time - rateStart));
+    const double depth = -z;
+    int i = 0;
+    while (i + 1 < p.rows && p.depth[i + 1] < depth) ++i;
+    Vec3 shape;  // the profile's velocity at this depth
+    if (p.rows == 1 || depth <= p.depth[0] || depth >= p.depth[p.rows - 1]) {
+        const int k = depth <= p.depth[0] ? 0 : p.rows - 1;
+        shape = Vec3(p.ux[k], p.uy[k], 0.0);
+    } else {
+        const double span = p.depth[i + 1] - p.depth[i];
+        const double w = (depth - p.depth[i]) / span;
+        const Vec3 lo(p.ux[i], p.uy[i], 0.0), hi(p.ux[i + 1], p.uy[i + 1], 0.0);
+        if (slope) *slope = -factor * (hi - lo) / span;  // d/dz = -d/d(depth)
+        shape = (1.0 - w) * lo + w * hi;
+    }
+    if (acceleration && scaleRate != 0.0) *acceleration += profileScale * scaleRate * shape;
+    return u + factor * shape;
+}
+
+void CurrentField::flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA, WaveExpansion* cache) const {
+    Vec3 slope;
+    U = at(r.z(), &slope, &A);
+    dU.setZero();
+    dU.col(2) = slope;
+    dA.setZero();
+    if (!waves()) return;
+    Vec3 u, a;
+    Mat3 du;
+    if (cache) {
+        sea->expanded_kinematics(r, time, *cache, u, a, &du, &dA);
+    } else {
+        sea->kinematics(r, time, u, a, &du, &dA);
+    }
+    U += u;
+    dU += du;
+    A += a;  // the waves' acceleration on top of the changing current's
+}
+
+void CurrentField::flow(const Vec3& r, Vec3& U, Vec3& A, WaveExpansion* cache) const {
+    U = at(r.z(), nullptr, &A);
+    if (!waves()) return;
+    Vec3 u, a;
+    if (cache) {
+        sea->expanded_kinematics(r, time, *cache, u, a);
+    } else {
+        sea->kinematics(r, time, u, a, nullptr, nullptr);
+    }
+    U += u;
+    A += a;
+}
+
+double submerged_fraction(double z, double diameter) {
+    return std::clamp(0.5 - z / diameter, 0.0, 1.0);
+}
+
+Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd, const Vec3& current,
+                const Mat3& dU, bool waves, const Vec3& A, const Mat3& dA, PointLoadJacobian* J) {
+    const double phi = submerged_fraction(r.z(), p.diameter);
+    const double stretch = rp.norm();
+    const Vec3 t = rp / stretch;
+    const Vec3 u = current - rd;
+    const double a = t.dot(u);
+    const Vec3 un = u - a * t;
+    const double sn = std::sqrt(un.squaredNorm() + kDragVelocityFloor * kDragVelocityFloor);
+    const double sa = std::sqrt(a * a + kDragVelocityFloor * kDragVelocityFloor);
+    const double cn = 0.5 * p.rho * p.Cdn * p.diameter;
+    const double ct = 0.5 * p.rho * p.Cdt * kPi * p.diameter;
+    const Vec3 drag = cn * sn * un + ct * sa * a * t;
+    const double rhoA = p.rho * p.area;
+    const Vec3 weight(0.0, 0.0, -(p.massPerLength - phi * rhoA) * p.gravity);
+
+    Vec3 inertia = Vec3::Zero();
+    const double ta = t.dot(rdd);
+    if (p.addedMass) inertia = rhoA * (p.Can * (rdd - ta * t) + p.Cat * ta * t);
+
+    // Fluid inertia, Froude-Krylov plus added mass: rho A ((1 + Can) A_n + (1 + Cat) A_t). The
+    // tangential Froude-Krylov part belongs with the buoyancy taken as a load per length (effective
+    // tension): both are the pressure of the water around a closed section.
+    const double kn = rhoA * (1.0 + p.Can), kt = rhoA * (1.0 + p.Cat);
+    const double At = waves ? t.dot(A) : 0.0;
+    if (waves) inertia -= kn * (A - At * t) + kt * At * t;
+
+    const Vec3 F = phi * inertia - weight - phi * drag;
+    if (J == nullptr) return F;
+
+    const Mat3 I = Mat3::Identity();
+    const Mat3 tt = t * t.transpose();
+    const Mat3 P = I - tt;
+    // Drag: d/du and d/dt (t a unit vector), then dt/dr' = P/|r'|.
+    const Mat3 dFn_dun = cn * (sn * I + un * un.transpose() / sn);
+    const double dsaa = sa + a * a / sa;  // d(sa a)/da
+    const Mat3 dDrag_du = dFn_dun * P + ct * dsaa * tt;
+    const Mat3 dDrag_dt = -dFn_dun * (t * u.transpose() + a * I) + ct * (dsaa * t * u.transpose() + sa * a * I);
+    Mat3 dInertia_dt = Mat3::Zero();
+    Mat3 dInertia_drdd = Mat3::Zero();
+    if (p.addedMass) {
+        dInertia_drdd = rhoA * (p.Can * P + p.Cat * tt);
+        dInertia_dt = rhoA * (p.Cat - p.Can) * (t * rdd.transpose() + ta * I);
+    }
+    if (waves) dInertia_dt += (kn - kt) * (t * A.transpose() + At * I);  // d(-kn A_n - kt A_t)/dt
+    const Mat3 dt_drp = P / stretch;
+    // u = U - r_dot: dF/dr_dot = + phi dDrag/du.
+    J->drd = phi * dDrag_du;
+    J->drp = phi * (dInertia_dt - dDrag_dt) * dt_drp;
+    J->drdd = phi * dInertia_drdd;
+    // F depends on r through the water's motion: dF/dr = -phi dDrag/du dU/dr - phi (kn P + kt t t^T) dA/dr.
+    J->dr.setZero();
+    if (waves) {
+        J->dr = -phi * dDrag_du * dU - phi * (kn * P + kt * tt) * dA;
+    } else {
+        J->dr.col(2) = -phi * dDrag_du * dU.col(2);
+    }
+    const double dphi = submerged_fraction_slope(r.z(), p.diameter);
+    if (dphi != 0.0) {
+        Vec3 dF_dphi = inertia - drag;
+        dF_dphi.z() += -rhoA * p.gravity;  // -d(weight)/dphi: weight_z = -(m - phi rho A) g
+        J->dr.col(2) += dF_dphi * dphi;
+    }
+    return F;
+}
+
+void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentField& current, const double* X,
+                     const double* Xd, const double* Xdd, double* R, WaveExpansion* waveCache) {
+    for (int g = 0; g < e.nLoad; ++g) {
+        const QuadPoint& q = e.load[g];
+        const Vec3 r = interpolate(q.shape.N, X);
+        Vec3 U, A;
+        current.flow(r, U, A, waveCache ? waveCache + g : nullptr);  // the load without its Jacobian needs no gradients of the flow
+        const Mat3 unused = Mat3::Zero();
+        const Vec3 F = point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd),
+                                  interpolate(q.shape.N, Xdd), U, unused, current.accelerates(), A, unused, nullptr);
+        for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += (q.weight * q.shape.N[a]) * F;
+    }
+}
+
+void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const CurrentField& current,
+                        const double* X, const double* Xd, const double* Xdd, Mat12& K, Mat12& C,
+                        Mat12& M, WaveExpansion* waveCache) {
+    PointLoadJacobian J;
+    for (int g = 0; g < e.nLoad; ++g) {
+        const QuadPoint& q = e.load[g];
+        const Vec3 r = interpolate(q.shape.N, X);
+        Vec3 U, A;
+        Mat3 dU, dA;
+        current.flow(r, U, dU, A, dA, waveCache ? waveCache + g : nullptr);
+        point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd), interpolate(q.shape.N, Xdd), U,
+                   dU, current.accelerates(), A, dA, &J);
+        for (int a = 0; a < 4; ++a) {
+            const double wa = q.weight * q.shape.N[a];
+            for (int b = 0; b < 4; ++b) {
+                K.block<3, 3>(3 * a, 3 * b) += wa * (q.shape.N[b] * J.dr + q.shape.dN[b] * J.drp);
+                C.block<3, 3>(3 * a, 3 * b) += (wa * q.shape.N[b]) * J.drd;
+                if (p.addedMass) M.block<3, 3>(3 * a, 3 * b) += (wa * q.shape.N[b]) * J.drdd;
+            }
+        }
+    }
+}
+
+}  // namespace uc

@@ -1,0 +1,78 @@
+// seabed.h - flat seabed at z = -waterDepth: penalty contact per unit length with damping and
+// regularized Coulomb friction (docs/model.md). Residual sign: F = -f_seabed.
+//
+// Penetration p = -waterDepth - z. The normal force per length is k g(p) with g a C1 ramp that
+// starts at the seabed: 0 above it, p^2 / (2 delta) over the first delta = 5 % of the diameter of
+// penetration, p - delta / 2 beyond, so that Newton and BDF see a smooth contact; the damping c (-z_dot) acts with the same contact fraction g'(p) in
+// [0, 1]. Friction opposes the horizontal velocity v_h with magnitude mu k g(p) |v_h| /
+// sqrt(|v_h|^2 + v_eps^2): regularized Coulomb, the same coefficient axially and laterally.
+#pragma once
+
+#include "terms/hermite_element.h"
+
+namespace uc {
+
+struct SeabedProps {
+    bool enabled = false;
+    double depth = 0.0;      // waterDepth [m]
+    double stiffness = 0.0;  // [N/m2]: force per length per metre of penetration
+    double damping = 0.0;    // [N.s/m2]
+    double friction = 0.0;   // Coulomb coefficient
+    double smoothing = 0.0;  // delta [m]
+};
+
+// Friction regularization velocity [m/s]: below it friction grows linearly with sliding speed.
+constexpr double kFrictionVelocity = 0.01;
+
+struct SeabedJacobian {
+    Mat3 dr, drd;  // dF/dr, dF/dr_dot
+};
+
+// Per-length residual contribution at a point; fills J when non-null. Zero above the seabed.
+Vec3 seabed_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJacobian* J);
+
+// The seabed contact of a point (an attachment, a towed body, the tip of a free end): the line's
+// contact per length times a footprint [m], the length of line with the same contact area. The
+// seabedStiffness per length is a stiffness per area (MoorDyn's kBot) times the diameter, so a body
+// of size b (the cube root of its volume, or of a steel body's of its mass) presses on b^2 / d.
+struct PointContact {
+    SeabedProps seabed{};
+    double footprint = 0.0;
+};
+double body_size(double mass, double volume);                        // b [m]
+double body_footprint(double mass, double volume, double diameter);  // b^2 / d [m]
+Vec3 point_contact_load(const PointContact& c, const Vec3& r, const Vec3& rd, SeabedJacobian* J);
+
+// Penetration [m] at which a line of this submerged weight per length [N/m] rests on the seabed.
+double resting_penetration(const SeabedProps& p, double weight);
+
+// `seabedRest` 1: the contact surface raised by the rest penetration of this weight per length
+// (of contact footprint), so that what rests there lies at z = -waterDepth. Nothing for a buoyant
+// or weightless part, or a disabled seabed.
+void rest_at_depth(SeabedProps& p, double weight);
+
+// True when no point of the element (its 12 DOFs at X) can touch the contact band, so that
+// seabed_load is exactly zero at every sampling point, which can then be skipped without changing a
+// bit of the result.
+bool above_contact(const ElementTables& e, const SeabedProps& p, const double* X);
+
+// The points at which an element's contact is integrated: its contact rule where it has one (and
+// `axialOnly` is not set), else its axial points.
+struct ContactPoints {
+    const QuadPoint* points;
+    int count;
+};
+inline ContactPoints contact_points(const ElementTables& e, bool axialOnly = false) {
+    if (e.nContact > 0 && !axialOnly) return {e.contact, e.nContact};
+    return {e.axial, ElementTables::nAxial};
+}
+
+// Element integrals over the element's contact points (contact_points: the 5 axial sampling points
+// unless seabedContactSpacing asks for more; contact is sampled more finely than the hydrodynamic
+// loads because it switches on and off along the cable).
+void add_seabed_force(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd, double* R,
+                      bool axialOnly = false);
+void add_seabed_jacobian(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd,
+                         Mat12& K, Mat12& C, bool axialOnly = false);
+
+}  // namespace uc
