@@ -7,7 +7,7 @@ import pytest
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import fmi2Error
 
-from studies.manoeuvre import constant_speed, run_tow
+from studies.cases.manoeuvre import constant_speed, run_tow
 from ucable.steady_tow import KNOT
 
 BAD = [

@@ -11,7 +11,7 @@ Not marked slow: it is the foundation acceptance run (< 1 s CPU with 20 elements
 import numpy as np
 import pytest
 
-from studies.manoeuvre import SCALAR_OUTPUTS, hopland_accelerate, run_tow
+from studies.cases.manoeuvre import SCALAR_OUTPUTS, hopland_accelerate, run_tow
 from ucable.steady_tow import KNOT, CableProperties, solve_steady_tow
 
 

@@ -11,7 +11,7 @@ import math
 import numpy as np
 import pytest
 
-from studies import hard_cases as hc
+from studies.cases import hard_cases as hc
 from ucable.steady_tow import KNOT
 
 

@@ -15,8 +15,8 @@ import math
 import numpy as np
 import pytest
 
-from studies import heave_lowering
-from studies.heave_lowering import Scene, run
+from studies.cases import heave_lowering
+from studies.cases.heave_lowering import Scene, run
 
 RHO, G = 1025.0, 9.81
 PERIOD = 10.0
@@ -78,7 +78,7 @@ def test_the_body_heaves_with_the_stern_amplified_by_the_line_spring(regular):
 
 
 def test_the_scene_command_writes_its_csv_and_figure(fmu_file, tmp_path):
-    from studies.manoeuvre_cli import main
+    from studies.cosim.manoeuvre_cli import main
     assert main(["heave-lowering", "--t-end", "2", "--components", "10", "--nElements", "4",
                  "--fmu", str(fmu_file), "--out", str(tmp_path)]) == 0
     data = np.genfromtxt(tmp_path / "heave-lowering.csv", delimiter=",", names=True)

@@ -15,7 +15,7 @@ import math
 import numpy as np
 import pytest
 
-from studies.manoeuvre import constant_speed, run_tow
+from studies.cases.manoeuvre import constant_speed, run_tow
 from ucable.steady_tow import KNOT, CableProperties, solve_steady_tow
 
 N_ELEMENTS = 20

@@ -155,7 +155,7 @@ def test_the_vessel_reads_its_own_rao_table_under_both_masters(fmu_file, tmp_pat
     moves the tow point (z: heave, roll and pitch at the lever arm; 0 in calm water) 1.5 times as far, to
     2 % of its amplitude: the manoeuvre feels the cable's tow force, which the larger motion changes
     (0.8 % measured; the default table is 50 % off)."""
-    from studies.rao_box import DEFAULT_OUT as RAO_CSV
+    from studies.cases.rao_box import DEFAULT_OUT as RAO_CSV
     waves = {"waves.mode": 1, "waves.height": 2.0, "waves.period": 8.0, "waves.direction": 2.5}
     rows = [line.split(",") for line in RAO_CSV.read_text().splitlines()]
     scaled = [r if len(r) != 14 or r[0] == "period" or r[0].startswith("#")

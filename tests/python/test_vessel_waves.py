@@ -15,9 +15,9 @@ import math
 import numpy as np
 import pytest
 
-from studies.rao_box import DEFAULT_OUT as RAO_CSV
-from studies.rao_box import fmu_with_table, interpolate
-from studies.rao_box import read as read_rao
+from studies.cases.rao_box import DEFAULT_OUT as RAO_CSV
+from studies.cases.rao_box import fmu_with_table, interpolate
+from studies.cases.rao_box import read as read_rao
 from ucable.system import partner_fmu
 
 G = 9.81
