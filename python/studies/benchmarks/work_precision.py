@@ -19,9 +19,7 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
 import sys
-import tempfile
 import time
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -33,7 +31,7 @@ from ucable.fmu import CableFMU
 from ..cases.manoeuvre import hopland_accelerate
 from ucable.paths import REPO_ROOT, require_fmu
 from ucable.progress import ProgressBar
-from ..peers.quiet import Quiet
+from ..peers import moordyn
 from ucable.steady_tow import KNOT
 
 OUT_DIR = REPO_ROOT / "out" / "bench_work_precision"
@@ -480,37 +478,6 @@ ID    LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
     return path
 
 
-def set_line_nodes(system, line, n_seg, shape):
-    """Start MoorDyn's line at rest in the given shape (3, 21 stations, k = 0 at the tow point).
-
-    MoorDyn 2.7 has no API to set node positions and its initial-condition solver ignores
-    currents; moordyn.Init_NoIC places a uniformly stretched straight line whose axial snap at the
-    free end (~c eps = 0.3 m/s) excites a drag-damped mode with a 240 s time constant (measured:
-    1.2 m end-position error after 300 s). So the node positions are written into MoorDyn's own
-    serialized state (each internal node's coordinates replaced where they occur) and read back
-    through moordyn.Deserialize; the result is checked with GetLineNodePos."""
-    import moordyn
-
-    data = np.frombuffer(bytes(moordyn.Serialize(system)), dtype=np.float64).copy()
-    stations = np.linspace(0.0, 1.0, shape.shape[1])
-    targets = {}
-    for i in range(1, n_seg):
-        u = 1.0 - i / n_seg  # MoorDyn node 0 is the free end (our s = L), node N the tow point
-        q = np.array(moordyn.GetLineNodePos(line, i))
-        new = np.array([np.interp(u, stations, shape[d]) for d in range(3)])
-        hit = np.where((data[:-2] == q[0]) & (data[1:-1] == q[1]) & (data[2:] == q[2]))[0]
-        if len(hit) == 0:
-            raise RuntimeError("MoorDyn state layout not recognized (node position not found)")
-        for j in hit:
-            data[j:j + 3] = new
-        targets[i] = new
-    moordyn.Deserialize(system, data.tobytes())
-    for i, new in targets.items():
-        got = np.array(moordyn.GetLineNodePos(line, i))
-        if np.max(np.abs(got - new)) > 1e-9:
-            raise RuntimeError(f"MoorDyn node {i} not set from the serialized state: {got} != {new}")
-
-
 def run_moordyn(case, n_seg, dt, steady_shape, t_stop=None, label=""):
     """One MoorDyn run with time step dt (adjusted so that comm_step / dt is an integer).
     Returns a Run, or None when it blew up. In a case with frame_speed (the Hopland tow) MoorDyn
@@ -518,32 +485,27 @@ def run_moordyn(case, n_seg, dt, steady_shape, t_stop=None, label=""):
     t = 0 is then a state at rest, which MoorDyn can start from (its initial-condition solver does
     not apply currents, and in the Earth frame a tow from rest needs > 2000 s to settle).
     steady_shape (3, 21): the steady-tow shape at the 21 stations (from the reference run), set
-    as MoorDyn's initial node positions (see set_line_nodes); None for anchored cases, which
+    as MoorDyn's initial node positions (see peers.moordyn.System.set_line_nodes); None for anchored cases, which
     start from MoorDyn's own static initial condition (moordyn.Init)."""
-    import moordyn
-
     sub = int(math.ceil(case.comm_step / dt - 1e-9))
     dt = case.comm_step / sub
     t_stop = case.t_end if t_stop is None else t_stop
     times = sample_times(case)
     times = times[times <= t_stop + 1e-9]
     V0 = case.frame_speed
-    with tempfile.TemporaryDirectory() as tmp, Quiet():
-        cwd = os.getcwd()
-        os.chdir(tmp)  # MoorDyn reads current_profile.txt from the working directory
-        try:
-            path = moordyn_input(case, n_seg, dt, Path(tmp), steady_shape)
-            system = moordyn.Create(str(path))
+    ok = True
+    try:  # chdir: MoorDyn reads current_profile.txt from the working directory
+        with moordyn.System(write=lambda tmp: moordyn_input(case, n_seg, dt, tmp, steady_shape), chdir=True) as md:
             x0, v0, _ = case.traj.state(0.0)
             xf = [x0[0], x0[1], x0[2]]
             vf = [v0[0] - V0, v0[1], v0[2]]
             if case.anchor is None:  # a free far end: start from our steady (or equilibrium) shape
-                moordyn.Init_NoIC(system, xf, vf)
-                set_line_nodes(system, moordyn.GetLine(system, 1), n_seg, steady_shape)
+                md.init(xf, vf, no_ic=True)
+                md.set_line_nodes(md.line(1), n_seg, steady_shape)
             else:
-                moordyn.Init(system, xf, vf)
-            line = moordyn.GetLine(system, 1)
-            end_point = moordyn.GetPoint(system, 1)
+                md.init(xf, vf)
+            line = md.line(1)
+            end_point = md.point(1)
             force = np.zeros((len(times), 3))
             end = np.zeros((len(times), 3))
             mid = np.zeros((len(times), 3))
@@ -551,7 +513,6 @@ def run_moordyn(case, n_seg, dt, steady_shape, t_stop=None, label=""):
             top_nodes = ([n_seg, n_seg - n_seg // 20, n_seg - n_seg // 10] if n_seg % 20 == 0
                          else None)  # arc lengths 0, L/20, L/10 from the top (node 0: anchor)
             tt = 0.0
-            ok = True
             # pre-computed coupled-point trajectory in MoorDyn's frame, one entry per MoorDyn step
             nsteps = (len(times) - 1) * sub
             traj_x, traj_v = [], []
@@ -565,21 +526,21 @@ def run_moordyn(case, n_seg, dt, steady_shape, t_stop=None, label=""):
             def record(k, f):
                 t = times[k]
                 force[k] = f
-                e = moordyn.GetPointPos(end_point) if case.anchor is None else moordyn.GetLineNodePos(line, 0)
-                m = moordyn.GetLineNodePos(line, n_seg // 2)
+                e = md.point_position(end_point) if case.anchor is None else md.node_position(line, 0)
+                m = md.node_position(line, n_seg // 2)
                 end[k] = (e[0] + V0 * t, e[1], e[2])
                 mid[k] = (m[0] + V0 * t, m[1], m[2])
                 if top_nodes is not None:
                     for j, node in enumerate(top_nodes):
-                        q = moordyn.GetLineNodePos(line, node)
+                        q = md.node_position(line, node)
                         top[k, j] = (q[0] + V0 * t, q[1], q[2])
 
-            step = moordyn.Step
+            step = md.step_raw
             cpu0 = time.process_time()
             i = 0
             for k in range(len(times) - 1):
                 for _ in range(sub):
-                    f = step(system, traj_x[i], traj_v[i], tt, dt)
+                    f = step(traj_x[i], traj_v[i], tt, dt)
                     tt += dt
                     i += 1
                 if not (np.all(np.isfinite(f)) and max(abs(c) for c in f) < limit):
@@ -589,12 +550,9 @@ def run_moordyn(case, n_seg, dt, steady_shape, t_stop=None, label=""):
             cpu = time.process_time() - cpu0
             # row 0 (t = 0) stays empty: moordyn.Step returns forces at the end of each call and
             # the error metrics compare t > 0 only
-            moordyn.Close(system)
-        except Exception:  # MoorDyn reports NaN states as errors
-            ok = False
-            cpu = math.nan
-        finally:
-            os.chdir(cwd)
+    except Exception:  # MoorDyn reports NaN states as errors
+        ok = False
+        cpu = math.nan
     if not ok:
         return None
     return Run("MoorDyn", n_seg, f"dt {dt:.3g} s", cpu, times, force, end, mid, top,

@@ -14,7 +14,6 @@ generation applies the current too, but stops at its threshold; the run settles 
 from __future__ import annotations
 
 import argparse
-import shutil
 import sys
 import tempfile
 from pathlib import Path
@@ -23,7 +22,7 @@ import numpy as np
 
 from ucable.fmu import CableFMU
 from ucable.paths import REPO_ROOT
-from ..peers.quiet import Quiet
+from ..peers import moordyn
 
 CHAIN = REPO_ROOT / "tests" / "data" / "decks" / "chain.dat"
 FAIRLEAD = (0.0, 0.0, -70.0)
@@ -64,23 +63,14 @@ def fmu_statics(fmu, path: Path, **extra) -> dict:
 
 def moordyn_rest(path: Path, t_end: float = 200.0, average: float = 20.0, step: float = 1.0) -> np.ndarray:
     """MoorDyn's force on the held fairlead, the mean over the run's last `average` seconds."""
-    import moordyn
-
-    with tempfile.TemporaryDirectory() as tmp, Quiet():
-        for f in (path, path.parent / "current_profile.txt"):
-            shutil.copy(f, Path(tmp) / f.name)
-        system = moordyn.Create(str(Path(tmp) / path.name))
-        try:
-            x, v = list(FAIRLEAD), [0.0, 0.0, 0.0]
-            moordyn.Init(system, x, v)
-            forces, t = [], 0.0
-            while t < t_end - 1e-9:
-                f = moordyn.Step(system, x, v, t, step)
-                t += step
-                if t > t_end - average - 1e-9:
-                    forces.append(np.array(f, float))
-        finally:
-            moordyn.Close(system)
+    x, v = list(FAIRLEAD), [0.0, 0.0, 0.0]
+    with moordyn.System(path, also=[path.parent / "current_profile.txt"], init=(x, v)) as md:
+        forces, t = [], 0.0
+        while t < t_end - 1e-9:
+            f = md.step(x, v, t, step)
+            t += step
+            if t > t_end - average - 1e-9:
+                forces.append(np.array(f, float))
     return np.mean(forces, axis=0)
 
 

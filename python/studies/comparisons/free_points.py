@@ -14,7 +14,6 @@ from __future__ import annotations
 import contextlib
 import io
 import re
-import tempfile
 import time
 import warnings
 from pathlib import Path
@@ -22,6 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from ucable.fmu import CableFMU
+from ..peers import moordyn
 from .mooring_system import DECKS, _moorpy_system, fmu_parameters, read_system_deck
 
 BUOY = DECKS / "subsurface_buoy.dat"
@@ -230,60 +230,12 @@ def fmu_release(fmu, path: Path, point: int, t_end: float, comm_step: float = 0.
             "cpu": cpu}
 
 
-# MoorDyn runs in a process of its own that loads nothing else: loaded after MoorPy or the FMU's
-# modules, MoorDyn 2.7's Create crashes at random on these decks (a segmentation fault, most runs).
-_MOORDYN_RUN = r"""
-import math, shutil, sys, tempfile, time
-from pathlib import Path
-import numpy as np
-import moordyn
-
-deck, point, n_lines, t_end, h, out = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4]), \
-    float(sys.argv[5]), sys.argv[6]
-times = np.arange(0.0, t_end + 0.5 * h, h)
-tension = np.zeros((len(times), n_lines))
-position = np.zeros((len(times), 3))
-with tempfile.TemporaryDirectory() as tmp:
-    copy = Path(tmp) / Path(deck).name
-    shutil.copy(deck, copy)
-    system = moordyn.Create(str(copy))
-    moordyn.Init(system, [], [])
-    lines = [moordyn.GetLine(system, k) for k in range(1, n_lines + 1)]
-    ends = [moordyn.GetLineN(ln) for ln in lines]
-    handle = moordyn.GetPoint(system, point)
-
-    def record(i):
-        # MoorDyn's tensions are its segments', half a segment from the end node: extrapolated linearly
-        # from the last two segments (node N - 1 has their mean) to node N
-        tension[i] = [2.0 * np.linalg.norm(moordyn.GetLineNodeTen(ln, n)) -
-                      np.linalg.norm(moordyn.GetLineNodeTen(ln, n - 1)) for ln, n in zip(lines, ends)]
-        position[i] = moordyn.GetPointPos(handle)
-
-    record(0)
-    cpu0 = time.process_time()
-    for k in range(len(times) - 1):
-        moordyn.Step(system, [], [], times[k], h)
-        record(k + 1)
-    cpu = time.process_time() - cpu0
-    moordyn.Close(system)
-np.savez(out, t=times, tension=tension, position=position, cpu=cpu)
-"""
-
-
 def moordyn_release(path: Path, point: int, t_end: float, comm_step: float = 0.1) -> dict:
     """MoorDyn v2 fed the same deck (no coupled objects: one call per communication step, MoorDyn
-    substepping at dtM): each line's tension at its end B and the point's position (tensions from
-    t = comm_step: MoorDyn computes them in its first step)."""
-    import subprocess
-    import sys
-
-    deck = read_system_deck(path)
-    with tempfile.TemporaryDirectory() as tmp:
-        out = Path(tmp) / "moordyn.npz"
-        subprocess.run([sys.executable, "-c", _MOORDYN_RUN, str(path), str(point), str(deck.lines), str(t_end),
-                        str(comm_step), str(out)], check=True, capture_output=True)
-        with np.load(out) as data:
-            return {k: (float(data[k]) if k == "cpu" else np.array(data[k])) for k in data.files}
+    substepping at dtM), in a process of its own (peers.moordyn.release: loaded after MoorPy or the
+    FMU's modules, MoorDyn 2.7's Create crashes at random on these decks): each line's tension at its
+    end B and the point's position (tensions from t = comm_step: MoorDyn computes them in its first step)."""
+    return moordyn.release(path, point, read_system_deck(path).lines, t_end, comm_step)
 
 
 def rms_difference(a: dict, b: dict, t_from: float = 0.0) -> float:

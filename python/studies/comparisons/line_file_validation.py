@@ -19,7 +19,6 @@ from __future__ import annotations
 import contextlib
 import io
 import math
-import shutil
 import tempfile
 import time
 import warnings
@@ -30,7 +29,7 @@ import numpy as np
 
 from ucable.fmu import CableFMU
 from ucable.paths import REPO_ROOT
-from ..peers.quiet import Quiet
+from ..peers import moordyn
 
 DECKS = REPO_ROOT / "tests" / "data" / "decks"
 
@@ -166,45 +165,16 @@ def fmu_statics(fmu, deck: Deck, dx: float = 0.0, **extra) -> dict:
                 "grounded": length - c.get("touchdownArcLength")}
 
 
-@contextlib.contextmanager
-def _moordyn_system(deck: Deck):
-    """A MoorDyn system of a copy of the deck in a temporary directory (MoorDyn writes its output
-    files next to its input), silenced, closed at the end."""
-    import moordyn
-
-    with tempfile.TemporaryDirectory() as tmp, Quiet():
-        path = Path(tmp) / deck.path.name
-        shutil.copy(deck.path, path)
-        system = moordyn.Create(str(path))
-        try:
-            yield system
-        finally:
-            moordyn.Close(system)
-
-
-def _moordyn_end_tensions(system, deck: Deck, force) -> tuple:
+def _moordyn_end_tensions(md: moordyn.System, deck: Deck, force) -> tuple:
     """(fairlead, anchor) tension: |force on the coupled point|, |end-segment tension| at the anchor."""
-    import moordyn
-
-    anchor_line, anchor_node = None, None
-    for k in range(1, moordyn.GetNumberLines(system) + 1):
-        line = moordyn.GetLine(system, k)
-        n = moordyn.GetLineN(line)
-        for node in (0, n):
-            if np.allclose(moordyn.GetLineNodePos(line, node), deck.anchor, atol=1e-6):
-                anchor_line, anchor_node = line, node
-    T_anchor = float(np.linalg.norm(moordyn.GetLineNodeTen(anchor_line, anchor_node)))
-    return float(np.linalg.norm(force)), T_anchor
+    return float(np.linalg.norm(force)), md.tension_at(deck.anchor)
 
 
 def moordyn_statics(deck: Deck) -> dict:
     """MoorDyn's static initial condition (moordyn.Init) at the deck's fairlead position."""
-    import moordyn
-
-    with _moordyn_system(deck) as system:
-        moordyn.Init(system, list(deck.fairlead), [0.0, 0.0, 0.0])
-        f = moordyn.Step(system, list(deck.fairlead), [0.0, 0.0, 0.0], 0.0, deck.option("dtM", 1e-4))
-        fair, anchor = _moordyn_end_tensions(system, deck, f)
+    with moordyn.System(deck.path, init=(list(deck.fairlead), [0.0, 0.0, 0.0])) as md:
+        f = md.step(list(deck.fairlead), [0.0, 0.0, 0.0], 0.0, deck.option("dtM", 1e-4))
+        fair, anchor = _moordyn_end_tensions(md, deck, f)
     return {"fairlead": fair, "anchor": anchor}
 
 
@@ -267,29 +237,23 @@ def moordyn_surge(deck: Deck, surge: Surge, t_end: float, comm_step: float = 0.1
     """MoorDyn fed the same deck: moordyn.Init at rest, then moordyn.Step every dtM of the deck with the
     exact fairlead position and velocity at the start of the step (MoorDyn moves the coupled point
     linearly from them within a call)."""
-    import moordyn
-
     dt = deck.option("dtM", 1e-4)
     sub = int(math.ceil(comm_step / dt - 1e-9))
     dt = comm_step / sub
     times = np.arange(0.0, t_end + 0.5 * comm_step, comm_step)
     fair, anch = np.zeros(len(times)), np.zeros(len(times))
     x0 = deck.fairlead
-    with _moordyn_system(deck) as system:
-        moordyn.Init(system, list(x0), [0.0, 0.0, 0.0])
-        f = moordyn.Step(system, list(x0), [0.0, 0.0, 0.0], 0.0, 1e-12)  # forces at t = 0
-        fair[0], anch[0] = _moordyn_end_tensions(system, deck, f)
-        cpu0 = time.process_time()
-        t = 0.0
-        for k in range(len(times) - 1):
-            for _ in range(sub):
-                dx, v, _ = surge.state(t)  # MoorDyn moves the point from x by xd (t' - t) over the step
-                f = moordyn.Step(system, list(x0 + dx), list(v), t, dt)
-                t += dt
-            fair[k + 1], anch[k + 1] = _moordyn_end_tensions(system, deck, f)
-            if progress:
-                progress(times[k + 1])
-        cpu = time.process_time() - cpu0
+    start = (list(x0), [0.0, 0.0, 0.0])
+
+    def coupled(t):
+        dx, v, _ = surge.state(t)  # MoorDyn moves the point from x by xd (t' - t) over the step
+        return list(x0 + dx), list(v)
+
+    def record(k, f):
+        fair[k], anch[k] = _moordyn_end_tensions(md, deck, f)
+
+    with moordyn.System(deck.path, init=start) as md:
+        cpu = moordyn.drive(md, start, len(times) - 1, comm_step, sub, coupled, record, progress)
     return History("MoorDyn", times, fair, anch, cpu, f"dt {dt:.2g} s, {sub * (len(times) - 1)} steps")
 
 

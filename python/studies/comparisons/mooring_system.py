@@ -15,8 +15,6 @@ from __future__ import annotations
 import contextlib
 import io
 import math
-import shutil
-import tempfile
 import time
 import warnings
 from dataclasses import dataclass
@@ -26,7 +24,7 @@ import numpy as np
 
 from ucable.fmu import CableFMU
 from ucable.paths import REPO_ROOT
-from ..peers.quiet import Quiet
+from ..peers import moordyn
 
 DECKS = REPO_ROOT / "tests" / "data" / "decks"
 OC4 = REPO_ROOT / "scenes" / "oc4_semi.dat"  # the deck of the scene oc4_platform
@@ -223,21 +221,6 @@ def fmu_motion(fmu, deck: SystemDeck, motion: PlatformMotion, t_end: float, comm
     return History("FMU", times, out, cpu, f"{steps:.0f} integrator steps (line 1)")
 
 
-@contextlib.contextmanager
-def moordyn_system(path: Path):
-    """A MoorDyn system of a copy of the deck in a temporary directory, silenced, closed at the end."""
-    import moordyn
-
-    with tempfile.TemporaryDirectory() as tmp, Quiet():
-        copy = Path(tmp) / path.name
-        shutil.copy(path, copy)
-        system = moordyn.Create(str(copy))
-        try:
-            yield system
-        finally:
-            moordyn.Close(system)
-
-
 def moordyn_motion(deck: SystemDeck, motion: PlatformMotion, t_end: float, comm_step: float = 0.1,
                    per_step: bool = True, progress=None) -> History:
     """MoorDyn fed the same deck, its Vessel points following the platform. per_step: moordyn.Step at
@@ -245,8 +228,6 @@ def moordyn_motion(deck: SystemDeck, motion: PlatformMotion, t_end: float, comm_
     of driving MoorDyn, docs/performance.md: each call pays Python's overhead); otherwise one call per
     communication step, MoorDyn substepping at dtM and moving the points linearly from the step's start
     (its coupling to a master). Fairlead tensions are the magnitudes of the forces on the points."""
-    import moordyn
-
     dt = deck.option("dtM", 1e-3)
     sub = int(math.ceil(comm_step / dt - 1e-9))
     dt = comm_step / sub
@@ -259,23 +240,16 @@ def moordyn_motion(deck: SystemDeck, motion: PlatformMotion, t_end: float, comm_
         pos, vel = fairlead_motion(deck, q, v)
         return [float(x) for p in pos for x in p], [float(x) for u in vel for x in u]
 
-    with moordyn_system(deck.path) as system:
-        x, xd = flat(np.zeros(6), np.zeros(6))
-        moordyn.Init(system, x, xd)
-        f = np.array(moordyn.Step(system, x, xd, 0.0, 1e-12)).reshape(n, 3)
-        out[0] = np.linalg.norm(f, axis=1)
-        cpu0 = time.process_time()
-        t = 0.0
-        for k in range(len(times) - 1):
-            for _ in range(calls):
-                q, v, _ = motion.state(t)
-                x, xd = flat(q, v)
-                f = moordyn.Step(system, x, xd, t, comm_step / calls)
-                t += comm_step / calls
-            out[k + 1] = np.linalg.norm(np.array(f).reshape(n, 3), axis=1)
-            if progress:
-                progress(times[k + 1])
-        cpu = time.process_time() - cpu0
+    def coupled(t):
+        q, v, _ = motion.state(t)
+        return flat(q, v)
+
+    def record(k, f):
+        out[k] = np.linalg.norm(np.array(f).reshape(n, 3), axis=1)
+
+    start = flat(np.zeros(6), np.zeros(6))
+    with moordyn.System(deck.path, init=start) as md:
+        cpu = moordyn.drive(md, start, len(times) - 1, comm_step, calls, coupled, record, progress)
     how = f"{calls} call{'s' if calls > 1 else ''} per {comm_step:g} s"
     return History("MoorDyn", times, out, cpu, f"dtM {dt:.2g} s, {how}")
 

@@ -20,8 +20,6 @@ markers). Used by scripts/waves_moordyn and tests/python/test_waves_moordyn.py.
 from __future__ import annotations
 
 import math
-import os
-import tempfile
 import time
 from dataclasses import asdict, dataclass, replace
 from pathlib import Path
@@ -29,7 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from ucable.fmu import CableFMU
-from ..peers.quiet import Quiet
+from ..peers import moordyn
 from ..references.sea import Sea, sea_state
 
 
@@ -228,48 +226,37 @@ class MoorDynRiser:
         self.sea = sea_state(waves.parameters(riser))
         self.x = ([] if riser.hanging else [0.0, 0.0, -riser.depth]) + [0.0, 0.0, riser.top_z]
 
-    def __enter__(self):
-        import moordyn
-        self._tmp = tempfile.TemporaryDirectory()
-        tmp = Path(self._tmp.name)
+    def _write(self, tmp: Path) -> Path:
         (tmp / "riser.txt").write_text(moordyn_deck(self.riser, self.n_seg, self.dt))
         (tmp / "wave_frequencies.txt").write_text(wave_frequencies(self.sea))
-        self._cwd = os.getcwd()
-        os.chdir(tmp)
-        try:
-            with Quiet():
-                self.system = moordyn.Create(str(tmp / "riser.txt"))
-                moordyn.Init(self.system, self.x, [0.0] * len(self.x))
-                self.line = moordyn.GetLine(self.system, 1)
-        except BaseException:
-            os.chdir(self._cwd)
-            self._tmp.cleanup()
-            raise
+        return tmp / "riser.txt"
+
+    def __enter__(self):
+        self.md = moordyn.System(write=self._write, chdir=True, init=self.start, quiet="setup").__enter__()
+        self.line = self.md.line(1)
         return self
 
     def __exit__(self, *exc):
-        import moordyn
-        try:
-            with Quiet():
-                moordyn.Close(self.system)
-        finally:
-            os.chdir(self._cwd)
-            self._tmp.cleanup()
+        return self.md.__exit__(*exc)
+
+    @property
+    def start(self) -> tuple:
+        return self.x, [0.0] * len(self.x)
 
     def kinematics(self, x: float, y: float, z: float):
         """MoorDyn's water velocity, acceleration and elevation at a point at its present time."""
-        import moordyn
-        u, a, zeta, _ = moordyn.GetWavesKin(moordyn.GetWaves(self.system), x, y, z)
-        return np.array(u), np.array(a), float(zeta)
+        return self.md.wave_kinematics(x, y, z)
+
+    def tensions(self, f) -> tuple:
+        """(top, bottom) tension from the forces of a step: |forces on the held points|, at a hanging
+        body the tension of the line's last segment."""
+        if self.riser.hanging:
+            return float(np.linalg.norm(f)), float(np.linalg.norm(self.md.node_tension(self.line, 0)))
+        return float(np.linalg.norm(f[3:6])), float(np.linalg.norm(f[0:3]))
 
     def step(self, t: float, h: float) -> tuple:
-        """Advance from t by h (whole dtM steps); (top, bottom) tension: |forces on the held points|,
-        at a hanging body the tension of the line's last segment."""
-        import moordyn
-        f = moordyn.Step(self.system, self.x, [0.0] * len(self.x), t, h)
-        if self.riser.hanging:
-            return float(np.linalg.norm(f)), float(np.linalg.norm(moordyn.GetLineNodeTen(self.line, 0)))
-        return float(np.linalg.norm(f[3:6])), float(np.linalg.norm(f[0:3]))
+        """Advance from t by h (whole dtM steps); the (top, bottom) tension."""
+        return self.tensions(self.md.step(*self.start, t, h))
 
 
 def run_moordyn(riser: Riser, waves: Waves, n_seg: int, cfl: float = MD_CFL, t_end: float | None = None,
@@ -278,14 +265,12 @@ def run_moordyn(riser: Riser, waves: Waves, n_seg: int, cfl: float = MD_CFL, t_e
     n = int(round(t_end / COMM_STEP))
     top, bottom = np.zeros(n + 1), np.zeros(n + 1)
     with MoorDynRiser(riser, waves, n_seg, cfl) as md:
-        # the tensions at t = 0 (a step of 1e-12 s: MoorDyn returns the forces of the state it ends in)
-        top[0], bottom[0] = md.step(0.0, 1e-12)
-        cpu0 = time.process_time()
-        for k in range(n):
-            top[k + 1], bottom[k + 1] = md.step(k * COMM_STEP, COMM_STEP)
-            if progress:
-                progress((k + 1) * COMM_STEP)
-        cpu = time.process_time() - cpu0
+
+        def record(k, f):
+            top[k], bottom[k] = md.tensions(f)
+
+        cpu = moordyn.drive(md.md, md.start, n, COMM_STEP, 1, lambda t: md.start, record, progress,
+                            whole_steps=True)
         dt = md.dt
     return History("MoorDyn", n_seg, cfl, np.arange(n + 1) * COMM_STEP, top, bottom, cpu, f"dtM {dt:.3g} s")
 
