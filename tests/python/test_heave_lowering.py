@@ -18,7 +18,8 @@ import pytest
 from studies.cases import heave_lowering
 from studies.cases.heave_lowering import Scene, run
 
-RHO, G = 1025.0, 9.81
+from ucable.units import GRAVITY as G, WATER_DENSITY as RHO
+
 PERIOD = 10.0
 
 

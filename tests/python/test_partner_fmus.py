@@ -21,8 +21,7 @@ from studies.cases.manoeuvre import PiecewiseLinearSpeed
 from studies.cosim.partners import Autopilot, Vessel, VesselParameters
 from ucable.steady_tow import KNOT
 from ucable.system import partner_fmu
-
-RHO, G = 1025.0, 9.81
+from ucable.units import GRAVITY as G, WATER_DENSITY as RHO
 
 
 @pytest.fixture(scope="module")

@@ -12,13 +12,13 @@ import pytest
 
 from studies.comparisons import public_decks as pd
 from ucable.fmu import CableFMU
+from ucable.units import STANDARD_GRAVITY as GRAVITY
 
 # MoorPy 1.3.0 finds no equilibrium of these: a neutrally buoyant line hanging from a fixed point (it
 # leaves the weight of the end mass unbalanced), a beam between two fixed points above the water
 # (tensions NaN), a W-shaped chain between two fixed points on a buoy (point 2 left with 13.5 kN
 # unbalanced, its iteration wandering).
 MOORPY_FAILS = {"md_tests_Mooring_lifting", "md_tests_Mooring_BeamSimplySupported", "mp_tests_case6"}
-GRAVITY = 9.80665
 
 
 @pytest.mark.parametrize("path", pd.decks(), ids=lambda p: p.stem)

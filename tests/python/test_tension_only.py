@@ -17,7 +17,8 @@ import math
 import numpy as np
 import pytest
 
-RHO, G = 1025.0, 9.81
+from ucable.units import GRAVITY as G, WATER_DENSITY as RHO
+
 CHAIN = {"length": 100.0, "diameter": 0.0332, "massPerLength": 2.7018, "EA": 6.709e7,
          "enableBending": False, "enableAddedMass": False, "Cdn": 0.0, "Cdt": 0.0,
          "nElements": 10, "bottomEnd": 0, "initMode": 0}

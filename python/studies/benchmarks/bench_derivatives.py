@@ -21,8 +21,8 @@ import numpy as np
 
 from ucable.fmu import CableFMU
 from ucable.paths import require_fmu
+from ucable.units import KNOT
 
-KNOT = 1852.0 / 3600.0
 END = ["end.x", "end.y", "end.z", "end.vx", "end.vy", "end.vz", "end.ax", "end.ay", "end.az"]
 TOW = ["tow.x", "tow.y", "tow.z", "tow.vx", "tow.vy", "tow.vz", "tow.ax", "tow.ay", "tow.az"]
 END_FORCE = ["endForce.x", "endForce.y", "endForce.z"]

@@ -14,14 +14,11 @@ summary() reduces the records to table rows, markdown() writes them.
 from __future__ import annotations
 
 import argparse
-import contextlib
 import dataclasses
-import io
 import math
 import re
 import sys
 import time
-import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -29,9 +26,10 @@ import numpy as np
 
 from ..doc_section import write_section
 from ..cases.mooring import chain_weight
+from ..peers import moorpy
 from ucable.paths import fmu_path
+from ucable.units import GRAVITY as G, WATER_DENSITY as RHO
 
-RHO, G = 1025.0, 9.81
 TAUT_SLACK = 0.05              # nearly taut: unstretched length / chord - 1 up to this
 REFERENCE_BALANCE = 1e-5       # MoorPy's free points balanced to this fraction of the tension
 OFF_BOUND = 0.01               # a run off by more than this without an error is the worst defect
@@ -227,10 +225,8 @@ def _start(case: Case, s_from_anchor: float, guess: int) -> np.ndarray:
 
 
 def _system(case: Case, guess: int):
-    import moorpy as mp
-
     pieces = _pieces(case)[::-1]  # from the anchor up: MoorPy's end A is the lower end
-    ms = mp.System(depth=case.depth, rho=RHO, g=G)
+    ms = moorpy.system(depth=case.depth, rho=RHO, g=G)
     ms.addPoint(1, np.array([case.anchor_x, 0.0, -case.depth]))
     s_from_anchor = 0.0
     for k, (sec, length, att) in enumerate(pieces):
@@ -250,8 +246,7 @@ def _system(case: Case, guess: int):
 
 def _solve(case: Case, guess: int, tol: float):
     """MoorPy's equilibrium from one first guess; raises ReferenceFailed when it does not converge."""
-    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
-        warnings.simplefilter("ignore")
+    with moorpy.silenced():
         try:
             ms = _system(case, guess)
             ms.initialize()

@@ -32,7 +32,7 @@ from ..cases.manoeuvre import hopland_accelerate
 from ucable.paths import REPO_ROOT, require_fmu
 from ucable.progress import ProgressBar
 from ..peers import moordyn
-from ucable.steady_tow import KNOT
+from ucable.units import KNOT
 
 OUT_DIR = REPO_ROOT / "out" / "bench_work_precision"
 DOC = REPO_ROOT / "docs" / "performance.md"

@@ -13,13 +13,12 @@ from __future__ import annotations
 import argparse
 import json
 import math
-from pathlib import Path
 
 from ucable.fmu import CableFMU
+from ucable.paths import REPO_ROOT
+from ucable.units import KNOT
 
-GOLDEN_DIR = Path(__file__).resolve().parents[2] / "tests" / "data" / "golden"
-
-KNOT = 1852.0 / 3600.0
+GOLDEN_DIR = REPO_ROOT / "tests" / "data" / "golden"
 
 # name -> (parameters, function t -> tow inputs, step, n steps)
 SCENES = {

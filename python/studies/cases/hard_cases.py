@@ -19,9 +19,8 @@ import numpy as np
 
 from ucable.fmu import NUM_STATIONS, CableFMU
 from .manoeuvre import PiecewiseLinearSpeed
-from ucable.steady_tow import KNOT
+from ucable.units import GRAVITY as G, KNOT
 
-G = 9.81
 DEFAULT_TENSION_TOLERANCE = 1e-3  # the FMU's default (schema/variables.toml)
 STATS = ["solver.nSteps", "solver.nResidualEvals", "solver.nJacobianEvals", "solver.nNonlinearFailures",
          "solver.nErrorTestFailures"]

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ucable.fmu import NUM_STATIONS, CableFMU
-from ucable.steady_tow import KNOT
+from ucable.units import KNOT
 
 TOW_INPUTS = ["tow.x", "tow.y", "tow.z", "tow.vx", "tow.vy", "tow.vz"]
 SCALAR_OUTPUTS = ["towTension", "towForce.x", "towForce.y", "towForce.z",

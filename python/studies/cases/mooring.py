@@ -15,6 +15,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
+from ..peers import moorpy
 from ..references.exact import TouchdownCatenary
 from ucable.fmu import NUM_STATIONS, CableFMU
 
@@ -54,9 +55,7 @@ def closed_form(fairlead_x: float = 0.0) -> TouchdownCatenary:
 
 def moorpy_catenary(fairlead_x: float = 0.0) -> dict:
     """MoorPy's quasi-static catenary (moorpy.Catenary.catenary, frictionless seabed, CB = 0)."""
-    from moorpy.Catenary import catenary
-
-    fAH, fAV, fBH, fBV, info = catenary(fairlead_x - ANCHOR_X, FAIRLEAD_Z + DEPTH, CHAIN["length"],
+    fAH, fAV, fBH, fBV, info = moorpy.catenary(fairlead_x - ANCHOR_X, FAIRLEAD_Z + DEPTH, CHAIN["length"],
                                         CHAIN["EA"], chain_weight(), CB=0.0, Tol=1e-10, MaxIter=200)
     return {"fairlead_tension": math.hypot(fBH, fBV), "H": abs(fBH), "grounded": info["LBot"]}
 

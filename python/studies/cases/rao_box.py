@@ -37,8 +37,8 @@ from pathlib import Path
 import numpy as np
 
 from ucable.paths import REPO_ROOT
+from ucable.units import GRAVITY as G, WATER_DENSITY as RHO
 
-RHO, G = 1025.0, 9.81
 L, B, T = 80.0, 18.0, 5.0
 GM = 2.0
 ZETA = {"heave": 0.4, "roll": 0.1, "pitch": 0.4}

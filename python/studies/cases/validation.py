@@ -19,6 +19,7 @@ from ..references.exact import (ElasticCatenary, beam_string_frequencies, circul
 from ucable.fmu import NUM_STATIONS, CableFMU
 from .manoeuvre import hopland_accelerate, run_tow
 from ucable.steady_tow import CableProperties, body_end_load, solve_steady_tow
+from ucable.units import HOUR, NAUTICAL_MILE
 
 # ---------------------------------------------------------------------------------------- elastica
 ELASTICA_L, ELASTICA_D, ELASTICA_E = 10.0, 0.02, 2e11
@@ -159,7 +160,7 @@ def steady_tow(fmu, knots: float, n_elements: int, body: dict | None = None) -> 
     """Steady tow of the default cable (free end, or an internal towed body, bottomEnd 2) at the
     initial equilibrium (initMode 0), against the steady ODE (ucable.steady_tow)."""
     props = CableProperties()
-    V = knots * 1852.0 / 3600.0
+    V = knots * NAUTICAL_MILE / HOUR
     params = {"nElements": n_elements, "initMode": 0}
     end_load = (0.0, 0.0)
     if body:

@@ -18,9 +18,8 @@ from pathlib import Path
 import numpy as np
 
 from ucable.fmu import CableFMU
+from ucable.units import GRAVITY as G, KNOT
 
-KNOT = 1852.0 / 3600.0
-G = 9.81
 TOW = [f"tow.{q}" for q in ("x", "y", "z", "vx", "vy", "vz", "ax", "ay", "az")]
 LEVER = {"towPoint.x": -30.0, "towPoint.y": 3.0, "towPoint.z": 4.0}
 ENCOUNTERS = ((0.0, 180.0), (5.0, 180.0), (5.0, 0.0))  # speed [m/s], relative heading [deg]

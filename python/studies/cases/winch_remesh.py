@@ -22,7 +22,7 @@ import numpy as np
 
 from ucable.fmu import CableFMU
 from ucable.progress import ProgressBar
-from ucable.steady_tow import KNOT
+from ucable.units import KNOT
 from ..references.winch_reference import DeployBody, elements_for_length
 
 SPEED = 2.0 * KNOT

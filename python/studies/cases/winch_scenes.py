@@ -22,7 +22,7 @@ from pathlib import Path
 import numpy as np
 
 from ucable.fmu import CableFMU
-from ucable.steady_tow import KNOT
+from ucable.units import KNOT
 from ..references.winch_reference import DeployBody, elements_for_length, ode_references
 
 SCENES = ("deploy", "recover", "ct-lowering")

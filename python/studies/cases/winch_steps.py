@@ -29,6 +29,7 @@ import numpy as np
 from ucable.fmu import CableFMU
 from ucable.paths import require_fmu
 from ucable.scene import load_scene, run_scene, signal_at
+from ucable.units import HOUR, NAUTICAL_MILE
 
 TOW_BODY = {"bottomEnd": 2, "body.mass": 2000.0, "body.volume": 0.25, "body.addedMass": 500.0,
             "body.CdA": 1.0}
@@ -67,7 +68,7 @@ def run_held(data: dict, fmu=None):
     s = load_scene(data)
     p = dict(s.parameters, winchMode=1)
     h, n = s.step, int(round(s.duration / s.step))
-    V = float(s.tow["speed_kn"]) * 1852.0 / 3600.0
+    V = float(s.tow["speed_kn"]) * NAUTICAL_MILE / HOUR
     out = np.zeros((n + 1, 3))
     with CableFMU(fmu or require_fmu(), parameters=p) as c:
         c.initialize(0.0, s.duration, inputs={"tow.vx": V, "winch.rate": 0.0})

@@ -15,17 +15,16 @@ cost of the stiffness per step).
 from __future__ import annotations
 
 import argparse
-import contextlib
-import io
 import time
-import warnings
 from pathlib import Path
 
 import numpy as np
 
 from ucable.fmu import CableFMU
 from ..doc_section import write_section
-from .free_points import WATER_DENSITY, _moorpy_rotation, bridle, without_line_drag, write_variant
+from ucable.units import WATER_DENSITY
+from ..peers import moorpy
+from .free_points import bridle, without_line_drag, write_variant
 from .mooring_system import DECKS, OC4, POSE_NAMES, PlatformMotion, _moorpy_system, clumped_oc4, fmu_parameters, \
     read_system_deck, stiffness_difference
 from .public_decks import PUBLIC
@@ -34,18 +33,13 @@ BUOY_LEG = DECKS / "platform_buoy_leg.dat"  # the OC4 platform, its first leg th
 FD_STEP = (0.05, 5e-4)  # MoorPy's finite differences: [m], [rad]
 
 
-def _angles_zyx(R: np.ndarray) -> np.ndarray:  # the angles of MoorPy's R = Rz Ry Rx
-    return np.array([np.arctan2(R[2, 1], R[2, 2]), -np.arcsin(np.clip(R[2, 0], -1.0, 1.0)),
-                     np.arctan2(R[1, 0], R[0, 0])])
-
-
 def _turned(pose, axis: int, angle: float) -> np.ndarray:
     """The pose turned by `angle` about earth axis `axis` (MoorPy's angles)."""
     c, s = np.cos(angle), np.sin(angle)
     k = np.eye(3)[axis]
     K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
-    R = (np.eye(3) + s * K + (1 - c) * K @ K) @ _moorpy_rotation(*pose[3:])
-    return np.concatenate([pose[:3], _angles_zyx(R)])
+    R = (np.eye(3) + s * K + (1 - c) * K @ K) @ moorpy.rotation(*pose[3:])
+    return np.concatenate([pose[:3], moorpy.angles(R)])
 
 
 def _moorpy_coupled(path: Path, poses: dict, current: float = 0.0):
@@ -55,8 +49,7 @@ def _moorpy_coupled(path: Path, poses: dict, current: float = 0.0):
     is on them at rest (MoorPy has no current on points or bodies), at a body's reference point."""
     deck = read_system_deck(path)
     s = _moorpy_system(path, deck.depth)
-    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
-        warnings.simplefilter("ignore")
+    with moorpy.silenced():
         if not any(b.type == -1 for b in s.bodyList):
             body = s.addBody(-1, np.zeros(6))
             for p in s.pointList:
@@ -85,8 +78,7 @@ def coupled_poses(path: Path) -> dict:
 
 
 def _solved_load(s, body, pose) -> np.ndarray:
-    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
-        warnings.simplefilter("ignore")
+    with moorpy.silenced():
         body.setPosition(np.array(pose, float))
         s.solveEquilibrium(tol=1e-8, maxIter=2000)
         return np.array(body.getForces(lines_only=True), float)
@@ -99,8 +91,7 @@ def moorpy_stiffness(path: Path, poses: dict, body: int = 1, current: float = 0.
     s = _moorpy_coupled(path, poses, current)
     coupled = [b for b in s.bodyList if b.type == -1]
     k = [b.number for b in coupled].index(body)
-    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
-        warnings.simplefilter("ignore")
+    with moorpy.silenced():
         analytic = np.array(s.getCoupledStiffnessA(lines_only=False), float)[6 * k:6 * k + 6, 6 * k:6 * k + 6]
     pose = np.array(coupled[k].r6, float)
     K = np.zeros((6, 6))

@@ -11,22 +11,19 @@ Used by tests/python/test_free_points.py.
 
 from __future__ import annotations
 
-import contextlib
-import io
 import re
 import time
-import warnings
 from pathlib import Path
 
 import numpy as np
 
 from ucable.fmu import CableFMU
-from ..peers import moordyn
+from ucable.units import WATER_DENSITY
+from ..peers import moordyn, moorpy
 from .mooring_system import DECKS, _moorpy_system, fmu_parameters, read_system_deck
 
 BUOY = DECKS / "subsurface_buoy.dat"
 BUOY_BODY = DECKS / "subsurface_buoy_body.dat"  # the buoy as a Free body, the legs on its rim
-WATER_DENSITY = 1025.0
 
 
 def without_line_drag(text: str) -> str:
@@ -62,14 +59,6 @@ def _fmu_rotation(roll, pitch, yaw):  # R = Rx Ry Rz (MoorDyn's, the FMU's)
     return body_rotation(roll, pitch, yaw)
 
 
-def _moorpy_rotation(roll, pitch, yaw):  # R = Rz Ry Rx (MoorPy's)
-    cx, sx, cy, sy, cz, sz = np.cos(roll), np.sin(roll), np.cos(pitch), np.sin(pitch), np.cos(yaw), np.sin(yaw)
-    Rx = np.array([[1, 0, 0], [0, cx, -sx], [0, sx, cx]])
-    Ry = np.array([[cy, 0, sy], [0, 1, 0], [-sy, 0, cy]])
-    Rz = np.array([[cz, -sz, 0], [sz, cz, 0], [0, 0, 1]])
-    return Rz @ Ry @ Rx
-
-
 def _body_points(pose, rotation, local) -> list:
     R = rotation(*pose[3:])
     return [np.asarray(pose[:3]) + R @ r for r in local]
@@ -91,8 +80,7 @@ def moorpy_statics(path: Path, current=0.0) -> dict:
     deck = read_system_deck(path)
     s = _moorpy_system(path, deck.depth)
     U = _current(current)
-    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
-        warnings.simplefilter("ignore")
+    with moorpy.silenced():
         if U.any():
             s.currentMod = 1
             s.current = U
@@ -113,7 +101,7 @@ def moorpy_statics(path: Path, current=0.0) -> dict:
     poses = {b.number: np.array(b.r6, float) for b in s.bodyList if b.number in bodies}
     points = {k: points[k] for k in free_point_ids(path)}
     for k, local in bodies.items():
-        for j, x in enumerate(_body_points(poses[k], _moorpy_rotation, local)):
+        for j, x in enumerate(_body_points(poses[k], moorpy.rotation, local)):
             points[f"body{k}.{j}"] = x
     return {"points": points, "poses": poses,
             "fairlead": [float(ln.TB) for ln in s.lineList], "anchor": [float(ln.TA) for ln in s.lineList]}

@@ -16,12 +16,9 @@ Used by scripts/line_file_report (-> docs/lines_validation.md) and tests/python/
 
 from __future__ import annotations
 
-import contextlib
-import io
 import math
 import tempfile
 import time
-import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -29,7 +26,8 @@ import numpy as np
 
 from ucable.fmu import CableFMU
 from ucable.paths import REPO_ROOT
-from ..peers import moordyn
+from ucable.units import GRAVITY, WATER_DENSITY
+from ..peers import moordyn, moorpy
 
 DECKS = REPO_ROOT / "tests" / "data" / "decks"
 
@@ -51,10 +49,7 @@ class Deck:
 
 
 def read_deck(path: Path) -> Deck:
-    import moorpy as mp
-
-    with contextlib.redirect_stdout(io.StringIO()):
-        s = mp.System(file=str(path))
+    s = moorpy.system(path)
     fair = [p for p in s.pointList if p.type == -1]
     anch = [p for p in s.pointList if p.type == 1]
     if len(fair) != 1 or len(anch) != 1:
@@ -134,12 +129,9 @@ def refined_deck_file(source: Path, factor: int, directory: Path) -> Path:
 # ----------------------------------------------------------------------------- statics
 def moorpy_statics(deck: Deck, dx: float = 0.0) -> dict:
     """MoorPy's equilibrium with the fairlead moved by dx along x: tensions at both ends."""
-    import moorpy as mp
-
-    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # MoorPy's solver warns about its own polynomial fits
-        s = mp.System(file=str(deck.path), depth=deck.depth, rho=deck.option("rho", 1025.0),
-                      g=deck.option("g", 9.81))
+    with moorpy.silenced():
+        s = moorpy.system(deck.path, depth=deck.depth, rho=deck.option("rho", WATER_DENSITY),
+                          g=deck.option("g", GRAVITY))
         for p in s.pointList:
             if p.type == -1:
                 p.setPosition(np.array(p.r, float) + np.array([dx, 0.0, 0.0]))

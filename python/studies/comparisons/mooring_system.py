@@ -12,11 +12,8 @@ Used by tests/python/test_mooring_system.py and scripts/bench_mooring_system.
 
 from __future__ import annotations
 
-import contextlib
-import io
 import math
 import time
-import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -24,11 +21,11 @@ import numpy as np
 
 from ucable.fmu import CableFMU
 from ucable.paths import REPO_ROOT
-from ..peers import moordyn
+from ucable.units import STANDARD_GRAVITY, WATER_DENSITY
+from ..peers import moordyn, moorpy
 
 DECKS = REPO_ROOT / "tests" / "data" / "decks"
 OC4 = REPO_ROOT / "scenes" / "oc4_semi.dat"  # the deck of the scene oc4_platform
-MOORDYN_GRAVITY = 9.80665  # what MoorDyn (and so the FMU's deck reader) takes when a deck sets no g
 POSE_NAMES = ("x", "y", "z", "roll", "pitch", "yaw")
 
 
@@ -48,11 +45,7 @@ class SystemDeck:
 
 
 def _moorpy_system(path: Path, depth: float = 0.0):
-    import moorpy as mp
-
-    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        return mp.System(file=str(path), depth=depth, rho=1025.0, g=MOORDYN_GRAVITY)
+    return moorpy.system(path, depth=depth, rho=WATER_DENSITY, g=STANDARD_GRAVITY)
 
 
 def read_system_deck(path: Path) -> SystemDeck:
@@ -101,8 +94,7 @@ def moorpy_statics(deck: SystemDeck, pose=(0.0,) * 6) -> dict:
     """MoorPy with the Vessel points on a coupled body at `pose` (MoorPy's angles: R = Rz Ry Rx):
     line tensions, the body's force and moment (lines only) and its analytic coupled stiffness."""
     s = _moorpy_system(deck.path, deck.depth)
-    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
-        warnings.simplefilter("ignore")
+    with moorpy.silenced():
         body = s.addBody(-1, np.array(pose, float))
         for p in s.pointList:
             if p.type == -1:
@@ -261,8 +253,7 @@ def settled_deck(path: Path, directory: Path) -> Path:
     import re
 
     s = _moorpy_system(path, read_system_deck(path).depth)
-    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
-        warnings.simplefilter("ignore")
+    with moorpy.silenced():
         s.initialize()
         s.solveEquilibrium(tol=1e-8, maxIter=2000)
     text = Path(path).read_text()

@@ -22,17 +22,15 @@ from kBot and cBot times the diameter, tension-only lines.
 from __future__ import annotations
 
 import argparse
-import contextlib
-import io
 import json
 import re
 import sys
-import warnings
 from pathlib import Path
 
 from ucable.fmu import CableFMU, FMICallException
 from ucable.paths import REPO_ROOT
-from .mooring_system import MOORDYN_GRAVITY
+from ucable.units import STANDARD_GRAVITY, WATER_DENSITY
+from ..peers import moorpy
 
 PUBLIC = REPO_ROOT / "tests" / "data" / "decks" / "public"
 POSE = ("x", "y", "z", "roll", "pitch", "yaw")
@@ -42,13 +40,10 @@ CENSUS_FOLDERS = {"moordyn": ("tests/Mooring", "example"), "moorpy": ("examples"
 def moorpy_system(path: Path):
     """MoorPy's equilibrium of the deck (its coupled bodies and points where the deck puts them):
     (system, options, None), or (system or None, options, why MoorPy fails)."""
-    import moorpy as mp
-
     options, s = {}, None
-    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
-        warnings.simplefilter("ignore")
+    with moorpy.silenced():
         try:
-            s = mp.System(file=str(path), rho=1025.0, g=MOORDYN_GRAVITY)
+            s = moorpy.system(path, rho=WATER_DENSITY, g=STANDARD_GRAVITY)
             if not s.depth:
                 s.depth = max(-float(p.r[2]) for p in s.pointList)
             options = {k.lower(): v for k, v in s.MDoptions.items()}

@@ -34,6 +34,7 @@ from ucable import system as S
 from ucable.fmu import FMICallException
 from ucable.paths import REPO_ROOT, require_fmu
 from ucable.progress import ProgressBar
+from ucable.units import KNOT
 
 STEPS = [0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0]
 MASSES = [20.0, 50.0, 100.0, 200.0, 400.0, 1000.0, 2000.0, 4000.0]
@@ -192,7 +193,7 @@ def theory(steps=None, masses=None) -> dict:
         for i, m in enumerate(Ms):
             b = S.Body(float(m)).resolved()
             M = b.mass + b.added_mass
-            cp = drag_damping(b, 2.4 * S.KNOT)
+            cp = drag_damping(b, 2.4 * KNOT)
             for j, h in enumerate(hs):
                 old[i, j] = stability_old(h, M, chain, ordering)
                 new[i, j] = stability_new(h, M, chain, cp, cp, ordering)

@@ -26,7 +26,8 @@ from ucable.paths import REPO_ROOT, require_fmu
 from ucable.progress import ProgressBar
 from .scenes import (DEFAULT_T_END, NAMES, PAPER_SETTLE, RAMP, SNAPSHOTS, SPEEDS_KN, make_scene,
                      settling_time, steady_depths)
-from ucable.steady_tow import KNOT, solve_steady_tow
+from ucable.steady_tow import solve_steady_tow
+from ucable.units import KNOT
 
 EPS_LIST = (0.10, 0.05, 0.02, 0.01)
 HEAVE_LOWERING = "heave-lowering"

@@ -34,6 +34,7 @@ from ucable import system as S
 from ucable.fmu import FMICallException
 from ucable.paths import REPO_ROOT, require_fmu
 from ucable.progress import ProgressBar
+from ucable.units import KNOT
 
 from .coupling_study import POSITION_BOUND, TENSION_BOUND, Chain, _compare, _spectral_radius, end_mass_system
 from ..doc_section import write_section
@@ -103,7 +104,7 @@ def stability_proxy(h: float, M: float, chain: Chain, cb: float, ordering: str, 
     return _spectral_radius(step, 2 * f + 6)
 
 
-def drag_damping(mass: float, speed: float = 1.1 * S.KNOT) -> float:
+def drag_damping(mass: float, speed: float = 1.1 * KNOT) -> float:
     """Along-flow derivative of the body's quadratic drag at the slowest tow speed, rho CdA |u| [N s/m]."""
     return 1025.0 * S.Body(mass).resolved().cda * speed
 

@@ -26,7 +26,8 @@ import numpy as np
 
 from .masters import HeadingReference, Scene
 from ..cases.manoeuvre import PiecewiseLinearSpeed
-from ucable.steady_tow import KNOT, CableProperties, solve_steady_tow
+from ucable.steady_tow import CableProperties, solve_steady_tow
+from ucable.units import KNOT
 
 RAMP = 60.0
 TOW_SPEED_KN = 2.4

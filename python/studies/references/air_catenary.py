@@ -21,8 +21,6 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import root
 
-RHO, G = 1025.0, 9.81
-
 
 class NoSolution(Exception):
     """No profile of this kind: the line rests on the seabed twice, or the shooting did not converge."""

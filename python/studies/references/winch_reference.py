@@ -19,7 +19,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ucable.steady_tow import KNOT, CableProperties, body_end_load, solve_steady_tow
+from ucable.steady_tow import CableProperties, body_end_load, solve_steady_tow
+from ucable.units import KNOT
 
 
 @dataclass(frozen=True)

@@ -18,7 +18,8 @@ from ucable.fmu import NUM_STATIONS, CableFMU
 from ..cases.manoeuvre import SCALAR_OUTPUTS, hopland_accelerate, run_tow
 from ucable.paths import REPO_ROOT, require_fmu
 from ucable.progress import ProgressBar
-from ucable.steady_tow import KNOT, CableProperties, solve_steady_tow
+from ucable.steady_tow import CableProperties, solve_steady_tow
+from ucable.units import KNOT
 
 SNAPSHOT_TIMES = [0, 30, 60, 120, 240, 420, 660]
 

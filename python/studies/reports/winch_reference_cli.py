@@ -14,7 +14,7 @@ import numpy as np
 
 from ucable.paths import require_fmu
 from ucable.progress import ProgressBar
-from ucable.steady_tow import KNOT
+from ucable.units import KNOT
 from ..references.winch_reference import DeployBody, fmu_static_references, ode_references
 
 
