@@ -42,7 +42,7 @@ STATS = ["solver.nSteps", "solver.nResidualEvals", "solver.nJacobianEvals"]
 
 
 @dataclass
-class Scene:
+class ErrorControlCase:
     name: str
     title: str
     parameters: dict
@@ -53,7 +53,7 @@ class Scene:
 
 
 @dataclass
-class SceneRun:
+class ErrorControlRun:
     t: np.ndarray
     tension: np.ndarray  # |towForce| at the communication points
     tension_scale: float
@@ -71,14 +71,14 @@ def scenes(short: bool = False) -> dict:
         p = dict(c.line)
         p.update(c.fmu_params)
         p["nElements"] = 20
-        out[name] = Scene(name, c.title, p, c.traj, c.comm_step, t_short if short else c.t_end)
-    out["heave"] = Scene("heave", "Heave: 1000 m umbilical, 10 t body, 2 m / 10 s, 0.5 m/s current",
+        out[name] = ErrorControlCase(name, c.title, p, c.traj, c.comm_step, t_short if short else c.t_end)
+    out["heave"] = ErrorControlCase("heave", "Heave: 1000 m umbilical, 10 t body, 2 m / 10 s, 0.5 m/s current",
                          heave.parameters(20), heave.RampedHeave(), 0.1, 30.0 if short else 200.0,
                          {"current.x": heave.CURRENT})
     return {k: out[k] for k in ("hopland", "heave", "stiff", "mooring")}
 
 
-def run(fmu, scene: Scene, extra: dict | None = None) -> SceneRun:
+def run(fmu, scene: ErrorControlCase, extra: dict | None = None) -> ErrorControlRun:
     """One run of `scene` with the FMU's defaults plus `extra` parameters."""
     params = dict(scene.parameters)
     params.update(extra or {})
@@ -109,10 +109,10 @@ def run(fmu, scene: Scene, extra: dict | None = None) -> SceneRun:
         scale = cable.get("solver.tensionScale")
     finally:
         cable.free()
-    return SceneRun(times, tension, scale, cpu, stats)
+    return ErrorControlRun(times, tension, scale, cpu, stats)
 
 
-def errors(r: SceneRun, ref: SceneRun) -> dict:
+def errors(r: ErrorControlRun, ref: ErrorControlRun) -> dict:
     """Top-tension errors of r against ref (t > 0)."""
     d = np.abs(r.tension[1:] - ref.tension[1:])
     T = ref.tension[1:]
@@ -122,9 +122,9 @@ def errors(r: SceneRun, ref: SceneRun) -> dict:
 
 def curves(fmu, short: bool = False, tolerances=TOLERANCES, names=None, extra: dict | None = None,
            references: dict | None = None) -> dict:
-    """{scene: {"reference": SceneRun, "rows": [(tensionTolerance, SceneRun, errors)]}}. `extra`: further
+    """{scene: {"reference": ErrorControlRun, "rows": [(tensionTolerance, ErrorControlRun, errors)]}}. `extra`: further
     parameters of the rows (not of the reference, which is the FMU's defaults at 1e-8); `references`:
-    the reference runs of an earlier call ({scene: SceneRun}), not flown again."""
+    the reference runs of an earlier call ({scene: ErrorControlRun}), not flown again."""
     sc = scenes(short)
     names = names or list(sc)
     bar = ProgressBar(len(names) * (len(tolerances) + 1), label="error control")

@@ -38,7 +38,7 @@ DEFAULT_T_END = 300.0
 
 
 @dataclass
-class Scene:
+class HeaveLoweringCase:
     t_end: float = DEFAULT_T_END
     step: float = 0.2
     n_elements: int = 20
@@ -94,7 +94,7 @@ COLUMNS = (["time"] + [f"vessel.{n}" for n in VESSEL_OUT] + [f"cable.{n}" for n 
 
 @dataclass
 class Result:
-    scene: Scene
+    scene: HeaveLoweringCase
     time: np.ndarray
     values: dict  # column -> (n,) array
     cpu: float
@@ -136,7 +136,7 @@ class Result:
                 "cpu": self.cpu}
 
 
-def run(scene: Scene, cable_fmu, progress=None) -> Result:
+def run(scene: HeaveLoweringCase, cable_fmu, progress=None) -> Result:
     n = int(round(scene.t_end / scene.step))
     times = np.arange(n + 1) * scene.step
     out = np.zeros((n + 1, len(COLUMNS)))

@@ -34,7 +34,7 @@ HEAVE, PERIOD = 1.5, 8.0  # [m], [s] of the constant-tension scene
 
 
 @dataclass
-class Scene:
+class RemeshCase:
     """A winch scene: FMU parameters, initial inputs and the inputs at each communication point."""
 
     name: str
@@ -47,7 +47,7 @@ class Scene:
     nominal: float = 0.0  # [m] nominal element length (remeshes happen every `nominal` of winch travel)
 
 
-def towed_scene(kind: str, element_length: float, duration: float = 100.0) -> Scene:
+def towed_scene(kind: str, element_length: float, duration: float = 100.0) -> RemeshCase:
     """Pay-out ('payout', 100 m and up) or haul-in ('haulin', 300 m and down) at 0.5 m/s towing the
     400 kg body at 2 kn."""
     length = 100.0 if kind == "payout" else 300.0
@@ -60,10 +60,10 @@ def towed_scene(kind: str, element_length: float, duration: float = 100.0) -> Sc
     def inputs(t):
         return {"tow.x": SPEED * t, "tow.vx": SPEED, "winch.rate": rate}, {}
 
-    return Scene(kind, params, {"tow.vx": SPEED, "winch.rate": 0.0}, inputs, duration, 0.5, length, length / n)
+    return RemeshCase(kind, params, {"tow.vx": SPEED, "winch.rate": 0.0}, inputs, duration, 0.5, length, length / n)
 
 
-def tension_scene(duration: float = 60.0) -> Scene:
+def tension_scene(duration: float = 60.0) -> RemeshCase:
     """The constant-tension winch lowering a 2 t body on 200 m (14 elements) under a 1.5 m, 8 s heave,
     1.5 kN below the static tension, time constant 5 ms (splits every 20 s or so)."""
     params = {"length": 200.0, "nElements": 14, "bottomEnd": 2, "body.mass": 2000.0, "body.volume": 0.25,
@@ -80,7 +80,7 @@ def tension_scene(duration: float = 60.0) -> Scene:
 
     # the run starts in the motion of its inputs: the heave's velocity, the winch at the set tension
     initial = {"tow.vz": HEAVE * w, "winch.tension": static - 1500.0}
-    return Scene("tension", params, initial, inputs, duration, 0.1, 200.0, 200.0 / 14)
+    return RemeshCase("tension", params, initial, inputs, duration, 0.1, 200.0, 200.0 / 14)
 
 
 def hanging_tension(params: dict) -> float:
@@ -107,7 +107,7 @@ class Run:
     steps: list = field(default_factory=list)
 
 
-def run(scene: Scene, steps, progress=None) -> Run:
+def run(scene: RemeshCase, steps, progress=None) -> Run:
     """The scene through the communication steps `steps` (a sequence of step sizes)."""
     cable = CableFMU(parameters=scene.parameters)
     rows = []
@@ -137,7 +137,7 @@ def uniform(duration: float, h: float) -> list:
 
 
 # --------------------------------------------------------------------------- master agreement
-def master_agreement(scene: Scene, progress=None) -> dict:
+def master_agreement(scene: RemeshCase, progress=None) -> dict:
     """The scene run at its coarse step and at 0.01 s: for each coarse step, its towTensionMax/Min
     against the largest/smallest the 0.01 s master saw in the same interval (its own towTensionMax/
     Min), relative to the mean tension; and the two fatigue sums."""
@@ -155,7 +155,7 @@ def master_agreement(scene: Scene, progress=None) -> dict:
             "travel": float(np.ptp(fine.length)), "remeshes": remesh_count(scene, fine)}
 
 
-def remesh_count(scene: Scene, r: Run) -> int:
+def remesh_count(scene: RemeshCase, r: Run) -> int:
     """Splits and merges the run went through: one per nominal element length of net travel
     beyond half an element (the top element splits at 1.5 and merges at 0.5 nominal lengths)."""
     travel = np.abs(r.length - scene.start_length)
@@ -163,7 +163,7 @@ def remesh_count(scene: Scene, r: Run) -> int:
 
 
 # --------------------------------------------------------------------------- split / merge moves
-def remesh_times(scene: Scene, r: Run) -> list:
+def remesh_times(scene: RemeshCase, r: Run) -> list:
     """The communication points at which the run split or merged the top element: where the winch's
     net travel first passed (k - 1/2) nominal lengths."""
     travel = np.abs(r.length - scene.start_length)

@@ -198,7 +198,7 @@ def plot(out: Path, name: str, r, args, settle) -> list:
 
 
 def main_heave_lowering(args, fmu, out: Path) -> int:
-    scene = heave_lowering.Scene(
+    scene = heave_lowering.HeaveLoweringCase(
         t_end=heave_lowering.DEFAULT_T_END if args.t_end is None else args.t_end,
         step=0.2 if args.step is None else args.step, n_elements=args.nElements, hs=args.hs, tp=args.tp,
         seed=args.seed, components=args.components, rao_file=args.rao_file)

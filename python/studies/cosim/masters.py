@@ -77,7 +77,7 @@ class HeadingReference:
 
 # ------------------------------------------------------------------------------ scene
 @dataclass
-class Scene:
+class CosimCase:
     speed: PiecewiseLinearSpeed
     heading: HeadingReference = field(default_factory=HeadingReference)
     t_end: float = 660.0
@@ -94,7 +94,7 @@ class Scene:
 
 
 @dataclass
-class SceneResult:
+class CosimResult:
     time: np.ndarray
     vessel: np.ndarray  # (n, 8) state [x, y, psi, u, v, r, speed integral, heading integral]
     thrust: np.ndarray
@@ -104,7 +104,7 @@ class SceneResult:
     shape: np.ndarray | None  # (n, 4, 21): x, y, z, tension (None if not recorded)
     cpu: float  # process time of the run [s]
     iterations: np.ndarray  # corrector iterations per step
-    scene: Scene = None
+    scene: CosimCase = None
 
     def __getitem__(self, name):
         return self.cable[name]
@@ -126,7 +126,7 @@ def _require_external(cable: CableFMU):
                            "needs an FMU with the end.* inputs")
 
 
-def initial_body_position(fmu, scene: Scene, tow_inputs: dict) -> np.ndarray:
+def initial_body_position(fmu, scene: CosimCase, tow_inputs: dict) -> np.ndarray:
     """Steady position of the towed body at the start: the internal-body equilibrium of the FMU."""
     params = {"nElements": scene.n_elements, **scene.cable_parameters, **scene.body.fmu_parameters()}
     probe = CableFMU(fmu, parameters=params, instance_name="equilibrium-probe")
@@ -138,9 +138,9 @@ def initial_body_position(fmu, scene: Scene, tow_inputs: dict) -> np.ndarray:
 
 
 class Master:
-    """One co-simulation of a Scene; `advance()` does one communication step."""
+    """One co-simulation of a CosimCase; `advance()` does one communication step."""
 
-    def __init__(self, scene: Scene, fmu=None, instance_name="cable"):
+    def __init__(self, scene: CosimCase, fmu=None, instance_name="cable"):
         if scene.coupling not in COUPLINGS:
             raise ValueError(f"coupling must be one of {COUPLINGS}")
         if scene.master not in MASTERS:
@@ -280,7 +280,7 @@ class Master:
             self.body.set_state(snap["body"])
 
     # ------------------------------------------------------------------ whole run
-    def run(self, progress=None, record_shape: bool = True) -> SceneResult:
+    def run(self, progress=None, record_shape: bool = True) -> CosimResult:
         sc = self.scene
         n = int(math.ceil(sc.t_end / sc.step - 1e-9))
         times = np.array([min(k * sc.step, sc.t_end) for k in range(n + 1)])
@@ -311,7 +311,7 @@ class Master:
                 progress.update(times[k + 1], f"t = {times[k + 1]:6.1f} s  "
                                 f"T = {cab[k + 1, _I['towTension']]:8.1f} N")
         cpu = time.process_time() - cpu0
-        return SceneResult(time=times, vessel=vessel, thrust=thrust, tow=tow,
+        return CosimResult(time=times, vessel=vessel, thrust=thrust, tow=tow,
                            cable={nm: cab[:, i] for i, nm in enumerate(CABLE_OUTPUTS)},
                            body=body, shape=shape, cpu=cpu, iterations=iters, scene=sc)
 
@@ -319,7 +319,7 @@ class Master:
         self.cable.free()
 
 
-def run_scene(scene: Scene, fmu=None, progress=None, record_shape: bool = True) -> SceneResult:
+def run_scene(scene: CosimCase, fmu=None, progress=None, record_shape: bool = True) -> CosimResult:
     master = Master(scene, fmu)
     try:
         return master.run(progress, record_shape)

@@ -24,7 +24,7 @@ import math
 
 import numpy as np
 
-from .masters import HeadingReference, Scene
+from .masters import CosimCase, HeadingReference
 from ..cases.manoeuvre import PiecewiseLinearSpeed
 from ucable.steady_tow import CableProperties, solve_steady_tow
 from ucable.units import KNOT
@@ -47,7 +47,7 @@ SNAPSHOTS = {"accelerate": [0, 60, 120, 240, 420, 660, 1200],
              "circle": [0, 120, 240, 480, 720, 1000, 1500]}
 
 
-def make_scene(name: str, t_end: float | None = None, **kwargs) -> Scene:
+def make_scene(name: str, t_end: float | None = None, **kwargs) -> CosimCase:
     if name not in NAMES:
         raise ValueError(f"unknown manoeuvre {name!r}; choose from {', '.join(NAMES)}")
     t_end = DEFAULT_T_END[name] if t_end is None else t_end
@@ -66,7 +66,7 @@ def make_scene(name: str, t_end: float | None = None, **kwargs) -> Scene:
             heading = HeadingReference(0.0, T_MANOEUVRE, math.radians(1.0), math.radians(180.0))
         elif name == "circle":
             heading = HeadingReference(0.0, T_MANOEUVRE, math.radians(0.5), math.inf)
-    return Scene(speed=speed, heading=heading, t_end=t_end, **kwargs)
+    return CosimCase(speed=speed, heading=heading, t_end=t_end, **kwargs)
 
 
 def steady_depths(name: str, cable: CableProperties = CableProperties()):
