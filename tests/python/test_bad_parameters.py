@@ -8,7 +8,7 @@ from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import fmi2Error
 
 from studies.cases.manoeuvre import constant_speed, run_tow
-from ucable.steady_tow import KNOT
+from ucable.units import KNOT
 
 BAD = [
     ("length", -300.0),

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from studies.cases import hard_cases as hc
-from ucable.steady_tow import KNOT
+from ucable.units import KNOT
 
 
 def _completed(r):

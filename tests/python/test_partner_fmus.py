@@ -19,7 +19,7 @@ from studies.cosim.masters import HeadingReference, SpeedReference
 from ucable.fmu import FMICallException
 from studies.cases.manoeuvre import PiecewiseLinearSpeed
 from studies.cosim.partners import Autopilot, Vessel, VesselParameters
-from ucable.steady_tow import KNOT
+from ucable.units import KNOT
 from ucable.system import partner_fmu
 from ucable.units import GRAVITY as G, WATER_DENSITY as RHO
 

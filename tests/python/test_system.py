@@ -91,7 +91,8 @@ def test_depressor_lift_deepens_the_steady_tow_as_the_steady_tow_ode_says(fmu_fi
     start (the system's initialization) against the independent steady-tow ODE with the body's drag,
     weight and lift as end load; 0.5 % of the tension and of the length, as the free-end steady tow
     (test_steady_tow.py). Without the lift the ODE's body rides several tolerances higher."""
-    from ucable.steady_tow import KNOT, body_end_load, solve_steady_tow
+    from ucable.steady_tow import body_end_load, solve_steady_tow
+    from ucable.units import KNOT
 
     body = S.Body(400.0, cla=1.0)
     r = S.run("turn90", step=0.5, coupling="external", body=body, duration=1.0)

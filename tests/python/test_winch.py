@@ -15,7 +15,7 @@ import pytest
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import fmi2Error
 
-from ucable.steady_tow import KNOT
+from ucable.units import KNOT
 from studies.references.winch_reference import DeployBody, elements_for_length, fmu_static_references
 
 SPEED = 2.0 * KNOT

@@ -13,7 +13,7 @@ import pytest
 
 from ucable import cli
 from ucable.scene import load_scene
-from ucable.steady_tow import KNOT
+from ucable.units import KNOT
 from ucable.scene import run_scene
 from studies.cases.winch_steps import extremes, payout, quick_tow_job, step_errors
 

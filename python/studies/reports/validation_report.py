@@ -205,7 +205,7 @@ def main(argv=None) -> int:
            f"Default 300 m cable (w = {ref.w:.3f} N/m submerged, EA = {ref.EA:.4g} N), no bending, "
            f"top held at {tuple(v.CATENARY_TOP)}, anchored at {tuple(v.CATENARY_ANCHOR)}; "
            f"Irvine: H = {ref.H:.3f} N, top tension {ref.top_tension:.3f} N, bottom tension "
-           f"{ref.bottom_tension:.3f} N (closed form in `ucable/exact.py`).", "",
+           f"{ref.bottom_tension:.3f} N (closed form in `studies/references/exact.py`).", "",
            "| N | shape error / L | top T rel. | bottom T rel. | H rel. | station tensions rel. | CPU [s] |",
            "|---|---|---|---|---|---|---|"]
     for r in cat:
