@@ -12,7 +12,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from studies.cases.error_control import errors, run, scenes
+from studies.benchmarks.error_control import errors, run, scenes
 
 SETTINGS = (1e-3, 1e-5, 1e-7, 1e-10)
 DURATION = {"hopland": 5.0, "stiff": 2.0}

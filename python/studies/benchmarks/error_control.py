@@ -27,7 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import heave
+from ..cases import heave
 from ucable.fmu import CableFMU
 from ucable.paths import REPO_ROOT, require_fmu
 from ucable.progress import ProgressBar
@@ -63,7 +63,7 @@ class ErrorControlRun:
 
 def scenes(short: bool = False) -> dict:
     """The benchmark scenes (full length, or the first 20-80 s with short=True)."""
-    from ..benchmarks import work_precision as wp
+    from . import work_precision as wp
     cases = wp.make_cases()
     out = {}
     for name, t_short in (("hopland", 80.0), ("stiff", 20.0), ("mooring", 20.0)):
