@@ -15,7 +15,7 @@ The repository's own scripts and tests use the same package (scripts/ on sys.pat
 __version__ = "0.1.0"
 
 from .paths import REPO_ROOT, MissingFMUError, find_scene, fmi3_fmu_path, fmu_path, require_fmu, scenes_dir  # noqa: F401
-from .steady_tow import KNOT  # noqa: F401
+from .units import KNOT  # noqa: F401
 
 
 def __getattr__(name):  # the heavier modules load on first use

@@ -63,7 +63,7 @@ from .orientation import ANGLES_XYZ, QUATERNION, quaternion_from_angles
 from .variables import MAX_LINES
 from .paths import find_scene, require_fmu
 from .scene_schema import Checker, SceneFileError, validate
-from .steady_tow import KNOT
+from .units import KNOT
 
 RECORDED = ["towTension", "towTensionMax", "towTensionMin", "towForce.x", "towForce.y", "towForce.z",
             "endPosition.x", "endPosition.y", "endPosition.z", "minTension", "layback", "topDeclination"]

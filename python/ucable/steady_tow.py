@@ -44,7 +44,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.integrate import solve_ivp
 
-KNOT = 1852.0 / 3600.0  # m/s
+from .units import GRAVITY, KNOT, WATER_DENSITY
 
 
 @dataclass(frozen=True)
@@ -57,8 +57,8 @@ class CableProperties:
     EA: float | None = None  # default 77.5e9 A; math.inf for an inextensible cable
     Cdn: float = 1.649
     Cdt: float = 0.12
-    water_density: float = 1025.0
-    gravity: float = 9.81
+    water_density: float = WATER_DENSITY
+    gravity: float = GRAVITY
 
     @property
     def area(self) -> float:
@@ -144,7 +144,7 @@ def free_end_closed_form(speed: float, cable: CableProperties = CableProperties(
 
 
 def body_end_load(speed: float, mass: float, volume: float, CdA: float,
-                  water_density: float = 1025.0, gravity: float = 9.81) -> tuple:
+                  water_density: float = WATER_DENSITY, gravity: float = GRAVITY) -> tuple:
     """End load (Fx, Fz) of a towed point body on the cable in a steady tow along +x.
 
     Quadratic drag 0.5 rho CdA V^2 opposes the motion (-x); net weight (m - rho V) g acts along -z.

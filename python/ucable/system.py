@@ -40,8 +40,8 @@ import numpy as np
 
 from .fmu import CableFMU
 from .paths import REPO_ROOT, fmu_path, systems_dir
+from .units import GRAVITY, KNOT
 
-KNOT = 1852.0 / 3600.0
 SYSTEM_DIRS = {"internal": "towed_body_internal", "external": "towed_body", "explicit": "towed_body_explicit",
                "proxy": "towed_body_proxy"}
 SELF_INTEGRATING = ("explicit", "proxy")  # the body FMU integrates its own translation
@@ -571,7 +571,7 @@ def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: s
         result = run_libcosim(system, params, step, t_end, progress)
     elif master == "newton":
         b = body.resolved()
-        options = {"body_weight": b.mass * 9.81, **(newton or {})}
+        options = {"body_weight": b.mass * GRAVITY, **(newton or {})}
         result = run_fmpy(system, params, step, t_end, "gauss-seidel", True, progress, newton=options)
     else:
         result = run_fmpy(system, params, step, t_end, ordering, input_derivatives, progress)

@@ -22,7 +22,7 @@ static inline void ramped_sine(double A, double T, double t, double* x, double* 
 }
 
 /* The far end anchored at (x, 0, z) on a seabed `depth` deep with the benchmark's contact (MoorDyn's
- * defaults 3e6 Pa/m and 3e5 Pa s/m times the diameter, no friction; python/studies/work_precision.py). */
+ * defaults 3e6 Pa/m and 3e5 Pa s/m times the diameter, no friction; python/studies/benchmarks/work_precision.py). */
 static inline void anchor_on_seabed(UCParams* p, double x, double z, double depth) {
     p->bottomEnd = UC_BOTTOM_ANCHORED;
     p->anchor[0] = x;

@@ -1,5 +1,5 @@
 /* heave_driver.c - fixed heave run through the core C API (src/api/cable_api.h), for
- * scripts/profile_callgrind --scene heave: the heave case of python/studies/heave.py (1000 m
+ * scripts/profile_callgrind --scene heave: the heave case of python/studies/cases/heave.py (1000 m
  * umbilical, 10 t body, 0.5 m/s current, top heave 2 m at 10 s ramped in over the first period),
  * 0.1 s communication steps with the exact tow acceleration. Usage: heave_driver [t_end=30]
  * [nElements=20]. Prints the integrator statistics as "key value" lines. */

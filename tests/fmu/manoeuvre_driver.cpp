@@ -1,5 +1,5 @@
 // manoeuvre_driver.cpp - flies a tow manoeuvre from a table through the FMI API, for valgrind memcheck
-// (scripts/memcheck). The table (written by scripts/memcheck from studies.manoeuvre) has one row per
+// (scripts/memcheck). The table (written by scripts/memcheck from studies.cases.manoeuvre) has one row per
 // communication point: t tow.x tow.y tow.z tow.vx tow.vy tow.vz ax ay az (whitespace separated).
 // Besides stepping, the run saves, serializes, deserializes and restores an FMU state halfway, resets
 // and re-initializes a second instance, so those code paths are checked as well.

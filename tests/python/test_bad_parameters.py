@@ -7,8 +7,8 @@ import pytest
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import fmi2Error
 
-from studies.manoeuvre import constant_speed, run_tow
-from ucable.steady_tow import KNOT
+from studies.cases.manoeuvre import constant_speed, run_tow
+from ucable.units import KNOT
 
 BAD = [
     ("length", -300.0),

@@ -15,7 +15,7 @@ pytest.importorskip("moordyn")
 
 
 def test_quick_benchmark_hopland(fmu_file):
-    from studies import work_precision as wp
+    from studies.benchmarks import work_precision as wp
 
     case = wp.make_cases()["hopland"]
     ref, runs, limits = wp.run_case(fmu_file, case, quick=True)
@@ -54,7 +54,7 @@ def test_quick_benchmark_hopland(fmu_file):
 def test_quick_benchmark_mooring_seabed(fmu_file):
     """Chain mooring on the seabed, quick size: our 10 elements and MoorDyn 10 segments
     against our 20-element reference, both with the matched seabed (seabedStiffness = kBot d)."""
-    from studies import work_precision as wp
+    from studies.benchmarks import work_precision as wp
 
     case = wp.make_cases()["mooring"]
     ref, runs, limits = wp.run_case(fmu_file, case, quick=True)

@@ -20,7 +20,7 @@ manoeuvre to the same accuracy; the same tolerance applies.
 import numpy as np
 import pytest
 
-from studies.manoeuvre import hopland_accelerate, run_tow
+from studies.cases.manoeuvre import hopland_accelerate, run_tow
 
 T_END = 80.0
 STEPS = [0.5, 0.1, 0.01]

@@ -11,8 +11,8 @@ compliance, well below 0.1 m.
 import numpy as np
 import pytest
 
-from studies.cosim import run_scene
-from studies.scenes import make_scene
+from studies.cosim.masters import run_scene
+from studies.cosim.scenes import make_scene
 
 
 def test_external_body_matches_internal_body_in_a_turn_entry(fmu_file):

@@ -1,7 +1,7 @@
 """A second FMI importer and master: DNV's libcosim (libcosimpy) runs the Hopland acceleration.
 
 libcosim has its own FMU loader (FMI Library) and calls the same FMI functions in the same order
-as studies.manoeuvre.run_tow with plain sampling (set inputs, doStep), so the results must be
+as studies.cases.manoeuvre.run_tow with plain sampling (set inputs, doStep), so the results must be
 bit-identical: the FMU is deterministic and keeps no state outside its instance.
 """
 
@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 from ucable.fmu import CableFMU
-from studies.manoeuvre import hopland_accelerate, run_tow
+from studies.cases.manoeuvre import hopland_accelerate, run_tow
 
-from studies import libcosim_scene  # libcosimpy is in requirements.txt: missing = failure
+from studies.cosim import libcosim_scene  # libcosimpy is in requirements.txt: missing = failure
 
 
 def test_libcosim_and_fmpy_masters_agree_bit_for_bit(fmu_file):

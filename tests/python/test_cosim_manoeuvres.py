@@ -20,9 +20,10 @@ import math
 import numpy as np
 import pytest
 
-from studies.cosim import run_scene
-from studies.scenes import PAPER_SETTLE, RAMP, SPEEDS_KN, make_scene, settling_time, steady_depths
-from ucable.steady_tow import KNOT, CableProperties, solve_steady_tow
+from studies.cosim.masters import run_scene
+from studies.cosim.scenes import PAPER_SETTLE, RAMP, SPEEDS_KN, make_scene, settling_time, steady_depths
+from ucable.steady_tow import CableProperties, solve_steady_tow
+from ucable.units import KNOT
 
 CABLE = CableProperties()
 

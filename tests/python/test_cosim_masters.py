@@ -8,9 +8,9 @@ the continuation (integrator history included), so any difference is a defect, n
 import numpy as np
 import pytest
 
-from studies.cosim import CABLE_OUTPUTS, Master
-from studies.manoeuvre import SHAPE_OUTPUTS
-from studies.scenes import make_scene
+from studies.cosim.masters import CABLE_OUTPUTS, Master
+from studies.cases.manoeuvre import SHAPE_OUTPUTS
+from studies.cosim.scenes import make_scene
 
 OUTPUTS = CABLE_OUTPUTS + SHAPE_OUTPUTS
 

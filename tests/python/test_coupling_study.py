@@ -1,4 +1,4 @@
-"""The stability analysis of the far-end coupling (studies.coupling_study, docs/cosimulation.md): the
+"""The stability analysis of the far-end coupling (studies.cosim.coupling_study, docs/cosimulation.md): the
 model problem's amplification factors have the known limits, the implicit far end's model is stable at
 every step and mass, and the explicit coupling's model predicts the measured limit of the FMUs.
 """
@@ -6,7 +6,7 @@ every step and mass, and the explicit coupling's model predicts the measured lim
 import numpy as np
 import pytest
 
-from studies import coupling_study as C
+from studies.cosim import coupling_study as C
 from ucable import system as S
 from ucable.fmu import FMICallException
 

@@ -7,8 +7,8 @@ import math
 import numpy as np
 import pytest
 
-from studies import deck_currents as dc
-from studies.quiet import Quiet
+from studies.comparisons import deck_currents as dc
+from studies.peers.quiet import Quiet
 from ucable.fmu import CableFMU
 
 
@@ -117,7 +117,7 @@ def test_a_system_deck_takes_its_current_profile_to_every_line(fmu_file, tmp_pat
     """The OC4 platform's three chains with `Currents` 1 and current_profile.txt: every line's tensions
     are bit for bit those of the still-water deck with the same profile set as parameters, and differ
     from the still water's."""
-    from studies import mooring_system as ms
+    from studies.comparisons import mooring_system as ms
 
     text = ms.OC4.read_text()
     assert "0.001    dtM" in text

@@ -11,8 +11,9 @@ Not marked slow: it is the foundation acceptance run (< 1 s CPU with 20 elements
 import numpy as np
 import pytest
 
-from studies.manoeuvre import SCALAR_OUTPUTS, hopland_accelerate, run_tow
-from ucable.steady_tow import KNOT, CableProperties, solve_steady_tow
+from studies.cases.manoeuvre import SCALAR_OUTPUTS, hopland_accelerate, run_tow
+from ucable.steady_tow import CableProperties, solve_steady_tow
+from ucable.units import KNOT
 
 
 def test_hopland_manoeuvre_runs_to_the_end_and_settles_at_the_2p4_knot_tension(make_cable):

@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 from ucable.fmu import FMICallException
+from ucable.units import KNOT
 
-KNOT = 0.514444
 TOW = ["tow.x", "tow.y", "tow.z", "tow.vx", "tow.vy", "tow.vz"]
 END = ["end.x", "end.y", "end.z", "end.vx", "end.vy", "end.vz"]
 ACCELERATIONS = ["tow.ax", "tow.ay", "tow.az", "end.ax", "end.ay", "end.az"]

@@ -1,4 +1,4 @@
-"""A clump weight dragged over the seabed converges under refinement (studies.dragged_clump).
+"""A clump weight dragged over the seabed converges under refinement (studies.cases.dragged_clump).
 
 The tow speed steps from 0.45 to 0.5 m/s: the sliding clump rings on the chain's axial stiffness
 (about a tenth of the tension) and the ringing decays. What converged means here: the steady
@@ -12,7 +12,7 @@ it, and 20 elements do not hold that swing to a tenth (docs/model.md)."""
 
 import pytest
 
-from studies import dragged_clump as D
+from studies.cases import dragged_clump as D
 
 
 @pytest.fixture(scope="module")

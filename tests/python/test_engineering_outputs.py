@@ -2,7 +2,7 @@
 cable's angles at the tow point and the anchor, layback, the seabed's reaction, the tow tension's
 extremes between communication points and the online fatigue count.
 
-References are independent: the elastic catenary with touchdown (studies.exact), the rainflow count
+References are independent: the elastic catenary with touchdown (studies.references.exact), the rainflow count
 of the `rainflow` package, and the FMU's own tension sampled at fine communication steps.
 """
 
@@ -11,7 +11,7 @@ import math
 import numpy as np
 import pytest
 
-from studies import mooring as M
+from studies.cases import mooring as M
 
 ELEMENTS = 20
 ELEMENT_LENGTH = M.CHAIN["length"] / ELEMENTS

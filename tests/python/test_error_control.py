@@ -20,7 +20,7 @@ tolerance loosened to 10 cm, where the tension tolerance alone decides.
 
 import pytest
 
-from studies.error_control import TOLERANCES, curves, monotone, run, scenes, errors
+from studies.benchmarks.error_control import TOLERANCES, curves, monotone, run, scenes, errors
 
 DEFAULT_BOUND = 0.005
 

@@ -12,8 +12,8 @@ from __future__ import annotations
 import pytest
 from fmpy.fmi2 import fmi2Error
 
-from studies import first_contact_decks as fc
-from studies import public_decks as pd
+from studies.comparisons import first_contact_decks as fc
+from studies.comparisons import public_decks as pd
 from ucable.fmu import FMICallException
 
 WD0200 = pd.PUBLIC / "md_tests_Mooring_WD0200_Chain.txt"

@@ -14,8 +14,8 @@ from fmpy.fmi2 import FMU2Slave
 from fmpy.fmi3 import FMU3Slave
 from fmpy.validation import validate_fmu
 
-from studies import mooring_system as ms
-from studies.manoeuvre import NUM_STATIONS, hopland_accelerate, tow_inputs
+from studies.comparisons import mooring_system as ms
+from studies.cases.manoeuvre import NUM_STATIONS, hopland_accelerate, tow_inputs
 from ucable.variables import MAX_BODIES, MAX_LINES, MAX_POINTS
 
 STEP = 0.5

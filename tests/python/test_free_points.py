@@ -9,9 +9,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from studies import coupled_stiffness as cs
-from studies import free_points as fp
-from studies import mooring_system as ms
+from studies.comparisons import coupled_stiffness as cs
+from studies.comparisons import free_points as fp
+from studies.comparisons import mooring_system as ms
 from ucable.fmu import FMICallException
 
 

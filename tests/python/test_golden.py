@@ -1,6 +1,6 @@
 """Bit-for-bit regression against tests/data/golden: refactors that must not change the numbers
 (the variable schema, the compiled line description, one section described by the scalar
-parameters) reproduce every output of three short scenes exactly (python/studies/golden.py); the
+parameters) reproduce every output of three short scenes exactly (python/studies/cases/golden.py); the
 Vessel partner FMU without waves (waves.mode 0, whatever the other wave parameters) reproduces every
 output of a manoeuvre recorded before it had any (its heading loop's integral pole at 0: the PD it had then)."""
 
@@ -8,7 +8,7 @@ import json
 
 import pytest
 
-from studies.golden import GOLDEN_DIR, SCENES, VESSEL_SCENES, run_scene, run_vessel_scene
+from studies.cases.golden import GOLDEN_DIR, SCENES, VESSEL_SCENES, run_scene, run_vessel_scene
 
 
 @pytest.mark.parametrize("scene", sorted(SCENES))

@@ -11,8 +11,8 @@ import math
 import numpy as np
 import pytest
 
-from studies import hard_cases as hc
-from ucable.steady_tow import KNOT
+from studies.cases import hard_cases as hc
+from ucable.units import KNOT
 
 
 def _completed(r):

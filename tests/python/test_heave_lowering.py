@@ -15,17 +15,18 @@ import math
 import numpy as np
 import pytest
 
-from studies import heave_lowering
-from studies.heave_lowering import Scene, run
+from studies.cases import heave_lowering
+from studies.cases.heave_lowering import HeaveLoweringCase, run
 
-RHO, G = 1025.0, 9.81
+from ucable.units import GRAVITY as G, WATER_DENSITY as RHO
+
 PERIOD = 10.0
 
 
 @pytest.fixture(scope="module")
 def regular(fmu_file):
     # the winch held (lower_rate 0): the analysis below is of a line of fixed length
-    scene = Scene(t_end=60.0, mode=1, hs=2.0, tp=PERIOD, components=1, ramp=10.0, n_elements=10, step=0.2,
+    scene = HeaveLoweringCase(t_end=60.0, mode=1, hs=2.0, tp=PERIOD, components=1, ramp=10.0, n_elements=10, step=0.2,
                   lower_rate=0.0)
     return run(scene, fmu_file)
 
@@ -78,7 +79,7 @@ def test_the_body_heaves_with_the_stern_amplified_by_the_line_spring(regular):
 
 
 def test_the_scene_command_writes_its_csv_and_figure(fmu_file, tmp_path):
-    from studies.manoeuvre_cli import main
+    from studies.cosim.manoeuvre_cli import main
     assert main(["heave-lowering", "--t-end", "2", "--components", "10", "--nElements", "4",
                  "--fmu", str(fmu_file), "--out", str(tmp_path)]) == 0
     data = np.genfromtxt(tmp_path / "heave-lowering.csv", delimiter=",", names=True)
@@ -97,14 +98,14 @@ def test_the_system_file_is_the_scene_and_libcosim_runs_it(fmu_file):
     from ucable import system as S
 
     system = S.SystemStructure.parse(S.systems_dir() / "heave_lowering" / "OspSystemStructure.xml")
-    scene = Scene(t_end=10.0, ramp=20.0)
+    scene = HeaveLoweringCase(t_end=10.0, ramp=20.0)
     assert system.simulators["vessel"].initial == scene.vessel_parameters()
     assert system.simulators["cable"].initial == scene.cable_parameters()
     assert system.step == scene.step
     for s in system.simulators.values():
         s.source = S.fmu_path() if s.source.name == "UnderwaterCable.fmu" else S.partner_fmu(s.source.stem)
     osp = S.run_libcosim(system, {}, scene.step, scene.t_end)
-    ref = run(Scene(t_end=10.0), fmu_file)
+    ref = run(HeaveLoweringCase(t_end=10.0), fmu_file)
     assert np.max(np.abs(osp["vessel.tow.z"] - ref["vessel.tow.z"])) < 1e-12  # the same closed form
     az = ref["vessel.tow.az"]
     bound = 4000.0 * np.max(np.abs(np.diff(az)))
@@ -117,7 +118,7 @@ def test_the_scene_lowers_the_body(fmu_file):
     the rate at its default acceleration (winch.maxAcceleration 0.2 m/s2: 0.25^2 / (2 x 0.2)), and the
     body goes down with the line (the line stretches by T / EA per metre:
     20 kN / 3e7 N = 0.07 %, 0.4 m over 500 m, hence 0.5 m)."""
-    r = run(Scene(t_end=20.0, mode=1, hs=0.5, components=1, n_elements=10), fmu_file)
+    r = run(HeaveLoweringCase(t_end=20.0, mode=1, hs=0.5, components=1, n_elements=10), fmu_file)
     L = r["cable.unstretchedLength"]
     assert L[-1] - L[0] == pytest.approx(0.25 * 20.0 - 0.25 ** 2 / (2.0 * 0.2), rel=1e-3)
     depth = -r["cable.endPosition.z"]

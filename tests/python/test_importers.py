@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from ucable.steady_tow import KNOT
+from ucable.units import KNOT
 
 SPEED = 1.1 * KNOT
 

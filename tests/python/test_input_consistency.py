@@ -213,7 +213,7 @@ def test_a_step_an_implausible_input_makes_impossible_fails_naming_it_in_bounded
     bound it took 8,442 integrator steps on line 1 and returned a body force of 1.3e11 N; under load up to a
     minute of CPU). Bounded: at most 5,000 integrator steps per line."""
     sys.path.insert(0, str(ROOT / "python"))
-    from studies import mooring_system as ms
+    from studies.comparisons import mooring_system as ms
 
     deck = ms.read_system_deck(ms.OC4)
     c = make_cable(parameters=ms.fmu_parameters(deck))

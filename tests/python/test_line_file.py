@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 from fmpy.fmi2 import fmi2Error
 
-from studies import mooring as m
+from studies.cases import mooring as m
 from ucable.fmu import FMICallException, load
 
 DECKS = Path(__file__).resolve().parents[1] / "data" / "decks"
@@ -142,7 +142,7 @@ def test_the_deck_statics_match_moorpy_fed_the_same_file(fmu_file, name, dx):
     the same deck: fairlead and anchor tension within the 0.5 % asked of a line described by a deck
     (docs/lines_validation.md): one line; three lines joined at pinned points; two lines joined at a
     clump weight."""
-    from studies import line_file_validation as v
+    from studies.comparisons import line_file_validation as v
 
     deck = v.read_deck(DECKS / name)
     ref, ours = v.moorpy_statics(deck, dx), v.fmu_statics(fmu_file, deck, dx)
@@ -203,7 +203,7 @@ def test_a_deck_of_two_lines_and_a_clump_weight_is_the_same_line_as_its_sections
 def test_the_surge_differs_from_moordyn_by_discretization_only(fmu_file, tmp_path, name):
     """The fairlead surge of the deck in both codes (docs/lines_validation.md): refining both meshes 2x
     (BA kept in N s) brings the two codes' tension histories closer, at the fairlead and the anchor."""
-    from studies import line_file_validation as v
+    from studies.comparisons import line_file_validation as v
 
     deck = v.read_deck(DECKS / name)
     fine = v.refined_deck(deck, 2, tmp_path)

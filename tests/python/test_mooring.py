@@ -1,5 +1,5 @@
 """Mooring lines through the FMU: the chain on the seabed against the elastic catenary with touchdown
-(studies.exact.TouchdownCatenary) and MoorPy, the surging fairlead, impossible geometry, the current
+(studies.references.exact.TouchdownCatenary) and MoorPy, the surging fairlead, impossible geometry, the current
 profile against an independent steady ODE, and the external far end (bottomEnd 3)."""
 
 import math
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from ucable.fmu import FMICallException
 
-from studies import mooring as m
+from studies.cases import mooring as m
 from ucable.fmu import CableFMU
 
 

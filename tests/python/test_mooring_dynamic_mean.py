@@ -1,4 +1,4 @@
-"""Mooring surge scene: our dynamic mean fairlead tension against MoorDyn's (studies.mooring_dynamics,
+"""Mooring surge scene: our dynamic mean fairlead tension against MoorDyn's (studies.benchmarks.mooring_dynamics,
 docs/mooring_dynamic_mean.md). The requirement is the dynamic mean within 0.5 % of the quasi-static
 mean; test_mooring.py::test_surge_mean_tension_is_quasi_static records (xfail) that the 10 s surge
 misses it. These tests establish with an independent code (MoorDyn 2.7.2) that the miss is the
@@ -13,8 +13,8 @@ sequence does not contract, the largest change seen to any finer mesh that was r
 
 import pytest
 
-from studies import mooring as m
-from studies import mooring_dynamics as md
+from studies.cases import mooring as m
+from studies.benchmarks import mooring_dynamics as md
 
 pytest.importorskip("moordyn")
 

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 from fmpy.fmi2 import fmi2Error
 
-from studies import mooring_system as ms
+from studies.comparisons import mooring_system as ms
 from ucable.fmu import FMICallException
 from ucable.orientation import ANGLES_XYZ, ANGLES_ZYX, QUATERNION, quaternion_from_angles
 
@@ -260,7 +260,7 @@ def test_a_coupled_body_of_the_deck_carries_its_points(make_cable, tmp_path):
 
 
 def _dynamics_difference(fmu_file, tmp_path, elements: int, factor: int) -> np.ndarray:
-    from studies.line_file_validation import refined_deck_file
+    from studies.comparisons.line_file_validation import refined_deck_file
 
     motion, t_end = ms.PlatformMotion(), 50.0
     ours = ms.fmu_motion(fmu_file, DECK, motion, t_end, lineFileElements=elements)
@@ -463,7 +463,7 @@ def test_chains_with_clump_weights_in_motion_match_moordyn(fmu_file, tmp_path):
     for 50 s: the fairlead tensions (deck lines 4-6) of the FMU (20 elements per section) and MoorDyn at
     twice the deck's NumSegs, its clumps settled from MoorPy's equilibrium, differ by less than the
     acceptance's 1 % of the mean (measured 0.26 %; 0.59 % against MoorDyn at the deck's NumSegs)."""
-    from studies.line_file_validation import refined_deck_file
+    from studies.comparisons.line_file_validation import refined_deck_file
 
     path = tmp_path / "oc4_clump.dat"
     path.write_text(ms.clumped_oc4(ms.OC4.read_text()))

@@ -25,8 +25,8 @@ import pytest
 from ucable import read_results
 from ucable import system as S
 from ucable.fmu import FMICallException
-from studies.coupling_study import POSITION_BOUND, TENSION_BOUND
-from studies.third_party_study import compare, internal, run_mode
+from studies.cosim.coupling_study import POSITION_BOUND, TENSION_BOUND
+from studies.cosim.third_party_study import compare, internal, run_mode
 
 CASES = [(mass, step) for mass in (50.0, 2000.0) for step in (0.1, 0.5)]
 
@@ -72,7 +72,7 @@ def test_the_newton_master_needs_a_body_that_integrates_itself():
 LIBCOSIM = """
 import json, sys
 from ucable import system as S
-from studies.third_party_study import compare, internal
+from studies.cosim.third_party_study import compare, internal
 mass, step, towfish = float(sys.argv[1]), float(sys.argv[2]), sys.argv[3]
 try:
     r = S.run("accelerate", step, "explicit", "libcosim", "jacobi", S.Body(mass), 60.0, body_fmu=towfish)

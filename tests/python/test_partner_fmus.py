@@ -1,7 +1,7 @@
 """The partner FMUs (Vessel, VesselRAO, TowedBody): FMI conformance, the physics against independent solutions,
 and the robustness every FMU of the project owes (bad parameters, NaN inputs, call sequences, states).
 
-The Vessel FMU is a C port of the Python vessel model studies.partners.vessel: with the same constant
+The Vessel FMU is a C port of the Python vessel model studies.cosim.partners.vessel: with the same constant
 tow force both integrate the same equations with the same Runge-Kutta substeps, so they agree to
 round-off (1e-9 m / 1e-12 rad after 400 steps: the two differ only in the order of floating-point
 operations, whose error grows about linearly with the number of steps from 1e-16 relative).
@@ -15,14 +15,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from studies.cosim import HeadingReference, SpeedReference
+from studies.cosim.masters import HeadingReference, SpeedReference
 from ucable.fmu import FMICallException
-from studies.manoeuvre import PiecewiseLinearSpeed
-from studies.partners import Autopilot, Vessel, VesselParameters
-from ucable.steady_tow import KNOT
+from studies.cases.manoeuvre import PiecewiseLinearSpeed
+from studies.cosim.partners import Autopilot, Vessel, VesselParameters
+from ucable.units import KNOT
 from ucable.system import partner_fmu
-
-RHO, G = 1025.0, 9.81
+from ucable.units import GRAVITY as G, WATER_DENSITY as RHO
 
 
 @pytest.fixture(scope="module")

@@ -6,7 +6,7 @@ that does not iterate.
 Acceptance: with the body's (m + m_a) given exactly, within 1 % RMS tow tension and 0.2 m body position
 of the internal body (bottomEnd 2, the same numbers, the same step and ordering), Hopland acceleration
 and a 90 deg turn, 50 kg and 2 t, 0.1 and 0.5 s, Gauss-Seidel and Jacobi. The model problem's stability
-(studies.proxy_study.stability_proxy) is checked against its limits.
+(studies.cosim.proxy_study.stability_proxy) is checked against its limits.
 """
 
 import math
@@ -14,8 +14,8 @@ import math
 import numpy as np
 import pytest
 
-from studies import proxy_study as P
-from studies.coupling_study import POSITION_BOUND, TENSION_BOUND, Chain
+from studies.cosim import proxy_study as P
+from studies.cosim.coupling_study import POSITION_BOUND, TENSION_BOUND, Chain
 from ucable import system as S
 
 

@@ -1,4 +1,4 @@
-"""The public MoorDyn and MoorPy decks the FMU loads (tests/data/decks/public, python/studies/public_decks.py):
+"""The public MoorDyn and MoorPy decks the FMU loads (tests/data/decks/public, python/studies/comparisons/public_decks.py):
 each one loads, as one line or as a mooring system, and every line's fairlead and anchor tension matches
 MoorPy's statics of the same file within the 0.5 % asked of a deck (docs/systems_mooring.md, "Public
 decks"). Where MoorPy's own equilibrium fails (named below, checked to fail), the FMU is checked against
@@ -10,15 +10,15 @@ import re
 import numpy as np
 import pytest
 
-from studies import public_decks as pd
+from studies.comparisons import public_decks as pd
 from ucable.fmu import CableFMU
+from ucable.units import STANDARD_GRAVITY as GRAVITY
 
 # MoorPy 1.3.0 finds no equilibrium of these: a neutrally buoyant line hanging from a fixed point (it
 # leaves the weight of the end mass unbalanced), a beam between two fixed points above the water
 # (tensions NaN), a W-shaped chain between two fixed points on a buoy (point 2 left with 13.5 kN
 # unbalanced, its iteration wandering).
 MOORPY_FAILS = {"md_tests_Mooring_lifting", "md_tests_Mooring_BeamSimplySupported", "mp_tests_case6"}
-GRAVITY = 9.80665
 
 
 @pytest.mark.parametrize("path", pd.decks(), ids=lambda p: p.stem)

@@ -14,7 +14,7 @@ from ucable.fmu import FMICallException
 from ucable.results import bare_name, labelled
 from ucable.tables import write_columns as write_table
 from ucable.scene import CableFMU, run_scene
-from ucable.steady_tow import KNOT
+from ucable.units import KNOT
 from ucable.system import system_names
 
 UNIT = " ["  # every numeric column: NAME [UNIT]

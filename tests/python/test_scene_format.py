@@ -14,7 +14,7 @@ import ucable
 from ucable.cli import main
 from ucable.scene import TowMotion, load_scene, run_scene
 from ucable.scene_schema import SceneFileError, validate
-from ucable.steady_tow import KNOT
+from ucable.units import KNOT
 from ucable.variables import NUM_STATIONS
 
 ROOT = Path(__file__).resolve().parents[2]

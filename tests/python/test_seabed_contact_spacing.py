@@ -4,7 +4,7 @@
 
 import pytest
 
-from studies import work_precision as wp
+from studies.benchmarks import work_precision as wp
 
 STIFF = wp.make_cases()["stiff"]
 

@@ -11,7 +11,7 @@ import pytest
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import fmi2Error
 
-from studies.lines_figure import LAZY_WAVE, SECTIONS, VESSEL_Z
+from studies.reports.lines_figure import LAZY_WAVE, SECTIONS, VESSEL_Z
 
 
 def _section(k: int, **values) -> dict:

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from ucable.fmu import FMICallException
 
-from studies.manoeuvre import SCALAR_OUTPUTS, SHAPE_OUTPUTS, hopland_accelerate, tow_inputs
+from studies.cases.manoeuvre import SCALAR_OUTPUTS, SHAPE_OUTPUTS, hopland_accelerate, tow_inputs
 
 STEP = 0.5
 T_SAVE = 20.0  # inside the acceleration ramp: the state is far from steady

@@ -1,7 +1,7 @@
 """Anchored lines whose fairlead is above the water: the part in air weighs its dry weight, the part
 in water its submerged weight, in the elements (a coarse top element crossing the surface too), in
 the static profile that starts them and in the check of the start. The reference is the shooting
-solution of studies.air_catenary (MoorPy blends one weight over a line that leaves the water),
+solution of studies.references.air_catenary (MoorPy blends one weight over a line that leaves the water),
 itself checked against MoorPy on submerged lines first. The lines are those of scripts/bench_statics
 with the fairlead 1-30 m above the surface (docs/statics_benchmark.md): single polyester and chain
 lines, two sections and a clump, at 10 and 20 elements."""
@@ -10,7 +10,7 @@ import dataclasses
 
 import pytest
 
-from studies import bench_statics as B
+from studies.benchmarks import bench_statics as B
 
 SEED = 2026
 ABOVE = [0, 17, 21, 25, 29]  # refused at every mesh, off by -9 %, -6 %, refused at 10, off by -3.8 % before
@@ -77,7 +77,7 @@ def test_a_beam_deck_in_air_without_bending_starts_at_its_dry_catenary(fmu_file)
 
     from scipy.optimize import brentq
 
-    from studies import public_decks as pd
+    from studies.comparisons import public_decks as pd
     from ucable.fmu import CableFMU
 
     L, EA, w = 10.0, 1.5e9, 100.0 * 9.80665

@@ -18,9 +18,9 @@ import re
 import numpy as np
 import pytest
 
-from studies import bench_statics as B
+from studies.benchmarks import bench_statics as B
 from ucable.fmu import CableFMU
-from studies.exact import ElasticCatenary, TouchdownCatenary
+from studies.references.exact import ElasticCatenary, TouchdownCatenary
 
 SEED = 2026          # the benchmark's default seed: this is its lines 0-11
 LINES = 12
@@ -60,7 +60,7 @@ def test_draws_are_reproducible_line_by_line_and_within_the_ranges(cases):
 
 def closed_form_tension(line, depth: float):
     """Tension at end B of one piece of MoorPy's solution from the project's closed forms
-    (studies.exact): an elastic catenary with touchdown from a lower end on the seabed, hanging free
+    (studies.references.exact): an elastic catenary with touchdown from a lower end on the seabed, hanging free
     between its ends, or lying flat; None where none of them applies (a piece sagging onto the
     seabed between two raised ends, or rising less than 1 cm) or its solver finds no root."""
     w, EA, L = line.type["w"], line.type["EA"], line.L

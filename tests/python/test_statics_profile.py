@@ -14,10 +14,10 @@ import numpy as np
 import pytest
 
 from ucable.fmu import CableFMU
-from studies.lines_figure import section_parameters
-from studies.mooring import chain_weight
+from ucable.units import GRAVITY as G, WATER_DENSITY as RHO
+from studies.reports.lines_figure import section_parameters
+from studies.cases.mooring import chain_weight
 
-RHO, G = 1025.0, 9.81
 CHAIN = {"diameter": 0.0766, "massPerLength": 113.0, "EA": 7.5e8}
 WIRE = {"diameter": 0.08, "massPerLength": 32.0, "EA": 5.5e8}
 TENSION_ONLY = {"bottomEnd": 1, "enableSeabed": True, "enableBending": False, "enableCompression": False}

@@ -4,8 +4,8 @@ ends) the stiff power cable of the benchmark settled at some meshes into a folde
 
 import pytest
 
-from studies import work_precision as wp
-from studies.lines_figure import section_parameters
+from studies.benchmarks import work_precision as wp
+from studies.reports.lines_figure import section_parameters
 
 STIFF = wp.make_cases()["stiff"]
 PROPERTIES = ("diameter", "massPerLength", "EA", "EI", "Cdn", "Cdt", "Can", "Cat")

@@ -15,8 +15,9 @@ import math
 import numpy as np
 import pytest
 
-from studies.manoeuvre import constant_speed, run_tow
-from ucable.steady_tow import KNOT, CableProperties, solve_steady_tow
+from studies.cases.manoeuvre import constant_speed, run_tow
+from ucable.steady_tow import CableProperties, solve_steady_tow
+from ucable.units import KNOT
 
 N_ELEMENTS = 20
 REL_TENSION = 0.005

@@ -10,8 +10,9 @@ import math
 import numpy as np
 import pytest
 
-from ucable.steady_tow import (KNOT, CableProperties, body_end_load, critical_angle,
-                               free_end_closed_form, solve_steady_tow)
+from ucable.steady_tow import (CableProperties, body_end_load, critical_angle, free_end_closed_form,
+                               solve_steady_tow)
+from ucable.units import KNOT
 
 SPEEDS_KN = [0.5, 1.1, 2.4, 2.5, 4.0]
 

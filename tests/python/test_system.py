@@ -91,7 +91,8 @@ def test_depressor_lift_deepens_the_steady_tow_as_the_steady_tow_ode_says(fmu_fi
     start (the system's initialization) against the independent steady-tow ODE with the body's drag,
     weight and lift as end load; 0.5 % of the tension and of the length, as the free-end steady tow
     (test_steady_tow.py). Without the lift the ODE's body rides several tolerances higher."""
-    from ucable.steady_tow import KNOT, body_end_load, solve_steady_tow
+    from ucable.steady_tow import body_end_load, solve_steady_tow
+    from ucable.units import KNOT
 
     body = S.Body(400.0, cla=1.0)
     r = S.run("turn90", step=0.5, coupling="external", body=body, duration=1.0)
@@ -155,7 +156,7 @@ def test_the_vessel_reads_its_own_rao_table_under_both_masters(fmu_file, tmp_pat
     moves the tow point (z: heave, roll and pitch at the lever arm; 0 in calm water) 1.5 times as far, to
     2 % of its amplitude: the manoeuvre feels the cable's tow force, which the larger motion changes
     (0.8 % measured; the default table is 50 % off)."""
-    from studies.rao_box import DEFAULT_OUT as RAO_CSV
+    from studies.cases.rao_box import DEFAULT_OUT as RAO_CSV
     waves = {"waves.mode": 1, "waves.height": 2.0, "waves.period": 8.0, "waves.direction": 2.5}
     rows = [line.split(",") for line in RAO_CSV.read_text().splitlines()]
     scaled = [r if len(r) != 14 or r[0] == "period" or r[0].startswith("#")

@@ -17,7 +17,8 @@ import math
 import numpy as np
 import pytest
 
-RHO, G = 1025.0, 9.81
+from ucable.units import GRAVITY as G, WATER_DENSITY as RHO
+
 CHAIN = {"length": 100.0, "diameter": 0.0332, "massPerLength": 2.7018, "EA": 6.709e7,
          "enableBending": False, "enableAddedMass": False, "Cdn": 0.0, "Cdt": 0.0,
          "nElements": 10, "bottomEnd": 0, "initMode": 0}
@@ -92,7 +93,7 @@ def test_where_the_chain_stays_taut_the_two_laws_agree(fmu_file):
     """Static catenary of the mooring chain with touchdown (everywhere in tension, 1.3 MN and more):
     the tension-only law equals the two-sided one above 1e-5 EA = 7.5 kN, so the equilibria agree
     to the static solver's convergence."""
-    from studies import mooring
+    from studies.cases import mooring
 
     a = mooring.fmu_statics(fmu_file, 20, enableCompression=True)
     b = mooring.fmu_statics(fmu_file, 20, enableCompression=False)
@@ -107,7 +108,7 @@ def test_a_two_sided_line_that_goes_slack_says_which_law_to_use(fmu_file, compre
     body sinks): with the two-sided law the cable pushes with its full EA where it would buckle at a
     few hundred newtons (-58 kN in docs/robustness.md), and the run says so once, naming the law to
     use; tension-only, it says nothing."""
-    from studies import hard_cases as hc
+    from studies.cases import hard_cases as hc
     from ucable.fmu import CableFMU
 
     case = hc.slack_snap(t_end=4.0)

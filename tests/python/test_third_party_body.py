@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 from fmpy.validation import validate_fmu
 
-RHO, G = 1025.0, 9.81
+from ucable.units import GRAVITY as G, WATER_DENSITY as RHO
 
 
 def test_the_third_party_body_is_a_valid_fmu(towfish_fmu):

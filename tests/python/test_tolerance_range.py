@@ -12,7 +12,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from studies.error_control import errors, run, scenes
+from studies.benchmarks.error_control import errors, run, scenes
 
 SETTINGS = (1e-3, 1e-5, 1e-7, 1e-10)
 DURATION = {"hopland": 5.0, "stiff": 2.0}
@@ -47,7 +47,7 @@ def test_a_deck_with_bending_stiffness_runs_at_a_tight_reltol(fmu_file):
     complete, and the tighter one is closer to a run at tensionTolerance 1e-7."""
     import math
 
-    from studies import public_decks as pd
+    from studies.comparisons import public_decks as pd
     from ucable.fmu import CableFMU
 
     def top_tension(extra):

@@ -1,5 +1,5 @@
 """Torsion through the FMU: Greenhill, constant torque / twist rate, end moments,
-switched-off bit-identity, prescribed rotation, hockling. Scenes in studies.torsion."""
+switched-off bit-identity, prescribed rotation, hockling. Scenes in studies.cases.torsion."""
 
 import math
 
@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from ucable.fmu import NUM_STATIONS
-from studies.torsion import (DEPTH, TENSIONS, critical_torque, greenhill_parameters, run_hockling)
+from studies.cases.torsion import (DEPTH, TENSIONS, critical_torque, greenhill_parameters, run_hockling)
 
 
 @pytest.mark.parametrize("tension", TENSIONS)

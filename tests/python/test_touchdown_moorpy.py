@@ -12,7 +12,7 @@ import math
 import numpy as np
 import pytest
 
-from studies import mooring as M
+from studies.cases import mooring as M
 
 LENGTH, DEPTH, FAIRLEAD_Z, ANCHOR_X = 600.0, 150.0, -20.0, -555.0
 ELEMENTS = 20

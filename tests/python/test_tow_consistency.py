@@ -2,7 +2,7 @@
 (a tension spike): the FMU reports it once per run with a warning naming the distance, and stays
 silent for a master whose positions are the integral of its velocities."""
 
-KNOT = 0.514444
+from ucable.units import KNOT
 
 
 def tow(make_cable, jump=0.0, steps=20, h=0.5):

@@ -1,4 +1,4 @@
-"""Elastic catenary (Irvine, studies.exact.ElasticCatenary) and steady tows (ucable.steady_tow)
+"""Elastic catenary (Irvine, studies.references.exact.ElasticCatenary) and steady tows (ucable.steady_tow)
 against the FMU's initial equilibrium. The seabed touchdown case is in test_mooring.py.
 """
 
@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from studies.validation import catenary, convergence_rate, steady_tow, towed_body_parameters
+from studies.cases.validation import catenary, convergence_rate, steady_tow, towed_body_parameters
 
 
 def test_anchored_line_hangs_as_irvines_elastic_catenary(fmu_file):

@@ -4,7 +4,7 @@ convergence of the Hopland manoeuvre, through the FMU."""
 import numpy as np
 import pytest
 
-from studies.validation import VIB_EI, free_vibration, hopland_tension
+from studies.cases.validation import VIB_EI, free_vibration, hopland_tension
 
 # Bound: within 0.5 % of the analytic first three modes. Measured with 10 elements and a 1 mm
 # pulse: string within 2e-4, beam-string 1.7e-4 / 4.8e-4 / 1.0e-3 (mode 3 carries the spatial

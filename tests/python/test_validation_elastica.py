@@ -11,7 +11,7 @@ import math
 import numpy as np
 import pytest
 
-from studies.validation import (ELASTICA_L, convergence_rate, elastica_dynamic, elastica_static,
+from studies.cases.validation import (ELASTICA_L, convergence_rate, elastica_dynamic, elastica_static,
                                elastica_strain, end_couple)
 
 LOADS = [20.0, 40.0, 60.0, 80.0]

@@ -18,9 +18,9 @@ import numpy as np
 import pytest
 
 from ucable.fmu import FMICallException
-from studies.rao_box import DEFAULT_OUT as RAO_CSV
-from studies.rao_box import fmu_with_table, interpolate
-from studies.rao_box import read as read_rao
+from studies.cases.rao_box import DEFAULT_OUT as RAO_CSV
+from studies.cases.rao_box import fmu_with_table, interpolate
+from studies.cases.rao_box import read as read_rao
 from ucable.system import partner_fmu
 
 
@@ -172,7 +172,7 @@ def test_reset_and_rerun_is_bit_identical(rao_fmu, make_unit):
 @pytest.mark.parametrize("period", [80.0, 200.0])
 @pytest.mark.parametrize("heading", [180.0, 135.0, 90.0, 30.0])
 def test_the_shipped_raos_follow_the_surface_in_long_waves(period, heading):
-    """The generic barge's RAOs (python/studies/rao_box.py) tend to a vessel that follows the surface as
+    """The generic barge's RAOs (python/studies/cases/rao_box.py) tend to a vessel that follows the surface as
     the wave grows long: for eta = a e^{i k (x cos mu + y sin mu)}, heave a, roll d(eta)/dy = i k sin(mu) a
     (positive lifts the port side), pitch -d(eta)/dx = -i k cos(mu) a (positive lowers the bow), surge and
     sway the water's horizontal displacement i a (cos mu, sin mu), and yaw the rotation that best fits
@@ -180,7 +180,7 @@ def test_the_shipped_raos_follow_the_surface_in_long_waves(period, heading):
     oscillators' damping lags them by 2 zeta omega / omega_n (zeta <= 0.4), the rest is of order
     (omega / omega_n)^2, k T and (k L)^2: with omega_n the lowest natural frequency (roll, 9.8 s),
     0.8 r + 3 r^2, r = 9.8 s / period, bounds the difference (relative to k a for the rotations)."""
-    from studies.rao_box import B, L, box_raos
+    from studies.cases.rao_box import B, L, box_raos
     w = 2 * math.pi / period
     k = w * w / 9.81
     mu = math.radians(heading)

@@ -15,12 +15,12 @@ import math
 import numpy as np
 import pytest
 
-from studies.rao_box import DEFAULT_OUT as RAO_CSV
-from studies.rao_box import fmu_with_table, interpolate
-from studies.rao_box import read as read_rao
+from studies.cases.rao_box import DEFAULT_OUT as RAO_CSV
+from studies.cases.rao_box import fmu_with_table, interpolate
+from studies.cases.rao_box import read as read_rao
 from ucable.system import partner_fmu
+from ucable.units import GRAVITY as G
 
-G = 9.81
 TOW = [f"tow.{q}" for q in ("x", "y", "z", "vx", "vy", "vz", "ax", "ay", "az")]
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 LEVER = {"towPoint.x": -30.0, "towPoint.y": 3.0, "towPoint.z": 4.0}

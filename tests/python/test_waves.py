@@ -8,8 +8,7 @@ import numpy as np
 import pytest
 
 from ucable.fmu import FMICallException
-
-G = 9.80665
+from ucable.units import STANDARD_GRAVITY as G
 
 
 def hanging(make_cable, waves, t_end=120.0, step=0.25, x=0.0):

@@ -1,7 +1,7 @@
 """The riser in waves against MoorDyn fed the same wave components (docs/waves.md, "Against MoorDyn").
 
 The chain of the comparison is checked link by link: the FMU's sea is the documented generator
-(studies.sea, written again in Python) to round-off; MoorDyn, given those components as complex
+(studies.references.sea, written again in Python) to round-off; MoorDyn, given those components as complex
 amplitudes, computes the same water velocity, acceleration and elevation; then the two codes'
 tensions agree within what their meshes resolve.
 """
@@ -11,9 +11,9 @@ import math
 import numpy as np
 import pytest
 
-from studies import waves_moordyn as wm
+from studies.comparisons import waves_moordyn as wm
 from ucable.fmu import CableFMU
-from studies.sea import SplitMix64, sea_state
+from studies.references.sea import SplitMix64, sea_state
 
 pytest.importorskip("moordyn")
 
@@ -32,7 +32,7 @@ def test_splitmix64_is_the_published_generator():
     {"waves.mode": 1, "waves.height": 2.5, "waves.period": 7.0, "waterDepth": 30.0, "waves.direction": -1.1},
 ])
 def test_the_fmu_sea_is_the_documented_generator(fmu_file, params):
-    """waveElevation at the tow point of the FMU equals the elevation of studies.sea's components."""
+    """waveElevation at the tow point of the FMU equals the elevation of studies.references.sea's components."""
     params = {**params, "gravity": 9.80665, "length": 20.0}
     x, y, dt = 13.0, -4.0, 0.5
     with CableFMU(fmu_file, parameters=params) as c:

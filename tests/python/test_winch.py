@@ -15,8 +15,8 @@ import pytest
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import fmi2Error
 
-from ucable.steady_tow import KNOT
-from studies.winch_reference import DeployBody, elements_for_length, fmu_static_references
+from ucable.units import KNOT
+from studies.references.winch_reference import DeployBody, elements_for_length, fmu_static_references
 
 SPEED = 2.0 * KNOT
 NOMINAL = 15.0

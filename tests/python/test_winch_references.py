@@ -13,7 +13,7 @@ for the length moves the tension by percents.
 import numpy as np
 import pytest
 
-from studies.winch_reference import (DeployBody, elements_for_length, fmu_static_references,
+from studies.references.winch_reference import (DeployBody, elements_for_length, fmu_static_references,
                                     ode_references)
 
 LENGTHS = [50.0, 100.0, 300.0, 600.0]
@@ -54,7 +54,7 @@ def test_body_parameters_reach_the_fmu(fmu_file):
 
 
 def test_winch_references_command_writes_csv_and_plot(fmu_file, tmp_path, monkeypatch):
-    from studies import winch_reference_cli
+    from studies.reports import winch_reference_cli
 
     monkeypatch.setenv("UC_FMU", str(fmu_file))
     winch_reference_cli.main(["--lengths", "100", "300", "200", "--out", str(tmp_path)])

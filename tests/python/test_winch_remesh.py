@@ -2,11 +2,11 @@
 a split or merge of the top element moves the tow tension by less than 0.1 % of its mean at any
 element length, and the extremes (towTensionMax/Min) and the fatigue count of a coarse master agree
 within 0.5 % with the same run sampled by a 0.01 s master. The scenes and measures are those of
-python/studies/winch_remesh.py."""
+python/studies/cases/winch_remesh.py."""
 
 import pytest
 
-from studies import winch_remesh
+from studies.cases import winch_remesh
 
 MOVE = 1e-3  # of the mean tension: a remesh is no physical event
 AGREEMENT = 5e-3  # of the mean tension (extremes) and of the Miner's sum

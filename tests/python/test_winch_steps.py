@@ -13,9 +13,9 @@ import pytest
 
 from ucable import cli
 from ucable.scene import load_scene
-from ucable.steady_tow import KNOT
+from ucable.units import KNOT
 from ucable.scene import run_scene
-from studies.winch_steps import extremes, payout, quick_tow_job, step_errors
+from studies.cases.winch_steps import extremes, payout, quick_tow_job, step_errors
 
 
 @pytest.fixture(scope="module")

@@ -1,7 +1,7 @@
 """A partial run of scripts/bench_work_precision (--cases ...) updates only its own sections of the
 generated report: an existing case section is replaced, a new one goes after the case it follows."""
 
-from studies import work_precision as wp
+from studies.benchmarks import work_precision as wp
 
 
 def test_partial_runs_splice_their_sections_into_the_report():

@@ -1,0 +1,257 @@
+"""MoorDyn v2 (PyPI `moordyn`), the peer the studies run beside the FMU: the one place that creates,
+initialises, steps, reads and closes a MoorDyn system.
+
+MoorDyn writes its output files next to its input file and reads wave_frequencies.txt and
+current_profile.txt next to it or in the working directory, so a System lives in a temporary
+directory of its own; MoorDyn writes to the process's stdout and stderr directly, so it is silenced
+(peers.quiet).
+
+`moordyn` is imported where it is used, never when this module is: loaded after MoorPy or the FMU's
+modules, MoorDyn 2.7's Create crashes at random on some decks (a segmentation fault), so `release`
+runs it in a process of its own (`python -m studies.peers.moordyn`) that loads nothing else.
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+import shutil
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from .quiet import Quiet
+
+
+class System:
+    """A MoorDyn system (moordyn.Create) in a temporary directory, closed at the end (a context manager).
+
+    deck: an input file copied there, `also` the files MoorDyn reads next to it (current_profile.txt);
+    or write(directory) writes the input file (and its companions) there and returns its path.
+    chdir: the working directory is the temporary one while the system lives (MoorDyn reads some
+    companions from there). init: (x, v) of the coupled points for moordyn.Init at the start.
+    quiet: "all" silences MoorDyn's console from Create to Close, "setup" only Create, Init and
+    Close (a caller's progress output stays visible)."""
+
+    def __init__(self, deck: Path | None = None, *, also=(), write=None, chdir: bool = False, init=None,
+                 quiet: str = "all"):
+        self.deck, self.also, self.write, self.chdir, self.init_state = deck, tuple(also), write, chdir, init
+        self.quiet = quiet
+
+    def __enter__(self):
+        import moordyn
+
+        self.api = moordyn
+        self._tmp = tempfile.TemporaryDirectory()
+        tmp = Path(self._tmp.name)
+        self._cwd = os.getcwd() if self.chdir else None
+        self._quiet = None
+        try:
+            if self.write is not None:
+                path = Path(self.write(tmp))
+            else:
+                for f in (self.deck, *self.also):
+                    shutil.copy(f, tmp / Path(f).name)
+                path = tmp / Path(self.deck).name
+            if self.chdir:
+                os.chdir(tmp)
+            self._quiet = Quiet().__enter__()
+            self.system = moordyn.Create(str(path))
+            try:
+                if self.init_state is not None:
+                    self.init(*self.init_state)
+            except BaseException:
+                moordyn.Close(self.system)
+                raise
+            if self.quiet != "all":
+                self._quiet.__exit__(None, None, None)
+                self._quiet = None
+        except BaseException:
+            self._leave()
+            raise
+        self.step_raw = functools.partial(moordyn.Step, self.system)  # (x, v, t, h) -> forces, for hot loops
+        return self
+
+    def __exit__(self, *exc):
+        try:
+            if self._quiet is None:
+                with Quiet():
+                    self.api.Close(self.system)
+            else:
+                self.api.Close(self.system)
+        finally:
+            self._leave()
+
+    def _leave(self):
+        if self._quiet is not None:
+            self._quiet.__exit__(None, None, None)
+            self._quiet = None
+        if self._cwd is not None:
+            os.chdir(self._cwd)
+        self._tmp.cleanup()
+
+    # ------------------------------------------------------------------------- driving
+    def init(self, x, v, no_ic: bool = False) -> None:
+        """moordyn.Init at the coupled points' (x, v); no_ic: Init_NoIC (no initial-condition solve)."""
+        if self._quiet is None:
+            with Quiet():
+                (self.api.Init_NoIC if no_ic else self.api.Init)(self.system, x, v)
+        else:
+            (self.api.Init_NoIC if no_ic else self.api.Init)(self.system, x, v)
+
+    def step(self, x, v, t: float, h: float):
+        """moordyn.Step from t by h (whole dtM steps), the coupled points moving linearly from (x, v):
+        the forces on them at the end."""
+        return self.api.Step(self.system, x, v, t, h)
+
+    # ------------------------------------------------------------------------- reading
+    def lines(self) -> int:
+        return self.api.GetNumberLines(self.system)
+
+    def line(self, k: int):
+        """Line k (from 1)."""
+        return self.api.GetLine(self.system, k)
+
+    def segments(self, line) -> int:
+        return self.api.GetLineN(line)
+
+    def node_position(self, line, i: int) -> np.ndarray:
+        return self.api.GetLineNodePos(line, i)
+
+    def node_tension(self, line, i: int):
+        """The tension vector of segment i (node 0 is end A): MoorDyn's tensions are its segments'."""
+        return self.api.GetLineNodeTen(line, i)
+
+    def point(self, k: int):
+        """Point k (from 1)."""
+        return self.api.GetPoint(self.system, k)
+
+    def point_position(self, point):
+        return self.api.GetPointPos(point)
+
+    def wave_kinematics(self, x: float, y: float, z: float):
+        """The water's velocity, acceleration and elevation at a point at MoorDyn's present time."""
+        u, a, zeta, _ = self.api.GetWavesKin(self.api.GetWaves(self.system), x, y, z)
+        return np.array(u), np.array(a), float(zeta)
+
+    def tension_at(self, position) -> float:
+        """|tension| of the end segment of the line end at `position` (an anchor)."""
+        found = None
+        for k in range(1, self.lines() + 1):
+            line = self.line(k)
+            n = self.segments(line)
+            for node in (0, n):
+                if np.allclose(self.node_position(line, node), position, atol=1e-6):
+                    found = line, node
+        return float(np.linalg.norm(self.node_tension(*found)))
+
+    def end_b_tension(self, line) -> float:
+        """The tension at a line's end B: MoorDyn's tensions are its segments', half a segment from the
+        end node, so it is extrapolated linearly from the last two segments (node N - 1 has their mean)."""
+        n = self.segments(line)
+        return 2.0 * np.linalg.norm(self.node_tension(line, n)) - np.linalg.norm(self.node_tension(line, n - 1))
+
+    def set_line_nodes(self, line, n_seg: int, shape) -> None:
+        """Start the line at rest in the given shape (3, stations; station 0 at end B, the tow point).
+
+        MoorDyn 2.7 has no API to set node positions and its initial-condition solver ignores
+        currents; moordyn.Init_NoIC places a uniformly stretched straight line whose axial snap at the
+        free end (~c eps = 0.3 m/s) excites a drag-damped mode with a 240 s time constant (measured:
+        1.2 m end-position error after 300 s). So the node positions are written into MoorDyn's own
+        serialized state (each internal node's coordinates replaced where they occur) and read back
+        through moordyn.Deserialize; the result is checked with GetLineNodePos."""
+        data = np.frombuffer(bytes(self.api.Serialize(self.system)), dtype=np.float64).copy()
+        stations = np.linspace(0.0, 1.0, shape.shape[1])
+        targets = {}
+        for i in range(1, n_seg):
+            u = 1.0 - i / n_seg  # MoorDyn node 0 is the free end (our s = L), node N the tow point
+            q = np.array(self.node_position(line, i))
+            new = np.array([np.interp(u, stations, shape[d]) for d in range(3)])
+            hit = np.where((data[:-2] == q[0]) & (data[1:-1] == q[1]) & (data[2:] == q[2]))[0]
+            if len(hit) == 0:
+                raise RuntimeError("MoorDyn state layout not recognized (node position not found)")
+            for j in hit:
+                data[j:j + 3] = new
+            targets[i] = new
+        self.api.Deserialize(self.system, data.tobytes())
+        for i, new in targets.items():
+            got = np.array(self.node_position(line, i))
+            if np.max(np.abs(got - new)) > 1e-9:
+                raise RuntimeError(f"MoorDyn node {i} not set from the serialized state: {got} != {new}")
+
+
+def drive(md: System, start, n: int, comm_step: float, calls: int, coupled, record, progress=None,
+          whole_steps: bool = False) -> float:
+    """Drive an initialised system from t = 0: the forces of its state at `start` = (x, v) (a step of
+    1e-12 s: MoorDyn returns the forces of the state it ends in) to record(0, f), then n communication
+    steps of comm_step, each `calls` calls of moordyn.Step by comm_step / calls with the coupled points
+    at coupled(t) = (x, v) at the start of the call (MoorDyn moves them linearly from there); after
+    step k record(k, f) and progress(k comm_step). The calls' start times add up their steps
+    (whole_steps: one call a step, starting at k comm_step). Returns the CPU time of the n steps."""
+    record(0, md.step(*start, 0.0, 1e-12))
+    h = comm_step / calls
+    cpu0 = time.process_time()
+    t = 0.0
+    for k in range(n):
+        if whole_steps:
+            x, v = coupled(k * comm_step)
+            f = md.step(x, v, k * comm_step, comm_step)
+        else:
+            for _ in range(calls):
+                x, v = coupled(t)
+                f = md.step(x, v, t, h)
+                t += h
+        record(k + 1, f)
+        if progress:
+            progress((k + 1) * comm_step)
+    return time.process_time() - cpu0
+
+
+# ----------------------------------------------------------------------------- a process of its own
+def release(deck: Path, point: int, n_lines: int, t_end: float, h: float) -> dict:
+    """MoorDyn fed the deck, no coupled objects, one call per h (MoorDyn substepping at dtM), in a
+    process that loads nothing else: each line's tension at its end B and point `point`'s position at
+    t = 0, h, 2 h, ... and the CPU time of the steps."""
+    import subprocess
+
+    env = dict(os.environ)
+    here = str(Path(__file__).resolve().parents[2])  # the folder holding the studies package
+    env["PYTHONPATH"] = here + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "moordyn.npz"
+        subprocess.run([sys.executable, "-m", "studies.peers.moordyn", "release", str(deck), str(point), str(n_lines),
+                        str(t_end), str(h), str(out)], check=True, capture_output=True, env=env)
+        with np.load(out) as data:
+            return {k: (float(data[k]) if k == "cpu" else np.array(data[k])) for k in data.files}
+
+
+def _release_here(deck: str, point: int, n_lines: int, t_end: float, h: float, out: str) -> None:
+    times = np.arange(0.0, t_end + 0.5 * h, h)
+    tension = np.zeros((len(times), n_lines))
+    position = np.zeros((len(times), 3))
+    with System(Path(deck), quiet="setup") as md:
+        md.init([], [])
+        lines = [md.line(k) for k in range(1, n_lines + 1)]
+        handle = md.point(point)
+
+        def record(i):
+            tension[i] = [md.end_b_tension(ln) for ln in lines]
+            position[i] = md.point_position(handle)
+
+        record(0)
+        cpu0 = time.process_time()
+        for k in range(len(times) - 1):
+            md.step([], [], times[k], h)
+            record(k + 1)
+        cpu = time.process_time() - cpu0
+    np.savez(out, t=times, tension=tension, position=position, cpu=cpu)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 8 or sys.argv[1] != "release":
+        sys.exit("usage: python -m studies.peers.moordyn release DECK POINT LINES T_END STEP OUT.npz")
+    _release_here(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]), float(sys.argv[5]), float(sys.argv[6]),
+                  sys.argv[7])
