@@ -52,12 +52,19 @@ static fmi2Status ensure_readable(UCInstance* inst, const UCVariable* v, const c
 }
 
 /* body[k].stiffness is computed when it is read, at the first read after a step (docs/systems_mooring.md,
- * "Mooring stiffness": a fifth of a step's cost). */
+ * "Mooring stiffness": a fifth of a step's cost): the schema's computedWhenRead outputs. */
 static int is_stiffness(const UCVariable* v) {
+    static const unsigned int computed[] = {
+#define UC_COMPUTED_ROW(vr) vr,
+        UC_SCHEMA_COMPUTED_WHEN_READ(UC_COMPUTED_ROW)
+#undef UC_COMPUTED_ROW
+    };
     if (v->causality != UC_CAUSALITY_OUTPUT) return 0;
-    for (size_t b = 0; b < UC_MAX_BODIES; ++b) {
-        const size_t first = offsetof(UCOutputs, bodyLoad) + b * sizeof(UCBodyLoad) + offsetof(UCBodyLoad, stiffness);
-        if (v->offset >= first && v->offset < first + sizeof(((UCBodyLoad*)0)->stiffness)) return 1;
+    size_t lo = 0, hi = sizeof computed / sizeof computed[0]; /* ascending: a binary search, every read asks */
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (computed[mid] == v->vr) return 1;
+        if (computed[mid] < v->vr) lo = mid + 1; else hi = mid;
     }
     return 0;
 }

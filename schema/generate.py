@@ -172,7 +172,7 @@ def fill(text: str, sub: dict) -> str:
     return re.sub(r"\[((?:\s*\d+\s*[+*])+\s*\d+\s*)\]", index, text)
 
 
-DERIVATIVE_KEYS = ("derivativeOf", "derivativeField", "givenFlag", "directionalDerivative")
+DERIVATIVE_KEYS = ("derivativeOf", "derivativeField", "givenFlag", "directionalDerivative", "computedWhenRead")
 
 
 def load(path: Path = SCHEMA):
@@ -268,6 +268,8 @@ def check_derivatives(data, scalars, by_name):
         for key in DERIVATIVE_KEYS[:3]:
             if key in s.entry and s.causality != "input":
                 raise SystemExit(f"schema: {s.name}: {key} is for inputs ({s.name} is a {s.causality})")
+        if "computedWhenRead" in s.entry and s.causality != "output":
+            raise SystemExit(f"schema: {s.name}: computedWhenRead is for outputs ({s.name} is a {s.causality})")
         if s.derivative_of is None:
             continue
         of = by_name.get(s.derivative_of)
@@ -487,7 +489,8 @@ def derivatives_header_text(scalars, entries) -> str:
            " *",
            " * Which input is the time derivative of which, where fmi2SetRealInputDerivatives keeps a derivative",
            " * and which inputs and outputs are the columns and rows of fmi2GetDirectionalDerivative (the schema's",
-           " * derivativeOf, derivativeField, givenFlag and directionalDerivative), for fmu/value_access.c. */",
+           " * derivativeOf, derivativeField, givenFlag and directionalDerivative), and the outputs computed when",
+           " * read (computedWhenRead: the mooring stiffness, itself a derivative), for fmu/value_access.c. */",
            "#ifndef UNDERWATERCABLE_UC_SCHEMA_DERIVATIVES_H", "#define UNDERWATERCABLE_UC_SCHEMA_DERIVATIVES_H", ""]
 
     def xlist(macro, doc, rows):
@@ -510,6 +513,10 @@ def derivatives_header_text(scalars, entries) -> str:
           "either as its value or through fmi2SetRealInputDerivatives; UCInputs.flag records which, per "
           "component (givenFlag)",
           [f"{s.vr}, {s.given_flag}, {s.component}" for s in scalars if s.given_flag and not s.derivative_field])
+    xlist("UC_SCHEMA_COMPUTED_WHEN_READ",
+          "X(vr): the output vr is computed by its first read after a step (uc_update_stiffness; computedWhenRead), "
+          "value references ascending",
+          [f"{s.vr}" for s in scalars if s.entry.get("computedWhenRead")])
     rows = {"input": [], "output": []}
     for s in scalars:
         if s.jacobian is not None:

@@ -2,7 +2,8 @@
  *
  * Which input is the time derivative of which, where fmi2SetRealInputDerivatives keeps a derivative
  * and which inputs and outputs are the columns and rows of fmi2GetDirectionalDerivative (the schema's
- * derivativeOf, derivativeField, givenFlag and directionalDerivative), for fmu/value_access.c. */
+ * derivativeOf, derivativeField, givenFlag and directionalDerivative), and the outputs computed when
+ * read (computedWhenRead: the mooring stiffness, itself a derivative), for fmu/value_access.c. */
 #ifndef UNDERWATERCABLE_UC_SCHEMA_DERIVATIVES_H
 #define UNDERWATERCABLE_UC_SCHEMA_DERIVATIVES_H
 
@@ -243,6 +244,153 @@
     X(1041, endAccelerationGiven, 0) \
     X(1042, endAccelerationGiven, 1) \
     X(1043, endAccelerationGiven, 2) \
+
+/* X(vr): the output vr is computed by its first read after a step (uc_update_stiffness; computedWhenRead), value references ascending */
+#define UC_SCHEMA_COMPUTED_WHEN_READ(X) \
+    X(2258) \
+    X(2259) \
+    X(2260) \
+    X(2261) \
+    X(2262) \
+    X(2263) \
+    X(2264) \
+    X(2265) \
+    X(2266) \
+    X(2267) \
+    X(2268) \
+    X(2269) \
+    X(2270) \
+    X(2271) \
+    X(2272) \
+    X(2273) \
+    X(2274) \
+    X(2275) \
+    X(2276) \
+    X(2277) \
+    X(2278) \
+    X(2279) \
+    X(2280) \
+    X(2281) \
+    X(2282) \
+    X(2283) \
+    X(2284) \
+    X(2285) \
+    X(2286) \
+    X(2287) \
+    X(2288) \
+    X(2289) \
+    X(2290) \
+    X(2291) \
+    X(2292) \
+    X(2293) \
+    X(2294) \
+    X(2295) \
+    X(2296) \
+    X(2297) \
+    X(2298) \
+    X(2299) \
+    X(2300) \
+    X(2301) \
+    X(2302) \
+    X(2303) \
+    X(2304) \
+    X(2305) \
+    X(2306) \
+    X(2307) \
+    X(2308) \
+    X(2309) \
+    X(2310) \
+    X(2311) \
+    X(2312) \
+    X(2313) \
+    X(2314) \
+    X(2315) \
+    X(2316) \
+    X(2317) \
+    X(2318) \
+    X(2319) \
+    X(2320) \
+    X(2321) \
+    X(2322) \
+    X(2323) \
+    X(2324) \
+    X(2325) \
+    X(2326) \
+    X(2327) \
+    X(2328) \
+    X(2329) \
+    X(2330) \
+    X(2331) \
+    X(2332) \
+    X(2333) \
+    X(2334) \
+    X(2335) \
+    X(2336) \
+    X(2337) \
+    X(2338) \
+    X(2339) \
+    X(2340) \
+    X(2341) \
+    X(2342) \
+    X(2343) \
+    X(2344) \
+    X(2345) \
+    X(2346) \
+    X(2347) \
+    X(2348) \
+    X(2349) \
+    X(2350) \
+    X(2351) \
+    X(2352) \
+    X(2353) \
+    X(2354) \
+    X(2355) \
+    X(2356) \
+    X(2357) \
+    X(2358) \
+    X(2359) \
+    X(2360) \
+    X(2361) \
+    X(2362) \
+    X(2363) \
+    X(2364) \
+    X(2365) \
+    X(2366) \
+    X(2367) \
+    X(2368) \
+    X(2369) \
+    X(2370) \
+    X(2371) \
+    X(2372) \
+    X(2373) \
+    X(2374) \
+    X(2375) \
+    X(2376) \
+    X(2377) \
+    X(2378) \
+    X(2379) \
+    X(2380) \
+    X(2381) \
+    X(2382) \
+    X(2383) \
+    X(2384) \
+    X(2385) \
+    X(2386) \
+    X(2387) \
+    X(2388) \
+    X(2389) \
+    X(2390) \
+    X(2391) \
+    X(2392) \
+    X(2393) \
+    X(2394) \
+    X(2395) \
+    X(2396) \
+    X(2397) \
+    X(2398) \
+    X(2399) \
+    X(2400) \
+    X(2401) \
 
 /* X(vr, MATRIX, column, body): the input vr is column `column` of the directional derivatives MATRIX (INTERFACE: uc_interface_derivative's seed; BODY: uc_body_derivatives of the 1-based body) */
 #define UC_SCHEMA_DERIVATIVE_COLUMNS(X) \

@@ -58,6 +58,8 @@ def test_the_shipped_chains(generate):
     body = sorted((s.jacobian[1], s.name) for s in scalars
                   if s.jacobian and s.jacobian[0] == "body" and s.jacobian[2] == 1 and s.causality == "input")
     assert len(body) == 16 and body[0][1] == "body[1].x" and body[-1][1] == "body[1].q3"
+    computed = [s.name for s in scalars if s.entry.get("computedWhenRead")]
+    assert len(computed) == 4 * 36 and computed[0] == "body[1].stiffness[1,1]"
 
 
 @pytest.mark.parametrize("name, value, message", [
@@ -83,6 +85,8 @@ def test_a_derivative_kept_twice_or_outside_the_inputs_is_refused(generate, tmp_
         generate.load(edited_schema(tmp_path, "current.{c}", "derivativeField", '"currentRate[{i} + 2]"'))
     with pytest.raises(SystemExit, match="derivativeOf is for inputs"):
         generate.load(edited_schema(tmp_path, "towForce.{c}", "derivativeOf", '"tow.{c}"'))
+    with pytest.raises(SystemExit, match="computedWhenRead is for outputs"):
+        generate.load(edited_schema(tmp_path, "tow.{c}", "computedWhenRead", "true"))
 
 
 def test_a_gap_in_the_directional_derivatives_is_refused(generate, tmp_path):
