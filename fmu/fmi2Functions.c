@@ -1,7 +1,8 @@
 /*
  * fmi2Functions.c - the exported FMI 2.0 Co-Simulation functions. Each one checks the machine state
  * against the set of states it may be called in (FMI 2.0 section 4.2.4), delegates, and applies the
- * worst-status rule (an fmi2Error puts the instance into the error state) in uc_instance_finish.
+ * worst-status rule (an fmi2Error puts the instance into the error state): the state machine of
+ * common/fmi2_machine.h, which the partner FMUs share.
  */
 #include <math.h>
 #include <string.h>
@@ -13,38 +14,8 @@
 #include "uc_guid.h"
 #include "value_access.h"
 
-/* Sets of states in which each function may be called (FMI 2.0 section 4.2.4). */
-#define ANY_AFTER_INSTANTIATE                                                                                \
-    (UC_STATE_INSTANTIATED | UC_STATE_INIT_MODE | UC_STATE_STEP_COMPLETE | UC_STATE_STEP_IN_PROGRESS |      \
-     UC_STATE_STEP_FAILED | UC_STATE_STEP_CANCELED | UC_STATE_TERMINATED | UC_STATE_ERROR)
-#define MASK_SET_DEBUG_LOGGING ANY_AFTER_INSTANTIATE
-#define MASK_SETUP_EXPERIMENT UC_STATE_INSTANTIATED
-#define MASK_ENTER_INIT UC_STATE_INSTANTIATED
-#define MASK_EXIT_INIT UC_STATE_INIT_MODE
-#define MASK_TERMINATE (UC_STATE_STEP_COMPLETE | UC_STATE_STEP_FAILED)
-#define MASK_RESET (ANY_AFTER_INSTANTIATE & ~UC_STATE_STEP_IN_PROGRESS)
-#define MASK_GET                                                                                             \
-    (UC_STATE_INIT_MODE | UC_STATE_STEP_COMPLETE | UC_STATE_STEP_FAILED | UC_STATE_STEP_CANCELED |          \
-     UC_STATE_TERMINATED | UC_STATE_ERROR)
-#define MASK_SET (UC_STATE_INSTANTIATED | UC_STATE_INIT_MODE | UC_STATE_STEP_COMPLETE)
-#define MASK_FMU_STATE (ANY_AFTER_INSTANTIATE & ~UC_STATE_STEP_IN_PROGRESS)
-#define MASK_DIRECTIONAL_DERIVATIVE MASK_GET
-#define MASK_INPUT_DERIVATIVES MASK_SET
-#define MASK_OUTPUT_DERIVATIVES (UC_STATE_STEP_COMPLETE | UC_STATE_STEP_FAILED | UC_STATE_STEP_CANCELED | \
-                                 UC_STATE_TERMINATED | UC_STATE_ERROR)
-#define MASK_DO_STEP UC_STATE_STEP_COMPLETE
-#define MASK_CANCEL_STEP UC_STATE_STEP_IN_PROGRESS
-#define MASK_GET_STATUS \
-    (UC_STATE_STEP_COMPLETE | UC_STATE_STEP_IN_PROGRESS | UC_STATE_STEP_FAILED | UC_STATE_TERMINATED)
-
 /* Runs `body` (an expression yielding fmi2Status) if the instance may call `function` now. */
-#define GUARDED(c, mask, function, body)                                                                    \
-    do {                                                                                                     \
-        UCInstance* inst = (UCInstance*)(c);                                                                 \
-        fmi2Status status = uc_instance_check(inst, (mask), (function));                                     \
-        if (status == fmi2OK) status = (body);                                                               \
-        return uc_instance_finish(inst, status);                                                             \
-    } while (0)
+#define GUARDED(c, mask, function, body) UC_MACHINE_GUARDED(UCInstance, c, mask, function, body)
 
 /* As GUARDED, for a call whose refusal (fmi2Error from `body`) changes nothing in the instance: a state to
  * restore that is refused (corrupted or truncated bytes, another version, an edited deck) leaves the
@@ -54,8 +25,9 @@
 #define REFUSABLE(c, mask, function, body)                                                                  \
     do {                                                                                                     \
         UCInstance* inst = (UCInstance*)(c);                                                                 \
-        fmi2Status status = uc_instance_check(inst, (mask), (function));                                     \
-        if (status != fmi2OK) return uc_instance_finish(inst, status);                                       \
+        if (inst == NULL) return fmi2Error;                                                                  \
+        fmi2Status status = uc_machine_check(&inst->log, inst->state, (mask), (function));                   \
+        if (status != fmi2OK) return uc_machine_finish(&inst->state, status);                                \
         return (body);                                                                                       \
     } while (0)
 
@@ -67,7 +39,7 @@ const char* fmi2GetVersion(void) { return fmi2Version; }
 
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
                                const fmi2String categories[]) {
-    GUARDED(c, MASK_SET_DEBUG_LOGGING, "fmi2SetDebugLogging",
+    GUARDED(c, UC_MASK_SET_DEBUG_LOGGING, "fmi2SetDebugLogging",
             uc_log_configure(&inst->log, loggingOn, nCategories, categories));
 }
 
@@ -142,108 +114,106 @@ static fmi2Status setup_experiment(UCInstance* inst, fmi2Boolean toleranceDefine
 
 fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
                                fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
-    GUARDED(c, MASK_SETUP_EXPERIMENT, "fmi2SetupExperiment",
+    GUARDED(c, UC_MASK_SETUP_EXPERIMENT, "fmi2SetupExperiment",
             setup_experiment(inst, toleranceDefined, tolerance, startTime, stopTimeDefined, stopTime));
 }
 
 static fmi2Status enter_initialization_mode(UCInstance* inst) {
-    inst->state = UC_STATE_INIT_MODE;
+    uc_machine_enter_initialization(&inst->state);
     return fmi2OK;
 }
 
 fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
-    GUARDED(c, MASK_ENTER_INIT, "fmi2EnterInitializationMode", enter_initialization_mode(inst));
+    GUARDED(c, UC_MASK_ENTER_INIT, "fmi2EnterInitializationMode", enter_initialization_mode(inst));
 }
 
 static fmi2Status exit_initialization_mode(UCInstance* inst) {
-    fmi2Status status = uc_sim_ensure_initialized(inst, "fmi2ExitInitializationMode");
-    if (status == fmi2OK) inst->state = UC_STATE_STEP_COMPLETE;
-    return status;
+    return uc_machine_exit_initialization(&inst->state, uc_sim_ensure_initialized(inst, "fmi2ExitInitializationMode"));
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
-    GUARDED(c, MASK_EXIT_INIT, "fmi2ExitInitializationMode", exit_initialization_mode(inst));
+    GUARDED(c, UC_MASK_EXIT_INIT, "fmi2ExitInitializationMode", exit_initialization_mode(inst));
 }
 
 static fmi2Status terminate(UCInstance* inst) {
     uc_input_checks_summary(inst);
-    inst->state = UC_STATE_TERMINATED; /* the core is kept: values stay readable */
+    uc_machine_terminate(&inst->state); /* the core is kept: values stay readable */
     return fmi2OK;
 }
 
-fmi2Status fmi2Terminate(fmi2Component c) { GUARDED(c, MASK_TERMINATE, "fmi2Terminate", terminate(inst)); }
+fmi2Status fmi2Terminate(fmi2Component c) { GUARDED(c, UC_MASK_TERMINATE, "fmi2Terminate", terminate(inst)); }
 
 static fmi2Status reset(UCInstance* inst) {
     uc_instance_reset(inst);
     return fmi2OK;
 }
 
-fmi2Status fmi2Reset(fmi2Component c) { GUARDED(c, MASK_RESET, "fmi2Reset", reset(inst)); }
+fmi2Status fmi2Reset(fmi2Component c) { GUARDED(c, UC_MASK_RESET, "fmi2Reset", reset(inst)); }
 
 /* ---- getting and setting values -------------------------------------------------------------------- */
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[]) {
-    GUARDED(c, MASK_GET, "fmi2GetReal", uc_get_values(inst, vr, nvr, value, UC_TYPE_REAL, "fmi2GetReal"));
+    GUARDED(c, UC_MASK_GET, "fmi2GetReal", uc_get_values(inst, vr, nvr, value, UC_TYPE_REAL, "fmi2GetReal"));
 }
 
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
-    GUARDED(c, MASK_GET, "fmi2GetInteger",
+    GUARDED(c, UC_MASK_GET, "fmi2GetInteger",
             uc_get_values(inst, vr, nvr, value, UC_TYPE_INTEGER, "fmi2GetInteger"));
 }
 
 fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[]) {
-    GUARDED(c, MASK_GET, "fmi2GetBoolean",
+    GUARDED(c, UC_MASK_GET, "fmi2GetBoolean",
             uc_get_values(inst, vr, nvr, value, UC_TYPE_BOOLEAN, "fmi2GetBoolean"));
 }
 
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
-    GUARDED(c, MASK_GET, "fmi2GetString", uc_get_strings(inst, vr, nvr, value, "fmi2GetString"));
+    GUARDED(c, UC_MASK_GET, "fmi2GetString", uc_get_strings(inst, vr, nvr, value, "fmi2GetString"));
 }
 
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
-    GUARDED(c, MASK_SET, "fmi2SetReal", uc_set_values(inst, vr, nvr, value, UC_TYPE_REAL, "fmi2SetReal"));
+    GUARDED(c, UC_MASK_SET, "fmi2SetReal", uc_set_values(inst, vr, nvr, value, UC_TYPE_REAL, "fmi2SetReal"));
 }
 
 fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Integer value[]) {
-    GUARDED(c, MASK_SET, "fmi2SetInteger",
+    GUARDED(c, UC_MASK_SET, "fmi2SetInteger",
             uc_set_values(inst, vr, nvr, value, UC_TYPE_INTEGER, "fmi2SetInteger"));
 }
 
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Boolean value[]) {
-    GUARDED(c, MASK_SET, "fmi2SetBoolean",
+    GUARDED(c, UC_MASK_SET, "fmi2SetBoolean",
             uc_set_values(inst, vr, nvr, value, UC_TYPE_BOOLEAN, "fmi2SetBoolean"));
 }
 
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
-    GUARDED(c, MASK_SET, "fmi2SetString", uc_set_strings(inst, vr, nvr, value, "fmi2SetString"));
+    GUARDED(c, UC_MASK_SET, "fmi2SetString", uc_set_strings(inst, vr, nvr, value, "fmi2SetString"));
 }
 
 /* ---- FMU states ----------------------------------------------------------------------------------- */
 
 fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
-    GUARDED(c, MASK_FMU_STATE, "fmi2GetFMUstate", uc_state_get(inst, FMUstate));
+    GUARDED(c, UC_MASK_FMU_STATE, "fmi2GetFMUstate", uc_state_get(inst, FMUstate));
 }
 
 fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
-    REFUSABLE(c, MASK_FMU_STATE, "fmi2SetFMUstate", uc_state_set(inst, FMUstate));
+    REFUSABLE(c, UC_MASK_FMU_STATE, "fmi2SetFMUstate", uc_state_set(inst, FMUstate));
 }
 
 fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
-    GUARDED(c, MASK_FMU_STATE, "fmi2FreeFMUstate", uc_state_free(inst, FMUstate));
+    GUARDED(c, UC_MASK_FMU_STATE, "fmi2FreeFMUstate", uc_state_free(inst, FMUstate));
 }
 
 fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t* size) {
-    GUARDED(c, MASK_FMU_STATE, "fmi2SerializedFMUstateSize", uc_state_serialized_size(inst, FMUstate, size));
+    GUARDED(c, UC_MASK_FMU_STATE, "fmi2SerializedFMUstateSize", uc_state_serialized_size(inst, FMUstate, size));
 }
 
 fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte serializedState[],
                                  size_t size) {
-    GUARDED(c, MASK_FMU_STATE, "fmi2SerializeFMUstate", uc_state_serialize(inst, FMUstate, serializedState, size));
+    GUARDED(c, UC_MASK_FMU_STATE, "fmi2SerializeFMUstate", uc_state_serialize(inst, FMUstate, serializedState, size));
 }
 
 fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size,
                                    fmi2FMUstate* FMUstate) {
-    REFUSABLE(c, MASK_FMU_STATE, "fmi2DeSerializeFMUstate",
+    REFUSABLE(c, UC_MASK_FMU_STATE, "fmi2DeSerializeFMUstate",
               uc_state_deserialize(inst, serializedState, size, FMUstate));
 }
 
@@ -257,20 +227,20 @@ static fmi2Status not_provided(UCInstance* inst, const char* function, const cha
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown_ref[], size_t nUnknown,
                                         const fmi2ValueReference vKnown_ref[], size_t nKnown,
                                         const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
-    GUARDED(c, MASK_DIRECTIONAL_DERIVATIVE, "fmi2GetDirectionalDerivative",
+    GUARDED(c, UC_MASK_DIRECTIONAL_DERIVATIVE, "fmi2GetDirectionalDerivative",
             uc_get_directional_derivative(inst, vUnknown_ref, nUnknown, vKnown_ref, nKnown, dvKnown, dvUnknown));
 }
 
 fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                                        const fmi2Integer order[], const fmi2Real value[]) {
-    GUARDED(c, MASK_INPUT_DERIVATIVES, "fmi2SetRealInputDerivatives",
+    GUARDED(c, UC_MASK_INPUT_DERIVATIVES, "fmi2SetRealInputDerivatives",
             uc_set_input_derivatives(inst, vr, nvr, order, value));
 }
 
 fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                                         const fmi2Integer order[], fmi2Real value[]) {
     (void)vr, (void)nvr, (void)order, (void)value;
-    GUARDED(c, MASK_OUTPUT_DERIVATIVES, "fmi2GetRealOutputDerivatives",
+    GUARDED(c, UC_MASK_OUTPUT_DERIVATIVES, "fmi2GetRealOutputDerivatives",
             not_provided(inst, "fmi2GetRealOutputDerivatives", "maxOutputDerivativeOrder = 0"));
 }
 
@@ -279,12 +249,12 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2Real communicationStepSize,
                       fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
     (void)noSetFMUStatePriorToCurrentPoint; /* states are independent copies: nothing to release */
-    GUARDED(c, MASK_DO_STEP, "fmi2DoStep", uc_sim_do_step(inst, currentCommunicationPoint, communicationStepSize));
+    GUARDED(c, UC_MASK_DO_STEP, "fmi2DoStep", uc_sim_do_step(inst, currentCommunicationPoint, communicationStepSize));
 }
 
 fmi2Status fmi2CancelStep(fmi2Component c) {
     /* fmi2DoStep is synchronous, so there is never a step in progress to cancel. */
-    GUARDED(c, MASK_CANCEL_STEP, "fmi2CancelStep", fmi2OK);
+    GUARDED(c, UC_MASK_CANCEL_STEP, "fmi2CancelStep", fmi2OK);
 }
 
 /* ---- status --------------------------------------------------------------------------------------- */
@@ -316,23 +286,23 @@ static fmi2Status get_boolean_status(UCInstance* inst, fmi2StatusKind s, fmi2Boo
 
 fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status* value) {
     (void)value;
-    GUARDED(c, MASK_GET_STATUS, "fmi2GetStatus", status_not_available(inst, "fmi2GetStatus", s));
+    GUARDED(c, UC_MASK_GET_STATUS, "fmi2GetStatus", status_not_available(inst, "fmi2GetStatus", s));
 }
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real* value) {
-    GUARDED(c, MASK_GET_STATUS, "fmi2GetRealStatus", get_real_status(inst, s, value));
+    GUARDED(c, UC_MASK_GET_STATUS, "fmi2GetRealStatus", get_real_status(inst, s, value));
 }
 
 fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer* value) {
     (void)value;
-    GUARDED(c, MASK_GET_STATUS, "fmi2GetIntegerStatus", status_not_available(inst, "fmi2GetIntegerStatus", s));
+    GUARDED(c, UC_MASK_GET_STATUS, "fmi2GetIntegerStatus", status_not_available(inst, "fmi2GetIntegerStatus", s));
 }
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean* value) {
-    GUARDED(c, MASK_GET_STATUS, "fmi2GetBooleanStatus", get_boolean_status(inst, s, value));
+    GUARDED(c, UC_MASK_GET_STATUS, "fmi2GetBooleanStatus", get_boolean_status(inst, s, value));
 }
 
 fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String* value) {
     (void)value;
-    GUARDED(c, MASK_GET_STATUS, "fmi2GetStringStatus", status_not_available(inst, "fmi2GetStringStatus", s));
+    GUARDED(c, UC_MASK_GET_STATUS, "fmi2GetStringStatus", status_not_available(inst, "fmi2GetStringStatus", s));
 }

@@ -92,34 +92,6 @@ int uc_instance_was_set(const UCInstance* inst, const char* name) {
     return 0;
 }
 
-const char* uc_state_name(UCMachineState state) {
-    switch (state) {
-        case UC_STATE_INSTANTIATED: return "instantiated";
-        case UC_STATE_INIT_MODE: return "initializationMode";
-        case UC_STATE_STEP_COMPLETE: return "stepComplete";
-        case UC_STATE_STEP_IN_PROGRESS: return "stepInProgress";
-        case UC_STATE_STEP_FAILED: return "stepFailed";
-        case UC_STATE_STEP_CANCELED: return "stepCanceled";
-        case UC_STATE_TERMINATED: return "terminated";
-        case UC_STATE_ERROR: return "error";
-        default: return "fatal";
-    }
-}
-
-fmi2Status uc_instance_check(UCInstance* inst, unsigned int allowedStates, const char* function) {
-    if (inst == NULL) return fmi2Error;
-    if ((inst->state & allowedStates) != 0) return fmi2OK;
-    uc_log_status(&inst->log, fmi2Error, "%s: illegal call sequence (called in state %s)", function,
-                  uc_state_name(inst->state));
-    return fmi2Error;
-}
-
 fmi2Status uc_instance_finish(UCInstance* inst, fmi2Status status) {
-    if (inst == NULL) return status;
-    if (status == fmi2Fatal) {
-        inst->state = UC_STATE_FATAL;
-    } else if (status == fmi2Error && inst->state != UC_STATE_FATAL) {
-        inst->state = UC_STATE_ERROR;
-    }
-    return status;
+    return inst == NULL ? status : uc_machine_finish(&inst->state, status);
 }

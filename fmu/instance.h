@@ -1,28 +1,16 @@
 /*
- * instance.h - one FMU instance: everything it owns (no globals), its state machine (FMI 2.0 section
- * 4.2.4) and what a returned status does to it. Every function stops at its first
- * error, so the status it returns is the worst of what happened; uc_instance_finish applies it.
+ * instance.h - one FMU instance: everything it owns (no globals). Its state machine (FMI 2.0 section
+ * 4.2.4) and what a returned status does to it are common/fmi2_machine.h's. Every function stops at its
+ * first error, so the status it returns is the worst of what happened; uc_instance_finish applies it.
  */
 #ifndef UNDERWATERCABLE_FMU_INSTANCE_H
 #define UNDERWATERCABLE_FMU_INSTANCE_H
 
 #include "api/cable_api.h"
+#include "common/fmi2_machine.h"
 #include "fmi2FunctionTypes.h"
 #include "input_checks.h"
 #include "logging.h"
-
-/* Machine states as bits, so that each function declares the set of states it may be called in. */
-typedef enum {
-    UC_STATE_INSTANTIATED = 1 << 0,
-    UC_STATE_INIT_MODE = 1 << 1,
-    UC_STATE_STEP_COMPLETE = 1 << 2,
-    UC_STATE_STEP_IN_PROGRESS = 1 << 3,
-    UC_STATE_STEP_FAILED = 1 << 4,
-    UC_STATE_STEP_CANCELED = 1 << 5,
-    UC_STATE_TERMINATED = 1 << 6,
-    UC_STATE_ERROR = 1 << 7,
-    UC_STATE_FATAL = 1 << 8
-} UCMachineState;
 
 #define UC_MSG_SIZE 512
 
@@ -67,11 +55,7 @@ void uc_instance_reset(UCInstance* inst);
 /* Frees the core and marks the initialization as not computed (a value it depends on has changed). */
 void uc_instance_drop_core(UCInstance* inst);
 
-/* fmi2OK if inst->state is in allowedStates; otherwise logs "<function>: illegal call sequence ..." and
- * returns fmi2Error. Also rejects a NULL instance (fmi2Error, nothing to log to). */
-fmi2Status uc_instance_check(UCInstance* inst, unsigned int allowedStates, const char* function);
-
-/* Applies the status to the machine: fmi2Error -> error state, fmi2Fatal -> fatal. Returns status. */
+/* Applies the status to the machine (uc_machine_finish); a NULL instance only returns status. */
 fmi2Status uc_instance_finish(UCInstance* inst, fmi2Status status);
 
 /* Records that the importer set variable v (a row of uc_variables); uc_instance_was_set asks by name
@@ -79,7 +63,5 @@ fmi2Status uc_instance_finish(UCInstance* inst, fmi2Status status);
 struct UCVariable;
 void uc_instance_mark_set(UCInstance* inst, const struct UCVariable* v);
 int uc_instance_was_set(const UCInstance* inst, const char* name);
-
-const char* uc_state_name(UCMachineState state);
 
 #endif /* UNDERWATERCABLE_FMU_INSTANCE_H */

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "generated/uc_schema_derivatives.h"
 #include "simulation.h"
 #include "string_value.h"
 
@@ -51,12 +52,19 @@ static fmi2Status ensure_readable(UCInstance* inst, const UCVariable* v, const c
 }
 
 /* body[k].stiffness is computed when it is read, at the first read after a step (docs/systems_mooring.md,
- * "Mooring stiffness": a fifth of a step's cost). */
+ * "Mooring stiffness": a fifth of a step's cost): the schema's computedWhenRead outputs. */
 static int is_stiffness(const UCVariable* v) {
+    static const unsigned int computed[] = {
+#define UC_COMPUTED_ROW(vr) vr,
+        UC_SCHEMA_COMPUTED_WHEN_READ(UC_COMPUTED_ROW)
+#undef UC_COMPUTED_ROW
+    };
     if (v->causality != UC_CAUSALITY_OUTPUT) return 0;
-    for (size_t b = 0; b < UC_MAX_BODIES; ++b) {
-        const size_t first = offsetof(UCOutputs, bodyLoad) + b * sizeof(UCBodyLoad) + offsetof(UCBodyLoad, stiffness);
-        if (v->offset >= first && v->offset < first + sizeof(((UCBodyLoad*)0)->stiffness)) return 1;
+    size_t lo = 0, hi = sizeof computed / sizeof computed[0]; /* ascending: a binary search, every read asks */
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (computed[mid] == v->vr) return 1;
+        if (computed[mid] < v->vr) lo = mid + 1; else hi = mid;
     }
     return 0;
 }
@@ -112,27 +120,61 @@ static fmi2Status check_real_value(UCInstance* inst, const UCVariable* v, double
     return fmi2Error;
 }
 
-/* Component 0..2 if offset lies in the double[3] at base, else -1. */
-static int component_of(size_t offset, size_t base) {
-    if (offset < base || offset >= base + 3 * sizeof(double)) return -1;
-    return (int)((offset - base) / sizeof(double));
+/* ---- the inputs' time derivatives, from the schema (derivativeOf, derivativeField, givenFlag) ---- */
+
+typedef struct {
+    unsigned int vr, of; /* the input vr is the time derivative of the input of */
+} DerivativeOf;
+
+typedef struct {
+    unsigned int vr; /* an input */
+    size_t offset;   /* a member of UCInputs: where der(vr) is kept, or the flag that it was given */
+} InputMember;
+
+typedef struct {
+    unsigned int vr; /* an input that is another input's derivative (tow.a*) */
+    size_t offset;   /* the int flag of UCInputs that it was given for the coming step */
+    int component;   /* its component (UC_ACCELERATION_AS_INPUT) */
+} InputFlag;
+
+#define UC_DERIVATIVE_OF_ROW(vr, of) {vr, of},
+#define UC_MEMBER_ROW(vr, member) {vr, offsetof(UCInputs, member)},
+#define UC_INPUT_FLAG_ROW(vr, flag, component) {vr, offsetof(UCInputs, flag), component},
+static const DerivativeOf kDerivativeOf[] = {UC_SCHEMA_DERIVATIVE_OF(UC_DERIVATIVE_OF_ROW)};
+static const InputMember kDerivativeMembers[] = {UC_SCHEMA_DERIVATIVE_MEMBERS(UC_MEMBER_ROW)};
+static const InputMember kMemberFlags[] = {UC_SCHEMA_DERIVATIVE_MEMBER_FLAGS(UC_MEMBER_ROW)};
+static const InputFlag kInputFlags[] = {UC_SCHEMA_DERIVATIVE_INPUT_FLAGS(UC_INPUT_FLAG_ROW)};
+#define UC_COUNT(table) (sizeof(table) / sizeof((table)[0]))
+
+/* The input that is the time derivative of the input vr, or 0. */
+static unsigned int derivative_input(unsigned int vr) {
+    for (size_t i = 0; i < UC_COUNT(kDerivativeOf); ++i)
+        if (kDerivativeOf[i].of == vr) return kDerivativeOf[i].vr;
+    return 0;
 }
 
-/* Component c of an acceleration of a driven end is given for the coming step, by fmi2SetRealInputDerivatives
- * (asInput 0) or by setting the input tow.a* / end.a* (asInput 1: UC_ACCELERATION_AS_INPUT); before
- * initialization that changes the initialization (the first step's end). */
-static void mark_acceleration_given(UCInstance* inst, int* given, int c, int asInput) {
-    const int before = *given;
+static const InputMember* input_member(const InputMember* table, size_t count, unsigned int vr) {
+    for (size_t i = 0; i < count; ++i)
+        if (table[i].vr == vr) return &table[i];
+    return NULL;
+}
+
+static const InputFlag* input_flag(unsigned int vr) {
+    for (size_t i = 0; i < UC_COUNT(kInputFlags); ++i)
+        if (kInputFlags[i].vr == vr) return &kInputFlags[i];
+    return NULL;
+}
+
+static void* inputs_at(UCInstance* inst, size_t offset) { return (char*)&inst->inputs + offset; }
+
+/* Component c of an input that is another's derivative (an acceleration of a driven end) is given for the coming
+ * step, by fmi2SetRealInputDerivatives (asInput 0) or by setting the input itself (asInput 1:
+ * UC_ACCELERATION_AS_INPUT); before initialization that changes the initialization (the first step's end). */
+static void mark_given(UCInstance* inst, const InputFlag* f, int asInput) {
+    int* given = (int*)inputs_at(inst, f->offset);
+    const int before = *given, c = f->component;
     *given = asInput ? (before | 1 | UC_ACCELERATION_AS_INPUT(c)) : ((before | 1) & ~UC_ACCELERATION_AS_INPUT(c));
     if (before == 0 && inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
-}
-
-/* The flag of the acceleration input v stores into and its component *c, or NULL for any other variable. */
-static int* acceleration_flag(UCInstance* inst, const UCVariable* v, int* c) {
-    if (v->causality != UC_CAUSALITY_INPUT) return NULL;
-    if ((*c = component_of(v->offset, offsetof(UCInputs, towAcceleration))) >= 0) return &inst->inputs.towAccelerationGiven;
-    if ((*c = component_of(v->offset, offsetof(UCInputs, endAcceleration))) >= 0) return &inst->inputs.endAccelerationGiven;
-    return NULL;
 }
 
 /* Stores one value; a changed parameter or input before initialization invalidates the cached one. */
@@ -167,9 +209,8 @@ fmi2Status uc_set_values(UCInstance* inst, const fmi2ValueReference vr[], size_t
         uc_instance_mark_set(inst, v);
         if (type == UC_TYPE_REAL) {
             store_value(inst, v, value);
-            int c;
-            int* given = acceleration_flag(inst, v, &c);
-            if (given != NULL) mark_acceleration_given(inst, given, c, 1);
+            const InputFlag* given = v->causality == UC_CAUSALITY_INPUT ? input_flag(v->vr) : NULL;
+            if (given != NULL) mark_given(inst, given, 1);
         } else if (type == UC_TYPE_BOOLEAN) {
             fmi2Integer normalized = *(const fmi2Boolean*)value != fmi2False; /* any non-zero is true */
             store_value(inst, v, &normalized);
@@ -212,67 +253,50 @@ fmi2Status uc_set_strings(UCInstance* inst, const fmi2ValueReference vr[], size_
     return fmi2OK;
 }
 
-/* A mooring system's body or point input: der(body[k].v*) (order 1) or der(body[k].x/y/z, 2) is the
- * reference point's acceleration, der(body[k].w*) the angular acceleration; der(point[k].v*) or of its
- * position (order 2) the point's acceleration. Where the value goes (NULL if v is none of them); `given`
- * the flag it sets. */
-static double* body_derivative_target(UCInstance* inst, const UCVariable* v, int order, int** given) {
-    const size_t bodies = offsetof(UCInputs, coupledBody), points = offsetof(UCInputs, coupledPoint);
-    if (v->offset >= bodies && v->offset < bodies + sizeof inst->inputs.coupledBody) {
-        const size_t k = (v->offset - bodies) / sizeof(UCCoupledBody), in = (v->offset - bodies) % sizeof(UCCoupledBody);
-        const int c = (int)((in % (3 * sizeof(double))) / sizeof(double));
-        const int linear = (order == 1 && in / (3 * sizeof(double)) == offsetof(UCCoupledBody, velocity) / (3 * sizeof(double))) ||
-                           (order == 2 && in < 3 * sizeof(double));
-        const int angular = order == 1 && in >= offsetof(UCCoupledBody, angularVelocity) &&
-                            in < offsetof(UCCoupledBody, angularVelocity) + sizeof(double[3]);
-        if (!linear && !angular) return NULL;
-        *given = &inst->inputs.bodyAccelerationGiven[k];
-        return &inst->inputs.bodyAcceleration[6 * k + (angular ? 3 : 0) + c];
-    }
-    if (v->offset >= points && v->offset < points + sizeof inst->inputs.coupledPoint) {
-        const size_t k = (v->offset - points) / sizeof(UCCoupledPoint), in = (v->offset - points) % sizeof(UCCoupledPoint);
-        const int velocity = in >= offsetof(UCCoupledPoint, velocity);
-        if (!((velocity && order == 1) || (!velocity && order == 2))) return NULL;
-        *given = &inst->inputs.pointAccelerationGiven[k];
-        return &inst->inputs.pointAcceleration[3 * k + (int)((in % (3 * sizeof(double))) / sizeof(double))];
-    }
-    return NULL;
-}
+/* Where fmi2SetRealInputDerivatives keeps a derivative: target NULL if it is accepted and ignored (the input held
+ * over the step); inputFlag (an input that is a derivative) or flag (of a member), or neither. */
+typedef struct {
+    double* target;
+    const InputFlag* inputFlag;
+    int* flag;
+} DerivativeTarget;
 
-/* Where a derivative of `order` of the input v is kept: *target and the flag *given it sets (*given NULL: no
- * flag; *target NULL: accepted and ignored, the input held over the step). fmi2Error (logged) if it is refused. */
-static fmi2Status derivative_target(UCInstance* inst, const UCVariable* v, int order, double value, double** target,
-                                    int** given) {
+/* Where the derivative of `order` of the input v is kept. Along v's chain of derivatives (derivativeOf), it lands
+ * in the last input of the chain when that is `order` links away, or in the member that keeps the last input's
+ * derivative when that is; a derivative of order 1 elsewhere is accepted and ignored (der(tow.x) is the input
+ * tow.vx), any other is refused. fmi2Error (logged) if it is refused. */
+static fmi2Status derivative_target(UCInstance* inst, const UCVariable* v, int order, double value,
+                                    DerivativeTarget* kept) {
     const char* function = "fmi2SetRealInputDerivatives";
-    const int velocity = component_of(v->offset, offsetof(UCInputs, towVelocity));
-    const int position = component_of(v->offset, offsetof(UCInputs, tow));
-    const int endVelocity = component_of(v->offset, offsetof(UCInputs, endVelocity));
-    const int endPosition = component_of(v->offset, offsetof(UCInputs, end));
-    *target = NULL;
-    *given = NULL;
+    kept->target = NULL;
+    kept->inputFlag = NULL;
+    kept->flag = NULL;
     if (v->causality != UC_CAUSALITY_INPUT) {
         uc_log_status(&inst->log, fmi2Error, "%s: %s is not an input", function, v->name);
         return fmi2Error;
     }
     if (check_real_value(inst, v, value, function) != fmi2OK) return fmi2Error;
-    if ((velocity >= 0 && order == 1) || (position >= 0 && order == 2)) {
-        *target = &inst->inputs.towAcceleration[velocity >= 0 ? velocity : position];
-        *given = &inst->inputs.towAccelerationGiven;
-    } else if (order == 1 && v->offset >= offsetof(UCInputs, current) &&
-               v->offset < offsetof(UCInputs, current) + sizeof inst->inputs.current) {
-        *target = &inst->inputs.currentRate[(v->offset - offsetof(UCInputs, current)) / sizeof(double)];
-    } else if (order == 1 && v->offset == offsetof(UCInputs, currentScale)) {
-        *target = &inst->inputs.currentScaleRate;
-    } else if (order == 1 && v->offset == offsetof(UCInputs, winchRate)) {
-        *target = &inst->inputs.winchRateRate;
-    } else if ((endVelocity >= 0 && order == 1) || (endPosition >= 0 && order == 2)) {
-        *target = &inst->inputs.endAcceleration[endVelocity >= 0 ? endVelocity : endPosition];
-        *given = &inst->inputs.endAccelerationGiven;
-    } else if ((*target = body_derivative_target(inst, v, order, given)) == NULL && order != 1) {
-        uc_log_status(&inst->log, fmi2Error,
-                      "%s: derivative of order %d of %s is not supported (order 1 of tow.vx/vy/vz, order 2 of "
-                      "tow.x/y/z, order 1 of other inputs)",
-                      function, order, v->name);
+    unsigned int last = v->vr; /* the last input of v's chain, and how many links it is from v */
+    int links = 0;
+    for (unsigned int next; (next = derivative_input(last)) != 0; ++links) last = next;
+    const InputMember* member = input_member(kDerivativeMembers, UC_COUNT(kDerivativeMembers), last);
+    if (order >= 1 && links == order && member == NULL) {
+        kept->target = (double*)uc_variable_address(uc_variable_find(last, UC_TYPE_REAL), &inst->params,
+                                                    &inst->inputs, &inst->outputs);
+        kept->inputFlag = input_flag(last);
+    } else if (order >= 1 && links == order - 1 && member != NULL) {
+        kept->target = (double*)inputs_at(inst, member->offset);
+        const InputMember* flag = input_member(kMemberFlags, UC_COUNT(kMemberFlags), last);
+        if (flag != NULL) kept->flag = (int*)inputs_at(inst, flag->offset);
+    } else if (order != 1) {
+        const int supported = links + (member != NULL);
+        if (supported > 1) {
+            uc_log_status(&inst->log, fmi2Error, "%s: derivative of order %d of %s is not supported (orders 1 and %d)",
+                          function, order, v->name, supported);
+        } else {
+            uc_log_status(&inst->log, fmi2Error, "%s: derivative of order %d of %s is not supported (order 1)",
+                          function, order, v->name);
+        }
         return fmi2Error;
     }
     return fmi2OK;
@@ -285,53 +309,79 @@ fmi2Status uc_set_input_derivatives(UCInstance* inst, const fmi2ValueReference v
         check_arrays(inst, vr, nvr, order, function) != fmi2OK) {
         return fmi2Error;
     }
-    double* target;
-    int* given;
+    DerivativeTarget kept;
     for (size_t i = 0; i < nvr; ++i) { /* every derivative is checked before any is kept */
         const UCVariable* v = find_or_log(inst, vr[i], UC_TYPE_REAL, function);
-        if (v == NULL || derivative_target(inst, v, order[i], values[i], &target, &given) != fmi2OK) return fmi2Error;
+        if (v == NULL || derivative_target(inst, v, order[i], values[i], &kept) != fmi2OK) return fmi2Error;
     }
     for (size_t i = 0; i < nvr; ++i) {
         const UCVariable* v = uc_variable_find(vr[i], UC_TYPE_REAL);
-        derivative_target(inst, v, order[i], values[i], &target, &given);
-        if (target == NULL) {
-            uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: derivative of %s ignored (held constant over a step%s)",
-                   function, v->name,
-                   component_of(v->offset, offsetof(UCInputs, tow)) >= 0 ? "; the tow velocity is the input tow.v*" : "");
+        derivative_target(inst, v, order[i], values[i], &kept);
+        if (kept.target == NULL) {
+            const UCVariable* rate = uc_variable_find(derivative_input(v->vr), UC_TYPE_REAL);
+            uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: derivative of %s ignored (held constant over a step%s%s)",
+                   function, v->name, rate != NULL ? "; its derivative is the input " : "", rate != NULL ? rate->name : "");
             continue;
         }
-        *target = values[i];
-        if (given == &inst->inputs.towAccelerationGiven) {
-            mark_acceleration_given(inst, given, (int)(target - inst->inputs.towAcceleration), 0);
-        } else if (given == &inst->inputs.endAccelerationGiven) {
-            mark_acceleration_given(inst, given, (int)(target - inst->inputs.endAcceleration), 0);
-        } else if (given != NULL) {
-            *given = 1;
+        *kept.target = values[i];
+        if (kept.inputFlag != NULL) {
+            mark_given(inst, kept.inputFlag, 0);
+        } else if (kept.flag != NULL) {
+            *kept.flag = 1;
         }
     }
     return fmi2OK;
 }
 
-/* Index of name in names[count], or -1. */
-static int name_index(const char* name, const char* const names[], int count) {
-    for (int i = 0; i < count; ++i)
-        if (strcmp(name, names[i]) == 0) return i;
+/* ---- directional derivatives, from the schema (directionalDerivative) ------------------------------ */
+
+typedef enum { UC_MATRIX_INTERFACE, UC_MATRIX_BODY } UCMatrix;
+
+typedef struct {
+    unsigned int vr;
+    UCMatrix matrix;
+    int index; /* the row (an output) or column (an input) */
+    int body;  /* 1-based body of a BODY matrix, 0 for INTERFACE */
+} DerivativeCell;
+
+#define UC_CELL_ROW(vr, matrix, index, body) {vr, UC_MATRIX_##matrix, index, body},
+static const DerivativeCell kDerivativeColumns[] = {UC_SCHEMA_DERIVATIVE_COLUMNS(UC_CELL_ROW)};
+static const DerivativeCell kDerivativeRows[] = {UC_SCHEMA_DERIVATIVE_ROWS(UC_CELL_ROW)};
+
+_Static_assert(UC_SCHEMA_INTERFACE_DERIVATIVE_COLUMNS == 18 && UC_SCHEMA_INTERFACE_DERIVATIVE_ROWS == 6,
+               "uc_interface_derivative: a seed of 18 inputs, 6 outputs");
+_Static_assert(UC_SCHEMA_BODY_DERIVATIVE_COLUMNS == UC_BODY_DERIVATIVE_INPUTS && UC_SCHEMA_BODY_DERIVATIVE_ROWS == 6,
+               "uc_body_derivatives: UC_BODY_DERIVATIVE_INPUTS inputs, 6 outputs");
+
+/* The row or column of the variable vr in `matrix` (table: kDerivativeRows or kDerivativeColumns) and in *body
+ * its body (the first of a call sets it, the others must agree); -1 (logged by the caller) if it has none. */
+static int cell_index(const DerivativeCell* table, size_t count, UCMatrix matrix, unsigned int vr, int* body) {
+    for (size_t i = 0; i < count; ++i) {
+        if (table[i].vr != vr || table[i].matrix != matrix) continue;
+        if (*body != 0 && *body != table[i].body) return -1;
+        *body = table[i].body;
+        return table[i].index;
+    }
     return -1;
 }
 
-/* The position of the variable vr among names[count] (the interface variables of the derivatives),
- * or -1 with a message naming it: "no derivative <relation> <name> (derivatives are provided <which>)". */
-static int interface_index(UCInstance* inst, fmi2ValueReference vr, const char* const names[], int count,
-                           const char* relation, const char* which) {
+/* The row or column of the variable vr, or -1 with a message: "no derivative <relation> <name> (<which>)". */
+static int derivative_index(UCInstance* inst, fmi2ValueReference vr, const DerivativeCell* table, size_t count,
+                            UCMatrix matrix, int* body, const char* relation, const char* which) {
     const char* function = "fmi2GetDirectionalDerivative";
     const UCVariable* v = find_or_log(inst, vr, UC_TYPE_REAL, function);
     if (v == NULL) return -1;
-    const int index = name_index(v->name, names, count);
-    if (index < 0) {
-        uc_log_status(&inst->log, fmi2Error, "%s: no derivative %s %s (derivatives are provided %s)", function,
-                      relation, v->name, which);
-    }
+    const int index = cell_index(table, count, matrix, vr, body);
+    if (index < 0) uc_log_status(&inst->log, fmi2Error, "%s: no derivative %s %s (%s)", function, relation, v->name, which);
     return index;
+}
+
+/* A seed must be a finite number (logged naming its input). */
+static fmi2Status check_seed(UCInstance* inst, fmi2ValueReference vr, double seed) {
+    if (isfinite(seed)) return fmi2OK;
+    uc_log_status(&inst->log, fmi2Error, "fmi2GetDirectionalDerivative: the seed of %s is not a finite number",
+                  uc_variable_find(vr, UC_TYPE_REAL)->name);
+    return fmi2Error;
 }
 
 /* dvUnknown = d[rows, cols] dvKnown for the 6 x UC_BODY_DERIVATIVE_INPUTS matrix d (row-major). */
@@ -344,54 +394,28 @@ static void seeded_product(const double d[6 * UC_BODY_DERIVATIVE_INPUTS], const 
     }
 }
 
-/* The index of the variable vr among body[k].<names[i]> and its body k (0 and a logged error if it is none). */
-static int body_index(UCInstance* inst, fmi2ValueReference vr, const char* const names[], int count, int* body,
-                      const char* which) {
-    const char* function = "fmi2GetDirectionalDerivative";
-    const UCVariable* v = find_or_log(inst, vr, UC_TYPE_REAL, function);
-    if (v == NULL) return -1;
-    int k = 0, consumed = 0;
-    if (sscanf(v->name, "body[%d].%n", &k, &consumed) == 1 && consumed > 0) {
-        const int index = name_index(v->name + consumed, names, count);
-        if (index >= 0 && (*body == 0 || *body == k)) {
-            *body = k;
-            return index;
-        }
-    }
-    uc_log_status(&inst->log, fmi2Error, "%s: no derivative involving %s (a mooring system provides %s, of one body "
-                  "per call)", function, v->name, which);
-    return -1;
-}
-
 /* A mooring system: d body[k].force/moment (t + h) / d body[k].* inputs (t) (uc_body_derivatives). */
 static fmi2Status body_directional_derivative(UCInstance* inst, const fmi2ValueReference unknown[], size_t nUnknown,
                                               const fmi2ValueReference known[], size_t nKnown,
                                               const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
-    static const char* const outputs[6] = {"force.x", "force.y", "force.z", "moment.x", "moment.y", "moment.z"};
-    static const char* const inputs[UC_BODY_DERIVATIVE_INPUTS] = {"x",  "y",  "z",  "roll", "pitch", "yaw",
-                                                                  "vx", "vy", "vz", "wx",   "wy",    "wz",
-                                                                  "q0", "q1", "q2", "q3"};
-    const char* which = "body[k].force.x/y/z and body[k].moment.x/y/z with respect to body[k].x/y/z, "
-                        "roll/pitch/yaw, vx/vy/vz, wx/wy/wz and q0/q1/q2/q3";
+    const char* which = "a mooring system provides " UC_SCHEMA_BODY_DERIVATIVE_ROWS_TEXT " with respect to "
+                        UC_SCHEMA_BODY_DERIVATIVE_COLUMNS_TEXT ", of one body per call";
     const char* function = "fmi2GetDirectionalDerivative";
-    int rows[6], cols[UC_BODY_DERIVATIVE_INPUTS], body = 0;
-    if (nUnknown > 6 || nKnown > UC_BODY_DERIVATIVE_INPUTS) {
-        uc_log_status(&inst->log, fmi2Error, "%s: at most 6 unknowns and %d knowns per call (%s)", function,
-                      UC_BODY_DERIVATIVE_INPUTS, which);
+    int rows[UC_SCHEMA_BODY_DERIVATIVE_ROWS], cols[UC_SCHEMA_BODY_DERIVATIVE_COLUMNS], body = 0;
+    if (nUnknown > UC_SCHEMA_BODY_DERIVATIVE_ROWS || nKnown > UC_SCHEMA_BODY_DERIVATIVE_COLUMNS) {
+        uc_log_status(&inst->log, fmi2Error, "%s: at most %d unknowns and %d knowns per call (%s)", function,
+                      UC_SCHEMA_BODY_DERIVATIVE_ROWS, UC_SCHEMA_BODY_DERIVATIVE_COLUMNS, which);
         return fmi2Error;
     }
     for (size_t i = 0; i < nUnknown; ++i) {
-        rows[i] = body_index(inst, unknown[i], outputs, 6, &body, which);
+        rows[i] = derivative_index(inst, unknown[i], kDerivativeRows, UC_COUNT(kDerivativeRows), UC_MATRIX_BODY,
+                                   &body, "involving", which);
         if (rows[i] < 0) return fmi2Error;
     }
     for (size_t j = 0; j < nKnown; ++j) {
-        cols[j] = body_index(inst, known[j], inputs, UC_BODY_DERIVATIVE_INPUTS, &body, which);
-        if (cols[j] < 0) return fmi2Error;
-        if (!isfinite(dvKnown[j])) {
-            uc_log_status(&inst->log, fmi2Error, "%s: the seed of body[%d].%s is not a finite number", function, body,
-                          inputs[cols[j]]);
-            return fmi2Error;
-        }
+        cols[j] = derivative_index(inst, known[j], kDerivativeColumns, UC_COUNT(kDerivativeColumns), UC_MATRIX_BODY,
+                                   &body, "involving", which);
+        if (cols[j] < 0 || check_seed(inst, known[j], dvKnown[j]) != fmi2OK) return fmi2Error;
     }
     double d[6 * UC_BODY_DERIVATIVE_INPUTS];
     if (body > 0 && uc_body_derivatives(inst->cable, body, d, inst->msg, sizeof inst->msg) != 0) {
@@ -405,11 +429,6 @@ static fmi2Status body_directional_derivative(UCInstance* inst, const fmi2ValueR
 fmi2Status uc_get_directional_derivative(UCInstance* inst, const fmi2ValueReference unknown[], size_t nUnknown,
                                          const fmi2ValueReference known[], size_t nKnown, const fmi2Real dvKnown[],
                                          fmi2Real dvUnknown[]) {
-    static const char* const outputs[6] = {"towForce.x", "towForce.y", "towForce.z",
-                                           "endForce.x", "endForce.y", "endForce.z"};
-    static const char* const inputs[18] = {"tow.x",  "tow.y",  "tow.z",  "tow.vx", "tow.vy", "tow.vz",
-                                           "end.x",  "end.y",  "end.z",  "end.vx", "end.vy", "end.vz",
-                                           "tow.ax", "tow.ay", "tow.az", "end.ax", "end.ay", "end.az"};
     const char* function = "fmi2GetDirectionalDerivative";
     if ((nUnknown > 0 && (unknown == NULL || dvUnknown == NULL)) ||
         (nKnown > 0 && (known == NULL || dvKnown == NULL))) {
@@ -418,27 +437,25 @@ fmi2Status uc_get_directional_derivative(UCInstance* inst, const fmi2ValueRefere
     }
     if (inst->coreParams.mooringSystem && inst->cable != NULL && inst->coreReady)
         return body_directional_derivative(inst, unknown, nUnknown, known, nKnown, dvKnown, dvUnknown);
-    int rows[6];
-    double seed[18] = {0.0};
-    if (nUnknown > 6 || nKnown > 18) {
-        uc_log_status(&inst->log, fmi2Error,
-                      "%s: at most 6 unknowns (towForce.*, endForce.*) and 18 knowns (tow.*, end.*) per call",
-                      function);
+    int rows[UC_SCHEMA_INTERFACE_DERIVATIVE_ROWS], body = 0;
+    double seed[UC_SCHEMA_INTERFACE_DERIVATIVE_COLUMNS] = {0.0};
+    if (nUnknown > UC_SCHEMA_INTERFACE_DERIVATIVE_ROWS || nKnown > UC_SCHEMA_INTERFACE_DERIVATIVE_COLUMNS) {
+        uc_log_status(&inst->log, fmi2Error, "%s: at most %d unknowns (%s) and %d knowns (%s) per call", function,
+                      UC_SCHEMA_INTERFACE_DERIVATIVE_ROWS, UC_SCHEMA_INTERFACE_DERIVATIVE_ROWS_TEXT,
+                      UC_SCHEMA_INTERFACE_DERIVATIVE_COLUMNS, UC_SCHEMA_INTERFACE_DERIVATIVE_COLUMNS_TEXT);
         return fmi2Error;
     }
     for (size_t i = 0; i < nUnknown; ++i) {
-        rows[i] = interface_index(inst, unknown[i], outputs, 6, "of", "of towForce.x/y/z and endForce.x/y/z");
+        rows[i] = derivative_index(inst, unknown[i], kDerivativeRows, UC_COUNT(kDerivativeRows), UC_MATRIX_INTERFACE,
+                                   &body, "of", "derivatives are provided of " UC_SCHEMA_INTERFACE_DERIVATIVE_ROWS_TEXT);
         if (rows[i] < 0) return fmi2Error;
     }
     for (size_t j = 0; j < nKnown; ++j) {
-        const int col = interface_index(inst, known[j], inputs, 18, "with respect to",
-                                        "with respect to tow.x/y/z, tow.vx/vy/vz, tow.ax/ay/az, end.x/y/z, "
-                                        "end.vx/vy/vz and end.ax/ay/az");
-        if (col < 0) return fmi2Error;
-        if (!isfinite(dvKnown[j])) {
-            uc_log_status(&inst->log, fmi2Error, "%s: the seed of %s is not a finite number", function, inputs[col]);
-            return fmi2Error;
-        }
+        const int col = derivative_index(inst, known[j], kDerivativeColumns, UC_COUNT(kDerivativeColumns),
+                                         UC_MATRIX_INTERFACE, &body, "with respect to",
+                                         "derivatives are provided with respect to "
+                                         UC_SCHEMA_INTERFACE_DERIVATIVE_COLUMNS_TEXT);
+        if (col < 0 || check_seed(inst, known[j], dvKnown[j]) != fmi2OK) return fmi2Error;
         seed[col] += dvKnown[j];
     }
     if (inst->cable == NULL || !inst->coreReady) {
@@ -447,7 +464,7 @@ fmi2Status uc_get_directional_derivative(UCInstance* inst, const fmi2ValueRefere
                       "fmi2DoStep", function);
         return fmi2Error;
     }
-    double d[6];
+    double d[UC_SCHEMA_INTERFACE_DERIVATIVE_ROWS];
     if (uc_interface_derivative(inst->cable, seed, d, inst->msg, sizeof inst->msg) != 0) {
         uc_log_status(&inst->log, fmi2Error, "%s: %s", function, inst->msg);
         return fmi2Error;

@@ -8,6 +8,8 @@ Generated (each file says so in its first lines; never edit them by hand):
 
     src/generated/uc_schema.h                 UCParams / UCInputs / UCOutputs and X-macro lists of the variables
                                     (value-reference table, defaults, range checks)
+    src/generated/uc_schema_derivatives.h     X-macro lists of the inputs' time derivatives and of the
+                                    directional derivatives' rows and columns (fmu/value_access.c)
     modelDescription.xml            the FMI 2.0 model description (CMake fills in guid and version)
     docs/interface.md               the tables between the "generated from schema" markers
     python/ucable/variables.py     the variables as Python constants
@@ -40,6 +42,7 @@ ROOT = Path(__file__).resolve().parents[1]
 SCHEMA = ROOT / "schema" / "variables.toml"
 
 OUT_HEADER = ROOT / "src" / "generated" / "uc_schema.h"
+OUT_DERIVATIVES = ROOT / "src" / "generated" / "uc_schema_derivatives.h"
 OUT_XML = ROOT / "modelDescription.xml"
 OUT_README = ROOT / "docs" / "interface.md"  # the interface tables (the README links to them)
 OUT_PYTHON = ROOT / "python" / "ucable" / "variables.py"
@@ -74,6 +77,11 @@ class Scalar:
     dependencies: list = field(default_factory=list)
     entry: dict = field(default_factory=dict)
     index: int = 0          # 1-based position in ModelVariables
+    derivative_of: str | None = None      # inputs: the input this one is the time derivative of
+    derivative_field: str | None = None   # inputs: the UCInputs member keeping der(this input)
+    given_flag: str | None = None         # inputs: the UCInputs flag that the master gave that derivative
+    component: int = 0                    # 0-based component of a vector entry (0 otherwise)
+    jacobian: tuple | None = None         # (matrix, index, body): row (output) / column (input) of a derivative
 
 
 @dataclass
@@ -130,6 +138,43 @@ def expand(raw: dict, constants: dict) -> list:
     return [(name, raw["field"], raw["description"], start, list(raw.get("dependencies", [])))]
 
 
+def substitutions(raw: dict, constants: dict) -> list:
+    """Per scalar of one entry, in expand()'s order: {"{k}", "{c}", "{i}", "{j}"} -> text, and the component."""
+    name = raw["name"]
+    comps = raw.get("components")
+    if comps is not None and "count" in raw:
+        n = resolve_count(raw["count"], constants, name)
+        return [({"{k}": str(k + 1), "{c}": c, "{i}": str(k), "{j}": str(j)}, j, k + 1)
+                for k in range(n) for j, c in enumerate(comps)]
+    if comps is not None:
+        return [({"{c}": c, "{i}": str(i)}, i, 0) for i, c in enumerate(comps)]
+    if "count" in raw:
+        n = resolve_count(raw["count"], constants, name)
+        return [({"{k}": str(i + 1), "{i}": str(i)}, 0, i + 1) for i in range(n)]
+    return [({}, 0, 0)]
+
+
+def fill(text: str, sub: dict) -> str:
+    """text with the placeholders of sub replaced; an index written as a sum of products ("[6 * 1 + 3]")
+    is evaluated ("[9]")."""
+    for key, value in sub.items():
+        text = text.replace(key, value)
+
+    def index(m):
+        terms = [t.split("*") for t in m.group(1).split("+")]
+        total = 0
+        for factors in terms:
+            product = 1
+            for f in factors:
+                product *= int(f)
+            total += product
+        return f"[{total}]"
+    return re.sub(r"\[((?:\s*\d+\s*[+*])+\s*\d+\s*)\]", index, text)
+
+
+DERIVATIVE_KEYS = ("derivativeOf", "derivativeField", "givenFlag", "directionalDerivative", "computedWhenRead")
+
+
 def load(path: Path = SCHEMA):
     data = tomllib.loads(path.read_text())
     constants = data.get("constants", {})
@@ -157,12 +202,21 @@ def load(path: Path = SCHEMA):
                 raise SystemExit(f"schema: parameter {raw['name']} needs a range and a why")
             lo, hi, lo_open, hi_open = parse_range(raw["range"], raw["name"])
         scalars = []
-        for name, fld, desc, start, deps in expand(raw, constants):
+        for (name, fld, desc, start, deps), (sub, component, body) in zip(expand(raw, constants),
+                                                                           substitutions(raw, constants)):
             if causality != "output" and start is None:
                 raise SystemExit(f"schema: {name} needs a start value")
-            scalars.append(Scalar(name, next_vr[causality], causality, raw["type"], fld, raw.get("unit"),
-                                  start, lo, hi, lo_open, hi_open, raw.get("rangeText"), raw.get("why"),
-                                  desc, deps, raw))
+            s = Scalar(name, next_vr[causality], causality, raw["type"], fld, raw.get("unit"),
+                       start, lo, hi, lo_open, hi_open, raw.get("rangeText"), raw.get("why"),
+                       desc, deps, raw)
+            s.derivative_of = fill(raw["derivativeOf"], sub) if "derivativeOf" in raw else None
+            s.derivative_field = fill(raw["derivativeField"], sub) if "derivativeField" in raw else None
+            s.given_flag = fill(raw["givenFlag"], sub) if "givenFlag" in raw else None
+            s.component = component
+            if "directionalDerivative" in raw:
+                d = raw["directionalDerivative"]
+                s.jacobian = (d["matrix"], int(d["index"]) + component, body)
+            scalars.append(s)
             next_vr[causality] += 1
         entries.append(Entry(raw, scalars))
     scalars = [s for e in entries for s in e.scalars]
@@ -180,7 +234,99 @@ def load(path: Path = SCHEMA):
     for s in scalars:
         if s.start is not None and s.lo is not None and not in_range(s, float(s.start)):
             raise SystemExit(f"schema: {s.name}: start {s.start} outside its range {s.entry['range']}")
+    check_derivatives(data, scalars, by_name)
+    check_jacobians(scalars)
     return data, entries, scalars
+
+
+def unit_base(data, unit) -> dict:
+    if unit is None:
+        return {}
+    for u in data.get("unit", []):
+        if u["name"] == unit:
+            return dict(u["base"])
+    raise SystemExit(f"schema: unit {unit!r} is not a [[unit]]")
+
+
+def internal_member(data, member: str, ctype: str, name: str, key: str):
+    """Refuses a member of UCInputs that is not an [[internal]] entry of that C type (or an index beyond it)."""
+    m = re.fullmatch(r"(\w+)(?:\[(\d+)\])?", member)
+    rows = [r for r in data.get("internal", []) if m and r["struct"] == "UCInputs" and r["member"] == m.group(1)]
+    if not rows or rows[0]["type"] != ctype:
+        raise SystemExit(f"schema: {name}: {key} {member!r} is not an [[internal]] {ctype} member of UCInputs")
+    size = rows[0].get("size")
+    if (m.group(2) is None) != (size is None) or (size is not None and int(m.group(2)) >= int(size)):
+        raise SystemExit(f"schema: {name}: {key} {member!r} does not index [[internal]] {m.group(1)} "
+                         f"(size {size})")
+
+
+def check_derivatives(data, scalars, by_name):
+    """derivativeOf names an input of the unit over seconds, one derivative per input, no cycle;
+    derivativeField and givenFlag name internal members; an input keeps its derivative in one place."""
+    derivative = {}  # input name -> the input that is its derivative
+    for s in scalars:
+        for key in DERIVATIVE_KEYS[:3]:
+            if key in s.entry and s.causality != "input":
+                raise SystemExit(f"schema: {s.name}: {key} is for inputs ({s.name} is a {s.causality})")
+        if "computedWhenRead" in s.entry and s.causality != "output":
+            raise SystemExit(f"schema: {s.name}: computedWhenRead is for outputs ({s.name} is a {s.causality})")
+        if s.derivative_of is None:
+            continue
+        of = by_name.get(s.derivative_of)
+        if of is None:
+            raise SystemExit(f"schema: {s.name}: derivativeOf {s.derivative_of!r} is not a variable")
+        if of.causality != "input" or of.type != "Real" or s.type != "Real":
+            raise SystemExit(f"schema: {s.name}: derivativeOf {of.name!r} is not a Real input "
+                             f"(it is a {of.type} {of.causality})")
+        if of.name in derivative:
+            raise SystemExit(f"schema: {s.name}: derivativeOf {of.name!r}: {of.name} already has the "
+                             f"derivative {derivative[of.name]!r}")
+        derivative[of.name] = s.name
+    for s in scalars:
+        seen, x = [s.name], s
+        while x.derivative_of is not None:
+            x = by_name[x.derivative_of]
+            if x.name in seen:
+                raise SystemExit(f"schema: derivativeOf makes a cycle: {' -> '.join(seen + [x.name])}")
+            seen.append(x.name)
+        if s.derivative_of is not None:
+            of = by_name[s.derivative_of]
+            base, expected = unit_base(data, s.unit), unit_base(data, of.unit)
+            expected["s"] = expected.get("s", 0) - 1
+            if {k: v for k, v in base.items() if v} != {k: v for k, v in expected.items() if v}:
+                raise SystemExit(f"schema: {s.name}: derivativeOf {of.name!r}: its unit {s.unit} is not "
+                                 f"{of.unit or '1'}/s")
+        if s.derivative_field is not None:
+            if s.name in derivative:
+                raise SystemExit(f"schema: {s.name}: derivativeField {s.derivative_field!r}, but the input "
+                                 f"{derivative[s.name]!r} is its derivative")
+            internal_member(data, s.derivative_field, "double", s.name, "derivativeField")
+        if s.given_flag is not None:
+            if s.derivative_field is None and s.derivative_of is None:
+                raise SystemExit(f"schema: {s.name}: givenFlag needs a derivativeField or a derivativeOf")
+            internal_member(data, s.given_flag, "int", s.name, "givenFlag")
+
+
+def check_jacobians(scalars):
+    """Each matrix of directional derivatives has rows (outputs) and columns (inputs) 0..n-1, once per body."""
+    cells = {}
+    for s in scalars:
+        if s.jacobian is None:
+            continue
+        if s.causality == "parameter" or s.type != "Real":
+            raise SystemExit(f"schema: {s.name}: directionalDerivative is for Real inputs and outputs")
+        matrix, index, body = s.jacobian
+        cells.setdefault((matrix, s.causality), {}).setdefault(body, []).append((index, s.name))
+    for (matrix, causality), bodies in cells.items():
+        counts = set()
+        for body, rows in bodies.items():
+            indices = sorted(i for i, _ in rows)
+            if indices != list(range(len(indices))):
+                raise SystemExit(f"schema: directionalDerivative {matrix!r}: the {causality}s' indices "
+                                 f"{indices} are not 0..{len(indices) - 1} once each")
+            counts.add(len(indices))
+        if len(counts) != 1:
+            raise SystemExit(f"schema: directionalDerivative {matrix!r}: not the same {causality}s per body")
 
 
 def in_range(s: Scalar, v: float) -> bool:
@@ -271,6 +417,15 @@ def member_tree(entries, internals, constants):
     return structs
 
 
+def c_xlist(out: list, macro: str, doc: str, rows) -> None:
+    """Appends the X-macro list `macro` (one X(row) a line, documented by doc) to the lines out."""
+    out.append(f"/* {doc} */")
+    out.append(f"#define {macro}(X) \\")
+    for r in rows:
+        out.append(f"    X({r}) \\")
+    out.append("")
+
+
 def header_text(data, entries, scalars) -> str:
     constants = data.get("constants", {})
     structs = member_tree(entries, data.get("internal", []), constants)
@@ -294,11 +449,7 @@ def header_text(data, entries, scalars) -> str:
         out.append("")
 
     def xlist(macro, doc, rows):
-        out.append(f"/* {doc} */")
-        out.append(f"#define {macro}(X) \\")
-        for r in rows:
-            out.append(f"    X({r}) \\")
-        out.append("")
+        c_xlist(out, macro, doc, rows)
 
     xlist("UC_SCHEMA_VARIABLES",
           "X(vr, name, TYPE, CAUSALITY, member): every variable in value-reference order; TYPE is REAL, "
@@ -321,6 +472,72 @@ def header_text(data, entries, scalars) -> str:
     xlist("UC_SCHEMA_BOOLEAN_PARAMETERS", "X(member, name): the Boolean parameters (0 or 1 in the structs)",
           [f"{s.field}, {c_string(s.name)}" for s in params if s.type == "Boolean"])
     out.append("#endif /* UNDERWATERCABLE_UC_SCHEMA_H */")
+    return "\n".join(out) + "\n"
+
+
+def short_name(raw: dict) -> str:
+    """An entry's name with its components folded: tow.vx/vy/vz, body[k].roll/pitch/yaw."""
+    head, _, tail = raw["name"].replace("{k}", "k").rpartition(".")
+    comps = raw.get("components", [""])
+    return (head + "." if head else "") + "/".join(tail.replace("{c}", c) for c in comps)
+
+
+def derivatives_header_text(scalars, entries) -> str:
+    """What the inputs' time derivatives and the directional derivatives are, for fmu/value_access.c: X-macro
+    lists apart from uc_schema.h, which the whole core includes."""
+    out = [f"/* uc_schema_derivatives.h - {GENERATED_NOTE}",
+           " *",
+           " * Which input is the time derivative of which, where fmi2SetRealInputDerivatives keeps a derivative",
+           " * and which inputs and outputs are the columns and rows of fmi2GetDirectionalDerivative (the schema's",
+           " * derivativeOf, derivativeField, givenFlag and directionalDerivative), and the outputs computed when",
+           " * read (computedWhenRead: the mooring stiffness, itself a derivative), for fmu/value_access.c. */",
+           "#ifndef UNDERWATERCABLE_UC_SCHEMA_DERIVATIVES_H", "#define UNDERWATERCABLE_UC_SCHEMA_DERIVATIVES_H", ""]
+
+    def xlist(macro, doc, rows):
+        c_xlist(out, macro, doc, rows)
+
+    by_name = {s.name: s for s in scalars}
+    xlist("UC_SCHEMA_DERIVATIVE_OF",
+          "X(vr, of): the input vr is the time derivative of the input `of` (derivativeOf); "
+          "fmi2SetRealInputDerivatives keeps a derivative in the last input of such a chain, or beyond it in "
+          "a member (UC_SCHEMA_DERIVATIVE_MEMBERS)",
+          [f"{s.vr}, {by_name[s.derivative_of].vr}" for s in scalars if s.derivative_of])
+    xlist("UC_SCHEMA_DERIVATIVE_MEMBERS",
+          "X(vr, member): fmi2SetRealInputDerivatives keeps der(input vr) in UCInputs.member (derivativeField)",
+          [f"{s.vr}, {s.derivative_field}" for s in scalars if s.derivative_field])
+    xlist("UC_SCHEMA_DERIVATIVE_MEMBER_FLAGS",
+          "X(vr, flag): UCInputs.flag is set to 1 when der(input vr) is given for the coming step (givenFlag)",
+          [f"{s.vr}, {s.given_flag}" for s in scalars if s.given_flag and s.derivative_field])
+    xlist("UC_SCHEMA_DERIVATIVE_INPUT_FLAGS",
+          "X(vr, flag, component): the input vr is another input's derivative, given for the coming step "
+          "either as its value or through fmi2SetRealInputDerivatives; UCInputs.flag records which, per "
+          "component (givenFlag)",
+          [f"{s.vr}, {s.given_flag}, {s.component}" for s in scalars if s.given_flag and not s.derivative_field])
+    xlist("UC_SCHEMA_COMPUTED_WHEN_READ",
+          "X(vr): the output vr is computed by its first read after a step (uc_update_stiffness; computedWhenRead), "
+          "value references ascending",
+          [f"{s.vr}" for s in scalars if s.entry.get("computedWhenRead")])
+    rows = {"input": [], "output": []}
+    for s in scalars:
+        if s.jacobian is not None:
+            rows[s.causality].append(s)
+    xlist("UC_SCHEMA_DERIVATIVE_COLUMNS",
+          "X(vr, MATRIX, column, body): the input vr is column `column` of the directional derivatives MATRIX "
+          "(INTERFACE: uc_interface_derivative's seed; BODY: uc_body_derivatives of the 1-based body)",
+          [f"{s.vr}, {s.jacobian[0].upper()}, {s.jacobian[1]}, {s.jacobian[2]}" for s in rows["input"]])
+    xlist("UC_SCHEMA_DERIVATIVE_ROWS",
+          "X(vr, MATRIX, row, body): the output vr is row `row` of the directional derivatives MATRIX",
+          [f"{s.vr}, {s.jacobian[0].upper()}, {s.jacobian[1]}, {s.jacobian[2]}" for s in rows["output"]])
+    matrices = sorted({s.jacobian[0] for group in rows.values() for s in group})
+    for matrix in matrices:
+        for causality, what in (("input", "COLUMNS"), ("output", "ROWS")):
+            group = [s for s in rows[causality] if s.jacobian[0] == matrix]
+            count = len({s.jacobian[1] for s in group})
+            names = [short_name(e.raw) for e in entries if any(s in group for s in e.scalars)]
+            text = ", ".join(names[:-1]) + " and " + names[-1] if len(names) > 1 else "".join(names)
+            out.append(f"#define UC_SCHEMA_{matrix.upper()}_DERIVATIVE_{what} {count}")
+            out.append(f"#define UC_SCHEMA_{matrix.upper()}_DERIVATIVE_{what}_TEXT {c_string(text)}")
+    out += ["", "#endif /* UNDERWATERCABLE_UC_SCHEMA_DERIVATIVES_H */"]
     return "\n".join(out) + "\n"
 
 
@@ -725,6 +942,7 @@ def generated_files() -> dict:
     data, entries, scalars = load()
     return {
         OUT_HEADER: header_text(data, entries, scalars),
+        OUT_DERIVATIVES: derivatives_header_text(scalars, entries),
         OUT_XML: xml_text(data, scalars),
         OUT_README: readme_text(OUT_README.read_text(), entries),
         OUT_PYTHON: python_text(data, scalars),

@@ -3,8 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <utility>
+
+#include "terms/sea_state.h"
 
 namespace uc {
 namespace {
@@ -44,34 +47,15 @@ constexpr size_t kPolynomialComponents = 16;
 // of the local velocity scale at its top.
 constexpr double kNegligibleTerms = 1e-12;
 
-// JONSWAP spectral shape (unscaled) at omega for peak wp and peakedness gamma.
-double jonswap_shape(double w, double wp, double gamma) {
-    const double sigma = w <= wp ? 0.07 : 0.09;
-    const double r = std::exp(-(w - wp) * (w - wp) / (2.0 * sigma * sigma * wp * wp));
-    return std::pow(w, -5.0) * std::exp(-1.25 * std::pow(wp / w, 4.0)) * std::pow(gamma, r);
-}
-
 }  // namespace
 
-double wave_number(double omega, double depth, double gravity) {
-    double k = omega * omega / gravity;  // deep water
-    if (k * depth < 10.0) k = std::max(k, omega / std::sqrt(gravity * depth));
-    for (int i = 0; i < 100; ++i) {
-        const double th = std::tanh(k * depth);
-        const double f = gravity * k * th - omega * omega;
-        const double df = gravity * (th + k * depth * (1.0 - th * th));
-        const double step = f / df;
-        k -= step;
-        if (std::fabs(step) <= 1e-15 * k) break;
-    }
-    return k;
-}
+double wave_number(double omega, double depth, double gravity) { return pm_wave_number(omega, depth, gravity); }
 
 unsigned long long SplitMix64::next() {
-    unsigned long long z = (state_ += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
+    std::uint64_t state = state_;
+    const std::uint64_t z = pm_splitmix64_next(&state);
+    state_ = state;
+    return z;
 }
 
 bool SeaState::build(const UCParams& p, std::string& error) {
@@ -83,38 +67,17 @@ bool SeaState::build(const UCParams& p, std::string& error) {
     cosb_ = std::cos(p.wavesDirection);
     sinb_ = std::sin(p.wavesDirection);
     const double g = p.gravity;
-    const double wp = 2.0 * kPi / p.wavesPeriod;
-    const double kp = wave_number(wp, depth_, g);
-    const double steepness = p.wavesHeight * kp / (2.0 * kPi);
-    if (steepness > 1.0 / 7.0) {
-        char text[300];
-        std::snprintf(text, sizeof text,
-                      "waves.height = %.17g is too steep for waves.period = %.17g s in %.17g m of water: H / lambda = "
-                      "%.3g exceeds the breaking limit 1/7 (lambda = %.4g m)",
-                      p.wavesHeight, p.wavesPeriod, depth_, steepness, 2.0 * kPi / kp);
+    // The components (sea_state.h, shared with the partner FMUs); a breaking sea is refused naming waves.height.
+    const PMWaves waves = {p.wavesMode, p.wavesHeight, p.wavesPeriod, p.wavesGamma, p.wavesDirection,
+                           static_cast<std::uint64_t>(p.wavesSeed), p.wavesNComponents, p.wavesRampTime, depth_, g};
+    std::vector<PMWaveComponent> generated(pm_sea_size(&waves));
+    char text[300];
+    if (pm_sea_components(&waves, generated.data(), text, sizeof text) != 0) {
         error = text;
         return false;
     }
-    if (p.wavesMode == 1) {
-        components_.push_back({0.5 * p.wavesHeight, wp, kp, 0.0});
-    } else {
-        // JONSWAP: n components at the midpoints of equal bands over [0.5, 3] wp, amplitudes
-        // sqrt(2 S dw) with S scaled so that 4 sqrt(m0) = Hs; phases from the seed.
-        const int n = p.wavesNComponents;
-        const double w0 = 0.5 * wp, w1 = 3.0 * wp, dw = (w1 - w0) / n;
-        std::vector<double> S(n);
-        double m0 = 0.0;
-        for (int i = 0; i < n; ++i) {
-            S[i] = jonswap_shape(w0 + (i + 0.5) * dw, wp, p.wavesGamma);
-            m0 += S[i] * dw;
-        }
-        const double scale = p.wavesHeight * p.wavesHeight / 16.0 / m0;
-        SplitMix64 random(static_cast<unsigned long long>(p.wavesSeed));
-        for (int i = 0; i < n; ++i) {
-            const double w = w0 + (i + 0.5) * dw;
-            components_.push_back({std::sqrt(2.0 * scale * S[i] * dw), w, wave_number(w, depth_, g), 2.0 * kPi * random.uniform()});
-        }
-    }
+    for (const PMWaveComponent& c : generated) components_.push_back({c.amplitude, c.omega, c.k, c.phase});
+    const double wp = 2.0 * kPi / p.wavesPeriod;
     // The ladder of the JONSWAP frequencies w0 + (i + 1/2) dw (kinematics); a single component is its
     // own ladder.
     gravity_ = g;

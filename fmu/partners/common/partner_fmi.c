@@ -1,8 +1,8 @@
 /*
  * partner_fmi.c - the exported FMI 2.0 Co-Simulation functions of a partner FMU (the model is
  * kPartnerModel, linked in). Each function checks the machine state against the set of states it may
- * be called in (FMI 2.0 section 4.2.4), delegates, and applies the worst-status rule in one place
- * (pm_instance_finish). Values: the value reference of a variable is its position in the model's table
+ * be called in (FMI 2.0 section 4.2.4), delegates, and applies the worst-status rule in one place: the
+ * state machine of the cable's adapter, common/fmi2_machine.h. Values: the value reference of a variable is its position in the model's table
  * (1-based); Real, Integer and Boolean variables are stored as doubles in the model's data, String
  * parameters as char arrays in it (copied in, so that a saved state holds them).
  */
@@ -16,24 +16,8 @@
 #include "partner_instance.h"
 #include "string_value.h"
 
-#define ANY_AFTER_INSTANTIATE                                                                                \
-    (PM_STATE_INSTANTIATED | PM_STATE_INIT_MODE | PM_STATE_STEP_COMPLETE | PM_STATE_STEP_IN_PROGRESS |      \
-     PM_STATE_STEP_FAILED | PM_STATE_STEP_CANCELED | PM_STATE_TERMINATED | PM_STATE_ERROR)
-#define MASK_GET                                                                                             \
-    (PM_STATE_INIT_MODE | PM_STATE_STEP_COMPLETE | PM_STATE_STEP_FAILED | PM_STATE_STEP_CANCELED |          \
-     PM_STATE_TERMINATED | PM_STATE_ERROR)
-#define MASK_SET (PM_STATE_INSTANTIATED | PM_STATE_INIT_MODE | PM_STATE_STEP_COMPLETE)
-#define MASK_FMU_STATE (ANY_AFTER_INSTANTIATE & ~PM_STATE_STEP_IN_PROGRESS)
-#define MASK_GET_STATUS \
-    (PM_STATE_STEP_COMPLETE | PM_STATE_STEP_IN_PROGRESS | PM_STATE_STEP_FAILED | PM_STATE_TERMINATED)
-
-#define GUARDED(c, mask, function, body)                                                                    \
-    do {                                                                                                     \
-        PMInstance* inst = (PMInstance*)(c);                                                                 \
-        fmi2Status status = pm_instance_check(inst, (mask), (function));                                     \
-        if (status == fmi2OK) status = (body);                                                               \
-        return pm_instance_finish(inst, status);                                                             \
-    } while (0)
+/* Runs `body` (an expression yielding fmi2Status) if the instance may call `function` now. */
+#define GUARDED(c, mask, function, body) UC_MACHINE_GUARDED(PMInstance, c, mask, function, body)
 
 /* ---- common functions ------------------------------------------------------------------------------- */
 
@@ -43,7 +27,7 @@ const char* fmi2GetVersion(void) { return fmi2Version; }
 
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
                                const fmi2String categories[]) {
-    GUARDED(c, ANY_AFTER_INSTANTIATE, "fmi2SetDebugLogging",
+    GUARDED(c, UC_MASK_SET_DEBUG_LOGGING, "fmi2SetDebugLogging",
             uc_log_configure(&inst->log, loggingOn, nCategories, categories));
 }
 
@@ -107,36 +91,34 @@ static fmi2Status setup_experiment(PMInstance* inst, fmi2Real startTime, fmi2Boo
 fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
                                fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
     (void)toleranceDefined, (void)tolerance; /* fixed-step Runge-Kutta: no tolerance */
-    GUARDED(c, PM_STATE_INSTANTIATED, "fmi2SetupExperiment",
+    GUARDED(c, UC_MASK_SETUP_EXPERIMENT, "fmi2SetupExperiment",
             setup_experiment(inst, startTime, stopTimeDefined, stopTime));
 }
 
 static fmi2Status enter_initialization_mode(PMInstance* inst) {
-    inst->state = PM_STATE_INIT_MODE;
+    uc_machine_enter_initialization(&inst->state);
     return fmi2OK;
 }
 
 fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
-    GUARDED(c, PM_STATE_INSTANTIATED, "fmi2EnterInitializationMode", enter_initialization_mode(inst));
+    GUARDED(c, UC_MASK_ENTER_INIT, "fmi2EnterInitializationMode", enter_initialization_mode(inst));
 }
 
 static fmi2Status exit_initialization_mode(PMInstance* inst) {
-    fmi2Status status = pm_ensure_initialized(inst, "fmi2ExitInitializationMode");
-    if (status == fmi2OK) inst->state = PM_STATE_STEP_COMPLETE;
-    return status;
+    return uc_machine_exit_initialization(&inst->state, pm_ensure_initialized(inst, "fmi2ExitInitializationMode"));
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
-    GUARDED(c, PM_STATE_INIT_MODE, "fmi2ExitInitializationMode", exit_initialization_mode(inst));
+    GUARDED(c, UC_MASK_EXIT_INIT, "fmi2ExitInitializationMode", exit_initialization_mode(inst));
 }
 
 static fmi2Status terminate(PMInstance* inst) {
-    inst->state = PM_STATE_TERMINATED;
+    uc_machine_terminate(&inst->state);
     return fmi2OK;
 }
 
 fmi2Status fmi2Terminate(fmi2Component c) {
-    GUARDED(c, PM_STATE_STEP_COMPLETE | PM_STATE_STEP_FAILED, "fmi2Terminate", terminate(inst));
+    GUARDED(c, UC_MASK_TERMINATE, "fmi2Terminate", terminate(inst));
 }
 
 static fmi2Status reset(PMInstance* inst) {
@@ -145,7 +127,7 @@ static fmi2Status reset(PMInstance* inst) {
 }
 
 fmi2Status fmi2Reset(fmi2Component c) {
-    GUARDED(c, ANY_AFTER_INSTANTIATE & ~PM_STATE_STEP_IN_PROGRESS, "fmi2Reset", reset(inst));
+    GUARDED(c, UC_MASK_RESET, "fmi2Reset", reset(inst));
 }
 
 /* ---- values ----------------------------------------------------------------------------------------- */
@@ -177,7 +159,7 @@ static fmi2Status get_values(PMInstance* inst, const fmi2ValueReference vr[], si
     for (size_t i = 0; i < nvr; ++i) {
         const PMVariable* v = find_variable(inst, vr[i], type, function);
         if (v == NULL) return fmi2Error;
-        if (v->causality == PM_OUTPUT && inst->state == PM_STATE_INIT_MODE &&
+        if (v->causality == PM_OUTPUT && inst->state == UC_STATE_INIT_MODE &&
             pm_ensure_initialized(inst, function) != fmi2OK) {
             return fmi2Error;
         }
@@ -198,7 +180,7 @@ static fmi2Status check_settable(PMInstance* inst, const PMVariable* v, const ch
         uc_log_status(&inst->log, fmi2Error, "%s: %s is an output and cannot be set", function, v->name);
         return fmi2Error;
     }
-    if (v->causality == PM_PARAMETER && inst->state == PM_STATE_STEP_COMPLETE) {
+    if (v->causality == PM_PARAMETER && inst->state == UC_STATE_STEP_COMPLETE) {
         uc_log_status(&inst->log, fmi2Error, "%s: %s is a fixed parameter and cannot be changed after initialization",
                       function, v->name);
         return fmi2Error;
@@ -228,33 +210,33 @@ static fmi2Status set_values(PMInstance* inst, const fmi2ValueReference vr[], si
         double* target = pm_value(inst, v);
         if (*target == value) continue;
         *target = value;
-        if (inst->state != PM_STATE_STEP_COMPLETE) inst->ready = 0; /* the initialization depends on it */
+        if (inst->state != UC_STATE_STEP_COMPLETE) inst->ready = 0; /* the initialization depends on it */
     }
     return fmi2OK;
 }
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[]) {
-    GUARDED(c, MASK_GET, "fmi2GetReal", get_values(inst, vr, nvr, PM_REAL, value, NULL, "fmi2GetReal"));
+    GUARDED(c, UC_MASK_GET, "fmi2GetReal", get_values(inst, vr, nvr, PM_REAL, value, NULL, "fmi2GetReal"));
 }
 
 fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[]) {
-    GUARDED(c, MASK_GET, "fmi2GetBoolean", get_values(inst, vr, nvr, PM_BOOLEAN, NULL, value, "fmi2GetBoolean"));
+    GUARDED(c, UC_MASK_GET, "fmi2GetBoolean", get_values(inst, vr, nvr, PM_BOOLEAN, NULL, value, "fmi2GetBoolean"));
 }
 
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
-    GUARDED(c, MASK_SET, "fmi2SetReal", set_values(inst, vr, nvr, PM_REAL, value, NULL, "fmi2SetReal"));
+    GUARDED(c, UC_MASK_SET, "fmi2SetReal", set_values(inst, vr, nvr, PM_REAL, value, NULL, "fmi2SetReal"));
 }
 
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Boolean value[]) {
-    GUARDED(c, MASK_SET, "fmi2SetBoolean", set_values(inst, vr, nvr, PM_BOOLEAN, NULL, value, "fmi2SetBoolean"));
+    GUARDED(c, UC_MASK_SET, "fmi2SetBoolean", set_values(inst, vr, nvr, PM_BOOLEAN, NULL, value, "fmi2SetBoolean"));
 }
 
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
-    GUARDED(c, MASK_GET, "fmi2GetInteger", get_values(inst, vr, nvr, PM_INTEGER, NULL, value, "fmi2GetInteger"));
+    GUARDED(c, UC_MASK_GET, "fmi2GetInteger", get_values(inst, vr, nvr, PM_INTEGER, NULL, value, "fmi2GetInteger"));
 }
 
 fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Integer value[]) {
-    GUARDED(c, MASK_SET, "fmi2SetInteger", set_values(inst, vr, nvr, PM_INTEGER, NULL, value, "fmi2SetInteger"));
+    GUARDED(c, UC_MASK_SET, "fmi2SetInteger", set_values(inst, vr, nvr, PM_INTEGER, NULL, value, "fmi2SetInteger"));
 }
 
 static fmi2Status get_strings(PMInstance* inst, const fmi2ValueReference vr[], size_t nvr, fmi2String values[],
@@ -272,7 +254,7 @@ static fmi2Status get_strings(PMInstance* inst, const fmi2ValueReference vr[], s
 static fmi2Status store_string(PMInstance* inst, const PMVariable* v, const char* value, const char* function) {
     const int changed = uc_store_string(&inst->log, function, v->name, pm_string(inst, v), PM_STRING_CAPACITY, value);
     if (changed < 0) return fmi2Error;
-    if (changed && inst->state != PM_STATE_STEP_COMPLETE) inst->ready = 0; /* the initialization depends on it */
+    if (changed && inst->state != UC_STATE_STEP_COMPLETE) inst->ready = 0; /* the initialization depends on it */
     return fmi2OK;
 }
 
@@ -288,11 +270,11 @@ static fmi2Status set_strings(PMInstance* inst, const fmi2ValueReference vr[], s
 }
 
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
-    GUARDED(c, MASK_GET, "fmi2GetString", get_strings(inst, vr, nvr, value, "fmi2GetString"));
+    GUARDED(c, UC_MASK_GET, "fmi2GetString", get_strings(inst, vr, nvr, value, "fmi2GetString"));
 }
 
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
-    GUARDED(c, MASK_SET, "fmi2SetString", set_strings(inst, vr, nvr, value, "fmi2SetString"));
+    GUARDED(c, UC_MASK_SET, "fmi2SetString", set_strings(inst, vr, nvr, value, "fmi2SetString"));
 }
 
 /* ---- FMU states: a byte copy of the adapter's time and machine state and of the model's data -------- */
@@ -344,7 +326,7 @@ static fmi2Status get_state(PMInstance* inst, fmi2FMUstate* state) {
 static fmi2Status set_state(PMInstance* inst, fmi2FMUstate state) {
     const PMSavedState* s = as_saved_state(inst, state, "fmi2SetFMUstate");
     if (s == NULL) return fmi2Error;
-    inst->state = (PMMachineState)s->machineState;
+    inst->state = (UCMachineState)s->machineState;
     inst->ready = s->ready;
     inst->stopTimeDefined = s->stopTimeDefined;
     inst->startTime = s->startTime;
@@ -354,7 +336,7 @@ static fmi2Status set_state(PMInstance* inst, fmi2FMUstate state) {
     /* the derived data of the restored parameters (a state of another instance may have other ones) */
     if (inst->ready && pm_rebuild_derived(inst, "fmi2SetFMUstate") != fmi2OK) return fmi2Error;
     uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "fmi2SetFMUstate: restored state %s at t = %.17g",
-           pm_state_name(inst->state), inst->time);
+           uc_state_name(inst->state), inst->time);
     return fmi2OK;
 }
 
@@ -424,8 +406,8 @@ static fmi2Status deserialize_state(PMInstance* inst, const fmi2Byte buffer[], s
         return fmi2Error;
     }
     memcpy(s, buffer + 8 + sizeof guid + sizeof dataSize, sizeof(PMSavedState) + inst->model->dataSize);
-    if (memcmp(s->magic, PM_STATE_MAGIC, sizeof s->magic) != 0 || s->machineState < PM_STATE_INSTANTIATED ||
-        s->machineState > PM_STATE_FATAL || (s->machineState & (s->machineState - 1)) != 0) {
+    if (memcmp(s->magic, PM_STATE_MAGIC, sizeof s->magic) != 0 || s->machineState < UC_STATE_INSTANTIATED ||
+        s->machineState > UC_STATE_FATAL || (s->machineState & (s->machineState - 1)) != 0) {
         free(s);
         uc_log_status(&inst->log, fmi2Error, "%s: corrupt state", function);
         return fmi2Error;
@@ -435,28 +417,28 @@ static fmi2Status deserialize_state(PMInstance* inst, const fmi2Byte buffer[], s
 }
 
 fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
-    GUARDED(c, MASK_FMU_STATE, "fmi2GetFMUstate", get_state(inst, FMUstate));
+    GUARDED(c, UC_MASK_FMU_STATE, "fmi2GetFMUstate", get_state(inst, FMUstate));
 }
 
 fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
-    GUARDED(c, MASK_FMU_STATE, "fmi2SetFMUstate", set_state(inst, FMUstate));
+    GUARDED(c, UC_MASK_FMU_STATE, "fmi2SetFMUstate", set_state(inst, FMUstate));
 }
 
 fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
-    GUARDED(c, MASK_FMU_STATE, "fmi2FreeFMUstate", free_state(inst, FMUstate));
+    GUARDED(c, UC_MASK_FMU_STATE, "fmi2FreeFMUstate", free_state(inst, FMUstate));
 }
 
 fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t* size) {
-    GUARDED(c, MASK_FMU_STATE, "fmi2SerializedFMUstateSize", serialized_state_size(inst, FMUstate, size));
+    GUARDED(c, UC_MASK_FMU_STATE, "fmi2SerializedFMUstateSize", serialized_state_size(inst, FMUstate, size));
 }
 
 fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte serializedState[], size_t size) {
-    GUARDED(c, MASK_FMU_STATE, "fmi2SerializeFMUstate", serialize_state(inst, FMUstate, serializedState, size));
+    GUARDED(c, UC_MASK_FMU_STATE, "fmi2SerializeFMUstate", serialize_state(inst, FMUstate, serializedState, size));
 }
 
 fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size,
                                    fmi2FMUstate* FMUstate) {
-    GUARDED(c, MASK_FMU_STATE, "fmi2DeSerializeFMUstate", deserialize_state(inst, serializedState, size, FMUstate));
+    GUARDED(c, UC_MASK_FMU_STATE, "fmi2DeSerializeFMUstate", deserialize_state(inst, serializedState, size, FMUstate));
 }
 
 /* ---- derivatives: not provided ------------------------------------------------------------------- */
@@ -470,21 +452,22 @@ fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReferenc
                                         const fmi2ValueReference vKnown_ref[], size_t nKnown,
                                         const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
     (void)vUnknown_ref, (void)nUnknown, (void)vKnown_ref, (void)nKnown, (void)dvKnown, (void)dvUnknown;
-    GUARDED(c, MASK_GET, "fmi2GetDirectionalDerivative",
+    GUARDED(c, UC_MASK_DIRECTIONAL_DERIVATIVE, "fmi2GetDirectionalDerivative",
             not_provided(inst, "fmi2GetDirectionalDerivative", "providesDirectionalDerivative = false"));
 }
 
 fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                                        const fmi2Integer order[], const fmi2Real value[]) {
     (void)vr, (void)nvr, (void)order, (void)value;
-    GUARDED(c, MASK_SET, "fmi2SetRealInputDerivatives",
+    GUARDED(c, UC_MASK_INPUT_DERIVATIVES, "fmi2SetRealInputDerivatives",
             not_provided(inst, "fmi2SetRealInputDerivatives", "canInterpolateInputs = false"));
 }
 
 fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                                         const fmi2Integer order[], fmi2Real value[]) {
     (void)vr, (void)nvr, (void)order, (void)value;
-    GUARDED(c, MASK_GET, "fmi2GetRealOutputDerivatives",
+    /* refused as not provided also in initialization mode, where the cable refuses it as a call sequence */
+    GUARDED(c, UC_MASK_GET, "fmi2GetRealOutputDerivatives",
             not_provided(inst, "fmi2GetRealOutputDerivatives", "maxOutputDerivativeOrder = 0"));
 }
 
@@ -522,12 +505,12 @@ static fmi2Status do_step(PMInstance* inst, double tc, double h) {
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2Real communicationStepSize,
                       fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
     (void)noSetFMUStatePriorToCurrentPoint;
-    GUARDED(c, PM_STATE_STEP_COMPLETE, "fmi2DoStep", do_step(inst, currentCommunicationPoint, communicationStepSize));
+    GUARDED(c, UC_MASK_DO_STEP, "fmi2DoStep", do_step(inst, currentCommunicationPoint, communicationStepSize));
 }
 
 fmi2Status fmi2CancelStep(fmi2Component c) {
     /* fmi2DoStep is synchronous: there is never a step in progress to cancel. */
-    GUARDED(c, PM_STATE_STEP_IN_PROGRESS, "fmi2CancelStep", fmi2OK);
+    GUARDED(c, UC_MASK_CANCEL_STEP, "fmi2CancelStep", fmi2OK);
 }
 
 /* ---- status --------------------------------------------------------------------------------------- */
@@ -559,23 +542,23 @@ static fmi2Status get_boolean_status(PMInstance* inst, fmi2StatusKind s, fmi2Boo
 
 fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status* value) {
     (void)value;
-    GUARDED(c, MASK_GET_STATUS, "fmi2GetStatus", status_not_available(inst, "fmi2GetStatus", s));
+    GUARDED(c, UC_MASK_GET_STATUS, "fmi2GetStatus", status_not_available(inst, "fmi2GetStatus", s));
 }
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real* value) {
-    GUARDED(c, MASK_GET_STATUS, "fmi2GetRealStatus", get_real_status(inst, s, value));
+    GUARDED(c, UC_MASK_GET_STATUS, "fmi2GetRealStatus", get_real_status(inst, s, value));
 }
 
 fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer* value) {
     (void)value;
-    GUARDED(c, MASK_GET_STATUS, "fmi2GetIntegerStatus", status_not_available(inst, "fmi2GetIntegerStatus", s));
+    GUARDED(c, UC_MASK_GET_STATUS, "fmi2GetIntegerStatus", status_not_available(inst, "fmi2GetIntegerStatus", s));
 }
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean* value) {
-    GUARDED(c, MASK_GET_STATUS, "fmi2GetBooleanStatus", get_boolean_status(inst, s, value));
+    GUARDED(c, UC_MASK_GET_STATUS, "fmi2GetBooleanStatus", get_boolean_status(inst, s, value));
 }
 
 fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String* value) {
     (void)value;
-    GUARDED(c, MASK_GET_STATUS, "fmi2GetStringStatus", status_not_available(inst, "fmi2GetStringStatus", s));
+    GUARDED(c, UC_MASK_GET_STATUS, "fmi2GetStringStatus", status_not_available(inst, "fmi2GetStringStatus", s));
 }

@@ -61,29 +61,11 @@ void pm_instance_reset(PMInstance* inst) {
         const PMVariable* v = &m->variables[i];
         if (v->causality != PM_OUTPUT && v->type != PM_STRING) *pm_value(inst, v) = v->start; /* Strings: "" */
     }
-    inst->state = PM_STATE_INSTANTIATED;
+    inst->state = UC_STATE_INSTANTIATED;
     inst->startTime = inst->time = inst->stopTime = 0.0;
     inst->stopTimeDefined = 0;
     inst->ready = 0;
     inst->msg[0] = '\0';
-}
-
-fmi2Status pm_instance_check(PMInstance* inst, unsigned int allowedStates, const char* function) {
-    if (inst == NULL) return fmi2Error;
-    if ((inst->state & allowedStates) != 0) return fmi2OK;
-    uc_log_status(&inst->log, fmi2Error, "%s: illegal call sequence (called in state %s)", function,
-                  pm_state_name(inst->state));
-    return fmi2Error;
-}
-
-fmi2Status pm_instance_finish(PMInstance* inst, fmi2Status status) {
-    if (inst == NULL) return status;
-    if (status == fmi2Fatal) {
-        inst->state = PM_STATE_FATAL;
-    } else if (status == fmi2Error && inst->state != PM_STATE_FATAL) {
-        inst->state = PM_STATE_ERROR;
-    }
-    return status;
 }
 
 static fmi2Status check_parameter_ranges(PMInstance* inst, const char* function) {
@@ -132,18 +114,4 @@ fmi2Status pm_rebuild_derived(PMInstance* inst, const char* function) {
         return fmi2Error;
     }
     return fmi2OK;
-}
-
-const char* pm_state_name(PMMachineState state) {
-    switch (state) {
-        case PM_STATE_INSTANTIATED: return "instantiated";
-        case PM_STATE_INIT_MODE: return "initializationMode";
-        case PM_STATE_STEP_COMPLETE: return "stepComplete";
-        case PM_STATE_STEP_IN_PROGRESS: return "stepInProgress";
-        case PM_STATE_STEP_FAILED: return "stepFailed";
-        case PM_STATE_STEP_CANCELED: return "stepCanceled";
-        case PM_STATE_TERMINATED: return "terminated";
-        case PM_STATE_ERROR: return "error";
-        default: return "fatal";
-    }
 }

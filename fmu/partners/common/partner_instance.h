@@ -1,25 +1,14 @@
 /*
- * partner_instance.h - one instance of a partner FMU: everything it owns (no globals), its state
- * machine (FMI 2.0 section 4.2.4, the same bit sets as the cable's adapter) and its values.
+ * partner_instance.h - one instance of a partner FMU: everything it owns (no globals) and its values. Its
+ * state machine (FMI 2.0 section 4.2.4) is the cable adapter's, common/fmi2_machine.h.
  */
 #ifndef UNDERWATERCABLE_PARTNER_INSTANCE_H
 #define UNDERWATERCABLE_PARTNER_INSTANCE_H
 
+#include "common/fmi2_machine.h"
 #include "fmi2FunctionTypes.h"
 #include "logging.h"
 #include "partner.h"
-
-typedef enum {
-    PM_STATE_INSTANTIATED = 1 << 0,
-    PM_STATE_INIT_MODE = 1 << 1,
-    PM_STATE_STEP_COMPLETE = 1 << 2,
-    PM_STATE_STEP_IN_PROGRESS = 1 << 3,
-    PM_STATE_STEP_FAILED = 1 << 4,
-    PM_STATE_STEP_CANCELED = 1 << 5,
-    PM_STATE_TERMINATED = 1 << 6,
-    PM_STATE_ERROR = 1 << 7,
-    PM_STATE_FATAL = 1 << 8
-} PMMachineState;
 
 #define PM_MSG_SIZE 512
 #define PM_TIME_TOLERANCE 1e-5 /* relative to max(1, |t|), as the cable's adapter */
@@ -28,7 +17,7 @@ typedef struct PMInstance {
     const PMModel* model;
     char* instanceName;         /* copied in fmi2Instantiate */
     UCLogger log;
-    PMMachineState state;
+    UCMachineState state;
     double startTime;
     int stopTimeDefined;
     double stopTime;
@@ -47,12 +36,6 @@ void pm_instance_free(PMInstance* inst);
 /* Back to "instantiated" with every start value. */
 void pm_instance_reset(PMInstance* inst);
 
-/* fmi2OK if the instance is in one of allowedStates, else logs "illegal call sequence" (fmi2Error). */
-fmi2Status pm_instance_check(PMInstance* inst, unsigned int allowedStates, const char* function);
-
-/* fmi2Error puts the instance into the error state, fmi2Fatal into fatal. Returns status. */
-fmi2Status pm_instance_finish(PMInstance* inst, fmi2Status status);
-
 /* The double of variable v in the instance's data. */
 double* pm_value(PMInstance* inst, const PMVariable* v);
 
@@ -64,7 +47,5 @@ fmi2Status pm_ensure_initialized(PMInstance* inst, const char* function);
 
 /* The model's derived data rebuilt from the parameters in the data (after a state was restored). */
 fmi2Status pm_rebuild_derived(PMInstance* inst, const char* function);
-
-const char* pm_state_name(PMMachineState state);
 
 #endif /* UNDERWATERCABLE_PARTNER_INSTANCE_H */

@@ -1,8 +1,9 @@
 /*
- * sea_state.h - the wave components of the cable FMU's sea state, generated in C for the partner FMUs:
- * the same regular wave or JONSWAP discretization, the same finite-depth dispersion and the same
- * SplitMix64 phases as the cable's own sea state (src/terms/waves.cpp), so that a partner given the same
- * waves.* parameters sees the same sea as the cable (tests/fmu/test_sea_state.cpp compares the two).
+ * sea_state.h - the wave components of the sea, in C: the regular wave or the JONSWAP discretization,
+ * the finite-depth dispersion and the SplitMix64 phases, the one implementation of both the cable's sea
+ * state (its kinematics in waves.cpp) and the partner FMUs' (fmu/partners/sea), so that a partner given
+ * the same waves.* parameters sees the same sea as the cable (tests/core/test_partner_sea_state.cpp).
+ * The ramp and the elevation here are the partners': the cable's own (waves.cpp) round differently.
  *
  * Convention: a component of amplitude a, frequency w, wavenumber k, direction of travel beta (from +x
  * toward +y) and phase p has the elevation a cos(k (x cos beta + y sin beta) - w t + p); the regular wave

@@ -1,5 +1,4 @@
-/* sea_state.c - see sea_state.h. Written to evaluate the same expressions in the same order as the cable's
- * sea state, so that the two agree to round-off. */
+/* sea_state.c - see sea_state.h. */
 #include "sea_state.h"
 
 #include <math.h>
