@@ -101,12 +101,10 @@ bool is_mooring_system_deck(std::string_view text) {
     return false;
 }
 
-bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& out, std::string& error,
-                       const LineFileCompanions& companions) {
-    out = MooringDeck();
-    Deck deck;
-    if (!parse_deck(text, true, companions, deck, out.notes, error)) return false;
-    std::vector<DeckBody> bodies;
+namespace {
+
+// The BODIES rows of a system's deck; out.bodies (the coupled bodies' count) and out.bodiesSection set.
+bool read_bodies(const Deck& deck, std::vector<DeckBody>& bodies, MooringDeck& out, std::string& error) {
     for (const Row& row : deck.bodies) {
         DeckBody b;
         if (!read_body(row, static_cast<int>(bodies.size()) + 1, b, out.notes, error)) return false;
@@ -114,31 +112,58 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
         if (b.kind == BodyKind::Coupled) out.bodies = std::max(out.bodies, b.id);
     }
     out.bodiesSection = !bodies.empty();
-    if (deck.lines.size() > UC_MAX_LINES) {
-        error = at_line(deck.lines[UC_MAX_LINES].row, "line " + std::to_string(UC_MAX_LINES + 1) + ": a mooring system "
-                                                      "holds at most " + std::to_string(UC_MAX_LINES) + " lines");
-        return false;
+    return true;
+}
+
+// The deck's points and bodies by the role they play in a system: which of them are free nodes (nodeOf:
+// a Free point where three or more lines meet; bodyNode: a Free body), which are held by the importer
+// (coupled) and which are fixed.
+struct Roles {
+    const Deck& deck;
+    const std::vector<DeckBody>& bodies;
+    std::vector<int> nodeOf, bodyNode;  // index into MooringDeck::nodes, -1 where none
+
+    bool on_free_body(int q) const {
+        const Point& p = deck.points[q];
+        return p.kind == PointKind::Body && p.body >= 1 && p.body <= static_cast<int>(bodies.size()) &&
+               bodies[p.body - 1].kind == BodyKind::Free;
     }
-    for (const Point& p : deck.points) {
-        if (p.lines.empty()) out.notes.push_back(at_line(p.row, "point " + std::to_string(p.id) + " ignored: no line "
-                                                                "is attached to it"));
+    void node_end(int q, MooringEnd& end) const {
+        end = MooringEnd();
+        end.kind = MooringEnd::Kind::Node;
+        end.node = nodeOf[q];
+        std::copy(deck.points[q].position, deck.points[q].position + 3, end.position);
     }
-    // Free points where three or more lines meet are the system's free nodes.
-    std::vector<int> nodeOf(deck.points.size(), -1);
+    bool fixed_end(int q) const {
+        const Point& p = deck.points[q];
+        return p.kind == PointKind::Fixed || (p.kind == PointKind::Body && p.body >= 1 &&
+                                              p.body <= static_cast<int>(bodies.size()) &&
+                                              bodies[p.body - 1].kind == BodyKind::Fixed);
+    }
+    // a point held by the importer: a Vessel/Coupled point or a point on a Coupled body
+    bool coupled(int q) const {
+        const PointKind kind = deck.points[q].kind;
+        return kind == PointKind::Vessel || (kind == PointKind::Body && !on_free_body(q) && !fixed_end(q));
+    }
+};
+
+// The system's free nodes: Free points where three or more lines meet, then Free bodies (six unknowns).
+void add_free_nodes(Roles& roles, std::vector<MooringNode>& nodes) {
+    const Deck& deck = roles.deck;
+    roles.nodeOf.assign(deck.points.size(), -1);
     for (size_t i = 0; i < deck.points.size(); ++i) {
         const Point& p = deck.points[i];
         if (p.kind != PointKind::Free || p.lines.size() < 3) continue;
-        nodeOf[i] = static_cast<int>(out.nodes.size());
+        roles.nodeOf[i] = static_cast<int>(nodes.size());
         MooringNode node;
         node.point = point_body(p, deck.waterDensity);
         std::copy(p.position, p.position + 3, node.position);
-        out.nodes.push_back(node);
+        nodes.push_back(node);
     }
-    // Free bodies are free nodes too (six unknowns), after the points
-    std::vector<int> bodyNode(bodies.size(), -1);
-    for (const DeckBody& b : bodies) {
+    roles.bodyNode.assign(roles.bodies.size(), -1);
+    for (const DeckBody& b : roles.bodies) {
         if (b.kind != BodyKind::Free) continue;
-        bodyNode[b.id - 1] = static_cast<int>(out.nodes.size());
+        roles.bodyNode[b.id - 1] = static_cast<int>(nodes.size());
         MooringNode node;
         node.body = true;
         node.point.id = b.id;
@@ -151,100 +176,71 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
         std::copy(b.pose, b.pose + 3, node.position);
         std::copy(b.pose + 3, b.pose + 6, node.angles);
         std::copy(b.cg, b.cg + 3, node.cg);
-        out.nodes.push_back(node);
+        nodes.push_back(node);
     }
-    auto on_free_body = [&](int q) {
-        const Point& p = deck.points[q];
-        return p.kind == PointKind::Body && p.body >= 1 && p.body <= static_cast<int>(bodies.size()) &&
-               bodies[p.body - 1].kind == BodyKind::Free;
-    };
-    auto node_end = [&](int q, MooringEnd& end) {
-        end = MooringEnd();
-        end.kind = MooringEnd::Kind::Node;
-        end.node = nodeOf[q];
-        std::copy(deck.points[q].position, deck.points[q].position + 3, end.position);
-    };
-    // Each of our lines is a chain of the deck's lines from an end on a coupled object (or, for lines
-    // no coupled object holds, on a free node; then, for lines neither holds, at a Fixed point) through
-    // Free points that join two lines, to a Fixed point, another coupled end, a free node or a Free point
-    // at its end.
-    std::vector<bool> used(deck.lines.size(), false);
-    auto fixed_end = [&](int q) {
-        const Point& p = deck.points[q];
-        return p.kind == PointKind::Fixed || (p.kind == PointKind::Body && p.body >= 1 &&
-                                              p.body <= static_cast<int>(bodies.size()) &&
-                                              bodies[p.body - 1].kind == BodyKind::Fixed);
-    };
-    // a point held by the importer: a Vessel/Coupled point or a point on a Coupled body
-    auto coupled = [&](int q) {
-        const PointKind kind = deck.points[q].kind;
-        return kind == PointKind::Vessel || (kind == PointKind::Body && !on_free_body(q) && !fixed_end(q));
-    };
-    for (int pass = 0; pass < 3; ++pass)
-    for (size_t first = 0; first < deck.lines.size(); ++first) {
-        if (used[first]) continue;
-        const Line& l0 = deck.lines[first];
-        int start = -1;
-        for (int e : {1, 0}) {  // AttachB first: MoorDyn's usual fairlead
-            if (start < 0 && (pass == 0 ? coupled(l0.end[e])
-                              : pass == 1 ? (nodeOf[l0.end[e]] >= 0 || on_free_body(l0.end[e]))
-                                          : fixed_end(l0.end[e])))
-                start = l0.end[e];
+}
+
+// One of our lines from point `start` of deck line `first`: the chain of deck lines through Free points
+// that join two lines, to a Fixed point, another coupled end, a free node or a Free point at its end.
+// pass 1 starts it on a free node. The deck lines it takes are marked in `used`.
+bool walk_line(const Roles& roles, size_t first, int start, int pass, int elementsPerLine, bool bodiesSection,
+               std::vector<bool>& used, MooringDeckLine& line, std::string& error) {
+    const Deck& deck = roles.deck;
+    const Line& l0 = deck.lines[first];
+    line.id = l0.id;
+    line.row = l0.row;
+    if (pass == 1 && roles.nodeOf[start] >= 0) {
+        roles.node_end(start, line.fairlead);
+    } else if (!mooring_end(deck.points[start], roles.bodies, roles.bodyNode, bodiesSection, line.fairlead, error)) {
+        return false;
+    }
+    int point = start, index = static_cast<int>(first);
+    while (true) {
+        const Line& l = deck.lines[index];
+        used[index] = true;
+        LineFileSection section = section_of(l, deck.types[l.type]);
+        section.elements = elementsPerLine > 0 ? elementsPerLine : elements_for_segments(l.numSegs);
+        line.sections.push_back(section);
+        line.deckLines.push_back(index);
+        const int from = point;
+        point = l.end[l.end[1] == point ? 0 : 1];
+        // the deck line's own fairlead: its end on a coupled object (AttachB where both are; a point on
+        // a Free or Fixed body is none), else the end nearer our fairlead
+        const int fairlead = roles.coupled(l.end[1]) ? l.end[1] : roles.coupled(l.end[0]) ? l.end[0] : from;
+        line.flipped.push_back(fairlead == point);
+        const Point& p = deck.points[point];
+        if (p.kind != PointKind::Free) {
+            if (!mooring_end(p, roles.bodies, roles.bodyNode, bodiesSection, line.far, error)) return false;
+            break;
         }
-        if (start < 0) continue;  // reached from another line's coupled end or a node, or refused below
-        MooringDeckLine line;
-        line.id = l0.id;
-        line.row = l0.row;
-        if (pass == 1 && nodeOf[start] >= 0) {
-            node_end(start, line.fairlead);
-        } else if (!mooring_end(deck.points[start], bodies, bodyNode, out.bodiesSection, line.fairlead, error)) {
+        if (p.lines.size() == 1) {  // a free far end: a towed body, or none
+            line.farFree = true;
+            line.farBody = point_body(p, deck.waterDensity);
+            break;
+        }
+        if (p.lines.size() > 2) {  // a free node: the line ends there
+            roles.node_end(point, line.far);
+            break;
+        }
+        index = p.lines[0] == index ? p.lines[1] : p.lines[0];
+        if (used[index]) {
+            error = at_line(p.row, "the lines through point " + std::to_string(p.id) + " form a closed loop");
             return false;
         }
-        int point = start, index = static_cast<int>(first);
-        while (true) {
-            const Line& l = deck.lines[index];
-            used[index] = true;
-            LineFileSection section = section_of(l, deck.types[l.type]);
-            section.elements = elementsPerLine > 0 ? elementsPerLine : elements_for_segments(l.numSegs);
-            line.sections.push_back(section);
-            line.deckLines.push_back(index);
-            const int from = point;
-            point = l.end[l.end[1] == point ? 0 : 1];
-            // the deck line's own fairlead: its end on a coupled object (AttachB where both are; a point on
-            // a Free or Fixed body is none), else the end nearer our fairlead
-            const int fairlead = coupled(l.end[1]) ? l.end[1] : coupled(l.end[0]) ? l.end[0] : from;
-            line.flipped.push_back(fairlead == point);
-            const Point& p = deck.points[point];
-            if (p.kind != PointKind::Free) {
-                if (!mooring_end(p, bodies, bodyNode, out.bodiesSection, line.far, error)) return false;
-                break;
-            }
-            if (p.lines.size() == 1) {  // a free far end: a towed body, or none
-                line.farFree = true;
-                line.farBody = point_body(p, deck.waterDensity);
-                break;
-            }
-            if (p.lines.size() > 2) {  // a free node: the line ends there
-                node_end(point, line.far);
-                break;
-            }
-            index = p.lines[0] == index ? p.lines[1] : p.lines[0];
-            if (used[index]) {
-                error = at_line(p.row, "the lines through point " + std::to_string(p.id) + " form a closed loop");
-                return false;
-            }
-            line.joints.push_back(point_body(p, deck.waterDensity));
-        }
-        if (line.sections.size() > UC_MAX_SECTIONS) {
-            error = at_line(deck.lines[line.deckLines[UC_MAX_SECTIONS]].row,
-                            "a chain of " + std::to_string(line.sections.size()) + " lines from point " +
-                                std::to_string(deck.points[start].id) + ": at most " + std::to_string(UC_MAX_SECTIONS) +
-                                " lines in a row are supported");
-            return false;
-        }
-        if (out.bodies == 0 && line.fairlead.kind == MooringEnd::Kind::Body) out.bodies = 1;
-        out.lines.push_back(line);
+        line.joints.push_back(point_body(p, deck.waterDensity));
     }
+    if (line.sections.size() > UC_MAX_SECTIONS) {
+        error = at_line(deck.lines[line.deckLines[UC_MAX_SECTIONS]].row,
+                        "a chain of " + std::to_string(line.sections.size()) + " lines from point " +
+                            std::to_string(deck.points[start].id) + ": at most " + std::to_string(UC_MAX_SECTIONS) +
+                            " lines in a row are supported");
+        return false;
+    }
+    return true;
+}
+
+// Every deck line is on one of our lines, and every free body holds one.
+bool check_reached(const Deck& deck, const std::vector<bool>& used, const MooringDeck& out, std::string& error) {
     for (size_t k = 0; k < deck.lines.size(); ++k) {
         if (used[k]) continue;
         const Line& l = deck.lines[k];
@@ -267,6 +263,50 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
             return false;
         }
     }
+    return true;
+}
+
+}  // namespace
+
+bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& out, std::string& error,
+                       const LineFileCompanions& companions) {
+    out = MooringDeck();
+    Deck deck;
+    if (!parse_deck(text, true, companions, deck, out.notes, error)) return false;
+    std::vector<DeckBody> bodies;
+    if (!read_bodies(deck, bodies, out, error)) return false;
+    if (deck.lines.size() > UC_MAX_LINES) {
+        error = at_line(deck.lines[UC_MAX_LINES].row, "line " + std::to_string(UC_MAX_LINES + 1) + ": a mooring system "
+                                                      "holds at most " + std::to_string(UC_MAX_LINES) + " lines");
+        return false;
+    }
+    for (const Point& p : deck.points) {
+        if (p.lines.empty()) out.notes.push_back(at_line(p.row, "point " + std::to_string(p.id) + " ignored: no line "
+                                                                "is attached to it"));
+    }
+    Roles roles{deck, bodies, {}, {}};
+    add_free_nodes(roles, out.nodes);
+    // Each of our lines is a chain of the deck's lines from an end on a coupled object (or, for lines
+    // no coupled object holds, on a free node; then, for lines neither holds, at a Fixed point).
+    std::vector<bool> used(deck.lines.size(), false);
+    for (int pass = 0; pass < 3; ++pass)
+    for (size_t first = 0; first < deck.lines.size(); ++first) {
+        if (used[first]) continue;
+        const Line& l0 = deck.lines[first];
+        int start = -1;
+        for (int e : {1, 0}) {  // AttachB first: MoorDyn's usual fairlead
+            if (start < 0 && (pass == 0 ? roles.coupled(l0.end[e])
+                              : pass == 1 ? (roles.nodeOf[l0.end[e]] >= 0 || roles.on_free_body(l0.end[e]))
+                                          : roles.fixed_end(l0.end[e])))
+                start = l0.end[e];
+        }
+        if (start < 0) continue;  // reached from another line's coupled end or a node, or refused below
+        MooringDeckLine line;
+        if (!walk_line(roles, first, start, pass, elementsPerLine, out.bodiesSection, used, line, error)) return false;
+        if (out.bodies == 0 && line.fairlead.kind == MooringEnd::Kind::Body) out.bodies = 1;
+        out.lines.push_back(line);
+    }
+    if (!check_reached(deck, used, out, error)) return false;
     out.deckLines = static_cast<int>(deck.lines.size());
     out.nodesFromDeck = deck.noInitialConditions;
     out.waterDepth = deck.waterDepth;

@@ -1,5 +1,5 @@
 // tables.h - the tables of a MoorDyn v2 deck (options, line types, points, lines, bodies) as rows checked
-// one by one, and the deck they make together: what the readers of one line (deck/line_file.cpp) and of
+// one by one, and the deck they make together: what the readers of one line (deck/one_line.cpp) and of
 // a mooring system (deck/mooring_deck.cpp) share. Internal to deck/ (the public header is
 // deck/line_file.h); the supported subset of the format is in docs/lines.md.
 #pragma once

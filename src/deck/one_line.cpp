@@ -1,4 +1,4 @@
-// line_file.cpp - one line from a MoorDyn v2 deck (docs/lines.md): the deck's tables (deck/tables.cpp)
+// one_line.cpp - one line from a MoorDyn v2 deck (docs/lines.md): the deck's tables (deck/tables.cpp)
 // walked as one chain of lines from the vessel point to the far end, converted into our conventions and
 // written into the parameters.
 #include "deck/line_file.h"
