@@ -2,6 +2,8 @@
 // chain of lines from the vessel point to the far end, in this model's conventions, and written into
 // the parameters. The supported subset of the format and every conversion of MoorDyn's conventions
 // into ours are in docs/lines.md. No I/O here: the caller reads the file and hands over its text.
+// The one header of deck/ for the rest of the core: the readers behind it (a file per table, the shared
+// tokenizer) are internal to the folder (docs/architecture.md).
 #pragma once
 
 #include <string>

@@ -1,0 +1,250 @@
+// kinematics.cpp - MoorDyn's WaveKin and Currents options (docs/lines.md, "Options and environment"): what
+// the FMU's sea state holds is read into it from the companion files next to the deck (current_profile.txt,
+// wave_frequencies.txt), the rest refused naming the option, its value and why.
+#include "deck/tables.h"
+
+#include <algorithm>
+#include <array>
+
+namespace uc {
+namespace deck {
+namespace {
+
+const char* kCurrentProfileFile = "current_profile.txt";
+const char* kWaveFrequenciesFile = "wave_frequencies.txt";
+
+const LineFileCompanion* companion(const LineFileCompanions& companions, const char* name) {
+    for (const LineFileCompanion& c : companions) {
+        if (c.name == name) return &c;
+    }
+    return nullptr;
+}
+
+// The rows of numbers of a companion file from its line `first` (1-based), blank lines skipped.
+struct NumberRow {
+    int number = 0;
+    std::vector<double> values;
+};
+
+bool number_rows(const LineFileCompanion& file, int first, std::vector<NumberRow>& rows, std::string& what) {
+    const std::vector<std::string_view> lines = split_lines(file.text);
+    for (size_t i = static_cast<size_t>(first - 1); i < lines.size(); ++i) {
+        NumberRow row{static_cast<int>(i) + 1, {}};
+        for (std::string_view token : tokenize(lines[i])) {
+            const std::optional<double> v = to_number(token);
+            if (!v) {
+                what = file.name + " line " + std::to_string(row.number) + ": " + quoted(token) + " is not a number";
+                return false;
+            }
+            row.values.push_back(*v);
+        }
+        if (!row.values.empty()) rows.push_back(row);
+    }
+    return true;
+}
+
+// Drops the rows of a piecewise-linear profile (depth increasing) that the others give by MoorDyn's
+// interpolation (linear between rows, constant beyond the ends) to round-off of the largest speed.
+void drop_redundant_rows(std::vector<std::array<double, 3>>& rows) {
+    double scale = 0.0;
+    for (const auto& r : rows) scale = std::max({scale, std::abs(r[1]), std::abs(r[2])});
+    const double tol = 1e-9 * std::max(scale, 1e-300);
+    auto same = [&](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+        return std::abs(a[1] - b[1]) <= tol && std::abs(a[2] - b[2]) <= tol;
+    };
+    while (rows.size() > 1 && same(rows[rows.size() - 1], rows[rows.size() - 2])) rows.pop_back();
+    while (rows.size() > 1 && same(rows[0], rows[1])) rows.erase(rows.begin());
+    std::vector<std::array<double, 3>> kept{rows.front()};
+    for (size_t i = 1; i + 1 < rows.size(); ++i) {
+        // row i may go when every row from the last kept one to row i + 1 lies on their chord
+        const auto& a = kept.back();
+        const auto& b = rows[i + 1];
+        bool onChord = true;
+        for (size_t j = 0; j <= i && onChord; ++j) {
+            const auto& r = rows[j];
+            if (r[0] <= a[0]) continue;
+            const double f = (r[0] - a[0]) / (b[0] - a[0]);
+            std::array<double, 3> line{r[0], a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])};
+            onChord = same(r, line);
+        }
+        if (!onChord) kept.push_back(rows[i]);
+    }
+    if (rows.size() > 1) kept.push_back(rows.back());
+    rows = kept;
+}
+
+// Currents 1: MoorDyn's steady profile, rows "z ux [uy [uz]]" from the file's fourth line, z increasing,
+// linear in z between rows and constant beyond; as the FMU's profile of depths -z.
+bool read_current_profile(const LineFileCompanion& file, LineFileSea& sea, std::string& what) {
+    std::vector<NumberRow> rows;
+    if (!number_rows(file, 4, rows, what)) return false;
+    if (rows.empty()) {
+        what = file.name + " has no rows of the profile (\"z ux uy uz\" from its fourth line)";
+        return false;
+    }
+    std::vector<std::array<double, 3>> profile;  // depth, ux, uy; depth increasing
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const NumberRow& r = rows[i];
+        const std::string at = file.name + " line " + std::to_string(r.number) + ": ";
+        if (r.values.size() < 2 || r.values.size() > 4) {
+            what = at + "a row is z ux [uy [uz]]";
+            return false;
+        }
+        if (r.values.size() == 4 && r.values[3] != 0.0) {
+            what = at + "uz = " + number_text(r.values[3]) + ": a vertical current is not supported (the FMU's "
+                        "current is horizontal)";
+            return false;
+        }
+        if (i > 0 && !(r.values[0] > rows[i - 1].values[0])) {
+            what = at + "z = " + number_text(r.values[0]) + ": z must increase row by row (MoorDyn interpolates "
+                        "between rows in that order)";
+            return false;
+        }
+        profile.insert(profile.begin(), {-r.values[0], r.values[1], r.values.size() > 2 ? r.values[2] : 0.0});
+    }
+    const size_t given = profile.size();
+    drop_redundant_rows(profile);
+    if (profile.size() > UC_CURRENT_PROFILE_ROWS) {
+        what = file.name + ": a profile of " + std::to_string(given) + " rows, " + std::to_string(profile.size()) +
+               " of them off the straight lines between their neighbours: the FMU's current profile "
+               "(currentProfile.*) holds " + std::to_string(UC_CURRENT_PROFILE_ROWS) + " rows";
+        return false;
+    }
+    sea.profileRows = static_cast<int>(profile.size());
+    for (size_t k = 0; k < profile.size(); ++k) {
+        sea.profileDepth[k] = profile[k][0];
+        sea.profileX[k] = profile[k][1];
+        sea.profileY[k] = profile[k][2];
+    }
+    return true;
+}
+
+// WaveKin 7: MoorDyn sums the components "omega Re(A) Im(A) [direction]" of the file, each the elevation
+// |A| sin(omega t - k x + arg A) (x along the direction); one component with arg A = pi/2 is the FMU's
+// regular wave of amplitude |A|, a cos(k x - omega t), crest at the origin at t = 0.
+bool read_wave_components(const LineFileCompanion& file, LineFileSea& sea, std::string& what) {
+    std::vector<NumberRow> rows;
+    if (!number_rows(file, 1, rows, what)) return false;
+    std::vector<const NumberRow*> waves;
+    for (const NumberRow& r : rows) {
+        if (r.values.size() < 3 || r.values.size() > 4) {
+            what = file.name + " line " + std::to_string(r.number) + ": a row is omega Re(A) Im(A) [direction]";
+            return false;
+        }
+        if (r.values[1] != 0.0 || r.values[2] != 0.0) waves.push_back(&r);
+    }
+    if (waves.size() != 1) {
+        what = file.name + " has " + std::to_string(waves.size()) + " components of non-zero amplitude: the FMU's "
+               "waves are one regular wave (waves.mode 1) or a JONSWAP sea of its own components (waves.mode 2), "
+               "not a given list of components";
+        return false;
+    }
+    const NumberRow& w = *waves[0];
+    const double omega = w.values[0], re = w.values[1], im = w.values[2], amplitude = std::hypot(re, im);
+    const std::string at = file.name + " line " + std::to_string(w.number) + ": ";
+    if (!(omega > 0.0)) {
+        what = at + "a component of frequency " + number_text(omega) + " rad/s is not a wave";
+        return false;
+    }
+    if (!(im > 0.0) || std::abs(re) > 1e-12 * amplitude) {
+        what = at + "the component's phase arg A = " + number_text(std::atan2(im, re)) + " rad: the FMU's regular "
+               "wave has its crest at the origin at t = 0 (arg A = pi/2, A = i |A|)";
+        return false;
+    }
+    sea.regularWave = true;
+    sea.waveHeight = 2.0 * amplitude;
+    sea.wavePeriod = 2.0 * kPi / omega;
+    sea.waveDirection = w.values.size() > 3 ? w.values[3] : 0.0;
+    return true;
+}
+
+}  // namespace
+
+// The deck's kinematics options into the FMU's sea state, or the refusal naming the option and why.
+bool read_sea(const Options& options, const LineFileCompanions& companions, LineFileSea& sea,
+              std::vector<std::string>& notes, std::string& error) {
+    const auto [waveKin, waveRow] = options.waveKin;
+    const auto [currents, currentRow] = options.currents;
+    auto refuse = [&](int row, const char* name, int value, const std::string& why) {
+        error = at_line(row, std::string(name) + " = " + std::to_string(value) + ": " + why);
+        return false;
+    };
+    auto file = [&](int row, const char* name, int value, const char* fileName, const LineFileCompanion*& out) {
+        out = companion(companions, fileName);
+        if (out) return true;
+        return refuse(row, name, value, std::string("MoorDyn reads ") + fileName + " from the deck's directory: "
+                                                    "it could not be read there");
+    };
+    const LineFileCompanion* text = nullptr;
+    std::string what;
+    switch (waveKin) {
+        case 0: break;
+        case 1:
+            notes.push_back(at_line(waveRow, "WaveKin 1 (water kinematics set by the program driving MoorDyn): the "
+                                             "water moves as the FMU's sea state, waves.* and current.*, set by the "
+                                             "importer"));
+            break;
+        case 2:
+            return refuse(waveRow, "WaveKin", waveKin, "waves from the spectrum of wave_frequencies.txt precomputed on "
+                          "the grid of water_grid.txt are not supported: the FMU's waves are a regular wave (waves.mode "
+                          "1) or a JONSWAP sea of its own components (waves.mode 2); WaveKin 7 with one component is "
+                          "read as the regular wave");
+        case 3:
+            return refuse(waveRow, "WaveKin", waveKin, "waves from the elevation record wave_elevation.txt are not "
+                          "supported: the FMU's waves are a regular wave (waves.mode 1) or a JONSWAP sea of its own "
+                          "components (waves.mode 2)");
+        case 4: case 5: case 6:
+            return refuse(waveRow, "WaveKin", waveKin, "not implemented in MoorDyn v2 either");
+        case 7:
+            if (!file(waveRow, "WaveKin", waveKin, kWaveFrequenciesFile, text)) return false;
+            if (!read_wave_components(*text, sea, what)) return refuse(waveRow, "WaveKin", waveKin, what);
+            notes.push_back(at_line(waveRow, "WaveKin 7: the one component of wave_frequencies.txt is the regular "
+                                             "wave waves.mode 1, height " + number_text(sea.waveHeight) + " m, period " +
+                                             number_text(sea.wavePeriod) + " s, direction " +
+                                             number_text(sea.waveDirection) + " rad, Wheeler stretching (in place of "
+                                             "the parameters waves.*)"));
+            break;
+        default:
+            return refuse(waveRow, "WaveKin", waveKin, "not a MoorDyn v2 option (0 to 7)");
+    }
+    switch (currents) {
+        case 0: break;
+        case 1:
+            if (!file(currentRow, "Currents", currents, kCurrentProfileFile, text)) return false;
+            if (!read_current_profile(*text, sea, what)) return refuse(currentRow, "Currents", currents, what);
+            notes.push_back(at_line(currentRow, "Currents 1: the steady profile of current_profile.txt is the current "
+                                                "profile currentProfile.* (" + std::to_string(sea.profileRows) +
+                                                " rows, in place of the parameters'; added to the inputs current.x/y)"));
+            break;
+        case 2:
+            return refuse(currentRow, "Currents", currents, "a current profile changing in time "
+                          "(current_profile_dynamic.txt) is not supported: the FMU's profile is steady (Currents 1), "
+                          "scaled in time only by the input currentScale");
+        case 3: case 4:
+            return refuse(currentRow, "Currents", currents, "not implemented in MoorDyn v2 either");
+        case 5:
+            return refuse(currentRow, "Currents", currents, "a current on a grid in x, y, z and time "
+                          "(current_profile_4d.txt) is not supported: the FMU's current varies with depth only");
+        default:
+            return refuse(currentRow, "Currents", currents, "not a MoorDyn v2 option (0 to 5)");
+    }
+    return true;
+}
+
+}  // namespace deck
+
+std::vector<std::string> line_file_companions(std::string_view text) {
+    using namespace deck;
+    std::vector<std::optional<Section>> sections;
+    std::string error;
+    std::vector<std::string> names, notes;
+    Options options;
+    if (!collect_sections(text, sections, error)) return names;
+    const auto& o = sections[static_cast<size_t>(Kind::Options)];
+    if (!o || !read_options(*o, options, notes, error)) return names;
+    if (options.waveKin.first == 7) names.push_back(kWaveFrequenciesFile);
+    if (options.currents.first == 1) names.push_back(kCurrentProfileFile);
+    return names;
+}
+
+}  // namespace uc

@@ -1,0 +1,51 @@
+// line_types.cpp - the LINE TYPES section of a MoorDyn v2 deck (docs/lines.md).
+#include "deck/tables.h"
+
+namespace uc {
+namespace deck {
+
+bool read_line_type(const Row& row, LineType& t, std::string& error) {
+    Fields f(row, error);
+    const size_t n = row.tokens.size();
+    if (n != 10 && n != 11 && n != 13) {
+        return f.fail("a line type has 10 fields (TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx), "
+                      "optionally followed by Cl or by Cl dF cF; this row has " + std::to_string(n));
+    }
+    t.name = std::string(row.tokens[0]);
+    t.row = row.number;
+    t.diameter = f.positive(1, "Diam");
+    t.massPerLength = f.positive(2, "Mass/m");
+    const std::string_view ea = f.token(3), ba = f.token(4);
+    if (ea.find('|') != std::string_view::npos || upper(ea).rfind("SYROPE:", 0) == 0) {
+        return f.fail("EA " + quoted(ea) + ": viscoelastic and Syrope axial models are not supported (a constant EA)");
+    }
+    if (!to_number(ea)) return f.fail("EA " + quoted(ea) + ": a non-linear stiffness (table) is not supported (a constant EA)");
+    t.EA = f.positive(3, "EA");
+    if (ba.find('|') != std::string_view::npos) {
+        return f.fail("BA/-zeta " + quoted(ba) + ": viscoelastic damping is not supported (one BA or -zeta)");
+    }
+    if (!to_number(ba)) {
+        return f.fail("BA/-zeta " + quoted(ba) + ": a non-linear damping (table) is not supported (one BA or -zeta)");
+    }
+    t.BA = f.number(4, "BA/-zeta");
+    if (!to_number(f.token(5))) {
+        return f.fail("EI " + quoted(f.token(5)) + ": a non-linear bending stiffness (table) is not supported");
+    }
+    t.EI = f.non_negative(5, "EI");
+    t.Cd = f.non_negative(6, "Cd");
+    t.Ca = f.non_negative(7, "Ca");
+    t.CdAx = f.non_negative(8, "CdAx");
+    t.CaAx = f.non_negative(9, "CaAx");
+    if (n > 10) {
+        const double cl = f.number(10, "Cl");
+        if (f.ok() && cl != 0.0) return f.fail("Cl = " + shown(f.token(10)) + ": vortex-induced vibration is not supported");
+        if (n == 13) {
+            f.number(11, "dF");
+            f.number(12, "cF");
+        }
+    }
+    return f.ok();
+}
+
+}  // namespace deck
+}  // namespace uc

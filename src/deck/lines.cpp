@@ -1,0 +1,88 @@
+// lines.cpp - the LINES section of a MoorDyn v2 deck (docs/lines.md), and one of its lines as a section of ours.
+#include "deck/tables.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace uc {
+namespace deck {
+
+namespace {
+
+// AttachA/AttachB: a point ID ("3", "P3", "Point3", "C3", "Con3"); rod ends ("R1A") are not supported.
+bool read_attachment(Fields& f, std::string_view word, const char* column, int nPoints, int& index) {
+    const std::string u = upper(word);
+    size_t letters = 0;
+    while (letters < u.size() && std::isalpha(static_cast<unsigned char>(u[letters]))) ++letters;
+    const std::string head = u.substr(0, letters), digits = u.substr(letters);
+    if (is_one_of(head, {"R", "ROD"})) {
+        return f.fail(std::string(column) + " " + quoted(word) + ": rods are not supported (lines join points)");
+    }
+    const bool numeric = !digits.empty() && digits.size() < 9 &&
+                         std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!is_one_of(head, {"", "P", "POINT", "C", "CON"}) || !numeric) {
+        return f.fail(std::string(column) + " " + quoted(word) + " is not a point ID");
+    }
+    const int id = std::stoi(digits);
+    if (id < 1 || id > nPoints) {
+        return f.fail(std::string(column) + " " + quoted(word) + ": there is no point " + std::to_string(id) +
+                      " (the POINTS table has " + std::to_string(nPoints) + ")");
+    }
+    index = id - 1;
+    return true;
+}
+
+}  // namespace
+
+bool read_line(const Row& row, int expectedId, const std::vector<LineType>& types, int nPoints, Line& l,
+               std::string& error) {
+    Fields f(row, error);
+    if (row.tokens.size() < 6) {
+        return f.fail("a line has the fields ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs; this row has " +
+                      std::to_string(row.tokens.size()));
+    }
+    if (!read_id(f, "line", expectedId, l.id)) return false;
+    l.type = -1;
+    for (size_t k = 0; k < types.size(); ++k) {
+        if (types[k].name == row.tokens[1]) l.type = static_cast<int>(k);
+    }
+    if (l.type < 0) {
+        std::string known;
+        for (const LineType& t : types) known += (known.empty() ? "" : ", ") + quoted(t.name);
+        return f.fail("line type " + quoted(row.tokens[1]) + " is not among the LINE TYPES (" + known + ")");
+    }
+    if (!read_attachment(f, row.tokens[2], "AttachA", nPoints, l.end[0]) ||
+        !read_attachment(f, row.tokens[3], "AttachB", nPoints, l.end[1])) {
+        return false;
+    }
+    if (l.end[0] == l.end[1]) return f.fail("AttachA and AttachB are the same point");
+    l.length = f.positive(4, "UnstrLen");
+    l.numSegs = f.integer(5, "NumSegs", 1, 100000, "must be between 1 and 100000");
+    l.row = row.number;
+    return f.ok();
+}
+
+// One MoorDyn line as a section of ours, in our conventions.
+LineFileSection section_of(const Line& l, const LineType& t) {
+    LineFileSection s;
+    s.type = t.name;
+    s.length = l.length;
+    s.diameter = t.diameter;
+    s.massPerLength = t.massPerLength;
+    s.EA = t.EA;
+    s.EI = t.EI;
+    // BA/-zeta < 0: a fraction of critical damping of one MoorDyn segment, converted as MoorDyn does,
+    // BA = zeta (UnstrLen / NumSegs) sqrt(EA Mass/m) (docs/lines.md).
+    s.axialDamping = t.BA >= 0.0 ? t.BA : -t.BA * (l.length / l.numSegs) * std::sqrt(t.EA * t.massPerLength);
+    s.Cdn = t.Cd;
+    s.Cdt = t.CdAx;
+    s.Can = t.Ca;
+    s.Cat = t.CaAx;
+    s.numSegs = l.numSegs;
+    s.row = l.row;
+    return s;
+}
+
+}  // namespace deck
+}  // namespace uc

@@ -1,0 +1,102 @@
+// tables.cpp - the tables of a MoorDyn v2 deck read section by section into one Deck, with its environment
+// (MoorDyn's defaults, its water depth raised to the deepest point).
+#include "deck/tables.h"
+
+namespace uc {
+namespace deck {
+
+bool parse_deck(std::string_view text, bool system, const LineFileCompanions& companions, Deck& deck,
+                std::vector<std::string>& notes, std::string& error) {
+    std::vector<std::optional<Section>> sections;
+    if (!collect_sections(text, sections, error)) return false;
+    auto section = [&](Kind kind) -> const std::optional<Section>& { return sections[static_cast<size_t>(kind)]; };
+
+    for (Kind kind : {Kind::Bodies, Kind::Rods, Kind::Failure, Kind::Control, Kind::ExternalLoads, Kind::SyropeIC}) {
+        if (system && kind == Kind::Bodies) continue;
+        if (section(kind) && !section(kind)->rows.empty()) {
+            error = at_line(section(kind)->rows[0].number, std::string(unsupported(kind)) + " (" + title(kind) +
+                                                                " section)");
+            return false;
+        }
+    }
+    if (section(Kind::Bodies)) {
+        deck.bodies = section(Kind::Bodies)->rows;
+        deck.bodiesHeader = section(Kind::Bodies)->header;
+    }
+    if (section(Kind::RodTypes) && !section(Kind::RodTypes)->rows.empty()) {
+        notes.push_back(at_line(section(Kind::RodTypes)->header, "ROD TYPES ignored (there are no rods)"));
+    }
+    if (section(Kind::Outputs) && !section(Kind::Outputs)->rows.empty()) {
+        notes.push_back(at_line(section(Kind::Outputs)->header, "OUTPUTS ignored: the FMU's outputs are its "
+                                                                "variables (towForce, tension[k], shape.*, ...)"));
+    }
+    for (Kind kind : {Kind::LineTypes, Kind::Points, Kind::Lines}) {
+        if (!section(kind)) {
+            error = std::string("the deck has no ") + title(kind) + " section (a header line such as ---- " +
+                    title(kind) + " ----)";
+            return false;
+        }
+        if (section(kind)->rows.empty()) {
+            error = at_line(section(kind)->header, std::string("the ") + title(kind) + " table is empty");
+            return false;
+        }
+    }
+
+    Options options;
+    if (section(Kind::Options) && !read_options(*section(Kind::Options), options, notes, error)) return false;
+    if (!read_sea(options, companions, deck.sea, notes, error)) return false;
+
+    std::vector<LineType>& types = deck.types;
+    for (const Row& row : section(Kind::LineTypes)->rows) {
+        LineType t{};
+        if (!read_line_type(row, t, error)) return false;
+        for (const LineType& other : types) {
+            if (other.name == t.name) {
+                error = at_line(row.number, "line type " + quoted(t.name) + " is defined twice (also at line " +
+                                                std::to_string(other.row) + ")");
+                return false;
+            }
+        }
+        types.push_back(t);
+    }
+
+    std::vector<Point>& points = deck.points;
+    for (const Row& row : section(Kind::Points)->rows) {
+        Point p;
+        if (!read_point(row, static_cast<int>(points.size()) + 1, system, p, notes, error)) return false;
+        points.push_back(p);
+    }
+
+    std::vector<Line>& lines = deck.lines;
+    for (const Row& row : section(Kind::Lines)->rows) {
+        Line l;
+        if (!read_line(row, static_cast<int>(lines.size()) + 1, types, static_cast<int>(points.size()), l, error)) {
+            return false;
+        }
+        for (int e : l.end) points[e].lines.push_back(static_cast<int>(lines.size()));
+        lines.push_back(l);
+    }
+
+    deck.gravity = options.gravity;
+    deck.waterDensity = options.waterDensity;
+    deck.noInitialConditions = options.noInitialConditions;
+    deck.waterDepth = options.waterDepth;
+    deck.waterDepthRow = options.waterDepthRow;
+    deck.gravityRow = options.gravityRow;
+    deck.waterDensityRow = options.waterDensityRow;
+    deck.seabed = options.seabed;
+    for (const Point& p : points) {
+        if (p.kind != PointKind::Body && -p.position[2] > deck.waterDepth) {
+            if (options.waterDepth > 0.0) {
+                notes.push_back(at_line(p.row, "point " + std::to_string(p.id) + " lies below WtrDpth: the water "
+                                               "depth is set to its depth, " + number_text(-p.position[2]) +
+                                               " m (as MoorDyn does)"));
+            }
+            deck.waterDepth = -p.position[2];
+        }
+    }
+    return true;
+}
+
+}  // namespace deck
+}  // namespace uc

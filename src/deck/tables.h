@@ -1,0 +1,126 @@
+// tables.h - the tables of a MoorDyn v2 deck (options, line types, points, lines, bodies) as rows checked
+// one by one, and the deck they make together: what the readers of one line (deck/one_line.cpp) and of
+// a mooring system (deck/mooring_deck.cpp) share. Internal to deck/ (the public header is
+// deck/line_file.h); the supported subset of the format is in docs/lines.md.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "deck/line_file.h"
+#include "deck/tokenizer.h"
+
+namespace uc {
+namespace deck {
+
+// ------------------------------------------------------------------------------------------- options (deck/options.cpp)
+struct Options {
+    double waterDepth = 0.0;  // MoorDyn's default: 0, then the depth of the deepest point
+    double gravity = kMoorDynGravity;
+    double waterDensity = kMoorDynWaterDensity;
+    bool noInitialConditions = false;  // TmaxIC 0: MoorDyn generates no initial conditions
+    std::pair<int, int> waveKin{0, 0}, currents{0, 0};  // MoorDyn's kinematics options: (value, line of the file)
+    int waterDepthRow = 0, gravityRow = 0, waterDensityRow = 0;
+    LineFileSeabed seabed;  // MoorDyn's seabed (its defaults where the deck is silent)
+};
+
+// The OPTIONS rows: MoorDyn's environment, seabed and kinematics options read, the others noted as ignored.
+bool read_options(const Section& section, Options& options, std::vector<std::string>& notes, std::string& error);
+
+// ------------------------------------------------------------------------------------------- kinematics (deck/kinematics.cpp)
+// The deck's kinematics options (WaveKin, Currents) into the FMU's sea state, reading the companion files
+// they name, or the refusal naming the option and why.
+bool read_sea(const Options& options, const LineFileCompanions& companions, LineFileSea& sea,
+              std::vector<std::string>& notes, std::string& error);
+
+// ------------------------------------------------------------------------------------------- line types (deck/line_types.cpp)
+struct LineType {
+    std::string name;
+    double diameter, massPerLength, EA, BA, EI, Cd, Ca, CdAx, CaAx;
+    int row;
+};
+
+// A LINE TYPES row: constant EA, BA or -zeta, EI; other axial, damping and bending models refused.
+bool read_line_type(const Row& row, LineType& t, std::string& error);
+
+// ------------------------------------------------------------------------------------------- points (deck/points.cpp)
+enum class PointKind { Fixed, Vessel, Free, Body };
+
+struct Point {
+    int id = 0;
+    PointKind kind = PointKind::Free;
+    int body = 0;  // Body: the deck's body ID (its position is relative to the body)
+    double position[3] = {0.0, 0.0, 0.0};
+    double mass = 0.0, volume = 0.0, CdA = 0.0, Ca = 0.0;
+    int row = 0;
+    std::vector<int> lines;  // indices of the lines attached
+};
+
+// A POINTS row; bodies: a mooring system's deck (points on bodies, Body<ID>, are read).
+bool read_point(const Row& row, int expectedId, bool bodies, Point& p, std::vector<std::string>& notes,
+                std::string& error);
+
+// "Fixed", "Vessel", "Body" or "Free", for messages.
+const char* kind_name(PointKind kind);
+
+// A Free point's mass, volume, added mass (CA rho V) and drag area.
+LineFilePoint point_body(const Point& p, double waterDensity);
+
+// ------------------------------------------------------------------------------------------- lines (deck/lines.cpp)
+struct Line {
+    int id = 0;
+    int type = 0;           // index into the line types
+    int end[2] = {0, 0};    // point indices of AttachA, AttachB
+    double length = 0.0;
+    int numSegs = 0;
+    int row = 0;
+};
+
+// A LINES row: its line type among `types`, its ends among the nPoints points.
+bool read_line(const Row& row, int expectedId, const std::vector<LineType>& types, int nPoints, Line& l,
+               std::string& error);
+
+// One MoorDyn line as a section of ours, in our conventions.
+LineFileSection section_of(const Line& l, const LineType& t);
+
+// ------------------------------------------------------------------------------------------- bodies (deck/bodies.cpp)
+enum class BodyKind { Coupled, Fixed, Free };
+
+struct DeckBody {
+    int id = 0;
+    BodyKind kind = BodyKind::Coupled;
+    double pose[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // X0 Y0 Z0 [m], r0 p0 y0 [rad]
+    double mass = 0.0, volume = 0.0, cg[3] = {0.0, 0.0, 0.0};  // a Free body's
+    double inertia[3] = {0.0, 0.0, 0.0};
+    double CdA[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // body axes: translations x, y, z, rotations about them
+    double Ca[3] = {0.0, 0.0, 0.0};                  // translations in body axes
+    int row = 0;
+};
+
+// MoorDyn's BODIES row: ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca* (angles in degrees).
+bool read_body(const Row& row, int expectedId, DeckBody& b, std::vector<std::string>& notes, std::string& error);
+
+// ------------------------------------------------------------------------------------------- the deck (deck/tables.cpp)
+// The tables of a deck, checked row by row, and its environment (MoorDyn's defaults, its water depth
+// raised to the deepest point). system: a mooring system's deck (BODIES rows and points on bodies are
+// read); otherwise they are refused as outside one line.
+struct Deck {
+    std::vector<LineType> types;
+    std::vector<Point> points;
+    std::vector<Line> lines;
+    std::vector<Row> bodies;  // the BODIES rows (system only)
+    int bodiesHeader = 0;
+    double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
+    int waterDepthRow = 0, gravityRow = 0, waterDensityRow = 0;
+    bool noInitialConditions = false;
+    LineFileSeabed seabed;
+    LineFileSea sea;
+};
+
+bool parse_deck(std::string_view text, bool system, const LineFileCompanions& companions, Deck& deck,
+                std::vector<std::string>& notes, std::string& error);
+
+}  // namespace deck
+}  // namespace uc
