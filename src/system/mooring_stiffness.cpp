@@ -23,7 +23,7 @@ std::vector<MooringSystem::Holder> MooringSystem::stiffness_holders(int b, const
                        coupled_body_rotation(body, base_.bodyOrientation)});
     // the free nodes a line on body b reaches, directly or through other nodes (not through other coupled
     // bodies: they stay where their inputs put them)
-    std::vector<int> nodeHolder(nodes_.size(), -1);
+    std::vector<int> nodeHolder(motion_.size(), -1);
     for (bool grown = true; grown;) {
         grown = false;
         for (const MooringDeckLine& l : deck_.lines) {
@@ -36,7 +36,7 @@ std::vector<MooringSystem::Holder> MooringSystem::stiffness_holders(int b, const
                 if (!e || e->kind != MooringEnd::Kind::Node || nodeHolder[e->node] >= 0) continue;
                 const int n = e->node, dofs = deck_.nodes[n].body ? 6 : 3;
                 nodeHolder[n] = static_cast<int>(holders.size());
-                holders.push_back({n, holders.back().offset + holders.back().dofs, dofs, nodes_[n], nodeRotation_[n]});
+                holders.push_back({n, holders.back().offset + holders.back().dofs, dofs, node_position(n), node_rotation(n)});
                 grown = true;
             }
         }
@@ -125,7 +125,7 @@ void MooringSystem::add_node_loads(const Holder& holder, const UCInputs& in, Eig
 bool MooringSystem::body_stiffness(int b, const UCInputs& in, double K[36], std::string* why) const {
     for (int i = 0; i < 36; ++i) K[i] = 0.0;
     std::vector<Holder> holders = stiffness_holders(b, in);
-    std::vector<int> nodeHolder(nodes_.size(), -1);
+    std::vector<int> nodeHolder(motion_.size(), -1);
     for (size_t h = 1; h < holders.size(); ++h) nodeHolder[holders[h].node] = static_cast<int>(h);
     const int n = holders.back().offset + holders.back().dofs;
     std::vector<int> lines;  // with an end on a holder
@@ -225,6 +225,13 @@ void MooringSystem::update_stiffness() {
                      " s (reported once): " + why;
         }
     }
+}
+
+bool MooringSystem::update_stiffness(UCOutputs& out, std::string&) {
+    update_stiffness();
+    for (int b = 0; b < UC_MAX_BODIES; ++b)
+        std::memcpy(out.bodyLoad[b].stiffness, outputs_.bodyLoad[b].stiffness, sizeof out.bodyLoad[b].stiffness);
+    return true;
 }
 
 }  // namespace uc
