@@ -33,11 +33,14 @@ void put(double to[3], const Vec3& v) {
 Mat3 rotation(const FreeNodeMotion& m) { return Eigen::Map<const Mat3>(m.rotation); }
 void put_rotation(FreeNodeMotion& m, const Mat3& R) { Eigen::Map<Mat3>(m.rotation) = R; }
 
-bool on_node(const MooringDeckLine& l) {
-    return l.fairlead.kind == MooringEnd::Kind::Node || (!l.farFree && l.far.kind == MooringEnd::Kind::Node);
-}
-
 }  // namespace
+
+const MooringEnd* held_far_end(const MooringDeckLine& l) { return l.farFree ? nullptr : &l.far; }
+
+bool on_free_node(const MooringDeckLine& l) {
+    const MooringEnd* far = held_far_end(l);
+    return l.fairlead.kind == MooringEnd::Kind::Node || (far && far->kind == MooringEnd::Kind::Node);
+}
 
 Mat3 turn_matrix(const Vec3& turn) {
     const double angle = turn.norm();
@@ -308,7 +311,7 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
     if (!check_inputs(in, error)) return false;
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
-        if (on_node(deck_.lines[k])) continue;  // initialized at the nodes' equilibrium
+        if (on_free_node(deck_.lines[k])) continue;  // initialized at the nodes' equilibrium
         line_inputs(static_cast<int>(k), in, li);
         if (!lines_[k]->initialize(t0, li, error)) {
             error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
@@ -335,7 +338,7 @@ bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& er
     if (!check_inputs(in, error)) return false;
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
-        if (on_node(deck_.lines[k])) continue;  // stepped with the nodes
+        if (on_free_node(deck_.lines[k])) continue;  // stepped with the nodes
         line_inputs(static_cast<int>(k), in, li);
         if (!lines_[k]->step(t, h, li, error)) {
             error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
@@ -431,7 +434,7 @@ bool MooringSystem::profile_end_forces(int k, const Vec3& top, const Vec3& far, 
                                        std::string* why) const {
     const MooringDeckLine& l = deck_.lines[k];
     const UCParams& p = lines_[k]->model().params();
-    if (l.farFree) {  // hanging from its fairlead: its weight, wherever the fairlead stands
+    if (!held_far_end(l)) {  // hanging from its fairlead: its weight, wherever the fairlead stands
         onTop = Vec3(0.0, 0.0, -hangingWeight_[k]);
         onFar.setZero();
         return true;
@@ -517,11 +520,11 @@ bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, 
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
         const MooringDeckLine& l = deck_.lines[k];
-        if (!on_node(l)) continue;
+        if (!on_free_node(l)) continue;
         Vec3 onEnd[2];
         if (profile) {
             const Vec3 top = end_motion(l.fairlead, in).position;
-            const Vec3 far = l.farFree ? top : end_motion(l.far, in).position;
+            const Vec3 far = held_far_end(l) ? end_motion(*held_far_end(l), in).position : top;
             if (!profile_end_forces(static_cast<int>(k), top, far, onEnd[0], onEnd[1], &error)) {
                 error = "mooring line " + std::to_string(l.id) + ": " + error;
                 return false;
@@ -535,7 +538,7 @@ bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, 
             onEnd[0] = vec3(lines_[k]->outputs().towForce);
             onEnd[1] = vec3(lines_[k]->outputs().endForce);
         }
-        const MooringEnd* ends[2] = {&l.fairlead, l.farFree ? nullptr : &l.far};
+        const MooringEnd* ends[2] = {&l.fairlead, held_far_end(l)};
         for (int e = 0; e < 2; ++e) {
             if (!ends[e] || ends[e]->kind != MooringEnd::Kind::Node) continue;
             const int n = ends[e]->node, o = nodeOffset_[n];
@@ -562,7 +565,7 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
     // the force scale: the weights of the lines and nodes that meet at the nodes
     double scale = 0.0, shortest = 1e300;
     for (size_t k = 0; k < lines_.size(); ++k) {
-        if (!on_node(deck_.lines[k])) continue;
+        if (!on_free_node(deck_.lines[k])) continue;
         scale += std::abs(hangingWeight_[k]);
         shortest = std::min(shortest, lines_[k]->model().line().length);
     }
@@ -711,7 +714,7 @@ void MooringSystem::shift_coupled_ends(int k, double shift, UCInputs& li) const 
     };
     auto coupled = [](const MooringEnd& e) { return e.kind == MooringEnd::Kind::Body || e.kind == MooringEnd::Kind::Point; };
     if (coupled(l.fairlead)) shifted(li.tow, li.towVelocity, li.towAcceleration, li.towAccelerationGiven, last.towVelocity);
-    if (!l.farFree && coupled(l.far)) shifted(li.end, li.endVelocity, li.endAcceleration, li.endAccelerationGiven, last.endVelocity);
+    if (held_far_end(l) && coupled(l.far)) shifted(li.end, li.endVelocity, li.endAcceleration, li.endAccelerationGiven, last.endVelocity);
 }
 
 double MooringSystem::node_step_error(double h, const std::vector<FreeNodeMotion>& start) const {
@@ -736,7 +739,7 @@ double MooringSystem::node_step_error(double h, const std::vector<FreeNodeMotion
 void MooringSystem::save_node_lines(std::vector<std::vector<unsigned char>>& into) {
     into.resize(lines_.size());
     for (size_t k = 0; k < lines_.size(); ++k) {
-        if (!on_node(deck_.lines[k])) continue;
+        if (!on_free_node(deck_.lines[k])) continue;
         into[k].resize(lines_[k]->state_size());
         lines_[k]->save_state(into[k].data());
     }
@@ -800,7 +803,7 @@ bool MooringSystem::node_step(double t, double h, double shift, const UCInputs& 
         UCInputs li;
         for (size_t k = 0; k < lines_.size(); ++k) {
             const MooringDeckLine& l = deck_.lines[k];
-            if (!on_node(l)) continue;
+            if (!on_free_node(l)) continue;
             line_inputs(static_cast<int>(k), in, li);
             if (shift >= 0.0) shift_coupled_ends(static_cast<int>(k), shift, li);
             if (!lines_[k]->restore_state(nodeLineStart_[k].data(), nodeLineStart_[k].size(), why) ||
@@ -809,7 +812,7 @@ bool MooringSystem::node_step(double t, double h, double shift, const UCInputs& 
                 return false;
             }
             const UCOutputs& o = lines_[k]->outputs();
-            const MooringEnd* ends[2] = {&l.fairlead, l.farFree ? nullptr : &l.far};
+            const MooringEnd* ends[2] = {&l.fairlead, held_far_end(l)};
             const Vec3 force[2] = {vec3(o.towForce), vec3(o.endForce)};
             for (int e = 0; e < 2; ++e) {
                 if (!ends[e] || ends[e]->kind != MooringEnd::Kind::Node) continue;

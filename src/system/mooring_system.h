@@ -31,6 +31,13 @@ Mat3 turn_matrix(const Vec3& turn);
 // UC_ORIENTATION_ANGLES_ZYX R = Rz(yaw) Ry(pitch) Rx(roll) (OpenFAST's and MoorPy's).
 Mat3 coupled_body_rotation(const UCCoupledBody& body, int orientation);
 
+// The system's kinds of line, decided here once from the deck (mooring_line_params gives each line the bottomEnd
+// that follows from them): a line's far end is held where held_far_end says (at its anchor, bottomEnd 1; on a
+// coupled body or point or on a free node, driven, bottomEnd 3), or it hangs from its fairlead (nullptr: bottomEnd
+// 0, or 2 with a towed body). A line with an end on a free node is stepped with the nodes (on_free_node).
+const MooringEnd* held_far_end(const MooringDeckLine& l);
+bool on_free_node(const MooringDeckLine& l);
+
 // line[k].* of a line, or of one section of it, whose ends' tensions are fairlead and anchor, from the
 // outputs of the line it is (its minimum tension and grounded length are the whole line's).
 void set_mooring_line_outputs(UCMooringLine& out, double fairlead, double anchor, const UCOutputs& line);
