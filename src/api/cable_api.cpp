@@ -5,20 +5,21 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <memory>
 #include <new>
 #include <string>
+#include <utility>
 
 #include "deck/line_file.h"
-#include "system/mooring_system.h"
+#include "line/simulation_interface.h"
 #include "model/params.h"
-#include "line/simulation.h"
+#include "system/mooring_system.h"
 
-// One line, or a mooring system of several (docs/systems_mooring.md).
+// One line, or a mooring system of several (docs/systems_mooring.md): the calls below take either
+// through the one contract, uc::Simulation.
 struct UCCable {
-    explicit UCCable(const UCParams& p) : line(std::make_unique<uc::CableSimulation>(p)) {}
-    UCCable(const UCParams& p, const uc::MooringDeck& deck) : system(std::make_unique<uc::MooringSystem>(p, deck)) {}
-    std::unique_ptr<uc::CableSimulation> line;
-    std::unique_ptr<uc::MooringSystem> system;
+    explicit UCCable(std::unique_ptr<uc::Simulation> s) : simulation(std::move(s)) {}
+    std::unique_ptr<uc::Simulation> simulation;
 };
 
 namespace {
@@ -55,7 +56,7 @@ extern "C" UCCable* uc_create(const UCParams* p, char* msg, size_t msgSize) {
         }
         error = uc::check_params(*p);
         if (!error.empty()) return false;
-        cable = new UCCable(*p);
+        cable = new UCCable(std::make_unique<uc::OneLineSystem>(*p));
         return true;
     });
     return cable;
@@ -69,7 +70,7 @@ extern "C" int uc_initialize(UCCable* c, double t0, const UCInputs* in, char* ms
             error = "uc_initialize: NULL pointer";
             return false;
         }
-        return c->system ? c->system->initialize(t0, *in, error) : c->line->initialize(t0, *in, error);
+        return c->simulation->initialize(t0, *in, error);
     });
 }
 
@@ -79,13 +80,13 @@ extern "C" int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, ch
             error = "uc_do_step: NULL pointer";
             return false;
         }
-        return c->system ? c->system->step(t, h, *in, error) : c->line->step(t, h, *in, error);
+        return c->simulation->step(t, h, *in, error);
     });
 }
 
 extern "C" int uc_take_event(UCCable* c, char* text, size_t size) {
     if (!c) return 0;
-    const std::string event = c->system ? c->system->take_event() : c->line->take_event();
+    const std::string event = c->simulation->take_event();
     if (event.empty()) return 0;
     if (text && size) std::snprintf(text, size, "%s", event.c_str());
     return 1;
@@ -97,12 +98,7 @@ extern "C" int uc_interface_derivative(UCCable* c, const double seed[18], double
             error = "uc_interface_derivative: NULL pointer";
             return false;
         }
-        if (c->system) {
-            error = "the interface derivatives of towForce and endForce are not available for a mooring system "
-                    "(its bodies' loads have theirs: body[k].force/moment with respect to body[k].*)";
-            return false;
-        }
-        return c->line->interface_derivative(seed, out, error);
+        return c->simulation->interface_derivative(seed, out, error);
     });
 }
 
@@ -113,12 +109,11 @@ extern "C" int uc_body_derivatives(UCCable* c, int body, double d[6 * UC_BODY_DE
             error = "uc_body_derivatives: NULL pointer";
             return false;
         }
-        if (!c->system) {
-            error = "the body[k].* derivatives belong to a mooring system (lineFile with several lines or bodies)";
-            return false;
-        }
+        // d as the call leaves it (a refusal before anything is computed leaves it as it was)
         double m[6][UC_BODY_DERIVATIVE_INPUTS];
-        const bool ok = c->system->body_derivatives(body, m, error);
+        for (int i = 0; i < 6; ++i)
+            for (int j = 0; j < UC_BODY_DERIVATIVE_INPUTS; ++j) m[i][j] = d[UC_BODY_DERIVATIVE_INPUTS * i + j];
+        const bool ok = c->simulation->body_derivatives(body, m, error);
         for (int i = 0; i < 6; ++i)
             for (int j = 0; j < UC_BODY_DERIVATIVE_INPUTS; ++j) d[UC_BODY_DERIVATIVE_INPUTS * i + j] = m[i][j];
         return ok;
@@ -127,49 +122,31 @@ extern "C" int uc_body_derivatives(UCCable* c, int body, double d[6 * UC_BODY_DE
 
 extern "C" void uc_tow_position(const UCCable* c, double p[3]) {
     if (!c || !p) return;
-    const uc::Vec3 x = c->system ? c->system->tow_position() : c->line->tow_position();
+    const uc::Vec3& x = c->simulation->tow_position();
     for (int k = 0; k < 3; ++k) p[k] = x[k];
 }
 
 extern "C" double uc_time(const UCCable* c) {
-    return !c ? 0.0 : c->system ? c->system->time() : c->line->time();
+    return c ? c->simulation->time() : 0.0;
 }
 
 extern "C" void uc_get_outputs(const UCCable* c, UCOutputs* out) {
     if (!c || !out) return;
-    if (c->system) {
-        *out = c->system->outputs();
-        return;
-    }
-    *out = c->line->outputs();
-    // the one line is line 1 of a system
-    out->mooringLine[0].fairleadTension = out->towTension;
-    out->mooringLine[0].anchorTension = out->endTension;
-    out->mooringLine[0].minTension = out->minTension;
-    out->mooringLine[0].groundedLength = out->groundedLength;
+    *out = c->simulation->outputs();
 }
 
 extern "C" int uc_update_stiffness(UCCable* c, UCOutputs* out, char* msg, size_t msgSize) {
-    if (!c || !out || !c->system) return 0;
-    return guarded(msg, msgSize, [&](std::string&) {
-        c->system->update_stiffness();
-        const UCOutputs& o = c->system->outputs();
-        for (int b = 0; b < UC_MAX_BODIES; ++b)
-            std::memcpy(out->bodyLoad[b].stiffness, o.bodyLoad[b].stiffness, sizeof o.bodyLoad[b].stiffness);
-        return true;
-    });
+    if (!c || !out) return 0;
+    return guarded(msg, msgSize, [&](std::string& error) { return c->simulation->update_stiffness(*out, error); });
 }
 
 extern "C" size_t uc_state_size(const UCCable* c) {
-    return !c ? 0 : c->system ? c->system->state_size() : c->line->state_size();
+    return c ? c->simulation->state_size() : 0;
 }
 
 extern "C" int uc_state_save(UCCable* c, void* buffer, size_t size) {
     if (!c || !buffer || size < uc_state_size(c)) return 1;
-    if (c->system)
-        c->system->save_state(buffer);
-    else
-        c->line->save_state(buffer);
+    c->simulation->save_state(buffer);
     return 0;
 }
 
@@ -180,8 +157,7 @@ extern "C" int uc_state_restore(UCCable* c, const void* buffer, size_t size, cha
             error = "uc_state_restore: NULL pointer";
             return false;
         }
-        return c->system ? c->system->restore_state(buffer, size, error, &changed)
-                         : c->line->restore_state(buffer, size, error, &changed);
+        return c->simulation->restore_state(buffer, size, error, &changed);
     });
     return rc != 0 && changed ? 2 : rc;
 }
@@ -270,8 +246,9 @@ extern "C" UCCable* uc_create_system_with(const UCParams* p, const char* text, s
         if (!uc::read_mooring_deck(std::string_view(text ? text : "", length), p->lineFileElements, deck, error,
                                    companion_texts(companions, n)))
             return false;
-        auto made = std::make_unique<UCCable>(*p, deck);
-        if (!made->system->build(error)) return false;
+        auto system = std::make_unique<uc::MooringSystem>(*p, deck);
+        if (!system->build(error)) return false;
+        auto made = std::make_unique<UCCable>(std::move(system));
         for (std::string& note : uc::mooring_environment_notes(deck, *p)) deck.notes.push_back(std::move(note));
         std::string joined;
         for (const std::string& note : deck.notes) joined += (joined.empty() ? "" : "\n") + note;

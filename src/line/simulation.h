@@ -17,6 +17,7 @@
 #include "line/outputs.h"
 #include "line/rainflow.h"
 #include "line/torsion.h"
+#include "line/simulation_interface.h"
 #include "line/winch.h"
 
 namespace uc {
@@ -51,7 +52,7 @@ struct DrivenEnd {
     void load(const DrivenEndState& s);
 };
 
-class CableSimulation : public SecondOrderSystem {
+class CableSimulation : public SecondOrderSystem, public Simulation {
 public:
     explicit CableSimulation(const UCParams& params);
     ~CableSimulation() override;
@@ -59,20 +60,20 @@ public:
     CableSimulation& operator=(const CableSimulation&) = delete;
 
     const CableModel& model() const { return model_; }
-    double time() const { return time_; }
-    const UCOutputs& outputs() const { return outputs_; }
-    const Vec3& tow_position() const { return tow_.position; }
+    double time() const override { return time_; }
+    const UCOutputs& outputs() const override { return outputs_; }
+    const Vec3& tow_position() const override { return tow_.position; }
 
-    bool initialize(double t0, const UCInputs& in, std::string& error);
-    bool step(double t, double h, const UCInputs& in, std::string& error);
+    bool initialize(double t0, const UCInputs& in, std::string& error) override;
+    bool step(double t, double h, const UCInputs& in, std::string& error) override;
     // The event of the last step to log (a winch limit reached), or empty; cleared by the call.
-    std::string take_event();
+    std::string take_event() override;
 
-    size_t state_size() const;
-    void save_state(void* buffer);
+    size_t state_size() const override;
+    void save_state(void* buffer) override;
     // false (error) for a state of another size or version before anything changes; *changed (if given)
     // tells whether the failure came after the line had started taking the state (its mesh, its history).
-    bool restore_state(const void* buffer, size_t size, std::string& error, bool* changed = nullptr);
+    bool restore_state(const void* buffer, size_t size, std::string& error, bool* changed = nullptr) override;
 
     // The interface derivatives over the next communication step (docs/cosimulation.md,
     // "Interface derivatives"): out[i] = sum_j d output_i (t + h) / d input_j (t) seed[j], outputs
@@ -86,7 +87,7 @@ public:
     // until the state changes, so a master asking column by column pays once per column.
     static constexpr int kDerivativeSubsteps = 64;
     static constexpr int kDerivativeInputs = 18;
-    bool interface_derivative(const double seed[kDerivativeInputs], double out[6], std::string& error);
+    bool interface_derivative(const double seed[kDerivativeInputs], double out[6], std::string& error) override;
 
     // The axial force at an end of element e (far: at its second node) in the state of the last outputs:
     // the tension a line of several sections has at its joints (a mooring system's line[k].* outputs).

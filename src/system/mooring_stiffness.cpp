@@ -23,11 +23,11 @@ std::vector<MooringSystem::Holder> MooringSystem::stiffness_holders(int b, const
                        coupled_body_rotation(body, base_.bodyOrientation)});
     // the free nodes a line on body b reaches, directly or through other nodes (not through other coupled
     // bodies: they stay where their inputs put them)
-    std::vector<int> nodeHolder(nodes_.size(), -1);
+    std::vector<int> nodeHolder(motion_.size(), -1);
     for (bool grown = true; grown;) {
         grown = false;
         for (const MooringDeckLine& l : deck_.lines) {
-            const MooringEnd* ends[2] = {&l.fairlead, l.farFree ? nullptr : &l.far};
+            const MooringEnd* ends[2] = {&l.fairlead, held_far_end(l)};
             bool held = false;
             for (const MooringEnd* e : ends)
                 held = held || (e && stiffness_holder(*e, b, nodeHolder) >= 0);
@@ -36,7 +36,7 @@ std::vector<MooringSystem::Holder> MooringSystem::stiffness_holders(int b, const
                 if (!e || e->kind != MooringEnd::Kind::Node || nodeHolder[e->node] >= 0) continue;
                 const int n = e->node, dofs = deck_.nodes[n].body ? 6 : 3;
                 nodeHolder[n] = static_cast<int>(holders.size());
-                holders.push_back({n, holders.back().offset + holders.back().dofs, dofs, nodes_[n], nodeRotation_[n]});
+                holders.push_back({n, holders.back().offset + holders.back().dofs, dofs, node_position(n), node_rotation(n)});
                 grown = true;
             }
         }
@@ -62,12 +62,12 @@ bool MooringSystem::add_line_jacobian(int k, int b, const std::vector<Holder>& h
                                       const std::vector<int>& nodeHolder, const UCInputs& in, Eigen::VectorXd& G,
                                       Eigen::MatrixXd& J, std::string* why) const {
     const MooringDeckLine& l = deck_.lines[k];
-    const MooringEnd* ends[2] = {&l.fairlead, l.farFree ? nullptr : &l.far};
+    const MooringEnd* ends[2] = {&l.fairlead, held_far_end(l)};
     int h[2];
     Vec3 at[2], on[2];
     for (int e = 0; e < 2; ++e) h[e] = ends[e] ? stiffness_holder(*ends[e], b, nodeHolder) : -1;
     at[0] = stiffness_place(l.fairlead, b, holders, nodeHolder, in);
-    at[1] = l.farFree ? at[0] : stiffness_place(l.far, b, holders, nodeHolder, in);
+    at[1] = held_far_end(l) ? stiffness_place(l.far, b, holders, nodeHolder, in) : at[0];
     auto forces = [&](const Vec3 (&x)[2], Vec3 (&f)[2]) -> bool {
         if (profile_end_forces(k, x[0], x[1], f[0], f[1], why)) return true;
         if (why) *why = "mooring line " + std::to_string(l.id) + ": " + *why;
@@ -125,13 +125,13 @@ void MooringSystem::add_node_loads(const Holder& holder, const UCInputs& in, Eig
 bool MooringSystem::body_stiffness(int b, const UCInputs& in, double K[36], std::string* why) const {
     for (int i = 0; i < 36; ++i) K[i] = 0.0;
     std::vector<Holder> holders = stiffness_holders(b, in);
-    std::vector<int> nodeHolder(nodes_.size(), -1);
+    std::vector<int> nodeHolder(motion_.size(), -1);
     for (size_t h = 1; h < holders.size(); ++h) nodeHolder[holders[h].node] = static_cast<int>(h);
     const int n = holders.back().offset + holders.back().dofs;
     std::vector<int> lines;  // with an end on a holder
     for (size_t k = 0; k < lines_.size(); ++k) {
         const MooringDeckLine& l = deck_.lines[k];
-        if (stiffness_holder(l.fairlead, b, nodeHolder) >= 0 || (!l.farFree && stiffness_holder(l.far, b, nodeHolder) >= 0))
+        if (stiffness_holder(l.fairlead, b, nodeHolder) >= 0 || (held_far_end(l) && stiffness_holder(l.far, b, nodeHolder) >= 0))
             lines.push_back(static_cast<int>(k));
     }
     // G (the nodes' unbalanced forces G_f among them) and J = dG/dq where the holders stand: each line's
@@ -225,6 +225,13 @@ void MooringSystem::update_stiffness() {
                      " s (reported once): " + why;
         }
     }
+}
+
+bool MooringSystem::update_stiffness(UCOutputs& out, std::string&) {
+    update_stiffness();
+    for (int b = 0; b < UC_MAX_BODIES; ++b)
+        std::memcpy(out.bodyLoad[b].stiffness, outputs_.bodyLoad[b].stiffness, sizeof out.bodyLoad[b].stiffness);
+    return true;
 }
 
 }  // namespace uc

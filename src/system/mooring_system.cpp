@@ -27,16 +27,20 @@ struct SystemHeader {
 };
 
 Vec3 vec3(const double v[3]) { return Vec3(v[0], v[1], v[2]); }
-
-
-constexpr int kNodeStateDoubles = 34;  // per free node: position, velocity, acceleration, its lines' end inputs,
-                                       // orientation (3 x 3), angular velocity and acceleration, the step
-
-bool on_node(const MooringDeckLine& l) {
-    return l.fairlead.kind == MooringEnd::Kind::Node || (!l.farFree && l.far.kind == MooringEnd::Kind::Node);
+void put(double to[3], const Vec3& v) {
+    for (int c = 0; c < 3; ++c) to[c] = v[c];
 }
+Mat3 rotation(const FreeNodeMotion& m) { return Eigen::Map<const Mat3>(m.rotation); }
+void put_rotation(FreeNodeMotion& m, const Mat3& R) { Eigen::Map<Mat3>(m.rotation) = R; }
 
 }  // namespace
+
+const MooringEnd* held_far_end(const MooringDeckLine& l) { return l.farFree ? nullptr : &l.far; }
+
+bool on_free_node(const MooringDeckLine& l) {
+    const MooringEnd* far = held_far_end(l);
+    return l.fairlead.kind == MooringEnd::Kind::Node || (far && far->kind == MooringEnd::Kind::Node);
+}
 
 Mat3 turn_matrix(const Vec3& turn) {
     const double angle = turn.norm();
@@ -62,6 +66,22 @@ Mat3 coupled_body_rotation(const UCCoupledBody& body, int orientation) {
     }
     return body_rotation(a[0], a[1], a[2]);
 }
+
+void set_mooring_line_outputs(UCMooringLine& out, double fairlead, double anchor, const UCOutputs& line) {
+    out.fairleadTension = fairlead;
+    out.anchorTension = anchor;
+    out.minTension = line.minTension;
+    out.groundedLength = line.groundedLength;
+}
+
+const UCOutputs& OneLineSystem::outputs() const {
+    asSystem_ = CableSimulation::outputs();
+    set_mooring_line_outputs(asSystem_.mooringLine[0], asSystem_.towTension, asSystem_.endTension, asSystem_);
+    return asSystem_;
+}
+
+static_assert(MooringSystem::kDerivativeInputs == CableSimulation::kDerivativeInputs,
+              "a system passes its lines the boundary's derivative seeds");
 
 MooringSystem::MooringSystem(const UCParams& base, const MooringDeck& deck) : base_(base), deck_(deck) {}
 
@@ -104,16 +124,14 @@ bool MooringSystem::build(std::string& error) {
     describe_nodes();
     references_.assign(static_cast<size_t>(deck_.bodies), DrivenEnd());
     for (const MooringNode& n : deck_.nodes) {
-        nodes_.push_back(vec3(n.position));
-        nodeInput_.push_back({vec3(n.position), Vec3::Zero(), Vec3::Zero()});
-        nodeRotation_.push_back(n.body ? body_rotation(n.angles[0], n.angles[1], n.angles[2]) : Mat3::Identity());
+        FreeNodeMotion m{};  // at rest
+        put(m.position, vec3(n.position));
+        put(m.inputPosition, vec3(n.position));
+        put_rotation(m, n.body ? body_rotation(n.angles[0], n.angles[1], n.angles[2]) : Mat3::Identity());
+        motion_.push_back(m);
         nodeOffset_.push_back(nodeUnknowns_);
         nodeUnknowns_ += n.body ? 6 : 3;
     }
-    nodeVelocity_.assign(nodes_.size(), Vec3::Zero());
-    nodeAcceleration_.assign(nodes_.size(), Vec3::Zero());
-    nodeOmega_.assign(nodes_.size(), Vec3::Zero());
-    nodeAlpha_.assign(nodes_.size(), Vec3::Zero());
     nodeLineStart_.resize(lines_.size());
     derivativeStamp_.assign(static_cast<size_t>(deck_.bodies), -1);
     derivativeCache_.assign(static_cast<size_t>(deck_.bodies), {});
@@ -192,17 +210,16 @@ MooringSystem::Motion MooringSystem::end_motion(const MooringEnd& end, const UCI
         case MooringEnd::Kind::Fixed:
             return {local, Vec3::Zero(), Vec3::Zero(), false};
         case MooringEnd::Kind::Node: {
-            const NodeInput& n = nodeInput_[end.node];
+            const FreeNodeMotion& m = motion_[end.node];
             if (deck_.nodes[end.node].body) {  // the point on the body at t + h, as inputs extrapolated there
-                const int k = end.node;
-                const Vec3 arm = nodeRotation_[k] * local, w = nodeOmega_[k];
-                const Vec3 P = nodes_[k] + arm, V = nodeVelocity_[k] + w.cross(arm),
-                           A = nodeAcceleration_[k] + nodeAlpha_[k].cross(arm) + w.cross(w.cross(arm));
-                const double h = nodeStep_;
+                const Vec3 arm = rotation(m) * local, w = vec3(m.omega);
+                const Vec3 P = vec3(m.position) + arm, V = vec3(m.velocity) + w.cross(arm),
+                           A = vec3(m.acceleration) + vec3(m.alpha).cross(arm) + w.cross(w.cross(arm));
+                const double h = m.step;
                 const Vec3 v = V - h * A;
                 return {P - h * v - 0.5 * h * h * A, v, A, true};
             }
-            return {n.position, n.velocity, n.acceleration, true};
+            return {vec3(m.inputPosition), vec3(m.inputVelocity), vec3(m.inputAcceleration), true};
         }
         case MooringEnd::Kind::Point: {
             const int k = end.point - 1;
@@ -294,7 +311,7 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
     if (!check_inputs(in, error)) return false;
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
-        if (on_node(deck_.lines[k])) continue;  // initialized at the nodes' equilibrium
+        if (on_free_node(deck_.lines[k])) continue;  // initialized at the nodes' equilibrium
         line_inputs(static_cast<int>(k), in, li);
         if (!lines_[k]->initialize(t0, li, error)) {
             error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
@@ -302,7 +319,7 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
         }
     }
     t0_ = t0;
-    if (!nodes_.empty() && !solve_nodes(t0, in, error)) return false;
+    if (!motion_.empty() && !solve_nodes(t0, in, error)) return false;
     for (int b = 0; b < deck_.bodies; ++b) {
         const UCCoupledBody& body = in.coupledBody[b];
         const bool given = in.bodyAccelerationGiven[b] != 0;
@@ -321,14 +338,14 @@ bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& er
     if (!check_inputs(in, error)) return false;
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
-        if (on_node(deck_.lines[k])) continue;  // stepped with the nodes
+        if (on_free_node(deck_.lines[k])) continue;  // stepped with the nodes
         line_inputs(static_cast<int>(k), in, li);
         if (!lines_[k]->step(t, h, li, error)) {
             error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
             return false;
         }
     }
-    if (!nodes_.empty() && !step_nodes(t, h, in, error)) return false;
+    if (!motion_.empty() && !step_nodes(t, h, in, error)) return false;
     for (int b = 0; b < deck_.bodies; ++b) {
         const UCCoupledBody& body = in.coupledBody[b];
         const bool given = in.bodyAccelerationGiven[b] != 0;
@@ -371,13 +388,10 @@ void MooringSystem::update_outputs() {
                 first = std::min(first, run.first);
                 last = std::max(last, run.first + run.count - 1);
             }
-            UCMooringLine& out = outputs_.mooringLine[l.deckLines[j]];
             const double start = j == 0 ? o.towTension : lines_[k]->element_end_tension(first, false);
             const double end = j + 1 == sections ? o.endTension : lines_[k]->element_end_tension(last, true);
-            out.fairleadTension = l.flipped[j] ? end : start;
-            out.anchorTension = l.flipped[j] ? start : end;
-            out.minTension = o.minTension;  // of the whole chain
-            out.groundedLength = o.groundedLength;
+            set_mooring_line_outputs(outputs_.mooringLine[l.deckLines[j]], l.flipped[j] ? end : start,
+                                     l.flipped[j] ? start : end, o);
         }
         // the fairlead where the line's tow point stands, the far end where its end does
         const std::pair<const MooringEnd*, std::pair<Vec3, Vec3>> ends[2] = {
@@ -397,21 +411,21 @@ void MooringSystem::update_outputs() {
             }
         }
     }
-    for (size_t n = 0; n < nodes_.size(); ++n) {
+    for (size_t n = 0; n < motion_.size(); ++n) {
         const int id = deck_.nodes[n].point.id;
         if (deck_.nodes[n].body) {
             if (id > UC_MAX_BODIES) continue;  // beyond the outputs body[k].pose.*
-            const Mat3& R = nodeRotation_[n];  // R = Rx Ry Rz: R(0,2) = sin(pitch)
+            const Mat3 R = rotation(motion_[n]);  // R = Rx Ry Rz: R(0,2) = sin(pitch)
             const double angles[3] = {std::atan2(-R(1, 2), R(2, 2)), std::asin(std::clamp(R(0, 2), -1.0, 1.0)),
                                       std::atan2(-R(0, 1), R(0, 0))};
             for (int c = 0; c < 3; ++c) {
-                outputs_.bodyLoad[id - 1].posePosition[c] = nodes_[n][c];
+                outputs_.bodyLoad[id - 1].posePosition[c] = motion_[n].position[c];
                 outputs_.bodyLoad[id - 1].poseAngles[c] = angles[c];
             }
             continue;
         }
         if (id > UC_MAX_POINTS) continue;  // beyond the outputs point[k].position.*
-        for (int c = 0; c < 3; ++c) outputs_.pointLoad[id - 1].position[c] = nodes_[n][c];
+        for (int c = 0; c < 3; ++c) outputs_.pointLoad[id - 1].position[c] = motion_[n].position[c];
     }
     stiffnessCurrent_ = false;  // body[k].stiffness: computed when read (update_stiffness)
 }
@@ -420,7 +434,7 @@ bool MooringSystem::profile_end_forces(int k, const Vec3& top, const Vec3& far, 
                                        std::string* why) const {
     const MooringDeckLine& l = deck_.lines[k];
     const UCParams& p = lines_[k]->model().params();
-    if (l.farFree) {  // hanging from its fairlead: its weight, wherever the fairlead stands
+    if (!held_far_end(l)) {  // hanging from its fairlead: its weight, wherever the fairlead stands
         onTop = Vec3(0.0, 0.0, -hangingWeight_[k]);
         onFar.setZero();
         return true;
@@ -481,31 +495,36 @@ Mat3 MooringSystem::body_added_mass(int n, const Mat3& R) const {
 bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, bool profile, Eigen::VectorXd& r,
                                   std::string& error) {
     r.setZero(x.size());
-    for (size_t n = 0; n < nodes_.size(); ++n) {
+    for (size_t n = 0; n < motion_.size(); ++n) {
         const MooringNode& node = deck_.nodes[n];
         const int o = nodeOffset_[n];
-        nodes_[n] = x.segment<3>(o);
-        nodeInput_[n] = {nodes_[n], Vec3::Zero(), Vec3::Zero()};
+        FreeNodeMotion& m = motion_[n];
+        const Vec3 at = x.segment<3>(o);
+        put(m.position, at);
+        put(m.inputPosition, at);
+        put(m.inputVelocity, Vec3::Zero());
+        put(m.inputAcceleration, Vec3::Zero());
         if (!node.body) {
-            r.segment<3>(o) = node_load(static_cast<int>(n), nodes_[n], in);
+            r.segment<3>(o) = node_load(static_cast<int>(n), at, in);
             continue;
         }
         // a body: x holds a rotation about the earth axes from the deck's orientation; its weight and
         // buoyancy at its centre of gravity, its drag in the current at its reference point (body_load)
-        nodeRotation_[n] = turn_matrix(x.segment<3>(o + 3)) * body_rotation(node.angles[0], node.angles[1], node.angles[2]);
+        const Mat3 R = turn_matrix(x.segment<3>(o + 3)) * body_rotation(node.angles[0], node.angles[1], node.angles[2]);
+        put_rotation(m, R);
         Vec3 force, moment;
-        body_load(static_cast<int>(n), nodes_[n], nodeRotation_[n], Vec3::Zero(), Vec3::Zero(), in, force, moment);
+        body_load(static_cast<int>(n), at, R, Vec3::Zero(), Vec3::Zero(), in, force, moment);
         r.segment<3>(o) = force;
         r.segment<3>(o + 3) = moment;
     }
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
         const MooringDeckLine& l = deck_.lines[k];
-        if (!on_node(l)) continue;
+        if (!on_free_node(l)) continue;
         Vec3 onEnd[2];
         if (profile) {
             const Vec3 top = end_motion(l.fairlead, in).position;
-            const Vec3 far = l.farFree ? top : end_motion(l.far, in).position;
+            const Vec3 far = held_far_end(l) ? end_motion(*held_far_end(l), in).position : top;
             if (!profile_end_forces(static_cast<int>(k), top, far, onEnd[0], onEnd[1], &error)) {
                 error = "mooring line " + std::to_string(l.id) + ": " + error;
                 return false;
@@ -519,13 +538,13 @@ bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, 
             onEnd[0] = vec3(lines_[k]->outputs().towForce);
             onEnd[1] = vec3(lines_[k]->outputs().endForce);
         }
-        const MooringEnd* ends[2] = {&l.fairlead, l.farFree ? nullptr : &l.far};
+        const MooringEnd* ends[2] = {&l.fairlead, held_far_end(l)};
         for (int e = 0; e < 2; ++e) {
             if (!ends[e] || ends[e]->kind != MooringEnd::Kind::Node) continue;
             const int n = ends[e]->node, o = nodeOffset_[n];
             r.segment<3>(o) += onEnd[e];
             if (deck_.nodes[n].body)
-                r.segment<3>(o + 3) += (end_motion(*ends[e], in).position - nodes_[n]).cross(onEnd[e]);
+                r.segment<3>(o + 3) += (end_motion(*ends[e], in).position - node_position(n)).cross(onEnd[e]);
         }
     }
     return true;
@@ -533,22 +552,24 @@ bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, 
 
 bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& error) {
     t0_ = t0;
-    nodeStep_ = 0.0;  // at rest
-    nodeVelocity_.assign(nodes_.size(), Vec3::Zero());
-    nodeAcceleration_.assign(nodes_.size(), Vec3::Zero());
-    nodeOmega_.assign(nodes_.size(), Vec3::Zero());
-    nodeAlpha_.assign(nodes_.size(), Vec3::Zero());
+    for (FreeNodeMotion& m : motion_) {  // at rest
+        m.step = 0.0;
+        put(m.velocity, Vec3::Zero());
+        put(m.acceleration, Vec3::Zero());
+        put(m.omega, Vec3::Zero());
+        put(m.alpha, Vec3::Zero());
+    }
     const int m = nodeUnknowns_;
     Eigen::VectorXd x = Eigen::VectorXd::Zero(m), r(m), rt(m), xt(m);
-    for (size_t n = 0; n < nodes_.size(); ++n) x.segment<3>(nodeOffset_[n]) = vec3(deck_.nodes[n].position);
+    for (size_t n = 0; n < motion_.size(); ++n) x.segment<3>(nodeOffset_[n]) = vec3(deck_.nodes[n].position);
     // the force scale: the weights of the lines and nodes that meet at the nodes
     double scale = 0.0, shortest = 1e300;
     for (size_t k = 0; k < lines_.size(); ++k) {
-        if (!on_node(deck_.lines[k])) continue;
+        if (!on_free_node(deck_.lines[k])) continue;
         scale += std::abs(hangingWeight_[k]);
         shortest = std::min(shortest, lines_[k]->model().line().length);
     }
-    for (size_t n = 0; n < nodes_.size(); ++n)
+    for (size_t n = 0; n < motion_.size(); ++n)
         scale += node_load(static_cast<int>(n), x.segment<3>(nodeOffset_[n]), in).norm() +
                  deck_.nodes[n].point.mass * lines_[0]->model().fluid().gravity;
     const double maxStep = 0.25 * shortest;  // a Newton step moves a node by at most this [m]
@@ -583,7 +604,7 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
             }
             // a node moves by at most maxStep, a body turns by at most kMaxTurn, per step
             double shrink = 1.0;
-            for (size_t n = 0; n < nodes_.size(); ++n) {
+            for (size_t n = 0; n < motion_.size(); ++n) {
                 const int o = nodeOffset_[n];
                 shrink = std::min(shrink, maxStep / std::max(dx.segment<3>(o).lpNorm<Eigen::Infinity>(), 1e-300));
                 if (deck_.nodes[n].body)
@@ -633,7 +654,7 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
     // from their inputs to each substep's start).
     std::vector<std::vector<unsigned char>> start;
     save_node_lines(start);
-    const NodeState state0 = node_state();
+    const std::vector<FreeNodeMotion> state0 = motion_;
     std::string why;
     int worst = 0;
     double estimate = 0.0;  // of the step in one piece where it is split for its error
@@ -642,7 +663,7 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
             for (size_t k = 0; k < lines_.size(); ++k) {
                 if (!start[k].empty() && !lines_[k]->restore_state(start[k].data(), start[k].size(), error)) return false;
             }
-            set_node_state(state0);
+            motion_ = state0;
         }
         const double hs = h / pieces;
         bool ok = true;
@@ -693,16 +714,16 @@ void MooringSystem::shift_coupled_ends(int k, double shift, UCInputs& li) const 
     };
     auto coupled = [](const MooringEnd& e) { return e.kind == MooringEnd::Kind::Body || e.kind == MooringEnd::Kind::Point; };
     if (coupled(l.fairlead)) shifted(li.tow, li.towVelocity, li.towAcceleration, li.towAccelerationGiven, last.towVelocity);
-    if (!l.farFree && coupled(l.far)) shifted(li.end, li.endVelocity, li.endAcceleration, li.endAccelerationGiven, last.endVelocity);
+    if (held_far_end(l) && coupled(l.far)) shifted(li.end, li.endVelocity, li.endAcceleration, li.endAccelerationGiven, last.endVelocity);
 }
 
-double MooringSystem::node_step_error(double h, const NodeState& start) const {
+double MooringSystem::node_step_error(double h, const std::vector<FreeNodeMotion>& start) const {
     // Newmark's average acceleration errs in position over a step by about h^2 / 12 times the change of
     // the acceleration over it; a body's turn by as much of its angular acceleration's, times the reach
     // of its points
     double e = 0.0;
-    for (size_t n = 0; n < nodes_.size(); ++n) {
-        e = std::max(e, h * h / 12.0 * (nodeAcceleration_[n] - start.a[n]).norm());
+    for (size_t n = 0; n < motion_.size(); ++n) {
+        e = std::max(e, h * h / 12.0 * (vec3(motion_[n].acceleration) - vec3(start[n].acceleration)).norm());
         if (!deck_.nodes[n].body) continue;
         double reach = 0.0;
         for (const MooringDeckLine& l : deck_.lines) {
@@ -710,30 +731,15 @@ double MooringSystem::node_step_error(double h, const NodeState& start) const {
                 if (end->kind == MooringEnd::Kind::Node && end->node == static_cast<int>(n)) reach = std::max(reach, vec3(end->position).norm());
             }
         }
-        e = std::max(e, h * h / 12.0 * (nodeAlpha_[n] - start.alpha[n]).norm() * reach);
+        e = std::max(e, h * h / 12.0 * (vec3(motion_[n].alpha) - vec3(start[n].alpha)).norm() * reach);
     }
     return e;
-}
-
-MooringSystem::NodeState MooringSystem::node_state() const {
-    return {nodes_, nodeVelocity_, nodeAcceleration_, nodeOmega_, nodeAlpha_, nodeRotation_, nodeInput_, nodeStep_};
-}
-
-void MooringSystem::set_node_state(const NodeState& s) {
-    nodes_ = s.x;
-    nodeVelocity_ = s.v;
-    nodeAcceleration_ = s.a;
-    nodeOmega_ = s.omega;
-    nodeAlpha_ = s.alpha;
-    nodeRotation_ = s.R;
-    nodeInput_ = s.input;
-    nodeStep_ = s.step;
 }
 
 void MooringSystem::save_node_lines(std::vector<std::vector<unsigned char>>& into) {
     into.resize(lines_.size());
     for (size_t k = 0; k < lines_.size(); ++k) {
-        if (!on_node(deck_.lines[k])) continue;
+        if (!on_free_node(deck_.lines[k])) continue;
         into[k].resize(lines_[k]->state_size());
         lines_[k]->save_state(into[k].data());
     }
@@ -742,10 +748,8 @@ void MooringSystem::save_node_lines(std::vector<std::vector<unsigned char>>& int
 bool MooringSystem::node_step(double t, double h, double shift, const UCInputs& in, int& worst, std::string& error) {
     const int m = nodeUnknowns_;
     save_node_lines(nodeLineStart_);
-    const NodeState start = node_state();
-    const std::vector<Vec3>&x0 = start.x, &v0 = start.v, &a0 = start.a, &w0 = start.omega, &alpha0 = start.alpha;
-    const std::vector<Mat3>& R0 = start.R;
-    nodeStep_ = h;
+    const std::vector<FreeNodeMotion> start = motion_;
+    for (FreeNodeMotion& m : motion_) m.step = h;
     // The nodes move as Newmark's average acceleration has them (trapezoidal: second order, no numerical
     // damping, unconditionally stable): with the acceleration A at t + h,
     //   v(t + h) = v0 + h (a0 + A) / 2,   x(t + h) = x0 + h v0 + h^2 (a0 + A) / 4,
@@ -758,41 +762,48 @@ bool MooringSystem::node_step(double t, double h, double shift, const UCInputs& 
     //   M a_cg + m_a a = F,   c x M a_cg + I alpha + w x (I w) = the moment of the loads,
     //   a_cg = a + alpha x c + w x (w x c).
     auto residual = [&](const Eigen::VectorXd& A, Eigen::VectorXd& r, std::string& why) -> bool {
-        std::vector<Vec3> v1(nodes_.size());
-        for (size_t n = 0; n < nodes_.size(); ++n) {
+        std::vector<Vec3> v1(motion_.size());
+        for (size_t n = 0; n < motion_.size(); ++n) {
             const MooringNode& node = deck_.nodes[n];
             const int o = nodeOffset_[n];
-            const Vec3 a = A.segment<3>(o), mean = 0.5 * (a0[n] + a);
-            v1[n] = v0[n] + h * mean;
-            nodes_[n] = x0[n] + h * v0[n] + 0.5 * h * h * mean;
+            const FreeNodeMotion& s = start[n];
+            FreeNodeMotion& m = motion_[n];
+            const Vec3 x0 = vec3(s.position), v0 = vec3(s.velocity);
+            const Vec3 a = A.segment<3>(o), mean = 0.5 * (vec3(s.acceleration) + a);
+            v1[n] = v0 + h * mean;
+            const Vec3 x1 = x0 + h * v0 + 0.5 * h * h * mean;
+            put(m.position, x1);
             // the inputs whose extrapolation to t + h is that state: x + v h + a h^2 / 2, v + a h, a
             const Vec3 v = v1[n] - h * a;
-            nodeInput_[n] = {nodes_[n] - h * v - 0.5 * h * h * a, v, a};
+            put(m.inputPosition, x1 - h * v - 0.5 * h * h * a);
+            put(m.inputVelocity, v);
+            put(m.inputAcceleration, a);
             const LineFilePoint& p = node.point;
             if (!node.body) {
-                r.segment<3>(o) = node_load(static_cast<int>(n), nodes_[n], in, v1[n]) - (p.mass + p.addedMass) * a;
+                r.segment<3>(o) = node_load(static_cast<int>(n), x1, in, v1[n]) - (p.mass + p.addedMass) * a;
                 continue;
             }
-            const Vec3 alpha = A.segment<3>(o + 3), spin = 0.5 * (alpha0[n] + alpha);
-            const Vec3 w = w0[n] + h * spin, turn = h * w0[n] + 0.5 * h * h * spin;
-            nodeRotation_[n] = turn_matrix(turn) * R0[n];
-            nodeVelocity_[n] = v1[n];
-            nodeAcceleration_[n] = a;
-            nodeOmega_[n] = w;
-            nodeAlpha_[n] = alpha;
-            const Mat3& R = nodeRotation_[n];
+            const Vec3 w0 = vec3(s.omega);
+            const Vec3 alpha = A.segment<3>(o + 3), spin = 0.5 * (vec3(s.alpha) + alpha);
+            const Vec3 w = w0 + h * spin, turn = h * w0 + 0.5 * h * h * spin;
+            const Mat3 R = turn_matrix(turn) * rotation(s);
+            put_rotation(m, R);
+            put(m.velocity, v1[n]);
+            put(m.acceleration, a);
+            put(m.omega, w);
+            put(m.alpha, alpha);
             const Vec3 c = R * vec3(node.cg);
             const Mat3 I = R * Vec3(node.inertia[0], node.inertia[1], node.inertia[2]).asDiagonal() * R.transpose();
             const Vec3 acg = a + alpha.cross(c) + w.cross(w.cross(c));
             Vec3 force, moment;
-            body_load(static_cast<int>(n), nodes_[n], R, v1[n], w, in, force, moment);
+            body_load(static_cast<int>(n), x1, R, v1[n], w, in, force, moment);
             r.segment<3>(o) = force - p.mass * acg - body_added_mass(static_cast<int>(n), R) * a;
             r.segment<3>(o + 3) = moment - c.cross(p.mass * acg) - I * alpha - w.cross(I * w);
         }
         UCInputs li;
         for (size_t k = 0; k < lines_.size(); ++k) {
             const MooringDeckLine& l = deck_.lines[k];
-            if (!on_node(l)) continue;
+            if (!on_free_node(l)) continue;
             line_inputs(static_cast<int>(k), in, li);
             if (shift >= 0.0) shift_coupled_ends(static_cast<int>(k), shift, li);
             if (!lines_[k]->restore_state(nodeLineStart_[k].data(), nodeLineStart_[k].size(), why) ||
@@ -801,23 +812,23 @@ bool MooringSystem::node_step(double t, double h, double shift, const UCInputs& 
                 return false;
             }
             const UCOutputs& o = lines_[k]->outputs();
-            const MooringEnd* ends[2] = {&l.fairlead, l.farFree ? nullptr : &l.far};
+            const MooringEnd* ends[2] = {&l.fairlead, held_far_end(l)};
             const Vec3 force[2] = {vec3(o.towForce), vec3(o.endForce)};
             for (int e = 0; e < 2; ++e) {
                 if (!ends[e] || ends[e]->kind != MooringEnd::Kind::Node) continue;
                 const int n = ends[e]->node, at = nodeOffset_[n];
                 r.segment<3>(at) += force[e];
                 if (deck_.nodes[n].body)
-                    r.segment<3>(at + 3) += (nodeRotation_[n] * vec3(ends[e]->position)).cross(force[e]);
+                    r.segment<3>(at + 3) += (rotation(motion_[n]) * vec3(ends[e]->position)).cross(force[e]);
             }
         }
-        for (size_t n = 0; n < nodes_.size(); ++n) nodeVelocity_[n] = v1[n];
+        for (size_t n = 0; n < motion_.size(); ++n) put(motion_[n].velocity, v1[n]);
         return true;
     };
     Eigen::VectorXd A(m), r(m), rp(m);
-    for (size_t n = 0; n < nodes_.size(); ++n) {
-        A.segment<3>(nodeOffset_[n]) = a0[n];
-        if (deck_.nodes[n].body) A.segment<3>(nodeOffset_[n] + 3) = alpha0[n];
+    for (size_t n = 0; n < motion_.size(); ++n) {
+        A.segment<3>(nodeOffset_[n]) = vec3(start[n].acceleration);
+        if (deck_.nodes[n].body) A.segment<3>(nodeOffset_[n] + 3) = vec3(start[n].alpha);
     }
     if (!residual(A, r, error)) return false;
     // the Jacobian by one-sided differences, each moving the nodes by 1e-4 m (a body: turning it by 1e-4
@@ -856,7 +867,7 @@ bool MooringSystem::node_step(double t, double h, double shift, const UCInputs& 
         if (!residual(A, r, error)) return false;  // the lines stand at the last A
         const double last = moved;
         moved = 0.25 * h * h * dA.lpNorm<Eigen::Infinity>();
-        for (size_t n = 0; n < nodes_.size(); ++n) {  // the node that moves most: named where it fails
+        for (size_t n = 0; n < motion_.size(); ++n) {  // the node that moves most: named where it fails
             const int size = deck_.nodes[n].body ? 6 : 3;
             if (0.25 * h * h * dA.segment(nodeOffset_[n], size).lpNorm<Eigen::Infinity>() >= moved) worst = static_cast<int>(n);
         }
@@ -872,7 +883,7 @@ bool MooringSystem::node_step(double t, double h, double shift, const UCInputs& 
                 " m or rad)";
         return false;
     }
-    for (size_t n = 0; n < nodes_.size(); ++n) nodeAcceleration_[n] = A.segment<3>(nodeOffset_[n]);
+    for (size_t n = 0; n < motion_.size(); ++n) put(motion_[n].acceleration, A.segment<3>(nodeOffset_[n]));
     return true;
 }
 
@@ -910,6 +921,12 @@ Eigen::Matrix<double, 3, 4> rotation_derivative(const UCCoupledBody& body, int o
 }
 
 }  // namespace
+
+bool MooringSystem::interface_derivative(const double[kDerivativeInputs], double[6], std::string& error) {
+    error = "the interface derivatives of towForce and endForce are not available for a mooring system "
+            "(its bodies' loads have theirs: body[k].force/moment with respect to body[k].*)";
+    return false;
+}
 
 bool MooringSystem::body_derivatives(int b, double d[6][UC_BODY_DERIVATIVE_INPUTS], std::string& error) {
     constexpr int N = UC_BODY_DERIVATIVE_INPUTS;
@@ -1016,7 +1033,7 @@ bool MooringSystem::body_derivatives(int b, double d[6][UC_BODY_DERIVATIVE_INPUT
 size_t MooringSystem::state_size() const {
     size_t size = sizeof(SystemHeader) + description_.size() * sizeof(double) +
                   references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs) +
-                  nodes_.size() * kNodeStateDoubles * sizeof(double);
+                  motion_.size() * sizeof(FreeNodeMotion);
     for (const auto& line : lines_) size += line->state_size();
     return size;
 }
@@ -1027,7 +1044,7 @@ void MooringSystem::save_state(void* buffer) {
     header.version = kSystemVersion;
     header.lines = static_cast<std::int32_t>(lines_.size());
     header.bodies = static_cast<std::int32_t>(references_.size());
-    header.nodes = static_cast<std::int32_t>(nodes_.size());
+    header.nodes = static_cast<std::int32_t>(motion_.size());
     header.lastStep = lastStep_;
     for (size_t k = 0; k < lines_.size(); ++k) header.lineSize[k] = lines_[k]->state_size();
     header.described = description_.size();
@@ -1048,20 +1065,8 @@ void MooringSystem::save_state(void* buffer) {
     out += sizeof outputs_;
     std::memcpy(out, &lastInputs_, sizeof lastInputs_);
     out += sizeof lastInputs_;
-    for (size_t n = 0; n < nodes_.size(); ++n) {
-        const Vec3* parts[6] = {&nodes_[n], &nodeVelocity_[n], &nodeAcceleration_[n], &nodeInput_[n].position,
-                                &nodeInput_[n].velocity, &nodeInput_[n].acceleration};
-        for (const Vec3* v : parts) {
-            std::memcpy(out, v->data(), 3 * sizeof(double));
-            out += 3 * sizeof(double);
-        }
-        std::memcpy(out, nodeRotation_[n].data(), 9 * sizeof(double));
-        out += 9 * sizeof(double);
-        const double more[7] = {nodeOmega_[n].x(), nodeOmega_[n].y(), nodeOmega_[n].z(), nodeAlpha_[n].x(),
-                                nodeAlpha_[n].y(), nodeAlpha_[n].z(), nodeStep_};
-        std::memcpy(out, more, sizeof more);
-        out += sizeof more;
-    }
+    if (!motion_.empty()) std::memcpy(out, motion_.data(), motion_.size() * sizeof(FreeNodeMotion));
+    out += motion_.size() * sizeof(FreeNodeMotion);
     for (auto& line : lines_) {
         line->save_state(out);
         out += line->state_size();
@@ -1106,16 +1111,16 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     }
     if (header.lines != static_cast<std::int32_t>(lines_.size()) ||
         header.bodies != static_cast<std::int32_t>(references_.size()) ||
-        header.nodes != static_cast<std::int32_t>(nodes_.size()) || header.described != description_.size()) {
+        header.nodes != static_cast<std::int32_t>(motion_.size()) || header.described != description_.size()) {
         error = "the deck is not the one the state was saved with: it makes " + std::to_string(lines_.size()) +
                 " lines, " + std::to_string(references_.size()) + " coupled bodies and " +
-                std::to_string(nodes_.size()) + " free nodes now, the state's " + std::to_string(header.lines) +
+                std::to_string(motion_.size()) + " free nodes now, the state's " + std::to_string(header.lines) +
                 ", " + std::to_string(header.bodies) + " and " + std::to_string(header.nodes);
         return false;
     }
     size_t expected = sizeof header + description_.size() * sizeof(double) +
                       references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs) +
-                      nodes_.size() * kNodeStateDoubles * sizeof(double);
+                      motion_.size() * sizeof(FreeNodeMotion);
     for (size_t k = 0; k < lines_.size(); ++k) {
         if (header.lineSize[k] > size) break;  // (the sum below cannot wrap)
         expected += header.lineSize[k];
@@ -1140,9 +1145,9 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     UCInputs lastInputs;
     std::memcpy(&lastInputs, in, sizeof lastInputs);
     in += sizeof lastInputs;
-    std::vector<double> nodeState(nodes_.size() * kNodeStateDoubles);
-    if (!nodeState.empty()) std::memcpy(nodeState.data(), in, nodeState.size() * sizeof(double));
-    in += nodeState.size() * sizeof(double);
+    std::vector<FreeNodeMotion> motion(motion_.size());
+    if (!motion.empty()) std::memcpy(motion.data(), in, motion.size() * sizeof(FreeNodeMotion));
+    in += motion.size() * sizeof(FreeNodeMotion);
     for (size_t k = 0; k < lines_.size(); ++k) {
         bool lineChanged = false;
         if (!lines_[k]->restore_state(in, header.lineSize[k], error, &lineChanged)) {
@@ -1154,16 +1159,7 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     }
     references_ = references;
     stiffnessCurrent_ = false;
-    for (size_t n = 0; n < nodes_.size(); ++n) {
-        Vec3* parts[6] = {&nodes_[n], &nodeVelocity_[n], &nodeAcceleration_[n], &nodeInput_[n].position,
-                          &nodeInput_[n].velocity, &nodeInput_[n].acceleration};
-        const double* at = nodeState.data() + kNodeStateDoubles * n;
-        for (int i = 0; i < 6; ++i) *parts[i] = Vec3(at + 3 * i);
-        nodeRotation_[n] = Eigen::Map<const Mat3>(at + 18);
-        nodeOmega_[n] = Vec3(at + 27);
-        nodeAlpha_[n] = Vec3(at + 30);
-        nodeStep_ = at[33];
-    }
+    motion_ = motion;
     outputs_ = outputs;
     lastInputs_ = lastInputs;
     lastStep_ = header.lastStep;

@@ -11,11 +11,13 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "deck/line_file.h"
 #include "model/line_profile.h"
 #include "line/simulation.h"
+#include "line/simulation_interface.h"
 
 namespace uc {
 
@@ -29,29 +31,66 @@ Mat3 turn_matrix(const Vec3& turn);
 // UC_ORIENTATION_ANGLES_ZYX R = Rz(yaw) Ry(pitch) Rx(roll) (OpenFAST's and MoorPy's).
 Mat3 coupled_body_rotation(const UCCoupledBody& body, int orientation);
 
-class MooringSystem {
+// The system's kinds of line, decided here once from the deck (mooring_line_params gives each line the bottomEnd
+// that follows from them): a line's far end is held where held_far_end says (at its anchor, bottomEnd 1; on a
+// coupled body or point or on a free node, driven, bottomEnd 3), or it hangs from its fairlead (nullptr: bottomEnd
+// 0, or 2 with a towed body). A line with an end on a free node is stepped with the nodes (on_free_node).
+const MooringEnd* held_far_end(const MooringDeckLine& l);
+bool on_free_node(const MooringDeckLine& l);
+
+// line[k].* of a line, or of one section of it, whose ends' tensions are fairlead and anchor, from the
+// outputs of the line it is (its minimum tension and grounded length are the whole line's).
+void set_mooring_line_outputs(UCMooringLine& out, double fairlead, double anchor, const UCOutputs& line);
+
+// One line given by its parameters, as the boundary sees it: a system of one line, whose line[1].* outputs
+// are its own (its outputs otherwise the line's).
+class OneLineSystem final : public CableSimulation {
+public:
+    using CableSimulation::CableSimulation;
+    const UCOutputs& outputs() const override;
+
+private:
+    mutable UCOutputs asSystem_{};  // the line's outputs with line 1's, made when asked
+};
+
+// The motion of a free node (docs/systems_mooring.md, "Dynamics"): all of it that a step changes and the next
+// step starts from, in plain doubles. A step's start is a copy of the nodes' motions and a saved state holds
+// their bytes: whatever belongs to a node's motion is in here, and so saved and restored with it.
+struct FreeNodeMotion {
+    double position[3], velocity[3], acceleration[3];  // of its reference point
+    // the inputs that its lines' ends at a free point are given (their extrapolation to the step's end is the
+    // point's motion there)
+    double inputPosition[3], inputVelocity[3], inputAcceleration[3];
+    double rotation[9];         // a free body's orientation, column by column (identity for a point)
+    double omega[3], alpha[3];  // a free body's angular velocity and acceleration
+    double step;                // of the step the motion is at the end of (0: at rest)
+};
+static_assert(std::is_trivially_copyable_v<FreeNodeMotion>, "a free node's motion is saved as its bytes");
+
+class MooringSystem final : public Simulation {
 public:
     // The lines' parameters are base with each line's deck properties; false (error) where one is refused.
     MooringSystem(const UCParams& base, const MooringDeck& deck);
     bool build(std::string& error);  // once, after construction
 
-    bool initialize(double t0, const UCInputs& in, std::string& error);
-    bool step(double t, double h, const UCInputs& in, std::string& error);
-    std::string take_event();
+    bool initialize(double t0, const UCInputs& in, std::string& error) override;
+    bool step(double t, double h, const UCInputs& in, std::string& error) override;
+    std::string take_event() override;
 
-    double time() const { return lines_.empty() ? 0.0 : lines_[0]->time(); }
-    const UCOutputs& outputs() const { return outputs_; }
-    Vec3 tow_position() const { return lines_[0]->tow_position(); }
+    double time() const override { return lines_.empty() ? 0.0 : lines_[0]->time(); }
+    // The system's outputs: the single-line outputs are line 1's, line[k].* each deck line's.
+    const UCOutputs& outputs() const override { return outputs_; }
+    const Vec3& tow_position() const override { return lines_[0]->tow_position(); }
     int n_lines() const { return static_cast<int>(lines_.size()); }
     const CableSimulation& line(int k) const { return *lines_[k]; }
 
-    size_t state_size() const;
-    void save_state(void* buffer);
+    size_t state_size() const override;
+    void save_state(void* buffer) override;
     // Refuses (false, error naming the first value that differs) a state saved by a system built from
     // another deck: a state carries every value the system was built from (its description). A refusal
     // of a state's size, version or deck values comes before anything changes; *changed (if given) tells
     // whether a later failure (a line's integrator history) left the system partly restored.
-    bool restore_state(const void* buffer, size_t size, std::string& error, bool* changed = nullptr);
+    bool restore_state(const void* buffer, size_t size, std::string& error, bool* changed = nullptr) override;
 
     // Every number the system was built from, named: each line's parameters (the deck's line with the
     // instance's parameters), its ends, the free nodes' mass, volume, drag, added mass, inertia and pose,
@@ -74,6 +113,8 @@ public:
     // asked, once per step (it costs a fifth of a step; docs/systems_mooring.md). A body where
     // body_stiffness fails gets 0, and an event says why (once per run).
     void update_stiffness();
+    // update_stiffness, and body[k].stiffness copied into out.
+    bool update_stiffness(UCOutputs& out, std::string& error) override;
 
     // The interface derivatives of body b (1-based) over the next communication step, taken as long as
     // the last one: d[i][j] = d (force, moment)_i (t + h) / d input_j (t), inputs j = x, y, z, roll,
@@ -81,7 +122,9 @@ public:
     // orientation inputs that bodyOrientation does not read have 0): each line's own interface
     // derivatives (CableSimulation::interface_derivatives) through the fairleads' motion on the body, and
     // the moment arms' change. Available after the first step.
-    bool body_derivatives(int b, double d[6][UC_BODY_DERIVATIVE_INPUTS], std::string& error);
+    bool body_derivatives(int b, double d[6][UC_BODY_DERIVATIVE_INPUTS], std::string& error) override;
+    // Refused: a system's coupled bodies have theirs (body_derivatives).
+    bool interface_derivative(const double seed[kDerivativeInputs], double out[6], std::string& error) override;
 
     // Steps of the central differences of body_stiffness: of each line's ends [m] (with the other end held,
     // where a short taut line, a bridle's pennant of sag 0.5 m, is strongly non-linear: truncation ~
@@ -107,8 +150,8 @@ public:
 
     // The free nodes (Free points where three or more lines meet): their positions, found at the
     // initialization by the static equilibrium of each node (docs/systems_mooring.md, "Free points").
-    int n_nodes() const { return static_cast<int>(nodes_.size()); }
-    const Vec3& node_position(int n) const { return nodes_[n]; }
+    int n_nodes() const { return static_cast<int>(motion_.size()); }
+    Vec3 node_position(int n) const { return Vec3(motion_[n].position); }
     // The net static force on the free nodes (3 per node) with the nodes at x: their weight and
     // buoyancy, the current's drag and the lines' end forces, from the lines' exact static profiles
     // (profile = true: elastic catenaries, no current on the lines) or from the lines' own static
@@ -116,8 +159,9 @@ public:
     // solution there.
     bool node_residual(const Eigen::VectorXd& x, const UCInputs& in, bool profile, Eigen::VectorXd& r,
                        std::string& error);
-    const Vec3& node_velocity(int n) const { return nodeVelocity_[n]; }
-    const Mat3& node_rotation(int n) const { return nodeRotation_[n]; }  // a free body's (identity for a point)
+    Vec3 node_velocity(int n) const { return Vec3(motion_[n].velocity); }
+    Mat3 node_rotation(int n) const { return Eigen::Map<const Mat3>(motion_[n].rotation); }  // (identity for a point)
+    const FreeNodeMotion& node_motion(int n) const { return motion_[n]; }
     // Newton iterations of the statics (of the last initialization) or of the last step's dynamics, and
     // the statics' residual left (largest component, N).
     int node_iterations() const { return nodeIterations_; }
@@ -172,20 +216,9 @@ private:
     Mat3 body_added_mass(int n, const Mat3& R) const;
     // One communication step of the lines that end at free nodes, coupled implicitly through the nodes'
     // equations of motion (docs/systems_mooring.md, "Dynamics").
-    struct NodeInput {                   // what the lines at node n are given as their end's inputs
-        Vec3 position, velocity, acceleration;
-    };
-    struct NodeState {                   // the free nodes' motion (a step's start, to go back to)
-        std::vector<Vec3> x, v, a, omega, alpha;
-        std::vector<Mat3> R;
-        std::vector<NodeInput> input;
-        double step;
-    };
-    NodeState node_state() const;
     // The error of the step just taken from start over h in the nodes' positions (a body's: at the reach
     // of its points), estimated from the change of their accelerations [m].
-    double node_step_error(double h, const NodeState& start) const;
-    void set_node_state(const NodeState& s);
+    double node_step_error(double h, const std::vector<FreeNodeMotion>& start) const;
     // The states of the lines at free nodes (empty for the others).
     void save_node_lines(std::vector<std::vector<unsigned char>>& into);
     // (In one piece, or in substeps where its error estimate is too large or its coupled iteration does
@@ -214,14 +247,9 @@ private:
     bool same_description(const unsigned char* saved, std::string& error) const;
     // --- state ---
     std::vector<DrivenEnd> references_;  // each body's reference point, extrapolated as the fairleads are
-    std::vector<Vec3> nodes_;            // the free nodes' positions
-    std::vector<Vec3> nodeVelocity_, nodeAcceleration_;
-    std::vector<Mat3> nodeRotation_;     // a free body's orientation (identity for a point)
-    std::vector<Vec3> nodeOmega_, nodeAlpha_;  // a free body's angular velocity and acceleration
-    double nodeStep_ = 0.0;              // the step the nodes' state is at the end of (0: at rest)
+    std::vector<FreeNodeMotion> motion_;  // of each free node
     std::vector<int> nodeOffset_;        // of each node's unknowns (3 for a point, 6 for a body)
     int nodeUnknowns_ = 0;
-    std::vector<NodeInput> nodeInput_;
     std::vector<std::vector<unsigned char>> nodeLineStart_;  // the node lines' states at the step's start
     int nodeIterations_ = 0, nodeSubsteps_ = 1;
     double nodeResidual_ = 0.0;

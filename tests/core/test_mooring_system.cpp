@@ -619,6 +619,94 @@ TEST(MooringSystem, ASavedStateContinuesBitForBit) {
     EXPECT_FALSE(system.restore_state(state.data(), state.size() - 8, error));
 }
 
+// The platform (a Coupled body) with its first leg through a subsurface buoy (a Free body: a pennant to its top,
+// two chains from its rim to anchors) and its third leg through a clump (a Free point where three lines meet):
+// both free nodes move with the platform.
+const char* const kPlatformFreeNodes = R"(--------------------- MoorDyn Input File ------------------------------------
+the platform with a free body and a free point
+----------------------- LINE TYPES ------------------------------------------
+Name     Diam      MassDen       EA    BA/-zeta    EI    Cd      Ca     CdAx   CaAx
+(-)       (m)      (kg/m)        (N)    (N-s/-)    (-)   (-)     (-)    (-)    (-)
+main     0.0766    113.35     7.536E8     -1.0      0    2.0     0.8    0.4    0.25
+---------------------- BODIES --------------------------------
+ID   Attachment  X0     Y0     Z0     r0    p0    y0    Mass   CG*        I*      Volume  CdA*  Ca*
+(#)  (-)         (m)    (m)    (m)   (deg) (deg) (deg)  (kg)   (m)       (kg-m^2)  (m^3)   (m^2) (-)
+1    Coupled     0.0    0.0    0.0    0     0     0     0      0          0        0       0     0
+2    Free      150.0  259.8  -80.0    0     0     0    10000   0|0|0.0    20000    60.0    6.0   1.0
+---------------------- POINTS --------------------------------
+ID     Attachment  X        Y         Z      M      V       CdA   CA
+(-)    (-)        (m)      (m)       (m)    (kg)   (m^3)   (m^2)  (-)
+1      Fixed    641.6     538.4   -200.0     0       0       0     0
+2      Fixed   -837.6      0.0    -200.0     0       0       0     0
+3      Fixed    418.8   -725.383  -200.0     0       0       0     0
+4      Body1     20.434   35.393   -14.0     0       0       0     0
+5      Body1    -40.868    0.0     -14.0     0       0       0     0
+6      Body1     20.434  -35.393   -14.0     0       0       0     0
+7      Body2      0.0      0.0      1.5     0       0       0     0
+8      Body2      1.532    1.286   -1.5     0       0       0     0
+9      Body2      0.347    1.970   -1.5     0       0       0     0
+10     Fixed    145.448   824.875   -200.0     0       0       0     0
+11     Free     220.0   -380.0    -150.0   1000     8.0     0.5   1.0
+12     Fixed    600.0   -250.0    -200.0     0       0       0     0
+---------------------- LINES --------------------------------------
+ID      LineType   AttachA   AttachB  UnstrLen  NumSegs   Outputs
+(-)       (-)        (-)       (-)       (m)      (-)       (-)
+1         main        4         7       280.0      8        -
+2         main        2         5       835.35     8        -
+3         main        6        11       425.0      10       -
+4         main        1         8       600.0      8        -
+5         main       10         9       600.0      8        -
+6         main       11         3       405.0      10       -
+7         main       11        12       408.0      10       -
+---------------------- OPTIONS ---------------------------------------
+200      WtrDpth
+------------------------- need this line --------------------------------------
+)";
+
+// Everything a step changes is in a saved state: a state saved mid-run and restored into a new instance (which
+// has nothing of the run but the state) continues as the run does, its outputs bit for bit and the state it saves
+// byte for byte, with the free nodes moving (a member of a free node's motion left out of the state would
+// start the new instance's next step elsewhere).
+TEST(MooringSystem, AStateRestoredIntoANewInstanceContinuesBitForBitWithFreeNodesMoving) {
+    uc::MooringDeck deck;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(kPlatformFreeNodes, 0, deck, error)) << error;
+    ASSERT_EQ(deck.nodes.size(), 2u);
+    auto fresh = [&] {
+        auto system = std::make_unique<uc::MooringSystem>(system_parameters(), deck);
+        EXPECT_TRUE(system->build(error)) << error;
+        return system;
+    };
+    auto inputs = [](int k) {
+        const double t = 0.5 * k;
+        return platform_inputs(2.0 * std::sin(0.4 * t), 0.02 * std::sin(0.3 * t), 0.8 * std::cos(0.4 * t));
+    };
+    const auto a = fresh();
+    ASSERT_TRUE(a->initialize(0.0, inputs(0), error)) << error;
+    ASSERT_EQ(a->n_nodes(), 2);
+    for (int k = 0; k < 3; ++k) ASSERT_TRUE(a->step(0.5 * k, 0.5, inputs(k), error)) << error;
+    std::vector<unsigned char> state(a->state_size());
+    a->save_state(state.data());
+    const auto b = fresh();
+    ASSERT_TRUE(b->restore_state(state.data(), state.size(), error)) << error;
+    for (int k = 3; k < 6; ++k) {
+        const uc::Vec3 before = a->node_position(0);
+        ASSERT_TRUE(a->step(0.5 * k, 0.5, inputs(k), error)) << error;
+        ASSERT_TRUE(b->step(0.5 * k, 0.5, inputs(k), error)) << error;
+        for (int n = 0; n < 2; ++n) EXPECT_GT(a->node_velocity(n).norm(), 0.0) << "node " << n << " moves";
+        EXPECT_GT((a->node_position(0) - before).norm(), 0.0);
+        ASSERT_EQ(std::memcmp(&a->outputs(), &b->outputs(), sizeof(UCOutputs)), 0) << "step " << k;
+        for (int n = 0; n < 2; ++n)
+            ASSERT_EQ(std::memcmp(&a->node_motion(n), &b->node_motion(n), sizeof(uc::FreeNodeMotion)), 0)
+                << "node " << n << ", step " << k;
+    }
+    std::vector<unsigned char> stateA(a->state_size()), stateB(b->state_size());
+    a->save_state(stateA.data());
+    b->save_state(stateB.data());
+    ASSERT_EQ(stateA.size(), stateB.size());
+    EXPECT_TRUE(stateA == stateB);
+}
+
 TEST(MooringSystem, AStateIsRefusedByASystemOfAnEditedDeckNamingWhatDiffers) {
     // saved from the platform's deck, restored into systems of the deck edited: refused, naming the first
     // value that differs and both its values (a silent mix would step the state with the new lines)

@@ -1,0 +1,65 @@
+// simulation_interface.h - the one contract between the C boundary (api/cable_api.cpp) and what it drives:
+// one line (CableSimulation) or a mooring system of several (MooringSystem, src/system/mooring_system.h).
+// The boundary holds one Simulation and calls it without asking which it is; a capability that only one
+// of them has (a line's interface derivatives, a system's body derivatives and stiffness) has a default
+// here that says what lacks it.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "core/types.h"
+#include "model/parameters.h"
+
+namespace uc {
+
+class Simulation {
+public:
+    virtual ~Simulation() = default;
+
+    // Initial state at time t0 from the inputs (api/cable_api.h, uc_initialize); false with the reason.
+    virtual bool initialize(double t0, const UCInputs& in, std::string& error) = 0;
+    // From t (the present time) to exactly t + h (uc_do_step); false with the reason.
+    virtual bool step(double t, double h, const UCInputs& in, std::string& error) = 0;
+    // Every output of the FMU: the single-line outputs, and line[k].*, body[k].*, point[k].*.
+    virtual const UCOutputs& outputs() const = 0;
+    virtual double time() const = 0;
+    // Where the tow point (a system: line 1's fairlead) stands now (uc_tow_position).
+    virtual const Vec3& tow_position() const = 0;
+    // The event of the last step worth a log line, or empty; cleared by the call.
+    virtual std::string take_event() = 0;
+
+    // The exact state (uc_state_save): its size in bytes, written into buffer, taken back. restore_state
+    // refuses (false, error) a state of another size, version or model before anything changes; *changed
+    // (if given) tells whether a later failure left it partly restored (then no longer usable).
+    virtual std::size_t state_size() const = 0;
+    virtual void save_state(void* buffer) = 0;
+    virtual bool restore_state(const void* buffer, std::size_t size, std::string& error,
+                               bool* changed = nullptr) = 0;
+
+    // A line's interface derivatives of towForce and endForce (uc_interface_derivative): seed over the
+    // kDerivativeInputs inputs, out over the 6 outputs.
+    static constexpr int kDerivativeInputs = 18;
+    virtual bool interface_derivative(const double seed[kDerivativeInputs], double out[6], std::string& error) {
+        (void)seed;
+        (void)out;
+        error = "the interface derivatives of towForce and endForce belong to a single line";
+        return false;
+    }
+    // A mooring system's interface derivatives of coupled body `body` (1-based) (uc_body_derivatives).
+    virtual bool body_derivatives(int body, double d[6][UC_BODY_DERIVATIVE_INPUTS], std::string& error) {
+        (void)body;
+        (void)d;
+        error = "the body[k].* derivatives belong to a mooring system (lineFile with several lines or bodies)";
+        return false;
+    }
+    // A mooring system's body[k].stiffness, brought up to date and written into out (uc_update_stiffness).
+    // Without coupled bodies there is none to compute: out is left as it is, and that is no error.
+    virtual bool update_stiffness(UCOutputs& out, std::string& error) {
+        (void)out;
+        (void)error;
+        return true;
+    }
+};
+
+}  // namespace uc
