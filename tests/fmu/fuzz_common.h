@@ -69,7 +69,8 @@ public:
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 if (elapsed > opt_.seconds) break;
                 if ((i & 16383) == 0 && i > 0) {
-                    std::fprintf(stderr, "fuzz_fmi: %lld calls, %.1f s, %d violations\n", i, elapsed, violations_);
+                    std::fprintf(stderr, "fuzz_fmi: %lld FMI calls (%lld random actions), %.1f s, %d violations\n",
+                                 calls_, i, elapsed, violations_);
                 }
             }
             one_call();
