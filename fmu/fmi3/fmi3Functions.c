@@ -358,6 +358,11 @@ FMI3_EXPORT fmi3Status fmi3SetInt32(fmi3Instance instance, const fmi3ValueRefere
 FMI3_EXPORT fmi3Status fmi3GetBoolean(fmi3Instance instance, const fmi3ValueReference valueReferences[],
                                       size_t nValueReferences, fmi3Boolean values[], size_t nValues) {
     if (!scalar_counts(instance, nValueReferences, nValues, "fmi3GetBoolean")) return fmi3Error;
+    if (nValueReferences > 0 && values == NULL) { /* the FMI 2.0 getter below writes into b, not values */
+        uc_log_status(&inner(instance)->log, fmi2Error, "fmi3GetBoolean: values is NULL with nvr = %zu",
+                      nValueReferences);
+        return fmi3Error;
+    }
     fmi2Boolean* b = calloc(nValues + 1, sizeof *b);
     if (b == NULL) return fmi3Error;
     const fmi2Status status = fmi2GetBoolean(inner(instance), valueReferences, nValueReferences, b);
