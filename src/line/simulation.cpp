@@ -22,36 +22,23 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 10;
+constexpr std::uint32_t kStateVersion = 11;
 // bottomEnd 4: the estimate's low-pass spans at least this many communication steps. Under Jacobi the
 // body feels the proxy's force a step late; a faster estimate then feeds that lag back into the proxy
 // (the model problem in docs/cosimulation.md: 5 steps keep the gains stable with +-50 % inertia error
 // and no drag at all, 3 do not).
 constexpr double kProxyFilterSteps = 5.0;
 
-// Fixed-layout header of a saved state; followed by UCOutputs, y, y' and the integrator's history.
+// Fixed-layout header of a saved state: what it belongs to (the sizes and the winch's mesh, which
+// the model holds); followed by LineState, y, y' and the integrator's history.
 struct StateHeader {
     std::uint32_t magic;
     std::uint32_t version;
     std::int32_t nFree;
     std::int32_t nElements;
-    double time;
-    DrivenEndState tow, end;
-    double lastStepSize;
-    double twistRef[12];
-    double lastBeta;
-    double stats[5];
-    double tensionScale;  // of the error control
-    double historyValid;  // 1: the integrator's history follows y and y' (continue without a restart)
-    RainflowCounter rainflow;  // the online fatigue count of the tow tension
-    // the winch: the mesh (elements of the first section, top length at its build) and its state
-    std::int32_t winchElements;
-    std::int32_t winchLimit;
-    double winchMeshTop, winchLength, winchRate, winchTop0;
-    // the mesh graded by the static profile for the tow point meshTow (meshGraded 1)
-    std::int32_t meshGraded, meshGrading;  // meshGrading: which of kGradings
-    double meshTow[3], meshFar[3];
-    double proxyConstant[3], proxyAlong, proxyAcross;  // bottomEnd 4: the estimate (ProxyEstimate)
+    std::int32_t winchElements;  // the winch's mesh: elements of the first section, top length at its build
+    std::int32_t stateBytes;     // sizeof(LineState)
+    double winchMeshTop;
 };
 
 IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
@@ -100,18 +87,20 @@ double acceleration_disagreement(double a0, double a1, double dv, double h) {
 }
 
 
-void DrivenEnd::reset(const Vec3& p, const Vec3& v, const Vec3& a, bool accelerationGiven) {
-    position = p;
-    velocity = v;
-    acceleration = a;
-    lastVelocityInput = v;
-    lastAccelerationInput = a;
-    lastAccelerationGiven = accelerationGiven;
+void DrivenEndState::reset(const Vec3& p, const Vec3& v, const Vec3& a, bool accelerationGiven) {
+    Eigen::Map<Vec3>{position} = p;
+    Eigen::Map<Vec3>{velocity} = v;
+    Eigen::Map<Vec3>{acceleration} = a;
+    Eigen::Map<Vec3>{lastVelocityInput} = v;
+    Eigen::Map<Vec3>{lastAccelerationInput} = a;
+    lastAccelerationGiven = accelerationGiven ? 1.0 : 0.0;
 }
 
-TowTrajectory DrivenEnd::next(double t, double h, double lastStep, const Vec3& positionInput,
-                              const Vec3& velocityInput, const Vec3& accelerationInput, int accelerationFlags,
-                              Vec3& a) const {
+TowTrajectory DrivenEndState::next(double t, double h, double lastStep, const Vec3& positionInput,
+                                   const Vec3& velocityInput, const Vec3& accelerationInput, int accelerationFlags,
+                                   Vec3& a) const {
+    const Vec3 lastVelocityInput = vec(this->lastVelocityInput), lastAccelerationInput = vec(this->lastAccelerationInput);
+    const bool lastAccelerationGiven = this->lastAccelerationGiven != 0.0;
     // The acceleration is the master's input derivative when given; otherwise the difference of
     // the last two velocity inputs (0 before there are two), so that an accelerating tow sampled
     // at communication points is still followed smoothly. A component set as the input tow.a* (not
@@ -140,7 +129,41 @@ TowTrajectory DrivenEnd::next(double t, double h, double lastStep, const Vec3& p
     const Vec3 p1 = positionInput + h * (velocityInput + h * (0.5 * used + h * (j / 6.0)));
     const Vec3 v1 = velocityInput + h * (used + h * (0.5 * j));
     const Vec3 a1 = used + h * j;
-    return TowTrajectory::quintic(t, h, position, velocity, acceleration, p1, v1, a1);
+    return TowTrajectory::quintic(t, h, p(), v(), this->a(), p1, v1, a1);
+}
+
+void DrivenEndState::advance(const TowTrajectory& traj, const Vec3& velocityInput, const Vec3& a,
+                             bool accelerationGiven) {
+    Eigen::Map<Vec3>{position} = traj.p1;
+    Eigen::Map<Vec3>{velocity} = traj.v1;
+    Eigen::Map<Vec3>{acceleration} = traj.a1;
+    Eigen::Map<Vec3>{lastVelocityInput} = velocityInput;
+    Eigen::Map<Vec3>{lastAccelerationInput} = a;
+    lastAccelerationGiven = accelerationGiven ? 1.0 : 0.0;
+}
+
+void DrivenEnd::reset(const Vec3& p, const Vec3& v, const Vec3& a, bool accelerationGiven) {
+    position = p;
+    velocity = v;
+    acceleration = a;
+    lastVelocityInput = v;
+    lastAccelerationInput = a;
+    lastAccelerationGiven = accelerationGiven;
+}
+
+TowTrajectory DrivenEnd::next(double t, double h, double lastStep, const Vec3& positionInput,
+                              const Vec3& velocityInput, const Vec3& accelerationInput, int accelerationGiven,
+                              Vec3& a) const {
+    DrivenEndState s;
+    save(s);
+    return s.next(t, h, lastStep, positionInput, velocityInput, accelerationInput, accelerationGiven, a);
+}
+
+void DrivenEnd::advance(const TowTrajectory& traj, const Vec3& velocityInput, const Vec3& a, bool accelerationGiven) {
+    DrivenEndState s;
+    save(s);
+    s.advance(traj, velocityInput, a, accelerationGiven);
+    load(s);
 }
 
 void DrivenEnd::save(DrivenEndState& s) const {
@@ -161,15 +184,6 @@ void DrivenEnd::load(const DrivenEndState& s) {
     lastVelocityInput = vec(s.lastVelocityInput);
     lastAccelerationInput = vec(s.lastAccelerationInput);
     lastAccelerationGiven = s.lastAccelerationGiven != 0.0;
-}
-
-void DrivenEnd::advance(const TowTrajectory& traj, const Vec3& velocityInput, const Vec3& a, bool accelerationGiven) {
-    position = traj.p1;
-    velocity = traj.v1;
-    acceleration = traj.a1;
-    lastVelocityInput = velocityInput;
-    lastAccelerationInput = a;
-    lastAccelerationGiven = accelerationGiven;
 }
 
 namespace {
@@ -202,6 +216,7 @@ double tension_scale(const CableModel& model, const UCOutputs& initial) {
 }  // namespace
 
 CableSimulation::CableSimulation(const UCParams& params) : model_(params) {
+    loads_.proxy = &state_.proxy;
     sn_.m = params.fatigueM;
     sn_.logK = params.fatigueLogK;
     sn_.area = params.fatigueArea;
@@ -261,7 +276,7 @@ double CableSimulation::tension_winch_rate(double tension, double topLength, dou
         rate = std::copysign(p.winchMaxRate, rate);
         dRate = 0.0;
     }
-    const double length = winchLength_ + (topLength - winchTopAtStep_);
+    const double length = state_.winchLength + (topLength - winchTopAtStep_);
     if ((length >= p.winchMaxLength && rate > 0.0) || (length <= p.winchMinLength && rate < 0.0)) {
         rate = 0.0;
         dRate = 0.0;
@@ -361,12 +376,12 @@ void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, boo
         if (ps.solved && mode != 0 && (ps.profile.grounded_length() > 0.0 || !model_.attachments().empty()))
             layout.nodes = graded_nodes(model_, ps.profile, ps.towOnTop, mode == 2, kGradings[grading]);
     }
-    meshTow_ = towPoint;
-    meshFar_ = farPoint;
-    grading_ = grading;
+    Eigen::Map<Vec3>{state_.meshTow} = towPoint;
+    Eigen::Map<Vec3>{state_.meshFar} = farPoint;
+    state_.grading = grading;
     const bool graded = !layout.nodes.empty() || layout.anchorResting;
-    if (graded != graded_ || !(layout == layout_)) {
-        graded_ = graded;
+    if (graded != state_.graded || !(layout == layout_)) {
+        state_.graded = graded;
         layout_ = layout;
         replace_model(CableModel(model_.params(), nullptr, graded ? &layout_ : nullptr));
     }
@@ -400,7 +415,7 @@ bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
         // behind the tow (a line clamped to the seabed instead piles its end into one point, from
         // which the solver found folded equilibria).
         const Vec3 d = vec(p.initialDirection).normalized();
-        Vec3 trail = -tow_.velocity;
+        Vec3 trail = -state_.tow.v();
         trail.z() = 0.0;
         if (trail.norm() < 1e-9) trail = Vec3(d.x(), d.y(), 0.0);
         if (trail.norm() < 1e-9) trail = Vec3(-1.0, 0.0, 0.0);
@@ -427,11 +442,11 @@ double CableSimulation::cable_torque(const UCInputs& in) {
     if (p.torqueMode == UC_TORQUE_PRESCRIBED) return in.torque;
     // Mode 2: H = GJ (Phi - beta) / L with beta from the current shape, unwrapped continuously.
     free_state(q_, v_, a_);
-    model_.expand(q_.data(), v_.data(), a_.data(), loads_, time_, X_.data(), Xd_.data(), Xdd_.data());
-    const double raw = geometric_twist(model_, X_.data(), twistRef_);
+    model_.expand(q_.data(), v_.data(), a_.data(), loads_, state_.time, X_.data(), Xd_.data(), Xdd_.data());
+    const double raw = geometric_twist(model_, X_.data(), state_.twistRef);
     const double kTwoPi = 6.28318530717958647692;
-    lastBeta_ += std::remainder(raw - lastBeta_, kTwoPi);
-    return model_.torque_for_twist(in.twist - lastBeta_);
+    state_.lastBeta += std::remainder(raw - state_.lastBeta, kTwoPi);
+    return model_.torque_for_twist(in.twist - state_.lastBeta);
 }
 
 bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) const {
@@ -439,7 +454,7 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
     char buffer[600];
     const char* farName = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor.x/y/z" : "end.x/y/z";
     if (model_.far_end_prescribed()) {
-        const Vec3 d = farPoint - tow_.position;
+        const Vec3 d = farPoint - state_.tow.p();
         const double reach = 1.1 * model_.line().length;
         if (d.norm() > reach) {
             if (p.lineFile[0] != '\0') {
@@ -450,7 +465,7 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
                               "%.6g), a stretch of %.3g %%, more than the 10 %% any cable survives; lengthen the "
                               "line to at least %.6g m or bring its ends within %.6g m of each other",
                               model_.line().length, farPoint.x(), farPoint.y(), farPoint.z(), d.norm(),
-                              tow_.position.x(), tow_.position.y(), tow_.position.z(),
+                              state_.tow.p().x(), state_.tow.p().y(), state_.tow.p().z(),
                               100.0 * (d.norm() / model_.line().length - 1.0), d.norm() / 1.1, reach);
             } else {
                 // Name the coordinate that is farthest off, with the range the others leave it, and the
@@ -465,7 +480,7 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
                               "stretched cable, 1.1 x length = %.6g m from the tow point (it is %.6g m away; more "
                               "than 10 %% strain, which no cable survives); or the line is too short: %s = %.6g m, "
                               "at least %.6g m reaches it",
-                              prefix, "xyz"[k], farPoint[k], tow_.position[k] - half, tow_.position[k] + half, reach,
+                              prefix, "xyz"[k], farPoint[k], state_.tow.p()[k] - half, state_.tow.p()[k] + half, reach,
                               d.norm(), p.nSections > 1 ? "the sections' length" : "length", model_.line().length,
                               d.norm() / 1.1);
             }
@@ -475,10 +490,10 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
     }
     if (!p.enableSeabed) return true;
     const double tolerance = 0.5 * model_.line().diameter;  // a point resting on the seabed sinks in slightly
-    if (tow_.position.z() < -p.waterDepth - tolerance) {
+    if (state_.tow.p().z() < -p.waterDepth - tolerance) {
         std::snprintf(buffer, sizeof buffer,
                       "tow.z = %.6g m is below the seabed at z = -waterDepth = %.6g m: the tow point must be in the water",
-                      tow_.position.z(), -p.waterDepth);
+                      state_.tow.p().z(), -p.waterDepth);
         error = buffer;
         return false;
     }
@@ -589,7 +604,7 @@ bool CableSimulation::check_static_strain(std::string& error) {
 bool CableSimulation::statics_applies(const Vec3& farPoint, std::string& error) const {
     if (!profileApplies_ || model_.line().EI > 0.0 || profile_.solved || profile_.why != "longer than the way down and across")
         return true;
-    const Vec3 d = tow_.position - farPoint;
+    const Vec3 d = state_.tow.p() - farPoint;
     const double X = std::hypot(d.x(), d.y()), h = std::abs(d.z()), L = model_.line().length;
     char text[600];
     std::snprintf(text, sizeof text,
@@ -623,16 +638,16 @@ bool CableSimulation::verify_statics(std::string& error) const {
         }
     }
     const UCParams& p = model_.params();
-    const double axial = outputs_.tension[UC_NUM_STATIONS - 1];
+    const double axial = state_.outputs.tension[UC_NUM_STATIONS - 1];
     if (p.bottomEnd == UC_BOTTOM_ANCHORED && model_.line().EI == 0.0 &&
-        std::abs(outputs_.endTension - axial) > kAnchorCheck * outputs_.endTension) {
+        std::abs(state_.outputs.endTension - axial) > kAnchorCheck * state_.outputs.endTension) {
         // Without bending stiffness the line's force on its anchor is its axial tension there: where
         // the two differ, the elements at the anchor do not hold the line's shape.
         std::snprintf(text, sizeof text,
                       "the static equilibrium found does not hold together at the anchor: the force on the anchor "
                       "(%.6g N) and the line's axial tension there (%.6g N) differ by %.2f %%; refusing it as a "
                       "start (the mesh does not resolve the line near its anchor)",
-                      outputs_.endTension, axial, 100.0 * std::abs(outputs_.endTension - axial) / outputs_.endTension);
+                      state_.outputs.endTension, axial, 100.0 * std::abs(state_.outputs.endTension - axial) / state_.outputs.endTension);
         error = text;
         return false;
     }
@@ -652,13 +667,13 @@ bool CableSimulation::verify_statics(std::string& error) const {
     if (!exact) return true;
     const double top = (towOnTop ? profile.top_force() : profile.bottom_force()).norm();
     const double bottom = (towOnTop ? profile.bottom_force() : profile.top_force()).norm();
-    const double topError = outputs_.towTension / top - 1.0, bottomError = outputs_.endTension / bottom - 1.0;
+    const double topError = state_.outputs.towTension / top - 1.0, bottomError = state_.outputs.endTension / bottom - 1.0;
     if (std::abs(topError) <= kStaticsCheck && std::abs(bottomError) <= kStaticsCheck) return true;
     std::snprintf(text, sizeof text,
                   "the static equilibrium found differs from the line's elastic catenary, which is exact for it: "
                   "tension %.6g N at the tow point and %.6g N at the far end against %.6g N and %.6g N (%+.2f %% and "
                   "%+.2f %%); refusing a wrong start",
-                  outputs_.towTension, outputs_.endTension, top, bottom, 100.0 * topError, 100.0 * bottomError);
+                  state_.outputs.towTension, state_.outputs.endTension, top, bottom, 100.0 * topError, 100.0 * bottomError);
     error = text;
     return false;
 }
@@ -691,7 +706,7 @@ std::string CableSimulation::mesh_advice(double t0, const UCInputs& in) const {
         }
         char text[300];
         std::snprintf(text, sizeof text, "; with %s the same line starts (tow tension %.6g N, far end %.6g N)",
-                      counts.c_str(), trial.outputs_.towTension, trial.outputs_.endTension);
+                      counts.c_str(), trial.state_.outputs.towTension, trial.state_.outputs.endTension);
         advice = text;
         return true;
     };
@@ -752,27 +767,27 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
                               model_.winch_nominal()};
         if (model_.winch_mesh().elements != start.elements || model_.winch_mesh().topLength != start.topLength)
             rebuild(start);
-        winchRate_ = 0.0;
-        winchStep_ = WinchStep::hold(0.0);
-        winchTop0_ = start.topLength;
-        winchLimit_ = 0;
-        winchRateLimited_ = false;
-        model_.set_top_length(winchTop0_);
-        winchLength_ = model_.line().length;
+        state_.winchRate = 0.0;
+        state_.winchStep = WinchStep::hold(0.0);
+        state_.winchTop0 = start.topLength;
+        state_.winchLimit = 0;
+        state_.winchRateLimited = false;
+        model_.set_top_length(state_.winchTop0);
+        state_.winchLength = model_.line().length;
     }
-    tow_.reset(vec(in.tow), vec(in.towVelocity), vec(in.towAcceleration), in.towAccelerationGiven != 0);
-    loads_.tow = TowTrajectory::at_rest_in_time(tow_.position, tow_.velocity, tow_.acceleration, t0);
-    end_.reset(vec(in.end), vec(in.endVelocity), Vec3::Zero(), false);
-    loads_.end = TowTrajectory::at_rest_in_time(end_.position, end_.velocity, end_.acceleration, t0);
+    state_.tow.reset(vec(in.tow), vec(in.towVelocity), vec(in.towAcceleration), in.towAccelerationGiven != 0);
+    loads_.tow = TowTrajectory::at_rest_in_time(state_.tow.p(), state_.tow.v(), state_.tow.a(), t0);
+    state_.end.reset(vec(in.end), vec(in.endVelocity), Vec3::Zero(), false);
+    loads_.end = TowTrajectory::at_rest_in_time(state_.end.p(), state_.end.v(), state_.end.a(), t0);
     const bool proxy = p.bottomEnd == UC_BOTTOM_PROXY;
-    Vec3 farPoint = p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy ? end_.position : vec(p.anchor);
-    loads_.proxy = ProxyEstimate();
+    Vec3 farPoint = p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy ? state_.end.p() : vec(p.anchor);
+    state_.proxy = ProxyEstimate();
     loads_.endSpring = 0.0;
     if (!check_geometry(farPoint, error)) return false;
     if (!check_weight_strain(error)) return false;
     // An anchored line, or one whose far end is held at rest, starts from its static profile.
     profileApplies_ = p.bottomEnd == UC_BOTTOM_ANCHORED ||
-                      (p.bottomEnd == UC_BOTTOM_EXTERNAL && end_.velocity.isZero(0.0));
+                      (p.bottomEnd == UC_BOTTOM_EXTERNAL && state_.end.v().isZero(0.0));
     if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
         error = "torque and twist inputs must be finite numbers";
         return false;
@@ -784,16 +799,16 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     auto start = [&](int grading) {
         retry = false;
         farPoint = givenFar;
-        grade_mesh(tow_.position, farPoint, profileApplies_, grading);
+        grade_mesh(state_.tow.p(), farPoint, profileApplies_, grading);
         if (p.bottomEnd == UC_BOTTOM_ANCHORED) farPoint = model_.anchor();  // on the seabed: where the line rests
         const int n = model_.n_free();
-        const bool fromProfile = initial_guess(tow_.position, farPoint, q_);
+        const bool fromProfile = initial_guess(state_.tow.p(), farPoint, q_);
         {
             // Twist reference frames from the initial guess (planar: no geometric twist).
             std::vector<double> zero(n, 0.0);
             model_.expand(q_.data(), zero.data(), zero.data(), loads_, t0, X_.data(), Xd_.data(), Xdd_.data());
-            twistRef_ = make_twist_reference(model_, X_.data());
-            lastBeta_ = 0.0;
+            state_.twistRef = make_twist_reference(model_, X_.data());
+            state_.lastBeta = 0.0;
             const UCParams& pp = model_.params();
             loads_.torque = !pp.enableTorsion ? 0.0
                             : pp.torqueMode == UC_TORQUE_PRESCRIBED ? in.torque
@@ -804,12 +819,12 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         // A steady tow only when nothing holds the far end back: free end, internal body, or an
         // external end moving with the tow point. Otherwise the equilibrium is at rest.
         const bool steadyTow = p.bottomEnd == UC_BOTTOM_FREE || p.bottomEnd == UC_BOTTOM_TOWED_BODY ||
-                               ((p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy) && (end_.velocity - tow_.velocity).norm() <= 1e-12);
+                               ((p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy) && (state_.end.v() - state_.tow.v()).norm() <= 1e-12);
         if (p.initMode == UC_INIT_EQUILIBRIUM && steadyTow) {
             // Steady tow: every node moves with the tow point, tangents do not turn.
             for (int g = 0; g < model_.n_global(); ++g) {
                 const int j = model_.free_index(g);
-                if (j >= 0 && g % 6 < 3) v[j] = tow_.velocity[g % 6];
+                if (j >= 0 && g % 6 < 3) v[j] = state_.tow.v()[g % 6];
             }
         }
         if (p.initMode == UC_INIT_EQUILIBRIUM && !statics_applies(farPoint, error)) return false;
@@ -838,13 +853,13 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
             winchTension_ = in.winchTension;
             winchTopAtStep_ = y_[0];
         }
-        time_ = t0;
-        lastStepSize_ = 0.0;
-        statsBase_ = IntegratorStats();
-        integratorStarted_ = false;
-        restartPending_ = true;
-        compressionWarned_ = false;
-        rainflow_.reset();
+        state_.time = t0;
+        state_.lastStepSize = 0.0;
+        state_.statsBase = IntegratorStats();
+        state_.integratorStarted = false;
+        state_.restartPending = true;
+        state_.compressionWarned = false;
+        state_.rainflow.reset();
         update_outputs();
         if (p.initMode == UC_INIT_EQUILIBRIUM && !verify_statics(error)) {
             retry = true;
@@ -857,10 +872,10 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     std::string firstError;
     for (int grading = 0; !start(grading); ++grading) {
         if (grading == 0) firstError = error;
-        if (!retry || !graded_ || layout_.nodes.empty() || grading + 1 == kGradingCount) {
+        if (!retry || !state_.graded || layout_.nodes.empty() || grading + 1 == kGradingCount) {
             if (grading > 0) {
                 error = firstError;
-                grade_mesh(tow_.position, givenFar, profileApplies_, 0);
+                grade_mesh(state_.tow.p(), givenFar, profileApplies_, 0);
             }
             if (retry && adviseMesh_) error += mesh_advice(t0, in);
             return false;
@@ -872,14 +887,14 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, R);
         y_[1] = yp_[0] = tension_winch_rate(line_tension(R), y_[0], nullptr);
         yp_[1] = 0.0;
-        winchRate_ = y_[1];
+        state_.winchRate = y_[1];
     }
-    if (sn_.area > 0.0) rainflow_.add(outputs_.towTension, sn_);
+    if (sn_.area > 0.0) state_.rainflow.add(state_.outputs.towTension, sn_);
     if (proxy) proxy_output(0.0, Vec3::Zero(), Vec3::Zero(), in);
-    outputs_.towTensionMax = outputs_.towTensionMin = outputs_.towTension;
-    tensionScale_ = tension_scale(model_, outputs_);
+    state_.outputs.towTensionMax = state_.outputs.towTensionMin = state_.outputs.towTension;
+    state_.tensionScale = tension_scale(model_, state_.outputs);
     if (!set_integrator_tolerances(error)) return false;
-    outputs_.tensionScale = tensionScale_;
+    state_.outputs.tensionScale = state_.tensionScale;
     return true;
 }
 
@@ -890,7 +905,7 @@ void CableSimulation::step_completed(double t, const double* y, const double* yp
     const double tension = std::sqrt(R[0] * R[0] + R[1] * R[1] + R[2] * R[2]);
     stepTensionMax_ = std::max(stepTensionMax_, tension);
     stepTensionMin_ = std::min(stepTensionMin_, tension);
-    if (sn_.area > 0.0) rainflow_.add(tension, sn_);
+    if (sn_.area > 0.0) state_.rainflow.add(tension, sn_);
 }
 
 bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::string& error) {
@@ -909,19 +924,19 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         error = "endLoadVelocity and endLoadDamping inputs must be finite numbers";
         return false;
     }
-    if (!(h >= UC_MIN_STEP_SIZE) || !(time_ + h > time_)) {
+    if (!(h >= UC_MIN_STEP_SIZE) || !(state_.time + h > state_.time)) {
         char text[200];
         std::snprintf(text, sizeof text,
                       "the communication step size %.17g s is below %g s or does not advance the time t = %.17g s",
-                      h, UC_MIN_STEP_SIZE, time_);
+                      h, UC_MIN_STEP_SIZE, state_.time);
         error = text;
         return false;
     }
-    const double winchLengthAtStart = winchLength_, winchRateAtStart = winchRate_;
-    const double winchTop0AtStart = winchTop0_;
+    const double winchLengthAtStart = state_.winchLength, winchRateAtStart = state_.winchRate;
+    const double winchTop0AtStart = state_.winchTop0;
     set_environment(in);
     loads_.current.rate = Vec3(in.currentRate[0], in.currentRate[1], 0.0);
-    loads_.current.rateStart = time_;
+    loads_.current.rateStart = state_.time;
     loads_.current.scaleRate = in.currentScaleRate;
     if (!std::isfinite(in.currentScale) || !std::isfinite(in.currentScaleRate)) {
         error = "currentScale and its input derivative must be finite numbers";
@@ -932,11 +947,11 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         return false;
     }
     if (model_.winch()) {
-        // A remesh happens at time_ and must see nothing but the state there (a state restored into
+        // A remesh happens at state_.time and must see nothing but the state there (a state restored into
         // a fresh instance has no previous step): the driven ends where they stand, the environment
         // of this step's inputs.
-        loads_.tow = TowTrajectory::at_rest_in_time(tow_.position, tow_.velocity, tow_.acceleration, time_);
-        loads_.end = TowTrajectory::at_rest_in_time(end_.position, end_.velocity, end_.acceleration, time_);
+        loads_.tow = TowTrajectory::at_rest_in_time(state_.tow.p(), state_.tow.v(), state_.tow.a(), state_.time);
+        loads_.end = TowTrajectory::at_rest_in_time(state_.end.p(), state_.end.v(), state_.end.a(), state_.time);
     }
     if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
         error = "torque and twist inputs must be finite numbers";
@@ -944,17 +959,17 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     }
     if (model_.winch()) {
         loads_.torque = cable_torque(in);
-        set_winch_time(time_);
+        set_winch_time(state_.time);
         if (!winch_rate(in, h, error)) return false;
         // how much the top element changes over the step (the constant-tension winch: at worst twice
         // its present haul-in rate)
-        const double change = off_ ? std::min(0.0, 2.0 * y_[1] * h) : winchStep_.length(h);
+        const double change = off_ ? std::min(0.0, 2.0 * y_[1] * h) : state_.winchStep.length(h);
         const int elements = model_.n_elements();
         if (!remesh(change, error)) return false;
-        if (!off_ && winchStep_.rate0 != winchRateAtStart && elements == model_.n_elements()) {
+        if (!off_ && state_.winchStep.rate0 != winchRateAtStart && elements == model_.n_elements()) {
             // The rate jumps here: the material at the sheave takes the new speed at once (an axial
             // wave). The accelerations of that state, and a restart, as after any discontinuity.
-            set_winch_time(time_);
+            set_winch_time(state_.time);
             free_state(q_, v_, a_);
             if (!restart_from(error)) return false;
         }
@@ -963,48 +978,48 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     // velocity and acceleration: it never jumps) to the master's inputs extrapolated to t + h.
     const Vec3 towVelocityInput = vec(in.towVelocity), endVelocityInput = vec(in.endVelocity);
     Vec3 towAcceleration, endAcceleration;
-    loads_.tow = tow_.next(time_, h, lastStepSize_, vec(in.tow), towVelocityInput, vec(in.towAcceleration),
+    loads_.tow = state_.tow.next(state_.time, h, state_.lastStepSize, vec(in.tow), towVelocityInput, vec(in.towAcceleration),
                            in.towAccelerationGiven, towAcceleration);
     const bool externalEnd = model_.params().bottomEnd == UC_BOTTOM_EXTERNAL;
     if (externalEnd) {
-        loads_.end = end_.next(time_, h, lastStepSize_, vec(in.end), endVelocityInput, vec(in.endAcceleration),
+        loads_.end = state_.end.next(state_.time, h, state_.lastStepSize, vec(in.end), endVelocityInput, vec(in.endAcceleration),
                                in.endAccelerationGiven, endAcceleration);
     }
     loads_.torque = cable_torque(in);
 
-    if (restartPending_) {
-        statsBase_ = total_stats();
-        if (!integrator_->restart(time_, y_.data(), yp_.data(), error)) return false;
-        integratorStarted_ = true;
-        restartPending_ = false;
+    if (state_.restartPending) {
+        state_.statsBase = total_stats();
+        if (!integrator_->restart(state_.time, y_.data(), yp_.data(), error)) return false;
+        state_.integratorStarted = true;
+        state_.restartPending = false;
     }
-    const double tEnd = time_ + h;
-    const Vec3 proxyPosition = vec(outputs_.endPosition), proxyVelocity = vec(outputs_.endVelocity);
-    stepTensionMax_ = stepTensionMin_ = outputs_.towTension;  // the tension at the step's start
-    const RainflowCounter rainflowAtStart = rainflow_;
+    const double tEnd = state_.time + h;
+    const Vec3 proxyPosition = vec(state_.outputs.endPosition), proxyVelocity = vec(state_.outputs.endVelocity);
+    stepTensionMax_ = stepTensionMin_ = state_.outputs.towTension;  // the tension at the step's start
+    const RainflowCounter rainflowAtStart = state_.rainflow;
     winchTension_ = in.winchTension;
     const double topAtStart = model_.winch() ? model_.top_length() : 0.0;
     winchTopAtStep_ = topAtStart;
     if (!integrator_->advance(tEnd, error, in.stepBudget)) {
-        rainflow_ = rainflowAtStart;  // the state stays at the last communication point
-        restartPending_ = true;  // the state stays at the last communication point
-        winchLength_ = winchLengthAtStart;
-        winchRate_ = winchRateAtStart;
-        winchTop0_ = winchTop0AtStart;
-        winchStep_ = WinchStep::hold(winchRate_);
+        state_.rainflow = rainflowAtStart;  // the state stays at the last communication point
+        state_.restartPending = true;  // the state stays at the last communication point
+        state_.winchLength = winchLengthAtStart;
+        state_.winchRate = winchRateAtStart;
+        state_.winchTop0 = winchTop0AtStart;
+        state_.winchStep = WinchStep::hold(state_.winchRate);
         return false;
     }
     if (off_) {  // the constant-tension winch: its unknowns at the end of the step
         const double* end = integrator_->y();
-        winchRate_ = end[1];
-        winchTop0_ = end[0];
-        winchLength_ = winchLengthAtStart + (end[0] - topAtStart);
+        state_.winchRate = end[1];
+        state_.winchTop0 = end[0];
+        state_.winchLength = winchLengthAtStart + (end[0] - topAtStart);
     } else if (model_.winch()) {  // the length and the drum's rate at the end of the step
-        const double topAtEnd = winchTop0_ + winchStep_.length(h);
-        winchLength_ = winchLengthAtStart + (topAtEnd - topAtStart);
-        winchTop0_ = topAtEnd;
-        winchRate_ = winchStep_.rate1;
-        winchStep_ = WinchStep::hold(winchRate_);
+        const double topAtEnd = state_.winchTop0 + state_.winchStep.length(h);
+        state_.winchLength = winchLengthAtStart + (topAtEnd - topAtStart);
+        state_.winchTop0 = topAtEnd;
+        state_.winchRate = state_.winchStep.rate1;
+        state_.winchStep = WinchStep::hold(state_.winchRate);
     }
     const double* y = integrator_->y();
     const double* yp = integrator_->yp();
@@ -1012,14 +1027,14 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         y_[i] = y[i];
         yp_[i] = yp[i];
     }
-    time_ = tEnd;
-    tow_.advance(loads_.tow, towVelocityInput, towAcceleration, in.towAccelerationGiven != 0);
-    if (externalEnd) end_.advance(loads_.end, endVelocityInput, endAcceleration, in.endAccelerationGiven != 0);
-    lastStepSize_ = h;
+    state_.time = tEnd;
+    state_.tow.advance(loads_.tow, towVelocityInput, towAcceleration, in.towAccelerationGiven != 0);
+    if (externalEnd) state_.end.advance(loads_.end, endVelocityInput, endAcceleration, in.endAccelerationGiven != 0);
+    state_.lastStepSize = h;
     update_outputs();
     if (model_.params().bottomEnd == UC_BOTTOM_PROXY) proxy_output(h, proxyPosition, proxyVelocity, in);
-    outputs_.towTensionMax = std::max(stepTensionMax_, outputs_.towTension);
-    outputs_.towTensionMin = std::min(stepTensionMin_, outputs_.towTension);
+    state_.outputs.towTensionMax = std::max(stepTensionMax_, state_.outputs.towTension);
+    state_.outputs.towTensionMin = std::min(stepTensionMin_, state_.outputs.towTension);
     warn_of_compression();
     return true;
 }
@@ -1030,21 +1045,21 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
 // use (docs/robustness.md: the slack-snap case peaks at 95 kN two-sided and 406 kN tension-only).
 void CableSimulation::warn_of_compression() {
     const UCParams& p = model_.params();
-    if (!p.enableCompression || compressionWarned_ || !(outputs_.minTension < -1e-3 * tensionScale_)) return;
+    if (!p.enableCompression || state_.compressionWarned || !(state_.outputs.minTension < -1e-3 * state_.tensionScale)) return;
     double buckling = INFINITY;  // only where there is compression to judge
     for (int e = 0; e < model_.n_elements(); ++e) {
         const double l = model_.element_length(e);
         buckling = std::min(buckling, 9.8696044010893586 * model_.element_section(e).EI / (l * l));
     }
-    const double limit = std::max(buckling, 1e-3 * tensionScale_);
-    if (!(outputs_.minTension < -limit)) return;
-    compressionWarned_ = true;
+    const double limit = std::max(buckling, 1e-3 * state_.tensionScale);
+    if (!(state_.outputs.minTension < -limit)) return;
+    state_.compressionWarned = true;
     char text[400];
     std::snprintf(text, sizeof text,
                   "warning: at t = %.6g s the line carries %.4g N of axial compression (minTension), more than an "
                   "element of it carries before buckling (%.4g N): the two-sided axial law (enableCompression = "
                   "true) pushes where a cable goes slack; a line that can go slack wants enableCompression = false",
-                  time_, -outputs_.minTension, buckling);
+                  state_.time, -state_.outputs.minTension, buckling);
     add_event(text);
 }
 
@@ -1065,7 +1080,7 @@ CableSimulation::ElementScales CableSimulation::element_scales(int e, double rms
     const double l = e == 0 && model_.winch() ? model_.winch_nominal() : model_.element_length(e);
     const double EA = section.axial.EA;
     const double wave = l / std::sqrt(EA / section.fluid.massPerLength);
-    return {l, rms * model_.params().tensionTolerance * tensionScale_ / EA, std::max(section.axial.damping / EA, wave)};
+    return {l, rms * model_.params().tensionTolerance * state_.tensionScale / EA, std::max(section.axial.damping / EA, wave)};
 }
 
 bool CableSimulation::set_integrator_tolerances(std::string& error) {
@@ -1238,7 +1253,7 @@ int CableSimulation::jacobian(double t, const double* y, const double* yp, const
 }
 
 IntegratorStats CableSimulation::total_stats() const {
-    return integratorStarted_ ? statsBase_ + integrator_->stats() : statsBase_;
+    return state_.integratorStarted ? state_.statsBase + integrator_->stats() : state_.statsBase;
 }
 
 std::string CableSimulation::take_event() {
@@ -1249,8 +1264,8 @@ std::string CableSimulation::take_event() {
 
 void CableSimulation::set_winch_time(double t) {
     if (!model_.winch()) return;
-    model_.set_top_length(off_ ? y_[0] : winchTop0_ + winchStep_.length(t - time_));
-    model_.set_top_rate(off_ ? y_[1] : winchStep_.rate(t - time_));
+    model_.set_top_length(off_ ? y_[0] : state_.winchTop0 + state_.winchStep.length(t - state_.time));
+    model_.set_top_rate(off_ ? y_[1] : state_.winchStep.rate(t - state_.time));
 }
 
 WinchLimits CableSimulation::winch_limits() const {
@@ -1269,7 +1284,7 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
         return false;
     }
     const WinchLimits limits = winch_limits();
-    winchTop0_ = model_.top_length();
+    state_.winchTop0 = model_.top_length();
     if (p.winchMode == UC_WINCH_TENSION) return true;  // the rate follows the tension, step by step
     const double requested = in.winchRate;
     if (!std::isfinite(in.winchRateRate)) {
@@ -1279,36 +1294,36 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
         error = text;
         return false;
     }
-    winchStep_ = plan_winch_step(requested, winchRate_, winchLength_, h, limits, in.winchRateRate);
+    state_.winchStep = plan_winch_step(requested, state_.winchRate, state_.winchLength, h, limits, in.winchRateRate);
     // maxRate cut the command: log the arrival once.
-    if (winchStep_.rateLimited && !winchRateLimited_) {
+    if (state_.winchStep.rateLimited && !state_.winchRateLimited) {
         char text[300];
         std::snprintf(text, sizeof text,
                       "winch: at t = %.6g s winch.rate %.6g m/s is beyond winch.maxRate = %.6g m/s: the drum runs at "
                       "most at winch.maxRate (deployed length %.6g m)",
-                      time_, requested + in.winchRateRate * h, limits.maxRate, winchLength_);
+                      state_.time, requested + in.winchRateRate * h, limits.maxRate, state_.winchLength);
         add_event(text);
     }
-    winchRateLimited_ = winchStep_.rateLimited;
+    state_.winchRateLimited = state_.winchStep.rateLimited;
     // A length limit cut the request (not the speed limit): log the arrival once.
-    const int limit = winchStep_.limit;
-    if (limit != 0 && limit != winchLimit_) {
+    const int limit = state_.winchStep.limit;
+    if (limit != 0 && limit != state_.winchLimit) {
         char text[300];
         std::snprintf(text, sizeof text,
                       "winch: at t = %.6g s %s winch.%s = %.6g m: %s stops there (deployed length %.6g m at the "
                       "step's end; winch.rate %.6g m/s applied as %.6g m/s)",
-                      time_, limits.maxAcceleration > 0.0 ? "the drum brakes to stop at" : "the deployed length reaches",
+                      state_.time, limits.maxAcceleration > 0.0 ? "the drum brakes to stop at" : "the deployed length reaches",
                       limit > 0 ? "maxLength" : "minLength", limit > 0 ? limits.maxLength : limits.minLength,
-                      limit > 0 ? "paying out" : "hauling in", winchLength_ + winchStep_.length(h), requested,
-                      winchStep_.rate1);
+                      limit > 0 ? "paying out" : "hauling in", state_.winchLength + state_.winchStep.length(h), requested,
+                      state_.winchStep.rate1);
         add_event(text);
     }
-    winchLimit_ = limit;
-    if (limit != 0 && limits.maxAcceleration > 0.0 && winchRate_ != 0.0 && winchStep_.rate1 == 0.0) {
+    state_.winchLimit = limit;
+    if (limit != 0 && limits.maxAcceleration > 0.0 && state_.winchRate != 0.0 && state_.winchStep.rate1 == 0.0) {
         // braking along its envelope, the drum comes to rest at the limit within this step
         char text[200];
         std::snprintf(text, sizeof text, "winch: at t = %.6g s the drum stops at winch.%s = %.6g m",
-                      time_ + winchStep_.rampTime, limit > 0 ? "maxLength" : "minLength",
+                      state_.time + state_.winchStep.rampTime, limit > 0 ? "maxLength" : "minLength",
                       limit > 0 ? limits.maxLength : limits.minLength);
         add_event(text);
     }
@@ -1359,7 +1374,7 @@ bool CableSimulation::remesh(double change, std::string& error) {
 bool CableSimulation::remesh_once(RemeshAction action, bool balance, std::string& error) {
     const double top = model_.top_length(), nominal = model_.winch_nominal();
     const WinchMesh mesh = model_.winch_mesh();
-    expand_integrator_state(time_, y_.data(), yp_.data());
+    expand_integrator_state(state_.time, y_.data(), yp_.data());
     const int G = model_.n_global();
     std::vector<double> X, Xd, Xdd;
     WinchMesh next;
@@ -1389,9 +1404,9 @@ bool CableSimulation::remesh_once(RemeshAction action, bool balance, std::string
         next = WinchMesh{mesh.elements - 1, top + nominal};
     }
     rebuild(next);
-    winchTop0_ = next.topLength;
-    model_.set_top_length(winchTop0_);
-    model_.set_top_rate(off_ ? winchRate_ : winchStep_.rate0);
+    state_.winchTop0 = next.topLength;
+    model_.set_top_length(state_.winchTop0);
+    model_.set_top_rate(off_ ? state_.winchRate : state_.winchStep.rate0);
     if (balance) {
         // The tow node's tangent (unless clamped) and the first nodes below the top element (within
         // the first section): their equations of motion, with the accelerations the line had, decide
@@ -1406,7 +1421,7 @@ bool CableSimulation::remesh_once(RemeshAction action, bool balance, std::string
     if (!restart_from(error)) return false;
     if (off_) {
         y_[0] = next.topLength;
-        y_[1] = yp_[0] = winchRate_;
+        y_[1] = yp_[0] = state_.winchRate;
         yp_[1] = 0.0;
     }
     ++stateStamp_;
@@ -1414,7 +1429,7 @@ bool CableSimulation::remesh_once(RemeshAction action, bool balance, std::string
 }
 
 bool CableSimulation::restart_from(std::string& error) {
-    if (!solve_consistent_acceleration(model_, *staticSolver_, loads_, time_, q_, v_, a_)) {
+    if (!solve_consistent_acceleration(model_, *staticSolver_, loads_, state_.time, q_, v_, a_)) {
         error = "winch: the mass matrix of the line is singular";
         return false;
     }
@@ -1424,7 +1439,7 @@ bool CableSimulation::restart_from(std::string& error) {
         yp_[2 * (j + off_)] = v_[j];
         yp_[2 * (j + off_) + 1] = a_[j];
     }
-    restartPending_ = true;
+    state_.restartPending = true;
     return true;
 }
 
@@ -1481,9 +1496,9 @@ void CableSimulation::balance_dofs(int g, int count, std::vector<double>& X, con
 void CableSimulation::rebuild(const WinchMesh& mesh) { replace_model(CableModel(model_.params(), &mesh)); }
 
 void CableSimulation::replace_model(CableModel&& model) {
-    statsBase_ = total_stats();
-    integratorStarted_ = false;
-    restartPending_ = true;
+    state_.statsBase = total_stats();
+    state_.integratorStarted = false;
+    state_.restartPending = true;
     integrator_.reset();
     staticSolver_.reset();
     model_ = std::move(model);
@@ -1523,7 +1538,7 @@ bool CableSimulation::proxy_statics(double t0, const std::vector<double>& v, boo
     constexpr int kPasses = 8;
     double shortest = model_.element_length(0);
     for (const ElementRun& run : model_.runs()) shortest = std::min(shortest, run.elementLength);
-    const Vec3 target = end_.position;
+    const Vec3 target = state_.end.p();
     loads_.endSpring = 10.0 * model_.line().EA / shortest;
     loads_.endSpringAnchor = target;
     const int gN = model_.end_offset();
@@ -1545,7 +1560,7 @@ bool CableSimulation::proxy_statics(double t0, const std::vector<double>& v, boo
     // The spring's force becomes the proxy's estimated force: the residual, and so the equilibrium,
     // stay as solved (to round-off).
     const Vec3 spring = -loads_.endSpring * (Eigen::Map<const Vec3>(X_.data() + gN) - loads_.endSpringAnchor);
-    loads_.proxy.add(spring, proxy_flow(Eigen::Map<const Vec3>(X_.data() + gN), Eigen::Map<const Vec3>(Xd_.data() + gN), t0));
+    state_.proxy.add(spring, proxy_flow(Eigen::Map<const Vec3>(X_.data() + gN), Eigen::Map<const Vec3>(Xd_.data() + gN), t0));
     loads_.endSpring = 0.0;
     return true;
 }
@@ -1605,43 +1620,43 @@ void CableSimulation::proxy_output(double h, const Vec3& p0, const Vec3& v0, con
     const UCParams& p = model_.params();
     const PointBody& body = model_.body();
     const Vec3 weight(0.0, 0.0, -(body.mass - model_.fluid().rho * body.volume) * model_.fluid().gravity);
-    const Vec3 flow = proxy_flow(vec(outputs_.endPosition), vec(outputs_.endVelocity), time_);
+    const Vec3 flow = proxy_flow(vec(state_.outputs.endPosition), vec(state_.outputs.endVelocity), state_.time);
     Mat3 D;
-    const Vec3 estimate = loads_.proxy.force(flow, &D);
+    const Vec3 estimate = state_.proxy.force(flow, &D);
     if (h > 0.0) {
         const Mat3 M = body.inertia();
-        const Vec3 p1 = vec(outputs_.endPosition), v1 = vec(outputs_.endVelocity);
+        const Vec3 p1 = vec(state_.outputs.endPosition), v1 = vec(state_.outputs.endVelocity);
         const Vec3 follow = -(M / h) * bernoulli_phi(M.inverse() * D * h) * (v0 - v1) - estimate - weight;
         const Vec3 e = p0 - vec(in.end), ev = v0 - vec(in.endVelocity);
         const Vec3 departure = p1 - p0 - 0.5 * h * (v0 + v1);
         const Vec3 tracking = M * (p.proxyTrackingGain * (e + h * ev + departure) / (h * h) + p.proxyTrackingDamping * ev / h);
         const Vec3 force = follow + tracking;
-        for (int k = 0; k < 3; ++k) outputs_.endForce[k] = force[k];
+        for (int k = 0; k < 3; ++k) state_.outputs.endForce[k] = force[k];
         const double tau = std::max(p.proxyFilterTime, kProxyFilterSteps * h);
-        loads_.proxy.add(-h / (tau + h) * tracking, flow);
+        state_.proxy.add(-h / (tau + h) * tracking, flow);
     }
-    const Vec3 total = loads_.proxy.force(flow) + weight;
-    for (int k = 0; k < 3; ++k) outputs_.bodyForceEstimate[k] = total[k];
+    const Vec3 total = state_.proxy.force(flow) + weight;
+    for (int k = 0; k < 3; ++k) state_.outputs.bodyForceEstimate[k] = total[k];
 }
 
 void CableSimulation::update_outputs() {
-    expand_integrator_state(time_, y_.data(), yp_.data());
+    expand_integrator_state(state_.time, y_.data(), yp_.data());
     model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), &forces_);
-    compute_outputs(model_, X_.data(), Xd_.data(), forces_, loads_.torque, outputWork_, outputs_);
+    compute_outputs(model_, X_.data(), Xd_.data(), forces_, loads_.torque, outputWork_, state_.outputs);
     const IntegratorStats s = total_stats();
-    outputs_.nSteps = s.steps;
-    outputs_.nResidualEvals = s.residualEvals;
-    outputs_.nJacobianEvals = s.jacobianEvals;
-    outputs_.nNonlinearFailures = s.nonlinearFailures;
-    outputs_.nErrorTestFailures = s.errorTestFailures;
-    outputs_.tensionScale = tensionScale_;
-    outputs_.fatigueDamage = sn_.area > 0.0 ? rainflow_.damage(sn_) : 0.0;
-    outputs_.waveElevation = model_.sea().elevation(X_[0], X_[1], time_);
-    outputs_.unstretchedLength = model_.winch() ? winchLength_ : model_.line().length;
+    state_.outputs.nSteps = s.steps;
+    state_.outputs.nResidualEvals = s.residualEvals;
+    state_.outputs.nJacobianEvals = s.jacobianEvals;
+    state_.outputs.nNonlinearFailures = s.nonlinearFailures;
+    state_.outputs.nErrorTestFailures = s.errorTestFailures;
+    state_.outputs.tensionScale = state_.tensionScale;
+    state_.outputs.fatigueDamage = sn_.area > 0.0 ? state_.rainflow.damage(sn_) : 0.0;
+    state_.outputs.waveElevation = model_.sea().elevation(X_[0], X_[1], state_.time);
+    state_.outputs.unstretchedLength = model_.winch() ? state_.winchLength : model_.line().length;
 }
 
 size_t CableSimulation::state_size() const {
-    return sizeof(StateHeader) + sizeof(UCOutputs) + (2 * y_.size() + integrator_->history_size()) * sizeof(double);
+    return sizeof(StateHeader) + sizeof(LineState) + (2 * y_.size() + integrator_->history_size()) * sizeof(double);
 }
 
 void CableSimulation::save_state(void* buffer) {
@@ -1650,45 +1665,24 @@ void CableSimulation::save_state(void* buffer) {
     header.version = kStateVersion;
     header.nFree = model_.n_free();
     header.nElements = model_.n_elements();
-    header.time = time_;
-    const IntegratorStats s = total_stats();
-    const double stats[5] = {s.steps, s.residualEvals, s.jacobianEvals, s.nonlinearFailures, s.errorTestFailures};
-    tow_.save(header.tow);
-    end_.save(header.end);
-    header.lastStepSize = lastStepSize_;
-    const Vec3* frames[4] = {&twistRef_.topTangent, &twistRef_.topNormal, &twistRef_.endTangent, &twistRef_.endNormal};
-    for (int f = 0; f < 4; ++f)
-        for (int k = 0; k < 3; ++k) header.twistRef[3 * f + k] = (*frames[f])[k];
-    header.lastBeta = lastBeta_;
-    std::memcpy(header.stats, stats, sizeof stats);
-    // The integrator's history, when it belongs to this state: the run continues from here
-    // without a restart, exactly as a restored copy will (both evaluate a new Jacobian first).
-    const bool history = integratorStarted_ && !restartPending_;
-    header.historyValid = history ? 1.0 : 0.0;
-    header.tensionScale = tensionScale_;
-    header.rainflow = rainflow_;
     header.winchElements = model_.winch_mesh().elements;
     header.winchMeshTop = model_.winch_mesh().topLength;
-    header.winchLimit = winchLimit_;
-    header.winchLength = winchLength_;
-    header.winchRate = winchRate_;
-    header.winchTop0 = winchTop0_;
-    header.meshGraded = graded_ ? 1 : 0;
-    header.meshGrading = grading_;
-    header.proxyAlong = loads_.proxy.along;
-    header.proxyAcross = loads_.proxy.across;
-    for (int k = 0; k < 3; ++k) {
-        header.meshTow[k] = meshTow_[k];
-        header.meshFar[k] = meshFar_[k];
-        header.proxyConstant[k] = loads_.proxy.constant[k];
-    }
+    header.stateBytes = static_cast<std::int32_t>(sizeof(LineState));
+    // The integrator's history, when it belongs to this state: the run continues from here
+    // without a restart, exactly as a restored copy will (both evaluate a new Jacobian first).
+    // The saved statistics are the totals (the restored integrator's own are taken off again).
+    const bool history = state_.integratorStarted && !state_.restartPending;
+    LineState saved = state_;
+    saved.statsBase = total_stats();
+    saved.integratorStarted = history;
+    saved.restartPending = !history;
     historyBuffer_.assign(integrator_->history_size(), 0.0);
     if (history) integrator_->save_history(historyBuffer_.data());
     auto* out = static_cast<unsigned char*>(buffer);
     std::memcpy(out, &header, sizeof header);
     out += sizeof header;
-    std::memcpy(out, &outputs_, sizeof outputs_);
-    out += sizeof outputs_;
+    std::memcpy(out, &saved, sizeof saved);
+    out += sizeof saved;
     std::memcpy(out, y_.data(), y_.size() * sizeof(double));
     out += y_.size() * sizeof(double);
     std::memcpy(out, yp_.data(), yp_.size() * sizeof(double));
@@ -1701,97 +1695,73 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     bool& touched = changed ? *changed : ignored;
     touched = false;
     ++stateStamp_;  // the cached interface derivatives are stale from here on
-    if (model_.winch() && size >= sizeof(StateHeader)) {
+    const auto* in = static_cast<const unsigned char*>(buffer);
+    StateHeader header{};
+    LineState saved;
+    const bool complete = size >= sizeof(StateHeader) + sizeof(LineState);
+    if (complete) {
+        std::memcpy(&header, in, sizeof header);
+        std::memcpy(&saved, in + sizeof header, sizeof saved);
+    }
+    const bool ours = complete && header.magic == kStateMagic && header.version == kStateVersion &&
+                      header.stateBytes == static_cast<std::int32_t>(sizeof(LineState));
+    if (model_.winch() && ours) {
         // A state of a winch's line may have another mesh than the present one: take its mesh first.
-        StateHeader header;
-        std::memcpy(&header, buffer, sizeof header);
         const WinchMesh mesh = model_.winch_mesh();
-        if (header.magic == kStateMagic && header.version == kStateVersion && header.winchElements > 0 &&
-            header.winchElements <= 100000 && std::isfinite(header.winchMeshTop) && header.winchMeshTop > 0.0 &&
+        if (header.winchElements > 0 && header.winchElements <= 100000 && std::isfinite(header.winchMeshTop) &&
+            header.winchMeshTop > 0.0 &&
             (header.winchElements != mesh.elements || header.winchMeshTop != mesh.topLength)) {
             touched = true;
             rebuild(WinchMesh{header.winchElements, header.winchMeshTop});
         }
     }
-    if (size >= sizeof(StateHeader)) {
+    if (ours) {
         // A graded mesh is graded again for the tow point it was made for.
-        StateHeader header;
-        std::memcpy(&header, buffer, sizeof header);
-        const Vec3 tow(header.meshTow[0], header.meshTow[1], header.meshTow[2]);
-        const Vec3 far(header.meshFar[0], header.meshFar[1], header.meshFar[2]);
-        if (header.magic == kStateMagic && header.version == kStateVersion && tow.allFinite() && far.allFinite() &&
-            header.meshGrading >= 0 && header.meshGrading < kGradingCount &&
-            (header.meshGraded != (graded_ ? 1 : 0) || tow != meshTow_ || far != meshFar_ ||
-             header.meshGrading != grading_)) {
+        const Vec3 tow = vec(saved.meshTow), far = vec(saved.meshFar);
+        if (tow.allFinite() && far.allFinite() && saved.grading >= 0 && saved.grading < kGradingCount &&
+            (saved.graded != state_.graded || tow != vec(state_.meshTow) || far != vec(state_.meshFar) ||
+             saved.grading != state_.grading)) {
             touched = true;
-            grade_mesh(tow, far, header.meshGraded == 1, header.meshGrading);
+            grade_mesh(tow, far, saved.graded, saved.grading);
         }
     }
     if (size != state_size()) {
         error = "saved state has the wrong size for this cable (different nElements or end conditions)";
         return false;
     }
-    StateHeader header;
-    const auto* in = static_cast<const unsigned char*>(buffer);
-    std::memcpy(&header, in, sizeof header);
-    if (header.magic != kStateMagic || header.version != kStateVersion || header.nFree != model_.n_free() ||
-        header.nElements != model_.n_elements()) {
+    if (!ours || header.nFree != model_.n_free() || header.nElements != model_.n_elements()) {
         error = "saved state does not belong to this cable model (magic, version or sizes differ)";
         return false;
     }
     touched = true;
-    in += sizeof header;
-    std::memcpy(&outputs_, in, sizeof outputs_);
-    in += sizeof outputs_;
+    in += sizeof header + sizeof saved;
     std::memcpy(y_.data(), in, y_.size() * sizeof(double));
     in += y_.size() * sizeof(double);
     std::memcpy(yp_.data(), in, yp_.size() * sizeof(double));
     in += yp_.size() * sizeof(double);
-    tensionScale_ = header.tensionScale;
-    rainflow_ = header.rainflow;
-    winchLimit_ = header.winchLimit;
-    winchLength_ = header.winchLength;
-    winchRate_ = header.winchRate;
-    winchTop0_ = header.winchTop0;
-    winchStep_ = WinchStep::hold(off_ ? 0.0 : winchRate_);
-    if (tensionScale_ > 0.0 && !set_integrator_tolerances(error)) {  // 0: saved before initialization
-        restartPending_ = true;
+    const bool history = saved.integratorStarted;
+    state_ = saved;
+    if (state_.tensionScale > 0.0 && !set_integrator_tolerances(error)) {  // 0: saved before initialization
+        state_.restartPending = true;
         return false;
     }
-    if (header.historyValid != 0.0) {
+    if (history) {
         historyBuffer_.resize(integrator_->history_size());
         std::memcpy(historyBuffer_.data(), in, historyBuffer_.size() * sizeof(double));
         if (!integrator_->restore_history(historyBuffer_.data(), error)) {
-            restartPending_ = true;
+            state_.restartPending = true;
             return false;
         }
     }
-    time_ = header.time;
-    set_winch_time(time_);
-    tow_.load(header.tow);
-    end_.load(header.end);
-    loads_.proxy.constant = vec(header.proxyConstant);
-    loads_.proxy.along = header.proxyAlong;
-    loads_.proxy.across = header.proxyAcross;
-    Vec3* frames[4] = {&twistRef_.topTangent, &twistRef_.topNormal, &twistRef_.endTangent, &twistRef_.endNormal};
-    for (int f = 0; f < 4; ++f) *frames[f] = vec(header.twistRef + 3 * f);
-    lastBeta_ = header.lastBeta;
-    lastStepSize_ = header.lastStepSize;
-    statsBase_.steps = header.stats[0];
-    statsBase_.residualEvals = header.stats[1];
-    statsBase_.jacobianEvals = header.stats[2];
-    statsBase_.nonlinearFailures = header.stats[3];
-    statsBase_.errorTestFailures = header.stats[4];
-    integratorStarted_ = header.historyValid != 0.0;
-    restartPending_ = !integratorStarted_;
-    if (integratorStarted_) {
+    set_winch_time(state_.time);
+    if (history) {
         // The restored integrator carries the saver's counters since its last restart.
         const IntegratorStats since = integrator_->stats();
-        statsBase_.steps -= since.steps;
-        statsBase_.residualEvals -= since.residualEvals;
-        statsBase_.jacobianEvals -= since.jacobianEvals;
-        statsBase_.nonlinearFailures -= since.nonlinearFailures;
-        statsBase_.errorTestFailures -= since.errorTestFailures;
+        state_.statsBase.steps -= since.steps;
+        state_.statsBase.residualEvals -= since.residualEvals;
+        state_.statsBase.jacobianEvals -= since.jacobianEvals;
+        state_.statsBase.nonlinearFailures -= since.nonlinearFailures;
+        state_.statsBase.errorTestFailures -= since.errorTestFailures;
     }
     return true;
 }
@@ -1806,7 +1776,7 @@ bool CableSimulation::prepare_derivatives(std::string& error) {
                 "length is an unknown the linearization does not carry";
         return false;
     }
-    if (!(lastStepSize_ > 0.0)) {
+    if (!(state_.lastStepSize > 0.0)) {
         error = "the interface derivatives are over the next communication step, taken as long as the last one: "
                 "they are available after the first fmi2DoStep";
         return false;
@@ -1825,7 +1795,7 @@ bool CableSimulation::prepare_derivatives(std::string& error) {
     C.clear();
     M.clear();
     // The cable's Jacobian at its present state.
-    expand_integrator_state(time_, y_.data(), yp_.data());
+    expand_integrator_state(state_.time, y_.data(), yp_.data());
     auto add = [&](int i, int k, double dq, double dv, double da) {
         K.add(i, k, dq);
         C.add(i, k, dv);
@@ -1843,17 +1813,17 @@ bool CableSimulation::prepare_derivatives(std::string& error) {
         // The force on the body (proxy_output) moves with the proxy's position p1 and velocity v1 at
         // t + h as follow + tracking do: dF = [(M / h) phi + D - M alpha / (2 h)] dv1 + (M alpha / h^2) dp1
         // (D the estimate's drag derivative; phi's own change with D left out).
-        const double h = lastStepSize_;
+        const double h = state_.lastStepSize;
         const Mat3 Mb = model_.body().inertia();
         const double alpha = model_.params().proxyTrackingGain;
         Mat3 D;
-        loads_.proxy.force(proxy_flow(vec(outputs_.endPosition), vec(outputs_.endVelocity), time_), &D);
+        state_.proxy.force(proxy_flow(vec(state_.outputs.endPosition), vec(state_.outputs.endVelocity), state_.time), &D);
         derivativeProxyVelocity_ = Mb / h * bernoulli_phi(Mb.inverse() * D * h) + D - Mb * alpha / (2.0 * h);
         derivativeProxyPosition_ = Mb * alpha / (h * h);
     }
     // The Newton matrix of one BDF2 substep, K + c C + c^2 M, factored for both substep sizes.
     for (int level = 0; level < 2; ++level) {
-        const double c = 1.5 * (kDerivativeSubsteps << level) / lastStepSize_;
+        const double c = 1.5 * (kDerivativeSubsteps << level) / state_.lastStepSize;
         UnpivotedBandLU& A = *derivativeLU_[level];
         double* a = A.values();
         const double *k = K.values(), *cc = C.values(), *m = M.values();
@@ -1870,7 +1840,7 @@ bool CableSimulation::prepare_derivatives(std::string& error) {
 
 void CableSimulation::derivative_response(const double seed[kDerivativeInputs], double out[6]) {
     const int n = model_.n_free(), N = model_.n_elements(), bw = model_.free_bandwidth();
-    const double h = lastStepSize_;
+    const double h = state_.lastStepSize;
     const bool externalEnd = model_.params().bottomEnd == UC_BOTTOM_EXTERNAL;
     const bool proxyEnd = model_.params().bottomEnd == UC_BOTTOM_PROXY;
     // bottomEnd 4: the body's reported state enters the force on it through the tracking force alone
@@ -1903,7 +1873,7 @@ void CableSimulation::derivative_response(const double seed[kDerivativeInputs], 
             tracking -= seed[s] * gain * model_.body().inertia().col(comp);
         }
         if (!tow && !externalEnd) continue;  // the end inputs act on the cable only at a driven far end
-        const DrivenEnd& end = tow ? tow_ : end_;
+        const DrivenEndState& end = tow ? state_.tow : state_.end;
         const int gp = (tow ? 0 : model_.end_offset()) + comp;
         double dp1 = 1.0, dv1 = 0.0, da1 = 0.0;
         if (kind == 2) {  // an acceleration as the master gives it (held over the step)

@@ -18,6 +18,7 @@
 #include "line/rainflow.h"
 #include "line/torsion.h"
 #include "line/winch.h"
+#include "line/line_state.h"
 
 namespace uc {
 
@@ -25,26 +26,16 @@ namespace uc {
 // in api/cable_api.h says exactly how): 0 when they agree within the allowance.
 double acceleration_disagreement(double a0, double a1, double dv, double h);
 
-// A driven end in a saved state (plain doubles, fixed layout).
-struct DrivenEndState {
-    double position[3], velocity[3], acceleration[3], lastVelocityInput[3], lastAccelerationInput[3];
-    double lastAccelerationGiven;
-};
-
-// A prescribed end driven by the master's inputs (the tow point; the far end of bottomEnd 3):
-// where its trajectory stands at the current time, and the inputs of the previous step.
+// A driven end as Eigen vectors (a mooring system's body references): DrivenEndState's steps.
 struct DrivenEnd {
     Vec3 position = Vec3::Zero(), velocity = Vec3::Zero(), acceleration = Vec3::Zero();
     Vec3 lastVelocityInput = Vec3::Zero(), lastAccelerationInput = Vec3::Zero();
     bool lastAccelerationGiven = false;
 
     void reset(const Vec3& p, const Vec3& v, const Vec3& a, bool accelerationGiven);
-    // The trajectory over [t, t + h] towards the inputs (position, velocity and, if given, the
-    // acceleration) extrapolated to t + h; lastStep is the previous step's size (0: none).
-    // accelerationGiven: as UCInputs.towAccelerationGiven (0, or bit 0 and UC_ACCELERATION_AS_INPUT bits).
+    // As DrivenEndState::next and advance.
     TowTrajectory next(double t, double h, double lastStep, const Vec3& positionInput, const Vec3& velocityInput,
                        const Vec3& accelerationInput, int accelerationGiven, Vec3& acceleration) const;
-    // After a successful step along traj with these inputs.
     void advance(const TowTrajectory& traj, const Vec3& velocityInput, const Vec3& acceleration,
                  bool accelerationGiven);
     void save(DrivenEndState& s) const;
@@ -59,9 +50,9 @@ public:
     CableSimulation& operator=(const CableSimulation&) = delete;
 
     const CableModel& model() const { return model_; }
-    double time() const { return time_; }
-    const UCOutputs& outputs() const { return outputs_; }
-    const Vec3& tow_position() const { return tow_.position; }
+    double time() const { return state_.time; }
+    const UCOutputs& outputs() const { return state_.outputs; }
+    Vec3 tow_position() const { return state_.tow.p(); }
 
     bool initialize(double t0, const UCInputs& in, std::string& error);
     bool step(double t, double h, const UCInputs& in, std::string& error);
@@ -220,35 +211,13 @@ private:
     std::unique_ptr<Integrator> integrator_;
     std::unique_ptr<BandSolver> staticSolver_;
 
-    // --- state (what save/restore copies) ---
-    double time_ = 0.0;
-    DrivenEnd tow_;             // the tow point
-    DrivenEnd end_;             // the far end of bottomEnd 3 (external)
-    // bottomEnd 4: the estimate of the external body's other forces is loads_.proxy (saved)
-    double lastStepSize_ = 0.0; // of the previous step (0: no input history yet)
-    TwistReference twistRef_;  // end frames at initialization (torqueMode 2)
-    double lastBeta_ = 0.0;    // geometric twist at the last evaluation, for unwrapping past +-pi
-    std::vector<double> y_, yp_;  // IDA vectors at time_: y = [q_0, v_0, q_1, v_1, ...]
-    IntegratorStats statsBase_;   // statistics folded in at integrator restarts
-    bool integratorStarted_ = false;  // the integrator's own counters belong to this state
-    UCOutputs outputs_{};
-    double tensionScale_ = 0.0;  // of the error control, fixed at initialization
-    RainflowCounter rainflow_;   // online fatigue count of the tow tension (sn_.area > 0)
-    bool restartPending_ = true;
-    // the winch: over a step from time_ the top element's length is winchTop0_ + winchStep_.length(t - time_)
-    double winchLength_ = 0.0;  // deployed unstretched length at time_
-    double winchRate_ = 0.0, winchTop0_ = 0.0;  // the rate at time_ (rate winch: the drum's)
-    WinchStep winchStep_;       // the rate winch's drum over the step from time_ (a hold between steps)
-    int winchLimit_ = 0;        // -1 / +1: at the shortest / longest length (logged once per arrival)
-    bool winchRateLimited_ = false;  // winch.maxRate cut the command (logged once per arrival)
-    std::string event_;
-    bool compressionWarned_ = false;  // the compression warning is given once per instance
-    // the mesh graded by the static profile at initialization (empty: each section's own), and the
-    // tow point it was graded for (a restored state's mesh is graded again from it)
-    bool graded_ = false;
-    int grading_ = 0;  // which of kGradings graded it (the first whose equilibrium passed the check)
-    StaticLayout layout_;
-    Vec3 meshTow_ = Vec3::Zero(), meshFar_ = Vec3::Zero();
+    // --- state (what save/restore copies: line/line_state.h) ---
+    LineState state_;
+    std::vector<double> y_, yp_;  // IDA vectors at state_.time: y = [q_0, v_0, q_1, v_1, ...]
+
+    // --- derived at initialization or from the state (not saved) ---
+    std::string event_;  // the step's event text (taken by the caller; a message, not state)
+    StaticLayout layout_;  // the graded mesh's nodes (made again from state_.grading at a restore)
     bool profileApplies_ = false;  // an anchored line, or a far end held at rest
     // The static profile for the ends the model holds (grade_mesh solves it once per initialization).
     struct ProfileState {
