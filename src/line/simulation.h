@@ -1,6 +1,6 @@
-// simulation.h - one cable in time: the immutable CableModel plus the mutable state (time,
-// IDA vectors, prescribed-end state, statistics, outputs) and the workspace, allocated once.
-// Save/restore of the state is a plain byte copy (the MuJoCo mjModel/mjData split).
+// simulation.h - one cable in time: the CableModel plus the evolving state (LineState, line/line_state.h,
+// and the IDA vectors) and the workspace, allocated once. Save/restore of the state is a plain byte
+// copy (the MuJoCo mjModel/mjData split).
 #pragma once
 
 #include <memory>
@@ -89,6 +89,15 @@ public:
     Integrator& integrator() { return *integrator_; }
 
 private:
+    // The methods below live in one file per stage of the line:
+    //   simulation.cpp             life cycle, the step, residual and Jacobian, outputs
+    //   start.cpp                  initialize: checks, static profile, graded mesh, statics, mesh advice
+    //   driven_end.cpp             DrivenEndState / DrivenEnd, acceleration_disagreement
+    //   error_control.cpp          tolerances, element scales, projected error blocks
+    //   winch_mesh.cpp             the winch's rate, the constant-tension winch, remesh and balance
+    //   proxy_end.cpp              bottomEnd 4: proxy statics, the force on the body, the estimate
+    //   interface_derivatives.cpp  the interface derivatives
+    //   state.cpp                  save_state / restore_state
     int residual(double t, const double* y, const double* yp, double* r) override;
     int jacobian(double t, const double* y, const double* yp, const EntrySink& sink) override;
     void step_completed(double t, const double* y, const double* yp) override;
