@@ -105,7 +105,7 @@ Mat3 bernoulli_phi(const Mat3& A) {
 // the tracking force (a low-pass of time constant proxy.filterTime, at least kProxyFilterSteps
 // steps). docs/cosimulation.md derives the gains' stability. h = 0: at initialization (the cable
 // force alone).
-void CableSimulation::proxy_output(double h, const Vec3& p0, const Vec3& v0, const UCInputs& in) {
+void CableSimulation::proxy_output(double h, const Vec3& p0, const Vec3& v0, const EndMotion& external) {
     const UCParams& p = model_.params();
     const PointBody& body = model_.body();
     const Vec3 weight(0.0, 0.0, -(body.mass - model_.fluid().rho * body.volume) * model_.fluid().gravity);
@@ -116,7 +116,7 @@ void CableSimulation::proxy_output(double h, const Vec3& p0, const Vec3& v0, con
         const Mat3 M = body.inertia();
         const Vec3 p1 = vec(state_.outputs.endPosition), v1 = vec(state_.outputs.endVelocity);
         const Vec3 follow = -(M / h) * bernoulli_phi(M.inverse() * D * h) * (v0 - v1) - estimate - weight;
-        const Vec3 e = p0 - vec(in.end), ev = v0 - vec(in.endVelocity);
+        const Vec3 e = p0 - external.position, ev = v0 - external.velocity;
         const Vec3 departure = p1 - p0 - 0.5 * h * (v0 + v1);
         const Vec3 tracking = M * (p.proxyTrackingGain * (e + h * ev + departure) / (h * h) + p.proxyTrackingDamping * ev / h);
         const Vec3 force = follow + tracking;

@@ -30,10 +30,33 @@ IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
 }  // namespace
 
 // The linearization of the end load (12 inputs) is finite.
-bool end_load_linearization_finite(const UCInputs& in) {
-    const double* rows[3] = {in.endLoadDamping.x, in.endLoadDamping.y, in.endLoadDamping.z};
+LineEnvironment line_environment(const UCInputs& in) {
+    LineEnvironment env;
+    for (int k = 0; k < 2; ++k) {
+        env.current[k] = in.current[k];
+        env.currentRate[k] = in.currentRate[k];
+    }
+    env.currentScale = in.currentScale;
+    env.currentScaleRate = in.currentScaleRate;
+    for (int k = 0; k < 3; ++k) {
+        env.endLoad[k] = in.endLoad[k];
+        env.endLoadVelocity[k] = in.endLoadVelocity[k];
+        env.endCouple[k] = in.endCouple[k];
+    }
+    env.endLoadDamping = in.endLoadDamping;
+    env.torque = in.torque;
+    env.twist = in.twist;
+    env.winchRate = in.winchRate;
+    env.winchRateRate = in.winchRateRate;
+    env.winchTension = in.winchTension;
+    env.stepBudget = in.stepBudget;
+    return env;
+}
+
+bool end_load_linearization_finite(const LineEnvironment& env) {
+    const double* rows[3] = {env.endLoadDamping.x, env.endLoadDamping.y, env.endLoadDamping.z};
     for (int i = 0; i < 3; ++i)
-        if (!std::isfinite(in.endLoadVelocity[i]) || !std::isfinite(rows[i][0]) || !std::isfinite(rows[i][1]) ||
+        if (!std::isfinite(env.endLoadVelocity[i]) || !std::isfinite(rows[i][0]) || !std::isfinite(rows[i][1]) ||
             !std::isfinite(rows[i][2]))
             return false;
     return true;
@@ -90,30 +113,30 @@ CableSimulation::~CableSimulation() {
     if (context_) SUNContext_Free(&context_);
 }
 
-void CableSimulation::set_environment(const UCInputs& in) {
-    loads_.current.uniform = Vec3(in.current[0], in.current[1], 0.0);
-    loads_.current.scale = in.currentScale;
+void CableSimulation::set_environment(const LineEnvironment& env) {
+    loads_.current.uniform = Vec3(env.current[0], env.current[1], 0.0);
+    loads_.current.scale = env.currentScale;
     loads_.current.profile = &model_.current_profile();
     loads_.current.sea = &model_.sea();
-    loads_.endLoad = vec(in.endLoad);
-    loads_.endLoadVelocity = vec(in.endLoadVelocity);
-    const double* rows[3] = {in.endLoadDamping.x, in.endLoadDamping.y, in.endLoadDamping.z};
+    loads_.endLoad = vec(env.endLoad);
+    loads_.endLoadVelocity = vec(env.endLoadVelocity);
+    const double* rows[3] = {env.endLoadDamping.x, env.endLoadDamping.y, env.endLoadDamping.z};
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) loads_.endLoadDamping(i, j) = rows[i][j];
-    loads_.endCouple = vec(in.endCouple);
+    loads_.endCouple = vec(env.endCouple);
 }
 
-double CableSimulation::cable_torque(const UCInputs& in) {
+double CableSimulation::cable_torque(const LineEnvironment& env) {
     const UCParams& p = model_.params();
     if (!p.enableTorsion || p.torqueMode == UC_TORQUE_FREE) return 0.0;
-    if (p.torqueMode == UC_TORQUE_PRESCRIBED) return in.torque;
+    if (p.torqueMode == UC_TORQUE_PRESCRIBED) return env.torque;
     // Mode 2: H = GJ (Phi - beta) / L with beta from the current shape, unwrapped continuously.
     free_state(q_, v_, a_);
     model_.expand(q_.data(), v_.data(), a_.data(), loads_, state_.time, X_.data(), Xd_.data(), Xdd_.data());
     const double raw = geometric_twist(model_, X_.data(), state_.twistRef);
     const double kTwoPi = 6.28318530717958647692;
     state_.lastBeta += std::remainder(raw - state_.lastBeta, kTwoPi);
-    return model_.torque_for_twist(in.twist - state_.lastBeta);
+    return model_.torque_for_twist(env.twist - state_.lastBeta);
 }
 
 void CableSimulation::add_event(const std::string& text) {
@@ -131,18 +154,25 @@ void CableSimulation::step_completed(double t, const double* y, const double* yp
 }
 
 bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::string& error) {
+    const EndMotion tow{vec(in.tow), vec(in.towVelocity), vec(in.towAcceleration), in.towAccelerationGiven};
+    const EndMotion far{vec(in.end), vec(in.endVelocity), vec(in.endAcceleration), in.endAccelerationGiven};
+    return step(h, tow, far, line_environment(in), error);
+}
+
+bool CableSimulation::step(double h, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env,
+                           std::string& error) {
     ++stateStamp_;  // the cached interface derivatives are stale from here on
-    for (double v : {in.tow[0], in.tow[1], in.tow[2], in.towVelocity[0], in.towVelocity[1], in.towVelocity[2],
-                     in.towAcceleration[0], in.towAcceleration[1], in.towAcceleration[2], in.endLoad[0],
-                     in.endLoad[1], in.endLoad[2], in.endCouple[0], in.endCouple[1], in.endCouple[2],
-                     in.current[0], in.current[1], in.end[0], in.end[1], in.end[2], in.endVelocity[0],
-                     in.endVelocity[1], in.endVelocity[2], h}) {
+    for (double v : {tow.position[0], tow.position[1], tow.position[2], tow.velocity[0], tow.velocity[1], tow.velocity[2],
+                     tow.acceleration[0], tow.acceleration[1], tow.acceleration[2], env.endLoad[0],
+                     env.endLoad[1], env.endLoad[2], env.endCouple[0], env.endCouple[1], env.endCouple[2],
+                     env.current[0], env.current[1], far.position[0], far.position[1], far.position[2], far.velocity[0],
+                     far.velocity[1], far.velocity[2], h}) {
         if (!std::isfinite(v)) {
             error = "inputs and the step size must be finite numbers";
             return false;
         }
     }
-    if (!end_load_linearization_finite(in)) {
+    if (!end_load_linearization_finite(env)) {
         error = "endLoadVelocity and endLoadDamping inputs must be finite numbers";
         return false;
     }
@@ -156,11 +186,11 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     }
     const double winchLengthAtStart = state_.winchLength, winchRateAtStart = state_.winchRate;
     const double winchTop0AtStart = state_.winchTop0;
-    set_environment(in);
-    loads_.current.rate = Vec3(in.currentRate[0], in.currentRate[1], 0.0);
+    set_environment(env);
+    loads_.current.rate = Vec3(env.currentRate[0], env.currentRate[1], 0.0);
     loads_.current.rateStart = state_.time;
-    loads_.current.scaleRate = in.currentScaleRate;
-    if (!std::isfinite(in.currentScale) || !std::isfinite(in.currentScaleRate)) {
+    loads_.current.scaleRate = env.currentScaleRate;
+    if (!std::isfinite(env.currentScale) || !std::isfinite(env.currentScaleRate)) {
         error = "currentScale and its input derivative must be finite numbers";
         return false;
     }
@@ -175,14 +205,14 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         loads_.tow = TowTrajectory::at_rest_in_time(state_.tow.p(), state_.tow.v(), state_.tow.a(), state_.time);
         loads_.end = TowTrajectory::at_rest_in_time(state_.end.p(), state_.end.v(), state_.end.a(), state_.time);
     }
-    if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
+    if (!std::isfinite(env.torque) || !std::isfinite(env.twist)) {
         error = "torque and twist inputs must be finite numbers";
         return false;
     }
     if (model_.winch()) {
-        loads_.torque = cable_torque(in);
+        loads_.torque = cable_torque(env);
         set_winch_time(state_.time);
-        if (!winch_rate(in, h, error)) return false;
+        if (!winch_rate(env, h, error)) return false;
         // how much the top element changes over the step (the constant-tension winch: at worst twice
         // its present haul-in rate)
         const double change = off_ ? std::min(0.0, 2.0 * y_[1] * h) : state_.winchStep.length(h);
@@ -198,16 +228,16 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     }
     // Each driven end follows a quintic in time from where the previous step left it (position,
     // velocity and acceleration: it never jumps) to the master's inputs extrapolated to t + h.
-    const Vec3 towVelocityInput = vec(in.towVelocity), endVelocityInput = vec(in.endVelocity);
+    const Vec3 towVelocityInput = tow.velocity, endVelocityInput = far.velocity;
     Vec3 towAcceleration, endAcceleration;
-    loads_.tow = state_.tow.next(state_.time, h, state_.lastStepSize, vec(in.tow), towVelocityInput, vec(in.towAcceleration),
-                           in.towAccelerationGiven, towAcceleration);
+    loads_.tow = state_.tow.next(state_.time, h, state_.lastStepSize, tow.position, towVelocityInput, tow.acceleration,
+                           tow.accelerationGiven, towAcceleration);
     const bool externalEnd = model_.params().bottomEnd == UC_BOTTOM_EXTERNAL;
     if (externalEnd) {
-        loads_.end = state_.end.next(state_.time, h, state_.lastStepSize, vec(in.end), endVelocityInput, vec(in.endAcceleration),
-                               in.endAccelerationGiven, endAcceleration);
+        loads_.end = state_.end.next(state_.time, h, state_.lastStepSize, far.position, endVelocityInput, far.acceleration,
+                               far.accelerationGiven, endAcceleration);
     }
-    loads_.torque = cable_torque(in);
+    loads_.torque = cable_torque(env);
 
     if (state_.restartPending) {
         state_.statsBase = total_stats();
@@ -219,10 +249,10 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
     const Vec3 proxyPosition = vec(state_.outputs.endPosition), proxyVelocity = vec(state_.outputs.endVelocity);
     stepTensionMax_ = stepTensionMin_ = state_.outputs.towTension;  // the tension at the step's start
     const RainflowCounter rainflowAtStart = state_.rainflow;
-    winchTension_ = in.winchTension;
+    winchTension_ = env.winchTension;
     const double topAtStart = model_.winch() ? model_.top_length() : 0.0;
     winchTopAtStep_ = topAtStart;
-    if (!integrator_->advance(tEnd, error, in.stepBudget)) {
+    if (!integrator_->advance(tEnd, error, env.stepBudget)) {
         state_.rainflow = rainflowAtStart;  // the state stays at the last communication point
         state_.restartPending = true;  // the state stays at the last communication point
         state_.winchLength = winchLengthAtStart;
@@ -250,11 +280,11 @@ bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::stri
         yp_[i] = yp[i];
     }
     state_.time = tEnd;
-    state_.tow.advance(loads_.tow, towVelocityInput, towAcceleration, in.towAccelerationGiven != 0);
-    if (externalEnd) state_.end.advance(loads_.end, endVelocityInput, endAcceleration, in.endAccelerationGiven != 0);
+    state_.tow.advance(loads_.tow, towVelocityInput, towAcceleration, tow.accelerationGiven != 0);
+    if (externalEnd) state_.end.advance(loads_.end, endVelocityInput, endAcceleration, far.accelerationGiven != 0);
     state_.lastStepSize = h;
     update_outputs();
-    if (model_.params().bottomEnd == UC_BOTTOM_PROXY) proxy_output(h, proxyPosition, proxyVelocity, in);
+    if (model_.params().bottomEnd == UC_BOTTOM_PROXY) proxy_output(h, proxyPosition, proxyVelocity, far);
     state_.outputs.towTensionMax = std::max(stepTensionMax_, state_.outputs.towTension);
     state_.outputs.towTensionMin = std::min(stepTensionMin_, state_.outputs.towTension);
     warn_of_compression();

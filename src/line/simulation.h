@@ -42,6 +42,27 @@ struct DrivenEnd {
     void load(const DrivenEndState& s);
 };
 
+// One end's kinematics for a step: the master's inputs for it at the step's end (what UCInputs holds
+// in tow*, or end* for the far end).
+struct EndMotion {
+    Vec3 position = Vec3::Zero(), velocity = Vec3::Zero(), acceleration = Vec3::Zero();
+    int accelerationGiven = 0;  // as UCInputs.towAccelerationGiven: 0, or bit 0 and UC_ACCELERATION_AS_INPUT bits
+};
+
+// What else acts on a line over a step, beside its ends' motion (the UCInputs fields of the same names;
+// a mooring system gives every line the master's).
+struct LineEnvironment {
+    double current[2] = {0.0, 0.0}, currentRate[2] = {0.0, 0.0};  // [m/s], [m/s2]
+    double currentScale = 0.0, currentScaleRate = 0.0;
+    double endLoad[3] = {0.0, 0.0, 0.0}, endLoadVelocity[3] = {0.0, 0.0, 0.0}, endCouple[3] = {0.0, 0.0, 0.0};
+    UCEndLoadDamping endLoadDamping{};
+    double torque = 0.0, twist = 0.0;
+    double winchRate = 0.0, winchRateRate = 0.0, winchTension = 0.0;
+    int stepBudget = 0;
+};
+// The environment part of the FMU's inputs.
+LineEnvironment line_environment(const UCInputs& in);
+
 class CableSimulation : public SecondOrderSystem {
 public:
     explicit CableSimulation(const UCParams& params);
@@ -55,7 +76,12 @@ public:
     Vec3 tow_position() const { return state_.tow.p(); }
 
     bool initialize(double t0, const UCInputs& in, std::string& error);
+    // The FMU's step: unpacks in into the ends' motion and the environment and takes step below.
     bool step(double t, double h, const UCInputs& in, std::string& error);
+    // One communication step of h seconds from time() with the tow end and the far end (its motion
+    // acts where the far end is driven: bottomEnd 3, and the external body of bottomEnd 4) moving
+    // as given, in the environment env.
+    bool step(double h, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env, std::string& error);
     // The event of the last step to log (a winch limit reached), or empty; cleared by the call.
     std::string take_event();
 
@@ -104,7 +130,7 @@ private:
     // q_, v_, a_ and the global X_, Xd_, Xdd_ from the integrator's y, y' at time t.
     void expand_integrator_state(double t, const double* y, const double* yp);
 
-    void set_environment(const UCInputs& in);
+    void set_environment(const LineEnvironment& env);
     // True where the guess is the line's static profile (near the equilibrium).
     bool initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
     // The far end is held at the start: anchored, external, or the proxy of an external body whose
@@ -116,7 +142,7 @@ private:
     // bottomEnd 4, after a step from the proxy's state (p0, v0): the force on the external body
     // (the force that takes it along the proxy's velocity, plus the tracking force) and the
     // estimate's update.
-    void proxy_output(double h, const Vec3& p0, const Vec3& v0, const UCInputs& in);
+    void proxy_output(double h, const Vec3& p0, const Vec3& v0, const EndMotion& external);
     Vec3 proxy_flow(const Vec3& r, const Vec3& v, double t) const;
     // The static profile of the line from the tow point to its held far end (src/model/line_profile.h),
     // bending, current and waves left out; false where it does not apply, with the reason in why.
@@ -173,7 +199,7 @@ private:
     ElementScales element_scales(int e, double rms) const;
     // The projected error blocks of projectedErrorControl (empty when it is off).
     std::vector<Integrator::ProjectedBlock> projected_blocks() const;
-    double cable_torque(const UCInputs& in);
+    double cable_torque(const LineEnvironment& env);
     IntegratorStats total_stats() const;
     // The winch (docs/winch.md): the top element's length at time t; the rate for the step ahead;
     // splitting or merging the top element at a communication point; a new mesh, with everything
@@ -190,7 +216,7 @@ private:
     // the line's tangent there (R: the top element's residual at the expanded state X_), negative
     // in compression, so that a compressed line is hauled in, never paid out.
     double line_tension(const double* R) const;
-    bool winch_rate(const UCInputs& in, double h, std::string& error);
+    bool winch_rate(const LineEnvironment& env, double h, std::string& error);
     WinchLimits winch_limits() const;
     bool remesh(double change, std::string& error);  // change: of the top element over the step ahead
     bool remesh_once(RemeshAction action, bool balance, std::string& error);

@@ -4,13 +4,14 @@
 
 #include "core/types.h"
 #include "model/parameters.h"
+#include "line/simulation.h"
 
 namespace uc {
 
 inline Vec3 vec(const double v[3]) { return Vec3(v[0], v[1], v[2]); }
 
 // The linearization of the end load (12 inputs) is finite (simulation.cpp).
-bool end_load_linearization_finite(const UCInputs& in);
+bool end_load_linearization_finite(const LineEnvironment& env);
 
 // phi(A) = A (e^A - I)^-1 (proxy_end.cpp).
 Mat3 bernoulli_phi(const Mat3& A);

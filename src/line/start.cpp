@@ -464,11 +464,11 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
             return false;
         }
     }
-    if (!end_load_linearization_finite(in)) {
+    if (!end_load_linearization_finite(line_environment(in))) {
         error = "endLoadVelocity and endLoadDamping inputs must be finite numbers";
         return false;
     }
-    set_environment(in);
+    set_environment(line_environment(in));
     loads_.current.rate.setZero();  // a current that changes within a step comes with the steps
     loads_.current.scaleRate = 0.0;
     if (!std::isfinite(in.currentScale)) {
@@ -605,7 +605,12 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         state_.winchRate = y_[1];
     }
     if (sn_.area > 0.0) state_.rainflow.add(state_.outputs.towTension, sn_);
-    if (proxy) proxy_output(0.0, Vec3::Zero(), Vec3::Zero(), in);
+    if (proxy) {
+        EndMotion body;  // h = 0: the cable force alone, not the body's motion
+        body.position = vec(in.end);
+        body.velocity = vec(in.endVelocity);
+        proxy_output(0.0, Vec3::Zero(), Vec3::Zero(), body);
+    }
     state_.outputs.towTensionMax = state_.outputs.towTensionMin = state_.outputs.towTension;
     state_.tensionScale = tension_scale(model_, state_.outputs);
     if (!set_integrator_tolerances(error)) return false;

@@ -55,10 +55,10 @@ WinchLimits CableSimulation::winch_limits() const {
     return WinchLimits{p.winchMinLength, p.winchMaxLength, p.winchMaxRate, p.winchMaxAcceleration};
 }
 
-bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& error) {
+bool CableSimulation::winch_rate(const LineEnvironment& env, double h, std::string& error) {
     const UCParams& p = model_.params();
-    for (const auto& [name, value] : {std::pair<const char*, double>{"winch.rate", in.winchRate},
-                                      std::pair<const char*, double>{"winch.tension", in.winchTension}}) {
+    for (const auto& [name, value] : {std::pair<const char*, double>{"winch.rate", env.winchRate},
+                                      std::pair<const char*, double>{"winch.tension", env.winchTension}}) {
         if (std::isfinite(value)) continue;
         char text[160];
         std::snprintf(text, sizeof text, "%s = %g: the winch's inputs must be finite numbers", name, value);
@@ -68,22 +68,22 @@ bool CableSimulation::winch_rate(const UCInputs& in, double h, std::string& erro
     const WinchLimits limits = winch_limits();
     state_.winchTop0 = model_.top_length();
     if (p.winchMode == UC_WINCH_TENSION) return true;  // the rate follows the tension, step by step
-    const double requested = in.winchRate;
-    if (!std::isfinite(in.winchRateRate)) {
+    const double requested = env.winchRate;
+    if (!std::isfinite(env.winchRateRate)) {
         char text[160];
         std::snprintf(text, sizeof text, "der(winch.rate) = %g m/s2: the input derivative must be a finite number",
-                      in.winchRateRate);
+                      env.winchRateRate);
         error = text;
         return false;
     }
-    state_.winchStep = plan_winch_step(requested, state_.winchRate, state_.winchLength, h, limits, in.winchRateRate);
+    state_.winchStep = plan_winch_step(requested, state_.winchRate, state_.winchLength, h, limits, env.winchRateRate);
     // maxRate cut the command: log the arrival once.
     if (state_.winchStep.rateLimited && !state_.winchRateLimited) {
         char text[300];
         std::snprintf(text, sizeof text,
                       "winch: at t = %.6g s winch.rate %.6g m/s is beyond winch.maxRate = %.6g m/s: the drum runs at "
                       "most at winch.maxRate (deployed length %.6g m)",
-                      state_.time, requested + in.winchRateRate * h, limits.maxRate, state_.winchLength);
+                      state_.time, requested + env.winchRateRate * h, limits.maxRate, state_.winchLength);
         add_event(text);
     }
     state_.winchRateLimited = state_.winchStep.rateLimited;

@@ -197,3 +197,47 @@ TEST(LineState, TheScenesExerciseWhatEvolves) {
     EXPECT_GT(s.outputs().fatigueDamage, 0.0);
     EXPECT_NE(s.outputs().cableTorque, 0.0);
 }
+
+TEST(LineStep, TheLineLevelStepIsTheFmuStepBitForBit) {
+    // step(h, tow, far, env) with the ends and the environment filled field by field here: the same
+    // run as step(t, h, UCInputs), in every scene (the winch's rate and tension, torsion, the end
+    // load, the driven far end and the proxy's body).
+    for (const Scene& scene : scenes()) {
+        CableSimulation a(scene.params), b(scene.params);
+        std::string error;
+        UCInputs in{};
+        scene.inputs(0, 0.0, in);
+        in.endLoad[2] = -50.0;
+        in.endCouple[1] = 5.0;
+        in.current[0] = 0.2;
+        ASSERT_TRUE(a.initialize(0.0, in, error)) << scene.name << ": " << error;
+        ASSERT_TRUE(b.initialize(0.0, in, error)) << scene.name << ": " << error;
+        for (int k = 0; k < 20; ++k) {
+            scene.inputs(k, a.time(), in);
+            in.currentRate[1] = 0.01;
+            in.stepBudget = 0;
+            ASSERT_TRUE(a.step(a.time(), scene.h, in, error)) << scene.name << " step " << k << ": " << error;
+            EndMotion tow, far;
+            tow.position = Vec3(in.tow[0], in.tow[1], in.tow[2]);
+            tow.velocity = Vec3(in.towVelocity[0], in.towVelocity[1], in.towVelocity[2]);
+            tow.acceleration = Vec3(in.towAcceleration[0], in.towAcceleration[1], in.towAcceleration[2]);
+            tow.accelerationGiven = in.towAccelerationGiven;
+            far.position = Vec3(in.end[0], in.end[1], in.end[2]);
+            far.velocity = Vec3(in.endVelocity[0], in.endVelocity[1], in.endVelocity[2]);
+            far.acceleration = Vec3(in.endAcceleration[0], in.endAcceleration[1], in.endAcceleration[2]);
+            far.accelerationGiven = in.endAccelerationGiven;
+            LineEnvironment env;
+            env.current[0] = in.current[0];
+            env.currentRate[1] = in.currentRate[1];
+            env.currentScale = in.currentScale;
+            env.endLoad[2] = in.endLoad[2];
+            env.endCouple[1] = in.endCouple[1];
+            env.twist = in.twist;
+            env.winchRate = in.winchRate;
+            env.winchTension = in.winchTension;
+            ASSERT_TRUE(b.step(scene.h, tow, far, env, error)) << scene.name << " step " << k << ": " << error;
+            ASSERT_EQ(std::memcmp(&a.outputs(), &b.outputs(), sizeof(UCOutputs)), 0) << scene.name << " step " << k;
+            ASSERT_EQ(a.take_event(), b.take_event()) << scene.name << " step " << k;
+        }
+    }
+}
