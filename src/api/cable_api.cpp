@@ -122,7 +122,7 @@ extern "C" int uc_body_derivatives(UCCable* c, int body, double d[6 * UC_BODY_DE
 
 extern "C" void uc_tow_position(const UCCable* c, double p[3]) {
     if (!c || !p) return;
-    const uc::Vec3& x = c->simulation->tow_position();
+    const uc::Vec3 x = c->simulation->tow_position();
     for (int k = 0; k < 3; ++k) p[k] = x[k];
 }
 

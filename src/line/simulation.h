@@ -1,6 +1,6 @@
-// simulation.h - one cable in time: the immutable CableModel plus the mutable state (time,
-// IDA vectors, prescribed-end state, statistics, outputs) and the workspace, allocated once.
-// Save/restore of the state is a plain byte copy (the MuJoCo mjModel/mjData split).
+// simulation.h - one cable in time: the CableModel plus the evolving state (LineState, line/line_state.h,
+// and the IDA vectors) and the workspace, allocated once. Save/restore of the state is a plain byte
+// copy (the MuJoCo mjModel/mjData split).
 #pragma once
 
 #include <memory>
@@ -19,6 +19,7 @@
 #include "line/torsion.h"
 #include "line/simulation_interface.h"
 #include "line/winch.h"
+#include "line/line_state.h"
 
 namespace uc {
 
@@ -26,31 +27,42 @@ namespace uc {
 // in api/cable_api.h says exactly how): 0 when they agree within the allowance.
 double acceleration_disagreement(double a0, double a1, double dv, double h);
 
-// A driven end in a saved state (plain doubles, fixed layout).
-struct DrivenEndState {
-    double position[3], velocity[3], acceleration[3], lastVelocityInput[3], lastAccelerationInput[3];
-    double lastAccelerationGiven;
-};
-
-// A prescribed end driven by the master's inputs (the tow point; the far end of bottomEnd 3):
-// where its trajectory stands at the current time, and the inputs of the previous step.
+// A driven end as Eigen vectors (a mooring system's body references): DrivenEndState's steps.
 struct DrivenEnd {
     Vec3 position = Vec3::Zero(), velocity = Vec3::Zero(), acceleration = Vec3::Zero();
     Vec3 lastVelocityInput = Vec3::Zero(), lastAccelerationInput = Vec3::Zero();
     bool lastAccelerationGiven = false;
 
     void reset(const Vec3& p, const Vec3& v, const Vec3& a, bool accelerationGiven);
-    // The trajectory over [t, t + h] towards the inputs (position, velocity and, if given, the
-    // acceleration) extrapolated to t + h; lastStep is the previous step's size (0: none).
-    // accelerationGiven: as UCInputs.towAccelerationGiven (0, or bit 0 and UC_ACCELERATION_AS_INPUT bits).
+    // As DrivenEndState::next and advance.
     TowTrajectory next(double t, double h, double lastStep, const Vec3& positionInput, const Vec3& velocityInput,
                        const Vec3& accelerationInput, int accelerationGiven, Vec3& acceleration) const;
-    // After a successful step along traj with these inputs.
     void advance(const TowTrajectory& traj, const Vec3& velocityInput, const Vec3& acceleration,
                  bool accelerationGiven);
     void save(DrivenEndState& s) const;
     void load(const DrivenEndState& s);
 };
+
+// One end's kinematics for a step: the master's inputs for it at the step's end (what UCInputs holds
+// in tow*, or end* for the far end).
+struct EndMotion {
+    Vec3 position = Vec3::Zero(), velocity = Vec3::Zero(), acceleration = Vec3::Zero();
+    int accelerationGiven = 0;  // as UCInputs.towAccelerationGiven: 0, or bit 0 and UC_ACCELERATION_AS_INPUT bits
+};
+
+// What else acts on a line over a step, beside its ends' motion (the UCInputs fields of the same names;
+// a mooring system gives every line the master's).
+struct LineEnvironment {
+    double current[2] = {0.0, 0.0}, currentRate[2] = {0.0, 0.0};  // [m/s], [m/s2]
+    double currentScale = 0.0, currentScaleRate = 0.0;
+    double endLoad[3] = {0.0, 0.0, 0.0}, endLoadVelocity[3] = {0.0, 0.0, 0.0}, endCouple[3] = {0.0, 0.0, 0.0};
+    UCEndLoadDamping endLoadDamping{};
+    double torque = 0.0, twist = 0.0;
+    double winchRate = 0.0, winchRateRate = 0.0, winchTension = 0.0;
+    int stepBudget = 0;
+};
+// The environment part of the FMU's inputs.
+LineEnvironment line_environment(const UCInputs& in);
 
 class CableSimulation : public SecondOrderSystem, public Simulation {
 public:
@@ -60,12 +72,17 @@ public:
     CableSimulation& operator=(const CableSimulation&) = delete;
 
     const CableModel& model() const { return model_; }
-    double time() const override { return time_; }
-    const UCOutputs& outputs() const override { return outputs_; }
-    const Vec3& tow_position() const override { return tow_.position; }
+    double time() const override { return state_.time; }
+    const UCOutputs& outputs() const override { return state_.outputs; }
+    Vec3 tow_position() const override { return state_.tow.p(); }
 
     bool initialize(double t0, const UCInputs& in, std::string& error) override;
+    // The FMU's step: unpacks in into the ends' motion and the environment and takes step below.
     bool step(double t, double h, const UCInputs& in, std::string& error) override;
+    // One communication step of h seconds from time() with the tow end and the far end (its motion
+    // acts where the far end is driven: bottomEnd 3, and the external body of bottomEnd 4) moving
+    // as given, in the environment env.
+    bool step(double h, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env, std::string& error);
     // The event of the last step to log (a winch limit reached), or empty; cleared by the call.
     std::string take_event() override;
 
@@ -86,7 +103,6 @@ public:
     // one integration per call, whatever the number of inputs in it; a column (one input) is kept
     // until the state changes, so a master asking column by column pays once per column.
     static constexpr int kDerivativeSubsteps = 64;
-    static constexpr int kDerivativeInputs = 18;
     bool interface_derivative(const double seed[kDerivativeInputs], double out[6], std::string& error) override;
 
     // The axial force at an end of element e (far: at its second node) in the state of the last outputs:
@@ -99,13 +115,22 @@ public:
     Integrator& integrator() { return *integrator_; }
 
 private:
+    // The methods below live in one file per stage of the line:
+    //   simulation.cpp             life cycle, the step, residual and Jacobian, outputs
+    //   start.cpp                  initialize: checks, static profile, graded mesh, statics, mesh advice
+    //   driven_end.cpp             DrivenEndState / DrivenEnd, acceleration_disagreement
+    //   error_control.cpp          tolerances, element scales, projected error blocks
+    //   winch_mesh.cpp             the winch's rate, the constant-tension winch, remesh and balance
+    //   proxy_end.cpp              bottomEnd 4: proxy statics, the force on the body, the estimate
+    //   interface_derivatives.cpp  the interface derivatives
+    //   state.cpp                  save_state / restore_state
     int residual(double t, const double* y, const double* yp, double* r) override;
     int jacobian(double t, const double* y, const double* yp, const EntrySink& sink) override;
     void step_completed(double t, const double* y, const double* yp) override;
     // q_, v_, a_ and the global X_, Xd_, Xdd_ from the integrator's y, y' at time t.
     void expand_integrator_state(double t, const double* y, const double* yp);
 
-    void set_environment(const UCInputs& in);
+    void set_environment(const LineEnvironment& env);
     // True where the guess is the line's static profile (near the equilibrium).
     bool initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
     // The far end is held at the start: anchored, external, or the proxy of an external body whose
@@ -117,7 +142,7 @@ private:
     // bottomEnd 4, after a step from the proxy's state (p0, v0): the force on the external body
     // (the force that takes it along the proxy's velocity, plus the tracking force) and the
     // estimate's update.
-    void proxy_output(double h, const Vec3& p0, const Vec3& v0, const UCInputs& in);
+    void proxy_output(double h, const Vec3& p0, const Vec3& v0, const EndMotion& external);
     Vec3 proxy_flow(const Vec3& r, const Vec3& v, double t) const;
     // The static profile of the line from the tow point to its held far end (src/model/line_profile.h),
     // bending, current and waves left out; false where it does not apply, with the reason in why.
@@ -174,7 +199,7 @@ private:
     ElementScales element_scales(int e, double rms) const;
     // The projected error blocks of projectedErrorControl (empty when it is off).
     std::vector<Integrator::ProjectedBlock> projected_blocks() const;
-    double cable_torque(const UCInputs& in);
+    double cable_torque(const LineEnvironment& env);
     IntegratorStats total_stats() const;
     // The winch (docs/winch.md): the top element's length at time t; the rate for the step ahead;
     // splitting or merging the top element at a communication point; a new mesh, with everything
@@ -191,7 +216,7 @@ private:
     // the line's tangent there (R: the top element's residual at the expanded state X_), negative
     // in compression, so that a compressed line is hauled in, never paid out.
     double line_tension(const double* R) const;
-    bool winch_rate(const UCInputs& in, double h, std::string& error);
+    bool winch_rate(const LineEnvironment& env, double h, std::string& error);
     WinchLimits winch_limits() const;
     bool remesh(double change, std::string& error);  // change: of the top element over the step ahead
     bool remesh_once(RemeshAction action, bool balance, std::string& error);
@@ -221,35 +246,13 @@ private:
     std::unique_ptr<Integrator> integrator_;
     std::unique_ptr<BandSolver> staticSolver_;
 
-    // --- state (what save/restore copies) ---
-    double time_ = 0.0;
-    DrivenEnd tow_;             // the tow point
-    DrivenEnd end_;             // the far end of bottomEnd 3 (external)
-    // bottomEnd 4: the estimate of the external body's other forces is loads_.proxy (saved)
-    double lastStepSize_ = 0.0; // of the previous step (0: no input history yet)
-    TwistReference twistRef_;  // end frames at initialization (torqueMode 2)
-    double lastBeta_ = 0.0;    // geometric twist at the last evaluation, for unwrapping past +-pi
-    std::vector<double> y_, yp_;  // IDA vectors at time_: y = [q_0, v_0, q_1, v_1, ...]
-    IntegratorStats statsBase_;   // statistics folded in at integrator restarts
-    bool integratorStarted_ = false;  // the integrator's own counters belong to this state
-    UCOutputs outputs_{};
-    double tensionScale_ = 0.0;  // of the error control, fixed at initialization
-    RainflowCounter rainflow_;   // online fatigue count of the tow tension (sn_.area > 0)
-    bool restartPending_ = true;
-    // the winch: over a step from time_ the top element's length is winchTop0_ + winchStep_.length(t - time_)
-    double winchLength_ = 0.0;  // deployed unstretched length at time_
-    double winchRate_ = 0.0, winchTop0_ = 0.0;  // the rate at time_ (rate winch: the drum's)
-    WinchStep winchStep_;       // the rate winch's drum over the step from time_ (a hold between steps)
-    int winchLimit_ = 0;        // -1 / +1: at the shortest / longest length (logged once per arrival)
-    bool winchRateLimited_ = false;  // winch.maxRate cut the command (logged once per arrival)
-    std::string event_;
-    bool compressionWarned_ = false;  // the compression warning is given once per instance
-    // the mesh graded by the static profile at initialization (empty: each section's own), and the
-    // tow point it was graded for (a restored state's mesh is graded again from it)
-    bool graded_ = false;
-    int grading_ = 0;  // which of kGradings graded it (the first whose equilibrium passed the check)
-    StaticLayout layout_;
-    Vec3 meshTow_ = Vec3::Zero(), meshFar_ = Vec3::Zero();
+    // --- state (what save/restore copies: line/line_state.h) ---
+    LineState state_;
+    std::vector<double> y_, yp_;  // IDA vectors at state_.time: y = [q_0, v_0, q_1, v_1, ...]
+
+    // --- derived at initialization or from the state (not saved) ---
+    std::string event_;  // the step's event text (taken by the caller; a message, not state)
+    StaticLayout layout_;  // the graded mesh's nodes (made again from state_.grading at a restore)
     bool profileApplies_ = false;  // an anchored line, or a far end held at rest
     // The static profile for the ends the model holds (grade_mesh solves it once per initialization).
     struct ProfileState {

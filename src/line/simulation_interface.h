@@ -25,7 +25,7 @@ public:
     virtual const UCOutputs& outputs() const = 0;
     virtual double time() const = 0;
     // Where the tow point (a system: line 1's fairlead) stands now (uc_tow_position).
-    virtual const Vec3& tow_position() const = 0;
+    virtual Vec3 tow_position() const = 0;
     // The event of the last step worth a log line, or empty; cleared by the call.
     virtual std::string take_event() = 0;
 

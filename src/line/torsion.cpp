@@ -47,11 +47,15 @@ Vec3 transport_along(const CableModel& model, const double* X, const Vec3& d0) {
 
 TwistReference make_twist_reference(const CableModel& model, const double* X) {
     const int N = model.n_elements();
+    const Vec3 topTangent = unit_tangent(hermite_shape(0.0, model.element_length(0)), X);
+    const Vec3 topNormal = any_normal(topTangent);
+    const Vec3 endTangent = unit_tangent(hermite_shape(1.0, model.element_length(N - 1)), X + model.element_offset(N - 1));
+    const Vec3 endNormal = transport_along(model, X, topNormal);
     TwistReference ref;
-    ref.topTangent = unit_tangent(hermite_shape(0.0, model.element_length(0)), X);
-    ref.topNormal = any_normal(ref.topTangent);
-    ref.endTangent = unit_tangent(hermite_shape(1.0, model.element_length(N - 1)), X + model.element_offset(N - 1));
-    ref.endNormal = transport_along(model, X, ref.topNormal);
+    Eigen::Map<Vec3>{ref.topTangent} = topTangent;
+    Eigen::Map<Vec3>{ref.topNormal} = topNormal;
+    Eigen::Map<Vec3>{ref.endTangent} = endTangent;
+    Eigen::Map<Vec3>{ref.endNormal} = endNormal;
     return ref;
 }
 
@@ -59,9 +63,11 @@ double geometric_twist(const CableModel& model, const double* X, const TwistRefe
     const int N = model.n_elements();
     const Vec3 t0 = unit_tangent(hermite_shape(0.0, model.element_length(0)), X);
     const Vec3 tL = unit_tangent(hermite_shape(1.0, model.element_length(N - 1)), X + model.element_offset(N - 1));
-    const Vec3 top = transport(ref.topNormal, ref.topTangent, t0);
+    const Vec3 top = transport(Vec3(ref.topNormal[0], ref.topNormal[1], ref.topNormal[2]),
+                                Vec3(ref.topTangent[0], ref.topTangent[1], ref.topTangent[2]), t0);
     const Vec3 carried = transport_along(model, X, (top - t0 * t0.dot(top)).normalized());
-    Vec3 far = transport(ref.endNormal, ref.endTangent, tL);
+    Vec3 far = transport(Vec3(ref.endNormal[0], ref.endNormal[1], ref.endNormal[2]),
+                         Vec3(ref.endTangent[0], ref.endTangent[1], ref.endTangent[2]), tL);
     far = (far - tL * tL.dot(far)).normalized();
     return std::atan2(tL.dot(carried.cross(far)), carried.dot(far));
 }

@@ -26,9 +26,10 @@ Vec3 any_normal(const Vec3& t);
 Vec3 transport_along(const CableModel& model, const double* X, const Vec3& d0);
 
 // Reference frames of the ends, fixed when the cable is initialized.
+// Plain doubles (trivially copyable: part of the line's saved state, line/line_state.h).
 struct TwistReference {
-    Vec3 topTangent = Vec3::UnitZ(), topNormal = Vec3::UnitX();
-    Vec3 endTangent = Vec3::UnitZ(), endNormal = Vec3::UnitX();
+    double topTangent[3] = {0.0, 0.0, 1.0}, topNormal[3] = {1.0, 0.0, 0.0};
+    double endTangent[3] = {0.0, 0.0, 1.0}, endNormal[3] = {1.0, 0.0, 0.0};
 };
 
 TwistReference make_twist_reference(const CableModel& model, const double* X);

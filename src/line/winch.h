@@ -4,6 +4,8 @@
 // (docs/winch.md).
 #pragma once
 
+#include <cstdint>
+
 namespace uc {
 
 // The node that splits a cubic Hermite element exactly. X: the element's 12 nodal values
@@ -51,9 +53,10 @@ struct WinchStep {
     double rampTime = 0.0;                                // when the drum has caught up with the command
     double follow = 0.0;                                  // [m/s2] the acceleration after rampTime
     double rateCaught = 0.0;                              // [m/s] the rate at rampTime
-    bool saturated = false;  // the request was cut by maxRate or by a length limit
-    int limit = 0;           // -1 / +1: a length limit (minLength / maxLength) cut it
+    std::int32_t limit = 0;    // -1 / +1: a length limit (minLength / maxLength) cut it
+    bool saturated = false;    // the request was cut by maxRate or by a length limit
     bool rateLimited = false;  // maxRate cut the request
+    char unused[2] = {};       // no padding: a line's saved state is its bytes (line/line_state.h)
     // Paid out since the step's start after tau seconds, and the rate then.
     double length(double tau) const;
     double rate(double tau) const;

@@ -619,6 +619,12 @@ bool CableModel::far_end_carries_body() const {
     return params_.bottomEnd == UC_BOTTOM_TOWED_BODY || params_.bottomEnd == UC_BOTTOM_PROXY;
 }
 
+// The estimate the loads point at, or none (a zero force).
+static const ProxyEstimate& proxy_estimate(const Loads& loads) {
+    static const ProxyEstimate none{};
+    return loads.proxy ? *loads.proxy : none;
+}
+
 Vec3 ProxyEstimate::force(const Vec3& u, Mat3* dF_du) const {
     const Vec3 cross(-u.y(), u.x(), 0.0);  // z x u
     const double speed = std::sqrt(u.squaredNorm() + kProxyFlowSmoothing * kProxyFlowSmoothing);
@@ -629,7 +635,7 @@ Vec3 ProxyEstimate::force(const Vec3& u, Mat3* dF_du) const {
         J(1, 0) = 1.0;
         *dF_du = speed * (along * Mat3::Identity() + across * J) + flow * u.transpose() / speed;
     }
-    return constant + speed * flow;
+    return Eigen::Map<const Vec3>(constant) + speed * flow;
 }
 
 void ProxyEstimate::add(const Vec3& dF, const Vec3& u) {
@@ -647,7 +653,7 @@ void ProxyEstimate::add(const Vec3& dF, const Vec3& u) {
     const double c = c2 > 0.0 ? wc * dF.dot(cross) / (speed * c2) : 0.0;
     along += a;
     across += c;
-    constant += dF - speed * (a * u + c * cross);
+    Eigen::Map<Vec3>{constant} += dF - speed * (a * u + c * cross);
 }
 
 Mat3 PointBody::inertia() const {
@@ -705,7 +711,7 @@ Vec6 CableModel::end_node_residual(const double* X, const double* Xd, const doub
     if (params_.bottomEnd == UC_BOTTOM_PROXY) {
         Vec3 U, A;
         loads.current.flow(Eigen::Map<const Vec3>(X + gN), U, A, point_wave_cache(0));
-        R.head<3>() -= loads.proxy.force(U - rd);
+        R.head<3>() -= proxy_estimate(loads).force(U - rd);
         if (loads.endSpring > 0.0) R.head<3>() += loads.endSpring * (Eigen::Map<const Vec3>(X + gN) - loads.endSpringAnchor);
     }
     // End couple M: virtual work M . (t x dr')/|r'| = (M x r')/|r'|^2 . dr' on the end tangent.
@@ -738,7 +744,7 @@ void CableModel::end_node_jacobian(const double* X, const double* Xd, const doub
         Vec3 U, A;
         loads.current.flow(Eigen::Map<const Vec3>(X + gN), U, A, point_wave_cache(0));
         Mat3 dF_du;
-        loads.proxy.force(U - Eigen::Map<const Vec3>(Xd + gN), &dF_du);
+        proxy_estimate(loads).force(U - Eigen::Map<const Vec3>(Xd + gN), &dF_du);
         C.block<3, 3>(0, 0) += dF_du;
         if (loads.endSpring > 0.0) K.block<3, 3>(0, 0) += loads.endSpring * Mat3::Identity();
     }

@@ -57,8 +57,9 @@ private:
 // square of a later speed. The law's along coefficient stays >= 0 (a drag, never a push along the
 // flow, which would feed the proxy's motion). Applied at the proxy's velocity inside
 // the implicit step, as a drag.
+// Plain doubles (trivially copyable: part of the line's saved state).
 struct ProxyEstimate {
-    Vec3 constant = Vec3::Zero();  // [N]
+    double constant[3] = {0.0, 0.0, 0.0};  // [N]
     double along = 0.0, across = 0.0;  // [N s^2/m^2]
     // The force at the relative flow u (Earth frame) and, if dF_du is not null, its derivative.
     Vec3 force(const Vec3& u, Mat3* dF_du = nullptr) const;
@@ -80,8 +81,9 @@ struct Loads {
     Vec3 endLoadVelocity = Vec3::Zero();
     Mat3 endLoadDamping = Mat3::Zero();
     Vec3 endCouple = Vec3::Zero();
-    // bottomEnd 4: the estimate of the external body's other forces, applied to the proxy at the far end.
-    ProxyEstimate proxy;
+    // bottomEnd 4: the estimate of the external body's other forces, applied to the proxy at the far end
+    // (the line's state holds it; null: none, a zero force).
+    const ProxyEstimate* proxy = nullptr;
     // Static solver only (bottomEnd 4): a spring of this stiffness [N/m] holds the far end at
     // endSpringAnchor, so that the statics put the proxy where the external body is.
     double endSpring = 0.0;

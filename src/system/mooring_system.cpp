@@ -80,9 +80,6 @@ const UCOutputs& OneLineSystem::outputs() const {
     return asSystem_;
 }
 
-static_assert(MooringSystem::kDerivativeInputs == CableSimulation::kDerivativeInputs,
-              "a system passes its lines the boundary's derivative seeds");
-
 MooringSystem::MooringSystem(const UCParams& base, const MooringDeck& deck) : base_(base), deck_(deck) {}
 
 bool MooringSystem::build(std::string& error) {

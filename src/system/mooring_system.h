@@ -80,7 +80,7 @@ public:
     double time() const override { return lines_.empty() ? 0.0 : lines_[0]->time(); }
     // The system's outputs: the single-line outputs are line 1's, line[k].* each deck line's.
     const UCOutputs& outputs() const override { return outputs_; }
-    const Vec3& tow_position() const override { return lines_[0]->tow_position(); }
+    Vec3 tow_position() const override { return lines_[0]->tow_position(); }
     int n_lines() const { return static_cast<int>(lines_.size()); }
     const CableSimulation& line(int k) const { return *lines_[k]; }
 

@@ -75,7 +75,7 @@ TEST(ProxyEstimate, DerivativeIsTheForcesAndAddingMovesTheForceByTheChange) {
     // truncation ~h^2, cancellation ~1e-16 |F| / h). add(): the force at that flow moves by the change
     // exactly (to round-off), whatever share the law takes, at speed, at a crawl and in a vertical flow.
     ProxyEstimate e;
-    e.constant = Vec3(3.0, -2.0, -50.0);
+    Eigen::Map<Vec3>{e.constant} = Vec3(3.0, -2.0, -50.0);
     e.along = 150.0;
     e.across = -20.0;
     for (const Vec3& u : {Vec3(-1.2, 0.3, 0.1), Vec3(0.05, -0.02, 0.01), Vec3(0.0, 0.0, -0.8)}) {

@@ -1,0 +1,621 @@
+// start.cpp - the start of a line: the checks of its geometry and strain, the static profile and the
+// graded mesh, the initial guess, the statics and their verification, the mesh advice.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <new>
+
+#include "line/simulation.h"
+#include "line/simulation_internal.h"
+
+#include "model/line_profile.h"
+#include "model/mesh_grading.h"
+#include "model/params.h"
+#include "line/statics.h"
+
+namespace uc {
+
+namespace {
+
+// The tension scale of the error control: the largest tension of the initial state, at least the
+// weight in air of the cable and the towed body (a cable released from rest has no tension yet;
+// its weight is what it will carry), the Euler load pi^2 EI / L (a weightless rod) and the
+// tension of a strain of 1e-6.
+double tension_scale(const CableModel& model, const UCOutputs& initial) {
+    const UCParams& p = model.params();
+    const LineScales& line = model.line();
+    double T = initial.towTension;
+    for (double t : initial.tension) T = std::max(T, t);
+    double body = model.far_end_carries_body() ? p.bodyMass : 0.0;
+    for (const NodeAttachment& at : model.attachments()) body += at.body.mass;
+    return std::max({T, (line.massPerLength * line.length + body) * p.gravity, kPi * kPi * line.EI / (line.length * line.length),
+                     1e-6 * line.EA});
+}
+
+}  // namespace
+
+// From the sections and attachments; the profile's top end is the higher of the two ends.
+bool CableSimulation::static_profile(const Vec3& towPoint, const Vec3& anchor, LineProfile& profile, bool& towOnTop,
+                                     std::string* why) const {
+    const UCParams& p = model_.params();
+    if (!model_.far_end_prescribed() || model_.winch()) return false;
+    towOnTop = towPoint.z() >= anchor.z();
+    std::vector<LineProfile::Segment> segments;
+    for (int k = 0; k < model_.n_sections(); ++k) {
+        const SectionProps& sec = model_.section(k);
+        segments.push_back({sec.length, submerged_weight(sec.fluid), sec.axial.EA, dry_weight(sec.fluid)});
+    }
+    std::vector<LineProfile::PointLoad> points;
+    const double L = model_.line().length;
+    for (const NodeAttachment& at : model_.attachments()) {
+        const double weight = (at.body.mass - model_.fluid().rho * at.body.volume) * model_.fluid().gravity;
+        points.push_back({towOnTop ? at.s : L - at.s, weight, at.body.mass * model_.fluid().gravity});
+    }
+    if (!towOnTop) std::reverse(segments.begin(), segments.end());
+    // the line weighs its dry weight above the water surface at z = 0, as the elements do
+    return profile.solve(towOnTop ? towPoint : anchor, towOnTop ? anchor : towPoint, segments, points,
+                         p.enableSeabed != 0, -p.waterDepth, std::max(model_.line().diameter, 1e-3 * L), why, 0.0);
+}
+
+// An anchored line starts from its static profile, into X; false where that does not apply. From
+// the parabola of initial_guess, the continuation of a stiff power cable settled at some meshes (16,
+// 25, 30, ... of 250 m) into a folded equilibrium at up to four times the tension, and lines resting
+// on a stiff seabed often found none; from the profile it finds the one a user expects.
+bool CableSimulation::profile_guess(double* X) const {
+    if (!profile_.solved) return false;
+    const LineProfile& profile = profile_.profile;
+    const bool towOnTop = profile_.towOnTop;
+    const double L = model_.line().length;
+    Vec3 r, tangent;
+    for (int i = 0; i < model_.n_slots(); ++i) {
+        const double s = model_.slot_arc_length(i);
+        // the second slot of a pinned node takes the tangent below it
+        const bool below = i + 1 < model_.n_slots() && model_.slot_arc_length(i + 1) == s;
+        const double eps = below ? 1e-9 * L : -1e-9 * L;
+        profile.at(towOnTop ? std::clamp(s - eps, 0.0, L) : std::clamp(L - s + eps, 0.0, L), r, tangent);
+        Eigen::Map<Vec3>(X + 6 * i) = r;
+        Eigen::Map<Vec3>(X + 6 * i + 3) = towOnTop ? tangent : Vec3(-tangent);
+    }
+    return true;
+}
+
+// Nodes graded by the static profile for an anchored line that rests on the seabed or carries
+// attachments (src/model/mesh_grading.h); the model is built again where its mesh changes. The profile is
+// kept (profile_) for the ends the model holds: the guess, the refusal and the check read it.
+void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, bool apply, int grading) {
+    ProfileState& ps = profile_;
+    auto solve_for = [&](const Vec3& far) {
+        ps.far = far;
+        ps.why.clear();
+        ps.solved = static_profile(towPoint, far, ps.profile, ps.towOnTop, &ps.why);
+    };
+    StaticLayout layout;
+    ps.solved = false;
+    if (apply) solve_for(farPoint);
+    if (ps.solved) {
+        // the anchor is the lower end, held where the line rests (CableModel): graded for that point
+        layout.anchorResting = ps.towOnTop && ps.profile.rests_at_bottom() && model_.params().bottomEnd == UC_BOTTOM_ANCHORED;
+        const Vec3 resting(farPoint.x(), farPoint.y(), model_.resting_height());
+        if (layout.anchorResting && std::abs(farPoint.z() - resting.z()) <= 0.5 * model_.line().diameter) solve_for(resting);
+        const int mode = model_.params().meshGrading;
+        if (ps.solved && mode != 0 && (ps.profile.grounded_length() > 0.0 || !model_.attachments().empty()))
+            layout.nodes = graded_nodes(model_, ps.profile, ps.towOnTop, mode == 2, kGradings[grading]);
+    }
+    Eigen::Map<Vec3>{state_.meshTow} = towPoint;
+    Eigen::Map<Vec3>{state_.meshFar} = farPoint;
+    state_.grading = grading;
+    const bool graded = !layout.nodes.empty() || layout.anchorResting;
+    if (graded != state_.graded || !(layout == layout_)) {
+        state_.graded = graded;
+        layout_ = layout;
+        replace_model(CableModel(model_.params(), nullptr, graded ? &layout_ : nullptr));
+    }
+    const Vec3 held = model_.params().bottomEnd == UC_BOTTOM_ANCHORED ? model_.anchor() : farPoint;
+    if (apply && held != ps.far) solve_for(held);
+}
+
+bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const {
+    const UCParams& p = model_.params();
+    std::vector<double> X(model_.n_global());
+    model_.straight_line(towPoint, vec(p.initialDirection), X.data());
+    const bool profile = profileApplies_ && profile_guess(X.data());
+    if (far_end_held_at_start() && !profile) {
+        // Chord from the tow point to the far end, sagging in its vertical plane when the line is
+        // slack (a parabola whose length is about the cable length).
+        const Vec3 chord = farPoint - towPoint;
+        const double D = chord.norm(), L = model_.line().length;
+        Vec3 sagDirection = Vec3(0, 0, -1) - chord.normalized() * chord.normalized().z();
+        if (sagDirection.norm() < 1e-6) sagDirection = Vec3(1, 0, 0);
+        sagDirection.normalize();
+        const double sag = D < L ? D * std::sqrt(0.375 * (L / D - 1.0)) : 0.0;
+        for (int i = 0; i < model_.n_slots(); ++i) {
+            const double xi = model_.slot_fraction(i);
+            Eigen::Map<Vec3>(X.data() + 6 * i) = towPoint + xi * chord + 4.0 * sag * xi * (1.0 - xi) * sagDirection;
+            const Vec3 drdxi = chord + 4.0 * sag * (1.0 - 2.0 * xi) * sagDirection;
+            Eigen::Map<Vec3>(X.data() + 6 * i + 3) = drdxi.normalized() * std::max(D / L, 1.0);
+        }
+    }
+    if (p.enableSeabed && !far_end_held_at_start()) {
+        // A free end that reaches the seabed: the straight line bends there and trails along it
+        // behind the tow (a line clamped to the seabed instead piles its end into one point, from
+        // which the solver found folded equilibria).
+        const Vec3 d = vec(p.initialDirection).normalized();
+        Vec3 trail = -state_.tow.v();
+        trail.z() = 0.0;
+        if (trail.norm() < 1e-9) trail = Vec3(d.x(), d.y(), 0.0);
+        if (trail.norm() < 1e-9) trail = Vec3(-1.0, 0.0, 0.0);
+        trail.normalize();
+        const double reach = d.z() < 0.0 ? (towPoint.z() + p.waterDepth) / -d.z() : INFINITY;
+        for (int i = 0; i < model_.n_slots(); ++i) {
+            const double s = model_.slot_arc_length(i);
+            if (s <= reach) continue;
+            Eigen::Map<Vec3>(X.data() + 6 * i) = towPoint + reach * d + (s - reach) * trail;
+            Eigen::Map<Vec3>(X.data() + 6 * i + 3) = trail;
+        }
+    }
+    if (p.enableSeabed) {
+        // Start on or above the seabed: the guessed line lies on it where it would pass below.
+        for (int i = 0; i < model_.n_slots(); ++i) X[6 * i + 2] = std::max(X[6 * i + 2], -p.waterDepth);
+    }
+    model_.restrict_to_free(X.data(), q.data());
+    return profile;
+}
+
+bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) const {
+    const UCParams& p = model_.params();
+    char buffer[600];
+    const char* farName = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor.x/y/z" : "end.x/y/z";
+    if (model_.far_end_prescribed()) {
+        const Vec3 d = farPoint - state_.tow.p();
+        const double reach = 1.1 * model_.line().length;
+        if (d.norm() > reach) {
+            if (p.lineFile[0] != '\0') {
+                // A deck's points are where its author put them: the line's length is what is short.
+                std::snprintf(buffer, sizeof buffer,
+                              "the line is too short for where its ends are: %.6g m unstretched (the deck's "
+                              "UnstrLen), its far end (%.6g, %.6g, %.6g) is %.6g m from the tow point (%.6g, %.6g, "
+                              "%.6g), a stretch of %.3g %%, more than the 10 %% any cable survives; lengthen the "
+                              "line to at least %.6g m or bring its ends within %.6g m of each other",
+                              model_.line().length, farPoint.x(), farPoint.y(), farPoint.z(), d.norm(),
+                              state_.tow.p().x(), state_.tow.p().y(), state_.tow.p().z(),
+                              100.0 * (d.norm() / model_.line().length - 1.0), d.norm() / 1.1, reach);
+            } else {
+                // Name the coordinate that is farthest off, with the range the others leave it, and the
+                // length the line would need where the anchor is meant to be there.
+                int k = 0;
+                d.cwiseAbs().maxCoeff(&k);
+                const double others = d.squaredNorm() - d[k] * d[k];
+                const double half = std::sqrt(std::max(0.0, reach * reach - others));
+                const char* prefix = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor" : "end";
+                std::snprintf(buffer, sizeof buffer,
+                              "%s.%c = %.17g is outside [%.6g, %.6g]: the far end must lie within the reach of the "
+                              "stretched cable, 1.1 x length = %.6g m from the tow point (it is %.6g m away; more "
+                              "than 10 %% strain, which no cable survives); or the line is too short: %s = %.6g m, "
+                              "at least %.6g m reaches it",
+                              prefix, "xyz"[k], farPoint[k], state_.tow.p()[k] - half, state_.tow.p()[k] + half, reach,
+                              d.norm(), p.nSections > 1 ? "the sections' length" : "length", model_.line().length,
+                              d.norm() / 1.1);
+            }
+            error = buffer;
+            return false;
+        }
+    }
+    if (!p.enableSeabed) return true;
+    const double tolerance = 0.5 * model_.line().diameter;  // a point resting on the seabed sinks in slightly
+    if (state_.tow.p().z() < -p.waterDepth - tolerance) {
+        std::snprintf(buffer, sizeof buffer,
+                      "tow.z = %.6g m is below the seabed at z = -waterDepth = %.6g m: the tow point must be in the water",
+                      state_.tow.p().z(), -p.waterDepth);
+        error = buffer;
+        return false;
+    }
+    if (model_.far_end_prescribed() && farPoint.z() < -p.waterDepth - tolerance) {
+        std::snprintf(buffer, sizeof buffer,
+                      "%s: z = %.6g m is below the seabed at z = -waterDepth = %.6g m: an anchor lies on the seabed, "
+                      "not under it",
+                      farName, farPoint.z(), -p.waterDepth);
+        error = buffer;
+        return false;
+    }
+    return true;
+}
+
+namespace {
+
+// "<EA's name> = <EA> N<where>: <what>, <why>; <cause>": a strain no line of that EA should have, and the
+// unit EA was likely meant in (the factor of 1e3, 1e6 or 1e9 that brings the strain below a percent).
+std::string strain_message(const CableModel& model, int section, double strain, const std::string& what,
+                           const char* why) {
+    const UCParams& p = model.params();
+    const double EA = model.section(section).axial.EA;
+    const std::string name = model.n_sections() > 1 ? "section[" + std::to_string(section + 1) + "].EA" : "EA";
+    const std::string where = p.lineFile[0] != '\0' && model.n_sections() > 1
+                                  ? " (the deck's line " + std::to_string(section + 1) + " from the fairlead)"
+                                  : "";
+    std::string cause = "; check EA, its unit and the line's weight";
+    for (const auto& [factor, unit] : {std::pair<double, const char*>{1e3, "kN"}, {1e6, "MN"}, {1e9, "GN"}}) {
+        if (strain / factor < 0.01) {
+            char text[200];
+            std::snprintf(text, sizeof text, ": did you mean %.6g %s (%.6g N)?", EA, unit, EA * factor);
+            cause = text;
+            break;
+        }
+    }
+    char head[200];
+    std::snprintf(head, sizeof head, "%s = %.6g N%s: ", name.c_str(), EA, where.c_str());
+    return head + what + ", " + why + cause;
+}
+
+int section_index(const CableModel& model, const SectionProps& section) {
+    for (int k = 0; k < model.n_sections(); ++k)
+        if (&model.section(k) == &section) return k;
+    return 0;
+}
+
+}  // namespace
+
+bool CableSimulation::check_weight_strain(std::string& error) const {
+    // The line's whole weight in water over a section's EA: a tension the line may carry (all of it
+    // hanging), so a strain it may reach; beyond 100 % no line of that EA carries its own weight.
+    double weight = 0.0;
+    for (int k = 0; k < model_.n_sections(); ++k)
+        weight += std::abs(submerged_weight(model_.section(k).fluid)) * model_.section(k).length;
+    for (int k = 0; k < model_.n_sections(); ++k) {
+        const double strain = weight / model_.section(k).axial.EA;
+        if (!(strain > kWeightStrainRefused)) continue;
+        char what[200];
+        std::snprintf(what, sizeof what, "the line's weight in water (%.6g N) would stretch it %.3g %%", weight,
+                      100.0 * strain);
+        error = strain_message(model_, k, strain, what, "far beyond what any cable, chain or rope stretches");
+        return false;
+    }
+    return true;
+}
+
+bool CableSimulation::check_static_strain(std::string& error) {
+    // Each element's mean strain from its chord (at most its arc: a curved element's is underestimated,
+    // never over): the nodes' tangents carry the element's bending too, and are no measure of it.
+    double worst = 0.0;
+    int worstElement = -1;
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const int g = model_.element_offset(e);
+        const double chord = (Eigen::Map<const Vec3>(X_.data() + g + 6) - Eigen::Map<const Vec3>(X_.data() + g)).norm();
+        const double strain = chord / model_.element_length(e) - 1.0;
+        if (strain > worst) {
+            worst = strain;
+            worstElement = e;
+        }
+    }
+    if (worstElement < 0 || !(worst > kStrainWarned)) return true;
+    const SectionProps& section = model_.element_section(worstElement);
+    const bool refuse = worst > kStrainRefused;
+    char what[200];
+    std::snprintf(what, sizeof what, "the line stretches %.3g %% at rest (%.6g N of tension over %.6g to %.6g m)",
+                  100.0 * worst, section.axial.EA * worst, model_.element_start(worstElement),
+                  model_.element_start(worstElement) + model_.element_length(worstElement));
+    const std::string text =
+        strain_message(model_, section_index(model_, section), worst, what,
+                       refuse ? "more than any cable, chain or rope stretches before it breaks (nylon, the most "
+                                "extensible, at about 25 %); refusing the start"
+                              : "more than steel wire or chain stretches before it breaks (about 3 %)");
+    if (refuse) {
+        error = text;
+        return false;
+    }
+    add_event("warning: " + text);
+    return true;
+}
+
+// A line without bending stiffness that is longer than the way down to the seabed and across to
+// its anchor rests on a frictionless seabed with no tension at all, in no one shape: refused with
+// the lengths that would give it one.
+bool CableSimulation::statics_applies(const Vec3& farPoint, std::string& error) const {
+    if (!profileApplies_ || model_.line().EI > 0.0 || profile_.solved || profile_.why != "longer than the way down and across")
+        return true;
+    const Vec3 d = state_.tow.p() - farPoint;
+    const double X = std::hypot(d.x(), d.y()), h = std::abs(d.z()), L = model_.line().length;
+    char text[600];
+    std::snprintf(text, sizeof text,
+                  "no static equilibrium: the line (%.6g m unstretched) is longer than the way down to the seabed "
+                  "and across to the far end (%.6g m + %.6g m = %.6g m), so on a frictionless seabed it rests with no "
+                  "tension and in no one shape; shorten it below %.6g m or move the far end more than %.6g m away "
+                  "horizontally",
+                  L, h, X, h + X, h + X, L - h);
+    error = text;
+    return false;
+}
+
+// The static state is checked before it is given out (docs/model.md, "Initial equilibrium"): no
+// element folded back on itself, the anchor's force its axial tension (without bending stiffness),
+// and where the line's static profile is exact (no bending stiffness or a bending length under a
+// thousandth of the line, no current, calm water, at rest) the fairlead and anchor tensions within
+// 1 % of it.
+bool CableSimulation::verify_statics(std::string& error) const {
+    char text[700];
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const int g = model_.element_offset(e);
+        const double chord = (Eigen::Map<const Vec3>(X_.data() + g + 6) - Eigen::Map<const Vec3>(X_.data() + g)).norm();
+        if (chord < 0.5 * model_.element_length(e)) {
+            std::snprintf(text, sizeof text,
+                          "the static equilibrium found is folded: element %d (arc length %.6g to %.6g m) spans %.3g m "
+                          "for %.3g m of cable; refusing it as a start",
+                          e + 1, model_.element_start(e), model_.element_start(e) + model_.element_length(e), chord,
+                          model_.element_length(e));
+            error = text;
+            return false;
+        }
+    }
+    const UCParams& p = model_.params();
+    const double axial = state_.outputs.tension[UC_NUM_STATIONS - 1];
+    if (p.bottomEnd == UC_BOTTOM_ANCHORED && model_.line().EI == 0.0 &&
+        std::abs(state_.outputs.endTension - axial) > kAnchorCheck * state_.outputs.endTension) {
+        // Without bending stiffness the line's force on its anchor is its axial tension there: where
+        // the two differ, the elements at the anchor do not hold the line's shape.
+        std::snprintf(text, sizeof text,
+                      "the static equilibrium found does not hold together at the anchor: the force on the anchor "
+                      "(%.6g N) and the line's axial tension there (%.6g N) differ by %.2f %%; refusing it as a "
+                      "start (the mesh does not resolve the line near its anchor)",
+                      state_.outputs.endTension, axial, 100.0 * std::abs(state_.outputs.endTension - axial) / state_.outputs.endTension);
+        error = text;
+        return false;
+    }
+    const LineProfile& profile = profile_.profile;
+    const bool towOnTop = profile_.towOnTop;
+    // Bending stiffness acts over the bending length sqrt(EI / T) at the ends and the touchdown; where
+    // that is a thousandth of the line at its smallest tension, the catenary holds its end tensions
+    // far inside the check (a chain's nominal EI; the stiff power cable's 2e4 N m² moves them 1e-4).
+    const double leastTension = profile_.solved ? std::min(profile.top_force().norm(), profile.bottom_force().norm()) : 0.0;
+    const bool weakBending = model_.line().EI == 0.0 ||
+                             (leastTension > 0.0 && std::sqrt(model_.line().EI / leastTension) <=
+                                                        kWeakBending * model_.line().length);
+    const bool exact = profileApplies_ && weakBending && loads_.current.uniform.isZero(0.0) &&
+                       (p.currentProfileRows == 0 || loads_.current.scale == 0.0) && model_.sea().calm() &&
+                       loads_.torque == 0.0 && profile_.solved &&
+                       profile.lowest_clearance() > -model_.line().diameter;
+    if (!exact) return true;
+    const double top = (towOnTop ? profile.top_force() : profile.bottom_force()).norm();
+    const double bottom = (towOnTop ? profile.bottom_force() : profile.top_force()).norm();
+    const double topError = state_.outputs.towTension / top - 1.0, bottomError = state_.outputs.endTension / bottom - 1.0;
+    if (std::abs(topError) <= kStaticsCheck && std::abs(bottomError) <= kStaticsCheck) return true;
+    std::snprintf(text, sizeof text,
+                  "the static equilibrium found differs from the line's elastic catenary, which is exact for it: "
+                  "tension %.6g N at the tow point and %.6g N at the far end against %.6g N and %.6g N (%+.2f %% and "
+                  "%+.2f %%); refusing a wrong start",
+                  state_.outputs.towTension, state_.outputs.endTension, top, bottom, 100.0 * topError, 100.0 * bottomError);
+    error = text;
+    return false;
+}
+
+std::string CableSimulation::mesh_advice(double t0, const UCInputs& in) const {
+    const UCParams& p = model_.params();
+    const bool sections = p.nSections > 1;
+    // The same line with each section's elements as `count` gives them; true with the advice where it
+    // starts. Out of the parameters' range: `beyond`.
+    auto trial_starts = [&](auto&& count, const std::string& named, std::string& advice, bool& beyond) {
+        UCParams q = p;
+        if (sections) {
+            for (int k = 0; k < p.nSections; ++k) q.section[k].nElements = count(p.section[k].nElements);
+        } else {
+            q.nElements = count(p.nElements);
+        }
+        beyond = !check_params(q).empty();
+        if (beyond) return false;
+        CableSimulation trial(q);
+        trial.adviseMesh_ = false;
+        std::string ignored;
+        if (!trial.initialize(t0, in, ignored)) return false;
+        std::string counts = named;
+        if (counts.empty() && sections) {
+            for (int k = 0; k < p.nSections; ++k)
+                counts += (k ? ", " : "") + std::string("section[") + std::to_string(k + 1) +
+                          "].nElements = " + std::to_string(q.section[k].nElements);
+        } else if (counts.empty()) {
+            counts = "nElements = " + std::to_string(q.nElements);
+        }
+        char text[300];
+        std::snprintf(text, sizeof text, "; with %s the same line starts (tow tension %.6g N, far end %.6g N)",
+                      counts.c_str(), trial.state_.outputs.towTension, trial.state_.outputs.endTension);
+        advice = text;
+        return true;
+    };
+    std::string advice;
+    bool beyond = false;
+    if (p.lineFile[0] != '\0') {
+        // A deck's line: lineFileElements gives every deck line (section) the same count. More
+        // elements resolve a sharp touchdown; fewer can settle a short, very stiff line whose
+        // elements are far stiffer in bending than its weight can bend.
+        int n = p.nElements;
+        if (sections)
+            for (int k = 0; k < p.nSections; ++k) n = std::max(n, p.section[k].nElements);
+        for (int count : {2 * n, 4 * n, 8 * n, 16 * n, n / 2, 1}) {
+            if (count < 1 || count == n) continue;
+            if (trial_starts([count](int) { return count; }, "lineFileElements = " + std::to_string(count), advice,
+                             beyond))
+                return advice;
+        }
+        return "; neither more nor fewer elements (lineFileElements) resolve the line";
+    }
+    for (int factor : {2, 4}) {
+        if (trial_starts([factor](int elements) { return factor * elements; }, "", advice, beyond)) return advice;
+        if (beyond) break;  // beyond the elements a line may have
+    }
+    return std::string("; neither twice nor four times the elements (") +
+           (sections ? "section[k].nElements" : "nElements") +
+           ") resolve the line: initMode = 1 starts from the guessed shape without equilibrium";
+}
+
+bool CableSimulation::far_end_held_at_start() const {
+    const UCParams& p = model_.params();
+    return model_.far_end_prescribed() || (p.bottomEnd == UC_BOTTOM_PROXY && p.initMode == UC_INIT_EQUILIBRIUM);
+}
+
+bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& error) {
+    ++stateStamp_;  // the cached interface derivatives are stale from here on
+    const UCParams& p = model_.params();
+    for (double v : {in.tow[0], in.tow[1], in.tow[2], in.towVelocity[0], in.towVelocity[1], in.towVelocity[2],
+                     in.towAcceleration[0], in.towAcceleration[1], in.towAcceleration[2], in.endLoad[0],
+                     in.endLoad[1], in.endLoad[2], in.endCouple[0], in.endCouple[1], in.endCouple[2],
+                     in.current[0], in.current[1], in.end[0], in.end[1], in.end[2], in.endVelocity[0],
+                     in.endVelocity[1], in.endVelocity[2]}) {
+        if (!std::isfinite(v)) {
+            error = "inputs must be finite numbers";
+            return false;
+        }
+    }
+    if (!end_load_linearization_finite(line_environment(in))) {
+        error = "endLoadVelocity and endLoadDamping inputs must be finite numbers";
+        return false;
+    }
+    set_environment(line_environment(in));
+    loads_.current.rate.setZero();  // a current that changes within a step comes with the steps
+    loads_.current.scaleRate = 0.0;
+    if (!std::isfinite(in.currentScale)) {
+        error = "currentScale must be a finite number";
+        return false;
+    }
+    loads_.current.time = t0;
+    if (model_.winch()) {  // the run starts at the line's own length, every element nominal
+        const WinchMesh start{model_.params().nSections <= 1 ? model_.params().nElements
+                                                             : model_.params().section[0].nElements,
+                              model_.winch_nominal()};
+        if (model_.winch_mesh().elements != start.elements || model_.winch_mesh().topLength != start.topLength)
+            rebuild(start);
+        state_.winchRate = 0.0;
+        state_.winchStep = WinchStep::hold(0.0);
+        state_.winchTop0 = start.topLength;
+        state_.winchLimit = 0;
+        state_.winchRateLimited = false;
+        model_.set_top_length(state_.winchTop0);
+        state_.winchLength = model_.line().length;
+    }
+    state_.tow.reset(vec(in.tow), vec(in.towVelocity), vec(in.towAcceleration), in.towAccelerationGiven != 0);
+    loads_.tow = TowTrajectory::at_rest_in_time(state_.tow.p(), state_.tow.v(), state_.tow.a(), t0);
+    state_.end.reset(vec(in.end), vec(in.endVelocity), Vec3::Zero(), false);
+    loads_.end = TowTrajectory::at_rest_in_time(state_.end.p(), state_.end.v(), state_.end.a(), t0);
+    const bool proxy = p.bottomEnd == UC_BOTTOM_PROXY;
+    Vec3 farPoint = p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy ? state_.end.p() : vec(p.anchor);
+    state_.proxy = ProxyEstimate();
+    loads_.endSpring = 0.0;
+    if (!check_geometry(farPoint, error)) return false;
+    if (!check_weight_strain(error)) return false;
+    // An anchored line, or one whose far end is held at rest, starts from its static profile.
+    profileApplies_ = p.bottomEnd == UC_BOTTOM_ANCHORED ||
+                      (p.bottomEnd == UC_BOTTOM_EXTERNAL && state_.end.v().isZero(0.0));
+    if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
+        error = "torque and twist inputs must be finite numbers";
+        return false;
+    }
+    const Vec3 givenFar = farPoint;
+    // The line at rest on the mesh the grading-th of kGradings places (where the mesh is graded):
+    // false with the reason, `retry` where the static solve or its check failed.
+    bool retry = false;
+    auto start = [&](int grading) {
+        retry = false;
+        farPoint = givenFar;
+        grade_mesh(state_.tow.p(), farPoint, profileApplies_, grading);
+        if (p.bottomEnd == UC_BOTTOM_ANCHORED) farPoint = model_.anchor();  // on the seabed: where the line rests
+        const int n = model_.n_free();
+        const bool fromProfile = initial_guess(state_.tow.p(), farPoint, q_);
+        {
+            // Twist reference frames from the initial guess (planar: no geometric twist).
+            std::vector<double> zero(n, 0.0);
+            model_.expand(q_.data(), zero.data(), zero.data(), loads_, t0, X_.data(), Xd_.data(), Xdd_.data());
+            state_.twistRef = make_twist_reference(model_, X_.data());
+            state_.lastBeta = 0.0;
+            const UCParams& pp = model_.params();
+            loads_.torque = !pp.enableTorsion ? 0.0
+                            : pp.torqueMode == UC_TORQUE_PRESCRIBED ? in.torque
+                            : pp.torqueMode == UC_TORQUE_ROTATION   ? model_.torque_for_twist(in.twist)
+                                                                    : 0.0;
+        }
+        std::vector<double> v(n, 0.0);
+        // A steady tow only when nothing holds the far end back: free end, internal body, or an
+        // external end moving with the tow point. Otherwise the equilibrium is at rest.
+        const bool steadyTow = p.bottomEnd == UC_BOTTOM_FREE || p.bottomEnd == UC_BOTTOM_TOWED_BODY ||
+                               ((p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy) && (state_.end.v() - state_.tow.v()).norm() <= 1e-12);
+        if (p.initMode == UC_INIT_EQUILIBRIUM && steadyTow) {
+            // Steady tow: every node moves with the tow point, tangents do not turn.
+            for (int g = 0; g < model_.n_global(); ++g) {
+                const int j = model_.free_index(g);
+                if (j >= 0 && g % 6 < 3) v[j] = state_.tow.v()[g % 6];
+            }
+        }
+        if (p.initMode == UC_INIT_EQUILIBRIUM && !statics_applies(farPoint, error)) return false;
+        if (p.initMode == UC_INIT_EQUILIBRIUM && proxy) {
+            if (!proxy_statics(t0, v, fromProfile, error)) return false;
+        } else if (p.initMode == UC_INIT_EQUILIBRIUM) {
+            const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile);
+            if (!statics.converged) {
+                error = statics.message;
+                retry = true;
+                return false;
+            }
+        }
+        if (!solve_consistent_acceleration(model_, *staticSolver_, loads_, t0, q_, v, a_)) {
+            error = "the mass matrix is singular: check massPerLength and the end conditions";
+            return false;
+        }
+        for (int j = 0; j < n; ++j) {
+            y_[2 * (j + off_)] = q_[j];
+            y_[2 * (j + off_) + 1] = v[j];
+            yp_[2 * (j + off_)] = v[j];
+            yp_[2 * (j + off_) + 1] = a_[j];
+        }
+        if (off_) {
+            y_[0] = model_.top_length();
+            winchTension_ = in.winchTension;
+            winchTopAtStep_ = y_[0];
+        }
+        state_.time = t0;
+        state_.lastStepSize = 0.0;
+        state_.statsBase = IntegratorStats();
+        state_.integratorStarted = false;
+        state_.restartPending = true;
+        state_.compressionWarned = false;
+        state_.rainflow.reset();
+        update_outputs();
+        if (p.initMode == UC_INIT_EQUILIBRIUM && !verify_statics(error)) {
+            retry = true;
+            return false;
+        }
+        return true;
+    };
+    // A graded mesh whose equilibrium fails is graded again by the other gradings, with the same
+    // elements (docs/model.md, "Initial equilibrium"); the refusal gives the first grading's reason.
+    std::string firstError;
+    for (int grading = 0; !start(grading); ++grading) {
+        if (grading == 0) firstError = error;
+        if (!retry || !state_.graded || layout_.nodes.empty() || grading + 1 == kGradingCount) {
+            if (grading > 0) {
+                error = firstError;
+                grade_mesh(state_.tow.p(), givenFar, profileApplies_, 0);
+            }
+            if (retry && adviseMesh_) error += mesh_advice(t0, in);
+            return false;
+        }
+    }
+    if (p.initMode == UC_INIT_EQUILIBRIUM && !check_static_strain(error)) return false;
+    if (off_) {  // consistent: the winch runs at the rate of the initial tension
+        double R[12];
+        model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, R);
+        y_[1] = yp_[0] = tension_winch_rate(line_tension(R), y_[0], nullptr);
+        yp_[1] = 0.0;
+        state_.winchRate = y_[1];
+    }
+    if (sn_.area > 0.0) state_.rainflow.add(state_.outputs.towTension, sn_);
+    if (proxy) {
+        EndMotion body;  // h = 0: the cable force alone, not the body's motion
+        body.position = vec(in.end);
+        body.velocity = vec(in.endVelocity);
+        proxy_output(0.0, Vec3::Zero(), Vec3::Zero(), body);
+    }
+    state_.outputs.towTensionMax = state_.outputs.towTensionMin = state_.outputs.towTension;
+    state_.tensionScale = tension_scale(model_, state_.outputs);
+    if (!set_integrator_tolerances(error)) return false;
+    state_.outputs.tensionScale = state_.tensionScale;
+    return true;
+}
+
+}  // namespace uc
