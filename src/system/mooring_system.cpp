@@ -237,22 +237,30 @@ MooringSystem::Motion MooringSystem::end_motion(const MooringEnd& end, const UCI
     }
 }
 
-void MooringSystem::line_inputs(int k, const UCInputs& in, UCInputs& li) const {
+MooringSystem::LineEnds MooringSystem::line_ends(int k, const UCInputs& in) const {
     const MooringDeckLine& l = deck_.lines[k];
-    li = in;
-    const Motion top = end_motion(l.fairlead, in), far = end_motion(l.far, in);
     // each end's acceleration from its body's or point's input derivatives where the master gives them,
     // else estimated from its velocity inputs (DrivenEnd)
+    auto drive = [](const Motion& m) {
+        return EndMotion{m.position, m.velocity, m.accelerationGiven ? m.acceleration : Vec3::Zero(),
+                         m.accelerationGiven ? 1 : 0};
+    };
+    return {drive(end_motion(l.fairlead, in)), drive(end_motion(l.far, in))};
+}
+
+void MooringSystem::line_inputs(int k, const UCInputs& in, UCInputs& li) const {
+    li = in;
+    const LineEnds ends = line_ends(k, in);
     for (int c = 0; c < 3; ++c) {
-        li.tow[c] = top.position[c];
-        li.towVelocity[c] = top.velocity[c];
-        li.towAcceleration[c] = top.accelerationGiven ? top.acceleration[c] : 0.0;
-        li.end[c] = far.position[c];
-        li.endVelocity[c] = far.velocity[c];
-        li.endAcceleration[c] = far.accelerationGiven ? far.acceleration[c] : 0.0;
+        li.tow[c] = ends.tow.position[c];
+        li.towVelocity[c] = ends.tow.velocity[c];
+        li.towAcceleration[c] = ends.tow.acceleration[c];
+        li.end[c] = ends.far.position[c];
+        li.endVelocity[c] = ends.far.velocity[c];
+        li.endAcceleration[c] = ends.far.acceleration[c];
     }
-    li.towAccelerationGiven = top.accelerationGiven ? 1 : 0;
-    li.endAccelerationGiven = far.accelerationGiven ? 1 : 0;
+    li.towAccelerationGiven = ends.tow.accelerationGiven;
+    li.endAccelerationGiven = ends.far.accelerationGiven;
 }
 
 bool MooringSystem::check_inputs(const UCInputs& in, std::string& error) {
@@ -333,11 +341,11 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
 bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& error) {
     ++stamp_;
     if (!check_inputs(in, error)) return false;
-    UCInputs li;
+    const LineEnvironment env = line_environment(in);
     for (size_t k = 0; k < lines_.size(); ++k) {
         if (on_free_node(deck_.lines[k])) continue;  // stepped with the nodes
-        line_inputs(static_cast<int>(k), in, li);
-        if (!lines_[k]->step(t, h, li, error)) {
+        const LineEnds ends = line_ends(static_cast<int>(k), in);
+        if (!lines_[k]->step(h, ends.tow, ends.far, env, error)) {
             error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
             return false;
         }
@@ -664,7 +672,7 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
         }
         const double hs = h / pieces;
         bool ok = true;
-        for (int j = 0; j < pieces && ok; ++j) ok = node_step(t + j * hs, hs, pieces > 1 ? j * hs : -1.0, in, worst, why);
+        for (int j = 0; j < pieces && ok; ++j) ok = node_step(hs, pieces > 1 ? j * hs : -1.0, in, worst, why);
         if (ok && pieces == 1) {
             // its error estimated from the change of the accelerations, as h^3: the substeps that bring
             // it within kNodeStepError (each then errs by 1 / pieces^3 of the step's)
@@ -697,21 +705,20 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
     return false;
 }
 
-void MooringSystem::shift_coupled_ends(int k, double shift, UCInputs& li) const {
+void MooringSystem::shift_coupled_ends(int k, double shift, LineEnds& ends) const {
     const MooringDeckLine& l = deck_.lines[k];
-    UCInputs last;
-    line_inputs(k, lastInputs_, last);
-    auto shifted = [&](double p[3], double v[3], double a[3], int& given, const double lastV[3]) {
+    const LineEnds last = line_ends(k, lastInputs_);
+    auto shifted = [&](EndMotion& e, const Vec3& lastV) {
         for (int c = 0; c < 3; ++c) {  // the acceleration a driven end would take from its inputs
-            if (!given) a[c] = lastStep_ > 0.0 ? (v[c] - lastV[c]) / lastStep_ : 0.0;
-            p[c] += shift * (v[c] + 0.5 * shift * a[c]);
-            v[c] += shift * a[c];
+            if (!e.accelerationGiven) e.acceleration[c] = lastStep_ > 0.0 ? (e.velocity[c] - lastV[c]) / lastStep_ : 0.0;
+            e.position[c] += shift * (e.velocity[c] + 0.5 * shift * e.acceleration[c]);
+            e.velocity[c] += shift * e.acceleration[c];
         }
-        given = 1;
+        e.accelerationGiven = 1;
     };
     auto coupled = [](const MooringEnd& e) { return e.kind == MooringEnd::Kind::Body || e.kind == MooringEnd::Kind::Point; };
-    if (coupled(l.fairlead)) shifted(li.tow, li.towVelocity, li.towAcceleration, li.towAccelerationGiven, last.towVelocity);
-    if (held_far_end(l) && coupled(l.far)) shifted(li.end, li.endVelocity, li.endAcceleration, li.endAccelerationGiven, last.endVelocity);
+    if (coupled(l.fairlead)) shifted(ends.tow, last.tow.velocity);
+    if (held_far_end(l) && coupled(l.far)) shifted(ends.far, last.far.velocity);
 }
 
 double MooringSystem::node_step_error(double h, const std::vector<FreeNodeMotion>& start) const {
@@ -742,7 +749,7 @@ void MooringSystem::save_node_lines(std::vector<std::vector<unsigned char>>& int
     }
 }
 
-bool MooringSystem::node_step(double t, double h, double shift, const UCInputs& in, int& worst, std::string& error) {
+bool MooringSystem::node_step(double h, double shift, const UCInputs& in, int& worst, std::string& error) {
     const int m = nodeUnknowns_;
     save_node_lines(nodeLineStart_);
     const std::vector<FreeNodeMotion> start = motion_;
@@ -797,14 +804,14 @@ bool MooringSystem::node_step(double t, double h, double shift, const UCInputs& 
             r.segment<3>(o) = force - p.mass * acg - body_added_mass(static_cast<int>(n), R) * a;
             r.segment<3>(o + 3) = moment - c.cross(p.mass * acg) - I * alpha - w.cross(I * w);
         }
-        UCInputs li;
+        const LineEnvironment env = line_environment(in);
         for (size_t k = 0; k < lines_.size(); ++k) {
             const MooringDeckLine& l = deck_.lines[k];
             if (!on_free_node(l)) continue;
-            line_inputs(static_cast<int>(k), in, li);
-            if (shift >= 0.0) shift_coupled_ends(static_cast<int>(k), shift, li);
+            LineEnds drive = line_ends(static_cast<int>(k), in);
+            if (shift >= 0.0) shift_coupled_ends(static_cast<int>(k), shift, drive);
             if (!lines_[k]->restore_state(nodeLineStart_[k].data(), nodeLineStart_[k].size(), why) ||
-                !lines_[k]->step(t, h, li, why)) {
+                !lines_[k]->step(h, drive.tow, drive.far, env, why)) {
                 why = "mooring line " + std::to_string(l.id) + ": " + why;
                 return false;
             }

@@ -175,6 +175,13 @@ private:
     };
     // Where an end of a line stands and moves for these inputs.
     Motion end_motion(const MooringEnd& end, const UCInputs& in) const;
+    // Line k's ends as the line takes them in a step (CableSimulation's line-level step): where they stand
+    // and move for these inputs, each acceleration marked given where its body's or point's is.
+    struct LineEnds {
+        EndMotion tow, far;
+    };
+    LineEnds line_ends(int k, const UCInputs& in) const;
+    // The same as the FMU's inputs of one line (the master's with the ends replaced), for its initialization.
     void line_inputs(int k, const UCInputs& in, UCInputs& li) const;
     bool check_inputs(const UCInputs& in, std::string& error);  // reports a normalized quaternion once
     void update_outputs();
@@ -224,14 +231,14 @@ private:
     // (In one piece, or in substeps where its error estimate is too large or its coupled iteration does
     // not converge.)
     bool step_nodes(double t, double h, const UCInputs& in, std::string& error);
-    // One step of [t, t + h] by the coupled iteration; shift >= 0: a substep that starts shift after the
-    // communication step's, the coupled ends extrapolated there. worst: the node that moves most in the
-    // last correction (named where it fails).
-    bool node_step(double t, double h, double shift, const UCInputs& in, int& worst, std::string& error);
-    // Line k's inputs li (for the communication step's start) with its ends on coupled bodies and points
+    // One step of h from the nodes' and the lines' present time by the coupled iteration; shift >= 0: a
+    // substep that starts shift after the communication step's, the coupled ends extrapolated there.
+    // worst: the node that moves most in the last correction (named where it fails).
+    bool node_step(double h, double shift, const UCInputs& in, int& worst, std::string& error);
+    // Line k's ends (for the communication step's start) with those on coupled bodies and points
     // extrapolated by shift with their accelerations (given, or the difference of the last two velocity
     // inputs, as a driven end takes it), the accelerations marked as given.
-    void shift_coupled_ends(int k, double shift, UCInputs& li) const;
+    void shift_coupled_ends(int k, double shift, LineEnds& ends) const;
 
     UCParams base_;
     MooringDeck deck_;
