@@ -51,7 +51,7 @@ bool CableSimulation::prepare_derivatives(std::string& error) {
         model_.element_jacobian(elements[k], X_.data(), Xd_.data(), Xdd_.data(), loads_, derivativeKe_[k],
                                 derivativeCe_[k], derivativeMe_[k]);
     model_.end_node_jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_, derivativeKn_, derivativeCn_, derivativeMn_);
-    if (model_.params().bottomEnd == UC_BOTTOM_PROXY) {
+    if (model_.far_end().proxy) {
         // The force on the body (proxy_output) moves with the proxy's position p1 and velocity v1 at
         // t + h as follow + tracking do: dF = [(M / h) phi + D - M alpha / (2 h)] dv1 + (M alpha / h^2) dp1
         // (D the estimate's drag derivative; phi's own change with D left out).
@@ -83,8 +83,8 @@ bool CableSimulation::prepare_derivatives(std::string& error) {
 void CableSimulation::derivative_response(const double seed[kDerivativeInputs], double out[6]) {
     const int n = model_.n_free(), N = model_.n_elements(), bw = model_.free_bandwidth();
     const double h = state_.lastStepSize;
-    const bool externalEnd = model_.params().bottomEnd == UC_BOTTOM_EXTERNAL;
-    const bool proxyEnd = model_.params().bottomEnd == UC_BOTTOM_PROXY;
+    const bool externalEnd = model_.far_end().driven;
+    const bool proxyEnd = model_.far_end().proxy;
     // bottomEnd 4: the body's reported state enters the force on it through the tracking force alone
     // (the estimate moves after the step), linearly: -M alpha / h^2 per metre, -M (alpha + beta) / h
     // per metre per second; its acceleration not at all. The towForce rows stay 0: the cable does not

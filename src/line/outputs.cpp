@@ -134,7 +134,7 @@ void geometry_outputs(const CableModel& model, const double* X, const StationSha
     out.topDeclination = std::acos(std::clamp(-t0.z(), -1.0, 1.0));
     out.topAzimuth = std::hypot(t0.x(), t0.y()) > 1e-12 ? std::atan2(t0.y(), t0.x()) : 0.0;
     out.anchorUplift = 0.0;
-    if (p.bottomEnd == UC_BOTTOM_ANCHORED) {
+    if (model.far_end().anchored) {
         // Lying on the seabed at the anchor: the line one seabed sample before it (l/8) still
         // resting on the seabed, as seabed_outputs counts it.
         const int last = model.n_elements() - 1;

@@ -232,7 +232,7 @@ bool CableSimulation::step(double h, const EndMotion& tow, const EndMotion& far,
     Vec3 towAcceleration, endAcceleration;
     loads_.tow = state_.tow.next(state_.time, h, state_.lastStepSize, tow.position, towVelocityInput, tow.acceleration,
                            tow.accelerationGiven, towAcceleration);
-    const bool externalEnd = model_.params().bottomEnd == UC_BOTTOM_EXTERNAL;
+    const bool externalEnd = model_.far_end().driven;
     if (externalEnd) {
         loads_.end = state_.end.next(state_.time, h, state_.lastStepSize, far.position, endVelocityInput, far.acceleration,
                                far.accelerationGiven, endAcceleration);
@@ -284,7 +284,7 @@ bool CableSimulation::step(double h, const EndMotion& tow, const EndMotion& far,
     if (externalEnd) state_.end.advance(loads_.end, endVelocityInput, endAcceleration, far.accelerationGiven != 0);
     state_.lastStepSize = h;
     update_outputs();
-    if (model_.params().bottomEnd == UC_BOTTOM_PROXY) proxy_output(h, proxyPosition, proxyVelocity, far);
+    if (model_.far_end().proxy) proxy_output(h, proxyPosition, proxyVelocity, far);
     state_.outputs.towTensionMax = std::max(stepTensionMax_, state_.outputs.towTension);
     state_.outputs.towTensionMin = std::min(stepTensionMin_, state_.outputs.towTension);
     warn_of_compression();

@@ -28,7 +28,7 @@ double tension_scale(const CableModel& model, const UCOutputs& initial) {
     const LineScales& line = model.line();
     double T = initial.towTension;
     for (double t : initial.tension) T = std::max(T, t);
-    double body = model.far_end_carries_body() ? p.bodyMass : 0.0;
+    double body = model.far_end().body ? p.bodyMass : 0.0;
     for (const NodeAttachment& at : model.attachments()) body += at.body.mass;
     return std::max({T, (line.massPerLength * line.length + body) * p.gravity, kPi * kPi * line.EI / (line.length * line.length),
                      1e-6 * line.EA});
@@ -40,7 +40,7 @@ double tension_scale(const CableModel& model, const UCOutputs& initial) {
 bool CableSimulation::static_profile(const Vec3& towPoint, const Vec3& anchor, LineProfile& profile, bool& towOnTop,
                                      std::string* why) const {
     const UCParams& p = model_.params();
-    if (!model_.far_end_prescribed() || model_.winch()) return false;
+    if (!model_.far_end().held || model_.winch()) return false;
     towOnTop = towPoint.z() >= anchor.z();
     std::vector<LineProfile::Segment> segments;
     for (int k = 0; k < model_.n_sections(); ++k) {
@@ -96,7 +96,7 @@ void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, boo
     if (apply) solve_for(farPoint);
     if (ps.solved) {
         // the anchor is the lower end, held where the line rests (CableModel): graded for that point
-        layout.anchorResting = ps.towOnTop && ps.profile.rests_at_bottom() && model_.params().bottomEnd == UC_BOTTOM_ANCHORED;
+        layout.anchorResting = ps.towOnTop && ps.profile.rests_at_bottom() && model_.far_end().anchored;
         const Vec3 resting(farPoint.x(), farPoint.y(), model_.resting_height());
         if (layout.anchorResting && std::abs(farPoint.z() - resting.z()) <= 0.5 * model_.line().diameter) solve_for(resting);
         const int mode = model_.params().meshGrading;
@@ -112,7 +112,7 @@ void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, boo
         layout_ = layout;
         replace_model(CableModel(model_.params(), nullptr, graded ? &layout_ : nullptr));
     }
-    const Vec3 held = model_.params().bottomEnd == UC_BOTTOM_ANCHORED ? model_.anchor() : farPoint;
+    const Vec3 held = model_.far_end().anchored ? model_.anchor() : farPoint;
     if (apply && held != ps.far) solve_for(held);
 }
 
@@ -166,8 +166,8 @@ bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
 bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) const {
     const UCParams& p = model_.params();
     char buffer[600];
-    const char* farName = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor.x/y/z" : "end.x/y/z";
-    if (model_.far_end_prescribed()) {
+    const char* farName = model_.far_end().anchored ? "anchor.x/y/z" : "end.x/y/z";
+    if (model_.far_end().held) {
         const Vec3 d = farPoint - state_.tow.p();
         const double reach = 1.1 * model_.line().length;
         if (d.norm() > reach) {
@@ -188,7 +188,7 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
                 d.cwiseAbs().maxCoeff(&k);
                 const double others = d.squaredNorm() - d[k] * d[k];
                 const double half = std::sqrt(std::max(0.0, reach * reach - others));
-                const char* prefix = p.bottomEnd == UC_BOTTOM_ANCHORED ? "anchor" : "end";
+                const char* prefix = model_.far_end().anchored ? "anchor" : "end";
                 std::snprintf(buffer, sizeof buffer,
                               "%s.%c = %.17g is outside [%.6g, %.6g]: the far end must lie within the reach of the "
                               "stretched cable, 1.1 x length = %.6g m from the tow point (it is %.6g m away; more "
@@ -211,7 +211,7 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
         error = buffer;
         return false;
     }
-    if (model_.far_end_prescribed() && farPoint.z() < -p.waterDepth - tolerance) {
+    if (model_.far_end().held && farPoint.z() < -p.waterDepth - tolerance) {
         std::snprintf(buffer, sizeof buffer,
                       "%s: z = %.6g m is below the seabed at z = -waterDepth = %.6g m: an anchor lies on the seabed, "
                       "not under it",
@@ -349,7 +349,7 @@ bool CableSimulation::verify_statics(std::string& error) const {
     }
     const UCParams& p = model_.params();
     const double axial = state_.outputs.tension[UC_NUM_STATIONS - 1];
-    if (p.bottomEnd == UC_BOTTOM_ANCHORED && model_.line().EI == 0.0 &&
+    if (model_.far_end().anchored && model_.line().EI == 0.0 &&
         std::abs(state_.outputs.endTension - axial) > kAnchorCheck * state_.outputs.endTension) {
         // Without bending stiffness the line's force on its anchor is its axial tension there: where
         // the two differ, the elements at the anchor do not hold the line's shape.
@@ -448,7 +448,7 @@ std::string CableSimulation::mesh_advice(double t0, const UCInputs& in) const {
 
 bool CableSimulation::far_end_held_at_start() const {
     const UCParams& p = model_.params();
-    return model_.far_end_prescribed() || (p.bottomEnd == UC_BOTTOM_PROXY && p.initMode == UC_INIT_EQUILIBRIUM);
+    return model_.far_end().held || (model_.far_end().proxy && p.initMode == UC_INIT_EQUILIBRIUM);
 }
 
 bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& error) {
@@ -494,15 +494,14 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
     loads_.tow = TowTrajectory::at_rest_in_time(state_.tow.p(), state_.tow.v(), state_.tow.a(), t0);
     state_.end.reset(vec(in.end), vec(in.endVelocity), Vec3::Zero(), false);
     loads_.end = TowTrajectory::at_rest_in_time(state_.end.p(), state_.end.v(), state_.end.a(), t0);
-    const bool proxy = p.bottomEnd == UC_BOTTOM_PROXY;
-    Vec3 farPoint = p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy ? state_.end.p() : vec(p.anchor);
+    const FarEnd far = model_.far_end();  // a copy: grade_mesh may replace the model
+    Vec3 farPoint = far.external ? state_.end.p() : vec(p.anchor);
     state_.proxy = ProxyEstimate();
     loads_.endSpring = 0.0;
     if (!check_geometry(farPoint, error)) return false;
     if (!check_weight_strain(error)) return false;
     // An anchored line, or one whose far end is held at rest, starts from its static profile.
-    profileApplies_ = p.bottomEnd == UC_BOTTOM_ANCHORED ||
-                      (p.bottomEnd == UC_BOTTOM_EXTERNAL && state_.end.v().isZero(0.0));
+    profileApplies_ = far.anchored || (far.driven && state_.end.v().isZero(0.0));
     if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
         error = "torque and twist inputs must be finite numbers";
         return false;
@@ -515,7 +514,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         retry = false;
         farPoint = givenFar;
         grade_mesh(state_.tow.p(), farPoint, profileApplies_, grading);
-        if (p.bottomEnd == UC_BOTTOM_ANCHORED) farPoint = model_.anchor();  // on the seabed: where the line rests
+        if (far.anchored) farPoint = model_.anchor();  // on the seabed: where the line rests
         const int n = model_.n_free();
         const bool fromProfile = initial_guess(state_.tow.p(), farPoint, q_);
         {
@@ -533,8 +532,8 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         std::vector<double> v(n, 0.0);
         // A steady tow only when nothing holds the far end back: free end, internal body, or an
         // external end moving with the tow point. Otherwise the equilibrium is at rest.
-        const bool steadyTow = p.bottomEnd == UC_BOTTOM_FREE || p.bottomEnd == UC_BOTTOM_TOWED_BODY ||
-                               ((p.bottomEnd == UC_BOTTOM_EXTERNAL || proxy) && (state_.end.v() - state_.tow.v()).norm() <= 1e-12);
+        const bool steadyTow = far.bare || (far.body && !far.proxy) ||
+                               (far.external && (state_.end.v() - state_.tow.v()).norm() <= 1e-12);
         if (p.initMode == UC_INIT_EQUILIBRIUM && steadyTow) {
             // Steady tow: every node moves with the tow point, tangents do not turn.
             for (int g = 0; g < model_.n_global(); ++g) {
@@ -543,7 +542,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
             }
         }
         if (p.initMode == UC_INIT_EQUILIBRIUM && !statics_applies(farPoint, error)) return false;
-        if (p.initMode == UC_INIT_EQUILIBRIUM && proxy) {
+        if (p.initMode == UC_INIT_EQUILIBRIUM && far.proxy) {
             if (!proxy_statics(t0, v, fromProfile, error)) return false;
         } else if (p.initMode == UC_INIT_EQUILIBRIUM) {
             const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile);
@@ -605,7 +604,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         state_.winchRate = y_[1];
     }
     if (sn_.area > 0.0) state_.rainflow.add(state_.outputs.towTension, sn_);
-    if (proxy) {
+    if (far.proxy) {
         EndMotion body;  // h = 0: the cable force alone, not the body's motion
         body.position = vec(in.end);
         body.velocity = vec(in.endVelocity);

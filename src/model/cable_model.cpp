@@ -86,7 +86,7 @@ void TowTrajectory::evaluate(double t, Vec3& p, Vec3& v, Vec3& a) const {
 }
 
 CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const StaticLayout* layout)
-    : params_(params) {
+    : params_(params), farEnd_(FarEnd::of(params.bottomEnd)) {
     if (params.winchMode != 0) {
         const int n0 = params.nSections <= 1 ? params.nElements : params.section[0].nElements;
         const double l0 = params.nSections <= 1 ? params.length : params.section[0].length;
@@ -108,7 +108,7 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const Sta
     }
     anchor_ = Vec3(params.anchor[0], params.anchor[1], params.anchor[2]);
     const SectionProps& last = sections_.back();
-    if (laid && layout->anchorResting && params.bottomEnd == UC_BOTTOM_ANCHORED && last.seabed.enabled &&
+    if (laid && layout->anchorResting && farEnd_.anchored && last.seabed.enabled &&
         std::abs(anchor_.z() + last.seabed.depth) <= 0.5 * last.fluid.diameter) {
         // An anchor on the seabed with the line resting next to it sits at the height the line rests
         // at (within a few millimetres of z = -waterDepth): held lower or higher, the last element
@@ -123,16 +123,16 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const Sta
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) body_.addedMassMatrix(i, j) = rows[i][j];
     body_.anisotropic = !body_.addedMassMatrix.isZero(0.0);
-    if (params.bottomEnd == UC_BOTTOM_PROXY) body_.CdA = 0.0;  // its drag is the external body's, estimated
+    if (farEnd_.proxy) body_.CdA = 0.0;  // its drag is the external body's, estimated
     endContact_.seabed = last.seabed;
-    if (far_end_carries_body()) {
+    if (farEnd_.body) {
         endContact_.footprint = body_footprint(body_.mass, body_.volume, last.fluid.diameter);
         endContact_.seabed.depth = params.waterDepth;
         endContact_.seabed.smoothing = 0.05 * std::max(body_size(body_.mass, body_.volume), last.fluid.diameter);
         if (params.seabedRest == 1)
             rest_at_depth(endContact_.seabed,
                           (body_.mass - params.waterDensity * body_.volume) * params.gravity / endContact_.footprint);
-    } else if (params.bottomEnd == UC_BOTTOM_FREE) {
+    } else if (farEnd_.bare) {
         // The 5-point rule's outer point sits 0.0469 l from the element's end: the tip beyond it.
         endContact_.footprint = 0.0469101 * runs_.back().elementLength;
     }
@@ -391,9 +391,7 @@ void CableModel::build_dof_map() {
             const int g = 6 * i + k;
             const bool position = k < 3;
             if (i == 0 && position) continue;  // tow point: prescribed
-            if (i == nSlots_ - 1 && position &&
-                (params.bottomEnd == UC_BOTTOM_ANCHORED || params.bottomEnd == UC_BOTTOM_EXTERNAL))
-                continue;  // far end: prescribed
+            if (i == nSlots_ - 1 && position && farEnd_.held) continue;  // far end: prescribed
             if (position && duplicateSlot_[i]) {  // the second slot of a pinned joint: the same point
                 free_[g] = free_[g - 6];
                 continue;
@@ -504,13 +502,13 @@ void CableModel::expand(const double* q, const double* v, const double* a, const
         Xdd[k] = pa[k];
     }
     const int gN = end_offset();
-    if (params_.bottomEnd == UC_BOTTOM_ANCHORED) {
+    if (farEnd_.anchored) {
         for (int k = 0; k < 3; ++k) {
             X[gN + k] = anchor_[k];
             Xd[gN + k] = 0.0;
             Xdd[gN + k] = 0.0;
         }
-    } else if (params_.bottomEnd == UC_BOTTOM_EXTERNAL) {
+    } else if (farEnd_.driven) {
         loads.end.evaluate(t, p, pv, pa);
         for (int k = 0; k < 3; ++k) {
             X[gN + k] = p[k];
@@ -611,12 +609,16 @@ void CableModel::element_jacobian_at(int e, const double* x, const double* xd, c
     if (sec.seabed.enabled) add_seabed_jacobian(tables, sec.seabed, x, xd, K, C, loads.axialContactOnly);
 }
 
-bool CableModel::far_end_prescribed() const {
-    return params_.bottomEnd == UC_BOTTOM_ANCHORED || params_.bottomEnd == UC_BOTTOM_EXTERNAL;
-}
-
-bool CableModel::far_end_carries_body() const {
-    return params_.bottomEnd == UC_BOTTOM_TOWED_BODY || params_.bottomEnd == UC_BOTTOM_PROXY;
+FarEnd FarEnd::of(int bottomEnd) {
+    FarEnd f;
+    f.bare = bottomEnd == UC_BOTTOM_FREE;
+    f.anchored = bottomEnd == UC_BOTTOM_ANCHORED;
+    f.driven = bottomEnd == UC_BOTTOM_EXTERNAL;
+    f.held = f.anchored || f.driven;
+    f.body = bottomEnd == UC_BOTTOM_TOWED_BODY || bottomEnd == UC_BOTTOM_PROXY;
+    f.proxy = bottomEnd == UC_BOTTOM_PROXY;
+    f.external = f.driven || f.proxy;
+    return f;
 }
 
 // The estimate the loads point at, or none (a zero force).
@@ -708,7 +710,7 @@ Vec6 CableModel::end_node_residual(const double* X, const double* Xd, const doub
     Vec6 R = Vec6::Zero();
     const Vec3 rd = Eigen::Map<const Vec3>(Xd + gN);
     R.head<3>() = -loads.endLoad + loads.endLoadDamping * (rd - loads.endLoadVelocity);
-    if (params_.bottomEnd == UC_BOTTOM_PROXY) {
+    if (farEnd_.proxy) {
         Vec3 U, A;
         loads.current.flow(Eigen::Map<const Vec3>(X + gN), U, A, point_wave_cache(0));
         R.head<3>() -= proxy_estimate(loads).force(U - rd);
@@ -719,7 +721,7 @@ Vec6 CableModel::end_node_residual(const double* X, const double* Xd, const doub
     R.tail<3>() = -loads.endCouple.cross(rp) / rp.squaredNorm();
     if (endContact_.footprint > 0.0 && endContact_.seabed.enabled)
         R.head<3>() += point_contact_load(endContact_, Eigen::Map<const Vec3>(X + gN), rd, nullptr);
-    if (!far_end_carries_body()) return R;
+    if (!farEnd_.body) return R;
     Vec3 body = R.head<3>();
     add_point_body_residual(body_, fluid(), loads.current, point_wave_cache(0), X + gN, Xd + gN, Xdd + gN, body);
     R.head<3>() = body;
@@ -738,7 +740,7 @@ void CableModel::end_node_jacobian(const double* X, const double* Xd, const doub
         K.block<3, 3>(3, 3) = -skew(loads.endCouple) * (Mat3::Identity() / n2 - 2.0 * rp * rp.transpose() / (n2 * n2));
     }
     C.block<3, 3>(0, 0) = loads.endLoadDamping;
-    if (params_.bottomEnd == UC_BOTTOM_PROXY) {
+    if (farEnd_.proxy) {
         // the estimate's velocity dependence (its dependence on the position through the current's
         // gradients is left out: a Newton matrix, not the residual)
         Vec3 U, A;
@@ -754,7 +756,7 @@ void CableModel::end_node_jacobian(const double* X, const double* Xd, const doub
         K.block<3, 3>(0, 0) += J.dr;
         C.block<3, 3>(0, 0) += J.drd;
     }
-    if (!far_end_carries_body()) return;
+    if (!farEnd_.body) return;
     Mat3 Kb, Cb, Mb;
     point_body_jacobian(body_, fluid(), loads.current, point_wave_cache(0), X + gN, Xd + gN, Kb, Cb, Mb);
     K.block<3, 3>(0, 0) += Kb;

@@ -70,6 +70,19 @@ struct ProxyEstimate {
 constexpr double kProxyFlowScale = 0.25;       // [m/s] s above
 constexpr double kProxyFlowSmoothing = 1e-3;  // [m/s] |u| as sqrt(|u|^2 + this^2): smooth at rest
 
+// What the line's far end is, decided once from bottomEnd when the model is built (the physics asks
+// these questions, never the parameter's number).
+struct FarEnd {
+    bool bare = false;      // nothing is at it: a free tip (0)
+    bool anchored = false;  // held at anchor.x/y/z (1)
+    bool driven = false;    // moves with the master's end.* inputs (3)
+    bool held = false;      // its position is prescribed, no unknowns: anchored or driven
+    bool body = false;      // it carries a point body: the internal towed body (2) or the proxy (4)
+    bool proxy = false;     // the body is the cable's proxy of an external body (4)
+    bool external = false;  // an external body is at it, where the end.* inputs say: driven or proxy
+    static FarEnd of(int bottomEnd);
+};
+
 struct Loads {
     TowTrajectory tow;
     TowTrajectory end;  // far end when bottomEnd = 3 (external body)
@@ -248,9 +261,8 @@ public:
     const SeabedProps& seabed() const { return sections_[0].seabed; }
     const CurrentProfile& current_profile() const { return profile_; }
     const SeaState& sea() const { return sea_; }
-    bool far_end_carries_body() const;  // the internal towed body or the proxy of an external one
+    const FarEnd& far_end() const { return farEnd_; }  // what the far end is
     const PointBody& body() const { return body_; }
-    bool far_end_prescribed() const;  // anchored or external
     // The anchor's position: anchor.x/y/z, or on the seabed the height the line rests at there.
     const Vec3& anchor() const { return anchor_; }
     bool anchor_resting() const { return anchorResting_; }  // held at the line's resting height
@@ -316,6 +328,7 @@ private:
     void build_dof_map();
 
     UCParams params_;
+    FarEnd farEnd_;
     int nElements_ = 0;
     int nSlots_ = 0;
     LineScales line_;

@@ -112,7 +112,7 @@ bool MooringSystem::build(std::string& error) {
             points.push_back({at.s, w, at.body.mass * model.fluid().gravity});
             weight += w;
         }
-        if (p.bottomEnd == UC_BOTTOM_TOWED_BODY) weight += (p.bodyMass - p.waterDensity * p.bodyVolume) * p.gravity;
+        if (model.far_end().body && !model.far_end().proxy) weight += (p.bodyMass - p.waterDensity * p.bodyVolume) * p.gravity;
         segments_.push_back(segments);
         pointLoads_.push_back(points);
         hangingWeight_.push_back(weight);
