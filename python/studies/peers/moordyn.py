@@ -211,9 +211,6 @@ def drive(md: System, start, n: int, comm_step: float, calls: int, coupled, reco
 
 
 # ----------------------------------------------------------------------------- a process of its own
-RELEASE_ATTEMPTS = 3
-
-
 def release(deck: Path, point: int, n_lines: int, t_end: float, h: float) -> dict:
     """MoorDyn fed the deck, no coupled objects, one call per h (MoorDyn substepping at dtM), in a
     process that loads nothing else: each line's tension at its end B and point `point`'s position at
@@ -223,18 +220,10 @@ def release(deck: Path, point: int, n_lines: int, t_end: float, h: float) -> dic
     env = dict(os.environ)
     here = str(Path(__file__).resolve().parents[2])  # the folder holding the studies package
     env["PYTHONPATH"] = here + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
-    command = [sys.executable, "-m", "studies.peers.moordyn", "release", str(deck), str(point), str(n_lines),
-               str(t_end), str(h)]
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "moordyn.npz"
-        # MoorDyn 2.7 dies of a signal now and then even in a process of its own (seen: both release runs of
-        # one test file under two pytest workers, while eight such runs side by side did not): a run that
-        # dies of a signal is taken again, at most RELEASE_ATTEMPTS times; any other failure is raised at once.
-        for attempt in range(RELEASE_ATTEMPTS):
-            run = subprocess.run(command + [str(out)], capture_output=True, env=env)
-            if run.returncode >= 0 or attempt == RELEASE_ATTEMPTS - 1:
-                break
-        run.check_returncode()
+        subprocess.run([sys.executable, "-m", "studies.peers.moordyn", "release", str(deck), str(point), str(n_lines),
+                        str(t_end), str(h), str(out)], check=True, capture_output=True, env=env)
         with np.load(out) as data:
             return {k: (float(data[k]) if k == "cpu" else np.array(data[k])) for k in data.files}
 
