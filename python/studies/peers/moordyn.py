@@ -8,7 +8,7 @@ directory of its own; MoorDyn writes to the process's stdout and stderr directly
 
 `moordyn` is imported where it is used, never when this module is: loaded after MoorPy or the FMU's
 modules, MoorDyn 2.7's Create crashes at random on some decks (a segmentation fault), so `release`
-runs it in a process of its own (`python -m studies.peers.moordyn`) that loads nothing else.
+runs it in a process of its own that loads nothing else (a self-contained script).
 """
 
 from __future__ import annotations
@@ -211,47 +211,56 @@ def drive(md: System, start, n: int, comm_step: float, calls: int, coupled, reco
 
 
 # ----------------------------------------------------------------------------- a process of its own
+# The child's whole program: moordyn and numpy only, nothing of this package (the release runs crashed with a
+# segmentation fault in the full test suite when the child ran this module with `-m`, which the
+# self-contained script never did).
+_RELEASE_SCRIPT = r"""
+import shutil, sys, tempfile, time
+from pathlib import Path
+import numpy as np
+import moordyn
+
+deck, point, n_lines, t_end, h, out = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4]), \
+    float(sys.argv[5]), sys.argv[6]
+times = np.arange(0.0, t_end + 0.5 * h, h)
+tension = np.zeros((len(times), n_lines))
+position = np.zeros((len(times), 3))
+with tempfile.TemporaryDirectory() as tmp:
+    copy = Path(tmp) / Path(deck).name
+    shutil.copy(deck, copy)
+    system = moordyn.Create(str(copy))
+    moordyn.Init(system, [], [])
+    lines = [moordyn.GetLine(system, k) for k in range(1, n_lines + 1)]
+    ends = [moordyn.GetLineN(ln) for ln in lines]
+    handle = moordyn.GetPoint(system, point)
+
+    def record(i):
+        # MoorDyn's tensions are its segments', half a segment from the end node: extrapolated linearly
+        # from the last two segments (node N - 1 has their mean) to node N
+        tension[i] = [2.0 * np.linalg.norm(moordyn.GetLineNodeTen(ln, n)) -
+                      np.linalg.norm(moordyn.GetLineNodeTen(ln, n - 1)) for ln, n in zip(lines, ends)]
+        position[i] = moordyn.GetPointPos(handle)
+
+    record(0)
+    cpu0 = time.process_time()
+    for k in range(len(times) - 1):
+        moordyn.Step(system, [], [], times[k], h)
+        record(k + 1)
+    cpu = time.process_time() - cpu0
+    moordyn.Close(system)
+np.savez(out, t=times, tension=tension, position=position, cpu=cpu)
+"""
+
+
 def release(deck: Path, point: int, n_lines: int, t_end: float, h: float) -> dict:
     """MoorDyn fed the deck, no coupled objects, one call per h (MoorDyn substepping at dtM), in a
     process that loads nothing else: each line's tension at its end B and point `point`'s position at
     t = 0, h, 2 h, ... and the CPU time of the steps."""
     import subprocess
 
-    env = dict(os.environ)
-    here = str(Path(__file__).resolve().parents[2])  # the folder holding the studies package
-    env["PYTHONPATH"] = here + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "moordyn.npz"
-        subprocess.run([sys.executable, "-m", "studies.peers.moordyn", "release", str(deck), str(point), str(n_lines),
-                        str(t_end), str(h), str(out)], check=True, capture_output=True, env=env)
+        subprocess.run([sys.executable, "-c", _RELEASE_SCRIPT, str(deck), str(point), str(n_lines), str(t_end), str(h),
+                        str(out)], check=True, capture_output=True)
         with np.load(out) as data:
             return {k: (float(data[k]) if k == "cpu" else np.array(data[k])) for k in data.files}
-
-
-def _release_here(deck: str, point: int, n_lines: int, t_end: float, h: float, out: str) -> None:
-    times = np.arange(0.0, t_end + 0.5 * h, h)
-    tension = np.zeros((len(times), n_lines))
-    position = np.zeros((len(times), 3))
-    with System(Path(deck), quiet="setup") as md:
-        md.init([], [])
-        lines = [md.line(k) for k in range(1, n_lines + 1)]
-        handle = md.point(point)
-
-        def record(i):
-            tension[i] = [md.end_b_tension(ln) for ln in lines]
-            position[i] = md.point_position(handle)
-
-        record(0)
-        cpu0 = time.process_time()
-        for k in range(len(times) - 1):
-            md.step([], [], times[k], h)
-            record(k + 1)
-        cpu = time.process_time() - cpu0
-    np.savez(out, t=times, tension=tension, position=position, cpu=cpu)
-
-
-if __name__ == "__main__":
-    if len(sys.argv) != 8 or sys.argv[1] != "release":
-        sys.exit("usage: python -m studies.peers.moordyn release DECK POINT LINES T_END STEP OUT.npz")
-    _release_here(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]), float(sys.argv[5]), float(sys.argv[6]),
-                  sys.argv[7])
