@@ -60,7 +60,7 @@ import numpy as np
 from .fmu import NUM_STATIONS, CableFMU, FMICallException
 from .fmu import load as load_fmu
 from .orientation import ANGLES_XYZ, QUATERNION, quaternion_from_angles
-from .variables import MAX_LINES
+from .variables import MAX_LINES, VARIABLES
 from .paths import find_scene, require_fmu
 from .scene_schema import Checker, SceneFileError, validate
 from .units import KNOT
@@ -73,8 +73,11 @@ SHAPE = [f"shape.{c}[{k}]" for c in "xyz" for k in range(1, NUM_STATIONS + 1)]
 STATIONS = [f"{q}[{k}]" for q in ("tension", "curvature") for k in range(1, NUM_STATIONS + 1)]  # with the shape
 BODY_RATES = [f"body[1].{n}" for n in ("vx", "vy", "vz", "wx", "wy", "wz")]
 BODY_RECORDED = [f"body[1].{q}.{c}" for q in ("force", "moment") for c in "xyz"]
+STRENGTH = ("MBL", "fairleadUtilisation", "anchorUtilisation", "maxUtilisation")  # docs/design_checks.md
+BROKEN = tuple(q for q in ("broken", "breakTime") if f"line[1].{q}" in VARIABLES)  # line failure, where the FMU has it
 LINES_RECORDED = [f"line[{k}].{q}" for k in range(1, MAX_LINES + 1)
-                  for q in ("fairleadTension", "anchorTension", "groundedLength")]
+                  for q in ("fairleadTension", "anchorTension", "groundedLength") + STRENGTH + BROKEN]
+LINE_STRENGTH_RECORDED = [f"line[1].{q}" for q in STRENGTH]  # a single line's (kept when it has an MBL)
 BODY_POSE = [f"body[1].{n}" for n in ("x", "y", "z", "roll", "pitch", "yaw")]  # the scene's motion of body 1
 SCENE_SETTINGS = ("duration", "step")
 TOW_SETTINGS = {"speed_kn": "speed_kn", "heading": "heading_deg", "heading_deg": "heading_deg"}  # NAME -> [tow] key
@@ -465,6 +468,8 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
     body = BodyMotion(s.body) if s.body else None
     if body:
         extra = extra + BODY_RECORDED + LINES_RECORDED
+    else:
+        extra = extra + LINE_STRENGTH_RECORDED
     recorded = list(dict.fromkeys(RECORDED + extra + s.outputs + (SHAPE + STATIONS if s.record_shape else [])))
     data = np.zeros((n + 1, len(recorded)))
     tow = np.zeros((n + 1, 3))
@@ -580,8 +585,14 @@ def _columns(recorded: list, data: np.ndarray, tow: np.ndarray, pose: np.ndarray
     body 1's pose when the scene moves it."""
     lines = {name.split(".")[0] for i, name in enumerate(recorded)
              if name.endswith(".fairleadTension") and name in LINES_RECORDED and np.any(data[:, i] != 0.0)}
+    if "line[1].MBL" in recorded and "line[1].fairleadTension" not in recorded:  # a single line
+        lines.add("line[1]")
+    # the breaking strength's columns of lines with an MBL only
+    weak = {name.split(".")[0] for i, name in enumerate(recorded) if name.endswith(".MBL") and not np.any(data[:, i] > 0.0)}
     columns = {name: data[:, i] for i, name in enumerate(recorded)
-               if name not in LINES_RECORDED or name in requested or name.split(".")[0] in lines}
+               if name in requested or ((name not in LINES_RECORDED and name not in LINE_STRENGTH_RECORDED)
+                                        or (name.split(".")[0] in lines
+                                            and not (name.split(".", 1)[1] in STRENGTH and name.split(".")[0] in weak)))}
     columns.update({"tow.x": tow[:, 0], "tow.y": tow[:, 1], "tow.z": tow[:, 2]})
     if pose is not None:
         columns.update({name: pose[:, i] for i, name in enumerate(BODY_POSE)})

@@ -103,11 +103,17 @@ def scene_summary(result) -> list[Extreme]:
     """The table of a scene's result (a SceneResult, or anything with .time, .columns and .scene)."""
     t, c = result.time, result.columns
     if result.scene.body:
-        return _mooring_rows(t, c) + _body_rows(t, c)
+        return _mooring_rows(t, c) + _strength_rows(t, c) + _body_rows(t, c)
     rows = _tow_rows(t, c, result.scene.kind == "anchored")
     if "unstretchedLength" in c:
         rows.append(extreme("unstretchedLength", "paid-out (unstretched) length", t, c["unstretchedLength"]))
-    return rows
+    return rows + _strength_rows(t, c)
+
+
+def _strength_rows(t, c: dict) -> list[Extreme]:
+    """Each line's largest tension over its MBL along it, for the lines with an MBL (docs/design_checks.md)."""
+    return [extreme(f"line[{k}].maxUtilisation", f"line {k}: largest tension / MBL along it", t,
+                    c[f"line[{k}].maxUtilisation"]) for k in range(1, 1 + len(c)) if f"line[{k}].maxUtilisation" in c]
 
 
 def system_summary(r) -> list[Extreme]:

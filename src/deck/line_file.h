@@ -25,6 +25,7 @@ struct LineFileSection {
     double EI = 0.0;
     double axialDamping = 0.0;  // [N.s]: BA, or -zeta converted with MoorDyn's segment length
     double Cdn = 0.0, Cdt = 0.0, Can = 0.0, Cat = 0.0;  // Cd, CdAx, Ca, CaAx
+    double MBL = 0.0;       // minimum breaking load [N]: its type's MBL column or MoorPy's default (0: none)
     int numSegs = 0;        // MoorDyn's NumSegs
     int elements = 0;       // our cubic elements (docs/lines.md: the rule, or lineFileElements)
     int row = 0;            // line of the file of its LINES entry

@@ -4,7 +4,37 @@
 namespace uc {
 namespace deck {
 
-bool read_line_type(const Row& row, LineType& t, std::string& error) {
+namespace {
+
+// The index of the column named MBL among the table's column names (after MoorDyn's ten), -1 when none.
+int breaking_load_column(const Row& columns) {
+    for (size_t i = 10; i < columns.tokens.size(); ++i) {
+        if (upper(columns.tokens[i]) == "MBL") return static_cast<int>(i);
+    }
+    return -1;
+}
+
+}  // namespace
+
+bool read_line_type(const Row& deckRow, const Row& columns, LineType& t, std::string& error) {
+    // The MBL column is read here and taken out of the row; the rest is MoorDyn's row.
+    const int mblColumn = breaking_load_column(columns);
+    t.MBL = 0.0;
+    Row row = deckRow;
+    if (mblColumn >= 0) {
+        Fields m(deckRow, error);
+        if (static_cast<int>(deckRow.tokens.size()) <= mblColumn) {
+            return m.fail("the column names (line " + std::to_string(columns.number) + ") have MBL as column " +
+                          std::to_string(mblColumn + 1) + ", this row has " + std::to_string(deckRow.tokens.size()) +
+                          " fields: give every line type its MBL [N]");
+        }
+        t.MBL = m.positive(static_cast<size_t>(mblColumn), "MBL");
+        if (!m.ok()) {
+            error += " (the minimum breaking load [N] of line type " + quoted(deckRow.tokens[0]) + ")";
+            return false;
+        }
+        row.tokens.erase(row.tokens.begin() + mblColumn);
+    }
     Fields f(row, error);
     const size_t n = row.tokens.size();
     if (n != 10 && n != 11 && n != 13) {

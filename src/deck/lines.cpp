@@ -79,6 +79,7 @@ LineFileSection section_of(const Line& l, const LineType& t) {
     s.Cdt = t.CdAx;
     s.Can = t.Ca;
     s.Cat = t.CaAx;
+    s.MBL = t.MBL;
     s.numSegs = l.numSegs;
     s.row = l.row;
     return s;

@@ -128,6 +128,7 @@ void copy_line_properties(const LineFileSection& s, Line& out) {
     out.Can = s.Can;
     out.Cat = s.Cat;
     out.nElements = s.elements;
+    if (s.MBL > 0.0) out.MBL = s.MBL;  // else the parameter's (a section's 0: the line's MBL)
 }
 
 }  // namespace

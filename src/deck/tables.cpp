@@ -49,13 +49,18 @@ bool parse_deck(std::string_view text, bool system, const LineFileCompanions& co
     std::vector<LineType>& types = deck.types;
     for (const Row& row : section(Kind::LineTypes)->rows) {
         LineType t{};
-        if (!read_line_type(row, t, error)) return false;
+        if (!read_line_type(row, section(Kind::LineTypes)->columns, t, error)) return false;
         for (const LineType& other : types) {
             if (other.name == t.name) {
                 error = at_line(row.number, "line type " + quoted(t.name) + " is defined twice (also at line " +
                                                 std::to_string(other.row) + ")");
                 return false;
             }
+        }
+        if (t.MBL == 0.0) {
+            std::string note;
+            t.MBL = default_breaking_load(t, note);
+            notes.push_back(at_line(t.row, note));
         }
         types.push_back(t);
     }

@@ -39,11 +39,21 @@ bool read_sea(const Options& options, const LineFileCompanions& companions, Line
 struct LineType {
     std::string name;
     double diameter, massPerLength, EA, BA, EI, Cd, Ca, CdAx, CaAx;
+    double MBL;  // minimum breaking load [N]: the MBL column's, else MoorPy's default for its name (0: none)
     int row;
 };
 
 // A LINE TYPES row: constant EA, BA or -zeta, EI; other axial, damping and bending models refused.
-bool read_line_type(const Row& row, LineType& t, std::string& error);
+// columns: the table's line of column names; a column named MBL (after the ten of MoorDyn) is the
+// minimum breaking load [N], which must be positive.
+bool read_line_type(const Row& row, const Row& columns, LineType& t, std::string& error);
+
+// ------------------------------------------------------------------------------ breaking load (deck/breaking_load.cpp)
+// MoorPy's minimum breaking load of a line type named for its material (MoorProps_default.yaml: R4 studless
+// and studlink chain, wire rope, polyester, nylon) at the nominal diameter its mass per length gives
+// (d = sqrt(Mass/m / mass_d2)); 0 when the name names none of them. note: what the log says (formula,
+// diameter, value), or why there is none.
+double default_breaking_load(const LineType& t, std::string& note);
 
 // ------------------------------------------------------------------------------------------- points (deck/points.cpp)
 enum class PointKind { Fixed, Vessel, Free, Body };

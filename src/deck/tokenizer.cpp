@@ -175,13 +175,14 @@ bool collect_sections(std::string_view text, std::vector<std::optional<Section>>
                                             std::to_string(slot->header) + ")");
                 return false;
             }
-            slot = Section{number, {}};
+            slot = Section{number, {}, {}};
             current = &*slot;
             headerLinesLeft = (kind == Kind::Options || kind == Kind::Outputs) ? 0 : 2;
             continue;
         }
         if (current == nullptr) continue;
         if (headerLinesLeft > 0) {
+            if (headerLinesLeft == 2) current->columns = Row{number, tokenize(lines[i])};
             --headerLinesLeft;
             continue;
         }

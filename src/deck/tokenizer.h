@@ -59,6 +59,7 @@ const char* unsupported(Kind kind);
 struct Section {
     int header = 0;  // line of its header
     std::vector<Row> rows;
+    Row columns;     // a table's line of column names (empty for options and outputs)
 };
 
 // The rows of the text by section (indexed by Kind). A header is a line holding "---"; text outside the

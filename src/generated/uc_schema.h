@@ -29,6 +29,7 @@ typedef struct UCSection {
     double Cat; /* section[k].Cat: tangential added-mass coefficient */
     int nElements; /* section[k].nElements: number of cubic elements */
     int joint; /* section[k].joint: joint to section k + 1: 0 rigid splice (shared tangent, carries bending moment), 1 pinned shackle (no moment) */
+    double MBL; /* section[k].MBL [N]: minimum breaking load (0: the line's `MBL`) */
 } UCSection;
 
 typedef struct UCAttachment {
@@ -69,6 +70,10 @@ typedef struct UCMooringLine {
     double anchorTension; /* line[k].anchorTension [N]: line k: tension at its other end (the anchor) */
     double minTension; /* line[k].minTension [N]: line k: smallest tension along it */
     double groundedLength; /* line[k].groundedLength [m]: line k: unstretched length resting on the seabed */
+    double MBL; /* line[k].MBL [N]: line k (a mooring system's in the deck's order; line 1 of a single line): its minimum breaking load, the smallest of its sections' (0: not given; `MBL`, `section[k].MBL`, a deck's line type) */
+    double fairleadUtilisation; /* line[k].fairleadUtilisation: line k: tension at its fairlead over the MBL of the section there (0 without an MBL) */
+    double anchorUtilisation; /* line[k].anchorUtilisation: line k: tension at its other end (the anchor) over the MBL of the section there (0 without an MBL) */
+    double maxUtilisation; /* line[k].maxUtilisation: line k: largest tension over MBL along it (every element's ends, each over its section's MBL), at the communication point (0 without an MBL) */
 } UCMooringLine;
 
 typedef struct UCBodyLoad {
@@ -162,6 +167,7 @@ typedef struct UCParams {
     double proxyFilterTime; /* proxy.filterTime [s]: `bottomEnd` 4: shortest time constant of the low-pass that estimates the external body's other forces (drag, lift, thrust, weight and buoyancy beyond the proxy's) from the tracking force; the estimate uses the larger of this and five communication steps */
     int seabedRest; /* seabedRest: where a line at rest lies on the penalty seabed: 1 (the default) at z = -`waterDepth`: the contact surface of each section and attachment is raised by its own rest penetration (its weight over the contact stiffness, plus half the smoothing band), so the static state agrees with a rigid seabed at every `seabedStiffness` and the stiffness acts on changes of load about the rest; 0 the contact surface at z = -`waterDepth`, a resting line sinking into it by its rest penetration, as MoorDyn's `kBot` ([docs/model.md](docs/model.md), seabed) */
     int bodyOrientation; /* bodyOrientation: a mooring system's coupled bodies: which inputs give their orientation: 0 `body[k].roll/pitch/yaw` with R = Rx(roll) Ry(pitch) Rz(yaw), MoorDyn's; 1 the unit quaternion `body[k].q0/q1/q2/q3`, scalar first; 2 `body[k].roll/pitch/yaw` with R = Rz(yaw) Ry(pitch) Rx(roll), OpenFAST's and MoorPy's ([docs/systems_mooring.md](docs/systems_mooring.md)) */
+    double MBL; /* MBL [N]: minimum breaking load (MBL) of the line (`nSections` = 1) and of the sections whose `section[k].MBL` is 0; 0: not given, the `line[k].*Utilisation` outputs are 0. A `lineFile` deck's line type gives its own: its MBL column, else MoorPy's formula for a type named chain, studlink, wire, polyester or nylon ([docs/design_checks.md](docs/design_checks.md)) */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
 } UCParams;
@@ -503,6 +509,15 @@ typedef struct UCOutputs {
     X(258, "proxy.filterTime", REAL, PARAMETER, proxyFilterTime) \
     X(259, "seabedRest", INTEGER, PARAMETER, seabedRest) \
     X(260, "bodyOrientation", INTEGER, PARAMETER, bodyOrientation) \
+    X(261, "MBL", REAL, PARAMETER, MBL) \
+    X(262, "section[1].MBL", REAL, PARAMETER, section[0].MBL) \
+    X(263, "section[2].MBL", REAL, PARAMETER, section[1].MBL) \
+    X(264, "section[3].MBL", REAL, PARAMETER, section[2].MBL) \
+    X(265, "section[4].MBL", REAL, PARAMETER, section[3].MBL) \
+    X(266, "section[5].MBL", REAL, PARAMETER, section[4].MBL) \
+    X(267, "section[6].MBL", REAL, PARAMETER, section[5].MBL) \
+    X(268, "section[7].MBL", REAL, PARAMETER, section[6].MBL) \
+    X(269, "section[8].MBL", REAL, PARAMETER, section[7].MBL) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -1230,6 +1245,70 @@ typedef struct UCOutputs {
     X(2522, "body[4].pose.roll", REAL, OUTPUT, bodyLoad[3].poseAngles[0]) \
     X(2523, "body[4].pose.pitch", REAL, OUTPUT, bodyLoad[3].poseAngles[1]) \
     X(2524, "body[4].pose.yaw", REAL, OUTPUT, bodyLoad[3].poseAngles[2]) \
+    X(2525, "line[1].MBL", REAL, OUTPUT, mooringLine[0].MBL) \
+    X(2526, "line[2].MBL", REAL, OUTPUT, mooringLine[1].MBL) \
+    X(2527, "line[3].MBL", REAL, OUTPUT, mooringLine[2].MBL) \
+    X(2528, "line[4].MBL", REAL, OUTPUT, mooringLine[3].MBL) \
+    X(2529, "line[5].MBL", REAL, OUTPUT, mooringLine[4].MBL) \
+    X(2530, "line[6].MBL", REAL, OUTPUT, mooringLine[5].MBL) \
+    X(2531, "line[7].MBL", REAL, OUTPUT, mooringLine[6].MBL) \
+    X(2532, "line[8].MBL", REAL, OUTPUT, mooringLine[7].MBL) \
+    X(2533, "line[9].MBL", REAL, OUTPUT, mooringLine[8].MBL) \
+    X(2534, "line[10].MBL", REAL, OUTPUT, mooringLine[9].MBL) \
+    X(2535, "line[11].MBL", REAL, OUTPUT, mooringLine[10].MBL) \
+    X(2536, "line[12].MBL", REAL, OUTPUT, mooringLine[11].MBL) \
+    X(2537, "line[13].MBL", REAL, OUTPUT, mooringLine[12].MBL) \
+    X(2538, "line[14].MBL", REAL, OUTPUT, mooringLine[13].MBL) \
+    X(2539, "line[15].MBL", REAL, OUTPUT, mooringLine[14].MBL) \
+    X(2540, "line[16].MBL", REAL, OUTPUT, mooringLine[15].MBL) \
+    X(2541, "line[1].fairleadUtilisation", REAL, OUTPUT, mooringLine[0].fairleadUtilisation) \
+    X(2542, "line[2].fairleadUtilisation", REAL, OUTPUT, mooringLine[1].fairleadUtilisation) \
+    X(2543, "line[3].fairleadUtilisation", REAL, OUTPUT, mooringLine[2].fairleadUtilisation) \
+    X(2544, "line[4].fairleadUtilisation", REAL, OUTPUT, mooringLine[3].fairleadUtilisation) \
+    X(2545, "line[5].fairleadUtilisation", REAL, OUTPUT, mooringLine[4].fairleadUtilisation) \
+    X(2546, "line[6].fairleadUtilisation", REAL, OUTPUT, mooringLine[5].fairleadUtilisation) \
+    X(2547, "line[7].fairleadUtilisation", REAL, OUTPUT, mooringLine[6].fairleadUtilisation) \
+    X(2548, "line[8].fairleadUtilisation", REAL, OUTPUT, mooringLine[7].fairleadUtilisation) \
+    X(2549, "line[9].fairleadUtilisation", REAL, OUTPUT, mooringLine[8].fairleadUtilisation) \
+    X(2550, "line[10].fairleadUtilisation", REAL, OUTPUT, mooringLine[9].fairleadUtilisation) \
+    X(2551, "line[11].fairleadUtilisation", REAL, OUTPUT, mooringLine[10].fairleadUtilisation) \
+    X(2552, "line[12].fairleadUtilisation", REAL, OUTPUT, mooringLine[11].fairleadUtilisation) \
+    X(2553, "line[13].fairleadUtilisation", REAL, OUTPUT, mooringLine[12].fairleadUtilisation) \
+    X(2554, "line[14].fairleadUtilisation", REAL, OUTPUT, mooringLine[13].fairleadUtilisation) \
+    X(2555, "line[15].fairleadUtilisation", REAL, OUTPUT, mooringLine[14].fairleadUtilisation) \
+    X(2556, "line[16].fairleadUtilisation", REAL, OUTPUT, mooringLine[15].fairleadUtilisation) \
+    X(2557, "line[1].anchorUtilisation", REAL, OUTPUT, mooringLine[0].anchorUtilisation) \
+    X(2558, "line[2].anchorUtilisation", REAL, OUTPUT, mooringLine[1].anchorUtilisation) \
+    X(2559, "line[3].anchorUtilisation", REAL, OUTPUT, mooringLine[2].anchorUtilisation) \
+    X(2560, "line[4].anchorUtilisation", REAL, OUTPUT, mooringLine[3].anchorUtilisation) \
+    X(2561, "line[5].anchorUtilisation", REAL, OUTPUT, mooringLine[4].anchorUtilisation) \
+    X(2562, "line[6].anchorUtilisation", REAL, OUTPUT, mooringLine[5].anchorUtilisation) \
+    X(2563, "line[7].anchorUtilisation", REAL, OUTPUT, mooringLine[6].anchorUtilisation) \
+    X(2564, "line[8].anchorUtilisation", REAL, OUTPUT, mooringLine[7].anchorUtilisation) \
+    X(2565, "line[9].anchorUtilisation", REAL, OUTPUT, mooringLine[8].anchorUtilisation) \
+    X(2566, "line[10].anchorUtilisation", REAL, OUTPUT, mooringLine[9].anchorUtilisation) \
+    X(2567, "line[11].anchorUtilisation", REAL, OUTPUT, mooringLine[10].anchorUtilisation) \
+    X(2568, "line[12].anchorUtilisation", REAL, OUTPUT, mooringLine[11].anchorUtilisation) \
+    X(2569, "line[13].anchorUtilisation", REAL, OUTPUT, mooringLine[12].anchorUtilisation) \
+    X(2570, "line[14].anchorUtilisation", REAL, OUTPUT, mooringLine[13].anchorUtilisation) \
+    X(2571, "line[15].anchorUtilisation", REAL, OUTPUT, mooringLine[14].anchorUtilisation) \
+    X(2572, "line[16].anchorUtilisation", REAL, OUTPUT, mooringLine[15].anchorUtilisation) \
+    X(2573, "line[1].maxUtilisation", REAL, OUTPUT, mooringLine[0].maxUtilisation) \
+    X(2574, "line[2].maxUtilisation", REAL, OUTPUT, mooringLine[1].maxUtilisation) \
+    X(2575, "line[3].maxUtilisation", REAL, OUTPUT, mooringLine[2].maxUtilisation) \
+    X(2576, "line[4].maxUtilisation", REAL, OUTPUT, mooringLine[3].maxUtilisation) \
+    X(2577, "line[5].maxUtilisation", REAL, OUTPUT, mooringLine[4].maxUtilisation) \
+    X(2578, "line[6].maxUtilisation", REAL, OUTPUT, mooringLine[5].maxUtilisation) \
+    X(2579, "line[7].maxUtilisation", REAL, OUTPUT, mooringLine[6].maxUtilisation) \
+    X(2580, "line[8].maxUtilisation", REAL, OUTPUT, mooringLine[7].maxUtilisation) \
+    X(2581, "line[9].maxUtilisation", REAL, OUTPUT, mooringLine[8].maxUtilisation) \
+    X(2582, "line[10].maxUtilisation", REAL, OUTPUT, mooringLine[9].maxUtilisation) \
+    X(2583, "line[11].maxUtilisation", REAL, OUTPUT, mooringLine[10].maxUtilisation) \
+    X(2584, "line[12].maxUtilisation", REAL, OUTPUT, mooringLine[11].maxUtilisation) \
+    X(2585, "line[13].maxUtilisation", REAL, OUTPUT, mooringLine[12].maxUtilisation) \
+    X(2586, "line[14].maxUtilisation", REAL, OUTPUT, mooringLine[13].maxUtilisation) \
+    X(2587, "line[15].maxUtilisation", REAL, OUTPUT, mooringLine[14].maxUtilisation) \
+    X(2588, "line[16].maxUtilisation", REAL, OUTPUT, mooringLine[15].maxUtilisation) \
 
 /* X(member, value): the start value of every numeric parameter (Strings start empty: zero-filled) */
 #define UC_SCHEMA_PARAMETER_DEFAULTS(X) \
@@ -1492,6 +1571,15 @@ typedef struct UCOutputs {
     X(proxyFilterTime, 1.0) \
     X(seabedRest, 1) \
     X(bodyOrientation, 0) \
+    X(MBL, 0.0) \
+    X(section[0].MBL, 0.0) \
+    X(section[1].MBL, 0.0) \
+    X(section[2].MBL, 0.0) \
+    X(section[3].MBL, 0.0) \
+    X(section[4].MBL, 0.0) \
+    X(section[5].MBL, 0.0) \
+    X(section[6].MBL, 0.0) \
+    X(section[7].MBL, 0.0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -1755,6 +1843,15 @@ typedef struct UCOutputs {
     X(proxyFilterTime, "proxy.filterTime", 0.0, 10000.0, 1, 0, "(0, 10000]", "the estimate's low-pass needs a positive time constant") \
     X(seabedRest, "seabedRest", 0.0, 1.0, 0, 0, "{0 sinking by the rest penetration as in MoorDyn, 1 resting at the seabed's depth}", "unknown seabed rest level") \
     X(bodyOrientation, "bodyOrientation", 0.0, 2.0, 0, 0, "{0 angles R = Rx Ry Rz, 1 quaternion, 2 angles R = Rz Ry Rx}", "unknown orientation input of the coupled bodies") \
+    X(MBL, "MBL", 0.0, 10000000000.0, 0, 0, "[0, 10000000000]", "a minimum breaking load cannot be negative (0: not given)") \
+    X(section[0].MBL, "section[1].MBL", 0.0, 10000000000.0, 0, 0, "[0, 10000000000]", "a minimum breaking load cannot be negative (0: the line's MBL)") \
+    X(section[1].MBL, "section[2].MBL", 0.0, 10000000000.0, 0, 0, "[0, 10000000000]", "a minimum breaking load cannot be negative (0: the line's MBL)") \
+    X(section[2].MBL, "section[3].MBL", 0.0, 10000000000.0, 0, 0, "[0, 10000000000]", "a minimum breaking load cannot be negative (0: the line's MBL)") \
+    X(section[3].MBL, "section[4].MBL", 0.0, 10000000000.0, 0, 0, "[0, 10000000000]", "a minimum breaking load cannot be negative (0: the line's MBL)") \
+    X(section[4].MBL, "section[5].MBL", 0.0, 10000000000.0, 0, 0, "[0, 10000000000]", "a minimum breaking load cannot be negative (0: the line's MBL)") \
+    X(section[5].MBL, "section[6].MBL", 0.0, 10000000000.0, 0, 0, "[0, 10000000000]", "a minimum breaking load cannot be negative (0: the line's MBL)") \
+    X(section[6].MBL, "section[7].MBL", 0.0, 10000000000.0, 0, 0, "[0, 10000000000]", "a minimum breaking load cannot be negative (0: the line's MBL)") \
+    X(section[7].MBL, "section[8].MBL", 0.0, 10000000000.0, 0, 0, "[0, 10000000000]", "a minimum breaking load cannot be negative (0: the line's MBL)") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -154,16 +154,17 @@ namespace {
 struct SectionInput {
     double length, diameter, massPerLength, EA, EI, axialDamping, GJ, Cdn, Cdt, Can, Cat;
     int nElements, joint;
+    double MBL;
 };
 
 SectionInput uniform_line(const UCParams& p) {
     return {p.length, p.diameter, p.massPerLength, p.EA, p.EI, p.axialDamping, p.GJ,
-            p.Cdn, p.Cdt, p.Can, p.Cat, p.nElements, 0};
+            p.Cdn, p.Cdt, p.Can, p.Cat, p.nElements, 0, p.MBL};
 }
 
-SectionInput section_input(const UCSection& s) {
+SectionInput section_input(const UCSection& s, double lineMBL) {
     return {s.length, s.diameter, s.massPerLength, s.EA, s.EI, s.axialDamping, s.GJ,
-            s.Cdn, s.Cdt, s.Can, s.Cat, s.nElements, s.joint};
+            s.Cdn, s.Cdt, s.Can, s.Cat, s.nElements, s.joint, s.MBL > 0.0 ? s.MBL : lineMBL};
 }
 
 }  // namespace
@@ -186,7 +187,7 @@ void CableModel::build_sections(const UCParams& p) {
     if (p.nSections <= 1) {
         inputs.push_back(uniform_line(p));
     } else {
-        for (int k = 0; k < p.nSections && k < UC_MAX_SECTIONS; ++k) inputs.push_back(section_input(p.section[k]));
+        for (int k = 0; k < p.nSections && k < UC_MAX_SECTIONS; ++k) inputs.push_back(section_input(p.section[k], p.MBL));
     }
     if (winchMesh_.elements > 0) {
         inputs[0].length = winchMesh_.topLength + (winchMesh_.elements - 1) * winchNominal_;
@@ -219,6 +220,7 @@ void CableModel::build_sections(const UCParams& p) {
         s.GJ = in.GJ;
         s.nElements = in.nElements;
         s.joint = in.joint;
+        s.MBL = in.MBL;
         s.seabed.enabled = p.enableSeabed != 0;
         s.seabed.depth = p.waterDepth;
         s.seabed.stiffness = p.seabedStiffness;

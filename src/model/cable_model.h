@@ -155,6 +155,7 @@ struct SectionProps {
     double GJ = 0.0;
     int nElements = 0;  // before attachments cut it (the winch's mesh for the first section)
     int joint = 0;  // to the next section: 0 rigid (one node), 1 pinned (two slots)
+    double MBL = 0.0;  // minimum breaking load [N] (0: not given), for the utilisation outputs
 };
 
 // Elements of equal length in a row: one section, or the part of one between attachments.

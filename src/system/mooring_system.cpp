@@ -67,16 +67,43 @@ Mat3 coupled_body_rotation(const UCCoupledBody& body, int orientation) {
     return body_rotation(a[0], a[1], a[2]);
 }
 
-void set_mooring_line_outputs(UCMooringLine& out, double fairlead, double anchor, const UCOutputs& line) {
+LineStrength line_strength(const CableSimulation& line, int firstSection, int lastSection) {
+    const CableModel& model = line.model();
+    LineStrength s;
+    s.fairleadMBL = model.section(firstSection).MBL;
+    s.anchorMBL = model.section(lastSection).MBL;
+    for (int j = firstSection; j <= lastSection; ++j) {
+        const double mbl = model.section(j).MBL;
+        if (mbl > 0.0 && (s.smallestMBL == 0.0 || mbl < s.smallestMBL)) s.smallestMBL = mbl;
+    }
+    for (const ElementRun& run : model.runs()) {
+        const double mbl = model.section(run.section).MBL;
+        if (run.section < firstSection || run.section > lastSection || !(mbl > 0.0)) continue;
+        for (int e = run.first; e < run.first + run.count; ++e) {
+            const double t = std::max(line.element_end_tension(e, false), line.element_end_tension(e, true));
+            s.maxUtilisation = std::max(s.maxUtilisation, t / mbl);
+        }
+    }
+    return s;
+}
+
+void set_mooring_line_outputs(UCMooringLine& out, double fairlead, double anchor, const UCOutputs& line,
+                              const LineStrength& strength) {
     out.fairleadTension = fairlead;
     out.anchorTension = anchor;
     out.minTension = line.minTension;
     out.groundedLength = line.groundedLength;
+    out.MBL = strength.smallestMBL;
+    out.fairleadUtilisation = strength.fairleadMBL > 0.0 ? fairlead / strength.fairleadMBL : 0.0;
+    out.anchorUtilisation = strength.anchorMBL > 0.0 ? anchor / strength.anchorMBL : 0.0;
+    // the ends' tensions (the outputs' own, at the end nodes) belong to the largest too
+    out.maxUtilisation = std::max({strength.maxUtilisation, out.fairleadUtilisation, out.anchorUtilisation});
 }
 
 const UCOutputs& OneLineSystem::outputs() const {
     asSystem_ = CableSimulation::outputs();
-    set_mooring_line_outputs(asSystem_.mooringLine[0], asSystem_.towTension, asSystem_.endTension, asSystem_);
+    set_mooring_line_outputs(asSystem_.mooringLine[0], asSystem_.towTension, asSystem_.endTension, asSystem_,
+                             line_strength(*this, 0, model().n_sections() - 1));
     return asSystem_;
 }
 
@@ -396,7 +423,7 @@ void MooringSystem::update_outputs() {
             const double start = j == 0 ? o.towTension : lines_[k]->element_end_tension(first, false);
             const double end = j + 1 == sections ? o.endTension : lines_[k]->element_end_tension(last, true);
             set_mooring_line_outputs(outputs_.mooringLine[l.deckLines[j]], l.flipped[j] ? end : start,
-                                     l.flipped[j] ? start : end, o);
+                                     l.flipped[j] ? start : end, o, line_strength(*lines_[k], j, j));
         }
         // the fairlead where the line's tow point stands, the far end where its end does
         const std::pair<const MooringEnd*, std::pair<Vec3, Vec3>> ends[2] = {

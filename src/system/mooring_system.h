@@ -38,9 +38,19 @@ Mat3 coupled_body_rotation(const UCCoupledBody& body, int orientation);
 const MooringEnd* held_far_end(const MooringDeckLine& l);
 bool on_free_node(const MooringDeckLine& l);
 
+// The breaking strength of sections firstSection..lastSection of a line (docs/design_checks.md): the MBL at
+// either end, the smallest given, and the largest tension over MBL at its elements' ends in the state of
+// the line's last outputs (0 where no MBL is given).
+struct LineStrength {
+    double fairleadMBL = 0.0, anchorMBL = 0.0, smallestMBL = 0.0;  // [N]
+    double maxUtilisation = 0.0;
+};
+LineStrength line_strength(const CableSimulation& line, int firstSection, int lastSection);
+
 // line[k].* of a line, or of one section of it, whose ends' tensions are fairlead and anchor, from the
-// outputs of the line it is (its minimum tension and grounded length are the whole line's).
-void set_mooring_line_outputs(UCMooringLine& out, double fairlead, double anchor, const UCOutputs& line);
+// outputs of the line it is (its minimum tension and grounded length are the whole line's) and its strength.
+void set_mooring_line_outputs(UCMooringLine& out, double fairlead, double anchor, const UCOutputs& line,
+                              const LineStrength& strength);
 
 // One line given by its parameters, as the boundary sees it: a system of one line, whose line[1].* outputs
 // are its own (its outputs otherwise the line's).
