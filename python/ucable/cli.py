@@ -3,6 +3,9 @@
     ucable run SCENE [--set NAME=VALUE ...] [--out DIR] [--animate] [--strict]
     ucable sweep SCENE --vary NAME=V1,V2,... [--vary ...] [--set NAME=VALUE ...] [--workers N]
                  [--scheduler ADDRESS] [--out DIR] [--strict]
+    ucable sweep SCENE --seeds N [--seed0 S] [--storm SECONDS] [--fit mle|moments] [--level P] [...]
+    ucable check SOURCE [--case intact|damaged|transient] [--analysis dynamic|quasi-static] [--class 1,2]
+                 [--standard api,dnv] [--set NAME=VALUE ...] [--out DIR]
     ucable scenes                  the shipped scenes
     ucable scenes show NAME        print a shipped scene (to copy and edit: ucable scenes show turn90 > my.toml);
                                    on stderr, the files it needs beside it (its lineFile deck)
@@ -19,8 +22,18 @@ any FMU parameter by its name, the scene's duration or step, or the tow's speed_
 curvature), DIR/summary.csv (the results table it prints: max and min with their times) and
 DIR/result.png, with --animate also DIR/result.gif; sweep writes DIR/results.csv (one row per
 combination: the varied values, towTensionMax, towTensionMin, towTensionFinal, endDepthFinal,
-cpuSeconds, status, error) and DIR/summary.png. Every column is named with its unit, angles in
+cpuSeconds, status, error; per line its MBL and the mean and maximum of its utilisations) and
+DIR/summary.png. sweep --seeds N runs N realisations of the scene's irregular sea (waves.seed S, S + 1,
+...), fits each line's per-realisation maxima of the fairlead tension with a Gumbel distribution and
+writes DIR/extremes.csv (the fit, the most probable maximum over --storm seconds, default 10800, and its
+confidence interval) and DIR/gumbel.png (Gumbel probability paper). Every column is named with its unit, angles in
 degrees (`towTension [N]`, `topDeclination [deg]`); ucable.read_results reads them back.
+
+check: each line's tension against its minimum breaking load (MBL) by API RP 2SK and DNV-OS-E301
+(docs/design_checks.md). SOURCE is a run's result.csv, a sweep's results.csv, a directory holding one of
+them, or a scene (run first, with --set). The case is --case, else the run's line[k].broken outputs (a line
+broken from the start: damaged; breaking during the run: transient; none: intact). It prints the table and
+the governing line, and writes DIR/check.csv (default: beside the table read, or out/SCENE).
 
 run, sweep and system warn when the communication step is longer than a tenth of the shortest period
 or ramp in the scene (the tow's oscillations and speed or heading ramps, the waves' period, the
@@ -28,7 +41,7 @@ winch's ramps, the ramps of input tables; a system: beyond the steps its accurac
 for); with --strict that warning is a refusal (exit code 2). run prints the winch's events: a length
 limit (winch.minLength, winch.maxLength) or winch.maxRate reached, with the time and the value.
 
-Exit codes: 0 done; 1 a run failed (the FMU's message is printed), some runs of a sweep failed, or a
+Exit codes: 0 done (check: every check passes); 3 check: a check fails; 1 a run failed (the FMU's message is printed), some runs of a sweep failed, or a
 Python module a feature needs is missing (the command that installs it is printed); 2 a mistake in the
 scene or the command line (one line naming the file and the key), including a scene the FMU refuses
 at the start, or with --strict a step too long for the scene. Every error is one line; --debug shows its traceback.
@@ -44,6 +57,7 @@ from .progress import ProgressBar
 
 EXIT_FAILED = 1
 EXIT_USAGE = 2
+EXIT_CHECK_FAILED = 3
 
 
 def parse_sets(items) -> dict:
@@ -117,12 +131,26 @@ def write_run(result, out: Path, animate: bool = False) -> list[str]:
 def cmd_sweep(a) -> int:
     from .optional import require
     from .scene import load_scene
+    from .scene_schema import SceneFileError
     from .sweep import check_vary, combinations, parse_vary, plot_summary, run_sweep, write_results
 
     require("dask.distributed", "ucable sweep")
     scene = load_scene(a.scene)
-    vary = parse_vary(a.vary)
+    vary = parse_vary(a.vary or [])
     fixed = parse_sets(a.set)
+    if a.seeds is not None:
+        from .sweep import seed_values
+
+        if not (a.storm > 0.0 and 0.0 < a.level < 1.0):
+            raise SceneFileError(f"--storm {a.storm:g} s must be positive and --level {a.level:g} between 0 and 1")
+        if vary:
+            raise SceneFileError("--seeds runs realisations of one sea state: give the others with --set, not --vary")
+        if int(scene.with_overrides(fixed).parameters.get("waves.mode", 0)) != 2:
+            raise SceneFileError(f"--seeds: the scene {scene.name} has no irregular sea (waves.mode 2): its "
+                                 f"realisations would all be the same")
+        vary = {"waves.seed": seed_values(a.seeds, a.seed0)}
+    elif not vary:
+        raise SceneFileError("sweep: give what varies (--vary NAME=V1,V2,...) or the realisations (--seeds N)")
     check_vary(scene.with_overrides(fixed), vary)  # every value checked before anything runs
     check_steps([scene.with_overrides({**fixed, **c}, source="--vary") for c in combinations(vary)], a.strict)
     n = len(combinations(vary))
@@ -152,8 +180,100 @@ def cmd_sweep(a) -> int:
         for r in failed:
             print(f"failed: {', '.join(f'{k}={r[k]}' for k in names)}: {r['error']}", file=sys.stderr)
         print(f"ucable: {len(failed)} of {n} runs failed", file=sys.stderr)
-        return EXIT_FAILED
-    return 0
+    if a.seeds is not None and len(failed) < len(rows):
+        sweep_extremes(a, scene.with_overrides(fixed), rows, out)
+    return EXIT_FAILED if failed else 0
+
+
+def sweep_extremes(a, scene, rows: list[dict], out: Path) -> None:
+    """The Gumbel fit of each line's per-realisation maxima: printed, extremes.csv and gumbel.png."""
+    from .extremes import fit_maxima, format_fit, plot_gumbel
+    from .scene_schema import SceneFileError
+    from .sweep import realisation_maxima, stationary_duration, write_extremes
+
+    duration = stationary_duration(scene)
+    if not duration > 0.0:
+        raise SceneFileError(f"--seeds: the scene's duration {scene.duration:g} s is not longer than its waves' "
+                             f"ramp-in (waves.rampTime): no stationary sea to take maxima of")
+    maxima = realisation_maxima(rows)
+    fits = {name: fit_maxima(x, duration, a.storm, a.fit, a.level) for name, (x, _) in maxima.items()}
+    mbls = {name: mbl for name, (_, mbl) in maxima.items()}
+    print(f"maxima over {duration:g} s of stationary sea (duration less waves.rampTime) per realisation; MPM over "
+          f"{a.storm:g} s = mu + beta ln({a.storm:g} / {duration:g})")
+    for name, f in fits.items():
+        print(format_fit(name, f, mbl=mbls[name]))
+    write_extremes(fits, mbls, out / "extremes.csv")
+    plot_gumbel(fits, out / "gumbel.png", f"{scene.title}: maxima of {len(rows)} realisations")
+    print(f"wrote {out}/extremes.csv, gumbel.png")
+
+
+def check_source(a):
+    """(the columns of a run or the rows of a sweep, "run" | "sweep", the default output directory) of
+    `ucable check SOURCE`: a table written by run or sweep, a directory holding one, or a scene run here."""
+    from .results import read_results
+    from .scene import load_scene, run_scene
+    from .scene_schema import SceneFileError
+
+    source = Path(a.source)
+    if source.is_dir():
+        found = [source / n for n in ("result.csv", "results.csv") if (source / n).is_file()]
+        if not found:
+            raise SceneFileError(f"check {source}: no result.csv (ucable run) or results.csv (ucable sweep) in it")
+        source = found[0]
+    if source.suffix.lower() == ".csv":
+        if not source.is_file():
+            raise SceneFileError(f"check {source}: no such file")
+        table = read_results(source)
+        if "time" in table:
+            return table, "run", source.parent
+        if "status" in table:
+            return table.records(), "sweep", source.parent
+        raise SceneFileError(f"check {source}: neither a run's result.csv (a time column) nor a sweep's "
+                             f"results.csv (a status column)")
+    scene = load_scene(a.source).with_overrides(parse_sets(a.set))
+    check_steps([scene], a.strict)
+    bar = ProgressBar(scene.duration, label=scene.name)
+    result = run_scene(scene, progress=lambda t: bar.update(t, f"t = {t:7.1f} s"))
+    bar.close(f"{scene.duration:g} s simulated in {result.cpu:.2f} s CPU")
+    out = a.out or Path("out") / scene.name
+    out.mkdir(parents=True, exist_ok=True)
+    print(f"wrote {out}/: {', '.join(write_run(result, out))}")
+    return result.columns, "run", out
+
+
+def cmd_check(a) -> int:
+    from .design_check import CheckError, case_of, check_lines, check_run, sweep_tensions, verdict
+    from .design_report import format_check, write_check_csv
+    from .scene_schema import SceneFileError
+
+    if a.set and Path(a.source).suffix.lower() == ".csv":
+        raise SceneFileError("check: --set applies to a scene, not to a table already computed")
+    try:
+        classes = tuple(int(c) for c in a.consequence.split(","))
+        standards = tuple(s.strip().lower() for s in a.standard.split(","))
+        if not classes or any(c not in (1, 2) for c in classes):
+            raise ValueError
+        if not standards or any(s not in ("api", "dnv") for s in standards):
+            raise SceneFileError(f"--standard {a.standard!r}: api, dnv or api,dnv")
+    except ValueError:
+        raise SceneFileError(f"--class {a.consequence!r}: DNV-OS-E301's consequence classes, 1, 2 or 1,2") from None
+    data, kind, where = check_source(a)
+    try:
+        if kind == "run":
+            v = check_run(data, a.case, a.analysis, classes, standards)
+        else:  # each run of a sweep by its own case (the user's, else its broken lines)
+            if a.case is None and any(r.get(k, 0.0) > 0.5 for r in data for k in r if k.endswith(".brokenAny")):
+                raise CheckError("a sweep whose runs break lines: give the case (--case damaged or transient)")
+            case, why = case_of({}, a.case)
+            v = verdict(check_lines(sweep_tensions(data), case, a.analysis, classes, standards), case, why)
+    except CheckError as exc:
+        raise SceneFileError(f"check {a.source}: {exc}") from None
+    out = a.out or where
+    out.mkdir(parents=True, exist_ok=True)
+    write_check_csv(v, out / "check.csv")
+    print(format_check(v))
+    print(f"wrote {out}/check.csv")
+    return 0 if v.passed else EXIT_CHECK_FAILED
 
 
 def scene_files(scene, directory: Path) -> list[Path]:
@@ -289,14 +409,35 @@ def build_parser() -> argparse.ArgumentParser:
                    "too long for the scene")
     s = sub.add_parser("sweep", help="run the cartesian product of parameter values on Dask")
     s.add_argument("scene")
-    s.add_argument("--vary", action="append", required=True, metavar="NAME=V1,V2,...",
+    s.add_argument("--vary", action="append", metavar="NAME=V1,V2,...",
                    help="a parameter, duration, step, or the tow's speed_kn [kn] or heading [deg] (repeatable)")
     s.add_argument("--set", action="append", metavar="NAME=VALUE", help="held for every combination")
+    s.add_argument("--seeds", type=int, default=None, metavar="N",
+                   help="N realisations of the scene's irregular sea (waves.seed varied) and the Gumbel fit of "
+                        "each line's maxima")
+    s.add_argument("--seed0", type=int, default=1, help="--seeds: the first waves.seed (default 1)")
+    s.add_argument("--storm", type=float, default=10800.0,
+                   help="--seeds: the storm duration of the most probable maximum [s] (default 10800, 3 h)")
+    s.add_argument("--fit", choices=("mle", "moments"), default="mle",
+                   help="--seeds: maximum likelihood (default) or the method of moments")
+    s.add_argument("--level", type=float, default=0.90, help="--seeds: the confidence level (default 0.90)")
     s.add_argument("--workers", type=int, default=2, help="local worker processes (default 2)")
     s.add_argument("--scheduler", default=None, help="address of a running Dask scheduler (default: a local cluster)")
     s.add_argument("--out", type=Path, default=None, help="output directory (default out/SCENE_sweep)")
     s.add_argument("--strict", action="store_true", help="refuse (exit code 2) what is otherwise a warning: a step "
                    "too long for a combination")
+    k = sub.add_parser("check", help="each line's tension against its MBL by API RP 2SK and DNV-OS-E301")
+    k.add_argument("source", help="a result.csv, a sweep's results.csv, a directory holding one, or a scene to run")
+    k.add_argument("--case", choices=("intact", "damaged", "transient"), default=None,
+                   help="the run's case (default: from its line[k].broken outputs, intact without them)")
+    k.add_argument("--analysis", choices=("dynamic", "quasi-static"), default="dynamic",
+                   help="how the tensions were computed: the factors of that analysis (default dynamic, the FMU's)")
+    k.add_argument("--class", dest="consequence", default="1,2", metavar="1,2",
+                   help="DNV-OS-E301's consequence classes to check (default 1,2)")
+    k.add_argument("--standard", default="api,dnv", help="api, dnv or api,dnv (default both)")
+    k.add_argument("--set", action="append", metavar="NAME=VALUE", help="a scene's parameter (repeatable)")
+    k.add_argument("--out", type=Path, default=None, help="where check.csv goes (default: beside the table)")
+    k.add_argument("--strict", action="store_true", help="a scene: refuse a step too long for it")
     sc = sub.add_parser("scenes", help="list the shipped scenes; print one (scenes show NAME) or the format (scenes format)")
     sc.add_argument("action", nargs="?", choices=("list", "show", "copy", "format"), default="list")
     sc.add_argument("name", nargs="?")
@@ -325,6 +466,8 @@ def dispatch(a) -> int:
         return cmd_sweep(a)
     if a.command == "scenes":
         return cmd_scenes(a)
+    if a.command == "check":
+        return cmd_check(a)
     if a.command == "system":
         return cmd_system(a)
     from .paths import describe_fmus, require_fmu

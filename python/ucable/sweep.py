@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .design_check import run_statistics, statistics_units
 from .scene import Scene, SceneError, load_scene, parse_value, run_scene
 from .scene_schema import SceneFileError
 from .tables import write_rows
@@ -59,6 +60,7 @@ def run_case(scene_data: dict, overrides: dict, directory: str | None = None) ->
         scene.directory = Path(directory) if directory else None
         result = run_scene(scene, overrides)
         row.update(result.summary())
+        row.update(run_statistics(result.columns))
         row["cpuSeconds"] = result.cpu
         row["status"] = "ok"
         row["error"] = ""
@@ -110,8 +112,9 @@ def write_results(rows: list[dict], names: list[str], path) -> None:
     from .results import TEXT_COLUMNS, label, schema_unit
 
     extra = [k for k in EXTRA_SUMMARY if any(k in r for r in rows)]
-    columns = names + SUMMARY + extra + ["cpuSeconds", "status", "error"]
-    headers = {c: label(c, None if c in TEXT_COLUMNS else schema_unit(c)) for c in columns}
+    lines = list(dict.fromkeys(c for r in rows for c in r if statistics_units(c) is not None and c not in names))
+    columns = names + SUMMARY + extra + lines + ["cpuSeconds", "status", "error"]
+    headers = {c: label(c, None if c in TEXT_COLUMNS else (statistics_units(c) or schema_unit(c))) for c in columns}
     write_rows(path, list(headers.values()), [{headers[c]: r.get(c, "") for c in columns} for r in rows])
 
 
@@ -173,3 +176,46 @@ def plot_summary(rows: list[dict], names: list[str], path, title: str) -> None:
     fig.tight_layout()
     fig.savefig(path, dpi=100)
     plt.close(fig)
+
+
+def seed_values(seeds: int, first: int) -> list[int]:
+    """The waves.seed of each realisation: first, first + 1, ..."""
+    if seeds < 3:
+        raise SceneFileError(f"--seeds {seeds}: a Gumbel fit needs 3 realisations or more")
+    if first < 0 or first + seeds - 1 > 999999999:
+        raise SceneFileError(f"--seed0 {first}: waves.seed is in [0, 999999999]")
+    return list(range(first, first + seeds))
+
+
+def realisation_maxima(rows: list[dict]) -> dict:
+    """{line name: (the maxima of its fairlead tension over each realisation [N], its MBL [N])} of a sweep
+    over seeds (runs that failed left out): line[k].fairleadTensionMax, or for a single line (no line[k].*
+    tensions recorded) the tow point's towTensionMax, its fairlead."""
+    ok = [r for r in rows if r.get("status") == "ok"]
+    out = {}
+    k = 1
+    while any(f"line[{k}].fairleadTensionMax" in r for r in ok):
+        if not any(r.get(f"line[{k}].brokenAny", 0.0) > 0.5 for r in ok):
+            out[f"line {k}"] = (np.array([r[f"line[{k}].fairleadTensionMax"] for r in ok], dtype=float),
+                                max(r.get(f"line[{k}].MBL", 0.0) for r in ok))
+        k += 1
+    if not out and ok:
+        out["line 1"] = (np.array([r["towTensionMax"] for r in ok], dtype=float),
+                         max(r.get("line[1].MBL", 0.0) for r in ok))
+    return out
+
+
+def stationary_duration(scene: Scene) -> float:
+    """The part of a realisation the maxima stand for: the scene's duration less the waves' ramp-in."""
+    ramp = float(scene.parameters.get("waves.rampTime", 0.0))
+    return scene.duration - ramp
+
+
+def write_extremes(fits: dict, mbls: dict, path) -> None:
+    """extremes.csv: one row per line: the fit, the MPM over the storm and its interval (N)."""
+    rows = [{"line": name, "realisations": f.maxima.size, "method": f.method, "mu [N]": f.mu, "beta [N]": f.beta,
+             "realisation [s]": f.duration, "storm [s]": f.storm, "MPM [N]": f.mpm, "low [N]": f.low,
+             "high [N]": f.high, "level [-]": f.level, "MBL [N]": mbls.get(name, 0.0),
+             "MPM / MBL [-]": f.mpm / mbls[name] if mbls.get(name, 0.0) > 0.0 else ""}
+            for name, f in fits.items()]
+    write_rows(path, list(rows[0]) if rows else ["line"], rows)
