@@ -154,7 +154,7 @@ def plot_gumbel(fits: dict, path, title: str, unit: str = "kN", scale: float = 1
     top.set_xlabel("non-exceedance probability of a realisation's maximum")
     ax.set_xlabel("reduced variate -ln(-ln F)")
     ax.set_ylabel(f"maximum over a realisation [{unit}]")
-    ax.set_title(title, fontsize=10)
+    fig.suptitle(title, fontsize=10)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=7, loc="upper left")
     fig.tight_layout()
