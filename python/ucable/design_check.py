@@ -91,7 +91,7 @@ def broken_lines(columns) -> dict[int, str]:
     """{line: "start" | "during"} of a run's line[k].broken outputs (absent: none broken): broken from its
     first row, or breaking during the run."""
     out = {}
-    for k in line_numbers(columns):
+    for k in range(1, 1 + len(columns)):
         b = columns.get(f"line[{k}].broken")
         if b is None:
             continue
@@ -259,7 +259,9 @@ def run_statistics(columns) -> dict:
     of each utilisation, the maximum fairlead tension and whether it broke (line[k].brokenAny)."""
     out = {}
     broken = broken_lines(columns)
-    for k in line_numbers(columns):
+    lines = sorted(set(line_numbers(columns)) | {k for k in range(1, 1 + len(columns))
+                                                 if f"line[{k}].fairleadTension" in columns})
+    for k in lines:
         mbl = np.asarray(columns.get(f"line[{k}].MBL", [0.0]), dtype=float)
         out[f"line[{k}].MBL"] = float(np.nanmax(mbl)) if mbl.size else 0.0
         for name in LOCATIONS.values():

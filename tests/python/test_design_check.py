@@ -259,3 +259,22 @@ def test_seeds_refuse_a_calm_scene_and_too_few_realisations(fmu_file, tmp_path):
     assert p.returncode == 2 and "no irregular sea (waves.mode 2)" in p.stderr, p.stderr
     p = cli("sweep", "lowering_in_waves", "--seeds", "2", fmu_file=fmu_file, cwd=tmp_path)
     assert p.returncode == 2 and "needs 3 realisations or more" in p.stderr, p.stderr
+
+
+def test_a_sweep_keeps_each_lines_maxima_with_or_without_an_mbl():
+    """run_statistics of a system run (line 1 with an MBL, line 2 without) and the maxima a seeds sweep fits."""
+    from ucable.design_check import run_statistics
+    from ucable.sweep import realisation_maxima
+
+    t1, t2 = np.array([1e5, 3e5, 2e5]), np.array([4e5, 5e5, 4.5e5])
+    columns = {"time": np.arange(3.0), "line[1].fairleadTension": t1, "line[1].MBL": np.full(3, 1e6),
+               "line[1].fairleadUtilisation": t1 / 1e6, "line[1].anchorUtilisation": t1 / 2e6,
+               "line[1].maxUtilisation": t1 / 1e6, "line[2].fairleadTension": t2}
+    s = run_statistics(columns)
+    assert s["line[1].maxUtilisationMax"] == 0.3 and s["line[1].maxUtilisationMean"] == pytest.approx(0.2)
+    assert s["line[1].fairleadTensionMax"] == 3e5 and s["line[2].fairleadTensionMax"] == 5e5
+    assert s["line[2].MBL"] == 0.0 and "line[2].maxUtilisationMax" not in s
+    rows = [{**s, "status": "ok", "towTensionMax": 3e5}, {**s, "status": "error"}]
+    maxima = realisation_maxima(rows)
+    assert list(maxima) == ["line 1", "line 2"]
+    assert maxima["line 2"][0].tolist() == [5e5] and maxima["line 1"][1] == 1e6
