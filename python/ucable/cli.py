@@ -5,7 +5,7 @@
                  [--scheduler ADDRESS] [--out DIR] [--strict]
     ucable sweep SCENE --seeds N [--seed0 S] [--storm SECONDS] [--fit mle|moments] [--level P] [...]
     ucable check SOURCE [--case intact|damaged|transient] [--analysis dynamic|quasi-static] [--class 1,2]
-                 [--standard api,dnv] [--set NAME=VALUE ...] [--out DIR]
+                 [--standard api,dnv] [--skip SECONDS] [--set NAME=VALUE ...] [--out DIR]
     ucable scenes                  the shipped scenes
     ucable scenes show NAME        print a shipped scene (to copy and edit: ucable scenes show turn90 > my.toml);
                                    on stderr, the files it needs beside it (its lineFile deck)
@@ -242,6 +242,8 @@ def check_source(a):
 
 
 def cmd_check(a) -> int:
+    import numpy as np
+
     from .design_check import CheckError, case_of, check_lines, check_run, sweep_tensions, verdict
     from .design_report import format_check, write_check_csv
     from .scene_schema import SceneFileError
@@ -260,6 +262,12 @@ def cmd_check(a) -> int:
     data, kind, where = check_source(a)
     try:
         if kind == "run":
+            if a.skip > 0.0:  # the start-up left out
+                keep = np.asarray(data["time"], dtype=float) >= a.skip
+                if not keep.any():
+                    raise CheckError(f"--skip {a.skip:g} s leaves no row of the run (it ends at "
+                                     f"{float(data['time'][-1]):g} s)")
+                data = {name: np.asarray(values)[keep] for name, values in data.items()}
             v = check_run(data, a.case, a.analysis, classes, standards)
         else:  # each run of a sweep by its own case (the user's, else its broken lines)
             if a.case is None and any(r.get(k, 0.0) > 0.5 for r in data for k in r if k.endswith(".brokenAny")):
@@ -435,6 +443,8 @@ def build_parser() -> argparse.ArgumentParser:
     k.add_argument("--class", dest="consequence", default="1,2", metavar="1,2",
                    help="DNV-OS-E301's consequence classes to check (default 1,2)")
     k.add_argument("--standard", default="api,dnv", help="api, dnv or api,dnv (default both)")
+    k.add_argument("--skip", type=float, default=0.0, metavar="SECONDS",
+                   help="a run: leave out its rows before this time, the start-up (default 0)")
     k.add_argument("--set", action="append", metavar="NAME=VALUE", help="a scene's parameter (repeatable)")
     k.add_argument("--out", type=Path, default=None, help="where check.csv goes (default: beside the table)")
     k.add_argument("--strict", action="store_true", help="a scene: refuse a step too long for it")

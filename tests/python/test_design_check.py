@@ -174,6 +174,9 @@ def test_check_of_a_failing_run_names_the_line_and_exits_3(tmp_path):
     rows = read_results(tmp_path / "o" / "check.csv").records()
     assert {r["line"] for r in rows} == {1.0, 2.0} and {r["standard"] for r in rows} == {"API RP 2SK"}
     assert [r["result"] for r in rows if r["location"] == "fairlead"] == ["FAIL", "FAIL"]
+    # without its first two rows (t < 1 s) the maximum is the same, the mean higher: DNV ULS CC2 fails (1.050)
+    s = cli("check", "result.csv", "--skip", "1", "--standard", "dnv", "--class", "2", cwd=tmp_path)
+    assert s.returncode == 3 and f"utilisation {(1.4 * 0.525 + 2.1 * 0.125) / 0.95:.3f}" in s.stdout, s.stdout + s.stderr
     # the same run as damaged (--case): FOS 1.25 passes
     q = cli("check", "result.csv", "--case", "damaged", "--standard", "api", cwd=tmp_path)
     assert q.returncode == 0 and f"utilisation {1.25 * 0.65:.3f}" in q.stdout, q.stdout + q.stderr
