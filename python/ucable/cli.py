@@ -181,11 +181,11 @@ def cmd_sweep(a) -> int:
             print(f"failed: {', '.join(f'{k}={r[k]}' for k in names)}: {r['error']}", file=sys.stderr)
         print(f"ucable: {len(failed)} of {n} runs failed", file=sys.stderr)
     if a.seeds is not None and len(failed) < len(rows):
-        sweep_extremes(a, scene.with_overrides(fixed), rows, out)
+        sweep_extremes(a, scene.with_overrides(fixed), rows, out, fixed)
     return EXIT_FAILED if failed else 0
 
 
-def sweep_extremes(a, scene, rows: list[dict], out: Path) -> None:
+def sweep_extremes(a, scene, rows: list[dict], out: Path, fixed: dict) -> None:
     """The Gumbel fit of each line's per-realisation maxima: printed, extremes.csv and gumbel.png."""
     from .extremes import fit_maxima, format_fit, plot_gumbel
     from .scene_schema import SceneFileError
@@ -203,7 +203,8 @@ def sweep_extremes(a, scene, rows: list[dict], out: Path) -> None:
     for name, f in fits.items():
         print(format_fit(name, f, mbl=mbls[name]))
     write_extremes(fits, mbls, out / "extremes.csv")
-    plot_gumbel(fits, out / "gumbel.png", f"{scene.title}: maxima of {len(rows)} realisations")
+    settings = f" ({', '.join(f'{k} = {v:g}' if isinstance(v, float) else f'{k} = {v}' for k, v in fixed.items())})"
+    plot_gumbel(fits, out / "gumbel.png", f"{scene.title}{settings if fixed else ''}: maxima of {len(rows)} realisations")
     print(f"wrote {out}/extremes.csv, gumbel.png")
 
 
