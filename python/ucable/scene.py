@@ -508,7 +508,8 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
                 raise SceneFileError(f"{s.source}: {said}") from exc
             raise SceneFileError(f"{s.source}: the FMU could not start: {said}") from exc
         seabed = seabed_depth(cable, parameters)
-        data[0] = cable.get_reals(recorded)
+        read_row = recorded_reader(cable, recorded)
+        data[0] = read_row()
         tow[0] = motion.at(0.0)[0]
         pose[0] = body.at(0.0)[0] if body else 0.0
         done = 0
@@ -521,7 +522,7 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
             if body:
                 cable.set_input_derivatives(BODY_RATES, 1, [float(x) for x in body.at(t)[2]])
             cable.do_step(times[k + 1] - t, t)
-            data[k + 1] = cable.get_reals(recorded)
+            data[k + 1] = read_row()
             tow[k + 1] = motion.at(times[k + 1])[0]
             pose[k + 1] = body.at(times[k + 1])[0] if body else 0.0
             done = k + 1
@@ -539,6 +540,25 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
         events = winch_events(cable)
         cable.free()
     return SceneResult(s, times, _columns(recorded, data, tow, pose if body else None, s.outputs), cpu, seabed, events)
+
+
+def recorded_reader(cable: CableFMU, recorded: list):
+    """A function that reads the recorded variables at a communication point: the Reals in one fmi2GetReal,
+    a Boolean or Integer (a line's `broken` flag) as 0/1 or its value."""
+    others = [i for i, name in enumerate(recorded) if name in VARIABLES and VARIABLES[name].type != "Real"]
+    if not others:
+        return lambda: cable.get_reals(recorded)
+    reals = [i for i in range(len(recorded)) if i not in set(others)]
+    real_names = [recorded[i] for i in reals]
+
+    def read() -> np.ndarray:
+        row = np.zeros(len(recorded))
+        row[reals] = cable.get_reals(real_names)
+        for i in others:
+            row[i] = float(cable.get(recorded[i]))
+        return row
+
+    return read
 
 
 def deck_water_depth(path) -> float | None:

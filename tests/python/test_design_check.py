@@ -281,3 +281,16 @@ def test_a_sweep_keeps_each_lines_maxima_with_or_without_an_mbl():
     maxima = realisation_maxima(rows)
     assert list(maxima) == ["line 1", "line 2"]
     assert maxima["line 2"][0].tolist() == [5e5] and maxima["line 1"][1] == 1e6
+
+
+def test_a_run_records_a_boolean_output_such_as_a_lines_broken_flag(fmu_file):
+    """Line failure's line[k].broken may be a Boolean: a run reads it with the Reals, as 0 or 1."""
+    from ucable.scene import recorded_reader
+
+    cable = CableFMU(fmu_file, parameters={"enableSeabed": True})
+    try:
+        cable.initialize(inputs={"tow.z": -10.0})
+        row = recorded_reader(cable, ["towTension", "enableSeabed", "endPosition.z"])()
+        assert row.tolist() == [cable.get("towTension"), 1.0, cable.get("endPosition.z")]
+    finally:
+        cable.free()
