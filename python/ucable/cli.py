@@ -150,7 +150,8 @@ def cmd_sweep(a) -> int:
                                  f"realisations would all be the same")
         vary = {"waves.seed": seed_values(a.seeds, a.seed0)}
     elif not vary:
-        raise SceneFileError("sweep: give what varies (--vary NAME=V1,V2,...) or the realisations (--seeds N)")
+        raise SceneFileError("sweep: give what varies (--vary NAME=V1,V2,...) or the realisations (--seeds N) "
+                             "(ucable sweep --help)")
     check_vary(scene.with_overrides(fixed), vary)  # every value checked before anything runs
     check_steps([scene.with_overrides({**fixed, **c}, source="--vary") for c in combinations(vary)], a.strict)
     n = len(combinations(vary))
