@@ -75,6 +75,10 @@ void set_chain_by_parameters(Instance& inst) {
     inst.setReal("Can", 1.0);
     inst.setReal("Cat", 0.0);
     inst.setInteger("nElements", 20);  // NumSegs 40
+    // the type named chain: MoorPy's R4 studless chain MBL at the nominal diameter of its 113 kg/m
+    // (docs/design_checks.md), the same operations as the reader's
+    const double d = std::sqrt(113.0 / 20.0e3);
+    inst.setReal("MBL", d * (9.11e2 + d * (1.21e9 + d * -2.19e9)));
     inst.setInteger("bottomEnd", 1);
     inst.setReal("anchor.x", -850.0);
     inst.setReal("anchor.y", 0.0);
