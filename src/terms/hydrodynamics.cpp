@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace uc {
 namespace {
@@ -10,8 +11,108 @@ namespace {
 
 // d(phi)/dz of the submerged fraction.
 double submerged_fraction_slope(double z, double diameter) {
-    const double x = 0.5 - z / diameter;
-    return (x > 0.0 && x < 1.0) ? -1.0 / diameter : 0.0;
+    return (z > 0.0 && z < diameter) ? -1.0 / diameter : 0.0;
+}
+
+// The element's height z(xi) = c[0] + c[1] xi + c[2] xi^2 + c[3] xi^3 on xi in [0, 1] (Hermite, the
+// tangents scaled by the length).
+struct Height {
+    double c[4];
+    double at(double xi) const { return c[0] + xi * (c[1] + xi * (c[2] + xi * c[3])); }
+};
+
+Height element_height(double l, const double* X) {
+    const double zi = X[2], ti = l * X[5], zj = X[8], tj = l * X[11];
+    return {{zi, ti, -3.0 * zi - 2.0 * ti + 3.0 * zj - tj, 2.0 * zi + ti - 2.0 * zj + tj}};
+}
+
+// Cuts of [0, 1] at every crossing of z = 0 and z = d, sorted, 0 and 1 included; returns their
+// number. On each piece between two cuts phi(z(xi)) is 1, 0 or 1 - z/d: a polynomial.
+constexpr int kMaxWaterlineCuts = 2 + 6;  // a cubic crosses each level at most three times
+int waterline_cuts(const Height& z, double d, double* cuts) {
+    // Monotone pieces of z between its extrema inside (0, 1): roots of c1 + 2 c2 xi + 3 c3 xi^2.
+    const double qa = 3.0 * z.c[3], qb = 2.0 * z.c[2], qc = z.c[1];
+    double ends[4] = {0.0};
+    int ne = 1;
+    double extrema[2];
+    int nx = 0;
+    if (std::abs(qa) > 1e-14 * (std::abs(qb) + std::abs(qc))) {
+        const double disc = qb * qb - 4.0 * qa * qc;
+        if (disc > 0.0) {
+            const double root = std::sqrt(disc);
+            extrema[nx++] = (-qb - root) / (2.0 * qa);
+            extrema[nx++] = (-qb + root) / (2.0 * qa);
+        }
+    } else if (qb != 0.0) {
+        extrema[nx++] = -qc / qb;
+    }
+    std::sort(extrema, extrema + nx);
+    for (int k = 0; k < nx; ++k)
+        if (extrema[k] > 0.0 && extrema[k] < 1.0) ends[ne++] = extrema[k];
+    ends[ne++] = 1.0;
+    int n = 0;
+    cuts[n++] = 0.0;
+    for (int k = 0; k + 1 < ne; ++k) {
+        for (double level : {0.0, d}) {
+            double a = ends[k], b = ends[k + 1];
+            const double fa = z.at(a) - level, fb = z.at(b) - level;
+            if (!((fa < 0.0 && fb > 0.0) || (fa > 0.0 && fb < 0.0))) continue;
+            // Bisection to round-off: phi is continuous at the cut, so a cut off by dxi moves the
+            // integral by O(dxi^2).
+            while (b - a > 4e-16) {
+                const double m = 0.5 * (a + b);
+                if (m <= a || m >= b) break;
+                ((z.at(m) - level < 0.0) == (fa < 0.0) ? a : b) = m;
+            }
+            cuts[n++] = 0.5 * (a + b);
+        }
+    }
+    cuts[n++] = 1.0;
+    for (int i = 1; i < n; ++i)  // insertion sort: at most eight values
+        for (int j = i; j > 0 && cuts[j] < cuts[j - 1]; --j) std::swap(cuts[j], cuts[j - 1]);
+    return n;
+}
+
+// Whether the element's centreline may reach the band 0 < z < d where phi ramps: its Bezier control
+// heights bound the cubic. Most elements are entirely below or above it and return false here.
+bool reaches_waterline(double l, double d, const double* X) {
+    const double zi = X[2], zj = X[8], b1 = zi + l * X[5] / 3.0, b2 = zj - l * X[11] / 3.0;
+    return std::max({zi, zj, b1, b2}) > 0.0 && std::min({zi, zj, b1, b2}) < d;
+}
+
+// The buoyancy of an element that reaches the waterline band, integrated exactly:
+// R_a,z -= rho A g int N_a phi(z) ds and, with K non-null, K_az,bz -= rho A g int N_a phi'(z) N_b ds.
+// phi is continuous, so the integral is continuously differentiable in the nodes and its derivative
+// has no term from the moving cuts (the boundary terms of the two pieces at a cut cancel). On each
+// piece the integrands are polynomials of degree at most 6, which 4 Gauss points integrate exactly:
+// the sum is the integral whatever the cuts, and an element reaching the band, leaving it or touching
+// it tangentially changes the load continuously.
+void add_waterline_buoyancy(const ElementTables& e, const FluidProps& p, const double* X, double* R, Mat12* K) {
+    const double l = e.length, d = p.diameter, rhoAg = p.rho * p.area * p.gravity;
+    const Height z = element_height(l, X);
+    double cuts[kMaxWaterlineCuts];
+    const int n = waterline_cuts(z, d, cuts);
+    const GaussRule rule = gauss_rule(4);
+    for (int k = 0; k + 1 < n; ++k) {
+        const double a = cuts[k], width = cuts[k + 1] - cuts[k];
+        if (!(width > 0.0)) continue;
+        const double zMid = z.at(a + 0.5 * width);
+        if (zMid >= d) continue;  // dry
+        const bool ramp = zMid > 0.0;
+        for (int g = 0; g < rule.n; ++g) {
+            const ShapeValues s = hermite_shape(a + width * rule.xi[g], l);
+            const double w = rule.w[g] * width * l;
+            if (R) {
+                const double zg = s.N[0] * X[2] + s.N[1] * X[5] + s.N[2] * X[8] + s.N[3] * X[11];
+                const double phi = ramp ? 1.0 - zg / d : 1.0;
+                for (int i = 0; i < 4; ++i) R[3 * i + 2] -= rhoAg * w * phi * s.N[i];
+            }
+            if (K && ramp) {
+                for (int i = 0; i < 4; ++i)
+                    for (int j = 0; j < 4; ++j) (*K)(3 * i + 2, 3 * j + 2) += rhoAg * w * s.N[i] * s.N[j] / d;
+            }
+        }
+    }
 }
 
 }  // namespace
@@ -76,11 +177,11 @@ void CurrentField::flow(const Vec3& r, Vec3& U, Vec3& A, WaveExpansion* cache) c
 }
 
 double submerged_fraction(double z, double diameter) {
-    return std::clamp(0.5 - z / diameter, 0.0, 1.0);
+    return std::clamp(1.0 - z / diameter, 0.0, 1.0);
 }
 
 Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd, const Vec3& current,
-                const Mat3& dU, bool waves, const Vec3& A, const Mat3& dA, PointLoadJacobian* J) {
+                const Mat3& dU, bool waves, const Vec3& A, const Mat3& dA, PointLoadJacobian* J, bool buoyancy) {
     const double phi = submerged_fraction(r.z(), p.diameter);
     const double stretch = rp.norm();
     const Vec3 t = rp / stretch;
@@ -93,7 +194,7 @@ Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& 
     const double ct = 0.5 * p.rho * p.Cdt * kPi * p.diameter;
     const Vec3 drag = cn * sn * un + ct * sa * a * t;
     const double rhoA = p.rho * p.area;
-    const Vec3 weight(0.0, 0.0, -(p.massPerLength - phi * rhoA) * p.gravity);
+    const Vec3 weight(0.0, 0.0, -(p.massPerLength - (buoyancy ? phi * rhoA : 0.0)) * p.gravity);
 
     Vec3 inertia = Vec3::Zero();
     const double ta = t.dot(rdd);
@@ -139,7 +240,7 @@ Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& 
     const double dphi = submerged_fraction_slope(r.z(), p.diameter);
     if (dphi != 0.0) {
         Vec3 dF_dphi = inertia - drag;
-        dF_dphi.z() += -rhoA * p.gravity;  // -d(weight)/dphi: weight_z = -(m - phi rho A) g
+        if (buoyancy) dF_dphi.z() += -rhoA * p.gravity;  // -d(weight)/dphi: weight_z = -(m - phi rho A) g
         J->dr.col(2) += dF_dphi * dphi;
     }
     return F;
@@ -147,6 +248,8 @@ Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& 
 
 void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentField& current, const double* X,
                      const double* Xd, const double* Xdd, double* R, WaveExpansion* waveCache) {
+    const bool waterline = reaches_waterline(e.length, p.diameter, X);
+    if (waterline) add_waterline_buoyancy(e, p, X, R, nullptr);
     for (int g = 0; g < e.nLoad; ++g) {
         const QuadPoint& q = e.load[g];
         const Vec3 r = interpolate(q.shape.N, X);
@@ -154,7 +257,8 @@ void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentF
         current.flow(r, U, A, waveCache ? waveCache + g : nullptr);  // the load without its Jacobian needs no gradients of the flow
         const Mat3 unused = Mat3::Zero();
         const Vec3 F = point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd),
-                                  interpolate(q.shape.N, Xdd), U, unused, current.accelerates(), A, unused, nullptr);
+                                  interpolate(q.shape.N, Xdd), U, unused, current.accelerates(), A, unused, nullptr,
+                                  !waterline);
         for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += (q.weight * q.shape.N[a]) * F;
     }
 }
@@ -163,6 +267,8 @@ void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const Curre
                         const double* X, const double* Xd, const double* Xdd, Mat12& K, Mat12& C,
                         Mat12& M, WaveExpansion* waveCache) {
     PointLoadJacobian J;
+    const bool waterline = reaches_waterline(e.length, p.diameter, X);
+    if (waterline) add_waterline_buoyancy(e, p, X, nullptr, &K);
     for (int g = 0; g < e.nLoad; ++g) {
         const QuadPoint& q = e.load[g];
         const Vec3 r = interpolate(q.shape.N, X);
@@ -170,7 +276,7 @@ void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const Curre
         Mat3 dU, dA;
         current.flow(r, U, dU, A, dA, waveCache ? waveCache + g : nullptr);
         point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd), interpolate(q.shape.N, Xdd), U,
-                   dU, current.accelerates(), A, dA, &J);
+                   dU, current.accelerates(), A, dA, &J, !waterline);
         for (int a = 0; a < 4; ++a) {
             const double wa = q.weight * q.shape.N[a];
             for (int b = 0; b < 4; ++b) {

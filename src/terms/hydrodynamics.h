@@ -4,8 +4,11 @@
 // Residual sign: the load enters R = M r'' + f_int - f_ext as
 //   F = m_a r'' - f_weight - f_drag,   m_a = phi rho A (Can (I - t t^T) + Cat t t^T),
 // f_weight = -(m - phi rho A) g e_z, f_drag = phi (0.5 rho Cdn d |u_n| u_n + 0.5 rho Cdt pi d |u_t| u_t),
-// u = U - r_dot, t = r'/|r'|, and phi(z) the submerged fraction of the cross-section (a linear
-// ramp over one diameter around z = 0, so weight and drag are continuous across the surface).
+// u = U - r_dot, t = r'/|r'|, and phi(z) the submerged fraction of the cross-section: 1 in the water
+// (z <= 0; the waterline is z = 0, waves move the water, not the surface), ramping linearly to 0 over
+// the diameter above it (0 < z < d), so weight and drag are continuous across the surface. Drag and
+// the fluid's inertia take phi at the load points; the buoyancy of an element that reaches the ramp
+// is integrated exactly (docs/model.md, "Lines in air and water").
 #pragma once
 
 #include "terms/hermite_element.h"
@@ -79,12 +82,17 @@ inline double dry_weight(const FluidProps& f) { return f.massPerLength * f.gravi
 // Per-length load F at one point in water moving with velocity U (gradient dU = dU/dr) and, when
 // `waves` (the water accelerates), accelerating with A (gradient dA): Morison drag on the relative
 // velocity and the fluid inertia rho A ((1 + Can) A_n + (1 + Cat) A_t) (Froude-Krylov plus added
-// mass). Fills J when non-null.
+// mass). Fills J when non-null. buoyancy false: without the buoyancy phi rho A g (an element that
+// reaches the waterline integrates it exactly instead).
 Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& rd, const Vec3& rdd, const Vec3& U,
-                const Mat3& dU, bool waves, const Vec3& A, const Mat3& dA, PointLoadJacobian* J);
+                const Mat3& dU, bool waves, const Vec3& A, const Mat3& dA, PointLoadJacobian* J,
+                bool buoyancy = true);
 
 // Element integrals: R_a += int N_a F ds; K, C, M get dR/dX, dR/dXdot, dR/dXddot. waveCache (null, or
-// one slot per load point) holds the waves' expansions of the element's load points.
+// one slot per load point) holds the waves' expansions of the element's load points. An element whose
+// Bezier hull is entirely below z = 0 or above z = d takes its load points alone (phi is 1 or 0 on
+// it); one that reaches the ramp has its buoyancy integrated exactly, piecewise between the crossings
+// of z = 0 and z = d, with its exact Jacobian.
 void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentField& current, const double* X,
                      const double* Xd, const double* Xdd, double* R, WaveExpansion* waveCache = nullptr);
 void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const CurrentField& current,

@@ -315,30 +315,107 @@ TEST(HydroTerm, JacobianMatchesFiniteDifferences) {
     expect_jacobian_matches([&](const Vec12& a) { return force(X, Xd, a); }, Xdd, M, 1e-6, 1e-8, "dR/dXddot");
 }
 
-// A coarse straight element from 2 m above the water to 8 m below it, at rest: its load is the dry
-// weight of its 2 m in air and the submerged weight of its 8 m in water (the submerged fraction's
-// ramp over one diameter is symmetric about z = 0). Its own three load points (at 0.87, -3.0 and
-// -6.9 m) alone gave 2.78 m of dry and 7.22 m of submerged weight.
-// The load is continuous in the nodes as an element hanging from a tow point rises out of the water:
-// its top node on the surface (z = 0) and at the band's top (z = d/2), approached from either side.
-TEST(HydroTerm, TheLoadOfAnElementRisingOutOfTheWaterIsContinuous) {
-    const double l = 10.0, d = 0.1, m = 20.0;
-    FluidProps p{1025.0, 9.81, m, 3.14159265358979 * d * d / 4, d, 1.2, 0.0, 1.0, 0.0, true};
-    const ElementTables e = make_element_tables(l, 3, 3);
-    const Vec12 zero = Vec12::Zero();
+namespace {
+
+// A long graded top element of a line (l = 10 m, d = 0.1 m, 20 kg/m) in a current, moving.
+struct WaterlineElement {
+    double l = 10.0, d = 0.1, m = 20.0;
+    FluidProps p{1025.0, 9.81, m, 3.14159265358979 * d * d / 4, d, 1.2, 0.1, 1.0, 0.3, true};
+    ElementTables e = make_element_tables(l, 3, 3);
     CurrentField current;
-    auto vertical_load = [&](double zTop) {
-        Vec12 X = Vec12::Zero();
-        X.segment<3>(0) = Vec3(0.0, 0.0, zTop);
-        X.segment<3>(3) = Vec3(0.0, 0.0, -1.0);
-        X.segment<3>(6) = Vec3(0.0, 0.0, zTop - l);
-        X.segment<3>(9) = Vec3(0.0, 0.0, -1.0);
+    WaterlineElement() { current.uniform = Vec3(0.5, -0.3, 0.0); }
+    // The element along x whose height is the cubic z(xi) = c0 + c1 xi + c2 xi^2 + c3 xi^3 (xi = s / l).
+    Vec12 along(double c0, double c1, double c2, double c3) const {
+        Vec12 X;
+        const double zj = c0 + c1 + c2 + c3, slopeJ = c1 + 2.0 * c2 + 3.0 * c3;
+        X << 0.0, 0.0, c0, 1.0, 0.0, c1 / l, l, 0.5, zj, 1.0, 0.05, slopeJ / l;
+        return X;
+    }
+    Vec12 force(const Vec12& X, const Vec12& Xd, const Vec12& Xdd) const {
         Vec12 R = Vec12::Zero();
-        add_hydro_force(e, p, current, X.data(), zero.data(), zero.data(), R.data());
-        return R[2] + R[8];
-    };
-    const double eps = 1e-9, slope = m * p.gravity;  // the load changes by at most dry weight x dz
-    for (double z : {0.0, 0.5 * d}) EXPECT_NEAR(vertical_load(z + eps), vertical_load(z - eps), 10.0 * slope * eps) << z;
+        add_hydro_force(e, p, current, X.data(), Xd.data(), Xdd.data(), R.data());
+        return R;
+    }
+    // The Jacobians against central differences; h = 1e-8 m is far below every feature of the
+    // load's shape here (the cuts' spacing, 1e-5 m at least), so the bound is round-off.
+    void expect_jacobians_match(const Vec12& X, const char* what) const {
+        std::mt19937 rng(3);
+        const Vec12 Xd = random_vector(rng, 0.5), Xdd = random_vector(rng, 0.2);
+        Mat12 K = Mat12::Zero(), C = Mat12::Zero(), M = Mat12::Zero();
+        add_hydro_jacobian(e, p, current, X.data(), Xd.data(), Xdd.data(), K, C, M);
+        expect_jacobian_matches([&](const Vec12& x) { return force(x, Xd, Xdd); }, X, K, 1e-8, 1e-6, what);
+        expect_jacobian_matches([&](const Vec12& v) { return force(X, v, Xdd); }, Xd, C, 1e-8, 1e-6, what);
+        expect_jacobian_matches([&](const Vec12& a) { return force(X, Xd, a); }, Xdd, M, 1e-8, 1e-6, what);
+    }
+};
+
+}  // namespace
+
+// A coarse straight element from 2 m above the water to 8 m below it, at rest: its load is the dry
+// weight of its 2 m in air and the submerged weight of its 8 m in water, and the buoyancy of the
+// ramp above the surface, where the submerged fraction falls from 1 at z = 0 to 0 at z = d (d / 2 of
+// length on a vertical element). Its own three load points (at 0.87, -3.0 and -6.9 m) alone gave
+// 2.78 m of dry and 7.22 m of submerged weight.
+TEST(HydroTerm, AnElementAcrossTheWaterlineWeighsItsPartInAirDry) {
+    WaterlineElement w;
+    Vec12 X = Vec12::Zero();
+    X.segment<3>(0) = Vec3(0.0, 0.0, 2.0);
+    X.segment<3>(3) = Vec3(0.0, 0.0, -1.0);
+    X.segment<3>(6) = Vec3(0.0, 0.0, 2.0 - w.l);
+    X.segment<3>(9) = Vec3(0.0, 0.0, -1.0);
+    w.current = CurrentField();
+    const Vec12 zero = Vec12::Zero();
+    const Vec12 R = w.force(X, zero, zero);
+    const double rhoAg = w.p.rho * w.p.area * w.p.gravity;
+    // N_0 + N_2 = 1: the node forces add up to the element's load; exact up to round-off.
+    EXPECT_NEAR(R[2] + R[8], w.m * w.p.gravity * w.l - rhoAg * (8.0 + 0.5 * w.d), 1e-12 * w.m * w.p.gravity * w.l);
+}
+
+// The element's load and its Jacobian where the line crosses the waterline in every way the cubic
+// can: near an end, at both levels of the ramp, six times, and tangentially (a sag or a crest just
+// touching z = 0 or z = d from inside the ramp or from outside it).
+TEST(HydroTerm, JacobianOfAnElementAcrossTheWaterlineMatchesFiniteDifferences) {
+    WaterlineElement w;
+    const double d = w.d;
+    // Steep, from just above the surface (and just above the ramp) to 8 m down.
+    w.expect_jacobians_match(w.along(1e-3, -8.0, 0.0, 0.0), "crossing z = 0 1 mm from its end");
+    w.expect_jacobians_match(w.along(d + 1e-3, -8.0, 0.0, 0.0), "crossing z = d 1 mm from its end");
+    w.expect_jacobians_match(w.along(-8.0, 8.0 + 0.5 * d, 0.0, 0.0), "ending inside the ramp");
+    // d/2 + 60 d (xi - 0.15)(xi - 0.5)(xi - 0.85): crosses z = 0 and z = d three times each.
+    const double A = 60.0 * d;
+    w.expect_jacobians_match(w.along(0.5 * d - A * 0.06375, A * 0.8275, -A * 1.5, A), "six crossings");
+    // A crest or a sag at xi = 0.4 touching a level of the ramp, 1e-4 d inside or outside it.
+    for (double level : {0.0, d})
+        for (double hair : {-1e-4 * d, 1e-4 * d}) {
+            const double c = 2.0;  // curvature of z(xi)
+            w.expect_jacobians_match(w.along(level + hair - c * 0.16, 2.0 * c * 0.4, -c, 0.0), "a crest touching");
+            w.expect_jacobians_match(w.along(level - hair + c * 0.16, -2.0 * c * 0.4, c, 0.0), "a sag touching");
+        }
+}
+
+// The load is continuous in the nodes as an element hanging from a tow point rises out of the water
+// (its top node on the surface, z = 0, and at the ramp's top, z = d), as a crest of the line rises
+// through z = 0 and z = d (two cuts appear at one point), and as the element's Bezier hull first
+// reaches the ramp while the line itself stays below it (the load points' rule gives way to the
+// exact integral), each approached from either side.
+TEST(HydroTerm, TheLoadOfAnElementRisingOutOfTheWaterIsContinuous) {
+    WaterlineElement w;
+    const double d = w.d, eps = 1e-9, slope = 10.0 * w.m * w.p.gravity * w.l;  // |dR/dz| <= dry weight x l
+    const Vec12 zero = Vec12::Zero();
+    auto load = [&](const Vec12& X) { return w.force(X, zero, zero); };
+    for (double z : {0.0, d}) {
+        EXPECT_LT((load(w.along(z + eps, -w.l, 0.0, 0.0)) - load(w.along(z - eps, -w.l, 0.0, 0.0))).norm(), slope * eps) << z;
+        EXPECT_LT((load(w.along(z + eps - 0.32, 1.6, -2.0, 0.0)) - load(w.along(z - eps - 0.32, 1.6, -2.0, 0.0))).norm(),
+                  slope * eps)
+            << "crest at " << z;
+    }
+    // z(xi) = -0.01 + 0.03 xi - 0.06 xi^2 peaks at -6.25 mm, while the Bezier control height of its
+    // tangent at node i, b1 = -0.01 + 0.03 / 3, is 0: the hull reaches the ramp or not.
+    for (double turn : {-eps, eps}) {
+        const Vec12 X = w.along(-0.01, 0.03 + turn, -0.06, 0.0);
+        const Vec12 Y = w.along(-0.01, 0.03 - turn, -0.06, 0.0);
+        EXPECT_LT((load(X) - load(Y)).norm(), slope * 2.0 * eps);
+    }
 }
 
 TEST(HydroTerm, JacobianAcrossTheSurfaceMatchesFiniteDifferences) {
