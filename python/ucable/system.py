@@ -56,6 +56,9 @@ OSP_NS = "http://opensimulationplatform.com/MSMI/OSPSystemStructure"
 # duration: accelerate and decelerate are the Hopland (1993) ramps (60 s, then 600 s), the turns start
 # at t = 30 s at 1 deg/s, the stop orders zero speed in 5 s from t = 30 s.
 _TURN = {"speed0": 2.4 * KNOT, "speed1": 2.4 * KNOT, "turnStart": 30.0, "turnRate": math.radians(1.0)}
+# The Vessel FMU's towForceTiming: the tow force it is given is the cable's at the start of its step (it
+# extrapolates it with the rate of the last two) or at the end of it (it interpolates from the one before).
+TOW_FORCE_AT_STEP_START, TOW_FORCE_AT_STEP_END = 1, 2
 MANOEUVRES = {
     "accelerate": ({"speed0": 1.1 * KNOT, "speed1": 2.4 * KNOT, "rampStart": 0.0, "rampDuration": 60.0}, 660.0),
     "decelerate": ({"speed0": 2.5 * KNOT, "speed1": 1.0 * KNOT, "rampStart": 0.0, "rampDuration": 60.0}, 660.0),
@@ -558,7 +561,11 @@ def run(manoeuvre: str, step: float = 0.5, coupling: str = "external", master: s
         unit = system.simulators["body"]
         unit.source, unit.initial = Path(body_fmu), {}
         params["body"].pop("integrateTranslation")
-    params["vessel"] = {**vessel, **(waves or {}), **(vessel_parameters or {})}
+    # when the vessel's towForce input was taken: Gauss-Seidel (fmpy, newton) steps the cable first, so the
+    # vessel gets the force of its step's end; Jacobi (fmpy, libcosim) the force of its step's start
+    timing = TOW_FORCE_AT_STEP_END if master == "newton" or (master == "fmpy" and ordering == "gauss-seidel") \
+        else TOW_FORCE_AT_STEP_START
+    params["vessel"] = {**vessel, "towForceTiming": timing, **(waves or {}), **(vessel_parameters or {})}
     params["cable"] = {**params["cable"], **(cable_parameters or {}), **(waves or {})}
     if coupling in SELF_INTEGRATING:
         start = steady_far_end(system, params, body)

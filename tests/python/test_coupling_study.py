@@ -59,3 +59,22 @@ def test_chain_model_predicts_the_measured_limit_of_the_explicit_coupling(fmu_fi
             error = np.inf
         tolerance = 1e-3 * internal["cable.towTension"][0]
         assert (error < tolerance) if stable else (error > 1e3), (h, error, tolerance)
+
+
+def test_the_converged_report_names_the_worse_manoeuvre_and_marks_the_bound():
+    """--converged's report: each cell the worse manoeuvre's distance, bold beyond 0.2 m, the summary
+    counting the runs within it (the vessel's held force apart from the linear one)."""
+    cells = []
+    for man, scale in (("accelerate", 0.1), ("turn90", 1.0)):
+        for ordering in S.ORDERINGS:
+            for coupling, force, d in (("internal", "held", 0.33), ("internal", "linear", 0.012),
+                                       ("external", "linear", 0.013), ("proxy", "linear", 0.11)):
+                cells.append(dict(manoeuvre=man, mass=4000.0, step=1.0, ordering=ordering, coupling=coupling,
+                                  vessel_force=force, position_max=scale * d, tension_rms=scale * 1e-3, cpu=0.1))
+    text = C.markdown_converged({"steps": [1.0], "masses": [4000.0], "manoeuvres": ["accelerate", "turn90"],
+                                 "cells": cells})
+    assert text.startswith(C.BEGIN_CONVERGED) and text.endswith(C.END_CONVERGED)
+    row = "| 4000 kg | **0.33 m** | 0.012 m | 0.013 m | 0.11 m |"
+    assert text.count(row) == 2  # both orderings, the turn's (worse) distances
+    assert "12 of 12 runs within 0.2 m; the farthest 0.11 m (turn90, 4000 kg, 1 s, gauss-seidel, proxy)" in text
+    assert "Force held: 2 of 4 within; the farthest 0.33 m (turn90" in text

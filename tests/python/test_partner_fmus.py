@@ -101,6 +101,56 @@ def test_vessel_without_heading_integral_keeps_the_tow_offset(vessel_fmu, make_u
     assert 60.0 < math.degrees(fmu_state[2]) < 80.0
 
 
+TURN = {"speed0": 2.4 * KNOT, "speed1": 2.4 * KNOT, "turnStart": 30.0, "turnRate": math.radians(1.0),
+        "turnAngle": math.radians(90.0)}
+FINE = 1.0 / 128  # [s] the reference's step and every run's Runge-Kutta substep (binary: the times exact)
+
+
+def turning_tow_force(t):
+    """A tow force that grows and turns after the vessel (from 40 s at the turn's 1 deg/s): the side force of
+    the turn, which yaws the vessel and makes it drift."""
+    a = math.radians(1.0) * min(max(t - 40.0, 0.0), 90.0)
+    T = 5000.0 + 20.0 * t
+    return {"towForce.x": -T * math.cos(a), "towForce.y": -T * math.sin(a), "towForce.z": -3000.0}
+
+
+def fly_under_the_turning_force(make_unit, vessel_fmu, h, timing, taken, t_end=150.0):
+    """The tow point at t = h, 2 h, ... t_end with the force given as a master takes it: the force at the
+    step's start (taken "start", a Jacobi master) or at its end ("end", Gauss-Seidel, the cable first)."""
+    v = make_unit(vessel_fmu, parameters={**TURN, "towForceTiming": timing, "maxSubstep": FINE},
+                  instance_name=f"v{timing}{taken}{h:g}")
+    v.initialize(0.0, t_end, inputs=turning_tow_force(0.0))
+    track = []
+    for k in range(int(round(t_end / h))):
+        v.set(turning_tow_force((k + (taken == "end")) * h))
+        v.do_step(h, t=k * h)
+        track.append(v.get_reals(["tow.x", "tow.y"]))
+    return np.array(track)
+
+
+def test_the_tow_force_over_a_step_is_second_order_as_its_timing_says(vessel_fmu, make_unit):
+    """towForceTiming: the force over a communication step is linear in time, extrapolated from the last
+    two inputs (1: they are the forces at the steps' starts) or interpolated from the input before (2: at
+    the steps' ends), so the track's error falls with h^2, by 4 from 1 s to 0.5 s; held (0), whenever the
+    master took it, the force is half a step early or late and the error falls with h, by 2. Reference: the
+    force given every 1/128 s; every run integrates with the same 1/128 s substeps, so the differences are
+    the force's over the step alone."""
+    ref = fly_under_the_turning_force(make_unit, vessel_fmu, FINE, 1, "start")
+
+    def error(h, timing, taken):
+        stride = int(round(h / FINE))
+        track = fly_under_the_turning_force(make_unit, vessel_fmu, h, timing, taken)
+        return np.max(np.linalg.norm(track - ref[stride - 1::stride], axis=1))
+
+    held = {taken: [error(h, 0, taken) for h in (1.0, 0.5)] for taken in ("start", "end")}
+    for timing, taken in ((1, "start"), (2, "end")):
+        e1, e05 = error(1.0, timing, taken), error(0.5, timing, taken)
+        assert 3.5 < e1 / e05 < 4.5, (timing, e1, e05)  # second order
+        assert e1 < 0.05 * held[taken][0], (timing, e1, held)
+    for taken, (e1, e05) in held.items():
+        assert 1.8 < e1 / e05 < 2.2, (taken, e1, e05)  # first order
+
+
 def body_force(v, CdA=0.3, CLA=0.0, current=(0.0, 0.0)):
     u = np.array([current[0], current[1], 0.0]) - np.asarray(v, float)
     F = 0.5 * RHO * CdA * np.linalg.norm(u) * u

@@ -11,8 +11,18 @@
  *   (Iz + Na) dr/dt               = -Nr r - Nrr |r| r + N_rudder + x_t Fy_tow - y_t Fx_tow
  *
  * F_tow = the input towForce.x/y (the cable FMU's towForce: the force of the cable on the tow point) in
- * body axes, held constant over a communication step; its vertical component is not felt in the
- * horizontal plane. The autopilot: speed PI with feed-forward of the ordered acceleration, the
+ * body axes; its vertical component is not felt in the horizontal plane. Over a communication step
+ * [t, t + h] the force is linear in time, from the input and the input of the step before, as the
+ * parameter towForceTiming says when the master took the input (docs/cosimulation.md):
+ *   1 (default) at the step's start, the meaning of an input set at a communication point (a Jacobi
+ *     master: libcosim's fixed-step algorithm): extrapolated with the rate of the last two inputs,
+ *     F(t + s) = F_k + (F_k - F_{k-1}) s / h_{k-1} (held in the first step);
+ *   2 at the step's end (a Gauss-Seidel master that steps the cable first): interpolated from the input
+ *     before, F(t + s) = F_k + (F_{k+1} - F_k) s / h;
+ *   0 held, whenever it was taken: first order in h (a master that steps the vessel after the cable
+ *     lets it lead by h, one that steps it first lets it lag by h).
+ * Held, the force is off by half a step on average: at 1 s the vessel's sway and the heading loop's
+ * integral turn that into a track 0.3 m off; linear, the error is second order. The autopilot: speed PI with feed-forward of the ordered acceleration, the
  * resistance and the measured tow force; heading PID with feed-forward of the ordered turn rate; gains
  * from pole placement on the rigid vessel (speed loop: a double pole at -speedBandwidth; heading loop:
  * a double pole at -headingBandwidth and one at -headingIntegralBandwidth, whose integral action takes
@@ -76,6 +86,7 @@ typedef struct VesselData {
     PMSeaParameters sea; /* the waves (the cable FMU's names and meaning) */
     char raoFile[PM_STRING_CAPACITY]; /* the RAO table: "" the shipped one (rao_table.h) */
     double headingIntegralBandwidth;
+    double towForceTiming; /* Integer: TowForceTiming */
     /* inputs */
     double towForce[3];
     /* states */
@@ -84,7 +95,14 @@ typedef struct VesselData {
     double tow[3], towVelocity[3], towAcceleration[3];
     double x, y, heading, surge, sway, yawRate, speed, thrust, rudderMoment;
     double waveMotion[PM_RAO_DOF], waveElevation;
+    /* the tow force over the current step, stepForce + stepForceRate (t - stepStart), from the input and the
+       input of the step before (previousTowForce; previousStep its step, 0 before the first step) */
+    double stepForce[3], stepForceRate[3], stepStart;
+    double previousTowForce[3], previousStep;
 } VesselData;
+
+/* When the master took the towForce input (the parameter towForceTiming). */
+enum TowForceTiming { TOW_FORCE_HELD = 0, TOW_FORCE_AT_STEP_START = 1, TOW_FORCE_AT_STEP_END = 2 };
 
 /* The derived data of the waves: the sea's components and the RAO table (none in calm water). */
 typedef struct VesselWaves {
@@ -148,9 +166,32 @@ static Commands autopilot(const VesselData* d, double t, const double* x, double
     return c;
 }
 
-/* dx/dt for the Earth-frame tow force f (x, y components used). */
-static void derivatives(const VesselData* d, double t, const double* x, const double* f, double* dx) {
-    double c = cos(x[PSI]), s = sin(x[PSI]);
+/* The Earth-frame tow force at time t of the current step (at its end after it). */
+static void tow_force(const VesselData* d, double t, double* f) {
+    for (int i = 0; i < 3; ++i) f[i] = d->stepForce[i] + d->stepForceRate[i] * (t - d->stepStart);
+}
+
+/* The tow force's law over the step [t, t + h] from the input and the input of the step before. */
+static void begin_step(VesselData* d, double t, double h) {
+    const int timing = (int)d->towForceTiming;
+    for (int i = 0; i < 3; ++i) {
+        const double now = d->towForce[i], before = d->previousTowForce[i];
+        if (timing == TOW_FORCE_AT_STEP_END) {
+            d->stepForce[i] = before;
+            d->stepForceRate[i] = (now - before) / h;
+        } else {
+            d->stepForce[i] = now;
+            d->stepForceRate[i] =
+                timing == TOW_FORCE_AT_STEP_START && d->previousStep > 0.0 ? (now - before) / d->previousStep : 0.0;
+        }
+    }
+    d->stepStart = t;
+}
+
+/* dx/dt (the tow force's x, y components used). */
+static void derivatives(const VesselData* d, double t, const double* x, double* dx) {
+    double c = cos(x[PSI]), s = sin(x[PSI]), f[3];
+    tow_force(d, t, f);
     double fxb = c * f[0] + s * f[1], fyb = -s * f[0] + c * f[1];
     Commands cmd = autopilot(d, t, x, fxb);
     double u = x[U], v = x[V], r = x[R];
@@ -218,8 +259,9 @@ static void add_wave_motion(VesselData* d, const VesselWaves* w, double t, const
    wave motion superimposed in waves. */
 static void update_outputs(VesselData* d, const VesselWaves* w, double t) {
     const double* x = d->state;
-    double dx[N_STATES];
-    derivatives(d, t, x, d->towForce, dx);
+    double dx[N_STATES], f[3];
+    derivatives(d, t, x, dx);
+    tow_force(d, t, f);
     double c = cos(x[PSI]), s = sin(x[PSI]);
     double xt = d->towPoint[0], yt = d->towPoint[1];
     double wx = x[U] - x[R] * yt, wy = x[V] + x[R] * xt; /* tow point velocity, body axes */
@@ -240,7 +282,7 @@ static void update_outputs(VesselData* d, const VesselWaves* w, double t) {
     d->sway = x[V];
     d->yawRate = x[R];
     d->speed = hypot(x[U], x[V]);
-    Commands cmd = autopilot(d, t, x, c * d->towForce[0] + s * d->towForce[1]);
+    Commands cmd = autopilot(d, t, x, c * f[0] + s * f[1]);
     d->thrust = cmd.thrust;
     d->rudderMoment = cmd.moment;
     if (w != NULL && w->n > 0) add_wave_motion(d, w, t, x, dx, d->tow, d->towVelocity, d->towAcceleration);
@@ -292,6 +334,12 @@ static int vessel_initialize(void* data, const void* derived, double t0, char* m
     d->state[PSI] = d->heading0;
     d->state[U] = d->speed0;
     d->state[V] = d->state[R] = d->state[INTEGRAL] = d->state[HEADING_INTEGRAL] = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        d->previousTowForce[i] = d->stepForce[i] = d->towForce[i];
+        d->stepForceRate[i] = 0.0;
+    }
+    d->previousStep = 0.0;
+    d->stepStart = t0;
     update_outputs(d, derived, t0);
     return 0;
 }
@@ -303,17 +351,20 @@ static int vessel_do_step(void* data, const void* derived, double t, double h, c
     if (n < 1) n = 1;
     double dt = h / n, k1[N_STATES], k2[N_STATES], k3[N_STATES], k4[N_STATES], tmp[N_STATES];
     double* x = d->state;
+    begin_step(d, t, h);
     for (int i = 0; i < n; ++i) {
         double ti = t + i * dt;
-        derivatives(d, ti, x, d->towForce, k1);
+        derivatives(d, ti, x, k1);
         for (int j = 0; j < N_STATES; ++j) tmp[j] = x[j] + 0.5 * dt * k1[j];
-        derivatives(d, ti + 0.5 * dt, tmp, d->towForce, k2);
+        derivatives(d, ti + 0.5 * dt, tmp, k2);
         for (int j = 0; j < N_STATES; ++j) tmp[j] = x[j] + 0.5 * dt * k2[j];
-        derivatives(d, ti + 0.5 * dt, tmp, d->towForce, k3);
+        derivatives(d, ti + 0.5 * dt, tmp, k3);
         for (int j = 0; j < N_STATES; ++j) tmp[j] = x[j] + dt * k3[j];
-        derivatives(d, ti + dt, tmp, d->towForce, k4);
+        derivatives(d, ti + dt, tmp, k4);
         for (int j = 0; j < N_STATES; ++j) x[j] += dt / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
     }
+    for (int i = 0; i < 3; ++i) d->previousTowForce[i] = d->towForce[i];
+    d->previousStep = h;
     update_outputs(d, derived, t + h);
     return 0;
 }
@@ -407,6 +458,11 @@ static const PMVariable kVariables[] = {
       "the heading loop's integral pole cannot be negative",
       "Pole of the heading loop's integral action (0: a PD without it, which leaves the tow's yaw moment as a "
       "heading error)"),
+    PM_INT_PAR(VesselData, towForceTiming, "towForceTiming", 1.0, 0.0, 2.0,
+               "towForceTiming is 0 (held), 1 (the input is the force at the step's start) or 2 (at its end)",
+               "When the master took the towForce input, which sets the force over a step: 1 at the step's start (a "
+               "Jacobi master, libcosim), extrapolated with the last two inputs' rate; 2 at its end (Gauss-Seidel, "
+               "the cable stepped first), interpolated from the input before; 0 held over the step"),
 };
 
 const PMModel kPartnerModel = {

@@ -47,12 +47,13 @@ SCENES = {
 # The Vessel partner FMU: name -> (parameters, function t -> tow force, step, n steps). A speed ramp and a
 # turn under a tow force that changes with time (it yaws the vessel and loads the speed loop). Recorded
 # with the heading loop a PD (its integral action, added later, off: headingIntegralBandwidth 0), which
-# the PID must reproduce bit for bit with its integral pole at 0.
+# the PID must reproduce bit for bit with its integral pole at 0, and with the tow force held over a step
+# (towForceTiming 0; the default, added later, extrapolates it from the last two inputs).
 VESSEL_SCENES = {
     "vessel_ramp_turn": dict(
         parameters={"speed0": 1.1 * KNOT, "speed1": 2.4 * KNOT, "rampStart": 5.0, "rampDuration": 30.0,
                     "turnStart": 10.0, "turnRate": math.radians(1.5), "turnAngle": math.radians(45.0),
-                    "headingIntegralBandwidth": 0.0},
+                    "headingIntegralBandwidth": 0.0, "towForceTiming": 0},
         force=lambda t: {"towForce.x": -4000.0 - 50.0 * t, "towForce.y": 1500.0 * math.sin(0.1 * t),
                          "towForce.z": -3000.0},
         step=0.5, steps=120),
