@@ -133,6 +133,8 @@ private:
     void set_environment(const LineEnvironment& env);
     // True where the guess is the line's static profile (near the equilibrium).
     bool initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
+    // A steady tow's line: its direction at the flow's critical angle (start.cpp).
+    bool steady_tow_direction(Vec3& d) const;
     // The far end is held at the start: anchored, external, or the proxy of an external body whose
     // statics hold it where the body is (bottomEnd 4, initMode 0).
     bool far_end_held_at_start() const;
