@@ -75,6 +75,13 @@ public:
     double time() const override { return state_.time; }
     const UCOutputs& outputs() const override { return state_.outputs; }
     Vec3 tow_position() const override { return state_.tow.p(); }
+    // The far end of bottomEnd 3 (end.*): where the last step left it.
+    bool driven_position(int kind, int index, Vec3& p) const override {
+        (void)index;
+        if (kind != UC_DRIVEN_END || !model_.far_end().driven) return false;
+        p = state_.end.p();
+        return true;
+    }
 
     bool initialize(double t0, const UCInputs& in, std::string& error) override;
     // The FMU's step: unpacks in into the ends' motion and the environment and takes step below.
