@@ -182,12 +182,14 @@ def step_reference(scene: Path, result: Path, env: dict, cwd: Path) -> dict:
     pairs = [(v, at[round(t, 9)]) for t, v in zip(coarse["time"], coarse["towTension"]) if round(t, 9) in at]
     span = max(f for _, f in pairs) - min(f for _, f in pairs)
     worst = max(abs(c - f) for c, f in pairs)
+    tension = max(abs(f) for _, f in pairs)
     step = scene_parameters(scene)["step"]
     return {"reference": f"the scene at {FINE_STEP} s", "set": f"step = {step} s",
             "answer": f"towTension {min(c for c, _ in pairs):.0f}-{max(c for c, _ in pairs):.0f} N",
             "expected": f"{min(f for _, f in pairs):.0f}-{max(f for _, f in pairs):.0f} N",
-            "difference": f"largest {worst:.1f} N = {100 * worst / max(span, 1e-9):.2f} % of the range",
-            "worst": worst / max(span, 1e-9) / 100.0}
+            "difference": f"largest {worst:.1f} N: {100 * worst / tension:.2f} % of the tension, "
+                          f"{100 * worst / max(span, 1e-9):.1f} % of its range",
+            "worst": worst / tension}
 
 
 def winch_reference(scene: Path, result: Path) -> dict:
@@ -198,7 +200,7 @@ def winch_reference(scene: Path, result: Path) -> dict:
     s = scene_parameters(scene)
     p = s["parameters"]
     r = read_csv(result)
-    length = r["winchLength"][-1] if "winchLength" in r else p["length"]
+    length = r["unstretchedLength"][-1]
     V = s["tow"]["speed_kn"] * 1852 / 3600
     ref = solve_steady_tow(V, CableProperties(length=length),
                            end_load=body_end_load(V, p.get("body.mass", 0.0), p.get("body.volume", 0.0),
@@ -210,11 +212,43 @@ def winch_reference(scene: Path, result: Path) -> dict:
             "difference": f"{100 * (T / ref.top_tension - 1):+.2f} %", "worst": abs(T / ref.top_tension - 1)}
 
 
+def user_set(ex: Example) -> str:
+    """What the user chose in the example: a command's arguments (without its comment), a scene's title."""
+    if ex.kind == "shell":
+        words = ex.text.split("#")[0].split()[2:]
+        return " ".join(words).replace("|", "/")
+    return ""
+
+
+def sweep_runs(text: str, cwd: Path) -> dict:
+    """A sweep's table against the runs its --vary options ask for (their product)."""
+    expected = 1
+    for values in re.findall(r"--vary \"?[^=\s]+=([^\s\"]+)", text):
+        expected *= len(values.split(","))
+    out = re.search(r"--out (\S+)", text)
+    with open(cwd / out.group(1) / "results.csv", newline="") as f:
+        rows = len(list(csv.reader(f))) - 1
+    return {"reference": "the --vary product", "answer": f"{rows} runs in results.csv", "expected": f"{expected} runs",
+            "difference": f"{rows - expected:+d} runs", "worst": abs(rows - expected)}
+
+
+def final_answer(text: str, cwd: Path) -> dict:
+    """A run's or system's last tow tension (no reference)."""
+    out = re.search(r"--out (\S+)", text)
+    path = cwd / out.group(1) / "result.csv" if out else None
+    if path is None or not path.is_file():
+        return {}
+    r = read_csv(path)
+    return {"answer": f"towTension {r['towTension'][-1]:.0f} N at {r['time'][-1]:g} s"}
+
+
 def check(ex: Example, out: dict, cwd: Path, env: dict, references: bool) -> dict:
     """What the example's answer is, against its reference where one exists."""
     if out["returncode"] != 0:
         return {}
     text = ex.text
+    if text.startswith("ucable sweep"):
+        return sweep_runs(text, cwd)
     if ex.kind == "python" and "simulate_fmu" in text and "tow tension" in text:
         return fmpy_reference(out["stdout"]) or {}
     if not references:
@@ -225,7 +259,7 @@ def check(ex: Example, out: dict, cwd: Path, env: dict, references: bool) -> dic
         return step_reference(cwd / "my.toml", cwd / "d" / "result.csv", env, cwd)
     if ex.kind == "scene" and "[winch]" in text:
         return winch_reference(cwd / "scene.toml", cwd / "scene" / "result.csv")
-    return {}
+    return final_answer(text, cwd)
 
 
 def compute(fmu=None, light: bool = False, references: bool = True, progress=None) -> dict:
@@ -245,7 +279,7 @@ def compute(fmu=None, light: bool = False, references: bool = True, progress=Non
             cwd = dirs.setdefault((ex.doc, ex.block), tmp / f"run{len(dirs)}")
             cwd.mkdir(exist_ok=True)
             out = run(ex, cwd, env)
-            r = {**asdict(ex), "returncode": out["returncode"], "wall": out["wall"],
+            r = {**asdict(ex), "set": user_set(ex), "returncode": out["returncode"], "wall": out["wall"],
                  "error": out["stderr"].strip().splitlines()[-1] if out["returncode"] and out["stderr"].strip() else "",
                  **check(ex, out, cwd, env, references)}
             r["verdict"] = ("fails" if out["returncode"] else "no reference" if r.get("worst") is None
