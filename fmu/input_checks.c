@@ -192,27 +192,32 @@ static void check_bounds(UCInstance* inst, Report* r) {
     }
 }
 
-/* ---- the tow position against the trajectory the previous inputs extrapolated ------------------------ */
+/* ---- driven positions against the trajectory the previous inputs extrapolated ----------------------- */
 
-static int check_tow_jump(UCInstance* inst, int history, double h) {
-    if (inst->towMismatchWarned || inst->coreParams.mooringSystem) return 0;
-    const UCInputs* in = &inst->inputs;
-    double p[3];
-    uc_tow_position(inst->cable, p);
-    const double dx = in->tow[0] - p[0], dy = in->tow[1] - p[1], dz = in->tow[2] - p[2];
+/* One driven input group: its position and velocity inputs now and at the previous communication point, where
+ * the model has it now (the previous inputs extrapolated over their step), its names, and its flag. */
+typedef struct {
+    const double *position, *velocity, *previousPosition, *previousVelocity;
+    double at[3];
+    const char* name;          /* of the inputs: "tow", "end", "body[2]" ... */
+    const char* what;          /* what they move: "tow point", "far end", "reference point of body[2]" ... */
+    const char* inputs;        /* "tow.x/y/z", "end.x/y/z", "body[2].x/y/z" ... */
+    const char* accelerations; /* "tow.a*", "end.a*", "der(body[2].v*)" ... */
+} DrivenGroup;
+
+static int check_jump(UCInstance* inst, const DrivenGroup* g, int history, double h) {
+    const double dx = g->position[0] - g->at[0], dy = g->position[1] - g->at[1], dz = g->position[2] - g->at[2];
     const double distance = sqrt(dx * dx + dy * dy + dz * dz);
     if (!(distance > UC_TOW_MISMATCH_TOLERANCE)) return 0;
-    inst->towMismatchWarned = 1;
     /* Whether the positions agree with the velocities: the position change over the last step against the
      * velocities' trapezoid (the mean velocity of a motion whose acceleration changes little within a step). */
     char why[600] = "";
     if (history) {
-        const UCInputs* old = &inst->inputChecks.previous;
         const double s = inst->inputChecks.previousStep;
         double miss2 = 0.0, change2 = 0.0;
         for (int k = 0; k < 3; ++k) {
-            const double m = in->tow[k] - old->tow[k] - 0.5 * s * (in->towVelocity[k] + old->towVelocity[k]);
-            const double dv = in->towVelocity[k] - old->towVelocity[k];
+            const double m = g->position[k] - g->previousPosition[k] - 0.5 * s * (g->velocity[k] + g->previousVelocity[k]);
+            const double dv = g->velocity[k] - g->previousVelocity[k];
             miss2 += m * m;
             change2 += dv * dv;
         }
@@ -228,20 +233,66 @@ static int check_tow_jump(UCInstance* inst, int history, double h) {
             snprintf(why, sizeof why, "the positions agree with the velocity inputs (within %.3g m over the last "
                      "step), so the motion changes more within a %.6g s communication step than the extrapolation "
                      "follows: use a shorter communication step (a tenth of the motion's shortest period or less) or "
-                     "give the accelerations (tow.a*)", miss, s);
+                     "give the accelerations (%s)", miss, s, g->accelerations);
         }
     } else {
         snprintf(why, sizeof why, "either the communication step (%.6g s) is too long for the motion (use a tenth of "
                  "its shortest period or less) or the positions disagree with the integral of the velocity inputs", h);
     }
     uc_log_status(&inst->log, fmi2Warning,
-                  "fmi2DoStep at t = %.9g: the tow position input (%.6g, %.6g, %.6g) is %.3g m from where the tow point "
-                  "stands (%.6g, %.6g, %.6g), the previous inputs extrapolated over their step: the tow point jumps "
-                  "there within this step, a displacement that shows as a tension spike; %s (tolerance %g m; "
-                  "reported once per run)",
-                  inst->time, in->tow[0], in->tow[1], in->tow[2], distance, p[0], p[1], p[2], why,
-                  UC_TOW_MISMATCH_TOLERANCE);
+                  "fmi2DoStep at t = %.9g: the %s position input %s = (%.6g, %.6g, %.6g) is %.3g m from where the %s "
+                  "stands (%.6g, %.6g, %.6g), the previous inputs extrapolated over their step: the %s jumps there "
+                  "within this step, a displacement that shows as a tension spike; %s (tolerance %g m; reported once "
+                  "per run)",
+                  inst->time, g->name, g->inputs, g->position[0], g->position[1], g->position[2], distance, g->what,
+                  g->at[0], g->at[1], g->at[2], g->what, why, UC_TOW_MISMATCH_TOLERANCE);
     return 1;
+}
+
+/* Every driven position the model follows, each group reported once per run: the tow point, the far end of
+ * bottomEnd 3 (end.*), a mooring system's coupled bodies' reference points and coupled points. */
+static int check_jumps(UCInstance* inst, int history, double h) {
+    UCInputChecks* c = &inst->inputChecks;
+    const UCInputs *in = &inst->inputs, *old = &c->previous;
+    int warned = 0;
+    char name[40], what[64], inputs[48], accelerations[48];
+    double at[3];
+    DrivenGroup g;
+    if (!inst->coreParams.mooringSystem && !inst->towMismatchWarned) {
+        g = (DrivenGroup){in->tow, in->towVelocity, old->tow, old->towVelocity, {0}, "tow", "tow point",
+                          "tow.x/y/z", "tow.a*"};
+        uc_tow_position(inst->cable, g.at);
+        if (check_jump(inst, &g, history, h)) inst->towMismatchWarned = warned = 1;
+    }
+    if (!c->jumped[0] && uc_driven_position(inst->cable, UC_DRIVEN_END, 0, at)) {
+        g = (DrivenGroup){in->end, in->endVelocity, old->end, old->endVelocity, {at[0], at[1], at[2]},
+                          "end", "far end", "end.x/y/z", "end.a*"};
+        if (check_jump(inst, &g, history, h)) c->jumped[0] = warned = 1;
+    }
+    if (!inst->coreParams.mooringSystem) return warned;
+    for (int b = 0; b < UC_MAX_BODIES; ++b) {
+        if (c->jumped[1 + b] || !uc_driven_position(inst->cable, UC_DRIVEN_BODY, b + 1, at)) continue;
+        snprintf(name, sizeof name, "body[%d]", b + 1);
+        snprintf(what, sizeof what, "reference point of body[%d]", b + 1);
+        snprintf(inputs, sizeof inputs, "body[%d].x/y/z", b + 1);
+        snprintf(accelerations, sizeof accelerations, "der(body[%d].v*)", b + 1);
+        g = (DrivenGroup){in->coupledBody[b].position, in->coupledBody[b].velocity, old->coupledBody[b].position,
+                          old->coupledBody[b].velocity, {at[0], at[1], at[2]}, name, what, inputs,
+                          accelerations};
+        if (check_jump(inst, &g, history, h)) c->jumped[1 + b] = warned = 1;
+    }
+    for (int p = 0; p < UC_MAX_POINTS; ++p) {
+        if (c->jumped[1 + UC_MAX_BODIES + p] || !uc_driven_position(inst->cable, UC_DRIVEN_POINT, p + 1, at)) continue;
+        snprintf(name, sizeof name, "point[%d]", p + 1);
+        snprintf(what, sizeof what, "coupled point point[%d]", p + 1);
+        snprintf(inputs, sizeof inputs, "point[%d].x/y/z", p + 1);
+        snprintf(accelerations, sizeof accelerations, "der(point[%d].v*)", p + 1);
+        g = (DrivenGroup){in->coupledPoint[p].position, in->coupledPoint[p].velocity, old->coupledPoint[p].position,
+                          old->coupledPoint[p].velocity, {at[0], at[1], at[2]}, name, what, inputs,
+                          accelerations};
+        if (check_jump(inst, &g, history, h)) c->jumped[1 + UC_MAX_BODIES + p] = warned = 1;
+    }
+    return warned;
 }
 
 int uc_input_checks_before_step(UCInstance* inst, double h) {
@@ -250,7 +301,7 @@ int uc_input_checks_before_step(UCInstance* inst, double h) {
     Report bounds = {{0}, 0, 0}, accelerations = {{0}, 0, 0};
     check_bounds(inst, &bounds);
     if (history) check_accelerations(inst, &accelerations);
-    int warned = check_tow_jump(inst, history, h);
+    int warned = check_jumps(inst, history, h);
     if (bounds.parts > 0) {
         uc_log_status(&inst->log, fmi2Warning, "fmi2DoStep at t = %.9g: %s (reported once per variable)", inst->time,
                       bounds.text);

@@ -1,7 +1,8 @@
 /*
  * input_checks.h - what the adapter checks in the inputs at each communication point, before the step, with
  * warnings (never refusals: the inputs are the master's): accelerations that contradict the change of the
- * velocity inputs over the last step, a tow position far from where the previous inputs put the tow point
+ * velocity inputs over the last step, a driven position (the tow point, end.*, body[k].*, point[k].*) far from
+ * where the previous inputs put it
  * (a step too long for the motion, or positions that contradict the velocities), and inputs beyond a
  * physical bound. Each is reported once per variable per run (docs/interface.md, "How the FMU reads a driven
  * end"). The checks compare with the inputs of the previous communication point, which the adapter keeps; a
@@ -30,6 +31,7 @@ typedef struct UCInputChecks {
     double previousEnd;   /* the time it ended at: the comparison holds while the FMU is there (NaN: none) */
     unsigned char warned[UC_MAX_BODIES * 6 + UC_MAX_POINTS * 3 + 6]; /* acceleration disagreement reported */
     unsigned char bound[7 + 5 * UC_MAX_BODIES + 3 * UC_MAX_POINTS]; /* which groups were reported beyond a bound */
+    unsigned char jumped[1 + UC_MAX_BODIES + UC_MAX_POINTS]; /* a jump of end.*, body[k].*, point[k].* reported */
     int disagreements;    /* further disagreements after the first report of each variable */
     int implausible;      /* an input of the coming step is beyond its bound (the step's integrator budget) */
     char implausibleName[96]; /* ... which one, and its value */

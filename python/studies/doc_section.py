@@ -17,3 +17,11 @@ def write_section(doc: Path, section: str, name: str) -> None:
     else:
         text = text.rstrip() + "\n\n" + block + "\n"
     doc.write_text(text)
+
+
+def add_report_options(parser, name: str, fmu_default: str = "the build's") -> None:
+    """--fmu, --doc (the section `name` of a Markdown file) and --json of a script that writes a generated section."""
+    parser.add_argument("--fmu", type=Path, default=None, help=f"the FMU (default: {fmu_default})")
+    parser.add_argument("--doc", type=Path, help="write the section into this Markdown file (between "
+                        f"<!-- BEGIN {name} --> and <!-- END {name} -->)")
+    parser.add_argument("--json", type=Path, help="also write the numbers as JSON")

@@ -126,6 +126,14 @@ extern "C" void uc_tow_position(const UCCable* c, double p[3]) {
     for (int k = 0; k < 3; ++k) p[k] = x[k];
 }
 
+extern "C" int uc_driven_position(const UCCable* c, int kind, int index, double p[3]) {
+    if (!c || !p) return 0;
+    uc::Vec3 x;
+    if (!c->simulation->driven_position(kind, index, x)) return 0;
+    for (int k = 0; k < 3; ++k) p[k] = x[k];
+    return 1;
+}
+
 extern "C" double uc_time(const UCCable* c) {
     return c ? c->simulation->time() : 0.0;
 }

@@ -111,6 +111,12 @@ int uc_body_derivatives(UCCable* c, int body, double d[6 * UC_BODY_DERIVATIVE_IN
  * extrapolated), or the initial tow position. A position input far from it is a displacement. */
 void uc_tow_position(const UCCable* c, double p[3]);
 
+/* The same for the other driven inputs: kind UC_DRIVEN_END, the far end of bottomEnd 3 (end.*);
+ * UC_DRIVEN_BODY, coupled body `index`'s reference point (body[index].*, 1-based); UC_DRIVEN_POINT, coupled
+ * point `index` (point[index].*). Returns 1 with p set, or 0 (p untouched) where the model has no such input
+ * (another far end, a single line's body or point, a point no line reaches). */
+int uc_driven_position(const UCCable* c, int kind, int index, double p[3]);
+
 /* How far two acceleration inputs disagree with the velocity inputs between them [m/s2 or rad/s2]: a0 at the
  * previous communication point, a1 at this one, dv the change of the velocity input over the step h between
  * them. The mean acceleration dv / h of any acceleration that moves monotonically from a0 to a1 lies between

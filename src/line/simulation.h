@@ -75,6 +75,13 @@ public:
     double time() const override { return state_.time; }
     const UCOutputs& outputs() const override { return state_.outputs; }
     Vec3 tow_position() const override { return state_.tow.p(); }
+    // The far end of bottomEnd 3 (end.*): where the last step left it.
+    bool driven_position(int kind, int index, Vec3& p) const override {
+        (void)index;
+        if (kind != UC_DRIVEN_END || !model_.far_end().driven) return false;
+        p = state_.end.p();
+        return true;
+    }
 
     bool initialize(double t0, const UCInputs& in, std::string& error) override;
     // The FMU's step: unpacks in into the ends' motion and the environment and takes step below.
@@ -133,6 +140,8 @@ private:
     void set_environment(const LineEnvironment& env);
     // True where the guess is the line's static profile (near the equilibrium).
     bool initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const;
+    // A steady tow's line: its direction at the flow's critical angle (start.cpp).
+    bool steady_tow_direction(Vec3& d) const;
     // The far end is held at the start: anchored, external, or the proxy of an external body whose
     // statics hold it where the body is (bottomEnd 4, initMode 0).
     bool far_end_held_at_start() const;

@@ -26,6 +26,14 @@ public:
     virtual double time() const = 0;
     // Where the tow point (a system: line 1's fairlead) stands now (uc_tow_position).
     virtual Vec3 tow_position() const = 0;
+    // Where driven input `kind` (UC_DRIVEN_END, UC_DRIVEN_BODY, UC_DRIVEN_POINT; index 1-based for the last
+    // two) stands now, as the lines follow it (uc_driven_position); false where there is no such input.
+    virtual bool driven_position(int kind, int index, Vec3& p) const {
+        (void)kind;
+        (void)index;
+        (void)p;
+        return false;
+    }
     // The event of the last step worth a log line, or empty; cleared by the call.
     virtual std::string take_event() = 0;
 

@@ -116,6 +116,24 @@ void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, boo
     if (apply && held != ps.far) solve_for(held);
 }
 
+// The direction of a line towed steadily with its far end free: the straight line at the critical
+// angle of the flow past it (the water's velocity at the tow point less the tow's), where the normal
+// drag 0.5 rho Cdn d U^2 sin^2(phi) balances the weight's normal part w cos(phi) (docs/model.md,
+// "Initial equilibrium"): the exact steady shape of a uniform line with a free end, and near it with a
+// towed body or a seabed. False (d unchanged) where there is no flow or the line does not sink.
+bool CableSimulation::steady_tow_direction(Vec3& d) const {
+    const FluidProps& fluid = model_.section(0).fluid;
+    const double w = submerged_weight(fluid);
+    Vec3 flow = loads_.current.at(state_.tow.p().z(), nullptr) - state_.tow.v();
+    flow.z() = 0.0;  // a vertical tow velocity is no steady tow along the horizontal
+    const double U = flow.norm();
+    if (!(w > 0.0) || !(U > 1e-6)) return false;
+    const double a = 0.5 * fluid.rho * fluid.Cdn * fluid.diameter * U * U;
+    const double c = std::clamp((-w + std::sqrt(w * w + 4.0 * a * a)) / (2.0 * a), 0.0, 1.0);  // cos(phi)
+    d = flow / U * c + Vec3(0.0, 0.0, -std::sqrt(std::max(0.0, 1.0 - c * c)));
+    return true;
+}
+
 bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, std::vector<double>& q) const {
     const UCParams& p = model_.params();
     std::vector<double> X(model_.n_global());
@@ -140,13 +158,20 @@ bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
     if (p.enableSeabed && !far_end_held_at_start()) {
         // A free end that reaches the seabed: the straight line bends there and trails along it
         // behind the tow (a line clamped to the seabed instead piles its end into one point, from
-        // which the solver found folded equilibria).
-        const Vec3 d = vec(p.initialDirection).normalized();
-        Vec3 trail = -state_.tow.v();
+        // which the solver found folded equilibria). In a steady tow the line leaves the tow point
+        // at the flow's critical angle (steady_tow_direction): from the line along initialDirection
+        // (straight down by default) the solver swung the line back and settled, on some meshes,
+        // into equilibria with a fold or a loop on the seabed (300 m in 200 m of water at 1 kn, 20
+        // elements) or a second, wrong one (at 3 kn, 60 elements: 11 % above the tension of every
+        // other mesh).
+        Vec3 d = vec(p.initialDirection).normalized();
+        const bool steady = p.initMode == UC_INIT_EQUILIBRIUM && steady_tow_direction(d);
+        Vec3 trail = steady ? Vec3(d.x(), d.y(), 0.0) : Vec3(-state_.tow.v());
         trail.z() = 0.0;
         if (trail.norm() < 1e-9) trail = Vec3(d.x(), d.y(), 0.0);
         if (trail.norm() < 1e-9) trail = Vec3(-1.0, 0.0, 0.0);
         trail.normalize();
+        if (steady) model_.straight_line(towPoint, d, X.data());
         const double reach = d.z() < 0.0 ? (towPoint.z() + p.waterDepth) / -d.z() : INFINITY;
         for (int i = 0; i < model_.n_slots(); ++i) {
             const double s = model_.slot_arc_length(i);

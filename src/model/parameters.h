@@ -63,6 +63,13 @@
  * extrapolation of consistent inputs misses by millimetres (jerk h^3 / 6). */
 #define UC_TOW_MISMATCH_TOLERANCE 0.05
 
+/* The driven inputs whose positions uc_driven_position reports, and the adapter checks against them as it
+ * checks the tow point: the far end of bottomEnd 3 (end.*), a mooring system's coupled body (body[k].*, its
+ * reference point) and coupled point (point[k].*). */
+#define UC_DRIVEN_END 0
+#define UC_DRIVEN_BODY 1
+#define UC_DRIVEN_POINT 2
+
 /* UCInputs.towAccelerationGiven (endAccelerationGiven): 0 when the master gave no acceleration for the step;
  * otherwise bit 0, and UC_ACCELERATION_AS_INPUT(k) when component k is the input tow.a{k} (end.a{k}) set as a
  * value (fmi2SetReal) rather than an input derivative. Only such a component, held at 0 while its velocity

@@ -264,6 +264,26 @@ MooringSystem::Motion MooringSystem::end_motion(const MooringEnd& end, const UCI
     }
 }
 
+bool MooringSystem::driven_position(int kind, int index, Vec3& p) const {
+    if (kind == UC_DRIVEN_BODY) {
+        if (index < 1 || index > static_cast<int>(references_.size())) return false;
+        p = references_[index - 1].position;
+        return true;
+    }
+    if (kind != UC_DRIVEN_POINT) return false;
+    for (size_t k = 0; k < lines_.size(); ++k) {
+        const MooringDeckLine& l = deck_.lines[k];
+        if (l.fairlead.kind == MooringEnd::Kind::Point && l.fairlead.point == index) {
+            p = lines_[k]->tow_position();
+            return true;
+        }
+        if (l.far.kind == MooringEnd::Kind::Point && l.far.point == index &&
+            lines_[k]->driven_position(UC_DRIVEN_END, 0, p))
+            return true;
+    }
+    return false;
+}
+
 MooringSystem::LineEnds MooringSystem::line_ends(int k, const UCInputs& in) const {
     const MooringDeckLine& l = deck_.lines[k];
     // each end's acceleration from its body's or point's input derivatives where the master gives them,

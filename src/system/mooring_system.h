@@ -91,6 +91,9 @@ public:
     // The system's outputs: the single-line outputs are line 1's, line[k].* each deck line's.
     const UCOutputs& outputs() const override { return outputs_; }
     Vec3 tow_position() const override { return lines_[0]->tow_position(); }
+    // A coupled body's reference point (as its fairleads are extrapolated), a coupled point (the end of a
+    // line that it holds).
+    bool driven_position(int kind, int index, Vec3& p) const override;
     int n_lines() const { return static_cast<int>(lines_.size()); }
     const CableSimulation& line(int k) const { return *lines_[k]; }
 

@@ -225,12 +225,11 @@ def markdown(data: dict) -> str:
 def main(argv=None) -> int:  # pragma: no cover
     from ucable.paths import fmu_path
 
+    from ..doc_section import add_report_options
+
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--fmu", type=Path, default=None, help="the FMU (default: the build's)")
-    ap.add_argument("--doc", type=Path, help="write the section into this Markdown file (between "
-                    "<!-- BEGIN first_contact_decks --> and <!-- END first_contact_decks -->)")
-    ap.add_argument("--json", type=Path, help="also write the numbers as JSON")
+    add_report_options(ap, "first_contact_decks")
     ap.add_argument("--no-moordyn", action="store_true", help="MoorPy only (no MoorDyn statics, no heave)")
     ap.add_argument("--no-heave", action="store_true", help="no heave runs against MoorDyn")
     ap.add_argument("--decks", nargs="*", help="only these decks (file names or stems)")
