@@ -59,6 +59,8 @@
     X(2503, 4, 3, "body.pose.z") \
     X(2513, 4, 3, "body.pose.roll") \
     X(2514, 4, 3, "body.pose.pitch") \
-    X(2515, 4, 3, "body.pose.yaw")
+    X(2515, 4, 3, "body.pose.yaw") \
+    X(2525, 16, 1, "line.broken") \
+    X(2541, 16, 1, "line.breakTime")
 
 #endif

@@ -69,6 +69,8 @@ typedef struct UCMooringLine {
     double anchorTension; /* line[k].anchorTension [N]: line k: tension at its other end (the anchor) */
     double minTension; /* line[k].minTension [N]: line k: smallest tension along it */
     double groundedLength; /* line[k].groundedLength [m]: line k: unstretched length resting on the seabed */
+    double broken; /* line[k].broken: line k of a mooring system (the deck's order): 1 from the moment one of its ends detached in a failure (the deck's `FAILURE` rows, `failure.*`), 0 before ([docs/line_failure.md](docs/line_failure.md)) */
+    double breakTime; /* line[k].breakTime [s]: line k of a mooring system: the time at which one of its ends detached (0 while `line[k].broken` is 0) */
 } UCMooringLine;
 
 typedef struct UCBodyLoad {
@@ -162,6 +164,10 @@ typedef struct UCParams {
     double proxyFilterTime; /* proxy.filterTime [s]: `bottomEnd` 4: shortest time constant of the low-pass that estimates the external body's other forces (drag, lift, thrust, weight and buoyancy beyond the proxy's) from the tracking force; the estimate uses the larger of this and five communication steps */
     int seabedRest; /* seabedRest: where a line at rest lies on the penalty seabed: 1 (the default) at z = -`waterDepth`: the contact surface of each section and attachment is raised by its own rest penetration (its weight over the contact stiffness, plus half the smoothing band), so the static state agrees with a rigid seabed at every `seabedStiffness` and the stiffness acts on changes of load about the rest; 0 the contact surface at z = -`waterDepth`, a resting line sinking into it by its rest penetration, as MoorDyn's `kBot` ([docs/model.md](docs/model.md), seabed) */
     int bodyOrientation; /* bodyOrientation: a mooring system's coupled bodies: which inputs give their orientation: 0 `body[k].roll/pitch/yaw` with R = Rx(roll) Ry(pitch) Rz(yaw), MoorDyn's; 1 the unit quaternion `body[k].q0/q1/q2/q3`, scalar first; 2 `body[k].roll/pitch/yaw` with R = Rz(yaw) Ry(pitch) Rx(roll), OpenFAST's and MoorPy's ([docs/systems_mooring.md](docs/systems_mooring.md)) */
+    int failureLine; /* failure.line: a mooring system: the deck line (its ID) whose end detaches from `failure.point` when `failure.time` is reached or its tension there reaches `failure.tension`, whichever comes first; the end then goes on a new massless free point (a bare end); 0: no failure set by parameters (the deck's `FAILURE` rows still apply; [docs/line_failure.md](docs/line_failure.md)) */
+    int failurePoint; /* failure.point: a mooring system: the deck point (its ID) that `failure.line` detaches from: a point on a coupled body, a coupled point or a free point where three or more lines meet; 0: the line's fairlead */
+    double failureTime; /* failure.time [s]: a mooring system: the time at which `failure.line` detaches (0: not by time); the step that contains it ends there */
+    double failureTension; /* failure.tension [N]: a mooring system: the tension of `failure.line` at `failure.point` at which it detaches (0: not by tension); the step in which it is reached ends where it is, the tension there within the integrator's tolerance of it */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
 } UCParams;
@@ -503,6 +509,10 @@ typedef struct UCOutputs {
     X(258, "proxy.filterTime", REAL, PARAMETER, proxyFilterTime) \
     X(259, "seabedRest", INTEGER, PARAMETER, seabedRest) \
     X(260, "bodyOrientation", INTEGER, PARAMETER, bodyOrientation) \
+    X(261, "failure.line", INTEGER, PARAMETER, failureLine) \
+    X(262, "failure.point", INTEGER, PARAMETER, failurePoint) \
+    X(263, "failure.time", REAL, PARAMETER, failureTime) \
+    X(264, "failure.tension", REAL, PARAMETER, failureTension) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -1230,6 +1240,38 @@ typedef struct UCOutputs {
     X(2522, "body[4].pose.roll", REAL, OUTPUT, bodyLoad[3].poseAngles[0]) \
     X(2523, "body[4].pose.pitch", REAL, OUTPUT, bodyLoad[3].poseAngles[1]) \
     X(2524, "body[4].pose.yaw", REAL, OUTPUT, bodyLoad[3].poseAngles[2]) \
+    X(2525, "line[1].broken", REAL, OUTPUT, mooringLine[0].broken) \
+    X(2526, "line[2].broken", REAL, OUTPUT, mooringLine[1].broken) \
+    X(2527, "line[3].broken", REAL, OUTPUT, mooringLine[2].broken) \
+    X(2528, "line[4].broken", REAL, OUTPUT, mooringLine[3].broken) \
+    X(2529, "line[5].broken", REAL, OUTPUT, mooringLine[4].broken) \
+    X(2530, "line[6].broken", REAL, OUTPUT, mooringLine[5].broken) \
+    X(2531, "line[7].broken", REAL, OUTPUT, mooringLine[6].broken) \
+    X(2532, "line[8].broken", REAL, OUTPUT, mooringLine[7].broken) \
+    X(2533, "line[9].broken", REAL, OUTPUT, mooringLine[8].broken) \
+    X(2534, "line[10].broken", REAL, OUTPUT, mooringLine[9].broken) \
+    X(2535, "line[11].broken", REAL, OUTPUT, mooringLine[10].broken) \
+    X(2536, "line[12].broken", REAL, OUTPUT, mooringLine[11].broken) \
+    X(2537, "line[13].broken", REAL, OUTPUT, mooringLine[12].broken) \
+    X(2538, "line[14].broken", REAL, OUTPUT, mooringLine[13].broken) \
+    X(2539, "line[15].broken", REAL, OUTPUT, mooringLine[14].broken) \
+    X(2540, "line[16].broken", REAL, OUTPUT, mooringLine[15].broken) \
+    X(2541, "line[1].breakTime", REAL, OUTPUT, mooringLine[0].breakTime) \
+    X(2542, "line[2].breakTime", REAL, OUTPUT, mooringLine[1].breakTime) \
+    X(2543, "line[3].breakTime", REAL, OUTPUT, mooringLine[2].breakTime) \
+    X(2544, "line[4].breakTime", REAL, OUTPUT, mooringLine[3].breakTime) \
+    X(2545, "line[5].breakTime", REAL, OUTPUT, mooringLine[4].breakTime) \
+    X(2546, "line[6].breakTime", REAL, OUTPUT, mooringLine[5].breakTime) \
+    X(2547, "line[7].breakTime", REAL, OUTPUT, mooringLine[6].breakTime) \
+    X(2548, "line[8].breakTime", REAL, OUTPUT, mooringLine[7].breakTime) \
+    X(2549, "line[9].breakTime", REAL, OUTPUT, mooringLine[8].breakTime) \
+    X(2550, "line[10].breakTime", REAL, OUTPUT, mooringLine[9].breakTime) \
+    X(2551, "line[11].breakTime", REAL, OUTPUT, mooringLine[10].breakTime) \
+    X(2552, "line[12].breakTime", REAL, OUTPUT, mooringLine[11].breakTime) \
+    X(2553, "line[13].breakTime", REAL, OUTPUT, mooringLine[12].breakTime) \
+    X(2554, "line[14].breakTime", REAL, OUTPUT, mooringLine[13].breakTime) \
+    X(2555, "line[15].breakTime", REAL, OUTPUT, mooringLine[14].breakTime) \
+    X(2556, "line[16].breakTime", REAL, OUTPUT, mooringLine[15].breakTime) \
 
 /* X(member, value): the start value of every numeric parameter (Strings start empty: zero-filled) */
 #define UC_SCHEMA_PARAMETER_DEFAULTS(X) \
@@ -1492,6 +1534,10 @@ typedef struct UCOutputs {
     X(proxyFilterTime, 1.0) \
     X(seabedRest, 1) \
     X(bodyOrientation, 0) \
+    X(failureLine, 0) \
+    X(failurePoint, 0) \
+    X(failureTime, 0.0) \
+    X(failureTension, 0.0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -1755,6 +1801,10 @@ typedef struct UCOutputs {
     X(proxyFilterTime, "proxy.filterTime", 0.0, 10000.0, 1, 0, "(0, 10000]", "the estimate's low-pass needs a positive time constant") \
     X(seabedRest, "seabedRest", 0.0, 1.0, 0, 0, "{0 sinking by the rest penetration as in MoorDyn, 1 resting at the seabed's depth}", "unknown seabed rest level") \
     X(bodyOrientation, "bodyOrientation", 0.0, 2.0, 0, 0, "{0 angles R = Rx Ry Rz, 1 quaternion, 2 angles R = Rz Ry Rx}", "unknown orientation input of the coupled bodies") \
+    X(failureLine, "failure.line", 0.0, 16.0, 0, 0, "[0, 16]", "a mooring system holds at most 16 lines") \
+    X(failurePoint, "failure.point", 0.0, 10000.0, 0, 0, "[0, 10000]", "a deck point's ID") \
+    X(failureTime, "failure.time", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "a time of the simulation") \
+    X(failureTension, "failure.tension", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \
