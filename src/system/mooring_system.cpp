@@ -519,9 +519,9 @@ bool MooringSystem::step_with_failures(double t, double h, const UCInputs& in, s
             if (failureState_[f].broken != 0.0) continue;
             const MooringFailure& fail = failures_[f];
             const int i = static_cast<int>(f);
-            if ((fail.time > 0.0 && fail.time <= t + done + eps) ||
-                (fail.tension > 0.0 && failure_tension(i) >= fail.tension - failure_tolerance(i)))
-                break_failure(i, t + done);
+            const bool byTime = fail.time > 0.0 && fail.time <= t + done + eps;
+            if (byTime || (fail.tension > 0.0 && failure_tension(i) >= fail.tension - failure_tolerance(i)))
+                break_failure(i, byTime && fail.time >= t + done - eps ? fail.time : t + done);  // its time exactly
         }
         if (done >= h) return true;
         if (!failures_pending()) return advance(t + done, h - done, done > 0.0 ? done : -1.0, in, error);
