@@ -195,6 +195,16 @@ TEST(LineFailure, ALineBreaksAtItsTimeAndThePlatformDriftsAway) {
     EXPECT_LT(std::abs(-0.866 * x + 0.5 * y), 0.05 * away) << "along the broken line's direction";
     EXPECT_EQ(s.failure_state(0).broken, 1.0);
     EXPECT_EQ(s.failure_state(0).time, 2.3);
+    // the platform's stiffness and interface derivatives, from the two lines left on it
+    double K[36];
+    std::string why;
+    ASSERT_TRUE(s.body_stiffness(1, platform_at(x, y, vx, vy), K, &why)) << why;
+    for (double k : K) EXPECT_TRUE(std::isfinite(k));
+    EXPECT_GT(K[0], 0.0);
+    double d[6][UC_BODY_DERIVATIVE_INPUTS];
+    ASSERT_TRUE(s.body_derivatives(1, d, error)) << error;
+    for (const auto& row : d)
+        for (double v : row) EXPECT_TRUE(std::isfinite(v));
 }
 
 namespace {
