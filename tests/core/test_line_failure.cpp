@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "api/cable_api.h"
+#include "chain_system_parameters.h"
 #include "deck/line_file.h"
 #include "system/mooring_system.h"
 
@@ -35,12 +36,7 @@ const std::string kRow = "line " + std::to_string(std::count(kDeck.begin(), kDec
 std::string spread(const std::string& failureRows) { return kDeck + kFailureHeader + failureRows + "---- end ----\n"; }
 
 UCParams system_parameters() {
-    UCParams p;
-    uc_params_default(&p);
-    p.enableSeabed = 1;
-    p.seabedStiffness = 3e6 * 0.0766;
-    p.seabedDamping = 3e5 * 0.0766;
-    p.enableCompression = 0;
+    UCParams p = chain_system_parameters();
     p.lineFileElements = 10;
     return p;
 }
