@@ -92,3 +92,14 @@ def test_a_scene_failure_table_sets_the_failure_parameters_and_is_checked():
                       ({"line": 1, "time": -1.0}, "must not be negative"), ({"line": 1, "time": 1, "end": 2}, "end")]:
         with pytest.raises(SceneFileError, match=says.replace("[", r"\[").replace("]", r"\]")):
             Scene.from_data({**base, "failure": bad}, "s")
+
+
+def test_a_scene_with_a_failure_records_when_its_line_broke(fmu_file):
+    from ucable.scene import run_scene
+
+    scene = {"duration": 2.0, "step": 0.5, "record_shape": False, "body": {"start": [0] * 6},
+             "parameters": {**_parameters(), "lineFile": str(ms.OC4)}, "failure": {"line": 3, "time": 1.2}}
+    result = run_scene(scene, fmu=fmu_file)
+    assert list(result["line[3].broken"]) == [0.0, 0.0, 0.0, 1.0, 1.0]
+    assert result["line[3].breakTime"][-1] == 1.2
+    assert result["line[1].broken"][-1] == 0.0 and "line[4].broken" not in result.columns
