@@ -63,6 +63,8 @@
     X(2525, 16, 1, "line.MBL") \
     X(2541, 16, 1, "line.fairleadUtilisation") \
     X(2557, 16, 1, "line.anchorUtilisation") \
-    X(2573, 16, 1, "line.maxUtilisation")
+    X(2573, 16, 1, "line.maxUtilisation") \
+    X(2589, 16, 1, "line.broken") \
+    X(2605, 16, 1, "line.breakTime")
 
 #endif

@@ -27,6 +27,11 @@ A scene file holds (docs/scenes.md lists every key with its type, unit and defau
     pitch = { amplitude = 3.0, period = 25.0 }   # roll, pitch, yaw in deg) as the tow's; with the parameter
                               # bodyOrientation = 1 the angles go to the FMU as their quaternion (R = Rx Ry Rz)
 
+    [failure]                 # optional: a line of a mooring system breaks (docs/line_failure.md): the deck
+    line = 1                  # line (ID), the deck point it detaches from (point = 0 or left out: its
+    time = 120.0              # fairlead), at a time [s] and/or a tension [N]; sets failure.line/point/time/
+                              # tension, and records line[k].broken and line[k].breakTime
+
     [winch]                   # optional: the winch's command in stages (sets winchMode 1 or 2)
     ramp = 10.0               # [s] from one stage's value to the next; a rate starts from rest
     stages = [ { rate = 0.5, duration = 600.0 }, { rate = 0.0, duration = 300.0 } ]
@@ -78,6 +83,7 @@ BROKEN = tuple(q for q in ("broken", "breakTime") if f"line[1].{q}" in VARIABLES
 LINES_RECORDED = [f"line[{k}].{q}" for k in range(1, MAX_LINES + 1)
                   for q in ("fairleadTension", "anchorTension", "groundedLength") + STRENGTH + BROKEN]
 LINE_STRENGTH_RECORDED = [f"line[1].{q}" for q in STRENGTH]  # a single line's (kept when it has an MBL)
+FAILURE_RECORDED = [f"line[{k}].{q}" for k in range(1, MAX_LINES + 1) for q in ("broken", "breakTime")]
 BODY_POSE = [f"body[1].{n}" for n in ("x", "y", "z", "roll", "pitch", "yaw")]  # the scene's motion of body 1
 SCENE_SETTINGS = ("duration", "step")
 TOW_SETTINGS = {"speed_kn": "speed_kn", "heading": "heading_deg", "heading_deg": "heading_deg"}  # NAME -> [tow] key
@@ -470,6 +476,8 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
         extra = extra + BODY_RECORDED + LINES_RECORDED
     else:
         extra = extra + LINE_STRENGTH_RECORDED
+    if s.parameters.get("failure.line"):
+        extra = extra + FAILURE_RECORDED
     recorded = list(dict.fromkeys(RECORDED + extra + s.outputs + (SHAPE + STATIONS if s.record_shape else [])))
     data = np.zeros((n + 1, len(recorded)))
     tow = np.zeros((n + 1, 3))

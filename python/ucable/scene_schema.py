@@ -19,7 +19,9 @@ import math
 from .variables import VARIABLES
 
 TOP_KEYS = ("title", "duration", "step", "outputs", "record_shape", "parameters", "inputs", "tow", "winch", "body",
-            "name")
+            "failure", "name")
+# [failure]: a line failure of a mooring system (docs/line_failure.md), mapped onto the failure.* parameters
+FAILURE_KEYS = ("line", "point", "time", "tension")
 TOW_KEYS = ("start", "speed_kn", "heading_deg", "surge", "heave")
 SURGE_KEYS = ("amplitude", "period", "direction", "ramp")
 HEAVE_KEYS = ("amplitude", "period", "ramp")
@@ -222,6 +224,10 @@ def validate(data: dict, source: str) -> dict:
             c.fail(where, "given by [winch] stages as well: use one of them")
         out["inputs"][name] = c.signal(value, where)
 
+    failure = c.table(data.get("failure", {}), "[failure]")
+    if failure:
+        out["parameters"].update(check_failure(c, failure, out["parameters"]))
+
     tow = c.table(data.get("tow", {}), "[tow]")
     out["tow"] = check_tow(c, tow)
     body = c.table(data.get("body", {}), "[body]")
@@ -253,6 +259,26 @@ def check_dotted_keys(c: Checker, table: dict, where: str) -> None:
             if name in VARIABLES:
                 c.fail(f"{where} {name}", f"an unquoted dotted key makes a TOML table: quote the name, "
                                           f"\"{name}\" = {_show(leaf)}")
+
+
+def check_failure(c: Checker, failure: dict, parameters: dict) -> dict:
+    """[failure]: the deck line (its ID) whose end detaches, the deck point it detaches from (0 or left out: its
+    fairlead), the time [s] and/or the tension [N] at which it does; the failure.* parameters they set."""
+    c.keys(failure, FAILURE_KEYS, "[failure]", required=("line",))
+    for name in ("failure.line", "failure.point", "failure.time", "failure.tension"):
+        if name in parameters:
+            c.fail(f"[parameters] {name}", "given by [failure] as well: use one of them")
+    line, point = failure["line"], failure.get("point", 0)
+    for key, value in (("line", line), ("point", point)):
+        if isinstance(value, bool) or not isinstance(value, int) or value < (1 if key == "line" else 0):
+            what = "a deck line ID (1, 2, ...)" if key == "line" else "a deck point ID (0: the line's fairlead)"
+            c.fail(f"[failure] {key}", f"expected {what}, got {_show(value)}")
+    time = c.number(failure.get("time", 0.0), "[failure] time", nonnegative=True)
+    tension = c.number(failure.get("tension", 0.0), "[failure] tension", nonnegative=True)
+    if time == 0.0 and tension == 0.0:
+        c.fail("[failure]", "give a time [s], a tension [N] or both (the first reached breaks the line)")
+    values = {"line": line, "point": point, "time": time, "tension": tension}
+    return {f"failure.{key}": c.parameter(f"failure.{key}", value, f"[failure] {key}") for key, value in values.items()}
 
 
 def check_body(c: Checker, body: dict) -> dict:

@@ -146,6 +146,7 @@ struct MooringDeckLine {
     std::vector<int> deckLines;              // the deck's line (0-based) of each section
     std::vector<bool> flipped;               // per section: the deck line's fairlead is at its far end
     MooringEnd fairlead, far;                // the line runs from its fairlead (s = 0) to its far end
+    int fairleadPoint = 0, farPoint = 0;     // the deck points (IDs) of its ends (farPoint 0: a free far end)
     bool farFree = false;                    // the far end is a Free point: farBody (a towed body), or none
     LineFilePoint farBody;
 };
@@ -156,6 +157,7 @@ struct MooringNode {
     LineFilePoint point;                 // mass, volume, added mass, drag area (a body: its ID, mass, volume)
     double position[3] = {0.0, 0.0, 0.0};  // in the deck: the first guess (a body: its reference point)
     bool body = false;                   // a Free body: six unknowns, its points in its frame
+    int failure = 0;                     // > 0: the massless free point failure `failure` (its ID) made
     double angles[3] = {0.0, 0.0, 0.0};  // a body's roll, pitch, yaw in the deck [rad] (R = Rx Ry Rz)
     double cg[3] = {0.0, 0.0, 0.0};      // a body's centre of gravity in its frame (its weight and buoyancy act there)
     double inertia[3] = {0.0, 0.0, 0.0}; // a body's moments of inertia about its centre of gravity, body axes [kg m2]
@@ -163,8 +165,24 @@ struct MooringNode {
     double Ca[3] = {0.0, 0.0, 0.0};      // a body's added-mass coefficients of translation in its axes (of rho V)
 };
 
+// A line failure (docs/line_failure.md): the ends of lines held at a deck point detach from it, at a time
+// or when the tension of one of them there reaches a threshold, and go on a new massless free point.
+struct MooringFailure {
+    struct End {
+        int line = 0;      // the system's line (0-based index into MooringDeck::lines)
+        int end = 0;       // 0: its fairlead, 1: its far end
+        int deckLine = 0;  // the deck's line (0-based)
+    };
+    int id = 0, row = 0;  // the FAILURE row's ID and line of the file (row 0: set by the failure.* parameters)
+    int point = 0;        // the deck point (ID) the ends detach from
+    std::vector<End> ends;
+    double time = 0.0;     // [s] (0: not by time)
+    double tension = 0.0;  // [N] (0: not by tension)
+};
+
 struct MooringDeck {
     std::vector<MooringDeckLine> lines;  // in the order of their first deck line
+    std::vector<MooringFailure> failures;  // the FAILURE rows, in their order
     std::vector<MooringNode> nodes;      // the free nodes, in the deck's order of points
     int deckLines = 0;                   // lines of the deck (line[k].* outputs: k in the deck's order)
     int bodies = 0;                      // coupled bodies 1 .. bodies are driven by the body[k].* inputs
@@ -188,6 +206,12 @@ bool is_mooring_system_deck(std::string_view text);
 // N > 0: N per line). False with error = "line <n>: <what>" when the deck is outside what a system holds.
 bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& deck, std::string& error,
                        const LineFileCompanions& companions = {});
+
+// The failure of deck lines (0-based) at deck point `point` (its ID; 0: the fairlead of the first line) into
+// f.ends: each line's end held there, on a coupled body, a coupled point or a free node. False (error naming
+// the line and the point) where a line's end there is an anchor, a joint between two deck lines or a free end.
+bool resolve_failure(const MooringDeck& deck, int point, const std::vector<int>& deckLines, MooringFailure& f,
+                     std::string& error);
 
 // The parameters of line k (0-based) of the system: base with the line's properties, environment and
 // far end (anchored at its Fixed point; driven, bottomEnd 3, where it ends on a coupled object).

@@ -8,8 +8,6 @@
 namespace uc {
 namespace deck {
 
-namespace {
-
 // AttachA/AttachB: a point ID ("3", "P3", "Point3", "C3", "Con3"); rod ends ("R1A") are not supported.
 bool read_attachment(Fields& f, std::string_view word, const char* column, int nPoints, int& index) {
     const std::string u = upper(word);
@@ -32,8 +30,6 @@ bool read_attachment(Fields& f, std::string_view word, const char* column, int n
     index = id - 1;
     return true;
 }
-
-}  // namespace
 
 bool read_line(const Row& row, int expectedId, const std::vector<LineType>& types, int nPoints, Line& l,
                std::string& error) {

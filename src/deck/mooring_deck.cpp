@@ -189,6 +189,7 @@ bool walk_line(const Roles& roles, size_t first, int start, int pass, int elemen
     const Line& l0 = deck.lines[first];
     line.id = l0.id;
     line.row = l0.row;
+    line.fairleadPoint = deck.points[start].id;
     if (pass == 1 && roles.nodeOf[start] >= 0) {
         roles.node_end(start, line.fairlead);
     } else if (!mooring_end(deck.points[start], roles.bodies, roles.bodyNode, bodiesSection, line.fairlead, error)) {
@@ -209,6 +210,7 @@ bool walk_line(const Roles& roles, size_t first, int start, int pass, int elemen
         const int fairlead = roles.coupled(l.end[1]) ? l.end[1] : roles.coupled(l.end[0]) ? l.end[0] : from;
         line.flipped.push_back(fairlead == point);
         const Point& p = deck.points[point];
+        if (p.kind != PointKind::Free || p.lines.size() > 2) line.farPoint = p.id;
         if (p.kind != PointKind::Free) {
             if (!mooring_end(p, roles.bodies, roles.bodyNode, bodiesSection, line.far, error)) return false;
             break;
@@ -308,6 +310,18 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
     }
     if (!check_reached(deck, used, out, error)) return false;
     out.deckLines = static_cast<int>(deck.lines.size());
+    for (const Failure& row : deck.failures) {
+        MooringFailure f;
+        f.id = row.id;
+        f.row = row.row;
+        f.time = row.time;
+        f.tension = row.tension;
+        if (!resolve_failure(out, deck.points[row.point].id, row.lines, f, error)) {
+            error = at_line(row.row, "failure " + std::to_string(row.id) + ": " + error);
+            return false;
+        }
+        out.failures.push_back(f);
+    }
     out.nodesFromDeck = deck.noInitialConditions;
     out.waterDepth = deck.waterDepth;
     out.gravity = deck.gravity;
@@ -317,6 +331,60 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
     out.waterDensityRow = deck.waterDensityRow;
     out.seabed = deck.seabed;
     out.sea = deck.sea;
+    return true;
+}
+
+bool resolve_failure(const MooringDeck& deck, int point, const std::vector<int>& deckLines, MooringFailure& f,
+                     std::string& error) {
+    f.ends.clear();
+    for (int d : deckLines) {
+        int k = -1, j = -1;
+        for (size_t i = 0; i < deck.lines.size() && k < 0; ++i) {
+            const auto& list = deck.lines[i].deckLines;
+            const auto at = std::find(list.begin(), list.end(), d);
+            if (at != list.end()) {
+                k = static_cast<int>(i);
+                j = static_cast<int>(at - list.begin());
+            }
+        }
+        if (k < 0) {
+            error = "there is no line " + std::to_string(d + 1) + " in the deck";
+            return false;
+        }
+        const MooringDeckLine& l = deck.lines[k];
+        const int p = point > 0 ? point : l.fairleadPoint;
+        const std::string which = "line " + std::to_string(d + 1) + " at point " + std::to_string(p);
+        MooringFailure::End e{k, -1, d};
+        if (j == 0 && l.fairleadPoint == p) e.end = 0;
+        else if (j + 1 == static_cast<int>(l.deckLines.size()) && l.farPoint == p) e.end = 1;
+        if (e.end < 0) {
+            error = which + ": the point joins two lines inside a chain of the system (a Free point between two "
+                    "lines) or is not on the line; a failure there is not supported (docs/line_failure.md)";
+            return false;
+        }
+        const MooringEnd& end = e.end == 0 ? l.fairlead : l.far;
+        if (end.kind == MooringEnd::Kind::Fixed) {
+            error = which + ": the point is fixed (an anchor, or a Fixed body's point); a failure at a fixed point is "
+                    "not supported (docs/line_failure.md): give the failure at the line's other end";
+            return false;
+        }
+        for (const MooringFailure& other : deck.failures) {
+            for (const MooringFailure::End& o : other.ends) {
+                if (o.line == e.line && o.end == e.end) {
+                    error = which + ": that end already detaches in failure " + std::to_string(other.id);
+                    return false;
+                }
+            }
+        }
+        for (const MooringFailure::End& o : f.ends) {
+            if (o.line == e.line && o.end == e.end) {
+                error = which + ": listed twice";
+                return false;
+            }
+        }
+        f.ends.push_back(e);
+        f.point = p;
+    }
     return true;
 }
 
@@ -341,6 +409,10 @@ bool mooring_line_params(const MooringDeck& deck, int k, const UCParams& base, U
     if (!apply_line_file(line, p, error)) return false;
     if (!l.farFree && l.far.kind != MooringEnd::Kind::Fixed) p.bottomEnd = UC_BOTTOM_EXTERNAL;
     p.mooringSystem = 0;  // each line is one line
+    p.failureLine = 0;    // (the system's failures: MooringSystem)
+    p.failurePoint = 0;
+    p.failureTime = 0.0;
+    p.failureTension = 0.0;
     return true;
 }
 

@@ -12,7 +12,7 @@ bool parse_deck(std::string_view text, bool system, const LineFileCompanions& co
     auto section = [&](Kind kind) -> const std::optional<Section>& { return sections[static_cast<size_t>(kind)]; };
 
     for (Kind kind : {Kind::Bodies, Kind::Rods, Kind::Failure, Kind::Control, Kind::ExternalLoads, Kind::SyropeIC}) {
-        if (system && kind == Kind::Bodies) continue;
+        if (system && (kind == Kind::Bodies || kind == Kind::Failure)) continue;
         if (section(kind) && !section(kind)->rows.empty()) {
             error = at_line(section(kind)->rows[0].number, std::string(unsupported(kind)) + " (" + title(kind) +
                                                                 " section)");
@@ -80,6 +80,14 @@ bool parse_deck(std::string_view text, bool system, const LineFileCompanions& co
         }
         for (int e : l.end) points[e].lines.push_back(static_cast<int>(lines.size()));
         lines.push_back(l);
+    }
+
+    if (section(Kind::Failure)) {
+        for (const Row& row : section(Kind::Failure)->rows) {
+            Failure f;
+            if (!read_failure(row, static_cast<int>(deck.failures.size()) + 1, points, lines, f, error)) return false;
+            deck.failures.push_back(f);
+        }
     }
 
     deck.gravity = options.gravity;

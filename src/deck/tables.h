@@ -88,12 +88,32 @@ struct Line {
     int row = 0;
 };
 
+// A point ID as AttachA/AttachB (and FAILURE's Point) spell it ("3", "P3", "Point3", "C3", "Con3") into its
+// index among the nPoints points; rod ends ("R1A") refused.
+bool read_attachment(Fields& f, std::string_view word, const char* column, int nPoints, int& index);
+
 // A LINES row: its line type among `types`, its ends among the nPoints points.
 bool read_line(const Row& row, int expectedId, const std::vector<LineType>& types, int nPoints, Line& l,
                std::string& error);
 
 // One MoorDyn line as a section of ours, in our conventions.
 LineFileSection section_of(const Line& l, const LineType& t);
+
+// ------------------------------------------------------------------------------------------- failures (deck/failures.cpp)
+// A FAILURE row as MoorDyn-F writes it: ID Point Line(s) FailTime FailTen (docs/line_failure.md).
+struct Failure {
+    int id = 0;
+    int point = 0;            // index of the point the lines detach from
+    std::vector<int> lines;   // indices of the lines that detach there
+    double time = 0.0;        // FailTime [s] (0: not by time)
+    double tension = 0.0;     // FailTen [N] (0: not by tension)
+    int row = 0;
+};
+
+// A FAILURE row: its point among the deck's points, its lines (comma-separated IDs) among nLines, each
+// attached to the point, FailTime and FailTen not negative and not both 0.
+bool read_failure(const Row& row, int expectedId, const std::vector<Point>& points, const std::vector<Line>& lines,
+                  Failure& f, std::string& error);
 
 // ------------------------------------------------------------------------------------------- bodies (deck/bodies.cpp)
 enum class BodyKind { Coupled, Fixed, Free };
@@ -121,6 +141,7 @@ struct Deck {
     std::vector<Point> points;
     std::vector<Line> lines;
     std::vector<Row> bodies;  // the BODIES rows (system only)
+    std::vector<Failure> failures;  // the FAILURE rows (system only)
     int bodiesHeader = 0;
     double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
     int waterDepthRow = 0, gravityRow = 0, waterDensityRow = 0;

@@ -144,7 +144,7 @@ const char* unsupported(Kind kind) {
     switch (kind) {
         case Kind::Bodies: return "bodies are not supported";
         case Kind::Rods: return "rods are not supported";
-        case Kind::Failure: return "line failures are not supported";
+        case Kind::Failure: return "line failures are supported in a mooring system's deck only, not on one line (docs/line_failure.md)";
         case Kind::Control: return "line length control is not supported";
         case Kind::ExternalLoads: return "external loads on points, rods and bodies are not supported";
         case Kind::SyropeIC: return "the Syrope model is not supported";

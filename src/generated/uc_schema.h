@@ -74,6 +74,8 @@ typedef struct UCMooringLine {
     double fairleadUtilisation; /* line[k].fairleadUtilisation: line k: tension at its fairlead over the MBL of the section there (0 without an MBL) */
     double anchorUtilisation; /* line[k].anchorUtilisation: line k: tension at its other end (the anchor) over the MBL of the section there (0 without an MBL) */
     double maxUtilisation; /* line[k].maxUtilisation: line k: largest tension over MBL along it (every element's ends, each over its section's MBL), at the communication point (0 without an MBL) */
+    double broken; /* line[k].broken: line k of a mooring system (the deck's order): 1 from the moment one of its ends detached in a failure (the deck's `FAILURE` rows, `failure.*`), 0 before ([docs/line_failure.md](docs/line_failure.md)) */
+    double breakTime; /* line[k].breakTime [s]: line k of a mooring system: the time at which one of its ends detached (0 while `line[k].broken` is 0) */
 } UCMooringLine;
 
 typedef struct UCBodyLoad {
@@ -168,6 +170,10 @@ typedef struct UCParams {
     int seabedRest; /* seabedRest: where a line at rest lies on the penalty seabed: 1 (the default) at z = -`waterDepth`: the contact surface of each section and attachment is raised by its own rest penetration (its weight over the contact stiffness, plus half the smoothing band), so the static state agrees with a rigid seabed at every `seabedStiffness` and the stiffness acts on changes of load about the rest; 0 the contact surface at z = -`waterDepth`, a resting line sinking into it by its rest penetration, as MoorDyn's `kBot` ([docs/model.md](docs/model.md), seabed) */
     int bodyOrientation; /* bodyOrientation: a mooring system's coupled bodies: which inputs give their orientation: 0 `body[k].roll/pitch/yaw` with R = Rx(roll) Ry(pitch) Rz(yaw), MoorDyn's; 1 the unit quaternion `body[k].q0/q1/q2/q3`, scalar first; 2 `body[k].roll/pitch/yaw` with R = Rz(yaw) Ry(pitch) Rx(roll), OpenFAST's and MoorPy's ([docs/systems_mooring.md](docs/systems_mooring.md)) */
     double MBL; /* MBL [N]: minimum breaking load (MBL) of the line (`nSections` = 1) and of the sections whose `section[k].MBL` is 0; 0: not given, the `line[k].*Utilisation` outputs are 0. A `lineFile` deck's line type gives its own: its MBL column, else MoorPy's formula for a type named chain, studlink, wire, polyester or nylon ([docs/design_checks.md](docs/design_checks.md)) */
+    int failureLine; /* failure.line: a mooring system: the deck line (its ID) whose end detaches from `failure.point` when `failure.time` is reached or its tension there reaches `failure.tension`, whichever comes first; the end then goes on a new massless free point (a bare end); 0: no failure set by parameters (the deck's `FAILURE` rows still apply; [docs/line_failure.md](docs/line_failure.md)) */
+    int failurePoint; /* failure.point: a mooring system: the deck point (its ID) that `failure.line` detaches from: a point on a coupled body, a coupled point or a free point where three or more lines meet; 0: the line's fairlead */
+    double failureTime; /* failure.time [s]: a mooring system: the time at which `failure.line` detaches (0: not by time); the step that contains it ends there */
+    double failureTension; /* failure.tension [N]: a mooring system: the tension of `failure.line` at `failure.point` at which it detaches (0: not by tension); the step in which it is reached ends where it is, the tension there within the integrator's tolerance of it */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
 } UCParams;
@@ -518,6 +524,10 @@ typedef struct UCOutputs {
     X(267, "section[6].MBL", REAL, PARAMETER, section[5].MBL) \
     X(268, "section[7].MBL", REAL, PARAMETER, section[6].MBL) \
     X(269, "section[8].MBL", REAL, PARAMETER, section[7].MBL) \
+    X(270, "failure.line", INTEGER, PARAMETER, failureLine) \
+    X(271, "failure.point", INTEGER, PARAMETER, failurePoint) \
+    X(272, "failure.time", REAL, PARAMETER, failureTime) \
+    X(273, "failure.tension", REAL, PARAMETER, failureTension) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -1309,6 +1319,38 @@ typedef struct UCOutputs {
     X(2586, "line[14].maxUtilisation", REAL, OUTPUT, mooringLine[13].maxUtilisation) \
     X(2587, "line[15].maxUtilisation", REAL, OUTPUT, mooringLine[14].maxUtilisation) \
     X(2588, "line[16].maxUtilisation", REAL, OUTPUT, mooringLine[15].maxUtilisation) \
+    X(2589, "line[1].broken", REAL, OUTPUT, mooringLine[0].broken) \
+    X(2590, "line[2].broken", REAL, OUTPUT, mooringLine[1].broken) \
+    X(2591, "line[3].broken", REAL, OUTPUT, mooringLine[2].broken) \
+    X(2592, "line[4].broken", REAL, OUTPUT, mooringLine[3].broken) \
+    X(2593, "line[5].broken", REAL, OUTPUT, mooringLine[4].broken) \
+    X(2594, "line[6].broken", REAL, OUTPUT, mooringLine[5].broken) \
+    X(2595, "line[7].broken", REAL, OUTPUT, mooringLine[6].broken) \
+    X(2596, "line[8].broken", REAL, OUTPUT, mooringLine[7].broken) \
+    X(2597, "line[9].broken", REAL, OUTPUT, mooringLine[8].broken) \
+    X(2598, "line[10].broken", REAL, OUTPUT, mooringLine[9].broken) \
+    X(2599, "line[11].broken", REAL, OUTPUT, mooringLine[10].broken) \
+    X(2600, "line[12].broken", REAL, OUTPUT, mooringLine[11].broken) \
+    X(2601, "line[13].broken", REAL, OUTPUT, mooringLine[12].broken) \
+    X(2602, "line[14].broken", REAL, OUTPUT, mooringLine[13].broken) \
+    X(2603, "line[15].broken", REAL, OUTPUT, mooringLine[14].broken) \
+    X(2604, "line[16].broken", REAL, OUTPUT, mooringLine[15].broken) \
+    X(2605, "line[1].breakTime", REAL, OUTPUT, mooringLine[0].breakTime) \
+    X(2606, "line[2].breakTime", REAL, OUTPUT, mooringLine[1].breakTime) \
+    X(2607, "line[3].breakTime", REAL, OUTPUT, mooringLine[2].breakTime) \
+    X(2608, "line[4].breakTime", REAL, OUTPUT, mooringLine[3].breakTime) \
+    X(2609, "line[5].breakTime", REAL, OUTPUT, mooringLine[4].breakTime) \
+    X(2610, "line[6].breakTime", REAL, OUTPUT, mooringLine[5].breakTime) \
+    X(2611, "line[7].breakTime", REAL, OUTPUT, mooringLine[6].breakTime) \
+    X(2612, "line[8].breakTime", REAL, OUTPUT, mooringLine[7].breakTime) \
+    X(2613, "line[9].breakTime", REAL, OUTPUT, mooringLine[8].breakTime) \
+    X(2614, "line[10].breakTime", REAL, OUTPUT, mooringLine[9].breakTime) \
+    X(2615, "line[11].breakTime", REAL, OUTPUT, mooringLine[10].breakTime) \
+    X(2616, "line[12].breakTime", REAL, OUTPUT, mooringLine[11].breakTime) \
+    X(2617, "line[13].breakTime", REAL, OUTPUT, mooringLine[12].breakTime) \
+    X(2618, "line[14].breakTime", REAL, OUTPUT, mooringLine[13].breakTime) \
+    X(2619, "line[15].breakTime", REAL, OUTPUT, mooringLine[14].breakTime) \
+    X(2620, "line[16].breakTime", REAL, OUTPUT, mooringLine[15].breakTime) \
 
 /* X(member, value): the start value of every numeric parameter (Strings start empty: zero-filled) */
 #define UC_SCHEMA_PARAMETER_DEFAULTS(X) \
@@ -1580,6 +1622,10 @@ typedef struct UCOutputs {
     X(section[5].MBL, 0.0) \
     X(section[6].MBL, 0.0) \
     X(section[7].MBL, 0.0) \
+    X(failureLine, 0) \
+    X(failurePoint, 0) \
+    X(failureTime, 0.0) \
+    X(failureTension, 0.0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -1852,6 +1898,10 @@ typedef struct UCOutputs {
     X(section[5].MBL, "section[6].MBL", 0.0, 10000000000.0, 0, 0, "[0, 10000000000]", "a minimum breaking load cannot be negative (0: the line's MBL)") \
     X(section[6].MBL, "section[7].MBL", 0.0, 10000000000.0, 0, 0, "[0, 10000000000]", "a minimum breaking load cannot be negative (0: the line's MBL)") \
     X(section[7].MBL, "section[8].MBL", 0.0, 10000000000.0, 0, 0, "[0, 10000000000]", "a minimum breaking load cannot be negative (0: the line's MBL)") \
+    X(failureLine, "failure.line", 0.0, 16.0, 0, 0, "[0, 16]", "a mooring system holds at most 16 lines") \
+    X(failurePoint, "failure.point", 0.0, 10000.0, 0, 0, "[0, 10000]", "a deck point's ID") \
+    X(failureTime, "failure.time", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "a time of the simulation") \
+    X(failureTension, "failure.tension", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -82,6 +82,8 @@ public:
         p = state_.end.p();
         return true;
     }
+    // Where the tow point (far false) or a driven far end (far true) stands and moves at time().
+    const DrivenEndState& driven_end(bool far) const { return far ? state_.end : state_.tow; }
 
     bool initialize(double t0, const UCInputs& in, std::string& error) override;
     // The FMU's step: unpacks in into the ends' motion and the environment and takes step below.

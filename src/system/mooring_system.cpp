@@ -16,11 +16,12 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kSystemMagic = 0x5543534D;  // "UCSM"
-constexpr std::uint32_t kSystemVersion = 3;
+// 4: the failures' states (FailureState) after the last inputs, the nodes of the broken ones with the others
+constexpr std::uint32_t kSystemVersion = 4;
 
 struct SystemHeader {
     std::uint32_t magic, version;
-    std::int32_t lines, bodies, nodes, reserved;
+    std::int32_t lines, bodies, nodes, failures;
     double lastStep;
     std::uint64_t lineSize[UC_MAX_LINES];
     std::uint64_t described;  // values of the system's description that follow the header
@@ -145,6 +146,31 @@ bool MooringSystem::build(std::string& error) {
         hangingWeight_.push_back(weight);
         describe_line(static_cast<int>(k), p);
     }
+    failures_ = deck_.failures;
+    if (base_.failureLine > 0) {  // the failure.* parameters' failure, after the deck's
+        char text[160];
+        std::snprintf(text, sizeof text, "failure.line = %d, failure.point = %d: ", base_.failureLine, base_.failurePoint);
+        if (base_.failureLine > deck_.deckLines) {
+            error = text + std::string("the deck has ") + std::to_string(deck_.deckLines) + " lines";
+            return false;
+        }
+        if (base_.failureTime == 0.0 && base_.failureTension == 0.0) {
+            error = text + std::string("failure.time and failure.tension are both 0: the line would never break "
+                                       "(give a time in s, a tension in N, or both: the first reached breaks it)");
+            return false;
+        }
+        MooringFailure f;
+        f.id = static_cast<int>(failures_.size()) + 1;
+        f.time = base_.failureTime;
+        f.tension = base_.failureTension;
+        if (!resolve_failure(deck_, base_.failurePoint, {base_.failureLine - 1}, f, error)) {
+            error = text + error;
+            return false;
+        }
+        failures_.push_back(f);
+    }
+    failureState_.assign(failures_.size(), FailureState{0.0, 0.0, 0.0});
+    deck0_ = deck_;
     describe_nodes();
     references_.assign(static_cast<size_t>(deck_.bodies), DrivenEnd());
     for (const MooringNode& n : deck_.nodes) {
@@ -225,6 +251,17 @@ void MooringSystem::describe_nodes() {
         three("inertia [kg m2]", n.inertia);
         three("CdA [m2]", n.CdA, 6);
         three("Ca [-]", n.Ca);
+    }
+    for (const MooringFailure& f : failures_) {
+        const std::string prefix = "failure " + std::to_string(f.id) +
+                                   (f.row > 0 ? " (deck row " + std::to_string(f.row) + "): " : " (failure.*): ");
+        add(prefix + "point", f.point);
+        add(prefix + "FailTime [s]", f.time);
+        add(prefix + "FailTen [N]", f.tension);
+        for (const MooringFailure::End& e : f.ends) {
+            add(prefix + "line", e.deckLine + 1);
+            add(prefix + "end", e.end);
+        }
     }
 }
 
@@ -361,6 +398,12 @@ bool MooringSystem::check_inputs(const UCInputs& in, std::string& error) {
 bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error) {
     ++stamp_;
     if (!check_inputs(in, error)) return false;
+    if (failure_node(static_cast<int>(failures_.size())) > static_cast<int>(deck0_.nodes.size())) {
+        // initialized again after a break: the deck's lines and nodes as read
+        failureState_.assign(failures_.size(), FailureState{0.0, 0.0, 0.0});
+        motion_.resize(deck0_.nodes.size());
+        apply_failures();
+    }
     UCInputs li;
     for (size_t k = 0; k < lines_.size(); ++k) {
         if (on_free_node(deck_.lines[k])) continue;  // initialized at the nodes' equilibrium
@@ -385,19 +428,25 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
     return true;
 }
 
-bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& error) {
-    ++stamp_;
-    if (!check_inputs(in, error)) return false;
+bool MooringSystem::advance(double t, double h, double offset, const UCInputs& in, std::string& error) {
     const LineEnvironment env = line_environment(in);
     for (size_t k = 0; k < lines_.size(); ++k) {
         if (on_free_node(deck_.lines[k])) continue;  // stepped with the nodes
-        const LineEnds ends = line_ends(static_cast<int>(k), in);
+        LineEnds ends = line_ends(static_cast<int>(k), in);
+        if (offset >= 0.0) shift_coupled_ends(static_cast<int>(k), offset, ends);
         if (!lines_[k]->step(h, ends.tow, ends.far, env, error)) {
             error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
             return false;
         }
     }
-    if (!motion_.empty() && !step_nodes(t, h, in, error)) return false;
+    return motion_.empty() || step_nodes(t, h, in, error, offset);
+}
+
+bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& error) {
+    ++stamp_;
+    if (!check_inputs(in, error)) return false;
+    failureEvaluations_ = 0;
+    if (failures_pending() ? !step_with_failures(t, h, in, error) : !advance(t, h, -1.0, in, error)) return false;
     for (int b = 0; b < deck_.bodies; ++b) {
         const UCCoupledBody& body = in.coupledBody[b];
         const bool given = in.bodyAccelerationGiven[b] != 0;
@@ -410,6 +459,171 @@ bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& er
     lastInputs_ = in;
     update_outputs();
     return true;
+}
+
+// ------------------------------------------------------------------------------------------- line failures
+// (docs/line_failure.md)
+
+double MooringSystem::failure_tension(int f) const {
+    double tension = 0.0;
+    for (const MooringFailure::End& e : failures_[f].ends) {
+        const UCOutputs& o = lines_[e.line]->outputs();
+        tension = std::max(tension, e.end == 0 ? o.towTension : o.endTension);
+    }
+    return tension;
+}
+
+double MooringSystem::failure_tolerance(int f) const {
+    double tolerance = 0.0;
+    for (const MooringFailure::End& e : failures_[f].ends) {
+        const CableSimulation& line = *lines_[e.line];
+        tolerance = std::max(tolerance, line.model().params().tensionTolerance * line.outputs().tensionScale);
+    }
+    return tolerance;
+}
+
+bool MooringSystem::failures_pending() const {
+    for (const FailureState& s : failureState_)
+        if (s.broken == 0.0) return true;
+    return false;
+}
+
+int MooringSystem::failure_node(int f) const {
+    int n = static_cast<int>(deck0_.nodes.size());
+    for (int g = 0; g < f; ++g) n += failureState_[g].broken != 0.0 ? 1 : 0;
+    return n;
+}
+
+void MooringSystem::apply_failures() {
+    deck_.lines = deck0_.lines;
+    deck_.nodes = deck0_.nodes;
+    for (size_t f = 0; f < failures_.size(); ++f) {
+        if (failureState_[f].broken == 0.0) continue;
+        MooringNode node;  // no mass, volume or drag: one line's bare end, or the lines joined
+        node.failure = failures_[f].id;
+        node.point.id = failures_[f].point;
+        const int n = static_cast<int>(deck_.nodes.size());
+        deck_.nodes.push_back(node);
+        for (const MooringFailure::End& e : failures_[f].ends) {
+            MooringEnd& end = e.end == 0 ? deck_.lines[e.line].fairlead : deck_.lines[e.line].far;
+            end = MooringEnd();
+            end.kind = MooringEnd::Kind::Node;
+            end.node = n;
+        }
+    }
+    nodeOffset_.clear();
+    nodeUnknowns_ = 0;
+    for (const MooringNode& node : deck_.nodes) {
+        nodeOffset_.push_back(nodeUnknowns_);
+        nodeUnknowns_ += node.body ? 6 : 3;
+    }
+}
+
+void MooringSystem::break_failure(int f, double t) {
+    const MooringFailure& fail = failures_[f];
+    // the new node starts where its ends stand and move (they share the point)
+    const MooringFailure::End& first = fail.ends[0];
+    const DrivenEndState& at = lines_[first.line]->driven_end(first.end == 1);
+    FreeNodeMotion m{};
+    put(m.position, at.p());
+    put(m.velocity, at.v());
+    put(m.acceleration, at.a());
+    put(m.inputPosition, at.p());
+    put(m.inputVelocity, at.v());
+    put(m.inputAcceleration, at.a());
+    put_rotation(m, Mat3::Identity());
+    const double tension = failure_tension(f);
+    const int n = failure_node(f);
+    failureState_[f] = FailureState{1.0, t, tension};
+    motion_.insert(motion_.begin() + n, m);
+    apply_failures();
+    std::string lines;
+    for (const MooringFailure::End& e : fail.ends) lines += (lines.empty() ? "" : ", ") + std::to_string(e.deckLine + 1);
+    char text[400];
+    std::snprintf(text, sizeof text, "line failure %d at t = %.9g s: line%s %s detached from point %d, tension there "
+                  "%.6g N (FailTime %.6g s, FailTen %.6g N); %s on a massless free point", fail.id, t,
+                  fail.ends.size() > 1 ? "s" : "", lines.c_str(), fail.point, tension, fail.time, fail.tension,
+                  fail.ends.size() > 1 ? "they go on joined" : "its end goes on bare");
+    event_ += (event_.empty() ? "" : "; ") + std::string(text);
+}
+
+bool MooringSystem::step_with_failures(double t, double h, const UCInputs& in, std::string& error) {
+    const double eps = 1e-12 * std::max(1.0, std::abs(t + h));  // times closer than this are one
+    // how far the pending failures by tension are from their thresholds, the largest, in their tolerances
+    auto crossing = [&]() {
+        double g = -HUGE_VAL;
+        for (size_t f = 0; f < failures_.size(); ++f) {
+            if (failureState_[f].broken != 0.0 || failures_[f].tension <= 0.0) continue;
+            const int i = static_cast<int>(f);
+            g = std::max(g, (failure_tension(i) - failures_[f].tension) / failure_tolerance(i));
+        }
+        return g;
+    };
+    double done = 0.0;  // of h
+    while (true) {
+        // what breaks where the piece starts: its time reached, its tension at its threshold within the tolerance
+        for (size_t f = 0; f < failures_.size(); ++f) {
+            if (failureState_[f].broken != 0.0) continue;
+            const MooringFailure& fail = failures_[f];
+            const int i = static_cast<int>(f);
+            const bool byTime = fail.time > 0.0 && fail.time <= t + done + eps;
+            if (byTime || (fail.tension > 0.0 && failure_tension(i) >= fail.tension - failure_tolerance(i)))
+                break_failure(i, byTime && fail.time >= t + done - eps ? fail.time : t + done);  // its time exactly
+        }
+        if (done >= h) return true;
+        if (!failures_pending()) return advance(t + done, h - done, done > 0.0 ? done : -1.0, in, error);
+        double end = h;  // the piece ends at the first failure's time within the step
+        for (size_t f = 0; f < failures_.size(); ++f) {
+            const double time = failures_[f].time - t;
+            if (failureState_[f].broken == 0.0 && failures_[f].time > 0.0 && time < end) end = time;
+        }
+        if (end > h - eps) end = h;
+        const double offset = done > 0.0 || end < h ? done : -1.0;
+        const double g0 = crossing();
+        const bool byTension = g0 > -HUGE_VAL;
+        if (byTension) {  // the piece's start, to locate a break within it
+            failureBuffer_.resize(state_size());
+            save_state(failureBuffer_.data());
+        }
+        if (!advance(t + done, end - done, offset, in, error)) return false;
+        double g = byTension ? crossing() : -HUGE_VAL;
+        if (g <= 1.0) {  // no threshold passed by more than the tolerance: the piece stands
+            done = end;
+            continue;
+        }
+        // A threshold was passed within the piece: the time where the tension reaches it, by regula falsi
+        // (Illinois) on the piece's length, each trial the piece taken anew from its start.
+        double a = 0.0, ga = g0, b = end - done, gb = g, tau = b;
+        int side = 0;
+        for (int it = 0; it < kLocateIterations && std::abs(g) > 1.0; ++it) {
+            const double span = b - a;
+            tau = std::clamp((a * gb - b * ga) / (gb - ga), a + 1e-3 * span, b - 1e-3 * span);
+            if (!restore_state(failureBuffer_.data(), failureBuffer_.size(), error) ||
+                !advance(t + done, tau, done, in, error))
+                return false;
+            ++failureEvaluations_;
+            g = crossing();
+            if (g > 0.0) {
+                b = tau;
+                gb = g;
+                if (side > 0) ga *= 0.5;
+                side = 1;
+            } else {
+                a = tau;
+                ga = g;
+                if (side < 0) gb *= 0.5;
+                side = -1;
+            }
+        }
+        if (std::abs(g) > 1.0) {
+            char text[300];
+            std::snprintf(text, sizeof text, "the break by tension within the step from t = %.9g s was located to "
+                          "%.3g of its tolerance after %d trials (at t = %.9g s)", t + done, g, kLocateIterations,
+                          t + done + tau);
+            event_ += (event_.empty() ? "" : "; ") + std::string(text);
+        }
+        done += tau;  // the loop's start breaks what reached its threshold there
+    }
 }
 
 std::string MooringSystem::take_event() {
@@ -463,8 +677,18 @@ void MooringSystem::update_outputs() {
             }
         }
     }
+    for (size_t f = 0; f < failures_.size(); ++f) {
+        if (failureState_[f].broken == 0.0) continue;
+        for (const MooringFailure::End& e : failures_[f].ends) {
+            UCMooringLine& out = outputs_.mooringLine[e.deckLine];
+            if (out.broken != 0.0 && out.breakTime <= failureState_[f].time) continue;  // broke before, at its other end
+            out.broken = 1.0;
+            out.breakTime = failureState_[f].time;
+        }
+    }
     for (size_t n = 0; n < motion_.size(); ++n) {
         const int id = deck_.nodes[n].point.id;
+        if (deck_.nodes[n].failure > 0) continue;  // a failure's free end: no output of its own
         if (deck_.nodes[n].body) {
             if (id > UC_MAX_BODIES) continue;  // beyond the outputs body[k].pose.*
             const Mat3 R = rotation(motion_[n]);  // R = Rx Ry Rz: R(0,2) = sin(pitch)
@@ -699,7 +923,7 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
     return true;
 }
 
-bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::string& error) {
+bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::string& error, double offset) {
     // The step in one piece first; where its error estimate exceeds kNodeStepError, again from the step's
     // start in as many substeps as bring it within, and where its coupled iteration does not converge in
     // 2, 4, ... equal substeps (the same step on each, the coupled ends of the nodes' lines extrapolated
@@ -719,7 +943,8 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
         }
         const double hs = h / pieces;
         bool ok = true;
-        for (int j = 0; j < pieces && ok; ++j) ok = node_step(hs, pieces > 1 ? j * hs : -1.0, in, worst, why);
+        for (int j = 0; j < pieces && ok; ++j)
+            ok = node_step(hs, offset >= 0.0 ? offset + j * hs : pieces > 1 ? j * hs : -1.0, in, worst, why);
         if (ok && pieces == 1) {
             // its error estimated from the change of the accelerations, as h^3: the substeps that bring
             // it within kNodeStepError (each then errs by 1 / pieces^3 of the step's)
@@ -735,7 +960,7 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
             nodeSubsteps_ = pieces;
             if (pieces > 1 && !substepsReported_) {
                 substepsReported_ = true;
-                event_ = "from t = " + std::to_string(t) + " s the free nodes' step of " + std::to_string(h) + " s is split into " +
+                event_ += std::string(event_.empty() ? "" : "; ") + "from t = " + std::to_string(t) + " s the free nodes' step of " + std::to_string(h) + " s is split into " +
                          std::to_string(pieces) + " substeps where " +
                          (estimate > kNodeStepError ? "its estimated error in one piece (" + std::to_string(estimate) + " m) exceeds " +
                                                           std::to_string(kNodeStepError) + " m"
@@ -746,7 +971,10 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
         }
     }
     const MooringNode& node = deck_.nodes[worst];
-    error = (node.body ? "free body " : "free point ") + std::to_string(node.point.id) + ": " + why + "; also in " +
+    error = (node.failure > 0 ? "the free end of failure " + std::to_string(node.failure) + " (at point " +
+                                    std::to_string(node.point.id) + ")"
+                              : (node.body ? "free body " : "free point ") + std::to_string(node.point.id)) +
+            ": " + why + "; also in " +
             std::to_string(kMaxSubsteps) + " substeps of " + std::to_string(h / kMaxSubsteps) +
             " s: take a shorter communication step";
     return false;
@@ -1084,7 +1312,7 @@ bool MooringSystem::body_derivatives(int b, double d[6][UC_BODY_DERIVATIVE_INPUT
 size_t MooringSystem::state_size() const {
     size_t size = sizeof(SystemHeader) + description_.size() * sizeof(double) +
                   references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs) +
-                  motion_.size() * sizeof(FreeNodeMotion);
+                  failureState_.size() * sizeof(FailureState) + motion_.size() * sizeof(FreeNodeMotion);
     for (const auto& line : lines_) size += line->state_size();
     return size;
 }
@@ -1096,6 +1324,7 @@ void MooringSystem::save_state(void* buffer) {
     header.lines = static_cast<std::int32_t>(lines_.size());
     header.bodies = static_cast<std::int32_t>(references_.size());
     header.nodes = static_cast<std::int32_t>(motion_.size());
+    header.failures = static_cast<std::int32_t>(failureState_.size());
     header.lastStep = lastStep_;
     for (size_t k = 0; k < lines_.size(); ++k) header.lineSize[k] = lines_[k]->state_size();
     header.described = description_.size();
@@ -1116,6 +1345,8 @@ void MooringSystem::save_state(void* buffer) {
     out += sizeof outputs_;
     std::memcpy(out, &lastInputs_, sizeof lastInputs_);
     out += sizeof lastInputs_;
+    if (!failureState_.empty()) std::memcpy(out, failureState_.data(), failureState_.size() * sizeof(FailureState));
+    out += failureState_.size() * sizeof(FailureState);
     if (!motion_.empty()) std::memcpy(out, motion_.data(), motion_.size() * sizeof(FreeNodeMotion));
     out += motion_.size() * sizeof(FreeNodeMotion);
     for (auto& line : lines_) {
@@ -1156,22 +1387,39 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     }
     const auto* in = static_cast<const unsigned char*>(buffer);
     std::memcpy(&header, in, sizeof header);
-    if (header.magic != kSystemMagic || header.version != kSystemVersion) {
-        error = "saved state is not a state of a mooring system of this version (magic or version differ)";
+    if (header.magic != kSystemMagic) {
+        error = "saved state is not a state of a mooring system (its magic number differs)";
         return false;
+    }
+    if (header.version != kSystemVersion) {
+        error = "saved state is a mooring system's state of format version " + std::to_string(header.version) +
+                ", this FMU reads version " + std::to_string(kSystemVersion) +
+                (header.version < kSystemVersion ? " (version 4 added the line failures' state)" : "") +
+                ": it cannot be restored; initialize anew (or restore with the FMU that saved it)";
+        return false;
+    }
+    // the free nodes: the deck's and one per broken failure
+    const size_t failureBytes = failureState_.size() * sizeof(FailureState);
+    const size_t failureAt = sizeof header + description_.size() * sizeof(double) +
+                             references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs);
+    std::vector<FailureState> failureState(failureState_.size());
+    size_t nodes = deck0_.nodes.size();
+    if (header.failures == static_cast<std::int32_t>(failureState_.size()) && size >= failureAt + failureBytes) {
+        if (failureBytes) std::memcpy(failureState.data(), in + failureAt, failureBytes);
+        for (const FailureState& s : failureState) nodes += s.broken != 0.0 ? 1 : 0;
     }
     if (header.lines != static_cast<std::int32_t>(lines_.size()) ||
         header.bodies != static_cast<std::int32_t>(references_.size()) ||
-        header.nodes != static_cast<std::int32_t>(motion_.size()) || header.described != description_.size()) {
+        header.failures != static_cast<std::int32_t>(failureState_.size()) ||
+        header.nodes != static_cast<std::int32_t>(nodes) || header.described != description_.size()) {
         error = "the deck is not the one the state was saved with: it makes " + std::to_string(lines_.size()) +
-                " lines, " + std::to_string(references_.size()) + " coupled bodies and " +
-                std::to_string(motion_.size()) + " free nodes now, the state's " + std::to_string(header.lines) +
-                ", " + std::to_string(header.bodies) + " and " + std::to_string(header.nodes);
+                " lines, " + std::to_string(references_.size()) + " coupled bodies, " + std::to_string(failureState_.size()) +
+                " failures and " + std::to_string(nodes) + " free nodes (with the state's failures) now, the state's " +
+                std::to_string(header.lines) + ", " + std::to_string(header.bodies) + ", " +
+                std::to_string(header.failures) + " and " + std::to_string(header.nodes);
         return false;
     }
-    size_t expected = sizeof header + description_.size() * sizeof(double) +
-                      references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs) +
-                      motion_.size() * sizeof(FreeNodeMotion);
+    size_t expected = failureAt + failureBytes + nodes * sizeof(FreeNodeMotion);
     for (size_t k = 0; k < lines_.size(); ++k) {
         if (header.lineSize[k] > size) break;  // (the sum below cannot wrap)
         expected += header.lineSize[k];
@@ -1196,7 +1444,8 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     UCInputs lastInputs;
     std::memcpy(&lastInputs, in, sizeof lastInputs);
     in += sizeof lastInputs;
-    std::vector<FreeNodeMotion> motion(motion_.size());
+    in += failureBytes;  // (read above)
+    std::vector<FreeNodeMotion> motion(nodes);
     if (!motion.empty()) std::memcpy(motion.data(), in, motion.size() * sizeof(FreeNodeMotion));
     in += motion.size() * sizeof(FreeNodeMotion);
     for (size_t k = 0; k < lines_.size(); ++k) {
@@ -1210,7 +1459,9 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     }
     references_ = references;
     stiffnessCurrent_ = false;
+    failureState_ = failureState;
     motion_ = motion;
+    apply_failures();
     outputs_ = outputs;
     lastInputs_ = lastInputs;
     lastStep_ = header.lastStep;

@@ -77,6 +77,17 @@ struct FreeNodeMotion {
 };
 static_assert(std::is_trivially_copyable_v<FreeNodeMotion>, "a free node's motion is saved as its bytes");
 
+// The state of a line failure (docs/line_failure.md), in plain doubles: saved with the nodes' motion. From
+// its break on, its lines' ends are on a free node of its own (massless), after the deck's free nodes and
+// the nodes of the failures before it that broke.
+struct FailureState {
+    double broken;   // 1 from the break on, 0 before
+    double time;     // of the break [s]
+    double tension;  // the largest tension of its lines at the point, at the break [N]
+};
+static_assert(std::is_trivially_copyable_v<FailureState> && sizeof(FailureState) == 3 * sizeof(double),
+              "a failure's state is saved as its bytes");
+
 class MooringSystem final : public Simulation {
 public:
     // The lines' parameters are base with each line's deck properties; false (error) where one is refused.
@@ -160,6 +171,8 @@ public:
     // or where its estimated error in the nodes' positions exceeds kNodeStepError [m].
     static constexpr int kMaxSubsteps = 16;
     static constexpr double kNodeStepError = 0.01;
+    // A break by tension is located within its step in at most this many trials of the step's piece.
+    static constexpr int kLocateIterations = 40;
 
     // The free nodes (Free points where three or more lines meet): their positions, found at the
     // initialization by the static equilibrium of each node (docs/systems_mooring.md, "Free points").
@@ -175,6 +188,16 @@ public:
     Vec3 node_velocity(int n) const { return Vec3(motion_[n].velocity); }
     Mat3 node_rotation(int n) const { return Eigen::Map<const Mat3>(motion_[n].rotation); }  // (identity for a point)
     const FreeNodeMotion& node_motion(int n) const { return motion_[n]; }
+    // The line failures (the deck's FAILURE rows, then the failure.* parameters') and their states.
+    int n_failures() const { return static_cast<int>(failures_.size()); }
+    const FailureState& failure_state(int f) const { return failureState_[f]; }
+    // The largest tension of failure f's lines at its point (each line's end tension there) [N].
+    double failure_tension(int f) const;
+    // The tension within which a break by tension is located: the integrator's tolerance in tension of
+    // failure f's lines (tensionTolerance times their tension scale) [N].
+    double failure_tolerance(int f) const;
+    // Steps with a break located within the last communication step (0 or 1) and the evaluations it took.
+    int failure_evaluations() const { return failureEvaluations_; }
     // Newton iterations of the statics (of the last initialization) or of the last step's dynamics, and
     // the statics' residual left (largest component, N).
     int node_iterations() const { return nodeIterations_; }
@@ -243,7 +266,19 @@ private:
     void save_node_lines(std::vector<std::vector<unsigned char>>& into);
     // (In one piece, or in substeps where its error estimate is too large or its coupled iteration does
     // not converge.)
-    bool step_nodes(double t, double h, const UCInputs& in, std::string& error);
+    // offset >= 0: a piece of the communication step that starts offset after its start (a break's).
+    bool step_nodes(double t, double h, const UCInputs& in, std::string& error, double offset = -1.0);
+    // Every line and node over h from their present time; offset as step_nodes'.
+    bool advance(double t, double h, double offset, const UCInputs& in, std::string& error);
+    // A communication step with failures pending: in pieces that end at each break (docs/line_failure.md).
+    bool step_with_failures(double t, double h, const UCInputs& in, std::string& error);
+    // Failure f breaks now, at time t: its lines' ends go on a new free node that starts where they are.
+    void break_failure(int f, double t);
+    // The deck's lines and nodes as the failures' states make them (deck0_ with the broken failures' ends on
+    // their nodes); motion_ must hold the nodes' motion in that order.
+    void apply_failures();
+    int failure_node(int f) const;  // the index of failure f's node among the nodes (where it is or would be)
+    bool failures_pending() const;
     // One step of h from the nodes' and the lines' present time by the coupled iteration; shift >= 0: a
     // substep that starts shift after the communication step's, the coupled ends extrapolated there.
     // worst: the node that moves most in the last correction (named where it fails).
@@ -255,6 +290,12 @@ private:
 
     UCParams base_;
     MooringDeck deck_;
+    MooringDeck deck0_;  // as read (the deck_'s lines' ends and nodes before any failure)
+    std::vector<MooringFailure> failures_;
+    // --- state (with motion_ below) ---
+    std::vector<FailureState> failureState_;
+    int failureEvaluations_ = 0;
+    std::vector<unsigned char> failureBuffer_;  // the system's state at a piece's start (event location)
     std::vector<std::unique_ptr<CableSimulation>> lines_;
     // per line: its sections and joints for its static profile, from the fairlead (s from there)
     std::vector<std::vector<LineProfile::Segment>> segments_;

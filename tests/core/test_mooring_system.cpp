@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "api/cable_api.h"
+#include "chain_system_parameters.h"
 #include "deck_mutation.h"
 #include "deck/line_file.h"
 #include "system/mooring_system.h"
@@ -64,15 +65,7 @@ uc::MooringDeck read_platform(int elementsPerLine = 0) {
     return deck;
 }
 
-UCParams system_parameters() {
-    UCParams p;
-    uc_params_default(&p);
-    p.enableSeabed = 1;
-    p.seabedStiffness = 3e6 * 0.0766;
-    p.seabedDamping = 3e5 * 0.0766;
-    p.enableCompression = 0;
-    return p;
-}
+UCParams system_parameters() { return chain_system_parameters(); }
 
 UCInputs platform_inputs(double x, double pitch, double vx) {
     UCInputs in;

@@ -1,0 +1,345 @@
+// Line failures in a mooring system (docs/line_failure.md): the deck's FAILURE rows, a break at a time and at a
+// tension threshold (the step that contains it ends there), the platform's response, and the state across a break.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "api/cable_api.h"
+#include "chain_system_parameters.h"
+#include "deck/line_file.h"
+#include "system/mooring_system.h"
+
+namespace {
+
+// The OC4 DeepCwind semisubmersible's three chains (scenes/oc4_semi.dat: fairleads on body 1, points 4, 5, 6, lines
+// 1, 2, 3 from anchors 1, 2, 3) with a FAILURE table after it, its rows given by the tests.
+std::string oc4_deck() {
+    std::ifstream file(UC_SOURCE_DIR "/scenes/oc4_semi.dat", std::ios::binary);
+    EXPECT_TRUE(file.good()) << UC_SOURCE_DIR "/scenes/oc4_semi.dat";
+    std::stringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+const std::string kDeck = oc4_deck();
+const std::string kFailureHeader = "---------------------- FAILURE ----------------\nID  Point  Line(s)  FailTime  FailTen\n"
+                                   "()  ()  (,)  (s)  (N)\n";
+// "line <n>: " of the first FAILURE row in messages
+const std::string kRow = "line " + std::to_string(std::count(kDeck.begin(), kDeck.end(), '\n') + 4) + ":";
+
+std::string spread(const std::string& failureRows) { return kDeck + kFailureHeader + failureRows + "---- end ----\n"; }
+
+UCParams system_parameters() {
+    UCParams p = chain_system_parameters();
+    p.lineFileElements = 10;
+    return p;
+}
+
+UCInputs platform_at(double x, double y, double vx, double vy) {
+    UCInputs in;
+    uc_inputs_default(&in);
+    in.coupledBody[0].position[0] = x;
+    in.coupledBody[0].position[1] = y;
+    in.coupledBody[0].velocity[0] = vx;
+    in.coupledBody[0].velocity[1] = vy;
+    return in;
+}
+
+struct Built {
+    uc::MooringDeck deck;
+    std::unique_ptr<uc::MooringSystem> system;
+};
+
+Built build(const std::string& text, const UCParams& p = system_parameters()) {
+    Built b;
+    std::string error;
+    EXPECT_TRUE(uc::read_mooring_deck(text, p.lineFileElements, b.deck, error)) << error;
+    b.system = std::make_unique<uc::MooringSystem>(p, b.deck);
+    EXPECT_TRUE(b.system->build(error)) << error;
+    return b;
+}
+
+std::string refusal(const std::string& rows) {
+    uc::MooringDeck deck;
+    std::string error;
+    EXPECT_FALSE(uc::read_mooring_deck(spread(rows), 0, deck, error));
+    return error;
+}
+
+}  // namespace
+
+TEST(LineFailureDeck, TheFailureTableIsReadAsMoorDynFWritesIt) {
+    const Built b = build(spread("1  4  1  12.5  0\n2  P5  2  0  3.0e6\n"));
+    ASSERT_EQ(b.deck.failures.size(), 2u);
+    const uc::MooringFailure& f = b.deck.failures[0];
+    EXPECT_EQ(f.id, 1);
+    EXPECT_EQ(kRow, "line " + std::to_string(f.row) + ":");
+    EXPECT_EQ(f.point, 4);
+    ASSERT_EQ(f.ends.size(), 1u);
+    EXPECT_EQ(f.ends[0].deckLine, 0);
+    EXPECT_EQ(f.ends[0].end, 0);  // the fairlead
+    EXPECT_DOUBLE_EQ(f.time, 12.5);
+    EXPECT_DOUBLE_EQ(b.deck.failures[1].tension, 3.0e6);
+    EXPECT_EQ(b.system->n_failures(), 2);
+}
+
+TEST(LineFailureDeck, AMalformedRowIsRefusedNamingTheRow) {
+    EXPECT_EQ(refusal("1  4  2  10  0\n").rfind(kRow + " Line(s) '2': line 2 is not attached to point 4", 0), 0u)
+        << refusal("1  4  2  10  0\n");
+    EXPECT_EQ(refusal("1  4  1  0  0\n").rfind(kRow + " FailTime and FailTen are both 0", 0), 0u);
+    EXPECT_EQ(refusal("1  4  1,x  10  0\n").rfind(kRow + " Line(s) '1,x': 'x' is not a line ID", 0), 0u);
+    EXPECT_EQ(refusal("1  4  1  -1  0\n").rfind(kRow + " FailTime = -1: must not be negative", 0), 0u);
+    EXPECT_EQ(refusal("1  9  1  10  0\n").rfind(kRow + " Point '9': there is no point 9", 0), 0u);
+    EXPECT_EQ(refusal("1  4  1  10\n").rfind(kRow + " a failure has the fields ID Point Line(s) FailTime FailTen", 0), 0u);
+    EXPECT_EQ(refusal("2  4  1  10  0\n").rfind(kRow + "", 0), 0u);  // IDs 1, 2, ... in order
+    const std::string anchor = refusal("1  1  1  10  0\n");
+    EXPECT_EQ(anchor.rfind(kRow + " failure 1: line 1 at point 1: the point is fixed (an anchor", 0), 0u) << anchor;
+    EXPECT_NE(refusal("1  4  1  10  0\n2  4  1  0  1e6\n").find("that end already detaches in failure 1"), std::string::npos);
+    // one line's deck: refused as a whole, naming the section
+    UCParams p = system_parameters();
+    uc::LineFileLine line;
+    std::string error;
+    const std::string one = "----- LINE TYPES -----\nName Diam MassDen EA BA EI Cd Ca CdAx CaAx\n(-) (m) (kg/m) (N) (-) (-) (-) (-) (-) (-)\n"
+                            "main 0.0766 113.35 7.536E8 -1.0 0 2.0 0.8 0.4 0.25\n----- POINTS -----\nID Attachment X Y Z M V CdA CA\n"
+                            "(-) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n1 Fixed 418.8 725.383 -200 0 0 0 0\n2 Vessel 20.4 35.4 -14 0 0 0 0\n"
+                            "----- LINES -----\nID LineType AttachA AttachB UnstrLen NumSegs Outputs\n(-) (-) (-) (-) (m) (-) (-)\n"
+                            "1 main 1 2 835.35 20 -\n----- FAILURE -----\nID Point Line(s) FailTime FailTen\n() () (,) (s) (N)\n1 2 1 10 0\n---- end ----\n";
+    EXPECT_FALSE(uc::read_line_file(one, 0, line, error));
+    EXPECT_NE(error.find("line failures are supported in a mooring system's deck only"), std::string::npos) << error;
+    (void)p;
+}
+
+TEST(LineFailureDeck, TheFailureParametersAreCheckedAndTheOneLineModelRefusesThem) {
+    UCParams p = system_parameters();
+    p.failureLine = 2;
+    uc::MooringDeck deck;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(spread(""), 10, deck, error)) << error;
+    {
+        uc::MooringSystem s(p, deck);
+        EXPECT_FALSE(s.build(error));
+        EXPECT_EQ(error.rfind("failure.line = 2, failure.point = 0: failure.time and failure.tension are both 0", 0), 0u) << error;
+    }
+    p.failureTime = 5.0;
+    p.failurePoint = 2;
+    {
+        uc::MooringSystem s(p, deck);
+        EXPECT_FALSE(s.build(error));
+        EXPECT_NE(error.find("the point is fixed (an anchor"), std::string::npos) << error;
+    }
+    p.failurePoint = 0;  // the fairlead, point 5
+    {
+        uc::MooringSystem s(p, deck);
+        EXPECT_TRUE(s.build(error)) << error;
+        ASSERT_EQ(s.n_failures(), 1);
+    }
+    char msg[512];
+    UCCable* one = uc_create(&p, msg, sizeof msg);
+    EXPECT_EQ(one, nullptr);
+    EXPECT_NE(std::string(msg).find("failure.line = 2: a line failure is supported in a mooring system"), std::string::npos) << msg;
+    uc_free(one);
+}
+
+// Line 1 (fairlead at point 4, anchor 1 out at +60 degrees) breaks at 2.3 s, inside a step of 0.5 s: the step ends
+// there, the line's fairlead tension falls to nothing, and a free platform (surge and sway, its mass and added mass,
+// a linear damping) drifts away from the broken line's anchor, pulled by the other two.
+TEST(LineFailure, ALineBreaksAtItsTimeAndThePlatformDriftsAway) {
+    Built b = build(spread("1  4  1  2.3  0\n"));
+    uc::MooringSystem& s = *b.system;
+    std::string error;
+    ASSERT_TRUE(s.initialize(0.0, platform_at(0, 0, 0, 0), error)) << error;
+    const double mass = 1.35e7 + 1.2e7, damping = 2.0e5;  // [kg], [N s/m]
+    double x = 0.0, y = 0.0, vx = 0.0, vy = 0.0, t = 0.0;
+    const double h = 0.5;
+    const double T0 = s.outputs().mooringLine[0].fairleadTension;
+    double before = 0.0;
+    std::string events;
+    for (int k = 0; k < 120; ++k) {  // 60 s
+        ASSERT_TRUE(s.step(t, h, platform_at(x, y, vx, vy), error)) << error << " at t = " << t;
+        t += h;
+        events += s.take_event();
+        const UCOutputs& o = s.outputs();
+        if (t < 2.3) {
+            EXPECT_EQ(o.mooringLine[0].broken, 0.0);
+            before = o.mooringLine[0].fairleadTension;
+        } else {
+            EXPECT_EQ(o.mooringLine[0].broken, 1.0) << t;
+            EXPECT_EQ(o.mooringLine[0].breakTime, 2.3);
+            EXPECT_EQ(o.mooringLine[1].broken, 0.0);
+        }
+        // the platform: semi-implicit Euler on the lines' horizontal force
+        vx += h * (o.bodyLoad[0].force[0] - damping * vx) / mass;
+        vy += h * (o.bodyLoad[0].force[1] - damping * vy) / mass;
+        x += h * vx;
+        y += h * vy;
+    }
+    EXPECT_NE(events.find("line failure 1 at t = 2.3 s: line 1 detached from point 4"), std::string::npos) << events;
+    EXPECT_GT(before, 0.9 * T0);
+    const UCOutputs& o = s.outputs();
+    EXPECT_LT(o.mooringLine[0].fairleadTension, 1e-3 * T0) << "a bare end carries no tension";
+    // away from anchor 1 (direction (0.5, 0.866)): the other two lines' pretension pulls the platform off
+    const double away = -(0.5 * x + 0.866 * y);
+    std::printf("after 60 s: x = %.3f m, y = %.3f m, line 1 tension %.3g N (%.3g N before)\n", x, y,
+                o.mooringLine[0].fairleadTension, before);
+    EXPECT_GT(away, 10.0) << "x = " << x << ", y = " << y;
+    EXPECT_LT(std::abs(-0.866 * x + 0.5 * y), 0.05 * away) << "along the broken line's direction";
+    EXPECT_EQ(s.failure_state(0).broken, 1.0);
+    EXPECT_EQ(s.failure_state(0).time, 2.3);
+    // the platform's stiffness and interface derivatives, from the two lines left on it
+    double K[36];
+    std::string why;
+    ASSERT_TRUE(s.body_stiffness(1, platform_at(x, y, vx, vy), K, &why)) << why;
+    for (double k : K) EXPECT_TRUE(std::isfinite(k));
+    EXPECT_GT(K[0], 0.0);
+    double d[6][UC_BODY_DERIVATIVE_INPUTS];
+    ASSERT_TRUE(s.body_derivatives(1, d, error)) << error;
+    for (const auto& row : d)
+        for (double v : row) EXPECT_TRUE(std::isfinite(v));
+}
+
+namespace {
+
+// The platform pulled away from anchor 1 at 0.5 m/s (along (-0.5, -0.866)): line 1's fairlead tension rises.
+UCInputs pulled(double t) {
+    const double v = 0.5;
+    return platform_at(-0.5 * v * t, -0.866 * v * t, -0.5 * v, -0.866 * v);
+}
+
+struct Break {
+    double time, tension, tolerance, threshold;
+};
+
+// Line 1 breaks at 1.25 times its initial fairlead tension while the platform is pulled, with communication steps h.
+Break break_by_tension(double h, double factor = 1.25) {
+    Built probe = build(spread(""));
+    std::string error;
+    EXPECT_TRUE(probe.system->initialize(0.0, pulled(0.0), error)) << error;
+    const double threshold = factor * probe.system->outputs().mooringLine[0].fairleadTension;
+    char row[80];
+    std::snprintf(row, sizeof row, "1  4  1  0  %.17g\n", threshold);
+    Built b = build(spread(row));
+    uc::MooringSystem& s = *b.system;
+    EXPECT_TRUE(s.initialize(0.0, pulled(0.0), error)) << error;
+    double t = 0.0;
+    while (s.failure_state(0).broken == 0.0 && t < 60.0) {
+        EXPECT_TRUE(s.step(t, h, pulled(t), error)) << error;
+        t += h;
+        if (s.failure_state(0).broken == 0.0) {
+            EXPECT_LT(s.outputs().mooringLine[0].fairleadTension, threshold + s.failure_tolerance(0));
+        }
+    }
+    return {s.failure_state(0).time, s.failure_state(0).tension, s.failure_tolerance(0), threshold};
+}
+
+}  // namespace
+
+// The step in which the tension reaches the threshold ends where it does: the tension at the break is the threshold
+// within the integrator's tolerance in tension, and the break time that of a run with a fine step, whatever the
+// communication step.
+TEST(LineFailure, ALineBreaksWhereItsTensionReachesTheThresholdWhateverTheStep) {
+    const Break fine = break_by_tension(0.02);
+    ASSERT_GT(fine.time, 1.0);
+    for (double h : {0.1, 0.5, 1.0}) {
+        const Break b = break_by_tension(h);
+        EXPECT_LE(std::abs(b.tension - b.threshold), b.tolerance) << "h = " << h;
+        // the tension rises at dT/dt: the tolerance in tension is a tolerance in time of tolerance / (dT/dt)
+        const double rate = (fine.threshold - fine.threshold / 1.25) / fine.time;
+        EXPECT_LE(std::abs(b.time - fine.time), 2.0 * b.tolerance / rate + 1e-3) << "h = " << h << ": " << b.time << " against " << fine.time;
+        std::printf("h = %g s: break at %.6f s (fine step %.6f s), tension %.1f N, threshold %.1f N, tolerance %.1f N\n", h,
+                    b.time, fine.time, b.tension, b.threshold, b.tolerance);
+    }
+}
+
+// States saved before, at and after a break restore into a fresh instance and continue bit for bit: the outputs and
+// the state each saves next. (Saving makes each line's next step evaluate a new Jacobian, as a restore does: a
+// continuation is compared with the run that saved at the same times.)
+TEST(LineFailure, StatesAcrossABreakRestoreBitForBitInAFreshInstance) {
+    const std::string deck = spread("1  4  1  0.9  0\n");
+    Built a = build(deck);
+    std::string error;
+    ASSERT_TRUE(a.system->initialize(0.0, platform_at(0, 0, 0, 0), error)) << error;
+    auto input = [](double t) { return platform_at(2.0 * std::sin(0.3 * t), 1.0 * std::sin(0.2 * t), 0.6 * std::cos(0.3 * t), 0.2 * std::cos(0.2 * t)); };
+    const double h = 0.4;
+    std::vector<std::vector<unsigned char>> saved;
+    std::vector<double> savedAt;
+    double t = 0.0;
+    for (int k = 0; k < 8; ++k) {
+        if (k == 1 || k == 3 || k == 5) {  // before (0.4 s), just after (1.2 s: the step of 0.8-1.2 s held it), after
+            saved.emplace_back(a.system->state_size());
+            a.system->save_state(saved.back().data());
+            savedAt.push_back(t);
+        }
+        ASSERT_TRUE(a.system->step(t, h, input(t), error)) << error;
+        t += h;
+    }
+    std::vector<unsigned char> end(a.system->state_size());
+    a.system->save_state(end.data());
+    const UCOutputs last = a.system->outputs();
+    ASSERT_EQ(last.mooringLine[0].broken, 1.0);
+    for (size_t i = 0; i < saved.size(); ++i) {
+        Built b = build(deck);
+        ASSERT_TRUE(b.system->restore_state(saved[i].data(), saved[i].size(), error)) << error;
+        auto run_on = [&](uc::MooringSystem& s) {
+            for (double tt = savedAt[i]; tt < 8 * h - 1e-9; tt += h) {
+                for (size_t j = i + 1; j < saved.size(); ++j) {
+                    if (savedAt[j] != tt) continue;
+                    std::vector<unsigned char> as(s.state_size());
+                    s.save_state(as.data());
+                    EXPECT_TRUE(as == saved[j]) << "state " << j << " saved again from state " << i;
+                }
+                ASSERT_TRUE(s.step(tt, h, input(tt), error)) << error;
+            }
+        };
+        run_on(*b.system);
+        EXPECT_EQ(std::memcmp(&last, &b.system->outputs(), sizeof last), 0) << "state " << i;
+        std::vector<unsigned char> again(b.system->state_size());
+        b.system->save_state(again.data());
+        EXPECT_TRUE(again == end) << "state " << i;
+        // and the instance that ran on, taken back to before the break, continues as it did
+        ASSERT_TRUE(a.system->restore_state(saved[i].data(), saved[i].size(), error)) << error;
+        run_on(*a.system);
+        EXPECT_EQ(std::memcmp(&last, &a.system->outputs(), sizeof last), 0) << "state " << i << " in the same instance";
+    }
+    // a state of the format before the failures (version 3) is refused, saying so
+    std::vector<unsigned char> old = saved[0];
+    const std::uint32_t three = 3;
+    std::memcpy(old.data() + sizeof(std::uint32_t), &three, sizeof three);
+    EXPECT_FALSE(a.system->restore_state(old.data(), old.size(), error));
+    EXPECT_EQ(error.rfind("saved state is a mooring system's state of format version 3, this FMU reads version 4", 0), 0u) << error;
+}
+
+// Two lines listed together stay joined at the new free point: lines 1 and 2 both on point 4 detach at 1.5 s; from
+// then on their ends pull on each other alone (equal tensions at the point, the massless point's balance) and the
+// platform carries line 3 only. The two taut lines snap together at a point without mass: in steps of 0.05 s (at
+// 0.5 s the free point's iteration does not converge, and the step fails asking for a shorter one).
+TEST(LineFailure, LinesThatBreakTogetherStayJoinedAtTheirFreePoint) {
+    std::string deck = spread("1  4  1,2  1.5  0\n");
+    const std::string line2 = "2         main        2         5";
+    ASSERT_NE(deck.find(line2), std::string::npos);
+    deck.replace(deck.find(line2), line2.size(), "2         main        2         4");
+    Built b = build(deck);
+    uc::MooringSystem& s = *b.system;
+    std::string error;
+    ASSERT_TRUE(s.initialize(0.0, platform_at(0, 0, 0, 0), error)) << error;
+    double t = 0.0;
+    for (int k = 0; k < 80; ++k) {
+        ASSERT_TRUE(s.step(t, 0.05, platform_at(0, 0, 0, 0), error)) << error << " at t = " << t;
+        t += 0.05;
+    }
+    const UCOutputs& o = s.outputs();
+    EXPECT_EQ(o.mooringLine[0].broken, 1.0);
+    EXPECT_EQ(o.mooringLine[1].broken, 1.0);
+    EXPECT_EQ(o.mooringLine[1].breakTime, 1.5);
+    EXPECT_EQ(o.mooringLine[2].broken, 0.0);
+    const double T1 = o.mooringLine[0].fairleadTension, T2 = o.mooringLine[1].fairleadTension;
+    EXPECT_GT(T1, 1e4) << "the two lines hold each other up";
+    EXPECT_NEAR(T1, T2, 1e-4 * T1) << "the massless point's balance";
+    const double body = std::hypot(std::hypot(o.bodyLoad[0].force[0], o.bodyLoad[0].force[1]), o.bodyLoad[0].force[2]);
+    EXPECT_NEAR(body, o.mooringLine[2].fairleadTension, 1e-9 * body) << "the platform carries line 3 alone";
+}
