@@ -3,7 +3,7 @@
  * the finite-depth dispersion and the SplitMix64 phases, the one implementation of both the cable's sea
  * state (its kinematics in waves.cpp) and the partner FMUs' (fmu/partners/sea), so that a partner given
  * the same waves.* parameters sees the same sea as the cable (tests/core/test_partner_sea_state.cpp).
- * The ramp and the elevation here are the partners': the cable's own (waves.cpp) round differently.
+ * The ramp here is the cable's too; its elevation (waves.cpp, with the phases cached per time) is the same sum.
  *
  * Convention: a component of amplitude a, frequency w, wavenumber k, direction of travel beta (from +x
  * toward +y) and phase p has the elevation a cos(k (x cos beta + y sin beta) - w t + p); the regular wave

@@ -186,9 +186,9 @@ const SeaState::Phases& SeaState::phases_at(Phases& cache, double t) const {
 }
 
 double SeaState::ramp(double t) const {
-    if (!(rampTime_ > 0.0) || t >= rampTime_) return 1.0;
-    if (t <= 0.0) return 0.0;
-    return 0.5 * (1.0 - std::cos(kPi * t / rampTime_));
+    double f, df, ddf;
+    pm_sea_ramp(rampTime_, t, &f, &df, &ddf);  // the partners' ramp (sea_state.h): one sea for both
+    return f;
 }
 
 double SeaState::elevation(double x, double y, double t) const {

@@ -47,13 +47,15 @@ def test_chain_model_predicts_the_measured_limit_of_the_explicit_coupling(fmu_fi
     three FMUs with the explicit far end, in the steady tow and the start of the turn (first 30 s): at 0.02 s
     they hold the internal body's equilibrium to within the integrator's tension tolerance (the
     default tensionTolerance, 1e-3 of the tension scale, here the initial tow tension), at 0.05 s
-    round-off grows into tens of kN within 30 s, as the model says."""
+    round-off grows into tens of kN within 60 s, as the model says. How soon depends on the round-off
+    that seeds it (any change of the cable's arithmetic moves it by seconds), so the unstable run is given
+    twice the stable one's time."""
     h_crit = C.critical_step(500.0, C.Chain.hopland(), "gauss-seidel")
     assert 0.02 < h_crit < 0.05
-    for h, stable in ((0.02, True), (0.05, False)):
-        internal = S.run("turn90", step=h, coupling="internal", body=S.Body(400.0), duration=30.0)
+    for h, stable, duration in ((0.02, True, 30.0), (0.05, False, 60.0)):
+        internal = S.run("turn90", step=h, coupling="internal", body=S.Body(400.0), duration=duration)
         try:
-            explicit = S.run("turn90", step=h, coupling="explicit", body=S.Body(400.0), duration=30.0)
+            explicit = S.run("turn90", step=h, coupling="explicit", body=S.Body(400.0), duration=duration)
             error = np.max(np.abs(explicit["cable.towTension"] - internal["cable.towTension"]))
         except (S.Diverged, FMICallException):
             error = np.inf
