@@ -148,6 +148,7 @@ struct MooringDeckLine {
     MooringEnd fairlead, far;                // the line runs from its fairlead (s = 0) to its far end
     int fairleadPoint = 0, farPoint = 0;     // the deck points (IDs) of its ends (farPoint 0: a free far end)
     bool farFree = false;                    // the far end is a Free point: farBody (a towed body), or none
+    bool farDetaches = false;                // a failure detaches its Fixed far end: the end is driven (held still until then)
     LineFilePoint farBody;
 };
 

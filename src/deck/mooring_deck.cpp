@@ -362,12 +362,6 @@ bool resolve_failure(const MooringDeck& deck, int point, const std::vector<int>&
                     "lines) or is not on the line; a failure there is not supported (docs/line_failure.md)";
             return false;
         }
-        const MooringEnd& end = e.end == 0 ? l.fairlead : l.far;
-        if (end.kind == MooringEnd::Kind::Fixed) {
-            error = which + ": the point is fixed (an anchor, or a Fixed body's point); a failure at a fixed point is "
-                    "not supported (docs/line_failure.md): give the failure at the line's other end";
-            return false;
-        }
         for (const MooringFailure& other : deck.failures) {
             for (const MooringFailure::End& o : other.ends) {
                 if (o.line == e.line && o.end == e.end) {
@@ -407,7 +401,9 @@ bool mooring_line_params(const MooringDeck& deck, int k, const UCParams& base, U
     }
     p = base;
     if (!apply_line_file(line, p, error)) return false;
-    if (!l.farFree && l.far.kind != MooringEnd::Kind::Fixed) p.bottomEnd = UC_BOTTOM_EXTERNAL;
+    // a far end on a coupled object or a free node is driven; so is an anchor a failure detaches (held at the
+    // anchor until the break, then on the failure's free node)
+    if (!l.farFree && (l.far.kind != MooringEnd::Kind::Fixed || l.farDetaches)) p.bottomEnd = UC_BOTTOM_EXTERNAL;
     p.mooringSystem = 0;  // each line is one line
     p.failureLine = 0;    // (the system's failures: MooringSystem)
     p.failurePoint = 0;

@@ -116,6 +116,35 @@ bool MooringSystem::build(std::string& error) {
                 "(winchMode 0)";
         return false;
     }
+    failures_ = deck_.failures;
+    if (base_.failureLine > 0) {  // the failure.* parameters' failure, after the deck's
+        char text[160];
+        std::snprintf(text, sizeof text, "failure.line = %d, failure.point = %d: ", base_.failureLine, base_.failurePoint);
+        if (base_.failureLine > deck_.deckLines) {
+            error = text + std::string("the deck has ") + std::to_string(deck_.deckLines) + " lines";
+            return false;
+        }
+        if (base_.failureTime == 0.0 && base_.failureTension == 0.0) {
+            error = text + std::string("failure.time and failure.tension are both 0: the line would never break "
+                                       "(give a time in s, a tension in N, or both: the first reached breaks it)");
+            return false;
+        }
+        MooringFailure f;
+        f.id = static_cast<int>(failures_.size()) + 1;
+        f.time = base_.failureTime;
+        f.tension = base_.failureTension;
+        if (!resolve_failure(deck_, base_.failurePoint, {base_.failureLine - 1}, f, error)) {
+            error = text + error;
+            return false;
+        }
+        failures_.push_back(f);
+    }
+    for (const MooringFailure& f : failures_) {  // an anchor that detaches: its line's far end is driven
+        for (const MooringFailure::End& e : f.ends) {
+            MooringDeckLine& l = deck_.lines[e.line];
+            if (e.end == 1 && !l.farFree && l.far.kind == MooringEnd::Kind::Fixed) l.farDetaches = true;
+        }
+    }
     for (size_t k = 0; k < deck_.lines.size(); ++k) {
         UCParams p;
         if (!mooring_line_params(deck_, static_cast<int>(k), base_, p, error)) return false;
@@ -145,29 +174,6 @@ bool MooringSystem::build(std::string& error) {
         pointLoads_.push_back(points);
         hangingWeight_.push_back(weight);
         describe_line(static_cast<int>(k), p);
-    }
-    failures_ = deck_.failures;
-    if (base_.failureLine > 0) {  // the failure.* parameters' failure, after the deck's
-        char text[160];
-        std::snprintf(text, sizeof text, "failure.line = %d, failure.point = %d: ", base_.failureLine, base_.failurePoint);
-        if (base_.failureLine > deck_.deckLines) {
-            error = text + std::string("the deck has ") + std::to_string(deck_.deckLines) + " lines";
-            return false;
-        }
-        if (base_.failureTime == 0.0 && base_.failureTension == 0.0) {
-            error = text + std::string("failure.time and failure.tension are both 0: the line would never break "
-                                       "(give a time in s, a tension in N, or both: the first reached breaks it)");
-            return false;
-        }
-        MooringFailure f;
-        f.id = static_cast<int>(failures_.size()) + 1;
-        f.time = base_.failureTime;
-        f.tension = base_.failureTension;
-        if (!resolve_failure(deck_, base_.failurePoint, {base_.failureLine - 1}, f, error)) {
-            error = text + error;
-            return false;
-        }
-        failures_.push_back(f);
     }
     failureState_.assign(failures_.size(), FailureState{0.0, 0.0, 0.0});
     deck0_ = deck_;

@@ -190,6 +190,7 @@ public:
     const FreeNodeMotion& node_motion(int n) const { return motion_[n]; }
     // The line failures (the deck's FAILURE rows, then the failure.* parameters') and their states.
     int n_failures() const { return static_cast<int>(failures_.size()); }
+    const MooringFailure& failure(int f) const { return failures_[f]; }
     const FailureState& failure_state(int f) const { return failureState_[f]; }
     // The largest tension of failure f's lines at its point (each line's end tension there) [N].
     double failure_tension(int f) const;

@@ -76,11 +76,27 @@ def _refusal(make_cable, parameters: dict) -> str:
     return "\n".join(text for status, _, text in c.messages if status == "ERROR")
 
 
-def test_a_failure_on_one_line_or_at_an_anchor_is_refused_at_the_start(make_cable):
+def test_a_failure_on_one_line_is_refused_at_the_start(make_cable):
     log = _refusal(make_cable, {"lineFile": str(ms.DECKS / "chain.dat"), "failure.line": 1, "failure.time": 5.0})
     assert "failure.line = 1: a line failure is supported in a mooring system" in log, log
-    log = _refusal(make_cable, _parameters(**{"failure.line": 1, "failure.point": 1, "failure.time": 5.0}))
-    assert "failure.line = 1, failure.point = 1: line 1 at point 1: the point is fixed (an anchor" in log, log
+
+
+def test_an_anchor_lets_go_at_its_time(make_cable):
+    # failure.point 1: line 1's anchor; its end there goes on bare, the line hangs from its fairlead
+    c = make_cable(parameters=_parameters(**{"failure.line": 1, "failure.point": 1, "failure.time": 1.2}),
+                   logging_on=True)
+    c.initialize()
+    before = c.get("line[1].anchorTension")
+    history = []
+    for k in range(4):
+        c.do_step(0.5, t=0.5 * k)
+        history.append(c.get_reals(["line[1].broken", "line[1].breakTime", "line[1].anchorTension",
+                                    "line[1].fairleadTension"]))
+    history = np.array(history)
+    assert list(history[:, 0]) == [0.0, 0.0, 1.0, 1.0] and history[-1, 1] == 1.2
+    assert history[-1, 2] < 1e-3 * before  # a bare end carries no tension
+    assert history[-1, 3] > 1e4  # the line hangs from its fairlead
+    assert any("line 1 detached from point 1" in m for _, _, m in c.messages), c.messages
 
 
 def test_a_scene_failure_table_sets_the_failure_parameters_and_is_checked():
