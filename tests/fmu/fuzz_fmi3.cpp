@@ -1108,6 +1108,65 @@ struct Regression {
     Regression& operator=(const Regression&) = delete;
 };
 
+// ---- arrays: fixed call sequences of the arrays checks (the fuzzer's arrays() draws them at random) ----------
+
+// The FMI 3.0 arrays body.q0 (stride 4), point.vz (16, stride 3) and the scalar tow.x, in one call, with the
+// FMI 2.0 value reference of each element by its name (body[k].q0, point[k].vz): independent of the stride
+// table the adapter expands arrays with (the elements after the first read as scalars, as the FMI 2.0
+// adapter knows them).
+struct ArraysCall {
+    std::vector<fmi3ValueReference> vrs = {vr_of("body[1].q0"), vr_of("tow.x"), vr_of("point[1].vz")};
+    std::vector<fmi3ValueReference> elements;
+    std::vector<double> values;
+    ArraysCall() {
+        for (int k = 1; k <= 4; ++k) elements.push_back(vr_of("body[" + std::to_string(k) + "].q0"));
+        elements.push_back(vr_of("tow.x"));
+        for (int k = 1; k <= 16; ++k) elements.push_back(vr_of("point[" + std::to_string(k) + "].vz"));
+        for (size_t k = 0; k < elements.size(); ++k) values.push_back(0.25 + 0.125 * (double)k);
+    }
+};
+
+// "" if every element reads (as an array and by its element's value reference) bit for bit as `expected`.
+std::string arrays_read_as(const Regression& r, const ArraysCall& a, const std::vector<double>& expected) {
+    std::vector<double> got(expected.size(), 0.0), each(expected.size(), 0.0);
+    const fmi3Status st = fmi3().GetFloat64(r.c, a.vrs.data(), a.vrs.size(), got.data(), got.size());
+    if (st != fmi3OK) return std::string("reading the arrays returned ") + status_name(st);
+    for (size_t k = 0; k < expected.size(); ++k) {
+        // An array's first element has the array's value reference: it reads as the array, above.
+        const bool first = std::find(a.vrs.begin(), a.vrs.end(), a.elements[k]) != a.vrs.end();
+        if (first) {
+            each[k] = got[k];
+        } else if (fmi3().GetFloat64(r.c, &a.elements[k], 1, &each[k], 1) != fmi3OK) {
+            return "element " + std::to_string(k) + " does not read by its value reference";
+        }
+        if (std::memcmp(&got[k], &expected[k], sizeof(double)) != 0 ||
+            std::memcmp(&each[k], &expected[k], sizeof(double)) != 0) {
+            return "element " + std::to_string(k) + " reads " + std::to_string(got[k]) + " as an array and " +
+                   std::to_string(each[k]) + " by its value reference, " + std::to_string(expected[k]) + " expected";
+        }
+    }
+    return "";
+}
+
+// Sets the arrays (accepted, checked), then makes `refused` if given (which must return fmi3Error with a
+// message) and checks that every element still reads as set.
+std::string refused_arrays_call(fmi3Status (*refused)(const Regression&, const ArraysCall&)) {
+    Regression r;
+    const ArraysCall a;
+    if (r.c == nullptr) return "no instance";
+    const fmi3Status set = fmi3().SetFloat64(r.c, a.vrs.data(), a.vrs.size(), a.values.data(), a.values.size());
+    if (set != fmi3OK) return std::string("the right call returned ") + status_name(set);
+    const std::string accepted = arrays_read_as(r, a, a.values);
+    if (!accepted.empty()) return "after the accepted set: " + accepted;
+    if (refused == nullptr) return "";
+    r.log.lines.clear();
+    const fmi3Status st = refused(r, a);
+    if (st != fmi3Error) return std::string("the wrong call returned ") + status_name(st);
+    if (r.log.lines.empty()) return "refused without a log message";
+    const std::string unchanged = arrays_read_as(r, a, a.values);
+    return unchanged.empty() ? "" : "after the refused set: " + unchanged;
+}
+
 // Each case: a name and a check that returns "" when the FMU behaves, else what it did.
 int run_fmi3_regressions() {
     const std::vector<std::pair<const char*, std::string (*)()>> cases = {
@@ -1118,6 +1177,45 @@ int run_fmi3_regressions() {
              if (r.c == nullptr) return "no instance";
              const fmi3Status st = fmi3().GetBoolean(r.c, &vr, 1, nullptr, 1);
              if (st != fmi3Error) return std::string("returned ") + status_name(st);
+             return r.log.lines.empty() ? "refused without a log message" : "";
+         }},
+        {"fmi3SetFloat64 of arrays mixed with a scalar lands element by element (by the elements' own value references)",
+         []() -> std::string { return refused_arrays_call(nullptr); }},
+        {"fmi3SetFloat64 one value short (the last array cut) is refused and changes no element",
+         []() -> std::string {
+             return refused_arrays_call([](const Regression& r, const ArraysCall& a) {
+                 std::vector<double> v(a.values.size() - 1, 7.5);
+                 return fmi3().SetFloat64(r.c, a.vrs.data(), a.vrs.size(), v.data(), v.size());
+             });
+         }},
+        {"fmi3SetFloat64 of arrays with NaN as the last element is refused and changes no element",
+         []() -> std::string {
+             return refused_arrays_call([](const Regression& r, const ArraysCall& a) {
+                 std::vector<double> v(a.values.size(), 7.5);
+                 v.back() = std::nan("");
+                 return fmi3().SetFloat64(r.c, a.vrs.data(), a.vrs.size(), v.data(), v.size());
+             });
+         }},
+        {"fmi3SetFloat64 of arrays with an output array last is refused and changes no element",
+         []() -> std::string {
+             return refused_arrays_call([](const Regression& r, const ArraysCall& a) {
+                 std::vector<fmi3ValueReference> vrs = a.vrs;
+                 vrs.push_back(vr_of("body[1].force.x"));  // body.force.x [4], an output
+                 std::vector<double> v(a.values.size() + 4, 7.5);
+                 return fmi3().SetFloat64(r.c, vrs.data(), vrs.size(), v.data(), v.size());
+             });
+         }},
+        {"fmi3GetFloat64 of arrays one value short is refused and writes nothing",
+         []() -> std::string {
+             Regression r;
+             const ArraysCall a;
+             if (r.c == nullptr) return "no instance";
+             std::vector<double> v(a.values.size() - 1, 7.5);
+             const fmi3Status st = fmi3().GetFloat64(r.c, a.vrs.data(), a.vrs.size(), v.data(), v.size());
+             if (st != fmi3Error) return std::string("returned ") + status_name(st);
+             for (const double x : v) {
+                 if (x != 7.5) return "wrote into the array";
+             }
              return r.log.lines.empty() ? "refused without a log message" : "";
          }},
     };
