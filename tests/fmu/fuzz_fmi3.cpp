@@ -24,6 +24,9 @@
 //     function the FMU does not provide; a failed instantiation returns NULL and logs why; fmi3Reset of a
 //     live instance succeeds;
 //   - a refused fmi3SetFloat64 leaves every value it was given as it was (read back after the refusal);
+//   - arrays (arrays(): arrays mixed with scalars, elements and time, right and wrong counts): a refused
+//     fmi3SetFloat64 leaves every element bit for bit as it was, an accepted one reads back as set, a get
+//     refused for its count writes nothing into the importer's array;
 //   - fmi3DoStep reports no event, no early return and a finite lastSuccessfulTime; the Float64 outputs
 //     (every array element) read after a successful step are finite.
 // Crashes, leaks and undefined behaviour are the sanitizers' job (scripts/fuzz_fmi --sanitize --fmi3).
