@@ -24,6 +24,9 @@
 //     function the FMU does not provide; a failed instantiation returns NULL and logs why; fmi3Reset of a
 //     live instance succeeds;
 //   - a refused fmi3SetFloat64 leaves every value it was given as it was (read back after the refusal);
+//   - arrays (arrays(): arrays mixed with scalars, elements and time, right and wrong counts): a refused
+//     fmi3SetFloat64 leaves every element bit for bit as it was, an accepted one reads back as set, a get
+//     refused for its count writes nothing into the importer's array;
 //   - fmi3DoStep reports no event, no early return and a finite lastSuccessfulTime; the Float64 outputs
 //     (every array element) read after a successful step are finite.
 // Crashes, leaks and undefined behaviour are the sanitizers' job (scripts/fuzz_fmi --sanitize --fmi3).
@@ -229,6 +232,10 @@ public:
             if (v.count == 4 && v.first->causality == UC_CAUSALITY_INPUT && v.name.rfind("body.", 0) == 0) {
                 arrayKnowns_.push_back(v.vr);
             }
+            if (v.first->type == UC_TYPE_REAL) {
+                (v.count == 1 ? realScalars_ : v.first->causality == UC_CAUSALITY_INPUT ? arrayInputs_ : arrayOutputs_)
+                    .push_back(k);
+            }
         }
         for (int k = 0; k < 3; ++k) {
             slots_[k].deckPath = "/tmp/uc_fmi3_fuzz_" + std::to_string(getpid()) + "_" + std::to_string(k) + ".dat";
@@ -251,6 +258,10 @@ private:
                     "unchanged; decks: %lld instances given one (%lld of them edited), %lld edits under saved states\n",
                     vars_.size(), arrayCount(), elements_.size(), wrongCalls_, readBacks_, deckInstances_, deckMutated_,
                     deckEdits_);
+        std::printf("fmi3 arrays: %lld calls of arrays mixed with scalars; %lld refused fmi3SetFloat64 read back "
+                    "unchanged (every value given), %lld accepted read back as set, %lld refused fmi3GetFloat64 left "
+                    "the importer's array untouched\n",
+                    arrayCalls_, arrayRefusedReadBacks_, arrayAcceptedReadBacks_, arrayRefusedGets_);
     }
 
     size_t arrayCount() const {
@@ -585,6 +596,168 @@ private:
               mismatch || nulls || refused);
     }
 
+    // ---- arrays --------------------------------------------------------------------------------------
+    // A variable of an arrays call and its elements' FMI 2.0 scalars, in order (nullptr: time).
+    struct Part {
+        Pick pick;
+        std::vector<const UCVariable*> scalars;
+    };
+
+    Part array_part(const std::vector<size_t>& from) {
+        const Var3& v = vars_[from[integer(0, (int)from.size() - 1)]];
+        Part part{Pick{v.vr, v.count, Kind::Variable, v.first}, {}};
+        for (size_t i = 0; i < v.count; ++i) {
+            part.scalars.push_back(uc_variable_find(v.vr + (fmi3ValueReference)i * v.stride, UC_TYPE_REAL));
+        }
+        return part;
+    }
+
+    // One to four Float64 variables, an array among them (an input mostly, or an output), the others arrays,
+    // scalars, elements of arrays or time, in random order.
+    std::vector<Part> array_parts() {
+        std::vector<Part> parts;
+        const int n = integer(1, 4);
+        for (int k = 0; k < n; ++k) {
+            const double r = uniform(0.0, 1.0);
+            if (k == 0 || r < 0.5) {
+                parts.push_back(array_part(chance(0.8) || arrayOutputs_.empty() ? arrayInputs_ : arrayOutputs_));
+            } else if (r < 0.88) {
+                const Var3& v = vars_[realScalars_[integer(0, (int)realScalars_.size() - 1)]];
+                parts.push_back(Part{Pick{v.vr, 1, Kind::Variable, v.first}, {v.first}});
+            } else if (r < 0.97) {
+                const UCVariable* e = elements_[integer(0, (int)elements_.size() - 1)];
+                parts.push_back(Part{Pick{e->vr, 1, Kind::Element, e}, {e}});
+            } else {
+                parts.push_back(Part{Pick{UC_FMI3_TIME_VR, 1, Kind::Time, nullptr}, {nullptr}});
+            }
+        }
+        std::shuffle(parts.begin(), parts.end(), rng_);
+        return parts;
+    }
+
+    // A count for `expected` elements whose last array is `lastArray` elements long: right, or wrong (a part of
+    // an array, one short, one over, none, a few over).
+    size_t array_count(size_t expected, size_t lastArray, bool* mismatch) {
+        *mismatch = chance(0.3);
+        if (!*mismatch) return expected;
+        if (chance(0.4) && lastArray > 1) return expected - (size_t)integer(1, (int)lastArray - 1);
+        return wrong_count(expected);
+    }
+
+    // The machine states in which every Float64 variable reads.
+    static bool readable(const Slot3& s) {
+        return s.phase == Phase::Init || s.phase == Phase::Stepping || s.phase == Phase::Terminated ||
+               s.phase == Phase::Error;
+    }
+
+    // fmi3SetFloat64 and fmi3GetFloat64 of arrays mixed with scalars, with the right and wrong counts. Checked,
+    // besides after(): a refused set leaves every value of every variable given as it was (read back before and
+    // after, element by element); an accepted set of inputs and parameters reads back as set; a refused get for
+    // a count that does not match writes nothing into the importer's array.
+    void arrays(Slot3& s) {
+        ++arrayCalls_;
+        const std::vector<Part> parts = array_parts();
+        std::vector<fmi3ValueReference> vrs;
+        std::vector<const UCVariable*> scalars;
+        size_t lastArray = 0;
+        bool refused = false;
+        std::string call;
+        for (const Part& part : parts) {
+            vrs.push_back(part.pick.vr);
+            scalars.insert(scalars.end(), part.scalars.begin(), part.scalars.end());
+            if (part.pick.count > 1) lastArray = part.pick.count;
+            call += (call.empty() ? "" : " ") + std::to_string(part.pick.vr) +
+                    (part.pick.count > 1 ? "[" + std::to_string(part.pick.count) + "]" : "");
+        }
+        const size_t expected = scalars.size();
+        bool mismatch = false;
+        const size_t nValues = array_count(expected, lastArray, &mismatch);
+        if (chance(0.35)) {
+            array_get(s, vrs, expected, nValues, mismatch, call);
+            return;
+        }
+        for (const Part& part : parts) refused = refused || set_refused(part.pick, s);
+        std::vector<double> values(nValues);
+        bool finite = true;
+        for (size_t at = 0; at < nValues; ++at) {
+            const UCVariable* v = at < expected ? scalars[at] : nullptr;
+            values[at] = v != nullptr ? plausible(*v) : uniform(0.0, 10.0);
+        }
+        if (nValues > 0 && chance(0.25)) values[integer(0, (int)nValues - 1)] = hostile_double();
+        for (const double x : values) finite = finite && std::isfinite(x);
+        call = "fmi3SetFloat64(" + call + " = " + std::to_string(nValues) + " values for " + std::to_string(expected) +
+               " elements" + (finite ? "" : ", not all finite") + ")";
+        const bool wrong = mismatch || refused || !finite;
+        std::vector<double> before, now;
+        const bool haveBefore = readable(s) && chance(0.7) && read_all(s, vrs, expected, &before, "before a set");
+        trace(call);
+        const fmi3Status st = api().SetFloat64(s.c, vrs.data(), vrs.size(), values.data(), nValues);
+        after(s, "fmi3SetFloat64", st, OnError::ErrorState, wrong);
+        if (st == fmi3Error && haveBefore && read_all(s, vrs, expected, &now, "after the refused set")) {
+            ++arrayRefusedReadBacks_;
+            const size_t at = first_difference(before, now);
+            if (at < expected) violation("a refused " + call + " changed element " + std::to_string(at) + element_name(scalars[at]) + ": " + std::to_string(before[at]) + " -> " + std::to_string(now[at]), s);
+        }
+        if (st == fmi3OK && !wrong && readable(s) && read_all(s, vrs, expected, &now, "after the set")) {
+            ++arrayAcceptedReadBacks_;
+            // What each FMI 2.0 scalar holds now: the last value given for it (a variable may be given twice).
+            std::map<const UCVariable*, double> set;
+            for (size_t at = 0; at < expected; ++at) set[scalars[at]] = values[at];
+            for (size_t at = 0; at < expected; ++at) {
+                const UCVariable* v = scalars[at];
+                if (v == nullptr || v->causality == UC_CAUSALITY_OUTPUT) continue;
+                if (std::memcmp(&set[v], &now[at], sizeof(double)) != 0) {
+                    violation("after an accepted " + call + ", element " + std::to_string(at) + element_name(v) +
+                                  " reads " + std::to_string(now[at]) + ", set " + std::to_string(set[v]), s);
+                    break;
+                }
+            }
+        }
+    }
+
+    void array_get(Slot3& s, const std::vector<fmi3ValueReference>& vrs, size_t expected, size_t nValues,
+                   bool mismatch, const std::string& variables) {
+        static const uint64_t kUntouched = 0x7ff4dead0000beefULL;  // a signalling NaN no getter writes
+        std::vector<double> values(nValues);
+        for (double& x : values) std::memcpy(&x, &kUntouched, sizeof x);
+        const bool wrong = mismatch || get_refused_at(s);
+        trace("fmi3GetFloat64(" + variables + " = " + std::to_string(nValues) + " values for " +
+              std::to_string(expected) + " elements)");
+        const fmi3Status st = api().GetFloat64(s.c, vrs.data(), vrs.size(), values.data(), nValues);
+        after(s, "fmi3GetFloat64", st, mismatch ? OnError::Unchanged : OnError::ErrorState, wrong);
+        if (mismatch && st == fmi3Error) {
+            ++arrayRefusedGets_;
+            for (size_t at = 0; at < nValues; ++at) {
+                if (std::memcmp(&values[at], &kUntouched, sizeof(double)) != 0) {
+                    violation("fmi3GetFloat64 refused for its count wrote values[" + std::to_string(at) + "]", s);
+                    break;
+                }
+            }
+        }
+    }
+
+    // Whether any get is refused in the machine state (before initialization).
+    static bool get_refused_at(const Slot3& s) { return s.phase == Phase::Instantiated; }
+
+    // Every element of the variables vrs, read with the right count; false if the get is not OK or Warning.
+    bool read_all(Slot3& s, const std::vector<fmi3ValueReference>& vrs, size_t count, std::vector<double>* out,
+                  const char* when) {
+        out->assign(count, 0.0);
+        trace(std::string("fmi3GetFloat64 (") + when + ")");
+        const fmi3Status st = api().GetFloat64(s.c, vrs.data(), vrs.size(), out->data(), count);
+        after(s, "fmi3GetFloat64", st, OnError::ErrorState);
+        return st == fmi3OK || st == fmi3Warning;
+    }
+
+    static size_t first_difference(const std::vector<double>& a, const std::vector<double>& b) {
+        for (size_t k = 0; k < a.size() && k < b.size(); ++k) {
+            if (std::memcmp(&a[k], &b[k], sizeof(double)) != 0) return k;
+        }
+        return std::max(a.size(), b.size());
+    }
+
+    static std::string element_name(const UCVariable* v) { return v != nullptr ? std::string(" (") + v->name + ")" : " (time)"; }
+
     // Int32, Boolean and String: one value per value reference.
     void scalars(Slot3& s) {
         const UCVarType type = (UCVarType)integer(1, 3);
@@ -859,8 +1032,10 @@ private:
                   phase == Phase::Instantiated || phase == Phase::Stepping || phase == Phase::Terminated ||
                       phase == Phase::Error);
             if (st == fmi3OK) s.phase = Phase::Stepping;
-        } else if (action < 28) {
+        } else if (action < 20) {
             set_float64(s);
+        } else if (action < 28) {
+            arrays(s);
         } else if (action < 38) {
             get_float64(s);
         } else if (action < 44) {
@@ -909,9 +1084,11 @@ private:
     std::vector<fmi3ValueReference> outputVrs_;
     size_t outputElements_ = 0;
     std::vector<fmi3ValueReference> scalarUnknowns_, scalarKnowns_, arrayUnknowns_, arrayKnowns_;
+    std::vector<size_t> arrayInputs_, arrayOutputs_, realScalars_;  // indices into vars_ (Float64 only)
     fmi3ValueReference lineFileVr_ = 0;
     Slot3 slots_[3];
     long long wrongCalls_ = 0, readBacks_ = 0, deckInstances_ = 0, deckMutated_ = 0, deckEdits_ = 0;
+    long long arrayCalls_ = 0, arrayRefusedReadBacks_ = 0, arrayAcceptedReadBacks_ = 0, arrayRefusedGets_ = 0;
 };
 
 // ---- regressions: the fuzzer's findings, minimised to fixed call sequences ------------------------------
@@ -934,6 +1111,65 @@ struct Regression {
     Regression& operator=(const Regression&) = delete;
 };
 
+// ---- arrays: fixed call sequences of the arrays checks (the fuzzer's arrays() draws them at random) ----------
+
+// The FMI 3.0 arrays body.q0 (stride 4), point.vz (16, stride 3) and the scalar tow.x, in one call, with the
+// FMI 2.0 value reference of each element by its name (body[k].q0, point[k].vz): independent of the stride
+// table the adapter expands arrays with (the elements after the first read as scalars, as the FMI 2.0
+// adapter knows them).
+struct ArraysCall {
+    std::vector<fmi3ValueReference> vrs = {vr_of("body[1].q0"), vr_of("tow.x"), vr_of("point[1].vz")};
+    std::vector<fmi3ValueReference> elements;
+    std::vector<double> values;
+    ArraysCall() {
+        for (int k = 1; k <= 4; ++k) elements.push_back(vr_of("body[" + std::to_string(k) + "].q0"));
+        elements.push_back(vr_of("tow.x"));
+        for (int k = 1; k <= 16; ++k) elements.push_back(vr_of("point[" + std::to_string(k) + "].vz"));
+        for (size_t k = 0; k < elements.size(); ++k) values.push_back(0.25 + 0.125 * (double)k);
+    }
+};
+
+// "" if every element reads (as an array and by its element's value reference) bit for bit as `expected`.
+std::string arrays_read_as(const Regression& r, const ArraysCall& a, const std::vector<double>& expected) {
+    std::vector<double> got(expected.size(), 0.0), each(expected.size(), 0.0);
+    const fmi3Status st = fmi3().GetFloat64(r.c, a.vrs.data(), a.vrs.size(), got.data(), got.size());
+    if (st != fmi3OK) return std::string("reading the arrays returned ") + status_name(st);
+    for (size_t k = 0; k < expected.size(); ++k) {
+        // An array's first element has the array's value reference: it reads as the array, above.
+        const bool first = std::find(a.vrs.begin(), a.vrs.end(), a.elements[k]) != a.vrs.end();
+        if (first) {
+            each[k] = got[k];
+        } else if (fmi3().GetFloat64(r.c, &a.elements[k], 1, &each[k], 1) != fmi3OK) {
+            return "element " + std::to_string(k) + " does not read by its value reference";
+        }
+        if (std::memcmp(&got[k], &expected[k], sizeof(double)) != 0 ||
+            std::memcmp(&each[k], &expected[k], sizeof(double)) != 0) {
+            return "element " + std::to_string(k) + " reads " + std::to_string(got[k]) + " as an array and " +
+                   std::to_string(each[k]) + " by its value reference, " + std::to_string(expected[k]) + " expected";
+        }
+    }
+    return "";
+}
+
+// Sets the arrays (accepted, checked), then makes `refused` if given (which must return fmi3Error with a
+// message) and checks that every element still reads as set.
+std::string refused_arrays_call(fmi3Status (*refused)(const Regression&, const ArraysCall&)) {
+    Regression r;
+    const ArraysCall a;
+    if (r.c == nullptr) return "no instance";
+    const fmi3Status set = fmi3().SetFloat64(r.c, a.vrs.data(), a.vrs.size(), a.values.data(), a.values.size());
+    if (set != fmi3OK) return std::string("the right call returned ") + status_name(set);
+    const std::string accepted = arrays_read_as(r, a, a.values);
+    if (!accepted.empty()) return "after the accepted set: " + accepted;
+    if (refused == nullptr) return "";
+    r.log.lines.clear();
+    const fmi3Status st = refused(r, a);
+    if (st != fmi3Error) return std::string("the wrong call returned ") + status_name(st);
+    if (r.log.lines.empty()) return "refused without a log message";
+    const std::string unchanged = arrays_read_as(r, a, a.values);
+    return unchanged.empty() ? "" : "after the refused set: " + unchanged;
+}
+
 // Each case: a name and a check that returns "" when the FMU behaves, else what it did.
 int run_fmi3_regressions() {
     const std::vector<std::pair<const char*, std::string (*)()>> cases = {
@@ -944,6 +1180,45 @@ int run_fmi3_regressions() {
              if (r.c == nullptr) return "no instance";
              const fmi3Status st = fmi3().GetBoolean(r.c, &vr, 1, nullptr, 1);
              if (st != fmi3Error) return std::string("returned ") + status_name(st);
+             return r.log.lines.empty() ? "refused without a log message" : "";
+         }},
+        {"fmi3SetFloat64 of arrays mixed with a scalar lands element by element (by the elements' own value references)",
+         []() -> std::string { return refused_arrays_call(nullptr); }},
+        {"fmi3SetFloat64 one value short (the last array cut) is refused and changes no element",
+         []() -> std::string {
+             return refused_arrays_call([](const Regression& r, const ArraysCall& a) {
+                 std::vector<double> v(a.values.size() - 1, 7.5);
+                 return fmi3().SetFloat64(r.c, a.vrs.data(), a.vrs.size(), v.data(), v.size());
+             });
+         }},
+        {"fmi3SetFloat64 of arrays with NaN as the last element is refused and changes no element",
+         []() -> std::string {
+             return refused_arrays_call([](const Regression& r, const ArraysCall& a) {
+                 std::vector<double> v(a.values.size(), 7.5);
+                 v.back() = std::nan("");
+                 return fmi3().SetFloat64(r.c, a.vrs.data(), a.vrs.size(), v.data(), v.size());
+             });
+         }},
+        {"fmi3SetFloat64 of arrays with an output array last is refused and changes no element",
+         []() -> std::string {
+             return refused_arrays_call([](const Regression& r, const ArraysCall& a) {
+                 std::vector<fmi3ValueReference> vrs = a.vrs;
+                 vrs.push_back(vr_of("body[1].force.x"));  // body.force.x [4], an output
+                 std::vector<double> v(a.values.size() + 4, 7.5);
+                 return fmi3().SetFloat64(r.c, vrs.data(), vrs.size(), v.data(), v.size());
+             });
+         }},
+        {"fmi3GetFloat64 of arrays one value short is refused and writes nothing",
+         []() -> std::string {
+             Regression r;
+             const ArraysCall a;
+             if (r.c == nullptr) return "no instance";
+             std::vector<double> v(a.values.size() - 1, 7.5);
+             const fmi3Status st = fmi3().GetFloat64(r.c, a.vrs.data(), a.vrs.size(), v.data(), v.size());
+             if (st != fmi3Error) return std::string("returned ") + status_name(st);
+             for (const double x : v) {
+                 if (x != 7.5) return "wrote into the array";
+             }
              return r.log.lines.empty() ? "refused without a log message" : "";
          }},
     };
