@@ -72,10 +72,7 @@ def deck_with_points(tmp_path):
     positions), placed where the deck puts them."""
     from studies.comparisons import mooring_system as ms
 
-    text = ms.OC4.read_text().replace(
-        "---------------------- LINES", "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* "
-        "I* Volume CdA* Ca*\n(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n"
-        "1 Coupled 0 0 0 0 0 0 0 0 0 0 0 0\n---------------------- LINES", 1)
+    text = ms.oc4_with_a_coupled_body()
     path = tmp_path / "points.dat"
     path.write_text(text)
     fairleads = ms.read_system_deck(ms.OC4).fairleads

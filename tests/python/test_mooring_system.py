@@ -244,10 +244,7 @@ def test_a_free_body_that_holds_no_line_is_refused_with_the_reason(make_cable, t
 def test_a_coupled_body_of_the_deck_carries_its_points(make_cable, tmp_path):
     """The same three chains with their fairleads on a coupled body of a BODIES section (points Body1, at
     positions relative to it) are the same system as the deck's Vessel points on body 1."""
-    text = ms.OC4.read_text().replace(
-        "---------------------- LINES", "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* "
-        "I* Volume CdA* Ca*\n(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n"
-        "1 Coupled 0 0 0 0 0 0 0 0 0 0 0 0\n---------------------- LINES", 1).replace("Vessel", "Body1")
+    text = ms.oc4_with_a_coupled_body().replace("Vessel", "Body1")
     path = tmp_path / "body.dat"
     path.write_text(text)
     pose = {"body[1].x": 6.0, "body[1].pitch": 0.03}
@@ -479,10 +476,7 @@ def test_vessel_points_of_a_deck_with_bodies_follow_the_point_inputs(make_cable,
     """With a BODIES section the deck's Vessel points are coupled points driven by point[k].* (k their ID):
     placed and moved where body 1 would carry them, the lines are the same bit for bit, and the points'
     forces add up to the body's force."""
-    text = ms.OC4.read_text().replace(
-        "---------------------- LINES", "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* "
-        "I* Volume CdA* Ca*\n(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n"
-        "1 Coupled 0 0 0 0 0 0 0 0 0 0 0 0\n---------------------- LINES", 1)
+    text = ms.oc4_with_a_coupled_body()
     path = tmp_path / "points.dat"
     path.write_text(text)
     offset, velocity = np.array([3.0, -1.0, 0.5]), np.array([0.2, 0.1, -0.05])

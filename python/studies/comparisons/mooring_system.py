@@ -48,6 +48,15 @@ def _moorpy_system(path: Path, depth: float = 0.0):
     return moorpy.system(path, depth=depth, rho=WATER_DENSITY, g=STANDARD_GRAVITY)
 
 
+def oc4_with_a_coupled_body() -> str:
+    """The OC4 deck's text with a BODIES section holding one Coupled body at the origin: its Vessel points
+    4, 5, 6 are then coupled points (point[k].*, absolute positions) instead of moving with body 1."""
+    return OC4.read_text().replace(
+        "---------------------- LINES", "---------------------- BODIES ----\nID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* "
+        "I* Volume CdA* Ca*\n(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n"
+        "1 Coupled 0 0 0 0 0 0 0 0 0 0 0 0\n---------------------- LINES", 1)
+
+
 def read_system_deck(path: Path) -> SystemDeck:
     s = _moorpy_system(path)
     depth = float(s.depth) or max(-float(p.r[2]) for p in s.pointList)  # MoorDyn: the deepest point
