@@ -101,6 +101,7 @@ class CableFMU:
         self._extracted_as = (str(self.unzipdir), f"<{Path(path if path is not None else require_fmu()).name}>")
         md = self.model_description
         self.variables = {v.name: v for v in md.modelVariables}
+        self._real_vrs: dict = {}  # get_reals: value references by tuple of names
         self.messages: list = []
         self._echo = echo_log
         self.time = None
@@ -180,8 +181,12 @@ class CableFMU:
         raise TypeError(f"{name}: unsupported type {v.type}")
 
     def get_reals(self, names) -> np.ndarray:
-        """Several Real variables with one fmi2GetReal call."""
-        vrs = [self._var(n).valueReference for n in names]
+        """Several Real variables with one fmi2GetReal call (the value references of a list of names looked
+        up once: a scene reads the same list at every communication point)."""
+        key = names if isinstance(names, tuple) else tuple(names)
+        vrs = self._real_vrs.get(key)
+        if vrs is None:
+            vrs = self._real_vrs[key] = [self._var(n).valueReference for n in key]
         return np.array(self.slave.getReal(vrs))
 
     def shape(self) -> dict:
