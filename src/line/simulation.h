@@ -85,6 +85,7 @@ public:
         p = state_.end.p();
         return true;
     }
+    EndInputs end_inputs() const override { return {model_.far_end().external, model_.far_end().driven}; }
     // Where the tow point (far false) or a driven far end (far true) stands and moves at time().
     const DrivenEndState& driven_end(bool far) const { return far ? state_.end : state_.tow; }
 
