@@ -484,6 +484,7 @@ void CableSimulation::update_outputs() {
     state_.outputs.fatigueDamage = sn_.area > 0.0 ? state_.rainflow.damage(sn_) : 0.0;
     state_.outputs.waveElevation = model_.sea().elevation(X_[0], X_[1], state_.time);
     state_.outputs.unstretchedLength = model_.winch() ? state_.winchLength : model_.line().length;
+    complete_outputs(state_.outputs);
 }
 
 }  // namespace uc

@@ -133,6 +133,11 @@ public:
     // The time integrator (for tests of its linear algebra paths).
     Integrator& integrator() { return *integrator_; }
 
+protected:
+    // Where the line's outputs are made anew (update_outputs, a restored state), a subclass completes its own
+    // outputs in them: once there, not on every read of outputs().
+    virtual void complete_outputs(UCOutputs& out) const { (void)out; }
+
 private:
     // The methods below live in one file per stage of the line:
     //   simulation.cpp             life cycle, the step, residual and Jacobian, outputs

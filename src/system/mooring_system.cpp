@@ -101,11 +101,9 @@ void set_mooring_line_outputs(UCMooringLine& out, double fairlead, double anchor
     out.maxUtilisation = std::max({strength.maxUtilisation, out.fairleadUtilisation, out.anchorUtilisation});
 }
 
-const UCOutputs& OneLineSystem::outputs() const {
-    asSystem_ = CableSimulation::outputs();
-    set_mooring_line_outputs(asSystem_.mooringLine[0], asSystem_.towTension, asSystem_.endTension, asSystem_,
+void OneLineSystem::complete_outputs(UCOutputs& out) const {
+    set_mooring_line_outputs(out.mooringLine[0], out.towTension, out.endTension, out,
                              line_strength(*this, 0, model().n_sections() - 1));
-    return asSystem_;
 }
 
 MooringSystem::MooringSystem(const UCParams& base, const MooringDeck& deck) : base_(base), deck_(deck) {}

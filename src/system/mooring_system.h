@@ -53,14 +53,13 @@ void set_mooring_line_outputs(UCMooringLine& out, double fairlead, double anchor
                               const LineStrength& strength);
 
 // One line given by its parameters, as the boundary sees it: a system of one line, whose line[1].* outputs
-// are its own (its outputs otherwise the line's).
+// are its own (its outputs otherwise the line's), filled where the line makes its outputs.
 class OneLineSystem final : public CableSimulation {
 public:
     using CableSimulation::CableSimulation;
-    const UCOutputs& outputs() const override;
 
 private:
-    mutable UCOutputs asSystem_{};  // the line's outputs with line 1's, made when asked
+    void complete_outputs(UCOutputs& out) const override;
 };
 
 // The motion of a free node (docs/systems_mooring.md, "Dynamics"): all of it that a step changes and the next
