@@ -90,8 +90,8 @@ static void check_accelerations(UCInstance* inst, Report* r) {
         name_components(&q, "tow.a%c", "tow.v%c", 0);
         check_quantity(c, &q, h, r);
     }
-    if (!inst->coreParams.mooringSystem && inst->coreParams.bottomEnd == UC_BOTTOM_EXTERNAL &&
-        in->endAccelerationGiven && old->endAccelerationGiven) {
+    /* the far end's kind as the model compiled it (the core exists when a step is checked) */
+    if ((uc_end_inputs(inst->cable) & UC_END_INPUTS_DRIVEN) && in->endAccelerationGiven && old->endAccelerationGiven) {
         q = (Quantity){in->endAcceleration, old->endAcceleration, in->endVelocity, old->endVelocity, {{0}}, {{0}},
                        "m/s2", "m/s", warned + 3, in->endAccelerationGiven};
         name_components(&q, "end.a%c", "end.v%c", 0);
@@ -162,7 +162,7 @@ static void check_bounds(UCInstance* inst, Report* r) {
         check_bound(c, r, f + 1, "tow.vx/vy/vz", 0, in->towVelocity, 3, UC_INPUT_MAX_SPEED, "m/s");
         check_bound(c, r, f + 2, in->towAccelerationGiven ? "tow.ax/ay/az (or der(tow.v*))" : "tow.ax/ay/az", 0,
                     in->towAcceleration, 3, UC_INPUT_MAX_ACCELERATION, "m/s2");
-        if (inst->coreParams.bottomEnd == UC_BOTTOM_EXTERNAL || inst->coreParams.bottomEnd == UC_BOTTOM_PROXY) {
+        if (uc_end_inputs(inst->cable) & UC_END_INPUTS_EXTERNAL) { /* as the model compiled the far end */
             check_bound(c, r, f + 3, "end.x/y/z", 0, in->end, 3, UC_INPUT_MAX_POSITION, "m");
             check_bound(c, r, f + 4, "end.vx/vy/vz", 0, in->endVelocity, 3, UC_INPUT_MAX_SPEED, "m/s");
             check_bound(c, r, f + 5, "end.ax/ay/az", 0, in->endAcceleration, 3, UC_INPUT_MAX_ACCELERATION, "m/s2");

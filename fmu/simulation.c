@@ -87,6 +87,8 @@ fmi2Status uc_sim_initial_outputs(UCInstance* inst, const char* function) {
     const fmi2Status status = initialize_core(inst, function, fmi2Warning);
     if (status != fmi2Warning) return status;
     memset(&inst->outputs, 0, sizeof inst->outputs);
+    /* The parameter, not the model's far end: the failed initialization dropped the core (no model to ask),
+     * and the adapter, in C, sees only the parameters until a model is built from them. */
     if (inst->params.bottomEnd == UC_BOTTOM_EXTERNAL) {
         memcpy(inst->outputs.endPosition, inst->inputs.end, sizeof inst->outputs.endPosition);
         memcpy(inst->outputs.endVelocity, inst->inputs.endVelocity, sizeof inst->outputs.endVelocity);

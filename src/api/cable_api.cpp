@@ -140,6 +140,12 @@ extern "C" int uc_driven_position(const UCCable* c, int kind, int index, double 
     return 1;
 }
 
+extern "C" int uc_end_inputs(const UCCable* c) {
+    if (!c) return 0;
+    const uc::Simulation::EndInputs e = c->simulation->end_inputs();
+    return (e.external ? UC_END_INPUTS_EXTERNAL : 0) | (e.driven ? UC_END_INPUTS_DRIVEN : 0);
+}
+
 extern "C" double uc_time(const UCCable* c) {
     return c ? c->simulation->time() : 0.0;
 }

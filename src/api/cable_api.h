@@ -117,6 +117,14 @@ void uc_tow_position(const UCCable* c, double p[3]);
  * (another far end, a single line's body or point, a point no line reaches). */
 int uc_driven_position(const UCCable* c, int kind, int index, double p[3]);
 
+/* Which end.* inputs the model reads, as it decided the far end once from bottomEnd: UC_END_INPUTS_EXTERNAL
+ * where an external body is at the far end (bottomEnd 3 or 4: its position, velocity and acceleration),
+ * plus UC_END_INPUTS_DRIVEN where the far end moves with them (bottomEnd 3); 0 for another far end, a mooring
+ * system, or c NULL. */
+#define UC_END_INPUTS_EXTERNAL 1
+#define UC_END_INPUTS_DRIVEN 2
+int uc_end_inputs(const UCCable* c);
+
 /* How far two acceleration inputs disagree with the velocity inputs between them [m/s2 or rad/s2]: a0 at the
  * previous communication point, a1 at this one, dv the change of the velocity input over the step h between
  * them. The mean acceleration dv / h of any acceleration that moves monotonically from a0 to a1 lies between

@@ -29,7 +29,6 @@ IntegratorStats operator+(const IntegratorStats& a, const IntegratorStats& b) {
 
 }  // namespace
 
-// The linearization of the end load (12 inputs) is finite.
 LineEnvironment line_environment(const UCInputs& in) {
     LineEnvironment env;
     for (int k = 0; k < 2; ++k) {
@@ -53,6 +52,15 @@ LineEnvironment line_environment(const UCInputs& in) {
     return env;
 }
 
+EndMotion tow_motion(const UCInputs& in) {
+    return {vec(in.tow), vec(in.towVelocity), vec(in.towAcceleration), in.towAccelerationGiven};
+}
+
+EndMotion far_motion(const UCInputs& in) {
+    return {vec(in.end), vec(in.endVelocity), vec(in.endAcceleration), in.endAccelerationGiven};
+}
+
+// The linearization of the end load (12 inputs) is finite.
 bool end_load_linearization_finite(const LineEnvironment& env) {
     const double* rows[3] = {env.endLoadDamping.x, env.endLoadDamping.y, env.endLoadDamping.z};
     for (int i = 0; i < 3; ++i)
@@ -154,9 +162,7 @@ void CableSimulation::step_completed(double t, const double* y, const double* yp
 }
 
 bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::string& error) {
-    const EndMotion tow{vec(in.tow), vec(in.towVelocity), vec(in.towAcceleration), in.towAccelerationGiven};
-    const EndMotion far{vec(in.end), vec(in.endVelocity), vec(in.endAcceleration), in.endAccelerationGiven};
-    return step(h, tow, far, line_environment(in), error);
+    return step(h, tow_motion(in), far_motion(in), line_environment(in), error);
 }
 
 bool CableSimulation::step(double h, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env,
@@ -478,6 +484,7 @@ void CableSimulation::update_outputs() {
     state_.outputs.fatigueDamage = sn_.area > 0.0 ? state_.rainflow.damage(sn_) : 0.0;
     state_.outputs.waveElevation = model_.sea().elevation(X_[0], X_[1], state_.time);
     state_.outputs.unstretchedLength = model_.winch() ? state_.winchLength : model_.line().length;
+    complete_outputs(state_.outputs);
 }
 
 }  // namespace uc

@@ -63,6 +63,9 @@ struct LineEnvironment {
 };
 // The environment part of the FMU's inputs.
 LineEnvironment line_environment(const UCInputs& in);
+// The FMU's inputs for the tow point (tow*) and for the far end (end*).
+EndMotion tow_motion(const UCInputs& in);
+EndMotion far_motion(const UCInputs& in);
 
 class CableSimulation : public SecondOrderSystem, public Simulation {
 public:
@@ -82,10 +85,17 @@ public:
         p = state_.end.p();
         return true;
     }
+    EndInputs end_inputs() const override { return {model_.far_end().external, model_.far_end().driven}; }
     // Where the tow point (far false) or a driven far end (far true) stands and moves at time().
     const DrivenEndState& driven_end(bool far) const { return far ? state_.end : state_.tow; }
 
+    // The FMU's initialize: unpacks in into the ends' motion and the environment and takes initialize below.
     bool initialize(double t0, const UCInputs& in, std::string& error) override;
+    // The line at rest (or in its steady tow) at t0 with its tow end and far end where given (the far
+    // end's motion acts where the far end is driven or external), in the environment env; the ends'
+    // given accelerations seed the tow point's trajectory.
+    bool initialize(double t0, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env,
+                    std::string& error);
     // The FMU's step: unpacks in into the ends' motion and the environment and takes step below.
     bool step(double t, double h, const UCInputs& in, std::string& error) override;
     // One communication step of h seconds from time() with the tow end and the far end (its motion
@@ -122,6 +132,11 @@ public:
     void free_state(std::vector<double>& q, std::vector<double>& v, std::vector<double>& a) const;
     // The time integrator (for tests of its linear algebra paths).
     Integrator& integrator() { return *integrator_; }
+
+protected:
+    // Where the line's outputs are made anew (update_outputs, a restored state), a subclass completes its own
+    // outputs in them: once there, not on every read of outputs().
+    virtual void complete_outputs(UCOutputs& out) const { (void)out; }
 
 private:
     // The methods below live in one file per stage of the line:
@@ -171,7 +186,7 @@ private:
     // After a static state not found or refused, for a line given by parameters: the finer mesh
     // (twice, then four times the elements of every section) on which the same line starts, as
     // advice to append to the message; which knob to turn where no such mesh was found.
-    std::string mesh_advice(double t0, const UCInputs& in) const;
+    std::string mesh_advice(double t0, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env) const;
     bool adviseMesh_ = true;  // off in the trial runs of mesh_advice
     // Largest relative difference of the end tensions from the exact static profile [-].
     static constexpr double kStaticsCheck = 0.01;

@@ -34,6 +34,13 @@ public:
         (void)p;
         return false;
     }
+    // Which end.* inputs the model reads (uc_end_inputs), as a line's model decided its far end once from
+    // bottomEnd (CableModel::far_end()): an external body's (external), which the far end moves with
+    // (driven). A system reads none.
+    struct EndInputs {
+        bool external = false, driven = false;
+    };
+    virtual EndInputs end_inputs() const { return {}; }
     // The event of the last step worth a log line, or empty; cleared by the call.
     virtual std::string take_event() = 0;
 

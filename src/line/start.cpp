@@ -413,7 +413,8 @@ bool CableSimulation::verify_statics(std::string& error) const {
     return false;
 }
 
-std::string CableSimulation::mesh_advice(double t0, const UCInputs& in) const {
+std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const EndMotion& far,
+                                         const LineEnvironment& env) const {
     const UCParams& p = model_.params();
     const bool sections = p.nSections > 1;
     // The same line with each section's elements as `count` gives them; true with the advice where it
@@ -430,7 +431,7 @@ std::string CableSimulation::mesh_advice(double t0, const UCInputs& in) const {
         CableSimulation trial(q);
         trial.adviseMesh_ = false;
         std::string ignored;
-        if (!trial.initialize(t0, in, ignored)) return false;
+        if (!trial.initialize(t0, tow, far, env, ignored)) return false;
         std::string counts = named;
         if (counts.empty() && sections) {
             for (int k = 0; k < p.nSections; ++k)
@@ -477,26 +478,31 @@ bool CableSimulation::far_end_held_at_start() const {
 }
 
 bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& error) {
+    return initialize(t0, tow_motion(in), far_motion(in), line_environment(in), error);
+}
+
+bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env,
+                                 std::string& error) {
     ++stateStamp_;  // the cached interface derivatives are stale from here on
     const UCParams& p = model_.params();
-    for (double v : {in.tow[0], in.tow[1], in.tow[2], in.towVelocity[0], in.towVelocity[1], in.towVelocity[2],
-                     in.towAcceleration[0], in.towAcceleration[1], in.towAcceleration[2], in.endLoad[0],
-                     in.endLoad[1], in.endLoad[2], in.endCouple[0], in.endCouple[1], in.endCouple[2],
-                     in.current[0], in.current[1], in.end[0], in.end[1], in.end[2], in.endVelocity[0],
-                     in.endVelocity[1], in.endVelocity[2]}) {
+    for (double v : {tow.position[0], tow.position[1], tow.position[2], tow.velocity[0], tow.velocity[1],
+                     tow.velocity[2], tow.acceleration[0], tow.acceleration[1], tow.acceleration[2], env.endLoad[0],
+                     env.endLoad[1], env.endLoad[2], env.endCouple[0], env.endCouple[1], env.endCouple[2],
+                     env.current[0], env.current[1], far.position[0], far.position[1], far.position[2],
+                     far.velocity[0], far.velocity[1], far.velocity[2]}) {
         if (!std::isfinite(v)) {
             error = "inputs must be finite numbers";
             return false;
         }
     }
-    if (!end_load_linearization_finite(line_environment(in))) {
+    if (!end_load_linearization_finite(env)) {
         error = "endLoadVelocity and endLoadDamping inputs must be finite numbers";
         return false;
     }
-    set_environment(line_environment(in));
+    set_environment(env);
     loads_.current.rate.setZero();  // a current that changes within a step comes with the steps
     loads_.current.scaleRate = 0.0;
-    if (!std::isfinite(in.currentScale)) {
+    if (!std::isfinite(env.currentScale)) {
         error = "currentScale must be a finite number";
         return false;
     }
@@ -515,19 +521,19 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         model_.set_top_length(state_.winchTop0);
         state_.winchLength = model_.line().length;
     }
-    state_.tow.reset(vec(in.tow), vec(in.towVelocity), vec(in.towAcceleration), in.towAccelerationGiven != 0);
+    state_.tow.reset(tow.position, tow.velocity, tow.acceleration, tow.accelerationGiven != 0);
     loads_.tow = TowTrajectory::at_rest_in_time(state_.tow.p(), state_.tow.v(), state_.tow.a(), t0);
-    state_.end.reset(vec(in.end), vec(in.endVelocity), Vec3::Zero(), false);
+    state_.end.reset(far.position, far.velocity, Vec3::Zero(), false);
     loads_.end = TowTrajectory::at_rest_in_time(state_.end.p(), state_.end.v(), state_.end.a(), t0);
-    const FarEnd far = model_.far_end();  // a copy: grade_mesh may replace the model
-    Vec3 farPoint = far.external ? state_.end.p() : vec(p.anchor);
+    const FarEnd farEnd = model_.far_end();  // a copy: grade_mesh may replace the model
+    Vec3 farPoint = farEnd.external ? state_.end.p() : vec(p.anchor);
     state_.proxy = ProxyEstimate();
     loads_.endSpring = 0.0;
     if (!check_geometry(farPoint, error)) return false;
     if (!check_weight_strain(error)) return false;
     // An anchored line, or one whose far end is held at rest, starts from its static profile.
-    profileApplies_ = far.anchored || (far.driven && state_.end.v().isZero(0.0));
-    if (!std::isfinite(in.torque) || !std::isfinite(in.twist)) {
+    profileApplies_ = farEnd.anchored || (farEnd.driven && state_.end.v().isZero(0.0));
+    if (!std::isfinite(env.torque) || !std::isfinite(env.twist)) {
         error = "torque and twist inputs must be finite numbers";
         return false;
     }
@@ -539,7 +545,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         retry = false;
         farPoint = givenFar;
         grade_mesh(state_.tow.p(), farPoint, profileApplies_, grading);
-        if (far.anchored) farPoint = model_.anchor();  // on the seabed: where the line rests
+        if (farEnd.anchored) farPoint = model_.anchor();  // on the seabed: where the line rests
         const int n = model_.n_free();
         const bool fromProfile = initial_guess(state_.tow.p(), farPoint, q_);
         {
@@ -550,15 +556,15 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
             state_.lastBeta = 0.0;
             const UCParams& pp = model_.params();
             loads_.torque = !pp.enableTorsion ? 0.0
-                            : pp.torqueMode == UC_TORQUE_PRESCRIBED ? in.torque
-                            : pp.torqueMode == UC_TORQUE_ROTATION   ? model_.torque_for_twist(in.twist)
+                            : pp.torqueMode == UC_TORQUE_PRESCRIBED ? env.torque
+                            : pp.torqueMode == UC_TORQUE_ROTATION   ? model_.torque_for_twist(env.twist)
                                                                     : 0.0;
         }
         std::vector<double> v(n, 0.0);
         // A steady tow only when nothing holds the far end back: free end, internal body, or an
         // external end moving with the tow point. Otherwise the equilibrium is at rest.
-        const bool steadyTow = far.bare || (far.body && !far.proxy) ||
-                               (far.external && (state_.end.v() - state_.tow.v()).norm() <= 1e-12);
+        const bool steadyTow = farEnd.bare || (farEnd.body && !farEnd.proxy) ||
+                               (farEnd.external && (state_.end.v() - state_.tow.v()).norm() <= 1e-12);
         if (p.initMode == UC_INIT_EQUILIBRIUM && steadyTow) {
             // Steady tow: every node moves with the tow point, tangents do not turn.
             for (int g = 0; g < model_.n_global(); ++g) {
@@ -567,7 +573,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
             }
         }
         if (p.initMode == UC_INIT_EQUILIBRIUM && !statics_applies(farPoint, error)) return false;
-        if (p.initMode == UC_INIT_EQUILIBRIUM && far.proxy) {
+        if (p.initMode == UC_INIT_EQUILIBRIUM && farEnd.proxy) {
             if (!proxy_statics(t0, v, fromProfile, error)) return false;
         } else if (p.initMode == UC_INIT_EQUILIBRIUM) {
             const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile);
@@ -589,7 +595,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         }
         if (off_) {
             y_[0] = model_.top_length();
-            winchTension_ = in.winchTension;
+            winchTension_ = env.winchTension;
             winchTopAtStep_ = y_[0];
         }
         state_.time = t0;
@@ -616,7 +622,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
                 error = firstError;
                 grade_mesh(state_.tow.p(), givenFar, profileApplies_, 0);
             }
-            if (retry && adviseMesh_) error += mesh_advice(t0, in);
+            if (retry && adviseMesh_) error += mesh_advice(t0, tow, far, env);
             return false;
         }
     }
@@ -629,10 +635,10 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
         state_.winchRate = y_[1];
     }
     if (sn_.area > 0.0) state_.rainflow.add(state_.outputs.towTension, sn_);
-    if (far.proxy) {
+    if (farEnd.proxy) {
         EndMotion body;  // h = 0: the cable force alone, not the body's motion
-        body.position = vec(in.end);
-        body.velocity = vec(in.endVelocity);
+        body.position = far.position;
+        body.velocity = far.velocity;
         proxy_output(0.0, Vec3::Zero(), Vec3::Zero(), body);
     }
     state_.outputs.towTensionMax = state_.outputs.towTensionMin = state_.outputs.towTension;

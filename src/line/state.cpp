@@ -115,6 +115,7 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     in += yp_.size() * sizeof(double);
     const bool history = saved.integratorStarted;
     state_ = saved;
+    complete_outputs(state_.outputs);
     if (state_.tensionScale > 0.0 && !set_integrator_tolerances(error)) {  // 0: saved before initialization
         state_.restartPending = true;
         return false;

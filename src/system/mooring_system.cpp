@@ -101,11 +101,9 @@ void set_mooring_line_outputs(UCMooringLine& out, double fairlead, double anchor
     out.maxUtilisation = std::max({strength.maxUtilisation, out.fairleadUtilisation, out.anchorUtilisation});
 }
 
-const UCOutputs& OneLineSystem::outputs() const {
-    asSystem_ = CableSimulation::outputs();
-    set_mooring_line_outputs(asSystem_.mooringLine[0], asSystem_.towTension, asSystem_.endTension, asSystem_,
+void OneLineSystem::complete_outputs(UCOutputs& out) const {
+    set_mooring_line_outputs(out.mooringLine[0], out.towTension, out.endTension, out,
                              line_strength(*this, 0, model().n_sections() - 1));
-    return asSystem_;
 }
 
 MooringSystem::MooringSystem(const UCParams& base, const MooringDeck& deck) : base_(base), deck_(deck) {}
@@ -338,21 +336,6 @@ MooringSystem::LineEnds MooringSystem::line_ends(int k, const UCInputs& in) cons
     return {drive(end_motion(l.fairlead, in)), drive(end_motion(l.far, in))};
 }
 
-void MooringSystem::line_inputs(int k, const UCInputs& in, UCInputs& li) const {
-    li = in;
-    const LineEnds ends = line_ends(k, in);
-    for (int c = 0; c < 3; ++c) {
-        li.tow[c] = ends.tow.position[c];
-        li.towVelocity[c] = ends.tow.velocity[c];
-        li.towAcceleration[c] = ends.tow.acceleration[c];
-        li.end[c] = ends.far.position[c];
-        li.endVelocity[c] = ends.far.velocity[c];
-        li.endAcceleration[c] = ends.far.acceleration[c];
-    }
-    li.towAccelerationGiven = ends.tow.accelerationGiven;
-    li.endAccelerationGiven = ends.far.accelerationGiven;
-}
-
 bool MooringSystem::check_inputs(const UCInputs& in, std::string& error) {
     for (int b = 0; b < deck_.bodies; ++b) {
         const UCCoupledBody& body = in.coupledBody[b];
@@ -410,11 +393,11 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
         motion_.resize(deck0_.nodes.size());
         apply_failures();
     }
-    UCInputs li;
+    const LineEnvironment env = line_environment(in);
     for (size_t k = 0; k < lines_.size(); ++k) {
         if (on_free_node(deck_.lines[k])) continue;  // initialized at the nodes' equilibrium
-        line_inputs(static_cast<int>(k), in, li);
-        if (!lines_[k]->initialize(t0, li, error)) {
+        const LineEnds ends = line_ends(static_cast<int>(k), in);
+        if (!lines_[k]->initialize(t0, ends.tow, ends.far, env, error)) {
             error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
             return false;
         }
@@ -799,7 +782,7 @@ bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, 
         r.segment<3>(o) = force;
         r.segment<3>(o + 3) = moment;
     }
-    UCInputs li;
+    const LineEnvironment env = line_environment(in);
     for (size_t k = 0; k < lines_.size(); ++k) {
         const MooringDeckLine& l = deck_.lines[k];
         if (!on_free_node(l)) continue;
@@ -812,8 +795,8 @@ bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, 
                 return false;
             }
         } else {
-            line_inputs(static_cast<int>(k), in, li);
-            if (!lines_[k]->initialize(t0_, li, error)) {
+            const LineEnds ends = line_ends(static_cast<int>(k), in);
+            if (!lines_[k]->initialize(t0_, ends.tow, ends.far, env, error)) {
                 error = "mooring line " + std::to_string(l.id) + ": " + error;
                 return false;
             }

@@ -53,14 +53,13 @@ void set_mooring_line_outputs(UCMooringLine& out, double fairlead, double anchor
                               const LineStrength& strength);
 
 // One line given by its parameters, as the boundary sees it: a system of one line, whose line[1].* outputs
-// are its own (its outputs otherwise the line's).
+// are its own (its outputs otherwise the line's), filled where the line makes its outputs.
 class OneLineSystem final : public CableSimulation {
 public:
     using CableSimulation::CableSimulation;
-    const UCOutputs& outputs() const override;
 
 private:
-    mutable UCOutputs asSystem_{};  // the line's outputs with line 1's, made when asked
+    void complete_outputs(UCOutputs& out) const override;
 };
 
 // The motion of a free node (docs/systems_mooring.md, "Dynamics"): all of it that a step changes and the next
@@ -212,14 +211,12 @@ private:
     };
     // Where an end of a line stands and moves for these inputs.
     Motion end_motion(const MooringEnd& end, const UCInputs& in) const;
-    // Line k's ends as the line takes them in a step (CableSimulation's line-level step): where they stand
+    // Line k's ends as the line takes them (CableSimulation's line-level initialize and step): where they stand
     // and move for these inputs, each acceleration marked given where its body's or point's is.
     struct LineEnds {
         EndMotion tow, far;
     };
     LineEnds line_ends(int k, const UCInputs& in) const;
-    // The same as the FMU's inputs of one line (the master's with the ends replaced), for its initialization.
-    void line_inputs(int k, const UCInputs& in, UCInputs& li) const;
     bool check_inputs(const UCInputs& in, std::string& error);  // reports a normalized quaternion once
     void update_outputs();
     // What body b's stiffness moves (src/system/mooring_stiffness.cpp): the body (holder 0) and the free nodes

@@ -774,3 +774,24 @@ TEST(MooringDeckFuzz, TruncationsAndMutationsOfASystemDeckNeverCrash) {
 }
 
 }  // namespace
+
+// A single line's line[1].* outputs are filled where the line makes its outputs (initialization, each step),
+// in the line's own outputs: reading them copies nothing.
+TEST(OneLineSystem, LineOneOutputsAreTheLinesOwnFromItsOutputs) {
+    UCParams p;
+    uc_params_default(&p);
+    uc::OneLineSystem line(p);
+    UCInputs in;
+    uc_inputs_default(&in);
+    std::string error;
+    ASSERT_TRUE(line.initialize(0.0, in, error)) << error;
+    for (int step = 0; step < 2; ++step) {
+        const UCOutputs& own = line.uc::CableSimulation::outputs();
+        EXPECT_GT(own.towTension, 0.0);
+        EXPECT_EQ(own.mooringLine[0].fairleadTension, own.towTension);
+        EXPECT_EQ(own.mooringLine[0].anchorTension, own.endTension);
+        EXPECT_EQ(own.mooringLine[0].minTension, own.minTension);
+        EXPECT_EQ(&line.outputs(), &own);
+        ASSERT_TRUE(line.step(line.time(), 0.1, in, error)) << error;
+    }
+}

@@ -418,3 +418,22 @@ TEST(ProxyFarEnd, SavedStateContinuesBitIdentically) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Orderings, ProxyOrdering, ::testing::Values(Ordering::GaussSeidel, Ordering::Jacobi));
+
+// The adapter's input checks ask the built model which end.* inputs it reads (uc_end_inputs): an external
+// body at the far end (bottomEnd 3 and 4) reads them, only the driven far end (3) moves with them; the
+// model decided this once from bottomEnd.
+TEST(ProxyFarEnd, TheModelSaysWhichEndInputsItReads) {
+    const int expected[5] = {0, 0, 0, UC_END_INPUTS_EXTERNAL | UC_END_INPUTS_DRIVEN, UC_END_INPUTS_EXTERNAL};
+    for (int bottomEnd = UC_BOTTOM_FREE; bottomEnd <= UC_BOTTOM_PROXY; ++bottomEnd) {
+        UCParams p;
+        uc_params_default(&p);
+        p.bottomEnd = bottomEnd;
+        if (bottomEnd == UC_BOTTOM_TOWED_BODY || bottomEnd == UC_BOTTOM_PROXY) p.bodyMass = 500.0;
+        char msg[512] = "";
+        UCCable* cable = uc_create(&p, msg, sizeof msg);
+        ASSERT_NE(cable, nullptr) << "bottomEnd = " << bottomEnd << ": " << msg;
+        EXPECT_EQ(uc_end_inputs(cable), expected[bottomEnd]) << "bottomEnd = " << bottomEnd;
+        uc_free(cable);
+    }
+    EXPECT_EQ(uc_end_inputs(nullptr), 0);
+}
