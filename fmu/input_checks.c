@@ -249,13 +249,28 @@ static int check_jump(UCInstance* inst, const DrivenGroup* g, int history, doubl
     return 1;
 }
 
+/* A mooring system's numbered group (body[k] or point[k]): check_jump with its names made from the number. */
+static int check_numbered_jump(UCInstance* inst, int kind, int k, const char* label, const char* whatPrefix,
+                               const double* position, const double* velocity, const double* previousPosition,
+                               const double* previousVelocity, int history, double h) {
+    double at[3];
+    if (!uc_driven_position(inst->cable, kind, k, at)) return 0;
+    char name[40], what[64], inputs[48], accelerations[48];
+    snprintf(name, sizeof name, "%s[%d]", label, k);
+    snprintf(what, sizeof what, "%s%s[%d]", whatPrefix, label, k);
+    snprintf(inputs, sizeof inputs, "%s[%d].x/y/z", label, k);
+    snprintf(accelerations, sizeof accelerations, "der(%s[%d].v*)", label, k);
+    const DrivenGroup g = {position, velocity, previousPosition, previousVelocity, {at[0], at[1], at[2]},
+                           name, what, inputs, accelerations};
+    return check_jump(inst, &g, history, h);
+}
+
 /* Every driven position the model follows, each group reported once per run: the tow point, the far end of
  * bottomEnd 3 (end.*), a mooring system's coupled bodies' reference points and coupled points. */
 static int check_jumps(UCInstance* inst, int history, double h) {
     UCInputChecks* c = &inst->inputChecks;
     const UCInputs *in = &inst->inputs, *old = &c->previous;
     int warned = 0;
-    char name[40], what[64], inputs[48], accelerations[48];
     double at[3];
     DrivenGroup g;
     if (!inst->coreParams.mooringSystem && !inst->towMismatchWarned) {
@@ -271,26 +286,18 @@ static int check_jumps(UCInstance* inst, int history, double h) {
     }
     if (!inst->coreParams.mooringSystem) return warned;
     for (int b = 0; b < UC_MAX_BODIES; ++b) {
-        if (c->jumped[1 + b] || !uc_driven_position(inst->cable, UC_DRIVEN_BODY, b + 1, at)) continue;
-        snprintf(name, sizeof name, "body[%d]", b + 1);
-        snprintf(what, sizeof what, "reference point of body[%d]", b + 1);
-        snprintf(inputs, sizeof inputs, "body[%d].x/y/z", b + 1);
-        snprintf(accelerations, sizeof accelerations, "der(body[%d].v*)", b + 1);
-        g = (DrivenGroup){in->coupledBody[b].position, in->coupledBody[b].velocity, old->coupledBody[b].position,
-                          old->coupledBody[b].velocity, {at[0], at[1], at[2]}, name, what, inputs,
-                          accelerations};
-        if (check_jump(inst, &g, history, h)) c->jumped[1 + b] = warned = 1;
+        if (!c->jumped[1 + b] && check_numbered_jump(inst, UC_DRIVEN_BODY, b + 1, "body", "reference point of ",
+                                                     in->coupledBody[b].position, in->coupledBody[b].velocity,
+                                                     old->coupledBody[b].position, old->coupledBody[b].velocity,
+                                                     history, h))
+            c->jumped[1 + b] = warned = 1;
     }
     for (int p = 0; p < UC_MAX_POINTS; ++p) {
-        if (c->jumped[1 + UC_MAX_BODIES + p] || !uc_driven_position(inst->cable, UC_DRIVEN_POINT, p + 1, at)) continue;
-        snprintf(name, sizeof name, "point[%d]", p + 1);
-        snprintf(what, sizeof what, "coupled point point[%d]", p + 1);
-        snprintf(inputs, sizeof inputs, "point[%d].x/y/z", p + 1);
-        snprintf(accelerations, sizeof accelerations, "der(point[%d].v*)", p + 1);
-        g = (DrivenGroup){in->coupledPoint[p].position, in->coupledPoint[p].velocity, old->coupledPoint[p].position,
-                          old->coupledPoint[p].velocity, {at[0], at[1], at[2]}, name, what, inputs,
-                          accelerations};
-        if (check_jump(inst, &g, history, h)) c->jumped[1 + UC_MAX_BODIES + p] = warned = 1;
+        if (!c->jumped[1 + UC_MAX_BODIES + p] &&
+            check_numbered_jump(inst, UC_DRIVEN_POINT, p + 1, "point", "coupled point ", in->coupledPoint[p].position,
+                                in->coupledPoint[p].velocity, old->coupledPoint[p].position,
+                                old->coupledPoint[p].velocity, history, h))
+            c->jumped[1 + UC_MAX_BODIES + p] = warned = 1;
     }
     return warned;
 }
