@@ -75,3 +75,26 @@ def test_wavekin_7_deck_loads_its_two_directions_and_its_tension_follows_moordyn
     assert r["elevation"] < 1e-6
     assert r["fmu"]["range"] == pytest.approx(r["moordyn"]["range"], rel=0.10)
     assert r["history"] < 0.15
+
+
+def test_wavekin_3_record_is_the_fmus_water_at_its_samples(fmu_file):
+    """MoorDyn's public deck wavekin_3.txt (WaveKin 3, dtWave 0.15 s, Currents 1): the record of
+    wave_elevation.txt (one period of a 15 s sine, 1 m, sampled every 0.15 s) becomes the Fourier
+    components of its 100 samples up to 0.5 Hz; the FMU's waveElevation at the fairlead (x = 0, where the
+    record is) is the record at its sample times, to 1e-9 m (the components above 0.5 Hz that are cut
+    carry round-off only)."""
+    deck = REPO_ROOT / "tests" / "data" / "decks" / "public" / "wavekin_3"
+    record = np.loadtxt(deck / "wave_elevation.txt")
+    c = CableFMU(fmu_file, parameters={"lineFile": str(deck / "wavekin_3.txt")}, logging_on=True)
+    try:
+        c.initialize(inputs={"tow.x": 0.0, "tow.y": 0.0, "tow.z": -2.0})
+        assert any("WaveKin 3: the record of wave_elevation.txt resampled at dtWave = 0.14999999999999999 s "
+                   "(100 samples) is the sum of its 7 Fourier components up to 0.5 Hz" in m
+                   for _, _, m in c.messages), c.messages
+        ours = [c.get("waveElevation")]
+        for k in range(1, 6):
+            c.do_step(0.3, 0.3 * (k - 1))
+            ours.append(c.get("waveElevation"))
+    finally:
+        c.free()
+    assert np.max(np.abs(np.array(ours) - record[0:12:2, 1])) < 1e-9, (ours, record[0:12:2, 1])
