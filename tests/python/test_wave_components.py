@@ -48,8 +48,11 @@ def test_a_waves_file_is_the_sum_of_its_components(fmu_file, tmp_path):
 
 def test_a_waves_file_that_cannot_be_read_or_makes_no_sea_is_refused_naming_it(fmu_file, tmp_path):
     (tmp_path / "bad.txt").write_text("0.5 1.0\n")
-    for name, what in (("missing.txt", "waves.file = '"), ("bad.txt", "line 1: a row is omega [rad/s] amplitude [m]")):
-        c = CableFMU(fmu_file, parameters={"waves.mode": 3, "waves.file": str(tmp_path / name)}, logging_on=True)
+    (tmp_path / "good.txt").write_text("0.5 1.0 0.0\n")
+    for mode, name, what in ((3, "missing.txt", "waves.file = '"),
+                             (3, "bad.txt", "line 1: a row is omega [rad/s] amplitude [m]"),
+                             (1, "good.txt", "is set with waves.mode = 1: its components are the sea of waves.mode 3 only")):
+        c = CableFMU(fmu_file, parameters={"waves.mode": mode, "waves.file": str(tmp_path / name)}, logging_on=True)
         try:
             with pytest.raises(Exception):
                 c.initialize()
@@ -75,6 +78,62 @@ def test_wavekin_7_deck_loads_its_two_directions_and_its_tension_follows_moordyn
     assert r["elevation"] < 1e-6
     assert r["fmu"]["range"] == pytest.approx(r["moordyn"]["range"], rel=0.10)
     assert r["history"] < 0.15
+
+
+def test_wavekin_2_spectrum_is_moordyns_water_at_its_grid_samples(fmu_file, tmp_path):
+    """WaveKin 2: MoorDyn interpolates wave_frequencies.txt (uneven rows: 0, 0.25, 0.5, 0.75, 1 rad/s and
+    one at 0.625) to steps of the smallest spacing, 0.125 rad/s, transforms it onto the grid of
+    water_grid.txt (samples every 2 pi / 0.125 / 16 = pi s) and interpolates linearly between samples.
+    The FMU reads the interpolated spectrum as its components and sums them: its waveElevation at the
+    fairlead, linearly interpolated between its values at the grid's sample times, is MoorDyn's water at
+    the grid node there, within the dtM (2 ms) by which MoorDyn's clock may miss the sampling instant
+    (its steepest slope x 2 ms)."""
+    import moordyn as md_api
+
+    from studies.comparisons import deck_currents as dc
+    from studies.peers.quiet import Quiet
+
+    text = dc.CHAIN.read_text()
+    for old, new in (("2    Coupled     0        0     -70", "2    Coupled     30       0     -70"),
+                     ("320      WtrDpth", "320      WtrDpth\n2        WaveKin")):
+        assert old in text
+        text = text.replace(old, new, 1)
+    (tmp_path / "chain_spectrum.dat").write_text(text)
+    rows = [(0.0, 0.0, 0.0), (0.25, 0.6, 0.2), (0.5, -0.3, 0.9), (0.625, 0.2, -0.4), (0.75, 0.0, 0.5), (1.0, 0.1, 0.0)]
+    (tmp_path / "wave_frequencies.txt").write_text("".join(f"{w} {r} {i}\n" for w, r, i in rows))
+    (tmp_path / "water_grid.txt").write_text("grid\nx y z\nlists\n1\n0.0 30.0 60.0\n1\n-1.0 0.0 1.0\n1\n-320 -70 0\n")
+    period = 2 * math.pi / 0.125
+    dt = period / 16
+    c = CableFMU(fmu_file, parameters=dc.fmu_parameters(tmp_path / "chain_spectrum.dat"), logging_on=True)
+    try:
+        c.initialize(inputs={"tow.x": 30.0, "tow.y": 0.0, "tow.z": -70.0})
+        assert any("WaveKin 2: the spectrum of wave_frequencies.txt, interpolated to equal frequency steps as "
+                   "MoorDyn does, is 8 given components" in m for _, _, m in c.messages), c.messages
+        samples = [c.get("waveElevation")]
+        for k in range(1, 17):
+            c.do_step(dt, (k - 1) * dt)
+            samples.append(c.get("waveElevation"))
+    finally:
+        c.free()
+    assert samples[-1] == pytest.approx(samples[0], abs=1e-9)  # periodic, as the transform is
+    times = np.arange(0.0, 30.01, 0.5)
+    theirs = []
+    with Quiet():
+        system = md_api.Create(str(tmp_path / "chain_spectrum.dat"))
+        try:
+            x = [30.0, 0.0, -70.0]
+            md_api.Init(system, x, [0.0] * 3)
+            waves = md_api.GetWaves(system)
+            theirs.append(md_api.GetWavesKin(waves, 30.0, 0.0, -70.0)[2])
+            for t in times[1:]:
+                md_api.Step(system, x, [0.0] * 3, t - 0.5, 0.5)
+                theirs.append(md_api.GetWavesKin(waves, 30.0, 0.0, -70.0)[2])
+        finally:
+            md_api.Close(system)
+    ours = np.interp(times % period, np.arange(17) * dt, samples)
+    slope = np.max(np.abs(np.diff(samples))) / dt  # the steepest slope of MoorDyn's interpolation
+    assert np.ptp(theirs) > 0.5
+    assert np.max(np.abs(ours - np.array(theirs))) < slope * 0.002 + 1e-6, (ours, theirs)
 
 
 def test_wavekin_3_record_is_the_fmus_water_at_its_samples(fmu_file):
