@@ -243,3 +243,39 @@ fmi2Status uc_line_file_create_system(UCInstance* inst, const UCParams* p, UCCab
     *cable = NULL;
     return with_text(inst, NULL, p, cable, function);
 }
+
+fmi2Status uc_wave_file_load(UCInstance* inst, UCParams* p, const char* function) {
+    char* candidates[2] = {NULL, NULL};
+    const int n = candidate_paths(inst, p->wavesFile, candidates);
+    char tried[1024] = "";
+    fmi2Status status = fmi2Error;
+    int done = 0;
+    for (int k = 0; k < n && !done; ++k) {
+        size_t length = 0;
+        int error = 0;
+        char* text = read_file(candidates[k], &length, &error);
+        if (text == NULL) {
+            uc_file_note_tried(tried, sizeof tried, candidates[k], error);
+            continue;
+        }
+        done = 1;
+        inst->msg[0] = '\0';
+        if (uc_wave_file_apply(text, length, p, inst->msg, sizeof inst->msg) != 0) {
+            uc_log_status(&inst->log, fmi2Error, "%s: waves.file %s, %s", function, candidates[k], inst->msg);
+        } else {
+            uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: waves.file %s read: %d wave components", function,
+                   candidates[k], p->waveComponentCount);
+            status = fmi2OK;
+        }
+        free(text);
+    }
+    if (!done) {
+        uc_log_status(&inst->log, fmi2Error, "%s: waves.file = '%s' cannot be read: tried %s%s", function, p->wavesFile,
+                      n > 0 ? tried : "nothing (out of memory)",
+                      !uc_file_is_absolute(p->wavesFile) && inst->resourceLocation == NULL
+                          ? "; no resources directory was given to fmi2Instantiate"
+                          : "");
+    }
+    for (int k = 0; k < n; ++k) free(candidates[k]);
+    return status;
+}

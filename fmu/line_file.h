@@ -22,4 +22,9 @@ fmi2Status uc_line_file_load(UCInstance* inst, UCParams* p, const char* function
  * creates the system with the parameters *p for its lines (uc_create_system). Errors as above. */
 fmi2Status uc_line_file_create_system(UCInstance* inst, const UCParams* p, UCCable** cable, const char* function);
 
+/* Reads p->wavesFile (looked up as lineFile) and writes its wave components into *p (waves.mode 3;
+ * docs/waves.md, "Given components"). Logs the file used (logEvents); an unreadable file (naming every path
+ * tried) or a refused row (naming the file and its line) is fmi2Error, logged naming `function`. */
+fmi2Status uc_wave_file_load(UCInstance* inst, UCParams* p, const char* function);
+
 #endif /* UNDERWATERCABLE_FMU_LINE_FILE_H */

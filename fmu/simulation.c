@@ -37,6 +37,12 @@ static fmi2Status initialize_core(UCInstance* inst, const char* function, fmi2St
         uc_instance_drop_core(inst);
         return fmi2Error;
     }
+    /* waves.mode 3: the components of waves.file, over a deck's */
+    if (inst->coreParams.wavesMode == 3 && inst->coreParams.wavesFile[0] != '\0' &&
+        uc_wave_file_load(inst, &inst->coreParams, function) != fmi2OK) {
+        uc_instance_drop_core(inst);
+        return fmi2Error;
+    }
     if (uc_params_check(&inst->coreParams, inst->msg, sizeof inst->msg) != 0) {
         return fail_with_core_message(inst, function,
                                       fromFile ? "invalid parameter (with the line of lineFile)" : "invalid parameter",

@@ -12,6 +12,7 @@ MAX_ATTACHMENTS = 8
 MAX_LINES = 16
 MAX_BODIES = 4
 MAX_POINTS = 16
+MAX_WAVE_COMPONENTS = 1024
 
 
 class Variable(NamedTuple):
@@ -187,8 +188,8 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              'log10 of the intercept K of the S-N curve N = K S^-m (S in MPa)'),
     Variable('fatigue.area', 80, 'parameter', 'Real', 'm2', 0.0, 0.0, 10.0,
              'Area that turns the tow-tension range into a stress range for the fatigue count; 0 = no fatigue count'),
-    Variable('waves.mode', 81, 'parameter', 'Integer', None, 0, 0.0, 2.0,
-             'Waves: 0 calm, 1 regular Airy wave (waves.height H, waves.period T), 2 irregular JONSWAP sea (Hs, Tp)'),
+    Variable('waves.mode', 81, 'parameter', 'Integer', None, 0, 0.0, 3.0,
+             "Waves: 0 calm, 1 regular Airy wave (waves.height H, waves.period T), 2 irregular JONSWAP sea (Hs, Tp), 3 the components of waves.file (or of a lineFile deck's WaveKin 2, 3 or 7)"),
     Variable('waves.height', 82, 'parameter', 'Real', 'm', 0.0, 0.0, 40.0,
              'Wave height H (regular) or significant wave height Hs (JONSWAP)'),
     Variable('waves.period', 83, 'parameter', 'Real', 's', 10.0, 0.0, 60.0,
@@ -573,6 +574,8 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              'Mooring system: time at which failure.line detaches (0: not by time)'),
     Variable('failure.tension', 273, 'parameter', 'Real', 'N', 0.0, 0.0, 1000000000000.0,
              'Mooring system: tension of failure.line at failure.point at which it detaches (0: not by tension)'),
+    Variable('waves.file', 274, 'parameter', 'String', None, '', None, None,
+             "waves.mode 3: path of a file of wave components, rows omega [rad/s], amplitude [m], phase [rad], [direction of travel, rad] (relative: against the FMU's resources directory, then the working directory)"),
     Variable('tow.x', 1001, 'input', 'Real', 'm', 0.0, None, None,
              'x coordinate of the tow point'),
     Variable('tow.y', 1002, 'input', 'Real', 'm', 0.0, None, None,

@@ -209,6 +209,22 @@ extern "C" int uc_line_file_companions(const char* text, size_t length, char* na
     }
 }
 
+extern "C" int uc_wave_file_apply(const char* text, size_t length, UCParams* p, char* msg, size_t msgSize) {
+    try {
+        std::vector<std::array<double, 4>> components;
+        std::string error;
+        if (!p || !text || !uc::read_wave_file(std::string_view(text, length), p->wavesDirection, components, error) ||
+            !uc::apply_wave_components(components, "waves.file", *p, error)) {
+            write_message(msg, msgSize, error.empty() ? std::string("no text or parameters") : error);
+            return 1;
+        }
+        return 0;
+    } catch (const std::exception& e) {
+        write_message(msg, msgSize, e.what());
+        return 1;
+    }
+}
+
 extern "C" int uc_line_file_apply(const char* text, size_t length, UCParams* p, double towPoint[3], char* notes,
                                   size_t notesSize, char* msg, size_t msgSize) {
     return uc_line_file_apply_with(text, length, nullptr, 0, p, towPoint, notes, notesSize, msg, msgSize);

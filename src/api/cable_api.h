@@ -66,6 +66,11 @@ UCCable* uc_create_system_with(const UCParams* p, const char* text, size_t lengt
                                const UCLineFileCompanion* companions, int n, char* notes, size_t notesSize,
                                char* msg, size_t msgSize);
 
+/* The wave components of a waves.file (docs/waves.md, "Given components": rows omega amplitude phase
+ * [direction]), given as its text (length bytes), written into *p (waveComponentCount, waveComponents;
+ * a row without a direction takes p->wavesDirection). Returns 0, or 1 with msg = "line <n>: <what>". */
+int uc_wave_file_apply(const char* text, size_t length, UCParams* p, char* msg, size_t msgSize);
+
 /* Defaults: the Hopland 1993 tow cable, free lower end, hinged top, 20 elements. */
 /* The inputs' start values (zero, but currentScale 1): initialize every UCInputs with it. */
 void uc_inputs_default(UCInputs* in);

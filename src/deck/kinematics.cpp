@@ -1,10 +1,14 @@
 // kinematics.cpp - MoorDyn's WaveKin and Currents options (docs/lines.md, "Options and environment"): what
 // the FMU's sea state holds is read into it from the companion files next to the deck (current_profile.txt,
-// wave_frequencies.txt), the rest refused naming the option, its value and why.
+// wave_frequencies.txt, wave_elevation.txt), the rest refused naming the option, its value and why; and the
+// FMU's own file of wave components (waves.file).
 #include "deck/tables.h"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <complex>
+#include <cstdio>
 
 namespace uc {
 namespace deck {
@@ -12,6 +16,7 @@ namespace {
 
 const char* kCurrentProfileFile = "current_profile.txt";
 const char* kWaveFrequenciesFile = "wave_frequencies.txt";
+const char* kWaveElevationFile = "wave_elevation.txt";
 
 const LineFileCompanion* companion(const LineFileCompanions& companions, const char* name) {
     for (const LineFileCompanion& c : companions) {
@@ -119,42 +124,186 @@ bool read_current_profile(const LineFileCompanion& file, LineFileSea& sea, std::
     return true;
 }
 
-// WaveKin 7: MoorDyn sums the components "omega Re(A) Im(A) [direction]" of the file, each the elevation
-// |A| sin(omega t - k x + arg A) (x along the direction); one component with arg A = pi/2 is the FMU's
-// regular wave of amplitude |A|, a cos(k x - omega t), crest at the origin at t = 0.
-bool read_wave_components(const LineFileCompanion& file, LineFileSea& sea, std::string& what) {
+// The rows "omega Re(A) Im(A) [direction]" of MoorDyn's wave_frequencies.txt (blank rows skipped).
+struct SpectrumRow {
+    double omega;
+    std::complex<double> A;
+    double direction;
+    int row;
+};
+
+bool spectrum_rows(const LineFileCompanion& file, std::vector<SpectrumRow>& out, std::string& what) {
     std::vector<NumberRow> rows;
     if (!number_rows(file, 1, rows, what)) return false;
-    std::vector<const NumberRow*> waves;
     for (const NumberRow& r : rows) {
         if (r.values.size() < 3 || r.values.size() > 4) {
             what = file.name + " line " + std::to_string(r.number) + ": a row is omega Re(A) Im(A) [direction]";
             return false;
         }
-        if (r.values[1] != 0.0 || r.values[2] != 0.0) waves.push_back(&r);
+        out.push_back({r.values[0], {r.values[1], r.values[2]}, r.values.size() > 3 ? r.values[3] : 0.0, r.number});
     }
-    if (waves.size() != 1) {
-        what = file.name + " has " + std::to_string(waves.size()) + " components of non-zero amplitude: the FMU's "
-               "waves are one regular wave (waves.mode 1) or a JONSWAP sea of its own components (waves.mode 2), "
-               "not a given list of components";
+    return true;
+}
+
+// WaveKin 7: MoorDyn sums the components "omega Re(A) Im(A) [direction]" of the file, each the elevation
+// |A| sin(omega t - k x + arg A) (x along the direction) = |A| cos(k x - omega t + pi/2 - arg A): the given
+// components of waves.mode 3, amplitude |A|, phase pi/2 - arg A. One component with arg A = pi/2 is the
+// FMU's regular wave of amplitude |A|, a cos(k x - omega t), crest at the origin at t = 0 (waves.mode 1).
+bool read_wave_components(const LineFileCompanion& file, LineFileSea& sea, std::string& what) {
+    std::vector<SpectrumRow> rows;
+    if (!spectrum_rows(file, rows, what)) return false;
+    std::vector<const SpectrumRow*> waves;
+    for (const SpectrumRow& r : rows) {
+        if (r.A == 0.0) continue;
+        if (!(r.omega > 0.0)) {
+            what = file.name + " line " + std::to_string(r.row) + ": a component of frequency " + number_text(r.omega) +
+                   " rad/s is not a wave";
+            return false;
+        }
+        waves.push_back(&r);
+    }
+    if (waves.empty()) return true;  // still water
+    const SpectrumRow& w = *waves[0];
+    const double amplitude = std::abs(w.A);
+    if (waves.size() == 1 && w.A.imag() > 0.0 && std::abs(w.A.real()) <= 1e-12 * amplitude) {
+        sea.regularWave = true;
+        sea.waveHeight = 2.0 * amplitude;
+        sea.wavePeriod = 2.0 * kPi / w.omega;
+        sea.waveDirection = w.direction;
+        return true;
+    }
+    for (const SpectrumRow* c : waves) sea.waveComponents.push_back({c->omega, std::abs(c->A), 0.5 * kPi - std::arg(c->A), c->direction});
+    return true;
+}
+
+// WaveKin 2: MoorDyn interpolates the spectrum linearly to frequencies i dw (dw the smallest spacing of
+// the file, from 0 to its last frequency) and transforms them on its grid into the elevation
+// Re(A e^{i (omega t - k x)}) = |A| cos(k x - omega t - arg A) (its inverse FFT, scaled by (N - 1) / nt);
+// the last frequency, the transform's Nyquist bin, enters as Re(A) / 2. Those interpolated components,
+// summed at every point (no grid), are the given components of waves.mode 3.
+bool read_wave_spectrum(const LineFileCompanion& file, LineFileSea& sea, std::string& what,
+                        std::vector<std::string>& notes, int row) {
+    std::vector<SpectrumRow> rows;
+    if (!spectrum_rows(file, rows, what)) return false;
+    if (rows.size() < 2 || rows[0].omega != 0.0) {
+        what = file.name + ": MoorDyn's spectrum has at least two rows, the first at 0 rad/s";
         return false;
     }
-    const NumberRow& w = *waves[0];
-    const double omega = w.values[0], re = w.values[1], im = w.values[2], amplitude = std::hypot(re, im);
-    const std::string at = file.name + " line " + std::to_string(w.number) + ": ";
-    if (!(omega > 0.0)) {
-        what = at + "a component of frequency " + number_text(omega) + " rad/s is not a wave";
+    double dw = HUGE_VAL;
+    for (size_t i = 1; i < rows.size(); ++i) {
+        const double d = rows[i].omega - rows[i - 1].omega;
+        if (!(d > 0.0)) {
+            what = file.name + " line " + std::to_string(rows[i].row) + ": omega = " + number_text(rows[i].omega) +
+                   " rad/s: the frequencies must increase row by row (MoorDyn interpolates between them)";
+            return false;
+        }
+        dw = std::min(dw, d);
+    }
+    const size_t n = static_cast<size_t>(std::floor(rows.back().omega / dw)) + 1;
+    if (n > 100 * static_cast<size_t>(UC_MAX_WAVE_COMPONENTS)) {
+        what = file.name + ": " + std::to_string(n) + " frequencies of spacing " + number_text(dw) +
+               " rad/s (the smallest of the file) up to " + number_text(rows.back().omega) + " rad/s";
         return false;
     }
-    if (!(im > 0.0) || std::abs(re) > 1e-12 * amplitude) {
-        what = at + "the component's phase arg A = " + number_text(std::atan2(im, re)) + " rad: the FMU's regular "
-               "wave has its crest at the origin at t = 0 (arg A = pi/2, A = i |A|)";
+    size_t j = 1;
+    for (size_t i = 0; i < n; ++i) {
+        const double w = static_cast<double>(i) * dw;
+        while (j + 1 < rows.size() && rows[j].omega < w) ++j;
+        const double f = std::clamp((w - rows[j - 1].omega) / (rows[j].omega - rows[j - 1].omega), 0.0, 1.0);
+        std::complex<double> A = rows[j - 1].A + f * (rows[j].A - rows[j - 1].A);
+        const double direction = rows[j - 1].direction + f * (rows[j].direction - rows[j - 1].direction);
+        if (i == 0) {
+            if (A != 0.0) {
+                notes.push_back(at_line(row, "WaveKin 2: the component at 0 rad/s of wave_frequencies.txt, a mean level of " +
+                                                 number_text(0.5 * A.real()) + " m in MoorDyn's transform, is not a wave: left out"));
+            }
+            continue;
+        }
+        if (i + 1 == n && n > 1) A = 0.5 * A.real();  // the Nyquist bin
+        if (A == 0.0) continue;
+        sea.waveComponents.push_back({w, std::abs(A), -std::arg(A), direction});
+    }
+    return true;
+}
+
+// The samples of a record (t, value) resampled at t = i dt, i = 0 .. n - 1, linear between samples and
+// constant beyond its ends (MoorDyn's interpolation).
+std::vector<double> resample(const std::vector<std::array<double, 2>>& record, double dt, size_t n) {
+    std::vector<double> out(n);
+    size_t j = 1;
+    for (size_t i = 0; i < n; ++i) {
+        const double t = static_cast<double>(i) * dt;
+        while (j + 1 < record.size() && record[j][0] < t) ++j;
+        const auto& a = record[j - 1];
+        const auto& b = record[j];
+        const double f = std::clamp((t - a[0]) / (b[0] - a[0]), 0.0, 1.0);
+        out[i] = a[1] + f * (b[1] - a[1]);
+    }
+    return out;
+}
+
+// WaveKin 3: MoorDyn resamples the record of wave_elevation.txt ("t elevation" rows) at dtWave, drops the
+// last sample of an odd count, and takes its discrete Fourier transform X_j (j = 0 .. nt / 2, frequencies
+// j dw, dw = 2 pi / (nt dtWave)), cutting the frequencies above 0.5 Hz: the elevation is the sum of
+// (2 / nt) Re(X_j e^{i (omega t - k x)}) (the Nyquist bin counted once), travelling along +x. The same
+// components (amplitude 2 |X_j| / nt, phase -arg X_j; the mean X_0 / nt left out, noted) are the given
+// components of waves.mode 3: their sum is the resampled record at its sample times.
+bool read_wave_record(const LineFileCompanion& file, double dtWave, LineFileSea& sea, std::string& what,
+                      std::vector<std::string>& notes, int row) {
+    std::vector<NumberRow> rows;
+    if (!number_rows(file, 1, rows, what)) return false;
+    std::vector<std::array<double, 2>> record;
+    for (const NumberRow& r : rows) {
+        const std::string at = file.name + " line " + std::to_string(r.number) + ": ";
+        if (r.values.size() != 2) {
+            what = at + "a row is t elevation";
+            return false;
+        }
+        if (!record.empty() && !(r.values[0] > record.back()[0])) {
+            what = at + "t = " + number_text(r.values[0]) + " s: the times must increase row by row";
+            return false;
+        }
+        record.push_back({r.values[0], r.values[1]});
+    }
+    if (record.size() < 2 || !(record.back()[0] >= 2.0 * dtWave)) {
+        what = file.name + ": a record of " + std::to_string(record.size()) + " rows up to t = " +
+               number_text(record.empty() ? 0.0 : record.back()[0]) + " s is shorter than two steps of dtWave = " +
+               number_text(dtWave) + " s";
         return false;
     }
-    sea.regularWave = true;
-    sea.waveHeight = 2.0 * amplitude;
-    sea.wavePeriod = 2.0 * kPi / omega;
-    sea.waveDirection = w.values.size() > 3 ? w.values[3] : 0.0;
+    size_t nt = static_cast<size_t>(std::floor(record.back()[0] / dtWave)) + 1;
+    nt -= nt % 2;
+    const std::vector<double> x = resample(record, dtWave, nt);
+    const double dw = 2.0 * kPi / (static_cast<double>(nt) * dtWave);
+    const size_t last = std::min(nt / 2, static_cast<size_t>(std::floor(kPi / dw)));  // 0.5 Hz
+    if (last > static_cast<size_t>(UC_MAX_WAVE_COMPONENTS)) {
+        what = file.name + ": " + std::to_string(last) + " frequencies up to 0.5 Hz in a record of " +
+               number_text(static_cast<double>(nt) * dtWave) + " s, the FMU holds " +
+               std::to_string(UC_MAX_WAVE_COMPONENTS) + " components (a record of at most " +
+               number_text(2.0 * UC_MAX_WAVE_COMPONENTS) + " s)";
+        return false;
+    }
+    double mean = 0.0;
+    for (double v : x) mean += v;
+    mean /= static_cast<double>(nt);
+    // X_j = sum_m x_m e^{-2 pi i j m / nt}, the angle's multiple reduced modulo nt exactly
+    for (size_t j = 1; j <= last; ++j) {
+        std::complex<double> X = 0.0;
+        for (size_t m = 0; m < nt; ++m) {
+            const double angle = -2.0 * kPi * static_cast<double>((j * m) % nt) / static_cast<double>(nt);
+            X += x[m] * std::complex<double>(std::cos(angle), std::sin(angle));
+        }
+        const double scale = j == nt / 2 ? 1.0 / static_cast<double>(nt) : 2.0 / static_cast<double>(nt);
+        if (j == nt / 2) X = X.real();  // the Nyquist bin: a real cosine at the samples
+        if (X == 0.0) continue;
+        sea.waveComponents.push_back({static_cast<double>(j) * dw, scale * std::abs(X), -std::arg(X), 0.0});
+    }
+    char meanText[32];
+    std::snprintf(meanText, sizeof meanText, "%.6g", mean);
+    notes.push_back(at_line(row, "WaveKin 3: the record of wave_elevation.txt resampled at dtWave = " + number_text(dtWave) +
+                                     " s (" + std::to_string(nt) + " samples) is the sum of its " +
+                                     std::to_string(sea.waveComponents.size()) + " Fourier components up to 0.5 Hz, "
+                                     "as MoorDyn transforms it; its mean " + std::string(meanText) + " m is not a wave: left out"));
     return true;
 }
 
@@ -185,24 +334,34 @@ bool read_sea(const Options& options, const LineFileCompanions& companions, Line
                                              "importer"));
             break;
         case 2:
-            return refuse(waveRow, "WaveKin", waveKin, "waves from the spectrum of wave_frequencies.txt precomputed on "
-                          "the grid of water_grid.txt are not supported: the FMU's waves are a regular wave (waves.mode "
-                          "1) or a JONSWAP sea of its own components (waves.mode 2); WaveKin 7 with one component is "
-                          "read as the regular wave");
+            if (!file(waveRow, "WaveKin", waveKin, kWaveFrequenciesFile, text)) return false;
+            if (!read_wave_spectrum(*text, sea, what, notes, waveRow)) return refuse(waveRow, "WaveKin", waveKin, what);
+            notes.push_back(at_line(waveRow, "WaveKin 2: the spectrum of wave_frequencies.txt, interpolated to equal "
+                                             "frequency steps as MoorDyn does, is " + std::to_string(sea.waveComponents.size()) +
+                                             " given components (waves.mode 3, Wheeler stretching, in place of the parameters "
+                                             "waves.*), summed at every point: water_grid.txt, MoorDyn's grid, is not read"));
+            break;
         case 3:
-            return refuse(waveRow, "WaveKin", waveKin, "waves from the elevation record wave_elevation.txt are not "
-                          "supported: the FMU's waves are a regular wave (waves.mode 1) or a JONSWAP sea of its own "
-                          "components (waves.mode 2)");
+            if (!file(waveRow, "WaveKin", waveKin, kWaveElevationFile, text)) return false;
+            if (!read_wave_record(*text, options.dtWave, sea, what, notes, waveRow))
+                return refuse(waveRow, "WaveKin", waveKin, what);
+            break;
         case 4: case 5: case 6:
             return refuse(waveRow, "WaveKin", waveKin, "not implemented in MoorDyn v2 either");
         case 7:
             if (!file(waveRow, "WaveKin", waveKin, kWaveFrequenciesFile, text)) return false;
             if (!read_wave_components(*text, sea, what)) return refuse(waveRow, "WaveKin", waveKin, what);
-            notes.push_back(at_line(waveRow, "WaveKin 7: the one component of wave_frequencies.txt is the regular "
-                                             "wave waves.mode 1, height " + number_text(sea.waveHeight) + " m, period " +
-                                             number_text(sea.wavePeriod) + " s, direction " +
-                                             number_text(sea.waveDirection) + " rad, Wheeler stretching (in place of "
-                                             "the parameters waves.*)"));
+            if (sea.regularWave) {
+                notes.push_back(at_line(waveRow, "WaveKin 7: the one component of wave_frequencies.txt is the regular "
+                                                 "wave waves.mode 1, height " + number_text(sea.waveHeight) + " m, period " +
+                                                 number_text(sea.wavePeriod) + " s, direction " +
+                                                 number_text(sea.waveDirection) + " rad, Wheeler stretching (in place of "
+                                                 "the parameters waves.*)"));
+            } else {
+                notes.push_back(at_line(waveRow, "WaveKin 7: the " + std::to_string(sea.waveComponents.size()) +
+                                                 " components of wave_frequencies.txt are the given components of "
+                                                 "waves.mode 3, Wheeler stretching (in place of the parameters waves.*)"));
+            }
             break;
         default:
             return refuse(waveRow, "WaveKin", waveKin, "not a MoorDyn v2 option (0 to 7)");
@@ -242,9 +401,57 @@ std::vector<std::string> line_file_companions(std::string_view text) {
     if (!collect_sections(text, sections, error)) return names;
     const auto& o = sections[static_cast<size_t>(Kind::Options)];
     if (!o || !read_options(*o, options, notes, error)) return names;
-    if (options.waveKin.first == 7) names.push_back(kWaveFrequenciesFile);
+    if (options.waveKin.first == 7 || options.waveKin.first == 2) names.push_back(kWaveFrequenciesFile);
+    if (options.waveKin.first == 3) names.push_back(kWaveElevationFile);
     if (options.currents.first == 1) names.push_back(kCurrentProfileFile);
     return names;
+}
+
+}  // namespace uc
+
+namespace uc {
+
+bool read_wave_file(std::string_view text, double direction, std::vector<std::array<double, 4>>& components,
+                    std::string& error) {
+    using namespace deck;
+    components.clear();
+    const std::vector<std::string_view> lines = split_lines(text);
+    for (size_t i = 0; i < lines.size(); ++i) {
+        const std::vector<std::string_view> tokens = tokenize(lines[i]);
+        if (tokens.empty() || tokens[0].front() == '#') continue;  // blank, or a comment
+        const std::string at = "line " + std::to_string(i + 1) + ": ";
+        if (tokens.size() < 3 || tokens.size() > 4) {
+            error = at + "a row is omega [rad/s] amplitude [m] phase [rad] [direction, rad] (a comment starts with #)";
+            return false;
+        }
+        std::array<double, 4> c{0.0, 0.0, 0.0, direction};
+        for (size_t k = 0; k < tokens.size(); ++k) {
+            const std::optional<double> v = to_number(tokens[k]);
+            if (!v) {
+                error = at + quoted(tokens[k]) + " is not a number";
+                return false;
+            }
+            c[k] = *v;
+        }
+        components.push_back(c);
+    }
+    if (components.empty()) {
+        error = "no rows of components (omega [rad/s] amplitude [m] phase [rad] [direction, rad])";
+        return false;
+    }
+    return true;
+}
+
+bool apply_wave_components(const std::vector<std::array<double, 4>>& components, const char* from, UCParams& p,
+                           std::string& error) {
+    if (components.size() > static_cast<size_t>(UC_MAX_WAVE_COMPONENTS)) {
+        error = std::string(from) + ": " + std::to_string(components.size()) + " wave components, the FMU holds " +
+                std::to_string(UC_MAX_WAVE_COMPONENTS) + " (waves.mode 3)";
+        return false;
+    }
+    p.waveComponentCount = static_cast<int>(components.size());
+    for (size_t k = 0; k < components.size(); ++k) std::copy(components[k].begin(), components[k].end(), p.waveComponents + 4 * k);
+    return true;
 }
 
 }  // namespace uc

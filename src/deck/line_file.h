@@ -6,6 +6,7 @@
 // tokenizer) are internal to the folder (docs/architecture.md).
 #pragma once
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -46,14 +47,28 @@ enum class LineFileFarEnd { Anchored, Body, Free };
 
 // The water's motion a deck's kinematics options describe, in the FMU's terms (docs/lines.md, "Options and
 // environment"): MoorDyn's steady current profile (Currents 1) as the currentProfile.* parameters, one
-// wave component (WaveKin 7) as the regular wave of waves.*.
+// wave component at MoorDyn's phase pi/2 (WaveKin 7) as the regular wave of waves.*, other components
+// (WaveKin 2, 3, 7) as the given components of waves.mode 3.
 struct LineFileSea {
     int profileRows = 0;  // > 0: the deck sets the current profile
     double profileDepth[UC_CURRENT_PROFILE_ROWS] = {}, profileX[UC_CURRENT_PROFILE_ROWS] = {},
            profileY[UC_CURRENT_PROFILE_ROWS] = {};
     bool regularWave = false;  // the deck sets waves.mode 1 with these
     double waveHeight = 0.0, wavePeriod = 0.0, waveDirection = 0.0;
+    // not empty: the deck sets waves.mode 3 with these, each omega [rad/s], amplitude [m], phase [rad],
+    // direction of travel [rad] in the FMU's convention a cos(k (x cos b + y sin b) - omega t + p)
+    std::vector<std::array<double, 4>> waveComponents;
 };
+
+// The rows "omega amplitude phase [direction]" of a waves.file (docs/waves.md, "Given components") into
+// components as LineFileSea's (direction: the column, else `direction`); false with "line <n>: <what>".
+bool read_wave_file(std::string_view text, double direction, std::vector<std::array<double, 4>>& components,
+                    std::string& error);
+
+// Writes given components into waves.mode 3 (waveComponentCount, waveComponents); false when more than
+// UC_MAX_WAVE_COMPONENTS, naming the count and `from`.
+bool apply_wave_components(const std::vector<std::array<double, 4>>& components, const char* from, UCParams& p,
+                           std::string& error);
 
 // The text of a file MoorDyn reads from the deck's directory (current_profile.txt, wave_frequencies.txt).
 struct LineFileCompanion {

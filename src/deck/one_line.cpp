@@ -277,6 +277,12 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
             p.currentProfileY[k] = sea.profileY[k];
         }
     }
+    if (!sea.waveComponents.empty() && !apply_wave_components(sea.waveComponents, "the deck", p, error)) return false;
+    if (!sea.waveComponents.empty()) {
+        p.wavesMode = 3;
+        p.wavesStretching = 1;  // MoorDyn's Wheeler stretching
+        p.wavesRampTime = 0.0;
+    }
     if (sea.regularWave) {
         p.wavesMode = 1;
         p.wavesHeight = sea.waveHeight;

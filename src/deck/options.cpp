@@ -62,9 +62,13 @@ bool read_options(const Section& section, Options& options, std::vector<std::str
                                                         "itself (initMode)"));
         } else if (is_one_of(name, {"writelog", "writeunits", "disableoutput", "disableouttime"})) {
             notes.push_back(at_line(row.number, name_shown + " ignored, not applicable: MoorDyn's own files and output"));
-        } else if (is_one_of(name, {"dtwave", "unifycurrentgrid"})) {
+        } else if (name == "dtwave") {
+            options.dtWave = f.number(0, name_shown.c_str(), 0.0, HUGE_VAL, "a time step must be positive");
+            if (f.ok() && !(options.dtWave > 0.0)) return f.fail("dtWave = 0 s: a time step must be positive");
+            options.dtWaveRow = row.number;
+        } else if (name == "unifycurrentgrid") {
             notes.push_back(at_line(row.number, name_shown + " ignored, not applicable: it concerns MoorDyn's grids of wave and "
-                                                        "current kinematics, which the FMU refuses (WaveKin, Currents)"));
+                                                        "current kinematics, which the FMU does not make (WaveKin, Currents)"));
         } else {
             notes.push_back(at_line(row.number, "unknown option " + quoted(row.tokens[1]) +
                                                     " ignored (MoorDyn ignores it too, with a warning)"));

@@ -22,6 +22,8 @@ struct Options {
     double waterDensity = kMoorDynWaterDensity;
     bool noInitialConditions = false;  // TmaxIC 0: MoorDyn generates no initial conditions
     std::pair<int, int> waveKin{0, 0}, currents{0, 0};  // MoorDyn's kinematics options: (value, line of the file)
+    double dtWave = 0.25;  // [s] MoorDyn's resampling of an elevation record (WaveKin 3); its default 0.25 s
+    int dtWaveRow = 0;
     int waterDepthRow = 0, gravityRow = 0, waterDensityRow = 0;
     LineFileSeabed seabed;  // MoorDyn's seabed (its defaults where the deck is silent)
 };

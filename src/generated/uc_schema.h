@@ -14,6 +14,7 @@
 #define UC_MAX_LINES 16
 #define UC_MAX_BODIES 4
 #define UC_MAX_POINTS 16
+#define UC_MAX_WAVE_COMPONENTS 1024
 
 typedef struct UCSection {
     double length; /* section[k].length [m]: unstretched length (must be > 0 when k <= nSections >= 2) */
@@ -139,7 +140,7 @@ typedef struct UCParams {
     double fatigueM; /* fatigue.m: slope m of the S–N curve N = K S^−m of the online fatigue count (S: tension range over `fatigue.area`, in MPa) */
     double fatigueLogK; /* fatigue.logK: log10 K of the S–N curve of the online fatigue count */
     double fatigueArea; /* fatigue.area [m2]: area that turns the tow-tension range into a stress range (the nominal steel area); 0, the default, counts no fatigue */
-    int wavesMode; /* waves.mode: waves: 0 calm, 1 regular Airy wave (`waves.height` H, `waves.period` T), 2 irregular JONSWAP sea (Hs, Tp) */
+    int wavesMode; /* waves.mode: waves: 0 calm, 1 regular Airy wave (`waves.height` H, `waves.period` T), 2 irregular JONSWAP sea (Hs, Tp), 3 the components of `waves.file` (or of a `lineFile` deck's `WaveKin` 2, 3 or 7; [docs/waves.md](docs/waves.md), "Given components") */
     double wavesHeight; /* waves.height [m]: wave height H (regular) or significant wave height Hs (JONSWAP); H / wavelength above 1/7 (breaking) is refused */
     double wavesPeriod; /* waves.period [s]: wave period T (regular) or peak period Tp (JONSWAP) */
     double wavesGamma; /* waves.gamma: JONSWAP peak enhancement factor (1: Pierson–Moskowitz) */
@@ -174,8 +175,11 @@ typedef struct UCParams {
     int failurePoint; /* failure.point: a mooring system: the deck point (its ID) that `failure.line` detaches from: a point on a coupled body, a coupled point or a free point where three or more lines meet; 0: the line's fairlead */
     double failureTime; /* failure.time [s]: a mooring system: the time at which `failure.line` detaches (0: not by time); the step that contains it ends there */
     double failureTension; /* failure.tension [N]: a mooring system: the tension of `failure.line` at `failure.point` at which it detaches (0: not by tension); the step in which it is reached ends where it is, the tension there within the integrator's tolerance of it */
+    char wavesFile[UC_STRING_CAPACITY]; /* waves.file: `waves.mode` 3: path of a file of wave components, one a row: ω [rad/s], amplitude a [m], phase p [rad] and optionally the direction of travel β [rad] (else `waves.direction`), each the elevation a cos(k (x cos β + y sin β) − ω t + p) ([docs/waves.md](docs/waves.md), "Given components"); a relative path is looked up as `lineFile`'s; empty: the components of a `lineFile` deck */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
+    int waveComponentCount; /* (not an FMU variable) waves.mode 3: the number of given wave components in waveComponents (from waves.file or a lineFile deck) */
+    double waveComponents[4096]; /* (not an FMU variable) waves.mode 3: component k at 4 k: omega [rad/s], amplitude [m], phase [rad], direction of travel [rad]; elevation a cos(k (x cos b + y sin b) - omega t + p) (UC_MAX_WAVE_COMPONENTS x 4) */
 } UCParams;
 
 typedef struct UCInputs {
@@ -528,6 +532,7 @@ typedef struct UCOutputs {
     X(271, "failure.point", INTEGER, PARAMETER, failurePoint) \
     X(272, "failure.time", REAL, PARAMETER, failureTime) \
     X(273, "failure.tension", REAL, PARAMETER, failureTension) \
+    X(274, "waves.file", STRING, PARAMETER, wavesFile) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -1711,7 +1716,7 @@ typedef struct UCOutputs {
     X(fatigueM, "fatigue.m", 0.0, 20.0, 1, 0, "(0, 20]", "the slope of the S-N curve is a positive number (3 to 5 for steel wire and chain)") \
     X(fatigueLogK, "fatigue.logK", 0.0, 40.0, 1, 0, "(0, 40]", "log10 K of the S-N curve is a positive number") \
     X(fatigueArea, "fatigue.area", 0.0, 10.0, 0, 0, "[0, 10]", "the area that turns tension into stress is 0 (no fatigue count) or a positive cross-section") \
-    X(wavesMode, "waves.mode", 0.0, 2.0, 0, 0, "{0 calm, 1 regular Airy, 2 irregular JONSWAP}", "unknown wave model") \
+    X(wavesMode, "waves.mode", 0.0, 3.0, 0, 0, "{0 calm, 1 regular Airy, 2 irregular JONSWAP, 3 given components}", "unknown wave model") \
     X(wavesHeight, "waves.height", 0.0, 40.0, 0, 0, "[0, 40]", "the wave height is a length between 0 and 40 m") \
     X(wavesPeriod, "waves.period", 0.0, 60.0, 1, 0, "(0, 60]", "the wave period is a positive time up to 60 s") \
     X(wavesGamma, "waves.gamma", 1.0, 10.0, 0, 0, "[1, 10]", "the JONSWAP peak enhancement factor is between 1 (Pierson-Moskowitz) and 10") \

@@ -75,10 +75,18 @@ std::string check_params(const UCParams& p) {
         return m;
     if (p.enableSeabed && positive(m, "seabedStiffness", p.seabedStiffness, "an enabled seabed needs a contact stiffness"))
         return m;
-    if (p.wavesMode != 0 && p.wavesHeight > 0.0 &&
+    const bool ownSea = p.wavesMode == 1 || p.wavesMode == 2;  // waves.mode 3: given components
+    if (ownSea && p.wavesHeight > 0.0 &&
         positive(m, "gravity", p.gravity, "waves need gravity: it sets their wavelength (w^2 = g k tanh(k h))"))
         return m;
-    if (p.wavesMode != 0 && p.wavesHeight > 0.0) {  // breaking: H over the (peak) wavelength above 1/7
+    if (p.wavesMode == 3) {
+        const std::string given = given_waves_violation(p);
+        if (!given.empty()) return given;
+    } else if (p.wavesFile[0] != '\0') {
+        return "waves.file = '" + std::string(p.wavesFile) + "' is set with waves.mode = " + std::to_string(p.wavesMode) +
+               ": its components are the sea of waves.mode 3 only (set waves.mode 3, or leave waves.file empty)";
+    }
+    if (ownSea && p.wavesHeight > 0.0) {  // breaking: H over the (peak) wavelength above 1/7
         const double k = wave_number(2.0 * kPi / p.wavesPeriod, p.waterDepth, p.gravity);
         const double limit = 2.0 * kPi / k / 7.0;
         if (p.wavesHeight > limit) {

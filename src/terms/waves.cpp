@@ -51,6 +51,50 @@ constexpr double kNegligibleTerms = 1e-12;
 
 double wave_number(double omega, double depth, double gravity) { return pm_wave_number(omega, depth, gravity); }
 
+std::string given_waves_violation(const UCParams& p) {
+    const char* from = p.wavesFile[0] != '\0' ? "waves.file" : "the lineFile deck";
+    char text[400];
+    if (p.waveComponentCount <= 0 || p.waveComponentCount > UC_MAX_WAVE_COMPONENTS) {
+        if (p.waveComponentCount <= 0)
+            return "waves.mode = 3 (given components) has none: set waves.file (rows omega [rad/s], amplitude [m], phase "
+                   "[rad], [direction, rad]) or a lineFile deck with WaveKin 2, 3 or 7";
+        std::snprintf(text, sizeof text, "waves.mode = 3: %d components of %s, the FMU holds %d", p.waveComponentCount,
+                      from, UC_MAX_WAVE_COMPONENTS);
+        return text;
+    }
+    if (!(p.gravity > 0.0)) {
+        std::snprintf(text, sizeof text, "gravity = %.17g: waves need gravity, it sets their wavelength (w^2 = g k tanh(k h))",
+                      p.gravity);
+        return text;
+    }
+    for (int k = 0; k < p.waveComponentCount; ++k) {
+        const double* c = p.waveComponents + 4 * k;
+        const char* what = nullptr;
+        if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]) || !std::isfinite(c[3])) {
+            what = "a value is not a finite number";
+        } else if (c[1] < 0.0) {
+            what = "a negative amplitude (a phase of pi turns a component over)";
+        } else if (c[1] > 0.0 && !(c[0] > 0.0)) {
+            what = "a component of frequency 0 or below is not a wave (a mean level is not a wave)";
+        }
+        if (what != nullptr) {
+            std::snprintf(text, sizeof text, "wave component %d of %s: omega = %.17g rad/s, amplitude = %.17g m, phase = "
+                          "%.17g rad, direction = %.17g rad: %s", k + 1, from, c[0], c[1], c[2], c[3], what);
+            return text;
+        }
+        if (c[1] == 0.0) continue;
+        const double wavelength = 2.0 * kPi / wave_number(c[0], p.waterDepth, p.gravity);
+        if (2.0 * c[1] > wavelength / 7.0) {
+            std::snprintf(text, sizeof text, "wave component %d of %s: amplitude = %.17g m at omega = %.17g rad/s is "
+                          "too steep in %.17g m of water: H / lambda = %.3g exceeds the breaking limit 1/7 (lambda = %.4g m)",
+                          k + 1, from, c[1], c[0], p.waterDepth, 2.0 * c[1] / wavelength, wavelength);
+            return text;
+        }
+    }
+    return {};
+}
+
+
 unsigned long long SplitMix64::next() {
     std::uint64_t state = state_;
     const std::uint64_t z = pm_splitmix64_next(&state);
@@ -60,12 +104,13 @@ unsigned long long SplitMix64::next() {
 
 bool SeaState::build(const UCParams& p, std::string& error) {
     components_.clear();
-    if (p.wavesMode == 0 || p.wavesHeight == 0.0) return true;
+    groups_.clear();
+    if (p.wavesMode == 0 || (p.wavesMode != 3 && p.wavesHeight == 0.0)) return true;
     depth_ = p.waterDepth;
     rampTime_ = p.wavesRampTime;
     wheeler_ = p.wavesStretching != 0;
-    cosb_ = std::cos(p.wavesDirection);
-    sinb_ = std::sin(p.wavesDirection);
+    gravity_ = p.gravity;
+    if (p.wavesMode == 3) return build_given(p, error);
     const double g = p.gravity;
     // The components (sea_state.h, shared with the partner FMUs); a breaking sea is refused naming waves.height.
     const PMWaves waves = {p.wavesMode, p.wavesHeight, p.wavesPeriod, p.wavesGamma, p.wavesDirection,
@@ -76,15 +121,62 @@ bool SeaState::build(const UCParams& p, std::string& error) {
         error = text;
         return false;
     }
-    for (const PMWaveComponent& c : generated) components_.push_back({c.amplitude, c.omega, c.k, c.phase});
+    std::vector<WaveComponent> components;
+    for (const PMWaveComponent& c : generated) components.push_back({c.amplitude, c.omega, c.k, c.phase});
     const double wp = 2.0 * kPi / p.wavesPeriod;
     // The ladder of the JONSWAP frequencies w0 + (i + 1/2) dw (kinematics); a single component is its
     // own ladder.
-    gravity_ = g;
     const double wp0 = 0.5 * wp;
     const double dwAll = p.wavesMode == 1 ? 0.0 : (3.0 * wp - wp0) / p.wavesNComponents;
-    ladderAlpha_ = p.wavesMode == 1 ? wp : wp0 + 0.5 * dwAll;
-    ladderBeta_ = dwAll;
+    build_direction(std::move(components), p.wavesDirection, p.wavesMode == 1 ? wp : wp0 + 0.5 * dwAll, dwAll);
+    return true;
+}
+
+bool SeaState::build_given(const UCParams& p, std::string& error) {
+    error = given_waves_violation(p);
+    if (!error.empty()) return false;
+    // one sea per direction of travel, in the order of their first component
+    std::vector<double> directions;
+    std::vector<std::vector<WaveComponent>> byDirection;
+    for (int k = 0; k < p.waveComponentCount; ++k) {
+        const double* c = p.waveComponents + 4 * k;
+        if (c[1] == 0.0) continue;
+        size_t d = 0;
+        while (d < directions.size() && directions[d] != c[3]) ++d;
+        if (d == directions.size()) directions.push_back(c[3]), byDirection.emplace_back();
+        byDirection[d].push_back({c[1], c[0], wave_number(c[0], depth_, gravity_), c[2]});
+    }
+    if (directions.empty()) return true;  // calm: every amplitude is 0
+    for (size_t d = 1; d < directions.size(); ++d) {
+        SeaState group;
+        group.depth_ = depth_, group.rampTime_ = rampTime_, group.wheeler_ = wheeler_, group.gravity_ = gravity_;
+        group.build_direction(std::move(byDirection[d]), directions[d]);
+        groups_.push_back(std::move(group));
+    }
+    build_direction(std::move(byDirection[0]), directions[0]);
+    return true;
+}
+
+void SeaState::build_direction(std::vector<WaveComponent> components, double direction) {
+    std::stable_sort(components.begin(), components.end(),
+                     [](const WaveComponent& a, const WaveComponent& b) { return a.omega < b.omega; });
+    // Equally spaced frequencies (to 1e-9 of the highest) climb the ladder of the deep-water
+    // wavenumbers (kinematics); others climb a ladder of zeros, every e^{k zeta} then its own shift.
+    const size_t n = components.size();
+    const double w0 = components.front().omega, dw = n > 1 ? (components.back().omega - w0) / static_cast<double>(n - 1) : 0.0;
+    bool even = n == 1 || dw > 0.0;
+    for (size_t i = 0; i < n && even; ++i)
+        even = std::fabs(components[i].omega - (w0 + dw * static_cast<double>(i))) <= 1e-9 * components.back().omega;
+    build_direction(std::move(components), direction, even ? w0 : 0.0, even ? dw : 0.0);
+}
+
+void SeaState::build_direction(std::vector<WaveComponent> components, double direction, double alpha, double beta) {
+    components_ = std::move(components);
+    direction_ = direction;
+    cosb_ = std::cos(direction);
+    sinb_ = std::sin(direction);
+    ladderAlpha_ = alpha;
+    ladderBeta_ = beta;
     for (size_t i = 0; i < components_.size(); ++i) {
         WaveComponent& c = components_[i];
         c.kx = c.k * cosb_;
@@ -96,7 +188,7 @@ bool SeaState::build(const UCParams& p, std::string& error) {
         c.accelerationScale = c.velocityScale * c.omega;
         c.ladderShift = c.k - ladder_k(static_cast<double>(i));
         if (std::fabs(c.ladderShift) <= 4e-16 * c.k) c.ladderShift = 0.0;  // deep water: on the ladder to round-off
-        c.deepMoments = std::fabs(c.k - c.omega * c.omega / g) <= 1e-14 * c.k;
+        c.deepMoments = std::fabs(c.k - c.omega * c.omega / gravity_) <= 1e-14 * c.k;
     }
     for (Phases* phases : {&phases_, &expansionPhases_}) {
         phases->cos.assign(components_.size(), 0.0);
@@ -104,7 +196,6 @@ bool SeaState::build(const UCParams& p, std::string& error) {
         phases->valid = false;
     }
     build_expansions();
-    return true;
 }
 
 void SeaState::build_expansions() {
@@ -192,6 +283,12 @@ double SeaState::ramp(double t) const {
 }
 
 double SeaState::elevation(double x, double y, double t) const {
+    double eta = own_elevation(x, y, t);
+    for (const SeaState& group : groups_) eta += group.own_elevation(x, y, t);
+    return eta;
+}
+
+double SeaState::own_elevation(double x, double y, double t) const {
     if (components_.empty()) return 0.0;
     const Phases& ph = phases_at(phases_, t);
     double eta = 0.0;
@@ -261,12 +358,17 @@ void SeaState::kinematics(const Vec3& r, double t, Vec3& u, Vec3& a, Mat3* du, M
     if (du) du->setZero();
     if (da) da->setZero();
     if (components_.empty()) return;
-    const Phases& ph = phases_at(phases_, t);
     double z = std::min(r.z(), 0.0);
     if (wheeler_) {
         const double eta = elevation(r.x(), r.y(), t);
         z = std::min(depth_ * (r.z() - eta) / (depth_ + eta), 0.0);
     }
+    add_kinematics(r, z, t, u, a, du, da);
+    for (const SeaState& group : groups_) group.add_kinematics(r, z, t, u, a, du, da);
+}
+
+void SeaState::add_kinematics(const Vec3& r, double z, double t, Vec3& u, Vec3& a, Mat3* du, Mat3* da) const {
+    const Phases& ph = phases_at(phases_, t);
     const double f = ramp(t);
     const double s = cosb_ * r.x() + sinb_ * r.y();  // along the direction of travel
     double uh = 0.0, w = 0.0, ah = 0.0, aw = 0.0;                  // along the direction of travel, vertical
@@ -313,20 +415,21 @@ void SeaState::kinematics(const Vec3& r, double t, Vec3& u, Vec3& a, Mat3* du, M
             }
         }
     }
-    u = f * Vec3(uh * cosb_, uh * sinb_, w);
-    a = f * Vec3(ah * cosb_, ah * sinb_, aw);
+    u += f * Vec3(uh * cosb_, uh * sinb_, w);
+    a += f * Vec3(ah * cosb_, ah * sinb_, aw);
     // d/dx = cos(beta) d/ds, d/dy = sin(beta) d/ds (the stretching's own slope is left out).
+    Mat3 g;
     if (du) {
-        *du << duh_ds * cosb_ * cosb_, duh_ds * cosb_ * sinb_, duh_dz * cosb_,
-               duh_ds * sinb_ * cosb_, duh_ds * sinb_ * sinb_, duh_dz * sinb_,
-               dw_ds * cosb_, dw_ds * sinb_, dw_dz;
-        *du *= f;
+        g << duh_ds * cosb_ * cosb_, duh_ds * cosb_ * sinb_, duh_dz * cosb_,
+             duh_ds * sinb_ * cosb_, duh_ds * sinb_ * sinb_, duh_dz * sinb_,
+             dw_ds * cosb_, dw_ds * sinb_, dw_dz;
+        *du += f * g;
     }
     if (da) {
-        *da << dah_ds * cosb_ * cosb_, dah_ds * cosb_ * sinb_, dah_dz * cosb_,
-               dah_ds * sinb_ * cosb_, dah_ds * sinb_ * sinb_, dah_dz * sinb_,
-               daw_ds * cosb_, daw_ds * sinb_, daw_dz;
-        *da *= f;
+        g << dah_ds * cosb_ * cosb_, dah_ds * cosb_ * sinb_, dah_dz * cosb_,
+             dah_ds * sinb_ * cosb_, dah_ds * sinb_ * sinb_, dah_dz * sinb_,
+             daw_ds * cosb_, daw_ds * sinb_, daw_dz;
+        *da += f * g;
     }
 }
 
@@ -476,7 +579,8 @@ const WaveExpansion::Polynomial& SeaState::cell_polynomial(size_t b, double z, d
 void SeaState::expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache, Vec3& u, Vec3& a, Mat3* du,
                                    Mat3* da) const {
     constexpr int D = WaveExpansion::kDegree;
-    if (components_.size() < kPolynomialComponents) {  // a short sum costs less than the polynomial
+    // a short sum costs less than the polynomial; the seas of several directions are summed too
+    if (components_.size() < kPolynomialComponents || !groups_.empty()) {
         kinematics(r, t, u, a, du, da);
         return;
     }

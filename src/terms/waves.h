@@ -1,5 +1,5 @@
-// waves.h - linear (Airy) wave kinematics: a regular wave or a JONSWAP sea as a sum of components,
-// with finite-depth dispersion and optional Wheeler stretching (docs/waves.md).
+// waves.h - linear (Airy) wave kinematics: a regular wave, a JONSWAP sea or given components (waves.mode 3)
+// as a sum of components, with finite-depth dispersion and optional Wheeler stretching (docs/waves.md).
 //
 // Convention: a component of amplitude a, frequency w, wavenumber k, direction of travel beta
 // (from +x toward +y) and phase p has the elevation a cos(k (x cos beta + y sin beta) - w t + p); the
@@ -49,6 +49,10 @@ struct WaveExpansion {
 // method to round-off.
 double wave_number(double omega, double depth, double gravity);
 
+// waves.mode 3: empty when the given components (waveComponentCount, waveComponents) make a sea;
+// otherwise why not, naming the component, its value, unit and the likely cause.
+std::string given_waves_violation(const UCParams& p);
+
 // The uniform [0, 1) doubles of SplitMix64 from a seed (53 bits of each 64-bit output).
 class SplitMix64 {
 public:
@@ -62,11 +66,16 @@ private:
 
 class SeaState {
 public:
-    // Calm unless waves.mode is 1 (regular) or 2 (JONSWAP); false with a message naming the parameter
-    // when the waves cannot be built (breaking steepness).
+    // Calm unless waves.mode is 1 (regular), 2 (JONSWAP) or 3 (the given components waveComponents);
+    // false with a message naming the parameter when the waves cannot be built (breaking steepness).
     bool build(const UCParams& p, std::string& error);
     bool calm() const { return components_.empty(); }
+    // The components travelling along the first direction (all of them but for given components of
+    // several directions: the others are in groups()), frequency ascending.
     const std::vector<WaveComponent>& components() const { return components_; }
+    double direction() const { return direction_; }
+    // Given components of other directions of travel: one sea per direction, summed with this one.
+    const std::vector<SeaState>& groups() const { return groups_; }
 
     double elevation(double x, double y, double t) const;
     // Water velocity u and acceleration a (local, du/dt) at r and t, and their gradients du/dr, da/dr
@@ -93,6 +102,15 @@ public:
 
 private:
     double ramp(double t) const;
+    // The components of one direction of travel (sorted here by frequency), their precomputed
+    // factors, the ladder when the frequencies are equally spaced, and the expansions.
+    bool build_given(const UCParams& p, std::string& error);
+    void build_direction(std::vector<WaveComponent> components, double direction);
+    void build_direction(std::vector<WaveComponent> components, double direction, double ladderAlpha, double ladderBeta);
+    // This direction's sum of the elevation, and its kinematics at r (z: the depth they are taken at,
+    // stretched or not) added to u, a, du, da.
+    double own_elevation(double x, double y, double t) const;
+    void add_kinematics(const Vec3& r, double z, double t, Vec3& u, Vec3& a, Mat3* du, Mat3* da) const;
     // The deep-water wavenumber (alpha + beta i)^2 / g of component i of equally spaced frequencies
     // alpha + beta i: quadratic in i, so exp(k_i (z + i s)) follows from its predecessor by two complex
     // multiplications (kinematics); the true k_i differs from it by the component's ladderShift.
@@ -128,8 +146,9 @@ private:
     const WaveExpansion::Polynomial& cell_polynomial(size_t b, double z, double s, double t, bool surface,
                                                      WaveExpansion::Polynomial& e) const;
     std::vector<WaveComponent> components_;
+    std::vector<SeaState> groups_;
     mutable Phases phases_, expansionPhases_;
-    double depth_ = 0.0, rampTime_ = 0.0, cosb_ = 1.0, sinb_ = 0.0;
+    double depth_ = 0.0, rampTime_ = 0.0, cosb_ = 1.0, sinb_ = 0.0, direction_ = 0.0;
     double gravity_ = 9.81, ladderAlpha_ = 0.0, ladderBeta_ = 0.0;
     bool wheeler_ = false;
     // Taylor weights a w k^m w^n / (m! n!) of each component, kTerms per component (expand), and the

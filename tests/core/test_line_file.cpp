@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <random>
 #include <string>
@@ -540,7 +542,7 @@ TEST(LineFileRefuses, NonLinearAndOtherUnsupportedLineProperties) {
     d = edit(kSingleChain, "1.0   0.2   0.0\n", "1.0   0.2\n");
     expect_refused(d, "1.0   0.2\n", "this row has 9");
     d = edit(kSingleChain, "0.002    dtM", "2 WaveKin");
-    expect_refused(d, "2 WaveKin", "WaveKin = 2: waves from the spectrum of wave_frequencies.txt");
+    expect_refused(d, "2 WaveKin", "WaveKin = 2: MoorDyn reads wave_frequencies.txt from the deck's directory");
     d = edit(kSingleChain, "0.002    dtM", "1 Currents");  // its file is not handed over
     expect_refused(d, "1 Currents", "Currents = 1: MoorDyn reads current_profile.txt from the deck's directory");
     d = edit(kSingleChain, "320      WtrDpth", "bathy.txt WtrDpth");
@@ -694,15 +696,120 @@ TEST(LineFileKinematics, WhatTheFmusSeaCannotHoldIsRefusedNamingOptionAndValue) 
              {"2 Currents", "Currents = 2: a current profile changing in time"},
              {"3 Currents", "Currents = 3: not implemented in MoorDyn v2 either"},
              {"5 Currents", "Currents = 5: a current on a grid in x, y, z and time"},
-             {"3 WaveKin", "WaveKin = 3: waves from the elevation record"},
+             {"3 WaveKin", "WaveKin = 3: MoorDyn reads wave_elevation.txt from the deck's directory"},
              {"5 WaveKin", "WaveKin = 5: not implemented in MoorDyn v2 either"},
              {"9 WaveKin", "WaveKin = 9: not a MoorDyn v2 option"}}) {
         expect_refused(edit(kSingleChain, "0.002    dtM", option), option, what);
     }
     const std::string w = edit(kSingleChain, "0.002    dtM", "7 WaveKin");
-    EXPECT_NE(refused(w, {{"wave_frequencies.txt", "0 0 0\n0.35 1 0\n0.4 0 1 1.57\n"}}).find("has 2 components"),
+    EXPECT_NE(refused(w, {{"wave_frequencies.txt", "0 0 0\n-0.4 1 0\n"}}).find("line 2: a component of frequency -0.4"), std::string::npos);
+    const std::string s = edit(kSingleChain, "0.002    dtM", "2 WaveKin");
+    EXPECT_NE(refused(s, {{"wave_frequencies.txt", "0.1 0 0\n0.4 1 0\n"}}).find("the first at 0 rad/s"), std::string::npos);
+    EXPECT_NE(refused(s, {{"wave_frequencies.txt", "0 0 0\n0.4 1 0\n0.4 1 0\n"}}).find("line 3: omega = 0.4"),
               std::string::npos);
-    EXPECT_NE(refused(w, {{"wave_frequencies.txt", "0 0 0\n0.4 1 0\n"}}).find("arg A = 0 rad"), std::string::npos);
+    const std::string e = edit(kSingleChain, "0.002    dtM", "3 WaveKin");
+    EXPECT_NE(refused(e, {{"wave_elevation.txt", "0 0\n0.1 0.2\n"}}).find("shorter than two steps of dtWave = 0.25 s"),
+              std::string::npos);
+    EXPECT_NE(refused(e, {{"wave_elevation.txt", "0 0\n1 0.2\n0.5 0\n"}}).find("line 3: t = 0.5 s: the times must increase"),
+              std::string::npos);
+}
+
+namespace {
+
+// The deck's given components (waves.mode 3) as written into the parameters.
+std::vector<std::array<double, 4>> given_components(const Read& r) {
+    UCParams p;
+    uc_params_default(&p);
+    std::string error;
+    EXPECT_TRUE(uc::apply_line_file(r.line, p, error)) << error;
+    EXPECT_EQ(p.wavesMode, 3);
+    EXPECT_EQ(p.wavesStretching, 1);
+    std::vector<std::array<double, 4>> out;
+    for (int k = 0; k < p.waveComponentCount; ++k)
+        out.push_back({p.waveComponents[4 * k], p.waveComponents[4 * k + 1], p.waveComponents[4 * k + 2], p.waveComponents[4 * k + 3]});
+    return out;
+}
+
+}  // namespace
+
+TEST(LineFileKinematics, WaveKin7ComponentsAreGivenComponentsInTheFmusConvention) {
+    // MoorDyn's |A| sin(w t - k x + arg A) is a cos(k x - w t + p) with a = |A|, p = pi/2 - arg A
+    const std::string w = edit(kSingleChain, "0.002    dtM", "7 WaveKin");
+    const Read r = read_with(w, {{"wave_frequencies.txt", "0.0 0.0 0.0\n0.35 1.0 0.0 0.0\n0.4 0.0 1.0 1.57\n0.6 0.0 0.0\n"}});
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_FALSE(r.line.sea.regularWave);
+    EXPECT_TRUE(has_note(r.line, "WaveKin 7: the 2 components of wave_frequencies.txt are the given components of waves.mode 3"));
+    const auto c = given_components(r);
+    ASSERT_EQ(c.size(), 2u);
+    const double half = 2.0 * std::acos(0.0) / 2.0;
+    EXPECT_EQ(c[0], (std::array<double, 4>{0.35, 1.0, half, 0.0}));
+    EXPECT_EQ(c[1], (std::array<double, 4>{0.4, 1.0, 0.0, 1.57}));
+    const Read zero = read_with(w, {{"wave_frequencies.txt", "0 0 0\n0.4 1 0\n"}});  // arg A = 0: one component, not the regular wave
+    ASSERT_TRUE(zero.ok) << zero.error;
+    EXPECT_EQ(given_components(zero), (std::vector<std::array<double, 4>>{{0.4, 1.0, half, 0.0}}));
+}
+
+TEST(LineFileKinematics, WaveKin2SpectrumIsInterpolatedToMoorDynsEqualStepsAndWaveKin3RecordIsItsFourierComponents) {
+    // WaveKin 2: steps of 0.1 rad/s (the smallest spacing) from 0 to 0.4; A interpolated linearly between
+    // rows; MoorDyn's elevation Re(A e^{i (w t - k x)}): p = -arg A; the last frequency (the transform's
+    // Nyquist bin) enters as Re(A) / 2.
+    const std::string s = edit(kSingleChain, "0.002    dtM", "2 WaveKin");
+    const Read r = read_with(s, {{"wave_frequencies.txt", "0 0 0\n0.2 1 0\n0.3 0 2\n0.4 -1.5 3\n"}});
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_TRUE(has_note(r.line, "WaveKin 2: the spectrum of wave_frequencies.txt, interpolated to equal frequency steps"));
+    const auto c = given_components(r);
+    ASSERT_EQ(c.size(), 4u);
+    const double pi = 2.0 * std::acos(0.0);
+    EXPECT_NEAR(c[0][0], 0.1, 1e-15);
+    EXPECT_NEAR(c[0][1], 0.5, 1e-15);  // halfway from 0 to 1
+    EXPECT_NEAR(c[0][2], 0.0, 1e-15);
+    EXPECT_NEAR(c[2][1], 2.0, 1e-14);  // interpolated at 3 x 0.1 rad/s, as MoorDyn does: round-off
+    EXPECT_NEAR(c[2][2], -pi / 2, 1e-15);
+    EXPECT_NEAR(c[3][0], 0.4, 1e-15);
+    EXPECT_NEAR(c[3][1], 0.75, 1e-15);  // Re(A) / 2 = -0.75: amplitude 0.75, phase pi
+    EXPECT_NEAR(std::abs(c[3][2]), pi, 1e-15);
+    // WaveKin 3: a record of known components on the transform's frequencies (dtWave 0.5 s, 80 samples:
+    // dw = 2 pi / 40 s) returns them, amplitudes and phases to 1e-12; a 0.75 m mean is left out (noted).
+    const double dw = 2.0 * pi / 40.0;
+    const std::vector<std::array<double, 3>> known = {{3 * dw, 0.8, 0.4}, {7 * dw, 0.3, -2.0}, {20 * dw, 0.1, 1.0}};
+    std::string record;
+    for (int m = 0; m <= 80; ++m) {  // 81 samples: the odd last one is dropped, as MoorDyn does
+        const double t = 0.5 * m;
+        double eta = 0.75;
+        for (const auto& k : known) eta += k[1] * std::cos(-k[0] * t + k[2]);
+        char row[64];
+        std::snprintf(row, sizeof row, "%.17g %.17g\n", t, eta);
+        record += row;
+    }
+    const std::string e = edit(kSingleChain, "0.002    dtM", "3 WaveKin\n0.5 dtWave");
+    const Read rr = read_with(e, {{"wave_elevation.txt", record}});
+    ASSERT_TRUE(rr.ok) << rr.error;
+    EXPECT_TRUE(has_note(rr.line, "WaveKin 3: the record of wave_elevation.txt resampled at dtWave = 0.5 s (80 samples)"));
+    EXPECT_TRUE(has_note(rr.line, "its mean 0.75 m is not a wave: left out"));
+    std::vector<std::array<double, 4>> found;
+    for (const auto& k : given_components(rr))
+        if (k[1] > 1e-12) found.push_back(k);
+    ASSERT_EQ(found.size(), known.size());
+    for (size_t i = 0; i < known.size(); ++i) {
+        EXPECT_NEAR(found[i][0], known[i][0], 1e-14);
+        EXPECT_NEAR(found[i][1], known[i][1], 1e-12);
+        EXPECT_NEAR(std::remainder(found[i][2] - known[i][2], 2 * pi), 0.0, 1e-12);
+    }
+}
+
+TEST(LineFileKinematics, AWavesFileIsRowsOfComponentsInTheFmusConvention) {
+    std::vector<std::array<double, 4>> c;
+    std::string error;
+    ASSERT_TRUE(uc::read_wave_file("# omega a p beta\n0.5 1.2 0.3\n\n0.7 0.4 -1 1.2\n", 0.25, c, error)) << error;
+    EXPECT_EQ(c, (std::vector<std::array<double, 4>>{{0.5, 1.2, 0.3, 0.25}, {0.7, 0.4, -1.0, 1.2}}));
+    EXPECT_FALSE(uc::read_wave_file("0.5 1.2\n", 0.0, c, error));
+    EXPECT_EQ(error, "line 1: a row is omega [rad/s] amplitude [m] phase [rad] [direction, rad] (a comment starts with #)");
+    EXPECT_FALSE(uc::read_wave_file("0.5 x 1\n", 0.0, c, error));
+    EXPECT_EQ(error, "line 1: 'x' is not a number");
+    UCParams p;
+    uc_params_default(&p);
+    EXPECT_FALSE(uc::apply_wave_components(std::vector<std::array<double, 4>>(UC_MAX_WAVE_COMPONENTS + 1), "waves.file", p, error));
+    EXPECT_EQ(error, "waves.file: 1025 wave components, the FMU holds 1024 (waves.mode 3)");
 }
 
 TEST(LineFileKinematics, OneWaveComponentIsTheRegularWaveAndExternalKinematicsTheFmusSea) {

@@ -545,3 +545,143 @@ TEST(Waves, ExpandedKinematicsBeyondTheLatticeAreTheSum) {
     sea.expanded_kinematics(Vec3(std::nan(""), 0.0, -5.0), 12.0, cache, ue, ae);
     EXPECT_FALSE(std::isfinite(ue.norm()));  // not a number in, not a number out (no lattice index formed)
 }
+
+namespace {
+
+struct Given {
+    double omega, amplitude, phase, direction;
+};
+
+UCParams given(const std::vector<Given>& components, double depth) {
+    UCParams p;
+    uc_params_default(&p);
+    p.wavesMode = 3;
+    p.waterDepth = depth;
+    p.gravity = g;
+    p.waveComponentCount = static_cast<int>(components.size());
+    for (size_t k = 0; k < components.size(); ++k) {
+        const Given& c = components[k];
+        double* row = p.waveComponents + 4 * k;
+        row[0] = c.omega, row[1] = c.amplitude, row[2] = c.phase, row[3] = c.direction;
+    }
+    return p;
+}
+
+// The closed-form Airy sum of the components at r, t: elevation, velocity, acceleration (below z = 0).
+void airy_sum(const std::vector<Given>& components, double depth, const Vec3& r, double t, double& eta, Vec3& u, Vec3& a) {
+    eta = 0.0;
+    u.setZero();
+    a.setZero();
+    for (const Given& c : components) {
+        const double k = wave_number(c.omega, depth, g), w = c.omega;
+        const double th = k * (r.x() * std::cos(c.direction) + r.y() * std::sin(c.direction)) - w * t + c.phase;
+        const double ch = std::cosh(k * (r.z() + depth)) / std::sinh(k * depth);
+        const double sh = std::sinh(k * (r.z() + depth)) / std::sinh(k * depth);
+        const Vec3 along(std::cos(c.direction), std::sin(c.direction), 0.0);
+        eta += c.amplitude * std::cos(th);
+        u += c.amplitude * w * ch * std::cos(th) * along + Vec3(0, 0, c.amplitude * w * sh * std::sin(th));
+        a += c.amplitude * w * w * ch * std::sin(th) * along - Vec3(0, 0, c.amplitude * w * w * sh * std::cos(th));
+    }
+}
+
+}  // namespace
+
+TEST(WavesGiven, ComponentsOfSeveralDirectionsAndUnevenFrequenciesAreTheAirySum) {
+    // MoorDyn's wavekin_7 pair (0.35 rad/s along x, 0.4 rad/s at 1.57 rad), with an uneven third
+    // component, in 50 m and 3000 m of water: elevation, velocity and acceleration to 1e-12 of the scale
+    // sum a w^2, gradients equal to finite differences.
+    const std::vector<Given> waves = {{0.35, 1.0, 0.3, 0.0}, {0.4, 0.8, -1.2, 1.57}, {0.93, 0.25, 2.0, 0.0}, {0.61, 0.4, 0.5, 1.57}};
+    for (double depth : {50.0, 3000.0}) {
+        SeaState sea;
+        std::string error;
+        ASSERT_TRUE(sea.build(given(waves, depth), error)) << error;
+        ASSERT_EQ(sea.groups().size(), 1u);  // two directions of travel
+        double scale = 0.0;
+        for (const Given& c : waves) scale += c.amplitude * c.omega * c.omega;
+        for (const Vec3& r : {Vec3(0, 0, -1), Vec3(-400.0, 3.0, -30.0), Vec3(25.0, -70.0, -48.0)}) {
+            for (double t : {0.0, 3.7, 41.0}) {
+                double eta;
+                Vec3 u, a, uRef, aRef;
+                airy_sum(waves, depth, r, t, eta, uRef, aRef);
+                EXPECT_NEAR(sea.elevation(r.x(), r.y(), t), eta, 1e-12 * scale);
+                sea.kinematics(r, t, u, a, nullptr, nullptr);
+                EXPECT_LT((u - uRef).norm(), 1e-12 * scale) << depth << " " << t;
+                EXPECT_LT((a - aRef).norm(), 1e-12 * scale) << depth << " " << t;
+                WaveExpansion cache;
+                Vec3 ue, ae;
+                sea.expanded_kinematics(r, t, cache, ue, ae);
+                EXPECT_LT((ue - uRef).norm(), 1e-12 * scale);
+                EXPECT_LT((ae - aRef).norm(), 1e-12 * scale);
+            }
+        }
+        const Vec3 r(10.0, -5.0, -20.0);
+        Vec3 u, a, up, um, ap, am;
+        Mat3 du, da;
+        sea.kinematics(r, 5.0, u, a, &du, &da);
+        for (int c = 0; c < 3; ++c) {
+            const double h = 1e-4;
+            Vec3 e = Vec3::Zero();
+            e[c] = h;
+            sea.kinematics(r + e, 5.0, up, ap, nullptr, nullptr);
+            sea.kinematics(r - e, 5.0, um, am, nullptr, nullptr);
+            EXPECT_LT(((up - um) / (2 * h) - du.col(c)).norm(), 1e-8 * scale) << c;
+            EXPECT_LT(((ap - am) / (2 * h) - da.col(c)).norm(), 1e-8 * scale) << c;
+        }
+    }
+}
+
+TEST(WavesGiven, ManyComponentsOfOneDirectionTakeThePolynomialsWithinTheirBounds) {
+    // 60 components of one direction, equally spaced (the ladder) and unevenly spaced (each its own
+    // e^{k zeta}): the expansions, as the residual uses them, against the closed form, within the
+    // bounds of docs/waves.md (6e-12 of the velocity scale, 1e-10 of the acceleration's).
+    for (bool even : {true, false}) {
+        std::vector<Given> waves;
+        SplitMix64 random(7);
+        for (int i = 0; i < 60; ++i) {
+            const double w = even ? 0.3 + 0.02 * i : 0.3 + 1.2 * random.uniform();
+            waves.push_back({w, 0.05 + 0.1 * random.uniform(), 2 * kPi * random.uniform(), 0.7});
+        }
+        for (double depth : {60.0, 2000.0}) {
+            SeaState sea;
+            std::string error;
+            ASSERT_TRUE(sea.build(given(waves, depth), error)) << error;
+            ASSERT_TRUE(sea.groups().empty());
+            double uScale = 0.0, aScale = 0.0;
+            for (const Given& c : waves) uScale += c.amplitude * c.omega, aScale += c.amplitude * c.omega * c.omega;
+            WaveExpansion cache;
+            for (const Vec3& r : {Vec3(0, 0, -0.5), Vec3(-40.0, 3.0, -12.0), Vec3(250.0, -70.0, -55.0)}) {
+                for (double t : {0.0, 3.7, 41.2, 41.3}) {
+                    double eta;
+                    Vec3 u, a, uRef, aRef;
+                    airy_sum(waves, depth, r, t, eta, uRef, aRef);
+                    EXPECT_NEAR(sea.elevation(r.x(), r.y(), t), eta, 1e-12 * uScale);
+                    sea.kinematics(r, t, u, a, nullptr, nullptr);
+                    EXPECT_LT((u - uRef).norm(), 1e-12 * aScale) << even << " " << depth;
+                    EXPECT_LT((a - aRef).norm(), 1e-12 * aScale) << even << " " << depth;
+                    sea.expanded_kinematics(r, t, cache, u, a);
+                    EXPECT_LT((u - uRef).norm(), 6e-12 * uScale) << even << " " << depth;
+                    EXPECT_LT((a - aRef).norm(), 1e-10 * aScale) << even << " " << depth;
+                }
+            }
+        }
+    }
+}
+
+TEST(WavesGiven, ComponentsThatMakeNoSeaAreRefusedNamingThem) {
+    auto why = [](const UCParams& p) {
+        SeaState sea;
+        std::string error;
+        EXPECT_FALSE(sea.build(p, error));
+        EXPECT_EQ(error, given_waves_violation(p));
+        return error;
+    };
+    EXPECT_NE(why(given({}, 50.0)).find("waves.mode = 3 (given components) has none: set waves.file"), std::string::npos);
+    EXPECT_NE(why(given({{0.5, -1.0, 0.0, 0.0}}, 50.0)).find("wave component 1 of the lineFile deck: omega = 0.5 rad/s, "
+                                                            "amplitude = -1 m"), std::string::npos);
+    EXPECT_NE(why(given({{0.5, 1.0, 0.0, 0.0}, {0.0, 1.0, 0.0, 0.0}}, 50.0)).find("wave component 2"), std::string::npos);
+    EXPECT_NE(why(given({{2.0, 1.5, 0.0, 0.0}}, 50.0)).find("exceeds the breaking limit 1/7"), std::string::npos);
+    SeaState calm;
+    std::string error;
+    ASSERT_TRUE(calm.build(given({{0.5, 0.0, 0.0, 0.0}}, 50.0), error)) << error;
+    EXPECT_TRUE(calm.calm());
+}

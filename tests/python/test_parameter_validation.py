@@ -86,6 +86,8 @@ NO_OUT_OF_RANGE_VALUE = {
        for c in "xy" for k in range(1, 11)},
     "lineFile": "String: any path is admissible; a file that cannot be read or a refused deck is an error "
                 "at initialization (tests/python/test_line_file.py)",
+    "waves.file": "String: any path is admissible; a file that cannot be read, a refused row or set without "
+                  "waves.mode 3 is an error at initialization (tests/python/test_wave_components.py)",
 }
 
 
