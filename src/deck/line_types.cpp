@@ -91,7 +91,7 @@ bool read_line_type(const Row& deckRow, const Row& columns, const LineFileCompan
     t.massPerLength = f.positive(2, "Mass/m");
     const std::string_view ea = f.token(3), ba = f.token(4);
     if (ea.find('|') != std::string_view::npos || upper(ea).rfind("SYROPE:", 0) == 0) {
-        return f.fail("EA " + quoted(ea) + ": viscoelastic and Syrope axial models are not supported (a constant EA)");
+        return f.fail("EA " + quoted(ea) + ": viscoelastic and Syrope axial models are not supported (a constant EA or a tension-strain file)");
     }
     if (!to_number(ea)) {
         // A tension-strain file next to the deck; EA is its secant at the last point, as MoorDyn has it.
