@@ -48,13 +48,14 @@ static char* read_file(const char* path, size_t* length, int* error) {
     return text;
 }
 
-/* The files next to the deck that its options ask for (MoorDyn's current_profile.txt, ...): read from the
- * deck's directory; one that cannot be read is left out, and the reader refuses the deck naming it. */
-#define UC_MAX_COMPANIONS 4
+/* The files next to the deck that its options and line types ask for (MoorDyn's current_profile.txt, a
+ * tension-strain file, ...): read from the deck's directory; one that cannot be read is left out, and the
+ * reader refuses the deck naming it. */
+#define UC_MAX_COMPANIONS 8
 typedef struct Companions {
     UCLineFileCompanion files[UC_MAX_COMPANIONS];
     char* texts[UC_MAX_COMPANIONS];
-    char names[256];
+    char names[1024];
     int n;
 } Companions;
 

@@ -400,10 +400,17 @@ std::vector<std::string> line_file_companions(std::string_view text) {
     Options options;
     if (!collect_sections(text, sections, error)) return names;
     const auto& o = sections[static_cast<size_t>(Kind::Options)];
-    if (!o || !read_options(*o, options, notes, error)) return names;
-    if (options.waveKin.first == 7 || options.waveKin.first == 2) names.push_back(kWaveFrequenciesFile);
-    if (options.waveKin.first == 3) names.push_back(kWaveElevationFile);
-    if (options.currents.first == 1) names.push_back(kCurrentProfileFile);
+    if (o && read_options(*o, options, notes, error)) {
+        if (options.waveKin.first == 7 || options.waveKin.first == 2) names.push_back(kWaveFrequenciesFile);
+        if (options.waveKin.first == 3) names.push_back(kWaveElevationFile);
+        if (options.currents.first == 1) names.push_back(kCurrentProfileFile);
+    }
+    if (const auto& types = sections[static_cast<size_t>(Kind::LineTypes)]) {
+        for (const Row& row : types->rows) {
+            const std::string_view file = tension_strain_file(row);
+            if (!file.empty() && std::find(names.begin(), names.end(), file) == names.end()) names.emplace_back(file);
+        }
+    }
     return names;
 }
 

@@ -22,7 +22,8 @@ struct LineFileSection {
     double length = 0.0;    // UnstrLen [m]
     double diameter = 0.0;  // Diam: MoorDyn's volume-equivalent diameter is ours (hydrodynamic and displacement)
     double massPerLength = 0.0;
-    double EA = 0.0;
+    double EA = 0.0;        // the constant EA, or the secant of the curve at its last point
+    std::vector<double> curveStrain, curveTension;  // EA's tension-strain file (empty: none)
     double EI = 0.0;
     double axialDamping = 0.0;  // [N.s]: BA, or -zeta converted with MoorDyn's segment length
     double Cdn = 0.0, Cdt = 0.0, Can = 0.0, Cat = 0.0;  // Cd, CdAx, Ca, CaAx
@@ -70,13 +71,14 @@ bool read_wave_file(std::string_view text, double direction, std::vector<std::ar
 bool apply_wave_components(const std::vector<std::array<double, 4>>& components, const char* from, UCParams& p,
                            std::string& error);
 
-// The text of a file MoorDyn reads from the deck's directory (current_profile.txt, wave_frequencies.txt).
+// The text of a file MoorDyn reads from the deck's directory (current_profile.txt, wave_frequencies.txt,
+// wave_elevation.txt, a line type's tension-strain file).
 struct LineFileCompanion {
     std::string name, text;
 };
 using LineFileCompanions = std::vector<LineFileCompanion>;
 
-// The names of the files next to the deck that its options ask for (empty when none): the caller reads
+// The names of the files next to the deck that its options and line types ask for (empty when none): the caller reads
 // them from the deck's directory and hands their text to read_line_file or read_mooring_deck.
 std::vector<std::string> line_file_companions(std::string_view text);
 

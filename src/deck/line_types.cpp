@@ -1,5 +1,8 @@
-// line_types.cpp - the LINE TYPES section of a MoorDyn v2 deck (docs/lines.md).
+// line_types.cpp - the LINE TYPES section of a MoorDyn v2 deck, with the tension-strain files its EA may name
+// (docs/lines.md).
 #include "deck/tables.h"
+
+#include "terms/axial_curve.h"
 
 namespace uc {
 namespace deck {
@@ -14,9 +17,50 @@ int breaking_load_column(const Row& columns) {
     return -1;
 }
 
+// MoorDyn's tension-strain file: three header lines, then rows "strain tension" (further fields ignored),
+// up to the end or a line of dashes (MoorPy's end mark); blank lines are skipped.
+bool read_curve_file(const LineFileCompanion& file, std::vector<double>& strain, std::vector<double>& tension,
+                     std::string& what) {
+    const std::vector<std::string_view> lines = split_lines(file.text);
+    for (size_t i = 3; i < lines.size(); ++i) {
+        if (lines[i].find("---") != std::string_view::npos) break;
+        const std::vector<std::string_view> tokens = tokenize(lines[i]);
+        if (tokens.empty()) continue;
+        const std::optional<double> e = to_number(tokens[0]);
+        const std::optional<double> T = tokens.size() > 1 ? to_number(tokens[1]) : std::nullopt;
+        if (!e || !T) {
+            what = file.name + " line " + std::to_string(i + 1) + ": " + quoted(lines[i]) +
+                   " is not a row of two numbers (strain, tension [N])";
+            return false;
+        }
+        strain.push_back(*e);
+        tension.push_back(*T);
+    }
+    if (strain.size() > UC_AXIAL_CURVE_POINTS) {
+        what = file.name + ": " + std::to_string(strain.size()) + " points, more than the " +
+               std::to_string(UC_AXIAL_CURVE_POINTS) + " a curve holds (MoorDyn's limit too)";
+        return false;
+    }
+    AxialCurve curve;
+    std::string why;
+    if (!AxialCurve::build(strain.data(), tension.data(), static_cast<int>(strain.size()), curve, why)) {
+        what = file.name + ": " + why;
+        return false;
+    }
+    return true;
+}
+
 }  // namespace
 
-bool read_line_type(const Row& deckRow, const Row& columns, LineType& t, std::string& error) {
+std::string_view tension_strain_file(const Row& row) {
+    if (row.tokens.size() < 4) return {};
+    const std::string_view ea = row.tokens[3];
+    if (to_number(ea) || ea.find('|') != std::string_view::npos || upper(ea).rfind("SYROPE:", 0) == 0) return {};
+    return ea;
+}
+
+bool read_line_type(const Row& deckRow, const Row& columns, const LineFileCompanions& companions, LineType& t,
+                    std::string& error) {
     // The MBL column is read here and taken out of the row; the rest is MoorDyn's row.
     const int mblColumn = breaking_load_column(columns);
     t.MBL = 0.0;
@@ -47,10 +91,22 @@ bool read_line_type(const Row& deckRow, const Row& columns, LineType& t, std::st
     t.massPerLength = f.positive(2, "Mass/m");
     const std::string_view ea = f.token(3), ba = f.token(4);
     if (ea.find('|') != std::string_view::npos || upper(ea).rfind("SYROPE:", 0) == 0) {
-        return f.fail("EA " + quoted(ea) + ": viscoelastic and Syrope axial models are not supported (a constant EA)");
+        return f.fail("EA " + quoted(ea) + ": viscoelastic and Syrope axial models are not supported (a constant EA or a tension-strain file)");
     }
-    if (!to_number(ea)) return f.fail("EA " + quoted(ea) + ": a non-linear stiffness (table) is not supported (a constant EA)");
-    t.EA = f.positive(3, "EA");
+    if (!to_number(ea)) {
+        // A tension-strain file next to the deck; EA is its secant at the last point, as MoorDyn has it.
+        const LineFileCompanion* file = nullptr;
+        for (const LineFileCompanion& c : companions)
+            if (c.name == ea) file = &c;
+        if (!file) {
+            return f.fail("EA " + quoted(ea) + ": the tension-strain file is not next to the deck, or cannot be read");
+        }
+        std::string what;
+        if (!read_curve_file(*file, t.curveStrain, t.curveTension, what)) return f.fail("EA " + quoted(ea) + ": " + what);
+        t.EA = t.curveTension.back() / t.curveStrain.back();
+    } else {
+        t.EA = f.positive(3, "EA");
+    }
     if (ba.find('|') != std::string_view::npos) {
         return f.fail("BA/-zeta " + quoted(ba) + ": viscoelastic damping is not supported (one BA or -zeta)");
     }

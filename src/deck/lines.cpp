@@ -67,6 +67,8 @@ LineFileSection section_of(const Line& l, const LineType& t) {
     s.diameter = t.diameter;
     s.massPerLength = t.massPerLength;
     s.EA = t.EA;
+    s.curveStrain = t.curveStrain;
+    s.curveTension = t.curveTension;
     s.EI = t.EI;
     // BA/-zeta < 0: a fraction of critical damping of one MoorDyn segment, converted as MoorDyn does,
     // BA = zeta (UnstrLen / NumSegs) sqrt(EA Mass/m) (docs/lines.md).

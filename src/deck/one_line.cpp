@@ -207,9 +207,24 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
             return false;
         }
     }
+    for (const LineFileSection& s : line.sections) {
+        if (!s.curveStrain.empty() && line.sections.size() > 1) {
+            error = at_line(s.row, "line type " + quoted(s.type) + " has a tension-strain curve (EA from a file) in a "
+                                   "chain of " + std::to_string(line.sections.size()) +
+                                   " lines: the FMU's curve (axialCurve.*) describes a line of one type");
+            return false;
+        }
+    }
+    p.axialCurvePoints = 0;
     if (line.sections.size() == 1) {
         p.nSections = 1;
         copy_line_properties(line.sections[0], p);
+        const LineFileSection& s = line.sections[0];
+        p.axialCurvePoints = static_cast<int>(s.curveStrain.size());
+        for (size_t k = 0; k < s.curveStrain.size(); ++k) {
+            p.axialCurveStrain[k] = s.curveStrain[k];
+            p.axialCurveTension[k] = s.curveTension[k];
+        }
         p.nAttachments = 0;
     } else {
         // Each MoorDyn line is a section; the points between them are pinned joints (MoorDyn's

@@ -49,7 +49,7 @@ bool parse_deck(std::string_view text, bool system, const LineFileCompanions& co
     std::vector<LineType>& types = deck.types;
     for (const Row& row : section(Kind::LineTypes)->rows) {
         LineType t{};
-        if (!read_line_type(row, section(Kind::LineTypes)->columns, t, error)) return false;
+        if (!read_line_type(row, section(Kind::LineTypes)->columns, companions, t, error)) return false;
         for (const LineType& other : types) {
             if (other.name == t.name) {
                 error = at_line(row.number, "line type " + quoted(t.name) + " is defined twice (also at line " +

@@ -43,12 +43,19 @@ struct LineType {
     double diameter, massPerLength, EA, BA, EI, Cd, Ca, CdAx, CaAx;
     double MBL;  // minimum breaking load [N]: the MBL column's, else MoorPy's default for its name (0: none)
     int row;
+    // EA given as a file of strain-tension points (empty: the constant EA); EA is then the curve's
+    // secant at its last point, as MoorDyn takes it.
+    std::vector<double> curveStrain, curveTension;
 };
 
-// A LINE TYPES row: constant EA, BA or -zeta, EI; other axial, damping and bending models refused.
+// A LINE TYPES row: a constant EA or a tension-strain file (one of companions), BA or -zeta, EI; other
+// axial, damping and bending models refused.
 // columns: the table's line of column names; a column named MBL (after the ten of MoorDyn) is the
 // minimum breaking load [N], which must be positive.
-bool read_line_type(const Row& row, const Row& columns, LineType& t, std::string& error);
+bool read_line_type(const Row& row, const Row& columns, const LineFileCompanions& companions, LineType& t,
+                    std::string& error);
+// The name of the tension-strain file a LINE TYPES row gives as its EA (empty: none).
+std::string_view tension_strain_file(const Row& row);
 
 // ------------------------------------------------------------------------------ breaking load (deck/breaking_load.cpp)
 // MoorPy's minimum breaking load of a line type named for its material (MoorProps_default.yaml: R4 studless

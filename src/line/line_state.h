@@ -74,7 +74,8 @@ struct LineState {
     bool compressionWarned = false;  // the compression warning is given once per instance
     bool integratorStarted = false;  // the integrator's own counters belong to this state
     bool restartPending = true;      // the next step restarts the integrator from y, y'
-    char unused[3] = {};             // no padding (below): the same state saves the same bytes
+    bool curveWarned = false;        // the warning of a strain beyond the tension-strain curve, once
+    char unused[2] = {};             // no padding (below): the same state saves the same bytes
 };
 
 static_assert(std::is_trivially_copyable_v<LineState>, "a line's state is saved and restored as bytes");
@@ -89,7 +90,7 @@ static_assert(sizeof(LineState) == 2 * sizeof(double) + 2 * sizeof(DrivenEndStat
                                        sizeof(double) + sizeof(IntegratorStats) + sizeof(double) +
                                        sizeof(RainflowCounter) + sizeof(ProxyEstimate) + 3 * sizeof(double) +
                                        sizeof(WinchStep) + 6 * sizeof(double) + sizeof(UCOutputs) +
-                                       2 * sizeof(std::int32_t) + 5 * sizeof(bool) + 3,
+                                       2 * sizeof(std::int32_t) + 6 * sizeof(bool) + 2,
               "LineState has padding, or a field the sum leaves out");
 
 }  // namespace uc

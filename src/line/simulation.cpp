@@ -294,6 +294,7 @@ bool CableSimulation::step(double h, const EndMotion& tow, const EndMotion& far,
     state_.outputs.towTensionMax = std::max(stepTensionMax_, state_.outputs.towTension);
     state_.outputs.towTensionMin = std::min(stepTensionMin_, state_.outputs.towTension);
     warn_of_compression();
+    warn_beyond_curve();
     return true;
 }
 
@@ -319,6 +320,32 @@ void CableSimulation::warn_of_compression() {
                   "true) pushes where a cable goes slack; a line that can go slack wants enableCompression = false",
                   state_.time, -state_.outputs.minTension, buckling);
     add_event(text);
+}
+
+void CableSimulation::warn_beyond_curve() {
+    if (state_.curveWarned || !model_.axial_curve()) return;
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const AxialCurve& curve = model_.element_section(e).curve;
+        if (curve.n == 0) continue;
+        // the element's mean strain, the one its tension follows: |r'| over its axial points
+        const ElementTables& tables = model_.tables(e);
+        const double* x = X_.data() + model_.element_offset(e);
+        double stretch = 0.0;
+        for (const QuadPoint& q : tables.axial) stretch += q.weight * interpolate(q.shape.dN, x).norm();
+        const double strain = stretch / tables.length - 1.0;
+        if (!(strain > curve.last_strain())) continue;
+        state_.curveWarned = true;
+        char text[500];
+        std::snprintf(text, sizeof text,
+                      "warning: at t = %.6g s the line stretches %.4g %% (arc length %.6g to %.6g m), beyond the last "
+                      "point of its tension-strain curve (axialCurve: strain %.4g %%, %.6g N): the tension there is "
+                      "the curve's straight continuation at its end slope (%.6g N), %.6g N; extend the curve to "
+                      "the strains the line reaches",
+                      state_.time, 100.0 * strain, model_.element_start(e), model_.element_start(e) + model_.element_length(e),
+                      100.0 * curve.last_strain(), curve.tension[curve.n - 1], curve.slope[curve.n - 1], curve(strain));
+        add_event(text);
+        return;
+    }
 }
 
 void CableSimulation::expand_integrator_state(double t, const double* y, const double* yp) {

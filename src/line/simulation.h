@@ -214,6 +214,9 @@ private:
     static constexpr double kStrainWarned = 0.05;
     void update_outputs();
     void warn_of_compression();
+    // The first time an element's mean strain (the mean of |r'| - 1 over it) passes the last point of its
+    // section's tension-strain curve, a warning: the tension there is the curve's linear continuation.
+    void warn_beyond_curve();
     bool set_integrator_tolerances(std::string& error);
     // An element's length (the winch's nominal one for its top element), the strain tolerance
     // (tensionTolerance x the tension scale / EA, times rms) and the time scale tau over which a

@@ -395,7 +395,8 @@ bool CableSimulation::verify_statics(std::string& error) const {
     const bool weakBending = model_.line().EI == 0.0 ||
                              (leastTension > 0.0 && std::sqrt(model_.line().EI / leastTension) <=
                                                         kWeakBending * model_.line().length);
-    const bool exact = profileApplies_ && weakBending && loads_.current.uniform.isZero(0.0) &&
+    // The elastic catenary has a constant EA: it is no answer for a line on a tension-strain curve.
+    const bool exact = profileApplies_ && weakBending && !model_.axial_curve() && loads_.current.uniform.isZero(0.0) &&
                        (p.currentProfileRows == 0 || loads_.current.scale == 0.0) && model_.sea().calm() &&
                        loads_.torque == 0.0 && profile_.solved &&
                        profile.lowest_clearance() > -model_.line().diameter;
@@ -604,6 +605,7 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
         state_.integratorStarted = false;
         state_.restartPending = true;
         state_.compressionWarned = false;
+        state_.curveWarned = false;
         state_.rainflow.reset();
         update_outputs();
         if (p.initMode == UC_INIT_EQUILIBRIUM && !verify_statics(error)) {
@@ -627,6 +629,7 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
         }
     }
     if (p.initMode == UC_INIT_EQUILIBRIUM && !check_static_strain(error)) return false;
+    warn_beyond_curve();
     if (off_) {  // consistent: the winch runs at the rate of the initial tension
         double R[12];
         model_.element_residual(0, X_.data(), Xd_.data(), Xdd_.data(), loads_, R);

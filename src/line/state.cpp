@@ -13,7 +13,7 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 11;
+constexpr std::uint32_t kStateVersion = 12;
 
 // Fixed-layout header of a saved state: what it belongs to (the sizes and the winch's mesh, which
 // the model holds); followed by LineState, y, y' and the integrator's history.

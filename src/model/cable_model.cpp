@@ -19,7 +19,8 @@ AxialProps CableModel::scaled_axial(const SectionProps& section, const Loads& lo
     // no section strains much more than the others on the way to equilibrium.
     double cap = loads.axialStiffnessScale;
     if (sections_.size() > 1 && cap < 1.0) cap = std::min(1.0, cap * line_.EA / section.axial.EA);
-    return AxialProps{section.axial.EA, section.axial.damping, cap, section.axial.tensionOnly && !loads.twoSidedAxial};
+    return AxialProps{section.axial.EA, section.axial.damping, cap, section.axial.tensionOnly && !loads.twoSidedAxial,
+                      section.curve.n > 0 ? &section.curve : nullptr};
 }
 
 namespace {
@@ -184,8 +185,12 @@ double CableModel::resting_height() const {
 
 void CableModel::build_sections(const UCParams& p) {
     std::vector<SectionInput> inputs;
+    AxialCurve curve;
     if (p.nSections <= 1) {
         inputs.push_back(uniform_line(p));
+        std::string error;  // check_params has refused a curve that cannot be built
+        if (p.axialCurvePoints > 0 && AxialCurve::build(p.axialCurveStrain, p.axialCurveTension, p.axialCurvePoints, curve, error))
+            inputs[0].EA = curve.secant();
     } else {
         for (int k = 0; k < p.nSections && k < UC_MAX_SECTIONS; ++k) inputs.push_back(section_input(p.section[k], p.MBL));
     }
@@ -209,6 +214,7 @@ void CableModel::build_sections(const UCParams& p) {
         s.fluid.Cat = in.Cat;
         s.fluid.addedMass = p.enableAddedMass != 0;
         s.axial.EA = in.EA;
+        if (sections_.empty()) s.curve = curve;
         s.axial.damping = in.axialDamping;
         s.axial.tensionOnly = p.enableCompression == 0;
         s.EI = p.enableBending ? in.EI : 0.0;

@@ -149,6 +149,7 @@ struct SectionProps {
     double length = 0.0;  // unstretched [m]
     FluidProps fluid{};   // mass per length, diameter, coefficients (and the water's density, gravity)
     AxialProps axial{};
+    AxialCurve curve{};    // n 0: the constant axial.EA; else the tension-strain curve (axial.EA its secant)
     SeabedProps seabed{};  // the contact's smoothing depends on the diameter
     double EI = 0.0;       // 0 when bending is disabled
     double bendingDamping = 0.0;  // EI * axialDamping / EA [N.m2.s]
@@ -237,6 +238,12 @@ public:
     const LineScales& line() const { return line_; }
     int n_sections() const { return static_cast<int>(sections_.size()); }
     const SectionProps& section(int k) const { return sections_[k]; }
+    // True when a section's axial stiffness is a tension-strain curve.
+    bool axial_curve() const {
+        for (const SectionProps& s : sections_)
+            if (s.curve.n > 0) return true;
+        return false;
+    }
     const std::vector<ElementRun>& runs() const { return runs_; }
     const std::vector<NodeAttachment>& attachments() const { return attachments_; }
 

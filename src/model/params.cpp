@@ -1,5 +1,6 @@
 // params.cpp - defaults (the start values of schema/variables.toml) and the single place where parameters are validated.
 #include "model/params.h"
+#include "terms/axial_curve.h"
 #include "terms/waves.h"
 
 #include <cmath>
@@ -94,6 +95,18 @@ std::string check_params(const UCParams& p) {
             std::snprintf(range, sizeof range, "[0, %.6g] (a seventh of the wavelength of waves.period in waterDepth)", limit);
             return format_violation("waves.height", p.wavesHeight, range, "steeper waves break");
         }
+    }
+    // A tension-strain curve: a uniform line's, through points that make a monotone curve.
+    if (p.axialCurvePoints > 0) {
+        if (p.nSections >= 2)
+            return format_violation("axialCurvePoints", p.axialCurvePoints, "{0} with nSections >= 2",
+                                    "the tension-strain curve describes a uniform line (nSections 1)");
+        if (p.axialCurvePoints < 2)
+            return format_violation("axialCurvePoints", p.axialCurvePoints, "{0} or [2, 30]", "a curve needs two points");
+        AxialCurve curve;
+        std::string why;
+        if (!AxialCurve::build(p.axialCurveStrain, p.axialCurveTension, p.axialCurvePoints, curve, why))
+            return "axialCurve.strain/tension[1.." + std::to_string(p.axialCurvePoints) + "], " + why;
     }
     // Sections and attachments: every section in use has a length; attachments lie on the line.
     double lineLength = p.length;

@@ -156,14 +156,18 @@ double slack_width(const ElementTables& e, const AxialProps& p) {
 // shape the strain inside the element, stay two-sided, so a slack element keeps its shape
 // stiffness (without it a slack element without bending stiffness has free tangents: the
 // snapping chain's response then changes by 20 % of its tension between integrator tolerances).
+// stiffness[k]: the elastic tension's slope in the mode's strain, EA or the curve's slope.
 struct ModeTensions {
     SlackLaw mode[3];
+    double stiffness[3];
 };
 
 ModeTensions mode_tensions(const ElementTables& e, const AxialProps& p, const AxialSamples& s) {
     ModeTensions m;
     for (int k = 0; k < e.axialModes; ++k) {
-        const double P = mode_weight(e, p, k) * (p.EA * s.strainMode[k] + p.damping * s.rateMode[k]);
+        m.stiffness[k] = p.EA;
+        const double elastic = k == 0 && p.curve ? (*p.curve)(s.strainMode[0], &m.stiffness[0]) : p.EA * s.strainMode[k];
+        const double P = mode_weight(e, p, k) * (elastic + p.damping * s.rateMode[k]);
         m.mode[k] = p.tensionOnly && k == 0 ? slack_law(P, slack_width(e, p)) : SlackLaw{P, 1.0};
     }
     return m;
@@ -224,7 +228,7 @@ void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const doubl
         const double weight = mode_weight(e, p, k) / l * m.mode[k].slope;
         for (int a = 0; a < 4; ++a) {
             for (int b = 0; b < 4; ++b) {
-                K.block<3, 3>(3 * a, 3 * b) += (weight * p.EA) * G[a] * G[b].transpose();
+                K.block<3, 3>(3 * a, 3 * b) += (weight * m.stiffness[k]) * G[a] * G[b].transpose();
                 if (p.damping != 0.0) {
                     K.block<3, 3>(3 * a, 3 * b) += (weight * p.damping) * G[a] * H[b].transpose();
                     C.block<3, 3>(3 * a, 3 * b) += (weight * p.damping) * G[a] * G[b].transpose();
@@ -246,7 +250,8 @@ double axial_energy(const ElementTables& e, const AxialProps& p, const double* X
     const AxialSamples s = sample_axial(e, X, zero.data());
     double energy = 0.0;
     for (int k = 0; k < e.axialModes; ++k)
-        energy += 0.5 * p.EA * mode_weight(e, p, k) * e.length * s.strainMode[k] * s.strainMode[k];
+        energy += mode_weight(e, p, k) * e.length *
+                  (k == 0 && p.curve ? p.curve->energy(s.strainMode[0]) : 0.5 * p.EA * s.strainMode[k] * s.strainMode[k]);
     return energy;
 }
 

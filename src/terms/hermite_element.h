@@ -7,6 +7,7 @@
 #pragma once
 
 #include "core/types.h"
+#include "terms/axial_curve.h"
 
 namespace uc {
 
@@ -74,7 +75,8 @@ inline Vec3 interpolate(const double (&N)[4], const double* X) {
     return r;
 }
 
-// Axial tension P = EA (|r'| - 1) + c d|r'|/dt, projected (see ElementTables). Two-sided
+// Axial tension P = EA (|r'| - 1) + c d|r'|/dt, projected (see ElementTables); with a curve the
+// mean strain mode's elastic part is curve(mean strain). Two-sided
 // (compression allowed) by default; tension-only (a chain or rope that goes slack) when
 // tensionOnly is set: the element's mean tension is slack_law(P mean), a C1 ramp that equals it
 // above kSlackStrain EA and is 0 below -kSlackStrain EA (so the law shifts the stretch by at most
@@ -85,6 +87,9 @@ struct AxialProps {
     // Caps every strain mode's stiffness factor (the static solver starts on a soft cable).
     double modeCap = 1.0;
     bool tensionOnly = false;
+    // A non-linear stiffness (null: the constant EA): the element's mean strain mode carries
+    // curve(strain) instead of EA strain; its higher (softened) modes keep EA, the curve's secant.
+    const AxialCurve* curve = nullptr;
 };
 
 constexpr double kSlackStrain = 1e-5;
@@ -110,7 +115,7 @@ void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const doubl
 // Projected tension at the ElementTables::nAxial sampling points; rp (may be null) receives r' there.
 void axial_tensions(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
                     double* T, Vec3* rp = nullptr);
-// Axial strain energy 0.5 EA int (projected strain)^2 ds (for tests).
+// Axial strain energy 0.5 EA int (projected strain)^2 ds, the curve's energy for the mean mode (for tests).
 double axial_energy(const ElementTables& e, const AxialProps& p, const double* X);
 
 // Bending: R_a += EI sum_b B_ab X_b with B = int N''_a N''_b ds, energy 0.5 EI int |r''|^2 ds.

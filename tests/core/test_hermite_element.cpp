@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "terms/hermite_element.h"
 #include "terms/hydrodynamics.h"
@@ -595,4 +596,162 @@ TEST(SeabedContactRule, SamplesAtTheAskedSpacingAndIntegratesDegreeFiveExactly) 
     EXPECT_EQ(make_element_tables(3.125, 3, 3, 2.0).nContact, 0);    // the axial points are closer already
     EXPECT_EQ(make_element_tables(l, 3, 3, 0.0).nContact, 0);        // 0: the axial points
     EXPECT_EQ(make_element_tables(1000.0, 3, 3, 0.5).nContact, 48);  // capped
+}
+
+// ------------------------------------------------------------------ non-linear axial stiffness (curve)
+
+namespace {
+
+// A stiffening rope's tension-strain points (its first strain above 0: (0, 0) goes in front).
+const double kRopeStrain[] = {0.005, 0.012, 0.03, 0.045};
+const double kRopeTension[] = {2.0e4, 6.0e4, 2.3e5, 4.2e5};
+
+AxialCurve rope_curve() {
+    AxialCurve c;
+    std::string error;
+    EXPECT_TRUE(AxialCurve::build(kRopeStrain, kRopeTension, 4, c, error)) << error;
+    return c;
+}
+
+}  // namespace
+
+TEST(AxialCurve, PassesThroughItsPointsMonotoneAndC1) {
+    const AxialCurve c = rope_curve();
+    ASSERT_EQ(c.n, 5);
+    EXPECT_EQ(c.strain[0], 0.0);
+    EXPECT_EQ(c.tension[0], 0.0);
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(c(kRopeStrain[k]), kRopeTension[k], 1e-9 * kRopeTension[k]);
+    double previous = c(0.0);
+    for (int i = 1; i <= 6000; ++i) {  // monotone on a fine grid through and beyond the points
+        const double eps = 0.06 * i / 6000.0, T = c(eps);
+        EXPECT_GE(T, previous) << "at strain " << eps;
+        previous = T;
+    }
+    for (int k = 1; k < 4; ++k) {  // the slope is continuous at the inner points
+        const double d = 1e-10, x = kRopeStrain[k - 1];
+        double left, right;
+        c(x - d, &left);
+        c(x + d, &right);
+        EXPECT_NEAR(left, right, 1e-6 * std::max(left, right)) << "at point " << k;
+    }
+}
+
+TEST(AxialCurve, SlopeIsTheDerivativeAndEnergyIntegratesTheTension) {
+    const AxialCurve c = rope_curve();
+    for (double eps : {-0.002, 0.003, 0.009, 0.02, 0.04, 0.06}) {
+        double slope;
+        c(eps, &slope);
+        const double h = 1e-8;
+        // central differences of a cubic: exact to round-off (eps T / h ~ 1e-8 T)
+        EXPECT_NEAR(slope, (c(eps + h) - c(eps - h)) / (2 * h), 1e-5 * std::abs(slope)) << "at strain " << eps;
+        EXPECT_NEAR(c(eps), (c.energy(eps + h) - c.energy(eps - h)) / (2 * h), 1e-5 * std::abs(c(eps)) + 1e-3)
+            << "at strain " << eps;
+        EXPECT_NEAR(c.strain_at(c(eps)), eps, 1e-12);
+    }
+}
+
+TEST(AxialCurve, IsLinearBeyondItsEndsWithTheEndSlope) {
+    const AxialCurve c = rope_curve();
+    double endSlope;
+    c(0.045, &endSlope);
+    EXPECT_NEAR(endSlope, (4.2e5 - 2.3e5) / 0.015, 1e-9 * endSlope);  // Fritsch-Carlson: the end secant
+    for (double d : {0.001, 0.05}) {
+        double slope;
+        EXPECT_NEAR(c(0.045 + d, &slope), 4.2e5 + endSlope * d, 1e-9 * 4.2e5);
+        EXPECT_EQ(slope, endSlope);
+    }
+    double firstSlope;
+    c(0.0, &firstSlope);
+    EXPECT_NEAR(c(-0.001), -0.001 * firstSlope, 1e-9 * 2e4);  // compression: the first piece's slope
+}
+
+TEST(AxialCurve, TwoPointsAreTheConstantEA) {
+    const double strain[] = {0.01}, tension[] = {1e5};
+    AxialCurve c;
+    std::string error;
+    EXPECT_FALSE(AxialCurve::build(strain, tension, 1, c, error));  // one point is no curve
+    EXPECT_EQ(error, "a tension-strain curve has 2 to 30 points, not 1");
+    const double s2[] = {0.0, 0.01}, t2[] = {0.0, 1e5};
+    ASSERT_TRUE(AxialCurve::build(s2, t2, 2, c, error)) << error;
+    EXPECT_DOUBLE_EQ(c.secant(), 1e7);
+    for (double eps : {-0.01, 0.004, 0.02}) EXPECT_NEAR(c(eps), 1e7 * eps, 1e-6);
+}
+
+TEST(AxialCurve, RefusesPointsThatMakeNoCurve) {
+    AxialCurve c;
+    std::string error;
+    const double falling[] = {0.0, 1e5, 0.9e5}, up[] = {0.0, 0.01, 0.02};
+    EXPECT_FALSE(AxialCurve::build(up, falling, 3, c, error));
+    EXPECT_EQ(error, "point 3 (strain 0.02, tension 90000 N): the tension falls from point 2 (a rope whose tension "
+                     "falls as it stretches has no unique equilibrium)");
+    const double repeated[] = {0.0, 0.01, 0.01}, rising[] = {0.0, 1e5, 2e5};
+    EXPECT_FALSE(AxialCurve::build(repeated, rising, 3, c, error));
+    EXPECT_NE(error.find("point 3 (strain 0.01, tension 200000 N): the strains increase"), std::string::npos) << error;
+    const double preloaded[] = {5e3, 1e5, 2e5};
+    EXPECT_FALSE(AxialCurve::build(up, preloaded, 3, c, error));
+    EXPECT_EQ(error, "point 1 (strain 0, tension 5000 N): a line carries no tension at zero strain");
+    const double negative[] = {-0.01, 0.01, 0.02};
+    EXPECT_FALSE(AxialCurve::build(negative, rising, 3, c, error));
+}
+
+TEST(AxialTerm, CurveJacobianMatchesFiniteDifferences) {
+    // Inside the curve (a mean strain of about 2 %, inside its third piece) and beyond its last point
+    // (7 %), two-sided and tension-only, at full stiffness and at the static solver's soft cap.
+    const double l = 3.0;
+    ElementTables e = make_element_tables(l, 3, 3);
+    e.axialModeWeight[1] = e.axialModeWeight[2] = 0.01;
+    const AxialCurve curve = rope_curve();
+    std::mt19937 rng(13);
+    const Vec12 Xd = random_vector(rng, 0.5);
+    for (double stretch : {1.02, 1.07}) {
+        const Vec12 X = curved_element(l, stretch);
+        for (double cap : {1.0, 0.05}) {
+            for (bool tensionOnly : {false, true}) {
+                AxialProps props{curve.secant(), 3e5, cap, tensionOnly, &curve};  // c_a / EA = 0.03 s
+                expect_axial_jacobian_matches(e, props, X, Xd, 1e-6, 1e-6, 1e-8);
+            }
+        }
+    }
+}
+
+TEST(AxialTerm, CurveForceIsTheGradientOfItsEnergy) {
+    const double l = 3.0;
+    ElementTables e = make_element_tables(l, 3, 3);
+    e.axialModeWeight[1] = e.axialModeWeight[2] = 0.01;
+    const AxialCurve curve = rope_curve();
+    const AxialProps props{curve.secant(), 0.0, 1.0, false, &curve};
+    const Vec12 zero = Vec12::Zero();
+    for (double stretch : {1.02, 1.07}) {
+        const Vec12 X = curved_element(l, stretch);
+        Vec12 R = Vec12::Zero();
+        add_axial_force(e, props, X.data(), zero.data(), R.data());
+        const Vec12 g = numerical_gradient([&](const Vec12& x) { return axial_energy(e, props, x.data()); }, X, 1e-6);
+        EXPECT_LT((R - g).norm(), 1e-6 * R.norm());
+    }
+}
+
+TEST(AxialTerm, TwoPointCurveIsTheConstantEA) {
+    // A straight line through (0, 0) is the constant EA: the same forces to round-off, compressed or
+    // stretched, and the same Jacobian.
+    const double l = 2.0, EA = 1e6;
+    ElementTables e = make_element_tables(l, 3, 3);
+    e.axialModeWeight[1] = e.axialModeWeight[2] = 0.01;
+    const double s[] = {0.0, 0.05}, t[] = {0.0, 0.05 * EA};
+    AxialCurve curve;
+    std::string error;
+    ASSERT_TRUE(AxialCurve::build(s, t, 2, curve, error));
+    std::mt19937 rng(17);
+    const Vec12 Xd = random_vector(rng, 0.5);
+    for (double stretch : {0.99, 1.03}) {
+        const Vec12 X = curved_element(l, stretch);
+        Vec12 R1 = Vec12::Zero(), R2 = Vec12::Zero();
+        add_axial_force(e, AxialProps{EA, 5e2}, X.data(), Xd.data(), R1.data());
+        add_axial_force(e, AxialProps{EA, 5e2, 1.0, false, &curve}, X.data(), Xd.data(), R2.data());
+        EXPECT_LT((R1 - R2).norm(), 1e-12 * R1.norm());
+        Mat12 K1 = Mat12::Zero(), C1 = Mat12::Zero(), K2 = Mat12::Zero(), C2 = Mat12::Zero();
+        add_axial_jacobian(e, AxialProps{EA, 5e2}, X.data(), Xd.data(), K1, C1);
+        add_axial_jacobian(e, AxialProps{EA, 5e2, 1.0, false, &curve}, X.data(), Xd.data(), K2, C2);
+        EXPECT_LT((K1 - K2).norm(), 1e-12 * K1.norm());
+        EXPECT_EQ(C1, C2);
+    }
 }

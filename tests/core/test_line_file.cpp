@@ -14,6 +14,7 @@
 #include "api/cable_api.h"
 #include "deck_mutation.h"
 #include "deck/line_file.h"
+#include "model/params.h"
 
 namespace {
 
@@ -526,7 +527,7 @@ TEST(LineFileRefuses, UnknownLineTypesAndNonNumericFields) {
 
 TEST(LineFileRefuses, NonLinearAndOtherUnsupportedLineProperties) {
     std::string d = edit(kSingleChain, "7.5e8   -0.8", "ea.txt  -0.8");
-    expect_refused(d, "ea.txt", "EA 'ea.txt': a non-linear stiffness (table) is not supported");
+    expect_refused(d, "ea.txt", "EA 'ea.txt': the tension-strain file is not next to the deck, or cannot be read");
     d = edit(kSingleChain, "7.5e8   -0.8", "7e8|9e8 -0.8");
     expect_refused(d, "7e8|9e8", "viscoelastic and Syrope axial models are not supported");
     d = edit(kSingleChain, "7.5e8   -0.8", "7.5e8   1e5|2e5");
@@ -831,4 +832,74 @@ TEST(LineFileKinematics, OneWaveComponentIsTheRegularWaveAndExternalKinematicsTh
     EXPECT_TRUE(has_note(external.line, "WaveKin 1 (water kinematics set by the program driving MoorDyn)"));
     EXPECT_EQ(external.line.sea.profileRows, 0);
     EXPECT_FALSE(external.line.sea.regularWave);
+}
+
+// ------------------------------------------------------------------ tension-strain files (EA from a file)
+namespace {
+
+const char* const kRopeCurve = "polyester working curve\nstrain tension\n(-) (N)\n0.005 2e4\n0.012  6e4\n\n"
+                               "0.03 2.3e5 extra-field\n0.045 4.2e5\n---\nignored 1\n";
+
+}  // namespace
+
+TEST(LineFileTensionStrain, AFileAsEaIsTheLinesCurveAndItsSecantTheEa) {
+    const std::string d = edit(kSingleChain, "7.5e8   -0.8", "rope.txt  -0.8");
+    EXPECT_EQ(uc::line_file_companions(d), std::vector<std::string>{"rope.txt"});
+    const Read r = read_with(d, {{"rope.txt", kRopeCurve}});
+    ASSERT_TRUE(r.ok) << r.error;
+    const uc::LineFileSection& s = r.line.sections[0];
+    ASSERT_EQ(s.curveStrain, (std::vector<double>{0.005, 0.012, 0.03, 0.045}));
+    ASSERT_EQ(s.curveTension, (std::vector<double>{2e4, 6e4, 2.3e5, 4.2e5}));
+    EXPECT_DOUBLE_EQ(s.EA, 4.2e5 / 0.045);  // MoorDyn's EA of a curve: its last point's secant
+    // -zeta is converted with that EA, as MoorDyn does
+    EXPECT_DOUBLE_EQ(s.axialDamping, 0.8 * (900.0 / 40) * std::sqrt(4.2e5 / 0.045 * 113));
+    UCParams p;
+    uc_params_default(&p);
+    std::string error;
+    ASSERT_TRUE(uc::apply_line_file(r.line, p, error)) << error;
+    EXPECT_EQ(p.axialCurvePoints, 4);
+    EXPECT_EQ(p.axialCurveStrain[2], 0.03);
+    EXPECT_EQ(p.axialCurveTension[3], 4.2e5);
+    EXPECT_EQ(uc::check_params(p), "");
+    // a deck of a constant EA read into the same parameters leaves no curve behind
+    const Read chain = read(kSingleChain);
+    ASSERT_TRUE(chain.ok) << chain.error;
+    ASSERT_TRUE(uc::apply_line_file(chain.line, p, error)) << error;
+    EXPECT_EQ(p.axialCurvePoints, 0);
+}
+
+TEST(LineFileTensionStrain, AFileThatMakesNoCurveIsRefusedNamingItsLine) {
+    const std::string d = edit(kSingleChain, "7.5e8   -0.8", "rope.txt  -0.8");
+    auto refused = [&](const std::string& curve) {
+        const Read r = read_with(d, {{"rope.txt", curve}});
+        EXPECT_FALSE(r.ok);
+        EXPECT_EQ(r.error.rfind("line 6: EA 'rope.txt': rope.txt", 0), 0u) << r.error;
+        return r.error;
+    };
+    EXPECT_NE(refused("a\nb\nc\n0.01 1e5\n0.02 abc\n").find("rope.txt line 5: '0.02 abc' is not a row of two numbers"),
+              std::string::npos);
+    EXPECT_NE(refused("a\nb\nc\n0.01 1e5\n0.02 0.9e5\n").find("the tension falls from point 1"), std::string::npos);
+    EXPECT_NE(refused("a\nb\nc\n").find("a tension-strain curve has 2 to 30 points, not 0"), std::string::npos);
+    std::string many = "a\nb\nc\n";
+    for (int k = 1; k <= 31; ++k) many += std::to_string(0.001 * k) + " " + std::to_string(1000 * k) + "\n";
+    EXPECT_NE(refused(many).find("31 points, more than the 30 a curve holds"), std::string::npos);
+}
+
+TEST(LineFileTensionStrain, ACurveOnAChainOfLinesIsRefused) {
+    // two line types, the second on a curve, in a chain of two lines: the FMU's curve is a uniform line's
+    std::string d = edit(kSingleChain, "chain      0.0766  113     7.5e8   -0.8      0    2.4   1.0   0.2   0.0",
+                         "chain      0.0766  113     7.5e8   -0.8      0    2.4   1.0   0.2   0.0\n"
+                         "rope       0.1     8       rope.txt 1e5     0    1.2   1.0   0.2   0.0");
+    d = edit(d, "2     Coupled    0       0     -70    0      0       0      0",
+             "2     Coupled    0       0     -70    0      0       0      0\n3     Free   -400 0 -200 0 0 0 0");
+    d = edit(d, "1     chain      1        2        900       40       -",
+             "1     chain      1        3        500       20       -\n2     rope       3        2        400       20       -");
+    const Read r = read_with(d, {{"rope.txt", kRopeCurve}});
+    ASSERT_TRUE(r.ok) << r.error;
+    UCParams p;
+    uc_params_default(&p);
+    std::string error;
+    EXPECT_FALSE(uc::apply_line_file(r.line, p, error));
+    EXPECT_NE(error.find("line type 'rope' has a tension-strain curve (EA from a file) in a chain of 2 lines"),
+              std::string::npos) << error;
 }

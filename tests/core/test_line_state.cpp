@@ -21,6 +21,8 @@ using namespace uc;
 
 namespace {
 
+constexpr double kSceneCurveLastStrain = 6e-5;
+
 struct Scene {
     const char* name;
     UCParams params;
@@ -112,6 +114,23 @@ std::vector<Scene> scenes() {
                            in.end[0] = -50.0 + t + 0.05 * std::sin(t);
                            in.end[2] = -30.0;
                            in.endVelocity[0] = 1.0 + 0.05 * std::cos(t);
+                       },
+                       0.25});
+    }
+    {  // a tension-strain curve that the towed line passes as it speeds up (the warning after the restore)
+        UCParams p = base_line();
+        p.axialCurvePoints = 3;
+        // at rest on its way the line carries up to 3984 N (strain 5.8e-5), from step 30 on it speeds up
+        const double strain[] = {2e-5, 4e-5, kSceneCurveLastStrain}, tension[] = {1200.0, 2500.0, 4150.0};
+        for (int k = 0; k < 3; ++k) {
+            p.axialCurveStrain[k] = strain[k];
+            p.axialCurveTension[k] = tension[k];
+        }
+        all.push_back({"axial_curve", p,
+                       [](int k, double t, UCInputs& in) {
+                           const int m = k < 30 ? 0 : k - 30;  // the speed rises 0.1 m/s a step from step 30
+                           in.towVelocity[0] = 0.5 + 0.1 * m;
+                           in.tow[0] = 0.5 * t + 0.025 * 0.5 * m * (m + 1);
                        },
                        0.25});
     }
@@ -240,4 +259,29 @@ TEST(LineStep, TheLineLevelStepIsTheFmuStepBitForBit) {
             ASSERT_EQ(a.take_event(), b.take_event()) << scene.name << " step " << k;
         }
     }
+}
+
+TEST(LineState, TheCurveScenePassesItsCurveAfterTheSave) {
+    // the warning beyond the tension-strain curve (curveWarned, in LineState) comes after the save at
+    // step 30, so the restored copy must give it at the same step, once
+    const std::vector<Scene> all = scenes();
+    const Scene& scene = all.back();
+    ASSERT_STREQ(scene.name, "axial_curve");
+    CableSimulation s(scene.params);
+    std::string error;
+    UCInputs in{};
+    scene.inputs(0, 0.0, in);
+    ASSERT_TRUE(s.initialize(0.0, in, error)) << error;
+    EXPECT_EQ(s.take_event().find("tension-strain curve"), std::string::npos);
+    int warnedAt = -1, warnings = 0;
+    for (int k = 0; k < 60; ++k) {
+        scene.inputs(k, s.time(), in);
+        ASSERT_TRUE(s.step(s.time(), scene.h, in, error)) << error;
+        if (s.take_event().find("tension-strain curve") != std::string::npos) {
+            ++warnings;
+            if (warnedAt < 0) warnedAt = k;
+        }
+    }
+    EXPECT_GT(warnedAt, 30);
+    EXPECT_EQ(warnings, 1);
 }

@@ -124,8 +124,8 @@ def test_an_unreadable_deck_is_an_error_naming_the_paths_tried(make_cable):
     (("chain      0.0766", "chain      0.07z6"), 7, "Diam '0.07z6' is not a number"),
     (("1    chain     1        2", "1    chain     R1A      2"), 16, "AttachA 'R1A': rods are not supported"),
     (("1    Fixed  ", "1    Vessel "), 12, "a second Vessel point (the first is point 1)"),
-    (("7.5e8    -0.8", "ea.txt   -0.8"), 7, "EA 'ea.txt': a non-linear stiffness (table) is not supported"),
-], ids=["non-numeric", "rod", "two-vessels", "non-linear-EA"])
+    (("7.5e8    -0.8", "ea.txt   -0.8"), 7, "EA 'ea.txt': the tension-strain file is not next to the deck, or cannot be read"),
+], ids=["non-numeric", "rod", "two-vessels", "missing-EA-file"])
 def test_a_refused_deck_is_an_error_naming_its_line(make_cable, tmp_path, edit, line, what):
     text = CHAIN_DECK.read_text()
     assert edit[0] in text
