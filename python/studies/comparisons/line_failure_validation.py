@@ -215,12 +215,8 @@ def moorpy_equilibrium(deck: ms.SystemDeck, removed: tuple = (), load=None) -> d
         path.write_text(text)
         s = ms._moorpy_system(path, deck.depth)
         with moorpy.silenced():
-            body = s.addBody(0, np.zeros(6), f6Ext=np.array([load[0], load[1], 0.0, 0.0, 0.0, load[2]]),
-                             DOFs=[0, 1, 5])
-            for p in s.pointList:
-                if p.type == -1:
-                    p.type = 1
-                    body.attachPoint(p.number, np.array(p.r, float))
+            body = ms.attach_vessel_points(s, s.addBody(0, np.zeros(6), DOFs=[0, 1, 5],
+                                                        f6Ext=np.array([load[0], load[1], 0.0, 0.0, 0.0, load[2]])))
             s.initialize()
             s.solveEquilibrium(tol=1e-6, maxIter=5000)
     tensions = {}

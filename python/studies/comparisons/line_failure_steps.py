@@ -1,0 +1,136 @@
+"""A break in a storm at two communication steps (docs/line_failure.md, "A storm with a break"): the scene
+oc4_storm_break (the OC4 semisubmersible's three chains, a public deck; JONSWAP Hs 10 m, Tp 14 s; the platform
+free in surge, sway and yaw) with line 1 breaking at its fairlead at `lead` seconds by time, and separately by
+tension (the threshold taken from a probe run so that the break comes near `lead`), run at communication steps of
+0.1 s and 1 s. The break time must be the same (by time: exactly; by tension: within the tension tolerance's
+equivalent time, tolerance / the tension's rate at the crossing) and the peak tension of the other lines over the
+transient the same within 1 % (compared at the communication points the two runs share, every 1 s).
+
+    cd python && ../.venv/bin/python -m studies.comparisons.line_failure_steps [--lead 600]
+
+By tension the sea grows over the whole lead-in (waves.rampTime = lead), so the record tensions come often and the
+first one above the threshold lies near the lead's end."""
+
+from __future__ import annotations
+
+import argparse
+import copy
+import math
+import sys
+import time
+
+import numpy as np
+
+from pathlib import Path
+
+from ucable.scene import Scene, load_scene, run_scene
+
+from ..doc_section import write_section
+
+SCENE = "oc4_storm_break"
+STEPS = (0.1, 1.0)
+AFTER = 60.0  # [s] the transient compared after the break
+PROBE_MARGIN = 10.0  # [s] the probe's record tension is taken up to this long before the lead's end
+
+
+def storm(lead: float, step: float, failure: dict | None, ramp: float | None = None,
+          after: float = AFTER) -> Scene:
+    """The scene with the break (or none) at `lead`, run `after` seconds past it in communication steps `step`."""
+    base = load_scene(SCENE)
+    data = copy.deepcopy(base.data)
+    data["duration"], data["step"] = lead + after, step
+    data["outputs"] = ["solver.tensionScale"]
+    if ramp is not None:
+        data["parameters"]["waves.rampTime"] = ramp
+    if failure is None:
+        data.pop("failure", None)
+    else:
+        data["failure"] = {"line": 1, **failure}
+    return Scene.from_data(data, base.source, base.directory)
+
+
+def record_threshold(lead: float) -> dict:
+    """A probe run (intact, 0.1 s, the sea growing over the lead): the threshold halfway between the largest
+    line 1 fairlead tension before lead - PROBE_MARGIN and the first peak that exceeds it after that time."""
+    r = run_scene(storm(lead, STEPS[0], None, ramp=lead, after=2 * PROBE_MARGIN))
+    t, T = np.asarray(r.time), np.asarray(r["line[1].fairleadTension"])
+    before = t < lead - PROBE_MARGIN
+    record = float(T[before].max())
+    later = np.flatnonzero(~before & (T > record))
+    if not later.size:
+        raise RuntimeError(f"no tension above the record {record:g} N within {3 * PROBE_MARGIN:g} s of {lead:g} s")
+    k = later[0]
+    while k + 1 < T.size and T[k + 1] > T[k]:
+        k += 1  # up to that peak
+    return {"threshold": 0.5 * (record + float(T[k])), "record": record, "peak": float(T[k]), "peak_time": float(t[k])}
+
+
+def run(lead: float, step: float, failure: dict, ramp: float | None = None) -> dict:
+    t0 = time.process_time()
+    r = run_scene(storm(lead, step, failure, ramp=ramp))
+    t = np.asarray(r.time)
+    return {"t": t, "broken": np.asarray(r["line[1].broken"]), "breakTime": float(r["line[1].breakTime"][-1]),
+            "T1": np.asarray(r["line[1].fairleadTension"]),
+            "others": np.array([r[f"line[{k}].fairleadTension"] for k in (2, 3)]),
+            "scale": float(r["solver.tensionScale"][0]), "cpu": time.process_time() - t0}
+
+
+def transient_peaks(a: dict, b: dict, start: float) -> tuple:
+    """The other lines' peak fairlead tensions over the transient from `start` at the communication points a and
+    b share (b's, the coarser)."""
+    common = b["t"][b["t"] >= start - 1e-9]
+    ia = np.searchsorted(a["t"], common - 1e-9)
+    return a["others"][:, ia].max(axis=1), b["others"][:, b["t"] >= start - 1e-9].max(axis=1)
+
+
+def compare(lead: float, tension_tolerance: float = 1e-3) -> dict:
+    """Both triggers at both steps; the numbers the claim is checked with."""
+    out = {"lead": lead}
+    by_time = [run(lead, h, {"time": lead}) for h in STEPS]
+    out["time"] = {"break": [r["breakTime"] for r in by_time], "cpu": [r["cpu"] for r in by_time],
+                   "peaks": transient_peaks(by_time[0], by_time[1], lead)}
+    probe = record_threshold(lead)
+    by_tension = [run(lead, h, {"tension": probe["threshold"]}, ramp=lead) for h in STEPS]
+    fine = by_tension[0]
+    tb = fine["breakTime"]
+    # the tension's rate at the crossing (the fine run's, over the communication step before the break)
+    k = int(np.searchsorted(fine["t"], tb - 1e-9))
+    rate = (fine["T1"][k - 1] - fine["T1"][k - 2]) / (fine["t"][k - 1] - fine["t"][k - 2])
+    tolerance = tension_tolerance * fine["scale"]
+    out["tension"] = {"threshold": probe["threshold"], "probe": probe, "break": [r["breakTime"] for r in by_tension],
+                      "rate": float(rate), "tolerance": tolerance, "time_tolerance": tolerance / abs(rate),
+                      "cpu": [r["cpu"] for r in by_tension],
+                      "peaks": transient_peaks(by_tension[0], by_tension[1], max(r["breakTime"] for r in by_tension))}
+    return out
+
+
+def report(c: dict) -> str:
+    lines = [f"lead-in {c['lead']:g} s, the transient {AFTER:g} s after the break (peaks: 0.1 s / 1 s steps):"]
+    for trigger in ("time", "tension"):
+        d = c[trigger]
+        (a2, a3), (b2, b3) = d["peaks"]
+        lines.append(f"by {trigger}: break at {d['break'][0]:.6f} s (0.1 s steps), {d['break'][1]:.6f} s (1 s steps); "
+                     f"peaks line 2 {a2:.6g} / {b2:.6g} N ({b2 / a2 - 1:+.2e}), line 3 {a3:.6g} / {b3:.6g} N "
+                     f"({b3 / a3 - 1:+.2e}); CPU {d['cpu'][0]:.1f} s, {d['cpu'][1]:.1f} s")
+    d = c["tension"]
+    lines.append(f"  threshold {d['threshold']:.6g} N (record {d['probe']['record']:.6g} N, then a peak of "
+                 f"{d['probe']['peak']:.6g} N at {d['probe']['peak_time']:g} s); tolerance {d['tolerance']:.4g} N, "
+                 f"rate {d['rate']:.4g} N/s: {d['time_tolerance']:.4g} s")
+    return "\n".join(lines)
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(prog="studies.comparisons.line_failure_steps", description=__doc__.split("\n")[0])
+    p.add_argument("--lead", type=float, default=600.0, help="the time of the break [s]")
+    p.add_argument("--doc", type=Path, help="write the numbers into this Markdown file (between its "
+                   "line_failure_steps markers)")
+    args = p.parse_args(argv)
+    text = report(compare(args.lead))
+    print(text)
+    if args.doc:
+        write_section(args.doc, "```\n" + text + "\n```", "line_failure_steps")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
