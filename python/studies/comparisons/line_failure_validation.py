@@ -21,14 +21,13 @@ from __future__ import annotations
 
 import math
 import tempfile
-from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from ucable.fmu import CableFMU
 from ucable.free_body import LOAD_NAMES, FreeBody
-from ucable.units import STANDARD_GRAVITY, WATER_DENSITY
+from ucable.units import WATER_DENSITY
 
 from . import mooring_system as ms
 from ..peers import moorpy
