@@ -98,6 +98,7 @@ ONE_SECOND = pytest.mark.xfail(
 
 @pytest.mark.parametrize("lead, steps_", [
     pytest.param(600.0, (0.1, 1.0), marks=[pytest.mark.slow, ONE_SECOND]),
+    pytest.param(600.0, (0.1, 0.5), marks=pytest.mark.slow),
     pytest.param(60.0, (0.1, 1.0), marks=ONE_SECOND),
     pytest.param(60.0, (0.1, 0.5))])
 def test_a_break_in_a_storm_is_the_same_at_a_fine_and_a_coarse_communication_step(fmu_file, lead, steps_):
@@ -108,7 +109,7 @@ def test_a_break_in_a_storm_is_the_same_at_a_fine_and_a_coarse_communication_ste
     assert c["time"]["break"] == [lead, lead]
     d = c["tension"]
     assert abs(d["break"][0] - d["break"][1]) <= d["time_tolerance"], steps.report(c)
-    assert abs(d["break"][0] - lead) < 3 * steps.PROBE_MARGIN, steps.report(c)
+    assert lead - steps.PROBE_MARGIN < d["break"][0] < lead + 3 * steps.PROBE_MARGIN, steps.report(c)
     for trigger in ("time", "tension"):
         fine, coarse = c[trigger]["peaks"]
         assert np.all(np.abs(coarse / fine - 1.0) < 0.01), steps.report(c)
