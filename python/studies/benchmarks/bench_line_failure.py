@@ -12,17 +12,14 @@ compute() returns the numbers, markdown() the table."""
 
 from __future__ import annotations
 
-import argparse
 import sys
 import time
-from pathlib import Path
 
 import numpy as np
 
-from ucable.paths import fmu_path
 from ucable.scene import load_scene, run_scene
 
-from ..doc_section import write_section
+from ..doc_section import bench_main
 
 SCENE = "oc4_storm_break"
 WINDOW = 10.0  # [s] the window after the break whose cost is compared
@@ -99,19 +96,7 @@ def markdown(d: dict) -> str:
 
 
 def main(argv=None) -> int:
-    p = argparse.ArgumentParser(prog="scripts/bench_line_failure", description=__doc__.split("\n")[0])
-    p.add_argument("--quick", action="store_true", help="CI size: 120 s, the break at 60 s")
-    p.add_argument("--fmu", type=Path, default=None)
-    p.add_argument("--doc", type=Path, default=None,
-                   help="also write the table into this Markdown file (between its bench_line_failure markers)")
-    args = p.parse_args(argv)
-    data = compute(args.fmu or fmu_path(), quick=args.quick)
-    table = markdown(data)
-    print(table)
-    if args.doc:
-        write_section(args.doc, table, "bench_line_failure")
-    return 0
-
+    return bench_main(argv, "bench_line_failure", __doc__.split("\n")[0], "CI size: 120 s, the break at 60 s", compute, markdown)
 
 if __name__ == "__main__":
     sys.exit(main())

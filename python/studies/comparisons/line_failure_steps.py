@@ -53,11 +53,11 @@ def storm(lead: float, step: float, failure: dict | None, ramp: float | None = N
     return Scene.from_data(data, base.source, base.directory)
 
 
-def record_threshold(lead: float, tension_tolerance: float) -> dict:
+def record_threshold(lead: float, tension_tolerance: float, after: float = AFTER) -> dict:
     """A probe run (intact, 0.1 s, the sea growing over the lead): the threshold twice the tension tolerance above
     the largest line 1 fairlead tension up to lead - PROBE_MARGIN (runs differ by about the tolerance: a failure
     by tension pending makes each step start with a new Jacobian), and the first peak above it after that."""
-    r = run_scene(storm(lead, STEPS[0], None, ramp=lead, tension_tolerance=tension_tolerance))
+    r = run_scene(storm(lead, STEPS[0], None, ramp=lead, after=after, tension_tolerance=tension_tolerance))
     t, T = np.asarray(r.time), np.asarray(r["line[1].fairleadTension"])
     tolerance = tension_tolerance * float(r["solver.tensionScale"][0])
     before = t < lead - PROBE_MARGIN
@@ -73,9 +73,9 @@ def record_threshold(lead: float, tension_tolerance: float) -> dict:
 
 
 def run(lead: float, step: float, failure: dict, ramp: float | None = None,
-        tension_tolerance: float | None = None) -> dict:
+        tension_tolerance: float | None = None, after: float = AFTER) -> dict:
     t0 = time.process_time()
-    r = run_scene(storm(lead, step, failure, ramp=ramp, tension_tolerance=tension_tolerance))
+    r = run_scene(storm(lead, step, failure, ramp=ramp, after=after, tension_tolerance=tension_tolerance))
     t = np.asarray(r.time)
     return {"t": t, "broken": np.asarray(r["line[1].broken"]), "breakTime": float(r["line[1].breakTime"][-1]),
             "T1": np.asarray(r["line[1].fairleadTension"]),
@@ -91,16 +91,17 @@ def transient_peaks(a: dict, b: dict, start: float) -> tuple:
     return a["others"][:, ia].max(axis=1), b["others"][:, b["t"] >= start - 1e-9].max(axis=1)
 
 
-def compare(lead: float, tension_tolerance: float = TENSION_TOLERANCE, steps: tuple = STEPS) -> dict:
+def compare(lead: float, tension_tolerance: float = TENSION_TOLERANCE, steps: tuple = STEPS,
+            after: float = AFTER) -> dict:
     """Both triggers at both steps; the numbers the claim is checked with. A run the FMU fails in raises its
     SceneError."""
-    out = {"lead": lead, "steps": steps}
-    by_time = [run(lead, h, {"time": lead}) for h in steps]
+    out = {"lead": lead, "steps": steps, "after": after}
+    by_time = [run(lead, h, {"time": lead}, after=after) for h in steps]
     out["time"] = {"break": [r["breakTime"] for r in by_time], "cpu": [r["cpu"] for r in by_time],
                    "peaks": transient_peaks(by_time[0], by_time[1], lead)}
-    probe = record_threshold(lead, tension_tolerance)
-    by_tension = [run(lead, h, {"tension": probe["threshold"]}, ramp=lead, tension_tolerance=tension_tolerance)
-                  for h in steps]
+    probe = record_threshold(lead, tension_tolerance, after)
+    by_tension = [run(lead, h, {"tension": probe["threshold"]}, ramp=lead, tension_tolerance=tension_tolerance,
+                      after=after) for h in steps]
     fine = by_tension[0]
     tb = fine["breakTime"]
     # the tension's rate at the crossing (the fine run's, over the communication step before the break)
@@ -116,7 +117,7 @@ def compare(lead: float, tension_tolerance: float = TENSION_TOLERANCE, steps: tu
 
 def report(c: dict) -> str:
     fine, coarse = c["steps"]
-    lines = [f"lead-in {c['lead']:g} s, the transient {AFTER:g} s after the break (peaks: {fine:g} s / {coarse:g} s "
+    lines = [f"lead-in {c['lead']:g} s, the transient {c['after']:g} s after the break (peaks: {fine:g} s / {coarse:g} s "
              "steps):"]
     for trigger in ("time", "tension"):
         d = c[trigger]
