@@ -25,3 +25,23 @@ def add_report_options(parser, name: str, fmu_default: str = "the build's") -> N
     parser.add_argument("--doc", type=Path, help="write the section into this Markdown file (between "
                         f"<!-- BEGIN {name} --> and <!-- END {name} -->)")
     parser.add_argument("--json", type=Path, help="also write the numbers as JSON")
+
+
+def bench_main(argv, name: str, description: str, quick_help: str, compute, markdown) -> int:
+    """The command line of a scripts/<name> benchmark that prints a table: --quick, --fmu, --doc (the section `name`
+    of a Markdown file); compute(fmu, quick=...) measures, markdown(data) writes the table."""
+    import argparse
+
+    from ucable.paths import fmu_path
+
+    p = argparse.ArgumentParser(prog=f"scripts/{name}", description=description)
+    p.add_argument("--quick", action="store_true", help=quick_help)
+    p.add_argument("--fmu", type=Path, default=None)
+    p.add_argument("--doc", type=Path, default=None,
+                   help=f"also write the table into this Markdown file (between its {name} markers)")
+    args = p.parse_args(argv)
+    table = markdown(compute(args.fmu or fmu_path(), quick=args.quick))
+    print(table)
+    if args.doc:
+        write_section(args.doc, table, name)
+    return 0

@@ -243,6 +243,32 @@ def check_source(a):
     return result.columns, "run", out
 
 
+def check_cases(rows: list[dict], analysis: str, classes, standards):
+    """The verdict of a sweep over the design cases: each run checked by its `case` column's case (intact,
+    damaged, transient; a run's statistics are its case's part, ucable.sweep.run_case), the governing check
+    over all of them."""
+    from .design_check import CASES, CheckError, check_lines, sweep_tensions, verdict
+
+    checked, seen = [], []
+    for case in CASES:
+        runs = [r for r in rows if r.get("case") == case]
+        if runs:
+            seen.append(case)
+            checked += [replace_source(row, case) for row in check_lines(sweep_tensions(runs), case, analysis,
+                                                                          classes, standards)]
+    unknown = sorted({str(r.get("case")) for r in rows} - set(CASES))
+    if unknown:
+        raise CheckError(f"case column: {', '.join(unknown)} is not one of {', '.join(CASES)}")
+    return verdict(checked, ", ".join(seen), "the sweep's case column (--vary case=...)")
+
+
+def replace_source(row, case: str):
+    """A check row whose run names its case."""
+    from dataclasses import replace
+
+    return replace(row, source=f"{case}: {row.source}" if row.source else case)
+
+
 def cmd_check(a) -> int:
     import numpy as np
 
@@ -271,6 +297,8 @@ def cmd_check(a) -> int:
                                      f"{float(data['time'][-1]):g} s)")
                 data = {name: np.asarray(values)[keep] for name, values in data.items()}
             v = check_run(data, a.case, a.analysis, classes, standards)
+        elif a.case is None and any("case" in r for r in data):  # a sweep over the design cases (--vary case=...)
+            v = check_cases(data, a.analysis, classes, standards)
         else:  # each run of a sweep by its own case (the user's, else its broken lines)
             if a.case is None and any(r.get(k, 0.0) > 0.5 for r in data for k in r if k.endswith(".brokenAny")):
                 raise CheckError("a sweep whose runs break lines: give the case (--case damaged or transient)")

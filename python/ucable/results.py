@@ -25,7 +25,7 @@ TO_DEGREES = {"rad": "deg", "rad/s": "deg/s", "rad/s2": "deg/s2"}
 OTHER_UNITS = {"time": "s", "duration": "s", "step": "s", "speed_kn": "kn", "heading": "deg", "heading_deg": "deg",
                "towTensionMax": "N", "towTensionMin": "N", "towTensionFinal": "N", "endDepthFinal": "m",
                "anchorTensionMax": "N", "lengthFinal": "m", "cpuSeconds": "s"}
-TEXT_COLUMNS = ("status", "error")
+TEXT_COLUMNS = ("status", "error", "case")
 _LABEL = re.compile(r"^(?P<name>.*?) \[(?P<unit>[^\[\]]*)\]$")
 _STIFFNESS = re.compile(r"stiffness\[(\d),(\d)\]$")
 

@@ -26,6 +26,11 @@ A scene file holds (docs/scenes.md lists every key with its type, unit and defau
     surge = { amplitude = 5.0, period = 20.0 }   # and oscillations about it from rest (sway, heave in m,
     pitch = { amplitude = 3.0, period = 25.0 }   # roll, pitch, yaw in deg) as the tow's; with the parameter
                               # bodyOrientation = 1 the angles go to the FMU as their quaternion (R = Rx Ry Rz)
+    [body.free]               # optional: body 1 free in surge, sway and yaw (ucable.free_body): mass and yaw
+    mass = 2.5e7              # inertia with added mass [kg, kg m2], damping [N s/m, N s/m, N m s] and a steady
+    inertia = 2.3e10          # load [N, N, N m]; the runner integrates them from the lines' load
+    damping = [1e6, 1e6, 3e9]
+    load = [7.5e5, 1.3e6, 0.0]
 
     [failure]                 # optional: a line of a mooring system breaks (docs/line_failure.md): the deck
     line = 1                  # line (ID), the deck point it detaches from (point = 0 or left out: its
@@ -63,6 +68,8 @@ from pathlib import Path
 import numpy as np
 
 from .fmu import NUM_STATIONS, CableFMU, FMICallException
+from .free_body import LOAD_NAMES as FREE_LOADS
+from .free_body import FreeBody
 from .fmu import load as load_fmu
 from .orientation import ANGLES_XYZ, QUATERNION, quaternion_from_angles
 from .variables import MAX_LINES, VARIABLES
@@ -99,6 +106,34 @@ class SceneError(RuntimeError):
         super().__init__(message)
         self.partial = partial
         self.stopped = stopped
+
+
+CASES = ("intact", "damaged", "transient")  # a scene with a line failure by time, as `--vary case=...` runs it
+
+
+def failure_case(data: dict, case, where: str, check: Checker) -> dict:
+    """The scene data of one design case of a scene whose [failure] breaks a line at a time: intact (no
+    failure), damaged (the line breaks within the first communication step, so the run is the damaged system
+    from the start) or transient (the scene as written)."""
+    if case not in CASES:
+        check.fail(where, f"expected one of {', '.join(CASES)}, got {case!r}")
+    failure = data.get("failure") or {}
+    if not failure.get("time"):
+        check.fail(where, "a case needs a [failure] table that breaks its line at a time (time > 0)")
+    if case == "intact":
+        data.pop("failure", None)
+    elif case == "damaged":
+        data["failure"] = {**failure, "time": min(float(data["step"]), float(failure["time"]))}
+        data["failure"].pop("tension", None)
+    return data
+
+
+def case_statistics_from(scene: "Scene", case) -> float:
+    """The time from which a case's statistics are taken (`ucable sweep --vary case=...`): the scene's break
+    time for the damaged and transient cases (the lead-in before it is the intact system's), 0 for the intact."""
+    if case in ("damaged", "transient"):
+        return float(scene.parameters.get("failure.time", 0.0))
+    return 0.0
 
 
 @dataclass
@@ -140,6 +175,8 @@ class Scene:
             elif key in TOW_SETTINGS:
                 speed = key == "speed_kn"
                 data.setdefault("tow", {})[TOW_SETTINGS[key]] = check.number(value, where, nonnegative=speed)
+            elif key == "case":
+                data = failure_case(data, value, where, check)
             elif key == "record_shape":
                 if not isinstance(value, bool):
                     check.fail(where, "expected true or false")
@@ -263,10 +300,13 @@ class BodyMotion:
             a[i] += A * (dde * s + 2.0 * de * w * c - e * w * w * s)
         return q, v, a
 
-    def inputs(self, t: float, orientation: int = ANGLES_XYZ) -> dict:
+    def inputs(self, t: float, orientation: int = ANGLES_XYZ, free: FreeBody | None = None) -> dict:
         """Body 1's inputs at t; with orientation (bodyOrientation) QUATERNION the angles are passed as the
-        quaternion of R = Rx Ry Rz of them, the orientation the FMU's angles give by default."""
+        quaternion of R = Rx Ry Rz of them, the orientation the FMU's angles give by default. With `free` its
+        surge, sway and yaw are the free body's."""
         q, v, _ = self.at(t)
+        if free:
+            q, v = free.pose(q), free.rates(v)
         names = ("x", "y", "z", "roll", "pitch", "yaw", "vx", "vy", "vz", "wx", "wy", "wz")
         d = {f"body[1].{n}": float(x) for n, x in zip(names, [*q, *v])}
         if orientation == QUATERNION:
@@ -472,6 +512,7 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
     times = np.array([min(k * s.step, s.duration) for k in range(n + 1)])
     extra = {"anchored": ANCHORED_RECORDED, "winch": WINCH_RECORDED}.get(s.kind, [])
     body = BodyMotion(s.body) if s.body else None
+    free = FreeBody.from_table(s.body["free"], s.body["start"]) if s.body.get("free") else None
     if body:
         extra = extra + BODY_RECORDED + LINES_RECORDED
     else:
@@ -504,8 +545,12 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
             d = {"tow.x": x[0], "tow.y": x[1], "tow.z": x[2], "tow.vx": v[0], "tow.vy": v[1], "tow.vz": v[2]}
             d.update({name: float(signal_at(sig, t)) for name, sig in signals.items()})
             if body:
-                d.update(body.inputs(t, int(parameters.get("bodyOrientation", ANGLES_XYZ))))
+                d.update(body.inputs(t, int(parameters.get("bodyOrientation", ANGLES_XYZ)), free))
             return d
+
+        def body_pose(t):
+            q = body.at(t)[0]
+            return free.pose(q) if free else q
 
         cpu0 = time.process_time()
         try:
@@ -519,7 +564,9 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
         read_row = recorded_reader(cable, recorded)
         data[0] = read_row()
         tow[0] = motion.at(0.0)[0]
-        pose[0] = body.at(0.0)[0] if body else 0.0
+        if free:
+            free.lines = np.array(cable.get_reals(list(FREE_LOADS)))
+        pose[0] = body_pose(0.0) if body else 0.0
         done = 0
         for k in range(n):
             t = times[k]
@@ -528,11 +575,14 @@ def run_scene(scene: Scene | str | Path | dict, overrides: dict | None = None, f
             if rate_signal is not None:
                 cable.set_input_derivatives(["winch.rate"], 1, [signal_slope(rate_signal, t, times[k + 1])])
             if body:
-                cable.set_input_derivatives(BODY_RATES, 1, [float(x) for x in body.at(t)[2]])
+                a = body.at(t)[2]
+                cable.set_input_derivatives(BODY_RATES, 1, [float(x) for x in (free.accelerations(a) if free else a)])
             cable.do_step(times[k + 1] - t, t)
             data[k + 1] = read_row()
+            if free:
+                free.advance(times[k + 1] - t, np.array(cable.get_reals(list(FREE_LOADS))))
             tow[k + 1] = motion.at(times[k + 1])[0]
-            pose[k + 1] = body.at(times[k + 1])[0] if body else 0.0
+            pose[k + 1] = body_pose(times[k + 1]) if body else 0.0
             done = k + 1
             if progress is not None:
                 progress(times[k + 1])

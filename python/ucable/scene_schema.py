@@ -35,7 +35,10 @@ WINCH_INPUTS = {"rate": "winch.rate", "tension": "winch.tension"}
 WINCH_MODES = {"rate": 1, "tension": 2}
 # [body]: body 1 of a mooring system (docs/systems_mooring.md); degrees of freedom in the order of its inputs
 BODY_DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
-BODY_KEYS = ("start",) + BODY_DOFS
+BODY_KEYS = ("start",) + BODY_DOFS + ("free",)
+# [body.free]: body 1 free in surge, sway and yaw, integrated by the runner (ucable.free_body)
+FREE_KEYS = ("mass", "inertia", "damping", "load")
+FREE_BODY_DOFS = ("surge", "sway", "yaw")
 OSCILLATION_KEYS = ("amplitude", "period", "ramp")
 BODY_INPUT_NAMES = tuple(f"body[1].{n}" for n in ("x", "y", "z", "roll", "pitch", "yaw", "vx", "vy", "vz",
                                                    "wx", "wy", "wz", "q0", "q1", "q2", "q3"))
@@ -292,6 +295,26 @@ def check_body(c: Checker, body: dict) -> dict:
         if dof not in body:
             continue
         out[dof], _ = check_oscillation(c, body[dof], OSCILLATION_KEYS, f"[body] {dof}")
+    if "free" in body:
+        out["free"] = check_free_body(c, c.table(body["free"], "[body.free]"), out)
+    return out
+
+
+def check_free_body(c: Checker, free: dict, body: dict) -> dict:
+    """[body.free]: body 1 free in surge, sway and yaw: its mass with added mass [kg], its yaw inertia with added
+    inertia [kg m2], damping [c_x, c_y, c_yaw] (N s/m, N s/m, N m s) and a steady load [F_x, F_y, M_z] (N, N, N m)."""
+    c.keys(free, FREE_KEYS, "[body.free]", required=("mass", "inertia"))
+    for dof in FREE_BODY_DOFS:
+        if dof in body:
+            c.fail(f"[body] {dof}", "a free degree of freedom of [body.free] cannot be given a motion as well")
+    out = {"mass": c.number(free["mass"], "[body.free] mass", positive=True),
+           "inertia": c.number(free["inertia"], "[body.free] inertia", positive=True)}
+    for key in ("damping", "load"):
+        value = free.get(key, [0.0, 0.0, 0.0])
+        if not (isinstance(value, list) and len(value) == 3):
+            c.fail(f"[body.free] {key}", f"expected three numbers (surge, sway, yaw), got {_show(value)}")
+        out[key] = [c.number(x, f"[body.free] {key}[{i + 1}]", nonnegative=key == "damping")
+                    for i, x in enumerate(value)]
     return out
 
 

@@ -18,16 +18,14 @@ compute() runs everything and returns numbers; markdown() writes the table.
 
 from __future__ import annotations
 
-import argparse
 import sys
 import tempfile
 from pathlib import Path
 
-from ucable.paths import fmu_path
 from ucable.progress import ProgressBar
 
 from ..comparisons import mooring_system as ms
-from ..doc_section import write_section
+from ..doc_section import bench_main
 from ..comparisons.line_file_validation import refined_deck_file
 from .work_precision import cpu_at_error, pareto
 
@@ -107,19 +105,7 @@ def markdown(data: dict) -> str:
 
 
 def main(argv=None) -> int:
-    p = argparse.ArgumentParser(prog="scripts/bench_mooring_system", description=__doc__.split("\n")[0])
-    p.add_argument("--quick", action="store_true", help="CI size: two FMU runs, MoorDyn at the deck's mesh, 20 s")
-    p.add_argument("--fmu", type=Path, default=None)
-    p.add_argument("--doc", type=Path, default=None,
-                   help="also write the table into this Markdown file (between its bench_mooring_system markers)")
-    args = p.parse_args(argv)
-    data = compute(args.fmu or fmu_path(), quick=args.quick)
-    table = markdown(data)
-    print(table)
-    if args.doc:
-        write_section(args.doc, table, "bench_mooring_system")
-    return 0
-
+    return bench_main(argv, "bench_mooring_system", __doc__.split("\n")[0], "CI size: two FMU runs, MoorDyn at the deck's mesh, 20 s", compute, markdown)
 
 if __name__ == "__main__":
     sys.exit(main())

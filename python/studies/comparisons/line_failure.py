@@ -65,20 +65,42 @@ def fmu_run(elements: int = 10, h: float = H) -> np.ndarray:
     return np.array(out)
 
 
-def main() -> None:
+def compute() -> dict:
+    """The RMS differences of the broken line's anchor tension over T_BREAK..T_END, relative to its tension
+    before the break (MoorDyn 20 segments's), and the tensions at T_END."""
     md = moordyn_run()
     md40 = moordyn_run(segments=40, dtM=2.5e-4)
     ours = fmu_run()
     ours20 = fmu_run(elements=20)
     after = md[:, 0] > T_BREAK + 1e-9
     ref = md[0, 1]  # the anchor tension before the break
-    for name, run in (("MoorDyn 40 segments", md40), ("FMU 10 elements", ours), ("FMU 20 elements", ours20)):
-        d = run[after, 1] - md[after, 1]
-        print(f"{name}: anchor tension RMS difference from MoorDyn 20 segments over {T_BREAK}-{T_END} s: "
-              f"{np.sqrt(np.mean(d * d)) / ref:.2%} of {ref:.4g} N; at {T_END} s {run[-1, 1]:.4g} N "
-              f"(MoorDyn {md[-1, 1]:.4g} N)")
-    d = ours20[after, 1] - md40[after, 1]
-    print(f"FMU 20 elements against MoorDyn 40 segments: {np.sqrt(np.mean(d * d)) / ref:.2%}")
+
+    def rms(a, b):
+        d = a[after, 1] - b[after, 1]
+        return float(np.sqrt(np.mean(d * d)) / ref)
+
+    return {"before": float(ref), "t_break": T_BREAK, "t_end": T_END,
+            "rows": [("MoorDyn 40 segments (dtM 2.5e-4 s) against MoorDyn 20 (dtM 5e-4 s)", rms(md40, md)),
+                     ("FMU 10 elements, 0.1 s steps, against MoorDyn 20 segments", rms(ours, md)),
+                     ("FMU 20 elements against MoorDyn 20 segments", rms(ours20, md)),
+                     ("FMU 20 elements against MoorDyn 40 segments", rms(ours20, md40))],
+            "end": {"MoorDyn 20": float(md[-1, 1]), "MoorDyn 40": float(md40[-1, 1]), "FMU 10": float(ours[-1, 1]),
+                    "FMU 20": float(ours20[-1, 1])}}
+
+
+def main(argv=None) -> None:
+    import argparse
+    import json
+
+    p = argparse.ArgumentParser(prog="studies.comparisons.line_failure", description=__doc__.split("\n")[0])
+    p.add_argument("--json", type=Path, help="write the numbers as JSON")
+    args = p.parse_args(argv)
+    data = compute()
+    for name, value in data["rows"]:
+        print(f"{name}: anchor tension RMS difference over {T_BREAK}-{T_END} s: {value:.2%} of {data['before']:.4g} N")
+    print("at", T_END, "s:", ", ".join(f"{k} {v:.4g} N" for k, v in data["end"].items()))
+    if args.json:
+        args.json.write_text(json.dumps(data))
 
 
 if __name__ == "__main__":

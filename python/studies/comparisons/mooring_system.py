@@ -99,16 +99,22 @@ def fmu_parameters(deck: SystemDeck, **extra) -> dict:
     return p
 
 
+def attach_vessel_points(s, body):
+    """The deck's Vessel points (MoorPy's coupled points) made points of `body` at their coordinates (what the
+    FMU's body 1 carries); returns the body."""
+    for p in s.pointList:
+        if p.type == -1:
+            p.type = 1
+            body.attachPoint(p.number, np.array(p.r, float))
+    return body
+
+
 def moorpy_statics(deck: SystemDeck, pose=(0.0,) * 6) -> dict:
     """MoorPy with the Vessel points on a coupled body at `pose` (MoorPy's angles: R = Rz Ry Rx):
     line tensions, the body's force and moment (lines only) and its analytic coupled stiffness."""
     s = _moorpy_system(deck.path, deck.depth)
     with moorpy.silenced():
-        body = s.addBody(-1, np.array(pose, float))
-        for p in s.pointList:
-            if p.type == -1:
-                p.type = 1
-                body.attachPoint(p.number, np.array(p.r, float))
+        body = attach_vessel_points(s, s.addBody(-1, np.array(pose, float)))
         s.initialize()
         s.solveEquilibrium(tol=1e-8, maxIter=2000)
         K = s.getCoupledStiffnessA(lines_only=True)
