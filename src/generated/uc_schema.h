@@ -174,6 +174,8 @@ typedef struct UCParams {
     int failurePoint; /* failure.point: a mooring system: the deck point (its ID) that `failure.line` detaches from: a point on a coupled body, a coupled point or a free point where three or more lines meet; 0: the line's fairlead */
     double failureTime; /* failure.time [s]: a mooring system: the time at which `failure.line` detaches (0: not by time); the step that contains it ends there */
     double failureTension; /* failure.tension [N]: a mooring system: the tension of `failure.line` at `failure.point` at which it detaches (0: not by tension); the step in which it is reached ends where it is, the tension there within the integrator's tolerance of it */
+    double seabedSlope; /* seabedSlope [deg]: angle of the plane seabed below the horizontal (0: flat, the default): the seabed passes through z = -`waterDepth` under the origin (x = y = 0) and descends along the heading `seabedSlopeHeading`, so its depth under (x, y) is `waterDepth` + tan(`seabedSlope`) (x cos ψ + y sin ψ); contact acts along the seabed's normal and friction along its surface ([docs/model.md](docs/model.md), seabed) */
+    double seabedSlopeHeading; /* seabedSlopeHeading [deg]: direction ψ in which the sloped seabed (`seabedSlope`) descends most steeply, measured in the horizontal plane from +x towards +y: 0 (the default) deeper along +x, 90 deeper along +y */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
 } UCParams;
@@ -528,6 +530,8 @@ typedef struct UCOutputs {
     X(271, "failure.point", INTEGER, PARAMETER, failurePoint) \
     X(272, "failure.time", REAL, PARAMETER, failureTime) \
     X(273, "failure.tension", REAL, PARAMETER, failureTension) \
+    X(274, "seabedSlope", REAL, PARAMETER, seabedSlope) \
+    X(275, "seabedSlopeHeading", REAL, PARAMETER, seabedSlopeHeading) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -1626,6 +1630,8 @@ typedef struct UCOutputs {
     X(failurePoint, 0) \
     X(failureTime, 0.0) \
     X(failureTension, 0.0) \
+    X(seabedSlope, 0.0) \
+    X(seabedSlopeHeading, 0.0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -1902,6 +1908,8 @@ typedef struct UCOutputs {
     X(failurePoint, "failure.point", 0.0, 10000.0, 0, 0, "[0, 10000]", "a deck point's ID") \
     X(failureTime, "failure.time", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "a time of the simulation") \
     X(failureTension, "failure.tension", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension") \
+    X(seabedSlope, "seabedSlope", 0.0, 45.0, 0, 0, "[0, 45]", "a seabed steeper than 45 degrees is a wall, not a seabed a line rests on") \
+    X(seabedSlopeHeading, "seabedSlopeHeading", -360.0, 360.0, 0, 0, "[-360, 360]", "a heading in degrees") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \
