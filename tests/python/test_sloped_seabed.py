@@ -15,6 +15,7 @@ linear along it, which the elements integrate exactly, and the tow point's tensi
 """
 
 import math
+from pathlib import Path
 
 import numpy as np
 
@@ -93,3 +94,28 @@ def test_a_line_lowered_down_a_slope_is_held_by_its_friction(fmu_file):
         assert abs(cable.get("towTension") / expected - 1.0) < 1e-6, (cable.get("towTension"), expected)
     finally:
         cable.free()
+
+
+DECKS = Path(__file__).resolve().parents[1] / "data" / "decks"
+
+
+def test_a_decks_seafloor_file_that_is_a_plane_is_the_sloped_seabed(fmu_file):
+    """MoorDyn's SeafloorFile named from the directory above the deck's (as MoorDyn, which reads it from its
+    working directory, names it) and holding the plane z = -362.5 - 0.05 x: the deck's line starts as the
+    same deck without it on the sloped seabed set by parameters (waterDepth 362.5 m, seabedSlope atan 0.05,
+    heading 0). Before, the deck was refused ("a bathymetry file is not supported")."""
+    outputs = ["towTension", "endTension", "groundedLength", "minSeabedClearance", "endPosition.z"]
+    by_file = CableFMU(fmu_file, parameters={"lineFile": str(DECKS / "seafloor" / "chain_on_slope.dat")})
+    by_parameters = CableFMU(fmu_file, parameters={
+        "lineFile": str(DECKS / "chain.dat"), "waterDepth": 362.5,
+        "seabedSlope": math.degrees(math.atan(0.05)), "seabedSlopeHeading": 0.0})
+    try:
+        values = []
+        for cable in (by_file, by_parameters):
+            cable.initialize(inputs={"tow.z": -70.0})
+            values.append(cable.get_reals(outputs))
+        assert values[0][2] > 5.0  # part of the chain rests on the slope (14 m: it falls away from the anchor)
+        np.testing.assert_allclose(values[0], values[1], rtol=1e-9, atol=1e-9)
+    finally:
+        by_file.free()
+        by_parameters.free()
