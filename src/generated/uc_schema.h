@@ -109,8 +109,8 @@ typedef struct UCParams {
     double absTol; /* absTol: optional extra absolute tolerance of IDA's usual form (SI units of the unknowns), with `relTol`; 0: not used */
     double waterDensity; /* waterDensity [kg/m3]: sea water density */
     double gravity; /* gravity [m/s2]: gravitational acceleration (along -z) */
-    double waterDepth; /* waterDepth [m]: water depth (seabed at z = -waterDepth) */
-    int enableSeabed; /* enableSeabed: flat seabed at z = -`waterDepth`: penalty contact with damping and regularized Coulomb friction, smoothed over 5 % of the diameter */
+    double waterDepth; /* waterDepth [m]: water depth (seabed at z = -waterDepth; under the origin where `seabedSlope` tilts it) */
+    int enableSeabed; /* enableSeabed: seabed at z = -`waterDepth`, flat, or a plane through that depth under the origin tilted by `seabedSlope`: penalty contact along its normal with damping and regularized Coulomb friction along its surface, smoothed over 5 % of the diameter */
     double seabedStiffness; /* seabedStiffness [N/m2]: contact force per unit cable length per metre of penetration */
     double seabedDamping; /* seabedDamping [N.s/m2]: contact damping per unit cable length per m/s of penetration rate */
     double seabedFriction; /* seabedFriction: Coulomb friction coefficient, axial and lateral (regularized below 0.01 m/s sliding speed) */
