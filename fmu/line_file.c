@@ -49,8 +49,10 @@ static char* read_file(const char* path, size_t* length, int* error) {
 }
 
 /* The files next to the deck that its options and line types ask for (MoorDyn's current_profile.txt, a
- * tension-strain file, ...): read from the deck's directory; one that cannot be read is left out, and the
- * reader refuses the deck naming it. */
+ * tension-strain file, a SeafloorFile, ...): read from the deck's directory; a name with directories
+ * (MoorDyn reads a SeafloorFile from its working directory, "Mooring/3D_seafloor/x.txt") is also tried there
+ * without its leading directories, one at a time, then as it is from the working directory. One that cannot
+ * be read is left out, and the reader refuses the deck naming it. */
 #define UC_MAX_COMPANIONS 8
 typedef struct Companions {
     UCLineFileCompanion files[UC_MAX_COMPANIONS];
@@ -70,11 +72,17 @@ static void read_companions(const char* path, const char* text, size_t length, C
         *end = '\0';
         char* full = malloc(dir + strlen(name) + 1);
         if (full != NULL) {
-            memcpy(full, path, dir);
-            strcpy(full + dir, name);
             size_t n = 0;
             int error = 0;
-            char* companion = read_file(full, &n, &error);
+            char* companion = NULL;
+            for (const char* tail = name; companion == NULL && tail != NULL;) {
+                memcpy(full, path, dir);
+                strcpy(full + dir, tail);
+                companion = read_file(full, &n, &error);
+                tail = strpbrk(tail, "/\\");
+                if (tail != NULL) ++tail;
+            }
+            if (companion == NULL) companion = read_file(name, &n, &error);
             free(full);
             if (companion != NULL) {
                 c->texts[c->n] = companion;

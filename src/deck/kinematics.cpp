@@ -10,6 +10,10 @@
 #include <complex>
 #include <cstdio>
 
+#include <Eigen/Dense>
+
+#include "core/types.h"
+
 namespace uc {
 namespace deck {
 namespace {
@@ -390,6 +394,77 @@ bool read_sea(const Options& options, const LineFileCompanions& companions, Line
     return true;
 }
 
+bool read_seafloor(const LineFileCompanions& companions, LineFileSeabed& seabed, std::vector<std::string>& notes,
+                   std::string& error) {
+    if (seabed.seafloorFile.empty()) return true;
+    const int row = seabed.seafloorFileRow;
+    auto refuse = [&](const std::string& why) {
+        error = at_line(row, "SeafloorFile " + quoted(seabed.seafloorFile) + ": " + why);
+        return false;
+    };
+    const LineFileCompanion* file = companion(companions, seabed.seafloorFile.c_str());
+    if (!file) return refuse("it could not be read (looked up from the deck's directory, there also without its "
+                             "leading directories, and from the working directory)");
+    std::vector<NumberRow> rows;
+    std::string what;
+    if (!number_rows(*file, 1, rows, what)) return refuse(what);
+    // MoorDyn's grid: nx ny, the nx x values, the ny y values, then rows x y z (the seabed's height)
+    if (rows.size() < 3 || rows[0].values.size() != 2) return refuse("the first line must give the grid's nx and ny");
+    const double nxValue = rows[0].values[0], nyValue = rows[0].values[1];
+    if (!(nxValue >= 1 && nyValue >= 1 && nxValue == std::floor(nxValue) && nyValue == std::floor(nyValue)))
+        return refuse("nx and ny must be whole numbers of at least 1");
+    const size_t nx = static_cast<size_t>(nxValue), ny = static_cast<size_t>(nyValue);
+    if (rows[1].values.size() != nx || rows[2].values.size() != ny || rows.size() != 3 + nx * ny)
+        return refuse("expected " + std::to_string(nx) + " x values, " + std::to_string(ny) + " y values and " +
+                      std::to_string(nx * ny) + " rows x y z");
+    // the least-squares plane z = a + b x + c y through the grid's points
+    double S[3][3] = {}, t[3] = {}, extent = 0.0, height = 0.0;
+    for (size_t k = 3; k < rows.size(); ++k) {
+        if (rows[k].values.size() != 3) return refuse("line " + std::to_string(rows[k].number) + ": expected x y z");
+        const double phi[3] = {1.0, rows[k].values[0], rows[k].values[1]}, z = rows[k].values[2];
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) S[i][j] += phi[i] * phi[j];
+            t[i] += phi[i] * z;
+        }
+        extent = std::max({extent, std::abs(phi[1]), std::abs(phi[2])});
+        height = std::max(height, std::abs(z));
+    }
+    Eigen::Matrix3d M;
+    Eigen::Vector3d r;
+    for (int i = 0; i < 3; ++i) {
+        r[i] = t[i];
+        for (int j = 0; j < 3; ++j) M(i, j) = S[i][j];
+    }
+    // a grid of one row or column fixes no slope across it: the plane is level that way
+    for (int i = 1; i < 3; ++i)
+        if (M(i, i) * M(0, 0) - M(0, i) * M(0, i) <= 1e-12 * M(i, i) * M(0, 0)) {
+            M.row(i).setZero();
+            M.col(i).setZero();
+            M(i, i) = 1.0;
+            r[i] = 0.0;
+        }
+    const Eigen::Vector3d abc = M.ldlt().solve(r);
+    double off = 0.0;
+    for (size_t k = 3; k < rows.size(); ++k)
+        off = std::max(off, std::abs(abc[0] + abc[1] * rows[k].values[0] + abc[2] * rows[k].values[1] - rows[k].values[2]));
+    const double tolerance = 1e-6 * std::max({extent, height, 1.0});  // the file's printed digits
+    if (!(off <= tolerance))
+        return refuse("its grid is not a plane (a point lies " + number_text(off) + " m off the best plane " +
+                      "z = " + number_text(abc[0]) + " + " + number_text(abc[1]) + " x + " + number_text(abc[2]) +
+                      " y): the FMU's seabed is a plane (seabedSlope, seabedSlopeHeading); a gridded bathymetry "
+                      "is not supported");
+    seabed.plane = true;
+    seabed.planeDepth = -abc[0];
+    const double gradient = std::hypot(abc[1], abc[2]);
+    seabed.slope = std::atan(gradient) * 180.0 / kPi;
+    seabed.heading = gradient > 0.0 ? std::atan2(-abc[2], -abc[1]) * 180.0 / kPi : 0.0;  // where it descends
+    notes.push_back(at_line(row, "SeafloorFile: its grid is a plane, the seabed " + number_text(seabed.planeDepth) +
+                                     " m deep under the origin (waterDepth, in place of WtrDpth's) sloping " +
+                                     number_text(seabed.slope) + " deg down towards the heading " +
+                                     number_text(seabed.heading) + " deg (seabedSlope, seabedSlopeHeading)"));
+    return true;
+}
+
 }  // namespace deck
 
 std::vector<std::string> line_file_companions(std::string_view text) {
@@ -404,6 +479,7 @@ std::vector<std::string> line_file_companions(std::string_view text) {
         if (options.waveKin.first == 7 || options.waveKin.first == 2) names.push_back(kWaveFrequenciesFile);
         if (options.waveKin.first == 3) names.push_back(kWaveElevationFile);
         if (options.currents.first == 1) names.push_back(kCurrentProfileFile);
+        if (!options.seabed.seafloorFile.empty()) names.push_back(options.seabed.seafloorFile);
     }
     if (const auto& types = sections[static_cast<size_t>(Kind::LineTypes)]) {
         for (const Row& row : types->rows) {

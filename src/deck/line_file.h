@@ -89,6 +89,12 @@ struct LineFileSeabed {
     double kBot = 3.0e6, cBot = 3.0e5;  // MoorDyn's defaults
     double friction = 0.0, fricDamp = 200.0, statDynFricScale = 1.0;
     int kBotRow = 0, cBotRow = 0, frictionRow = 0, fricDampRow = 0, statDynFricScaleRow = 0;
+    // SeafloorFile: its path as the deck gives it and, where its grid is a plane, that plane as the
+    // FMU's sloped seabed (docs/lines.md): the depth under the origin, seabedSlope, seabedSlopeHeading.
+    std::string seafloorFile;
+    int seafloorFileRow = 0;
+    bool plane = false;
+    double planeDepth = 0.0, slope = 0.0, heading = 0.0;  // [m], [deg], [deg]
 };
 
 // The line of a deck: what the parameters need, plus notes for the log.

@@ -274,7 +274,11 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
     const int keep = p.deckKeep;
     const LineFileSeabed& bed = line.seabed;
     const double d = line.sections.back().diameter;  // the section on the seabed at the anchor
-    if (!(keep & UC_DECK_KEEP_WATER_DEPTH)) p.waterDepth = line.waterDepth;
+    if (!(keep & UC_DECK_KEEP_WATER_DEPTH)) p.waterDepth = bed.plane ? bed.planeDepth : line.waterDepth;
+    if (bed.plane) {  // the SeafloorFile's plane (read_seafloor)
+        p.seabedSlope = bed.slope;
+        p.seabedSlopeHeading = bed.heading;
+    }
     if (!(keep & UC_DECK_KEEP_GRAVITY)) p.gravity = line.gravity;
     if (!(keep & UC_DECK_KEEP_WATER_DENSITY)) p.waterDensity = line.waterDensity;
     if (!(keep & UC_DECK_KEEP_ENABLE_SEABED)) p.enableSeabed = bed.kBot > 0.0 ? 1 : 0;

@@ -30,7 +30,8 @@ bool read_options(const Section& section, Options& options, std::vector<std::str
             const int v = f.integer(0, name_shown.c_str(), 0, 1000, "an option number");
             if (f.ok()) (name == "wavekin" ? options.waveKin : options.currents) = {v, row.number};
         } else if (name == "seafloorfile") {
-            return f.fail("SeafloorFile: a bathymetry file is not supported (the seabed is flat, at WtrDpth)");
+            options.seabed.seafloorFile = std::string(row.tokens[0]);  // read from the companions (read_seafloor)
+            options.seabed.seafloorFileRow = row.number;
         } else if (is_one_of(name, {"kbot", "kb"})) {
             options.seabed.kBot = f.number(0, name_shown.c_str(), 0.0, HUGE_VAL, "a seabed stiffness must not be negative");
             options.seabed.kBotRow = row.number;

@@ -45,6 +45,7 @@ bool parse_deck(std::string_view text, bool system, const LineFileCompanions& co
     Options options;
     if (section(Kind::Options) && !read_options(*section(Kind::Options), options, notes, error)) return false;
     if (!read_sea(options, companions, deck.sea, notes, error)) return false;
+    if (!read_seafloor(companions, options.seabed, notes, error)) return false;
 
     std::vector<LineType>& types = deck.types;
     for (const Row& row : section(Kind::LineTypes)->rows) {

@@ -36,6 +36,11 @@ bool read_options(const Section& section, Options& options, std::vector<std::str
 // they name, or the refusal naming the option and why.
 bool read_sea(const Options& options, const LineFileCompanions& companions, LineFileSea& sea,
               std::vector<std::string>& notes, std::string& error);
+// The SeafloorFile MoorDyn's option names (its grid: nx ny, the x values, the y values, then rows x y z):
+// a grid that is a plane becomes the sloped seabed (seabed.plane ...), any other is refused naming how far
+// it is from one. Nothing where the deck names no SeafloorFile.
+bool read_seafloor(const LineFileCompanions& companions, LineFileSeabed& seabed, std::vector<std::string>& notes,
+                   std::string& error);
 
 // ------------------------------------------------------------------------------------------- line types (deck/line_types.cpp)
 struct LineType {

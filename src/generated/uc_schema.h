@@ -111,8 +111,8 @@ typedef struct UCParams {
     double absTol; /* absTol: optional extra absolute tolerance of IDA's usual form (SI units of the unknowns), with `relTol`; 0: not used */
     double waterDensity; /* waterDensity [kg/m3]: sea water density */
     double gravity; /* gravity [m/s2]: gravitational acceleration (along -z) */
-    double waterDepth; /* waterDepth [m]: water depth (seabed at z = -waterDepth) */
-    int enableSeabed; /* enableSeabed: flat seabed at z = -`waterDepth`: penalty contact with damping and regularized Coulomb friction, smoothed over 5 % of the diameter */
+    double waterDepth; /* waterDepth [m]: water depth (seabed at z = -waterDepth; under the origin where `seabedSlope` tilts it) */
+    int enableSeabed; /* enableSeabed: seabed at z = -`waterDepth`, flat, or a plane through that depth under the origin tilted by `seabedSlope`: penalty contact along its normal with damping and regularized Coulomb friction along its surface, smoothed over 5 % of the diameter */
     double seabedStiffness; /* seabedStiffness [N/m2]: contact force per unit cable length per metre of penetration */
     double seabedDamping; /* seabedDamping [N.s/m2]: contact damping per unit cable length per m/s of penetration rate */
     double seabedFriction; /* seabedFriction: Coulomb friction coefficient, axial and lateral (regularized below 0.01 m/s sliding speed) */
@@ -180,6 +180,8 @@ typedef struct UCParams {
     int axialCurvePoints; /* axialCurvePoints: points of the tension–strain curve of a uniform line (`nSections` 1): 0, the constant `EA`; 2 to 30, `axialCurve.strain[k]` and `axialCurve.tension[k]` give the tension as a function of the axial strain, a monotone cubic through the points and linear with the end slope beyond them ([docs/model.md](docs/model.md)), and `EA` is not used */
     double axialCurveStrain[UC_AXIAL_CURVE_POINTS]; /* axialCurve.strain[k]: axial strain of point k (increasing with k; the point (0, 0) is put in front when the first strain is above 0) */
     double axialCurveTension[UC_AXIAL_CURVE_POINTS]; /* axialCurve.tension[k] [N]: tension at the strain of point k (increasing with k) */
+    double seabedSlope; /* seabedSlope [deg]: angle of the plane seabed below the horizontal (0: flat, the default): the seabed passes through z = -`waterDepth` under the origin (x = y = 0) and descends along the heading `seabedSlopeHeading`, so its depth under (x, y) is `waterDepth` + tan(`seabedSlope`) (x cos ψ + y sin ψ); contact acts along the seabed's normal and friction along its surface ([docs/model.md](docs/model.md), seabed) */
+    double seabedSlopeHeading; /* seabedSlopeHeading [deg]: direction ψ in which the sloped seabed (`seabedSlope`) descends most steeply, measured in the horizontal plane from +x towards +y: 0 (the default) deeper along +x, 90 deeper along +y */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
     int waveComponentCount; /* (not an FMU variable) waves.mode 3: the number of given wave components in waveComponents (from waves.file or a lineFile deck) */
@@ -598,6 +600,8 @@ typedef struct UCOutputs {
     X(333, "axialCurve.tension[28]", REAL, PARAMETER, axialCurveTension[27]) \
     X(334, "axialCurve.tension[29]", REAL, PARAMETER, axialCurveTension[28]) \
     X(335, "axialCurve.tension[30]", REAL, PARAMETER, axialCurveTension[29]) \
+    X(336, "seabedSlope", REAL, PARAMETER, seabedSlope) \
+    X(337, "seabedSlopeHeading", REAL, PARAMETER, seabedSlopeHeading) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -1757,6 +1761,8 @@ typedef struct UCOutputs {
     X(axialCurveTension[27], 0.0) \
     X(axialCurveTension[28], 0.0) \
     X(axialCurveTension[29], 0.0) \
+    X(seabedSlope, 0.0) \
+    X(seabedSlopeHeading, 0.0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -2094,6 +2100,8 @@ typedef struct UCOutputs {
     X(axialCurveTension[27], "axialCurve.tension[28]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
     X(axialCurveTension[28], "axialCurve.tension[29]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
     X(axialCurveTension[29], "axialCurve.tension[30]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(seabedSlope, "seabedSlope", 0.0, 45.0, 0, 0, "[0, 45]", "a seabed steeper than 45 degrees is a wall, not a seabed a line rests on") \
+    X(seabedSlopeHeading, "seabedSlopeHeading", -360.0, 360.0, 0, 0, "[-360, 360]", "a heading in degrees") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -38,10 +38,10 @@ private:
     ShapeValues values_[n];
 };
 
-// Lowest height z of an element's centreline: its cubic's value at the ends and where its slope
-// in the element coordinate xi vanishes inside.
-double lowest_height(const double* Xe, double l) {
-    const double z0 = Xe[2], m0 = l * Xe[5], z1 = Xe[8], m1 = l * Xe[11];
+// Lowest height n.r of an element's centreline along the unit vector n (e_z: its height z): its
+// cubic's value at the ends and where its slope in the element coordinate xi vanishes inside.
+double lowest_height(const double* Xe, double l, const Vec3& n) {
+    const double z0 = n.dot(at(Xe, 0)), m0 = l * n.dot(at(Xe, 3)), z1 = n.dot(at(Xe, 6)), m1 = l * n.dot(at(Xe, 9));
     const double b = m0, c = 3.0 * (z1 - z0) - 2.0 * m0 - m1, d = 2.0 * (z0 - z1) + m0 + m1;
     auto z = [&](double xi) { return z0 + xi * (b + xi * (c + xi * d)); };
     double lowest = std::min(z0, z1);
@@ -82,6 +82,10 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
     bool touched = false;
     double previousS = 0.0, previousGap = 0.0;
     SampleShapes<kSeabedSamples + 1> shapes;
+    // heights along the seabed's normal above the seabed as given (the plane through z = -waterDepth
+    // under the origin; e_z where it is flat)
+    const Vec3 n = model.seabed().normal;
+    const double base = p.waterDepth * n.z();
     for (int e = 0; e < model.n_elements(); ++e) {
         const SectionProps& section = model.element_section(e);
         const double l = model.element_length(e);
@@ -89,11 +93,11 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
         const double reach = resting_clearance(section);
         const double ds = l / kSeabedSamples;
         const double* Xe = X + model.element_offset(e);
-        out.minSeabedClearance = std::min(out.minSeabedClearance, lowest_height(Xe, l) + p.waterDepth);
+        out.minSeabedClearance = std::min(out.minSeabedClearance, lowest_height(Xe, l, n) + base);
         for (int k = e == 0 ? 0 : 1; k <= kSeabedSamples; ++k) {
             const double xi = static_cast<double>(k) / kSeabedSamples;
             const double s = model.runs().size() == 1 ? (e + xi) * l : s0 + xi * l;
-            const double clearance = interpolate(shapes.at(k, l).N, Xe).z() + p.waterDepth;
+            const double clearance = n.dot(interpolate(shapes.at(k, l).N, Xe)) + base;
             const double gap = clearance - reach;  // <= 0: resting on the seabed
             if (p.enableSeabed && s > 0.0) {
                 if (gap <= 0.0 && previousGap <= 0.0) {
@@ -119,7 +123,7 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
         for (int g = 0; g < points.count; ++g) {  // the residual holds minus the load
             const QuadPoint& q = points.points[g];
             out.seabedContactForce -=
-                q.weight * seabed_load(section.seabed, interpolate(q.shape.N, Xe), interpolate(q.shape.N, Xde), nullptr).z();
+                q.weight * n.dot(seabed_load(section.seabed, interpolate(q.shape.N, Xe), interpolate(q.shape.N, Xde), nullptr));
         }
     }
 }
@@ -138,10 +142,13 @@ void geometry_outputs(const CableModel& model, const double* X, const StationSha
         // Lying on the seabed at the anchor: the line one seabed sample before it (l/8) still
         // resting on the seabed, as seabed_outputs counts it.
         const int last = model.n_elements() - 1;
-        const double nearAnchor = interpolate(shapes.near_bottom().N, X + gN - 6).z();
-        const bool grounded = p.enableSeabed && nearAnchor + p.waterDepth <= resting_clearance(model.element_section(last));
+        // heights and the angle along the seabed's normal (e_z where it is flat)
+        const Vec3 n = model.seabed().normal;
+        const double nearAnchor = n.dot(interpolate(shapes.near_bottom().N, X + gN - 6));
+        const bool grounded =
+            p.enableSeabed && nearAnchor + p.waterDepth * n.z() <= resting_clearance(model.element_section(last));
         const Vec3 up = -at(X, gN + 3).normalized();  // from the anchor up the cable
-        out.anchorUplift = grounded ? 0.0 : std::asin(std::clamp(up.z(), -1.0, 1.0));
+        out.anchorUplift = grounded ? 0.0 : std::asin(std::clamp(n.dot(up), -1.0, 1.0));
     }
 }
 

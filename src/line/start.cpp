@@ -54,9 +54,13 @@ bool CableSimulation::static_profile(const Vec3& towPoint, const Vec3& anchor, L
         points.push_back({towOnTop ? at.s : L - at.s, weight, at.body.mass * model_.fluid().gravity});
     }
     if (!towOnTop) std::reverse(segments.begin(), segments.end());
-    // the line weighs its dry weight above the water surface at z = 0, as the elements do
-    return profile.solve(towOnTop ? towPoint : anchor, towOnTop ? anchor : towPoint, segments, points,
-                         p.enableSeabed != 0, -p.waterDepth, std::max(model_.line().diameter, 1e-3 * L), why, 0.0);
+    // the line weighs its dry weight above the water surface at z = 0, as the elements do; the
+    // seabed's height under the lower end and its slope
+    const Vec3& lower = towOnTop ? anchor : towPoint;
+    profile.set_seabed_gradient(model_.seabed_gradient());
+    return profile.solve(towOnTop ? towPoint : anchor, lower, segments, points, p.enableSeabed != 0,
+                         model_.seabed_height(lower.x(), lower.y()), std::max(model_.line().diameter, 1e-3 * L), why,
+                         0.0);
 }
 
 // An anchored line starts from its static profile, into X; false where that does not apply. From
@@ -97,7 +101,7 @@ void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, boo
     if (ps.solved) {
         // the anchor is the lower end, held where the line rests (CableModel): graded for that point
         layout.anchorResting = ps.towOnTop && ps.profile.rests_at_bottom() && model_.far_end().anchored;
-        const Vec3 resting(farPoint.x(), farPoint.y(), model_.resting_height());
+        const Vec3 resting(farPoint.x(), farPoint.y(), model_.resting_height(farPoint.x(), farPoint.y()));
         if (layout.anchorResting && std::abs(farPoint.z() - resting.z()) <= 0.5 * model_.line().diameter) solve_for(resting);
         const int mode = model_.params().meshGrading;
         if (ps.solved && mode != 0 && (ps.profile.grounded_length() > 0.0 || !model_.attachments().empty()))
@@ -172,7 +176,12 @@ bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
         if (trail.norm() < 1e-9) trail = Vec3(-1.0, 0.0, 0.0);
         trail.normalize();
         if (steady) model_.straight_line(towPoint, d, X.data());
-        const double reach = d.z() < 0.0 ? (towPoint.z() + p.waterDepth) / -d.z() : INFINITY;
+        // where the line along d meets the seabed (its height along the normal n falls at n.d per
+        // metre); it trails along the seabed from there, the trail turned into its plane
+        const Vec3 n = model_.seabed().normal;
+        const double clearance = n.dot(towPoint) + p.waterDepth * n.z();
+        const double reach = n.dot(d) < 0.0 ? clearance / -n.dot(d) : INFINITY;
+        if (model_.seabed().sloped) trail = (trail - trail.dot(n) * n).normalized();
         for (int i = 0; i < model_.n_slots(); ++i) {
             const double s = model_.slot_arc_length(i);
             if (s <= reach) continue;
@@ -182,7 +191,8 @@ bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
     }
     if (p.enableSeabed) {
         // Start on or above the seabed: the guessed line lies on it where it would pass below.
-        for (int i = 0; i < model_.n_slots(); ++i) X[6 * i + 2] = std::max(X[6 * i + 2], -p.waterDepth);
+        for (int i = 0; i < model_.n_slots(); ++i)
+            X[6 * i + 2] = std::max(X[6 * i + 2], model_.seabed_height(X[6 * i], X[6 * i + 1]));
     }
     model_.restrict_to_free(X.data(), q.data());
     return profile;
@@ -229,18 +239,27 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
     }
     if (!p.enableSeabed) return true;
     const double tolerance = 0.5 * model_.line().diameter;  // a point resting on the seabed sinks in slightly
-    if (state_.tow.p().z() < -p.waterDepth - tolerance) {
-        std::snprintf(buffer, sizeof buffer,
-                      "tow.z = %.6g m is below the seabed at z = -waterDepth = %.6g m: the tow point must be in the water",
-                      state_.tow.p().z(), -p.waterDepth);
+    // where the seabed is: "z = -waterDepth = ..." or, sloped, its height under the point
+    auto seabed_at = [&](const Vec3& r) {
+        char where[160];
+        if (model_.seabed().sloped)
+            std::snprintf(where, sizeof where, "at z = %.6g m under (%.6g, %.6g) (waterDepth %.6g m, seabedSlope %.6g deg)",
+                          model_.seabed_height(r.x(), r.y()), r.x(), r.y(), p.waterDepth, p.seabedSlope);
+        else
+            std::snprintf(where, sizeof where, "at z = -waterDepth = %.6g m", -p.waterDepth);
+        return std::string(where);
+    };
+    const Vec3 tow = state_.tow.p();
+    if (tow.z() < model_.seabed_height(tow.x(), tow.y()) - tolerance) {
+        std::snprintf(buffer, sizeof buffer, "tow.z = %.6g m is below the seabed %s: the tow point must be in the water",
+                      tow.z(), seabed_at(tow).c_str());
         error = buffer;
         return false;
     }
-    if (model_.far_end().held && farPoint.z() < -p.waterDepth - tolerance) {
+    if (model_.far_end().held && farPoint.z() < model_.seabed_height(farPoint.x(), farPoint.y()) - tolerance) {
         std::snprintf(buffer, sizeof buffer,
-                      "%s: z = %.6g m is below the seabed at z = -waterDepth = %.6g m: an anchor lies on the seabed, "
-                      "not under it",
-                      farName, farPoint.z(), -p.waterDepth);
+                      "%s: z = %.6g m is below the seabed %s: an anchor lies on the seabed, not under it", farName,
+                      farPoint.z(), seabed_at(farPoint).c_str());
         error = buffer;
         return false;
     }

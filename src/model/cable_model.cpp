@@ -110,12 +110,12 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const Sta
     anchor_ = Vec3(params.anchor[0], params.anchor[1], params.anchor[2]);
     const SectionProps& last = sections_.back();
     if (laid && layout->anchorResting && farEnd_.anchored && last.seabed.enabled &&
-        std::abs(anchor_.z() + last.seabed.depth) <= 0.5 * last.fluid.diameter) {
+        std::abs(anchor_.z() - uc::seabed_height(last.seabed, anchor_.x(), anchor_.y())) <= 0.5 * last.fluid.diameter) {
         // An anchor on the seabed with the line resting next to it sits at the height the line rests
         // at (within a few millimetres of z = -waterDepth): held lower or higher, the last element
         // would press into the seabed or hang above it, and its contact would load the anchor
         // vertically. A line that lifts off at the anchor keeps it where it is given.
-        anchor_.z() = resting_height();
+        anchor_.z() = resting_height(anchor_.x(), anchor_.y());
         anchorResting_ = true;
     }
     body_ = PointBody{params.bodyMass, params.bodyVolume, params.bodyAddedMass, params.bodyCdA,
@@ -177,10 +177,23 @@ int CableModel::section_at(double s) const {
     return k;
 }
 
-double CableModel::resting_height() const {
+double CableModel::resting_height(double x, double y) const {
     const SectionProps& last = sections_.back();
     const double weight = submerged_weight(last.fluid);
-    return -last.seabed.depth - (weight > 0.0 ? resting_penetration(last.seabed, weight) : 0.0);
+    // the penetration is along the normal: its height is that over n_z
+    return uc::seabed_height(last.seabed, x, y) -
+           (weight > 0.0 ? resting_penetration(last.seabed, weight) / last.seabed.normal.z() : 0.0);
+}
+
+double CableModel::seabed_height(double x, double y) const {
+    SeabedProps given = sections_[0].seabed;
+    given.depth = params_.waterDepth;
+    return uc::seabed_height(given, x, y);
+}
+
+Eigen::Vector2d CableModel::seabed_gradient() const {
+    const Vec3& n = sections_[0].seabed.normal;
+    return Eigen::Vector2d(-n.x() / n.z(), -n.y() / n.z());
 }
 
 void CableModel::build_sections(const UCParams& p) {
@@ -233,6 +246,7 @@ void CableModel::build_sections(const UCParams& p) {
         s.seabed.damping = p.seabedDamping;
         s.seabed.friction = p.seabedFriction;
         s.seabed.smoothing = 0.05 * in.diameter;
+        set_slope(s.seabed, p.seabedSlope, p.seabedSlopeHeading);
         if (p.seabedRest == 1) rest_at_depth(s.seabed, submerged_weight(s.fluid));
         sections_.push_back(s);
         s0 += in.length;

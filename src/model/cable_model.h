@@ -274,9 +274,13 @@ public:
     // The anchor's position: anchor.x/y/z, or on the seabed the height the line rests at there.
     const Vec3& anchor() const { return anchor_; }
     bool anchor_resting() const { return anchorResting_; }  // held at the line's resting height
-    // The height at which the last section rests on the seabed (z = -waterDepth less its resting
-    // penetration under its own submerged weight).
-    double resting_height() const;
+    // The height at which the last section rests on the seabed above (x, y) (the seabed's height there,
+    // z = -waterDepth where it is flat, less its resting penetration under its own submerged weight).
+    double resting_height(double x, double y) const;
+    // The seabed as given (parameters, not raised by a rest penetration): its height above (x, y),
+    // -waterDepth where it is flat, and the horizontal gradient of that height (zero where flat).
+    double seabed_height(double x, double y) const;
+    Eigen::Vector2d seabed_gradient() const;
     // Torque of torqueMode 2 for a twist angle of the far end against the tow point: the line's
     // torsional compliance is the sum of L_k / GJ_k over its sections.
     double torque_for_twist(double twist) const;

@@ -10,6 +10,15 @@
 // tension it would have if it hung, v + W(u), points down: the touchdown is where that first
 // reaches 0, inside a piece or at a point load (a clump on which the line lifts off).
 // H and v are found by Newton's method on the two end conditions.
+//
+// A sloped seabed rises towards the top by tan(beta) per metre across. The line rests from the lower
+// end while its tangent would point into the slope, V(u) < H tan(beta), straight along the slope; on
+// that frictionless slope its tension is the projection of (H, V(u)) on the slope's direction,
+// H cos(beta) + V(u) sin(beta) (at the touchdown H / cos(beta), lower by w sin(beta) per metre
+// towards the lower end), and it leaves the slope tangentially, with V = H tan(beta). A resting
+// stretch further up (a second touchdown) carries its weight's normal part; its tangential part
+// raises the tension along it, so H grows across it by w l sin(beta) cos(beta) (constant in each
+// hanging part). With beta = 0 this is the flat seabed's walk, number for number.
 #include "model/line_profile.h"
 
 #include <algorithm>
@@ -25,10 +34,21 @@ double asinh_difference(double a, double b) {
 
 }  // namespace
 
-void LineProfile::piece_offset(const Piece& p, double H, double l, double& dx, double& dz) {
+double LineProfile::grounded_tension(const Piece& p, double l) const {
+    return p.H * cosSlope_ + (p.V0 + p.weight * l) * sinSlope_;
+}
+
+void LineProfile::piece_offset(const Piece& p, double l, double& dx, double& dz) const {
+    const double H = p.H;
     if (p.grounded) {
-        dx = l * (1.0 + H / p.EA);
-        dz = 0.0;
+        if (sinSlope_ == 0.0) {
+            dx = l * (1.0 + H / p.EA);
+            dz = 0.0;
+            return;
+        }
+        const double stretched = l + l * grounded_tension(p, 0.5 * l) / p.EA;  // the tension is linear in l
+        dx = stretched * cosSlope_;
+        dz = stretched * sinSlope_;
         return;
     }
     const double Va = p.V0, Vb = p.V0 + p.weight * l;
@@ -41,7 +61,7 @@ void LineProfile::piece_offset(const Piece& p, double H, double l, double& dx, d
     dx += H * l / p.EA;
 }
 
-double LineProfile::surface_crossing(const Piece& p, double H, double l, bool inAir) const {
+double LineProfile::surface_crossing(const Piece& p, double l, bool inAir) const {
     if (!std::isfinite(surfaceHeight_) || p.grounded) return l;
     // z is monotone on either side of the vertex (V = 0) inside the piece
     double ends[3] = {0.0, l, l};
@@ -53,7 +73,7 @@ double LineProfile::surface_crossing(const Piece& p, double H, double l, bool in
     }
     auto below = [&](double u) {  // height below the surface (positive: in water)
         double dx, dz;
-        piece_offset(p, H, u, dx, dz);
+        piece_offset(p, u, dx, dz);
         return surfaceHeight_ - (p.z0 + dz);
     };
     for (int k = 0; k + 1 < n; ++k) {
@@ -81,14 +101,15 @@ void LineProfile::walk(double H, double v, const std::vector<double>& rests, std
     const double snap = 1e-12 * length_;
     double u = 0.0;
     double hanging = v;  // the vertical tension: v + W(u) from the lower end while it rests there
-    bool grounded = seabed_ && v < 0.0;
+    double Hc = H;       // the horizontal tension of the hanging part (it grows across a rest on a slope)
+    bool grounded = seabed_ && v < H * slope_;
     bool inAir = surfaceHeight_ < 0.0;  // the lower end above the water
     size_t ip = 0;
     int found = 0;         // local minima of the hanging line passed so far
     double restLeft = 0.0;  // of the resting stretch at the last minimum, across sections
     auto push = [&](const Piece& p, double l) {
         double dx, dz;
-        piece_offset(p, H, l, dx, dz);
+        piece_offset(p, l, dx, dz);
         pieces.push_back(p);
         pieces.back().length = l;
         x += dx;
@@ -112,15 +133,20 @@ void LineProfile::walk(double H, double v, const std::vector<double>& rests, std
             if (restLeft > 0.0 && P < 0.0) restLeft = 0.0;  // a buoy ends a resting stretch
             if (restLeft > 0.0) continue;                   // a clump on it rests
             hanging += P;
-            if (!grounded && before < 0.0 && hanging >= 0.0) {
+            if (!grounded && before < Hc * slope_ && hanging >= Hc * slope_) {
                 // the line comes down to this point and rises from it: a local minimum; where it
-                // rests on the seabed, the seabed's reaction rests[found] (>= 0) takes part of its weight
-                if (minima) minima->push_back(z);
-                if (found < static_cast<int>(rests.size())) hanging -= std::max(rests[found], 0.0);
+                // rests on the seabed, the seabed's reaction rests[found] (>= 0, along the slope's
+                // normal) takes part of its weight
+                if (minima) minima->push_back(z - slope_ * x);
+                if (found < static_cast<int>(rests.size())) {
+                    const double R = std::max(rests[found], 0.0);
+                    hanging -= R * cosSlope_;
+                    Hc += R * sinSlope_;
+                }
                 ++found;
             }
         }
-        if (grounded && hanging >= 0.0) grounded = false;
+        if (grounded && hanging >= H * slope_) grounded = false;
     };
     for (const Segment& seg : segments_) {
         const double end = u + seg.length;
@@ -131,26 +157,31 @@ void LineProfile::walk(double H, double v, const std::vector<double>& rests, std
             double l = next - u;
             if (restLeft > 0.0) {
                 l = std::min(l, restLeft);
-                push(Piece{u, l, seg.weight, seg.EA, 0.0, x, z, true}, l);
+                push(Piece{u, l, seg.weight, seg.EA, hanging, x, z, true, Hc}, l);
                 u += l;
                 restLeft -= l;
                 if (restLeft <= snap) restLeft = 0.0;
+                // the weight's part along the slope raises the tension (flat: nothing changes)
+                Hc += seg.weight * l * sinSlope_ * cosSlope_;
+                hanging = Hc * slope_;
                 continue;
             }
             if (grounded) {
-                const bool lifts = seg.weight > 0.0 && hanging + seg.weight * l > 0.0;
-                if (lifts) l = -hanging / seg.weight;  // the touchdown inside this piece
-                push(Piece{u, l, seg.weight, seg.EA, 0.0, x, z, true}, l);
+                const double liftoff = H * slope_;  // V where the tangent leaves the slope
+                const bool lifts = seg.weight > 0.0 && hanging + seg.weight * l > liftoff;
+                if (lifts) l = (liftoff - hanging) / seg.weight;  // the touchdown inside this piece
+                push(Piece{u, l, seg.weight, seg.EA, hanging, x, z, true, H}, l);
                 u += l;
-                hanging = lifts ? 0.0 : hanging + seg.weight * l;
+                hanging = lifts ? liftoff : hanging + seg.weight * l;
                 if (lifts) grounded = false;
                 continue;
             }
             const double w = inAir && std::isfinite(seg.dryWeight) ? seg.dryWeight : seg.weight;
-            const bool vertex = hanging < 0.0 && w > 0.0 && hanging + w * l > 0.0;
-            const double lv = vertex ? -hanging / w : l;
-            const Piece piece{u, lv, w, seg.EA, hanging, x, z, false};
-            const double lc = surface_crossing(piece, H, lv, inAir);
+            const double tangent = Hc * slope_;  // V where the line runs parallel to the seabed
+            const bool vertex = hanging < tangent && w > 0.0 && hanging + w * l > tangent;
+            const double lv = vertex ? (tangent - hanging) / w : l;
+            const Piece piece{u, lv, w, seg.EA, hanging, x, z, false, Hc};
+            const double lc = surface_crossing(piece, lv, inAir);
             if (lc < lv) {
                 // the line crosses the water surface here: its weight per length changes
                 push(piece, lc);
@@ -160,12 +191,13 @@ void LineProfile::walk(double H, double v, const std::vector<double>& rests, std
                 continue;
             }
             if (vertex) {
-                // a local minimum inside this piece (the vertex, V = 0); where it rests on the
-                // seabed, it lies there for rests[found] (>= 0) of its length
+                // a local minimum inside this piece (above the seabed: where the tangent is parallel
+                // to it; the vertex, V = 0, on a flat one); where it rests on the seabed, it lies
+                // there for rests[found] (>= 0) of its length
                 push(piece, lv);
                 u += lv;
-                hanging = 0.0;
-                if (minima) minima->push_back(z);
+                hanging = tangent;
+                if (minima) minima->push_back(z - slope_ * x);
                 restLeft = found < static_cast<int>(rests.size()) ? std::max(rests[found], 0.0) : 0.0;
                 ++found;
                 continue;
@@ -206,11 +238,14 @@ bool LineProfile::solve(const Eigen::Vector3d& top, const Eigen::Vector3d& botto
     std::sort(points_.begin(), points_.end(), [](const PointLoad& a, const PointLoad& b) { return a.s < b.s; });
     bottom_ = bottom;
     u_ = Eigen::Vector3d(d.x() / X, d.y() / X, 0.0);
+    slope_ = seabed ? gradient_.x() * u_.x() + gradient_.y() * u_.y() : 0.0;
+    cosSlope_ = 1.0 / std::sqrt(1.0 + slope_ * slope_);
+    sinSlope_ = slope_ * cosSlope_;
     seabed_ = seabed && bottom.z() - seabedZ <= onSeabed;
     seabedOn_ = seabed;
     seabedHeight_ = seabedZ - bottom.z();
     surfaceHeight_ = surfaceZ - bottom.z();
-    if (seabed_ && Z > 0.0 && length_ >= X + Z && weight > 0.0) {
+    if (seabed_ && slope_ == 0.0 && Z > 0.0 && length_ >= X + Z && weight > 0.0) {
         // Even inextensible it reaches down and across with length to spare: resting on a
         // frictionless seabed it has no tension and no one shape.
         return fail("longer than the way down and across");
@@ -354,7 +389,8 @@ std::vector<double> LineProfile::contacts() const {
         // a point load resting at a local minimum: V jumps from below 0 to the piece's start
         if (k > 0 && !p.grounded && !before) {
             const Piece& q = pieces_[k - 1];
-            if (q.V0 + q.weight * q.length < 0.0 && p.V0 >= 0.0 && std::abs(p.z0 - seabedHeight_) < 1e-6 * length_)
+            if (q.V0 + q.weight * q.length < q.H * slope_ && p.V0 >= p.H * slope_ &&
+                std::abs(p.z0 - slope_ * p.x0 - seabedHeight_) < 1e-6 * length_)
                 s.push_back(length_ - p.u0);
         }
     }
@@ -374,13 +410,14 @@ void LineProfile::settle(double H, double v, const std::vector<double>& rests, b
             continue;
         }
         if (!exact) continue;
+        // heights above the seabed's line through the lower end's seabed: z - x tan(beta)
         double dx, dz;
-        piece_offset(p, H, p.length, dx, dz);
-        double zmin = std::min(p.z0, p.z0 + dz);
-        const double vertex = p.weight != 0.0 ? -p.V0 / p.weight : -1.0;
+        piece_offset(p, p.length, dx, dz);
+        double zmin = std::min(p.z0 - slope_ * p.x0, p.z0 + dz - slope_ * (p.x0 + dx));
+        const double vertex = p.weight != 0.0 ? (p.H * slope_ - p.V0) / p.weight : -1.0;
         if (vertex > 0.0 && vertex < p.length) {
-            piece_offset(p, H, vertex, dx, dz);
-            zmin = std::min(zmin, p.z0 + dz);
+            piece_offset(p, vertex, dx, dz);
+            zmin = std::min(zmin, p.z0 + dz - slope_ * (p.x0 + dx));
         }
         clearance_ = std::min(clearance_, zmin - seabedHeight_);
     }
@@ -397,28 +434,32 @@ void LineProfile::at(double s, Eigen::Vector3d& r, Eigen::Vector3d& tangent) con
     const Piece& p = piece_at(u);
     const double l = std::clamp(u - p.u0, 0.0, p.length);
     double dx, dz;
-    piece_offset(p, H_, l, dx, dz);
+    piece_offset(p, l, dx, dz);
     r = bottom_ + (p.x0 + dx) * u_ + Eigen::Vector3d(0.0, 0.0, p.z0 + dz);
-    const double V = p.grounded ? 0.0 : p.V0 + p.weight * l;
-    tangent = -(H_ * u_ + Eigen::Vector3d(0.0, 0.0, V)).normalized();
+    if (p.grounded) {
+        tangent = -(cosSlope_ * u_ + Eigen::Vector3d(0.0, 0.0, sinSlope_));
+        return;
+    }
+    tangent = -(p.H * u_ + Eigen::Vector3d(0.0, 0.0, p.V0 + p.weight * l)).normalized();
 }
 
 double LineProfile::tension(double s) const {
     const double u = std::clamp(length_ - s, 0.0, length_);
     const Piece& p = piece_at(u);
     const double l = std::clamp(u - p.u0, 0.0, p.length);
-    return std::hypot(H_, p.grounded ? 0.0 : p.V0 + p.weight * l);
+    return p.grounded ? grounded_tension(p, l) : std::hypot(p.H, p.V0 + p.weight * l);
 }
 
 Eigen::Vector3d LineProfile::top_force() const {
     const Piece& p = pieces_.back();
-    const double V = p.grounded ? 0.0 : p.V0 + p.weight * p.length;
-    return -(H_ * u_ + Eigen::Vector3d(0.0, 0.0, V));
+    if (p.grounded) return -grounded_tension(p, p.length) * (cosSlope_ * u_ + Eigen::Vector3d(0.0, 0.0, sinSlope_));
+    return -(p.H * u_ + Eigen::Vector3d(0.0, 0.0, p.V0 + p.weight * p.length));
 }
 
 Eigen::Vector3d LineProfile::bottom_force() const {
     const Piece& p = pieces_.front();
-    return H_ * u_ + Eigen::Vector3d(0.0, 0.0, p.grounded ? 0.0 : p.V0);
+    if (p.grounded) return grounded_tension(p, 0.0) * (cosSlope_ * u_ + Eigen::Vector3d(0.0, 0.0, sinSlope_));
+    return p.H * u_ + Eigen::Vector3d(0.0, 0.0, p.V0);
 }
 
 double LineProfile::turning(double s) const {
@@ -432,9 +473,9 @@ double LineProfile::turning(double s) const {
             if (u >= p->u0) break;
             continue;
         }
-        const double top = std::atan2(p->V0 + p->weight * p->length, H_);
+        const double top = std::atan2(p->V0 + p->weight * p->length, p->H);
         const double l = std::clamp(u - p->u0, 0.0, p->length);
-        total += std::abs(top - std::atan2(p->V0 + p->weight * l, H_));
+        total += std::abs(top - std::atan2(p->V0 + p->weight * l, p->H));
         if (u >= p->u0) break;
     }
     return total;

@@ -37,6 +37,12 @@ public:
     bool solve(const Eigen::Vector3d& top, const Eigen::Vector3d& bottom, const std::vector<Segment>& segments,
                const std::vector<PointLoad>& points, bool seabed, double seabedZ, double onSeabed,
                std::string* why = nullptr, double surfaceZ = INFINITY);
+    // A sloped plane seabed for the next solve: the horizontal gradient (dz/dx, dz/dy) of its height,
+    // seabedZ then being its height under the lower end. In the vertical plane of the ends it rises
+    // towards the top end by tan(beta) = gradient . u per metre across; a frictionless slope: the
+    // resting line's tension changes by w sin(beta) per length along it, and it leaves the seabed
+    // where its tangent leaves the slope (V = H tan(beta)).
+    void set_seabed_gradient(const Eigen::Vector2d& gradient) { gradient_ = gradient; }
 
     // Position and unit tangent (pointing from the top end towards the lower end) at unstretched
     // arc length s from the top end.
@@ -68,16 +74,20 @@ private:
         double V0;          // vertical tension at its lower end (after a point load there)
         double x0, z0;      // position of its lower end in the plane (x from the lower end to the top)
         bool grounded;
+        // horizontal tension of a hanging piece [N]; on a grounded one the tension along the slope
+        // is H cos(beta) + V sin(beta), V growing by the weight from V0 (H: the hanging part's above)
+        double H;
     };
     // The pieces for H, v and the rests of the contacts after the lower end's (the j-th local
     // minimum of the hanging line: inside a piece its resting length, at a point load the seabed's
     // reaction there); the heights of those minima into `minima`.
     void walk(double H, double v, const std::vector<double>& rests, std::vector<Piece>& pieces, double& x, double& z,
               std::vector<double>* minima) const;
-    static void piece_offset(const Piece& p, double H, double l, double& dx, double& dz);
+    void piece_offset(const Piece& p, double l, double& dx, double& dz) const;
+    double grounded_tension(const Piece& p, double l) const;  // along the slope at l into piece p
     // Length along piece p (of length l) to where it first crosses the surface, from the side
     // `inAir` says it starts on; l where it does not.
-    double surface_crossing(const Piece& p, double H, double l, bool inAir) const;
+    double surface_crossing(const Piece& p, double l, bool inAir) const;
     const Piece& piece_at(double u) const;
     // The solution's pieces, grounded length and clearance (-infinity where it is not exact).
     void settle(double H, double v, const std::vector<double>& rests, bool exact);
@@ -90,6 +100,8 @@ private:
     double surfaceHeight_ = INFINITY;  // of the water surface above the lower end [m]
     bool seabed_ = false;    // the lower end rests on the seabed
     bool seabedOn_ = false;  // there is a seabed
+    Eigen::Vector2d gradient_ = Eigen::Vector2d::Zero();  // of the seabed's height (set_seabed_gradient)
+    double slope_ = 0.0, cosSlope_ = 1.0, sinSlope_ = 0.0;  // tan, cos, sin of beta in the plane
 };
 
 }  // namespace uc

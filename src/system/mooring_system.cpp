@@ -713,8 +713,11 @@ bool MooringSystem::profile_end_forces(int k, const Vec3& top, const Vec3& far, 
         for (LineProfile::PointLoad& q : points) q.s = L - q.s;
     }
     LineProfile profile;
-    if (!profile.solve(topHigher ? top : far, topHigher ? far : top, segments, points, p.enableSeabed != 0,
-                       -p.waterDepth, std::max(lines_[k]->model().line().diameter, 1e-3 * L), why, 0.0))
+    const Vec3& lower = topHigher ? far : top;
+    profile.set_seabed_gradient(lines_[k]->model().seabed_gradient());
+    if (!profile.solve(topHigher ? top : far, lower, segments, points, p.enableSeabed != 0,
+                       lines_[k]->model().seabed_height(lower.x(), lower.y()),
+                       std::max(lines_[k]->model().line().diameter, 1e-3 * L), why, 0.0))
         return false;
     onTop = topHigher ? profile.top_force() : profile.bottom_force();
     onFar = topHigher ? profile.bottom_force() : profile.top_force();

@@ -1,4 +1,4 @@
-// seabed.cpp - penalty contact, damping and regularized friction on a flat seabed.
+// seabed.cpp - penalty contact, damping and regularized friction on a plane seabed, flat or sloped.
 #include "terms/seabed.h"
 
 #include <algorithm>
@@ -50,30 +50,79 @@ Vec3 point_contact_load(const PointContact& c, const Vec3& r, const Vec3& rd, Se
     return F;
 }
 
+void set_slope(SeabedProps& p, double slopeDeg, double headingDeg) {
+    p.sloped = slopeDeg != 0.0;
+    const double a = slopeDeg * kPi / 180.0, psi = headingDeg * kPi / 180.0;
+    // descending along (cos psi, sin psi): the normal leans that way
+    p.normal = p.sloped ? Vec3(std::sin(a) * std::cos(psi), std::sin(a) * std::sin(psi), std::cos(a)) : Vec3::UnitZ();
+}
+
 double resting_penetration(const SeabedProps& p, double weight) {
-    // k g(p) = w on the branches of contact_ramp
-    const double ramp = weight / p.stiffness;
+    // k g(p) = w n_z (the weight's part along the normal) on the branches of contact_ramp
+    const double ramp = weight * p.normal.z() / p.stiffness;
     if (ramp >= 0.5 * p.smoothing) return ramp + 0.5 * p.smoothing;
     return std::sqrt(2.0 * p.smoothing * ramp);
 }
 
 void rest_at_depth(SeabedProps& p, double weight) {
-    if (p.enabled && p.stiffness > 0.0 && weight > 0.0) p.depth -= resting_penetration(p, weight);
+    // raised by the penetration along the normal: the plane's depth under the origin by that over n_z
+    if (p.enabled && p.stiffness > 0.0 && weight > 0.0) p.depth -= resting_penetration(p, weight) / p.normal.z();
 }
 
 // The cubic Hermite curve is the Bezier curve with control points r0, r0 + l t0 / 3, r1 - l t1 / 3,
 // r1, and lies in their convex hull: it is nowhere lower than the lowest of their heights.
+// On a sloped plane the same holds for the height along its normal, n.r, a linear function.
 bool above_contact(const ElementTables& e, const SeabedProps& p, const double* X) {
     const double third = e.length / 3.0;
+    if (p.sloped) {
+        const Vec3 n = p.normal;
+        const double a = n.dot(Eigen::Map<const Vec3>(X)), ta = n.dot(Eigen::Map<const Vec3>(X + 3));
+        const double b = n.dot(Eigen::Map<const Vec3>(X + 6)), tb = n.dot(Eigen::Map<const Vec3>(X + 9));
+        const double lowest = std::min(std::min(a, a + third * ta), std::min(b - third * tb, b));
+        return lowest > -p.depth * n.z() + kHullMargin;
+    }
     const double lowest = std::min(std::min(X[2], X[2] + third * X[5]), std::min(X[8] - third * X[11], X[8]));
     return lowest > -p.depth + kHullMargin;
 }
+
+namespace {
+
+// The contact on a sloped plane: the flat seabed's law along its normal n, friction along its surface.
+Vec3 sloped_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJacobian* J) {
+    const Vec3& n = p.normal;
+    const double penetration = -p.depth * n.z() - n.dot(r);
+    double fraction = 0.0;
+    const double ramp = contact_ramp(penetration, p.smoothing, &fraction);
+    if (fraction == 0.0) return Vec3::Zero();
+    const double fractionSlope = penetration > 0.0 && penetration < p.smoothing ? 1.0 / p.smoothing : 0.0;
+    const double spring = p.stiffness * ramp;
+    const double vn = n.dot(rd);
+    const double normal = spring - p.damping * fraction * vn;
+    const Vec3 vt = rd - vn * n;
+    const double speed = std::sqrt(vt.squaredNorm() + kFrictionVelocity * kFrictionVelocity);
+    // f = normal n - mu spring vt / speed; residual F = -f.
+    Vec3 F = -normal * n + (p.friction * spring / speed) * vt;
+    if (J) {
+        // dp/dr = -n^T
+        const double dNormal_dp = p.stiffness * fraction - p.damping * fractionSlope * vn;
+        J->dr = (dNormal_dp * n) * n.transpose() - (p.friction * p.stiffness * fraction / speed) * vt * n.transpose();
+        J->drd = (p.damping * fraction) * n * n.transpose();
+        if (p.friction != 0.0) {
+            const Mat3 tangential = Mat3::Identity() - n * n.transpose();
+            J->drd += (p.friction * spring / speed) * (tangential - vt * (vt.transpose() * tangential) / (speed * speed));
+        }
+    }
+    return F;
+}
+
+}  // namespace
 
 Vec3 seabed_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJacobian* J) {
     if (J) {
         J->dr.setZero();
         J->drd.setZero();
     }
+    if (p.sloped) return sloped_load(p, r, rd, J);
     const double penetration = -p.depth - r.z();
     double fraction = 0.0;
     const double ramp = contact_ramp(penetration, p.smoothing, &fraction);

@@ -1,11 +1,15 @@
-// seabed.h - flat seabed at z = -waterDepth: penalty contact per unit length with damping and
-// regularized Coulomb friction (docs/model.md). Residual sign: F = -f_seabed.
+// seabed.h - a plane seabed through z = -waterDepth under the origin, flat or sloped: penalty contact
+// per unit length with damping and regularized Coulomb friction (docs/model.md). Residual sign:
+// F = -f_seabed.
 //
-// Penetration p = -waterDepth - z. The normal force per length is k g(p) with g a C1 ramp that
-// starts at the seabed: 0 above it, p^2 / (2 delta) over the first delta = 5 % of the diameter of
-// penetration, p - delta / 2 beyond, so that Newton and BDF see a smooth contact; the damping c (-z_dot) acts with the same contact fraction g'(p) in
-// [0, 1]. Friction opposes the horizontal velocity v_h with magnitude mu k g(p) |v_h| /
-// sqrt(|v_h|^2 + v_eps^2): regularized Coulomb, the same coefficient axially and laterally.
+// With the seabed's upward unit normal n (e_z where it is flat), the penetration is
+// p = -n.(r - (0, 0, -waterDepth)) (-waterDepth - z on a flat seabed). The normal force per length is
+// k g(p) n with g a C1 ramp that starts at the seabed: 0 above it, p^2 / (2 delta) over the first
+// delta = 5 % of the diameter of penetration, p - delta / 2 beyond, so that Newton and BDF see a
+// smooth contact; the damping c (-n.r_dot) acts with the same contact fraction g'(p) in [0, 1].
+// Friction opposes the velocity along the surface v_t = r_dot - (n.r_dot) n with magnitude
+// mu k g(p) |v_t| / sqrt(|v_t|^2 + v_eps^2): regularized Coulomb, the same coefficient axially and
+// laterally.
 #pragma once
 
 #include "terms/hermite_element.h"
@@ -19,7 +23,21 @@ struct SeabedProps {
     double damping = 0.0;    // [N.s/m2]
     double friction = 0.0;   // Coulomb coefficient
     double smoothing = 0.0;  // delta [m]
+    // A sloped plane (seabedSlope > 0): its upward unit normal, tilted towards the heading in which it
+    // descends. Flat: e_z, and the contact takes the flat seabed's shorter path.
+    bool sloped = false;
+    Vec3 normal = Vec3::UnitZ();
 };
+
+// The plane of seabedSlope [deg] descending along seabedSlopeHeading [deg] (from +x towards +y):
+// sets `sloped` and `normal` (flat at a zero slope).
+void set_slope(SeabedProps& p, double slopeDeg, double headingDeg);
+
+// Height [m] of the contact surface above (x, y): -depth on a flat seabed.
+inline double seabed_height(const SeabedProps& p, double x, double y) {
+    if (!p.sloped) return -p.depth;
+    return -p.depth - (p.normal.x() * x + p.normal.y() * y) / p.normal.z();
+}
 
 // Friction regularization velocity [m/s]: below it friction grows linearly with sliding speed.
 constexpr double kFrictionVelocity = 0.01;
@@ -43,7 +61,8 @@ double body_size(double mass, double volume);                        // b [m]
 double body_footprint(double mass, double volume, double diameter);  // b^2 / d [m]
 Vec3 point_contact_load(const PointContact& c, const Vec3& r, const Vec3& rd, SeabedJacobian* J);
 
-// Penetration [m] at which a line of this submerged weight per length [N/m] rests on the seabed.
+// Penetration [m] at which a line of this submerged weight per length [N/m] rests on the seabed
+// (along its normal: a sloped seabed carries the weight's normal part, weight n_z).
 double resting_penetration(const SeabedProps& p, double weight);
 
 // `seabedRest` 1: the contact surface raised by the rest penetration of this weight per length

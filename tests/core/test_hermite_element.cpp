@@ -549,6 +549,111 @@ TEST(SeabedTerm, RestingCableCarriesItsWeightAndFrictionOpposesSliding) {
     EXPECT_EQ(seabed_load(p, Vec3(0, 0, -49.9995), Vec3(1, 0, 0), nullptr), Vec3::Zero());
 }
 
+namespace {
+
+// A sloped plane: the seabed of seabedSlope 12 deg descending along heading 30 deg.
+SeabedProps sloped_seabed() {
+    SeabedProps p;
+    p.enabled = true;
+    p.depth = 100.0;
+    p.stiffness = 2e5;
+    p.damping = 3e3;
+    p.friction = 0.6;
+    p.smoothing = 0.01;
+    set_slope(p, 12.0, 30.0);
+    return p;
+}
+
+}  // namespace
+
+TEST(SeabedTerm, SlopedJacobianMatchesFiniteDifferences) {
+    // An element lying partly in the contact band of a sloped seabed and partly below it, sliding
+    // along and across the slope.
+    const double l = 2.0;
+    const ElementTables e = make_element_tables(l, 3, 3);
+    const SeabedProps p = sloped_seabed();
+    const Vec3 n = p.normal;
+    const Vec3 along = Vec3(0.0, 1.0, 0.0).cross(n).normalized();  // a direction in the plane
+    const Vec3 r0 = Vec3(3.0, 1.0, seabed_height(p, 3.0, 1.0)) - 0.005 * n;
+    const Vec3 r1 = r0 + l * along - 0.007 * n + 0.1 * n.cross(along);
+    Vec12 X;
+    X << r0, along - 0.004 * n, r1, along - 0.003 * n;
+    std::mt19937 rng(23);
+    const Vec12 Xd = random_vector(rng, 0.05);
+    Mat12 K = Mat12::Zero(), C = Mat12::Zero();
+    add_seabed_jacobian(e, p, X.data(), Xd.data(), K, C);
+    ASSERT_GT(K.norm(), 0.0);
+    auto force = [&](const Vec12& x, const Vec12& v) {
+        Vec12 R = Vec12::Zero();
+        add_seabed_force(e, p, x.data(), v.data(), R.data());
+        return R;
+    };
+    expect_jacobian_matches([&](const Vec12& x) { return force(x, Xd); }, X, K, 1e-7, 1e-6, "dR/dX");
+    expect_jacobian_matches([&](const Vec12& v) { return force(X, v); }, Xd, C, 1e-7, 1e-6, "dR/dXdot");
+}
+
+TEST(SeabedTerm, SlopedContactIsTheFlatOneTurnedOntoTheSlope) {
+    // The same penetration and the same velocity relative to the surface give the flat seabed's load
+    // turned by the rotation that takes e_z onto the slope's normal: pressure along the normal,
+    // friction along the surface, damping on the normal rate.
+    SeabedProps flat = sloped_seabed();
+    set_slope(flat, 0.0, 0.0);
+    const SeabedProps sloped = sloped_seabed();
+    const Vec3 n = sloped.normal;
+    EXPECT_NEAR(n.z(), std::cos(12.0 * kPi / 180.0), 1e-15);
+    EXPECT_NEAR(std::atan2(n.y(), n.x()), 30.0 * kPi / 180.0, 1e-14);  // it leans the way it descends
+    const Mat3 turn = Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), n).toRotationMatrix();
+    for (double depthIn : {0.004, 0.03}) {  // inside the smoothing band and beyond it
+        const Vec3 flatPoint(0.0, 0.0, -flat.depth - depthIn), flatVelocity(0.3, -0.2, -0.05);
+        SeabedJacobian Jf, Js;
+        const Vec3 Ff = seabed_load(flat, flatPoint, flatVelocity, &Jf);
+        // the point at that penetration below the sloped plane, above (7, -4)
+        const Vec3 onPlane(7.0, -4.0, seabed_height(sloped, 7.0, -4.0));
+        const Vec3 Fs = seabed_load(sloped, onPlane - depthIn * n, turn * flatVelocity, &Js);
+        EXPECT_LT((Fs - turn * Ff).norm(), 1e-9 * Ff.norm()) << depthIn;
+        EXPECT_LT((Js.dr - turn * Jf.dr * turn.transpose()).norm(), 1e-9 * Jf.dr.norm()) << depthIn;
+        EXPECT_LT((Js.drd - turn * Jf.drd * turn.transpose()).norm(), 1e-9 * Jf.drd.norm()) << depthIn;
+    }
+    // nothing above the plane, even below z = -waterDepth where the seabed descends
+    const Vec3 x(40.0, 0.0, -101.0);
+    ASSERT_LT(seabed_height(sloped, x.x(), x.y()), x.z() - 1.0);
+    EXPECT_EQ(seabed_load(sloped, x, Vec3(1.0, 0.0, 0.0), nullptr), Vec3::Zero());
+}
+
+TEST(SeabedTerm, SlopedElementsAboveTheContactBandAreSkippedWithoutChangingABit) {
+    // The hull test on a sloped plane: against the sum over every sampling point, bit for bit, for
+    // random elements around the band.
+    const double l = 12.5;
+    const ElementTables e = make_element_tables(l, 3, 3);
+    const SeabedProps p = sloped_seabed();
+    const Vec3 n = p.normal;
+    const Vec3 along = Vec3(0.0, 1.0, 0.0).cross(n).normalized();
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> height(-0.05, 0.6), slope(-0.25, 0.25);
+    int touched = 0, skipped = 0;
+    for (int trial = 0; trial < 1000; ++trial) {
+        const Vec3 base(5.0, 2.0, seabed_height(p, 5.0, 2.0));
+        Vec12 X;
+        X << base + height(rng) * n, along + slope(rng) * n, base + l * along + height(rng) * n, along + slope(rng) * n;
+        const Vec12 Xd = random_vector(rng, 0.5);
+        Vec12 R = Vec12::Zero(), Rref = Vec12::Zero();
+        add_seabed_force(e, p, X.data(), Xd.data(), R.data());
+        bool touches = false;
+        for (int g = 0; g < ElementTables::nAxial; ++g) {
+            const QuadPoint& q = e.axial[g];
+            const Vec3 F = seabed_load(p, interpolate(q.shape.N, X.data()), interpolate(q.shape.N, Xd.data()), nullptr);
+            if (F.isZero(0.0)) continue;
+            touches = true;
+            for (int a = 0; a < 4; ++a) Rref.segment<3>(3 * a) += (q.weight * q.shape.N[a]) * F;
+        }
+        touched += touches;
+        skipped += above_contact(e, p, X.data());
+        for (int i = 0; i < 12; ++i) ASSERT_EQ(R[i], Rref[i]) << "trial " << trial << ", entry " << i;
+    }
+    EXPECT_GT(touched, 100);
+    EXPECT_GT(skipped, 100);
+}
+
 TEST(TorqueTerm, JacobianMatchesFiniteDifferences) {
     const double l = 2.0, H = 35.0;
     const ElementTables e = make_element_tables(l, 3, 3);

@@ -15,6 +15,7 @@
 #include "deck_mutation.h"
 #include "deck/line_file.h"
 #include "model/params.h"
+#include "terms/seabed.h"
 
 namespace {
 
@@ -548,8 +549,8 @@ TEST(LineFileRefuses, NonLinearAndOtherUnsupportedLineProperties) {
     expect_refused(d, "1 Currents", "Currents = 1: MoorDyn reads current_profile.txt from the deck's directory");
     d = edit(kSingleChain, "320      WtrDpth", "bathy.txt WtrDpth");
     expect_refused(d, "bathy.txt", "a bathymetry file is not supported");
-    d = edit(kSingleChain, "0.002    dtM", "sea.txt SeafloorFile");
-    expect_refused(d, "sea.txt", "SeafloorFile: a bathymetry file is not supported");
+    d = edit(kSingleChain, "0.002    dtM", "sea.txt SeafloorFile");  // its file is not handed over
+    expect_refused(d, "sea.txt", "SeafloorFile 'sea.txt': it could not be read");
     d = edit(kSingleChain, "1     Fixed      -850    0     -320   0      0       0      0",
              "1     Free       -850    0     -320   0      0   0 0 -100  0      0");
     expect_refused(d, "1     Free", "a steady force on a Free point is not supported");
@@ -678,6 +679,53 @@ TEST(LineFileKinematics, ASteadyCurrentProfileIsTheFmusProfileWithoutItsRedundan
     EXPECT_EQ(p.currentProfileRows, 4);
     EXPECT_DOUBLE_EQ(p.currentProfileDepth[3], 310.0);
     EXPECT_DOUBLE_EQ(p.currentProfileX[3], 0.1);
+}
+
+// MoorDyn's SeafloorFile grid (nx ny, the x values, the y values, rows x y z) of heights a + b x + c y,
+// one point moved up by `bump`.
+std::string seafloor_grid(double a, double b, double c, double bump) {
+    const double xs[] = {-1000.0, -400.0, 0.0, 250.0}, ys[] = {-300.0, 0.0, 500.0};
+    std::string text = "4 3\n-1000 -400 0 250\n-300 0 500\n";
+    for (double x : xs)
+        for (double y : ys) {
+            const double z = a + b * x + c * y + (x == 0.0 && y == 0.0 ? bump : 0.0);
+            char row[120];
+            std::snprintf(row, sizeof row, "%.17g %.17g %.17g\n", x, y, z);
+            text += row;
+        }
+    return text;
+}
+
+TEST(LineFileSeabed, ASeafloorFileThatIsAPlaneIsTheSlopedSeabed) {
+    // The plane z = -320 + 0.05 x - 0.02 y: 320 m deep under the origin, rising along x, falling along
+    // y, so it descends towards (-0.05, 0.02) at atan(|(0.05, -0.02)|).
+    const std::string d = edit(kSingleChain, "0.002    dtM", "Mooring/3D_seafloor/bed.txt SeafloorFile");
+    EXPECT_EQ(uc::line_file_companions(d), std::vector<std::string>{"Mooring/3D_seafloor/bed.txt"});
+    const Read r = read_with(d, {{"Mooring/3D_seafloor/bed.txt", seafloor_grid(-320.0, 0.05, -0.02, 0.0)}});
+    ASSERT_TRUE(r.ok) << r.error;
+    UCParams p;
+    uc_params_default(&p);
+    std::string error;
+    ASSERT_TRUE(uc::apply_line_file(r.line, p, error)) << error;
+    EXPECT_NEAR(p.waterDepth, 320.0, 1e-9);
+    EXPECT_NEAR(p.seabedSlope, std::atan(std::hypot(0.05, 0.02)) * 180.0 / uc::kPi, 1e-9);
+    EXPECT_NEAR(p.seabedSlopeHeading, std::atan2(0.02, -0.05) * 180.0 / uc::kPi, 1e-9);
+    // the FMU's plane through those parameters gives back the file's heights
+    uc::SeabedProps bed;
+    bed.depth = p.waterDepth;
+    uc::set_slope(bed, p.seabedSlope, p.seabedSlopeHeading);
+    EXPECT_NEAR(uc::seabed_height(bed, -850.0, 40.0), -320.0 + 0.05 * -850.0 - 0.02 * 40.0, 1e-9);
+    bool said = false;
+    for (const std::string& n : r.line.notes) said |= n.find("SeafloorFile: its grid is a plane") != std::string::npos;
+    EXPECT_TRUE(said);
+    // a grid that is not a plane, and a file that is missing, are refused naming the file
+    const Read bumpy = read_with(d, {{"Mooring/3D_seafloor/bed.txt", seafloor_grid(-320.0, 0.05, -0.02, 2.0)}});
+    ASSERT_FALSE(bumpy.ok);
+    EXPECT_NE(bumpy.error.find("SeafloorFile 'Mooring/3D_seafloor/bed.txt': its grid is not a plane"), std::string::npos)
+        << bumpy.error;
+    const Read missing = read_with(d, {});
+    ASSERT_FALSE(missing.ok);
+    EXPECT_NE(missing.error.find("it could not be read"), std::string::npos) << missing.error;
 }
 
 TEST(LineFileKinematics, WhatTheFmusSeaCannotHoldIsRefusedNamingOptionAndValue) {

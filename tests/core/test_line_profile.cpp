@@ -284,3 +284,55 @@ TEST(LineProfile, ABuoyLiftsAnArchOfAVerySlackTwoSectionLineRestingAcrossItsJoin
                 86.71596898400803, 366.85683593190504,
                 3216.409155744423, 315.10357558075725, 51.04398590597529});
 }
+
+// A sloped seabed: in the plane of the ends it rises towards the fairlead by tan(beta) per metre
+// across. A chain of 430 / 470 m (1,000 N/m, EA 5e8 N) from a fairlead 5 m deep to an anchor 400 m
+// away on the seabed 100 m deep. MoorPy's catenary with the seabed's angle (alpha = atan(tan beta),
+// frictionless, CB = 0, Tol 1e-10): anchor downslope (tan beta 0.1, 430 m) 13,934.9086 N across and
+// 1,393.4909 N up at the anchor (along the slope), 47,252.5411 / 98,217.1666 N at the fairlead,
+// 336.508 m on the seabed; anchor upslope (tan beta -0.08, 470 m) 70,682.3835 / -5,654.5907 N and
+// 46,278.7160 / 159,299.5647 N, 306.998 m on the seabed.
+TEST(LineProfile, RestsOnASlopeAsMoorPysInclinedCatenary) {
+    struct Case {
+        double tanBeta, length, anchorH, anchorV, topH, topV, grounded;
+    };
+    for (const Case& c : {Case{0.1, 430.0, 13934.908620037344, 1393.4908620037345, 47252.541051135784,
+                               98217.16655101936, 336.50808755409423},
+                          Case{-0.08, 470.0, 70682.38353033441, -5654.590682426754, 46278.715964472685,
+                               159299.56474430172, 306.9981379785405}}) {
+        const Vector3d top(0.0, 0.0, -5.0), bottom(-400.0, 0.0, -100.0);
+        LineProfile p;
+        // the seabed's height grows along +x (towards the fairlead) by tan(beta)
+        p.set_seabed_gradient(Eigen::Vector2d(c.tanBeta, 0.0));
+        std::string why;
+        ASSERT_TRUE(p.solve(top, bottom, {{c.length, 1000.0, 5e8}}, {}, true, -100.0, 0.1, &why)) << why;
+        const double scale = c.topV;
+        EXPECT_NEAR(p.bottom_force().x(), c.anchorH, 1e-7 * scale) << c.tanBeta;
+        EXPECT_NEAR(p.bottom_force().z(), c.anchorV, 1e-7 * scale) << c.tanBeta;
+        EXPECT_NEAR(-p.top_force().x(), c.topH, 1e-7 * scale) << c.tanBeta;
+        EXPECT_NEAR(-p.top_force().z(), c.topV, 1e-7 * scale) << c.tanBeta;
+        EXPECT_NEAR(p.grounded_length(), c.grounded, 1e-6 * c.length) << c.tanBeta;
+        // the grounded part lies on the slope, and the tension along it grows by w sin(beta) per metre
+        const double sinBeta = c.tanBeta / std::sqrt(1.0 + c.tanBeta * c.tanBeta);
+        Vector3d r, t;
+        const double s = c.length - 0.5 * c.grounded;  // from the fairlead: the middle of the resting part
+        p.at(s, r, t);
+        EXPECT_NEAR(r.z(), -100.0 + c.tanBeta * (r.x() + 400.0), 1e-9 * c.length);
+        EXPECT_NEAR(p.tension(s - 1.0) - p.tension(s + 1.0), 2.0 * 1000.0 * sinBeta, 1e-6 * scale);
+        EXPECT_GT(p.lowest_clearance(), -1e-9 * c.length);
+    }
+}
+
+TEST(LineProfile, ASlopeAcrossTheLinesPlaneIsTheFlatSeabedForItsProfile) {
+    // The seabed tilted only across the plane of the ends (gradient along y, the line along x): in
+    // the plane the seabed is flat, and the profile is the flat one number for number.
+    const Vector3d top(0.0, 0.0, -5.0), bottom(-400.0, 0.0, -100.0);
+    LineProfile flat, tilted;
+    std::string why;
+    ASSERT_TRUE(flat.solve(top, bottom, {{430.0, 1000.0, 5e8}}, {}, true, -100.0, 0.1, &why)) << why;
+    tilted.set_seabed_gradient(Eigen::Vector2d(0.0, 0.2));
+    ASSERT_TRUE(tilted.solve(top, bottom, {{430.0, 1000.0, 5e8}}, {}, true, -100.0, 0.1, &why)) << why;
+    EXPECT_EQ(flat.top_force(), tilted.top_force());
+    EXPECT_EQ(flat.bottom_force(), tilted.bottom_force());
+    EXPECT_EQ(flat.grounded_length(), tilted.grounded_length());
+}

@@ -7,6 +7,9 @@ anchored on a frictionless seabed 30-1500 m deep, tension-only, without bending,
 per piece between points, every point resting on a rigid seabed within 1 mm). See
 docs/statics_benchmark.md for the method and the measured numbers.
 
+`--slope`: the same lines on a sloped plane seabed (seabedSlope 1-10 deg, a random heading; the anchor
+on it at the drawn depth), against MoorPy's inclined catenary (its System with xSlope and ySlope).
+
 draw_cases() draws, reference() and fmu_run() compute one line, run_benchmark() all of them,
 summary() reduces the records to table rows, markdown() writes them.
 """
@@ -87,6 +90,19 @@ class Case:
     stiffness: float
     sections: list        # from the fairlead down
     attachments: list = field(default_factory=list)
+    slope: float = 0.0    # seabedSlope [deg]: the seabed descends along `heading`, `depth` deep under the anchor
+    heading: float = 0.0  # seabedSlopeHeading [deg]
+
+    @property
+    def water_depth(self) -> float:
+        """The seabed's depth under the fairlead (x = y = 0): the FMU's waterDepth."""
+        return self.depth - math.tan(math.radians(self.slope)) * self.anchor_x * math.cos(math.radians(self.heading))
+
+    @property
+    def slopes(self) -> tuple:
+        """MoorPy's xSlope, ySlope: the rise of the seabed per metre along x and y."""
+        t = math.tan(math.radians(self.slope))
+        return -t * math.cos(math.radians(self.heading)), -t * math.sin(math.radians(self.heading))
 
     @property
     def length(self) -> float:
@@ -104,8 +120,9 @@ class Case:
     def describe(self) -> str:
         secs = " - ".join(f"{s.material} {s.length:.1f} m (d {1000 * s.nominal:.0f} mm)" for s in self.sections)
         att = "".join(f"; {a.kind} {a.mass / 1000:.2f} t, {a.volume:.3f} m3 at s = {a.s:.1f} m" for a in self.attachments)
+        slope = f", seabedSlope {self.slope:.2f} deg heading {self.heading:.0f} deg" if self.slope else ""
         return (f"{secs}{att}; depth {self.depth:.1f} m, fairlead z {self.fairlead_z:.1f} m, anchor x "
-                f"{self.anchor_x:.1f} m, seabedStiffness {self.stiffness:.3g}")
+                f"{self.anchor_x:.1f} m, seabedStiffness {self.stiffness:.3g}{slope}")
 
 
 def make_section(material: str, nominal: float, length: float) -> Section:
@@ -154,9 +171,28 @@ def draw_length(rng, span: float, height: float, taut: bool) -> float:
     return start + rng.uniform(0.0, 0.98) * (span + height - start)
 
 
-def draw_case(seed: int, case_id: int, above_water: bool = False) -> Case:
+SLOPE_RANGE = (1.0, 10.0)  # seabedSlope of --slope [deg], uniform
+SLOPE_CLEARANCE = 0.2      # the seabed under the fairlead at least this fraction of the height below it
+
+
+def draw_slope(seed: int, case_id: int, case: "Case") -> "Case":
+    """The line on a sloped seabed, from a generator of its own (the line itself is the flat draw's):
+    seabedSlope uniform in SLOPE_RANGE, a uniform heading, the anchor on the seabed at the drawn depth;
+    the slope made gentler where the seabed would rise within SLOPE_CLEARANCE of the height below the
+    fairlead."""
+    rng = np.random.default_rng([seed, case_id, 2])
+    slope, heading = rng.uniform(*SLOPE_RANGE), rng.uniform(0.0, 360.0)
+    height = case.depth + case.fairlead_z
+    rise = case.anchor_x * math.cos(math.radians(heading))  # the seabed's rise towards the fairlead per tan
+    if rise > 0.0:
+        slope = min(slope, math.degrees(math.atan((1.0 - SLOPE_CLEARANCE) * height / rise)))
+    return dataclasses.replace(case, slope=float(slope), heading=float(heading))
+
+
+def draw_case(seed: int, case_id: int, above_water: bool = False, slope: bool = False) -> Case:
     """Line `case_id` of the benchmark with `seed`: its own generator, so it never depends on how
-    many lines are drawn. `above_water`: the fairlead 1-30 m above the surface (uniform)."""
+    many lines are drawn. `above_water`: the fairlead 1-30 m above the surface (uniform); `slope`:
+    on a sloped seabed (draw_slope)."""
     rng = np.random.default_rng([seed, case_id])
     family = list(FAMILIES)[rng.choice(len(FAMILIES), p=list(FAMILIES.values()))]
     depth = _loguniform(rng, 30.0, 1500.0)
@@ -183,11 +219,12 @@ def draw_case(seed: int, case_id: int, above_water: bool = False) -> Case:
         else:  # a buoy of 30 % of its displacement, lifting 5-40 % of the line's weight
             volume = _loguniform(rng, 0.05, 0.4) * line_weight / (0.7 * RHO * G)
             attachments.append(Attachment("buoy", s, 0.3 * RHO * volume, volume))
-    return Case(case_id, family, depth, fairlead_z, -span, _loguniform(rng, *STIFFNESS_RANGE), sections, attachments)
+    case = Case(case_id, family, depth, fairlead_z, -span, _loguniform(rng, *STIFFNESS_RANGE), sections, attachments)
+    return draw_slope(seed, case_id, case) if slope else case
 
 
-def draw_cases(seed: int, n: int, above_water: bool = False) -> list:
-    return [draw_case(seed, k, above_water) for k in range(n)]
+def draw_cases(seed: int, n: int, above_water: bool = False, slope: bool = False) -> list:
+    return [draw_case(seed, k, above_water, slope) for k in range(n)]
 
 
 # ----------------------------------------------------------------------------- the reference
@@ -226,7 +263,11 @@ def _start(case: Case, s_from_anchor: float, guess: int) -> np.ndarray:
 
 def _system(case: Case, guess: int):
     pieces = _pieces(case)[::-1]  # from the anchor up: MoorPy's end A is the lower end
-    ms = moorpy.system(depth=case.depth, rho=RHO, g=G)
+    if case.slope:
+        xs, ys = case.slopes
+        ms = moorpy.system(depth=case.water_depth, rho=RHO, g=G, xSlope=xs, ySlope=ys)
+    else:
+        ms = moorpy.system(depth=case.depth, rho=RHO, g=G)
     ms.addPoint(1, np.array([case.anchor_x, 0.0, -case.depth]))
     s_from_anchor = 0.0
     for k, (sec, length, att) in enumerate(pieces):
@@ -276,7 +317,26 @@ def reference_system(case: Case, tol: float = 1e-8):
         raise ReferenceFailed(errors[0])
     if any(p.r[2] > -1.0 for p in ms.pointList):
         raise ReferenceFailed("a point reaches the sea surface")
+    if case.slope:
+        sloped_reference_applies(case, ms)
     return ms
+
+
+def sloped_reference_applies(case: Case, ms) -> None:
+    """Raises ReferenceFailed where MoorPy's answer on a sloped seabed is not the frictionless plane's:
+    a free point resting on it (MoorPy's point contact pushes straight up, not along the normal), a
+    line piece whose ends are both above the seabed passing below it (MoorPy leaves the seabed out of
+    such a piece on a slope), or a line slack on the slope at its anchor (no tension there: on a
+    frictionless slope such a line has no one shape)."""
+    if any(p.type == 0 and p.r[2] < -ms.getDepthFromBathymetry(p.r[0], p.r[1])[0] + 1e-2 for p in ms.pointList):
+        raise ReferenceFailed("a point rests on the sloped seabed (MoorPy's point contact is vertical)")
+    for line in ms.lineList:
+        xs, ys, zs, _ = line.getLineCoords(0.0)
+        below = max(-ms.getDepthFromBathymetry(x, y)[0] - z for x, y, z in zip(xs, ys, zs))
+        if below > 1e-3 * case.length:
+            raise ReferenceFailed(f"MoorPy's line passes {below:.3g} m below the sloped seabed")
+    if ms.lineList[0].TA < 1e-6 * ms.lineList[-1].TB:
+        raise ReferenceFailed("slack on the slope at its anchor")
 
 
 def air_reference(case: Case) -> dict:
@@ -330,7 +390,8 @@ def element_counts(case: Case, n_elements: int) -> list:
 
 def fmu_parameters(case: Case, n_elements: int, grading: int = DEFAULT_GRADING) -> dict:
     p = {"meshGrading": grading, "bottomEnd": 1, "anchor.x": case.anchor_x, "anchor.y": 0.0, "anchor.z": -case.depth,
-         "waterDepth": case.depth, "enableSeabed": True, "seabedStiffness": case.stiffness,
+         "waterDepth": case.water_depth, "enableSeabed": True, "seabedStiffness": case.stiffness,
+         "seabedSlope": case.slope, "seabedSlopeHeading": case.heading,
          "seabedFriction": 0.0, "enableBending": False, "enableCompression": False,
          "waterDensity": RHO, "gravity": G}
     counts = element_counts(case, n_elements)
@@ -585,6 +646,9 @@ def parse_args(argv):
     p.add_argument("--above-water", action="store_true",
                    help="the same lines with the fairlead 1-30 m above the surface; the reference is the shooting "
                         "solution of studies.references.air_catenary (dry weight in air)")
+    p.add_argument("--slope", action="store_true",
+                   help="the same lines on a sloped plane seabed (seabedSlope 1-10 deg, a random heading); the "
+                        "reference is MoorPy's inclined catenary")
     p.add_argument("--only", type=int, nargs="+", default=None, metavar="ID",
                    help="run only these lines of the draw (reproduce a case; prints each run)")
     p.add_argument("--out", type=Path, default=None, help="write every run as CSV to this file")
@@ -644,7 +708,7 @@ def main(argv=None) -> int:
         print(f"no FMU at {args.fmu}: build first (scripts/build) or pass --fmu", file=sys.stderr)
         return 2
     ids = args.only if args.only is not None else range(args.n)
-    cases = {k: draw_case(args.seed, k, args.above_water) for k in ids}
+    cases = {k: draw_case(args.seed, k, args.above_water, args.slope) for k in ids}
     bar = ProgressBar(len(cases), label="lines")
     t0 = time.perf_counter()
     if args.stiffness_pairs:
@@ -671,14 +735,14 @@ def main(argv=None) -> int:
     command = "scripts/bench_statics " + " ".join(
         [f"--n {args.n}", "--elements " + " ".join(map(str, args.elements)), f"--seed {args.seed}"]
         + ([f"--grading {args.grading}"] if args.grading != DEFAULT_GRADING else [])
-        + (["--above-water"] if args.above_water else []))
+        + (["--above-water"] if args.above_water else []) + (["--slope"] if args.slope else []))
     text = markdown(data, command, _shown(args.fmu), cases)
     print(text)
     print(f"\n({time.perf_counter() - t0:.0f} s wall)")
     if args.doc is not None:
         # one generated section per grading: the default and the others side by side
         write_section(args.doc, text, "scripts/bench_statics" + (f" --grading {args.grading}" if args.grading != DEFAULT_GRADING else "")
-                      + (" --above-water" if args.above_water else ""))
+                      + (" --above-water" if args.above_water else "") + (" --slope" if args.slope else ""))
     return 0
 
 
