@@ -268,6 +268,17 @@ private:
     bool step_nodes(double t, double h, const UCInputs& in, std::string& error, double offset = -1.0);
     // Every line and node over h from their present time; offset as step_nodes'.
     bool advance(double t, double h, double offset, const UCInputs& in, std::string& error);
+    // --- line failures (src/system/failure.cpp, docs/line_failure.md) ---
+    // failures_ from the deck's rows and the failure.* parameters (false: error names the refusal), their states,
+    // and the far ends of the lines whose anchor detaches marked (built driven).
+    bool build_failures(std::string& error);
+    void describe_failures();  // appends each failure's values to the description
+    void failure_outputs();    // line[k].broken and line[k].breakTime of the broken failures' lines
+    // The failures' states written at out (returns the place after them), and read from at (present: the state
+    // holds this system's failures; else none is broken) with the free nodes they and the deck make into nodes.
+    unsigned char* save_failures(unsigned char* out) const;
+    std::vector<FailureState> saved_failures(const unsigned char* at, bool present, size_t& nodes) const;
+    void undo_breaks();  // no failure broken (the deck's lines and nodes as read)
     // A communication step with failures pending: in pieces that end at each break (docs/line_failure.md).
     bool step_with_failures(double t, double h, const UCInputs& in, std::string& error);
     // Failure f breaks now, at time t: its lines' ends go on a new free node that starts where they are.
