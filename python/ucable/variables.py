@@ -573,6 +573,8 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              'Mooring system: time at which failure.line detaches (0: not by time)'),
     Variable('failure.tension', 273, 'parameter', 'Real', 'N', 0.0, 0.0, 1000000000000.0,
              'Mooring system: tension of failure.line at failure.point at which it detaches (0: not by tension)'),
+    Variable('failure.position', 274, 'parameter', 'Real', 'm', 0.0, 0.0, 1000000.0,
+             'Mooring system: where along failure.line it breaks, in metres of unstretched length from its anchor (0: at failure.point instead); the line is then two lines joined at a massless free point there, and the break detaches the lower one'),
     Variable('tow.x', 1001, 'input', 'Real', 'm', 0.0, None, None,
              'x coordinate of the tow point'),
     Variable('tow.y', 1002, 'input', 'Real', 'm', 0.0, None, None,

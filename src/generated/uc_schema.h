@@ -174,6 +174,7 @@ typedef struct UCParams {
     int failurePoint; /* failure.point: a mooring system: the deck point (its ID) that `failure.line` detaches from: a point on a coupled body, a coupled point or a free point where three or more lines meet; 0: the line's fairlead */
     double failureTime; /* failure.time [s]: a mooring system: the time at which `failure.line` detaches (0: not by time); the step that contains it ends there */
     double failureTension; /* failure.tension [N]: a mooring system: the tension of `failure.line` at `failure.point` at which it detaches (0: not by tension); the step in which it is reached ends where it is, the tension there within the integrator's tolerance of it */
+    double failurePosition; /* failure.position [m]: a mooring system: where along `failure.line` it breaks, in metres of unstretched length from its anchor (its far end; 0: at `failure.point` instead). The line is built as two lines of its type joined at a massless free point there, and the break parts them: the upper part hangs from the fairlead, the lower part stays on its anchor, both with bare ends; `failure.tension` is then the tension at that point ([docs/line_failure.md](docs/line_failure.md)) */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
 } UCParams;
@@ -528,6 +529,7 @@ typedef struct UCOutputs {
     X(271, "failure.point", INTEGER, PARAMETER, failurePoint) \
     X(272, "failure.time", REAL, PARAMETER, failureTime) \
     X(273, "failure.tension", REAL, PARAMETER, failureTension) \
+    X(274, "failure.position", REAL, PARAMETER, failurePosition) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -1626,6 +1628,7 @@ typedef struct UCOutputs {
     X(failurePoint, 0) \
     X(failureTime, 0.0) \
     X(failureTension, 0.0) \
+    X(failurePosition, 0.0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -1902,6 +1905,7 @@ typedef struct UCOutputs {
     X(failurePoint, "failure.point", 0.0, 10000.0, 0, 0, "[0, 10000]", "a deck point's ID") \
     X(failureTime, "failure.time", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "a time of the simulation") \
     X(failureTension, "failure.tension", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension") \
+    X(failurePosition, "failure.position", 0.0, 1000000.0, 0, 0, "[0, 1000000]", "a length along a line") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -16,7 +16,12 @@ bool MooringSystem::build_failures(std::string& error) {
     failures_ = deck_.failures;
     if (base_.failureLine > 0) {  // the failure.* parameters' failure, after the deck's
         char text[160];
-        std::snprintf(text, sizeof text, "failure.line = %d, failure.point = %d: ", base_.failureLine, base_.failurePoint);
+        if (base_.failurePosition > 0.0) {
+            std::snprintf(text, sizeof text, "failure.line = %d, failure.position = %.9g m: ", base_.failureLine,
+                          base_.failurePosition);
+        } else {
+            std::snprintf(text, sizeof text, "failure.line = %d, failure.point = %d: ", base_.failureLine, base_.failurePoint);
+        }
         if (base_.failureLine > deck_.deckLines) {
             error = text + std::string("the deck has ") + std::to_string(deck_.deckLines) + " lines";
             return false;
@@ -30,7 +35,18 @@ bool MooringSystem::build_failures(std::string& error) {
         f.id = static_cast<int>(failures_.size()) + 1;
         f.time = base_.failureTime;
         f.tension = base_.failureTension;
-        if (!resolve_failure(deck_, base_.failurePoint, {base_.failureLine - 1}, f, error)) {
+        if (base_.failurePosition > 0.0 && base_.failurePoint != 0) {
+            error = text + std::string("failure.point = ") + std::to_string(base_.failurePoint) +
+                    ": a break along the line is at failure.position, not at a point (give one of them)";
+            return false;
+        }
+        int k = -1;  // the system's line that holds the deck line
+        for (size_t j = 0; j < deck_.lines.size(); ++j) {
+            const std::vector<int>& d = deck_.lines[j].deckLines;
+            if (std::find(d.begin(), d.end(), base_.failureLine - 1) != d.end()) k = static_cast<int>(j);
+        }
+        if (base_.failurePosition > 0.0 ? !split_line(k, base_.failurePosition, f, error)
+                                        : !resolve_failure(deck_, base_.failurePoint, {base_.failureLine - 1}, f, error)) {
             error = text + error;
             return false;
         }
@@ -46,6 +62,83 @@ bool MooringSystem::build_failures(std::string& error) {
     return true;
 }
 
+bool MooringSystem::split_line(int k, double position, MooringFailure& f, std::string& error) {
+    MooringDeckLine& l = deck_.lines[k];
+    if (l.sections.size() != 1 || l.farFree) {
+        error = "line " + std::to_string(l.id) + (l.farFree ? " has a free far end" : " is one line of several deck lines "
+                "joined at free points") + ": a break along a line is supported on a line from its fairlead to an "
+                "anchor or another held end (give failure.point instead)";
+        return false;
+    }
+    if (deck_.lines.size() >= UC_MAX_LINES) {
+        error = "the system has " + std::to_string(deck_.lines.size()) + " lines: a break along one makes it two, and a "
+                "system holds at most " + std::to_string(UC_MAX_LINES);
+        return false;
+    }
+    const double length = l.sections[0].length;
+    if (!(position < length)) {
+        char text[200];
+        std::snprintf(text, sizeof text, "beyond line %d's unstretched length, %.9g m (the position is measured from "
+                      "its anchor)", l.id, length);
+        error = text;
+        return false;
+    }
+    for (const MooringFailure& g : failures_) {
+        for (const MooringFailure::End& e : g.ends) {
+            if (e.line == k) {
+                error = "line " + std::to_string(l.id) + " already breaks in failure " + std::to_string(g.id) +
+                        " (one failure per line where it breaks along the line)";
+                return false;
+            }
+        }
+    }
+    // the joint: a massless free node, first guessed on the chord at that length from the far end (above the seabed)
+    MooringNode joint;
+    joint.failure = f.id;
+    const double r = position / length;
+    for (int c = 0; c < 3; ++c) joint.position[c] = l.far.position[c] + r * (l.fairlead.position[c] - l.far.position[c]);
+    joint.position[2] = std::max(joint.position[2], -deck_.waterDepth);
+    const int node = static_cast<int>(deck_.nodes.size());
+    deck_.nodes.push_back(joint);
+    // the elements shared out in proportion to the parts' lengths, at least one each
+    const int elements = l.sections[0].elements;
+    const int below = std::clamp(static_cast<int>(std::lround(elements * r)), 1, std::max(1, elements - 1));
+    MooringDeckLine lower = l;
+    lower.sections[0].length = position;
+    lower.sections[0].elements = below;
+    lower.fairlead = MooringEnd();
+    lower.fairlead.kind = MooringEnd::Kind::Node;
+    lower.fairlead.node = node;
+    std::copy(joint.position, joint.position + 3, lower.fairlead.position);
+    lower.fairleadPoint = 0;
+    l.sections[0].length = length - position;
+    l.sections[0].elements = std::max(1, elements - below);
+    l.far = lower.fairlead;
+    l.farPoint = 0;
+    l.farDetaches = false;
+    splits_.push_back({k, static_cast<int>(deck_.lines.size())});
+    f.point = 0;
+    f.position = position;
+    f.ends = {MooringFailure::End{splits_.back().lower, 0, l.deckLines[0]}};
+    deck_.lines.push_back(lower);
+    return true;
+}
+
+void MooringSystem::split_outputs() {
+    for (const SplitLine& s : splits_) {
+        const MooringDeckLine& l = deck_.lines[s.upper];
+        const UCOutputs& up = lines_[s.upper]->outputs();
+        const UCOutputs& low = lines_[s.lower]->outputs();
+        const double fairlead = up.towTension, anchor = low.endTension;
+        UCMooringLine& out = outputs_.mooringLine[l.deckLines[0]];
+        LineStrength strength = line_strength(*lines_[s.upper], 0, 0);
+        strength.maxUtilisation = std::max(strength.maxUtilisation, line_strength(*lines_[s.lower], 0, 0).maxUtilisation);
+        set_mooring_line_outputs(out, l.flipped[0] ? anchor : fairlead, l.flipped[0] ? fairlead : anchor, up, strength);
+        out.minTension = std::min(up.minTension, low.minTension);
+        out.groundedLength = up.groundedLength + low.groundedLength;
+    }
+}
+
 void MooringSystem::describe_failures() {
     auto add = [&](const std::string& name, double value) { description_.push_back({name, value}); };
     for (const MooringFailure& f : failures_) {
@@ -54,6 +147,7 @@ void MooringSystem::describe_failures() {
         add(prefix + "point", f.point);
         add(prefix + "FailTime [s]", f.time);
         add(prefix + "FailTen [N]", f.tension);
+        if (f.position > 0.0) add(prefix + "position [m]", f.position);
         for (const MooringFailure::End& e : f.ends) {
             add(prefix + "line", e.deckLine + 1);
             add(prefix + "end", e.end);
@@ -171,14 +265,20 @@ void MooringSystem::break_failure(int f, double t) {
     std::string lines;
     for (const MooringFailure::End& e : fail.ends) lines += (lines.empty() ? "" : ", ") + std::to_string(e.deckLine + 1);
     char text[400];
-    std::snprintf(text, sizeof text, "line failure %d at t = %.9g s: line%s %s detached from point %d, tension there "
-                  "%.6g N (FailTime %.6g s, FailTen %.6g N); %s on a massless free point", fail.id, t,
-                  fail.ends.size() > 1 ? "s" : "", lines.c_str(), fail.point, tension, fail.time, fail.tension,
-                  fail.ends.size() > 1 ? "they go on joined" : "its end goes on bare");
+    if (fail.position > 0.0) {
+        std::snprintf(text, sizeof text, "line failure %d at t = %.9g s: line %s parted %.6g m from its anchor, tension "
+                      "there %.6g N (FailTime %.6g s, FailTen %.6g N); both parts go on with bare ends", fail.id, t,
+                      lines.c_str(), fail.position, tension, fail.time, fail.tension);
+    } else {
+        std::snprintf(text, sizeof text, "line failure %d at t = %.9g s: line%s %s detached from point %d, tension there "
+                      "%.6g N (FailTime %.6g s, FailTen %.6g N); %s on a massless free point", fail.id, t,
+                      fail.ends.size() > 1 ? "s" : "", lines.c_str(), fail.point, tension, fail.time, fail.tension,
+                      fail.ends.size() > 1 ? "they go on joined" : "its end goes on bare");
+    }
     event_ += (event_.empty() ? "" : "; ") + std::string(text);
 }
 
-bool MooringSystem::step_with_failures(double t, double h, const UCInputs& in, std::string& error) {
+bool MooringSystem::step_with_failures(double t, double h, const UCInputs& in, double& taken, std::string& error) {
     const double eps = 1e-12 * std::max(1.0, std::abs(t + h));  // times closer than this are one
     // how far the pending failures by tension are from their thresholds, the largest, in their tolerances
     auto crossing = [&]() {
@@ -193,13 +293,20 @@ bool MooringSystem::step_with_failures(double t, double h, const UCInputs& in, s
     double done = 0.0;  // of h
     while (true) {
         // what breaks where the piece starts: its time reached, its tension at its threshold within the tolerance
+        bool broke = false;
         for (size_t f = 0; f < failures_.size(); ++f) {
             if (failureState_[f].broken != 0.0) continue;
             const MooringFailure& fail = failures_[f];
             const int i = static_cast<int>(f);
             const bool byTime = fail.time > 0.0 && fail.time <= t + done + eps;
-            if (byTime || (fail.tension > 0.0 && failure_tension(i) >= fail.tension - failure_tolerance(i)))
+            if (byTime || (fail.tension > 0.0 && failure_tension(i) >= fail.tension - failure_tolerance(i))) {
                 break_failure(i, byTime && fail.time >= t + done - eps ? fail.time : t + done);  // its time exactly
+                broke = true;
+            }
+        }
+        if (broke && stopAtBreaks_ && done > 0.0 && done < h) {  // the step ends at the break, the state there
+            taken = done;
+            return true;
         }
         if (done >= h) return true;
         if (!failures_pending()) return advance(t + done, h - done, done > 0.0 ? done : -1.0, in, error);

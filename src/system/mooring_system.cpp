@@ -391,16 +391,17 @@ bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& er
     ++stamp_;
     if (!check_inputs(in, error)) return false;
     failureEvaluations_ = 0;
-    if (failures_pending() ? !step_with_failures(t, h, in, error) : !advance(t, h, -1.0, in, error)) return false;
+    double taken = h;  // (short of h where the step stops at a break)
+    if (failures_pending() ? !step_with_failures(t, h, in, taken, error) : !advance(t, h, -1.0, in, error)) return false;
     for (int b = 0; b < deck_.bodies; ++b) {
         const UCCoupledBody& body = in.coupledBody[b];
         const bool given = in.bodyAccelerationGiven[b] != 0;
         Vec3 a;
-        const TowTrajectory traj = references_[b].next(t, h, lastStep_, vec3(body.position), vec3(body.velocity),
+        const TowTrajectory traj = references_[b].next(t, taken, lastStep_, vec3(body.position), vec3(body.velocity),
                                                        vec3(in.bodyAcceleration + 6 * b), given, a);
         references_[b].advance(traj, vec3(body.velocity), a, given);
     }
-    lastStep_ = h;
+    lastStep_ = taken;
     lastInputs_ = in;
     update_outputs();
     return true;
@@ -457,6 +458,7 @@ void MooringSystem::update_outputs() {
             }
         }
     }
+    split_outputs();
     failure_outputs();
     for (size_t n = 0; n < motion_.size(); ++n) {
         const int id = deck_.nodes[n].point.id;
