@@ -708,7 +708,7 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
     std::string why;
     int worst = 0;
     double estimate = 0.0;  // of the step in one piece where it is split for its error
-    for (int pieces = 1; pieces <= kMaxSubsteps; pieces *= 2) {
+    for (int pieces = 1; pieces <= kMaxSplitSubsteps; pieces *= 2) {
         if (pieces > 1) {  // back to the step's start
             for (size_t k = 0; k < lines_.size(); ++k) {
                 if (!start[k].empty() && !lines_[k]->restore_state(start[k].data(), start[k].size(), error)) return false;
@@ -749,7 +749,7 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
                                     std::to_string(node.point.id) + ")"
                               : (node.body ? "free body " : "free point ") + std::to_string(node.point.id)) +
             ": " + why + "; also in " +
-            std::to_string(kMaxSubsteps) + " substeps of " + std::to_string(h / kMaxSubsteps) +
+            std::to_string(kMaxSplitSubsteps) + " substeps of " + std::to_string(h / kMaxSplitSubsteps) +
             " s: take a shorter communication step";
     return false;
 }

@@ -168,9 +168,12 @@ public:
     static constexpr int kNodeIterations = 20, kJacobianRefreshes = 4;
     static constexpr double kMaxCorrection = 0.2;
     static constexpr double kMaxTurn = 0.2;  // [rad] a free body turns by at most this per Newton step
-    // The free nodes' step is split into at most this many substeps where it does not converge in one,
-    // or where its estimated error in the nodes' positions exceeds kNodeStepError [m].
+    // The free nodes' step is split into at most kMaxSubsteps substeps where its estimated error in the nodes'
+    // positions exceeds kNodeStepError [m], and into 2, 4, ... up to kMaxSplitSubsteps where its coupled iteration
+    // does not converge (a snap: two taut lines let go at a massless point move it metres within hundredths of a
+    // second; docs/line_failure.md).
     static constexpr int kMaxSubsteps = 16;
+    static constexpr int kMaxSplitSubsteps = 256;
     static constexpr double kNodeStepError = 0.01;
     // A break by tension is located within its step in at most this many trials of the step's piece.
     static constexpr int kLocateIterations = 40;

@@ -461,8 +461,8 @@ TEST(LineFailure, StatesAcrossABreakAtAnAnchorRestoreBitForBit) {
 
 // Two lines listed together stay joined at the new free point: lines 1 and 2 both on point 4 detach at 1.5 s; from
 // then on their ends pull on each other alone (equal tensions at the point, the massless point's balance) and the
-// platform carries line 3 only. The two taut lines snap together at a point without mass: in steps of 0.05 s (at
-// 0.5 s the free point's iteration does not converge, and the step fails asking for a shorter one).
+// platform carries line 3 only. The two taut lines snap together at a point without mass (in steps of 0.05 s here;
+// of 0.5 s and 1 s below).
 TEST(LineFailure, LinesThatBreakTogetherStayJoinedAtTheirFreePoint) {
     std::string deck = spread("1  4  1,2  1.5  0\n");
     const std::string line2 = "2         main        2         5";
@@ -670,4 +670,43 @@ TEST(LineFailure, ASystemToldToStopAtBreaksEndsTheStepAtTheBreak) {
     EXPECT_NEAR(s.time(), 3.0, 1e-12) << "the step's end (to round-off), not earlier";
     EXPECT_EQ(s.outputs().mooringLine[1].broken, 1.0);
     EXPECT_EQ(s.outputs().mooringLine[1].breakTime, 3.0);
+}
+
+
+// The same in communication steps of 0.5 s and 1 s: the step of the snap is split into up to kMaxSplitSubsteps
+// substeps where the point's coupled iteration does not converge in fewer (32 at 0.5 s), and the run agrees with the
+// run in steps of 0.05 s at the common points, within the free nodes' own error control: kNodeStepError in the point's
+// position, times the chain's axial stiffness at its end (EA over an element's length) in tension.
+TEST(LineFailure, LinesThatBreakTogetherRunInStepsOfHalfASecondAndOfOne) {
+    std::string deck = spread("1  4  1,2  1.5  0\n");
+    const std::string line2 = "2         main        2         5";
+    deck.replace(deck.find(line2), line2.size(), "2         main        2         4");
+    auto run = [&](double h) {
+        Built b = build(deck);
+        uc::MooringSystem& s = *b.system;
+        std::string error;
+        std::vector<double> T;  // lines 1 and 2 at 1, 2, 3, 4 s
+        EXPECT_TRUE(s.initialize(0.0, platform_at(0, 0, 0, 0), error)) << error;
+        const int n = static_cast<int>(std::lround(4.0 / h)), every = static_cast<int>(std::lround(1.0 / h));
+        for (int k = 1; k <= n; ++k) {
+            const bool stepped = s.step((k - 1) * h, h, platform_at(0, 0, 0, 0), error);
+            EXPECT_TRUE(stepped) << error << " at t = " << (k - 1) * h << " in steps of " << h << " s";
+            if (!stepped) break;
+            if (k % every == 0) {
+                T.push_back(s.outputs().mooringLine[0].fairleadTension);
+                T.push_back(s.outputs().mooringLine[1].fairleadTension);
+            }
+        }
+        return T;
+    };
+    const std::vector<double> fine = run(0.05);
+    const double tolerance = uc::MooringSystem::kNodeStepError * 7.536e8 / (835.35 / 10);  // [N]
+    for (double h : {0.5, 1.0}) {
+        const std::vector<double> T = run(h);
+        ASSERT_EQ(T.size(), fine.size()) << "h = " << h;
+        for (size_t i = 0; i < T.size(); ++i) {
+            EXPECT_NEAR(T[i], fine[i], tolerance) << "h = " << h << ", line " << i % 2 + 1 << " at " << i / 2 + 1 << " s";
+            std::printf("h = %g s: line %zu at %zu s: %.1f N (0.05 s: %.1f N)\n", h, i % 2 + 1, i / 2 + 1, T[i], fine[i]);
+        }
+    }
 }
