@@ -26,6 +26,8 @@ typedef struct UCInstance {
     double time;                 /* the FMU's own time: startTime, then the end of the last step */
     double lastSuccessfulTime;
     int terminateRequested;      /* fmi2GetBooleanStatus(fmi2Terminated) */
+    int earlyReturnAllowed;      /* FMI 3.0's earlyReturnAllowed: a step ends at a line failure's break within it
+                                    (0 in FMI 2.0: every step reaches its communication point) */
 
     UCParams params;             /* as set through the FMI (lineFile is a path) */
     UCParams coreParams;         /* what the core was created with: params with lineFile's line applied */

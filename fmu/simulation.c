@@ -155,6 +155,7 @@ fmi2Status uc_sim_do_step(UCInstance* inst, double tc, double h) {
     /* The FMU's own time, not tc: the master's tc carries its round-off (FMI 2.0 section 4.2.4). */
     const UCInputChecks* checks = &inst->inputChecks;
     inst->inputs.stepBudget = checks->implausible ? UC_IMPLAUSIBLE_STEP_BUDGET : 0;
+    uc_set_stop_at_breaks(inst->cable, inst->earlyReturnAllowed);
     if (uc_do_step(inst->cable, inst->time, h, &inst->inputs, inst->msg, sizeof inst->msg) != 0) {
         if (checks->implausible) {
             uc_log_status(&inst->log, fmi2Error, "fmi2DoStep: step from t = %.17g to %.17g failed with %s = %.6g %s "

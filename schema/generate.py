@@ -735,7 +735,8 @@ def fmi3_xml_text(data, entries) -> str:
             "canGetAndSetFMUState": cs["canGetAndSetFMUstate"], "canSerializeFMUState": cs["canSerializeFMUstate"],
             "providesDirectionalDerivatives": cs["providesDirectionalDerivative"],
             "canHandleVariableCommunicationStepSize": cs["canHandleVariableCommunicationStepSize"],
-            "maxOutputDerivativeOrder": 0, "hasEventMode": False, "canReturnEarlyAfterIntermediateUpdate": False}
+            "maxOutputDerivativeOrder": 0, "mightReturnEarlyFromDoStep": True, "hasEventMode": False,
+            "canReturnEarlyAfterIntermediateUpdate": False}
     out += xml_capabilities(caps) + xml_common_elements(data)
     out.append("  <ModelVariables>")
     out.append(f'    <Float64 name="time" valueReference="{FMI3_TIME_VR}" causality="independent" '

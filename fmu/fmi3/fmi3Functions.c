@@ -9,6 +9,7 @@
  * co-simulation FMU without event mode, clocks or the other integer types does not provide are present
  * (FMI 3.0 requires it) and return fmi3Error with a logged message.
  */
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -106,8 +107,8 @@ FMI3_EXPORT fmi3Instance fmi3InstantiateCoSimulation(
     const fmi3ValueReference requiredIntermediateVariables[], size_t nRequiredIntermediateVariables,
     fmi3InstanceEnvironment instanceEnvironment, fmi3LogMessageCallback logMessage,
     fmi3IntermediateUpdateCallback intermediateUpdate) {
-    (void)earlyReturnAllowed, (void)requiredIntermediateVariables, (void)nRequiredIntermediateVariables;
-    (void)intermediateUpdate; /* never returns early, no intermediate variables */
+    (void)requiredIntermediateVariables, (void)nRequiredIntermediateVariables;
+    (void)intermediateUpdate; /* no intermediate variables: an early return (at a line failure's break) only */
     UC3Instance* self = calloc(1, sizeof *self);
     if (self == NULL) return NULL;
     self->logMessage = logMessage;
@@ -128,6 +129,7 @@ FMI3_EXPORT fmi3Instance fmi3InstantiateCoSimulation(
         free(self);
         return NULL;
     }
+    self->inner->earlyReturnAllowed = earlyReturnAllowed ? 1 : 0;
     return self;
 }
 
@@ -191,9 +193,13 @@ FMI3_EXPORT fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentComm
     const fmi2Status status = fmi2DoStep(inst, currentCommunicationPoint, communicationStepSize,
                                          noSetFMUStatePriorToCurrentPoint);
     *eventHandlingNeeded = false;
-    *earlyReturn = false;
     *terminateSimulation = status == fmi2Discard && inst->terminateRequested;
     *lastSuccessfulTime = status <= fmi2Warning ? inst->time : inst->lastSuccessfulTime;
+    /* with earlyReturnAllowed a step ends at a line failure's break within it: the FMU's time is then the break's,
+     * short of the communication point (docs/fmi3.md) */
+    *earlyReturn = status <= fmi2Warning && inst->earlyReturnAllowed &&
+                   inst->time < currentCommunicationPoint + communicationStepSize -
+                                    1e-12 * fmax(1.0, fabs(currentCommunicationPoint + communicationStepSize));
     return (fmi3Status)status;
 }
 

@@ -34,8 +34,9 @@ A scene file holds (docs/scenes.md lists every key with its type, unit and defau
 
     [failure]                 # optional: a line of a mooring system breaks (docs/line_failure.md): the deck
     line = 1                  # line (ID), the deck point it detaches from (point = 0 or left out: its
-    time = 120.0              # fairlead), at a time [s] and/or a tension [N]; sets failure.line/point/time/
-                              # tension, and records line[k].broken and line[k].breakTime
+    time = 120.0              # fairlead; or position = metres along it from its anchor, where it parts), at
+                              # a time [s] and/or a tension [N]; sets failure.line/point/time/tension/position,
+                              # and records line[k].broken and line[k].breakTime
 
     [winch]                   # optional: the winch's command in stages (sets winchMode 1 or 2)
     ramp = 10.0               # [s] from one stage's value to the next; a rate starts from rest

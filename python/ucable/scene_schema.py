@@ -21,7 +21,7 @@ from .variables import VARIABLES
 TOP_KEYS = ("title", "duration", "step", "outputs", "record_shape", "parameters", "inputs", "tow", "winch", "body",
             "failure", "name")
 # [failure]: a line failure of a mooring system (docs/line_failure.md), mapped onto the failure.* parameters
-FAILURE_KEYS = ("line", "point", "time", "tension")
+FAILURE_KEYS = ("line", "point", "time", "tension", "position")
 TOW_KEYS = ("start", "speed_kn", "heading_deg", "surge", "heave")
 SURGE_KEYS = ("amplitude", "period", "direction", "ramp")
 HEAVE_KEYS = ("amplitude", "period", "ramp")
@@ -266,9 +266,10 @@ def check_dotted_keys(c: Checker, table: dict, where: str) -> None:
 
 def check_failure(c: Checker, failure: dict, parameters: dict) -> dict:
     """[failure]: the deck line (its ID) whose end detaches, the deck point it detaches from (0 or left out: its
-    fairlead), the time [s] and/or the tension [N] at which it does; the failure.* parameters they set."""
+    fairlead) or the position along it where it parts [m from its anchor], the time [s] and/or the tension [N] at
+    which it does; the failure.* parameters they set."""
     c.keys(failure, FAILURE_KEYS, "[failure]", required=("line",))
-    for name in ("failure.line", "failure.point", "failure.time", "failure.tension"):
+    for name in ("failure.line", "failure.point", "failure.time", "failure.tension", "failure.position"):
         if name in parameters:
             c.fail(f"[parameters] {name}", "given by [failure] as well: use one of them")
     line, point = failure["line"], failure.get("point", 0)
@@ -281,6 +282,10 @@ def check_failure(c: Checker, failure: dict, parameters: dict) -> dict:
     if time == 0.0 and tension == 0.0:
         c.fail("[failure]", "give a time [s], a tension [N] or both (the first reached breaks the line)")
     values = {"line": line, "point": point, "time": time, "tension": tension}
+    if "position" in failure:  # along the line, not at a point
+        values["position"] = c.number(failure["position"], "[failure] position", nonnegative=True)
+        if point != 0:
+            c.fail("[failure] position", "a break along the line is at its position, not at a point: give one of them")
     return {f"failure.{key}": c.parameter(f"failure.{key}", value, f"[failure] {key}") for key, value in values.items()}
 
 

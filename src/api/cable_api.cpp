@@ -146,6 +146,10 @@ extern "C" int uc_end_inputs(const UCCable* c) {
     return (e.external ? UC_END_INPUTS_EXTERNAL : 0) | (e.driven ? UC_END_INPUTS_DRIVEN : 0);
 }
 
+extern "C" void uc_set_stop_at_breaks(UCCable* c, int on) {
+    if (c) c->simulation->set_stop_at_breaks(on != 0);
+}
+
 extern "C" double uc_time(const UCCable* c) {
     return c ? c->simulation->time() : 0.0;
 }

@@ -97,6 +97,11 @@ int uc_initialize(UCCable* c, double t0, const UCInputs* in, char* msg, size_t m
  * last two tow velocity inputs over the last step size (0 on the first step). */
 int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, char* msg, size_t msgSize);
 
+/* on != 0: a mooring system's uc_do_step that holds a line failure's break strictly inside it ends there (FMI
+ * 3.0's early return): uc_time is then the break's time, short of t + h, the state the state at the break, and
+ * the next uc_do_step goes on from there. 0 (the default): every step reaches t + h. A line never breaks. */
+void uc_set_stop_at_breaks(UCCable* c, int on);
+
 /* The interface derivatives over the next communication step (taken as long as the last one) in the
  * direction seed: out[i] = sum_j d output_i(t + h) / d input_j(t) seed[j] for the outputs towForce x, y, z,
  * endForce x, y, z (i = 0..5) and the inputs tow x, y, z, vx, vy, vz (j = 0..5), end x, y, z, vx, vy, vz

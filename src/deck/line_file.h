@@ -202,6 +202,7 @@ struct MooringFailure {
     std::vector<End> ends;
     double time = 0.0;     // [s] (0: not by time)
     double tension = 0.0;  // [N] (0: not by tension)
+    double position = 0.0; // [m] > 0: a break along a line, this far from its anchor (point 0; MooringSystem)
 };
 
 struct MooringDeck {

@@ -409,6 +409,7 @@ bool mooring_line_params(const MooringDeck& deck, int k, const UCParams& base, U
     p.failurePoint = 0;
     p.failureTime = 0.0;
     p.failureTension = 0.0;
+    p.failurePosition = 0.0;
     return true;
 }
 

@@ -114,35 +114,7 @@ bool MooringSystem::build(std::string& error) {
                 "(winchMode 0)";
         return false;
     }
-    failures_ = deck_.failures;
-    if (base_.failureLine > 0) {  // the failure.* parameters' failure, after the deck's
-        char text[160];
-        std::snprintf(text, sizeof text, "failure.line = %d, failure.point = %d: ", base_.failureLine, base_.failurePoint);
-        if (base_.failureLine > deck_.deckLines) {
-            error = text + std::string("the deck has ") + std::to_string(deck_.deckLines) + " lines";
-            return false;
-        }
-        if (base_.failureTime == 0.0 && base_.failureTension == 0.0) {
-            error = text + std::string("failure.time and failure.tension are both 0: the line would never break "
-                                       "(give a time in s, a tension in N, or both: the first reached breaks it)");
-            return false;
-        }
-        MooringFailure f;
-        f.id = static_cast<int>(failures_.size()) + 1;
-        f.time = base_.failureTime;
-        f.tension = base_.failureTension;
-        if (!resolve_failure(deck_, base_.failurePoint, {base_.failureLine - 1}, f, error)) {
-            error = text + error;
-            return false;
-        }
-        failures_.push_back(f);
-    }
-    for (const MooringFailure& f : failures_) {  // an anchor that detaches: its line's far end is driven
-        for (const MooringFailure::End& e : f.ends) {
-            MooringDeckLine& l = deck_.lines[e.line];
-            if (e.end == 1 && !l.farFree && l.far.kind == MooringEnd::Kind::Fixed) l.farDetaches = true;
-        }
-    }
+    if (!build_failures(error)) return false;
     for (size_t k = 0; k < deck_.lines.size(); ++k) {
         UCParams p;
         if (!mooring_line_params(deck_, static_cast<int>(k), base_, p, error)) return false;
@@ -173,7 +145,6 @@ bool MooringSystem::build(std::string& error) {
         hangingWeight_.push_back(weight);
         describe_line(static_cast<int>(k), p);
     }
-    failureState_.assign(failures_.size(), FailureState{0.0, 0.0, 0.0});
     deck0_ = deck_;
     describe_nodes();
     references_.assign(static_cast<size_t>(deck_.bodies), DrivenEnd());
@@ -256,17 +227,7 @@ void MooringSystem::describe_nodes() {
         three("CdA [m2]", n.CdA, 6);
         three("Ca [-]", n.Ca);
     }
-    for (const MooringFailure& f : failures_) {
-        const std::string prefix = "failure " + std::to_string(f.id) +
-                                   (f.row > 0 ? " (deck row " + std::to_string(f.row) + "): " : " (failure.*): ");
-        add(prefix + "point", f.point);
-        add(prefix + "FailTime [s]", f.time);
-        add(prefix + "FailTen [N]", f.tension);
-        for (const MooringFailure::End& e : f.ends) {
-            add(prefix + "line", e.deckLine + 1);
-            add(prefix + "end", e.end);
-        }
-    }
+    describe_failures();
 }
 
 MooringSystem::Motion MooringSystem::end_motion(const MooringEnd& end, const UCInputs& in) const {
@@ -387,12 +348,7 @@ bool MooringSystem::check_inputs(const UCInputs& in, std::string& error) {
 bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error) {
     ++stamp_;
     if (!check_inputs(in, error)) return false;
-    if (failure_node(static_cast<int>(failures_.size())) > static_cast<int>(deck0_.nodes.size())) {
-        // initialized again after a break: the deck's lines and nodes as read
-        failureState_.assign(failures_.size(), FailureState{0.0, 0.0, 0.0});
-        motion_.resize(deck0_.nodes.size());
-        apply_failures();
-    }
+    undo_breaks();  // initialized again after a break: the deck's lines and nodes as read
     const LineEnvironment env = line_environment(in);
     for (size_t k = 0; k < lines_.size(); ++k) {
         if (on_free_node(deck_.lines[k])) continue;  // initialized at the nodes' equilibrium
@@ -435,184 +391,20 @@ bool MooringSystem::step(double t, double h, const UCInputs& in, std::string& er
     ++stamp_;
     if (!check_inputs(in, error)) return false;
     failureEvaluations_ = 0;
-    if (failures_pending() ? !step_with_failures(t, h, in, error) : !advance(t, h, -1.0, in, error)) return false;
+    double taken = h;  // (short of h where the step stops at a break)
+    if (failures_pending() ? !step_with_failures(t, h, in, taken, error) : !advance(t, h, -1.0, in, error)) return false;
     for (int b = 0; b < deck_.bodies; ++b) {
         const UCCoupledBody& body = in.coupledBody[b];
         const bool given = in.bodyAccelerationGiven[b] != 0;
         Vec3 a;
-        const TowTrajectory traj = references_[b].next(t, h, lastStep_, vec3(body.position), vec3(body.velocity),
+        const TowTrajectory traj = references_[b].next(t, taken, lastStep_, vec3(body.position), vec3(body.velocity),
                                                        vec3(in.bodyAcceleration + 6 * b), given, a);
         references_[b].advance(traj, vec3(body.velocity), a, given);
     }
-    lastStep_ = h;
+    lastStep_ = taken;
     lastInputs_ = in;
     update_outputs();
     return true;
-}
-
-// ------------------------------------------------------------------------------------------- line failures
-// (docs/line_failure.md)
-
-double MooringSystem::failure_tension(int f) const {
-    double tension = 0.0;
-    for (const MooringFailure::End& e : failures_[f].ends) {
-        const UCOutputs& o = lines_[e.line]->outputs();
-        tension = std::max(tension, e.end == 0 ? o.towTension : o.endTension);
-    }
-    return tension;
-}
-
-double MooringSystem::failure_tolerance(int f) const {
-    double tolerance = 0.0;
-    for (const MooringFailure::End& e : failures_[f].ends) {
-        const CableSimulation& line = *lines_[e.line];
-        tolerance = std::max(tolerance, line.model().params().tensionTolerance * line.outputs().tensionScale);
-    }
-    return tolerance;
-}
-
-bool MooringSystem::failures_pending() const {
-    for (const FailureState& s : failureState_)
-        if (s.broken == 0.0) return true;
-    return false;
-}
-
-int MooringSystem::failure_node(int f) const {
-    int n = static_cast<int>(deck0_.nodes.size());
-    for (int g = 0; g < f; ++g) n += failureState_[g].broken != 0.0 ? 1 : 0;
-    return n;
-}
-
-void MooringSystem::apply_failures() {
-    deck_.lines = deck0_.lines;
-    deck_.nodes = deck0_.nodes;
-    for (size_t f = 0; f < failures_.size(); ++f) {
-        if (failureState_[f].broken == 0.0) continue;
-        MooringNode node;  // no mass, volume or drag: one line's bare end, or the lines joined
-        node.failure = failures_[f].id;
-        node.point.id = failures_[f].point;
-        const int n = static_cast<int>(deck_.nodes.size());
-        deck_.nodes.push_back(node);
-        for (const MooringFailure::End& e : failures_[f].ends) {
-            MooringEnd& end = e.end == 0 ? deck_.lines[e.line].fairlead : deck_.lines[e.line].far;
-            end = MooringEnd();
-            end.kind = MooringEnd::Kind::Node;
-            end.node = n;
-        }
-    }
-    nodeOffset_.clear();
-    nodeUnknowns_ = 0;
-    for (const MooringNode& node : deck_.nodes) {
-        nodeOffset_.push_back(nodeUnknowns_);
-        nodeUnknowns_ += node.body ? 6 : 3;
-    }
-}
-
-void MooringSystem::break_failure(int f, double t) {
-    const MooringFailure& fail = failures_[f];
-    // the new node starts where its ends stand and move (they share the point)
-    const MooringFailure::End& first = fail.ends[0];
-    const DrivenEndState& at = lines_[first.line]->driven_end(first.end == 1);
-    FreeNodeMotion m{};
-    put(m.position, at.p());
-    put(m.velocity, at.v());
-    put(m.acceleration, at.a());
-    put(m.inputPosition, at.p());
-    put(m.inputVelocity, at.v());
-    put(m.inputAcceleration, at.a());
-    put_rotation(m, Mat3::Identity());
-    const double tension = failure_tension(f);
-    const int n = failure_node(f);
-    failureState_[f] = FailureState{1.0, t, tension};
-    motion_.insert(motion_.begin() + n, m);
-    apply_failures();
-    std::string lines;
-    for (const MooringFailure::End& e : fail.ends) lines += (lines.empty() ? "" : ", ") + std::to_string(e.deckLine + 1);
-    char text[400];
-    std::snprintf(text, sizeof text, "line failure %d at t = %.9g s: line%s %s detached from point %d, tension there "
-                  "%.6g N (FailTime %.6g s, FailTen %.6g N); %s on a massless free point", fail.id, t,
-                  fail.ends.size() > 1 ? "s" : "", lines.c_str(), fail.point, tension, fail.time, fail.tension,
-                  fail.ends.size() > 1 ? "they go on joined" : "its end goes on bare");
-    event_ += (event_.empty() ? "" : "; ") + std::string(text);
-}
-
-bool MooringSystem::step_with_failures(double t, double h, const UCInputs& in, std::string& error) {
-    const double eps = 1e-12 * std::max(1.0, std::abs(t + h));  // times closer than this are one
-    // how far the pending failures by tension are from their thresholds, the largest, in their tolerances
-    auto crossing = [&]() {
-        double g = -HUGE_VAL;
-        for (size_t f = 0; f < failures_.size(); ++f) {
-            if (failureState_[f].broken != 0.0 || failures_[f].tension <= 0.0) continue;
-            const int i = static_cast<int>(f);
-            g = std::max(g, (failure_tension(i) - failures_[f].tension) / failure_tolerance(i));
-        }
-        return g;
-    };
-    double done = 0.0;  // of h
-    while (true) {
-        // what breaks where the piece starts: its time reached, its tension at its threshold within the tolerance
-        for (size_t f = 0; f < failures_.size(); ++f) {
-            if (failureState_[f].broken != 0.0) continue;
-            const MooringFailure& fail = failures_[f];
-            const int i = static_cast<int>(f);
-            const bool byTime = fail.time > 0.0 && fail.time <= t + done + eps;
-            if (byTime || (fail.tension > 0.0 && failure_tension(i) >= fail.tension - failure_tolerance(i)))
-                break_failure(i, byTime && fail.time >= t + done - eps ? fail.time : t + done);  // its time exactly
-        }
-        if (done >= h) return true;
-        if (!failures_pending()) return advance(t + done, h - done, done > 0.0 ? done : -1.0, in, error);
-        double end = h;  // the piece ends at the first failure's time within the step
-        for (size_t f = 0; f < failures_.size(); ++f) {
-            const double time = failures_[f].time - t;
-            if (failureState_[f].broken == 0.0 && failures_[f].time > 0.0 && time < end) end = time;
-        }
-        if (end > h - eps) end = h;
-        const double offset = done > 0.0 || end < h ? done : -1.0;
-        const double g0 = crossing();
-        const bool byTension = g0 > -HUGE_VAL;
-        if (byTension) {  // the piece's start, to locate a break within it
-            failureBuffer_.resize(state_size());
-            save_state(failureBuffer_.data());
-        }
-        if (!advance(t + done, end - done, offset, in, error)) return false;
-        double g = byTension ? crossing() : -HUGE_VAL;
-        if (g <= 1.0) {  // no threshold passed by more than the tolerance: the piece stands
-            done = end;
-            continue;
-        }
-        // A threshold was passed within the piece: the time where the tension reaches it, by regula falsi
-        // (Illinois) on the piece's length, each trial the piece taken anew from its start.
-        double a = 0.0, ga = g0, b = end - done, gb = g, tau = b;
-        int side = 0;
-        for (int it = 0; it < kLocateIterations && std::abs(g) > 1.0; ++it) {
-            const double span = b - a;
-            tau = std::clamp((a * gb - b * ga) / (gb - ga), a + 1e-3 * span, b - 1e-3 * span);
-            if (!restore_state(failureBuffer_.data(), failureBuffer_.size(), error) ||
-                !advance(t + done, tau, done, in, error))
-                return false;
-            ++failureEvaluations_;
-            g = crossing();
-            if (g > 0.0) {
-                b = tau;
-                gb = g;
-                if (side > 0) ga *= 0.5;
-                side = 1;
-            } else {
-                a = tau;
-                ga = g;
-                if (side < 0) gb *= 0.5;
-                side = -1;
-            }
-        }
-        if (std::abs(g) > 1.0) {
-            char text[300];
-            std::snprintf(text, sizeof text, "the break by tension within the step from t = %.9g s was located to "
-                          "%.3g of its tolerance after %d trials (at t = %.9g s)", t + done, g, kLocateIterations,
-                          t + done + tau);
-            event_ += (event_.empty() ? "" : "; ") + std::string(text);
-        }
-        done += tau;  // the loop's start breaks what reached its threshold there
-    }
 }
 
 std::string MooringSystem::take_event() {
@@ -666,15 +458,8 @@ void MooringSystem::update_outputs() {
             }
         }
     }
-    for (size_t f = 0; f < failures_.size(); ++f) {
-        if (failureState_[f].broken == 0.0) continue;
-        for (const MooringFailure::End& e : failures_[f].ends) {
-            UCMooringLine& out = outputs_.mooringLine[e.deckLine];
-            if (out.broken != 0.0 && out.breakTime <= failureState_[f].time) continue;  // broke before, at its other end
-            out.broken = 1.0;
-            out.breakTime = failureState_[f].time;
-        }
-    }
+    split_outputs();
+    failure_outputs();
     for (size_t n = 0; n < motion_.size(); ++n) {
         const int id = deck_.nodes[n].point.id;
         if (deck_.nodes[n].failure > 0) continue;  // a failure's free end: no output of its own
@@ -926,7 +711,7 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
     std::string why;
     int worst = 0;
     double estimate = 0.0;  // of the step in one piece where it is split for its error
-    for (int pieces = 1; pieces <= kMaxSubsteps; pieces *= 2) {
+    for (int pieces = 1; pieces <= kMaxSplitSubsteps; pieces *= 2) {
         if (pieces > 1) {  // back to the step's start
             for (size_t k = 0; k < lines_.size(); ++k) {
                 if (!start[k].empty() && !lines_[k]->restore_state(start[k].data(), start[k].size(), error)) return false;
@@ -967,7 +752,7 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
                                     std::to_string(node.point.id) + ")"
                               : (node.body ? "free body " : "free point ") + std::to_string(node.point.id)) +
             ": " + why + "; also in " +
-            std::to_string(kMaxSubsteps) + " substeps of " + std::to_string(h / kMaxSubsteps) +
+            std::to_string(kMaxSplitSubsteps) + " substeps of " + std::to_string(h / kMaxSplitSubsteps) +
             " s: take a shorter communication step";
     return false;
 }
@@ -1337,8 +1122,7 @@ void MooringSystem::save_state(void* buffer) {
     out += sizeof outputs_;
     std::memcpy(out, &lastInputs_, sizeof lastInputs_);
     out += sizeof lastInputs_;
-    if (!failureState_.empty()) std::memcpy(out, failureState_.data(), failureState_.size() * sizeof(FailureState));
-    out += failureState_.size() * sizeof(FailureState);
+    out = save_failures(out);
     if (!motion_.empty()) std::memcpy(out, motion_.data(), motion_.size() * sizeof(FreeNodeMotion));
     out += motion_.size() * sizeof(FreeNodeMotion);
     for (auto& line : lines_) {
@@ -1394,12 +1178,10 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     const size_t failureBytes = failureState_.size() * sizeof(FailureState);
     const size_t failureAt = sizeof header + description_.size() * sizeof(double) +
                              references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs);
-    std::vector<FailureState> failureState(failureState_.size());
-    size_t nodes = deck0_.nodes.size();
-    if (header.failures == static_cast<std::int32_t>(failureState_.size()) && size >= failureAt + failureBytes) {
-        if (failureBytes) std::memcpy(failureState.data(), in + failureAt, failureBytes);
-        for (const FailureState& s : failureState) nodes += s.broken != 0.0 ? 1 : 0;
-    }
+    size_t nodes = 0;
+    const std::vector<FailureState> failureState = saved_failures(
+        in + failureAt, header.failures == static_cast<std::int32_t>(failureState_.size()) && size >= failureAt + failureBytes,
+        nodes);
     if (header.lines != static_cast<std::int32_t>(lines_.size()) ||
         header.bodies != static_cast<std::int32_t>(references_.size()) ||
         header.failures != static_cast<std::int32_t>(failureState_.size()) ||

@@ -96,6 +96,8 @@ public:
     bool initialize(double t0, const UCInputs& in, std::string& error) override;
     bool step(double t, double h, const UCInputs& in, std::string& error) override;
     std::string take_event() override;
+    // A step with a break strictly inside it ends at the break (time() then the break's), the state there.
+    void set_stop_at_breaks(bool stop) override { stopAtBreaks_ = stop; }
 
     double time() const override { return lines_.empty() ? 0.0 : lines_[0]->time(); }
     // The system's outputs: the single-line outputs are line 1's, line[k].* each deck line's.
@@ -166,9 +168,12 @@ public:
     static constexpr int kNodeIterations = 20, kJacobianRefreshes = 4;
     static constexpr double kMaxCorrection = 0.2;
     static constexpr double kMaxTurn = 0.2;  // [rad] a free body turns by at most this per Newton step
-    // The free nodes' step is split into at most this many substeps where it does not converge in one,
-    // or where its estimated error in the nodes' positions exceeds kNodeStepError [m].
+    // The free nodes' step is split into at most kMaxSubsteps substeps where its estimated error in the nodes'
+    // positions exceeds kNodeStepError [m], and into 2, 4, ... up to kMaxSplitSubsteps where its coupled iteration
+    // does not converge (a snap: two taut lines let go at a massless point move it metres within hundredths of a
+    // second; docs/line_failure.md).
     static constexpr int kMaxSubsteps = 16;
+    static constexpr int kMaxSplitSubsteps = 256;
     static constexpr double kNodeStepError = 0.01;
     // A break by tension is located within its step in at most this many trials of the step's piece.
     static constexpr int kLocateIterations = 40;
@@ -268,8 +273,29 @@ private:
     bool step_nodes(double t, double h, const UCInputs& in, std::string& error, double offset = -1.0);
     // Every line and node over h from their present time; offset as step_nodes'.
     bool advance(double t, double h, double offset, const UCInputs& in, std::string& error);
+    // --- line failures (src/system/failure.cpp, docs/line_failure.md) ---
+    // failures_ from the deck's rows and the failure.* parameters (false: error names the refusal), their states,
+    // and the far ends of the lines whose anchor detaches marked (built driven).
+    bool build_failures(std::string& error);
+    void describe_failures();  // appends each failure's values to the description
+    void failure_outputs();    // line[k].broken and line[k].breakTime of the broken failures' lines
+    // The failures' states written at out (returns the place after them), and read from at (present: the state
+    // holds this system's failures; else none is broken) with the free nodes they and the deck make into nodes.
+    unsigned char* save_failures(unsigned char* out) const;
+    std::vector<FailureState> saved_failures(const unsigned char* at, bool present, size_t& nodes) const;
+    void undo_breaks();  // no failure broken (the deck's lines and nodes as read)
+    // A break along a line (failure.position): system line k cut at `position` [m] of unstretched length from its
+    // far end into two lines of its type joined at a new massless free node, the upper (line k, fairlead to the
+    // node) and the lower (appended, node to the far end); f detaches the lower one's top from the node.
+    bool split_line(int k, double position, MooringFailure& f, std::string& error);
+    struct SplitLine {
+        int upper, lower;  // the system's lines (upper: the deck line's own index; lower: after the deck's)
+    };
+    std::vector<SplitLine> splits_;
+    void split_outputs();  // line[k].* of a split deck line: the two parts' as one line's
     // A communication step with failures pending: in pieces that end at each break (docs/line_failure.md).
-    bool step_with_failures(double t, double h, const UCInputs& in, std::string& error);
+    // taken: the step's length taken (h, or to a break within it where the step stops at breaks).
+    bool step_with_failures(double t, double h, const UCInputs& in, double& taken, std::string& error);
     // Failure f breaks now, at time t: its lines' ends go on a new free node that starts where they are.
     void break_failure(int f, double t);
     // The deck's lines and nodes as the failures' states make them (deck0_ with the broken failures' ends on
@@ -292,6 +318,7 @@ private:
     std::vector<MooringFailure> failures_;
     // --- state (with motion_ below) ---
     std::vector<FailureState> failureState_;
+    bool stopAtBreaks_ = false;  // (a setting of the importer's, not of the state)
     int failureEvaluations_ = 0;
     std::vector<unsigned char> failureBuffer_;  // the system's state at a piece's start (event location)
     std::vector<std::unique_ptr<CableSimulation>> lines_;

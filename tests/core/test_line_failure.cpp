@@ -312,6 +312,22 @@ double tension_at(const uc::MooringSystem& s, int point) {
     return point == 4 ? l.fairleadTension : l.anchorTension;
 }
 
+// The system initialized with the platform pulled, stepped in steps of h until its failure 0 breaks (by tension at
+// threshold): before the break its tension at the point stays below the threshold and its tolerance.
+Break step_to_break(uc::MooringSystem& s, double h, double threshold) {
+    std::string error;
+    EXPECT_TRUE(s.initialize(0.0, pulled(0.0), error)) << error;
+    double t = 0.0;
+    while (s.failure_state(0).broken == 0.0 && t < 60.0) {
+        EXPECT_TRUE(s.step(t, h, pulled(t), error)) << error;
+        t += h;
+        if (s.failure_state(0).broken == 0.0) {
+            EXPECT_LT(s.failure_tension(0), threshold + s.failure_tolerance(0));
+        }
+    }
+    return {s.failure_state(0).time, s.failure_state(0).tension, s.failure_tolerance(0), threshold};
+}
+
 Break break_by_tension(double h, double factor = 1.25, int point = 4) {
     Built probe = build(spread(""));
     std::string error;
@@ -320,17 +336,7 @@ Break break_by_tension(double h, double factor = 1.25, int point = 4) {
     char row[80];
     std::snprintf(row, sizeof row, "1  %d  1  0  %.17g\n", point, threshold);
     Built b = build(spread(row));
-    uc::MooringSystem& s = *b.system;
-    EXPECT_TRUE(s.initialize(0.0, pulled(0.0), error)) << error;
-    double t = 0.0;
-    while (s.failure_state(0).broken == 0.0 && t < 60.0) {
-        EXPECT_TRUE(s.step(t, h, pulled(t), error)) << error;
-        t += h;
-        if (s.failure_state(0).broken == 0.0) {
-            EXPECT_LT(tension_at(s, point), threshold + s.failure_tolerance(0));
-        }
-    }
-    return {s.failure_state(0).time, s.failure_state(0).tension, s.failure_tolerance(0), threshold};
+    return step_to_break(*b.system, h, threshold);
 }
 
 }  // namespace
@@ -354,16 +360,24 @@ TEST(LineFailure, ALineBreaksWhereItsTensionReachesTheThresholdWhateverTheStep) 
 
 // At the anchor as at the fairlead: the step ends where line 1's anchor tension reaches the threshold, within the
 // integrator's tolerance in tension, at the time of a run with a fine step within that tolerance in time.
-TEST(LineFailure, AnAnchorLetsGoWhereItsTensionReachesTheThreshold) {
-    const Break fine = break_by_tension(0.1, 1.25, 1);
-    const Break b = break_by_tension(0.5, 1.25, 1);
+namespace {
+
+// A break by tension at `factor` times the initial tension, located in steps of 0.5 s (b) and 0.1 s (fine): the tension
+// at each within the tolerance of the threshold, the times within the tolerance in time (at the mean rate of rise).
+void expect_located(const Break& fine, const Break& b, double factor, const char* where) {
     ASSERT_GT(fine.time, 1.0);
     EXPECT_LE(std::abs(fine.tension - fine.threshold), fine.tolerance);
     EXPECT_LE(std::abs(b.tension - b.threshold), b.tolerance);
-    const double rate = (fine.threshold - fine.threshold / 1.25) / fine.time;
+    const double rate = (fine.threshold - fine.threshold / factor) / fine.time;
     EXPECT_LE(std::abs(b.time - fine.time), 2.0 * b.tolerance / rate + 1e-3) << b.time << " against " << fine.time;
-    std::printf("anchor: h = 0.5 s: break at %.6f s (h = 0.1 s: %.6f s), tension %.1f N, threshold %.1f N, tolerance "
-                "%.1f N\n", b.time, fine.time, b.tension, b.threshold, b.tolerance);
+    std::printf("%s: h = 0.5 s: break at %.6f s (h = 0.1 s: %.6f s), tension %.1f N, threshold %.1f N, tolerance "
+                "%.1f N\n", where, b.time, fine.time, b.tension, b.threshold, b.tolerance);
+}
+
+}  // namespace
+
+TEST(LineFailure, AnAnchorLetsGoWhereItsTensionReachesTheThreshold) {
+    expect_located(break_by_tension(0.1, 1.25, 1), break_by_tension(0.5, 1.25, 1), 1.25, "anchor");
 }
 
 // States saved before, at and after a break restore into a fresh instance and continue bit for bit: the outputs and
@@ -447,8 +461,8 @@ TEST(LineFailure, StatesAcrossABreakAtAnAnchorRestoreBitForBit) {
 
 // Two lines listed together stay joined at the new free point: lines 1 and 2 both on point 4 detach at 1.5 s; from
 // then on their ends pull on each other alone (equal tensions at the point, the massless point's balance) and the
-// platform carries line 3 only. The two taut lines snap together at a point without mass: in steps of 0.05 s (at
-// 0.5 s the free point's iteration does not converge, and the step fails asking for a shorter one).
+// platform carries line 3 only. The two taut lines snap together at a point without mass (in steps of 0.05 s here;
+// of 0.5 s and 1 s below).
 TEST(LineFailure, LinesThatBreakTogetherStayJoinedAtTheirFreePoint) {
     std::string deck = spread("1  4  1,2  1.5  0\n");
     const std::string line2 = "2         main        2         5";
@@ -473,4 +487,226 @@ TEST(LineFailure, LinesThatBreakTogetherStayJoinedAtTheirFreePoint) {
     EXPECT_NEAR(T1, T2, 1e-4 * T1) << "the massless point's balance";
     const double body = std::hypot(std::hypot(o.bodyLoad[0].force[0], o.bodyLoad[0].force[1]), o.bodyLoad[0].force[2]);
     EXPECT_NEAR(body, o.mooringLine[2].fairleadTension, 1e-9 * body) << "the platform carries line 3 alone";
+}
+
+// ------------------------------------------------------------------------------- a break along a line (failure.position)
+namespace {
+
+// OC4 line 1 (835.35 m of chain, 10 elements) to break at `position` m from its anchor by the failure.* parameters.
+UCParams along(double position, double time, double tension = 0.0, int elements = 10) {
+    UCParams p = system_parameters();
+    p.lineFileElements = elements;
+    p.failureLine = 1;
+    p.failurePosition = position;
+    p.failureTime = time;
+    p.failureTension = tension;
+    return p;
+}
+
+const double kHalf = 835.35 / 2;  // [m]: 5 elements below, 5 above
+
+// The platform moved in surge and sway from rest (a few metres over tens of seconds): the lines' tensions vary.
+UCInputs swaying(double t) {
+    return platform_at(4.0 * (1.0 - std::cos(0.2 * t)), 2.0 * (1.0 - std::cos(0.15 * t)), 0.8 * std::sin(0.2 * t),
+                       0.3 * std::sin(0.15 * t));
+}
+
+struct Tensions {
+    std::vector<double> fairlead, anchor;
+    std::vector<UCMooringLine> others;  // lines 2 and 3 at the last step
+};
+
+Tensions sway(const std::string& deck, const UCParams& p, double duration, double h) {
+    Built b = build(deck, p);
+    std::string error;
+    Tensions T;
+    EXPECT_TRUE(b.system->initialize(0.0, swaying(0.0), error)) << error;
+    for (double t = 0.0; t < duration - 1e-9; t += h) {
+        const bool stepped = b.system->step(t, h, swaying(t), error);
+        EXPECT_TRUE(stepped) << error << " at t = " << t;
+        if (!stepped) break;
+        T.fairlead.push_back(b.system->outputs().mooringLine[0].fairleadTension);
+        T.anchor.push_back(b.system->outputs().mooringLine[0].anchorTension);
+    }
+    T.others = {b.system->outputs().mooringLine[1], b.system->outputs().mooringLine[2], b.system->outputs().mooringLine[3]};
+    return T;
+}
+
+double largest_difference(const std::vector<double>& a, const std::vector<double>& b) {
+    double d = 0.0;
+    for (size_t i = 0; i < std::min(a.size(), b.size()); ++i) d = std::max(d, std::abs(a[i] - b[i]));
+    return d;
+}
+
+}  // namespace
+
+// failure.position cuts the line in two lines of its type joined at a massless free point: until the break they are
+// the whole line to the size of its discretisation error: the difference from the unsplit line is within twice the
+// unsplit line's own change from 10 to 20 elements (the joint is stepped by the free nodes' coupled iteration over
+// each 0.5 s step, the parts' meshes graded each on its own; docs/line_failure.md gives the numbers). The other lines
+// keep their outputs bit for bit (line[k] is the deck line's; the lower part adds no line[k]).
+TEST(LineFailure, ALineBuiltToBreakAlongItIsTheWholeLineBeforeTheBreak) {
+    const double h = 0.5, duration = 20.0;
+    const Tensions split = sway(spread(""), along(kHalf, 1000.0), duration, h);
+    UCParams whole = system_parameters();
+    const Tensions ten = sway(spread(""), whole, duration, h);
+    whole.lineFileElements = 20;
+    const Tensions twenty = sway(spread(""), whole, duration, h);
+    ASSERT_EQ(split.fairlead.size(), ten.fairlead.size());
+    const double fairlead = largest_difference(split.fairlead, ten.fairlead), anchor = largest_difference(split.anchor, ten.anchor);
+    const double meshF = largest_difference(twenty.fairlead, ten.fairlead), meshA = largest_difference(twenty.anchor, ten.anchor);
+    std::printf("split at %.3f m against the whole line (10 elements): fairlead %.1f N, anchor %.1f N at most (of %.4g N, "
+                "%.4g N); 20 elements against 10: %.1f N, %.1f N\n", kHalf, fairlead, anchor, ten.fairlead.back(),
+                ten.anchor.back(), meshF, meshA);
+    EXPECT_LE(fairlead, 2.0 * meshF);
+    EXPECT_LE(anchor, 2.0 * meshA);
+    EXPECT_EQ(std::memcmp(&split.others[0], &ten.others[0], 2 * sizeof(UCMooringLine)), 0) << "lines 2 and 3";
+    EXPECT_EQ(split.others[2].fairleadTension, 0.0) << "no line[4]";
+}
+
+namespace {
+
+// Line 1 breaks 417.675 m from its anchor at 2.3 s, the platform held, over `duration` in steps of h.
+struct Parted {
+    std::vector<double> fairlead, anchor;
+    std::string events;
+};
+
+Parted part_line(double duration, double h) {
+    Built b = build(spread(""), along(kHalf, 2.3));
+    uc::MooringSystem& s = *b.system;
+    std::string error;
+    Parted r;
+    EXPECT_TRUE(s.initialize(0.0, platform_at(0, 0, 0, 0), error)) << error;
+    for (double t = 0.0; t < duration - 1e-9; t += h) {
+        const bool stepped = s.step(t, h, platform_at(0, 0, 0, 0), error);
+        EXPECT_TRUE(stepped) << error << " at t = " << t;
+        if (!stepped) break;
+        r.events += s.take_event();
+        const UCMooringLine& o = s.outputs().mooringLine[0];
+        EXPECT_EQ(o.broken, t + h < 2.3 ? 0.0 : 1.0) << t + h;
+        if (o.broken != 0.0) {
+            EXPECT_EQ(o.breakTime, 2.3);
+        }
+        r.fairlead.push_back(o.fairleadTension);
+        r.anchor.push_back(o.anchorTension);
+    }
+    return r;
+}
+
+}  // namespace
+
+// After the break the upper part hangs from the fairlead down to the seabed and lies on it beyond: its fairlead carries
+// the chain hanging down to the seabed, w (186 m), within half an element's weight over the last 20 s of 160 s (the
+// touchdown lies inside an element, whose weight the seabed carries in part, as at an anchor that lets go); the lower
+// part lies on the seabed from its anchor, its tension there that of a chain on a flat seabed: nothing (below 1 % of
+// w (186 m)).
+TEST(LineFailure, ALineBrokenAlongItHangsFromItsFairleadAndItsLowerPartLiesOnTheSeabed) {
+    const Parted r = part_line(160.0, 0.5);
+    ASSERT_EQ(r.fairlead.size(), 320u);
+    EXPECT_NE(r.events.find("line failure 1 at t = 2.3 s: line 1 parted 417.675 m from its anchor"), std::string::npos) << r.events;
+    const double hanging = kChainWeight * (200.0 - 14.0);
+    std::printf("broken 417.675 m from the anchor at 2.3 s (fairlead %.4g N, anchor %.4g N before): at 140 s fairlead %.4g N, "
+                "at 160 s %.4g N (w (186 m) = %.4g N), anchor %.4g N\n", r.fairlead[3], r.anchor[3], r.fairlead[279],
+                r.fairlead.back(), hanging, r.anchor.back());
+    for (size_t i = 279; i < r.fairlead.size(); ++i) {  // the last 20 s
+        EXPECT_NEAR(r.fairlead[i], hanging, 0.5 * kElementWeight) << "at " << 0.5 * (i + 1) << " s";
+        EXPECT_LT(r.anchor[i], 0.01 * hanging) << "at " << 0.5 * (i + 1) << " s";
+    }
+}
+
+// By tension at the point along the line: the step ends where the lower part's tension there reaches the threshold
+// (1.25 times its initial value, the platform pulled away from anchor 1), within the integrator's tolerance in
+// tension, at the time of a run in steps of 0.1 s within that tolerance in time.
+TEST(LineFailure, ALineBreaksAlongItWhereItsTensionThereReachesTheThreshold) {
+    auto run = [](double h) {
+        Built probe = build(spread(""), along(kHalf, 1000.0));
+        std::string error;
+        EXPECT_TRUE(probe.system->initialize(0.0, pulled(0.0), error)) << error;
+        const double threshold = 1.25 * probe.system->failure_tension(0);
+        Built b = build(spread(""), along(kHalf, 0.0, threshold));
+        return step_to_break(*b.system, h, threshold);
+    };
+    expect_located(run(0.1), run(0.5), 1.25, "along the line");
+}
+
+// A break along a line is refused where it cannot be made, naming the parameter and the value.
+TEST(LineFailureDeck, ABreakAlongALineIsRefusedBeyondItsLengthOrWithAPoint) {
+    uc::MooringDeck deck;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(spread(""), 10, deck, error)) << error;
+    UCParams p = along(900.0, 5.0);
+    {
+        uc::MooringSystem s(p, deck);
+        EXPECT_FALSE(s.build(error));
+        EXPECT_EQ(error, "failure.line = 1, failure.position = 900 m: beyond line 1's unstretched length, 835.35 m (the "
+                         "position is measured from its anchor)");
+    }
+    p = along(400.0, 5.0);
+    p.failurePoint = 4;
+    {
+        uc::MooringSystem s(p, deck);
+        EXPECT_FALSE(s.build(error));
+        EXPECT_EQ(error.rfind("failure.line = 1, failure.position = 400 m: failure.point = 4: a break along the line", 0), 0u) << error;
+    }
+}
+
+// A system told to stop at breaks (FMI 3.0's early return) ends the step that holds a break at the break: its time is
+// FailTime exactly, its state the state at the break (the line broken, the outputs there); the next step goes on
+// from there. A step whose break is at its end, and a system not told, reach the step's end.
+TEST(LineFailure, ASystemToldToStopAtBreaksEndsTheStepAtTheBreak) {
+    Built b = build(spread("1  4  1  2.3  0\n2  5  2  3.0  0\n"));
+    uc::MooringSystem& s = *b.system;
+    std::string error;
+    ASSERT_TRUE(s.initialize(0.0, platform_at(0, 0, 0, 0), error)) << error;
+    s.set_stop_at_breaks(true);
+    for (double t = 0.0; t < 2.0 - 1e-9; t += 0.5) ASSERT_TRUE(s.step(t, 0.5, platform_at(0, 0, 0, 0), error)) << error;
+    ASSERT_TRUE(s.step(2.0, 0.5, platform_at(0, 0, 0, 0), error)) << error;
+    EXPECT_EQ(s.time(), 2.3);
+    EXPECT_EQ(s.outputs().mooringLine[0].broken, 1.0);
+    EXPECT_EQ(s.outputs().mooringLine[0].breakTime, 2.3);
+    EXPECT_GT(s.outputs().mooringLine[0].fairleadTension, 1e5) << "the state at the break: the line has not moved yet";
+    ASSERT_TRUE(s.step(2.3, 0.7, platform_at(0, 0, 0, 0), error)) << error;  // line 2 breaks at 3.0, the step's end
+    EXPECT_NEAR(s.time(), 3.0, 1e-12) << "the step's end (to round-off), not earlier";
+    EXPECT_EQ(s.outputs().mooringLine[1].broken, 1.0);
+    EXPECT_EQ(s.outputs().mooringLine[1].breakTime, 3.0);
+}
+
+
+// The same in communication steps of 0.5 s and 1 s: the step of the snap is split into up to kMaxSplitSubsteps
+// substeps where the point's coupled iteration does not converge in fewer (32 at 0.5 s), and the run agrees with the
+// run in steps of 0.05 s at the common points, within the free nodes' own error control: kNodeStepError in the point's
+// position, times the chain's axial stiffness at its end (EA over an element's length) in tension.
+TEST(LineFailure, LinesThatBreakTogetherRunInStepsOfHalfASecondAndOfOne) {
+    std::string deck = spread("1  4  1,2  1.5  0\n");
+    const std::string line2 = "2         main        2         5";
+    deck.replace(deck.find(line2), line2.size(), "2         main        2         4");
+    auto run = [&](double h) {
+        Built b = build(deck);
+        uc::MooringSystem& s = *b.system;
+        std::string error;
+        std::vector<double> T;  // lines 1 and 2 at 1, 2, 3, 4 s
+        EXPECT_TRUE(s.initialize(0.0, platform_at(0, 0, 0, 0), error)) << error;
+        const int n = static_cast<int>(std::lround(4.0 / h)), every = static_cast<int>(std::lround(1.0 / h));
+        for (int k = 1; k <= n; ++k) {
+            const bool stepped = s.step((k - 1) * h, h, platform_at(0, 0, 0, 0), error);
+            EXPECT_TRUE(stepped) << error << " at t = " << (k - 1) * h << " in steps of " << h << " s";
+            if (!stepped) break;
+            if (k % every == 0) {
+                T.push_back(s.outputs().mooringLine[0].fairleadTension);
+                T.push_back(s.outputs().mooringLine[1].fairleadTension);
+            }
+        }
+        return T;
+    };
+    const std::vector<double> fine = run(0.05);
+    const double tolerance = uc::MooringSystem::kNodeStepError * 7.536e8 / (835.35 / 10);  // [N]
+    for (double h : {0.5, 1.0}) {
+        const std::vector<double> T = run(h);
+        ASSERT_EQ(T.size(), fine.size()) << "h = " << h;
+        for (size_t i = 0; i < T.size(); ++i) {
+            EXPECT_NEAR(T[i], fine[i], tolerance) << "h = " << h << ", line " << i % 2 + 1 << " at " << i / 2 + 1 << " s";
+            std::printf("h = %g s: line %zu at %zu s: %.1f N (0.05 s: %.1f N)\n", h, i % 2 + 1, i / 2 + 1, T[i], fine[i]);
+        }
+    }
 }

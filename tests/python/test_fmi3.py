@@ -28,7 +28,7 @@ ARRAYS = ["shape.x", "shape.z", "tension"]
 class Cable:
     """One instance of either FMU, addressed by the FMI 2.0 names (arrays as name[k] in FMI 2.0)."""
 
-    def __init__(self, path, fmi3, messages=None):
+    def __init__(self, path, fmi3, messages=None, early=False):
         self.md = read_model_description(str(path))
         self.dir = extract(str(path))
         self.fmi3 = fmi3
@@ -38,7 +38,7 @@ class Cable:
                        modelIdentifier=self.md.coSimulation.modelIdentifier, instanceName="cable")
         if fmi3:
             log = None if messages is None else (lambda env, status, category, text: messages.append(text.decode()))
-            self.fmu.instantiate(loggingOn=messages is not None, logMessage=log)
+            self.fmu.instantiate(loggingOn=messages is not None, logMessage=log, earlyReturnAllowed=early)
         else:
             self.fmu.instantiate()
 
@@ -353,3 +353,73 @@ def test_a_refused_fmi3_serialized_state_leaves_a_fresh_instance_to_run(fmi3_fil
         runs.append(fresh.advance(profile, 0.0, 2.0))
         fresh.close()
     assert runs[0].tobytes() == runs[1].tobytes()
+
+
+def _line_one(cable, name):
+    """line[1].<name> of a system through its FMI 3.0 array (element 1 of 16)."""
+    return cable.fmu.getFloat64([cable.vr[f"line.{name}"]], nValues=MAX_LINES)[0]
+
+
+def _failing_oc4(fmi3_file, early, **failure):
+    cable = Cable(fmi3_file, True, early=early)
+    cable.set_parameters(ms.fmu_parameters(ms.read_system_deck(ms.OC4), lineFileElements=10,
+                                           **{"failure.line": 1, **failure}))
+    cable.initialize({})
+    return cable
+
+
+def _pull(cable, t):
+    """The platform pulled away from anchor 1 at 0.5 m/s (along (-0.5, -0.866)): line 1's tension rises."""
+    v = 0.5
+    values = [-0.5 * v * t, -0.866 * v * t, -0.5 * v, -0.866 * v]  # body 1's; the arrays hold MAX_BODIES
+    cable.fmu.setFloat64([cable.vr[f"body.{n}"] for n in ("x", "y", "vx", "vy")],
+                         [x for value in values for x in [value] + [0.0] * (MAX_BODIES - 1)])
+
+
+# With earlyReturnAllowed, fmi3DoStep returns at a line failure's break: earlyReturn true, lastSuccessfulTime the
+# break's time (failure.time exactly; by tension, where the step located it), the outputs those at the break (the
+# line broken, its breakTime); the next step goes on from there. After it, the run agrees with the run without early
+# return at the later communication points within the integrators' tolerance in tension (tensionTolerance 1e-3 times
+# the lines' tension scale: 1106 N on these chains): the two take the same pieces up to the break, and after it the
+# same lines from the same state over the rest of the step, the one inside a step, the other in a step of its own.
+@pytest.mark.parametrize("failure", [{"failure.time": 2.3}, {"failure.tension": 1.2e6}], ids=["time", "tension"])
+def test_an_fmi3_step_returns_early_at_a_line_failure_where_the_importer_allows_it(fmi3_file, failure):
+    plain, early = _failing_oc4(fmi3_file, False, **failure), _failing_oc4(fmi3_file, True, **failure)
+    h, tolerance = 0.5, 1e-3 * 1.106e6
+    try:
+        t, returned, worst = 0.0, [], 0.0
+        pulled = "failure.tension" in failure
+        compared = 0
+        for k in range(1, 25):
+            if pulled:
+                _pull(plain, (k - 1) * h)
+            assert plain.fmu.doStep((k - 1) * h, h)[2] is False  # no early return without earlyReturnAllowed
+            while t < k * h - 1e-12:
+                if pulled:
+                    _pull(early, t)
+                _, _, back, last = early.fmu.doStep(t, k * h - t)
+                if back:
+                    returned.append(last)
+                    assert last < k * h and _line_one(early, "broken") == 1.0
+                    assert _line_one(early, "breakTime") == last  # the state at the break
+                else:  # the communication point, as the FMU's own time reaches it (to round-off)
+                    assert abs(last - k * h) <= 1e-12 * k * h
+                t = last
+            if returned:
+                compared += 1
+                for name in ("fairleadTension", "anchorTension"):
+                    a, b = _line_one(plain, name), _line_one(early, name)
+                    assert abs(a - b) <= tolerance, (k * h, name, a, b)
+                    worst = max(worst, abs(a - b))
+                bf = [early.fmu.getFloat64([early.vr[f"body.force.{c}"]], nValues=MAX_BODIES)[0] for c in "xy"]
+                pf = [plain.fmu.getFloat64([plain.vr[f"body.force.{c}"]], nValues=MAX_BODIES)[0] for c in "xy"]
+                assert np.allclose(bf, pf, rtol=0, atol=2 * tolerance), (k * h, bf, pf)
+        print(f"early return at {returned} s; line 1's tensions after it differ by {worst:.3g} N at most")
+        assert len(returned) == 1, returned
+        assert returned[0] == _line_one(plain, "breakTime")  # the break the run without early return had
+        if not pulled:
+            assert returned[0] == 2.3
+        assert compared > 10
+    finally:
+        plain.close()
+        early.close()

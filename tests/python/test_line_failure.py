@@ -110,6 +110,16 @@ def test_a_scene_failure_table_sets_the_failure_parameters_and_is_checked():
             Scene.from_data({**base, "failure": bad}, "s")
 
 
+def test_a_scene_failure_table_sets_a_break_along_the_line():
+    base = {"duration": 2.0, "step": 0.5, "parameters": {"lineFile": str(ms.OC4)}, "body": {"start": [0] * 6}}
+    scene = Scene.from_data({**base, "failure": {"line": 1, "time": 1.2, "position": 400.0}}, "s")
+    assert scene.parameters["failure.position"] == 400.0 and scene.parameters["failure.point"] == 0
+    for bad, says in [({"line": 1, "time": 1.0, "position": -1.0}, "must not be negative"),
+                      ({"line": 1, "time": 1.0, "position": 400.0, "point": 4}, "[failure] position")]:
+        with pytest.raises(SceneFileError, match=says.replace("[", r"\[").replace("]", r"\]")):
+            Scene.from_data({**base, "failure": bad}, "s")
+
+
 def test_a_scene_with_a_failure_records_when_its_line_broke(fmu_file):
     from ucable.scene import run_scene
 
