@@ -14,6 +14,8 @@
 #define UC_MAX_LINES 16
 #define UC_MAX_BODIES 4
 #define UC_MAX_POINTS 16
+#define UC_MAX_WAVE_COMPONENTS 1024
+#define UC_AXIAL_CURVE_POINTS 30
 
 typedef struct UCSection {
     double length; /* section[k].length [m]: unstretched length (must be > 0 when k <= nSections >= 2) */
@@ -109,8 +111,8 @@ typedef struct UCParams {
     double absTol; /* absTol: optional extra absolute tolerance of IDA's usual form (SI units of the unknowns), with `relTol`; 0: not used */
     double waterDensity; /* waterDensity [kg/m3]: sea water density */
     double gravity; /* gravity [m/s2]: gravitational acceleration (along -z) */
-    double waterDepth; /* waterDepth [m]: water depth (seabed at z = -waterDepth) */
-    int enableSeabed; /* enableSeabed: flat seabed at z = -`waterDepth`: penalty contact with damping and regularized Coulomb friction, smoothed over 5 % of the diameter */
+    double waterDepth; /* waterDepth [m]: water depth (seabed at z = -waterDepth; under the origin where `seabedSlope` tilts it) */
+    int enableSeabed; /* enableSeabed: seabed at z = -`waterDepth`, flat, or a plane through that depth under the origin tilted by `seabedSlope`: penalty contact along its normal with damping and regularized Coulomb friction along its surface, smoothed over 5 % of the diameter */
     double seabedStiffness; /* seabedStiffness [N/m2]: contact force per unit cable length per metre of penetration */
     double seabedDamping; /* seabedDamping [N.s/m2]: contact damping per unit cable length per m/s of penetration rate */
     double seabedFriction; /* seabedFriction: Coulomb friction coefficient, axial and lateral (regularized below 0.01 m/s sliding speed) */
@@ -139,7 +141,7 @@ typedef struct UCParams {
     double fatigueM; /* fatigue.m: slope m of the S–N curve N = K S^−m of the online fatigue count (S: tension range over `fatigue.area`, in MPa) */
     double fatigueLogK; /* fatigue.logK: log10 K of the S–N curve of the online fatigue count */
     double fatigueArea; /* fatigue.area [m2]: area that turns the tow-tension range into a stress range (the nominal steel area); 0, the default, counts no fatigue */
-    int wavesMode; /* waves.mode: waves: 0 calm, 1 regular Airy wave (`waves.height` H, `waves.period` T), 2 irregular JONSWAP sea (Hs, Tp) */
+    int wavesMode; /* waves.mode: waves: 0 calm, 1 regular Airy wave (`waves.height` H, `waves.period` T), 2 irregular JONSWAP sea (Hs, Tp), 3 the components of `waves.file` (or of a `lineFile` deck's `WaveKin` 2, 3 or 7; [docs/waves.md](docs/waves.md), "Given components") */
     double wavesHeight; /* waves.height [m]: wave height H (regular) or significant wave height Hs (JONSWAP); H / wavelength above 1/7 (breaking) is refused */
     double wavesPeriod; /* waves.period [s]: wave period T (regular) or peak period Tp (JONSWAP) */
     double wavesGamma; /* waves.gamma: JONSWAP peak enhancement factor (1: Pierson–Moskowitz) */
@@ -175,8 +177,16 @@ typedef struct UCParams {
     double failureTime; /* failure.time [s]: a mooring system: the time at which `failure.line` detaches (0: not by time); the step that contains it ends there */
     double failureTension; /* failure.tension [N]: a mooring system: the tension of `failure.line` at `failure.point` at which it detaches (0: not by tension); the step in which it is reached ends where it is, the tension there within the integrator's tolerance of it */
     double failurePosition; /* failure.position [m]: a mooring system: where along `failure.line` it breaks, in metres of unstretched length from its anchor (its far end; 0: at `failure.point` instead). The line is built as two lines of its type joined at a massless free point there, and the break parts them: the upper part hangs from the fairlead, the lower part stays on its anchor, both with bare ends; `failure.tension` is then the tension at that point ([docs/line_failure.md](docs/line_failure.md)) */
+    char wavesFile[UC_STRING_CAPACITY]; /* waves.file: `waves.mode` 3: path of a file of wave components, one a row: ω [rad/s], amplitude a [m], phase p [rad] and optionally the direction of travel β [rad] (else `waves.direction`), each the elevation a cos(k (x cos β + y sin β) − ω t + p) ([docs/waves.md](docs/waves.md), "Given components"); a relative path is looked up as `lineFile`'s; empty: the components of a `lineFile` deck */
+    int axialCurvePoints; /* axialCurvePoints: points of the tension–strain curve of a uniform line (`nSections` 1): 0, the constant `EA`; 2 to 30, `axialCurve.strain[k]` and `axialCurve.tension[k]` give the tension as a function of the axial strain, a monotone cubic through the points and linear with the end slope beyond them ([docs/model.md](docs/model.md)), and `EA` is not used */
+    double axialCurveStrain[UC_AXIAL_CURVE_POINTS]; /* axialCurve.strain[k]: axial strain of point k (increasing with k; the point (0, 0) is put in front when the first strain is above 0) */
+    double axialCurveTension[UC_AXIAL_CURVE_POINTS]; /* axialCurve.tension[k] [N]: tension at the strain of point k (increasing with k) */
+    double seabedSlope; /* seabedSlope [deg]: angle of the plane seabed below the horizontal (0: flat, the default): the seabed passes through z = -`waterDepth` under the origin (x = y = 0) and descends along the heading `seabedSlopeHeading`, so its depth under (x, y) is `waterDepth` + tan(`seabedSlope`) (x cos ψ + y sin ψ); contact acts along the seabed's normal and friction along its surface ([docs/model.md](docs/model.md), seabed) */
+    double seabedSlopeHeading; /* seabedSlopeHeading [deg]: direction ψ in which the sloped seabed (`seabedSlope`) descends most steeply, measured in the horizontal plane from +x towards +y: 0 (the default) deeper along +x, 90 deeper along +y */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
+    int waveComponentCount; /* (not an FMU variable) waves.mode 3: the number of given wave components in waveComponents (from waves.file or a lineFile deck) */
+    double waveComponents[4096]; /* (not an FMU variable) waves.mode 3: component k at 4 k: omega [rad/s], amplitude [m], phase [rad], direction of travel [rad]; elevation a cos(k (x cos b + y sin b) - omega t + p) (UC_MAX_WAVE_COMPONENTS x 4) */
 } UCParams;
 
 typedef struct UCInputs {
@@ -530,6 +540,70 @@ typedef struct UCOutputs {
     X(272, "failure.time", REAL, PARAMETER, failureTime) \
     X(273, "failure.tension", REAL, PARAMETER, failureTension) \
     X(274, "failure.position", REAL, PARAMETER, failurePosition) \
+    X(275, "waves.file", STRING, PARAMETER, wavesFile) \
+    X(276, "axialCurvePoints", INTEGER, PARAMETER, axialCurvePoints) \
+    X(277, "axialCurve.strain[1]", REAL, PARAMETER, axialCurveStrain[0]) \
+    X(278, "axialCurve.strain[2]", REAL, PARAMETER, axialCurveStrain[1]) \
+    X(279, "axialCurve.strain[3]", REAL, PARAMETER, axialCurveStrain[2]) \
+    X(280, "axialCurve.strain[4]", REAL, PARAMETER, axialCurveStrain[3]) \
+    X(281, "axialCurve.strain[5]", REAL, PARAMETER, axialCurveStrain[4]) \
+    X(282, "axialCurve.strain[6]", REAL, PARAMETER, axialCurveStrain[5]) \
+    X(283, "axialCurve.strain[7]", REAL, PARAMETER, axialCurveStrain[6]) \
+    X(284, "axialCurve.strain[8]", REAL, PARAMETER, axialCurveStrain[7]) \
+    X(285, "axialCurve.strain[9]", REAL, PARAMETER, axialCurveStrain[8]) \
+    X(286, "axialCurve.strain[10]", REAL, PARAMETER, axialCurveStrain[9]) \
+    X(287, "axialCurve.strain[11]", REAL, PARAMETER, axialCurveStrain[10]) \
+    X(288, "axialCurve.strain[12]", REAL, PARAMETER, axialCurveStrain[11]) \
+    X(289, "axialCurve.strain[13]", REAL, PARAMETER, axialCurveStrain[12]) \
+    X(290, "axialCurve.strain[14]", REAL, PARAMETER, axialCurveStrain[13]) \
+    X(291, "axialCurve.strain[15]", REAL, PARAMETER, axialCurveStrain[14]) \
+    X(292, "axialCurve.strain[16]", REAL, PARAMETER, axialCurveStrain[15]) \
+    X(293, "axialCurve.strain[17]", REAL, PARAMETER, axialCurveStrain[16]) \
+    X(294, "axialCurve.strain[18]", REAL, PARAMETER, axialCurveStrain[17]) \
+    X(295, "axialCurve.strain[19]", REAL, PARAMETER, axialCurveStrain[18]) \
+    X(296, "axialCurve.strain[20]", REAL, PARAMETER, axialCurveStrain[19]) \
+    X(297, "axialCurve.strain[21]", REAL, PARAMETER, axialCurveStrain[20]) \
+    X(298, "axialCurve.strain[22]", REAL, PARAMETER, axialCurveStrain[21]) \
+    X(299, "axialCurve.strain[23]", REAL, PARAMETER, axialCurveStrain[22]) \
+    X(300, "axialCurve.strain[24]", REAL, PARAMETER, axialCurveStrain[23]) \
+    X(301, "axialCurve.strain[25]", REAL, PARAMETER, axialCurveStrain[24]) \
+    X(302, "axialCurve.strain[26]", REAL, PARAMETER, axialCurveStrain[25]) \
+    X(303, "axialCurve.strain[27]", REAL, PARAMETER, axialCurveStrain[26]) \
+    X(304, "axialCurve.strain[28]", REAL, PARAMETER, axialCurveStrain[27]) \
+    X(305, "axialCurve.strain[29]", REAL, PARAMETER, axialCurveStrain[28]) \
+    X(306, "axialCurve.strain[30]", REAL, PARAMETER, axialCurveStrain[29]) \
+    X(307, "axialCurve.tension[1]", REAL, PARAMETER, axialCurveTension[0]) \
+    X(308, "axialCurve.tension[2]", REAL, PARAMETER, axialCurveTension[1]) \
+    X(309, "axialCurve.tension[3]", REAL, PARAMETER, axialCurveTension[2]) \
+    X(310, "axialCurve.tension[4]", REAL, PARAMETER, axialCurveTension[3]) \
+    X(311, "axialCurve.tension[5]", REAL, PARAMETER, axialCurveTension[4]) \
+    X(312, "axialCurve.tension[6]", REAL, PARAMETER, axialCurveTension[5]) \
+    X(313, "axialCurve.tension[7]", REAL, PARAMETER, axialCurveTension[6]) \
+    X(314, "axialCurve.tension[8]", REAL, PARAMETER, axialCurveTension[7]) \
+    X(315, "axialCurve.tension[9]", REAL, PARAMETER, axialCurveTension[8]) \
+    X(316, "axialCurve.tension[10]", REAL, PARAMETER, axialCurveTension[9]) \
+    X(317, "axialCurve.tension[11]", REAL, PARAMETER, axialCurveTension[10]) \
+    X(318, "axialCurve.tension[12]", REAL, PARAMETER, axialCurveTension[11]) \
+    X(319, "axialCurve.tension[13]", REAL, PARAMETER, axialCurveTension[12]) \
+    X(320, "axialCurve.tension[14]", REAL, PARAMETER, axialCurveTension[13]) \
+    X(321, "axialCurve.tension[15]", REAL, PARAMETER, axialCurveTension[14]) \
+    X(322, "axialCurve.tension[16]", REAL, PARAMETER, axialCurveTension[15]) \
+    X(323, "axialCurve.tension[17]", REAL, PARAMETER, axialCurveTension[16]) \
+    X(324, "axialCurve.tension[18]", REAL, PARAMETER, axialCurveTension[17]) \
+    X(325, "axialCurve.tension[19]", REAL, PARAMETER, axialCurveTension[18]) \
+    X(326, "axialCurve.tension[20]", REAL, PARAMETER, axialCurveTension[19]) \
+    X(327, "axialCurve.tension[21]", REAL, PARAMETER, axialCurveTension[20]) \
+    X(328, "axialCurve.tension[22]", REAL, PARAMETER, axialCurveTension[21]) \
+    X(329, "axialCurve.tension[23]", REAL, PARAMETER, axialCurveTension[22]) \
+    X(330, "axialCurve.tension[24]", REAL, PARAMETER, axialCurveTension[23]) \
+    X(331, "axialCurve.tension[25]", REAL, PARAMETER, axialCurveTension[24]) \
+    X(332, "axialCurve.tension[26]", REAL, PARAMETER, axialCurveTension[25]) \
+    X(333, "axialCurve.tension[27]", REAL, PARAMETER, axialCurveTension[26]) \
+    X(334, "axialCurve.tension[28]", REAL, PARAMETER, axialCurveTension[27]) \
+    X(335, "axialCurve.tension[29]", REAL, PARAMETER, axialCurveTension[28]) \
+    X(336, "axialCurve.tension[30]", REAL, PARAMETER, axialCurveTension[29]) \
+    X(337, "seabedSlope", REAL, PARAMETER, seabedSlope) \
+    X(338, "seabedSlopeHeading", REAL, PARAMETER, seabedSlopeHeading) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -1629,6 +1703,69 @@ typedef struct UCOutputs {
     X(failureTime, 0.0) \
     X(failureTension, 0.0) \
     X(failurePosition, 0.0) \
+    X(axialCurvePoints, 0) \
+    X(axialCurveStrain[0], 0.0) \
+    X(axialCurveStrain[1], 0.0) \
+    X(axialCurveStrain[2], 0.0) \
+    X(axialCurveStrain[3], 0.0) \
+    X(axialCurveStrain[4], 0.0) \
+    X(axialCurveStrain[5], 0.0) \
+    X(axialCurveStrain[6], 0.0) \
+    X(axialCurveStrain[7], 0.0) \
+    X(axialCurveStrain[8], 0.0) \
+    X(axialCurveStrain[9], 0.0) \
+    X(axialCurveStrain[10], 0.0) \
+    X(axialCurveStrain[11], 0.0) \
+    X(axialCurveStrain[12], 0.0) \
+    X(axialCurveStrain[13], 0.0) \
+    X(axialCurveStrain[14], 0.0) \
+    X(axialCurveStrain[15], 0.0) \
+    X(axialCurveStrain[16], 0.0) \
+    X(axialCurveStrain[17], 0.0) \
+    X(axialCurveStrain[18], 0.0) \
+    X(axialCurveStrain[19], 0.0) \
+    X(axialCurveStrain[20], 0.0) \
+    X(axialCurveStrain[21], 0.0) \
+    X(axialCurveStrain[22], 0.0) \
+    X(axialCurveStrain[23], 0.0) \
+    X(axialCurveStrain[24], 0.0) \
+    X(axialCurveStrain[25], 0.0) \
+    X(axialCurveStrain[26], 0.0) \
+    X(axialCurveStrain[27], 0.0) \
+    X(axialCurveStrain[28], 0.0) \
+    X(axialCurveStrain[29], 0.0) \
+    X(axialCurveTension[0], 0.0) \
+    X(axialCurveTension[1], 0.0) \
+    X(axialCurveTension[2], 0.0) \
+    X(axialCurveTension[3], 0.0) \
+    X(axialCurveTension[4], 0.0) \
+    X(axialCurveTension[5], 0.0) \
+    X(axialCurveTension[6], 0.0) \
+    X(axialCurveTension[7], 0.0) \
+    X(axialCurveTension[8], 0.0) \
+    X(axialCurveTension[9], 0.0) \
+    X(axialCurveTension[10], 0.0) \
+    X(axialCurveTension[11], 0.0) \
+    X(axialCurveTension[12], 0.0) \
+    X(axialCurveTension[13], 0.0) \
+    X(axialCurveTension[14], 0.0) \
+    X(axialCurveTension[15], 0.0) \
+    X(axialCurveTension[16], 0.0) \
+    X(axialCurveTension[17], 0.0) \
+    X(axialCurveTension[18], 0.0) \
+    X(axialCurveTension[19], 0.0) \
+    X(axialCurveTension[20], 0.0) \
+    X(axialCurveTension[21], 0.0) \
+    X(axialCurveTension[22], 0.0) \
+    X(axialCurveTension[23], 0.0) \
+    X(axialCurveTension[24], 0.0) \
+    X(axialCurveTension[25], 0.0) \
+    X(axialCurveTension[26], 0.0) \
+    X(axialCurveTension[27], 0.0) \
+    X(axialCurveTension[28], 0.0) \
+    X(axialCurveTension[29], 0.0) \
+    X(seabedSlope, 0.0) \
+    X(seabedSlopeHeading, 0.0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -1714,7 +1851,7 @@ typedef struct UCOutputs {
     X(fatigueM, "fatigue.m", 0.0, 20.0, 1, 0, "(0, 20]", "the slope of the S-N curve is a positive number (3 to 5 for steel wire and chain)") \
     X(fatigueLogK, "fatigue.logK", 0.0, 40.0, 1, 0, "(0, 40]", "log10 K of the S-N curve is a positive number") \
     X(fatigueArea, "fatigue.area", 0.0, 10.0, 0, 0, "[0, 10]", "the area that turns tension into stress is 0 (no fatigue count) or a positive cross-section") \
-    X(wavesMode, "waves.mode", 0.0, 2.0, 0, 0, "{0 calm, 1 regular Airy, 2 irregular JONSWAP}", "unknown wave model") \
+    X(wavesMode, "waves.mode", 0.0, 3.0, 0, 0, "{0 calm, 1 regular Airy, 2 irregular JONSWAP, 3 given components}", "unknown wave model") \
     X(wavesHeight, "waves.height", 0.0, 40.0, 0, 0, "[0, 40]", "the wave height is a length between 0 and 40 m") \
     X(wavesPeriod, "waves.period", 0.0, 60.0, 1, 0, "(0, 60]", "the wave period is a positive time up to 60 s") \
     X(wavesGamma, "waves.gamma", 1.0, 10.0, 0, 0, "[1, 10]", "the JONSWAP peak enhancement factor is between 1 (Pierson-Moskowitz) and 10") \
@@ -1906,6 +2043,69 @@ typedef struct UCOutputs {
     X(failureTime, "failure.time", 0.0, 1000000000.0, 0, 0, "[0, 1000000000]", "a time of the simulation") \
     X(failureTension, "failure.tension", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension") \
     X(failurePosition, "failure.position", 0.0, 1000000.0, 0, 0, "[0, 1000000]", "a length along a line") \
+    X(axialCurvePoints, "axialCurvePoints", 0.0, 30.0, 0, 0, "[0, 30]", "a tension-strain curve has at most 30 points") \
+    X(axialCurveStrain[0], "axialCurve.strain[1]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[1], "axialCurve.strain[2]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[2], "axialCurve.strain[3]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[3], "axialCurve.strain[4]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[4], "axialCurve.strain[5]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[5], "axialCurve.strain[6]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[6], "axialCurve.strain[7]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[7], "axialCurve.strain[8]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[8], "axialCurve.strain[9]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[9], "axialCurve.strain[10]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[10], "axialCurve.strain[11]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[11], "axialCurve.strain[12]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[12], "axialCurve.strain[13]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[13], "axialCurve.strain[14]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[14], "axialCurve.strain[15]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[15], "axialCurve.strain[16]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[16], "axialCurve.strain[17]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[17], "axialCurve.strain[18]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[18], "axialCurve.strain[19]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[19], "axialCurve.strain[20]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[20], "axialCurve.strain[21]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[21], "axialCurve.strain[22]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[22], "axialCurve.strain[23]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[23], "axialCurve.strain[24]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[24], "axialCurve.strain[25]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[25], "axialCurve.strain[26]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[26], "axialCurve.strain[27]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[27], "axialCurve.strain[28]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[28], "axialCurve.strain[29]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveStrain[29], "axialCurve.strain[30]", 0.0, 1.0, 0, 0, "[0, 1]", "an axial strain of a cable, chain or rope lies between 0 and 100 %") \
+    X(axialCurveTension[0], "axialCurve.tension[1]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[1], "axialCurve.tension[2]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[2], "axialCurve.tension[3]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[3], "axialCurve.tension[4]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[4], "axialCurve.tension[5]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[5], "axialCurve.tension[6]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[6], "axialCurve.tension[7]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[7], "axialCurve.tension[8]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[8], "axialCurve.tension[9]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[9], "axialCurve.tension[10]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[10], "axialCurve.tension[11]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[11], "axialCurve.tension[12]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[12], "axialCurve.tension[13]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[13], "axialCurve.tension[14]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[14], "axialCurve.tension[15]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[15], "axialCurve.tension[16]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[16], "axialCurve.tension[17]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[17], "axialCurve.tension[18]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[18], "axialCurve.tension[19]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[19], "axialCurve.tension[20]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[20], "axialCurve.tension[21]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[21], "axialCurve.tension[22]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[22], "axialCurve.tension[23]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[23], "axialCurve.tension[24]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[24], "axialCurve.tension[25]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[25], "axialCurve.tension[26]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[26], "axialCurve.tension[27]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[27], "axialCurve.tension[28]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[28], "axialCurve.tension[29]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(axialCurveTension[29], "axialCurve.tension[30]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(seabedSlope, "seabedSlope", 0.0, 45.0, 0, 0, "[0, 45]", "a seabed steeper than 45 degrees is a wall, not a seabed a line rests on") \
+    X(seabedSlopeHeading, "seabedSlopeHeading", -360.0, 360.0, 0, 0, "[-360, 360]", "a heading in degrees") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \
