@@ -39,6 +39,7 @@ struct LineFilePoint {
     double addedMass = 0.0;  // CA rho V [kg]
     double CdA = 0.0;        // [m2]
     int row = 0;
+    bool rigid = false;      // a joint that carries moment (a free zero-length rod both lines are clamped to)
     bool empty() const { return mass == 0.0 && volume == 0.0 && addedMass == 0.0 && CdA == 0.0; }
 };
 
@@ -83,6 +84,8 @@ struct LineFileLine {
     LineFilePoint body;                     // the Free point at the far end (Body)
     double towPoint[3] = {0.0, 0.0, 0.0};   // the Vessel/Coupled point (the tow.* inputs drive it)
     bool towFixed = false;                  // the tow point is the deck's Fixed point (no Vessel point)
+    bool towClamped = false;                // the line is clamped at the tow point (on a Fixed rod): topEnd 1
+    double towTangent[3] = {0.0, 0.0, 0.0}; // its direction there, into the line (topTangent)
     double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
     int waterDepthRow = 0, gravityRow = 0, waterDensityRow = 0;  // the rows that set them (0: MoorDyn's default)
     LineFileSeabed seabed;
@@ -150,6 +153,8 @@ struct MooringDeckLine {
     bool farFree = false;                    // the far end is a Free point: farBody (a towed body), or none
     bool farDetaches = false;                // a failure detaches its Fixed far end: the end is driven (held still until then)
     LineFilePoint farBody;
+    bool fairleadClamped = false;            // clamped at a Fixed fairlead (a Fixed rod): topEnd 1
+    double fairleadTangent[3] = {0.0, 0.0, 0.0};  // its direction there, into the line
 };
 
 // A Free point where three or more lines meet: its position is an unknown of the system, found from the
