@@ -169,6 +169,9 @@ struct MooringNode {
     double inertia[3] = {0.0, 0.0, 0.0}; // a body's moments of inertia about its centre of gravity, body axes [kg m2]
     double CdA[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // a body's drag areas in its axes: translations, rotations [m2]
     double Ca[3] = {0.0, 0.0, 0.0};      // a body's added-mass coefficients of translation in its axes (of rho V)
+    double rodLength = 0.0;              // > 0: a free rod (docs/lines.md, "Rods") along the body's x axis, from
+                                         // -rodLength/2 to rodLength/2: its buoyancy, drag and added mass follow
+                                         // the part of it below z = 0
 };
 
 // A line failure (docs/line_failure.md): the ends of lines held at a deck point detach from it, at a time

@@ -185,6 +185,7 @@ void add_free_nodes(Roles& roles, std::vector<MooringNode>& nodes) {
         std::copy(b.pose, b.pose + 3, node.position);
         std::copy(b.pose + 3, b.pose + 6, node.angles);
         std::copy(b.cg, b.cg + 3, node.cg);
+        node.rodLength = b.rodLength;
         nodes.push_back(node);
     }
 }

@@ -366,10 +366,10 @@ bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vect
             }
         }
         const double top = std::max(ends[0][2], ends[1][2]) + 0.5 * t.diameter;
-        if (top > 0.0)
+        if (top > 0.0 && r.kind == RodKind::Body)
             return refuse("it reaches z = " + short_number(top) + " m (its top end and radius) at the deck's pose: a rod "
                           "through or above the waterline is not supported (a rod read as a rigid body keeps its full "
-                          "buoyancy; its draft would change it)");
+                          "buoyancy; its draft would change it: only a free rod follows the waterline)");
         if (r.kind == RodKind::Body) {
             DeckBody& b = bodies[r.body - 1];
             const int axis = body_axis(ax);
@@ -414,6 +414,7 @@ bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vect
                 b.Ca[k] = rb.addedVolume[k] / rb.volume;
             }
             std::copy(rb.CdA, rb.CdA + 6, b.CdA);
+            b.rodLength = r.length;  // its buoyancy, drag and added mass follow its part under water
             if (!(b.mass > 0.0)) return refuse("a free rod needs Mass/m > 0 (its moments of inertia)");
             while (static_cast<int>(bodies.size()) + 1 < b.id) {  // body 1: the platform the Vessel points ride
                 DeckBody platform;

@@ -135,6 +135,7 @@ struct DeckBody {
     double inertia[3] = {0.0, 0.0, 0.0};
     double CdA[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // body axes: translations x, y, z, rotations about them
     double Ca[3] = {0.0, 0.0, 0.0};                  // translations in body axes
+    double rodLength = 0.0;                          // a free rod's body: its length along the body's x axis
     int row = 0;
 };
 

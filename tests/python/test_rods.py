@@ -66,6 +66,25 @@ def test_a_free_rod_hanging_on_two_ropes_rests_where_the_elastic_catenaries_put_
         c.free()
 
 
+def _swing(fmu_file, deck, output, rest, duration, h=0.1):
+    """The deck released (TmaxIC 0) and stepped by h for `duration`: `output` less its value at rest at each
+    step, and the period from its crossings of the rest value (twice their mean spacing)."""
+    c = CableFMU(fmu_file, parameters={"lineFile": str(deck), "lineFileElements": 4})
+    try:
+        c.initialize()
+        t, x = [], []
+        for _ in range(int(duration / h)):
+            c.do_step(h)
+            t.append(c.time)
+            x.append(c.get(output) - rest)
+    finally:
+        c.free()
+    crossings = [t[i] - x[i] * (t[i + 1] - t[i]) / (x[i + 1] - x[i]) for i in range(len(x) - 1)
+                 if (x[i] < 0) != (x[i + 1] < 0)]
+    assert len(crossings) >= 2, crossings
+    return x, 2 * float(np.mean(np.diff(crossings)))
+
+
 PENDULUM = """--- MoorDyn Input File ---
 a rod hanging on a line from a fixed point, released swinging in its slower mode
 ---------------------- LINE TYPES ----
@@ -114,18 +133,57 @@ def test_a_rod_hanging_on_a_line_swings_with_the_double_pendulums_period(fmu_fil
     t1, t2 = 0.02 * vec[:, slow] / np.max(np.abs(vec[:, slow]))
     deck = tmp_path / "pendulum.dat"
     deck.write_text(PENDULUM.format(ax=l * t1, bx=l * t1 + L * t2))
-    c = CableFMU(fmu_file, parameters={"lineFile": str(deck), "lineFileElements": 4})
-    try:
-        c.initialize()
-        h, t, x = 0.1, [], []
-        for _ in range(int(1.3 * period / h)):
-            c.do_step(h)
-            t.append(c.time)
-            x.append(c.get("body[1].pose.x"))
-    finally:
-        c.free()
-    crossings = [t[i] - x[i] * (t[i + 1] - t[i]) / (x[i + 1] - x[i]) for i in range(len(x) - 1)
-                 if (x[i] < 0) != (x[i + 1] < 0)]
-    assert len(crossings) == 2
-    assert 2 * (crossings[1] - crossings[0]) == pytest.approx(period, rel=2e-3)
+    x, measured = _swing(fmu_file, deck, "body[1].pose.x", 0.0, 1.3 * period)
+    assert measured == pytest.approx(period, rel=2e-3)
     assert max(x) - min(x) == pytest.approx(2 * (l * t1 + L / 2 * t2), rel=1e-2)
+
+
+CAN = """--- MoorDyn Input File ---
+a floating can heaving
+---------------------- LINE TYPES ----
+TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
+(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
+pendant {dl} {ml} 1e7 0 0 0 0 0 0
+---------------------- ROD TYPES ----
+TypeName Diam Mass/m Cd Ca CdEnd CaEnd
+(name) (m) (kg/m) (-) (-) (-) (-)
+can {d} {mpl:.12g} 0 1.0 0 1.0
+---------------------- RODS ----
+ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs
+(#) (name) (#/key) (m) (m) (m) (m) (m) (m) (-) (-)
+1 can Free 0 0 {za:.12g} 0 0 {zb:.12g} 10 -
+---------------------- POINTS ----
+ID Type X Y Z Mass Volume CdA Ca
+(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
+1 Free 0 0 {zp:.12g} 0 0 0 0
+---------------------- LINES ----
+ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
+(#) (name) (#) (#) (m) (-) (-)
+1 pendant R1A 1 {Ll} 4 -
+---------------------- OPTIONS ----
+100 WtrDpth
+{rho} WtrDnsty
+0 TmaxIC
+------------------------- need this line ----
+"""
+
+
+def test_a_floating_can_heaves_with_the_period_of_its_waterplane_and_added_mass(fmu_file, tmp_path):
+    """A free rod floating upright through the waterline (10 m long, 10 m across, 90 % of it under water,
+    no drag) with a 5 m pendant of 10 kg/m hanging from its bottom: its buoyancy follows its draft, so it
+    heaves with T = 2 pi sqrt((m + a + m_pendant) / (rho g A_wp)), a the added mass of its one wet end,
+    rho CaEnd pi d^3 / 12 (MoorDyn's); 7.0465 s. Released 0.2 m below its equilibrium at rest (TmaxIC 0):
+    measured 7.0511 s at 0.1 s steps (+0.066 %: the trapezoidal rule's phase error (omega h)^2 / 12), swinging
+    about the equilibrium draft by the 0.2 m it was given."""
+    rho, d, L, ml, dl, Ll = 1025.0, 10.0, 10.0, 10.0, 0.05, 5.0
+    A = math.pi * d * d / 4
+    mpl = rho * A * 0.9
+    m = mpl * L
+    draft = (m * GRAVITY + (ml - rho * math.pi * dl * dl / 4) * GRAVITY * Ll) / (rho * GRAVITY * A)
+    period = 2 * math.pi * math.sqrt((m + rho * math.pi * d ** 3 / 12 + ml * Ll) / (rho * GRAVITY * A))
+    za = -draft - 0.2
+    deck = tmp_path / "can.dat"
+    deck.write_text(CAN.format(dl=dl, ml=ml, d=d, mpl=mpl, za=za, zb=za + L, zp=za - Ll, Ll=Ll, rho=rho))
+    z, measured = _swing(fmu_file, deck, "body[1].pose.z", L / 2 - draft, 1.6 * period)
+    assert measured == pytest.approx(period, rel=1.5e-3)
+    assert max(z) == pytest.approx(0.2, rel=5e-3) and min(z) == pytest.approx(-0.2, rel=5e-3)
