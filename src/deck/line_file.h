@@ -41,6 +41,7 @@ struct LineFilePoint {
     double addedMass = 0.0;  // CA rho V [kg]
     double CdA = 0.0;        // [m2]
     int row = 0;
+    bool rigid = false;      // a joint that carries moment (a free zero-length rod both lines are clamped to)
     bool empty() const { return mass == 0.0 && volume == 0.0 && addedMass == 0.0 && CdA == 0.0; }
 };
 
@@ -106,6 +107,8 @@ struct LineFileLine {
     LineFilePoint body;                     // the Free point at the far end (Body)
     double towPoint[3] = {0.0, 0.0, 0.0};   // the Vessel/Coupled point (the tow.* inputs drive it)
     bool towFixed = false;                  // the tow point is the deck's Fixed point (no Vessel point)
+    bool towClamped = false;                // the line is clamped at the tow point (on a Fixed rod): topEnd 1
+    double towTangent[3] = {0.0, 0.0, 0.0}; // its direction there, into the line (topTangent)
     double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
     int waterDepthRow = 0, gravityRow = 0, waterDensityRow = 0;  // the rows that set them (0: MoorDyn's default)
     LineFileSeabed seabed;
@@ -173,6 +176,8 @@ struct MooringDeckLine {
     bool farFree = false;                    // the far end is a Free point: farBody (a towed body), or none
     bool farDetaches = false;                // a failure detaches its Fixed far end: the end is driven (held still until then)
     LineFilePoint farBody;
+    bool fairleadClamped = false;            // clamped at a Fixed fairlead (a Fixed rod): topEnd 1
+    double fairleadTangent[3] = {0.0, 0.0, 0.0};  // its direction there, into the line
 };
 
 // A Free point where three or more lines meet: its position is an unknown of the system, found from the
@@ -187,6 +192,9 @@ struct MooringNode {
     double inertia[3] = {0.0, 0.0, 0.0}; // a body's moments of inertia about its centre of gravity, body axes [kg m2]
     double CdA[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // a body's drag areas in its axes: translations, rotations [m2]
     double Ca[3] = {0.0, 0.0, 0.0};      // a body's added-mass coefficients of translation in its axes (of rho V)
+    double rodLength = 0.0;              // > 0: a free rod (docs/lines.md, "Rods") along the body's x axis, from
+                                         // -rodLength/2 to rodLength/2: its buoyancy, drag and added mass follow
+                                         // the part of it below z = 0
 };
 
 // A line failure (docs/line_failure.md): the ends of lines held at a deck point detach from it, at a time

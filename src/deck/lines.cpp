@@ -8,14 +8,32 @@
 namespace uc {
 namespace deck {
 
-// AttachA/AttachB: a point ID ("3", "P3", "Point3", "C3", "Con3"); rod ends ("R1A") are not supported.
-bool read_attachment(Fields& f, std::string_view word, const char* column, int nPoints, int& index) {
+// AttachA/AttachB: a point ID ("3", "P3", "Point3", "C3", "Con3") or a rod's end ("R1A", "Rod2B").
+bool read_attachment(Fields& f, std::string_view word, const char* column, int nPoints, int& index,
+                     const std::vector<Rod>* rods, int* rodEnd) {
     const std::string u = upper(word);
     size_t letters = 0;
     while (letters < u.size() && std::isalpha(static_cast<unsigned char>(u[letters]))) ++letters;
     const std::string head = u.substr(0, letters), digits = u.substr(letters);
     if (is_one_of(head, {"R", "ROD"})) {
-        return f.fail(std::string(column) + " " + quoted(word) + ": rods are not supported (lines join points)");
+        if (rodEnd == nullptr) return f.fail(std::string(column) + " " + quoted(word) + ": a rod's end is not supported here");
+        if (rods == nullptr) {
+            return f.fail(std::string(column) + " " + quoted(word) + ": a rod's end, but the deck has no RODS rows");
+        }
+        const std::string number = digits.empty() ? digits : digits.substr(0, digits.size() - 1);
+        const char side = digits.empty() ? '\0' : digits.back();
+        if ((side != 'A' && side != 'B') || number.empty() || number.size() > 8 ||
+            !std::all_of(number.begin(), number.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+            return f.fail(std::string(column) + " " + quoted(word) + " is not a rod's end (R<ID>A or R<ID>B)");
+        }
+        const int id = std::stoi(number);
+        if (id < 1 || id > static_cast<int>(rods->size())) {
+            return f.fail(std::string(column) + " " + quoted(word) + ": there is no rod " + std::to_string(id) +
+                          " (the RODS table has " + std::to_string(rods->size()) + ")");
+        }
+        *rodEnd = 2 * (id - 1) + (side == 'B' ? 1 : 0);
+        index = (*rods)[id - 1].point[side == 'B' ? 1 : 0];
+        return true;
     }
     const bool numeric = !digits.empty() && digits.size() < 9 &&
                          std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
@@ -32,7 +50,7 @@ bool read_attachment(Fields& f, std::string_view word, const char* column, int n
 }
 
 bool read_line(const Row& row, int expectedId, const std::vector<LineType>& types, int nPoints, Line& l,
-               std::string& error) {
+               std::string& error, const std::vector<Rod>* rods) {
     Fields f(row, error);
     if (row.tokens.size() < 6) {
         return f.fail("a line has the fields ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs; this row has " +
@@ -48,10 +66,12 @@ bool read_line(const Row& row, int expectedId, const std::vector<LineType>& type
         for (const LineType& t : types) known += (known.empty() ? "" : ", ") + quoted(t.name);
         return f.fail("line type " + quoted(row.tokens[1]) + " is not among the LINE TYPES (" + known + ")");
     }
-    if (!read_attachment(f, row.tokens[2], "AttachA", nPoints, l.end[0]) ||
-        !read_attachment(f, row.tokens[3], "AttachB", nPoints, l.end[1])) {
+    int rodEnd[2] = {-1, -1};
+    if (!read_attachment(f, row.tokens[2], "AttachA", nPoints, l.end[0], rods, &rodEnd[0]) ||
+        !read_attachment(f, row.tokens[3], "AttachB", nPoints, l.end[1], rods, &rodEnd[1])) {
         return false;
     }
+    for (int e = 0; e < 2; ++e) l.rod[e] = rodEnd[e] + 1;  // 2 (ID - 1) + side + 1 until clamp_lines_to_rods
     if (l.end[0] == l.end[1]) return f.fail("AttachA and AttachB are the same point");
     l.length = f.positive(4, "UnstrLen");
     l.numSegs = f.integer(5, "NumSegs", 1, 100000, "must be between 1 and 100000");

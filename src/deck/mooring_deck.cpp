@@ -98,6 +98,15 @@ bool is_mooring_system_deck(std::string_view text) {
     for (const Row& row : points->rows) {
         if (row.tokens.size() > 1 && upper(row.tokens[1]).rfind("BODY", 0) == 0) return true;
     }
+    // a rod on a body, or a free rod of non-zero length (a free body)
+    if (const auto& rods = sections[static_cast<size_t>(Kind::Rods)]) {
+        for (const Row& row : rods->rows) {
+            if (row.tokens.size() < 10) continue;
+            const std::string kind = upper(row.tokens[2]);
+            if (kind.rfind("BODY", 0) == 0) return true;
+            if (is_one_of(kind, {"FREE", "POINT", "CON"}) && row.tokens[9] != "0") return true;
+        }
+    }
     return false;
 }
 
@@ -176,6 +185,7 @@ void add_free_nodes(Roles& roles, std::vector<MooringNode>& nodes) {
         std::copy(b.pose, b.pose + 3, node.position);
         std::copy(b.pose + 3, b.pose + 6, node.angles);
         std::copy(b.cg, b.cg + 3, node.cg);
+        node.rodLength = b.rodLength;
         nodes.push_back(node);
     }
 }
@@ -231,6 +241,13 @@ bool walk_line(const Roles& roles, size_t first, int start, int pass, int elemen
         }
         line.joints.push_back(point_body(p, deck.waterDensity));
     }
+    // a line clamped to a Fixed rod at a Fixed fairlead: clamped along the rod's axis there (topEnd 1)
+    const Line& l0f = deck.lines[first];
+    const int e0 = l0f.end[0] == start ? 0 : 1;
+    if (line.fairlead.kind == MooringEnd::Kind::Fixed && l0f.clamped[e0]) {
+        line.fairleadClamped = true;
+        std::copy(l0f.tangent[e0], l0f.tangent[e0] + 3, line.fairleadTangent);
+    }
     if (line.sections.size() > UC_MAX_SECTIONS) {
         error = at_line(deck.lines[line.deckLines[UC_MAX_SECTIONS]].row,
                         "a chain of " + std::to_string(line.sections.size()) + " lines from point " +
@@ -277,6 +294,7 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
     if (!parse_deck(text, true, companions, deck, out.notes, error)) return false;
     std::vector<DeckBody> bodies;
     if (!read_bodies(deck, bodies, out, error)) return false;
+    if (!rods_into_bodies(deck, bodies, out.notes, error)) return false;
     if (deck.lines.size() > UC_MAX_LINES) {
         error = at_line(deck.lines[UC_MAX_LINES].row, "line " + std::to_string(UC_MAX_LINES + 1) + ": a mooring system "
                                                       "holds at most " + std::to_string(UC_MAX_LINES) + " lines");
@@ -309,6 +327,13 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
         out.lines.push_back(line);
     }
     if (!check_reached(deck, used, out, error)) return false;
+    std::vector<std::pair<int, int>> held;
+    for (const MooringDeckLine& l : out.lines) {
+        if (!l.fairleadClamped) continue;
+        const Line& d = deck.lines[l.deckLines[0]];
+        held.emplace_back(l.deckLines[0], deck.points[d.end[0]].id == l.fairleadPoint ? 0 : 1);
+    }
+    note_pinned_clamps(deck, held, out.notes);
     out.deckLines = static_cast<int>(deck.lines.size());
     for (const Failure& row : deck.failures) {
         MooringFailure f;
@@ -399,6 +424,8 @@ bool mooring_line_params(const MooringDeck& deck, int k, const UCParams& base, U
         line.farEnd = LineFileFarEnd::Anchored;
         std::copy(l.far.position, l.far.position + 3, line.anchor);
     }
+    line.towClamped = l.fairleadClamped;
+    std::copy(l.fairleadTangent, l.fairleadTangent + 3, line.towTangent);
     p = base;
     if (!apply_line_file(line, p, error)) return false;
     // a far end on a coupled object or a free node is driven; so is an anchor a failure detaches (held at the

@@ -171,6 +171,21 @@ bool read_line_file(std::string_view text, int elementsTotal, LineFileLine& out,
     }
     const Point& vessel = points[lines[chain.front().first].end[chain.front().second ? 1 : 0]];
     std::copy(vessel.position, vessel.position + 3, out.towPoint);
+    // a line clamped to a Fixed rod at the tow point: the tow point is clamped along the rod's axis
+    std::vector<std::pair<int, int>> held;
+    const int towEnd = chain.front().second ? 1 : 0;
+    const Line& first = lines[chain.front().first];
+    if (first.clamped[towEnd] && vessel.kind == PointKind::Fixed) {
+        out.towClamped = true;
+        std::copy(first.tangent[towEnd], first.tangent[towEnd] + 3, out.towTangent);
+        held.emplace_back(chain.front().first, towEnd);
+        out.notes.push_back(at_line(vessel.row, "line " + std::to_string(first.id) + " is clamped to rod " +
+                                                    std::to_string(first.rod[towEnd]) + " at the tow point: topEnd 1, "
+                                                    "topTangent (" + number_text(out.towTangent[0]) + ", " +
+                                                    number_text(out.towTangent[1]) + ", " +
+                                                    number_text(out.towTangent[2]) + ")"));
+    }
+    note_pinned_clamps(deck, held, out.notes);
     if (out.towFixed) {
         out.notes.push_back(at_line(vessel.row, "no Vessel or Coupled point: the Fixed point " + std::to_string(vessel.id) +
                                                     " is the tow point, which follows the inputs tow.*: hold them at "
@@ -228,7 +243,8 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
         p.nAttachments = 0;
     } else {
         // Each MoorDyn line is a section; the points between them are pinned joints (MoorDyn's
-        // points carry no moment), with their mass, volume, drag and added mass an attachment there.
+        // points carry no moment), with their mass, volume, drag and added mass an attachment there; a free
+        // zero-length rod both lines are clamped to is a rigid joint.
         p.nSections = static_cast<int>(line.sections.size());
         p.nAttachments = 0;
         double s0 = 0.0;
@@ -237,7 +253,7 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
             UCSection& out = p.section[k];
             copy_line_properties(s, out);
             out.GJ = p.GJ;
-            out.joint = 1;
+            out.joint = k + 1 < line.sections.size() && line.joints[k].rigid ? 0 : 1;
             s0 += s.length;
             if (k + 1 == line.sections.size() || line.joints[k].empty()) continue;
             if (p.nAttachments == UC_MAX_ATTACHMENTS) {
@@ -252,6 +268,12 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
             a.addedMass = line.joints[k].addedMass;
             a.CdA = line.joints[k].CdA;
         }
+    }
+    if (line.towClamped) {  // on a Fixed rod (docs/lines.md, "Rods"); otherwise the parameter's topEnd
+        p.topEnd = 1;
+        std::copy(line.towTangent, line.towTangent + 3, p.topTangent);
+        // a cantilever (its far end free): the statics start from the line straight along the clamp
+        if (line.farEnd != LineFileFarEnd::Anchored) std::copy(line.towTangent, line.towTangent + 3, p.initialDirection);
     }
     switch (line.farEnd) {
         case LineFileFarEnd::Anchored:

@@ -89,6 +89,7 @@ LineFilePoint point_body(const Point& p, double waterDensity) {
     q.addedMass = p.Ca * waterDensity * p.volume;
     q.CdA = p.CdA;
     q.row = p.row;
+    q.rigid = p.rigid;
     return q;
 }
 

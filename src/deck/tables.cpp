@@ -2,6 +2,8 @@
 // (MoorDyn's defaults, its water depth raised to the deepest point).
 #include "deck/tables.h"
 
+#include <algorithm>
+
 namespace uc {
 namespace deck {
 
@@ -11,7 +13,7 @@ bool parse_deck(std::string_view text, bool system, const LineFileCompanions& co
     if (!collect_sections(text, sections, error)) return false;
     auto section = [&](Kind kind) -> const std::optional<Section>& { return sections[static_cast<size_t>(kind)]; };
 
-    for (Kind kind : {Kind::Bodies, Kind::Rods, Kind::Failure, Kind::Control, Kind::ExternalLoads, Kind::SyropeIC}) {
+    for (Kind kind : {Kind::Bodies, Kind::Failure, Kind::Control, Kind::ExternalLoads, Kind::SyropeIC}) {
         if (system && (kind == Kind::Bodies || kind == Kind::Failure)) continue;
         if (section(kind) && !section(kind)->rows.empty()) {
             error = at_line(section(kind)->rows[0].number, std::string(unsupported(kind)) + " (" + title(kind) +
@@ -23,8 +25,31 @@ bool parse_deck(std::string_view text, bool system, const LineFileCompanions& co
         deck.bodies = section(Kind::Bodies)->rows;
         deck.bodiesHeader = section(Kind::Bodies)->header;
     }
+    const bool anyRods = section(Kind::Rods) && !section(Kind::Rods)->rows.empty();
     if (section(Kind::RodTypes) && !section(Kind::RodTypes)->rows.empty()) {
-        notes.push_back(at_line(section(Kind::RodTypes)->header, "ROD TYPES ignored (there are no rods)"));
+        if (!anyRods) {
+            notes.push_back(at_line(section(Kind::RodTypes)->header, "ROD TYPES ignored (there are no rods)"));
+        } else {
+            for (const Row& row : section(Kind::RodTypes)->rows) {
+                RodType t;
+                if (!read_rod_type(row, t, error)) return false;
+                for (const RodType& other : deck.rodTypes) {
+                    if (other.name == t.name) {
+                        error = at_line(row.number, "rod type " + quoted(t.name) + " is defined twice (also at line " +
+                                                        std::to_string(other.row) + ")");
+                        return false;
+                    }
+                }
+                deck.rodTypes.push_back(t);
+            }
+        }
+    }
+    if (anyRods) {
+        for (const Row& row : section(Kind::Rods)->rows) {
+            Rod r;
+            if (!read_rod(row, static_cast<int>(deck.rods.size()) + 1, deck.rodTypes, r, error)) return false;
+            deck.rods.push_back(r);
+        }
     }
     if (section(Kind::Outputs) && !section(Kind::Outputs)->rows.empty()) {
         notes.push_back(at_line(section(Kind::Outputs)->header, "OUTPUTS ignored: the FMU's outputs are its "
@@ -73,15 +98,26 @@ bool parse_deck(std::string_view text, bool system, const LineFileCompanions& co
         points.push_back(p);
     }
 
+    deck.deckPoints = static_cast<int>(points.size());
+    if (!deck.rods.empty()) {
+        // the free bodies that free rods of non-zero length become are numbered after the deck's bodies (and
+        // after body 1, the platform the Vessel points ride, in a deck without a BODIES section)
+        const bool vessel = std::any_of(points.begin(), points.end(), [](const Point& p) { return p.kind == PointKind::Vessel; });
+        const int firstBody = static_cast<int>(deck.bodies.size()) + (deck.bodies.empty() && vessel ? 1 : 0) + 1;
+        if (!rods_as_points(deck.rods, firstBody, system, points, error)) return false;
+    }
+
     std::vector<Line>& lines = deck.lines;
     for (const Row& row : section(Kind::Lines)->rows) {
         Line l;
-        if (!read_line(row, static_cast<int>(lines.size()) + 1, types, static_cast<int>(points.size()), l, error)) {
+        if (!read_line(row, static_cast<int>(lines.size()) + 1, types, deck.deckPoints, l, error,
+                       deck.rods.empty() ? nullptr : &deck.rods)) {
             return false;
         }
         for (int e : l.end) points[e].lines.push_back(static_cast<int>(lines.size()));
         lines.push_back(l);
     }
+    if (!deck.rods.empty()) clamp_lines_to_rods(deck.rods, deck.rodTypes, types, points, lines, notes);
 
     if (section(Kind::Failure)) {
         for (const Row& row : section(Kind::Failure)->rows) {

@@ -80,6 +80,8 @@ struct Point {
     double mass = 0.0, volume = 0.0, CdA = 0.0, Ca = 0.0;
     int row = 0;
     std::vector<int> lines;  // indices of the lines attached
+    int rod = 0;         // > 0: the end of rod `rod` (its ID) this point stands for (deck/rods.cpp), row its RODS row
+    bool rigid = false;  // a Free zero-length rod whose two lines are clamped to it: a rigid joint
 };
 
 // A POINTS row; bodies: a mooring system's deck (points on bodies, Body<ID>, are read).
@@ -100,15 +102,22 @@ struct Line {
     double length = 0.0;
     int numSegs = 0;
     int row = 0;
+    int rod[2] = {0, 0};    // per end: the rod (its ID) whose end it is attached to, 0 for a point
+    bool clamped[2] = {false, false};  // per end: on a rod with EI > 0: MoorDyn clamps the line's tangent to the rod's axis
+    double tangent[2][3] = {};         // per end, where clamped: the line's direction away from the rod (unit)
 };
 
-// A point ID as AttachA/AttachB (and FAILURE's Point) spell it ("3", "P3", "Point3", "C3", "Con3") into its
-// index among the nPoints points; rod ends ("R1A") refused.
-bool read_attachment(Fields& f, std::string_view word, const char* column, int nPoints, int& index);
+struct Rod;
 
-// A LINES row: its line type among `types`, its ends among the nPoints points.
+// A point ID as AttachA/AttachB (and FAILURE's Point) spell it ("3", "P3", "Point3", "C3", "Con3") into its
+// index among the nPoints points; a rod end ("R1A", "Rod2B") into the point that stands for it (rods:
+// the deck's rods, read by read_rod; nullptr: rod ends refused), *rodEnd = 2 (ID - 1) + (0 for A, 1 for B).
+bool read_attachment(Fields& f, std::string_view word, const char* column, int nPoints, int& index,
+                     const std::vector<Rod>* rods = nullptr, int* rodEnd = nullptr);
+
+// A LINES row: its line type among `types`, its ends among the nPoints points of the deck or the rods' ends.
 bool read_line(const Row& row, int expectedId, const std::vector<LineType>& types, int nPoints, Line& l,
-               std::string& error);
+               std::string& error, const std::vector<Rod>* rods = nullptr);
 
 // One MoorDyn line as a section of ours, in our conventions.
 LineFileSection section_of(const Line& l, const LineType& t);
@@ -140,11 +149,54 @@ struct DeckBody {
     double inertia[3] = {0.0, 0.0, 0.0};
     double CdA[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // body axes: translations x, y, z, rotations about them
     double Ca[3] = {0.0, 0.0, 0.0};                  // translations in body axes
+    double rodLength = 0.0;                          // a free rod's body: its length along the body's x axis
     int row = 0;
 };
 
 // MoorDyn's BODIES row: ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca* (angles in degrees).
 bool read_body(const Row& row, int expectedId, DeckBody& b, std::vector<std::string>& notes, std::string& error);
+
+// ------------------------------------------------------------------------------------------- rods (deck/rods.cpp)
+struct RodType {
+    std::string name;
+    double diameter = 0.0, massPerLength = 0.0, Cd = 0.0, Ca = 0.0, CdEnd = 0.0, CaEnd = 0.0;
+    int row = 0;
+};
+
+// A ROD TYPES row: TypeName Diam Mass/m Cd Ca CdEnd CaEnd.
+bool read_rod_type(const Row& row, RodType& t, std::string& error);
+
+enum class RodKind { Fixed, Coupled, Free, Body };
+
+// A RODS row (docs/lines.md, "Rods"): a rigid cylinder from end A to end B; NumSegs 0 is MoorDyn's
+// zero-length rod at A, whose B coordinates are its direction.
+struct Rod {
+    int id = 0, type = 0, row = 0, numSegs = 0;
+    RodKind kind = RodKind::Fixed;
+    int body = 0;                   // Body: the deck's body ID (its ends in the body's frame)
+    double a[3] = {}, b[3] = {};    // its ends (zero length: b = a)
+    double axis[3] = {};            // unit vector from A to B (zero length: the direction given)
+    double length = 0.0;
+    int point[2] = {-1, -1};        // the points (indices) that stand for its ends A and B (the same one at zero length)
+    int freeBody = 0;               // a Free rod of non-zero length: the ID of the free body it becomes
+};
+
+// A RODS row: ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs. Pinned rods (Pinned,
+// CoupledPinned, Body<k>Pinned) are refused: a rod free in rotation about a held end has no counterpart.
+bool read_rod(const Row& row, int expectedId, const std::vector<RodType>& types, Rod& r, std::string& error);
+
+// The points that stand for the rods' ends, appended to `points` (IDs after the deck's). firstBody: the ID of the free body the first Free rod of non-zero length
+// becomes. system: a mooring system's deck (rods on bodies and free rods of non-zero length are read).
+bool rods_as_points(std::vector<Rod>& rods, int firstBody, bool system, std::vector<Point>& points,
+                    std::string& error);
+
+// After the lines are read: the rods' ends that hold no line dropped from the points (the others renumbered),
+// what each rod became noted, which line ends are clamped to a rod (a line type with EI > 0) and in which
+// direction, and which Free zero-length rods are rigid joints.
+void clamp_lines_to_rods(std::vector<Rod>& rods, const std::vector<RodType>& rodTypes,
+                         const std::vector<LineType>& types, std::vector<Point>& points, std::vector<Line>& lines,
+                         std::vector<std::string>& notes);
+
 
 // ------------------------------------------------------------------------------------------- the deck (deck/tables.cpp)
 // The tables of a deck, checked row by row, and its environment (MoorDyn's defaults, its water depth
@@ -156,6 +208,9 @@ struct Deck {
     std::vector<Line> lines;
     std::vector<Row> bodies;  // the BODIES rows (system only)
     std::vector<Failure> failures;  // the FAILURE rows (system only)
+    std::vector<RodType> rodTypes;
+    std::vector<Rod> rods;          // the RODS rows; their ends are points after the deck's (rods_as_points)
+    int deckPoints = 0;             // the POINTS table's rows (the points after them stand for rod ends)
     int bodiesHeader = 0;
     double waterDepth = 0.0, gravity = 0.0, waterDensity = 0.0;
     int waterDepthRow = 0, gravityRow = 0, waterDensityRow = 0;
@@ -163,6 +218,18 @@ struct Deck {
     LineFileSeabed seabed;
     LineFileSea sea;
 };
+
+// Free rods of non-zero length as free bodies (appended to `bodies`, IDs as rods_as_points gave them), rods of
+// non-zero length on a Free body added to it (mass, volume, inertia, drag, added mass along its axes); rods on
+// Coupled bodies noted as ignored. Refused, naming the rod: a rod through or above the waterline, a rod on a
+// free body off the body's axes or away from its reference point and centre of gravity.
+bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vector<std::string>& notes,
+                      std::string& error);
+
+// A warning for each line end MoorDyn clamps to a rod that the FMU holds pinned: every clamped end but those
+// in `held` (line index, end: the clamps the reader represented, a tow point's topEnd 1) and those at a rigid
+// joint or at a free zero-length rod whose other line is not clamped (pinned there in MoorDyn too).
+void note_pinned_clamps(const Deck& deck, const std::vector<std::pair<int, int>>& held, std::vector<std::string>& notes);
 
 bool parse_deck(std::string_view text, bool system, const LineFileCompanions& companions, Deck& deck,
                 std::vector<std::string>& notes, std::string& error);

@@ -524,10 +524,48 @@ Vec3 MooringSystem::node_load(int n, const Vec3& x, const UCInputs& in, const Ve
     return Vec3(0.0, 0.0, -(p.mass - fluid.rho * p.volume) * fluid.gravity) + 0.5 * fluid.rho * p.CdA * w.norm() * w;
 }
 
+namespace {
+
+// A free rod's part below z = 0 (docs/lines.md, "Rods"): the fraction of its length, its centre, and how many
+// of its two ends are under water. The rod lies along its body's x axis from -L/2 to L/2 about x.
+void rod_under_water(const MooringNode& node, const Vec3& x, const Mat3& R, double& fraction, Vec3& centre,
+                     int& wetEnds) {
+    const Vec3 half = 0.5 * node.rodLength * R.col(0);
+    const Vec3 a = x - half, b = x + half;
+    const Vec3& low = a.z() < b.z() ? a : b;
+    const Vec3& high = a.z() < b.z() ? b : a;
+    if (high.z() <= 0.0) {
+        fraction = 1.0, centre = x, wetEnds = 2;
+    } else if (low.z() >= 0.0) {
+        fraction = 0.0, centre = x, wetEnds = 0;
+    } else {
+        fraction = -low.z() / (high.z() - low.z());
+        centre = low + 0.5 * fraction * (high - low);
+        wetEnds = 1;
+    }
+}
+
+}  // namespace
+
 void MooringSystem::body_load(int n, const Vec3& x, const Mat3& R, const Vec3& v, const Vec3& omega,
                               const UCInputs& in, Vec3& force, Vec3& moment) const {
     const MooringNode& node = deck_.nodes[n];
     const FluidProps& fluid = lines_[0]->model().fluid();
+    if (node.rodLength > 0.0) {  // a free rod: buoyancy, drag and added mass of its part under water
+        double wet = 1.0;
+        int wetEnds = 2;
+        Vec3 centre = x;
+        rod_under_water(node, x, R, wet, centre, wetEnds);
+        const Vec3 weight(0.0, 0.0, -node.point.mass * fluid.gravity);
+        const Vec3 buoyancy(0.0, 0.0, fluid.rho * node.point.volume * wet * fluid.gravity);
+        const Vec3 u = R.transpose() * (water_velocity(x, in) - v), spin = R.transpose() * omega;
+        const Vec3 dragArea(node.CdA[0] * 0.5 * wetEnds, node.CdA[1] * wet, node.CdA[2] * wet);
+        const Vec3 turnArea(node.CdA[3] * wet, node.CdA[4] * wet, node.CdA[5] * wet);
+        force = weight + buoyancy + 0.5 * fluid.rho * u.norm() * (R * dragArea.cwiseProduct(u));
+        moment = (R * Vec3(node.cg[0], node.cg[1], node.cg[2])).cross(weight) + (centre - x).cross(buoyancy) -
+                 0.5 * fluid.rho * spin.norm() * (R * turnArea.cwiseProduct(spin));
+        return;
+    }
     // weight and buoyancy together at the centre of gravity, as MoorDyn v2 applies them
     const Vec3 net(0.0, 0.0, (fluid.rho * node.point.volume - node.point.mass) * fluid.gravity);
     // drag in the body's axes: of translation at the reference point in the water's velocity relative to it,
@@ -539,9 +577,17 @@ void MooringSystem::body_load(int n, const Vec3& x, const Mat3& R, const Vec3& v
              0.5 * fluid.rho * spin.norm() * (R * turnArea.cwiseProduct(spin));
 }
 
-Mat3 MooringSystem::body_added_mass(int n, const Mat3& R) const {
+Mat3 MooringSystem::body_added_mass(int n, const Vec3& x, const Mat3& R) const {
     const MooringNode& node = deck_.nodes[n];
     const double rhoV = lines_[0]->model().fluid().rho * node.point.volume;
+    if (node.rodLength > 0.0) {  // a free rod: the added mass of its part under water, its axial at its wet ends
+        double wet = 1.0;
+        int wetEnds = 2;
+        Vec3 centre = x;
+        rod_under_water(node, x, R, wet, centre, wetEnds);
+        const Vec3 ca(node.Ca[0] * 0.5 * wetEnds, node.Ca[1] * wet, node.Ca[2] * wet);
+        return R * (rhoV * ca).asDiagonal() * R.transpose();
+    }
     return R * (rhoV * Vec3(node.Ca[0], node.Ca[1], node.Ca[2])).asDiagonal() * R.transpose();
 }
 
@@ -853,7 +899,7 @@ bool MooringSystem::node_step(double h, double shift, const UCInputs& in, int& w
             const Vec3 acg = a + alpha.cross(c) + w.cross(w.cross(c));
             Vec3 force, moment;
             body_load(static_cast<int>(n), x1, R, v1[n], w, in, force, moment);
-            r.segment<3>(o) = force - p.mass * acg - body_added_mass(static_cast<int>(n), R) * a;
+            r.segment<3>(o) = force - p.mass * acg - body_added_mass(static_cast<int>(n), x1, R) * a;
             r.segment<3>(o + 3) = moment - c.cross(p.mass * acg) - I * alpha - w.cross(I * w);
         }
         const LineEnvironment env = line_environment(in);

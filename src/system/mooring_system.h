@@ -259,7 +259,7 @@ private:
     void body_load(int n, const Vec3& x, const Mat3& R, const Vec3& v, const Vec3& omega, const UCInputs& in,
                    Vec3& force, Vec3& moment) const;
     // Free body n's added mass of translation (rho V Ca in its axes) in the earth axes at orientation R.
-    Mat3 body_added_mass(int n, const Mat3& R) const;
+    Mat3 body_added_mass(int n, const Vec3& x, const Mat3& R) const;
     // One communication step of the lines that end at free nodes, coupled implicitly through the nodes'
     // equations of motion (docs/systems_mooring.md, "Dynamics").
     // The error of the step just taken from start over h in the nodes' positions (a body's: at the reach

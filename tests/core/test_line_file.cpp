@@ -460,9 +460,9 @@ TEST(LineFileRefuses, BodiesRodsAndOtherObjects) {
     expect_refused(d, "1 coupled", "bodies are not supported (BODIES section)");
     d = edit(kSingleChain, "---------------------- POINTS",
              "---- RODS ----\nID RodType\n(#) (-)\n1 can body1 0 0 0 0 0 1 4 p\n---------------------- POINTS");
-    expect_refused(d, "1 can body1", "rods are not supported (RODS section)");
+    expect_refused(d, "1 can body1", "rod type 'can' is not among the ROD TYPES (none)");
     d = edit(kSingleChain, "chain      1        2", "chain      R1A      2");
-    expect_refused(d, "R1A", "AttachA 'R1A': rods are not supported");
+    expect_refused(d, "R1A", "AttachA 'R1A': a rod's end, but the deck has no RODS rows");
     d = edit(kSingleChain, "1     Fixed ", "1     Body1 ");
     expect_refused(d, "Body1", "a point attached to 'Body1': bodies are not supported");
     d = edit(kSingleChain, "0.002    dtM",

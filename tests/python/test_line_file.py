@@ -122,7 +122,7 @@ def test_an_unreadable_deck_is_an_error_naming_the_paths_tried(make_cable):
 
 @pytest.mark.parametrize("edit,line,what", [
     (("chain      0.0766", "chain      0.07z6"), 7, "Diam '0.07z6' is not a number"),
-    (("1    chain     1        2", "1    chain     R1A      2"), 16, "AttachA 'R1A': rods are not supported"),
+    (("1    chain     1        2", "1    chain     R1A      2"), 16, "AttachA 'R1A': a rod's end, but the deck has no RODS rows"),
     (("1    Fixed  ", "1    Vessel "), 12, "a second Vessel point (the first is point 1)"),
     (("7.5e8    -0.8", "ea.txt   -0.8"), 7, "EA 'ea.txt': the tension-strain file is not next to the deck, or cannot be read"),
 ], ids=["non-numeric", "rod", "two-vessels", "missing-EA-file"])

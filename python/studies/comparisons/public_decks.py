@@ -257,7 +257,7 @@ def census(fmu, moordyn: Path, moorpy: Path, progress=None) -> list:
 
 # The reasons of the census table: (pattern on the FMU's message or MoorPy's failure, the reason shown).
 REASONS = [
-    (r"rods are not supported", "rods"),
+    (r"rod \d+ is pinned", "a pinned rod"),
     (r"the Syrope model", "Syrope lines"),
     (r"SeafloorFile|bathymetry", "a bathymetry file"),
     (r"viscoelastic", "viscoelastic EA"),
@@ -268,6 +268,7 @@ REASONS = [
     (r"no static equilibrium", "no static equilibrium (a line longer than the way down and across)"),
     (r"static equilibrium not found", "static equilibrium not found"),
     (r"pinned", "a pinned body"),
+    (r"static equilibrium of the free points", "static equilibrium of the free points not found"),
 ]
 
 

@@ -1,0 +1,435 @@
+// rods.cpp - the ROD TYPES and RODS sections of a MoorDyn v2 deck (docs/lines.md, "Rods"): each rod read
+// as the points, joints and bodies the FMU has (a rod's ends are points; a zero-length rod one point), the
+// lines clamped to rods noted, and the rods the FMU has no counterpart for refused naming the rod.
+#include "deck/tables.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+namespace uc {
+namespace deck {
+
+namespace {
+
+// A number for a message about a rod (6 significant digits).
+std::string short_number(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.6g", v);
+    return buffer;
+}
+
+const char* kind_text(RodKind kind) {
+    switch (kind) {
+        case RodKind::Fixed: return "Fixed";
+        case RodKind::Coupled: return "Coupled";
+        case RodKind::Free: return "Free";
+        default: return "Body";
+    }
+}
+
+std::string rod_name(const Rod& r) {
+    return "rod " + std::to_string(r.id) + " (" + kind_text(r.kind) +
+           (r.kind == RodKind::Body ? std::to_string(r.body) : std::string()) +
+           (r.numSegs == 0 ? ", zero length)" : ", " + short_number(r.length) + " m)");
+}
+
+// The attachment word of a rod: letters, a number, letters (Body2Pinned), as MoorDyn splits it.
+bool read_rod_kind(Fields& f, std::string_view word, Rod& r) {
+    const std::string u = upper(word);
+    size_t i = 0;
+    while (i < u.size() && std::isalpha(static_cast<unsigned char>(u[i]))) ++i;
+    const std::string head = u.substr(0, i);
+    size_t j = i;
+    while (j < u.size() && std::isdigit(static_cast<unsigned char>(u[j]))) ++j;
+    const std::string digits = u.substr(i, j - i), tail = u.substr(j);
+    const std::string id = "rod " + std::to_string(r.id);
+    if (is_one_of(head, {"PINNED", "PIN", "VESSELPINNED", "VESPIN", "CPLDPIN", "COUPLEDPINNED"}) ||
+        (head == "BODY" && is_one_of(tail, {"PINNED", "PIN"}))) {
+        return f.fail(id + " is pinned (" + quoted(word) + ": its end A held, free to turn about it): not supported "
+                      "(the FMU's rods are fixed, coupled, free, or fixed to a body)");
+    }
+    if (!tail.empty()) return f.fail("unknown rod attachment " + quoted(word));
+    if (is_one_of(head, {"ANCHOR", "FIXED", "FIX"}) && digits.empty()) {
+        r.kind = RodKind::Fixed;
+    } else if (is_one_of(head, {"VESSEL", "VES", "COUPLED", "CPLD"}) && digits.empty()) {
+        r.kind = RodKind::Coupled;
+    } else if (is_one_of(head, {"POINT", "CON", "FREE"}) && digits.empty()) {
+        r.kind = RodKind::Free;
+    } else if (head == "BODY" && !digits.empty() && digits.size() < 9) {
+        r.kind = RodKind::Body;
+        r.body = std::stoi(digits);
+    } else {
+        return f.fail("unknown rod attachment " + quoted(word) + " (Fixed, Coupled, Free or Body<ID>)");
+    }
+    return true;
+}
+
+}  // namespace
+
+bool read_rod_type(const Row& row, RodType& t, std::string& error) {
+    Fields f(row, error);
+    if (row.tokens.size() < 7) {
+        return f.fail("a rod type has the fields TypeName Diam Mass/m Cd Ca CdEnd CaEnd; this row has " +
+                      std::to_string(row.tokens.size()));
+    }
+    t.name = std::string(row.tokens[0]);
+    t.row = row.number;
+    t.diameter = f.positive(1, "Diam");
+    t.massPerLength = f.non_negative(2, "Mass/m");
+    t.Cd = f.non_negative(3, "Cd");
+    t.Ca = f.non_negative(4, "Ca");
+    t.CdEnd = f.non_negative(5, "CdEnd");
+    t.CaEnd = f.non_negative(6, "CaEnd");
+    return f.ok();
+}
+
+bool read_rod(const Row& row, int expectedId, const std::vector<RodType>& types, Rod& r, std::string& error) {
+    Fields f(row, error);
+    if (row.tokens.size() < 10) {
+        return f.fail("a rod has the fields ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs; this row has " +
+                      std::to_string(row.tokens.size()));
+    }
+    if (!read_id(f, "rod", expectedId, r.id)) return false;
+    r.row = row.number;
+    r.type = -1;
+    for (size_t k = 0; k < types.size(); ++k) {
+        if (types[k].name == row.tokens[1]) r.type = static_cast<int>(k);
+    }
+    if (r.type < 0) {
+        std::string known;
+        for (const RodType& t : types) known += (known.empty() ? "" : ", ") + quoted(t.name);
+        return f.fail("rod type " + quoted(row.tokens[1]) + " is not among the ROD TYPES (" +
+                      (known.empty() ? std::string("none") : known) + ")");
+    }
+    if (!read_rod_kind(f, row.tokens[2], r)) return false;
+    static const char* const kColumns[] = {"Xa", "Ya", "Za", "Xb", "Yb", "Zb"};
+    for (int k = 0; k < 3; ++k) {
+        r.a[k] = f.number(3 + k, kColumns[k]);
+        r.b[k] = f.number(6 + k, kColumns[3 + k]);
+    }
+    r.numSegs = f.integer(9, "NumSegs", 0, 100000, "must be between 0 and 100000");
+    if (!f.ok()) return false;
+    double d[3], n = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        d[k] = r.numSegs == 0 ? r.b[k] : r.b[k] - r.a[k];  // zero length: B is the direction (MoorDyn)
+        n += d[k] * d[k];
+    }
+    n = std::sqrt(n);
+    if (r.numSegs > 0 && !(n > 0.0))
+        return f.fail("rod " + std::to_string(r.id) + ": its ends A and B are the same point with NumSegs " +
+                      std::to_string(r.numSegs) + " (a zero-length rod has NumSegs 0)");
+    if (!(n > 0.0))
+        return f.fail("rod " + std::to_string(r.id) + ": Xb Yb Zb, the direction of a zero-length rod, is (0, 0, 0)");
+    for (int k = 0; k < 3; ++k) r.axis[k] = d[k] / n;
+    r.length = r.numSegs == 0 ? 0.0 : n;
+    if (r.numSegs == 0) std::copy(r.a, r.a + 3, r.b);
+    return true;
+}
+
+bool rods_as_points(std::vector<Rod>& rods, int firstBody, bool system, std::vector<Point>& points,
+                    std::string& error) {
+    int nextBody = firstBody;
+    for (Rod& r : rods) {
+        if (!system && (r.kind == RodKind::Body || (r.kind == RodKind::Free && r.numSegs > 0))) {
+            error = at_line(r.row, rod_name(r) + ": a rod on a body or a free rod of non-zero length makes the "
+                                   "deck a mooring system; here it is read as one line (a BODIES section is refused)");
+            return false;
+        }
+        if (r.kind == RodKind::Free && r.numSegs > 0) r.freeBody = nextBody++;
+        const int ends = r.numSegs == 0 ? 1 : 2;
+        for (int e = 0; e < ends; ++e) {
+            Point p;
+            p.id = static_cast<int>(points.size()) + 1;
+            p.row = r.row;
+            p.rod = r.id;
+            const double* at = e == 0 ? r.a : r.b;
+            switch (r.kind) {
+                case RodKind::Fixed: p.kind = PointKind::Fixed; break;
+                case RodKind::Coupled: p.kind = PointKind::Vessel; break;
+                case RodKind::Body: p.kind = PointKind::Body; p.body = r.body; break;
+                case RodKind::Free:
+                    if (r.numSegs == 0) {
+                        p.kind = PointKind::Free;
+                    } else {  // a point of its free body, in the body's frame: along its x axis from its centre
+                        p.kind = PointKind::Body;
+                        p.body = r.freeBody;
+                    }
+                    break;
+            }
+            if (r.kind == RodKind::Free && r.numSegs > 0) {
+                p.position[0] = (e == 0 ? -0.5 : 0.5) * r.length;
+            } else {
+                std::copy(at, at + 3, p.position);
+            }
+            r.point[e] = static_cast<int>(points.size());
+            points.push_back(p);
+        }
+        if (ends == 1) r.point[1] = r.point[0];
+    }
+    return true;
+}
+
+void clamp_lines_to_rods(std::vector<Rod>& rods, const std::vector<RodType>& rodTypes,
+                         const std::vector<LineType>& types, std::vector<Point>& points, std::vector<Line>& lines,
+                         std::vector<std::string>& notes) {
+    // a rod's end that holds no line is no point (a Fixed rod's free end, a can's end without a line)
+    std::vector<int> index(points.size(), -1);
+    std::vector<Point> kept;
+    for (size_t i = 0; i < points.size(); ++i) {
+        if (points[i].rod > 0 && points[i].lines.empty()) continue;
+        index[i] = static_cast<int>(kept.size());
+        kept.push_back(points[i]);
+        kept.back().id = static_cast<int>(kept.size());
+    }
+    points = std::move(kept);
+    for (Line& l : lines)
+        for (int& e : l.end) e = index[e];
+    for (Rod& r : rods)
+        for (int& e : r.point) e = index[e];
+    for (const Rod& r : rods) {
+        std::string at;
+        for (int e = 0; e < (r.numSegs == 0 ? 1 : 2); ++e) {
+            if (r.point[e] < 0) continue;
+            at += std::string(at.empty() ? "" : " and ") + "point " + std::to_string(points[r.point[e]].id) +
+                  (r.numSegs == 0 ? "" : e == 0 ? " (end A)" : " (end B)");
+        }
+        if (at.empty()) at = "no point (no line is attached to it)";
+        std::string what;
+        switch (r.kind) {
+            case RodKind::Fixed: what = "Fixed " + at + ": its own weight and loads go to the ground"; break;
+            case RodKind::Coupled:
+                what = "coupled " + at + (r.numSegs == 0 ? "" : ", each given its own motion") +
+                       "; its own mass and loads are ignored (its motion is given)";
+                break;
+            case RodKind::Body: what = at + " on body " + std::to_string(r.body); break;
+            case RodKind::Free:
+                what = r.numSegs == 0 ? "a free " + at : "free body " + std::to_string(r.freeBody) + ", with " + at +
+                                                             " on the body's x axis";
+                break;
+        }
+        notes.push_back(at_line(r.row, rod_name(r) + " read as " + what));
+    }
+    for (Line& l : lines) {
+        for (int e = 0; e < 2; ++e) {
+            if (l.rod[e] == 0) continue;
+            const Rod& r = rods[(l.rod[e] - 1) / 2];
+            const bool atB = (l.rod[e] - 1) % 2 == 1;
+            l.rod[e] = r.id;
+            // MoorDyn: a line with bending stiffness leaves a rod's end along the rod's axis (out of end B
+            // along it, out of end A against it); one without is pinned there
+            l.clamped[e] = types[l.type].EI > 0.0;
+            for (int k = 0; k < 3; ++k) l.tangent[e][k] = (atB ? 1.0 : -1.0) * r.axis[k];
+        }
+    }
+    // A Free zero-length rod with two lines clamped to it, one at each end: a rigid joint (MoorDyn's rod
+    // turns to balance their moments, so it passes the moment from one line to the other).
+    for (const Rod& r : rods) {
+        if (r.kind != RodKind::Free || r.numSegs != 0 || r.point[0] < 0) continue;
+        Point& p = points[r.point[0]];
+        std::string joined;
+        for (int q : p.lines) joined += (joined.empty() ? "" : ", ") + std::to_string(lines[q].id);
+        if (p.lines.size() == 2) {
+            const Line& l0 = lines[p.lines[0]];
+            const Line& l1 = lines[p.lines[1]];
+            const int e0 = l0.end[0] == r.point[0] && l0.rod[0] == r.id ? 0 : 1;
+            const int e1 = l1.end[0] == r.point[0] && l1.rod[0] == r.id ? 0 : 1;
+            double dot = 0.0;
+            for (int k = 0; k < 3; ++k) dot += l0.tangent[e0][k] * l1.tangent[e1][k];
+            p.rigid = l0.clamped[e0] && l1.clamped[e1] && dot < 0.0;
+        }
+        const RodType& t = rodTypes[r.type];
+        const double area = 0.25 * kPi * t.diameter * t.diameter;
+        std::string what = p.rigid ? "a rigid joint between lines " + joined + " (it passes their bending moment)"
+                                   : "a pinned point of lines " + joined;
+        notes.push_back(at_line(r.row, "rod " + std::to_string(r.id) + " (Free, zero length): " + what +
+                                           "; its end drag and added mass along its axis (2 CdEnd A = " +
+                                           short_number(2.0 * t.CdEnd * area) + " m2, 2 CaEnd " +
+                                           "rho pi d^3/12 per unit density = " +
+                                           short_number(2.0 * t.CaEnd * kPi * std::pow(t.diameter, 3) / 12.0) +
+                                           " m3) are left out"));
+    }
+}
+
+void note_pinned_clamps(const Deck& deck, const std::vector<std::pair<int, int>>& held,
+                        std::vector<std::string>& notes) {
+    for (size_t i = 0; i < deck.lines.size(); ++i) {
+        const Line& l = deck.lines[i];
+        for (int e = 0; e < 2; ++e) {
+            if (!l.clamped[e]) continue;
+            if (std::find(held.begin(), held.end(), std::make_pair(static_cast<int>(i), e)) != held.end()) continue;
+            const Point& p = deck.points[l.end[e]];
+            if (p.rigid) continue;  // a rigid joint: the moment passes from one line to the other
+            if (p.kind == PointKind::Free && p.lines.size() == 2) {
+                // a free zero-length rod turns to balance its lines' moments: with one line clamped it follows
+                // that line's end, which then carries no moment (pinned, exactly)
+                const Line& o = deck.lines[p.lines[0] == static_cast<int>(i) ? p.lines[1] : p.lines[0]];
+                const int oe = o.end[0] == l.end[e] ? 0 : 1;
+                if (!o.clamped[oe]) continue;
+            }
+            notes.push_back("warning: " + at_line(l.row, "line " + std::to_string(l.id) + " (EI " +
+                                                             short_number(deck.types[l.type].EI) + " N m2): its end " +
+                                                             (e == 0 ? "A" : "B") + " is clamped to rod " +
+                                                             std::to_string(l.rod[e]) + "'s axis in MoorDyn, pinned "
+                                                             "at point " + std::to_string(p.id) + " here (the bending "
+                                                             "moment it carries into the rod is left out)"));
+        }
+    }
+}
+
+namespace {
+
+// R = Rx(a0) Ry(a1) Rz(a2) applied to v (MoorDyn's orientation of a body).
+void rotate_body(const double a[3], const double v[3], double out[3]) {
+    const double cx = std::cos(a[0]), sx = std::sin(a[0]), cy = std::cos(a[1]), sy = std::sin(a[1]),
+                 cz = std::cos(a[2]), sz = std::sin(a[2]);
+    const double z1[3] = {cz * v[0] - sz * v[1], sz * v[0] + cz * v[1], v[2]};
+    const double y1[3] = {cy * z1[0] + sy * z1[2], z1[1], -sy * z1[0] + cy * z1[2]};
+    out[0] = y1[0];
+    out[1] = cx * y1[1] - sx * y1[2];
+    out[2] = sx * y1[1] + cx * y1[2];
+}
+
+// A straight rod's rigid-body description about its centre, its axis along body axis `axis` (0, 1, 2):
+// mass, displaced volume, moments of inertia (with the transverse added inertia Ca rho A L^3 / 12 of the
+// water it accelerates as it turns: a free body has no rotational added mass), drag areas (translations, rotations) and added volumes (added mass / rho) of
+// translation, each along the body's axes. The Morison loads of the rod integrated along its length:
+// transverse drag Cd d L, axial drag on its two ends 2 CdEnd A (MoorDyn applies CdEnd at each end),
+// turning drag about a transverse axis Cd d L^4 / 32 (the integral of |r|^3), transverse added mass Ca rho V,
+// axial 2 CaEnd rho pi d^3 / 12 (MoorDyn's half-sphere at each end).
+struct RodBody {
+    double mass = 0.0, volume = 0.0, inertia[3] = {}, CdA[6] = {}, addedVolume[3] = {};
+};
+
+RodBody rod_body(const Rod& r, const RodType& t, int axis, double rho) {
+    RodBody b;
+    const double d = t.diameter, L = r.length, A = 0.25 * kPi * d * d;
+    b.mass = t.massPerLength * L;
+    b.volume = A * L;
+    const double endVolume = 2.0 * t.CaEnd * kPi * d * d * d / 12.0;
+    for (int k = 0; k < 3; ++k) {
+        const bool along = k == axis;
+        b.inertia[k] = along ? b.mass * d * d / 8.0
+                             : b.mass * (L * L / 12.0 + d * d / 16.0) + t.Ca * rho * A * L * L * L / 12.0;
+        b.CdA[k] = along ? 2.0 * t.CdEnd * A : t.Cd * d * L;
+        b.CdA[3 + k] = along ? 0.0 : t.Cd * d * std::pow(L, 4) / 32.0;
+        b.addedVolume[k] = along ? endVolume : t.Ca * b.volume;
+    }
+    return b;
+}
+
+// The body axis (0, 1, 2) a unit vector lies along, -1 if none.
+int body_axis(const double v[3]) {
+    for (int k = 0; k < 3; ++k) {
+        if (std::abs(std::abs(v[k]) - 1.0) < 1e-9) return k;
+    }
+    return -1;
+}
+
+}  // namespace
+
+bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vector<std::string>& notes,
+                      std::string& error) {
+    const double rho = deck.waterDensity;
+    for (const Rod& r : deck.rods) {
+        if (r.numSegs == 0 || (r.kind != RodKind::Body && r.kind != RodKind::Free)) continue;
+        const RodType& t = deck.rodTypes[r.type];
+        const std::string name = rod_name(r);
+        auto refuse = [&](const std::string& why) {
+            error = at_line(r.row, name + ": " + why);
+            return false;
+        };
+        // its ends in the earth frame at the deck's pose: a rod read as a rigid body must stay under water
+        // (a free body's buoyancy is constant; through the waterline it would change with the draft)
+        double ends[2][3];
+        double ax[3];
+        if (r.kind == RodKind::Body) {
+            if (r.body < 1 || r.body > static_cast<int>(bodies.size()))
+                return refuse("it is on body " + std::to_string(r.body) + ", which the BODIES table does not have");
+            const DeckBody& b = bodies[r.body - 1];
+            if (b.kind != BodyKind::Free) {
+                if (b.kind == BodyKind::Coupled)
+                    notes.push_back(at_line(r.row, name + ": its mass and loads are ignored, as coupled body " +
+                                                       std::to_string(b.id) + "'s own (its motion is given)"));
+                continue;
+            }
+            for (int e = 0; e < 2; ++e) {
+                rotate_body(b.pose + 3, e == 0 ? r.a : r.b, ends[e]);
+                for (int k = 0; k < 3; ++k) ends[e][k] += b.pose[k];
+            }
+            std::copy(r.axis, r.axis + 3, ax);
+        } else {
+            for (int k = 0; k < 3; ++k) {
+                ends[0][k] = r.a[k];
+                ends[1][k] = r.b[k];
+            }
+        }
+        const double top = std::max(ends[0][2], ends[1][2]) + 0.5 * t.diameter;
+        if (top > 0.0 && r.kind == RodKind::Body)
+            return refuse("it reaches z = " + short_number(top) + " m (its top end and radius) at the deck's pose: a rod "
+                          "through or above the waterline is not supported (a rod read as a rigid body keeps its full "
+                          "buoyancy; its draft would change it: only a free rod follows the waterline)");
+        if (r.kind == RodKind::Body) {
+            DeckBody& b = bodies[r.body - 1];
+            const int axis = body_axis(ax);
+            if (axis < 0)
+                return refuse("its axis is not along one of body " + std::to_string(b.id) + "'s axes: its drag and added "
+                              "mass have no per-axis form in the body's axes");
+            double centre[3];
+            for (int k = 0; k < 3; ++k) centre[k] = 0.5 * (r.a[k] + r.b[k]);
+            for (int k = 0; k < 3; ++k) {
+                if (std::abs(centre[k]) > 1e-9 || std::abs(b.cg[k]) > 1e-9)
+                    return refuse("its centre (" + short_number(centre[0]) + ", " + short_number(centre[1]) + ", " +
+                                  short_number(centre[2]) + ") m and body " + std::to_string(b.id) + "'s centre of gravity "
+                                  "must both be at the body's reference point: a free body's weight and buoyancy act at "
+                                  "one centre of gravity, its drag at the reference point");
+            }
+            const RodBody rb = rod_body(r, t, axis, rho);
+            const double volume = b.volume + rb.volume;
+            for (int k = 0; k < 3; ++k) {
+                b.Ca[k] = volume > 0.0 ? (b.Ca[k] * b.volume + rb.addedVolume[k]) / volume : 0.0;
+                b.inertia[k] += rb.inertia[k];
+            }
+            for (int k = 0; k < 6; ++k) b.CdA[k] += rb.CdA[k];
+            b.mass += rb.mass;
+            b.volume = volume;
+            notes.push_back(at_line(r.row, name + ": added to Free body " + std::to_string(b.id) + ": mass " +
+                                               short_number(rb.mass) + " kg, volume " + short_number(rb.volume) +
+                                               " m3, its inertia, drag and added mass along the body's axes"));
+        } else {
+            DeckBody b;
+            b.id = r.freeBody;
+            b.kind = BodyKind::Free;
+            b.row = r.row;
+            for (int k = 0; k < 3; ++k) b.pose[k] = 0.5 * (ends[0][k] + ends[1][k]);
+            // R = Rx(0) Ry(p) Rz(y) turns the body's x axis onto the rod's: (cos p cos y, sin y, -sin p cos y)
+            b.pose[5] = std::asin(std::clamp(r.axis[1], -1.0, 1.0));
+            b.pose[4] = std::cos(b.pose[5]) > 1e-12 ? std::atan2(-r.axis[2], r.axis[0]) : 0.0;
+            const RodBody rb = rod_body(r, t, 0, rho);
+            b.mass = rb.mass;
+            b.volume = rb.volume;
+            for (int k = 0; k < 3; ++k) {
+                b.inertia[k] = rb.inertia[k];
+                b.Ca[k] = rb.addedVolume[k] / rb.volume;
+            }
+            std::copy(rb.CdA, rb.CdA + 6, b.CdA);
+            b.rodLength = r.length;  // its buoyancy, drag and added mass follow its part under water
+            if (!(b.mass > 0.0)) return refuse("a free rod needs Mass/m > 0 (its moments of inertia)");
+            while (static_cast<int>(bodies.size()) + 1 < b.id) {  // body 1: the platform the Vessel points ride
+                DeckBody platform;
+                platform.id = static_cast<int>(bodies.size()) + 1;
+                bodies.push_back(platform);
+            }
+            bodies.push_back(b);
+            notes.push_back(at_line(r.row, name + ": free body " + std::to_string(b.id) + " of mass " +
+                                               short_number(b.mass) + " kg and volume " + short_number(b.volume) +
+                                               " m3 at its centre, its drag and added mass integrated along it (its "
+                                               "turning drag apart from its translation's)"));
+        }
+    }
+    return true;
+}
+
+}  // namespace deck
+}  // namespace uc

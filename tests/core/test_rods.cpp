@@ -1,0 +1,305 @@
+// Rods of a MoorDyn v2 deck (src/deck/rods.cpp, docs/lines.md "Rods"): what each kind of rod becomes (a
+// Fixed rod's end a clamped tow point, a free zero-length rod a rigid joint, a free rod of non-zero length a
+// free body with the rod's integrated loads, a rod on a free body added to it), and the rods refused with
+// their row and why.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "api/cable_api.h"
+#include "deck/line_file.h"
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A cantilever: 10 m of beam leaving a Fixed rod's end B along the rod (+x), its far end a free point.
+const char* const kCantilever = R"(--------------------- MoorDyn Input File ------------------------------------
+a beam clamped to a fixed rod
+----------------------- LINE TYPES ------------------------------------------
+TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
+(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
+beam      0.05     100.0      1.5e9      -1.0        1e7        0.0    0.0    0.1     0.0
+---------------------- ROD TYPES ------------------------------------
+TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
+(name)        (m)      (kg/m)    (-)    (-)     (-)      (-)
+stub          0.25     100.0     0.0    0.0     0.0      0.0
+---------------------- RODS ----------------------------------------
+ID   RodType   Attachment  Xa    Ya    Za    Xb    Yb    Zb   NumSegs  RodOutputs
+(#)  (name)     (#/key)    (m)   (m)   (m)   (m)   (m)   (m)  (-)       (-)
+1    stub       Fixed      -1.0  0     10.0  0.0   0     10.0 1         -
+---------------------- POINTS --------------------------------
+ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
+(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
+1     Free      10      0.0     9.9     0      0       0      0
+---------------------- LINES ----------------------------------------
+ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)   (name)     (#)      (#)       (m)       (-)     (-)
+1     beam       R1B      1         10        19      -
+---------------------- OPTIONS -----------------------------------------
+10            WtrDpth
+------------------------- need this line --------------------------------------
+)";
+
+// Two cables from a coupled point to an anchor joined by a free zero-length rod (MoorDyn's bend-stiffener
+// joint), the lower cable given anchor first.
+const char* const kJoined = R"(--------------------- MoorDyn Input File ------------------------------------
+two cables joined by a zero-length rod
+----------------------- LINE TYPES ------------------------------------------
+TypeName  Diam   Mass/m  EA      BA/-zeta  EI     Cd   Ca   CdAx  CaAx
+(name)    (m)    (kg/m)  (N)     (N-s/-)   (N-m^2) (-) (-)  (-)   (-)
+cable     0.116  25      362e6   -1.0      1e2    1.1  1.0  0.008 0.0
+stiff     0.19   25      362e6   -1.0      38e3   1.1  1.0  0.008 0.0
+---------------------- ROD TYPES ------------------------------------
+TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
+(name)        (m)      (kg/m)    (-)    (-)     (-)      (-)
+conn          0.116    25        1.1    1.0     1.1      1.0
+---------------------- RODS ----------------------------------------
+ID   RodType  Attachment  Xa    Ya    Za    Xb    Yb    Zb   NumSegs  RodOutputs
+(#)  (name)    (#/key)    (m)   (m)   (m)   (m)   (m)   (m)  (-)       (-)
+1    conn        Free     100.0 0  -150.0  -1.0  0  1.0  0         -
+---------------------- POINTS --------------------------------
+ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
+(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
+1     Fixed     200     0      -200     0      0       0      0
+2     Coupled   0       0      -20      0      0       0      0
+---------------------- LINES ----------------------------------------
+ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)   (name)     (#)      (#)       (m)       (-)     (-)
+1     cable      1        R1A       120       12      -
+2     stiff      R1B      2         180       18      -
+---------------------- OPTIONS -----------------------------------------
+200           WtrDpth
+------------------------- need this line --------------------------------------
+)";
+
+// A submerged free rod of 20 m hanging on two ropes from two Fixed points (MoorDyn's RodHanging, moved).
+const char* const kHanging = R"(--------------------- MoorDyn Input File ------------------------------------
+a rod hanging from two ropes
+----------------------- LINE TYPES ------------------------------------------
+TypeName Diam  Mass/m   EA         BA/-zeta EI      Cd  Ca  CdAx CaAx
+(name)   (m)   (kg/m)   (N)        (N-s/-)  (N-m^2) (-) (-) (-)  (-)
+rope     0.09  77.7066  384.243E6  -0.3     0       1.6 1.0 0.1  0.0
+---------------------- ROD TYPES -----------------------------------------------
+TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
+(name)        (m)      (kg/m)    (-)    (-)     (-)      (-)
+rod           0.25     77.7066   1.6    1.0     1.6      1.0
+---------------------- RODS ----------------------------------------------------
+ID   RodType   Attachment  Xa    Ya    Za    Xb    Yb    Zb   NumSegs RodOutputs
+(#)  (name)     (#/key)    (m)   (m)   (m)   (m)   (m)   (m)  (-)     (-)
+1    rod       Free        -10   0     -75   10    0     -75  1       -
+---------------------- POINTS --------------------------------------------------
+ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
+(#)   (-)       (m)     (m)     (m)     (kg)   (mˆ3)   (m^2)  (-)
+1     Fixed     -450    0       0       0      0       0      0
+2     Fixed      450    0       0       0      0       0      0
+---------------------- LINES ---------------------------------------------------
+ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)   (name)     (#)      (#)       (m)       (-)     (-)
+1     rope       1        R1A       450       45      -
+2     rope       2        R1B       450       45      -
+---------------------- OPTIONS -------------------------------------------------
+150           WtrDpth
+1000          WtrDnsty
+------------------------- need this line --------------------------------------
+)";
+
+std::string edited(std::string text, const std::string& from, const std::string& to) {
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
+int line_of(const std::string& deck, const std::string& marker) {
+    const size_t at = deck.find(marker);
+    EXPECT_NE(at, std::string::npos) << marker;
+    return 1 + static_cast<int>(std::count(deck.begin(), deck.begin() + static_cast<long>(at), '\n'));
+}
+
+bool has(const std::vector<std::string>& notes, const std::string& text) {
+    return std::any_of(notes.begin(), notes.end(), [&](const std::string& n) { return n.find(text) != std::string::npos; });
+}
+
+}  // namespace
+
+TEST(Rods, ALineOnAFixedRodIsClampedAtTheTowPointAlongTheRod) {
+    uc::LineFileLine line;
+    std::string error;
+    ASSERT_TRUE(uc::read_line_file(kCantilever, 0, line, error)) << error;
+    EXPECT_TRUE(line.towFixed);
+    EXPECT_TRUE(line.towClamped);
+    EXPECT_EQ(line.towTangent[0], 1.0);  // out of the rod's end B along A -> B
+    EXPECT_EQ(line.towTangent[2], 0.0);
+    EXPECT_EQ(line.towPoint[0], 0.0);
+    EXPECT_EQ(line.towPoint[2], 10.0);
+    EXPECT_EQ(line.farEnd, uc::LineFileFarEnd::Free);
+    const int row = line_of(kCantilever, "1    stub");
+    EXPECT_TRUE(has(line.notes, "line " + std::to_string(row) + ": rod 1 (Fixed, 1 m) read as Fixed point 2 (end B)"));
+    UCParams p;
+    uc_params_default(&p);
+    ASSERT_TRUE(uc::apply_line_file(line, p, error)) << error;
+    EXPECT_EQ(p.topEnd, 1);
+    EXPECT_EQ(p.topTangent[0], 1.0);
+    EXPECT_EQ(p.initialDirection[0], 1.0);  // the statics start along the clamp
+
+    // at end A the line leaves against the rod's direction A -> B
+    ASSERT_TRUE(uc::read_line_file(edited(kCantilever, "R1B      1", "R1A      1"), 0, line, error)) << error;
+    EXPECT_EQ(line.towTangent[0], -1.0);
+    EXPECT_EQ(line.towPoint[0], -1.0);
+    // a line without bending stiffness is pinned to the rod (MoorDyn's), the tow point hinged
+    ASSERT_TRUE(uc::read_line_file(edited(kCantilever, "1e7        0.0    0.0", "0          0.0    0.0"), 0, line, error))
+        << error;
+    EXPECT_FALSE(line.towClamped);
+}
+
+TEST(Rods, AFreeZeroLengthRodBetweenTwoStiffLinesIsARigidJoint) {
+    uc::LineFileLine line;
+    std::string error;
+    ASSERT_TRUE(uc::read_line_file(kJoined, 0, line, error)) << error;
+    ASSERT_EQ(line.sections.size(), 2u);
+    ASSERT_EQ(line.joints.size(), 1u);
+    EXPECT_TRUE(line.joints[0].rigid);
+    EXPECT_TRUE(line.joints[0].empty());  // no mass, no volume: MoorDyn's zero-length rod
+    const int row = line_of(kJoined, "1    conn");
+    EXPECT_TRUE(has(line.notes, "line " + std::to_string(row) + ": rod 1 (Free, zero length): a rigid joint between lines 1, 2"));
+    EXPECT_TRUE(has(line.notes, "2 CdEnd A = " ));
+    EXPECT_FALSE(has(line.notes, "warning: "));
+    UCParams p;
+    uc_params_default(&p);
+    ASSERT_TRUE(uc::apply_line_file(line, p, error)) << error;
+    EXPECT_EQ(p.section[0].joint, 0);  // rigid splice
+    EXPECT_EQ(p.nAttachments, 0);
+
+    // one line without bending stiffness: the rod follows the other line's end, a pinned joint (as in MoorDyn)
+    ASSERT_TRUE(uc::read_line_file(edited(kJoined, "1e2    1.1", "0      1.1"), 0, line, error)) << error;
+    EXPECT_FALSE(line.joints[0].rigid);
+    EXPECT_FALSE(has(line.notes, "warning: "));
+    ASSERT_TRUE(uc::apply_line_file(line, p, error)) << error;
+    EXPECT_EQ(p.section[0].joint, 1);
+    // both lines on end A: no joint that passes the moment; the clamps are pinned with a warning each
+    ASSERT_TRUE(uc::read_line_file(edited(kJoined, "R1B      2", "R1A      2"), 0, line, error)) << error;
+    EXPECT_FALSE(line.joints[0].rigid);
+    EXPECT_TRUE(has(line.notes, "warning: line " + std::to_string(line_of(kJoined, "2     stiff")) +
+                                    ": line 2 (EI 38000 N m2): its end A is clamped to rod 1's axis in MoorDyn, pinned"));
+}
+
+TEST(Rods, RodsTheFMUHasNoCounterpartForAreRefusedNamingTheRodAndItsRow) {
+    uc::LineFileLine line;
+    std::string error;
+    const int row = line_of(kJoined, "1    conn");
+    for (const char* kind : {"Pinned", "CoupledPinned", "Body1Pinned", "VesPin"}) {
+        EXPECT_FALSE(uc::read_line_file(edited(kJoined, "conn        Free", std::string("conn ") + kind), 0, line, error));
+        EXPECT_EQ(error.rfind("line " + std::to_string(row) + ": rod 1 is pinned", 0), 0u) << error;
+    }
+    EXPECT_FALSE(uc::read_line_file(edited(kJoined, "R1A       120", "R2A       120"), 0, line, error));
+    EXPECT_NE(error.find("AttachB 'R2A': there is no rod 2 (the RODS table has 1)"), std::string::npos) << error;
+    EXPECT_FALSE(uc::read_line_file(edited(kJoined, "R1A       120", "R1C       120"), 0, line, error));
+    EXPECT_NE(error.find("AttachB 'R1C' is not a rod's end (R<ID>A or R<ID>B)"), std::string::npos) << error;
+    EXPECT_FALSE(uc::read_line_file(edited(kJoined, "-1.0  0  1.0  0 ", "0.0  0  0.0  0 "), 0, line, error));
+    EXPECT_EQ(error, "line " + std::to_string(row) + ": rod 1: Xb Yb Zb, the direction of a zero-length rod, is (0, 0, 0)");
+    EXPECT_FALSE(uc::read_line_file(edited(kJoined, "conn        Free", "pipe        Free"), 0, line, error));
+    EXPECT_NE(error.find("rod type 'pipe' is not among the ROD TYPES ('conn')"), std::string::npos) << error;
+}
+
+TEST(Rods, AFreeRodOfNonZeroLengthIsAFreeBodyWithTheRodsIntegratedLoads) {
+    EXPECT_TRUE(uc::is_mooring_system_deck(kHanging));
+    uc::MooringDeck deck;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(kHanging, 0, deck, error)) << error;
+    ASSERT_EQ(deck.nodes.size(), 1u);
+    const uc::MooringNode& n = deck.nodes[0];
+    EXPECT_TRUE(n.body);
+    EXPECT_EQ(n.point.id, 1);
+    const double d = 0.25, L = 20.0, A = kPi * d * d / 4, m = 77.7066 * L, rho = 1000.0;
+    EXPECT_DOUBLE_EQ(n.point.mass, m);
+    EXPECT_DOUBLE_EQ(n.point.volume, A * L);
+    EXPECT_DOUBLE_EQ(n.position[0], 0.0);
+    EXPECT_DOUBLE_EQ(n.position[2], -75.0);
+    EXPECT_DOUBLE_EQ(n.angles[1], 0.0);  // along x: no turn
+    EXPECT_DOUBLE_EQ(n.inertia[0], m * d * d / 8);
+    EXPECT_DOUBLE_EQ(n.inertia[1], m * (L * L / 12 + d * d / 16) + 1.0 * rho * A * L * L * L / 12);
+    EXPECT_DOUBLE_EQ(n.CdA[0], 2 * 1.6 * A);       // the two ends' CdEnd
+    EXPECT_DOUBLE_EQ(n.CdA[1], 1.6 * d * L);       // transverse Cd d L
+    EXPECT_DOUBLE_EQ(n.CdA[3], 0.0);               // no drag turning about its axis
+    EXPECT_DOUBLE_EQ(n.CdA[4], 1.6 * d * std::pow(L, 4) / 32);
+    EXPECT_DOUBLE_EQ(n.Ca[1], 1.0);
+    EXPECT_DOUBLE_EQ(n.Ca[0], 2 * 1.0 * kPi * d * d * d / 12 / (A * L));
+    ASSERT_EQ(deck.lines.size(), 2u);
+    for (const uc::MooringDeckLine& l : deck.lines) {
+        const uc::MooringEnd& e = l.far.kind == uc::MooringEnd::Kind::Node ? l.far : l.fairlead;
+        ASSERT_EQ(e.kind, uc::MooringEnd::Kind::Node);
+        EXPECT_DOUBLE_EQ(std::abs(e.position[0]), 10.0);  // the rod's ends on its x axis
+    }
+
+    // tilted: the body's x axis turned onto the rod's (R = Rx Ry Rz: (cos p cos y, sin y, -sin p cos y))
+    ASSERT_TRUE(uc::read_mooring_deck(edited(kHanging, "-10   0     -75   10    0     -75", "-8   -6    -75   8     6     -70"),
+                                      0, deck, error)) << error;
+    const double* a = deck.nodes[0].angles;
+    const double q[3] = {16, 12, 5};
+    const double nq = std::sqrt(16 * 16 + 12 * 12 + 25.0);
+    EXPECT_NEAR(std::cos(a[1]) * std::cos(a[2]), q[0] / nq, 1e-15);
+    EXPECT_NEAR(std::sin(a[2]), q[1] / nq, 1e-15);
+    EXPECT_NEAR(-std::sin(a[1]) * std::cos(a[2]), q[2] / nq, 1e-15);
+
+    EXPECT_DOUBLE_EQ(deck.nodes[0].rodLength, std::sqrt(16 * 16 + 12 * 12 + 25.0));  // its buoyancy follows its draft
+}
+
+TEST(Rods, ARodOnAFreeBodyAddsItsMassVolumeAndLoadsToTheBody) {
+    // the hanging rod made a clamp of 0.2 m on a free body of 29.5 kg (MoorDyn's riser), the ropes on its ends
+    const std::string body = edited(
+        edited(kHanging, "---------------------- RODS", "---------------------------- BODIES ----\n"
+                                                         "ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca\n"
+                                                         "(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n"
+                                                         "1 Free 0 0 -75 0 0 0 29.5 0 0.098 0.014 0.5|0.5 1.0\n"
+                                                         "---------------------- RODS"),
+        "1    rod       Free        -10   0     -75   10    0     -75  1", "1    rod       Body1       0.1   0     0.0   -0.1  0     0.0  1");
+    uc::MooringDeck deck;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(body, 0, deck, error)) << error;
+    ASSERT_EQ(deck.nodes.size(), 1u);
+    const uc::MooringNode& n = deck.nodes[0];
+    const double d = 0.25, L = 0.2, A = kPi * d * d / 4, m = 77.7066 * L, V = A * L;
+    EXPECT_DOUBLE_EQ(n.point.mass, 29.5 + m);
+    EXPECT_DOUBLE_EQ(n.point.volume, 0.014 + V);
+    EXPECT_DOUBLE_EQ(n.inertia[0], 0.098 + m * d * d / 8);
+    EXPECT_DOUBLE_EQ(n.CdA[1], 0.5 + 1.6 * d * L);
+    EXPECT_DOUBLE_EQ(n.Ca[1], (1.0 * 0.014 + 1.0 * V) / (0.014 + V));
+    EXPECT_TRUE(has(deck.notes, "rod 1 (Body1, 0.2 m): added to Free body 1"));
+
+    // off the body's reference point: its weight would act elsewhere than the body's
+    EXPECT_FALSE(uc::read_mooring_deck(edited(body, "0.1   0     0.0   -0.1  0     0.0", "0.3   0     0.0   0.1   0     0.0"), 0,
+                                       deck, error));
+    EXPECT_NE(error.find("rod 1 (Body1, 0.2 m): its centre (0.2, 0, 0) m and body 1's centre of gravity must both be at"),
+              std::string::npos) << error;
+    EXPECT_FALSE(uc::read_mooring_deck(edited(body, "0.1   0     0.0   -0.1  0     0.0", "0.1   0.1   0.0   -0.1  -0.1  0.0"), 0,
+                                       deck, error));
+    EXPECT_NE(error.find("its axis is not along one of body 1's axes"), std::string::npos) << error;
+    // through the waterline: the body's buoyancy is constant
+    EXPECT_FALSE(uc::read_mooring_deck(edited(body, "1 Free 0 0 -75", "1 Free 0 0 0"), 0, deck, error));
+    EXPECT_NE(error.find("rod 1 (Body1, 0.2 m): it reaches z = 0.125 m (its top end and radius) at the deck's pose"),
+              std::string::npos) << error;
+}
+
+TEST(Rods, ZeroLengthFreeRodsInASystemAreRigidJointsOfItsLines) {
+    // the joined cables with their coupled point on a platform: a system line of two sections, rigid between
+    const std::string text = edited(kJoined, "2     Coupled   0       0      -20      0      0       0      0",
+                                    "2     Coupled   0       0      -20      0      0       0      0\n"
+                                    "3     Fixed     -200    0      -200     0      0       0      0\n"
+                                    "4     Coupled   -10     0      -20      0      0       0      0");
+    const std::string deckText = edited(text, "2     stiff      R1B      2         180       18      -",
+                                        "2     stiff      R1B      2         180       18      -\n"
+                                        "3     cable      3        4         260       12      -");
+    uc::MooringDeck deck;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(deckText, 0, deck, error)) << error;
+    const uc::MooringDeckLine& l = deck.lines[0];
+    ASSERT_EQ(l.sections.size(), 2u);
+    EXPECT_TRUE(l.joints[0].rigid);
+    UCParams base, p;
+    uc_params_default(&base);
+    ASSERT_TRUE(uc::mooring_line_params(deck, 0, base, p, error)) << error;
+    EXPECT_EQ(p.section[0].joint, 0);
+}
