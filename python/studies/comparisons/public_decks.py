@@ -269,6 +269,7 @@ REASONS = [
     (r"static equilibrium not found", "static equilibrium not found"),
     (r"pinned", "a pinned body"),
     (r"static equilibrium of the free points", "static equilibrium of the free points not found"),
+    (r"exceeds the breaking limit", "a wave component steeper than the breaking limit 1/7"),
 ]
 
 
