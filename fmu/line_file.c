@@ -189,37 +189,52 @@ static fmi2Status create_system(UCInstance* inst, const UCParams* p, const char*
     return fmi2OK;
 }
 
+/* The text of the file `name` names (the parameter `label`: lineFile, waves.file), read from the first of its
+ * candidate paths that can be read, with that path in *path (both freed by the caller); NULL after the
+ * error "<label> = '<name>' cannot be read: tried ..." is logged. */
+static char* read_named_file(UCInstance* inst, const char* label, const char* name, const char* function,
+                             char** path, size_t* length) {
+    char* candidates[2] = {NULL, NULL};
+    const int n = candidate_paths(inst, name, candidates);
+    char tried[1024] = "";
+    char* text = NULL;
+    *path = NULL;
+    for (int k = 0; k < n; ++k) {
+        int error = 0;
+        if (text == NULL) {
+            text = read_file(candidates[k], length, &error);
+            if (text == NULL) {
+                uc_file_note_tried(tried, sizeof tried, candidates[k], error);
+            } else {
+                *path = candidates[k];
+                continue;
+            }
+        }
+        free(candidates[k]);
+    }
+    if (text == NULL) {
+        uc_log_status(&inst->log, fmi2Error, "%s: %s = '%s' cannot be read: tried %s%s", function, label, name,
+                      n > 0 ? tried : "nothing (out of memory)",
+                      !uc_file_is_absolute(name) && inst->resourceLocation == NULL
+                          ? "; no resources directory was given to fmi2Instantiate"
+                          : "");
+    }
+    return text;
+}
+
 /* Reads lineFile and hands its text to apply (p) or create (cable). */
 static fmi2Status with_text(UCInstance* inst, UCParams* p, const UCParams* params, UCCable** cable,
                             const char* function) {
     /* the file the parameters in use name: a restore builds from its state's before it takes them */
     const char* lineFile = params != NULL ? params->lineFile : p->lineFile;
-    char* candidates[2] = {NULL, NULL};
-    const int n = candidate_paths(inst, lineFile, candidates);
-    char tried[1024] = "";
-    fmi2Status status = fmi2Error;
-    int done = 0;
-    for (int k = 0; k < n && !done; ++k) {
-        size_t length = 0;
-        int error = 0;
-        char* text = read_file(candidates[k], &length, &error);
-        if (text == NULL) {
-            uc_file_note_tried(tried, sizeof tried, candidates[k], error);
-            continue;
-        }
-        status = cable != NULL ? create_system(inst, params, function, candidates[k], text, length, cable)
-                               : apply_text(inst, p, function, candidates[k], text, length);
-        free(text);
-        done = 1;
-    }
-    if (!done) {
-        uc_log_status(&inst->log, fmi2Error, "%s: lineFile = '%s' cannot be read: tried %s%s", function,
-                      lineFile, n > 0 ? tried : "nothing (out of memory)",
-                      !uc_file_is_absolute(lineFile) && inst->resourceLocation == NULL
-                          ? "; no resources directory was given to fmi2Instantiate"
-                          : "");
-    }
-    for (int k = 0; k < n; ++k) free(candidates[k]);
+    char* path = NULL;
+    size_t length = 0;
+    char* text = read_named_file(inst, "lineFile", lineFile, function, &path, &length);
+    if (text == NULL) return fmi2Error;
+    const fmi2Status status = cable != NULL ? create_system(inst, params, function, path, text, length, cable)
+                                            : apply_text(inst, p, function, path, text, length);
+    free(text);
+    free(path);
     return status;
 }
 
@@ -254,37 +269,20 @@ fmi2Status uc_line_file_create_system(UCInstance* inst, const UCParams* p, UCCab
 }
 
 fmi2Status uc_wave_file_load(UCInstance* inst, UCParams* p, const char* function) {
-    char* candidates[2] = {NULL, NULL};
-    const int n = candidate_paths(inst, p->wavesFile, candidates);
-    char tried[1024] = "";
+    char* path = NULL;
+    size_t length = 0;
+    char* text = read_named_file(inst, "waves.file", p->wavesFile, function, &path, &length);
+    if (text == NULL) return fmi2Error;
     fmi2Status status = fmi2Error;
-    int done = 0;
-    for (int k = 0; k < n && !done; ++k) {
-        size_t length = 0;
-        int error = 0;
-        char* text = read_file(candidates[k], &length, &error);
-        if (text == NULL) {
-            uc_file_note_tried(tried, sizeof tried, candidates[k], error);
-            continue;
-        }
-        done = 1;
-        inst->msg[0] = '\0';
-        if (uc_wave_file_apply(text, length, p, inst->msg, sizeof inst->msg) != 0) {
-            uc_log_status(&inst->log, fmi2Error, "%s: waves.file %s, %s", function, candidates[k], inst->msg);
-        } else {
-            uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: waves.file %s read: %d wave components", function,
-                   candidates[k], p->waveComponentCount);
-            status = fmi2OK;
-        }
-        free(text);
+    inst->msg[0] = '\0';
+    if (uc_wave_file_apply(text, length, p, inst->msg, sizeof inst->msg) != 0) {
+        uc_log_status(&inst->log, fmi2Error, "%s: waves.file %s, %s", function, path, inst->msg);
+    } else {
+        uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: waves.file %s read: %d wave components", function, path,
+               p->waveComponentCount);
+        status = fmi2OK;
     }
-    if (!done) {
-        uc_log_status(&inst->log, fmi2Error, "%s: waves.file = '%s' cannot be read: tried %s%s", function, p->wavesFile,
-                      n > 0 ? tried : "nothing (out of memory)",
-                      !uc_file_is_absolute(p->wavesFile) && inst->resourceLocation == NULL
-                          ? "; no resources directory was given to fmi2Instantiate"
-                          : "");
-    }
-    for (int k = 0; k < n; ++k) free(candidates[k]);
+    free(text);
+    free(path);
     return status;
 }
