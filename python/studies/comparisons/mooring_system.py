@@ -199,18 +199,20 @@ class History:
 
 
 def fmu_motion(fmu, deck: SystemDeck, motion: PlatformMotion, t_end: float, comm_step: float = 0.1,
-               progress=None, accelerations: bool = False, lines: list | None = None, **extra) -> History:
+               progress=None, accelerations: bool = False, lines: list | None = None, parameters: dict | None = None,
+               **extra) -> History:
     """The FMU with body 1 following the motion: pose and rates at the start of each communication step,
     with accelerations their input derivatives der(body[1].v*), der(body[1].w*) (the angles' second
     derivatives: pitch only here, where they are the angular acceleration); lines: the deck lines whose
-    fairlead tension it records (default: 1 .. the number of Vessel points)."""
+    fairlead tension it records (default: 1 .. the number of Vessel points); parameters: the FMU's
+    parameters as they are (default: fmu_parameters of the deck with extra)."""
     times = np.arange(0.0, t_end + 0.5 * comm_step, comm_step)
     lines = lines or list(range(1, len(deck.fairleads) + 1))
     out = np.zeros((len(times), len(lines)))
     names = [f"line[{k}].fairleadTension" for k in lines]
     inputs = [f"body[1].{x}" for x in POSE_NAMES] + [f"body[1].{x}" for x in
                                                      ("vx", "vy", "vz", "wx", "wy", "wz")]
-    with CableFMU(fmu, parameters=fmu_parameters(deck, **extra)) as c:
+    with CableFMU(fmu, parameters=parameters or fmu_parameters(deck, **extra)) as c:
         c.initialize()
         out[0] = c.get_reals(names)
         cpu0 = time.process_time()
@@ -229,12 +231,14 @@ def fmu_motion(fmu, deck: SystemDeck, motion: PlatformMotion, t_end: float, comm
 
 
 def moordyn_motion(deck: SystemDeck, motion: PlatformMotion, t_end: float, comm_step: float = 0.1,
-                   per_step: bool = True, progress=None) -> History:
+                   per_step: bool = True, progress=None, also=(), chdir: bool = False) -> History:
     """MoorDyn fed the same deck, its Vessel points following the platform. per_step: moordyn.Step at
     every dtM of the deck with the exact fairlead position and velocity at its start (the project's way
     of driving MoorDyn, docs/performance.md: each call pays Python's overhead); otherwise one call per
     communication step, MoorDyn substepping at dtM and moving the points linearly from the step's start
-    (its coupling to a master). Fairlead tensions are the magnitudes of the forces on the points."""
+    (its coupling to a master). Fairlead tensions are the magnitudes of the forces on the points. also: the
+    files MoorDyn reads beside the deck; chdir: MoorDyn runs in their directory (it reads a SeafloorFile
+    from the working directory)."""
     dt = deck.option("dtM", 1e-3)
     sub = int(math.ceil(comm_step / dt - 1e-9))
     dt = comm_step / sub
@@ -255,7 +259,7 @@ def moordyn_motion(deck: SystemDeck, motion: PlatformMotion, t_end: float, comm_
         out[k] = np.linalg.norm(np.array(f).reshape(n, 3), axis=1)
 
     start = flat(np.zeros(6), np.zeros(6))
-    with moordyn.System(deck.path, init=start) as md:
+    with moordyn.System(deck.path, init=start, also=also, chdir=chdir) as md:
         cpu = moordyn.drive(md, start, len(times) - 1, comm_step, calls, coupled, record, progress)
     how = f"{calls} call{'s' if calls > 1 else ''} per {comm_step:g} s"
     return History("MoorDyn", times, out, cpu, f"dtM {dt:.2g} s, {how}")
