@@ -93,7 +93,7 @@ def _polyester_lengths(points: list) -> list:
 def deck_text(waves: bool = True, current: bool = True, slope_deg: float = SLOPE_DEG, refine: int = 1) -> str:
     points = _points(slope_deg)
     poly = _polyester_lengths(points)
-    point_rows = "\n".join(f"{i}  {kind}  {x:.4f}  {y:.4f}  {z:.4f}  {m:g}  {v:g}  0  0"
+    point_rows = "\n".join(f"{i}  {kind}  {x:.17g}  {y:.17g}  {z:.17g}  {m:g}  {v:g}  0  0"
                            for i, kind, x, y, z, m, v in points)
     seafloor_row = "seafloor.txt  SeafloorFile  the seabed, a plane rising along x\n" if slope_deg else ""
     line_rows = "\n".join([f"{k + 1}  chain  {k + 1}  {k + 7}  {CHAIN_LENGTH:g}  {12 * refine}  -" for k in range(3)] +
