@@ -98,13 +98,14 @@ bool is_mooring_system_deck(std::string_view text) {
     for (const Row& row : points->rows) {
         if (row.tokens.size() > 1 && upper(row.tokens[1]).rfind("BODY", 0) == 0) return true;
     }
-    // a rod on a body, or a free rod of non-zero length (a free body)
+    // a rod on a body, a rod pinned to the ground (a pinned body), or a free rod of non-zero length (a free body)
     if (const auto& rods = sections[static_cast<size_t>(Kind::Rods)]) {
         for (const Row& row : rods->rows) {
             if (row.tokens.size() < 10) continue;
             const std::string kind = upper(row.tokens[2]);
             if (kind.rfind("BODY", 0) == 0) return true;
             if (is_one_of(kind, {"FREE", "POINT", "CON"}) && row.tokens[9] != "0") return true;
+            if (is_one_of(kind, {"PINNED", "PIN"})) return true;
         }
     }
     return false;
