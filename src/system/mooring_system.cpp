@@ -649,7 +649,8 @@ Vec3 MooringSystem::pin_force(int n, const UCInputs& in) const {
         }
     }
     const Vec3 acg = a + vec3(m.alpha).cross(c) + w.cross(w.cross(c));
-    return force - node.point.mass * acg - body_added_mass(n, x, R) * a;
+    // its added mass at its centre of buoyancy, moved by the pin and by its turning
+    return force - node.point.mass * acg - body_added_mass(n, x, R) * (a + vec3(m.alpha).cross(R * vec3(node.cb)));
 }
 
 bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, bool profile, Eigen::VectorXd& r,
@@ -982,7 +983,11 @@ bool MooringSystem::node_step(double h, double shift, const UCInputs& in, int& w
                 const Vec3 acg = a + alpha.cross(c) + w.cross(w.cross(c));
                 Vec3 force, moment;
                 body_load(static_cast<int>(n), x1, R, v1[n], w, in, force, moment);
-                r.segment<3>(o) = moment - c.cross(node.point.mass * acg) - I * alpha - w.cross(I * w);
+                // the water its added mass moves as the pin accelerates, at its centre of buoyancy (a rod's
+                // transverse added mass along it: its moment about the pin; its share as it turns is in I)
+                const Vec3 fluid = body_added_mass(static_cast<int>(n), x1, R) * a;
+                r.segment<3>(o) = moment - c.cross(node.point.mass * acg) - I * alpha - w.cross(I * w) -
+                                  (R * vec3(node.cb)).cross(fluid);
                 continue;
             }
             const Vec3 x0 = vec3(s.position), v0 = vec3(s.velocity);

@@ -1,0 +1,186 @@
+"""Pinned bodies and rods against MoorDyn v2 fed the same deck (docs/systems_mooring.md, "Pinned bodies"):
+MoorDyn's own pinned-body deck (a rod on a CoupledPinned body in vacuum, its pin accelerated at 0.5 m/s2 along
+y, MoorDyn's test of its pinned body) and a rod pinned to a coupled body with a line from its free end to an
+anchor, released swinging. The roll of the pinned body, the pin's load and the line's tensions are compared
+over the run (RMS and largest difference).
+
+    python -m studies.comparisons.pinned_bodies /path/to/pinnedBody.txt
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from ucable.fmu import CableFMU
+from ..peers.moordyn import System
+
+PINNED_ROD_LINE = """--- MoorDyn Input File ---
+a rod pinned to a coupled body, a line from its free end to an anchor
+---------------------- LINE TYPES ----
+TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
+(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
+chain 0.1 30.0 1e8 -0.5 0 1.2 1.0 0.2 0.0
+---------------------- ROD TYPES ----
+TypeName Diam Mass/m Cd Ca CdEnd CaEnd
+(name) (m) (kg/m) (-) (-) (-) (-)
+bar 0.5 400 0 1.0 0 0
+---------------------- BODIES ----
+ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*
+(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)
+1 Coupled 0 0 -10 0 0 0 0 0 0 0 0 0
+---------------------- RODS ----
+ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs
+(#) (name) (#/key) (m) (m) (m) (m) (m) (m) (-) (-)
+1 bar Body1Pinned 2 0 0 {xb:.12g} 0 {zb:.12g} {rodSegs} -
+---------------------- POINTS ----
+ID Type X Y Z Mass Volume CdA Ca
+(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
+1 Fixed 40 0 -60 0 0 0 0
+---------------------- LINES ----
+ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
+(#) (name) (#) (#) (m) (-) (-)
+1 chain 1 R1B 60 {segs} -
+---------------------- OPTIONS ----
+100 WtrDpth
+1025 WtrDnsty
+100 TmaxIC
+0.5 dtIC
+0.001 threshIC
+{dtM} dtM
+------------------------- need this line ----
+"""
+
+
+def _moordyn_end_tension(md, line, end: int) -> float:
+    """MoorDyn's tension at a line end (0: A, 1: B), extrapolated from its two end segments' (its tensions
+    are its segments', half a segment from the ends)."""
+    api = md.api
+    n = api.GetLineN(line)
+    i0, i1 = (0, 1) if end == 0 else (n - 1, n - 2)
+    t0 = np.linalg.norm(api.GetLineNodeTen(line, i0))
+    t1 = np.linalg.norm(api.GetLineNodeTen(line, i1))
+    return float(1.5 * t0 - 0.5 * t1)
+
+
+def pinned_body(deck: Path, t_end: float = 20.0, a: float = 0.5, h: float = 0.05, dt_md: float = 0.01) -> dict:
+    """MoorDyn's pinnedBody deck, its pin accelerated along y from rest: the roll and the pin's load (y, z) of
+    each code at the FMU's communication points."""
+    n = int(round(t_end / h))
+    sub = int(round(h / dt_md))
+    with System(deck) as md:
+        x, v = [0.0, 0.0, -5.0, 0.0, 0.0, 0.0], [0.0] * 6
+        md.init(x, v)
+        body = md.api.GetBody(md.system, 1)
+        ref = {"roll": [], "fy": [], "fz": []}
+        t = 0.0
+        for k in range(n):
+            for j in range(sub):
+                x[1], v[1] = 0.5 * a * t * t, a * t
+                f = md.step(x, v, t, dt_md)
+                t += dt_md
+            ref["roll"].append(md.api.GetBodyState(body)[0][3])
+            ref["fy"].append(f[1])
+            ref["fz"].append(f[2])
+    c = CableFMU(parameters={"lineFile": str(deck)})
+    out = {"roll": [], "fy": [], "fz": []}
+    try:
+        c.initialize(inputs={"body[1].z": -5.0})
+        for k in range(n):
+            t = k * h
+            c.set({"body[1].y": 0.5 * a * t * t, "body[1].vy": a * t})
+            c.do_step(h, t=t)
+            out["roll"].append(c.get("body[1].pose.roll"))
+            out["fy"].append(c.get("body[1].force.y"))
+            out["fz"].append(c.get("body[1].force.z"))
+    finally:
+        c.free()
+    return {k: (np.array(out[k]), np.array(ref[k])) for k in out}
+
+
+def pinned_rod_line(tilt_deg: float = 10.0, t_end: float = 40.0, h: float = 0.05, segs: int = 40,
+                    rod_segs: int = 20, elements: int = 20, surge: float = 1.0, period: float = 6.0,
+                    md_calls: int = 5) -> dict:
+    """The rod pinned to coupled body 1 with a chain from its free end to an anchor, each code from its own
+    statics (MoorDyn's relaxation, TmaxIC; the FMU's Newton on the rod's rotation), body 1 then surging
+    A (1 - cos 2 pi t / T): the chain's tension at the rod and at the anchor, and the pin's load on body 1
+    (x, z), each code at the FMU's communication points (MoorDyn called md_calls times per step, its body
+    moving linearly within each call)."""
+    theta = math.radians(tilt_deg)
+    dtM = 2e-4 * 40 / segs
+    w = 2 * math.pi / period
+
+    def motion(t):
+        return surge * (1 - math.cos(w * t)), surge * w * math.sin(w * t), surge * w * w * math.cos(w * t)
+
+    with tempfile.TemporaryDirectory() as tmp:
+        deck = Path(tmp) / "pinned_rod_line.dat"
+        deck.write_text(PINNED_ROD_LINE.format(xb=2 + 8 * math.sin(theta), zb=-8 * math.cos(theta), segs=segs,
+                                               rodSegs=rod_segs, dtM=dtM))
+        n = int(round(t_end / h))
+        with System(deck) as md:
+            x, v = [0.0, 0.0, -10.0, 0.0, 0.0, 0.0], [0.0] * 6
+            md.init(x, v)
+            line = md.api.GetLine(md.system, 1)
+            ref = {"rod": [_moordyn_end_tension(md, line, 1)], "anchor": [_moordyn_end_tension(md, line, 0)],
+                   "fx": [np.nan], "fz": [np.nan]}
+            t, dt = 0.0, h / md_calls
+            for k in range(n):
+                for j in range(md_calls):
+                    x[0], v[0], _ = motion(t)
+                    f = md.step(x, v, t, dt)
+                    t += dt
+                ref["rod"].append(_moordyn_end_tension(md, line, 1))
+                ref["anchor"].append(_moordyn_end_tension(md, line, 0))
+                ref["fx"].append(f[0])
+                ref["fz"].append(f[2])
+        c = CableFMU(parameters={"lineFile": str(deck), "lineFileElements": elements})
+        out = {"rod": [], "anchor": [], "fx": [], "fz": []}
+
+        def record():
+            out["rod"].append(c.get("line[1].fairleadTension"))
+            out["anchor"].append(c.get("line[1].anchorTension"))
+            out["fx"].append(c.get("body[1].force.x"))
+            out["fz"].append(c.get("body[1].force.z"))
+
+        try:
+            c.initialize(inputs={"body[1].z": -10.0})
+            record()
+            for k in range(n):
+                x0, v0, a0 = motion(k * h)
+                c.set({"body[1].x": x0, "body[1].vx": v0})
+                c.set_input_derivatives(["body[1].vx"], 1, [a0])
+                c.do_step(h, t=k * h)
+                record()
+        finally:
+            c.free()
+    return {k: (np.array(out[k]), np.array(ref[k])) for k in out}
+
+
+def differences(pair, scale=None) -> tuple:
+    """RMS and largest difference of (fmu, moordyn) relative to `scale` (default: the mean |moordyn|)."""
+    f, m = pair
+    keep = np.isfinite(m)
+    f, m = f[keep], m[keep]
+    s = scale if scale is not None else float(np.mean(np.abs(m)))
+    d = f - m
+    return float(np.sqrt(np.mean(d * d)) / s), float(np.max(np.abs(d)) / s)
+
+
+if __name__ == "__main__":
+    r = pinned_body(Path(sys.argv[1]))
+    amp = float(np.ptp(r["roll"][1]))
+    print("pinnedBody: mean roll FMU %.5f MoorDyn %.5f (atan(-a/g) %.5f); swing FMU %.5f MoorDyn %.5f rad" % (
+        np.mean(r["roll"][0]), np.mean(r["roll"][1]), math.atan(-0.5 / 9.80665), np.ptp(r["roll"][0]), amp))
+    print("  roll RMS/largest difference of the swing: %.3g %.3g" % differences(r["roll"], amp))
+    print("  pin load y RMS/largest of the mean |Fy|: %.3g %.3g; z of the mean: %.3g %.3g" % (
+        *differences(r["fy"]), *differences(r["fz"])))
+    q = pinned_rod_line()
+    for k in q:
+        print("pinned rod + chain %s: start FMU %.1f MoorDyn %.1f; mean FMU %.1f MoorDyn %.1f, swing %.1f, "
+              "RMS %.3g largest %.3g of the mean" % (k, q[k][0][0], q[k][1][0], np.mean(q[k][0]), np.nanmean(q[k][1]),
+                                                     np.ptp(q[k][1][1:]), *differences(q[k])))
