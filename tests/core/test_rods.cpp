@@ -190,9 +190,16 @@ TEST(Rods, RodsTheFMUHasNoCounterpartForAreRefusedNamingTheRodAndItsRow) {
     uc::LineFileLine line;
     std::string error;
     const int row = line_of(kJoined, "1    conn");
-    for (const char* kind : {"Pinned", "CoupledPinned", "Body1Pinned", "VesPin"}) {
+    // a rod coupled and pinned has no input for its pin; a rod pinned to the ground or a body is a pinned body,
+    // which makes the deck a mooring system (docs/systems_mooring.md, "Pinned bodies")
+    for (const char* kind : {"CoupledPinned", "VesPin"}) {
         EXPECT_FALSE(uc::read_line_file(edited(kJoined, "conn        Free", std::string("conn ") + kind), 0, line, error));
-        EXPECT_EQ(error.rfind("line " + std::to_string(row) + ": rod 1 is pinned", 0), 0u) << error;
+        EXPECT_EQ(error.rfind("line " + std::to_string(row) + ": rod 1 is coupled and pinned", 0), 0u) << error;
+    }
+    for (const char* kind : {"Pinned", "Body1Pinned"}) {
+        EXPECT_FALSE(uc::read_line_file(edited(kJoined, "conn        Free", std::string("conn ") + kind), 0, line, error));
+        EXPECT_NE(error.find("a pinned rod or a free rod of non-zero length makes the deck a mooring system"),
+                  std::string::npos) << error;
     }
     EXPECT_FALSE(uc::read_line_file(edited(kJoined, "R1A       120", "R2A       120"), 0, line, error));
     EXPECT_NE(error.find("AttachB 'R2A': there is no rod 2 (the RODS table has 1)"), std::string::npos) << error;
