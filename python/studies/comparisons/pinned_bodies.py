@@ -1,7 +1,7 @@
 """Pinned bodies and rods against MoorDyn v2 fed the same deck (docs/systems_mooring.md, "Pinned bodies"):
 MoorDyn's own pinned-body deck (a rod on a CoupledPinned body in vacuum, its pin accelerated at 0.5 m/s2 along
-y, MoorDyn's test of its pinned body) and a rod pinned to a coupled body with a line from its free end to an
-anchor, released swinging. The roll of the pinned body, the pin's load and the line's tensions are compared
+y, MoorDyn's test of its pinned body), a rod pinned to a still coupled body released swinging, and that rod with
+a line from its free end to an anchor, the body surging. The roll of the pinned body, the pin's load and the line's tensions are compared
 over the run (RMS and largest difference).
 
     python -m studies.comparisons.pinned_bodies /path/to/pinnedBody.txt
@@ -161,6 +161,69 @@ def pinned_rod_line(tilt_deg: float = 10.0, t_end: float = 40.0, h: float = 0.05
     return {k: (np.array(out[k]), np.array(ref[k])) for k in out}
 
 
+SWING = PINNED_ROD_LINE.split("---------------------- POINTS ----")[0].replace(
+    "a rod pinned to a coupled body, a line from its free end to an anchor", "a rod pinned to a coupled body, swinging") + \
+    """---------------------- POINTS ----
+ID Type X Y Z Mass Volume CdA Ca
+(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
+1 Fixed 30 0 -5 0 0 0 0
+2 Fixed 30 0 -10 0 0 0 0
+---------------------- LINES ----
+ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
+(#) (name) (#) (#) (m) (-) (-)
+1 chain 1 2 5 1 -
+---------------------- OPTIONS ----
+100 WtrDpth
+1025 WtrDnsty
+0 TmaxIC
+{dtM} dtM
+------------------------- need this line ----
+"""
+
+
+def _period(t, x) -> float:
+    crossings = [t[i] - x[i] * (t[i + 1] - t[i]) / (x[i + 1] - x[i]) for i in range(len(x) - 1)
+                 if (x[i] < 0) != (x[i + 1] < 0)]
+    return 2 * float(np.mean(np.diff(crossings)))
+
+
+def pinned_rod_swing(tilt_deg: float = 5.0, t_end: float = 10.0, h: float = 0.05, rod_segs: int = 40) -> dict:
+    """The rod (8 m, 0.5 m, 400 kg/m, Ca 1) pinned 2 m out on coupled body 1, the body held still, released
+    tilted by tilt_deg in water (TmaxIC 0), no line on it: its swing's period in each code (MoorDyn's from
+    the angle of its end nodes, the FMU's from the pin's load along x, which swings with it) and the pin's
+    load on body 1 in each (MoorDyn's coupled body force: the rod's weight in water, no inertial part)."""
+    theta = math.radians(tilt_deg)
+    n = int(round(t_end / h))
+    t = h * np.arange(1, n + 1)
+    with tempfile.TemporaryDirectory() as tmp:
+        deck = Path(tmp) / "pinned_rod_swing.dat"
+        deck.write_text(SWING.format(xb=2 + 8 * math.sin(theta), zb=-8 * math.cos(theta), rodSegs=rod_segs, dtM=2e-4))
+        with System(deck) as md:
+            x, v = [0.0, 0.0, -10.0, 0.0, 0.0, 0.0], [0.0] * 6
+            md.init(x, v)
+            rod = md.api.GetRod(md.system, 1)
+            angle, fx, fz = [], [], []
+            for k in range(n):
+                f = md.step(x, v, k * h, h)
+                a = np.array(md.api.GetRodNodePos(rod, 0))
+                b = np.array(md.api.GetRodNodePos(rod, md.api.GetRodN(rod)))
+                angle.append(math.atan2(b[0] - a[0], a[2] - b[2]))
+                fx.append(f[0])
+                fz.append(f[2])
+        c = CableFMU(parameters={"lineFile": str(deck)})
+        out = []
+        try:
+            c.initialize(inputs={"body[1].z": -10.0})
+            for k in range(n):
+                c.do_step(h, t=k * h)
+                out.append((c.get("body[1].force.x"), c.get("body[1].force.z")))
+        finally:
+            c.free()
+    out = np.array(out)
+    return {"period": (_period(t, out[:, 0]), _period(t, np.array(angle))), "fx": (out[:, 0], np.array(fx)),
+            "fz": (out[:, 1], np.array(fz))}
+
+
 def differences(pair, scale=None) -> tuple:
     """RMS and largest difference of (fmu, moordyn) relative to `scale` (default: the mean |moordyn|)."""
     f, m = pair
@@ -179,6 +242,10 @@ if __name__ == "__main__":
     print("  roll RMS/largest difference of the swing: %.3g %.3g" % differences(r["roll"], amp))
     print("  pin load y RMS/largest of the mean |Fy|: %.3g %.3g; z of the mean: %.3g %.3g" % (
         *differences(r["fy"]), *differences(r["fz"])))
+    w = pinned_rod_swing()
+    print("pinned rod swinging, its pin still: period FMU %.4f s MoorDyn %.4f s; pin load along x: FMU swings by "
+          "%.1f N, MoorDyn %.3g N; along z FMU mean %.1f N, MoorDyn %.1f N" % (
+              *w["period"], np.ptp(w["fx"][0]), np.ptp(w["fx"][1]), np.mean(w["fz"][0]), np.mean(w["fz"][1])))
     q = pinned_rod_line()
     for k in q:
         print("pinned rod + chain %s: start FMU %.1f MoorDyn %.1f; mean FMU %.1f MoorDyn %.1f, swing %.1f, "
