@@ -403,6 +403,16 @@ bool add_rod_to_pinned(DeckBody& b, const RodType& t, int axis, double s1, doubl
     return true;
 }
 
+// A rod's body appended at its ID (after the deck's), body 1 first where the Vessel points ride it.
+void append_body(std::vector<DeckBody>& bodies, const DeckBody& b) {
+    while (static_cast<int>(bodies.size()) + 1 < b.id) {  // body 1: the platform the Vessel points ride
+        DeckBody platform;
+        platform.id = static_cast<int>(bodies.size()) + 1;
+        bodies.push_back(platform);
+    }
+    bodies.push_back(b);
+}
+
 }  // namespace
 
 bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vector<std::string>& notes,
@@ -507,12 +517,7 @@ bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vect
             }
             add_rod_to_pinned(b, t, 0, 0.0, r.length, rho);  // a rod alone: its inertia is diagonal
             if (!(t.massPerLength > 0.0)) return refuse("a pinned rod needs Mass/m > 0 (its moments of inertia)");
-            while (static_cast<int>(bodies.size()) + 1 < b.id) {  // body 1: the platform the Vessel points ride
-                DeckBody platform;
-                platform.id = static_cast<int>(bodies.size()) + 1;
-                bodies.push_back(platform);
-            }
-            bodies.push_back(b);
+            append_body(bodies, b);
             notes.push_back(at_line(r.row, name + ": pinned body " + std::to_string(b.id) + " of mass " +
                                                short_number(b.mass) + " kg and volume " + short_number(b.volume) +
                                                " m3, turning about its end A (" +
@@ -565,12 +570,7 @@ bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vect
             std::copy(rb.CdA, rb.CdA + 6, b.CdA);
             b.rodLength = r.length;  // its buoyancy, drag and added mass follow its part under water
             if (!(b.mass > 0.0)) return refuse("a free rod needs Mass/m > 0 (its moments of inertia)");
-            while (static_cast<int>(bodies.size()) + 1 < b.id) {  // body 1: the platform the Vessel points ride
-                DeckBody platform;
-                platform.id = static_cast<int>(bodies.size()) + 1;
-                bodies.push_back(platform);
-            }
-            bodies.push_back(b);
+            append_body(bodies, b);
             notes.push_back(at_line(r.row, name + ": free body " + std::to_string(b.id) + " of mass " +
                                                short_number(b.mass) + " kg and volume " + short_number(b.volume) +
                                                " m3 at its centre, its drag and added mass integrated along it (its "

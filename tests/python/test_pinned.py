@@ -12,44 +12,7 @@ import pytest
 
 from ucable.fmu import CableFMU
 from ucable.units import STANDARD_GRAVITY as GRAVITY
-
-# A CoupledPinned body of no mass of its own with a rod on its z axis from sa to sb (below the pin: negative),
-# released from the roll r0 [deg] (TmaxIC 0: from the deck's pose); the line between two Fixed points is
-# the dummy MoorDyn's own pinned-body deck has.
-PINNED_BODY = """--- MoorDyn Input File ---
-a rod on a pinned body
----------------------- LINE TYPES ----
-TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
-(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
-rope 0.1 10.0 5e6 0 0 0 0 0 0
----------------------- ROD TYPES ----
-TypeName Diam Mass/m Cd Ca CdEnd CaEnd
-(name) (m) (kg/m) (-) (-) (-) (-)
-bar {d} {mpl:.12g} 0 {Ca} 0 0
----------------------- BODIES ----
-ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*
-(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)
-1 CoupledPinned 0 0 {z0} {r0} 0 0 0 0 0 0 0 0
----------------------- RODS ----
-ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs
-(#) (name) (#/key) (m) (m) (m) (m) (m) (m) (-) (-)
-1 bar Body1 0 0 {sa} 0 0 {sb} 10 -
----------------------- POINTS ----
-ID Type X Y Z Mass Volume CdA Ca
-(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
-1 Fixed 30 0 -5 0 0 0 0
-2 Fixed 30 0 -10 0 0 0 0
----------------------- LINES ----
-ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
-(#) (name) (#) (#) (m) (-) (-)
-1 rope 1 2 5 1 -
----------------------- OPTIONS ----
-100 WtrDpth
-{rho} WtrDnsty
-0 TmaxIC
-------------------------- need this line ----
-"""
-
+from studies.comparisons.pinned_bodies import deck as moordyn_deck, pinned_body_deck, pinned_rod_deck
 
 def _physical_pendulum(m, L, d, s1, s2, rho, Ca):
     """The period of a rod of mass m, length L, diameter d from s1 to s2 along its axis from the pin (s1 < s2),
@@ -95,7 +58,7 @@ def test_a_rod_on_a_pinned_body_swings_as_the_physical_pendulum(fmu_file, tmp_pa
     m = mpl * L
     period = _physical_pendulum(m, L, d, -15.0, -5.0, rho, Ca)
     deck = tmp_path / "pinned.dat"
-    deck.write_text(PINNED_BODY.format(d=d, mpl=mpl, Ca=Ca, z0=-5.0, r0=3.0, sa=-5.0, sb=-15.0, rho=rho))
+    deck.write_text(pinned_body_deck(d, mpl, Ca, -5.0, 3.0, -5.0, -15.0, rho))
     t, out = _run(fmu_file, deck, {"body[1].z": -5.0}, ["body[1].pose.roll", "body[1].force.z"], 1.6 * period, 0.05)
     assert out[0, 0] == pytest.approx(math.radians(3.0), rel=1e-10)
     assert _period(t, out[:, 0]) == pytest.approx(period, rel=1e-3)
@@ -127,7 +90,7 @@ def test_a_pinned_body_under_an_accelerating_pin_swings_about_the_angle_of_the_a
     d, mpl, L, a = 2.0, 5000.0, 10.0, 0.5
     A = math.pi * d * d / 4
     deck = tmp_path / "pinned.dat"
-    deck.write_text(PINNED_BODY.format(d=d, mpl=mpl, Ca=Ca, z0=-5.0, r0=0.0, sa=-5.0, sb=-15.0, rho=rho))
+    deck.write_text(pinned_body_deck(d, mpl, Ca, -5.0, 0.0, -5.0, -15.0, rho))
     period = _physical_pendulum(mpl * L, L, d, -15.0, -5.0, rho, Ca)
     h = 0.05
     t, out = _run(fmu_file, deck, {"body[1].z": -5.0}, ["body[1].pose.roll", "body[1].force.y"], 2.2 * period, h,
@@ -159,46 +122,11 @@ def test_a_buoyant_column_pinned_at_the_seabed_rocks_as_the_inverted_pendulum_it
     mpl = 0.5 * rho * A
     period = _physical_pendulum(mpl * L, L, d, 0.0, L, rho, 1.0)
     deck = tmp_path / "column.dat"
-    deck.write_text(PINNED_BODY.format(d=d, mpl=mpl, Ca=1.0, z0=-60.0, r0=3.0, sa=0.0, sb=L, rho=rho))
+    deck.write_text(pinned_body_deck(d, mpl, 1.0, -60.0, 3.0, 0.0, L, rho))
     t, out = _run(fmu_file, deck, {"body[1].z": -60.0}, ["body[1].pose.roll", "body[1].force.z"], 1.6 * period, 0.1)
     assert _period(t, out[:, 0]) == pytest.approx(period, rel=1e-3)
     assert out[:, 0].min() == pytest.approx(-math.radians(3.0), rel=2e-3)
     assert out[0, 1] == pytest.approx((rho * A * L - mpl * L) * GRAVITY, rel=1e-10)
-
-
-PINNED_ROD = """--- MoorDyn Input File ---
-a rod pinned to a coupled body
----------------------- LINE TYPES ----
-TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
-(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
-rope 0.1 10.0 5e6 0 0 0 0 0 0
----------------------- ROD TYPES ----
-TypeName Diam Mass/m Cd Ca CdEnd CaEnd
-(name) (m) (kg/m) (-) (-) (-) (-)
-bar 0.5 400 0 1.0 0 0
----------------------- BODIES ----
-ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*
-(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)
-1 Coupled 0 0 -10 0 0 0 0 0 0 0 0 0
----------------------- RODS ----
-ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs
-(#) (name) (#/key) (m) (m) (m) (m) (m) (m) (-) (-)
-1 bar {kind} 2 0 0 {xb:.12g} 0 {zb:.12g} 10 -
----------------------- POINTS ----
-ID Type X Y Z Mass Volume CdA Ca
-(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
-1 Fixed 30 0 -5 0 0 0 0
-2 Fixed 30 0 -10 0 0 0 0
----------------------- LINES ----
-ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
-(#) (name) (#) (#) (m) (-) (-)
-1 rope 1 2 5 1 -
----------------------- OPTIONS ----
-100 WtrDpth
-1025 WtrDnsty
-0 TmaxIC
-------------------------- need this line ----
-"""
 
 
 def test_a_rod_pinned_to_a_coupled_body_swings_and_loads_the_body_at_its_pin(fmu_file, tmp_path):
@@ -210,7 +138,7 @@ def test_a_rod_pinned_to_a_coupled_body_swings_and_loads_the_body_at_its_pin(fmu
     A = math.pi * d * d / 4
     period = _physical_pendulum(mpl * L, L, d, -L, 0.0, rho, 1.0)
     deck = tmp_path / "pinned_rod.dat"
-    deck.write_text(PINNED_ROD.format(kind="Body1Pinned", xb=2 + L * math.sin(theta), zb=-L * math.cos(theta)))
+    deck.write_text(pinned_rod_deck("Body1Pinned", 2 + L * math.sin(theta), -L * math.cos(theta)))
     inputs = {"body[1].z": -10.0}
     t, out = _run(fmu_file, deck, inputs, ["body[1].force.x", "body[1].force.z", "body[1].moment.y"],
                   1.6 * period, 0.05)
@@ -218,35 +146,6 @@ def test_a_rod_pinned_to_a_coupled_body_swings_and_loads_the_body_at_its_pin(fmu
     weight = (mpl - rho * A) * L * GRAVITY
     assert out[0, 1] == pytest.approx(-weight, rel=1e-10)
     assert out[0, 2] == pytest.approx(2.0 * weight, rel=1e-10)  # (2, 0, 0) x (0, 0, -W): +2 W about y
-
-
-GROUND = """--- MoorDyn Input File ---
-a rod pinned to the ground, held level by a vertical line
----------------------- LINE TYPES ----
-TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
-(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
-rope 0.1 {ml:.12g} 1e7 0 0 0 0 0 0
----------------------- ROD TYPES ----
-TypeName Diam Mass/m Cd Ca CdEnd CaEnd
-(name) (m) (kg/m) (-) (-) (-) (-)
-bar 0.5 400 0 1.0 0 0
----------------------- RODS ----
-ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs
-(#) (name) (#/key) (m) (m) (m) (m) (m) (m) (-) (-)
-1 bar Pinned 0 0 -50 8 0 -50 10 -
----------------------- POINTS ----
-ID Type X Y Z Mass Volume CdA Ca
-(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
-1 Fixed 8 0 -20 0 0 0 0
----------------------- LINES ----
-ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
-(#) (name) (#) (#) (m) (-) (-)
-1 rope R1B 1 {L0:.15g} 4 -
----------------------- OPTIONS ----
-100 WtrDpth
-1025 WtrDnsty
-------------------------- need this line ----
-"""
 
 
 def test_a_rod_pinned_to_the_ground_rests_where_its_line_balances_its_weight_about_the_pin(fmu_file, tmp_path):
@@ -259,7 +158,11 @@ def test_a_rod_pinned_to_the_ground_rests_where_its_line_balances_its_weight_abo
     W = (400.0 - rho * math.pi * 0.5 ** 2 / 4) * 8 * GRAVITY
     T = W / 2
     deck = tmp_path / "ground.dat"
-    deck.write_text(GROUND.format(ml=rho * math.pi * d * d / 4, L0=30.0 / (1 + T / EA)))
+    deck.write_text(moordyn_deck("a rod pinned to the ground, held level by a vertical line", "bar 0.5 400 0 1.0 0 0",
+                                "1 bar Pinned 0 0 -50 8 0 -50 10 -", line_type=f"rope {d} {rho * math.pi * d * d / 4:.12g} "
+                                f"{EA} 0 0 0 0 0 0", points="1 Fixed 8 0 -20 0 0 0 0",
+                                lines=f"1 rope R1B 1 {30.0 / (1 + T / EA):.15g} 4 -",
+                                options="100 WtrDpth\n1025 WtrDnsty"))
     c = CableFMU(fmu_file, parameters={"lineFile": str(deck)}, logging_on=True)
     try:
         c.initialize()
@@ -277,7 +180,7 @@ def test_a_saved_state_of_a_swinging_pinned_rod_continues_bit_for_bit(fmu_file, 
     """fmi2GetFMUstate mid-swing of the rod pinned to coupled body 1, the body moving: restored in the same
     instance and (serialized) in a new one, the continuation's pin load and pose are the same bits."""
     deck = tmp_path / "pinned_rod.dat"
-    deck.write_text(PINNED_ROD.format(kind="Body1Pinned", xb=2 + 8 * math.sin(0.05), zb=-8 * math.cos(0.05)))
+    deck.write_text(pinned_rod_deck("Body1Pinned", 2 + 8 * math.sin(0.05), -8 * math.cos(0.05)))
     names = ["body[1].force.x", "body[1].force.z", "body[1].moment.y"] + [
         f"body[2].pose.{a}" for a in ("x", "y", "z", "roll", "pitch", "yaw")]
 

@@ -19,41 +19,59 @@ import numpy as np
 from ucable.fmu import CableFMU
 from ..peers.moordyn import System
 
-PINNED_ROD_LINE = """--- MoorDyn Input File ---
-a rod pinned to a coupled body, a line from its free end to an anchor
----------------------- LINE TYPES ----
-TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
-(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
-chain 0.1 30.0 1e8 -0.5 0 1.2 1.0 0.2 0.0
----------------------- ROD TYPES ----
-TypeName Diam Mass/m Cd Ca CdEnd CaEnd
-(name) (m) (kg/m) (-) (-) (-) (-)
-bar 0.5 400 0 1.0 0 0
----------------------- BODIES ----
-ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*
-(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)
-1 Coupled 0 0 -10 0 0 0 0 0 0 0 0 0
----------------------- RODS ----
-ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs
-(#) (name) (#/key) (m) (m) (m) (m) (m) (m) (-) (-)
-1 bar Body1Pinned 2 0 0 {xb:.12g} 0 {zb:.12g} {rodSegs} -
----------------------- POINTS ----
-ID Type X Y Z Mass Volume CdA Ca
-(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
-1 Fixed 40 0 -60 0 0 0 0
----------------------- LINES ----
-ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
-(#) (name) (#) (#) (m) (-) (-)
-1 chain 1 R1B 60 {segs} -
----------------------- OPTIONS ----
-100 WtrDpth
-1025 WtrDnsty
-100 TmaxIC
-0.5 dtIC
-0.001 threshIC
-{dtM} dtM
-------------------------- need this line ----
-"""
+def deck(title: str, rod_type: str, rods: str, bodies: str = "", line_type: str = "rope 0.1 10.0 5e6 0 0 0 0 0 0",
+         points: str = "1 Fixed 30 0 -5 0 0 0 0\n2 Fixed 30 0 -10 0 0 0 0", lines: str = "1 rope 1 2 5 1 -",
+         options: str = "100 WtrDpth\n1025 WtrDnsty\n0 TmaxIC") -> str:
+    """A MoorDyn deck of one line type, one rod type, the given rows (BODIES left out where none) and options;
+    by default the line is the dummy MoorDyn's pinnedBody deck has, between two Fixed points."""
+    body_table = ("---------------------- BODIES ----\n"
+                  "ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*\n"
+                  "(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n" + bodies + "\n") if bodies else ""
+    return ("--- MoorDyn Input File ---\n" + title + "\n"
+            "---------------------- LINE TYPES ----\n"
+            "TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx\n"
+            "(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)\n" + line_type + "\n"
+            "---------------------- ROD TYPES ----\n"
+            "TypeName Diam Mass/m Cd Ca CdEnd CaEnd\n"
+            "(name) (m) (kg/m) (-) (-) (-) (-)\n" + rod_type + "\n" + body_table +
+            "---------------------- RODS ----\n"
+            "ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs\n"
+            "(#) (name) (#/key) (m) (m) (m) (m) (m) (m) (-) (-)\n" + rods + "\n"
+            "---------------------- POINTS ----\n"
+            "ID Type X Y Z Mass Volume CdA Ca\n"
+            "(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)\n" + points + "\n"
+            "---------------------- LINES ----\n"
+            "ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs\n"
+            "(#) (name) (#) (#) (m) (-) (-)\n" + lines + "\n"
+            "---------------------- OPTIONS ----\n" + options + "\n"
+            "------------------------- need this line ----\n")
+
+
+def pinned_body_deck(d: float, mpl: float, Ca: float, z0: float, r0: float, sa: float, sb: float, rho: float) -> str:
+    """A CoupledPinned body of no mass of its own at depth z0 with a rod (no drag) on its z axis from sa to sb,
+    released from the roll r0 [deg] (TmaxIC 0), in water of density rho (MoorDyn's pinnedBody deck's kind)."""
+    return deck("a rod on a pinned body", f"bar {d} {mpl:.12g} 0 {Ca} 0 0", f"1 bar Body1 0 0 {sa} 0 0 {sb} 10 -",
+                bodies=f"1 CoupledPinned 0 0 {z0} {r0} 0 0 0 0 0 0 0 0", options=f"100 WtrDpth\n{rho} WtrDnsty\n0 TmaxIC")
+
+
+ROD_TYPE = "bar 0.5 400 0 1.0 0 0"  # 8 m rods of 0.5 m, 400 kg/m, Ca 1, no drag
+HOLDER = "1 Coupled 0 0 -10 0 0 0 0 0 0 0 0 0"
+
+
+def pinned_rod_deck(kind: str, xb: float, zb: float, segs: int = 10, options: str = "") -> str:
+    """A rod pinned at (2, 0, 0) on coupled body 1 (kind Body1Pinned) to (xb, 0, zb) in its frame, released
+    from there (TmaxIC 0)."""
+    return deck("a rod pinned to a coupled body", ROD_TYPE, f"1 bar {kind} 2 0 0 {xb:.12g} 0 {zb:.12g} {segs} -",
+                bodies=HOLDER, options="100 WtrDpth\n1025 WtrDnsty\n0 TmaxIC" + options)
+
+
+def pinned_rod_line_deck(xb: float, zb: float, segs: int, rod_segs: int, dtM: float) -> str:
+    """The pinned rod with a chain from its end B to an anchor, each code from its own statics (TmaxIC 100)."""
+    return deck("a rod pinned to a coupled body, a line from its free end to an anchor", ROD_TYPE,
+                f"1 bar Body1Pinned 2 0 0 {xb:.12g} 0 {zb:.12g} {rod_segs} -", bodies=HOLDER,
+                line_type="chain 0.1 30.0 1e8 -0.5 0 1.2 1.0 0.2 0.0", points="1 Fixed 40 0 -60 0 0 0 0",
+                lines=f"1 chain 1 R1B 60 {segs} -",
+                options=f"100 WtrDpth\n1025 WtrDnsty\n100 TmaxIC\n0.5 dtIC\n0.001 threshIC\n{dtM} dtM")
 
 
 def _moordyn_end_tension(md, line, end: int) -> float:
@@ -67,12 +85,12 @@ def _moordyn_end_tension(md, line, end: int) -> float:
     return float(1.5 * t0 - 0.5 * t1)
 
 
-def pinned_body(deck: Path, t_end: float = 20.0, a: float = 0.5, h: float = 0.05, dt_md: float = 0.01) -> dict:
+def pinned_body(path: Path, t_end: float = 20.0, a: float = 0.5, h: float = 0.05, dt_md: float = 0.01) -> dict:
     """MoorDyn's pinnedBody deck, its pin accelerated along y from rest: the roll and the pin's load (y, z) of
     each code at the FMU's communication points."""
     n = int(round(t_end / h))
     sub = int(round(h / dt_md))
-    with System(deck) as md:
+    with System(path) as md:
         x, v = [0.0, 0.0, -5.0, 0.0, 0.0, 0.0], [0.0] * 6
         md.init(x, v)
         body = md.api.GetBody(md.system, 1)
@@ -86,7 +104,7 @@ def pinned_body(deck: Path, t_end: float = 20.0, a: float = 0.5, h: float = 0.05
             ref["roll"].append(md.api.GetBodyState(body)[0][3])
             ref["fy"].append(f[1])
             ref["fz"].append(f[2])
-    c = CableFMU(parameters={"lineFile": str(deck)})
+    c = CableFMU(parameters={"lineFile": str(path)})
     out = {"roll": [], "fy": [], "fz": []}
     try:
         c.initialize(inputs={"body[1].z": -5.0})
@@ -118,11 +136,10 @@ def pinned_rod_line(tilt_deg: float = 10.0, t_end: float = 40.0, h: float = 0.05
         return surge * (1 - math.cos(w * t)), surge * w * math.sin(w * t), surge * w * w * math.cos(w * t)
 
     with tempfile.TemporaryDirectory() as tmp:
-        deck = Path(tmp) / "pinned_rod_line.dat"
-        deck.write_text(PINNED_ROD_LINE.format(xb=2 + 8 * math.sin(theta), zb=-8 * math.cos(theta), segs=segs,
-                                               rodSegs=rod_segs, dtM=dtM))
+        path = Path(tmp) / "pinned_rod_line.dat"
+        path.write_text(pinned_rod_line_deck(2 + 8 * math.sin(theta), -8 * math.cos(theta), segs, rod_segs, dtM))
         n = int(round(t_end / h))
-        with System(deck) as md:
+        with System(path) as md:
             x, v = [0.0, 0.0, -10.0, 0.0, 0.0, 0.0], [0.0] * 6
             md.init(x, v)
             line = md.api.GetLine(md.system, 1)
@@ -138,7 +155,7 @@ def pinned_rod_line(tilt_deg: float = 10.0, t_end: float = 40.0, h: float = 0.05
                 ref["anchor"].append(_moordyn_end_tension(md, line, 0))
                 ref["fx"].append(f[0])
                 ref["fz"].append(f[2])
-        c = CableFMU(parameters={"lineFile": str(deck), "lineFileElements": elements})
+        c = CableFMU(parameters={"lineFile": str(path), "lineFileElements": elements})
         out = {"rod": [], "anchor": [], "fx": [], "fz": []}
 
         def record():
@@ -161,26 +178,6 @@ def pinned_rod_line(tilt_deg: float = 10.0, t_end: float = 40.0, h: float = 0.05
     return {k: (np.array(out[k]), np.array(ref[k])) for k in out}
 
 
-SWING = PINNED_ROD_LINE.split("---------------------- POINTS ----")[0].replace(
-    "a rod pinned to a coupled body, a line from its free end to an anchor", "a rod pinned to a coupled body, swinging") + \
-    """---------------------- POINTS ----
-ID Type X Y Z Mass Volume CdA Ca
-(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
-1 Fixed 30 0 -5 0 0 0 0
-2 Fixed 30 0 -10 0 0 0 0
----------------------- LINES ----
-ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
-(#) (name) (#) (#) (m) (-) (-)
-1 chain 1 2 5 1 -
----------------------- OPTIONS ----
-100 WtrDpth
-1025 WtrDnsty
-0 TmaxIC
-{dtM} dtM
-------------------------- need this line ----
-"""
-
-
 def _period(t, x) -> float:
     crossings = [t[i] - x[i] * (t[i + 1] - t[i]) / (x[i + 1] - x[i]) for i in range(len(x) - 1)
                  if (x[i] < 0) != (x[i + 1] < 0)]
@@ -196,9 +193,10 @@ def pinned_rod_swing(tilt_deg: float = 5.0, t_end: float = 10.0, h: float = 0.05
     n = int(round(t_end / h))
     t = h * np.arange(1, n + 1)
     with tempfile.TemporaryDirectory() as tmp:
-        deck = Path(tmp) / "pinned_rod_swing.dat"
-        deck.write_text(SWING.format(xb=2 + 8 * math.sin(theta), zb=-8 * math.cos(theta), rodSegs=rod_segs, dtM=2e-4))
-        with System(deck) as md:
+        path = Path(tmp) / "pinned_rod_swing.dat"
+        path.write_text(pinned_rod_deck("Body1Pinned", 2 + 8 * math.sin(theta), -8 * math.cos(theta), rod_segs,
+                                        "\n0.0002 dtM"))
+        with System(path) as md:
             x, v = [0.0, 0.0, -10.0, 0.0, 0.0, 0.0], [0.0] * 6
             md.init(x, v)
             rod = md.api.GetRod(md.system, 1)
@@ -210,7 +208,7 @@ def pinned_rod_swing(tilt_deg: float = 5.0, t_end: float = 10.0, h: float = 0.05
                 angle.append(math.atan2(b[0] - a[0], a[2] - b[2]))
                 fx.append(f[0])
                 fz.append(f[2])
-        c = CableFMU(parameters={"lineFile": str(deck)})
+        c = CableFMU(parameters={"lineFile": str(path)})
         out = []
         try:
             c.initialize(inputs={"body[1].z": -10.0})
