@@ -509,6 +509,9 @@ bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vect
             b.pose[4] = std::cos(b.pose[5]) > 1e-12 ? std::atan2(-axis[2], axis[0]) : 0.0;
             const DeckBody* holder = r.body > 0 ? &bodies[r.body - 1] : nullptr;
             if (holder && holder->kind == BodyKind::Coupled) {
+                if (r.body > UC_MAX_BODIES)
+                    return refuse("it is pinned to coupled body " + std::to_string(r.body) + ": the bodies' inputs "
+                                  "body[k].* go up to k = " + std::to_string(UC_MAX_BODIES));
                 b.pinBody = r.body;
                 std::copy(r.a, r.a + 3, b.pinAt);
             } else {  // the ground, or a Fixed body: the pin stands still where it is
