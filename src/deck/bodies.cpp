@@ -102,27 +102,30 @@ bool read_body(const Row& row, int expectedId, DeckBody& b, std::vector<std::str
         b.kind = BodyKind::Fixed;
     } else if (is_one_of(head, {"FREE"})) {
         b.kind = BodyKind::Free;
-    } else if (is_one_of(head, {"PINNED", "CPLDPIN", "COUPLEDPINNED"})) {
-        return f.fail("body " + std::to_string(b.id) + " is pinned (coupled in translation, free in rotation): not "
-                      "supported (Coupled and Fixed bodies)");
+    } else if (is_one_of(head, {"VESSELPINNED", "VESPIN", "CPLDPIN", "COUPLEDPINNED"})) {
+        b.kind = BodyKind::Pinned;  // its reference point held by the body[k] inputs, free to turn about it
+        b.pinBody = b.id;
     } else {
-        return f.fail("unknown body attachment " + quoted(row.tokens[1]) + " (Coupled or Fixed)");
+        return f.fail("unknown body attachment " + quoted(row.tokens[1]) + " (Coupled, Fixed, Free or CoupledPinned)");
     }
     static const char* const kColumns[] = {"X0", "Y0", "Z0", "r0", "p0", "y0"};
     const double kDegree = kPi / 180.0;
     for (int k = 0; k < 6; ++k) b.pose[k] = f.number(2 + k, kColumns[k]) * (k < 3 ? 1.0 : kDegree);
     b.row = row.number;
-    if (f.ok() && b.kind == BodyKind::Free) {
+    if (f.ok() && (b.kind == BodyKind::Free || b.kind == BodyKind::Pinned)) {
+        const char* what = b.kind == BodyKind::Free ? "a Free body" : "a CoupledPinned body";
         if (row.tokens.size() < 14) {
-            return f.fail("a Free body has the fields ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*; this "
-                          "row has " + std::to_string(row.tokens.size()));
+            return f.fail(std::string(what) + " has the fields ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* "
+                          "Ca*; this row has " + std::to_string(row.tokens.size()));
         }
         b.mass = f.non_negative(8, "Mass");
         b.volume = f.non_negative(11, "Volume");
         if (!f.ok() || !vector_field(f, row, 9, "CG", true, b.cg) || !vector_field(f, row, 10, "I", false, b.inertia) ||
             !drag_field(f, row, 12, b.CdA) || !vector_field(f, row, 13, "Ca", false, b.Ca))
             return false;
-        if (!free_body_plausible(f, row, b)) return false;
+        std::copy(b.cg, b.cg + 3, b.cb);  // MoorDyn's body: its buoyancy at its centre of gravity
+        // a pinned body's rods may give it the inertia it lacks: checked once they are added (rods_into_bodies)
+        if (b.kind == BodyKind::Free && !free_body_plausible(f, row, b)) return false;
     }
     if (f.ok() && b.kind == BodyKind::Coupled && row.tokens.size() > 8) {
         notes.push_back(at_line(row.number, "the mass, inertia, volume and drag of coupled body " + std::to_string(b.id) +

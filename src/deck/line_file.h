@@ -192,6 +192,12 @@ struct MooringNode {
     double inertia[3] = {0.0, 0.0, 0.0}; // a body's moments of inertia about its centre of gravity, body axes [kg m2]
     double CdA[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // a body's drag areas in its axes: translations, rotations [m2]
     double Ca[3] = {0.0, 0.0, 0.0};      // a body's added-mass coefficients of translation in its axes (of rho V)
+    // A pinned body (a CoupledPinned body, a pinned rod): its reference point held where `pin` is (on a coupled
+    // body, or fixed), free to turn about it; its three unknowns its rotation. Its buoyancy acts at cb (its
+    // centre of buoyancy in its frame; a free body's at its centre of gravity, as MoorDyn's).
+    bool pinned = false;
+    MooringEnd pin;
+    double cb[3] = {0.0, 0.0, 0.0};
     double rodLength = 0.0;              // > 0: a free rod (docs/lines.md, "Rods") along the body's x axis, from
                                          // -rodLength/2 to rodLength/2: its buoyancy, drag and added mass follow
                                          // the part of it below z = 0

@@ -54,7 +54,7 @@ bool mooring_end(const Point& p, const std::vector<DeckBody>& bodies, const std:
                 return false;
             }
             const DeckBody& b = bodies[p.body - 1];
-            if (b.kind == BodyKind::Free) {  // a free node: at its position in the body's frame
+            if (b.kind == BodyKind::Free || b.kind == BodyKind::Pinned) {  // a free node: at its position in the body's frame
                 end.kind = MooringEnd::Kind::Node;
                 end.node = bodyNode[p.body - 1];
                 std::copy(p.position, p.position + 3, end.position);
@@ -98,13 +98,14 @@ bool is_mooring_system_deck(std::string_view text) {
     for (const Row& row : points->rows) {
         if (row.tokens.size() > 1 && upper(row.tokens[1]).rfind("BODY", 0) == 0) return true;
     }
-    // a rod on a body, or a free rod of non-zero length (a free body)
+    // a rod on a body, a rod pinned to the ground (a pinned body), or a free rod of non-zero length (a free body)
     if (const auto& rods = sections[static_cast<size_t>(Kind::Rods)]) {
         for (const Row& row : rods->rows) {
             if (row.tokens.size() < 10) continue;
             const std::string kind = upper(row.tokens[2]);
             if (kind.rfind("BODY", 0) == 0) return true;
             if (is_one_of(kind, {"FREE", "POINT", "CON"}) && row.tokens[9] != "0") return true;
+            if (is_one_of(kind, {"PINNED", "PIN"})) return true;
         }
     }
     return false;
@@ -118,7 +119,13 @@ bool read_bodies(const Deck& deck, std::vector<DeckBody>& bodies, MooringDeck& o
         DeckBody b;
         if (!read_body(row, static_cast<int>(bodies.size()) + 1, b, out.notes, error)) return false;
         bodies.push_back(b);
-        if (b.kind == BodyKind::Coupled) out.bodies = std::max(out.bodies, b.id);
+        // a CoupledPinned body's reference point is moved by its body[k] inputs too
+        if (b.kind == BodyKind::Coupled || b.kind == BodyKind::Pinned) out.bodies = std::max(out.bodies, b.id);
+        if (b.kind == BodyKind::Pinned && b.id > UC_MAX_BODIES) {
+            error = at_line(b.row, "CoupledPinned body " + std::to_string(b.id) + ": the bodies' inputs body[k].* go up "
+                                   "to k = " + std::to_string(UC_MAX_BODIES));
+            return false;
+        }
     }
     out.bodiesSection = !bodies.empty();
     return true;
@@ -135,7 +142,7 @@ struct Roles {
     bool on_free_body(int q) const {
         const Point& p = deck.points[q];
         return p.kind == PointKind::Body && p.body >= 1 && p.body <= static_cast<int>(bodies.size()) &&
-               bodies[p.body - 1].kind == BodyKind::Free;
+               (bodies[p.body - 1].kind == BodyKind::Free || bodies[p.body - 1].kind == BodyKind::Pinned);
     }
     void node_end(int q, MooringEnd& end) const {
         end = MooringEnd();
@@ -171,10 +178,17 @@ void add_free_nodes(Roles& roles, std::vector<MooringNode>& nodes) {
     }
     roles.bodyNode.assign(roles.bodies.size(), -1);
     for (const DeckBody& b : roles.bodies) {
-        if (b.kind != BodyKind::Free) continue;
+        if (b.kind != BodyKind::Free && b.kind != BodyKind::Pinned) continue;
         roles.bodyNode[b.id - 1] = static_cast<int>(nodes.size());
         MooringNode node;
         node.body = true;
+        node.pinned = b.kind == BodyKind::Pinned;
+        if (node.pinned) {  // held on coupled body pinBody at pinAt in its frame, or fixed at pinAt (pinBody 0)
+            node.pin.kind = b.pinBody > 0 ? MooringEnd::Kind::Body : MooringEnd::Kind::Fixed;
+            node.pin.body = b.pinBody;
+            std::copy(b.pinAt, b.pinAt + 3, node.pin.position);
+        }
+        std::copy(b.cb, b.cb + 3, node.cb);
         node.point.id = b.id;
         node.point.mass = b.mass;
         node.point.volume = b.volume;
@@ -271,7 +285,7 @@ bool check_reached(const Deck& deck, const std::vector<bool>& used, const Moorin
         return false;
     }
     for (const MooringNode& node : out.nodes) {
-        if (!node.body) continue;
+        if (!node.body || node.pinned) continue;  // a pinned body is held by its pin
         bool held = false;
         for (const MooringDeckLine& l : out.lines)
             for (const MooringEnd* e : {&l.fairlead, &l.far})

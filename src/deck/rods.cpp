@@ -3,6 +3,8 @@
 // lines clamped to rods noted, and the rods the FMU has no counterpart for refused naming the rod.
 #include "deck/tables.h"
 
+#include "core/types.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -25,12 +27,14 @@ const char* kind_text(RodKind kind) {
         case RodKind::Fixed: return "Fixed";
         case RodKind::Coupled: return "Coupled";
         case RodKind::Free: return "Free";
+        case RodKind::Pinned: return "Pinned";
         default: return "Body";
     }
 }
 
 std::string rod_name(const Rod& r) {
-    return "rod " + std::to_string(r.id) + " (" + kind_text(r.kind) +
+    return "rod " + std::to_string(r.id) + " (" +
+           (r.kind == RodKind::Pinned && r.body > 0 ? "Body" + std::to_string(r.body) + "Pinned" : kind_text(r.kind)) +
            (r.kind == RodKind::Body ? std::to_string(r.body) : std::string()) +
            (r.numSegs == 0 ? ", zero length)" : ", " + short_number(r.length) + " m)");
 }
@@ -45,10 +49,20 @@ bool read_rod_kind(Fields& f, std::string_view word, Rod& r) {
     while (j < u.size() && std::isdigit(static_cast<unsigned char>(u[j]))) ++j;
     const std::string digits = u.substr(i, j - i), tail = u.substr(j);
     const std::string id = "rod " + std::to_string(r.id);
-    if (is_one_of(head, {"PINNED", "PIN", "VESSELPINNED", "VESPIN", "CPLDPIN", "COUPLEDPINNED"}) ||
-        (head == "BODY" && is_one_of(tail, {"PINNED", "PIN"}))) {
-        return f.fail(id + " is pinned (" + quoted(word) + ": its end A held, free to turn about it): not supported "
-                      "(the FMU's rods are fixed, coupled, free, or fixed to a body)");
+    if (is_one_of(head, {"VESSELPINNED", "VESPIN", "CPLDPIN", "COUPLEDPINNED"})) {
+        return f.fail(id + " is coupled and pinned (" + quoted(word) + ": its end A moved by the program driving it, "
+                      "free to turn about it): not supported (a rod pinned to the ground, 'Pinned', or to a coupled "
+                      "or fixed body, 'Body<k>Pinned', is)");
+    }
+    if (is_one_of(head, {"PINNED", "PIN"}) && digits.empty() && tail.empty()) {
+        r.kind = RodKind::Pinned;  // to the ground: its end A fixed
+        r.body = 0;
+        return true;
+    }
+    if (head == "BODY" && !digits.empty() && digits.size() < 9 && is_one_of(tail, {"PINNED", "PIN"})) {
+        r.kind = RodKind::Pinned;
+        r.body = std::stoi(digits);
+        return true;
     }
     if (!tail.empty()) return f.fail("unknown rod attachment " + quoted(word));
     if (is_one_of(head, {"ANCHOR", "FIXED", "FIX"}) && digits.empty()) {
@@ -61,7 +75,8 @@ bool read_rod_kind(Fields& f, std::string_view word, Rod& r) {
         r.kind = RodKind::Body;
         r.body = std::stoi(digits);
     } else {
-        return f.fail("unknown rod attachment " + quoted(word) + " (Fixed, Coupled, Free or Body<ID>)");
+        return f.fail("unknown rod attachment " + quoted(word) + " (Fixed, Coupled, Free, Pinned, Body<ID> or "
+                      "Body<ID>Pinned)");
     }
     return true;
 }
@@ -132,12 +147,18 @@ bool rods_as_points(std::vector<Rod>& rods, int firstBody, bool system, std::vec
                     std::string& error) {
     int nextBody = firstBody;
     for (Rod& r : rods) {
-        if (!system && (r.kind == RodKind::Body || (r.kind == RodKind::Free && r.numSegs > 0))) {
-            error = at_line(r.row, rod_name(r) + ": a rod on a body or a free rod of non-zero length makes the "
-                                   "deck a mooring system; here it is read as one line (a BODIES section is refused)");
+        if (!system && (r.kind == RodKind::Body || r.kind == RodKind::Pinned || (r.kind == RodKind::Free && r.numSegs > 0))) {
+            error = at_line(r.row, rod_name(r) + ": a rod on a body, a pinned rod or a free rod of non-zero length "
+                                   "makes the deck a mooring system; here it is read as one line (a BODIES section is "
+                                   "refused)");
             return false;
         }
-        if (r.kind == RodKind::Free && r.numSegs > 0) r.freeBody = nextBody++;
+        if (r.kind == RodKind::Pinned && r.numSegs == 0) {
+            error = at_line(r.row, rod_name(r) + ": a pinned rod of zero length (NumSegs 0) has nothing to turn: give "
+                                   "it its end B and NumSegs > 0, or attach the lines to the point it is pinned to");
+            return false;
+        }
+        if ((r.kind == RodKind::Free && r.numSegs > 0) || r.kind == RodKind::Pinned) r.freeBody = nextBody++;
         const int ends = r.numSegs == 0 ? 1 : 2;
         for (int e = 0; e < ends; ++e) {
             Point p;
@@ -157,8 +178,14 @@ bool rods_as_points(std::vector<Rod>& rods, int firstBody, bool system, std::vec
                         p.body = r.freeBody;
                     }
                     break;
+                case RodKind::Pinned:  // a point of its pinned body, whose reference point is its end A
+                    p.kind = PointKind::Body;
+                    p.body = r.freeBody;
+                    break;
             }
-            if (r.kind == RodKind::Free && r.numSegs > 0) {
+            if (r.kind == RodKind::Pinned) {
+                p.position[0] = e == 0 ? 0.0 : r.length;
+            } else if (r.kind == RodKind::Free && r.numSegs > 0) {
                 p.position[0] = (e == 0 ? -0.5 : 0.5) * r.length;
             } else {
                 std::copy(at, at + 3, p.position);
@@ -204,6 +231,11 @@ void clamp_lines_to_rods(std::vector<Rod>& rods, const std::vector<RodType>& rod
                        "; its own mass and loads are ignored (its motion is given)";
                 break;
             case RodKind::Body: what = at + " on body " + std::to_string(r.body); break;
+            case RodKind::Pinned:
+                what = "pinned body " + std::to_string(r.freeBody) + " (its end A held " +
+                       (r.body > 0 ? "by body " + std::to_string(r.body) : std::string("fixed")) +
+                       ", free to turn about it), with " + at + " on the body's x axis";
+                break;
             case RodKind::Free:
                 what = r.numSegs == 0 ? "a free " + at : "free body " + std::to_string(r.freeBody) + ", with " + at +
                                                              " on the body's x axis";
@@ -327,13 +359,67 @@ int body_axis(const double v[3]) {
     return -1;
 }
 
+// A rod of type t added to pinned body b, along body axis `axis` from s1 to s2 on it (its axis through the body's reference
+// point, the pin): its mass at its centre (the body's centre of gravity and inertia about it recombined), its
+// buoyancy at its centre (the body's centre of buoyancy recombined), its added mass of translation at the
+// reference point, its Morison loads as it turns about the reference point: the added inertia
+// Ca rho A (s2^3 - s1^3) / 3 and the drag area Cd d (s2|s2|^3 - s1|s1|^3) / 4 about the transverse axes (the
+// integrals of r^2 and |r|^3 along it). False where the combined inertia is not diagonal in the body's axes.
+bool add_rod_to_pinned(DeckBody& b, const RodType& t, int axis, double s1, double s2, double rho) {
+    const double d = t.diameter, L = s2 - s1, A = 0.25 * kPi * d * d;
+    const double m = t.massPerLength * L, V = A * L, sc = 0.5 * (s1 + s2);
+    const Vec3 cRod = sc * Vec3::Unit(axis), cBody(b.cg[0], b.cg[1], b.cg[2]);
+    const double M = b.mass + m;
+    const Vec3 cg = M > 0.0 ? Vec3((b.mass * cBody + m * cRod) / M) : Vec3::Zero();
+    Mat3 rodInertia = Mat3::Zero();
+    for (int k = 0; k < 3; ++k) rodInertia(k, k) = k == axis ? m * d * d / 8.0 : m * (L * L / 12.0 + d * d / 16.0);
+    auto shifted = [](const Mat3& I, double mass, const Vec3& by) {
+        return Mat3(I + mass * (by.squaredNorm() * Mat3::Identity() - by * by.transpose()));
+    };
+    Mat3 I = shifted(Vec3(b.inertia[0], b.inertia[1], b.inertia[2]).asDiagonal(), b.mass, cBody - cg) +
+             shifted(rodInertia, m, cRod - cg);
+    const double addedInertia = t.Ca * rho * A * (s2 * s2 * s2 - s1 * s1 * s1) / 3.0;
+    for (int k = 0; k < 3; ++k) {
+        if (k != axis) I(k, k) += addedInertia;
+    }
+    const double scale = I.diagonal().cwiseAbs().maxCoeff();
+    if ((I - Mat3(I.diagonal().asDiagonal())).cwiseAbs().maxCoeff() > 1e-9 * std::max(scale, 1e-300)) return false;
+    const double Vb = b.volume;
+    const Vec3 cb = Vb + V > 0.0 ? Vec3((Vb * Vec3(b.cb[0], b.cb[1], b.cb[2]) + V * cRod) / (Vb + V)) : Vec3::Zero();
+    const double endVolume = 2.0 * t.CaEnd * kPi * d * d * d / 12.0;
+    auto cube = [](double x) { return x * std::abs(x) * x * x; };  // s |s|^3: the integral of |s|^3 is s |s|^3 / 4
+    for (int k = 0; k < 3; ++k) {
+        const bool along = k == axis;
+        const double addedVolume = along ? endVolume : t.Ca * V;
+        b.Ca[k] = Vb + V > 0.0 ? (b.Ca[k] * Vb + addedVolume) / (Vb + V) : 0.0;
+        b.CdA[k] += along ? 2.0 * t.CdEnd * A : t.Cd * d * L;
+        b.CdA[3 + k] += along ? 0.0 : t.Cd * d * (cube(s2) - cube(s1)) / 4.0;
+        b.inertia[k] = I(k, k);
+        b.cg[k] = cg[k];
+        b.cb[k] = cb[k];
+    }
+    b.mass = M;
+    b.volume = Vb + V;
+    return true;
+}
+
+// A rod's body appended at its ID (after the deck's), body 1 first where the Vessel points ride it.
+void append_body(std::vector<DeckBody>& bodies, const DeckBody& b) {
+    while (static_cast<int>(bodies.size()) + 1 < b.id) {  // body 1: the platform the Vessel points ride
+        DeckBody platform;
+        platform.id = static_cast<int>(bodies.size()) + 1;
+        bodies.push_back(platform);
+    }
+    bodies.push_back(b);
+}
+
 }  // namespace
 
 bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vector<std::string>& notes,
                       std::string& error) {
     const double rho = deck.waterDensity;
     for (const Rod& r : deck.rods) {
-        if (r.numSegs == 0 || (r.kind != RodKind::Body && r.kind != RodKind::Free)) continue;
+        if (r.numSegs == 0 || (r.kind != RodKind::Body && r.kind != RodKind::Free && r.kind != RodKind::Pinned)) continue;
         const RodType& t = deck.rodTypes[r.type];
         const std::string name = rod_name(r);
         auto refuse = [&](const std::string& why) {
@@ -344,11 +430,33 @@ bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vect
         // (a free body's buoyancy is constant; through the waterline it would change with the draft)
         double ends[2][3];
         double ax[3];
-        if (r.kind == RodKind::Body) {
+        if (r.kind == RodKind::Pinned) {
+            // its end A held by body r.body (0: the ground), its ends in the earth frame at that body's pose
+            const DeckBody* holder = nullptr;
+            if (r.body > 0) {
+                if (r.body > static_cast<int>(bodies.size()))
+                    return refuse("it is pinned to body " + std::to_string(r.body) + ", which the BODIES table does not have");
+                holder = &bodies[r.body - 1];
+                if (holder->kind == BodyKind::Free || holder->kind == BodyKind::Pinned)
+                    return refuse("it is pinned to " + std::string(holder->kind == BodyKind::Free ? "Free" : "CoupledPinned") +
+                                  " body " + std::to_string(r.body) + ": a pinned rod on a body that moves with its "
+                                  "loads is not supported (its pin's reaction would load that body; pinned rods are held by "
+                                  "a Coupled or Fixed body or by the ground)");
+            }
+            for (int e = 0; e < 2; ++e) {
+                const double* at = e == 0 ? r.a : r.b;
+                if (holder) {
+                    rotate_body(holder->pose + 3, at, ends[e]);
+                    for (int k = 0; k < 3; ++k) ends[e][k] += holder->pose[k];
+                } else {
+                    std::copy(at, at + 3, ends[e]);
+                }
+            }
+        } else if (r.kind == RodKind::Body) {
             if (r.body < 1 || r.body > static_cast<int>(bodies.size()))
                 return refuse("it is on body " + std::to_string(r.body) + ", which the BODIES table does not have");
             const DeckBody& b = bodies[r.body - 1];
-            if (b.kind != BodyKind::Free) {
+            if (b.kind != BodyKind::Free && b.kind != BodyKind::Pinned) {
                 if (b.kind == BodyKind::Coupled)
                     notes.push_back(at_line(r.row, name + ": its mass and loads are ignored, as coupled body " +
                                                        std::to_string(b.id) + "'s own (its motion is given)"));
@@ -366,11 +474,60 @@ bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vect
             }
         }
         const double top = std::max(ends[0][2], ends[1][2]) + 0.5 * t.diameter;
-        if (top > 0.0 && r.kind == RodKind::Body)
+        if (top > 0.0 && r.kind != RodKind::Free)
             return refuse("it reaches z = " + short_number(top) + " m (its top end and radius) at the deck's pose: a rod "
                           "through or above the waterline is not supported (a rod read as a rigid body keeps its full "
                           "buoyancy; its draft would change it: only a free rod follows the waterline)");
-        if (r.kind == RodKind::Body) {
+        if (r.kind == RodKind::Body && bodies[r.body - 1].kind == BodyKind::Pinned) {
+            DeckBody& b = bodies[r.body - 1];
+            const int axis = body_axis(ax);
+            if (axis < 0)
+                return refuse("its axis is not along one of pinned body " + std::to_string(b.id) + "'s axes: its drag and "
+                              "added mass have no per-axis form in the body's axes");
+            for (int k = 0; k < 3; ++k) {
+                if (k != axis && (std::abs(r.a[k]) > 1e-9 || std::abs(r.b[k]) > 1e-9))
+                    return refuse("its axis does not pass through pinned body " + std::to_string(b.id) + "'s reference "
+                                  "point (its pin): its ends' coordinates across its axis must be 0");
+            }
+            const double sa = r.a[axis], sb = r.b[axis];
+            if (!add_rod_to_pinned(b, t, axis, std::min(sa, sb), std::max(sa, sb), rho))
+                return refuse("added to pinned body " + std::to_string(b.id) + " it makes an inertia that is not diagonal "
+                              "in the body's axes (the body's own centre of gravity off the rod's axis)");
+            notes.push_back(at_line(r.row, name + ": added to pinned body " + std::to_string(b.id) + ": mass " +
+                                               short_number(t.massPerLength * r.length) + " kg at " +
+                                               short_number(0.5 * (sa + sb)) + " m along its axis from the pin, its "
+                                               "inertia, buoyancy, drag and added mass about the pin"));
+        } else if (r.kind == RodKind::Pinned) {
+            DeckBody b;
+            b.id = r.freeBody;
+            b.kind = BodyKind::Pinned;
+            b.row = r.row;
+            std::copy(ends[0], ends[0] + 3, b.pose);
+            double axis[3];
+            for (int k = 0; k < 3; ++k) axis[k] = (ends[1][k] - ends[0][k]) / r.length;
+            b.pose[5] = std::asin(std::clamp(axis[1], -1.0, 1.0));
+            b.pose[4] = std::cos(b.pose[5]) > 1e-12 ? std::atan2(-axis[2], axis[0]) : 0.0;
+            const DeckBody* holder = r.body > 0 ? &bodies[r.body - 1] : nullptr;
+            if (holder && holder->kind == BodyKind::Coupled) {
+                if (r.body > UC_MAX_BODIES)
+                    return refuse("it is pinned to coupled body " + std::to_string(r.body) + ": the bodies' inputs "
+                                  "body[k].* go up to k = " + std::to_string(UC_MAX_BODIES));
+                b.pinBody = r.body;
+                std::copy(r.a, r.a + 3, b.pinAt);
+            } else {  // the ground, or a Fixed body: the pin stands still where it is
+                b.pinBody = 0;
+                std::copy(ends[0], ends[0] + 3, b.pinAt);
+            }
+            add_rod_to_pinned(b, t, 0, 0.0, r.length, rho);  // a rod alone: its inertia is diagonal
+            if (!(t.massPerLength > 0.0)) return refuse("a pinned rod needs Mass/m > 0 (its moments of inertia)");
+            append_body(bodies, b);
+            notes.push_back(at_line(r.row, name + ": pinned body " + std::to_string(b.id) + " of mass " +
+                                               short_number(b.mass) + " kg and volume " + short_number(b.volume) +
+                                               " m3, turning about its end A (" +
+                                               (b.pinBody > 0 ? "held by body " + std::to_string(b.pinBody)
+                                                              : std::string("held still")) +
+                                               "), its drag and added mass integrated along it"));
+        } else if (r.kind == RodKind::Body) {
             DeckBody& b = bodies[r.body - 1];
             const int axis = body_axis(ax);
             if (axis < 0)
@@ -416,16 +573,30 @@ bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vect
             std::copy(rb.CdA, rb.CdA + 6, b.CdA);
             b.rodLength = r.length;  // its buoyancy, drag and added mass follow its part under water
             if (!(b.mass > 0.0)) return refuse("a free rod needs Mass/m > 0 (its moments of inertia)");
-            while (static_cast<int>(bodies.size()) + 1 < b.id) {  // body 1: the platform the Vessel points ride
-                DeckBody platform;
-                platform.id = static_cast<int>(bodies.size()) + 1;
-                bodies.push_back(platform);
-            }
-            bodies.push_back(b);
+            append_body(bodies, b);
             notes.push_back(at_line(r.row, name + ": free body " + std::to_string(b.id) + " of mass " +
                                                short_number(b.mass) + " kg and volume " + short_number(b.volume) +
                                                " m3 at its centre, its drag and added mass integrated along it (its "
                                                "turning drag apart from its translation's)"));
+        }
+    }
+    // a pinned body turns under its loads: it needs an inertia about each axis (its own or its rods')
+    static const char* const kAxes[3] = {"x", "y", "z"};
+    for (const DeckBody& b : bodies) {
+        if (b.kind != BodyKind::Pinned) continue;
+        for (int k = 0; k < 3; ++k) {
+            if (!(b.inertia[k] > 0.0)) {
+                error = at_line(b.row, "pinned body " + std::to_string(b.id) + ": its moment of inertia about its " +
+                                           kAxes[k] + " axis is " + short_number(b.inertia[k]) + " kg m2 (I* and its "
+                                           "rods'); it must be positive: it turns about its pin under its loads");
+                return false;
+            }
+        }
+        for (int k = 0; k < 6; ++k) {
+            if (b.CdA[k] < 0.0 || (k < 3 && b.Ca[k] < 0.0)) {
+                error = at_line(b.row, "pinned body " + std::to_string(b.id) + ": CdA* and Ca* must not be negative");
+                return false;
+            }
         }
     }
     return true;

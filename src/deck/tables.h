@@ -139,7 +139,9 @@ bool read_failure(const Row& row, int expectedId, const std::vector<Point>& poin
                   Failure& f, std::string& error);
 
 // ------------------------------------------------------------------------------------------- bodies (deck/bodies.cpp)
-enum class BodyKind { Coupled, Fixed, Free };
+// Pinned: MoorDyn's CoupledPinned body (its reference point held by the body[k] inputs, free to turn about it),
+// or a pinned rod (Body<k>Pinned: its end A held by coupled body k, free to turn about it).
+enum class BodyKind { Coupled, Fixed, Free, Pinned };
 
 struct DeckBody {
     int id = 0;
@@ -150,6 +152,11 @@ struct DeckBody {
     double CdA[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // body axes: translations x, y, z, rotations about them
     double Ca[3] = {0.0, 0.0, 0.0};                  // translations in body axes
     double rodLength = 0.0;                          // a free rod's body: its length along the body's x axis
+    // A Pinned body: the coupled body that holds its reference point (its own ID for a CoupledPinned body) and
+    // where, in that body's frame; its centre of buoyancy in its frame (a Free body's is its centre of gravity).
+    int pinBody = 0;
+    double pinAt[3] = {0.0, 0.0, 0.0};
+    double cb[3] = {0.0, 0.0, 0.0};
     int row = 0;
 };
 
@@ -166,7 +173,7 @@ struct RodType {
 // A ROD TYPES row: TypeName Diam Mass/m Cd Ca CdEnd CaEnd.
 bool read_rod_type(const Row& row, RodType& t, std::string& error);
 
-enum class RodKind { Fixed, Coupled, Free, Body };
+enum class RodKind { Fixed, Coupled, Free, Body, Pinned };  // Pinned: Body<k>Pinned
 
 // A RODS row (docs/lines.md, "Rods"): a rigid cylinder from end A to end B; NumSegs 0 is MoorDyn's
 // zero-length rod at A, whose B coordinates are its direction.
@@ -178,7 +185,7 @@ struct Rod {
     double axis[3] = {};            // unit vector from A to B (zero length: the direction given)
     double length = 0.0;
     int point[2] = {-1, -1};        // the points (indices) that stand for its ends A and B (the same one at zero length)
-    int freeBody = 0;               // a Free rod of non-zero length: the ID of the free body it becomes
+    int freeBody = 0;               // a Free rod of non-zero length (a Pinned rod): the ID of the free (pinned) body it becomes
 };
 
 // A RODS row: ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs. Pinned rods (Pinned,

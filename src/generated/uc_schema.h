@@ -81,11 +81,11 @@ typedef struct UCMooringLine {
 } UCMooringLine;
 
 typedef struct UCBodyLoad {
-    double force[3]; /* body[k].force.x/y/z [N]: coupled body k: force of the lines on it */
+    double force[3]; /* body[k].force.x/y/z [N]: coupled body k: force of the lines on it (and of the pinned bodies it holds, at their pins: docs/systems_mooring.md, "Pinned bodies") */
     double moment[3]; /* body[k].moment.x/y/z [N.m]: coupled body k: moment of the lines' forces about its reference point (earth axes) */
     double stiffness[36]; /* body[k].stiffness[i,j]: coupled body k: the 6×6 quasi-static mooring stiffness K[i,j] = −∂(force, moment)ᵢ / ∂(x, y, z, θx, θy, θz)ⱼ of the lines at rest about the present pose (θ a small rotation about the earth axes) (N/m, N/rad, N m/m, N m/rad; docs/systems_mooring.md) */
-    double posePosition[3]; /* body[k].pose.x/y/z [m]: a mooring system's Free body k (its ID in the deck): its reference point's position (the statics' equilibrium at initialization, then where its motion is at each communication point; 0 for other bodies) */
-    double poseAngles[3]; /* body[k].pose.roll, body[k].pose.pitch, body[k].pose.yaw [rad]: a mooring system's Free body k: its roll, pitch and yaw angles (R = Rx Ry Rz, MoorDyn's) (the statics' equilibrium at initialization, then where its motion is at each communication point; 0 for other bodies) */
+    double posePosition[3]; /* body[k].pose.x/y/z [m]: a mooring system's Free or pinned body k (its ID in the deck): its reference point's position (the statics' equilibrium at initialization, then where its motion is at each communication point; 0 for other bodies) */
+    double poseAngles[3]; /* body[k].pose.roll, body[k].pose.pitch, body[k].pose.yaw [rad]: a mooring system's Free or pinned body k: its roll, pitch and yaw angles (R = Rx Ry Rz, MoorDyn's) (the statics' equilibrium at initialization, then where its motion is at each communication point; 0 for other bodies) */
 } UCBodyLoad;
 
 typedef struct UCPointLoad {

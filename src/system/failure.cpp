@@ -240,7 +240,7 @@ void MooringSystem::apply_failures() {
     nodeUnknowns_ = 0;
     for (const MooringNode& node : deck_.nodes) {
         nodeOffset_.push_back(nodeUnknowns_);
-        nodeUnknowns_ += node.body ? 6 : 3;
+        nodeUnknowns_ += node_unknowns(node);
     }
 }
 

@@ -34,7 +34,7 @@ std::vector<MooringSystem::Holder> MooringSystem::stiffness_holders(int b, const
             if (!held) continue;
             for (const MooringEnd* e : ends) {
                 if (!e || e->kind != MooringEnd::Kind::Node || nodeHolder[e->node] >= 0) continue;
-                const int n = e->node, dofs = deck_.nodes[n].body ? 6 : 3;
+                const int n = e->node, dofs = node_unknowns(deck_.nodes[n]);
                 nodeHolder[n] = static_cast<int>(holders.size());
                 holders.push_back({n, holders.back().offset + holders.back().dofs, dofs, node_position(n), node_rotation(n)});
                 grown = true;
@@ -124,6 +124,12 @@ void MooringSystem::add_node_loads(const Holder& holder, const UCInputs& in, Eig
 
 bool MooringSystem::body_stiffness(int b, const UCInputs& in, double K[36], std::string* why) const {
     for (int i = 0; i < 36; ++i) K[i] = 0.0;
+    for (const MooringNode& node : deck_.nodes) {
+        if (!node.pinned) continue;
+        if (why) *why = "the stiffness of a system with a pinned body (body " + std::to_string(node.point.id) + ") is not "
+                        "computed";
+        return false;
+    }
     std::vector<Holder> holders = stiffness_holders(b, in);
     std::vector<int> nodeHolder(motion_.size(), -1);
     for (size_t h = 1; h < holders.size(); ++h) nodeHolder[holders[h].node] = static_cast<int>(h);

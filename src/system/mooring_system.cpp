@@ -155,7 +155,7 @@ bool MooringSystem::build(std::string& error) {
         put_rotation(m, n.body ? body_rotation(n.angles[0], n.angles[1], n.angles[2]) : Mat3::Identity());
         motion_.push_back(m);
         nodeOffset_.push_back(nodeUnknowns_);
-        nodeUnknowns_ += n.body ? 6 : 3;
+        nodeUnknowns_ += node_unknowns(n);
     }
     nodeLineStart_.resize(lines_.size());
     derivativeStamp_.assign(static_cast<size_t>(deck_.bodies), -1);
@@ -226,6 +226,12 @@ void MooringSystem::describe_nodes() {
         three("inertia [kg m2]", n.inertia);
         three("CdA [m2]", n.CdA, 6);
         three("Ca [-]", n.Ca);
+        if (!n.pinned) continue;  // (a pinned body's own values after the free bodies', whose description is kept)
+        add(prefix + "pinned", 1.0);
+        add(prefix + "pin kind", static_cast<double>(n.pin.kind));
+        add(prefix + "pin body", n.pin.body);
+        three("pin position [m]", n.pin.position);
+        three("CB [m]", n.cb);
     }
     describe_failures();
 }
@@ -359,6 +365,7 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
         }
     }
     t0_ = t0;
+    lastStep_ = 0.0;  // (a pin's acceleration, where not given, is estimated from the steps' inputs: none yet)
     if (!motion_.empty() && !solve_nodes(t0, in, error)) return false;
     for (int b = 0; b < deck_.bodies; ++b) {
         const UCCoupledBody& body = in.coupledBody[b];
@@ -460,6 +467,20 @@ void MooringSystem::update_outputs() {
     }
     split_outputs();
     failure_outputs();
+    for (size_t n = 0; n < motion_.size(); ++n) {
+        const MooringNode& node = deck_.nodes[n];
+        if (!node.pinned || node.pin.kind != MooringEnd::Kind::Body) continue;
+        // the pinned body's load on the coupled body that holds it, at the pin (no moment about the pin)
+        const Vec3 force = pin_force(static_cast<int>(n), lastInputs_);
+        const bool atReference = vec3(node.pin.position).squaredNorm() == 0.0;  // a CoupledPinned body's own pin
+        const Vec3 moment = atReference ? Vec3::Zero()
+                                        : Vec3((node_position(static_cast<int>(n)) - references_[node.pin.body - 1].position).cross(force));
+        UCBodyLoad& b = outputs_.bodyLoad[node.pin.body - 1];
+        for (int c = 0; c < 3; ++c) {
+            b.force[c] += force[c];
+            b.moment[c] += moment[c];
+        }
+    }
     for (size_t n = 0; n < motion_.size(); ++n) {
         const int id = deck_.nodes[n].point.id;
         if (deck_.nodes[n].failure > 0) continue;  // a failure's free end: no output of its own
@@ -566,6 +587,16 @@ void MooringSystem::body_load(int n, const Vec3& x, const Mat3& R, const Vec3& v
                  0.5 * fluid.rho * spin.norm() * (R * turnArea.cwiseProduct(spin));
         return;
     }
+    if (node.pinned) {  // its weight at its centre of gravity, its buoyancy at its centre of buoyancy
+        const Vec3 weight(0.0, 0.0, -node.point.mass * fluid.gravity);
+        const Vec3 buoyancy(0.0, 0.0, fluid.rho * node.point.volume * fluid.gravity);
+        const Vec3 u = R.transpose() * (water_velocity(x, in) - v), spin = R.transpose() * omega;
+        const Vec3 dragArea(node.CdA[0], node.CdA[1], node.CdA[2]), turnArea(node.CdA[3], node.CdA[4], node.CdA[5]);
+        force = weight + buoyancy + 0.5 * fluid.rho * u.norm() * (R * dragArea.cwiseProduct(u));
+        moment = (R * vec3(node.cg)).cross(weight) + (R * vec3(node.cb)).cross(buoyancy) -
+                 0.5 * fluid.rho * spin.norm() * (R * turnArea.cwiseProduct(spin));
+        return;
+    }
     // weight and buoyancy together at the centre of gravity, as MoorDyn v2 applies them
     const Vec3 net(0.0, 0.0, (fluid.rho * node.point.volume - node.point.mass) * fluid.gravity);
     // drag in the body's axes: of translation at the reference point in the water's velocity relative to it,
@@ -591,6 +622,37 @@ Mat3 MooringSystem::body_added_mass(int n, const Vec3& x, const Mat3& R) const {
     return R * (rhoV * Vec3(node.Ca[0], node.Ca[1], node.Ca[2])).asDiagonal() * R.transpose();
 }
 
+void MooringSystem::pin_motion(int n, const UCInputs& in, double tau, Vec3& x, Vec3& v, Vec3& a) const {
+    const MooringEnd& pin = deck_.nodes[n].pin;
+    const Motion m = end_motion(pin, in);
+    a = m.acceleration;
+    if (!m.accelerationGiven)  // as a driven end estimates it: the difference of the last two velocity inputs
+        a = lastStep_ > 0.0 ? Vec3((m.velocity - end_motion(pin, lastInputs_).velocity) / lastStep_) : Vec3::Zero();
+    x = m.position + tau * (m.velocity + 0.5 * tau * a);
+    v = m.velocity + tau * a;
+}
+
+Vec3 MooringSystem::pin_force(int n, const UCInputs& in) const {
+    const MooringNode& node = deck_.nodes[n];
+    const FreeNodeMotion& m = motion_[n];
+    const Mat3 R = rotation(m);
+    const Vec3 x = vec3(m.position), a = vec3(m.acceleration), w = vec3(m.omega), c = R * vec3(node.cg);
+    Vec3 force, moment;
+    body_load(n, x, R, vec3(m.velocity), w, in, force, moment);
+    for (size_t k = 0; k < lines_.size(); ++k) {
+        const MooringDeckLine& l = deck_.lines[k];
+        const MooringEnd* ends[2] = {&l.fairlead, held_far_end(l)};
+        const UCOutputs& o = lines_[k]->outputs();
+        for (int e = 0; e < 2; ++e) {
+            if (ends[e] && ends[e]->kind == MooringEnd::Kind::Node && ends[e]->node == n)
+                force += vec3(e == 0 ? o.towForce : o.endForce);
+        }
+    }
+    const Vec3 acg = a + vec3(m.alpha).cross(c) + w.cross(w.cross(c));
+    // its added mass at its centre of buoyancy, moved by the pin and by its turning
+    return force - node.point.mass * acg - body_added_mass(n, x, R) * (a + vec3(m.alpha).cross(R * vec3(node.cb)));
+}
+
 bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, bool profile, Eigen::VectorXd& r,
                                   std::string& error) {
     r.setZero(x.size());
@@ -598,6 +660,19 @@ bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, 
         const MooringNode& node = deck_.nodes[n];
         const int o = nodeOffset_[n];
         FreeNodeMotion& m = motion_[n];
+        if (node.pinned) {  // x holds its rotation about the earth axes from the deck's orientation, at its pin
+            Vec3 pin, v, a;
+            pin_motion(static_cast<int>(n), in, 0.0, pin, v, a);
+            put(m.position, pin);
+            put(m.velocity, v);
+            put(m.acceleration, a);
+            const Mat3 R = turn_matrix(x.segment<3>(o)) * body_rotation(node.angles[0], node.angles[1], node.angles[2]);
+            put_rotation(m, R);
+            Vec3 force, moment;
+            body_load(static_cast<int>(n), pin, R, Vec3::Zero(), Vec3::Zero(), in, force, moment);
+            r.segment<3>(o) = moment;
+            continue;
+        }
         const Vec3 at = x.segment<3>(o);
         put(m.position, at);
         put(m.inputPosition, at);
@@ -641,9 +716,13 @@ bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, 
         for (int e = 0; e < 2; ++e) {
             if (!ends[e] || ends[e]->kind != MooringEnd::Kind::Node) continue;
             const int n = ends[e]->node, o = nodeOffset_[n];
+            const Vec3 arm = end_motion(*ends[e], in).position - node_position(n);
+            if (deck_.nodes[n].pinned) {  // its moment about its pin only
+                r.segment<3>(o) += arm.cross(onEnd[e]);
+                continue;
+            }
             r.segment<3>(o) += onEnd[e];
-            if (deck_.nodes[n].body)
-                r.segment<3>(o + 3) += (end_motion(*ends[e], in).position - node_position(n)).cross(onEnd[e]);
+            if (deck_.nodes[n].body) r.segment<3>(o + 3) += arm.cross(onEnd[e]);
         }
     }
     return true;
@@ -660,7 +739,11 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
     }
     const int m = nodeUnknowns_;
     Eigen::VectorXd x = Eigen::VectorXd::Zero(m), r(m), rt(m), xt(m);
-    for (size_t n = 0; n < motion_.size(); ++n) x.segment<3>(nodeOffset_[n]) = vec3(deck_.nodes[n].position);
+    bool pinned = false;  // a pinned body's rotation: its unknowns start at the deck's orientation
+    for (size_t n = 0; n < motion_.size(); ++n) {
+        pinned = pinned || deck_.nodes[n].pinned;
+        x.segment<3>(nodeOffset_[n]) = deck_.nodes[n].pinned ? Vec3::Zero() : vec3(deck_.nodes[n].position);
+    }
     // the force scale: the weights of the lines and nodes that meet at the nodes
     double scale = 0.0, shortest = 1e300;
     for (size_t k = 0; k < lines_.size(); ++k) {
@@ -669,7 +752,8 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
         shortest = std::min(shortest, lines_[k]->model().line().length);
     }
     for (size_t n = 0; n < motion_.size(); ++n)
-        scale += node_load(static_cast<int>(n), x.segment<3>(nodeOffset_[n]), in).norm() +
+        scale += node_load(static_cast<int>(n), deck_.nodes[n].pinned ? vec3(deck_.nodes[n].position)
+                                                                       : Vec3(x.segment<3>(nodeOffset_[n])), in).norm() +
                  deck_.nodes[n].point.mass * lines_[0]->model().fluid().gravity;
     const double maxStep = 0.25 * shortest;  // a Newton step moves a node by at most this [m]
     Eigen::MatrixXd J(m, m);
@@ -696,7 +780,9 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
                 }
                 haveJacobian = true;
             }
-            Eigen::VectorXd dx = -J.fullPivLu().solve(r);
+            // (a pinned body hanging still has no stiffness about its vertical axis: the least-norm step there)
+            Eigen::VectorXd dx = pinned ? Eigen::VectorXd(-J.completeOrthogonalDecomposition().solve(r))
+                                        : Eigen::VectorXd(-J.fullPivLu().solve(r));
             if (!dx.allFinite()) {
                 why = "the free points' stiffness is singular";
                 return false;
@@ -705,6 +791,10 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
             double shrink = 1.0;
             for (size_t n = 0; n < motion_.size(); ++n) {
                 const int o = nodeOffset_[n];
+                if (deck_.nodes[n].pinned) {
+                    shrink = std::min(shrink, kMaxTurn / std::max(dx.segment<3>(o).lpNorm<Eigen::Infinity>(), 1e-300));
+                    continue;
+                }
                 shrink = std::min(shrink, maxStep / std::max(dx.segment<3>(o).lpNorm<Eigen::Infinity>(), 1e-300));
                 if (deck_.nodes[n].body)
                     shrink = std::min(shrink, kMaxTurn / std::max(dx.segment<3>(o + 3).lpNorm<Eigen::Infinity>(), 1e-300));
@@ -825,9 +915,12 @@ double MooringSystem::node_step_error(double h, const std::vector<FreeNodeMotion
     // of its points
     double e = 0.0;
     for (size_t n = 0; n < motion_.size(); ++n) {
-        e = std::max(e, h * h / 12.0 * (vec3(motion_[n].acceleration) - vec3(start[n].acceleration)).norm());
-        if (!deck_.nodes[n].body) continue;
-        double reach = 0.0;
+        const MooringNode& node = deck_.nodes[n];
+        if (!node.pinned)  // (a pinned body's reference point follows its pin)
+            e = std::max(e, h * h / 12.0 * (vec3(motion_[n].acceleration) - vec3(start[n].acceleration)).norm());
+        if (!node.body) continue;
+        // a pinned body's reach: also twice its centre of gravity's distance from the pin (a rod's far end)
+        double reach = node.pinned ? 2.0 * vec3(node.cg).norm() : 0.0;
         for (const MooringDeckLine& l : deck_.lines) {
             for (const MooringEnd* end : {&l.fairlead, &l.far}) {
                 if (end->kind == MooringEnd::Kind::Node && end->node == static_cast<int>(n)) reach = std::max(reach, vec3(end->position).norm());
@@ -863,6 +956,9 @@ bool MooringSystem::node_step(double h, double shift, const UCInputs& in, int& w
     // its equations about its reference point with its centre of gravity c = R CG (its inertia I about it):
     //   M a_cg + m_a a = F,   c x M a_cg + I alpha + w x (I w) = the moment of the loads,
     //   a_cg = a + alpha x c + w x (w x c).
+    // A pinned body's reference point follows its pin (at the step's end tau after the communication step's
+    // start), its unknowns its angular acceleration, its equation the moment about the pin.
+    const double tau = std::max(shift, 0.0) + h;
     auto residual = [&](const Eigen::VectorXd& A, Eigen::VectorXd& r, std::string& why) -> bool {
         std::vector<Vec3> v1(motion_.size());
         for (size_t n = 0; n < motion_.size(); ++n) {
@@ -870,6 +966,30 @@ bool MooringSystem::node_step(double h, double shift, const UCInputs& in, int& w
             const int o = nodeOffset_[n];
             const FreeNodeMotion& s = start[n];
             FreeNodeMotion& m = motion_[n];
+            if (node.pinned) {
+                Vec3 x1, a;
+                pin_motion(static_cast<int>(n), in, tau, x1, v1[n], a);
+                const Vec3 w0 = vec3(s.omega), alpha = A.segment<3>(o), spin = 0.5 * (vec3(s.alpha) + alpha);
+                const Vec3 w = w0 + h * spin;
+                const Mat3 R = turn_matrix(h * w0 + 0.5 * h * h * spin) * rotation(s);
+                put(m.position, x1);
+                put(m.velocity, v1[n]);
+                put(m.acceleration, a);
+                put_rotation(m, R);
+                put(m.omega, w);
+                put(m.alpha, alpha);
+                const Vec3 c = R * vec3(node.cg);
+                const Mat3 I = R * vec3(node.inertia).asDiagonal() * R.transpose();
+                const Vec3 acg = a + alpha.cross(c) + w.cross(w.cross(c));
+                Vec3 force, moment;
+                body_load(static_cast<int>(n), x1, R, v1[n], w, in, force, moment);
+                // the water its added mass moves as the pin accelerates, at its centre of buoyancy (a rod's
+                // transverse added mass along it: its moment about the pin; its share as it turns is in I)
+                const Vec3 fluid = body_added_mass(static_cast<int>(n), x1, R) * a;
+                r.segment<3>(o) = moment - c.cross(node.point.mass * acg) - I * alpha - w.cross(I * w) -
+                                  (R * vec3(node.cb)).cross(fluid);
+                continue;
+            }
             const Vec3 x0 = vec3(s.position), v0 = vec3(s.velocity);
             const Vec3 a = A.segment<3>(o), mean = 0.5 * (vec3(s.acceleration) + a);
             v1[n] = v0 + h * mean;
@@ -919,6 +1039,10 @@ bool MooringSystem::node_step(double h, double shift, const UCInputs& in, int& w
             for (int e = 0; e < 2; ++e) {
                 if (!ends[e] || ends[e]->kind != MooringEnd::Kind::Node) continue;
                 const int n = ends[e]->node, at = nodeOffset_[n];
+                if (deck_.nodes[n].pinned) {  // its moment about the pin
+                    r.segment<3>(at) += (rotation(motion_[n]) * vec3(ends[e]->position)).cross(force[e]);
+                    continue;
+                }
                 r.segment<3>(at) += force[e];
                 if (deck_.nodes[n].body)
                     r.segment<3>(at + 3) += (rotation(motion_[n]) * vec3(ends[e]->position)).cross(force[e]);
@@ -929,6 +1053,10 @@ bool MooringSystem::node_step(double h, double shift, const UCInputs& in, int& w
     };
     Eigen::VectorXd A(m), r(m), rp(m);
     for (size_t n = 0; n < motion_.size(); ++n) {
+        if (deck_.nodes[n].pinned) {
+            A.segment<3>(nodeOffset_[n]) = vec3(start[n].alpha);
+            continue;
+        }
         A.segment<3>(nodeOffset_[n]) = vec3(start[n].acceleration);
         if (deck_.nodes[n].body) A.segment<3>(nodeOffset_[n] + 3) = vec3(start[n].alpha);
     }
@@ -970,7 +1098,7 @@ bool MooringSystem::node_step(double h, double shift, const UCInputs& in, int& w
         const double last = moved;
         moved = 0.25 * h * h * dA.lpNorm<Eigen::Infinity>();
         for (size_t n = 0; n < motion_.size(); ++n) {  // the node that moves most: named where it fails
-            const int size = deck_.nodes[n].body ? 6 : 3;
+            const int size = node_unknowns(deck_.nodes[n]);
             if (0.25 * h * h * dA.segment(nodeOffset_[n], size).lpNorm<Eigen::Infinity>() >= moved) worst = static_cast<int>(n);
         }
         converged = moved < kNodeTolerance || (moved < 100.0 * kNodeTolerance && moved > 0.5 * last);
@@ -985,7 +1113,9 @@ bool MooringSystem::node_step(double h, double shift, const UCInputs& in, int& w
                 " m or rad)";
         return false;
     }
-    for (size_t n = 0; n < motion_.size(); ++n) put(motion_[n].acceleration, A.segment<3>(nodeOffset_[n]));
+    for (size_t n = 0; n < motion_.size(); ++n) {
+        if (!deck_.nodes[n].pinned) put(motion_[n].acceleration, A.segment<3>(nodeOffset_[n]));  // (a pin's: set)
+    }
     return true;
 }
 
@@ -1036,6 +1166,12 @@ bool MooringSystem::body_derivatives(int b, double d[6][UC_BODY_DERIVATIVE_INPUT
         for (int j = 0; j < N; ++j) d[i][j] = 0.0;
     if (b < 1 || b > deck_.bodies) {
         error = "body " + std::to_string(b) + " is not a coupled body of the deck";
+        return false;
+    }
+    for (const MooringNode& node : deck_.nodes) {
+        if (!node.pinned) continue;
+        error = "the interface derivatives of a system with a pinned body (free body " + std::to_string(node.point.id) +
+                ") are not computed: its pin's load on the body that holds it has no derivatives yet";
         return false;
     }
     const double h = lastStep_;

@@ -36,6 +36,8 @@ Mat3 coupled_body_rotation(const UCCoupledBody& body, int orientation);
 // coupled body or point or on a free node, driven, bottomEnd 3), or it hangs from its fairlead (nullptr: bottomEnd
 // 0, or 2 with a towed body). A line with an end on a free node is stepped with the nodes (on_free_node).
 const MooringEnd* held_far_end(const MooringDeckLine& l);
+// A free node's unknowns: 3 for a point (its position) and a pinned body (its rotation), 6 for a free body.
+inline int node_unknowns(const MooringNode& n) { return n.body && !n.pinned ? 6 : 3; }
 bool on_free_node(const MooringDeckLine& l);
 
 // The breaking strength of sections firstSection..lastSection of a line (docs/design_checks.md): the MBL at
@@ -258,6 +260,13 @@ private:
     // orientation R moving at v and turning at omega: force, and moment about the reference point.
     void body_load(int n, const Vec3& x, const Mat3& R, const Vec3& v, const Vec3& omega, const UCInputs& in,
                    Vec3& force, Vec3& moment) const;
+    // Where pinned node n's pin stands, moves and accelerates tau after the communication step's start of
+    // the inputs `in`: its holder's point extrapolated with its acceleration (given, or the difference of the
+    // last two velocity inputs, as a driven end takes it).
+    void pin_motion(int n, const UCInputs& in, double tau, Vec3& x, Vec3& v, Vec3& a) const;
+    // The force pinned node n puts on what holds it, in its present motion: its loads (its lines', weight,
+    // buoyancy, drag) less its inertia of translation (MoorDyn's coupled pinned body's output).
+    Vec3 pin_force(int n, const UCInputs& in) const;
     // Free body n's added mass of translation (rho V Ca in its axes) in the earth axes at orientation R.
     Mat3 body_added_mass(int n, const Vec3& x, const Mat3& R) const;
     // One communication step of the lines that end at free nodes, coupled implicitly through the nodes'

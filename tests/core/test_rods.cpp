@@ -190,9 +190,16 @@ TEST(Rods, RodsTheFMUHasNoCounterpartForAreRefusedNamingTheRodAndItsRow) {
     uc::LineFileLine line;
     std::string error;
     const int row = line_of(kJoined, "1    conn");
-    for (const char* kind : {"Pinned", "CoupledPinned", "Body1Pinned", "VesPin"}) {
+    // a rod coupled and pinned has no input for its pin; a rod pinned to the ground or a body is a pinned body,
+    // which makes the deck a mooring system (docs/systems_mooring.md, "Pinned bodies")
+    for (const char* kind : {"CoupledPinned", "VesPin"}) {
         EXPECT_FALSE(uc::read_line_file(edited(kJoined, "conn        Free", std::string("conn ") + kind), 0, line, error));
-        EXPECT_EQ(error.rfind("line " + std::to_string(row) + ": rod 1 is pinned", 0), 0u) << error;
+        EXPECT_EQ(error.rfind("line " + std::to_string(row) + ": rod 1 is coupled and pinned", 0), 0u) << error;
+    }
+    for (const char* kind : {"Pinned", "Body1Pinned"}) {
+        EXPECT_FALSE(uc::read_line_file(edited(kJoined, "conn        Free", std::string("conn ") + kind), 0, line, error));
+        EXPECT_NE(error.find("a pinned rod or a free rod of non-zero length makes the deck a mooring system"),
+                  std::string::npos) << error;
     }
     EXPECT_FALSE(uc::read_line_file(edited(kJoined, "R1A       120", "R2A       120"), 0, line, error));
     EXPECT_NE(error.find("AttachB 'R2A': there is no rod 2 (the RODS table has 1)"), std::string::npos) << error;
@@ -302,4 +309,103 @@ TEST(Rods, ZeroLengthFreeRodsInASystemAreRigidJointsOfItsLines) {
     uc_params_default(&base);
     ASSERT_TRUE(uc::mooring_line_params(deck, 0, base, p, error)) << error;
     EXPECT_EQ(p.section[0].joint, 0);
+}
+
+namespace {
+
+// MoorDyn's pinned-body deck in water: a CoupledPinned body of no mass with a rod hanging 5-15 m below its
+// pin, a dummy line between two Fixed points; a second rod pinned to coupled body 2 at (2, 0, 0) in its frame.
+const char* const kPinned = R"(--------------------- MoorDyn Input File ------------------------------------
+pinned bodies and rods
+------------------------- LINE TYPES --------------------------------------------------
+LineType  Diam    MassDenInAir    EA       BA/-zeta    EI      Can   Cat  Cdn   Cdt
+(-)       (m)       (kg/m)        (N)      (Pa-s/-)  (n-m^2)   (-)   (-)  (-)   (-)
+nylon      0.124      35.0    5515288.0     -0.8      0.0     1.0   0.0  1.6   0.05
+---------------------- ROD TYPES ------------------------------------
+TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
+(name)        (m)      (kg/m)    (-)    (-)     (-)      (-)
+Can          2       5e3     0.6    1.0     1.2      1.0
+----------------------- BODIES ------------------------------------------------------
+ID   Attachment         X0      Y0     Z0     r0      p0     y0     Mass          CG*          I*      Volume   CdA*   Ca*
+(#)     (-)             (m)     (m)    (m)   (deg)   (deg)  (deg)   (kg)          (m)         (kg-m^2)  (m^3)   (m^2)  (-)
+1     CoupledPinned    0.00    0.00  -5.00   0.00   0.00   0.00   0.00        0.00        0.000e+00  0.00     0.00  0.00
+2     Coupled          0.00    0.00  -30.00   0.00   0.00   0.00   0.00        0.00        0.000e+00  0.00     0.00  0.00
+---------------------- RODS ----------------------------------------
+ID   RodType  Attachment     Xa    Ya    Za    Xb    Yb     Zb    NumSegs  RodOutputs
+(#)  (name)    (#/key)      (m)   (m)   (m)   (m)   (m)    (m)   (-)       (-)
+1      Can     Body1         0     0     -5     0     0     -15     3         p
+2      Can     Body2Pinned   2     0      0     2     0     -10     3         p
+----------------------- POINTS ----------------------------------------------
+Node      Type      X        Y         Z        M        V         CdA   CA
+(-)       (-)      (m)      (m)       (m)      (kg)     (m^3)     (m^2)  (-)
+1         Fixed    30    0      -5       0        0          0     0
+2         Fixed    30    0      -10       0        0          0     0
+-------------------------- LINES -------------------------------------------------
+Line     LineType NodeA     NodeB  UnstrLen  NumSegs     Flags/Outputs
+(-)      (-)       (-)       (-)   (m)         (-)          (-)
+1        nylon      1         2    5        1           p
+-------------------------- SOLVER OPTIONS---------------------------------------------------
+1025.0     WtrDnsty     - Water Density
+50       WtrDpth      - water depth
+0.0    TmaxIC       - threshold for IC convergence
+--------------------------- need this line -------------------------------------------------
+)";
+
+}  // namespace
+
+TEST(Rods, APinnedBodyAndAPinnedRodTurnAboutTheirPinsWithTheirRodsLoadsAboutIt) {
+    EXPECT_TRUE(uc::is_mooring_system_deck(kPinned));
+    uc::MooringDeck deck;
+    std::string error;
+    ASSERT_TRUE(uc::read_mooring_deck(kPinned, 0, deck, error)) << error;
+    EXPECT_EQ(deck.bodies, 2);  // the CoupledPinned body's pin takes the body[1] inputs
+    ASSERT_EQ(deck.nodes.size(), 2u);
+    const double rho = 1025.0, d = 2.0, A = kPi, m = 5e4;
+    // body 1: the rod 5-15 m below its pin along its z axis: mass and buoyancy 10 m below it, inertia about
+    // its centre of gravity, the added inertia Ca rho A (15^3 - 5^3) / 3 about the pin, the turning drag
+    // Cd d (15^4 - 5^4) / 4
+    const uc::MooringNode& b = deck.nodes[0];
+    EXPECT_TRUE(b.body && b.pinned);
+    EXPECT_EQ(b.point.id, 1);
+    EXPECT_EQ(b.pin.kind, uc::MooringEnd::Kind::Body);
+    EXPECT_EQ(b.pin.body, 1);
+    EXPECT_DOUBLE_EQ(b.point.mass, m);
+    EXPECT_NEAR(b.point.volume, A * 10.0, 1e-12);
+    EXPECT_NEAR(b.cg[2], -10.0, 1e-12);
+    EXPECT_NEAR(b.cb[2], -10.0, 1e-12);
+    const double transverse = m * (100.0 / 12.0 + d * d / 16.0) + rho * A * (15.0 * 15.0 * 15.0 - 125.0) / 3.0;
+    EXPECT_NEAR(b.inertia[0], transverse, 1e-9 * transverse);
+    EXPECT_NEAR(b.inertia[1], transverse, 1e-9 * transverse);
+    EXPECT_NEAR(b.inertia[2], m * d * d / 8.0, 1e-9);
+    EXPECT_NEAR(b.CdA[3], 0.6 * d * (std::pow(15.0, 4) - std::pow(5.0, 4)) / 4.0, 1e-9);
+    EXPECT_NEAR(b.CdA[5], 0.0, 1e-12);
+    EXPECT_NEAR(b.Ca[0], 1.0, 1e-12);
+    EXPECT_NEAR(b.Ca[2], 2.0 * 1.0 * kPi * 8.0 / 12.0 / (A * 10.0), 1e-12);  // its two ends' CaEnd
+    // rod 2: a pinned body after the deck's (ID 3) at its end A, held by body 2 at (2, 0, 0) in its frame,
+    // its x axis along the rod (pointing down: pitch 90 deg), its mass 5 m out along it
+    const uc::MooringNode& r = deck.nodes[1];
+    EXPECT_TRUE(r.body && r.pinned);
+    EXPECT_EQ(r.point.id, 3);
+    EXPECT_EQ(r.pin.kind, uc::MooringEnd::Kind::Body);
+    EXPECT_EQ(r.pin.body, 2);
+    EXPECT_DOUBLE_EQ(r.pin.position[0], 2.0);
+    EXPECT_NEAR(r.position[2], -30.0, 1e-12);
+    EXPECT_NEAR(r.angles[1], kPi / 2, 1e-12);
+    EXPECT_NEAR(r.cg[0], 5.0, 1e-12);
+    EXPECT_TRUE(has(deck.notes, "rod 2 (Body2Pinned, 10 m) read as pinned body 3 (its end A held by body 2, free to "
+                                "turn about it)"));
+    // refused: a rod pinned to a free body, a coupled pinned rod
+    EXPECT_FALSE(uc::read_mooring_deck(edited(kPinned, "2     Coupled          0.00    0.00  -30.00   0.00   0.00   0.00   0.00        0.00        0.000e+00",
+                                                "2     Free   0 0 -30 0 0 0 1000 0 1000"), 0, deck, error));
+    EXPECT_NE(error.find("rod 2 (Body2Pinned, 10 m): it is pinned to Free body 2"), std::string::npos) << error;
+    EXPECT_FALSE(uc::read_mooring_deck(edited(kPinned, "Body2Pinned", "CoupledPinned"), 0, deck, error));
+    EXPECT_NE(error.find("rod 2 is coupled and pinned ('CoupledPinned'"), std::string::npos) << error;
+    // a pin on a coupled body beyond the body[k] inputs
+    const std::string five = edited(edited(kPinned, "0.000e+00  0.00     0.00  0.00\n---------------------- RODS",
+                                           "0.000e+00  0.00     0.00  0.00\n3 Coupled 0 0 -30 0 0 0\n4 Coupled 0 0 -30 0 0 0\n"
+                                           "5 Coupled 0 0 -30 0 0 0\n---------------------- RODS"),
+                                    "Body2Pinned", "Body5Pinned");
+    EXPECT_FALSE(uc::read_mooring_deck(five, 0, deck, error));
+    EXPECT_NE(error.find("it is pinned to coupled body 5: the bodies' inputs body[k].* go up to k = 4"),
+              std::string::npos) << error;
 }

@@ -257,7 +257,7 @@ def census(fmu, moordyn: Path, moorpy: Path, progress=None) -> list:
 
 # The reasons of the census table: (pattern on the FMU's message or MoorPy's failure, the reason shown).
 REASONS = [
-    (r"rod \d+ is pinned", "a pinned rod"),
+    (r"rod \d+ is coupled and pinned|pinned to Free", "a pinned rod"),
     (r"the Syrope model", "Syrope lines"),
     (r"SeafloorFile|bathymetry", "a bathymetry file"),
     (r"viscoelastic", "viscoelastic EA"),
