@@ -205,23 +205,37 @@ FMI3_EXPORT fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentComm
 
 /* ---- values ---------------------------------------------------------------------------------------- */
 
-/* Elements of the variable vr (the array's length, or 1 for a scalar) and the value-reference stride of
- * its FMI 2.0 scalars: element i is the scalar vr + i * stride. */
-static size_t elements_and_stride(fmi3ValueReference vr, fmi2ValueReference* stride) {
-    *stride = 1;
-#define UC_FMI3_ARRAY_LENGTH(first, count, step, name) \
-    if (vr == (first)) {                               \
-        *stride = (step);                              \
-        return (count);                                \
+/* Elements of the variable vr (the array's length, or 1 for a scalar) and where its FMI 2.0 scalars are:
+ * element i is the scalar vr + i * stride for i < kept, extension + (i - kept) * stride beyond (uc_fmi3_arrays.h). */
+typedef struct ArrayLayout {
+    fmi2ValueReference stride, kept, extension;
+} ArrayLayout;
+
+static size_t array_layout(fmi3ValueReference vr, ArrayLayout* layout) {
+    layout->stride = 1;
+    layout->kept = 1;
+    layout->extension = 0;
+#define UC_FMI3_ARRAY_LENGTH(first, count, step, name, keep, ext) \
+    if (vr == (first)) {                                           \
+        layout->stride = (step);                                   \
+        layout->kept = (keep);                                     \
+        layout->extension = (ext);                                 \
+        return (count);                                            \
     }
     UC_FMI3_ARRAYS(UC_FMI3_ARRAY_LENGTH)
 #undef UC_FMI3_ARRAY_LENGTH
     return 1;
 }
 
+/* The FMI 2.0 scalar of element i of the variable vr of that layout. */
+static fmi2ValueReference element_vr(fmi3ValueReference vr, const ArrayLayout* layout, size_t i) {
+    if (i < layout->kept) return vr + (fmi2ValueReference)i * layout->stride;
+    return layout->extension + (fmi2ValueReference)(i - layout->kept) * layout->stride;
+}
+
 static size_t elements(fmi3ValueReference vr) {
-    fmi2ValueReference stride;
-    return elements_and_stride(vr, &stride);
+    ArrayLayout layout;
+    return array_layout(vr, &layout);
 }
 
 /* `expected`: the elements of the value references, all together. */
@@ -248,8 +262,8 @@ static size_t total_elements(const fmi3ValueReference vr[], size_t nvr) {
 
 /* Float64 get and set, variable by variable: an array is its elements' FMI 2.0 scalars (the stations'
  * outputs, a mooring system's lines, bodies and points), at most UC_FMI3_MAX_ELEMENTS of them. */
-#define UC_FMI3_ARRAY_FITS(first, count, step, name) \
-    _Static_assert((count) <= UC_FMI3_MAX_ELEMENTS && (step) >= 1, name " fits");
+#define UC_FMI3_ARRAY_FITS(first, count, step, name, keep, ext) \
+    _Static_assert((count) <= UC_FMI3_MAX_ELEMENTS && (step) >= 1 && (keep) <= (count), name " fits");
 UC_FMI3_ARRAYS(UC_FMI3_ARRAY_FITS)
 #undef UC_FMI3_ARRAY_FITS
 
@@ -257,9 +271,9 @@ UC_FMI3_ARRAYS(UC_FMI3_ARRAY_FITS)
 static void expand_scalars(const fmi3ValueReference vr[], size_t nvr, fmi2ValueReference scalars[]) {
     size_t at = 0;
     for (size_t k = 0; k < nvr; ++k) {
-        fmi2ValueReference stride;
-        const size_t n = elements_and_stride(vr[k], &stride);
-        for (size_t i = 0; i < n; ++i) scalars[at++] = vr[k] + (fmi2ValueReference)i * stride;
+        ArrayLayout layout;
+        const size_t n = array_layout(vr[k], &layout);
+        for (size_t i = 0; i < n; ++i) scalars[at++] = element_vr(vr[k], &layout, i);
     }
 }
 
@@ -308,15 +322,15 @@ static fmi3Status get_float64(fmi3Instance instance, const fmi3ValueReference vr
     size_t at = 0;
     fmi2Status worst = fmi2OK;
     for (size_t k = 0; k < nvr; ++k) {
-        fmi2ValueReference stride;
-        const size_t n = elements_and_stride(vr[k], &stride);
+        ArrayLayout layout;
+        const size_t n = array_layout(vr[k], &layout);
         fmi2Status status;
         if (vr[k] == UC_FMI3_TIME_VR) {
             values[at] = inst->time;
             status = fmi2OK;
         } else {
             fmi2ValueReference scalars[UC_FMI3_MAX_ELEMENTS];
-            for (size_t i = 0; i < n; ++i) scalars[i] = vr[k] + (fmi2ValueReference)i * stride;
+            for (size_t i = 0; i < n; ++i) scalars[i] = element_vr(vr[k], &layout, i);
             status = fmi2GetReal(inst, scalars, n, values + at);
         }
         if (status > worst) worst = status;
@@ -443,12 +457,12 @@ static fmi3Status array_directional_derivative(UCInstance* inst, const fmi3Value
                                                size_t nSensitivity) {
     const char* function = "fmi3GetDirectionalDerivative";
     fmi2ValueReference u[UC_FMI3_MAX_DERIVATIVE_VARIABLES], k[UC_FMI3_MAX_DERIVATIVE_VARIABLES];
-    fmi2ValueReference uStride[UC_FMI3_MAX_DERIVATIVE_VARIABLES], kStride[UC_FMI3_MAX_DERIVATIVE_VARIABLES];
+    ArrayLayout uLayout[UC_FMI3_MAX_DERIVATIVE_VARIABLES], kLayout[UC_FMI3_MAX_DERIVATIVE_VARIABLES];
     fmi2Real s[UC_FMI3_MAX_DERIVATIVE_VARIABLES], ds[UC_FMI3_MAX_DERIVATIVE_VARIABLES];
     const size_t n = elements(unknowns[0]);
     int same = nUnknowns <= UC_FMI3_MAX_DERIVATIVE_VARIABLES && nKnowns <= UC_FMI3_MAX_DERIVATIVE_VARIABLES;
-    for (size_t i = 0; same && i < nUnknowns; ++i) same = elements_and_stride(unknowns[i], &uStride[i]) == n;
-    for (size_t j = 0; same && j < nKnowns; ++j) same = elements_and_stride(knowns[j], &kStride[j]) == n;
+    for (size_t i = 0; same && i < nUnknowns; ++i) same = array_layout(unknowns[i], &uLayout[i]) == n;
+    for (size_t j = 0; same && j < nKnowns; ++j) same = array_layout(knowns[j], &kLayout[j]) == n;
     if (!same || nSeed != nKnowns * n || nSensitivity != nUnknowns * n) {
         uc_log_status(&inst->log, fmi2Error, "%s: with arrays, every unknown and known is an array of the same length "
                       "(a mooring system's body.force.*, body.moment.* against body.x ... body.wz, at most %d of "
@@ -460,12 +474,12 @@ static fmi3Status array_directional_derivative(UCInstance* inst, const fmi3Value
     for (size_t e = 0; e < n; ++e) {
         int seeded = 0;
         for (size_t j = 0; j < nKnowns; ++j) {
-            k[j] = knowns[j] + (fmi2ValueReference)e * kStride[j];
+            k[j] = element_vr(knowns[j], &kLayout[j], e);
             s[j] = seed[j * n + e];
             seeded |= s[j] != 0.0;
         }
         for (size_t i = 0; i < nUnknowns; ++i) {
-            u[i] = unknowns[i] + (fmi2ValueReference)e * uStride[i];
+            u[i] = element_vr(unknowns[i], &uLayout[i], e);
             ds[i] = 0.0;
         }
         if (seeded) {

@@ -5,66 +5,68 @@
 #define UC_FMI3_ARRAYS_H
 
 #define UC_FMI3_TIME_VR 0
-#define UC_FMI3_MAX_ELEMENTS 144
+#define UC_FMI3_MAX_ELEMENTS 576
 
-/* X(valueReference, elements, stride, name) */
+/* X(valueReference, elements, stride, name, kept, extension): element i < kept is the FMI 2.0 scalar
+ * valueReference + i * stride, element i >= kept the scalar extension + (i - kept) * stride (the
+ * value-reference extension of the schema: elements beyond the count the array once had) */
 #define UC_FMI3_ARRAYS(X) \
-    X(1044, 4, 3, "body.x") \
-    X(1045, 4, 3, "body.y") \
-    X(1046, 4, 3, "body.z") \
-    X(1056, 4, 3, "body.roll") \
-    X(1057, 4, 3, "body.pitch") \
-    X(1058, 4, 3, "body.yaw") \
-    X(1068, 4, 3, "body.vx") \
-    X(1069, 4, 3, "body.vy") \
-    X(1070, 4, 3, "body.vz") \
-    X(1080, 4, 3, "body.wx") \
-    X(1081, 4, 3, "body.wy") \
-    X(1082, 4, 3, "body.wz") \
-    X(1092, 16, 3, "point.x") \
-    X(1093, 16, 3, "point.y") \
-    X(1094, 16, 3, "point.z") \
-    X(1140, 16, 3, "point.vx") \
-    X(1141, 16, 3, "point.vy") \
-    X(1142, 16, 3, "point.vz") \
-    X(1188, 4, 4, "body.q0") \
-    X(1189, 4, 4, "body.q1") \
-    X(1190, 4, 4, "body.q2") \
-    X(1191, 4, 4, "body.q3") \
-    X(2021, 21, 1, "shape.x") \
-    X(2042, 21, 1, "shape.y") \
-    X(2063, 21, 1, "shape.z") \
-    X(2084, 21, 1, "tension") \
-    X(2105, 21, 1, "curvature") \
-    X(2126, 21, 1, "twistAngle") \
-    X(2170, 16, 1, "line.fairleadTension") \
-    X(2186, 16, 1, "line.anchorTension") \
-    X(2202, 16, 1, "line.minTension") \
-    X(2218, 16, 1, "line.groundedLength") \
-    X(2234, 4, 3, "body.force.x") \
-    X(2235, 4, 3, "body.force.y") \
-    X(2236, 4, 3, "body.force.z") \
-    X(2246, 4, 3, "body.moment.x") \
-    X(2247, 4, 3, "body.moment.y") \
-    X(2248, 4, 3, "body.moment.z") \
-    X(2258, 144, 1, "body.stiffness") \
-    X(2402, 16, 3, "point.force.x") \
-    X(2403, 16, 3, "point.force.y") \
-    X(2404, 16, 3, "point.force.z") \
-    X(2453, 16, 3, "point.position.x") \
-    X(2454, 16, 3, "point.position.y") \
-    X(2455, 16, 3, "point.position.z") \
-    X(2501, 4, 3, "body.pose.x") \
-    X(2502, 4, 3, "body.pose.y") \
-    X(2503, 4, 3, "body.pose.z") \
-    X(2513, 4, 3, "body.pose.roll") \
-    X(2514, 4, 3, "body.pose.pitch") \
-    X(2515, 4, 3, "body.pose.yaw") \
-    X(2525, 16, 1, "line.MBL") \
-    X(2541, 16, 1, "line.fairleadUtilisation") \
-    X(2557, 16, 1, "line.anchorUtilisation") \
-    X(2573, 16, 1, "line.maxUtilisation") \
-    X(2589, 16, 1, "line.broken") \
-    X(2605, 16, 1, "line.breakTime")
+    X(1044, 16, 3, "body.x", 4, 10001) \
+    X(1045, 16, 3, "body.y", 4, 10002) \
+    X(1046, 16, 3, "body.z", 4, 10003) \
+    X(1056, 16, 3, "body.roll", 4, 10037) \
+    X(1057, 16, 3, "body.pitch", 4, 10038) \
+    X(1058, 16, 3, "body.yaw", 4, 10039) \
+    X(1068, 16, 3, "body.vx", 4, 10073) \
+    X(1069, 16, 3, "body.vy", 4, 10074) \
+    X(1070, 16, 3, "body.vz", 4, 10075) \
+    X(1080, 16, 3, "body.wx", 4, 10109) \
+    X(1081, 16, 3, "body.wy", 4, 10110) \
+    X(1082, 16, 3, "body.wz", 4, 10111) \
+    X(1092, 64, 3, "point.x", 16, 10145) \
+    X(1093, 64, 3, "point.y", 16, 10146) \
+    X(1094, 64, 3, "point.z", 16, 10147) \
+    X(1140, 64, 3, "point.vx", 16, 10289) \
+    X(1141, 64, 3, "point.vy", 16, 10290) \
+    X(1142, 64, 3, "point.vz", 16, 10291) \
+    X(1188, 16, 4, "body.q0", 4, 10433) \
+    X(1189, 16, 4, "body.q1", 4, 10434) \
+    X(1190, 16, 4, "body.q2", 4, 10435) \
+    X(1191, 16, 4, "body.q3", 4, 10436) \
+    X(2021, 21, 1, "shape.x", 21, 0) \
+    X(2042, 21, 1, "shape.y", 21, 0) \
+    X(2063, 21, 1, "shape.z", 21, 0) \
+    X(2084, 21, 1, "tension", 21, 0) \
+    X(2105, 21, 1, "curvature", 21, 0) \
+    X(2126, 21, 1, "twistAngle", 21, 0) \
+    X(2170, 64, 1, "line.fairleadTension", 16, 20001) \
+    X(2186, 64, 1, "line.anchorTension", 16, 20049) \
+    X(2202, 64, 1, "line.minTension", 16, 20097) \
+    X(2218, 64, 1, "line.groundedLength", 16, 20145) \
+    X(2234, 16, 3, "body.force.x", 4, 20193) \
+    X(2235, 16, 3, "body.force.y", 4, 20194) \
+    X(2236, 16, 3, "body.force.z", 4, 20195) \
+    X(2246, 16, 3, "body.moment.x", 4, 20229) \
+    X(2247, 16, 3, "body.moment.y", 4, 20230) \
+    X(2248, 16, 3, "body.moment.z", 4, 20231) \
+    X(2258, 576, 1, "body.stiffness", 144, 20265) \
+    X(2402, 64, 3, "point.force.x", 16, 20697) \
+    X(2403, 64, 3, "point.force.y", 16, 20698) \
+    X(2404, 64, 3, "point.force.z", 16, 20699) \
+    X(2453, 64, 3, "point.position.x", 16, 20841) \
+    X(2454, 64, 3, "point.position.y", 16, 20842) \
+    X(2455, 64, 3, "point.position.z", 16, 20843) \
+    X(2501, 16, 3, "body.pose.x", 4, 20985) \
+    X(2502, 16, 3, "body.pose.y", 4, 20986) \
+    X(2503, 16, 3, "body.pose.z", 4, 20987) \
+    X(2513, 16, 3, "body.pose.roll", 4, 21021) \
+    X(2514, 16, 3, "body.pose.pitch", 4, 21022) \
+    X(2515, 16, 3, "body.pose.yaw", 4, 21023) \
+    X(2525, 64, 1, "line.MBL", 16, 21057) \
+    X(2541, 64, 1, "line.fairleadUtilisation", 16, 21105) \
+    X(2557, 64, 1, "line.anchorUtilisation", 16, 21153) \
+    X(2573, 64, 1, "line.maxUtilisation", 16, 21201) \
+    X(2589, 64, 1, "line.broken", 16, 21249) \
+    X(2605, 64, 1, "line.breakTime", 16, 21297)
 
 #endif

@@ -70,12 +70,18 @@ static fmi2Status shim_set_string(fmi2Component c, const fmi2ValueReference vr[]
 /* The FMI 3.0 array (its first value reference and length) that holds the FMI 2.0 scalar vr as element
  * *index; 0 for a scalar. */
 static int array_element(fmi2ValueReference vr, fmi3ValueReference* first, size_t* count, size_t* index) {
-#define UC_SHIM_ELEMENT(f, n, stride, name)                                       \
-    if (vr >= (f) && vr < (f) + (n) * (stride) && (vr - (f)) % (stride) == 0) { \
-        *first = (f);                                                            \
-        *count = (n);                                                            \
-        *index = (vr - (f)) / (stride);                                          \
-        return 1;                                                                \
+#define UC_SHIM_ELEMENT(f, n, stride, name, kept, ext)                                              \
+    if (vr >= (f) && vr < (f) + (kept) * (stride) && (vr - (f)) % (stride) == 0) {                \
+        *first = (f);                                                                              \
+        *count = (n);                                                                              \
+        *index = (vr - (f)) / (stride);                                                            \
+        return 1;                                                                                  \
+    }                                                                                              \
+    if ((kept) < (n) && vr >= (ext) && vr < (ext) + ((n) - (kept)) * (stride) && (vr - (ext)) % (stride) == 0) { \
+        *first = (f);                                                                              \
+        *count = (n);                                                                              \
+        *index = (kept) + (vr - (ext)) / (stride);                                                 \
+        return 1;                                                                                  \
     }
     UC_FMI3_ARRAYS(UC_SHIM_ELEMENT)
 #undef UC_SHIM_ELEMENT
