@@ -188,8 +188,13 @@ static void put_f64(Writer* w, double v) { put(w, &v, sizeof v); }
 enum { UC_RUN_WORD = 8, UC_RUN_MIN_ZEROS = 2 };
 
 static int zero_word(const unsigned char* bytes, size_t n, size_t word) {
-    const size_t from = word * UC_RUN_WORD, to = from + UC_RUN_WORD < n ? from + UC_RUN_WORD : n;
-    for (size_t i = from; i < to; ++i)
+    const size_t from = word * UC_RUN_WORD;
+    if (from + UC_RUN_WORD <= n) {
+        uint64_t v;
+        memcpy(&v, bytes + from, sizeof v);
+        return v == 0;
+    }
+    for (size_t i = from; i < n; ++i)
         if (bytes[i] != 0) return 0;
     return 1;
 }

@@ -689,6 +689,7 @@ class Fmi3Variable:
     elements: list          # the FMI 2.0 scalars, in the array's row-major order
     dimensions: tuple       # () for a scalar
     description: str
+    count: str | None = None  # the [constants] name that counts its first dimension
 
     @property
     def first(self) -> Scalar:
@@ -714,9 +715,10 @@ def fmi3_arrays_of(e: Entry, counts) -> list:
         raise SystemExit(f"schema: {raw['name']}: an FMI 3.0 array is a Real input or output named with [{{k}}]")
     base = raw.get("fmi3Name", raw["name"].replace("[{k}]", ""))
     comps = raw.get("components")
+    count = raw["count"]
     if comps is None:
         n = len(e.scalars)
-        return [Fmi3Variable(base, e.scalars, (n,), raw["description"].replace("{k}", "k"))]
+        return [Fmi3Variable(base, e.scalars, (n,), raw["description"].replace("{k}", "k"), count)]
     n = len(e.scalars) // len(comps)
     matrix = [re.fullmatch(r"(\d+),(\d+)", c) for c in comps]
     if all(matrix) and base.endswith("[{c}]"):  # components "i,j": one array [k, i, j]
@@ -725,9 +727,9 @@ def fmi3_arrays_of(e: Entry, counts) -> list:
                                                                    for j in range(1, cols + 1)]:
             raise SystemExit(f"schema: {raw['name']}: matrix components must run row by row")
         return [Fmi3Variable(base[:-len("[{c}]")], e.scalars, (n, rows, cols),
-                             raw["description"].replace("{k}", "k").replace("{c}", "i,j"))]
+                             raw["description"].replace("{k}", "k").replace("{c}", "i,j"), count)]
     return [Fmi3Variable(base.replace("{c}", c), e.scalars[j::len(comps)], (n,),
-                         raw["description"].replace("{k}", "k").replace("{c}", c))
+                         raw["description"].replace("{k}", "k").replace("{c}", c), count)
             for j, c in enumerate(comps)]
 
 
@@ -749,6 +751,18 @@ def fmi3_variables(data, entries) -> list:
         raise SystemExit(f"schema: FMI 3.0 names {dup} are not unique (an array named like another variable: "
                          "give it an fmi3Name)")
     return variables
+
+
+def fmi3_structural(data) -> dict:
+    """[fmi3.structuralParameters]: constant -> (name, value reference, maximum, description): the UInt64
+    structural parameter that sizes the first dimension of the arrays counted by that constant."""
+    constants = data.get("constants", {})
+    out = {}
+    for const, sp in data.get("fmi3", {}).get("structuralParameters", {}).items():
+        if const not in data["fmi3"].get("arrayCounts", []) or const not in constants:
+            raise SystemExit(f"schema: fmi3.structuralParameters: {const} is not one of the arrayCounts")
+        out[const] = (sp["name"], int(sp["valueReference"]), int(constants[const]), sp["description"])
+    return out
 
 
 def fmi3_xml_text(data, entries) -> str:
@@ -777,6 +791,13 @@ def fmi3_xml_text(data, entries) -> str:
     out.append(f'    <Float64 name="time" valueReference="{FMI3_TIME_VR}" causality="independent" '
                'variability="continuous" description="Simulation time" unit="s"/>')
     variables = fmi3_variables(data, entries)
+    structural = fmi3_structural(data)
+    taken = {x.vr for v in variables for x in v.elements} | {FMI3_TIME_VR}
+    for name, vr, most, description in structural.values():
+        if vr in taken:
+            raise SystemExit(f"schema: fmi3.structuralParameters: {name}'s value reference {vr} is taken")
+        out.append(f'    <UInt64 name="{name}" valueReference="{vr}" causality="structuralParameter" variability="fixed" '
+                   f'start="{most}" min="1" max="{most}" description="{xml_attr(description)}"/>')
     for v in variables:
         s, kind = v.first, FMI3_TYPES[v.first.type]
         attrs = xml_variable_attributes(v.name, s, v.description)
@@ -796,7 +817,10 @@ def fmi3_xml_text(data, entries) -> str:
             else:  # an array's start: every element's, row-major
                 start = " ".join(fmt_number(float(x.start)) for x in v.elements)
             attrs += f' start="{start}"'
-        children += [f'<Dimension start="{n}"/>' for n in v.dimensions]
+        dims = [f'<Dimension start="{n}"/>' for n in v.dimensions]
+        if dims and v.count in structural:  # the first dimension: the structural parameter's value
+            dims[0] = f'<Dimension valueReference="{structural[v.count][1]}"/>'
+        children += dims
         if children:
             out.append(f"    <{kind} {attrs}>")
             out += [f"      {c}" for c in children]
@@ -827,18 +851,30 @@ def fmi3_dependencies(s: Scalar, fmi3_vr: dict) -> str:
 def fmi3_header_text(data, entries) -> str:
     """The FMI 3.0 adapter's table of array variables: X(value reference, elements, stride, name)."""
     arrays = [v for v in fmi3_variables(data, entries) if v.dimensions]
+    structural = fmi3_structural(data)
     out = [f"/* {GENERATED_NOTE} */",
            "/* The FMI 3.0 variant's array variables (docs/fmi3.md): each has the value reference of its first",
-           " * element; element i (row-major) is the FMI 2.0 scalar first + i * stride. */",
+           " * element; element i (row-major) is an FMI 2.0 scalar (below). */",
            "#ifndef UC_FMI3_ARRAYS_H", "#define UC_FMI3_ARRAYS_H", "",
            f"#define UC_FMI3_TIME_VR {FMI3_TIME_VR}",
            f"#define UC_FMI3_MAX_ELEMENTS {max(len(v.elements) for v in arrays)}", "",
-           "/* X(valueReference, elements, stride, name, kept, extension): element i < kept is the FMI 2.0 scalar",
-           " * valueReference + i * stride, element i >= kept the scalar extension + (i - kept) * stride (the",
-           " * value-reference extension of the schema: elements beyond the count the array once had) */",
+           "/* X(name, valueReference, maximum): the structural parameters (UInt64) that size the arrays' first",
+           " * dimension, at most the schema's maximum, set in configuration mode */",
+           "#define UC_FMI3_STRUCTURAL_PARAMETERS(X) \\"]
+    out += [f'    X("{name}", {vr}, {most}) \\' for name, vr, most, _ in structural.values()]
+    out[-1] = out[-1].rstrip(" \\")
+    out += ["",
+           "/* X(valueReference, elements, stride, name, kept, extension, sizedBy, perIndex): element i < kept is the",
+           " * FMI 2.0 scalar valueReference + i * stride, element i >= kept the scalar extension + (i - kept) * stride",
+           " * (the value-reference extension of the schema: elements beyond the count the array once had); elements",
+           " * is the maximum: with sizedBy (a structural parameter's value reference, 0: none) the array holds that",
+           " * parameter's value times perIndex elements, the first ones */",
            "#define UC_FMI3_ARRAYS(X) \\"]
-    out += [f'    X({v.first.vr}, {len(v.elements)}, {v.stride}, "{v.name}", {v.kept}, '
-            f'{v.elements[v.kept].vr if v.kept < len(v.elements) else 0}) \\' for v in arrays]
+    for v in arrays:
+        sized = structural[v.count][1] if v.count in structural else 0
+        per = len(v.elements) // v.dimensions[0]
+        out.append(f'    X({v.first.vr}, {len(v.elements)}, {v.stride}, "{v.name}", {v.kept}, '
+                   f'{v.elements[v.kept].vr if v.kept < len(v.elements) else 0}, {sized}, {per}) \\')
     out[-1] = out[-1].rstrip(" \\")
     out += ["", "#endif", ""]
     return "\n".join(out)

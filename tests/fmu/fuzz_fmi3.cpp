@@ -197,7 +197,7 @@ public:
         const UCVariable* table = uc_variables(&n);
         std::set<unsigned int> elementVrs;
         std::map<unsigned int, Var3> arrays;
-#define UC_FMI3_ARRAY_ENTRY(firstVr, elements, step, arrayName, keep, ext)                              \
+#define UC_FMI3_ARRAY_ENTRY(firstVr, elements, step, arrayName, keep, ext, sizedBy, perIndex)                            \
     arrays[firstVr] = Var3{firstVr, elements, step, uc_variable_find(firstVr, UC_TYPE_REAL), arrayName, keep, ext}; \
     for (unsigned int i = 1; i < (elements); ++i) elementVrs.insert(arrays[firstVr].element(i));
         UC_FMI3_ARRAYS(UC_FMI3_ARRAY_ENTRY)

@@ -131,3 +131,89 @@ def test_lines_beyond_the_outputs_are_simulated_and_named_in_the_log(make_cable,
     short = ms.read_system_deck(ld.write(ld.radial_platform_deck(n, segments=10, keep=MAX_LINES),
                                          tmp_path / "short.dat"))
     assert np.max(np.abs(force - ms.moorpy_statics(short, SURGE)["load"][:3])) > 1e-2 * scale
+
+
+def _fmi3_farm(fmi3_file, deck, sizes=None):
+    """An FMI 3.0 instance of the farm's deck, its structural parameters set to `sizes` (name -> value) in
+    configuration mode, initialized at the platforms' positions; returns (slave, value references, cleanup)."""
+    import shutil
+
+    from fmpy import extract, read_model_description
+    from fmpy.fmi3 import FMU3Slave
+
+    md = read_model_description(str(fmi3_file))
+    directory = extract(str(fmi3_file))
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    types = {v.name: v.type for v in md.modelVariables}
+    fmu = FMU3Slave(guid=md.guid, unzipDirectory=directory, modelIdentifier="UnderwaterCable", instanceName="farm")
+    fmu.instantiate()
+    if sizes:
+        fmu.enterConfigurationMode()
+        fmu.setUInt64([vr[n] for n in sizes], list(sizes.values()))
+        fmu.exitConfigurationMode()
+    for name, value in ms.fmu_parameters(deck).items():
+        if types[name] == "String":
+            fmu.setString([vr[name]], [str(value)])
+        elif types[name] == "Boolean":
+            fmu.setBoolean([vr[name]], [bool(value)])
+        else:
+            fmu.setFloat64([vr[name]], [float(value)])
+    bodies = (sizes or {}).get("nBodies", MAX_BODIES)
+    positions = ld.farm_positions(8) + [(0.0, 0.0, 0.0)] * (bodies - 8)
+    fmu.setFloat64([vr[f"body.{c}"] for c in "xyz"], [p[i] for i in range(3) for p in positions])
+    fmu.enterInitializationMode(startTime=0.0)
+    fmu.exitInitializationMode()
+
+    def close(terminate=True):
+        if terminate:
+            fmu.terminate()
+        fmu.freeInstance()
+        shutil.rmtree(directory, ignore_errors=True)
+    return fmu, vr, close
+
+
+def test_fmi3_arrays_take_the_decks_sizes_through_structural_parameters(fmi3_file, make_cable, tmp_path):
+    """FMI 3.0: nLines, nBodies and nPoints (UInt64 structural parameters, the maxima by default) size the
+    line.*, body.* and point.* arrays; set in configuration mode to the farm's 24 lines and 8 bodies, the
+    arrays hold 24 and 8 elements, the same bits as FMI 2.0's line[1..24] and body[1..8]; a size beyond the
+    maximum, or set outside configuration mode, is refused (fmpy.validate: test_fmi3.py)."""
+    from fmpy import read_model_description
+    from fmpy.fmi1 import FMICallException
+    md3 = {v.name: v for v in read_model_description(str(fmi3_file)).modelVariables}
+    assert md3["nLines"].causality == "structuralParameter" and md3["nLines"].type == "UInt64"
+    assert int(md3["nLines"].start) == MAX_LINES and md3["line.fairleadTension"].shape == (MAX_LINES,)
+    assert md3["line.fairleadTension"].dimensions[0].valueReference == md3["nLines"].valueReference
+    assert md3["body.stiffness"].dimensions[0].valueReference == md3["nBodies"].valueReference
+
+    deck = ms.read_system_deck(ld.write(ld.shared_anchor_farm(8), tmp_path / "farm8.dat"))
+    c = make_cable(parameters=ms.fmu_parameters(deck))
+    c.initialize(inputs=_farm_inputs(8))
+    fair2 = c.get_reals([f"line[{k}].fairleadTension" for k in range(1, 25)])
+    force2 = c.get_reals([f"body[{k}].force.z" for k in range(1, 9)])
+    stiffness2 = c.get_reals([f"body[{k}].stiffness[{i},{j}]" for k in range(1, 9) for i in range(1, 7)
+                              for j in range(1, 7)])
+
+    fmu, vr, close = _fmi3_farm(fmi3_file, deck, {"nLines": 24, "nBodies": 8, "nPoints": 1})
+    try:
+        assert list(fmu.getUInt64([vr["nLines"], vr["nBodies"]])) == [24, 8]
+        assert np.array(fmu.getFloat64([vr["line.fairleadTension"]], nValues=24)).tobytes() == fair2.tobytes()
+        assert np.array(fmu.getFloat64([vr["body.force.z"]], nValues=8)).tobytes() == force2.tobytes()
+        assert np.array(fmu.getFloat64([vr["body.stiffness"]], nValues=8 * 36)).tobytes() == stiffness2.tobytes()
+        with pytest.raises(FMICallException):
+            fmu.getFloat64([vr["line.fairleadTension"]], nValues=MAX_LINES)  # the arrays hold 24 now
+        with pytest.raises(FMICallException):
+            fmu.setUInt64([vr["nLines"]], [30])  # outside configuration mode
+    finally:
+        close()
+    fmu, vr, close = _fmi3_farm(fmi3_file, deck)  # the maxima by default
+    try:
+        lines = np.array(fmu.getFloat64([vr["line.fairleadTension"]], nValues=MAX_LINES))
+        assert lines[:24].tobytes() == fair2.tobytes() and not np.any(lines[24:])
+        fmu.reset()
+        fmu.enterConfigurationMode()
+        with pytest.raises(FMICallException):
+            fmu.setUInt64([vr["nLines"]], [MAX_LINES + 1])
+        assert list(fmu.getUInt64([vr["nLines"]])) == [MAX_LINES]
+        fmu.exitConfigurationMode()
+    finally:
+        close(terminate=False)  # (reset: instantiated again)
