@@ -181,6 +181,48 @@ static void put_u64(Writer* w, uint64_t v) { put(w, &v, sizeof v); }
 static void put_i32(Writer* w, int32_t v) { put(w, &v, sizeof v); }
 static void put_f64(Writer* w, double v) { put(w, &v, sizeof v); }
 
+/* A block of n bytes as runs: u32 zero words, u32 data words, the data words, ... until its 8-byte words are
+ * all told (a last partial word counts as a word, its missing bytes zero). The structs and the core's state
+ * are mostly zeros where a deck is smaller than the maxima (a mooring system's lines, bodies and points beyond
+ * its own, wave components beyond those given): a state is sized by what it holds. */
+enum { UC_RUN_WORD = 8, UC_RUN_MIN_ZEROS = 2 };
+
+static int zero_word(const unsigned char* bytes, size_t n, size_t word) {
+    const size_t from = word * UC_RUN_WORD;
+    if (from + UC_RUN_WORD <= n) {
+        uint64_t v;
+        memcpy(&v, bytes + from, sizeof v);
+        return v == 0;
+    }
+    for (size_t i = from; i < n; ++i)
+        if (bytes[i] != 0) return 0;
+    return 1;
+}
+
+static void put_runs(Writer* w, const void* block, size_t n) {
+    const unsigned char* bytes = (const unsigned char*)block;
+    const size_t words = (n + UC_RUN_WORD - 1) / UC_RUN_WORD;
+    size_t at = 0;
+    while (at < words) {
+        size_t zeros = 0;
+        while (at + zeros < words && zero_word(bytes, n, at + zeros)) ++zeros;
+        size_t i = at + zeros; /* data up to a run of UC_RUN_MIN_ZEROS zero words or zeros to the end */
+        while (i < words) {
+            size_t run = 0;
+            while (i + run < words && zero_word(bytes, n, i + run)) ++run;
+            if (run >= UC_RUN_MIN_ZEROS || (run > 0 && i + run == words)) break;
+            i += run > 0 ? run : 1;
+        }
+        const size_t data = i - (at + zeros);
+        put_u32(w, (uint32_t)zeros);
+        put_u32(w, (uint32_t)data);
+        const size_t from = (at + zeros) * UC_RUN_WORD;
+        const size_t to = (at + zeros + data) * UC_RUN_WORD < n ? (at + zeros + data) * UC_RUN_WORD : n;
+        if (to > from) put(w, bytes + from, to - from);
+        at += zeros + data;
+    }
+}
+
 static void write_state(Writer* w, const UCSavedState* s) {
     char guid[UC_GUID_FIELD_SIZE] = {0};
     strncpy(guid, UC_GUID, sizeof guid - 1);
@@ -196,11 +238,11 @@ static void write_state(Writer* w, const UCSavedState* s) {
 #define UC_PUT_FIELD(field, kind) put_##kind(w, s->field);
     UC_ADAPTER_SCALARS(UC_PUT_FIELD)
 #undef UC_PUT_FIELD
-    put(w, &s->params, sizeof s->params);
-    put(w, &s->coreParams, sizeof s->coreParams);
-    put(w, &s->inputs, sizeof s->inputs);
-    put(w, &s->outputs, sizeof s->outputs);
-    if (s->coreSize > 0) put(w, s->core, s->coreSize);
+    put_runs(w, &s->params, sizeof s->params);
+    put_runs(w, &s->coreParams, sizeof s->coreParams);
+    put_runs(w, &s->inputs, sizeof s->inputs);
+    put_runs(w, &s->outputs, sizeof s->outputs);
+    if (s->coreSize > 0) put_runs(w, s->core, s->coreSize);
 }
 
 fmi2Status uc_state_serialized_size(UCInstance* inst, fmi2FMUstate state, size_t* size) {
@@ -249,6 +291,26 @@ static uint64_t get_u64(Reader* r) { uint64_t v; get(r, &v, sizeof v); return v;
 static int32_t get_i32(Reader* r) { int32_t v; get(r, &v, sizeof v); return v; }
 static double get_f64(Reader* r) { double v; get(r, &v, sizeof v); return v; }
 
+/* The n bytes of a block written by put_runs into a zero-filled block (its zero runs are left as they are,
+ * so that a block claimed larger than it is costs no memory it does not hold); a run beyond n or a short
+ * buffer marks the reader overrun. */
+static void get_runs(Reader* r, void* block, size_t n) {
+    unsigned char* bytes = (unsigned char*)block;
+    const size_t words = (n + UC_RUN_WORD - 1) / UC_RUN_WORD;
+    size_t at = 0;
+    while (at < words && !r->overrun) {
+        const size_t zeros = get_u32(r), data = get_u32(r);
+        if (r->overrun || zeros > words - at || data > words - at - zeros || zeros + data == 0) {
+            r->overrun = 1;
+            return;
+        }
+        const size_t from = (at + zeros) * UC_RUN_WORD;
+        const size_t to = (at + zeros + data) * UC_RUN_WORD < n ? (at + zeros + data) * UC_RUN_WORD : n;
+        if (to > from) get(r, bytes + from, to - from);
+        at += zeros + data;
+    }
+}
+
 static fmi2Status reject(UCInstance* inst, const char* what) {
     uc_log_status(&inst->log, fmi2Error, "fmi2DeSerializeFMUstate: %s", what);
     return fmi2Error;
@@ -283,11 +345,11 @@ static fmi2Status read_body(UCInstance* inst, Reader* r, UCSavedState* s) {
 #define UC_GET_FIELD(field, kind) s->field = get_##kind(r);
     UC_ADAPTER_SCALARS(UC_GET_FIELD)
 #undef UC_GET_FIELD
-    get(r, &s->params, sizeof s->params);
-    get(r, &s->coreParams, sizeof s->coreParams);
-    get(r, &s->inputs, sizeof s->inputs);
-    get(r, &s->outputs, sizeof s->outputs);
-    if (s->coreSize > 0) get(r, s->core, s->coreSize);
+    get_runs(r, &s->params, sizeof s->params);
+    get_runs(r, &s->coreParams, sizeof s->coreParams);
+    get_runs(r, &s->inputs, sizeof s->inputs);
+    get_runs(r, &s->outputs, sizeof s->outputs);
+    if (s->coreSize > 0) get_runs(r, s->core, s->coreSize);
     if (r->overrun) return reject(inst, "truncated state");
     if (r->pos != r->size) return reject(inst, "trailing bytes after the state");
     if (s->machineState < UC_STATE_INSTANTIATED || s->machineState > UC_STATE_FATAL ||
@@ -302,12 +364,18 @@ fmi2Status uc_state_deserialize(UCInstance* inst, const fmi2Byte buffer[], size_
     uint64_t coreSize = 0;
     if (state == NULL) return reject(inst, "FMUstate is NULL");
     if (read_header(inst, &r, &coreSize) != fmi2OK) return fmi2Error;
-    if (coreSize > size) return reject(inst, "core size larger than the buffer");
-    UCSavedState* s = calloc(1, sizeof *s);
+    if (coreSize > SIZE_MAX / 2) return reject(inst, "core size beyond this platform's memory");
+    UCSavedState* s = calloc(1, sizeof *s); /* zero-filled: the blocks' runs of zeros are not written */
     if (s == NULL) return reject(inst, "out of memory");
     s->coreSize = (size_t)coreSize;
-    s->core = coreSize > 0 ? malloc((size_t)coreSize) : NULL;
-    if ((coreSize > 0 && s->core == NULL) || read_body(inst, &r, s) != fmi2OK) {
+    s->core = coreSize > 0 ? calloc(1, (size_t)coreSize) : NULL;
+    if (coreSize > 0 && s->core == NULL) {
+        free(s);
+        uc_log_status(&inst->log, fmi2Error, "fmi2DeSerializeFMUstate: out of memory for the %llu bytes of the "
+                      "cable state", (unsigned long long)coreSize);
+        return fmi2Error;
+    }
+    if (read_body(inst, &r, s) != fmi2OK) {
         free(s->core);
         free(s);
         return fmi2Error;

@@ -10,7 +10,9 @@
  *           u32 sizeof(UCParams), u32 sizeof(UCInputs), u32 sizeof(UCOutputs), u64 core size
  *   body:   i32 machine state, f64 startTime, i32 stopTimeDefined, f64 stopTime, f64 time,
  *           f64 lastSuccessfulTime, i32 terminateRequested, UCParams (as set), UCParams (of the core:
- *           lineFile applied), UCInputs, UCOutputs, core bytes
+ *           lineFile applied), UCInputs, UCOutputs, core bytes; each of these five blocks as runs of its
+ *           8-byte words (u32 zero words, u32 data words, the data words, ... up to its size), so that the
+ *           maxima a deck does not use (lines, bodies, points, wave components) take no room
  * Any mismatch of the header with this binary is rejected with fmi2Error.
  */
 #ifndef UNDERWATERCABLE_FMU_STATE_SERIALIZATION_H
@@ -18,7 +20,7 @@
 
 #include "instance.h"
 
-#define UC_STATE_FORMAT_VERSION 2u
+#define UC_STATE_FORMAT_VERSION 3u  /* 3: the blocks as runs of words */
 
 fmi2Status uc_state_get(UCInstance* inst, fmi2FMUstate* state);
 fmi2Status uc_state_set(UCInstance* inst, fmi2FMUstate state);

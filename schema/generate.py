@@ -180,6 +180,17 @@ def load(path: Path = SCHEMA):
     constants = data.get("constants", {})
     bases = data["valueReferenceBase"]
     entries, next_vr = [], {c: int(bases[c]) for c in CAUSALITIES}
+    # Arrays counted by a constant of [valueReferenceExtension] counts keep the value references of their
+    # first elements (as many as the count given there, the count when they were numbered); their further
+    # elements are numbered from the extension's bases, in file order, so that raising the constant moves
+    # no value reference.
+    extension = data.get("valueReferenceExtension", {})
+    kept = dict(extension.get("counts", {}))
+    next_ext = {c: int(extension[c]) for c in CAUSALITIES if c in extension}
+    for name, count in kept.items():
+        if name not in constants or not 0 < int(count) <= int(constants[name]):
+            raise SystemExit(f"schema: valueReferenceExtension: {name} = {count} is not a [constants] name with a "
+                             "count up to the constant's")
     seen_causality_order = []
     for raw in data["variable"]:
         causality = raw["causality"]
@@ -206,8 +217,11 @@ def load(path: Path = SCHEMA):
                                                                            substitutions(raw, constants)):
             if causality != "output" and start is None:
                 raise SystemExit(f"schema: {name} needs a start value")
-            s = Scalar(name, next_vr[causality], causality, raw["type"], fld, raw.get("unit"),
-                       start, lo, hi, lo_open, hi_open, raw.get("rangeText"), raw.get("why"),
+            extended = raw.get("count") in kept and body > int(kept[raw["count"]])
+            if extended and causality not in next_ext:
+                raise SystemExit(f"schema: {name}: valueReferenceExtension has no base for {causality}s")
+            s = Scalar(name, (next_ext if extended else next_vr)[causality], causality, raw["type"], fld,
+                       raw.get("unit"), start, lo, hi, lo_open, hi_open, raw.get("rangeText"), raw.get("why"),
                        desc, deps, raw)
             s.derivative_of = fill(raw["derivativeOf"], sub) if "derivativeOf" in raw else None
             s.derivative_field = fill(raw["derivativeField"], sub) if "derivativeField" in raw else None
@@ -217,9 +231,18 @@ def load(path: Path = SCHEMA):
                 d = raw["directionalDerivative"]
                 s.jacobian = (d["matrix"], int(d["index"]) + component, body)
             scalars.append(s)
-            next_vr[causality] += 1
+            (next_ext if extended else next_vr)[causality] += 1
         entries.append(Entry(raw, scalars))
-    scalars = [s for e in entries for s in e.scalars]
+    # every list of the variables is in value-reference order (the adapter's table is searched by it)
+    scalars = sorted((s for e in entries for s in e.scalars), key=lambda s: s.vr)
+    if len({s.vr for s in scalars}) != len(scalars):
+        raise SystemExit("schema: value references collide: a causality group reaches the next group's base or "
+                         "an extension base (raise valueReferenceBase / valueReferenceExtension)")
+    groups = sorted([(int(bases[c]), next_vr[c]) for c in CAUSALITIES] +
+                    [(int(extension[c]), next_ext[c]) for c in next_ext])
+    for (lo, end), (nxt, _) in zip(groups, groups[1:]):
+        if end > nxt:
+            raise SystemExit(f"schema: the value references from {lo} run to {end - 1}, into the group from {nxt}")
     for i, s in enumerate(scalars):
         s.index = i + 1
     names = [s.name for s in scalars]
@@ -255,7 +278,12 @@ def internal_member(data, member: str, ctype: str, name: str, key: str):
     if not rows or rows[0]["type"] != ctype:
         raise SystemExit(f"schema: {name}: {key} {member!r} is not an [[internal]] {ctype} member of UCInputs")
     size = rows[0].get("size")
-    if (m.group(2) is None) != (size is None) or (size is not None and int(m.group(2)) >= int(size)):
+    if size is not None:  # an integer, a [constants] name or a product of them ("6 * UC_MAX_BODIES")
+        size = 1
+        for factor in str(rows[0]["size"]).split("*"):
+            size *= resolve_count(int(factor) if factor.strip().isdigit() else factor.strip(),
+                                  data.get("constants", {}), name)
+    if (m.group(2) is None) != (size is None) or (size is not None and int(m.group(2)) >= size):
         raise SystemExit(f"schema: {name}: {key} {member!r} does not index [[internal]] {m.group(1)} "
                          f"(size {size})")
 
@@ -661,6 +689,7 @@ class Fmi3Variable:
     elements: list          # the FMI 2.0 scalars, in the array's row-major order
     dimensions: tuple       # () for a scalar
     description: str
+    count: str | None = None  # the [constants] name that counts its first dimension
 
     @property
     def first(self) -> Scalar:
@@ -669,6 +698,12 @@ class Fmi3Variable:
     @property
     def stride(self) -> int:
         return self.elements[1].vr - self.elements[0].vr if len(self.elements) > 1 else 1
+
+    @property
+    def kept(self) -> int:
+        """The elements numbered with the first (those beyond are in the value-reference extension)."""
+        jumps = [i for i, (a, b) in enumerate(zip(self.elements, self.elements[1:]), 1) if b.vr - a.vr != self.stride]
+        return jumps[0] if jumps else len(self.elements)
 
 
 def fmi3_arrays_of(e: Entry, counts) -> list:
@@ -680,9 +715,10 @@ def fmi3_arrays_of(e: Entry, counts) -> list:
         raise SystemExit(f"schema: {raw['name']}: an FMI 3.0 array is a Real input or output named with [{{k}}]")
     base = raw.get("fmi3Name", raw["name"].replace("[{k}]", ""))
     comps = raw.get("components")
+    count = raw["count"]
     if comps is None:
         n = len(e.scalars)
-        return [Fmi3Variable(base, e.scalars, (n,), raw["description"].replace("{k}", "k"))]
+        return [Fmi3Variable(base, e.scalars, (n,), raw["description"].replace("{k}", "k"), count)]
     n = len(e.scalars) // len(comps)
     matrix = [re.fullmatch(r"(\d+),(\d+)", c) for c in comps]
     if all(matrix) and base.endswith("[{c}]"):  # components "i,j": one array [k, i, j]
@@ -691,9 +727,9 @@ def fmi3_arrays_of(e: Entry, counts) -> list:
                                                                    for j in range(1, cols + 1)]:
             raise SystemExit(f"schema: {raw['name']}: matrix components must run row by row")
         return [Fmi3Variable(base[:-len("[{c}]")], e.scalars, (n, rows, cols),
-                             raw["description"].replace("{k}", "k").replace("{c}", "i,j"))]
+                             raw["description"].replace("{k}", "k").replace("{c}", "i,j"), count)]
     return [Fmi3Variable(base.replace("{c}", c), e.scalars[j::len(comps)], (n,),
-                         raw["description"].replace("{k}", "k").replace("{c}", c))
+                         raw["description"].replace("{k}", "k").replace("{c}", c), count)
             for j, c in enumerate(comps)]
 
 
@@ -704,8 +740,9 @@ def fmi3_variables(data, entries) -> list:
     for e in entries:
         arrays = fmi3_arrays_of(e, counts)
         variables += arrays or [Fmi3Variable(s.name, [s], (), s.description) for s in e.scalars]
-    for v in variables:  # the adapter maps an array's element i to the scalar first + i * stride
-        if any(b.vr - a.vr != v.stride for a, b in zip(v.elements, v.elements[1:])) or v.stride < 1:
+    for v in variables:  # the adapter maps element i to the scalar first + i * stride (further ones: extension)
+        parts = [v.elements[:v.kept], v.elements[v.kept:]]
+        if v.stride < 1 or any(b.vr - a.vr != v.stride for part in parts for a, b in zip(part, part[1:])):
             raise SystemExit(f"schema: the FMI 2.0 value references of the FMI 3.0 array {v.name} are not at a "
                              "constant stride")
     names = [v.name for v in variables]
@@ -714,6 +751,18 @@ def fmi3_variables(data, entries) -> list:
         raise SystemExit(f"schema: FMI 3.0 names {dup} are not unique (an array named like another variable: "
                          "give it an fmi3Name)")
     return variables
+
+
+def fmi3_structural(data) -> dict:
+    """[fmi3.structuralParameters]: constant -> (name, value reference, maximum, description): the UInt64
+    structural parameter that sizes the first dimension of the arrays counted by that constant."""
+    constants = data.get("constants", {})
+    out = {}
+    for const, sp in data.get("fmi3", {}).get("structuralParameters", {}).items():
+        if const not in data["fmi3"].get("arrayCounts", []) or const not in constants:
+            raise SystemExit(f"schema: fmi3.structuralParameters: {const} is not one of the arrayCounts")
+        out[const] = (sp["name"], int(sp["valueReference"]), int(constants[const]), sp["description"])
+    return out
 
 
 def fmi3_xml_text(data, entries) -> str:
@@ -742,6 +791,13 @@ def fmi3_xml_text(data, entries) -> str:
     out.append(f'    <Float64 name="time" valueReference="{FMI3_TIME_VR}" causality="independent" '
                'variability="continuous" description="Simulation time" unit="s"/>')
     variables = fmi3_variables(data, entries)
+    structural = fmi3_structural(data)
+    taken = {x.vr for v in variables for x in v.elements} | {FMI3_TIME_VR}
+    for name, vr, most, description in structural.values():
+        if vr in taken:
+            raise SystemExit(f"schema: fmi3.structuralParameters: {name}'s value reference {vr} is taken")
+        out.append(f'    <UInt64 name="{name}" valueReference="{vr}" causality="structuralParameter" variability="fixed" '
+                   f'start="{most}" min="1" max="{most}" description="{xml_attr(description)}"/>')
     for v in variables:
         s, kind = v.first, FMI3_TYPES[v.first.type]
         attrs = xml_variable_attributes(v.name, s, v.description)
@@ -761,7 +817,10 @@ def fmi3_xml_text(data, entries) -> str:
             else:  # an array's start: every element's, row-major
                 start = " ".join(fmt_number(float(x.start)) for x in v.elements)
             attrs += f' start="{start}"'
-        children += [f'<Dimension start="{n}"/>' for n in v.dimensions]
+        dims = [f'<Dimension start="{n}"/>' for n in v.dimensions]
+        if dims and v.count in structural:  # the first dimension: the structural parameter's value
+            dims[0] = f'<Dimension valueReference="{structural[v.count][1]}"/>'
+        children += dims
         if children:
             out.append(f"    <{kind} {attrs}>")
             out += [f"      {c}" for c in children]
@@ -792,15 +851,30 @@ def fmi3_dependencies(s: Scalar, fmi3_vr: dict) -> str:
 def fmi3_header_text(data, entries) -> str:
     """The FMI 3.0 adapter's table of array variables: X(value reference, elements, stride, name)."""
     arrays = [v for v in fmi3_variables(data, entries) if v.dimensions]
+    structural = fmi3_structural(data)
     out = [f"/* {GENERATED_NOTE} */",
            "/* The FMI 3.0 variant's array variables (docs/fmi3.md): each has the value reference of its first",
-           " * element; element i (row-major) is the FMI 2.0 scalar first + i * stride. */",
+           " * element; element i (row-major) is an FMI 2.0 scalar (below). */",
            "#ifndef UC_FMI3_ARRAYS_H", "#define UC_FMI3_ARRAYS_H", "",
            f"#define UC_FMI3_TIME_VR {FMI3_TIME_VR}",
            f"#define UC_FMI3_MAX_ELEMENTS {max(len(v.elements) for v in arrays)}", "",
-           "/* X(valueReference, elements, stride, name) */",
+           "/* X(name, valueReference, maximum): the structural parameters (UInt64) that size the arrays' first",
+           " * dimension, at most the schema's maximum, set in configuration mode */",
+           "#define UC_FMI3_STRUCTURAL_PARAMETERS(X) \\"]
+    out += [f'    X("{name}", {vr}, {most}) \\' for name, vr, most, _ in structural.values()]
+    out[-1] = out[-1].rstrip(" \\")
+    out += ["",
+           "/* X(valueReference, elements, stride, name, kept, extension, sizedBy, perIndex): element i < kept is the",
+           " * FMI 2.0 scalar valueReference + i * stride, element i >= kept the scalar extension + (i - kept) * stride",
+           " * (the value-reference extension of the schema: elements beyond the count the array once had); elements",
+           " * is the maximum: with sizedBy (a structural parameter's value reference, 0: none) the array holds that",
+           " * parameter's value times perIndex elements, the first ones */",
            "#define UC_FMI3_ARRAYS(X) \\"]
-    out += [f'    X({v.first.vr}, {len(v.elements)}, {v.stride}, "{v.name}") \\' for v in arrays]
+    for v in arrays:
+        sized = structural[v.count][1] if v.count in structural else 0
+        per = len(v.elements) // v.dimensions[0]
+        out.append(f'    X({v.first.vr}, {len(v.elements)}, {v.stride}, "{v.name}", {v.kept}, '
+                   f'{v.elements[v.kept].vr if v.kept < len(v.elements) else 0}, {sized}, {per}) \\')
     out[-1] = out[-1].rstrip(" \\")
     out += ["", "#endif", ""]
     return "\n".join(out)

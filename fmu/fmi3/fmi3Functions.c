@@ -32,11 +32,21 @@ _Static_assert(sizeof(fmi3ValueReference) == sizeof(fmi2ValueReference), "value 
 _Static_assert((int)fmi3Error == (int)fmi2Error && (int)fmi3Discard == (int)fmi2Discard &&
                    (int)fmi3Fatal == (int)fmi2Fatal, "the statuses have the same values");
 
-/* An FMI 3.0 instance: the FMI 2.0 instance and the FMI 3.0 importer's log callback. */
+/* The structural parameters (uc_fmi3_arrays.h), in their table's order. */
+enum {
+#define UC_FMI3_COUNT_STRUCTURAL(name, vr, most) +1
+    UC_FMI3_STRUCTURAL = 0 UC_FMI3_STRUCTURAL_PARAMETERS(UC_FMI3_COUNT_STRUCTURAL)
+#undef UC_FMI3_COUNT_STRUCTURAL
+};
+
+/* An FMI 3.0 instance: the FMI 2.0 instance, the FMI 3.0 importer's log callback, the structural parameters'
+ * values (the arrays' lengths) and whether it is in configuration mode. */
 typedef struct {
     UCInstance* inner;
     fmi3LogMessageCallback logMessage;
     fmi3InstanceEnvironment environment;
+    fmi3UInt64 sizes[UC_FMI3_STRUCTURAL];
+    int configuring;
 } UC3Instance;
 
 static UCInstance* inner(fmi3Instance instance) { return instance ? ((UC3Instance*)instance)->inner : NULL; }
@@ -65,7 +75,8 @@ static fmi3Status unsupported(fmi3Instance instance, const char* function) {
     UCInstance* inst = inner(instance);
     if (inst != NULL) {
         uc_log_status(&inst->log, fmi2Error, "%s: not provided by this co-simulation FMU (no event mode, clocks, "
-                      "model exchange or scheduled execution; Float64, Int32, Boolean and String variables only)",
+                      "model exchange or scheduled execution; Float64, Int32, Boolean and String variables and the UInt64 "
+                      "structural parameters only)",
                       function);
     }
     return fmi3Error;
@@ -130,6 +141,10 @@ FMI3_EXPORT fmi3Instance fmi3InstantiateCoSimulation(
         return NULL;
     }
     self->inner->earlyReturnAllowed = earlyReturnAllowed ? 1 : 0;
+    size_t k = 0;
+#define UC_FMI3_SIZE_START(name, vr, most) self->sizes[k++] = (most);
+    UC_FMI3_STRUCTURAL_PARAMETERS(UC_FMI3_SIZE_START)
+#undef UC_FMI3_SIZE_START
     return self;
 }
 
@@ -138,7 +153,7 @@ FMI3_EXPORT fmi3Instance fmi3InstantiateModelExchange(fmi3String instanceName, f
                                                       fmi3Boolean loggingOn, fmi3InstanceEnvironment instanceEnvironment,
                                                       fmi3LogMessageCallback logMessage) {
     (void)instantiationToken, (void)resourcePath, (void)visible, (void)loggingOn;
-    UC3Instance self = {NULL, logMessage, instanceEnvironment};
+    UC3Instance self = {NULL, logMessage, instanceEnvironment, {0}, 0};
     forward_log(&self, instanceName, fmi2Error, "logStatusError",
                 "fmi3InstantiateModelExchange: UnderwaterCable is a co-simulation FMU only");
     return NULL;
@@ -151,7 +166,7 @@ FMI3_EXPORT fmi3Instance fmi3InstantiateScheduledExecution(
     fmi3UnlockPreemptionCallback unlockPreemption) {
     (void)instantiationToken, (void)resourcePath, (void)visible, (void)loggingOn, (void)clockUpdate;
     (void)lockPreemption, (void)unlockPreemption;
-    UC3Instance self = {NULL, logMessage, instanceEnvironment};
+    UC3Instance self = {NULL, logMessage, instanceEnvironment, {0}, 0};
     forward_log(&self, instanceName, fmi2Error, "logStatusError",
                 "fmi3InstantiateScheduledExecution: UnderwaterCable is a co-simulation FMU only");
     return NULL;
@@ -167,6 +182,11 @@ FMI3_EXPORT fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Bo
                                                    fmi3Float64 tolerance, fmi3Float64 startTime,
                                                    fmi3Boolean stopTimeDefined, fmi3Float64 stopTime) {
     UCInstance* inst = inner(instance);
+    if (inst != NULL && ((UC3Instance*)instance)->configuring) {
+        uc_log_status(&inst->log, fmi2Error, "fmi3EnterInitializationMode: in configuration mode (call "
+                      "fmi3ExitConfigurationMode first)");
+        return fmi3Error;
+    }
     const fmi2Status status = fmi2SetupExperiment(inst, toleranceDefined, tolerance, startTime, stopTimeDefined, stopTime);
     if (status > fmi2Warning) return (fmi3Status)status;
     return (fmi3Status)fmi2EnterInitializationMode(inst);
@@ -178,7 +198,18 @@ FMI3_EXPORT fmi3Status fmi3ExitInitializationMode(fmi3Instance instance) {
 
 FMI3_EXPORT fmi3Status fmi3Terminate(fmi3Instance instance) { return (fmi3Status)fmi2Terminate(inner(instance)); }
 
-FMI3_EXPORT fmi3Status fmi3Reset(fmi3Instance instance) { return (fmi3Status)fmi2Reset(inner(instance)); }
+FMI3_EXPORT fmi3Status fmi3Reset(fmi3Instance instance) {
+    const fmi2Status status = fmi2Reset(inner(instance));
+    if (status <= fmi2Warning) { /* the structural parameters back at their start values */
+        UC3Instance* self = (UC3Instance*)instance;
+        size_t k = 0;
+        self->configuring = 0;
+#define UC_FMI3_SIZE_RESET(name, vr, most) self->sizes[k++] = (most);
+        UC_FMI3_STRUCTURAL_PARAMETERS(UC_FMI3_SIZE_RESET)
+#undef UC_FMI3_SIZE_RESET
+    }
+    return (fmi3Status)status;
+}
 
 FMI3_EXPORT fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentCommunicationPoint,
                                   fmi3Float64 communicationStepSize, fmi3Boolean noSetFMUStatePriorToCurrentPoint,
@@ -205,23 +236,52 @@ FMI3_EXPORT fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentComm
 
 /* ---- values ---------------------------------------------------------------------------------------- */
 
-/* Elements of the variable vr (the array's length, or 1 for a scalar) and the value-reference stride of
- * its FMI 2.0 scalars: element i is the scalar vr + i * stride. */
-static size_t elements_and_stride(fmi3ValueReference vr, fmi2ValueReference* stride) {
-    *stride = 1;
-#define UC_FMI3_ARRAY_LENGTH(first, count, step, name) \
-    if (vr == (first)) {                               \
-        *stride = (step);                              \
-        return (count);                                \
+/* Elements of the variable vr (the array's length, or 1 for a scalar) and where its FMI 2.0 scalars are:
+ * element i is the scalar vr + i * stride for i < kept, extension + (i - kept) * stride beyond (uc_fmi3_arrays.h). */
+typedef struct ArrayLayout {
+    fmi2ValueReference stride, kept, extension;
+} ArrayLayout;
+
+/* The value of the structural parameter vr (its index in the table; -1: none). */
+static int structural_index(fmi3ValueReference vr) {
+    int k = 0;
+#define UC_FMI3_STRUCTURAL_INDEX(name, svr, most) \
+    if (vr == (svr)) return k;                    \
+    ++k;
+    UC_FMI3_STRUCTURAL_PARAMETERS(UC_FMI3_STRUCTURAL_INDEX)
+#undef UC_FMI3_STRUCTURAL_INDEX
+    return -1;
+}
+
+/* An array sized by a structural parameter holds its value's worth of its first dimension (the first
+ * elements of the maximum's); the others hold the maximum. */
+static size_t array_layout(fmi3Instance instance, fmi3ValueReference vr, ArrayLayout* layout) {
+    const UC3Instance* self = (const UC3Instance*)instance;
+    layout->stride = 1;
+    layout->kept = 1;
+    layout->extension = 0;
+#define UC_FMI3_ARRAY_LENGTH(first, count, step, name, keep, ext, sizedBy, perIndex)                  \
+    if (vr == (first)) {                                                                            \
+        layout->stride = (step);                                                                    \
+        layout->kept = (keep);                                                                      \
+        layout->extension = (ext);                                                                  \
+        const int s = structural_index(sizedBy);                                                    \
+        return s >= 0 && self != NULL ? (size_t)self->sizes[s] * (size_t)(perIndex) : (size_t)(count); \
     }
     UC_FMI3_ARRAYS(UC_FMI3_ARRAY_LENGTH)
 #undef UC_FMI3_ARRAY_LENGTH
     return 1;
 }
 
-static size_t elements(fmi3ValueReference vr) {
-    fmi2ValueReference stride;
-    return elements_and_stride(vr, &stride);
+/* The FMI 2.0 scalar of element i of the variable vr of that layout. */
+static fmi2ValueReference element_vr(fmi3ValueReference vr, const ArrayLayout* layout, size_t i) {
+    if (i < layout->kept) return vr + (fmi2ValueReference)i * layout->stride;
+    return layout->extension + (fmi2ValueReference)(i - layout->kept) * layout->stride;
+}
+
+static size_t elements(fmi3Instance instance, fmi3ValueReference vr) {
+    ArrayLayout layout;
+    return array_layout(instance, vr, &layout);
 }
 
 /* `expected`: the elements of the value references, all together. */
@@ -240,26 +300,27 @@ static fmi3Status refuse_set(UCInstance* inst, const char* function, size_t nVal
     return (fmi3Status)uc_instance_finish(inst, fmi2Error);
 }
 
-static size_t total_elements(const fmi3ValueReference vr[], size_t nvr) {
+static size_t total_elements(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr) {
     size_t total = 0;
-    for (size_t k = 0; k < nvr; ++k) total += elements(vr[k]);
+    for (size_t k = 0; k < nvr; ++k) total += elements(instance, vr[k]);
     return total;
 }
 
 /* Float64 get and set, variable by variable: an array is its elements' FMI 2.0 scalars (the stations'
  * outputs, a mooring system's lines, bodies and points), at most UC_FMI3_MAX_ELEMENTS of them. */
-#define UC_FMI3_ARRAY_FITS(first, count, step, name) \
-    _Static_assert((count) <= UC_FMI3_MAX_ELEMENTS && (step) >= 1, name " fits");
+#define UC_FMI3_ARRAY_FITS(first, count, step, name, keep, ext, sizedBy, perIndex) \
+    _Static_assert((count) <= UC_FMI3_MAX_ELEMENTS && (step) >= 1 && (keep) <= (count), name " fits");
 UC_FMI3_ARRAYS(UC_FMI3_ARRAY_FITS)
 #undef UC_FMI3_ARRAY_FITS
 
 /* The FMI 2.0 scalars of the variables vr[0..nvr), in order (nScalars of them, the caller checked the count). */
-static void expand_scalars(const fmi3ValueReference vr[], size_t nvr, fmi2ValueReference scalars[]) {
+static void expand_scalars(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
+                           fmi2ValueReference scalars[]) {
     size_t at = 0;
     for (size_t k = 0; k < nvr; ++k) {
-        fmi2ValueReference stride;
-        const size_t n = elements_and_stride(vr[k], &stride);
-        for (size_t i = 0; i < n; ++i) scalars[at++] = vr[k] + (fmi2ValueReference)i * stride;
+        ArrayLayout layout;
+        const size_t n = array_layout(instance, vr[k], &layout);
+        for (size_t i = 0; i < n; ++i) scalars[at++] = element_vr(vr[k], &layout, i);
     }
 }
 
@@ -274,7 +335,7 @@ static fmi3Status set_float64(fmi3Instance instance, const fmi3ValueReference vr
         uc_log_status(&inst->log, fmi2Error, "%s: vr or values is NULL with nvr = %zu", function, nvr);
         return (fmi3Status)uc_instance_finish(inst, fmi2Error);
     }
-    const size_t expected = total_elements(vr, nvr);
+    const size_t expected = total_elements(instance, vr, nvr);
     if (expected != nValues) return refuse_set(inst, function, nvr, expected, nValues);
     for (size_t k = 0; k < nvr; ++k) {
         if (vr[k] == UC_FMI3_TIME_VR) {
@@ -288,7 +349,7 @@ static fmi3Status set_float64(fmi3Instance instance, const fmi3ValueReference vr
         uc_log_status(&inst->log, fmi2Error, "%s: out of memory for %zu values", function, nValues);
         return (fmi3Status)uc_instance_finish(inst, fmi2Error);
     }
-    expand_scalars(vr, nvr, scalars);
+    expand_scalars(instance, vr, nvr, scalars);
     const fmi2Status status = fmi2SetReal(inst, scalars, nValues, values);
     free(scalars);
     return (fmi3Status)status;
@@ -303,20 +364,20 @@ static fmi3Status get_float64(fmi3Instance instance, const fmi3ValueReference vr
         uc_log_status(&inst->log, fmi2Error, "%s: vr or values is NULL with nvr = %zu", function, nvr);
         return fmi3Error;
     }
-    const size_t expected = total_elements(vr, nvr);
+    const size_t expected = total_elements(instance, vr, nvr);
     if (expected != nValues) return count_mismatch(inst, function, nvr, expected, nValues);
     size_t at = 0;
     fmi2Status worst = fmi2OK;
     for (size_t k = 0; k < nvr; ++k) {
-        fmi2ValueReference stride;
-        const size_t n = elements_and_stride(vr[k], &stride);
+        ArrayLayout layout;
+        const size_t n = array_layout(instance, vr[k], &layout);
         fmi2Status status;
         if (vr[k] == UC_FMI3_TIME_VR) {
             values[at] = inst->time;
             status = fmi2OK;
         } else {
             fmi2ValueReference scalars[UC_FMI3_MAX_ELEMENTS];
-            for (size_t i = 0; i < n; ++i) scalars[i] = vr[k] + (fmi2ValueReference)i * stride;
+            for (size_t i = 0; i < n; ++i) scalars[i] = element_vr(vr[k], &layout, i);
             status = fmi2GetReal(inst, scalars, n, values + at);
         }
         if (status > worst) worst = status;
@@ -437,18 +498,19 @@ FMI3_EXPORT fmi3Status fmi3DeserializeFMUState(fmi3Instance instance, const fmi3
  * sensitivities 0 (no FMI 2.0 call: a deck's bodies beyond its own have neither inputs nor loads). */
 enum { UC_FMI3_MAX_DERIVATIVE_VARIABLES = 32 };
 
-static fmi3Status array_directional_derivative(UCInstance* inst, const fmi3ValueReference unknowns[], size_t nUnknowns,
+static fmi3Status array_directional_derivative(fmi3Instance instance, const fmi3ValueReference unknowns[], size_t nUnknowns,
                                                const fmi3ValueReference knowns[], size_t nKnowns,
                                                const fmi3Float64 seed[], size_t nSeed, fmi3Float64 sensitivity[],
                                                size_t nSensitivity) {
     const char* function = "fmi3GetDirectionalDerivative";
+    UCInstance* inst = inner(instance);
     fmi2ValueReference u[UC_FMI3_MAX_DERIVATIVE_VARIABLES], k[UC_FMI3_MAX_DERIVATIVE_VARIABLES];
-    fmi2ValueReference uStride[UC_FMI3_MAX_DERIVATIVE_VARIABLES], kStride[UC_FMI3_MAX_DERIVATIVE_VARIABLES];
+    ArrayLayout uLayout[UC_FMI3_MAX_DERIVATIVE_VARIABLES], kLayout[UC_FMI3_MAX_DERIVATIVE_VARIABLES];
     fmi2Real s[UC_FMI3_MAX_DERIVATIVE_VARIABLES], ds[UC_FMI3_MAX_DERIVATIVE_VARIABLES];
-    const size_t n = elements(unknowns[0]);
+    const size_t n = elements(instance, unknowns[0]);
     int same = nUnknowns <= UC_FMI3_MAX_DERIVATIVE_VARIABLES && nKnowns <= UC_FMI3_MAX_DERIVATIVE_VARIABLES;
-    for (size_t i = 0; same && i < nUnknowns; ++i) same = elements_and_stride(unknowns[i], &uStride[i]) == n;
-    for (size_t j = 0; same && j < nKnowns; ++j) same = elements_and_stride(knowns[j], &kStride[j]) == n;
+    for (size_t i = 0; same && i < nUnknowns; ++i) same = array_layout(instance, unknowns[i], &uLayout[i]) == n;
+    for (size_t j = 0; same && j < nKnowns; ++j) same = array_layout(instance, knowns[j], &kLayout[j]) == n;
     if (!same || nSeed != nKnowns * n || nSensitivity != nUnknowns * n) {
         uc_log_status(&inst->log, fmi2Error, "%s: with arrays, every unknown and known is an array of the same length "
                       "(a mooring system's body.force.*, body.moment.* against body.x ... body.wz, at most %d of "
@@ -460,12 +522,12 @@ static fmi3Status array_directional_derivative(UCInstance* inst, const fmi3Value
     for (size_t e = 0; e < n; ++e) {
         int seeded = 0;
         for (size_t j = 0; j < nKnowns; ++j) {
-            k[j] = knowns[j] + (fmi2ValueReference)e * kStride[j];
+            k[j] = element_vr(knowns[j], &kLayout[j], e);
             s[j] = seed[j * n + e];
             seeded |= s[j] != 0.0;
         }
         for (size_t i = 0; i < nUnknowns; ++i) {
-            u[i] = unknowns[i] + (fmi2ValueReference)e * uStride[i];
+            u[i] = element_vr(unknowns[i], &uLayout[i], e);
             ds[i] = 0.0;
         }
         if (seeded) {
@@ -488,10 +550,10 @@ FMI3_EXPORT fmi3Status fmi3GetDirectionalDerivative(fmi3Instance instance, const
         return fmi3Error;
     }
     int arrays = 0;
-    for (size_t k = 0; k < nUnknowns; ++k) arrays |= elements(unknowns[k]) > 1;
-    for (size_t k = 0; k < nKnowns; ++k) arrays |= elements(knowns[k]) > 1;
+    for (size_t k = 0; k < nUnknowns; ++k) arrays |= elements(instance, unknowns[k]) > 1;
+    for (size_t k = 0; k < nKnowns; ++k) arrays |= elements(instance, knowns[k]) > 1;
     if (arrays && nUnknowns > 0) {
-        return array_directional_derivative(inst, unknowns, nUnknowns, knowns, nKnowns, seed, nSeed, sensitivity,
+        return array_directional_derivative(instance, unknowns, nUnknowns, knowns, nKnowns, seed, nSeed, sensitivity,
                                             nSensitivity);
     }
     if (nSeed != nKnowns || nSensitivity != nUnknowns) {
@@ -503,6 +565,102 @@ FMI3_EXPORT fmi3Status fmi3GetDirectionalDerivative(fmi3Instance instance, const
         return fmi3Error;
     }
     return (fmi3Status)fmi2GetDirectionalDerivative(inst, unknowns, nUnknowns, knowns, nKnowns, seed, sensitivity);
+}
+
+/* ---- configuration mode: the structural parameters ------------------------------------------------- */
+
+/* Configuration mode, after instantiation and before initialization: the structural parameters (the arrays'
+ * lengths) may be set there only (docs/fmi3.md). */
+FMI3_EXPORT fmi3Status fmi3EnterConfigurationMode(fmi3Instance instance) {
+    UC3Instance* self = (UC3Instance*)instance;
+    UCInstance* inst = inner(instance);
+    if (inst == NULL) return fmi3Error;
+    if (inst->state != UC_STATE_INSTANTIATED || self->configuring) {
+        uc_log_status(&inst->log, fmi2Error, "fmi3EnterConfigurationMode: only after fmi3InstantiateCoSimulation "
+                      "or fmi3ExitConfigurationMode, before fmi3EnterInitializationMode");
+        return fmi3Error;
+    }
+    self->configuring = 1;
+    return fmi3OK;
+}
+
+FMI3_EXPORT fmi3Status fmi3ExitConfigurationMode(fmi3Instance instance) {
+    UC3Instance* self = (UC3Instance*)instance;
+    UCInstance* inst = inner(instance);
+    if (inst == NULL) return fmi3Error;
+    if (!self->configuring) {
+        uc_log_status(&inst->log, fmi2Error, "fmi3ExitConfigurationMode: not in configuration mode");
+        return fmi3Error;
+    }
+    self->configuring = 0;
+    return fmi3OK;
+}
+
+/* UInt64: the structural parameters only. */
+static int structural_references(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const void* values,
+                                 size_t nValues, const char* function) {
+    UCInstance* inst = inner(instance);
+    if (inst == NULL) return 0;
+    if (nvr != nValues || (nvr > 0 && (vr == NULL || values == NULL))) {
+        uc_log_status(&inst->log, fmi2Error, "%s: %zu values for %zu value references (one each), or a NULL array",
+                      function, nValues, nvr);
+        return 0;
+    }
+    for (size_t k = 0; k < nvr; ++k) {
+        if (structural_index(vr[k]) < 0) {
+            uc_log_status(&inst->log, fmi2Error, "%s: value reference %u is no UInt64 variable (the UInt64 "
+                          "variables are the structural parameters nLines, nBodies and nPoints)", function,
+                          (unsigned)vr[k]);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+FMI3_EXPORT fmi3Status fmi3GetUInt64(fmi3Instance instance, const fmi3ValueReference valueReferences[],
+                                     size_t nValueReferences, fmi3UInt64 values[], size_t nValues) {
+    if (!structural_references(instance, valueReferences, nValueReferences, values, nValues, "fmi3GetUInt64"))
+        return fmi3Error;
+    const UC3Instance* self = (const UC3Instance*)instance;
+    for (size_t k = 0; k < nValueReferences; ++k) values[k] = self->sizes[structural_index(valueReferences[k])];
+    return fmi3OK;
+}
+
+/* Checks every value before it sets any: a refusal leaves every structural parameter as it was. */
+FMI3_EXPORT fmi3Status fmi3SetUInt64(fmi3Instance instance, const fmi3ValueReference valueReferences[],
+                                     size_t nValueReferences, const fmi3UInt64 values[], size_t nValues) {
+    const char* function = "fmi3SetUInt64";
+    if (!structural_references(instance, valueReferences, nValueReferences, values, nValues, function))
+        return fmi3Error;
+    UC3Instance* self = (UC3Instance*)instance;
+    UCInstance* inst = self->inner;
+    static const char* const names[] = {
+#define UC_FMI3_STRUCTURAL_NAME(name, vr, most) name,
+        UC_FMI3_STRUCTURAL_PARAMETERS(UC_FMI3_STRUCTURAL_NAME)
+#undef UC_FMI3_STRUCTURAL_NAME
+    };
+    static const fmi3UInt64 most[] = {
+#define UC_FMI3_STRUCTURAL_MOST(name, vr, largest) (largest),
+        UC_FMI3_STRUCTURAL_PARAMETERS(UC_FMI3_STRUCTURAL_MOST)
+#undef UC_FMI3_STRUCTURAL_MOST
+    };
+    for (size_t k = 0; k < nValueReferences; ++k) {
+        const int s = structural_index(valueReferences[k]);
+        if (!self->configuring) {
+            uc_log_status(&inst->log, fmi2Error, "%s: %s is a structural parameter: set it in configuration mode "
+                          "(fmi3EnterConfigurationMode after instantiation)", function, names[s]);
+            return fmi3Error;
+        }
+        if (values[k] < 1 || values[k] > most[s]) {
+            uc_log_status(&inst->log, fmi2Error, "%s: %s = %llu is outside [1, %llu]: the arrays it sizes hold at "
+                          "most the FMU's %llu (a deck's further lines run without outputs; bodies and points beyond "
+                          "it are refused)", function, names[s], (unsigned long long)values[k],
+                          (unsigned long long)most[s], (unsigned long long)most[s]);
+            return fmi3Error;
+        }
+    }
+    for (size_t k = 0; k < nValueReferences; ++k) self->sizes[structural_index(valueReferences[k])] = values[k];
+    return fmi3OK;
 }
 
 /* ---- what this FMU does not provide ------------------------------------------------------------------- */
@@ -519,8 +677,6 @@ FMI3_EXPORT fmi3Status fmi3GetDirectionalDerivative(fmi3Instance instance, const
 
 UC_UNSUPPORTED0(fmi3EnterEventMode)
 UC_UNSUPPORTED0(fmi3EnterStepMode)
-UC_UNSUPPORTED0(fmi3EnterConfigurationMode)
-UC_UNSUPPORTED0(fmi3ExitConfigurationMode)
 UC_UNSUPPORTED0(fmi3EvaluateDiscreteStates)
 UC_UNSUPPORTED0(fmi3EnterContinuousTimeMode)
 UC_UNSUPPORTED_TYPE(Float32)
@@ -530,7 +686,6 @@ UC_UNSUPPORTED_TYPE(Int16)
 UC_UNSUPPORTED_TYPE(UInt16)
 UC_UNSUPPORTED_TYPE(UInt32)
 UC_UNSUPPORTED_TYPE(Int64)
-UC_UNSUPPORTED_TYPE(UInt64)
 UC_UNSUPPORTED(fmi3GetBinary, const fmi3ValueReference vr[], size_t nvr, size_t valueSizes[], fmi3Binary values[],
                size_t nValues)
 UC_UNSUPPORTED(fmi3SetBinary, const fmi3ValueReference vr[], size_t nvr, const size_t valueSizes[],

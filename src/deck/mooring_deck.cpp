@@ -309,10 +309,11 @@ bool read_mooring_deck(std::string_view text, int elementsPerLine, MooringDeck& 
     std::vector<DeckBody> bodies;
     if (!read_bodies(deck, bodies, out, error)) return false;
     if (!rods_into_bodies(deck, bodies, out.notes, error)) return false;
-    if (deck.lines.size() > UC_MAX_LINES) {
-        error = at_line(deck.lines[UC_MAX_LINES].row, "line " + std::to_string(UC_MAX_LINES + 1) + ": a mooring system "
-                                                      "holds at most " + std::to_string(UC_MAX_LINES) + " lines");
-        return false;
+    if (deck.lines.size() > UC_MAX_LINES) {  // simulated all the same; the FMU names line[k].* up to the maximum
+        out.notes.push_back(at_line(deck.lines[UC_MAX_LINES].row, "lines " + std::to_string(UC_MAX_LINES + 1) + " to " +
+                                    std::to_string(deck.lines.size()) + " of the deck have no outputs line[k].* (the "
+                                    "FMU's go up to k = " + std::to_string(UC_MAX_LINES) + "): they are simulated "
+                                    "and load their bodies and points, their tensions are not reported"));
     }
     for (const Point& p : deck.points) {
         if (p.lines.empty()) out.notes.push_back(at_line(p.row, "point " + std::to_string(p.id) + " ignored: no line "

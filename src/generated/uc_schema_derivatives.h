@@ -81,6 +81,186 @@
     X(1185, 1137) \
     X(1186, 1138) \
     X(1187, 1139) \
+    X(10073, 10001) \
+    X(10074, 10002) \
+    X(10075, 10003) \
+    X(10076, 10004) \
+    X(10077, 10005) \
+    X(10078, 10006) \
+    X(10079, 10007) \
+    X(10080, 10008) \
+    X(10081, 10009) \
+    X(10082, 10010) \
+    X(10083, 10011) \
+    X(10084, 10012) \
+    X(10085, 10013) \
+    X(10086, 10014) \
+    X(10087, 10015) \
+    X(10088, 10016) \
+    X(10089, 10017) \
+    X(10090, 10018) \
+    X(10091, 10019) \
+    X(10092, 10020) \
+    X(10093, 10021) \
+    X(10094, 10022) \
+    X(10095, 10023) \
+    X(10096, 10024) \
+    X(10097, 10025) \
+    X(10098, 10026) \
+    X(10099, 10027) \
+    X(10100, 10028) \
+    X(10101, 10029) \
+    X(10102, 10030) \
+    X(10103, 10031) \
+    X(10104, 10032) \
+    X(10105, 10033) \
+    X(10106, 10034) \
+    X(10107, 10035) \
+    X(10108, 10036) \
+    X(10289, 10145) \
+    X(10290, 10146) \
+    X(10291, 10147) \
+    X(10292, 10148) \
+    X(10293, 10149) \
+    X(10294, 10150) \
+    X(10295, 10151) \
+    X(10296, 10152) \
+    X(10297, 10153) \
+    X(10298, 10154) \
+    X(10299, 10155) \
+    X(10300, 10156) \
+    X(10301, 10157) \
+    X(10302, 10158) \
+    X(10303, 10159) \
+    X(10304, 10160) \
+    X(10305, 10161) \
+    X(10306, 10162) \
+    X(10307, 10163) \
+    X(10308, 10164) \
+    X(10309, 10165) \
+    X(10310, 10166) \
+    X(10311, 10167) \
+    X(10312, 10168) \
+    X(10313, 10169) \
+    X(10314, 10170) \
+    X(10315, 10171) \
+    X(10316, 10172) \
+    X(10317, 10173) \
+    X(10318, 10174) \
+    X(10319, 10175) \
+    X(10320, 10176) \
+    X(10321, 10177) \
+    X(10322, 10178) \
+    X(10323, 10179) \
+    X(10324, 10180) \
+    X(10325, 10181) \
+    X(10326, 10182) \
+    X(10327, 10183) \
+    X(10328, 10184) \
+    X(10329, 10185) \
+    X(10330, 10186) \
+    X(10331, 10187) \
+    X(10332, 10188) \
+    X(10333, 10189) \
+    X(10334, 10190) \
+    X(10335, 10191) \
+    X(10336, 10192) \
+    X(10337, 10193) \
+    X(10338, 10194) \
+    X(10339, 10195) \
+    X(10340, 10196) \
+    X(10341, 10197) \
+    X(10342, 10198) \
+    X(10343, 10199) \
+    X(10344, 10200) \
+    X(10345, 10201) \
+    X(10346, 10202) \
+    X(10347, 10203) \
+    X(10348, 10204) \
+    X(10349, 10205) \
+    X(10350, 10206) \
+    X(10351, 10207) \
+    X(10352, 10208) \
+    X(10353, 10209) \
+    X(10354, 10210) \
+    X(10355, 10211) \
+    X(10356, 10212) \
+    X(10357, 10213) \
+    X(10358, 10214) \
+    X(10359, 10215) \
+    X(10360, 10216) \
+    X(10361, 10217) \
+    X(10362, 10218) \
+    X(10363, 10219) \
+    X(10364, 10220) \
+    X(10365, 10221) \
+    X(10366, 10222) \
+    X(10367, 10223) \
+    X(10368, 10224) \
+    X(10369, 10225) \
+    X(10370, 10226) \
+    X(10371, 10227) \
+    X(10372, 10228) \
+    X(10373, 10229) \
+    X(10374, 10230) \
+    X(10375, 10231) \
+    X(10376, 10232) \
+    X(10377, 10233) \
+    X(10378, 10234) \
+    X(10379, 10235) \
+    X(10380, 10236) \
+    X(10381, 10237) \
+    X(10382, 10238) \
+    X(10383, 10239) \
+    X(10384, 10240) \
+    X(10385, 10241) \
+    X(10386, 10242) \
+    X(10387, 10243) \
+    X(10388, 10244) \
+    X(10389, 10245) \
+    X(10390, 10246) \
+    X(10391, 10247) \
+    X(10392, 10248) \
+    X(10393, 10249) \
+    X(10394, 10250) \
+    X(10395, 10251) \
+    X(10396, 10252) \
+    X(10397, 10253) \
+    X(10398, 10254) \
+    X(10399, 10255) \
+    X(10400, 10256) \
+    X(10401, 10257) \
+    X(10402, 10258) \
+    X(10403, 10259) \
+    X(10404, 10260) \
+    X(10405, 10261) \
+    X(10406, 10262) \
+    X(10407, 10263) \
+    X(10408, 10264) \
+    X(10409, 10265) \
+    X(10410, 10266) \
+    X(10411, 10267) \
+    X(10412, 10268) \
+    X(10413, 10269) \
+    X(10414, 10270) \
+    X(10415, 10271) \
+    X(10416, 10272) \
+    X(10417, 10273) \
+    X(10418, 10274) \
+    X(10419, 10275) \
+    X(10420, 10276) \
+    X(10421, 10277) \
+    X(10422, 10278) \
+    X(10423, 10279) \
+    X(10424, 10280) \
+    X(10425, 10281) \
+    X(10426, 10282) \
+    X(10427, 10283) \
+    X(10428, 10284) \
+    X(10429, 10285) \
+    X(10430, 10286) \
+    X(10431, 10287) \
+    X(10432, 10288) \
 
 /* X(vr, member): fmi2SetRealInputDerivatives keeps der(input vr) in UCInputs.member (derivativeField) */
 #define UC_SCHEMA_DERIVATIVE_MEMBERS(X) \
@@ -160,6 +340,222 @@
     X(1185, pointAcceleration[45]) \
     X(1186, pointAcceleration[46]) \
     X(1187, pointAcceleration[47]) \
+    X(10073, bodyAcceleration[24]) \
+    X(10074, bodyAcceleration[25]) \
+    X(10075, bodyAcceleration[26]) \
+    X(10076, bodyAcceleration[30]) \
+    X(10077, bodyAcceleration[31]) \
+    X(10078, bodyAcceleration[32]) \
+    X(10079, bodyAcceleration[36]) \
+    X(10080, bodyAcceleration[37]) \
+    X(10081, bodyAcceleration[38]) \
+    X(10082, bodyAcceleration[42]) \
+    X(10083, bodyAcceleration[43]) \
+    X(10084, bodyAcceleration[44]) \
+    X(10085, bodyAcceleration[48]) \
+    X(10086, bodyAcceleration[49]) \
+    X(10087, bodyAcceleration[50]) \
+    X(10088, bodyAcceleration[54]) \
+    X(10089, bodyAcceleration[55]) \
+    X(10090, bodyAcceleration[56]) \
+    X(10091, bodyAcceleration[60]) \
+    X(10092, bodyAcceleration[61]) \
+    X(10093, bodyAcceleration[62]) \
+    X(10094, bodyAcceleration[66]) \
+    X(10095, bodyAcceleration[67]) \
+    X(10096, bodyAcceleration[68]) \
+    X(10097, bodyAcceleration[72]) \
+    X(10098, bodyAcceleration[73]) \
+    X(10099, bodyAcceleration[74]) \
+    X(10100, bodyAcceleration[78]) \
+    X(10101, bodyAcceleration[79]) \
+    X(10102, bodyAcceleration[80]) \
+    X(10103, bodyAcceleration[84]) \
+    X(10104, bodyAcceleration[85]) \
+    X(10105, bodyAcceleration[86]) \
+    X(10106, bodyAcceleration[90]) \
+    X(10107, bodyAcceleration[91]) \
+    X(10108, bodyAcceleration[92]) \
+    X(10109, bodyAcceleration[27]) \
+    X(10110, bodyAcceleration[28]) \
+    X(10111, bodyAcceleration[29]) \
+    X(10112, bodyAcceleration[33]) \
+    X(10113, bodyAcceleration[34]) \
+    X(10114, bodyAcceleration[35]) \
+    X(10115, bodyAcceleration[39]) \
+    X(10116, bodyAcceleration[40]) \
+    X(10117, bodyAcceleration[41]) \
+    X(10118, bodyAcceleration[45]) \
+    X(10119, bodyAcceleration[46]) \
+    X(10120, bodyAcceleration[47]) \
+    X(10121, bodyAcceleration[51]) \
+    X(10122, bodyAcceleration[52]) \
+    X(10123, bodyAcceleration[53]) \
+    X(10124, bodyAcceleration[57]) \
+    X(10125, bodyAcceleration[58]) \
+    X(10126, bodyAcceleration[59]) \
+    X(10127, bodyAcceleration[63]) \
+    X(10128, bodyAcceleration[64]) \
+    X(10129, bodyAcceleration[65]) \
+    X(10130, bodyAcceleration[69]) \
+    X(10131, bodyAcceleration[70]) \
+    X(10132, bodyAcceleration[71]) \
+    X(10133, bodyAcceleration[75]) \
+    X(10134, bodyAcceleration[76]) \
+    X(10135, bodyAcceleration[77]) \
+    X(10136, bodyAcceleration[81]) \
+    X(10137, bodyAcceleration[82]) \
+    X(10138, bodyAcceleration[83]) \
+    X(10139, bodyAcceleration[87]) \
+    X(10140, bodyAcceleration[88]) \
+    X(10141, bodyAcceleration[89]) \
+    X(10142, bodyAcceleration[93]) \
+    X(10143, bodyAcceleration[94]) \
+    X(10144, bodyAcceleration[95]) \
+    X(10289, pointAcceleration[48]) \
+    X(10290, pointAcceleration[49]) \
+    X(10291, pointAcceleration[50]) \
+    X(10292, pointAcceleration[51]) \
+    X(10293, pointAcceleration[52]) \
+    X(10294, pointAcceleration[53]) \
+    X(10295, pointAcceleration[54]) \
+    X(10296, pointAcceleration[55]) \
+    X(10297, pointAcceleration[56]) \
+    X(10298, pointAcceleration[57]) \
+    X(10299, pointAcceleration[58]) \
+    X(10300, pointAcceleration[59]) \
+    X(10301, pointAcceleration[60]) \
+    X(10302, pointAcceleration[61]) \
+    X(10303, pointAcceleration[62]) \
+    X(10304, pointAcceleration[63]) \
+    X(10305, pointAcceleration[64]) \
+    X(10306, pointAcceleration[65]) \
+    X(10307, pointAcceleration[66]) \
+    X(10308, pointAcceleration[67]) \
+    X(10309, pointAcceleration[68]) \
+    X(10310, pointAcceleration[69]) \
+    X(10311, pointAcceleration[70]) \
+    X(10312, pointAcceleration[71]) \
+    X(10313, pointAcceleration[72]) \
+    X(10314, pointAcceleration[73]) \
+    X(10315, pointAcceleration[74]) \
+    X(10316, pointAcceleration[75]) \
+    X(10317, pointAcceleration[76]) \
+    X(10318, pointAcceleration[77]) \
+    X(10319, pointAcceleration[78]) \
+    X(10320, pointAcceleration[79]) \
+    X(10321, pointAcceleration[80]) \
+    X(10322, pointAcceleration[81]) \
+    X(10323, pointAcceleration[82]) \
+    X(10324, pointAcceleration[83]) \
+    X(10325, pointAcceleration[84]) \
+    X(10326, pointAcceleration[85]) \
+    X(10327, pointAcceleration[86]) \
+    X(10328, pointAcceleration[87]) \
+    X(10329, pointAcceleration[88]) \
+    X(10330, pointAcceleration[89]) \
+    X(10331, pointAcceleration[90]) \
+    X(10332, pointAcceleration[91]) \
+    X(10333, pointAcceleration[92]) \
+    X(10334, pointAcceleration[93]) \
+    X(10335, pointAcceleration[94]) \
+    X(10336, pointAcceleration[95]) \
+    X(10337, pointAcceleration[96]) \
+    X(10338, pointAcceleration[97]) \
+    X(10339, pointAcceleration[98]) \
+    X(10340, pointAcceleration[99]) \
+    X(10341, pointAcceleration[100]) \
+    X(10342, pointAcceleration[101]) \
+    X(10343, pointAcceleration[102]) \
+    X(10344, pointAcceleration[103]) \
+    X(10345, pointAcceleration[104]) \
+    X(10346, pointAcceleration[105]) \
+    X(10347, pointAcceleration[106]) \
+    X(10348, pointAcceleration[107]) \
+    X(10349, pointAcceleration[108]) \
+    X(10350, pointAcceleration[109]) \
+    X(10351, pointAcceleration[110]) \
+    X(10352, pointAcceleration[111]) \
+    X(10353, pointAcceleration[112]) \
+    X(10354, pointAcceleration[113]) \
+    X(10355, pointAcceleration[114]) \
+    X(10356, pointAcceleration[115]) \
+    X(10357, pointAcceleration[116]) \
+    X(10358, pointAcceleration[117]) \
+    X(10359, pointAcceleration[118]) \
+    X(10360, pointAcceleration[119]) \
+    X(10361, pointAcceleration[120]) \
+    X(10362, pointAcceleration[121]) \
+    X(10363, pointAcceleration[122]) \
+    X(10364, pointAcceleration[123]) \
+    X(10365, pointAcceleration[124]) \
+    X(10366, pointAcceleration[125]) \
+    X(10367, pointAcceleration[126]) \
+    X(10368, pointAcceleration[127]) \
+    X(10369, pointAcceleration[128]) \
+    X(10370, pointAcceleration[129]) \
+    X(10371, pointAcceleration[130]) \
+    X(10372, pointAcceleration[131]) \
+    X(10373, pointAcceleration[132]) \
+    X(10374, pointAcceleration[133]) \
+    X(10375, pointAcceleration[134]) \
+    X(10376, pointAcceleration[135]) \
+    X(10377, pointAcceleration[136]) \
+    X(10378, pointAcceleration[137]) \
+    X(10379, pointAcceleration[138]) \
+    X(10380, pointAcceleration[139]) \
+    X(10381, pointAcceleration[140]) \
+    X(10382, pointAcceleration[141]) \
+    X(10383, pointAcceleration[142]) \
+    X(10384, pointAcceleration[143]) \
+    X(10385, pointAcceleration[144]) \
+    X(10386, pointAcceleration[145]) \
+    X(10387, pointAcceleration[146]) \
+    X(10388, pointAcceleration[147]) \
+    X(10389, pointAcceleration[148]) \
+    X(10390, pointAcceleration[149]) \
+    X(10391, pointAcceleration[150]) \
+    X(10392, pointAcceleration[151]) \
+    X(10393, pointAcceleration[152]) \
+    X(10394, pointAcceleration[153]) \
+    X(10395, pointAcceleration[154]) \
+    X(10396, pointAcceleration[155]) \
+    X(10397, pointAcceleration[156]) \
+    X(10398, pointAcceleration[157]) \
+    X(10399, pointAcceleration[158]) \
+    X(10400, pointAcceleration[159]) \
+    X(10401, pointAcceleration[160]) \
+    X(10402, pointAcceleration[161]) \
+    X(10403, pointAcceleration[162]) \
+    X(10404, pointAcceleration[163]) \
+    X(10405, pointAcceleration[164]) \
+    X(10406, pointAcceleration[165]) \
+    X(10407, pointAcceleration[166]) \
+    X(10408, pointAcceleration[167]) \
+    X(10409, pointAcceleration[168]) \
+    X(10410, pointAcceleration[169]) \
+    X(10411, pointAcceleration[170]) \
+    X(10412, pointAcceleration[171]) \
+    X(10413, pointAcceleration[172]) \
+    X(10414, pointAcceleration[173]) \
+    X(10415, pointAcceleration[174]) \
+    X(10416, pointAcceleration[175]) \
+    X(10417, pointAcceleration[176]) \
+    X(10418, pointAcceleration[177]) \
+    X(10419, pointAcceleration[178]) \
+    X(10420, pointAcceleration[179]) \
+    X(10421, pointAcceleration[180]) \
+    X(10422, pointAcceleration[181]) \
+    X(10423, pointAcceleration[182]) \
+    X(10424, pointAcceleration[183]) \
+    X(10425, pointAcceleration[184]) \
+    X(10426, pointAcceleration[185]) \
+    X(10427, pointAcceleration[186]) \
+    X(10428, pointAcceleration[187]) \
+    X(10429, pointAcceleration[188]) \
+    X(10430, pointAcceleration[189]) \
+    X(10431, pointAcceleration[190]) \
+    X(10432, pointAcceleration[191]) \
 
 /* X(vr, flag): UCInputs.flag is set to 1 when der(input vr) is given for the coming step (givenFlag) */
 #define UC_SCHEMA_DERIVATIVE_MEMBER_FLAGS(X) \
@@ -235,6 +631,222 @@
     X(1185, pointAccelerationGiven[15]) \
     X(1186, pointAccelerationGiven[15]) \
     X(1187, pointAccelerationGiven[15]) \
+    X(10073, bodyAccelerationGiven[4]) \
+    X(10074, bodyAccelerationGiven[4]) \
+    X(10075, bodyAccelerationGiven[4]) \
+    X(10076, bodyAccelerationGiven[5]) \
+    X(10077, bodyAccelerationGiven[5]) \
+    X(10078, bodyAccelerationGiven[5]) \
+    X(10079, bodyAccelerationGiven[6]) \
+    X(10080, bodyAccelerationGiven[6]) \
+    X(10081, bodyAccelerationGiven[6]) \
+    X(10082, bodyAccelerationGiven[7]) \
+    X(10083, bodyAccelerationGiven[7]) \
+    X(10084, bodyAccelerationGiven[7]) \
+    X(10085, bodyAccelerationGiven[8]) \
+    X(10086, bodyAccelerationGiven[8]) \
+    X(10087, bodyAccelerationGiven[8]) \
+    X(10088, bodyAccelerationGiven[9]) \
+    X(10089, bodyAccelerationGiven[9]) \
+    X(10090, bodyAccelerationGiven[9]) \
+    X(10091, bodyAccelerationGiven[10]) \
+    X(10092, bodyAccelerationGiven[10]) \
+    X(10093, bodyAccelerationGiven[10]) \
+    X(10094, bodyAccelerationGiven[11]) \
+    X(10095, bodyAccelerationGiven[11]) \
+    X(10096, bodyAccelerationGiven[11]) \
+    X(10097, bodyAccelerationGiven[12]) \
+    X(10098, bodyAccelerationGiven[12]) \
+    X(10099, bodyAccelerationGiven[12]) \
+    X(10100, bodyAccelerationGiven[13]) \
+    X(10101, bodyAccelerationGiven[13]) \
+    X(10102, bodyAccelerationGiven[13]) \
+    X(10103, bodyAccelerationGiven[14]) \
+    X(10104, bodyAccelerationGiven[14]) \
+    X(10105, bodyAccelerationGiven[14]) \
+    X(10106, bodyAccelerationGiven[15]) \
+    X(10107, bodyAccelerationGiven[15]) \
+    X(10108, bodyAccelerationGiven[15]) \
+    X(10109, bodyAccelerationGiven[4]) \
+    X(10110, bodyAccelerationGiven[4]) \
+    X(10111, bodyAccelerationGiven[4]) \
+    X(10112, bodyAccelerationGiven[5]) \
+    X(10113, bodyAccelerationGiven[5]) \
+    X(10114, bodyAccelerationGiven[5]) \
+    X(10115, bodyAccelerationGiven[6]) \
+    X(10116, bodyAccelerationGiven[6]) \
+    X(10117, bodyAccelerationGiven[6]) \
+    X(10118, bodyAccelerationGiven[7]) \
+    X(10119, bodyAccelerationGiven[7]) \
+    X(10120, bodyAccelerationGiven[7]) \
+    X(10121, bodyAccelerationGiven[8]) \
+    X(10122, bodyAccelerationGiven[8]) \
+    X(10123, bodyAccelerationGiven[8]) \
+    X(10124, bodyAccelerationGiven[9]) \
+    X(10125, bodyAccelerationGiven[9]) \
+    X(10126, bodyAccelerationGiven[9]) \
+    X(10127, bodyAccelerationGiven[10]) \
+    X(10128, bodyAccelerationGiven[10]) \
+    X(10129, bodyAccelerationGiven[10]) \
+    X(10130, bodyAccelerationGiven[11]) \
+    X(10131, bodyAccelerationGiven[11]) \
+    X(10132, bodyAccelerationGiven[11]) \
+    X(10133, bodyAccelerationGiven[12]) \
+    X(10134, bodyAccelerationGiven[12]) \
+    X(10135, bodyAccelerationGiven[12]) \
+    X(10136, bodyAccelerationGiven[13]) \
+    X(10137, bodyAccelerationGiven[13]) \
+    X(10138, bodyAccelerationGiven[13]) \
+    X(10139, bodyAccelerationGiven[14]) \
+    X(10140, bodyAccelerationGiven[14]) \
+    X(10141, bodyAccelerationGiven[14]) \
+    X(10142, bodyAccelerationGiven[15]) \
+    X(10143, bodyAccelerationGiven[15]) \
+    X(10144, bodyAccelerationGiven[15]) \
+    X(10289, pointAccelerationGiven[16]) \
+    X(10290, pointAccelerationGiven[16]) \
+    X(10291, pointAccelerationGiven[16]) \
+    X(10292, pointAccelerationGiven[17]) \
+    X(10293, pointAccelerationGiven[17]) \
+    X(10294, pointAccelerationGiven[17]) \
+    X(10295, pointAccelerationGiven[18]) \
+    X(10296, pointAccelerationGiven[18]) \
+    X(10297, pointAccelerationGiven[18]) \
+    X(10298, pointAccelerationGiven[19]) \
+    X(10299, pointAccelerationGiven[19]) \
+    X(10300, pointAccelerationGiven[19]) \
+    X(10301, pointAccelerationGiven[20]) \
+    X(10302, pointAccelerationGiven[20]) \
+    X(10303, pointAccelerationGiven[20]) \
+    X(10304, pointAccelerationGiven[21]) \
+    X(10305, pointAccelerationGiven[21]) \
+    X(10306, pointAccelerationGiven[21]) \
+    X(10307, pointAccelerationGiven[22]) \
+    X(10308, pointAccelerationGiven[22]) \
+    X(10309, pointAccelerationGiven[22]) \
+    X(10310, pointAccelerationGiven[23]) \
+    X(10311, pointAccelerationGiven[23]) \
+    X(10312, pointAccelerationGiven[23]) \
+    X(10313, pointAccelerationGiven[24]) \
+    X(10314, pointAccelerationGiven[24]) \
+    X(10315, pointAccelerationGiven[24]) \
+    X(10316, pointAccelerationGiven[25]) \
+    X(10317, pointAccelerationGiven[25]) \
+    X(10318, pointAccelerationGiven[25]) \
+    X(10319, pointAccelerationGiven[26]) \
+    X(10320, pointAccelerationGiven[26]) \
+    X(10321, pointAccelerationGiven[26]) \
+    X(10322, pointAccelerationGiven[27]) \
+    X(10323, pointAccelerationGiven[27]) \
+    X(10324, pointAccelerationGiven[27]) \
+    X(10325, pointAccelerationGiven[28]) \
+    X(10326, pointAccelerationGiven[28]) \
+    X(10327, pointAccelerationGiven[28]) \
+    X(10328, pointAccelerationGiven[29]) \
+    X(10329, pointAccelerationGiven[29]) \
+    X(10330, pointAccelerationGiven[29]) \
+    X(10331, pointAccelerationGiven[30]) \
+    X(10332, pointAccelerationGiven[30]) \
+    X(10333, pointAccelerationGiven[30]) \
+    X(10334, pointAccelerationGiven[31]) \
+    X(10335, pointAccelerationGiven[31]) \
+    X(10336, pointAccelerationGiven[31]) \
+    X(10337, pointAccelerationGiven[32]) \
+    X(10338, pointAccelerationGiven[32]) \
+    X(10339, pointAccelerationGiven[32]) \
+    X(10340, pointAccelerationGiven[33]) \
+    X(10341, pointAccelerationGiven[33]) \
+    X(10342, pointAccelerationGiven[33]) \
+    X(10343, pointAccelerationGiven[34]) \
+    X(10344, pointAccelerationGiven[34]) \
+    X(10345, pointAccelerationGiven[34]) \
+    X(10346, pointAccelerationGiven[35]) \
+    X(10347, pointAccelerationGiven[35]) \
+    X(10348, pointAccelerationGiven[35]) \
+    X(10349, pointAccelerationGiven[36]) \
+    X(10350, pointAccelerationGiven[36]) \
+    X(10351, pointAccelerationGiven[36]) \
+    X(10352, pointAccelerationGiven[37]) \
+    X(10353, pointAccelerationGiven[37]) \
+    X(10354, pointAccelerationGiven[37]) \
+    X(10355, pointAccelerationGiven[38]) \
+    X(10356, pointAccelerationGiven[38]) \
+    X(10357, pointAccelerationGiven[38]) \
+    X(10358, pointAccelerationGiven[39]) \
+    X(10359, pointAccelerationGiven[39]) \
+    X(10360, pointAccelerationGiven[39]) \
+    X(10361, pointAccelerationGiven[40]) \
+    X(10362, pointAccelerationGiven[40]) \
+    X(10363, pointAccelerationGiven[40]) \
+    X(10364, pointAccelerationGiven[41]) \
+    X(10365, pointAccelerationGiven[41]) \
+    X(10366, pointAccelerationGiven[41]) \
+    X(10367, pointAccelerationGiven[42]) \
+    X(10368, pointAccelerationGiven[42]) \
+    X(10369, pointAccelerationGiven[42]) \
+    X(10370, pointAccelerationGiven[43]) \
+    X(10371, pointAccelerationGiven[43]) \
+    X(10372, pointAccelerationGiven[43]) \
+    X(10373, pointAccelerationGiven[44]) \
+    X(10374, pointAccelerationGiven[44]) \
+    X(10375, pointAccelerationGiven[44]) \
+    X(10376, pointAccelerationGiven[45]) \
+    X(10377, pointAccelerationGiven[45]) \
+    X(10378, pointAccelerationGiven[45]) \
+    X(10379, pointAccelerationGiven[46]) \
+    X(10380, pointAccelerationGiven[46]) \
+    X(10381, pointAccelerationGiven[46]) \
+    X(10382, pointAccelerationGiven[47]) \
+    X(10383, pointAccelerationGiven[47]) \
+    X(10384, pointAccelerationGiven[47]) \
+    X(10385, pointAccelerationGiven[48]) \
+    X(10386, pointAccelerationGiven[48]) \
+    X(10387, pointAccelerationGiven[48]) \
+    X(10388, pointAccelerationGiven[49]) \
+    X(10389, pointAccelerationGiven[49]) \
+    X(10390, pointAccelerationGiven[49]) \
+    X(10391, pointAccelerationGiven[50]) \
+    X(10392, pointAccelerationGiven[50]) \
+    X(10393, pointAccelerationGiven[50]) \
+    X(10394, pointAccelerationGiven[51]) \
+    X(10395, pointAccelerationGiven[51]) \
+    X(10396, pointAccelerationGiven[51]) \
+    X(10397, pointAccelerationGiven[52]) \
+    X(10398, pointAccelerationGiven[52]) \
+    X(10399, pointAccelerationGiven[52]) \
+    X(10400, pointAccelerationGiven[53]) \
+    X(10401, pointAccelerationGiven[53]) \
+    X(10402, pointAccelerationGiven[53]) \
+    X(10403, pointAccelerationGiven[54]) \
+    X(10404, pointAccelerationGiven[54]) \
+    X(10405, pointAccelerationGiven[54]) \
+    X(10406, pointAccelerationGiven[55]) \
+    X(10407, pointAccelerationGiven[55]) \
+    X(10408, pointAccelerationGiven[55]) \
+    X(10409, pointAccelerationGiven[56]) \
+    X(10410, pointAccelerationGiven[56]) \
+    X(10411, pointAccelerationGiven[56]) \
+    X(10412, pointAccelerationGiven[57]) \
+    X(10413, pointAccelerationGiven[57]) \
+    X(10414, pointAccelerationGiven[57]) \
+    X(10415, pointAccelerationGiven[58]) \
+    X(10416, pointAccelerationGiven[58]) \
+    X(10417, pointAccelerationGiven[58]) \
+    X(10418, pointAccelerationGiven[59]) \
+    X(10419, pointAccelerationGiven[59]) \
+    X(10420, pointAccelerationGiven[59]) \
+    X(10421, pointAccelerationGiven[60]) \
+    X(10422, pointAccelerationGiven[60]) \
+    X(10423, pointAccelerationGiven[60]) \
+    X(10424, pointAccelerationGiven[61]) \
+    X(10425, pointAccelerationGiven[61]) \
+    X(10426, pointAccelerationGiven[61]) \
+    X(10427, pointAccelerationGiven[62]) \
+    X(10428, pointAccelerationGiven[62]) \
+    X(10429, pointAccelerationGiven[62]) \
+    X(10430, pointAccelerationGiven[63]) \
+    X(10431, pointAccelerationGiven[63]) \
+    X(10432, pointAccelerationGiven[63]) \
 
 /* X(vr, flag, component): the input vr is another input's derivative, given for the coming step either as its value or through fmi2SetRealInputDerivatives; UCInputs.flag records which, per component (givenFlag) */
 #define UC_SCHEMA_DERIVATIVE_INPUT_FLAGS(X) \
@@ -391,6 +1003,438 @@
     X(2399) \
     X(2400) \
     X(2401) \
+    X(20265) \
+    X(20266) \
+    X(20267) \
+    X(20268) \
+    X(20269) \
+    X(20270) \
+    X(20271) \
+    X(20272) \
+    X(20273) \
+    X(20274) \
+    X(20275) \
+    X(20276) \
+    X(20277) \
+    X(20278) \
+    X(20279) \
+    X(20280) \
+    X(20281) \
+    X(20282) \
+    X(20283) \
+    X(20284) \
+    X(20285) \
+    X(20286) \
+    X(20287) \
+    X(20288) \
+    X(20289) \
+    X(20290) \
+    X(20291) \
+    X(20292) \
+    X(20293) \
+    X(20294) \
+    X(20295) \
+    X(20296) \
+    X(20297) \
+    X(20298) \
+    X(20299) \
+    X(20300) \
+    X(20301) \
+    X(20302) \
+    X(20303) \
+    X(20304) \
+    X(20305) \
+    X(20306) \
+    X(20307) \
+    X(20308) \
+    X(20309) \
+    X(20310) \
+    X(20311) \
+    X(20312) \
+    X(20313) \
+    X(20314) \
+    X(20315) \
+    X(20316) \
+    X(20317) \
+    X(20318) \
+    X(20319) \
+    X(20320) \
+    X(20321) \
+    X(20322) \
+    X(20323) \
+    X(20324) \
+    X(20325) \
+    X(20326) \
+    X(20327) \
+    X(20328) \
+    X(20329) \
+    X(20330) \
+    X(20331) \
+    X(20332) \
+    X(20333) \
+    X(20334) \
+    X(20335) \
+    X(20336) \
+    X(20337) \
+    X(20338) \
+    X(20339) \
+    X(20340) \
+    X(20341) \
+    X(20342) \
+    X(20343) \
+    X(20344) \
+    X(20345) \
+    X(20346) \
+    X(20347) \
+    X(20348) \
+    X(20349) \
+    X(20350) \
+    X(20351) \
+    X(20352) \
+    X(20353) \
+    X(20354) \
+    X(20355) \
+    X(20356) \
+    X(20357) \
+    X(20358) \
+    X(20359) \
+    X(20360) \
+    X(20361) \
+    X(20362) \
+    X(20363) \
+    X(20364) \
+    X(20365) \
+    X(20366) \
+    X(20367) \
+    X(20368) \
+    X(20369) \
+    X(20370) \
+    X(20371) \
+    X(20372) \
+    X(20373) \
+    X(20374) \
+    X(20375) \
+    X(20376) \
+    X(20377) \
+    X(20378) \
+    X(20379) \
+    X(20380) \
+    X(20381) \
+    X(20382) \
+    X(20383) \
+    X(20384) \
+    X(20385) \
+    X(20386) \
+    X(20387) \
+    X(20388) \
+    X(20389) \
+    X(20390) \
+    X(20391) \
+    X(20392) \
+    X(20393) \
+    X(20394) \
+    X(20395) \
+    X(20396) \
+    X(20397) \
+    X(20398) \
+    X(20399) \
+    X(20400) \
+    X(20401) \
+    X(20402) \
+    X(20403) \
+    X(20404) \
+    X(20405) \
+    X(20406) \
+    X(20407) \
+    X(20408) \
+    X(20409) \
+    X(20410) \
+    X(20411) \
+    X(20412) \
+    X(20413) \
+    X(20414) \
+    X(20415) \
+    X(20416) \
+    X(20417) \
+    X(20418) \
+    X(20419) \
+    X(20420) \
+    X(20421) \
+    X(20422) \
+    X(20423) \
+    X(20424) \
+    X(20425) \
+    X(20426) \
+    X(20427) \
+    X(20428) \
+    X(20429) \
+    X(20430) \
+    X(20431) \
+    X(20432) \
+    X(20433) \
+    X(20434) \
+    X(20435) \
+    X(20436) \
+    X(20437) \
+    X(20438) \
+    X(20439) \
+    X(20440) \
+    X(20441) \
+    X(20442) \
+    X(20443) \
+    X(20444) \
+    X(20445) \
+    X(20446) \
+    X(20447) \
+    X(20448) \
+    X(20449) \
+    X(20450) \
+    X(20451) \
+    X(20452) \
+    X(20453) \
+    X(20454) \
+    X(20455) \
+    X(20456) \
+    X(20457) \
+    X(20458) \
+    X(20459) \
+    X(20460) \
+    X(20461) \
+    X(20462) \
+    X(20463) \
+    X(20464) \
+    X(20465) \
+    X(20466) \
+    X(20467) \
+    X(20468) \
+    X(20469) \
+    X(20470) \
+    X(20471) \
+    X(20472) \
+    X(20473) \
+    X(20474) \
+    X(20475) \
+    X(20476) \
+    X(20477) \
+    X(20478) \
+    X(20479) \
+    X(20480) \
+    X(20481) \
+    X(20482) \
+    X(20483) \
+    X(20484) \
+    X(20485) \
+    X(20486) \
+    X(20487) \
+    X(20488) \
+    X(20489) \
+    X(20490) \
+    X(20491) \
+    X(20492) \
+    X(20493) \
+    X(20494) \
+    X(20495) \
+    X(20496) \
+    X(20497) \
+    X(20498) \
+    X(20499) \
+    X(20500) \
+    X(20501) \
+    X(20502) \
+    X(20503) \
+    X(20504) \
+    X(20505) \
+    X(20506) \
+    X(20507) \
+    X(20508) \
+    X(20509) \
+    X(20510) \
+    X(20511) \
+    X(20512) \
+    X(20513) \
+    X(20514) \
+    X(20515) \
+    X(20516) \
+    X(20517) \
+    X(20518) \
+    X(20519) \
+    X(20520) \
+    X(20521) \
+    X(20522) \
+    X(20523) \
+    X(20524) \
+    X(20525) \
+    X(20526) \
+    X(20527) \
+    X(20528) \
+    X(20529) \
+    X(20530) \
+    X(20531) \
+    X(20532) \
+    X(20533) \
+    X(20534) \
+    X(20535) \
+    X(20536) \
+    X(20537) \
+    X(20538) \
+    X(20539) \
+    X(20540) \
+    X(20541) \
+    X(20542) \
+    X(20543) \
+    X(20544) \
+    X(20545) \
+    X(20546) \
+    X(20547) \
+    X(20548) \
+    X(20549) \
+    X(20550) \
+    X(20551) \
+    X(20552) \
+    X(20553) \
+    X(20554) \
+    X(20555) \
+    X(20556) \
+    X(20557) \
+    X(20558) \
+    X(20559) \
+    X(20560) \
+    X(20561) \
+    X(20562) \
+    X(20563) \
+    X(20564) \
+    X(20565) \
+    X(20566) \
+    X(20567) \
+    X(20568) \
+    X(20569) \
+    X(20570) \
+    X(20571) \
+    X(20572) \
+    X(20573) \
+    X(20574) \
+    X(20575) \
+    X(20576) \
+    X(20577) \
+    X(20578) \
+    X(20579) \
+    X(20580) \
+    X(20581) \
+    X(20582) \
+    X(20583) \
+    X(20584) \
+    X(20585) \
+    X(20586) \
+    X(20587) \
+    X(20588) \
+    X(20589) \
+    X(20590) \
+    X(20591) \
+    X(20592) \
+    X(20593) \
+    X(20594) \
+    X(20595) \
+    X(20596) \
+    X(20597) \
+    X(20598) \
+    X(20599) \
+    X(20600) \
+    X(20601) \
+    X(20602) \
+    X(20603) \
+    X(20604) \
+    X(20605) \
+    X(20606) \
+    X(20607) \
+    X(20608) \
+    X(20609) \
+    X(20610) \
+    X(20611) \
+    X(20612) \
+    X(20613) \
+    X(20614) \
+    X(20615) \
+    X(20616) \
+    X(20617) \
+    X(20618) \
+    X(20619) \
+    X(20620) \
+    X(20621) \
+    X(20622) \
+    X(20623) \
+    X(20624) \
+    X(20625) \
+    X(20626) \
+    X(20627) \
+    X(20628) \
+    X(20629) \
+    X(20630) \
+    X(20631) \
+    X(20632) \
+    X(20633) \
+    X(20634) \
+    X(20635) \
+    X(20636) \
+    X(20637) \
+    X(20638) \
+    X(20639) \
+    X(20640) \
+    X(20641) \
+    X(20642) \
+    X(20643) \
+    X(20644) \
+    X(20645) \
+    X(20646) \
+    X(20647) \
+    X(20648) \
+    X(20649) \
+    X(20650) \
+    X(20651) \
+    X(20652) \
+    X(20653) \
+    X(20654) \
+    X(20655) \
+    X(20656) \
+    X(20657) \
+    X(20658) \
+    X(20659) \
+    X(20660) \
+    X(20661) \
+    X(20662) \
+    X(20663) \
+    X(20664) \
+    X(20665) \
+    X(20666) \
+    X(20667) \
+    X(20668) \
+    X(20669) \
+    X(20670) \
+    X(20671) \
+    X(20672) \
+    X(20673) \
+    X(20674) \
+    X(20675) \
+    X(20676) \
+    X(20677) \
+    X(20678) \
+    X(20679) \
+    X(20680) \
+    X(20681) \
+    X(20682) \
+    X(20683) \
+    X(20684) \
+    X(20685) \
+    X(20686) \
+    X(20687) \
+    X(20688) \
+    X(20689) \
+    X(20690) \
+    X(20691) \
+    X(20692) \
+    X(20693) \
+    X(20694) \
+    X(20695) \
+    X(20696) \
 
 /* X(vr, MATRIX, column, body): the input vr is column `column` of the directional derivatives MATRIX (INTERFACE: uc_interface_derivative's seed; BODY: uc_body_derivatives of the 1-based body) */
 #define UC_SCHEMA_DERIVATIVE_COLUMNS(X) \
@@ -476,6 +1520,198 @@
     X(1201, BODY, 13, 4) \
     X(1202, BODY, 14, 4) \
     X(1203, BODY, 15, 4) \
+    X(10001, BODY, 0, 5) \
+    X(10002, BODY, 1, 5) \
+    X(10003, BODY, 2, 5) \
+    X(10004, BODY, 0, 6) \
+    X(10005, BODY, 1, 6) \
+    X(10006, BODY, 2, 6) \
+    X(10007, BODY, 0, 7) \
+    X(10008, BODY, 1, 7) \
+    X(10009, BODY, 2, 7) \
+    X(10010, BODY, 0, 8) \
+    X(10011, BODY, 1, 8) \
+    X(10012, BODY, 2, 8) \
+    X(10013, BODY, 0, 9) \
+    X(10014, BODY, 1, 9) \
+    X(10015, BODY, 2, 9) \
+    X(10016, BODY, 0, 10) \
+    X(10017, BODY, 1, 10) \
+    X(10018, BODY, 2, 10) \
+    X(10019, BODY, 0, 11) \
+    X(10020, BODY, 1, 11) \
+    X(10021, BODY, 2, 11) \
+    X(10022, BODY, 0, 12) \
+    X(10023, BODY, 1, 12) \
+    X(10024, BODY, 2, 12) \
+    X(10025, BODY, 0, 13) \
+    X(10026, BODY, 1, 13) \
+    X(10027, BODY, 2, 13) \
+    X(10028, BODY, 0, 14) \
+    X(10029, BODY, 1, 14) \
+    X(10030, BODY, 2, 14) \
+    X(10031, BODY, 0, 15) \
+    X(10032, BODY, 1, 15) \
+    X(10033, BODY, 2, 15) \
+    X(10034, BODY, 0, 16) \
+    X(10035, BODY, 1, 16) \
+    X(10036, BODY, 2, 16) \
+    X(10037, BODY, 3, 5) \
+    X(10038, BODY, 4, 5) \
+    X(10039, BODY, 5, 5) \
+    X(10040, BODY, 3, 6) \
+    X(10041, BODY, 4, 6) \
+    X(10042, BODY, 5, 6) \
+    X(10043, BODY, 3, 7) \
+    X(10044, BODY, 4, 7) \
+    X(10045, BODY, 5, 7) \
+    X(10046, BODY, 3, 8) \
+    X(10047, BODY, 4, 8) \
+    X(10048, BODY, 5, 8) \
+    X(10049, BODY, 3, 9) \
+    X(10050, BODY, 4, 9) \
+    X(10051, BODY, 5, 9) \
+    X(10052, BODY, 3, 10) \
+    X(10053, BODY, 4, 10) \
+    X(10054, BODY, 5, 10) \
+    X(10055, BODY, 3, 11) \
+    X(10056, BODY, 4, 11) \
+    X(10057, BODY, 5, 11) \
+    X(10058, BODY, 3, 12) \
+    X(10059, BODY, 4, 12) \
+    X(10060, BODY, 5, 12) \
+    X(10061, BODY, 3, 13) \
+    X(10062, BODY, 4, 13) \
+    X(10063, BODY, 5, 13) \
+    X(10064, BODY, 3, 14) \
+    X(10065, BODY, 4, 14) \
+    X(10066, BODY, 5, 14) \
+    X(10067, BODY, 3, 15) \
+    X(10068, BODY, 4, 15) \
+    X(10069, BODY, 5, 15) \
+    X(10070, BODY, 3, 16) \
+    X(10071, BODY, 4, 16) \
+    X(10072, BODY, 5, 16) \
+    X(10073, BODY, 6, 5) \
+    X(10074, BODY, 7, 5) \
+    X(10075, BODY, 8, 5) \
+    X(10076, BODY, 6, 6) \
+    X(10077, BODY, 7, 6) \
+    X(10078, BODY, 8, 6) \
+    X(10079, BODY, 6, 7) \
+    X(10080, BODY, 7, 7) \
+    X(10081, BODY, 8, 7) \
+    X(10082, BODY, 6, 8) \
+    X(10083, BODY, 7, 8) \
+    X(10084, BODY, 8, 8) \
+    X(10085, BODY, 6, 9) \
+    X(10086, BODY, 7, 9) \
+    X(10087, BODY, 8, 9) \
+    X(10088, BODY, 6, 10) \
+    X(10089, BODY, 7, 10) \
+    X(10090, BODY, 8, 10) \
+    X(10091, BODY, 6, 11) \
+    X(10092, BODY, 7, 11) \
+    X(10093, BODY, 8, 11) \
+    X(10094, BODY, 6, 12) \
+    X(10095, BODY, 7, 12) \
+    X(10096, BODY, 8, 12) \
+    X(10097, BODY, 6, 13) \
+    X(10098, BODY, 7, 13) \
+    X(10099, BODY, 8, 13) \
+    X(10100, BODY, 6, 14) \
+    X(10101, BODY, 7, 14) \
+    X(10102, BODY, 8, 14) \
+    X(10103, BODY, 6, 15) \
+    X(10104, BODY, 7, 15) \
+    X(10105, BODY, 8, 15) \
+    X(10106, BODY, 6, 16) \
+    X(10107, BODY, 7, 16) \
+    X(10108, BODY, 8, 16) \
+    X(10109, BODY, 9, 5) \
+    X(10110, BODY, 10, 5) \
+    X(10111, BODY, 11, 5) \
+    X(10112, BODY, 9, 6) \
+    X(10113, BODY, 10, 6) \
+    X(10114, BODY, 11, 6) \
+    X(10115, BODY, 9, 7) \
+    X(10116, BODY, 10, 7) \
+    X(10117, BODY, 11, 7) \
+    X(10118, BODY, 9, 8) \
+    X(10119, BODY, 10, 8) \
+    X(10120, BODY, 11, 8) \
+    X(10121, BODY, 9, 9) \
+    X(10122, BODY, 10, 9) \
+    X(10123, BODY, 11, 9) \
+    X(10124, BODY, 9, 10) \
+    X(10125, BODY, 10, 10) \
+    X(10126, BODY, 11, 10) \
+    X(10127, BODY, 9, 11) \
+    X(10128, BODY, 10, 11) \
+    X(10129, BODY, 11, 11) \
+    X(10130, BODY, 9, 12) \
+    X(10131, BODY, 10, 12) \
+    X(10132, BODY, 11, 12) \
+    X(10133, BODY, 9, 13) \
+    X(10134, BODY, 10, 13) \
+    X(10135, BODY, 11, 13) \
+    X(10136, BODY, 9, 14) \
+    X(10137, BODY, 10, 14) \
+    X(10138, BODY, 11, 14) \
+    X(10139, BODY, 9, 15) \
+    X(10140, BODY, 10, 15) \
+    X(10141, BODY, 11, 15) \
+    X(10142, BODY, 9, 16) \
+    X(10143, BODY, 10, 16) \
+    X(10144, BODY, 11, 16) \
+    X(10433, BODY, 12, 5) \
+    X(10434, BODY, 13, 5) \
+    X(10435, BODY, 14, 5) \
+    X(10436, BODY, 15, 5) \
+    X(10437, BODY, 12, 6) \
+    X(10438, BODY, 13, 6) \
+    X(10439, BODY, 14, 6) \
+    X(10440, BODY, 15, 6) \
+    X(10441, BODY, 12, 7) \
+    X(10442, BODY, 13, 7) \
+    X(10443, BODY, 14, 7) \
+    X(10444, BODY, 15, 7) \
+    X(10445, BODY, 12, 8) \
+    X(10446, BODY, 13, 8) \
+    X(10447, BODY, 14, 8) \
+    X(10448, BODY, 15, 8) \
+    X(10449, BODY, 12, 9) \
+    X(10450, BODY, 13, 9) \
+    X(10451, BODY, 14, 9) \
+    X(10452, BODY, 15, 9) \
+    X(10453, BODY, 12, 10) \
+    X(10454, BODY, 13, 10) \
+    X(10455, BODY, 14, 10) \
+    X(10456, BODY, 15, 10) \
+    X(10457, BODY, 12, 11) \
+    X(10458, BODY, 13, 11) \
+    X(10459, BODY, 14, 11) \
+    X(10460, BODY, 15, 11) \
+    X(10461, BODY, 12, 12) \
+    X(10462, BODY, 13, 12) \
+    X(10463, BODY, 14, 12) \
+    X(10464, BODY, 15, 12) \
+    X(10465, BODY, 12, 13) \
+    X(10466, BODY, 13, 13) \
+    X(10467, BODY, 14, 13) \
+    X(10468, BODY, 15, 13) \
+    X(10469, BODY, 12, 14) \
+    X(10470, BODY, 13, 14) \
+    X(10471, BODY, 14, 14) \
+    X(10472, BODY, 15, 14) \
+    X(10473, BODY, 12, 15) \
+    X(10474, BODY, 13, 15) \
+    X(10475, BODY, 14, 15) \
+    X(10476, BODY, 15, 15) \
+    X(10477, BODY, 12, 16) \
+    X(10478, BODY, 13, 16) \
+    X(10479, BODY, 14, 16) \
+    X(10480, BODY, 15, 16) \
 
 /* X(vr, MATRIX, row, body): the output vr is row `row` of the directional derivatives MATRIX */
 #define UC_SCHEMA_DERIVATIVE_ROWS(X) \
@@ -509,6 +1745,78 @@
     X(2255, BODY, 3, 4) \
     X(2256, BODY, 4, 4) \
     X(2257, BODY, 5, 4) \
+    X(20193, BODY, 0, 5) \
+    X(20194, BODY, 1, 5) \
+    X(20195, BODY, 2, 5) \
+    X(20196, BODY, 0, 6) \
+    X(20197, BODY, 1, 6) \
+    X(20198, BODY, 2, 6) \
+    X(20199, BODY, 0, 7) \
+    X(20200, BODY, 1, 7) \
+    X(20201, BODY, 2, 7) \
+    X(20202, BODY, 0, 8) \
+    X(20203, BODY, 1, 8) \
+    X(20204, BODY, 2, 8) \
+    X(20205, BODY, 0, 9) \
+    X(20206, BODY, 1, 9) \
+    X(20207, BODY, 2, 9) \
+    X(20208, BODY, 0, 10) \
+    X(20209, BODY, 1, 10) \
+    X(20210, BODY, 2, 10) \
+    X(20211, BODY, 0, 11) \
+    X(20212, BODY, 1, 11) \
+    X(20213, BODY, 2, 11) \
+    X(20214, BODY, 0, 12) \
+    X(20215, BODY, 1, 12) \
+    X(20216, BODY, 2, 12) \
+    X(20217, BODY, 0, 13) \
+    X(20218, BODY, 1, 13) \
+    X(20219, BODY, 2, 13) \
+    X(20220, BODY, 0, 14) \
+    X(20221, BODY, 1, 14) \
+    X(20222, BODY, 2, 14) \
+    X(20223, BODY, 0, 15) \
+    X(20224, BODY, 1, 15) \
+    X(20225, BODY, 2, 15) \
+    X(20226, BODY, 0, 16) \
+    X(20227, BODY, 1, 16) \
+    X(20228, BODY, 2, 16) \
+    X(20229, BODY, 3, 5) \
+    X(20230, BODY, 4, 5) \
+    X(20231, BODY, 5, 5) \
+    X(20232, BODY, 3, 6) \
+    X(20233, BODY, 4, 6) \
+    X(20234, BODY, 5, 6) \
+    X(20235, BODY, 3, 7) \
+    X(20236, BODY, 4, 7) \
+    X(20237, BODY, 5, 7) \
+    X(20238, BODY, 3, 8) \
+    X(20239, BODY, 4, 8) \
+    X(20240, BODY, 5, 8) \
+    X(20241, BODY, 3, 9) \
+    X(20242, BODY, 4, 9) \
+    X(20243, BODY, 5, 9) \
+    X(20244, BODY, 3, 10) \
+    X(20245, BODY, 4, 10) \
+    X(20246, BODY, 5, 10) \
+    X(20247, BODY, 3, 11) \
+    X(20248, BODY, 4, 11) \
+    X(20249, BODY, 5, 11) \
+    X(20250, BODY, 3, 12) \
+    X(20251, BODY, 4, 12) \
+    X(20252, BODY, 5, 12) \
+    X(20253, BODY, 3, 13) \
+    X(20254, BODY, 4, 13) \
+    X(20255, BODY, 5, 13) \
+    X(20256, BODY, 3, 14) \
+    X(20257, BODY, 4, 14) \
+    X(20258, BODY, 5, 14) \
+    X(20259, BODY, 3, 15) \
+    X(20260, BODY, 4, 15) \
+    X(20261, BODY, 5, 15) \
+    X(20262, BODY, 3, 16) \
+    X(20263, BODY, 4, 16) \
+    X(20264, BODY, 5, 16) \
 
 #define UC_SCHEMA_BODY_DERIVATIVE_COLUMNS 16
 #define UC_SCHEMA_BODY_DERIVATIVE_COLUMNS_TEXT "body[k].x/y/z, body[k].roll/pitch/yaw, body[k].vx/vy/vz, body[k].wx/wy/wz and body[k].q0/q1/q2/q3"

@@ -70,11 +70,6 @@ bool MooringSystem::split_line(int k, double position, MooringFailure& f, std::s
                 "anchor or another held end (give failure.point instead)";
         return false;
     }
-    if (deck_.lines.size() >= UC_MAX_LINES) {
-        error = "the system has " + std::to_string(deck_.lines.size()) + " lines: a break along one makes it two, and a "
-                "system holds at most " + std::to_string(UC_MAX_LINES);
-        return false;
-    }
     const double length = l.sections[0].length;
     if (!(position < length)) {
         char text[200];
@@ -130,7 +125,7 @@ void MooringSystem::split_outputs() {
         const UCOutputs& up = lines_[s.upper]->outputs();
         const UCOutputs& low = lines_[s.lower]->outputs();
         const double fairlead = up.towTension, anchor = low.endTension;
-        UCMooringLine& out = outputs_.mooringLine[l.deckLines[0]];
+        UCMooringLine& out = line_output(l.deckLines[0]);
         LineStrength strength = line_strength(*lines_[s.upper], 0, 0);
         strength.maxUtilisation = std::max(strength.maxUtilisation, line_strength(*lines_[s.lower], 0, 0).maxUtilisation);
         set_mooring_line_outputs(out, l.flipped[0] ? anchor : fairlead, l.flipped[0] ? fairlead : anchor, up, strength);
@@ -159,7 +154,7 @@ void MooringSystem::failure_outputs() {
     for (size_t f = 0; f < failures_.size(); ++f) {
         if (failureState_[f].broken == 0.0) continue;
         for (const MooringFailure::End& e : failures_[f].ends) {
-            UCMooringLine& out = outputs_.mooringLine[e.deckLine];
+            UCMooringLine& out = line_output(e.deckLine);
             if (out.broken != 0.0 && out.breakTime <= failureState_[f].time) continue;  // broke before, at its other end
             out.broken = 1.0;
             out.breakTime = failureState_[f].time;

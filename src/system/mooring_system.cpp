@@ -17,14 +17,15 @@ namespace {
 
 constexpr std::uint32_t kSystemMagic = 0x5543534D;  // "UCSM"
 // 4: the failures' states (FailureState) after the last inputs, the nodes of the broken ones with the others
-constexpr std::uint32_t kSystemVersion = 4;
+// 5: sized by the deck: the lines' state sizes after the header (as many as the system has lines), the
+//    outputs of the deck's lines beyond UC_MAX_LINES after the system's outputs
+constexpr std::uint32_t kSystemVersion = 5;
 
 struct SystemHeader {
     std::uint32_t magic, version;
     std::int32_t lines, bodies, nodes, failures;
     double lastStep;
-    std::uint64_t lineSize[UC_MAX_LINES];
-    std::uint64_t described;  // values of the system's description that follow the header
+    std::uint64_t described;  // values of the system's description that follow the line sizes
 };
 
 Vec3 vec3(const double v[3]) { return Vec3(v[0], v[1], v[2]); }
@@ -146,6 +147,7 @@ bool MooringSystem::build(std::string& error) {
         describe_line(static_cast<int>(k), p);
     }
     deck0_ = deck_;
+    moreLines_.assign(static_cast<size_t>(std::max(0, deck_.deckLines - UC_MAX_LINES)), UCMooringLine{});
     describe_nodes();
     references_.assign(static_cast<size_t>(deck_.bodies), DrivenEnd());
     for (const MooringNode& n : deck_.nodes) {
@@ -429,6 +431,7 @@ void MooringSystem::update_outputs() {
     std::memset(outputs_.mooringLine, 0, sizeof outputs_.mooringLine);
     std::memset(outputs_.bodyLoad, 0, sizeof outputs_.bodyLoad);
     std::memset(outputs_.pointLoad, 0, sizeof outputs_.pointLoad);
+    std::fill(moreLines_.begin(), moreLines_.end(), UCMooringLine{});
     for (size_t k = 0; k < lines_.size(); ++k) {
         const UCOutputs& o = lines_[k]->outputs();
         const MooringDeckLine& l = deck_.lines[k];
@@ -444,7 +447,7 @@ void MooringSystem::update_outputs() {
             }
             const double start = j == 0 ? o.towTension : lines_[k]->element_end_tension(first, false);
             const double end = j + 1 == sections ? o.endTension : lines_[k]->element_end_tension(last, true);
-            set_mooring_line_outputs(outputs_.mooringLine[l.deckLines[j]], l.flipped[j] ? end : start,
+            set_mooring_line_outputs(line_output(l.deckLines[j]), l.flipped[j] ? end : start,
                                      l.flipped[j] ? start : end, o, line_strength(*lines_[k], j, j));
         }
         // the fairlead where the line's tow point stands, the far end where its end does
@@ -1269,8 +1272,9 @@ bool MooringSystem::body_derivatives(int b, double d[6][UC_BODY_DERIVATIVE_INPUT
 }
 
 size_t MooringSystem::state_size() const {
-    size_t size = sizeof(SystemHeader) + description_.size() * sizeof(double) +
-                  references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs) +
+    size_t size = sizeof(SystemHeader) + lines_.size() * sizeof(std::uint64_t) + description_.size() * sizeof(double) +
+                  references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) +
+                  moreLines_.size() * sizeof(UCMooringLine) + sizeof(UCInputs) +
                   failureState_.size() * sizeof(FailureState) + motion_.size() * sizeof(FreeNodeMotion);
     for (const auto& line : lines_) size += line->state_size();
     return size;
@@ -1285,11 +1289,15 @@ void MooringSystem::save_state(void* buffer) {
     header.nodes = static_cast<std::int32_t>(motion_.size());
     header.failures = static_cast<std::int32_t>(failureState_.size());
     header.lastStep = lastStep_;
-    for (size_t k = 0; k < lines_.size(); ++k) header.lineSize[k] = lines_[k]->state_size();
     header.described = description_.size();
     auto* out = static_cast<unsigned char*>(buffer);
     std::memcpy(out, &header, sizeof header);
     out += sizeof header;
+    for (const auto& line : lines_) {
+        const std::uint64_t lineSize = line->state_size();
+        std::memcpy(out, &lineSize, sizeof lineSize);
+        out += sizeof lineSize;
+    }
     for (const DescribedValue& d : description_) {
         std::memcpy(out, &d.value, sizeof d.value);
         out += sizeof d.value;
@@ -1302,6 +1310,8 @@ void MooringSystem::save_state(void* buffer) {
     }
     std::memcpy(out, &outputs_, sizeof outputs_);
     out += sizeof outputs_;
+    if (!moreLines_.empty()) std::memcpy(out, moreLines_.data(), moreLines_.size() * sizeof(UCMooringLine));
+    out += moreLines_.size() * sizeof(UCMooringLine);
     std::memcpy(out, &lastInputs_, sizeof lastInputs_);
     out += sizeof lastInputs_;
     out = save_failures(out);
@@ -1352,14 +1362,16 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     if (header.version != kSystemVersion) {
         error = "saved state is a mooring system's state of format version " + std::to_string(header.version) +
                 ", this FMU reads version " + std::to_string(kSystemVersion) +
-                (header.version < kSystemVersion ? " (version 4 added the line failures' state)" : "") +
+                (header.version < kSystemVersion ? " (version 4 added the line failures' state, 5 sized the state by the deck)" : "") +
                 ": it cannot be restored; initialize anew (or restore with the FMU that saved it)";
         return false;
     }
     // the free nodes: the deck's and one per broken failure
     const size_t failureBytes = failureState_.size() * sizeof(FailureState);
-    const size_t failureAt = sizeof header + description_.size() * sizeof(double) +
-                             references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) + sizeof(UCInputs);
+    const size_t sizesAt = sizeof header, describedAt = sizesAt + lines_.size() * sizeof(std::uint64_t);
+    const size_t failureAt = describedAt + description_.size() * sizeof(double) +
+                             references_.size() * sizeof(DrivenEndState) + sizeof(UCOutputs) +
+                             moreLines_.size() * sizeof(UCMooringLine) + sizeof(UCInputs);
     size_t nodes = 0;
     const std::vector<FailureState> failureState = saved_failures(
         in + failureAt, header.failures == static_cast<std::int32_t>(failureState_.size()) && size >= failureAt + failureBytes,
@@ -1376,15 +1388,19 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
         return false;
     }
     size_t expected = failureAt + failureBytes + nodes * sizeof(FreeNodeMotion);
-    for (size_t k = 0; k < lines_.size(); ++k) {
-        if (header.lineSize[k] > size) break;  // (the sum below cannot wrap)
-        expected += header.lineSize[k];
+    std::vector<std::uint64_t> lineSize(lines_.size(), 0);
+    if (size >= describedAt) {
+        if (!lineSize.empty()) std::memcpy(lineSize.data(), in + sizesAt, lineSize.size() * sizeof(std::uint64_t));
+        for (const std::uint64_t s : lineSize) {
+            if (s > size) break;  // (the sum below cannot wrap)
+            expected += s;
+        }
     }
     if (size != expected) {
         error = "saved state has the wrong size for this mooring system";
         return false;
     }
-    in += sizeof header;
+    in += describedAt;
     if (!same_description(in, error)) return false;
     in += description_.size() * sizeof(double);
     std::vector<DrivenEnd> references(references_.size());
@@ -1397,6 +1413,9 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     UCOutputs outputs;
     std::memcpy(&outputs, in, sizeof outputs);
     in += sizeof outputs;
+    std::vector<UCMooringLine> moreLines(moreLines_.size());
+    if (!moreLines.empty()) std::memcpy(moreLines.data(), in, moreLines.size() * sizeof(UCMooringLine));
+    in += moreLines.size() * sizeof(UCMooringLine);
     UCInputs lastInputs;
     std::memcpy(&lastInputs, in, sizeof lastInputs);
     in += sizeof lastInputs;
@@ -1406,12 +1425,12 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     in += motion.size() * sizeof(FreeNodeMotion);
     for (size_t k = 0; k < lines_.size(); ++k) {
         bool lineChanged = false;
-        if (!lines_[k]->restore_state(in, header.lineSize[k], error, &lineChanged)) {
+        if (!lines_[k]->restore_state(in, lineSize[k], error, &lineChanged)) {
             if (changed) *changed = k > 0 || lineChanged;
             error = "mooring line " + std::to_string(deck_.lines[k].id) + ": " + error;
             return false;
         }
-        in += header.lineSize[k];
+        in += lineSize[k];
     }
     references_ = references;
     stiffnessCurrent_ = false;
@@ -1419,6 +1438,7 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     motion_ = motion;
     apply_failures();
     outputs_ = outputs;
+    moreLines_ = moreLines;
     lastInputs_ = lastInputs;
     lastStep_ = header.lastStep;
     return true;

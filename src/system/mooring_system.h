@@ -109,6 +109,11 @@ public:
     // line that it holds).
     bool driven_position(int kind, int index, Vec3& p) const override;
     int n_lines() const { return static_cast<int>(lines_.size()); }
+    // line[k].* of the deck's line k (0-based), for every line of the deck: the first UC_MAX_LINES are also
+    // the FMU's outputs, the others are simulated alike but have no FMU variables (docs/systems_mooring.md).
+    const UCMooringLine& line_outputs(int deckLine) const {
+        return deckLine < UC_MAX_LINES ? outputs_.mooringLine[deckLine] : moreLines_[deckLine - UC_MAX_LINES];
+    }
     const CableSimulation& line(int k) const { return *lines_[k]; }
 
     size_t state_size() const override;
@@ -352,6 +357,10 @@ private:
     double lastStep_ = 0.0;
     UCInputs lastInputs_{};  // of the last step (or the initialization)
     UCOutputs outputs_{};
+    std::vector<UCMooringLine> moreLines_;  // line_outputs of the deck's lines beyond UC_MAX_LINES
+    UCMooringLine& line_output(int deckLine) {
+        return deckLine < UC_MAX_LINES ? outputs_.mooringLine[deckLine] : moreLines_[deckLine - UC_MAX_LINES];
+    }
     bool stiffnessWarned_ = false, substepsReported_ = false;
     bool quaternionNormalized_ = false;  // a quaternion input off unit norm was reported (once)
     bool stiffnessCurrent_ = false;  // outputs_'s body stiffness is that of the present state

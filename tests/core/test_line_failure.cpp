@@ -450,7 +450,7 @@ TEST(LineFailure, StatesAcrossABreakRestoreBitForBitInAFreshInstance) {
     const std::uint32_t three = 3;
     std::memcpy(old.data() + sizeof(std::uint32_t), &three, sizeof three);
     EXPECT_FALSE(a.system->restore_state(old.data(), old.size(), error));
-    EXPECT_EQ(error.rfind("saved state is a mooring system's state of format version 3, this FMU reads version 4", 0), 0u) << error;
+    EXPECT_EQ(error.rfind("saved state is a mooring system's state of format version 3, this FMU reads version 5", 0), 0u) << error;
 }
 
 // The same across an anchor that lets go (line 1's far end, point 1).

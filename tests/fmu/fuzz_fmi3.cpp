@@ -162,6 +162,11 @@ struct Var3 {
     fmi3ValueReference stride = 1;
     const UCVariable* first = nullptr;  // the FMI 2.0 scalar of element 1 (nullptr: time)
     std::string name;
+    size_t kept = 1;                    // elements from vr at the stride; the others from extension
+    fmi3ValueReference extension = 0;
+    fmi3ValueReference element(size_t i) const {
+        return i < kept ? vr + (fmi3ValueReference)i * stride : extension + (fmi3ValueReference)(i - kept) * stride;
+    }
 };
 
 // A value reference drawn for a call, with what it is.
@@ -192,9 +197,9 @@ public:
         const UCVariable* table = uc_variables(&n);
         std::set<unsigned int> elementVrs;
         std::map<unsigned int, Var3> arrays;
-#define UC_FMI3_ARRAY_ENTRY(firstVr, elements, step, arrayName)                            \
-    arrays[firstVr] = Var3{firstVr, elements, step, uc_variable_find(firstVr, UC_TYPE_REAL), arrayName}; \
-    for (unsigned int i = 1; i < (elements); ++i) elementVrs.insert((firstVr) + i * (step));
+#define UC_FMI3_ARRAY_ENTRY(firstVr, elements, step, arrayName, keep, ext, sizedBy, perIndex)                            \
+    arrays[firstVr] = Var3{firstVr, elements, step, uc_variable_find(firstVr, UC_TYPE_REAL), arrayName, keep, ext}; \
+    for (unsigned int i = 1; i < (elements); ++i) elementVrs.insert(arrays[firstVr].element(i));
         UC_FMI3_ARRAYS(UC_FMI3_ARRAY_ENTRY)
 #undef UC_FMI3_ARRAY_ENTRY
         vars_.push_back(Var3{UC_FMI3_TIME_VR, 1, 1, nullptr, "time"});
@@ -226,10 +231,10 @@ public:
                 v.name.find(".a") == std::string::npos) {
                 scalarKnowns_.push_back(v.vr);
             }
-            if (v.count == 4 && (v.name.rfind("body.force.", 0) == 0 || v.name.rfind("body.moment.", 0) == 0)) {
+            if (v.count == UC_MAX_BODIES && (v.name.rfind("body.force.", 0) == 0 || v.name.rfind("body.moment.", 0) == 0)) {
                 arrayUnknowns_.push_back(v.vr);
             }
-            if (v.count == 4 && v.first->causality == UC_CAUSALITY_INPUT && v.name.rfind("body.", 0) == 0) {
+            if (v.count == UC_MAX_BODIES && v.first->causality == UC_CAUSALITY_INPUT && v.name.rfind("body.", 0) == 0) {
                 arrayKnowns_.push_back(v.vr);
             }
             if (v.first->type == UC_TYPE_REAL) {
@@ -607,7 +612,7 @@ private:
         const Var3& v = vars_[from[integer(0, (int)from.size() - 1)]];
         Part part{Pick{v.vr, v.count, Kind::Variable, v.first}, {}};
         for (size_t i = 0; i < v.count; ++i) {
-            part.scalars.push_back(uc_variable_find(v.vr + (fmi3ValueReference)i * v.stride, UC_TYPE_REAL));
+            part.scalars.push_back(uc_variable_find(v.element(i), UC_TYPE_REAL));
         }
         return part;
     }
@@ -1113,7 +1118,7 @@ struct Regression {
 
 // ---- arrays: fixed call sequences of the arrays checks (the fuzzer's arrays() draws them at random) ----------
 
-// The FMI 3.0 arrays body.q0 (stride 4), point.vz (16, stride 3) and the scalar tow.x, in one call, with the
+// The FMI 3.0 arrays body.q0 (stride 4), point.vz (UC_MAX_POINTS, stride 3) and the scalar tow.x, in one call, with the
 // FMI 2.0 value reference of each element by its name (body[k].q0, point[k].vz): independent of the stride
 // table the adapter expands arrays with (the elements after the first read as scalars, as the FMI 2.0
 // adapter knows them).
@@ -1122,9 +1127,9 @@ struct ArraysCall {
     std::vector<fmi3ValueReference> elements;
     std::vector<double> values;
     ArraysCall() {
-        for (int k = 1; k <= 4; ++k) elements.push_back(vr_of("body[" + std::to_string(k) + "].q0"));
+        for (int k = 1; k <= UC_MAX_BODIES; ++k) elements.push_back(vr_of("body[" + std::to_string(k) + "].q0"));
         elements.push_back(vr_of("tow.x"));
-        for (int k = 1; k <= 16; ++k) elements.push_back(vr_of("point[" + std::to_string(k) + "].vz"));
+        for (int k = 1; k <= UC_MAX_POINTS; ++k) elements.push_back(vr_of("point[" + std::to_string(k) + "].vz"));
         for (size_t k = 0; k < elements.size(); ++k) values.push_back(0.25 + 0.125 * (double)k);
     }
 };

@@ -67,15 +67,24 @@ static fmi2Status shim_set_boolean(fmi2Component c, const fmi2ValueReference vr[
 static fmi2Status shim_set_string(fmi2Component c, const fmi2ValueReference vr[], size_t n, const fmi2String v[]) {
     return (fmi2Status)fmi3.SetString(c, vr, n, v, n);
 }
+/* Whether vr is one of the count scalars from `from` at `stride`, and then its element's index (offset + its
+ * position there). */
+static int shim_part(fmi2ValueReference vr, fmi2ValueReference from, size_t count, fmi2ValueReference stride,
+                     size_t offset, size_t* index) {
+    if (count == 0 || vr < from || vr >= from + count * stride || (vr - from) % stride != 0) return 0;
+    *index = offset + (vr - from) / stride;
+    return 1;
+}
 /* The FMI 3.0 array (its first value reference and length) that holds the FMI 2.0 scalar vr as element
- * *index; 0 for a scalar. */
+ * *index (its first `kept` elements from its value reference, the others from the extension); 0 for a
+ * scalar. */
 static int array_element(fmi2ValueReference vr, fmi3ValueReference* first, size_t* count, size_t* index) {
-#define UC_SHIM_ELEMENT(f, n, stride, name)                                       \
-    if (vr >= (f) && vr < (f) + (n) * (stride) && (vr - (f)) % (stride) == 0) { \
-        *first = (f);                                                            \
-        *count = (n);                                                            \
-        *index = (vr - (f)) / (stride);                                          \
-        return 1;                                                                \
+#define UC_SHIM_ELEMENT(f, n, stride, name, kept, ext, sizedBy, perIndex)                                   \
+    if (shim_part(vr, (f), (kept), (stride), 0, index) ||                                                  \
+        shim_part(vr, (ext), (size_t)(n) - (size_t)(kept), (stride), (kept), index)) {                     \
+        *first = (f);                                                                                      \
+        *count = (n);                                                                                      \
+        return 1;                                                                                          \
     }
     UC_FMI3_ARRAYS(UC_SHIM_ELEMENT)
 #undef UC_SHIM_ELEMENT

@@ -202,8 +202,8 @@ class System(Cable):
 
     def set_body(self, pose_and_rates):
         names = ms.POSE_NAMES + BODY_RATES
-        if self.fmi3:  # body.x = [body 1, body 2, body 3, body 4]
-            self.set_arrays({f"body.{n}": [x, 0.0, 0.0, 0.0] for n, x in zip(names, pose_and_rates)})
+        if self.fmi3:  # body.x = [body 1, body 2, ..., body MAX_BODIES]
+            self.set_arrays({f"body.{n}": [x] + [0.0] * (MAX_BODIES - 1) for n, x in zip(names, pose_and_rates)})
         else:
             self.set({f"body[1].{n}": x for n, x in zip(names, pose_and_rates)})
 
@@ -235,7 +235,7 @@ def test_the_system_arrays_of_the_fmi3_fmu(fmi3_file):
     stiffness one array [body, i, j], each on the value reference of its first FMI 2.0 element."""
     md2 = {v.name: v for v in read_model_description(str(fmi3_file.parent.parent / "UnderwaterCable.fmu")).modelVariables}
     md3 = {v.name: v for v in read_model_description(str(fmi3_file)).modelVariables}
-    dims = {n: [int(d.start) for d in v.dimensions] for n, v in md3.items() if v.dimensions}
+    dims = {n: list(v.shape) for n, v in md3.items() if v.dimensions}  # the structural parameters at their start
     expected = {"line.fairleadTension": [MAX_LINES], "body.force.x": [MAX_BODIES], "body.moment.z": [MAX_BODIES],
                 "body.stiffness": [MAX_BODIES, 6, 6], "body.x": [MAX_BODIES], "body.roll": [MAX_BODIES],
                 "body.wz": [MAX_BODIES], "point.x": [MAX_POINTS], "point.vz": [MAX_POINTS],
@@ -247,7 +247,7 @@ def test_the_system_arrays_of_the_fmi3_fmu(fmi3_file):
         first = first + "[1,1]" if name == "body.stiffness" else first
         first = first + "[1]" if name == "shape.x" else first
         assert md3[name].valueReference == md2[first].valueReference, name
-    assert md3["body.x"].start == "0 0 0 0" and md3["body.x"].causality == "input"
+    assert md3["body.x"].start == " ".join(["0"] * MAX_BODIES) and md3["body.x"].causality == "input"
     assert "body[1].x" not in md3 and "line[1].fairleadTension" not in md3
 
 
@@ -277,7 +277,7 @@ def test_the_oc4_moorings_through_fmi3_arrays_are_bit_identical_to_fmi2(fmi3_fil
         inputs = ms.POSE_NAMES + BODY_RATES
         if fmi3:
             unknowns = [system.vr[n.format(k="")] for n in loads]
-            columns = [system.fmu.getDirectionalDerivative(unknowns, [system.vr[f"body.{n}"]], [1.0, 0.0, 0.0, 0.0],
+            columns = [system.fmu.getDirectionalDerivative(unknowns, [system.vr[f"body.{n}"]], [1.0] + [0.0] * (MAX_BODIES - 1),
                                                            nSensitivity=6 * MAX_BODIES) for n in inputs]
             columns = np.array(columns).reshape(len(inputs), 6, MAX_BODIES)
             assert np.all(columns[:, :, 1:] == 0.0)
