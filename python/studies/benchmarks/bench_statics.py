@@ -17,6 +17,7 @@ summary() reduces the records to table rows, markdown() writes them.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import dataclasses
 import math
 import re
@@ -305,7 +306,16 @@ def _solve(case: Case, guess: int, tol: float):
 
 def reference_system(case: Case, tol: float = 1e-8):
     """MoorPy's solved system of the line, from the first of the first guesses of _start that
-    converges; raises ReferenceFailed with the first failure when none does."""
+    converges; raises ReferenceFailed with the first failure when none does. On a slope, MoorPy's test
+    of a line resting on it is corrected (peers.moorpy.sloped_seabed_classified) for every solve of
+    its lines, the ones that draw them too."""
+    if case.slope:
+        with moorpy.sloped_seabed_classified():
+            return _reference_system(case, tol)
+    return _reference_system(case, tol)
+
+
+def _reference_system(case: Case, tol: float):
     errors = []
     for guess in range(3):
         try:
