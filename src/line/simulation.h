@@ -175,6 +175,12 @@ private:
     bool static_profile(const Vec3& towPoint, const Vec3& farPoint, LineProfile& profile, bool& towOnTop,
                         std::string* why) const;
     bool profile_guess(double* X) const;  // from profile_, false where it was not solved
+    // The direction along a sloped seabed across the plane of the line's static profile, where the
+    // profile rests on a slope that falls across that plane; zero where it does not.
+    Vec3 seabed_cross_slope() const;
+    // After statics held by the seabed's static friction: a warning where the hold needs more than
+    // seabedFriction of the normal contact force.
+    void check_seabed_hold();
     // The mesh graded by the static profile where `apply` and the profile does (else each section's
     // own), the model built again where that changes it.
     // `grading`: which of kGradings (src/model/mesh_grading.h) places the nodes.
@@ -291,6 +297,10 @@ private:
         Vec3 far = Vec3::Zero();  // the far end it was solved for
     };
     ProfileState profile_;
+    // The statics' hold of a line resting across a sloped seabed (seabed_hold_across): the held shape,
+    // and whether this start held it (initialization only, not state).
+    std::vector<double> seabedHeld_;
+    bool seabedHeldStart_ = false;
 
     // --- per-step environment and workspace ---
     SNCurve sn_;  // from the fatigue.* parameters

@@ -14,6 +14,7 @@
 #include "model/mesh_grading.h"
 #include "model/params.h"
 #include "line/statics.h"
+#include "terms/seabed.h"
 
 namespace uc {
 
@@ -83,6 +84,49 @@ bool CableSimulation::profile_guess(double* X) const {
         Eigen::Map<Vec3>(X + 6 * i + 3) = towOnTop ? tangent : Vec3(-tangent);
     }
     return true;
+}
+
+Vec3 CableSimulation::seabed_cross_slope() const {
+    const SeabedProps& seabed = model_.seabed();
+    if (!seabed.enabled || !seabed.sloped || !profile_.solved || !(profile_.profile.grounded_length() > 0.0))
+        return Vec3::Zero();
+    const Vec3 chord = state_.tow.p() - profile_.far;
+    const Vec3 side = Vec3(-chord.y(), chord.x(), 0.0).normalized();  // horizontal, across the profile's plane
+    if (!side.allFinite() || side.dot(seabed.normal) == 0.0) return Vec3::Zero();
+    return (side - side.dot(seabed.normal) * seabed.normal).normalized();
+}
+
+void CableSimulation::check_seabed_hold() {
+    const UCParams& p = model_.params();
+    const SeabedProps& seabed = model_.seabed();
+    const int n = model_.n_free();
+    std::vector<double> zero(n, 0.0), X(model_.n_global()), Xd(model_.n_global()), Xdd(model_.n_global());
+    model_.expand(q_.data(), zero.data(), zero.data(), loads_, state_.time, X.data(), Xd.data(), Xdd.data());
+    double worst = 0.0, at = 0.0;
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const ElementTables& tables = model_.tables(e);
+        const int g0 = model_.element_offset(e);
+        const ContactPoints points = contact_points(tables);
+        for (int g = 0; g < points.count; ++g) {
+            const QuadPoint& q = points.points[g];
+            double hold = 0.0, normal = 0.0;
+            seabed_hold_at(seabed, loads_.seabedHoldAcross, interpolate(q.shape.N, X.data() + g0),
+                           interpolate(q.shape.N, seabedHeld_.data() + g0), hold, normal);
+            if (normal > 0.0 && std::abs(hold) / normal > worst) {
+                worst = std::abs(hold) / normal;
+                at = model_.element_start(e) + 0.5 * model_.element_length(e);
+            }
+        }
+    }
+    if (!(worst > p.seabedFriction)) return;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "warning: seabedFriction = %.6g: the line rests across the slope (seabedSlope %.6g deg, "
+                  "seabedSlopeHeading %.6g deg) and its static profile holds there with a friction of %.3g of the "
+                  "seabed's normal force (in the element around arc length %.6g m); the line slides sideways down the slope once the "
+                  "run starts",
+                  p.seabedFriction, p.seabedSlope, p.seabedSlopeHeading, worst, at);
+    add_event(text);
 }
 
 // Nodes graded by the static profile for an anchored line that rests on the seabed or carries
@@ -418,7 +462,8 @@ bool CableSimulation::verify_statics(std::string& error) const {
     const bool exact = profileApplies_ && weakBending && !model_.axial_curve() && loads_.current.uniform.isZero(0.0) &&
                        (p.currentProfileRows == 0 || loads_.current.scale == 0.0) && model_.sea().calm() &&
                        loads_.torque == 0.0 && profile_.solved &&
-                       profile.lowest_clearance() > -model_.line().diameter;
+                       profile.lowest_clearance() > -model_.line().diameter &&
+                       (seabedHeldStart_ || seabed_cross_slope().isZero(0.0));
     if (!exact) return true;
     const double top = (towOnTop ? profile.top_force() : profile.bottom_force()).norm();
     const double bottom = (towOnTop ? profile.bottom_force() : profile.top_force()).norm();
@@ -596,7 +641,18 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
         if (p.initMode == UC_INIT_EQUILIBRIUM && farEnd.proxy) {
             if (!proxy_statics(t0, v, fromProfile, error)) return false;
         } else if (p.initMode == UC_INIT_EQUILIBRIUM) {
+            // A line resting on a slope that falls across its profile's plane: the seabed's static
+            // friction (seabedFriction > 0) holds it across the line where the profile lays it
+            // (docs/model.md, "A sloped seabed"); frictionless, it slides down the slope sideways.
+            const Vec3 across = fromProfile && p.seabedFriction > 0.0 ? seabed_cross_slope() : Vec3::Zero();
+            seabedHeldStart_ = !across.isZero(0.0);
+            if (seabedHeldStart_) {
+                seabedHeld_ = X_;  // the profile's shape, expanded above
+                loads_.seabedHold = seabedHeld_.data();
+                loads_.seabedHoldAcross = across;
+            }
             const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile);
+            loads_.seabedHold = nullptr;
             if (!statics.converged) {
                 error = statics.message;
                 retry = true;
@@ -631,6 +687,7 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
             retry = true;
             return false;
         }
+        if (seabedHeldStart_) check_seabed_hold();
         return true;
     };
     // A graded mesh whose equilibrium fails is graded again by the other gradings, with the same

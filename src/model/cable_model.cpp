@@ -595,6 +595,8 @@ void CableModel::element_residual(int e, const double* X, const double* Xd, cons
     add_hydro_force(tables, sec.fluid, loads.current, x, xd, xdd, R,
                     waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
     if (sec.seabed.enabled) add_seabed_force(tables, sec.seabed, x, xd, R, loads.axialContactOnly);
+    if (loads.seabedHold && sec.seabed.enabled)
+        add_seabed_hold(tables, sec.seabed, loads.seabedHoldAcross, x, loads.seabedHold + g0, R, loads.axialContactOnly);
 }
 
 void CableModel::element_jacobian(int e, const double* X, const double* Xd, const double* Xdd,
@@ -629,6 +631,9 @@ void CableModel::element_jacobian_at(int e, const double* x, const double* xd, c
     add_hydro_jacobian(tables, sec.fluid, loads.current, x, xd, xdd, K, C, M,
                        waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
     if (sec.seabed.enabled) add_seabed_jacobian(tables, sec.seabed, x, xd, K, C, loads.axialContactOnly);
+    if (loads.seabedHold && sec.seabed.enabled)
+        add_seabed_hold_jacobian(tables, sec.seabed, loads.seabedHoldAcross, x, loads.seabedHold + elementOffset_[e], K,
+                                 loads.axialContactOnly);
 }
 
 FarEnd FarEnd::of(int bottomEnd) {

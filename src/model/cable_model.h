@@ -113,6 +113,11 @@ struct Loads {
     // Static solver only: seabed contact at the elements' axial points even where a denser contact
     // rule is asked for (seabedContactSpacing): the continuation runs on the coarser contact.
     bool axialContactOnly = false;
+    // Static solver only: the seabed's static friction holds what rests on it across the line where the
+    // line's planar profile laid it (add_seabed_hold): the held DOFs (n_global, null: no hold) and the
+    // direction along the seabed across the profile's plane.
+    const double* seabedHold = nullptr;
+    Vec3 seabedHoldAcross = Vec3::Zero();
 };
 
 // Residual contributions of one element and of the far-end node terms, kept for outputs.

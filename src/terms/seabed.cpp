@@ -182,4 +182,55 @@ void add_seabed_jacobian(const ElementTables& e, const SeabedProps& p, const dou
     }
 }
 
+namespace {
+
+// Penetration [m] along the normal of a plane seabed, flat or sloped.
+double penetration_at(const SeabedProps& p, const Vec3& r) {
+    return p.sloped ? -p.depth * p.normal.z() - p.normal.dot(r) : -p.depth - r.z();
+}
+
+}  // namespace
+
+void seabed_hold_at(const SeabedProps& p, const Vec3& across, const Vec3& r, const Vec3& r0, double& hold,
+                    double& normal) {
+    double fraction = 0.0;
+    normal = p.stiffness * contact_ramp(penetration_at(p, r), p.smoothing, &fraction);
+    hold = normal * across.dot(r - r0) / p.smoothing;
+}
+
+void add_seabed_hold(const ElementTables& e, const SeabedProps& p, const Vec3& across, const double* X,
+                     const double* held, double* R, bool axialOnly) {
+    if (above_contact(e, p, X)) return;
+    const ContactPoints points = contact_points(e, axialOnly);
+    for (int g = 0; g < points.count; ++g) {
+        const QuadPoint& q = points.points[g];
+        double hold = 0.0, normal = 0.0;
+        seabed_hold_at(p, across, interpolate(q.shape.N, X), interpolate(q.shape.N, held), hold, normal);
+        if (hold == 0.0) continue;
+        // residual F = -f = +k g'(p) (across.d) across
+        for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += (q.weight * q.shape.N[a] * hold) * across;
+    }
+}
+
+void add_seabed_hold_jacobian(const ElementTables& e, const SeabedProps& p, const Vec3& across, const double* X,
+                              const double* held, Mat12& K, bool axialOnly) {
+    if (above_contact(e, p, X)) return;
+    const Vec3 n = p.sloped ? p.normal : Vec3::UnitZ();
+    const ContactPoints points = contact_points(e, axialOnly);
+    for (int g = 0; g < points.count; ++g) {
+        const QuadPoint& q = points.points[g];
+        const Vec3 r = interpolate(q.shape.N, X);
+        const double pen = penetration_at(p, r);
+        double fraction = 0.0;
+        const double ramp = contact_ramp(pen, p.smoothing, &fraction);
+        if (fraction == 0.0) continue;
+        const double offset = across.dot(r - interpolate(q.shape.N, held));
+        // d/dr of k g(p) (across.d) across / delta, with dp/dr = -n^T
+        const Mat3 J = (p.stiffness / p.smoothing) *
+                       (ramp * across * across.transpose() - (fraction * offset) * across * n.transpose());
+        for (int a = 0; a < 4; ++a)
+            for (int b = 0; b < 4; ++b) K.block<3, 3>(3 * a, 3 * b) += (q.weight * q.shape.N[a] * q.shape.N[b]) * J;
+    }
+}
+
 }  // namespace uc

@@ -94,4 +94,21 @@ void add_seabed_force(const ElementTables& e, const SeabedProps& p, const double
 void add_seabed_jacobian(const ElementTables& e, const SeabedProps& p, const double* X, const double* Xd,
                          Mat12& K, Mat12& C, bool axialOnly = false);
 
+// Static solver only: the static friction of a sloped seabed holding what rests on it across the line,
+// where the line's planar static profile laid it (docs/model.md, "A sloped seabed"). `held` is the
+// element's 12 DOFs in the held shape, `across` the unit direction along the seabed's surface across
+// the profile's vertical plane. At each contact point, with the offset d = r - r0 from the held
+// point r0 and the normal contact force per length k g(p) there, the force per length
+// -k g(p) (across.d) / delta across: static friction of stiffness k g(p) / delta, which needs the
+// coefficient |across.d| / delta, nothing off the seabed.
+void add_seabed_hold(const ElementTables& e, const SeabedProps& p, const Vec3& across, const double* X,
+                     const double* held, double* R, bool axialOnly = false);
+void add_seabed_hold_jacobian(const ElementTables& e, const SeabedProps& p, const Vec3& across, const double* X,
+                              const double* held, Mat12& K, bool axialOnly = false);
+
+// The holding force per length of add_seabed_hold at a point (along `across`), and the normal contact
+// force per length there (k g(p)): their ratio is the static friction coefficient the hold needs.
+void seabed_hold_at(const SeabedProps& p, const Vec3& across, const Vec3& r, const Vec3& r0, double& hold,
+                    double& normal);
+
 }  // namespace uc

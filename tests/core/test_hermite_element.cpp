@@ -592,6 +592,47 @@ TEST(SeabedTerm, SlopedJacobianMatchesFiniteDifferences) {
     expect_jacobian_matches([&](const Vec12& v) { return force(X, v); }, Xd, C, 1e-7, 1e-6, "dR/dXdot");
 }
 
+TEST(SeabedTerm, HoldAcrossTheLineMatchesFiniteDifferencesAndOpposesTheSidewaysOffset) {
+    // The statics' static friction on a slope (add_seabed_hold): an element partly in the contact band
+    // and partly below it, moved sideways from where it is held; the force opposes the offset across
+    // the line, along the surface, and its Jacobian is the residual's derivative.
+    const double l = 2.0;
+    const ElementTables e = make_element_tables(l, 3, 3);
+    const SeabedProps p = sloped_seabed();
+    const Vec3 n = p.normal;
+    const Vec3 along = Vec3(0.0, 1.0, 0.0).cross(n).normalized();
+    const Vec3 across = n.cross(along).normalized();
+    const Vec3 r0 = Vec3(3.0, 1.0, seabed_height(p, 3.0, 1.0)) - 0.005 * n;
+    const Vec3 r1 = r0 + l * along - 0.007 * n;
+    Vec12 held;
+    held << r0, along, r1, along;
+    Vec12 X = held;
+    X.segment<3>(0) += 0.02 * across + 0.03 * along;
+    X.segment<3>(6) += 0.05 * across - 0.001 * n;
+    X.segment<3>(9) += 0.01 * across;
+    auto force = [&](const Vec12& x) {
+        Vec12 R = Vec12::Zero();
+        add_seabed_hold(e, p, across, x.data(), held.data(), R.data());
+        return R;
+    };
+    const Vec12 R = force(X);
+    // the residual is -f: it points along +across for an offset along +across, nothing along the line
+    for (int a = 0; a < 4; a += 2) {
+        EXPECT_GT(R.segment<3>(3 * a).dot(across), 0.0);
+        EXPECT_LT(std::abs(R.segment<3>(3 * a).dot(along)), 1e-12 * R.norm());
+        EXPECT_LT(std::abs(R.segment<3>(3 * a).dot(n)), 1e-12 * R.norm());
+    }
+    EXPECT_EQ(force(held).norm(), 0.0);  // nothing where it is held
+    Mat12 K = Mat12::Zero();
+    add_seabed_hold_jacobian(e, p, across, X.data(), held.data(), K);
+    ASSERT_GT(K.norm(), 0.0);
+    expect_jacobian_matches(force, X, K, 1e-7, 1e-6, "dR/dX");
+    // lifted clear of the seabed: no hold
+    Vec12 lifted = X;
+    for (int a = 0; a < 4; a += 2) lifted.segment<3>(3 * a) += 0.5 * n;
+    EXPECT_EQ(force(lifted).norm(), 0.0);
+}
+
 TEST(SeabedTerm, SlopedContactIsTheFlatOneTurnedOntoTheSlope) {
     // The same penetration and the same velocity relative to the surface give the flat seabed's load
     // turned by the rotation that takes e_z onto the slope's normal: pressure along the normal,

@@ -289,3 +289,52 @@ def test_a_regraded_state_continues_bit_identically_in_a_fresh_instance(graded_s
     first, second = graded_state_continuation(B.fmu_parameters(case, 10), case.fairlead_z, {"tow.x": 40.0},
                                                ["towTension", "endTension", "shape.z[20]"])
     assert np.array_equal(first, second), f"max difference {np.max(np.abs(first - second))}"
+
+
+def test_on_a_slope_the_reference_rests_a_line_leaving_its_anchor_below_the_slope(fmu_file):
+    """Line 34 of the sloped draw (wire over chain, its anchor on a 9.5 deg slope that rises towards the
+    fairlead): the line leaves its anchor at 1.9 deg where it hangs clear, less than the slope's 9 deg in its
+    plane, so it rests on the slope over its first metres. MoorPy's own test of that (the anchor's vertical
+    force in newtons against tan(alpha)) took it as hanging and passed 0.27 m below the seabed, 2 % off
+    the FMU at the anchor; with the test corrected (peers.moorpy.sloped_seabed_classified) MoorPy's sloped
+    profile rests 9.6 m of it and agrees with the FMU's start at both ends within the acceptance's 0.2 %."""
+    pytest.importorskip("moorpy")
+    case = B.draw_case(SEED, 34, slope=True)
+    ref = B.reference(case)
+    assert ref["grounded"] > 1.0
+    ms = B.reference_system(case)
+    for line in ms.lineList:
+        with B.moorpy.sloped_seabed_classified():  # getLineCoords solves the line again
+            xs, ys, zs, _ = line.getLineCoords(0.0)
+            assert min(z + ms.getDepthFromBathymetry(x, y)[0] for x, y, z in zip(xs, ys, zs)) > -1e-6
+    run = B.fmu_run(fmu_file, case, ELEMENTS)
+    assert run["ok"], run["message"]
+    assert abs(run["towTension"] / ref["fairlead"] - 1.0) <= B.ACCEPT_P95
+    assert abs(run["endTension"] / ref["anchor"] - 1.0) <= B.ACCEPT_P95
+
+
+@pytest.mark.parametrize("line_id", [6, 25])
+def test_a_line_resting_across_a_slope_is_held_there_by_static_friction(fmu_file, line_id):
+    """Lines 6 and 25 of the sloped draw rest on a slope that falls almost across their plane (headings 273
+    and 259 deg, lines along -x). Frictionless, the resting part slides sideways down the slope (a 3-D
+    equilibrium, anchor tension 3-4 times the planar profile's, which the start refused); with the
+    seabed's static friction (seabedFriction 0.6, more than the tan 0.17 the slope needs) the statics hold
+    it where the planar profile lays it, MoorPy's planar answer: within the acceptance's 0.2 % at both
+    ends. With too little friction (0.05) the line starts held and the log names the coefficient the
+    hold needs."""
+    pytest.importorskip("moorpy")
+    case = B.draw_case(SEED, line_id, slope=True)
+    ref = B.reference(case)
+    run = B.fmu_run(fmu_file, case, ELEMENTS)
+    assert run["ok"], run["message"]
+    assert abs(run["towTension"] / ref["fairlead"] - 1.0) <= B.ACCEPT_P95
+    assert abs(run["endTension"] / ref["anchor"] - 1.0) <= B.ACCEPT_P95
+    cable = CableFMU(fmu_file, parameters={**B.fmu_parameters(case, ELEMENTS), "seabedFriction": 0.05})
+    try:
+        cable.initialize(inputs={"tow.x": 0.0, "tow.y": 0.0, "tow.z": case.fairlead_z})
+        warnings = [m for s, _, m in cable.messages if s == "WARNING" and "seabedFriction = 0.05" in m]
+        assert len(warnings) == 1, cable.messages
+        needed = float(re.search(r"friction of ([0-9.]+) of the seabed's normal force", warnings[0]).group(1))
+        assert 0.05 < needed < 0.6
+    finally:
+        cable.free()

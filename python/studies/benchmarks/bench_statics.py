@@ -17,6 +17,7 @@ summary() reduces the records to table rows, markdown() writes them.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import dataclasses
 import math
 import re
@@ -172,6 +173,11 @@ def draw_length(rng, span: float, height: float, taut: bool) -> float:
 
 
 SLOPE_RANGE = (1.0, 10.0)  # seabedSlope of --slope [deg], uniform
+# seabedFriction of --slope: the static friction that holds a line resting across a slope in its plane, as
+# MoorPy's planar profile does (the FMU's statics hold it there where seabedFriction > 0). 0.6: a wire
+# rope's lateral coefficient on the seabed, the smallest of wire and chain; the draw's slopes (at most
+# 10 deg, tan 0.18) need less. The statics are frictionless along the line, as MoorPy's.
+SLOPE_FRICTION = 0.6
 SLOPE_CLEARANCE = 0.2      # the seabed under the fairlead at least this fraction of the height below it
 
 
@@ -305,7 +311,16 @@ def _solve(case: Case, guess: int, tol: float):
 
 def reference_system(case: Case, tol: float = 1e-8):
     """MoorPy's solved system of the line, from the first of the first guesses of _start that
-    converges; raises ReferenceFailed with the first failure when none does."""
+    converges; raises ReferenceFailed with the first failure when none does. On a slope, MoorPy's test
+    of a line resting on it is corrected (peers.moorpy.sloped_seabed_classified) for every solve of
+    its lines, the ones that draw them too."""
+    if case.slope:
+        with moorpy.sloped_seabed_classified():
+            return _reference_system(case, tol)
+    return _reference_system(case, tol)
+
+
+def _reference_system(case: Case, tol: float):
     errors = []
     for guess in range(3):
         try:
@@ -392,7 +407,7 @@ def fmu_parameters(case: Case, n_elements: int, grading: int = DEFAULT_GRADING) 
     p = {"meshGrading": grading, "bottomEnd": 1, "anchor.x": case.anchor_x, "anchor.y": 0.0, "anchor.z": -case.depth,
          "waterDepth": case.water_depth, "enableSeabed": True, "seabedStiffness": case.stiffness,
          "seabedSlope": case.slope, "seabedSlopeHeading": case.heading,
-         "seabedFriction": 0.0, "enableBending": False, "enableCompression": False,
+         "seabedFriction": SLOPE_FRICTION if case.slope else 0.0, "enableBending": False, "enableCompression": False,
          "waterDensity": RHO, "gravity": G}
     counts = element_counts(case, n_elements)
     if len(case.sections) == 1:
