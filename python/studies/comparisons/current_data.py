@@ -1,0 +1,195 @@
+"""Currents given as data (`Currents` 2 and 5, docs/waves.md "A current given as data") against MoorDyn: the six
+public MoorDyn decks that read current_profile_dynamic.txt or current_profile_4d.txt, each run by the FMU and by
+MoorDyn (the `moordyn` module) on the same files, the deck's coupled point held where the deck puts it.
+
+For each deck: the top tension of its first line (the FMU's `towTension`, or `line[1].fairleadTension` for a
+system; MoorDyn's force on its coupled point, or the tension of the line's end A at its fixed point, extrapolated
+from its first two segments), sampled every `step` seconds over the window where both codes use the file's data
+(MoorDyn starts the record over after its last sample, the FMU holds it): the RMS of the difference of the two
+histories and the largest difference, against MoorDyn's RMS about its mean; and the FMU's static equilibrium at
+t = 0 against MoorPy's where MoorPy solves the deck (MoorPy takes no current: it is the same problem only where
+the current is zero at t = 0). MoorDyn v2.7 skips the first node row of a current_profile_4d.txt (it reads the
+nodes from the file's seventh line; the node on the sixth keeps a zero current): the 4D decks are also run by
+MoorDyn on a copy of the file with that row repeated, so that it reads every node ("MoorDyn, all rows").
+
+    python -m studies.comparisons.current_data MOORDYN_CHECKOUT [--json out.json]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import shutil
+import sys
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ucable.fmu import CableFMU
+from ..peers import moordyn
+
+
+@dataclass(frozen=True)
+class Case:
+    deck: str          # below tests/Mooring of the MoorDyn checkout
+    top: tuple         # the first line's top point (the coupled point, or its fixed end A)
+    coupled: bool      # the top is the deck's Vessel point (moordyn.Step's forces), else a fixed end A
+    t_end: float       # [s] the window where both codes take the file's data
+    grid4d: bool       # current_profile_4d.txt (else current_profile_dynamic.txt)
+
+
+CASES = (
+    Case("wavekin_2/wavekin_2_curr2.txt", (0.0, 0.0, 0.0), True, 40.0, False),
+    Case("wavekin_2/wavekin_3_curr2.txt", (0.0, 0.0, 0.0), True, 40.0, False),
+    Case("wavekin_3/test_dynamic_currents.txt", (18.0, 5.0, -10.0), False, 55.0, False),
+    Case("wavekin_2/wavekin_2_curr5.txt", (0.0, 0.0, 0.0), True, 14.5, True),
+    Case("wavekin_2/wavekin_3_curr5.txt", (0.0, 0.0, 0.0), True, 14.5, True),
+    Case("wavekin_4/hanging_lines.txt", (-50.0, 0.0, -16.6), False, 14.5, True),
+)
+
+
+def copy_case(moordyn_checkout: Path, case: Case, directory: Path, every_row: bool = False) -> Path:
+    """The deck and the files beside it in `directory`; every_row: the 4D file with its first node row
+    repeated (MoorDyn then reads them all)."""
+    source = Path(moordyn_checkout) / "tests" / "Mooring" / case.deck
+    for f in source.parent.iterdir():
+        if f.is_file():
+            shutil.copy(f, directory / f.name)
+    if every_row:
+        grid = directory / "current_profile_4d.txt"
+        lines = grid.read_text().splitlines(keepends=True)
+        grid.write_text("".join(lines[:5] + [lines[5]] + lines[5:]))
+    return directory / source.name
+
+
+def fmu_run(fmu, path: Path, case: Case, step: float) -> dict:
+    c = CableFMU(fmu, parameters={"lineFile": str(path)}, logging_on=True)
+    try:
+        c.initialize(inputs={f"tow.{k}": v for k, v in zip("xyz", case.top)})
+        system = any("a mooring system" in text for _, _, text in c.messages)
+        name = "line[1].fairleadTension" if system else "towTension"
+        times, tension = [0.0], [c.get(name)]
+        t = 0.0
+        while t < case.t_end - 1e-9:
+            c.do_step(step, t)
+            t += step
+            times.append(t)
+            tension.append(c.get(name))
+        return {"t": np.array(times), "tension": np.array(tension), "system": system,
+                "messages": [(s, m) for s, _, m in c.messages]}
+    finally:
+        c.free()
+
+
+def moordyn_run(path: Path, case: Case, step: float) -> dict:
+    x, v = (list(case.top), [0.0, 0.0, 0.0]) if case.coupled else ([], [])
+    also = [f for f in path.parent.iterdir() if f.is_file() and f != path]
+    with moordyn.System(path, also=also, init=(x, v), chdir=True) as md:
+        line = md.line(1)
+
+        def top() -> float:
+            if case.coupled:
+                return float(np.linalg.norm(md.api.GetPointForce(md.point(2))))
+            # end A: its first two segments' tensions extrapolated to the node
+            return float(2.0 * np.linalg.norm(md.node_tension(line, 0)) - np.linalg.norm(md.node_tension(line, 1)))
+
+        times, tension = [0.0], [top()]
+        t = 0.0
+        while t < case.t_end - 1e-9:
+            md.step(x, v, t, step)
+            t += step
+            times.append(t)
+            tension.append(top())
+    return {"t": np.array(times), "tension": np.array(tension)}
+
+
+def difference(ours: dict, theirs: dict) -> dict:
+    d = ours["tension"] - theirs["tension"]
+    scale = float(np.std(theirs["tension"]))
+    return {"rms": float(np.sqrt(np.mean(d ** 2))), "peak": float(np.max(np.abs(d))), "moordyn_rms": scale,
+            "moordyn_mean": float(np.mean(theirs["tension"])), "fmu_mean": float(np.mean(ours["tension"])),
+            "fmu_peak": float(np.max(ours["tension"])), "moordyn_peak": float(np.max(theirs["tension"]))}
+
+
+def statics(fmu, path: Path) -> dict:
+    """The FMU's statics against MoorPy's (studies.comparisons.public_decks.compare)."""
+    from .public_decks import compare as against_moorpy
+
+    r = against_moorpy(fmu, path)
+    return {"status": r["status"], "moorpy": r.get("moorpy"), "worst": r.get("worst"), "lines": r.get("lines", []),
+            "reason": r.get("reason")}
+
+
+def compute(fmu, moordyn_checkout: Path, step: float = 0.5, progress=None) -> list:
+    results = []
+    for case in CASES:
+        if progress:
+            progress(case.deck)
+        entry = {"deck": case.deck, "t_end": case.t_end, "grid4d": case.grid4d}
+        with tempfile.TemporaryDirectory() as tmp:
+            path = copy_case(moordyn_checkout, case, Path(tmp))
+            try:
+                ours = fmu_run(fmu, path, case, step)
+            except Exception as e:  # a deck the FMU refuses: its reason
+                entry["refused"] = str(e)
+                results.append(entry)
+                continue
+            entry["warnings"] = [m for s, m in ours["messages"] if s == "WARNING"]
+            entry["statics"] = statics(fmu, path)
+            theirs = moordyn_run(path, case, step)
+            entry["moordyn"] = difference(ours, theirs)
+            entry["series"] = {"t": ours["t"].tolist(), "fmu": ours["tension"].tolist(),
+                               "moordyn": theirs["tension"].tolist()}
+        if case.grid4d:
+            with tempfile.TemporaryDirectory() as tmp:
+                path = copy_case(moordyn_checkout, case, Path(tmp), every_row=True)
+                every = moordyn_run(path, case, step)
+                entry["moordyn_all_rows"] = difference(ours, every)
+                entry["series"]["moordyn_all_rows"] = every["tension"].tolist()
+        results.append(entry)
+    return results
+
+
+def markdown(results: list) -> str:
+    rows = ["| deck | window | FMU mean, peak | MoorDyn mean, peak, RMS | difference RMS, peak | "
+            "MoorDyn reading every 4D row: difference RMS, peak | statics vs MoorPy |",
+            "|---|---|---|---|---|---|---|"]
+    for r in results:
+        if "refused" in r:
+            rows.append(f"| `{r['deck']}` | refused: {r['refused']} | | | | | |")
+            continue
+        m = r["moordyn"]
+        every = r.get("moordyn_all_rows")
+        every_text = f"{every['rms']:.1f} N, {every['peak']:.1f} N" if every else "(not a 4D file)"
+        s = r["statics"]
+        if s["status"] != "ok":
+            static_text = f"refused: {s['reason']}"
+        elif s["worst"] is None:
+            static_text = f"MoorPy fails: {s['moorpy']}"
+        else:
+            static_text = f"{100 * s['worst']:.3f} %"
+        rows.append(f"| `{r['deck']}` | 0 to {r['t_end']:g} s | {m['fmu_mean']:.1f} N, {m['fmu_peak']:.1f} N | "
+                    f"{m['moordyn_mean']:.1f} N, {m['moordyn_peak']:.1f} N, {m['moordyn_rms']:.1f} N | "
+                    f"{m['rms']:.1f} N, {m['peak']:.1f} N | {every_text} | {static_text} |")
+    return "\n".join(rows) + "\n"
+
+
+def main(argv=None) -> int:
+    from ucable.paths import require_fmu
+
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("moordyn_path", type=Path, help="a MoorDyn checkout (its tests/Mooring)")
+    ap.add_argument("--step", type=float, default=0.5, help="sampling and communication step [s]")
+    ap.add_argument("--json", type=Path, help="write the results (with the histories) there")
+    args = ap.parse_args(argv)
+    results = compute(require_fmu(), args.moordyn_path, args.step, progress=lambda d: print(d, file=sys.stderr))
+    if args.json:
+        args.json.write_text(json.dumps(results, indent=1))
+    print(markdown(results))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
