@@ -128,16 +128,13 @@ def test_saved_states_hold_no_data_and_restore_where_the_file_is(fmu_file, tmp_p
         fresh.free()
 
 
-def test_currents_data_that_cannot_be_read_are_refused_naming_the_file_and_line(fmu_file, tmp_path):
+def test_currents_data_that_cannot_be_read_are_refused_naming_the_file_and_line(make_cable, tmp_path):
     (tmp_path / "bad.txt").write_text("2 1 1 1\n0 1\n0\n0\n0\n0 0 0 0 1 0 0\n")
-    for mode, name, what in ((5, "missing.txt", "currents.file = '"),
-                             (5, "bad.txt", "1 rows of nodes, the grid 2 x 1 x 1 x 1 has 2"),
-                             (2, "bad.txt", "(currents.mode 2), no rows \"t ux(z) [uy(z) [uz(z)]]\" from line 7")):
-        c = CableFMU(fmu_file, parameters={"currents.mode": mode, "currents.file": str(tmp_path / name)},
-                     logging_on=True)
-        try:
-            with pytest.raises(Exception):
-                c.initialize()
-            assert any(what in m for _, _, m in c.messages), c.messages
-        finally:
-            c.free()
+    cases = [(5, "missing.txt", "currents.file = '"),
+             (5, "bad.txt", "1 rows of nodes, the grid 2 x 1 x 1 x 1 has 2"),
+             (2, "bad.txt", "(currents.mode 2), no rows \"t ux(z) [uy(z) [uz(z)]]\" from line 7")]
+    for mode, name, what in cases:
+        c = make_cable(parameters={"currents.mode": mode, "currents.file": str(tmp_path / name)}, logging_on=True)
+        with pytest.raises(Exception):
+            c.initialize()
+        assert [m for _, _, m in c.messages if what in m], (what, c.messages)
