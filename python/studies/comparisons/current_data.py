@@ -12,13 +12,15 @@ the current is zero at t = 0). MoorDyn v2.7 skips the first node row of a curren
 nodes from the file's seventh line; the node on the sixth keeps a zero current): the 4D decks are also run by
 MoorDyn on a copy of the file with that row repeated, so that it reads every node ("MoorDyn, all rows").
 
-    python -m studies.comparisons.current_data MOORDYN_CHECKOUT [--json out.json]
+    python -m studies.comparisons.current_data MOORDYN_CHECKOUT [--json out.json] [--doc docs/waves.md]
+    python -m studies.comparisons.current_data --from-json out.json --doc docs/waves.md
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import re
 import shutil
 import sys
 import tempfile
@@ -50,13 +52,19 @@ CASES = (
 )
 
 
-def copy_case(moordyn_checkout: Path, case: Case, directory: Path, every_row: bool = False) -> Path:
+def copy_case(moordyn_checkout: Path, case: Case, directory: Path, every_row: bool = False,
+              current: bool = True) -> Path:
     """The deck and the files beside it in `directory`; every_row: the 4D file with its first node row
-    repeated (MoorDyn then reads them all)."""
+    repeated (MoorDyn then reads them all); current False: the deck's Currents set to 0."""
     source = Path(moordyn_checkout) / "tests" / "Mooring" / case.deck
     for f in source.parent.iterdir():
         if f.is_file():
             shutil.copy(f, directory / f.name)
+    if not current:
+        deck = directory / source.name
+        text, n = re.subn(r"^(\s*)[25](\s+Currents\b)", r"\g<1>0\g<2>", deck.read_text(), count=1, flags=re.M)
+        assert n == 1, f"no Currents option in {case.deck}"
+        deck.write_text(text)
     if every_row:
         grid = directory / "current_profile_4d.txt"
         lines = grid.read_text().splitlines(keepends=True)
@@ -64,10 +72,20 @@ def copy_case(moordyn_checkout: Path, case: Case, directory: Path, every_row: bo
     return directory / source.name
 
 
+class RefusedDeck(Exception):
+    """The FMU's initialization refused the deck: its error message."""
+
+
 def fmu_run(fmu, path: Path, case: Case, step: float) -> dict:
+    from fmpy.fmi1 import FMICallException
+
     c = CableFMU(fmu, parameters={"lineFile": str(path)}, logging_on=True)
     try:
-        c.initialize(inputs={f"tow.{k}": v for k, v in zip("xyz", case.top)})
+        try:
+            c.initialize(inputs={f"tow.{k}": v for k, v in zip("xyz", case.top)})
+        except FMICallException:
+            errors = [m for s, _, m in c.messages if s == "ERROR"]
+            raise RefusedDeck(errors[0].split("initialization failed: ")[-1] if errors else "(no message)")
         system = any("a mooring system" in text for _, _, text in c.messages)
         name = "line[1].fairleadTension" if system else "towTension"
         times, tension = [0.0], [c.get(name)]
@@ -132,7 +150,7 @@ def compute(fmu, moordyn_checkout: Path, step: float = 0.5, progress=None) -> li
             path = copy_case(moordyn_checkout, case, Path(tmp))
             try:
                 ours = fmu_run(fmu, path, case, step)
-            except Exception as e:  # a deck the FMU refuses: its reason
+            except RefusedDeck as e:  # a deck the FMU refuses: its reason
                 entry["refused"] = str(e)
                 results.append(entry)
                 continue
@@ -142,6 +160,17 @@ def compute(fmu, moordyn_checkout: Path, step: float = 0.5, progress=None) -> li
             entry["moordyn"] = difference(ours, theirs)
             entry["series"] = {"t": ours["t"].tolist(), "fmu": ours["tension"].tolist(),
                                "moordyn": theirs["tension"].tolist()}
+        with tempfile.TemporaryDirectory() as tmp:  # the same deck without its current: the current's share
+            path = copy_case(moordyn_checkout, case, Path(tmp), current=False)
+            still_ours, still_theirs = fmu_run(fmu, path, case, step), moordyn_run(path, case, step)
+            effect_ours = ours["tension"] - still_ours["tension"]
+            effect_theirs = theirs["tension"] - still_theirs["tension"]
+            d = effect_ours - effect_theirs
+            entry["effect"] = {"fmu_rms": float(np.sqrt(np.mean(effect_ours ** 2))),
+                               "moordyn_rms": float(np.sqrt(np.mean(effect_theirs ** 2))),
+                               "rms": float(np.sqrt(np.mean(d ** 2))), "peak": float(np.max(np.abs(d)))}
+            entry["series"]["fmu_still"] = still_ours["tension"].tolist()
+            entry["series"]["moordyn_still"] = still_theirs["tension"].tolist()
         if case.grid4d:
             with tempfile.TemporaryDirectory() as tmp:
                 path = copy_case(moordyn_checkout, case, Path(tmp), every_row=True)
@@ -154,12 +183,15 @@ def compute(fmu, moordyn_checkout: Path, step: float = 0.5, progress=None) -> li
 
 def markdown(results: list) -> str:
     rows = ["| deck | window | FMU mean, peak | MoorDyn mean, peak, RMS | difference RMS, peak | "
-            "MoorDyn reading every 4D row: difference RMS, peak | statics vs MoorPy |",
-            "|---|---|---|---|---|---|---|"]
+            "MoorDyn reading every 4D row: difference RMS, peak | the current's share (with less without it): "
+            "FMU RMS, MoorDyn RMS, difference RMS, peak | statics vs MoorPy |",
+            "|---|---|---|---|---|---|---|---|"]
     for r in results:
         if "refused" in r:
-            rows.append(f"| `{r['deck']}` | refused: {r['refused']} | | | | | |")
+            rows.append(f"| `{r['deck']}` | refused: {r['refused']} | | | | | | |")
             continue
+        e = r["effect"]
+        effect_text = f"{e['fmu_rms']:.1f} N, {e['moordyn_rms']:.1f} N, {e['rms']:.1f} N, {e['peak']:.1f} N"
         m = r["moordyn"]
         every = r.get("moordyn_all_rows")
         every_text = f"{every['rms']:.1f} N, {every['peak']:.1f} N" if every else "(not a 4D file)"
@@ -172,22 +204,51 @@ def markdown(results: list) -> str:
             static_text = f"{100 * s['worst']:.3f} %"
         rows.append(f"| `{r['deck']}` | 0 to {r['t_end']:g} s | {m['fmu_mean']:.1f} N, {m['fmu_peak']:.1f} N | "
                     f"{m['moordyn_mean']:.1f} N, {m['moordyn_peak']:.1f} N, {m['moordyn_rms']:.1f} N | "
-                    f"{m['rms']:.1f} N, {m['peak']:.1f} N | {every_text} | {static_text} |")
+                    f"{m['rms']:.1f} N, {m['peak']:.1f} N | {every_text} | {effect_text} | {static_text} |")
     return "\n".join(rows) + "\n"
+
+
+SECTION = "scripts/current_data_moordyn"
+
+
+def section(results: list) -> str:
+    """The generated section of docs/waves.md: the table and what it rests on."""
+    return ("### Against MoorDyn: currents given as data\n\n"
+            "This section is generated by `scripts/current_data_moordyn` (`studies.comparisons.current_data`: "
+            "the numbers are computed first, the text written from them). The six public MoorDyn decks with "
+            "`Currents` 2 or 5, each run by the FMU (its defaults, the deck's elements) and by MoorDyn 2.7 "
+            "(`moordyn` module, the deck's dtM) on the same files, the deck's vessel or fixed top point held; "
+            "the top tension of line 1 sampled every 0.5 s from t = 0 to the end of the window, which ends "
+            "before the data do (after them MoorDyn starts the record over, the FMU holds it). Difference: the "
+            "RMS and the largest absolute difference of the two histories. Statics: the FMU's initial tension "
+            "at both ends against MoorPy's (its largest relative difference; MoorPy takes no current).\n\n"
+            + markdown(results))
 
 
 def main(argv=None) -> int:
     from ucable.paths import require_fmu
 
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("moordyn_path", type=Path, help="a MoorDyn checkout (its tests/Mooring)")
+    from ..doc_section import write_section
+
+    ap = argparse.ArgumentParser(prog="scripts/current_data_moordyn", description=__doc__.splitlines()[0])
+    ap.add_argument("moordyn_path", type=Path, nargs="?", help="a MoorDyn checkout (its tests/Mooring)")
     ap.add_argument("--step", type=float, default=0.5, help="sampling and communication step [s]")
     ap.add_argument("--json", type=Path, help="write the results (with the histories) there")
+    ap.add_argument("--from-json", type=Path, help="the results of an earlier run (nothing is run)")
+    ap.add_argument("--doc", type=Path, help=f"write the section into this Markdown file (its {SECTION} markers)")
     args = ap.parse_args(argv)
-    results = compute(require_fmu(), args.moordyn_path, args.step, progress=lambda d: print(d, file=sys.stderr))
-    if args.json:
-        args.json.write_text(json.dumps(results, indent=1))
-    print(markdown(results))
+    if args.from_json:
+        results = json.loads(args.from_json.read_text())
+    else:
+        if args.moordyn_path is None:
+            ap.error("a MoorDyn checkout, or --from-json")
+        results = compute(require_fmu(), args.moordyn_path, args.step, progress=lambda d: print(d, file=sys.stderr))
+        if args.json:
+            args.json.write_text(json.dumps(results, indent=1))
+    text = section(results)
+    print(text)
+    if args.doc:
+        write_section(args.doc, text, SECTION)
     return 0
 
 
