@@ -138,3 +138,27 @@ def test_currents_data_that_cannot_be_read_are_refused_naming_the_file_and_line(
         with pytest.raises(Exception):
             c.initialize()
         assert [m for _, _, m in c.messages if what in m], (what, c.messages)
+
+
+def test_lines_without_normal_drag_hang_straight_in_a_current_given_as_data(make_cable, tmp_path):
+    """Two chains with Cd 0 hanging from fixed points to free points (a mooring system) in a 4D current:
+    the current makes no normal drag, each line starts hanging straight, its top tension its wet weight
+    (the start's direction in the flow was 0 / 0 without normal drag)."""
+    deck = DECK.replace("2.4    0.0    0.1     0.0", "0.0    0.0    0.0     0.0")
+    deck = deck.replace("2         free      18       5         -40      0        0         0     0",
+                        "2         free      18       5         -40      0        0         0     0\n"
+                        "3         fixed     30       5         -10      0        0         0     0\n"
+                        "4         free      30       5         -40      0        0         0     0")
+    deck = deck.replace("1        chain     1         2      30          10           -",
+                        "1        chain     1         2      30          10           -\n"
+                        "2        chain     3         4      30          10           -")
+    deck = deck.replace("2         Currents     - current_profile_dynamic.txt", "5         Currents     - 4D")
+    (tmp_path / "deck.txt").write_text(deck)
+    nodes = "".join(f"{x} {y} {z} {t} {0.1 * x + 0.1 * t} 0 0\n"
+                    for x in (0.0, 50.0) for y in (0.0, 10.0) for z in (-50.0, 0.0) for t in (0.0, 10.0))
+    (tmp_path / "current_profile_4d.txt").write_text("2 2 2 2\n0 50\n0 10\n-50 0\n0 10\n" + nodes)
+    c = make_cable(parameters={"lineFile": str(tmp_path / "deck.txt")}, logging_on=True)
+    c.initialize(inputs=TOP)
+    wet = (1.1 - 1025.0 * np.pi * 0.0133 ** 2 / 4) * 9.80665 * 30.0
+    for k in (1, 2):
+        assert c.get(f"line[{k}].fairleadTension") == pytest.approx(wet, rel=1e-3)
