@@ -208,6 +208,24 @@ def markdown(results: list) -> str:
     return "\n".join(rows) + "\n"
 
 
+def frictionless_share(fmu, moordyn_checkout: Path, deck: str, step: float = 0.5) -> dict:
+    """The current's share (with less without the current) of one deck in both codes with its seabed friction
+    off (FrictionCoefficient 0): how much of the share's difference is the two codes' friction models."""
+    case = next(c for c in CASES if c.deck == deck)
+    runs = {}
+    for current in (True, False):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = copy_case(moordyn_checkout, case, Path(tmp), current=current)
+            text, n = re.subn(r"^([0-9.eE+-]+)(\s+FrictionCoefficient\b)", r"0.0\g<2>", path.read_text(), flags=re.M)
+            assert n == 1, f"no FrictionCoefficient in {deck}"
+            path.write_text(text)
+            runs[current] = (fmu_run(fmu, path, case, step)["tension"], moordyn_run(path, case, step)["tension"])
+    ours, theirs = runs[True][0] - runs[False][0], runs[True][1] - runs[False][1]
+    d = ours - theirs
+    return {"deck": deck, "fmu_rms": float(np.sqrt(np.mean(ours ** 2))), "moordyn_rms": float(np.sqrt(np.mean(theirs ** 2))),
+            "rms": float(np.sqrt(np.mean(d ** 2))), "peak": float(np.max(np.abs(d)))}
+
+
 SECTION = "scripts/current_data_moordyn"
 
 
@@ -236,7 +254,12 @@ def main(argv=None) -> int:
     ap.add_argument("--json", type=Path, help="write the results (with the histories) there")
     ap.add_argument("--from-json", type=Path, help="the results of an earlier run (nothing is run)")
     ap.add_argument("--doc", type=Path, help=f"write the section into this Markdown file (its {SECTION} markers)")
+    ap.add_argument("--frictionless", metavar="DECK", help="only the current's share of DECK (e.g. "
+                    "wavekin_2/wavekin_3_curr2.txt) in both codes with the seabed friction off")
     args = ap.parse_args(argv)
+    if args.frictionless:
+        print(json.dumps(frictionless_share(require_fmu(), args.moordyn_path, args.frictionless, args.step)))
+        return 0
     if args.from_json:
         results = json.loads(args.from_json.read_text())
     else:
