@@ -57,6 +57,7 @@ static char* read_file(const char* path, size_t* length, int* error) {
 typedef struct Companions {
     UCLineFileCompanion files[UC_MAX_COMPANIONS];
     char* texts[UC_MAX_COMPANIONS];
+    char* paths[UC_MAX_COMPANIONS]; /* where each was read from */
     char names[1024];
     int n;
 } Companions;
@@ -82,22 +83,30 @@ static void read_companions(const char* path, const char* text, size_t length, C
                 tail = strpbrk(tail, "/\\");
                 if (tail != NULL) ++tail;
             }
-            if (companion == NULL) companion = read_file(name, &n, &error);
-            free(full);
+            if (companion == NULL) {
+                companion = read_file(name, &n, &error);
+                if (companion != NULL) strcpy(full, name);
+            }
             if (companion != NULL) {
+                c->paths[c->n] = full;
+                full = NULL;
                 c->texts[c->n] = companion;
                 c->files[c->n].name = name;
                 c->files[c->n].text = companion;
                 c->files[c->n].length = n;
                 ++c->n;
             }
+            free(full);
         }
         name = end + 1;
     }
 }
 
 static void free_companions(Companions* c) {
-    for (int k = 0; k < c->n; ++k) free(c->texts[k]);
+    for (int k = 0; k < c->n; ++k) {
+        free(c->texts[k]);
+        free(c->paths[k]);
+    }
     c->n = 0;
 }
 
@@ -140,6 +149,16 @@ static fmi2Status apply_text(UCInstance* inst, UCParams* p, const char* function
     read_companions(path, text, length, &companions);
     const int rc = uc_line_file_apply_with(text, length, companions.files, companions.n, p, vessel, notes,
                                            notes != NULL ? UC_NOTES_SIZE : 0, inst->msg, sizeof inst->msg);
+    /* the deck's Currents 2 or 5 names its data file beside the deck: the path it was read from instead */
+    if (rc == 0 && p->currentsMode != 0 && inst->params.currentsFile[0] == '\0') {
+        for (int k = 0; k < companions.n; ++k) {
+            if (strcmp(companions.files[k].name, p->currentsFile) == 0 &&
+                strlen(companions.paths[k]) < sizeof p->currentsFile) {
+                strcpy(p->currentsFile, companions.paths[k]);
+                break;
+            }
+        }
+    }
     free_companions(&companions);
     if (rc != 0 && uc_line_file_is_system(text, length)) {
         /* a mooring system: made from the text by uc_line_file_create_system */
@@ -268,21 +287,57 @@ fmi2Status uc_line_file_create_system(UCInstance* inst, const UCParams* p, UCCab
     return with_text(inst, NULL, p, cable, function);
 }
 
-fmi2Status uc_wave_file_load(UCInstance* inst, UCParams* p, const char* function) {
+/* Reads the file `name` of the parameter `label` (looked up as lineFile's) and hands its text to apply, which
+ * returns 0 with inst->msg = what it read, or non-zero with inst->msg = why not; logged either way. */
+typedef int (*ApplyText)(UCInstance* inst, const char* text, size_t length, void* context);
+
+static fmi2Status load_named_file(UCInstance* inst, const char* label, const char* name, const char* function,
+                                  ApplyText apply, void* context) {
     char* path = NULL;
     size_t length = 0;
-    char* text = read_named_file(inst, "waves.file", p->wavesFile, function, &path, &length);
+    char* text = read_named_file(inst, label, name, function, &path, &length);
     if (text == NULL) return fmi2Error;
     fmi2Status status = fmi2Error;
     inst->msg[0] = '\0';
-    if (uc_wave_file_apply(text, length, p, inst->msg, sizeof inst->msg) != 0) {
-        uc_log_status(&inst->log, fmi2Error, "%s: waves.file %s, %s", function, path, inst->msg);
+    if (apply(inst, text, length, context) != 0) {
+        uc_log_status(&inst->log, fmi2Error, "%s: %s %s, %s", function, label, path, inst->msg);
     } else {
-        uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: waves.file %s read: %d wave components", function, path,
-               p->waveComponentCount);
+        uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: %s %s read: %s", function, label, path, inst->msg);
         status = fmi2OK;
     }
     free(text);
     free(path);
     return status;
+}
+
+static int apply_waves(UCInstance* inst, const char* text, size_t length, void* context) {
+    UCParams* p = context;
+    if (uc_wave_file_apply(text, length, p, inst->msg, sizeof inst->msg) != 0) return 1;
+    snprintf(inst->msg, sizeof inst->msg, "%d wave components", p->waveComponentCount);
+    return 0;
+}
+
+fmi2Status uc_wave_file_load(UCInstance* inst, UCParams* p, const char* function) {
+    return load_named_file(inst, "waves.file", p->wavesFile, function, apply_waves, p);
+}
+
+typedef struct CurrentTarget {
+    const UCParams* p;
+    UCCable* cable;
+} CurrentTarget;
+
+static int apply_currents(UCInstance* inst, const char* text, size_t length, void* context) {
+    const CurrentTarget* target = context;
+    const int mode = target->p->currentsMode;
+    /* the refusal after "(currents.mode m), "; what was read without it */
+    const size_t n = (size_t)snprintf(inst->msg, sizeof inst->msg, "(currents.mode %d), ", mode);
+    if (uc_set_current_text(target->cable, mode, text, length, inst->msg + n, sizeof inst->msg - n) != 0) return 1;
+    memmove(inst->msg, inst->msg + n, strlen(inst->msg + n) + 1);
+    return 0;
+}
+
+fmi2Status uc_current_file_load(UCInstance* inst, const UCParams* p, UCCable* cable, const char* function) {
+    if (p->currentsMode == 0) return fmi2OK;
+    CurrentTarget target = {p, cable};
+    return load_named_file(inst, "currents.file", p->currentsFile, function, apply_currents, &target);
 }

@@ -27,4 +27,11 @@ fmi2Status uc_line_file_create_system(UCInstance* inst, const UCParams* p, UCCab
  * tried) or a refused row (naming the file and its line) is fmi2Error, logged naming `function`. */
 fmi2Status uc_wave_file_load(UCInstance* inst, UCParams* p, const char* function);
 
+/* currents.mode 2 or 5 (docs/waves.md, "A current given as data"): reads p->currentsFile (looked up as lineFile;
+ * for a deck's Currents 2 or 5 the path the deck's companion was read from) and gives its data to the core
+ * (uc_set_current_text); nothing with currents.mode 0. Logs the file used (logEvents); an unreadable file
+ * (naming every path tried: a state restored where the file is gone) or refused data (naming the file and
+ * its line) is fmi2Error, logged naming `function`. */
+fmi2Status uc_current_file_load(UCInstance* inst, const UCParams* p, UCCable* cable, const char* function);
+
 #endif /* UNDERWATERCABLE_FMU_LINE_FILE_H */

@@ -56,6 +56,10 @@ static fmi2Status initialize_core(UCInstance* inst, const char* function, fmi2St
     } else {
         inst->cable = uc_create(&inst->coreParams, inst->msg, sizeof inst->msg);
         if (inst->cable == NULL) return fail_with_core_message(inst, function, "cannot create the cable model", fmi2Error);
+        if (uc_current_file_load(inst, &inst->coreParams, inst->cable, function) != fmi2OK) {
+            uc_instance_drop_core(inst);
+            return fmi2Error;
+        }
     }
     if (uc_initialize(inst->cable, inst->startTime, &inst->inputs, inst->msg, sizeof inst->msg) != 0) {
         return fail_with_core_message(inst, function, "initialization failed", failure);
@@ -110,11 +114,22 @@ fmi2Status uc_sim_initial_outputs(UCInstance* inst, const char* function) {
 
 fmi2Status uc_sim_create_core(UCInstance* inst, const UCParams* p, UCCable** cable, const char* function) {
     inst->msg[0] = '\0';
-    if (p->mooringSystem) return uc_line_file_create_system(inst, p, cable, function);
-    *cable = uc_create(p, inst->msg, sizeof inst->msg);
-    if (*cable != NULL) return fmi2OK;
-    uc_log_status(&inst->log, fmi2Error, "%s: cannot create the cable model: %s", function, inst->msg);
-    return fmi2Error;
+    if (p->mooringSystem) {
+        if (uc_line_file_create_system(inst, p, cable, function) != fmi2OK) return fmi2Error;
+    } else {
+        *cable = uc_create(p, inst->msg, sizeof inst->msg);
+        if (*cable == NULL) {
+            uc_log_status(&inst->log, fmi2Error, "%s: cannot create the cable model: %s", function, inst->msg);
+            return fmi2Error;
+        }
+    }
+    /* the current's data are parameters outside the saved state: read again for a new core */
+    if (uc_current_file_load(inst, p, *cable, function) != fmi2OK) {
+        uc_free(*cable);
+        *cable = NULL;
+        return fmi2Error;
+    }
+    return fmi2OK;
 }
 
 static fmi2Status check_step_arguments(UCInstance* inst, double tc, double h) {

@@ -71,6 +71,13 @@ UCCable* uc_create_system_with(const UCParams* p, const char* text, size_t lengt
  * a row without a direction takes p->wavesDirection). Returns 0, or 1 with msg = "line <n>: <what>". */
 int uc_wave_file_apply(const char* text, size_t length, UCParams* p, char* msg, size_t msgSize);
 
+/* The current given as data (currents.mode 2 or 5, docs/waves.md "A current given as data"): the text of
+ * its file in MoorDyn's format (current_profile_dynamic.txt for mode 2, current_profile_4d.txt for 5), read
+ * and given to every line of c, in place of any it had (a deck's). Call it after uc_create or
+ * uc_create_system and before uc_initialize or uc_state_restore (the data are not in the saved state).
+ * Returns 0 with msg = a description of the data, or 1 with msg = "line <n>: <what>". */
+int uc_set_current_text(UCCable* c, int mode, const char* text, size_t length, char* msg, size_t msgSize);
+
 /* Defaults: the Hopland 1993 tow cable, free lower end, hinged top, 20 elements. */
 /* The inputs' start values (zero, but currentScale 1): initialize every UCInputs with it. */
 void uc_inputs_default(UCInputs* in);

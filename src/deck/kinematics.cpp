@@ -21,6 +21,8 @@ namespace {
 const char* kCurrentProfileFile = "current_profile.txt";
 const char* kWaveFrequenciesFile = "wave_frequencies.txt";
 const char* kWaveElevationFile = "wave_elevation.txt";
+const char* kCurrentDynamicFile = "current_profile_dynamic.txt";
+const char* kCurrent4dFile = "current_profile_4d.txt";
 
 const LineFileCompanion* companion(const LineFileCompanions& companions, const char* name) {
     for (const LineFileCompanion& c : companions) {
@@ -379,15 +381,23 @@ bool read_sea(const Options& options, const LineFileCompanions& companions, Line
                                                 "profile currentProfile.* (" + std::to_string(sea.profileRows) +
                                                 " rows, in place of the parameters'; added to the inputs current.x/y)"));
             break;
-        case 2:
-            return refuse(currentRow, "Currents", currents, "a current profile changing in time "
-                          "(current_profile_dynamic.txt) is not supported: the FMU's profile is steady (Currents 1), "
-                          "scaled in time only by the input currentScale");
+        case 2: case 5: {
+            const char* name = currents == 2 ? kCurrentDynamicFile : kCurrent4dFile;
+            if (!file(currentRow, "Currents", currents, name, text)) return false;
+            std::string why;
+            sea.currentGrid = CurrentGrid::read(currents, text->text, why);
+            if (!sea.currentGrid) return refuse(currentRow, "Currents", currents, std::string(name) + ": " + why);
+            sea.currentsMode = currents;
+            sea.currentsFile = name;
+            notes.push_back(at_line(currentRow, "Currents " + std::to_string(currents) + ": " + name + ", " +
+                                                sea.currentGrid->describe() + ", is the current given as data "
+                                                "(currents.mode " + std::to_string(currents) + "), interpolated as MoorDyn "
+                                                "does and added to the inputs current.x/y at every point (also where "
+                                                "MoorDyn adds it onto its wave grid)"));
+            break;
+        }
         case 3: case 4:
             return refuse(currentRow, "Currents", currents, "not implemented in MoorDyn v2 either");
-        case 5:
-            return refuse(currentRow, "Currents", currents, "a current on a grid in x, y, z and time "
-                          "(current_profile_4d.txt) is not supported: the FMU's current varies with depth only");
         default:
             return refuse(currentRow, "Currents", currents, "not a MoorDyn v2 option (0 to 5)");
     }
@@ -479,6 +489,8 @@ std::vector<std::string> line_file_companions(std::string_view text) {
         if (options.waveKin.first == 7 || options.waveKin.first == 2) names.push_back(kWaveFrequenciesFile);
         if (options.waveKin.first == 3) names.push_back(kWaveElevationFile);
         if (options.currents.first == 1) names.push_back(kCurrentProfileFile);
+        if (options.currents.first == 2) names.push_back(kCurrentDynamicFile);
+        if (options.currents.first == 5) names.push_back(kCurrent4dFile);
         if (!options.seabed.seafloorFile.empty()) names.push_back(options.seabed.seafloorFile);
     }
     if (const auto& types = sections[static_cast<size_t>(Kind::LineTypes)]) {

@@ -7,12 +7,14 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "core/types.h"
 #include "model/parameters.h"
+#include "terms/current_grid.h"
 
 namespace uc {
 
@@ -60,6 +62,12 @@ struct LineFileSea {
     // not empty: the deck sets waves.mode 3 with these, each omega [rad/s], amplitude [m], phase [rad],
     // direction of travel [rad] in the FMU's convention a cos(k (x cos b + y sin b) - omega t + p)
     std::vector<std::array<double, 4>> waveComponents;
+    // Currents 2 or 5: the current given as data (currents.mode), read from the companion file `currentsFile`
+    // (its name beside the deck); a mooring system takes the grid itself, one line the file through the
+    // parameters currents.mode and currents.file.
+    int currentsMode = 0;
+    std::string currentsFile;
+    std::shared_ptr<const CurrentGrid> currentGrid;
 };
 
 // The rows "omega amplitude phase [direction]" of a waves.file (docs/waves.md, "Given components") into

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "deck/tables.h"
 
@@ -317,6 +318,12 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
             p.currentProfileX[k] = sea.profileX[k];
             p.currentProfileY[k] = sea.profileY[k];
         }
+    }
+    // Currents 2 or 5: the data's file by its name beside the deck (the FMU's adapter puts the path it read it
+    // from in its place); a currents.file the importer set keeps its place and its currents.mode.
+    if (sea.currentsMode != 0 && p.currentsFile[0] == '\0') {
+        p.currentsMode = sea.currentsMode;
+        std::snprintf(p.currentsFile, sizeof p.currentsFile, "%s", sea.currentsFile.c_str());
     }
     if (!sea.waveComponents.empty() && !apply_wave_components(sea.waveComponents, "the deck", p, error)) return false;
     if (!sea.waveComponents.empty()) {

@@ -183,6 +183,8 @@ typedef struct UCParams {
     double axialCurveTension[UC_AXIAL_CURVE_POINTS]; /* axialCurve.tension[k] [N]: tension at the strain of point k (increasing with k) */
     double seabedSlope; /* seabedSlope [deg]: angle of the plane seabed below the horizontal (0: flat, the default): the seabed passes through z = -`waterDepth` under the origin (x = y = 0) and descends along the heading `seabedSlopeHeading`, so its depth under (x, y) is `waterDepth` + tan(`seabedSlope`) (x cos ψ + y sin ψ); contact acts along the seabed's normal and friction along its surface ([docs/model.md](docs/model.md), seabed) */
     double seabedSlopeHeading; /* seabedSlopeHeading [deg]: direction ψ in which the sloped seabed (`seabedSlope`) descends most steeply, measured in the horizontal plane from +x towards +y: 0 (the default) deeper along +x, 90 deeper along +y */
+    int currentsMode; /* currents.mode: a current given as data in `currents.file`, added to `current.x/y` and the depth profile: 0 none (the default), 2 a profile changing in time in MoorDyn's `current_profile_dynamic.txt` format (depth × time), 5 a grid in x, y, z and time in its `current_profile_4d.txt` format; interpolated linearly, held at the edges ([docs/waves.md](docs/waves.md), "A current given as data"); a `lineFile` deck's `Currents` 2 or 5 sets it with the file beside the deck */
+    char currentsFile[UC_STRING_CAPACITY]; /* currents.file: `currents.mode` 2 or 5: path of the file of the current's data in MoorDyn's format (`current_profile_dynamic.txt` or `current_profile_4d.txt`, [docs/waves.md](docs/waves.md), "A current given as data"); a relative path is looked up as `lineFile`'s; read when the model is made and again when a saved state is restored into a new instance (the data are not in the saved state); empty: the file beside a `lineFile` deck whose `Currents` is 2 or 5 */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
     int waveComponentCount; /* (not an FMU variable) waves.mode 3: the number of given wave components in waveComponents (from waves.file or a lineFile deck) */
@@ -604,6 +606,8 @@ typedef struct UCOutputs {
     X(336, "axialCurve.tension[30]", REAL, PARAMETER, axialCurveTension[29]) \
     X(337, "seabedSlope", REAL, PARAMETER, seabedSlope) \
     X(338, "seabedSlopeHeading", REAL, PARAMETER, seabedSlopeHeading) \
+    X(339, "currents.mode", INTEGER, PARAMETER, currentsMode) \
+    X(340, "currents.file", STRING, PARAMETER, currentsFile) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -3590,6 +3594,7 @@ typedef struct UCOutputs {
     X(axialCurveTension[29], 0.0) \
     X(seabedSlope, 0.0) \
     X(seabedSlopeHeading, 0.0) \
+    X(currentsMode, 0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -3942,6 +3947,7 @@ typedef struct UCOutputs {
     X(axialCurveTension[29], "axialCurve.tension[30]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
     X(seabedSlope, "seabedSlope", 0.0, 45.0, 0, 0, "[0, 45]", "a seabed steeper than 45 degrees is a wall, not a seabed a line rests on") \
     X(seabedSlopeHeading, "seabedSlopeHeading", -360.0, 360.0, 0, 0, "[-360, 360]", "a heading in degrees") \
+    X(currentsMode, "currents.mode", 0.0, 5.0, 0, 0, "{0 none, 2 a profile changing in time, 5 a grid in x, y, z and time}", "unknown kind of current data") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

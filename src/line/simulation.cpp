@@ -126,6 +126,7 @@ void CableSimulation::set_environment(const LineEnvironment& env) {
     loads_.current.scale = env.currentScale;
     loads_.current.profile = &model_.current_profile();
     loads_.current.sea = &model_.sea();
+    loads_.current.grid = currentGrid_.get();
     loads_.endLoad = vec(env.endLoad);
     loads_.endLoadVelocity = vec(env.endLoadVelocity);
     const double* rows[3] = {env.endLoadDamping.x, env.endLoadDamping.y, env.endLoadDamping.z};
@@ -145,6 +146,37 @@ double CableSimulation::cable_torque(const LineEnvironment& env) {
     const double kTwoPi = 6.28318530717958647692;
     state_.lastBeta += std::remainder(raw - state_.lastBeta, kTwoPi);
     return model_.torque_for_twist(env.twist - state_.lastBeta);
+}
+
+void CableSimulation::set_current_grid(std::shared_ptr<const CurrentGrid> grid) {
+    currentGrid_ = std::move(grid);
+    loads_.current.grid = currentGrid_.get();
+    loads_.current.gridOutside = 0;
+    currentGridWarned_ = 0;
+}
+
+void CableSimulation::warn_outside_current_grid() {
+    const unsigned fresh = loads_.current.gridOutside & ~currentGridWarned_;
+    if (fresh == 0 || currentGrid_ == nullptr) return;
+    currentGridWarned_ |= fresh;
+    const CurrentGrid& g = *currentGrid_;
+    char text[640];
+    if (fresh & CurrentGrid::kOutsideSpace) {
+        std::snprintf(text, sizeof text,
+                      "warning: at t = %.6g s the line reaches outside the current's data (%s): the current there is "
+                      "the data's at the nearest edge, held as MoorDyn holds it; extend the data over the water the line "
+                      "moves in",
+                      state_.time, g.describe().c_str());
+        add_event(text);
+    }
+    if (fresh & CurrentGrid::kAfterRecord) {
+        std::snprintf(text, sizeof text,
+                      "warning: at t = %.6g s the run passes the current's last sample (t = %.6g s): the current is held "
+                      "at its last values from there (MoorDyn would start the record over); extend the data over the "
+                      "run",
+                      state_.time, g.last_time());
+        add_event(text);
+    }
 }
 
 void CableSimulation::add_event(const std::string& text) {
@@ -295,6 +327,7 @@ bool CableSimulation::step(double h, const EndMotion& tow, const EndMotion& far,
     state_.outputs.towTensionMin = std::min(stepTensionMin_, state_.outputs.towTension);
     warn_of_compression();
     warn_beyond_curve();
+    warn_outside_current_grid();
     return true;
 }
 
@@ -483,6 +516,7 @@ void CableSimulation::replace_model(CableModel&& model) {
     derivativeStamp_ = -1;
     loads_.current.profile = &model_.current_profile();
     loads_.current.sea = &model_.sea();
+    loads_.current.grid = currentGrid_.get();
 }
 
 void CableSimulation::free_state(std::vector<double>& q, std::vector<double>& v, std::vector<double>& a) const {

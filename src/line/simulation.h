@@ -104,6 +104,8 @@ public:
     bool step(double h, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env, std::string& error);
     // The event of the last step to log (a winch limit reached), or empty; cleared by the call.
     std::string take_event() override;
+    void set_current_grid(std::shared_ptr<const CurrentGrid> grid) override;
+    const CurrentGrid* current_grid() const { return currentGrid_.get(); }
 
     size_t state_size() const override;
     void save_state(void* buffer) override;
@@ -223,6 +225,8 @@ private:
     // The first time an element's mean strain (the mean of |r'| - 1 over it) passes the last point of its
     // section's tension-strain curve, a warning: the tension there is the curve's linear continuation.
     void warn_beyond_curve();
+    // Warns once of each way the run has left the current grid's data (CurrentField::gridOutside).
+    void warn_outside_current_grid();
     bool set_integrator_tolerances(std::string& error);
     // An element's length (the winch's nominal one for its top element), the strain tolerance
     // (tensionTolerance x the tension scale / EA, times rms) and the time scale tau over which a
@@ -287,6 +291,10 @@ private:
 
     // --- derived at initialization or from the state (not saved) ---
     std::string event_;  // the step's event text (taken by the caller; a message, not state)
+    // The current given as data (shared by the lines of a system; parameters, not state) and the
+    // CurrentGrid::Outside bits already warned of (a message, not state).
+    std::shared_ptr<const CurrentGrid> currentGrid_;
+    unsigned currentGridWarned_ = 0;
     StaticLayout layout_;  // the graded mesh's nodes (made again from state_.grading at a restore)
     bool profileApplies_ = false;  // an anchored line, or a far end held at rest
     // The static profile for the ends the model holds (grade_mesh solves it once per initialization).

@@ -6,10 +6,12 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string>
 
 #include "core/types.h"
 #include "model/parameters.h"
+#include "terms/current_grid.h"
 
 namespace uc {
 
@@ -46,6 +48,9 @@ public:
     virtual EndInputs end_inputs() const { return {}; }
     // The event of the last step worth a log line, or empty; cleared by the call.
     virtual std::string take_event() = 0;
+    // A current given as data (currents.mode 2 or 5, or a deck's Currents 2 or 5), added to the water
+    // of every line from here on; null: none. Not state: a restored instance is given it again.
+    virtual void set_current_grid(std::shared_ptr<const CurrentGrid> grid) = 0;
 
     // The exact state (uc_state_save): its size in bytes, written into buffer, taken back. restore_state
     // refuses (false, error) a state of another size, version or model before anything changes; *changed

@@ -168,15 +168,15 @@ void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, boo
 // angle of the flow past it (the water's velocity at the tow point less the tow's), where the normal
 // drag 0.5 rho Cdn d U^2 sin^2(phi) balances the weight's normal part w cos(phi) (docs/model.md,
 // "Initial equilibrium"): the exact steady shape of a uniform line with a free end, and near it with a
-// towed body or a seabed. False (d unchanged) where there is no flow or the line does not sink.
+// towed body or a seabed. False (d unchanged) where there is no flow, no normal drag or the line does not sink.
 bool CableSimulation::steady_tow_direction(Vec3& d) const {
     const FluidProps& fluid = model_.section(0).fluid;
     const double w = submerged_weight(fluid);
-    Vec3 flow = loads_.current.at(state_.tow.p().z(), nullptr) - state_.tow.v();
+    Vec3 flow = loads_.current.velocity(state_.tow.p()) - state_.tow.v();
     flow.z() = 0.0;  // a vertical tow velocity is no steady tow along the horizontal
     const double U = flow.norm();
-    if (!(w > 0.0) || !(U > 1e-6)) return false;
     const double a = 0.5 * fluid.rho * fluid.Cdn * fluid.diameter * U * U;
+    if (!(w > 0.0) || !(U > 1e-6) || !(a > 0.0)) return false;  // without normal drag (Cdn 0) it hangs straight
     const double c = std::clamp((-w + std::sqrt(w * w + 4.0 * a * a)) / (2.0 * a), 0.0, 1.0);  // cos(phi)
     d = flow / U * c + Vec3(0.0, 0.0, -std::sqrt(std::max(0.0, 1.0 - c * c)));
     return true;
@@ -440,7 +440,19 @@ bool CableSimulation::verify_statics(std::string& error) const {
     if (model_.far_end().anchored && model_.line().EI == 0.0 &&
         std::abs(state_.outputs.endTension - axial) > kAnchorCheck * state_.outputs.endTension) {
         // Without bending stiffness the line's force on its anchor is its axial tension there: where
-        // the two differ, the elements at the anchor do not hold the line's shape.
+        // the two differ, the elements at the anchor do not hold the line's shape; where the axial force
+        // is a compression, the loads along the line push it into its anchor.
+        const bool current = !loads_.current.uniform.isZero(0.0) || p.currentProfileRows > 0 || loads_.current.grid != nullptr;
+        if (axial < 0.0 && current) {
+            std::snprintf(text, sizeof text,
+                          "the static equilibrium found pushes the line into its anchor: its axial force there is a "
+                          "compression of %.6g N (the force on the anchor %.6g N): the current's drag along the line "
+                          "near the anchor exceeds what the rest of the line holds; refusing it as a start (a line "
+                          "that takes no compression has no such equilibrium: start it in a weaker current)",
+                          -axial, state_.outputs.endTension);
+            error = text;
+            return false;
+        }
         std::snprintf(text, sizeof text,
                       "the static equilibrium found does not hold together at the anchor: the force on the anchor "
                       "(%.6g N) and the line's axial tension there (%.6g N) differ by %.2f %%; refusing it as a "
@@ -460,7 +472,7 @@ bool CableSimulation::verify_statics(std::string& error) const {
                                                         kWeakBending * model_.line().length);
     // The elastic catenary has a constant EA: it is no answer for a line on a tension-strain curve.
     const bool exact = profileApplies_ && weakBending && !model_.axial_curve() && loads_.current.uniform.isZero(0.0) &&
-                       (p.currentProfileRows == 0 || loads_.current.scale == 0.0) && model_.sea().calm() &&
+                       (p.currentProfileRows == 0 || loads_.current.scale == 0.0) && model_.sea().calm() && !loads_.current.grid &&
                        loads_.torque == 0.0 && profile_.solved &&
                        profile.lowest_clearance() > -model_.line().diameter &&
                        (seabedHeldStart_ || seabed_cross_slope().isZero(0.0));
@@ -550,6 +562,11 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
                                  std::string& error) {
     ++stateStamp_;  // the cached interface derivatives are stale from here on
     const UCParams& p = model_.params();
+    if (p.currentsMode != 0 && currentGrid_ == nullptr) {
+        error = "currents.mode = " + std::to_string(p.currentsMode) + ": the current's data (currents.file = '" +
+                std::string(p.currentsFile) + "') were not given to the model (uc_set_current_text)";
+        return false;
+    }
     for (double v : {tow.position[0], tow.position[1], tow.position[2], tow.velocity[0], tow.velocity[1],
                      tow.velocity[2], tow.acceleration[0], tow.acceleration[1], tow.acceleration[2], env.endLoad[0],
                      env.endLoad[1], env.endLoad[2], env.endCouple[0], env.endCouple[1], env.endCouple[2],
@@ -724,6 +741,7 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
     state_.tensionScale = tension_scale(model_, state_.outputs);
     if (!set_integrator_tolerances(error)) return false;
     state_.outputs.tensionScale = state_.tensionScale;
+    warn_outside_current_grid();
     return true;
 }
 

@@ -87,6 +87,16 @@ std::string check_params(const UCParams& p) {
         return "waves.file = '" + std::string(p.wavesFile) + "' is set with waves.mode = " + std::to_string(p.wavesMode) +
                ": its components are the sea of waves.mode 3 only (set waves.mode 3, or leave waves.file empty)";
     }
+    if (p.currentsMode != 0 && p.currentsMode != 2 && p.currentsMode != 5)
+        return format_violation("currents.mode", p.currentsMode, "{0, 2, 5}",
+                                "current data are a profile changing in time (2) or a grid in x, y, z and t (5), "
+                                "MoorDyn's Currents 2 and 5 (Currents 1, a steady profile, is currentProfile.*)");
+    if (p.currentsMode != 0 && p.currentsFile[0] == '\0')
+        return "currents.mode = " + std::to_string(p.currentsMode) + " needs the file of its data: currents.file is empty "
+               "(set it, or leave currents.mode 0)";
+    if (p.currentsMode == 0 && p.currentsFile[0] != '\0')
+        return "currents.file = '" + std::string(p.currentsFile) + "' is set with currents.mode = 0: set currents.mode 2 "
+               "(a profile changing in time) or 5 (a grid in x, y, z and t), or leave currents.file empty";
     if (ownSea && p.wavesHeight > 0.0) {  // breaking: H over the (peak) wavelength above 1/7
         const double k = wave_number(2.0 * kPi / p.wavesPeriod, p.waterDepth, p.gravity);
         const double limit = 2.0 * kPi / k / 7.0;

@@ -107,7 +107,13 @@ void OneLineSystem::complete_outputs(UCOutputs& out) const {
                              line_strength(*this, 0, model().n_sections() - 1));
 }
 
-MooringSystem::MooringSystem(const UCParams& base, const MooringDeck& deck) : base_(base), deck_(deck) {}
+MooringSystem::MooringSystem(const UCParams& base, const MooringDeck& deck)
+    : base_(base), deck_(deck), currentGrid_(deck.sea.currentGrid) {}
+
+void MooringSystem::set_current_grid(std::shared_ptr<const CurrentGrid> grid) {
+    currentGrid_ = std::move(grid);
+    for (auto& line : lines_) line->set_current_grid(currentGrid_);
+}
 
 bool MooringSystem::build(std::string& error) {
     if (base_.winchMode != UC_WINCH_FIXED) {
@@ -126,6 +132,7 @@ bool MooringSystem::build(std::string& error) {
             return false;
         }
         lines_.push_back(std::make_unique<CableSimulation>(p));
+        if (currentGrid_) lines_.back()->set_current_grid(currentGrid_);
         const CableModel& model = lines_.back()->model();
         std::vector<LineProfile::Segment> segments;
         double weight = 0.0;
@@ -368,6 +375,7 @@ bool MooringSystem::initialize(double t0, const UCInputs& in, std::string& error
     }
     t0_ = t0;
     lastStep_ = 0.0;  // (a pin's acceleration, where not given, is estimated from the steps' inputs: none yet)
+    waterTime_ = t0;
     if (!motion_.empty() && !solve_nodes(t0, in, error)) return false;
     for (int b = 0; b < deck_.bodies; ++b) {
         const UCCoupledBody& body = in.coupledBody[b];
@@ -538,7 +546,9 @@ Vec3 MooringSystem::water_velocity(const Vec3& x, const UCInputs& in) const {
     current.uniform = Vec3(in.current[0], in.current[1], 0.0);
     current.profile = &lines_[0]->model().current_profile();
     current.scale = in.currentScale;
-    return current.at(x.z(), nullptr);
+    current.grid = currentGrid_.get();
+    current.time = waterTime_;
+    return current.velocity(x);
 }
 
 Vec3 MooringSystem::node_load(int n, const Vec3& x, const UCInputs& in, const Vec3& v) const {
@@ -847,6 +857,7 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
     std::vector<std::vector<unsigned char>> start;
     save_node_lines(start);
     const std::vector<FreeNodeMotion> state0 = motion_;
+    waterTime_ = t + h;
     std::string why;
     int worst = 0;
     double estimate = 0.0;  // of the step in one piece where it is split for its error

@@ -98,6 +98,7 @@ public:
     bool initialize(double t0, const UCInputs& in, std::string& error) override;
     bool step(double t, double h, const UCInputs& in, std::string& error) override;
     std::string take_event() override;
+    void set_current_grid(std::shared_ptr<const CurrentGrid> grid) override;
     // A step with a break strictly inside it ends at the break (time() then the break's), the state there.
     void set_stop_at_breaks(bool stop) override { stopAtBreaks_ = stop; }
 
@@ -336,6 +337,10 @@ private:
     int failureEvaluations_ = 0;
     std::vector<unsigned char> failureBuffer_;  // the system's state at a piece's start (event location)
     std::vector<std::unique_ptr<CableSimulation>> lines_;
+    // The current given as data (the deck's Currents 2 or 5, or currents.file), every line's too, and the
+    // time its free nodes take it at: the initial time, then the end of the step being taken.
+    std::shared_ptr<const CurrentGrid> currentGrid_;
+    double waterTime_ = 0.0;
     // per line: its sections and joints for its static profile, from the fairlead (s from there)
     std::vector<std::vector<LineProfile::Segment>> segments_;
     std::vector<std::vector<LineProfile::PointLoad>> pointLoads_;

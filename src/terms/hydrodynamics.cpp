@@ -144,27 +144,51 @@ Vec3 CurrentField::at(double z, Vec3* slope, Vec3* acceleration) const {
     return u + factor * shape;
 }
 
+Vec3 CurrentField::velocity(const Vec3& r) const {
+    Vec3 u = at(r.z(), nullptr);
+    if (grid == nullptr) return u;
+    Vec3 g;
+    gridOutside |= grid->at(r, time, g);
+    return u + profileScale * g;
+}
+
 void CurrentField::flow(const Vec3& r, Vec3& U, Mat3& dU, Vec3& A, Mat3& dA, WaveExpansion* cache) const {
     Vec3 slope;
     U = at(r.z(), &slope, &A);
     dU.setZero();
     dU.col(2) = slope;
     dA.setZero();
+    if (grid != nullptr) {
+        Vec3 g, rate;
+        Mat3 dg, drate;
+        gridOutside |= grid->at(r, time, g, &dg, &rate, &drate);
+        U += profileScale * g;
+        dU += profileScale * dg;
+        A += profileScale * rate;
+        dA += profileScale * drate;
+    }
     if (!waves()) return;
     Vec3 u, a;
-    Mat3 du;
+    Mat3 du, da;
     if (cache) {
-        sea->expanded_kinematics(r, time, *cache, u, a, &du, &dA);
+        sea->expanded_kinematics(r, time, *cache, u, a, &du, &da);
     } else {
-        sea->kinematics(r, time, u, a, &du, &dA);
+        sea->kinematics(r, time, u, a, &du, &da);
     }
     U += u;
     dU += du;
     A += a;  // the waves' acceleration on top of the changing current's
+    dA += da;
 }
 
 void CurrentField::flow(const Vec3& r, Vec3& U, Vec3& A, WaveExpansion* cache) const {
     U = at(r.z(), nullptr, &A);
+    if (grid != nullptr) {
+        Vec3 g, rate;
+        gridOutside |= grid->at(r, time, g, nullptr, &rate);
+        U += profileScale * g;
+        A += profileScale * rate;
+    }
     if (!waves()) return;
     Vec3 u, a;
     if (cache) {

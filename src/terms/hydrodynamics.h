@@ -11,6 +11,7 @@
 // is integrated exactly (docs/model.md, "Lines in air and water").
 #pragma once
 
+#include "terms/current_grid.h"
 #include "terms/hermite_element.h"
 #include "terms/waves.h"
 
@@ -47,14 +48,23 @@ struct CurrentField {
     double scale = 1.0;      // factor on the profile at rateStart (input currentScale)
     double scaleRate = 0.0;  // its rate over the step (input derivative of currentScale)
     const SeaState* sea = nullptr;  // waves (calm when null or without components)
-    double time = 0.0;              // of the wave kinematics
+    // A current given as data (currents.mode 2 or 5), added to the rest, times profileScale (the static
+    // solver's continuation) but not currentScale; null: none.
+    const CurrentGrid* grid = nullptr;
+    double time = 0.0;              // of the wave kinematics and of the grid
+    // Where the points asked for lay against the grid since the owner last cleared it (CurrentGrid's
+    // Outside bits): what the line warns of once.
+    mutable unsigned gridOutside = 0;
     // Velocity of the current at height z; slope = dU/dz and acceleration = dU/dt (the changing
-    // uniform current's and profile's) when non-null.
+    // uniform current's and profile's) when non-null. Without the grid (velocity() adds it).
     Vec3 at(double z, Vec3* slope, Vec3* acceleration = nullptr) const;
+    // The current's velocity at r (at() and the grid's), without the waves.
+    Vec3 velocity(const Vec3& r) const;
     bool waves() const { return sea != nullptr && !sea->calm(); }
-    // The water accelerates: waves, a uniform current or a scaled profile changing over the step.
+    // The water accelerates: waves, a uniform current or a scaled profile changing over the step, a grid.
     bool accelerates() const {
-        return waves() || !rate.isZero(0.0) || (scaleRate != 0.0 && profile != nullptr && profile->rows > 0);
+        return waves() || !rate.isZero(0.0) || (scaleRate != 0.0 && profile != nullptr && profile->rows > 0) ||
+               grid != nullptr;
     }
     // The water's velocity U (current and waves) and local acceleration A (waves, and the rate of a
     // changing current) at r, with their gradients dU/dr and dA/dr (dA is zero in calm water).

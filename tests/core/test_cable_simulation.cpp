@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "api/cable_api.h"
@@ -143,7 +144,7 @@ namespace {
 // Jacobian of the assembled free residual against central finite differences (in the model's waves,
 // if it has any, at t = 3 s).
 // topRate: the winch's speed, with which the top element's material moves (winchMode != 0).
-void check_assembled_jacobian(const UCParams& p, double topRate = 0.0) {
+void check_assembled_jacobian(const UCParams& p, double topRate = 0.0, const CurrentGrid* grid = nullptr) {
     CableModel m(p);
     m.set_top_rate(topRate);
     const int n = m.n_free();
@@ -162,6 +163,7 @@ void check_assembled_jacobian(const UCParams& p, double topRate = 0.0) {
     loads.tow = TowTrajectory::at_rest_in_time(Vec3(0, 0, -5), Vec3(1, 0, 0), Vec3(0.1, 0, 0), 0.0);
     loads.current.uniform = Vec3(0.2, -0.3, 0);
     loads.current.sea = &m.sea();
+    loads.current.grid = grid;
     loads.current.time = 3.0;
     loads.endLoad = Vec3(10, 0, -20);
     loads.endLoadVelocity = Vec3(0.7, -0.2, 0.1);
@@ -229,6 +231,29 @@ UCParams towed_body_line() {
 }
 
 }  // namespace
+
+TEST(AssembledJacobian, MatchesFiniteDifferencesInACurrentGivenOnAGrid) {
+    // a current varying in x, y, z and t (currents.mode 5): its gradient and its rate's enter the Jacobian
+    std::string text = "4 2 4 3\n-30 -12 -4 6\n-3 3\n-40 -18 -9 0\n0 2 5\n";
+    int k = 0;
+    for (double x : {-30.0, -12.0, -4.0, 6.0})
+        for (double y : {-3.0, 3.0})
+            for (double z : {-40.0, -18.0, -9.0, 0.0})
+                for (double t : {0.0, 2.0, 5.0}) {
+                    const double ux = 0.3 + 0.2 * std::sin(0.7 * k), uy = -0.2 + 0.15 * std::cos(1.3 * k), uz = 0.02 * std::sin(k);
+                    text += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + " " + std::to_string(t) +
+                            " " + std::to_string(ux) + " " + std::to_string(uy) + " " + std::to_string(uz) + "\n";
+                    ++k;
+                }
+    std::string error;
+    const auto grid = CurrentGrid::read(5, text, error);
+    ASSERT_TRUE(grid) << error;
+    UCParams p = hopland();
+    p.nElements = 5;
+    p.length = 20;
+    p.axialDamping = 1e4;
+    check_assembled_jacobian(p, 0.0, grid.get());
+}
 
 TEST(AssembledJacobian, MatchesFiniteDifferencesWinchPayingOut) {
     // The top element's velocity is the material's, v0 + c r'0 and v'0 + c r''0: it depends on the

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <tuple>
 
 #include "api/cable_api.h"
 #include "deck_mutation.h"
@@ -681,6 +682,46 @@ TEST(LineFileKinematics, ASteadyCurrentProfileIsTheFmusProfileWithoutItsRedundan
     EXPECT_DOUBLE_EQ(p.currentProfileX[3], 0.1);
 }
 
+TEST(LineFileKinematics, CurrentsGivenAsDataAreTheCurrentsModeWithTheFileBesideTheDeck) {
+    // Currents 2: a profile changing in time; Currents 5: a grid in x, y, z and t (MoorDyn's formats)
+    const std::string dynamic = "--- currents\ncomment\n2\n3\n-300 0\n\n0 0.1 0.2 0 0\n10 0.3 0.4 0.1 0\n";
+    const std::string grid4d = "1 1 2 2\n0\n0\n-300 0\n0 10\n0 0 -300 0 0.1 0 0\n0 0 -300 10 0.3 0 0\n"
+                               "0 0 0 0 0.2 0 0\n0 0 0 10 0.4 0 0\n";
+    for (const auto& [mode, name, text] : std::vector<std::tuple<int, std::string, std::string>>{
+             {2, "current_profile_dynamic.txt", dynamic}, {5, "current_profile_4d.txt", grid4d}}) {
+        const std::string d = edit(kSingleChain, "0.002    dtM", std::to_string(mode) + " Currents");
+        EXPECT_EQ(uc::line_file_companions(d), std::vector<std::string>{name});
+        const Read r = read_with(d, {{name, text}});
+        ASSERT_TRUE(r.ok) << r.error;
+        ASSERT_TRUE(r.line.sea.currentGrid);
+        uc::Vec3 u;
+        r.line.sea.currentGrid->at(uc::Vec3(-500.0, 3.0, -150.0), 5.0, u);
+        EXPECT_NEAR(u.x(), 0.25, 1e-15);  // halfway in depth and in time
+        bool said = false;
+        for (const std::string& n : r.line.notes) said |= n.find("Currents " + std::to_string(mode) + ": " + name) != std::string::npos;
+        EXPECT_TRUE(said);
+        UCParams p;
+        uc_params_default(&p);
+        std::string error;
+        ASSERT_TRUE(uc::apply_line_file(r.line, p, error)) << error;
+        EXPECT_EQ(p.currentsMode, mode);
+        EXPECT_EQ(std::string(p.currentsFile), name);  // the adapter puts the path it was read from in its place
+        // a currents.file the importer set keeps its place and its mode
+        UCParams own;
+        uc_params_default(&own);
+        own.currentsMode = 5;
+        std::snprintf(own.currentsFile, sizeof own.currentsFile, "%s", "mine.txt");
+        ASSERT_TRUE(uc::apply_line_file(r.line, own, error)) << error;
+        EXPECT_EQ(own.currentsMode, 5);
+        EXPECT_EQ(std::string(own.currentsFile), "mine.txt");
+        // data that are not such a file are refused naming the deck's line, the file and its line
+        const Read bad = read_with(d, {{name, text + "1 2 3\n"}});
+        ASSERT_FALSE(bad.ok);
+        EXPECT_NE(bad.error.find("Currents = " + std::to_string(mode) + ": " + name + ": line "), std::string::npos)
+            << bad.error;
+    }
+}
+
 // MoorDyn's SeafloorFile grid (nx ny, the x values, the y values, rows x y z) of heights a + b x + c y,
 // one point moved up by `bump`.
 std::string seafloor_grid(double a, double b, double c, double bump) {
@@ -742,9 +783,9 @@ TEST(LineFileKinematics, WhatTheFmusSeaCannotHoldIsRefusedNamingOptionAndValue) 
     EXPECT_NE(refused(d, {{"current_profile.txt", "a\nb\nc\n-10 1 0 0.2\n"}}).find("a vertical current"), std::string::npos);
     EXPECT_NE(refused(d, {{"current_profile.txt", "a\nb\nc\n0 1\n-10 1\n"}}).find("z must increase"), std::string::npos);
     for (const auto& [option, what] : std::vector<std::pair<std::string, std::string>>{
-             {"2 Currents", "Currents = 2: a current profile changing in time"},
+             {"2 Currents", "Currents = 2: MoorDyn reads current_profile_dynamic.txt from the deck's directory"},
              {"3 Currents", "Currents = 3: not implemented in MoorDyn v2 either"},
-             {"5 Currents", "Currents = 5: a current on a grid in x, y, z and time"},
+             {"5 Currents", "Currents = 5: MoorDyn reads current_profile_4d.txt from the deck's directory"},
              {"3 WaveKin", "WaveKin = 3: MoorDyn reads wave_elevation.txt from the deck's directory"},
              {"5 WaveKin", "WaveKin = 5: not implemented in MoorDyn v2 either"},
              {"9 WaveKin", "WaveKin = 9: not a MoorDyn v2 option"}}) {
