@@ -32,6 +32,9 @@ typedef struct UCSection {
     int nElements; /* section[k].nElements: number of cubic elements */
     int joint; /* section[k].joint: joint to section k + 1: 0 rigid splice (shared tangent, carries bending moment), 1 pinned shackle (no moment) */
     double MBL; /* section[k].MBL [N]: minimum breaking load (0: the line's `MBL`) */
+    double EAdynamic; /* section[k].EAdynamic [N]: dynamic axial stiffness EA_d of the section's viscoelastic model, as `EAdynamic` for a uniform line: 0 (the default), off; above `section[k].EA`, the static stiffness */
+    double EAdynamicSlope; /* section[k].EAdynamicSlope: slope β of the section's dynamic stiffness in the mean load, as `EAdynamicSlope` */
+    double axialDampingDynamic; /* section[k].axialDampingDynamic [N.s]: damping c_d beside the section's dynamic spring, as `axialDampingDynamic` */
 } UCSection;
 
 typedef struct UCAttachment {
@@ -183,6 +186,9 @@ typedef struct UCParams {
     double axialCurveTension[UC_AXIAL_CURVE_POINTS]; /* axialCurve.tension[k] [N]: tension at the strain of point k (increasing with k) */
     double seabedSlope; /* seabedSlope [deg]: angle of the plane seabed below the horizontal (0: flat, the default): the seabed passes through z = -`waterDepth` under the origin (x = y = 0) and descends along the heading `seabedSlopeHeading`, so its depth under (x, y) is `waterDepth` + tan(`seabedSlope`) (x cos ψ + y sin ψ); contact acts along the seabed's normal and friction along its surface ([docs/model.md](docs/model.md), seabed) */
     double seabedSlopeHeading; /* seabedSlopeHeading [deg]: direction ψ in which the sloped seabed (`seabedSlope`) descends most steeply, measured in the horizontal plane from +x towards +y: 0 (the default) deeper along +x, 90 deeper along +y */
+    double EAdynamic; /* EAdynamic [N]: dynamic axial stiffness EA_d of MoorDyn's viscoelastic model of a uniform line (`nSections` 1): 0 (the default), off; above `EA`, the static stiffness, each element gets an internal strain (a Kelvin–Voigt pair of `EA`'s series spring and `axialDamping`, in series with EA_d and `axialDampingDynamic`): `EA` at rest, EA_d in fast motion ([docs/model.md](docs/model.md)) */
+    double EAdynamicSlope; /* EAdynamicSlope: slope β of the dynamic stiffness in the mean load (MoorDyn's `EA_s|EA_Dc|EA_D_Lm`): EA_d = `EAdynamic` + β × the element's mean tension (the tension of its static spring); 0 (the default), a constant `EAdynamic` */
+    double axialDampingDynamic; /* axialDampingDynamic [N.s]: damping c_d in parallel with the dynamic spring `EAdynamic` (MoorDyn's BA_d in `BA_s|BA_d`); `axialDamping` is then the damping beside the static spring; used only with `EAdynamic` > 0 */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
     int waveComponentCount; /* (not an FMU variable) waves.mode 3: the number of given wave components in waveComponents (from waves.file or a lineFile deck) */
@@ -604,6 +610,33 @@ typedef struct UCOutputs {
     X(336, "axialCurve.tension[30]", REAL, PARAMETER, axialCurveTension[29]) \
     X(337, "seabedSlope", REAL, PARAMETER, seabedSlope) \
     X(338, "seabedSlopeHeading", REAL, PARAMETER, seabedSlopeHeading) \
+    X(339, "EAdynamic", REAL, PARAMETER, EAdynamic) \
+    X(340, "EAdynamicSlope", REAL, PARAMETER, EAdynamicSlope) \
+    X(341, "axialDampingDynamic", REAL, PARAMETER, axialDampingDynamic) \
+    X(342, "section[1].EAdynamic", REAL, PARAMETER, section[0].EAdynamic) \
+    X(343, "section[2].EAdynamic", REAL, PARAMETER, section[1].EAdynamic) \
+    X(344, "section[3].EAdynamic", REAL, PARAMETER, section[2].EAdynamic) \
+    X(345, "section[4].EAdynamic", REAL, PARAMETER, section[3].EAdynamic) \
+    X(346, "section[5].EAdynamic", REAL, PARAMETER, section[4].EAdynamic) \
+    X(347, "section[6].EAdynamic", REAL, PARAMETER, section[5].EAdynamic) \
+    X(348, "section[7].EAdynamic", REAL, PARAMETER, section[6].EAdynamic) \
+    X(349, "section[8].EAdynamic", REAL, PARAMETER, section[7].EAdynamic) \
+    X(350, "section[1].EAdynamicSlope", REAL, PARAMETER, section[0].EAdynamicSlope) \
+    X(351, "section[2].EAdynamicSlope", REAL, PARAMETER, section[1].EAdynamicSlope) \
+    X(352, "section[3].EAdynamicSlope", REAL, PARAMETER, section[2].EAdynamicSlope) \
+    X(353, "section[4].EAdynamicSlope", REAL, PARAMETER, section[3].EAdynamicSlope) \
+    X(354, "section[5].EAdynamicSlope", REAL, PARAMETER, section[4].EAdynamicSlope) \
+    X(355, "section[6].EAdynamicSlope", REAL, PARAMETER, section[5].EAdynamicSlope) \
+    X(356, "section[7].EAdynamicSlope", REAL, PARAMETER, section[6].EAdynamicSlope) \
+    X(357, "section[8].EAdynamicSlope", REAL, PARAMETER, section[7].EAdynamicSlope) \
+    X(358, "section[1].axialDampingDynamic", REAL, PARAMETER, section[0].axialDampingDynamic) \
+    X(359, "section[2].axialDampingDynamic", REAL, PARAMETER, section[1].axialDampingDynamic) \
+    X(360, "section[3].axialDampingDynamic", REAL, PARAMETER, section[2].axialDampingDynamic) \
+    X(361, "section[4].axialDampingDynamic", REAL, PARAMETER, section[3].axialDampingDynamic) \
+    X(362, "section[5].axialDampingDynamic", REAL, PARAMETER, section[4].axialDampingDynamic) \
+    X(363, "section[6].axialDampingDynamic", REAL, PARAMETER, section[5].axialDampingDynamic) \
+    X(364, "section[7].axialDampingDynamic", REAL, PARAMETER, section[6].axialDampingDynamic) \
+    X(365, "section[8].axialDampingDynamic", REAL, PARAMETER, section[7].axialDampingDynamic) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -1766,6 +1799,33 @@ typedef struct UCOutputs {
     X(axialCurveTension[29], 0.0) \
     X(seabedSlope, 0.0) \
     X(seabedSlopeHeading, 0.0) \
+    X(EAdynamic, 0.0) \
+    X(EAdynamicSlope, 0.0) \
+    X(axialDampingDynamic, 0.0) \
+    X(section[0].EAdynamic, 0.0) \
+    X(section[1].EAdynamic, 0.0) \
+    X(section[2].EAdynamic, 0.0) \
+    X(section[3].EAdynamic, 0.0) \
+    X(section[4].EAdynamic, 0.0) \
+    X(section[5].EAdynamic, 0.0) \
+    X(section[6].EAdynamic, 0.0) \
+    X(section[7].EAdynamic, 0.0) \
+    X(section[0].EAdynamicSlope, 0.0) \
+    X(section[1].EAdynamicSlope, 0.0) \
+    X(section[2].EAdynamicSlope, 0.0) \
+    X(section[3].EAdynamicSlope, 0.0) \
+    X(section[4].EAdynamicSlope, 0.0) \
+    X(section[5].EAdynamicSlope, 0.0) \
+    X(section[6].EAdynamicSlope, 0.0) \
+    X(section[7].EAdynamicSlope, 0.0) \
+    X(section[0].axialDampingDynamic, 0.0) \
+    X(section[1].axialDampingDynamic, 0.0) \
+    X(section[2].axialDampingDynamic, 0.0) \
+    X(section[3].axialDampingDynamic, 0.0) \
+    X(section[4].axialDampingDynamic, 0.0) \
+    X(section[5].axialDampingDynamic, 0.0) \
+    X(section[6].axialDampingDynamic, 0.0) \
+    X(section[7].axialDampingDynamic, 0.0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -2106,6 +2166,33 @@ typedef struct UCOutputs {
     X(axialCurveTension[29], "axialCurve.tension[30]", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
     X(seabedSlope, "seabedSlope", 0.0, 45.0, 0, 0, "[0, 45]", "a seabed steeper than 45 degrees is a wall, not a seabed a line rests on") \
     X(seabedSlopeHeading, "seabedSlopeHeading", -360.0, 360.0, 0, 0, "[-360, 360]", "a heading in degrees") \
+    X(EAdynamic, "EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above EA") \
+    X(EAdynamicSlope, "EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(axialDampingDynamic, "axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[0].EAdynamic, "section[1].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[1].EAdynamic, "section[2].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[2].EAdynamic, "section[3].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[3].EAdynamic, "section[4].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[4].EAdynamic, "section[5].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[5].EAdynamic, "section[6].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[6].EAdynamic, "section[7].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[7].EAdynamic, "section[8].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[0].EAdynamicSlope, "section[1].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[1].EAdynamicSlope, "section[2].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[2].EAdynamicSlope, "section[3].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[3].EAdynamicSlope, "section[4].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[4].EAdynamicSlope, "section[5].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[5].EAdynamicSlope, "section[6].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[6].EAdynamicSlope, "section[7].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[7].EAdynamicSlope, "section[8].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[0].axialDampingDynamic, "section[1].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[1].axialDampingDynamic, "section[2].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[2].axialDampingDynamic, "section[3].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[3].axialDampingDynamic, "section[4].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[4].axialDampingDynamic, "section[5].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[5].axialDampingDynamic, "section[6].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[6].axialDampingDynamic, "section[7].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[7].axialDampingDynamic, "section[8].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \
