@@ -26,6 +26,7 @@ struct LineFileSection {
     double massPerLength = 0.0;
     double EA = 0.0;        // the constant EA, or the secant of the curve at its last point
     std::vector<double> curveStrain, curveTension;  // EA's tension-strain file (empty: none)
+    double EAd = 0.0, EAslope = 0.0, BAd = 0.0;  // the viscoelastic model (EAd 0: none), as LineType's
     double EI = 0.0;
     double axialDamping = 0.0;  // [N.s]: BA, or -zeta converted with MoorDyn's segment length
     double Cdn = 0.0, Cdt = 0.0, Can = 0.0, Cat = 0.0;  // Cd, CdAx, Ca, CaAx

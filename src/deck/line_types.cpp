@@ -50,6 +50,18 @@ bool read_curve_file(const LineFileCompanion& file, std::vector<double>& strain,
     return true;
 }
 
+// The fields of a bar-separated entry (MoorDyn's EA_s|EA_d); one field where there is no bar.
+std::vector<std::string_view> split_bars(std::string_view text) {
+    std::vector<std::string_view> parts;
+    size_t start = 0;
+    for (size_t bar = text.find('|'); bar != std::string_view::npos; bar = text.find('|', start)) {
+        parts.push_back(text.substr(start, bar - start));
+        start = bar + 1;
+    }
+    parts.push_back(text.substr(start));
+    return parts;
+}
+
 }  // namespace
 
 std::string_view tension_strain_file(const Row& row) {
@@ -90,10 +102,29 @@ bool read_line_type(const Row& deckRow, const Row& columns, const LineFileCompan
     t.diameter = f.positive(1, "Diam");
     t.massPerLength = f.positive(2, "Mass/m");
     const std::string_view ea = f.token(3), ba = f.token(4);
-    if (ea.find('|') != std::string_view::npos || upper(ea).rfind("SYROPE:", 0) == 0) {
-        return f.fail("EA " + quoted(ea) + ": viscoelastic and Syrope axial models are not supported (a constant EA or a tension-strain file)");
+    if (upper(ea).rfind("SYROPE:", 0) == 0) {
+        return f.fail("EA " + quoted(ea) + ": the Syrope model is not supported (a constant EA, a tension-strain "
+                      "file, or the viscoelastic EA_s|EA_d or EA_s|EA_Dc|EA_D_Lm)");
     }
-    if (!to_number(ea)) {
+    t.EAd = t.EAslope = t.BAd = 0.0;
+    const std::vector<std::string_view> eaParts = split_bars(ea);
+    if (eaParts.size() > 1) {
+        // MoorDyn's viscoelastic model: EA_s|EA_d (a constant dynamic stiffness) or EA_s|EA_Dc|EA_D_Lm (EA_d =
+        // EA_Dc + EA_D_Lm x the mean load)
+        std::optional<double> v[3];
+        for (size_t k = 0; k < eaParts.size() && k < 3; ++k) v[k] = to_number(eaParts[k]);
+        if (eaParts.size() > 3 || !v[0] || !v[1] || (eaParts.size() == 3 && !v[2])) {
+            return f.fail("EA " + quoted(ea) + ": a viscoelastic EA is EA_s|EA_d or EA_s|EA_Dc|EA_D_Lm, two or three "
+                          "numbers (a tension-strain file with it is not supported)");
+        }
+        if (!(*v[0] > 0.0) || !(*v[1] > *v[0]) || (eaParts.size() == 3 && !(*v[2] >= 0.0))) {
+            return f.fail("EA " + quoted(ea) + ": the viscoelastic model needs EA_s > 0 [N], a dynamic stiffness above "
+                          "it [N] (the springs are in series) and a slope EA_D_Lm >= 0");
+        }
+        t.EA = *v[0];
+        t.EAd = *v[1];
+        t.EAslope = eaParts.size() == 3 ? *v[2] : 0.0;
+    } else if (!to_number(ea)) {
         // A tension-strain file next to the deck; EA is its secant at the last point, as MoorDyn has it.
         const LineFileCompanion* file = nullptr;
         for (const LineFileCompanion& c : companions)
@@ -107,13 +138,28 @@ bool read_line_type(const Row& deckRow, const Row& columns, const LineFileCompan
     } else {
         t.EA = f.positive(3, "EA");
     }
-    if (ba.find('|') != std::string_view::npos) {
-        return f.fail("BA/-zeta " + quoted(ba) + ": viscoelastic damping is not supported (one BA or -zeta)");
+    const std::vector<std::string_view> baParts = split_bars(ba);
+    if (baParts.size() > 1) {
+        const std::optional<double> s = to_number(baParts[0]), d = baParts.size() == 2 ? to_number(baParts[1]) : std::nullopt;
+        if (t.EAd == 0.0 || baParts.size() > 2) {
+            return f.fail("BA/-zeta " + quoted(ba) + ": BA_s|BA_d belongs to a viscoelastic EA (EA_s|EA_d), which this "
+                          "line type has not");
+        }
+        if (!s || !d || !(*d >= 0.0)) {
+            return f.fail("BA/-zeta " + quoted(ba) + ": BA_s|BA_d is two numbers, BA_s [N s] or -zeta, and BA_d >= 0 [N s]");
+        }
+        t.BA = *s;
+        t.BAd = *d;
+    } else {
+        if (!to_number(ba)) {
+            return f.fail("BA/-zeta " + quoted(ba) + ": a non-linear damping (table) is not supported (one BA or -zeta)");
+        }
+        t.BA = f.number(4, "BA/-zeta");
     }
-    if (!to_number(ba)) {
-        return f.fail("BA/-zeta " + quoted(ba) + ": a non-linear damping (table) is not supported (one BA or -zeta)");
+    if (t.EAd > 0.0 && t.BA == 0.0 && t.BAd == 0.0) {
+        return f.fail("BA/-zeta " + quoted(ba) + ": the viscoelastic model needs a damping, BA_s or BA_d above 0 "
+                      "(its internal strain moves through them)");
     }
-    t.BA = f.number(4, "BA/-zeta");
     if (!to_number(f.token(5))) {
         return f.fail("EI " + quoted(f.token(5)) + ": a non-linear bending stiffness (table) is not supported");
     }

@@ -89,6 +89,9 @@ LineFileSection section_of(const Line& l, const LineType& t) {
     s.EA = t.EA;
     s.curveStrain = t.curveStrain;
     s.curveTension = t.curveTension;
+    s.EAd = t.EAd;
+    s.EAslope = t.EAslope;
+    s.BAd = t.BAd;
     s.EI = t.EI;
     // BA/-zeta < 0: a fraction of critical damping of one MoorDyn segment, converted as MoorDyn does,
     // BA = zeta (UnstrLen / NumSegs) sqrt(EA Mass/m) (docs/lines.md).

@@ -232,10 +232,14 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
         }
     }
     p.axialCurvePoints = 0;
+    p.EAdynamic = p.EAdynamicSlope = p.axialDampingDynamic = 0.0;
     if (line.sections.size() == 1) {
         p.nSections = 1;
         copy_line_properties(line.sections[0], p);
         const LineFileSection& s = line.sections[0];
+        p.EAdynamic = s.EAd;
+        p.EAdynamicSlope = s.EAslope;
+        p.axialDampingDynamic = s.BAd;
         p.axialCurvePoints = static_cast<int>(s.curveStrain.size());
         for (size_t k = 0; k < s.curveStrain.size(); ++k) {
             p.axialCurveStrain[k] = s.curveStrain[k];
@@ -253,6 +257,9 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
             const LineFileSection& s = line.sections[k];
             UCSection& out = p.section[k];
             copy_line_properties(s, out);
+            out.EAdynamic = s.EAd;
+            out.EAdynamicSlope = s.EAslope;
+            out.axialDampingDynamic = s.BAd;
             out.GJ = p.GJ;
             out.joint = k + 1 < line.sections.size() && line.joints[k].rigid ? 0 : 1;
             s0 += s.length;

@@ -51,6 +51,9 @@ struct LineType {
     // EA given as a file of strain-tension points (empty: the constant EA); EA is then the curve's
     // secant at its last point, as MoorDyn takes it.
     std::vector<double> curveStrain, curveTension;
+    // The viscoelastic model (EA as EA_s|EA_d or EA_s|EA_Dc|EA_D_Lm, BA as BA_s|BA_d): the dynamic stiffness
+    // (0: none), its slope in the mean load, the dynamic damping [N s]; EA is EA_s, BA is BA_s.
+    double EAd = 0.0, EAslope = 0.0, BAd = 0.0;
 };
 
 // A LINE TYPES row: a constant EA or a tension-strain file (one of companions), BA or -zeta, EI; other

@@ -32,6 +32,9 @@ typedef struct UCSection {
     int nElements; /* section[k].nElements: number of cubic elements */
     int joint; /* section[k].joint: joint to section k + 1: 0 rigid splice (shared tangent, carries bending moment), 1 pinned shackle (no moment) */
     double MBL; /* section[k].MBL [N]: minimum breaking load (0: the line's `MBL`) */
+    double EAdynamic; /* section[k].EAdynamic [N]: dynamic axial stiffness EA_d of the section's viscoelastic model, as `EAdynamic` for a uniform line: 0 (the default), off; above `section[k].EA`, the static stiffness */
+    double EAdynamicSlope; /* section[k].EAdynamicSlope: slope β of the section's dynamic stiffness in the mean load, as `EAdynamicSlope` */
+    double axialDampingDynamic; /* section[k].axialDampingDynamic [N.s]: damping c_d beside the section's dynamic spring, as `axialDampingDynamic` */
 } UCSection;
 
 typedef struct UCAttachment {
@@ -185,6 +188,9 @@ typedef struct UCParams {
     double seabedSlopeHeading; /* seabedSlopeHeading [deg]: direction ψ in which the sloped seabed (`seabedSlope`) descends most steeply, measured in the horizontal plane from +x towards +y: 0 (the default) deeper along +x, 90 deeper along +y */
     int currentsMode; /* currents.mode: a current given as data in `currents.file`, added to `current.x/y` and the depth profile: 0 none (the default), 2 a profile changing in time in MoorDyn's `current_profile_dynamic.txt` format (depth × time), 5 a grid in x, y, z and time in its `current_profile_4d.txt` format; interpolated linearly, held at the edges ([docs/waves.md](docs/waves.md), "A current given as data"); a `lineFile` deck's `Currents` 2 or 5 sets it with the file beside the deck */
     char currentsFile[UC_STRING_CAPACITY]; /* currents.file: `currents.mode` 2 or 5: path of the file of the current's data in MoorDyn's format (`current_profile_dynamic.txt` or `current_profile_4d.txt`, [docs/waves.md](docs/waves.md), "A current given as data"); a relative path is looked up as `lineFile`'s; read when the model is made and again when a saved state is restored into a new instance (the data are not in the saved state); empty: the file beside a `lineFile` deck whose `Currents` is 2 or 5 */
+    double EAdynamic; /* EAdynamic [N]: dynamic axial stiffness EA_d of MoorDyn's viscoelastic model of a uniform line (`nSections` 1): 0 (the default), off; above `EA`, the static stiffness, each element gets an internal strain (a Kelvin–Voigt pair of `EA`'s series spring and `axialDamping`, in series with EA_d and `axialDampingDynamic`): `EA` at rest, EA_d in fast motion ([docs/model.md](docs/model.md)) */
+    double EAdynamicSlope; /* EAdynamicSlope: slope β of the dynamic stiffness in the mean load (MoorDyn's `EA_s|EA_Dc|EA_D_Lm`): EA_d = `EAdynamic` + β × the element's mean tension (the tension of its static spring); 0 (the default), a constant `EAdynamic` */
+    double axialDampingDynamic; /* axialDampingDynamic [N.s]: damping c_d in parallel with the dynamic spring `EAdynamic` (MoorDyn's BA_d in `BA_s|BA_d`); `axialDamping` is then the damping beside the static spring; used only with `EAdynamic` > 0 */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
     int waveComponentCount; /* (not an FMU variable) waves.mode 3: the number of given wave components in waveComponents (from waves.file or a lineFile deck) */
@@ -608,6 +614,33 @@ typedef struct UCOutputs {
     X(338, "seabedSlopeHeading", REAL, PARAMETER, seabedSlopeHeading) \
     X(339, "currents.mode", INTEGER, PARAMETER, currentsMode) \
     X(340, "currents.file", STRING, PARAMETER, currentsFile) \
+    X(341, "EAdynamic", REAL, PARAMETER, EAdynamic) \
+    X(342, "EAdynamicSlope", REAL, PARAMETER, EAdynamicSlope) \
+    X(343, "axialDampingDynamic", REAL, PARAMETER, axialDampingDynamic) \
+    X(344, "section[1].EAdynamic", REAL, PARAMETER, section[0].EAdynamic) \
+    X(345, "section[2].EAdynamic", REAL, PARAMETER, section[1].EAdynamic) \
+    X(346, "section[3].EAdynamic", REAL, PARAMETER, section[2].EAdynamic) \
+    X(347, "section[4].EAdynamic", REAL, PARAMETER, section[3].EAdynamic) \
+    X(348, "section[5].EAdynamic", REAL, PARAMETER, section[4].EAdynamic) \
+    X(349, "section[6].EAdynamic", REAL, PARAMETER, section[5].EAdynamic) \
+    X(350, "section[7].EAdynamic", REAL, PARAMETER, section[6].EAdynamic) \
+    X(351, "section[8].EAdynamic", REAL, PARAMETER, section[7].EAdynamic) \
+    X(352, "section[1].EAdynamicSlope", REAL, PARAMETER, section[0].EAdynamicSlope) \
+    X(353, "section[2].EAdynamicSlope", REAL, PARAMETER, section[1].EAdynamicSlope) \
+    X(354, "section[3].EAdynamicSlope", REAL, PARAMETER, section[2].EAdynamicSlope) \
+    X(355, "section[4].EAdynamicSlope", REAL, PARAMETER, section[3].EAdynamicSlope) \
+    X(356, "section[5].EAdynamicSlope", REAL, PARAMETER, section[4].EAdynamicSlope) \
+    X(357, "section[6].EAdynamicSlope", REAL, PARAMETER, section[5].EAdynamicSlope) \
+    X(358, "section[7].EAdynamicSlope", REAL, PARAMETER, section[6].EAdynamicSlope) \
+    X(359, "section[8].EAdynamicSlope", REAL, PARAMETER, section[7].EAdynamicSlope) \
+    X(360, "section[1].axialDampingDynamic", REAL, PARAMETER, section[0].axialDampingDynamic) \
+    X(361, "section[2].axialDampingDynamic", REAL, PARAMETER, section[1].axialDampingDynamic) \
+    X(362, "section[3].axialDampingDynamic", REAL, PARAMETER, section[2].axialDampingDynamic) \
+    X(363, "section[4].axialDampingDynamic", REAL, PARAMETER, section[3].axialDampingDynamic) \
+    X(364, "section[5].axialDampingDynamic", REAL, PARAMETER, section[4].axialDampingDynamic) \
+    X(365, "section[6].axialDampingDynamic", REAL, PARAMETER, section[5].axialDampingDynamic) \
+    X(366, "section[7].axialDampingDynamic", REAL, PARAMETER, section[6].axialDampingDynamic) \
+    X(367, "section[8].axialDampingDynamic", REAL, PARAMETER, section[7].axialDampingDynamic) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -3595,6 +3628,33 @@ typedef struct UCOutputs {
     X(seabedSlope, 0.0) \
     X(seabedSlopeHeading, 0.0) \
     X(currentsMode, 0) \
+    X(EAdynamic, 0.0) \
+    X(EAdynamicSlope, 0.0) \
+    X(axialDampingDynamic, 0.0) \
+    X(section[0].EAdynamic, 0.0) \
+    X(section[1].EAdynamic, 0.0) \
+    X(section[2].EAdynamic, 0.0) \
+    X(section[3].EAdynamic, 0.0) \
+    X(section[4].EAdynamic, 0.0) \
+    X(section[5].EAdynamic, 0.0) \
+    X(section[6].EAdynamic, 0.0) \
+    X(section[7].EAdynamic, 0.0) \
+    X(section[0].EAdynamicSlope, 0.0) \
+    X(section[1].EAdynamicSlope, 0.0) \
+    X(section[2].EAdynamicSlope, 0.0) \
+    X(section[3].EAdynamicSlope, 0.0) \
+    X(section[4].EAdynamicSlope, 0.0) \
+    X(section[5].EAdynamicSlope, 0.0) \
+    X(section[6].EAdynamicSlope, 0.0) \
+    X(section[7].EAdynamicSlope, 0.0) \
+    X(section[0].axialDampingDynamic, 0.0) \
+    X(section[1].axialDampingDynamic, 0.0) \
+    X(section[2].axialDampingDynamic, 0.0) \
+    X(section[3].axialDampingDynamic, 0.0) \
+    X(section[4].axialDampingDynamic, 0.0) \
+    X(section[5].axialDampingDynamic, 0.0) \
+    X(section[6].axialDampingDynamic, 0.0) \
+    X(section[7].axialDampingDynamic, 0.0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -3948,6 +4008,33 @@ typedef struct UCOutputs {
     X(seabedSlope, "seabedSlope", 0.0, 45.0, 0, 0, "[0, 45]", "a seabed steeper than 45 degrees is a wall, not a seabed a line rests on") \
     X(seabedSlopeHeading, "seabedSlopeHeading", -360.0, 360.0, 0, 0, "[-360, 360]", "a heading in degrees") \
     X(currentsMode, "currents.mode", 0.0, 5.0, 0, 0, "{0 none, 2 a profile changing in time, 5 a grid in x, y, z and time}", "unknown kind of current data") \
+    X(EAdynamic, "EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above EA") \
+    X(EAdynamicSlope, "EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(axialDampingDynamic, "axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[0].EAdynamic, "section[1].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[1].EAdynamic, "section[2].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[2].EAdynamic, "section[3].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[3].EAdynamic, "section[4].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[4].EAdynamic, "section[5].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[5].EAdynamic, "section[6].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[6].EAdynamic, "section[7].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[7].EAdynamic, "section[8].EAdynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "a dynamic axial stiffness is 0 (off) or a stiffness above the section's EA") \
+    X(section[0].EAdynamicSlope, "section[1].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[1].EAdynamicSlope, "section[2].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[2].EAdynamicSlope, "section[3].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[3].EAdynamicSlope, "section[4].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[4].EAdynamicSlope, "section[5].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[5].EAdynamicSlope, "section[6].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[6].EAdynamicSlope, "section[7].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[7].EAdynamicSlope, "section[8].EAdynamicSlope", 0.0, 1000.0, 0, 0, "[0, 1000]", "the dynamic stiffness grows with the mean load") \
+    X(section[0].axialDampingDynamic, "section[1].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[1].axialDampingDynamic, "section[2].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[2].axialDampingDynamic, "section[3].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[3].axialDampingDynamic, "section[4].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[4].axialDampingDynamic, "section[5].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[5].axialDampingDynamic, "section[6].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[6].axialDampingDynamic, "section[7].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(section[7].axialDampingDynamic, "section[8].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

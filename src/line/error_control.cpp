@@ -62,6 +62,22 @@ bool CableSimulation::set_integrator_tolerances(std::string& error) {
             }
         }
     }
+    // A viscoelastic element's internal strain e1: its error makes EA_1 times as large an error in the tension,
+    // the rate's over the model's relaxation time (c + c_d) / (EA_1 + EA_2), at least the element's wave time.
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        if (model_.internal_offset(e) < 0) continue;
+        const ElementScales scales = element_scales(e, rms);
+        const SectionProps& section = model_.element_section(e);
+        const ViscoStiffness k = visco_stiffness(section.visco, 0.0);
+        const double relax = (section.axial.damping + section.visco.dampingDynamic) / (k.EA1 + k.EA2);
+        const double wave = scales.length / std::sqrt(k.EA2 / section.fluid.massPerLength);
+        const double a = scales.strain * section.axial.EA / k.EA1, tau = std::max(relax, wave);
+        const int j = model_.free_index(model_.internal_offset(e)) + off_;
+        atol[2 * j] = a;
+        atol[2 * j + 1] = a / tau;
+        magnitude[2 * j] = 1.0;
+        magnitude[2 * j + 1] = 1.0 / tau;
+    }
     if (!integrator_->set_tolerances(atol, p.relTol, p.absTol, error, &magnitude)) return false;
     if (!integrator_->set_max_order(p.solverMaxOrder, error)) return false;
     return integrator_->set_projected_tolerances(projected_blocks(), error);

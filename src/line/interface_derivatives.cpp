@@ -48,8 +48,11 @@ bool CableSimulation::prepare_derivatives(std::string& error) {
     // rows of the end elements' residuals), come from the two end elements (and the end node's terms).
     const int elements[2] = {0, N - 1};
     for (int k = 0; k < 2; ++k)
+    {
         model_.element_jacobian(elements[k], X_.data(), Xd_.data(), Xdd_.data(), loads_, derivativeKe_[k],
                                 derivativeCe_[k], derivativeMe_[k]);
+        model_.element_visco_jacobian(elements[k], X_.data(), Xd_.data(), loads_, derivativeVisco_[k]);
+    }
     model_.end_node_jacobian(X_.data(), Xd_.data(), Xdd_.data(), loads_, derivativeKn_, derivativeCn_, derivativeMn_);
     if (model_.far_end().proxy) {
         // The force on the body (proxy_output) moves with the proxy's position p1 and velocity v1 at
@@ -151,6 +154,11 @@ void CableSimulation::derivative_response(const double seed[kDerivativeInputs], 
                 a.fC[j] += cr * derivativeCe_[k](r, b);
                 a.fM[j] += cr * derivativeMe_[k](r, b);
             }
+            const int gi = model_.internal_offset(elements[k]);  // the internal strain's row
+            if (gi >= 0) {
+                a.fK[model_.free_index(gi)] += derivativeVisco_[k].dI_dX[b];
+                a.fC[model_.free_index(gi)] += derivativeVisco_[k].dI_dXd[b];
+            }
         }
         if (!tow) {
             for (int r = 0; r < 6; ++r) {
@@ -226,6 +234,11 @@ void CableSimulation::derivative_response(const double seed[kDerivativeInputs], 
                     for (size_t s = 0; s < active.size(); ++s)
                         if (g == active[s].gp)
                             dR += active[s].weight * (Ke(a, b) * p[s][0] + Ce(a, b) * v[s][0] + Me(a, b) * acc[s][0]);
+                }
+                const int gi = model_.internal_offset(elements[k]);
+                if (gi >= 0) {
+                    const int j = model_.free_index(gi);
+                    dR += derivativeVisco_[k].dR_de1[a] * q0[j] + derivativeVisco_[k].dR_dr1[a] * v0[j];
                 }
                 result[3 * k + r] = -dR;
             }

@@ -261,7 +261,8 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
         double axialTension[ElementTables::nAxial];
         Vec3 rp[ElementTables::nAxial];  // r' at the axial points, which the tensions interpolate anyway
         double material[12];  // the winch's top element: the velocities of the material in it
-        axial_tensions(tables, section.axial, Xe, model.element_velocities(e, X, Xd, material), axialTension, rp);
+        axial_tensions(tables, model.internal_offset(e) >= 0 ? model.element_axial(e, X, Xd) : section.axial, Xe,
+                       model.element_velocities(e, X, Xd, material), axialTension, rp);
         double mean = 0.0, elementCurvature = 0.0;
         for (int g = 0; g < ElementTables::nAxial; ++g) {
             mean += tables.axial[g].weight / l * axialTension[g];

@@ -329,6 +329,7 @@ private:
     std::unique_ptr<UnpivotedBandLU> derivativeLU_[2];
     std::unique_ptr<BandMatrix> derivativeK_, derivativeC_, derivativeM_;
     Mat12 derivativeKe_[2], derivativeCe_[2], derivativeMe_[2];
+    ViscoJacobian derivativeVisco_[2];  // the end elements' internal strain couplings (viscoelastic line)
     Mat6 derivativeKn_, derivativeCn_, derivativeMn_;
     // bottomEnd 4: the force on the body by the proxy's velocity and position at t + h
     Mat3 derivativeProxyVelocity_ = Mat3::Zero(), derivativeProxyPosition_ = Mat3::Zero();

@@ -238,6 +238,10 @@ bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
         for (int i = 0; i < model_.n_slots(); ++i)
             X[6 * i + 2] = std::max(X[6 * i + 2], model_.seabed_height(X[6 * i], X[6 * i + 1]));
     }
+    if (model_.n_internal() > 0) {  // the viscoelastic elements' internal strains at rest with the guess
+        std::vector<double> Xd(X.size(), 0.0);
+        model_.settle_internal(X.data(), Xd.data());
+    }
     model_.restrict_to_free(X.data(), q.data());
     return profile;
 }
@@ -649,7 +653,7 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
                                (farEnd.external && (state_.end.v() - state_.tow.v()).norm() <= 1e-12);
         if (p.initMode == UC_INIT_EQUILIBRIUM && steadyTow) {
             // Steady tow: every node moves with the tow point, tangents do not turn.
-            for (int g = 0; g < model_.n_global(); ++g) {
+            for (int g = 0; g < 6 * model_.n_slots(); ++g) {
                 const int j = model_.free_index(g);
                 if (j >= 0 && g % 6 < 3) v[j] = state_.tow.v()[g % 6];
             }

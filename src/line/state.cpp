@@ -13,7 +13,7 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 12;
+constexpr std::uint32_t kStateVersion = 13;  // 13: the viscoelastic elements' internal strains among the unknowns
 
 // Fixed-layout header of a saved state: what it belongs to (the sizes and the winch's mesh, which
 // the model holds); followed by LineState, y, y' and the integrator's history.

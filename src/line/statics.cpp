@@ -75,7 +75,7 @@ bool newton(const CableModel& model, BandSolver& solver, const Loads& loads, dou
     // Round-off of the axial forces: |r'| comes from shape-function sums of coordinates of size
     // |X| with weights ~1/l, so it carries an error of about eps |X| / l, times EA.
     double coordinate = length;
-    for (int g = 0; g < model.n_global(); g += 6) coordinate = std::max(coordinate, Eigen::Map<const Vec3>(w.X.data() + g).norm());
+    for (int g = 0; g < 6 * model.n_slots(); g += 6) coordinate = std::max(coordinate, Eigen::Map<const Vec3>(w.X.data() + g).norm());
     const double roundOff = std::max(1e-12 * force_scale(model, loads),
                                      64.0 * model.line().EA * std::min(1.0, loads.axialStiffnessScale) * std::numeric_limits<double>::epsilon() *
                                          (1.0 + coordinate / shortest));
@@ -272,6 +272,13 @@ bool solve_consistent_acceleration(const CableModel& model, BandSolver& solver, 
     solver.clear();
     model.jacobian(w.X.data(), w.Xd.data(), w.Xdd.data(), loads,
                    [&](int i, int j, double, double, double da) { solver.add(i, j, da); });
+    // An internal strain's equation has no acceleration (its rate is the given one): a' = 0 there.
+    for (int e = 0; e < model.n_elements(); ++e)
+        if (model.internal_offset(e) >= 0) {
+            const int j = model.free_index(model.internal_offset(e));
+            solver.add(j, j, 1.0);
+            w.R[j] = 0.0;
+        }
     a.resize(model.n_free());
     for (int j = 0; j < model.n_free(); ++j) a[j] = -w.R[j];
     return solver.factor_and_solve(a.data());

@@ -23,6 +23,53 @@ AxialProps CableModel::scaled_axial(const SectionProps& section, const Loads& lo
                       section.curve.n > 0 ? &section.curve : nullptr};
 }
 
+AxialProps CableModel::element_axial(int e, const double* X, const double* Xd) const {
+    const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
+    AxialProps p = sec.axial;
+    const int gi = internal_offset(e);
+    if (gi >= 0) {
+        p.visco = &sec.visco;
+        p.internal[0] = X[gi];
+        p.internal[1] = Xd[gi];
+    }
+    return p;
+}
+
+AxialProps CableModel::axial_at(int e, const double* X, const double* Xd, const Loads& loads) const {
+    AxialProps p = scaled_axial(sections_[runs_[elementRun_[e]].section], loads);
+    const int gi = internal_offset(e);
+    if (gi >= 0) {
+        p.visco = &sections_[runs_[elementRun_[e]].section].visco;
+        p.internal[0] = X[gi];
+        p.internal[1] = Xd[gi];
+    }
+    return p;
+}
+
+void CableModel::settle_internal(double* X, double* Xd) const {
+    for (int e = 0; e < nElements_; ++e) {
+        const int gi = internal_offset(e);
+        if (gi < 0) continue;
+        const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
+        const ElementTables& t = tables_[elementRun_[e]];
+        // the mean strain of the element, then e1 with (EA_1 + EA_2) e1 = EA_2 e: EA_1 e1 = EA_s e, the
+        // static spring's tension, so e1 = EA_s e / EA_1(e1), a fixed point (a contraction: EA_1 falls
+        // slowly with e1); with a constant EA_2 the first iterate is exact
+        double strain = 0.0;
+        for (int g = 0; g < ElementTables::nAxial; ++g)
+            strain += t.axial[g].weight / t.length * (interpolate(t.axial[g].shape.dN, X + elementOffset_[e]).norm() - 1.0);
+        double e1 = sec.visco.EAs * strain / visco_stiffness(sec.visco, 0.0).EA1;
+        for (int it = 0; it < 100; ++it) {
+            const double next = sec.visco.EAs * strain / visco_stiffness(sec.visco, e1).EA1;
+            const bool done = std::abs(next - e1) <= 1e-15 * std::abs(e1);
+            e1 = next;
+            if (done) break;
+        }
+        X[gi] = e1;
+        Xd[gi] = 0.0;
+    }
+}
+
 namespace {
 
 // Membrane locking (docs/model.md): the axial strain of an element is projected onto
@@ -156,16 +203,18 @@ struct SectionInput {
     double length, diameter, massPerLength, EA, EI, axialDamping, GJ, Cdn, Cdt, Can, Cat;
     int nElements, joint;
     double MBL;
+    double EAdynamic, EAdynamicSlope, axialDampingDynamic;  // the viscoelastic model (EAdynamic 0: none)
 };
 
 SectionInput uniform_line(const UCParams& p) {
     return {p.length, p.diameter, p.massPerLength, p.EA, p.EI, p.axialDamping, p.GJ,
-            p.Cdn, p.Cdt, p.Can, p.Cat, p.nElements, 0, p.MBL};
+            p.Cdn, p.Cdt, p.Can, p.Cat, p.nElements, 0, p.MBL, p.EAdynamic, p.EAdynamicSlope, p.axialDampingDynamic};
 }
 
 SectionInput section_input(const UCSection& s, double lineMBL) {
     return {s.length, s.diameter, s.massPerLength, s.EA, s.EI, s.axialDamping, s.GJ,
-            s.Cdn, s.Cdt, s.Can, s.Cat, s.nElements, s.joint, s.MBL > 0.0 ? s.MBL : lineMBL};
+            s.Cdn, s.Cdt, s.Can, s.Cat, s.nElements, s.joint, s.MBL > 0.0 ? s.MBL : lineMBL,
+            s.EAdynamic, s.EAdynamicSlope, s.axialDampingDynamic};
 }
 
 }  // namespace
@@ -228,6 +277,7 @@ void CableModel::build_sections(const UCParams& p) {
         s.fluid.addedMass = p.enableAddedMass != 0;
         s.axial.EA = in.EA;
         if (sections_.empty()) s.curve = curve;
+        if (in.EAdynamic > 0.0) s.visco = ViscoProps{in.EA, in.EAdynamic, in.EAdynamicSlope, in.axialDampingDynamic};
         s.axial.damping = in.axialDamping;
         s.axial.tensionOnly = p.enableCompression == 0;
         s.EI = p.enableBending ? in.EI : 0.0;
@@ -405,10 +455,21 @@ void CableModel::place_attachments(const std::vector<std::pair<double, PointBody
 void CableModel::build_dof_map() {
     // DOF map, in global order so that the free Jacobian stays banded.
     const UCParams& params = params_;
+    // The internal strains of viscoelastic elements after the node slots (the free unknowns interleave them).
+    nInternal_ = 0;
+    internalOffset_.clear();
+    std::vector<int> startsAt(nSlots_, -1);  // the viscoelastic element starting at each slot
+    for (int e = 0; e < nElements_; ++e) {
+        if (!sections_[runs_[elementRun_[e]].section].viscoelastic()) continue;
+        if (internalOffset_.empty()) internalOffset_.assign(nElements_, -1);
+        internalOffset_[e] = 6 * nSlots_ + nInternal_++;
+        startsAt[elementOffset_[e] / 6] = e;
+    }
     free_.assign(n_global(), -1);
     coef_.assign(n_global(), 1.0);
     int next = 0;
     for (int i = 0; i < nSlots_; ++i) {
+        if (i > 0 && startsAt[i - 1] >= 0) free_[internalOffset_[startsAt[i - 1]]] = next++;
         for (int k = 0; k < 6; ++k) {
             const int g = 6 * i + k;
             const bool position = k < 3;
@@ -437,6 +498,10 @@ void CableModel::build_dof_map() {
             if (j < 0) continue;
             lo = std::min(lo, j);
             hi = std::max(hi, j);
+        }
+        if (internal_offset(e) >= 0) {
+            lo = std::min(lo, free_[internal_offset(e)]);
+            hi = std::max(hi, free_[internal_offset(e)]);
         }
         if (hi >= lo) bandwidth_ = std::max(bandwidth_, hi - lo);
     }
@@ -588,7 +653,7 @@ void CableModel::element_residual(int e, const double* X, const double* Xd, cons
     const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
     for (int a = 0; a < 12; ++a) R[a] = 0.0;
     add_mass_force(tables, sec.fluid.massPerLength, xdd, R);
-    add_axial_force(tables, scaled_axial(sec, loads), x, xd, R);
+    add_axial_force(tables, axial_at(e, X, Xd, loads), x, xd, R);
     if (sec.EI > 0.0) add_bending_force(tables, sec.EI, x, R);
     if (sec.bendingDamping > 0.0) add_bending_force(tables, sec.bendingDamping, xd, R);
     if (loads.torque != 0.0) add_torque_force(tables, loads.torque, x, R);
@@ -606,25 +671,25 @@ void CableModel::element_jacobian(int e, const double* X, const double* Xd, cons
         // The material velocity depends on the positions too: dXm/dX = rate d(top_rate_direction)/dX
         // (r'0 in the tow node's velocity, r''0 = sum_k d2N_k(0) X_k in its tangent rate).
         double Xm[12];
-        element_jacobian_at(e, X + g0, element_velocities(e, X, Xd, Xm), Xdd + g0, loads, K, C, M);
+        element_jacobian_at(e, axial_at(e, X, Xd, loads), X + g0, element_velocities(e, X, Xd, Xm), Xdd + g0, loads, K, C, M);
         const ShapeValues s = hermite_shape(0.0, top_length());
         const Eigen::Matrix<double, 12, 3> Cr = C.middleCols<3>(0), Ct = C.middleCols<3>(3);
         K.middleCols<3>(3) += topRate_ * Cr;
         for (int k = 0; k < 4; ++k) K.middleCols<3>(3 * k) += (topRate_ * s.d2N[k]) * Ct;
         return;
     }
-    element_jacobian_at(e, X + g0, Xd + g0, Xdd + g0, loads, K, C, M);
+    element_jacobian_at(e, axial_at(e, X, Xd, loads), X + g0, Xd + g0, Xdd + g0, loads, K, C, M);
 }
 
-void CableModel::element_jacobian_at(int e, const double* x, const double* xd, const double* xdd,
-                                     const Loads& loads, Mat12& K, Mat12& C, Mat12& M) const {
+void CableModel::element_jacobian_at(int e, const AxialProps& axial, const double* x, const double* xd,
+                                     const double* xdd, const Loads& loads, Mat12& K, Mat12& C, Mat12& M) const {
     const ElementTables& tables = tables_[elementRun_[e]];
     const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
     K.setZero();
     C.setZero();
     M.setZero();
     add_mass_jacobian(tables, sec.fluid.massPerLength, M);
-    add_axial_jacobian(tables, scaled_axial(sec, loads), x, xd, K, C);
+    add_axial_jacobian(tables, axial, x, xd, K, C);
     if (sec.EI > 0.0) add_bending_jacobian(tables, sec.EI, K);
     if (sec.bendingDamping > 0.0) add_bending_jacobian(tables, sec.bendingDamping, C);
     if (loads.torque != 0.0) add_torque_jacobian(tables, loads.torque, x, K);
@@ -804,6 +869,12 @@ void CableModel::residual(const double* X, const double* Xd, const double* Xdd, 
             if (j >= 0) Rfree[j] += coef_[g0 + a] * Re[a];
         }
         if (forces) forces->element[e] = Eigen::Map<const Vec12>(Re);
+        const int gi = internal_offset(e);
+        if (gi >= 0) {
+            double Xm[12];
+            Rfree[free_[gi]] += visco_residual(tables_[elementRun_[e]], axial_at(e, X, Xd, loads), X + g0,
+                                               element_velocities(e, X, Xd, Xm));
+        }
     }
     const Vec6 end = end_node_residual(X, Xd, Xdd, loads);
     const int gN = end_offset();

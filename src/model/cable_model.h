@@ -3,7 +3,9 @@
 // over the free DOFs (docs/model.md, docs/lines.md).
 //
 // Global nodal coordinates X: node slot i holds [r_i, r'_i] at X[6i .. 6i+5]; element e spans the
-// two slots from element_offset(e) (its 12 DOFs are contiguous). Slot 0 is the tow point. A pinned
+// two slots from element_offset(e) (its 12 DOFs are contiguous). An element of a viscoelastic section
+// has one more unknown, its internal strain, at X[internal_offset(e)] after all the node slots (its
+// free index between those of the element's two nodes, so the Jacobian stays banded). Slot 0 is the tow point. A pinned
 // joint between two sections has two slots: the second repeats the position (both map to the same
 // free unknowns) and carries the tangent of the next section, so no moment passes the joint; every
 // other node is one slot. Free DOFs q are what the integrator and the static solver see; every
@@ -155,6 +157,8 @@ struct SectionProps {
     FluidProps fluid{};   // mass per length, diameter, coefficients (and the water's density, gravity)
     AxialProps axial{};
     AxialCurve curve{};    // n 0: the constant axial.EA; else the tension-strain curve (axial.EA its secant)
+    ViscoProps visco{};    // EAd 0: none; else the viscoelastic model (axial.EA = visco.EAs, the static EA)
+    bool viscoelastic() const { return visco.EAd > 0.0; }
     SeabedProps seabed{};  // the contact's smoothing depends on the diameter
     double EI = 0.0;       // 0 when bending is disabled
     double bendingDamping = 0.0;  // EI * axialDamping / EA [N.m2.s]
@@ -237,7 +241,15 @@ public:
     const UCParams& params() const { return params_; }
     int n_elements() const { return nElements_; }
     int n_slots() const { return nSlots_; }  // node slots: nodes plus one per pinned joint
-    int n_global() const { return 6 * nSlots_; }
+    int n_global() const { return 6 * nSlots_ + nInternal_; }
+    int n_internal() const { return nInternal_; }  // internal strains (viscoelastic elements)
+    // Global index of element e's internal strain, -1 where it has none.
+    int internal_offset(int e) const { return internalOffset_.empty() ? -1 : internalOffset_[e]; }
+    // Every element's internal strain at equilibrium with its present mean strain (X), rate 0 (Xd).
+    void settle_internal(double* X, double* Xd) const;
+    // The axial properties element e's tension comes from at X, Xd: the section's (with its
+    // viscoelastic model and internal strain where it has one).
+    AxialProps element_axial(int e, const double* X, const double* Xd) const;
     int n_free() const { return nFree_; }
     int free_bandwidth() const { return bandwidth_; }  // max |i - j| of coupled free DOFs
     const LineScales& line() const { return line_; }
@@ -254,7 +266,7 @@ public:
 
     // The compiled description of element e.
     int element_offset(int e) const { return elementOffset_[e]; }  // global index of its first DOF
-    int end_offset() const { return n_global() - 6; }               // the far end's node
+    int end_offset() const { return 6 * nSlots_ - 6; }              // the far end's node
     double element_length(int e) const { return runs_[elementRun_[e]].elementLength; }
     double element_start(int e) const;                               // arc length of its first node
     const ElementTables& tables(int e) const { return tables_[elementRun_[e]]; }
@@ -326,6 +338,13 @@ public:
     // Element Jacobians (dR/dX, dR/dXdot, dR/dXddot) for tests and assembly.
     void element_jacobian(int e, const double* X, const double* Xd, const double* Xdd,
                           const Loads& loads, Mat12& K, Mat12& C, Mat12& M) const;
+    // Element e's internal strain couplings (viscoelastic elements; false where it has none).
+    bool element_visco_jacobian(int e, const double* X, const double* Xd, const Loads& loads, ViscoJacobian& J) const {
+        if (internal_offset(e) < 0) return false;
+        double Xm[12];
+        visco_jacobian(tables(e), axial_at(e, X, Xd, loads), X + elementOffset_[e], element_velocities(e, X, Xd, Xm), J);
+        return true;
+    }
     void end_node_jacobian(const double* X, const double* Xd, const double* Xdd, const Loads& loads,
                            Mat6& K, Mat6& C, Mat6& M) const;
 
@@ -334,9 +353,11 @@ public:
 
 private:
     AxialProps scaled_axial(const SectionProps& section, const Loads& loads) const;
+    // scaled_axial of element e's section with its viscoelastic model and internal strain at X, Xd.
+    AxialProps axial_at(int e, const double* X, const double* Xd, const Loads& loads) const;
     // element_jacobian at the element's own 12 values x, xd, xdd (the velocities as given).
-    void element_jacobian_at(int e, const double* x, const double* xd, const double* xdd, const Loads& loads,
-                             Mat12& K, Mat12& C, Mat12& M) const;
+    void element_jacobian_at(int e, const AxialProps& axial, const double* x, const double* xd, const double* xdd,
+                             const Loads& loads, Mat12& K, Mat12& C, Mat12& M) const;
     void build_sections(const UCParams& p);
     void build_mesh(const UCParams& p, const std::vector<double>* nodes);
     void build_slots();
@@ -381,6 +402,8 @@ private:
     WaveExpansion* point_wave_cache(size_t i) const;
     std::vector<int> free_;
     std::vector<double> coef_;
+    int nInternal_ = 0;
+    std::vector<int> internalOffset_;  // per element (empty: no viscoelastic element)
     int nFree_ = 0;
     int bandwidth_ = 0;
 };
@@ -403,6 +426,21 @@ void CableModel::jacobian(const double* X, const double* Xd, const double* Xdd, 
                 add(ja, jb, cab * K(a, b), cab * C(a, b), cab * M(a, b));
             }
         }
+        const int gi = internal_offset(e);
+        if (gi < 0) continue;
+        // the internal strain's couplings: its row (no acceleration), its column in the element's rows
+        const int ji = free_[gi];
+        double Xm[12];
+        ViscoJacobian J;
+        visco_jacobian(tables(e), axial_at(e, X, Xd, loads), X + g0, element_velocities(e, X, Xd, Xm), J);
+        for (int a = 0; a < 12; ++a) {
+            const int ja = free_[g0 + a];
+            if (ja < 0) continue;
+            const double ca = coef_[g0 + a];
+            add(ja, ji, ca * J.dR_de1[a], ca * J.dR_dr1[a], 0.0);
+            add(ji, ja, ca * J.dI_dX[a], ca * J.dI_dXd[a], 0.0);
+        }
+        add(ji, ji, J.dI_de1, J.dI_dr1, 0.0);
     }
     Mat6 Kn, Cn, Mn;
     end_node_jacobian(X, Xd, Xdd, loads, Kn, Cn, Mn);

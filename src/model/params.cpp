@@ -118,6 +118,39 @@ std::string check_params(const UCParams& p) {
         if (!AxialCurve::build(p.axialCurveStrain, p.axialCurveTension, p.axialCurvePoints, curve, why))
             return "axialCurve.strain/tension[1.." + std::to_string(p.axialCurvePoints) + "], " + why;
     }
+    // The viscoelastic model: a uniform line's (EAdynamic) or a section's (section[k].EAdynamic), its dynamic
+    // stiffness above the static one.
+    if (p.EAdynamic > 0.0 && p.nSections >= 2)
+        return format_violation("EAdynamic", p.EAdynamic, "{0} with nSections >= 2",
+                                "the line's viscoelastic model describes a uniform line (nSections 1; sections have "
+                                "section[k].EAdynamic)");
+    for (int k = 0; k < (p.nSections >= 2 ? p.nSections : 1) && k < UC_MAX_SECTIONS; ++k) {
+        const bool line = p.nSections < 2;
+        const double EAd = line ? p.EAdynamic : p.section[k].EAdynamic;
+        if (!(EAd > 0.0)) continue;
+        const double EA = line ? p.EA : p.section[k].EA;
+        const double c = line ? p.axialDamping : p.section[k].axialDamping;
+        const double cd = line ? p.axialDampingDynamic : p.section[k].axialDampingDynamic;
+        char name[64], dampingName[64];
+        std::snprintf(name, sizeof name, line ? "EAdynamic" : "section[%d].EAdynamic", k + 1);
+        std::snprintf(dampingName, sizeof dampingName, line ? "axialDampingDynamic" : "section[%d].axialDampingDynamic", k + 1);
+        if (p.axialCurvePoints > 0)
+            return format_violation(name, EAd, "{0} with axialCurvePoints > 0",
+                                    "the viscoelastic model's static stiffness is the constant EA, not a tension-strain curve");
+        if (p.winchMode != 0)
+            return format_violation(name, EAd, "{0} with winchMode != 0",
+                                    "a winch's line changes its elements, which would lose their internal strains");
+        if (!(EAd > EA)) {
+            char range[120];
+            std::snprintf(range, sizeof range, "(%.6g, 1e13] (above %s, the static stiffness)", EA, line ? "EA" : "its EA");
+            return format_violation(name, EAd, range,
+                                    "the dynamic spring is in series with another: it is stiffer than the static EA");
+        }
+        if (!(c + cd > 0.0))
+            return format_violation(dampingName, cd, "(0, 1e13] with no static damping",
+                                    "the viscoelastic model's internal strain moves through a dashpot: the static or the "
+                                    "dynamic damping is above 0");
+    }
     // Sections and attachments: every section in use has a length; attachments lie on the line.
     double lineLength = p.length;
     if (p.nSections >= 2) {

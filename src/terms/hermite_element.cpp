@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 namespace uc {
 
@@ -166,8 +167,15 @@ ModeTensions mode_tensions(const ElementTables& e, const AxialProps& p, const Ax
     ModeTensions m;
     for (int k = 0; k < e.axialModes; ++k) {
         m.stiffness[k] = p.EA;
-        const double elastic = k == 0 && p.curve ? (*p.curve)(s.strainMode[0], &m.stiffness[0]) : p.EA * s.strainMode[k];
-        const double P = mode_weight(e, p, k) * (elastic + p.damping * s.rateMode[k]);
+        double P;
+        if (k == 0 && p.visco) {
+            // the first Kelvin-Voigt pair carries the tension: no direct dependence on the strain
+            m.stiffness[0] = 0.0;
+            P = mode_weight(e, p, 0) * (visco_stiffness(*p.visco, p.internal[0]).EA1 * p.internal[0] + p.damping * p.internal[1]);
+        } else {
+            const double elastic = k == 0 && p.curve ? (*p.curve)(s.strainMode[0], &m.stiffness[0]) : p.EA * s.strainMode[k];
+            P = mode_weight(e, p, k) * (elastic + p.damping * s.rateMode[k]);
+        }
         m.mode[k] = p.tensionOnly && k == 0 ? slack_law(P, slack_width(e, p)) : SlackLaw{P, 1.0};
     }
     return m;
@@ -229,7 +237,7 @@ void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const doubl
         for (int a = 0; a < 4; ++a) {
             for (int b = 0; b < 4; ++b) {
                 K.block<3, 3>(3 * a, 3 * b) += (weight * m.stiffness[k]) * G[a] * G[b].transpose();
-                if (p.damping != 0.0) {
+                if (p.damping != 0.0 && !(k == 0 && p.visco)) {
                     K.block<3, 3>(3 * a, 3 * b) += (weight * p.damping) * G[a] * H[b].transpose();
                     C.block<3, 3>(3 * a, 3 * b) += (weight * p.damping) * G[a] * G[b].transpose();
                 }
@@ -243,6 +251,73 @@ void axial_tensions(const ElementTables& e, const AxialProps& p, const double* X
     const AxialSamples s = rp ? sample_axial<true>(e, X, Xd, rp) : sample_axial(e, X, Xd);
     const ModeTensions m = mode_tensions(e, p, s);
     for (int g = 0; g < ElementTables::nAxial; ++g) T[g] = projected_tension(e, m, g);
+}
+
+ViscoStiffness visco_stiffness(const ViscoProps& v, double e1) {
+    ViscoStiffness k{v.EAd, v.EAd, 0.0, 0.0};
+    if (v.slope != 0.0 && e1 > 0.0) {
+        // EA_2 = EA_d + beta EA_1 e1 with EA_1 = EA_2 EA_s / (EA_2 - EA_s): the root above EA_s of
+        // EA_2^2 - b EA_2 + EA_d EA_s = 0, b = EA_d + EA_s (1 + beta e1). A compressed first spring
+        // (e1 <= 0) carries no mean load: EA_2 = EA_d, continuous at e1 = 0 (EA_d > EA_s).
+        const double b = v.EAd + v.EAs * (1.0 + v.slope * e1);
+        const double root = std::sqrt(b * b - 4.0 * v.EAd * v.EAs);
+        k.EA2 = 0.5 * (b + root);
+        k.dEA2 = 0.5 * v.slope * v.EAs * (1.0 + b / root);
+    }
+    const double gap = k.EA2 - v.EAs;
+    k.EA1 = k.EA2 * v.EAs / gap;
+    k.dEA1 = -v.EAs * v.EAs / (gap * gap) * k.dEA2;
+    return k;
+}
+
+void visco_modulus(const ViscoProps& v, double damping, double w, double& storage, double& loss) {
+    const ViscoStiffness k = visco_stiffness(v, 0.0);
+    const std::complex<double> i(0.0, 1.0);
+    const std::complex<double> E =
+        (k.EA1 + i * w * damping) * (k.EA2 + i * w * v.dampingDynamic) / (k.EA1 + k.EA2 + i * w * (damping + v.dampingDynamic));
+    storage = E.real();
+    loss = E.imag();
+}
+
+double visco_residual(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd) {
+    const AxialSamples s = sample_axial(e, X, Xd);
+    const ViscoProps& v = *p.visco;
+    const double e1 = p.internal[0], r1 = p.internal[1];
+    const ViscoStiffness k = visco_stiffness(v, e1);
+    return (p.damping + v.dampingDynamic) * r1 - k.EA2 * s.strainMode[0] + (k.EA1 + k.EA2) * e1 -
+           v.dampingDynamic * s.rateMode[0];
+}
+
+void visco_jacobian(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd, ViscoJacobian& J) {
+    const AxialSamples s = sample_axial(e, X, Xd);
+    const ModeTensions m = mode_tensions(e, p, s);
+    const ViscoProps& v = *p.visco;
+    const double e1 = p.internal[0], l = e.length;
+    const ViscoStiffness k = visco_stiffness(v, e1);
+    // G_b = sum_g w_g l dN_b t_g (the mean mode's d(strain)/dX_b times l), H_b its rate's part in X
+    Vec3 G[4], H[4];
+    for (int a = 0; a < 4; ++a) {
+        G[a].setZero();
+        H[a].setZero();
+    }
+    for (int g = 0; g < ElementTables::nAxial; ++g) {
+        const QuadPoint& q = e.axial[g];
+        const Vec3 rotationRate = (s.rpd[g] - s.t[g] * s.t[g].dot(s.rpd[g])) / s.stretch[g];
+        for (int a = 0; a < 4; ++a) {
+            G[a] += (q.weight * q.shape.dN[a]) * s.t[g];
+            H[a] += (q.weight * q.shape.dN[a]) * rotationRate;
+        }
+    }
+    const double scale = mode_weight(e, p, 0) * m.mode[0].slope;
+    for (int a = 0; a < 4; ++a)
+        for (int c = 0; c < 3; ++c) {
+            J.dR_de1[3 * a + c] = scale * (k.EA1 + e1 * k.dEA1) * G[a][c];
+            J.dR_dr1[3 * a + c] = scale * p.damping * G[a][c];
+            J.dI_dX[3 * a + c] = -(k.EA2 * G[a][c] + v.dampingDynamic * H[a][c]) / l;
+            J.dI_dXd[3 * a + c] = -v.dampingDynamic * G[a][c] / l;
+        }
+    J.dI_de1 = k.EA1 + k.EA2 + e1 * (k.dEA1 + k.dEA2) - k.dEA2 * s.strainMode[0];
+    J.dI_dr1 = p.damping + v.dampingDynamic;
 }
 
 double axial_energy(const ElementTables& e, const AxialProps& p, const double* X) {

@@ -81,6 +81,32 @@ inline Vec3 interpolate(const double (&N)[4], const double* X) {
 // tensionOnly is set: the element's mean tension is slack_law(P mean), a C1 ramp that equals it
 // above kSlackStrain EA and is 0 below -kSlackStrain EA (so the law shifts the stretch by at most
 // kSlackStrain where it matters); the softened higher strain modes stay two-sided.
+// MoorDyn's viscoelastic (static-dynamic) axial model of a fibre rope (docs/model.md, "Viscoelastic
+// axial model"): a Kelvin-Voigt pair (spring EA_1, dashpot c = the line's axial damping) in series with
+// a second pair (spring EA_2, dashpot c_d). The element's internal strain e1 is the first pair's: the
+// tension is EA_1 e1 + c e1', and the pairs carry the same tension,
+//   (c + c_d) e1' = EA_2 e - (EA_1 + EA_2) e1 + c_d e',   e the element's mean strain.
+// At rest EA_2 e = (EA_1 + EA_2) e1: the static stiffness is EA_s, the series of the two springs. EA_2 is
+// the dynamic stiffness EA_d, constant, or with a slope beta in the mean load EA_1 e1 (MoorDyn's
+// EA_s|EA_Dc|EA_D_Lm): EA_2 = EA_d + beta EA_1 e1, EA_1 = EA_2 EA_s / (EA_2 - EA_s).
+struct ViscoProps {
+    double EAs = 0.0;      // static stiffness [N]
+    double EAd = 0.0;      // dynamic stiffness (with slope: its value at zero mean load) [N], > EAs
+    double slope = 0.0;    // beta [-]: d EA_2 / d(mean load)
+    double dampingDynamic = 0.0;  // c_d [N s]
+};
+
+// EA_1, EA_2 at the internal strain e1 and their derivatives in e1.
+struct ViscoStiffness {
+    double EA1, EA2, dEA1, dEA2;
+};
+ViscoStiffness visco_stiffness(const ViscoProps& v, double e1);
+
+// The complex modulus of the model at the angular frequency w (constant EA_2): the tension per unit
+// harmonic strain, T = E(w) e, E = (EA_1 + i w c)(EA_2 + i w c_d) / (EA_1 + EA_2 + i w (c + c_d)).
+// storage: Re E, loss: Im E.
+void visco_modulus(const ViscoProps& v, double damping, double w, double& storage, double& loss);
+
 struct AxialProps {
     double EA;
     double damping;
@@ -90,6 +116,10 @@ struct AxialProps {
     // A non-linear stiffness (null: the constant EA): the element's mean strain mode carries
     // curve(strain) instead of EA strain; its higher (softened) modes keep EA, the curve's secant.
     const AxialCurve* curve = nullptr;
+    // The viscoelastic model (null: none): the mean strain mode carries EA_1 e1 + damping e1' with the
+    // element's internal strain e1 and its rate e1' (internal[0], internal[1]), the higher modes EA (EA_s).
+    const ViscoProps* visco = nullptr;
+    double internal[2] = {0.0, 0.0};
 };
 
 constexpr double kSlackStrain = 1e-5;
@@ -115,6 +145,16 @@ void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const doubl
 // Projected tension at the ElementTables::nAxial sampling points; rp (may be null) receives r' there.
 void axial_tensions(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
                     double* T, Vec3* rp = nullptr);
+// The viscoelastic element's internal equation (its residual, in N): (c + c_d) e1' - EA_2 e + (EA_1 + EA_2) e1
+// - c_d e', with e the mean strain mode (p.visco set).
+double visco_residual(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd);
+// Its couplings: the element's 12 residuals in e1 (dR_de1) and e1' (dR_dr1); the internal residual in X
+// (dI_dX), Xdot (dI_dXd), e1 (dI_de1) and e1' (dI_dr1).
+struct ViscoJacobian {
+    double dR_de1[12], dR_dr1[12], dI_dX[12], dI_dXd[12];
+    double dI_de1, dI_dr1;
+};
+void visco_jacobian(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd, ViscoJacobian& J);
 // Axial strain energy 0.5 EA int (projected strain)^2 ds, the curve's energy for the mean mode (for tests).
 double axial_energy(const ElementTables& e, const AxialProps& p, const double* X);
 

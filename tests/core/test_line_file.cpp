@@ -454,6 +454,34 @@ TEST(LineFile, ApplyRefusesMoreLinesThanSections) {
 
 // ---- refusals: each names the line of the deck
 
+TEST(LineFile, ViscoelasticLineTypesGiveTheStaticAndDynamicStiffnessAndDamping) {
+    UCParams p;
+    uc_params_default(&p);
+    double tow[3] = {0, 0, 0};
+    char notes[4096], msg[512];
+    // MoorDyn's EA_s|EA_Dc|EA_D_Lm with BA_s|BA_d: EA is the static stiffness, BA_s its damping
+    std::string deck = edit(kSingleChain, "7.5e8   -0.8", "1.424e8|1.586e8|0.4 4e9|11e6");
+    ASSERT_EQ(uc_line_file_apply(deck.data(), deck.size(), &p, tow, notes, sizeof notes, msg, sizeof msg), 0) << msg;
+    EXPECT_EQ(p.EA, 1.424e8);
+    EXPECT_EQ(p.EAdynamic, 1.586e8);
+    EXPECT_EQ(p.EAdynamicSlope, 0.4);
+    EXPECT_EQ(p.axialDamping, 4e9);
+    EXPECT_EQ(p.axialDampingDynamic, 11e6);
+    EXPECT_EQ(uc::check_params(p), "");
+    // EA_s|EA_d alone: a constant dynamic stiffness, no dynamic damping; -zeta converted with EA_s
+    deck = edit(kSingleChain, "7.5e8   -0.8", "7e8|9e8 -0.8");
+    ASSERT_EQ(uc_line_file_apply(deck.data(), deck.size(), &p, tow, notes, sizeof notes, msg, sizeof msg), 0) << msg;
+    EXPECT_EQ(p.EA, 7e8);
+    EXPECT_EQ(p.EAdynamic, 9e8);
+    EXPECT_EQ(p.EAdynamicSlope, 0.0);
+    EXPECT_EQ(p.axialDampingDynamic, 0.0);
+    EXPECT_EQ(p.axialDamping, 0.8 * (900.0 / 40.0) * std::sqrt(7e8 * 113.0));
+    // a constant deck loaded after it leaves no viscoelastic model behind
+    deck = kSingleChain;
+    ASSERT_EQ(uc_line_file_apply(deck.data(), deck.size(), &p, tow, notes, sizeof notes, msg, sizeof msg), 0) << msg;
+    EXPECT_EQ(p.EAdynamic, 0.0);
+}
+
 TEST(LineFileRefuses, BodiesRodsAndOtherObjects) {
     std::string d = edit(kSingleChain, "---------------------- POINTS",
                          "---- BODIES ----\nID Attachment X0\n(#) (-) (m)\n1 coupled 0 0 0 0 0 0 0 0 0 0 0 0\n"
@@ -530,10 +558,17 @@ TEST(LineFileRefuses, UnknownLineTypesAndNonNumericFields) {
 TEST(LineFileRefuses, NonLinearAndOtherUnsupportedLineProperties) {
     std::string d = edit(kSingleChain, "7.5e8   -0.8", "ea.txt  -0.8");
     expect_refused(d, "ea.txt", "EA 'ea.txt': the tension-strain file is not next to the deck, or cannot be read");
-    d = edit(kSingleChain, "7.5e8   -0.8", "7e8|9e8 -0.8");
-    expect_refused(d, "7e8|9e8", "viscoelastic and Syrope axial models are not supported");
+    // the viscoelastic model loads (ViscoelasticDeck below); what it cannot be is refused
+    d = edit(kSingleChain, "7.5e8   -0.8", "9e8|7e8 -0.8");
+    expect_refused(d, "9e8|7e8", "a dynamic stiffness above it [N] (the springs are in series)");
+    d = edit(kSingleChain, "7.5e8   -0.8", "7e8|9e8|x -0.8");
+    expect_refused(d, "7e8|9e8|x", "a viscoelastic EA is EA_s|EA_d or EA_s|EA_Dc|EA_D_Lm");
+    d = edit(kSingleChain, "7.5e8   -0.8", "7e8|9e8 0|0");
+    expect_refused(d, "0|0", "the viscoelastic model needs a damping");
+    d = edit(kSingleChain, "7.5e8   -0.8", "SYROPE:wc.txt|1e8|0.4 -0.8");
+    expect_refused(d, "SYROPE", "the Syrope model is not supported");
     d = edit(kSingleChain, "7.5e8   -0.8", "7.5e8   1e5|2e5");
-    expect_refused(d, "1e5|2e5", "viscoelastic damping is not supported");
+    expect_refused(d, "1e5|2e5", "BA_s|BA_d belongs to a viscoelastic EA");
     d = edit(kSingleChain, "7.5e8   -0.8", "7.5e8   ba.txt");
     expect_refused(d, "ba.txt", "a non-linear damping (table) is not supported");
     d = edit(kSingleChain, "-0.8      0    2.4", "-0.8      ei.txt 2.4");

@@ -28,8 +28,8 @@ class Tow:
     """A steady tow along +x at 2 kn, the far end free, towing a body, or held by a partner moving
     with the tow point (bottomEnd 3), stepped by a master that passes the tow acceleration."""
 
-    def __init__(self, make_cable, h, bottom_end, accelerations=True):
-        params = {"bottomEnd": bottom_end, "tensionTolerance": 1e-8}
+    def __init__(self, make_cable, h, bottom_end, accelerations=True, extra=None):
+        params = {"bottomEnd": bottom_end, "tensionTolerance": 1e-8, **(extra or {})}
         self.V, self.h, self.t, self.accelerations = 2.0 * KNOT, h, 0.0, accelerations
         self.end_offset = np.array([-200.0, 0.0, -150.0])
         if bottom_end == 2:
@@ -92,6 +92,17 @@ def relative_error(D, FD):
 @pytest.mark.parametrize("bottom_end", [0, 2])
 def test_tow_force_derivatives_equal_finite_differences_of_the_step(make_cable, h, bottom_end):
     tow = Tow(make_cable, h, bottom_end)
+    D = tow.derivatives(TOW_FORCE, TOW)
+    FD = tow.finite_differences(TOW_FORCE, TOW)
+    assert relative_error(D, FD) < BOUND, (D, FD)
+
+
+@pytest.mark.parametrize("h", [0.5, 0.1])
+def test_derivatives_of_a_viscoelastic_line_carry_its_internal_strains(make_cable, h):
+    """The viscoelastic model (relaxation time (c + c_d) / (EA_1 + EA_2) = 0.3 s, of the order of the steps):
+    the internal strains' rows and their couplings to the tow point and the tow force are in the linearization."""
+    extra = {"EA": 6.7e7, "EAdynamic": 2.0e8, "axialDamping": 1.0e8, "axialDampingDynamic": 2.0e6}
+    tow = Tow(make_cable, h, 0, extra=extra)
     D = tow.derivatives(TOW_FORCE, TOW)
     FD = tow.finite_differences(TOW_FORCE, TOW)
     assert relative_error(D, FD) < BOUND, (D, FD)

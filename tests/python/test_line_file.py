@@ -125,7 +125,8 @@ def test_an_unreadable_deck_is_an_error_naming_the_paths_tried(make_cable):
     (("1    chain     1        2", "1    chain     R1A      2"), 16, "AttachA 'R1A': a rod's end, but the deck has no RODS rows"),
     (("1    Fixed  ", "1    Vessel "), 12, "a second Vessel point (the first is point 1)"),
     (("7.5e8    -0.8", "ea.txt   -0.8"), 7, "EA 'ea.txt': the tension-strain file is not next to the deck, or cannot be read"),
-], ids=["non-numeric", "rod", "two-vessels", "missing-EA-file"])
+    (("7.5e8    -0.8", "9e8|7.5e8 -0.8"), 7, "EA '9e8|7.5e8': the viscoelastic model needs EA_s > 0 [N], a dynamic stiffness above it"),
+], ids=["non-numeric", "rod", "two-vessels", "missing-EA-file", "viscoelastic-EA-below-static"])
 def test_a_refused_deck_is_an_error_naming_its_line(make_cable, tmp_path, edit, line, what):
     text = CHAIN_DECK.read_text()
     assert edit[0] in text
@@ -188,6 +189,28 @@ CLUMP_BY_PARAMETERS = {
     "nAttachments": 1, "attachment[1].s": 400.0, "attachment[1].mass": 20000.0, "attachment[1].volume": 2.5,
     "attachment[1].CdA": 3.0, "attachment[1].addedMass": 1.0 * 1025.0 * 2.5,
 }
+
+
+def test_a_viscoelastic_deck_is_the_same_line_as_its_parameters_bit_for_bit(make_cable, tmp_path):
+    """MoorDyn's EA_s|EA_d and BA_s|BA_d read into EA, EAdynamic, axialDamping, axialDampingDynamic: the deck and
+    the parameters run the same line; its dynamic tension differs from the constant EA's."""
+    path = tmp_path / "visco_chain.dat"
+    path.write_text(CHAIN_DECK.read_text().replace("7.5e8    -0.8", "7.5e8|9e8 -0.8|2e6", 1))
+    deck = make_cable(parameters={"lineFile": str(path), **SCENE})
+    params = make_cable(parameters={**CHAIN_BY_PARAMETERS, "EAdynamic": 9e8, "axialDampingDynamic": 2e6, **SCENE})
+    constant = make_cable(parameters={**CHAIN_BY_PARAMETERS, **SCENE})
+    a, b, c = _surge_run(deck), _surge_run(params), _surge_run(constant)
+    for k, (x, y) in enumerate(zip(a, b)):
+        assert x.tobytes() == y.tobytes(), f"step {k}: {x - y}"
+    assert deck.get("EAdynamic") == 0.0  # the deck's values are used, not written back
+    assert abs(a[-1][0] - c[-1][0]) > 1e-4 * c[-1][0]  # in motion: the model
+    # at rest: the static EA (the static solver's tolerance)
+    rest = []
+    for p in ({**CHAIN_BY_PARAMETERS, "EAdynamic": 9e8, "axialDampingDynamic": 2e6, **SCENE}, {**CHAIN_BY_PARAMETERS, **SCENE}):
+        cable = make_cable(parameters=p)
+        cable.initialize(inputs={"tow.z": m.FAIRLEAD_Z})
+        rest.append(cable.get("towTension"))
+    assert abs(rest[0] - rest[1]) < 1e-8 * rest[1], rest
 
 
 def test_a_deck_of_two_lines_and_a_clump_weight_is_the_same_line_as_its_sections_bit_for_bit(make_cable):
