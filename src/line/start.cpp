@@ -504,6 +504,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
 bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env,
                                  std::string& error) {
     ++stateStamp_;  // the cached interface derivatives are stale from here on
+    unrelease();     // initialized anew after its end let go: the line as built
     const UCParams& p = model_.params();
     for (double v : {tow.position[0], tow.position[1], tow.position[2], tow.velocity[0], tow.velocity[1],
                      tow.velocity[2], tow.acceleration[0], tow.acceleration[1], tow.acceleration[2], env.endLoad[0],

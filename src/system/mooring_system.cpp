@@ -17,7 +17,8 @@ namespace {
 
 constexpr std::uint32_t kSystemMagic = 0x5543534D;  // "UCSM"
 // 4: the failures' states (FailureState) after the last inputs, the nodes of the broken ones with the others
-constexpr std::uint32_t kSystemVersion = 4;
+// 5: a line's end that lets go alone is its own bare far end (the line's state says so), no free node
+constexpr std::uint32_t kSystemVersion = 5;
 
 struct SystemHeader {
     std::uint32_t magic, version;
@@ -104,6 +105,9 @@ void set_mooring_line_outputs(UCMooringLine& out, double fairlead, double anchor
 void OneLineSystem::complete_outputs(UCOutputs& out) const {
     set_mooring_line_outputs(out.mooringLine[0], out.towTension, out.endTension, out,
                              line_strength(*this, 0, model().n_sections() - 1));
+    if (released() != 0) out.mooringLine[0].anchorTension = bare_end_force().norm();  // (as a system's broken line)
+    out.mooringLine[0].broken = released() != 0 ? 1.0 : 0.0;
+    out.mooringLine[0].breakTime = released() != 0 ? release_time() : 0.0;
 }
 
 MooringSystem::MooringSystem(const UCParams& base, const MooringDeck& deck) : base_(base), deck_(deck) {}
@@ -125,6 +129,15 @@ bool MooringSystem::build(std::string& error) {
             return false;
         }
         lines_.push_back(std::make_unique<CableSimulation>(p));
+        for (size_t f = 0; f < failures_.size(); ++f) {  // what the line becomes where its end lets go
+            const MooringFailure::End* e = released_end(static_cast<int>(f));
+            if (!e || e->line != static_cast<int>(k)) continue;
+            MooringDeck released = deck_;
+            released.lines[k] = released_line(deck_.lines[k], e->end == 0);
+            UCParams r;
+            if (!mooring_line_params(released, static_cast<int>(k), base_, r, error)) return false;
+            lines_.back()->prepare_release(r, e->end == 0);
+        }
         const CableModel& model = lines_.back()->model();
         std::vector<LineProfile::Segment> segments;
         double weight = 0.0;
@@ -294,7 +307,10 @@ MooringSystem::LineEnds MooringSystem::line_ends(int k, const UCInputs& in) cons
         return EndMotion{m.position, m.velocity, m.accelerationGiven ? m.acceleration : Vec3::Zero(),
                          m.accelerationGiven ? 1 : 0};
     };
-    return {drive(end_motion(l.fairlead, in)), drive(end_motion(l.far, in))};
+    LineEnds ends{drive(end_motion(l.fairlead, in)), drive(end_motion(l.far, in))};
+    // a line run from its anchor after its fairlead let go: its tow point held where the anchor held it
+    if (lines_[k]->released() == 2 && l.fairlead.kind == MooringEnd::Kind::Fixed) ends.tow.position = lines_[k]->tow_position();
+    return ends;
 }
 
 bool MooringSystem::check_inputs(const UCInputs& in, std::string& error) {
@@ -436,7 +452,9 @@ void MooringSystem::update_outputs() {
                 last = std::max(last, run.first + run.count - 1);
             }
             const double start = j == 0 ? o.towTension : lines_[k]->element_end_tension(first, false);
-            const double end = j + 1 == sections ? o.endTension : lines_[k]->element_end_tension(last, true);
+            // (a bare end after a break: the tension at it, the seabed's contact at its tip left out)
+            const double far = lines_[k]->released() != 0 ? lines_[k]->bare_end_force().norm() : o.endTension;
+            const double end = j + 1 == sections ? far : lines_[k]->element_end_tension(last, true);
             set_mooring_line_outputs(outputs_.mooringLine[l.deckLines[j]], l.flipped[j] ? end : start,
                                      l.flipped[j] ? start : end, o, line_strength(*lines_[k], j, j));
         }
@@ -1216,7 +1234,9 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     if (header.version != kSystemVersion) {
         error = "saved state is a mooring system's state of format version " + std::to_string(header.version) +
                 ", this FMU reads version " + std::to_string(kSystemVersion) +
-                (header.version < kSystemVersion ? " (version 4 added the line failures' state)" : "") +
+                (header.version == 4   ? " (version 5 made a broken line's bare end the line's own free end)"
+                 : header.version < 4 ? " (version 4 added the line failures' state)"
+                                      : "") +
                 ": it cannot be restored; initialize anew (or restore with the FMU that saved it)";
         return false;
     }
