@@ -122,7 +122,12 @@ public:
     double time() const override { return lines_.empty() ? 0.0 : lines_[0]->time(); }
     // The system's outputs: the single-line outputs are line 1's, line[k].* each deck line's.
     const UCOutputs& outputs() const override { return outputs_; }
-    Vec3 tow_position() const override { return lines_[0]->tow_position(); }
+    // (line 1 run from its anchor after its fairlead let go: the fairlead is its bare far end)
+    Vec3 tow_position() const override {
+        const CableSimulation& l = *lines_[0];
+        return l.released() == 2 ? Vec3(l.outputs().endPosition[0], l.outputs().endPosition[1], l.outputs().endPosition[2])
+                                 : l.tow_position();
+    }
     // A coupled body's reference point (as its fairleads are extrapolated), a coupled point (the end of a
     // line that it holds).
     bool driven_position(int kind, int index, Vec3& p) const override;
