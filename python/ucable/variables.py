@@ -568,7 +568,7 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
     Variable('section[8].MBL', 269, 'parameter', 'Real', 'N', 0.0, 0.0, 10000000000.0,
              "Section 8: minimum breaking load (0: the line's MBL)"),
     Variable('failure.line', 270, 'parameter', 'Integer', None, 0, 0.0, 16.0,
-             'Mooring system: the deck line (its ID) whose end detaches at failure.point when failure.time or failure.tension is reached (0: no failure by parameters)'),
+             "The line (a mooring system: the deck line's ID; one line: 1, its far end) whose end detaches at failure.point when failure.time or failure.tension is reached (0: no failure by parameters)"),
     Variable('failure.point', 271, 'parameter', 'Integer', None, 0, 0.0, 10000.0,
              "Mooring system: the deck point (its ID) that failure.line detaches from (0: the line's fairlead, its end on a coupled body or point)"),
     Variable('failure.time', 272, 'parameter', 'Real', 's', 0.0, 0.0, 1000000000.0,

@@ -56,12 +56,8 @@ extern "C" UCCable* uc_create(const UCParams* p, char* msg, size_t msgSize) {
         }
         error = uc::check_params(*p);
         if (!error.empty()) return false;
-        if (p->failureLine != 0) {  // docs/line_failure.md, "One line"
-            error = "failure.line = " + std::to_string(p->failureLine) + ": a line failure is supported in a mooring "
-                    "system (lineFile naming a deck of several lines, or with bodies), not on one line: set "
-                    "failure.line = 0 (docs/line_failure.md)";
-            return false;
-        }
+        error = uc::OneLineSystem::check_failure(*p);  // docs/line_failure.md, "One line"
+        if (!error.empty()) return false;
         cable = new UCCable(std::make_unique<uc::OneLineSystem>(*p));
         return true;
     });

@@ -104,9 +104,9 @@ int uc_initialize(UCCable* c, double t0, const UCInputs* in, char* msg, size_t m
  * last two tow velocity inputs over the last step size (0 on the first step). */
 int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, char* msg, size_t msgSize);
 
-/* on != 0: a mooring system's uc_do_step that holds a line failure's break strictly inside it ends there (FMI
- * 3.0's early return): uc_time is then the break's time, short of t + h, the state the state at the break, and
- * the next uc_do_step goes on from there. 0 (the default): every step reaches t + h. A line never breaks. */
+/* on != 0: a mooring system's uc_do_step (or one line's, with failure.line = 1) that holds a line failure's break
+ * strictly inside it ends there (FMI 3.0's early return): uc_time is then the break's time, short of t + h, the state
+ * the state at the break, and the next uc_do_step goes on from there. 0 (the default): every step reaches t + h. */
 void uc_set_stop_at_breaks(UCCable* c, int on);
 
 /* The interface derivatives over the next communication step (taken as long as the last one) in the

@@ -67,6 +67,7 @@ struct LineState {
     // tow point and far end it was graded for (a restored state's mesh is graded again from them)
     double meshTow[3] = {0.0, 0.0, 0.0}, meshFar[3] = {0.0, 0.0, 0.0};
     UCOutputs outputs{};
+    double releaseTime = 0.0;  // when the end let go (released != 0) [s]
     std::int32_t winchLimit = 0;  // -1 / +1: at the shortest / longest length (logged once per arrival)
     std::int32_t grading = 0;     // which of kGradings graded the mesh (the first whose equilibrium passed)
     bool graded = false;
@@ -75,7 +76,8 @@ struct LineState {
     bool integratorStarted = false;  // the integrator's own counters belong to this state
     bool restartPending = true;      // the next step restarts the integrator from y, y'
     bool curveWarned = false;        // the warning of a strain beyond the tension-strain curve, once
-    char unused[2] = {};             // no padding (below): the same state saves the same bytes
+    std::uint8_t released = 0;       // 0: the ends held; 1: the far end let go; 2: the tow end let go (flipped)
+    char unused[1] = {};             // no padding (below): the same state saves the same bytes
 };
 
 static_assert(std::is_trivially_copyable_v<LineState>, "a line's state is saved and restored as bytes");
@@ -89,8 +91,8 @@ static_assert(sizeof(DrivenEndState) == 16 * sizeof(double) && sizeof(TwistRefer
 static_assert(sizeof(LineState) == 2 * sizeof(double) + 2 * sizeof(DrivenEndState) + sizeof(TwistReference) +
                                        sizeof(double) + sizeof(IntegratorStats) + sizeof(double) +
                                        sizeof(RainflowCounter) + sizeof(ProxyEstimate) + 3 * sizeof(double) +
-                                       sizeof(WinchStep) + 6 * sizeof(double) + sizeof(UCOutputs) +
-                                       2 * sizeof(std::int32_t) + 6 * sizeof(bool) + 2,
+                                       sizeof(WinchStep) + 6 * sizeof(double) + sizeof(UCOutputs) + sizeof(double) +
+                                       2 * sizeof(std::int32_t) + 6 * sizeof(bool) + 1 + 1,
               "LineState has padding, or a field the sum leaves out");
 
 }  // namespace uc

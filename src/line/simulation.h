@@ -130,6 +130,28 @@ public:
     // the tension a line of several sections has at its joints (a mooring system's line[k].* outputs).
     double element_end_tension(int e, bool far) const { return forces_.element[e].segment<3>(far ? 6 : 0).norm(); }
 
+    // A held end that lets go (docs/line_failure.md): the line goes on with a bare far end (bottomEnd 0) inside its
+    // own integrator, the model made again and the nodes' state carried over, one restart of the integrator.
+    // prepare_release, once after construction, gives what the line becomes: released, the parameters of the
+    // line with a bare far end; flip false: the far end lets go (released's sections as the line's); flip true:
+    // the tow end lets go, released describing the line run from its far end (its sections in reverse order),
+    // whose new tow point is held where the far end stands. release() lets go now (false, error, where the
+    // released model's nodes are not the held one's); a saved state says whether the end is released, and a
+    // restore or an initialization makes the model the state's. released(): 0 held, 1 the far end let go,
+    // 2 the tow end let go (the line flipped).
+    void prepare_release(const UCParams& released, bool flip);
+    bool release(double time, std::string& error);  // time: the break's (release_time())
+    int released() const { return state_.released; }
+    // The force of a bare far end on what would hold it, in the state of the last outputs: its last element's end
+    // force with the end node's own terms (its seabed contact), the tension at a free end (0 to the integrator's
+    // error; endForce, the element's alone, also carries the contact's share there).
+    Vec3 bare_end_force() const {
+        return -(forces_.element.back().segment<3>(6) + forces_.endNodeTerms.head<3>());
+    }
+    double release_time() const { return state_.releaseTime; }
+    // The size of the last step taken (0: none since the initialization) [s].
+    double last_step_size() const { return state_.lastStepSize; }
+
     // Free positions q and velocities v of the current state (for tests).
     void free_state(std::vector<double>& q, std::vector<double>& v, std::vector<double>& a) const;
     // The time integrator (for tests of its linear algebra paths).
@@ -278,6 +300,13 @@ private:
     bool restart_from(std::string& error);
     void rebuild(const WinchMesh& mesh);
     void replace_model(CableModel&& model);
+    // The released model (released 1 or 2, src/line/release.cpp) built from the held one in model_ (false, error,
+    // where its nodes are not the held model's, mirrored where flipped), and back (the held model again).
+    bool build_released(int released, std::string& error);
+    void unrelease();
+    std::unique_ptr<UCParams> releasedParams_;  // prepare_release's (null: the line has no end that lets go)
+    bool releaseFlip_ = false;
+    std::unique_ptr<UCParams> heldParams_;  // the parameters the line was built with, while released
 
     CableModel model_;
     int off_ = 0;  // 1: the constant-tension winch's unknown comes first in the integrator's vectors

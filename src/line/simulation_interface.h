@@ -24,7 +24,7 @@ public:
     // From t (the present time) to exactly t + h (uc_do_step); false with the reason.
     virtual bool step(double t, double h, const UCInputs& in, std::string& error) = 0;
     // Whether a step may end early, at a line failure's break (FMI 3.0's early return, uc_set_stop_at_breaks):
-    // then time() after step() is the break's, short of t + h. A line never breaks: nothing to set.
+    // then time() after step() is the break's, short of t + h. A line without a failure never breaks: nothing to set.
     virtual void set_stop_at_breaks(bool) {}
     // Every output of the FMU: the single-line outputs, and line[k].*, body[k].*, point[k].*.
     virtual const UCOutputs& outputs() const = 0;

@@ -565,6 +565,7 @@ bool CableSimulation::initialize(double t0, const UCInputs& in, std::string& err
 bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env,
                                  std::string& error) {
     ++stateStamp_;  // the cached interface derivatives are stale from here on
+    unrelease();     // initialized anew after its end let go: the line as built
     const UCParams& p = model_.params();
     if (p.currentsMode != 0 && currentGrid_ == nullptr) {
         error = "currents.mode = " + std::to_string(p.currentsMode) + ": the current's data (currents.file = '" +

@@ -13,7 +13,8 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 13;  // 13: the viscoelastic elements' internal strains among the unknowns
+constexpr std::uint32_t kStateVersion = 14;  // 13: the viscoelastic elements' internal strains among the unknowns;
+                                             // 14: LineState::released
 
 // Fixed-layout header of a saved state: what it belongs to (the sizes and the winch's mesh, which
 // the model holds); followed by LineState, y, y' and the integrator's history.
@@ -90,13 +91,23 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
         }
     }
     if (ours) {
-        // A graded mesh is graded again for the tow point it was made for.
+        // A graded mesh is graded again for the tow point it was made for (on the held line: a released
+        // line's mesh is its held mesh's, made again from it).
         const Vec3 tow = vec(saved.meshTow), far = vec(saved.meshFar);
-        if (tow.allFinite() && far.allFinite() && saved.grading >= 0 && saved.grading < kGradingCount &&
-            (saved.graded != state_.graded || tow != vec(state_.meshTow) || far != vec(state_.meshFar) ||
-             saved.grading != state_.grading)) {
+        const bool regrade = tow.allFinite() && far.allFinite() && saved.grading >= 0 && saved.grading < kGradingCount &&
+                             (saved.graded != state_.graded || tow != vec(state_.meshTow) ||
+                              far != vec(state_.meshFar) || saved.grading != state_.grading);
+        if (state_.released != 0 && (regrade || saved.released != state_.released)) {
+            touched = true;
+            unrelease();
+        }
+        if (regrade) {
             touched = true;
             grade_mesh(tow, far, saved.graded, saved.grading);
+        }
+        if (saved.released != state_.released) {
+            touched = true;
+            if (!build_released(saved.released, error)) return false;
         }
     }
     if (size != state_size()) {

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "numerics/locate_crossing.h"
 #include "system/mooring_system.h"
 
 namespace uc {
@@ -58,8 +59,52 @@ bool MooringSystem::build_failures(std::string& error) {
             if (e.end == 1 && !l.farFree && l.far.kind == MooringEnd::Kind::Fixed) l.farDetaches = true;
         }
     }
+    // A failure of one line's end lets go as the line's own bare far end, where the line is in no other failure
+    // and can be run from its far end (its fairlead letting go: a far end that is held).
+    releases_.assign(failures_.size(), 0);
+    for (size_t f = 0; f < failures_.size(); ++f) {
+        const MooringFailure& fail = failures_[f];
+        if (fail.ends.size() != 1 || fail.position > 0.0) continue;
+        const MooringFailure::End& e = fail.ends[0];
+        int uses = 0;
+        for (const MooringFailure& g : failures_)
+            for (const MooringFailure::End& o : g.ends) uses += o.line == e.line ? 1 : 0;
+        for (const SplitLine& split : splits_) uses += split.upper == e.line || split.lower == e.line ? 1 : 0;
+        if (uses == 1 && !(e.end == 0 && deck_.lines[e.line].farFree)) releases_[f] = 1;
+    }
     failureState_.assign(failures_.size(), FailureState{0.0, 0.0, 0.0});
     return true;
+}
+
+const MooringFailure::End* MooringSystem::released_end(int f) const {
+    return releases_[f] ? &failures_[f].ends[0] : nullptr;
+}
+
+MooringDeckLine MooringSystem::released_line(const MooringDeckLine& l, bool flip) {
+    MooringDeckLine r = l;
+    if (flip) {  // run from its far end: the sections, their joints and their deck lines the other way round
+        std::reverse(r.sections.begin(), r.sections.end());
+        std::reverse(r.joints.begin(), r.joints.end());
+        std::reverse(r.deckLines.begin(), r.deckLines.end());
+        r.flipped.assign(l.flipped.rbegin(), l.flipped.rend());
+        r.flipped.flip();
+        r.fairlead = l.far;
+        r.fairleadPoint = l.farPoint;
+        r.fairleadClamped = false;
+        std::fill(r.fairleadTangent, r.fairleadTangent + 3, 0.0);
+    }
+    r.far = MooringEnd();
+    r.farPoint = 0;
+    r.farFree = true;
+    r.farBody = LineFilePoint();
+    r.farDetaches = false;
+    return r;
+}
+
+size_t MooringSystem::node_count(const std::vector<FailureState>& states) const {
+    size_t nodes = deck0_.nodes.size();
+    for (size_t f = 0; f < states.size(); ++f) nodes += states[f].broken != 0.0 && !releases_[f] ? 1 : 0;
+    return nodes;
 }
 
 bool MooringSystem::split_line(int k, double position, MooringFailure& f, std::string& error) {
@@ -169,16 +214,14 @@ unsigned char* MooringSystem::save_failures(unsigned char* out) const {
 
 std::vector<FailureState> MooringSystem::saved_failures(const unsigned char* at, bool present, size_t& nodes) const {
     std::vector<FailureState> failureState(failureState_.size());
-    nodes = deck0_.nodes.size();
-    if (present) {
-        if (!failureState.empty()) std::memcpy(failureState.data(), at, failureState.size() * sizeof(FailureState));
-        for (const FailureState& s : failureState) nodes += s.broken != 0.0 ? 1 : 0;
-    }
+    if (present && !failureState.empty()) std::memcpy(failureState.data(), at, failureState.size() * sizeof(FailureState));
+    nodes = node_count(failureState);
     return failureState;
 }
 
 void MooringSystem::undo_breaks() {
-    if (failure_node(static_cast<int>(failures_.size())) == static_cast<int>(deck0_.nodes.size())) return;
+    if (!std::any_of(failureState_.begin(), failureState_.end(), [](const FailureState& s) { return s.broken != 0.0; }))
+        return;
     failureState_.assign(failures_.size(), FailureState{0.0, 0.0, 0.0});
     motion_.resize(deck0_.nodes.size());
     apply_failures();
@@ -210,7 +253,7 @@ bool MooringSystem::failures_pending() const {
 
 int MooringSystem::failure_node(int f) const {
     int n = static_cast<int>(deck0_.nodes.size());
-    for (int g = 0; g < f; ++g) n += failureState_[g].broken != 0.0 ? 1 : 0;
+    for (int g = 0; g < f; ++g) n += failureState_[g].broken != 0.0 && !releases_[g] ? 1 : 0;
     return n;
 }
 
@@ -219,7 +262,11 @@ void MooringSystem::apply_failures() {
     deck_.nodes = deck0_.nodes;
     for (size_t f = 0; f < failures_.size(); ++f) {
         if (failureState_[f].broken == 0.0) continue;
-        MooringNode node;  // no mass, volume or drag: one line's bare end, or the lines joined
+        if (const MooringFailure::End* e = released_end(static_cast<int>(f))) {  // the line's own bare far end
+            deck_.lines[e->line] = released_line(deck0_.lines[e->line], e->end == 0);
+            continue;
+        }
+        MooringNode node;  // no mass, volume or drag: the lines joined, or a line's bare end
         node.failure = failures_[f].id;
         node.point.id = failures_[f].point;
         const int n = static_cast<int>(deck_.nodes.size());
@@ -239,8 +286,26 @@ void MooringSystem::apply_failures() {
     }
 }
 
-void MooringSystem::break_failure(int f, double t) {
+bool MooringSystem::break_failure(int f, double t, std::string& error) {
     const MooringFailure& fail = failures_[f];
+    if (const MooringFailure::End* e = released_end(f)) {  // the line goes on by itself, its end bare
+        const double tension = failure_tension(f);
+        const MooringDeckLine& l = deck_.lines[e->line];
+        if (!lines_[e->line]->release(t, error)) {
+            error = "line failure " + std::to_string(fail.id) + " at t = " + std::to_string(t) + " s: mooring line " +
+                    std::to_string(l.id) + ": " + error;
+            return false;
+        }
+        failureState_[f] = FailureState{1.0, t, tension};
+        apply_failures();
+        char text[400];
+        std::snprintf(text, sizeof text, "line failure %d at t = %.9g s: line %d detached from point %d, tension there "
+                      "%.6g N (FailTime %.6g s, FailTen %.6g N); its end goes on bare, the line's own free end%s",
+                      fail.id, t, e->deckLine + 1, fail.point, tension, fail.time, fail.tension,
+                      e->end == 0 ? " (the line run from its anchor)" : "");
+        event_ += (event_.empty() ? "" : "; ") + std::string(text);
+        return true;
+    }
     // the new node starts where its ends stand and move (they share the point)
     const MooringFailure::End& first = fail.ends[0];
     const DrivenEndState& at = lines_[first.line]->driven_end(first.end == 1);
@@ -271,6 +336,7 @@ void MooringSystem::break_failure(int f, double t) {
                       fail.ends.size() > 1 ? "they go on joined" : "its end goes on bare");
     }
     event_ += (event_.empty() ? "" : "; ") + std::string(text);
+    return true;
 }
 
 bool MooringSystem::step_with_failures(double t, double h, const UCInputs& in, double& taken, std::string& error) {
@@ -295,7 +361,8 @@ bool MooringSystem::step_with_failures(double t, double h, const UCInputs& in, d
             const int i = static_cast<int>(f);
             const bool byTime = fail.time > 0.0 && fail.time <= t + done + eps;
             if (byTime || (fail.tension > 0.0 && failure_tension(i) >= fail.tension - failure_tolerance(i))) {
-                break_failure(i, byTime && fail.time >= t + done - eps ? fail.time : t + done);  // its time exactly
+                if (!break_failure(i, byTime && fail.time >= t + done - eps ? fail.time : t + done, error))  // its time exactly
+                    return false;
                 broke = true;
             }
         }
@@ -326,28 +393,15 @@ bool MooringSystem::step_with_failures(double t, double h, const UCInputs& in, d
         }
         // A threshold was passed within the piece: the time where the tension reaches it, by regula falsi
         // (Illinois) on the piece's length, each trial the piece taken anew from its start.
-        double a = 0.0, ga = g0, b = end - done, gb = g, tau = b;
-        int side = 0;
-        for (int it = 0; it < kLocateIterations && std::abs(g) > 1.0; ++it) {
-            const double span = b - a;
-            tau = std::clamp((a * gb - b * ga) / (gb - ga), a + 1e-3 * span, b - 1e-3 * span);
-            if (!restore_state(failureBuffer_.data(), failureBuffer_.size(), error) ||
-                !advance(t + done, tau, done, in, error))
+        double tau = end - done;
+        const bool located = locate_crossing(g0, end - done, g, kLocateIterations, [&](double length, double& trialG) {
+            if (!restore_state(failureBuffer_.data(), failureBuffer_.size(), error) || !advance(t + done, length, done, in, error))
                 return false;
             ++failureEvaluations_;
-            g = crossing();
-            if (g > 0.0) {
-                b = tau;
-                gb = g;
-                if (side > 0) ga *= 0.5;
-                side = 1;
-            } else {
-                a = tau;
-                ga = g;
-                if (side < 0) gb *= 0.5;
-                side = -1;
-            }
-        }
+            trialG = crossing();
+            return true;
+        }, tau, g);
+        if (!located) return false;
         if (std::abs(g) > 1.0) {
             char text[300];
             std::snprintf(text, sizeof text, "the break by tension within the step from t = %.9g s was located to "

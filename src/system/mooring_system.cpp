@@ -19,7 +19,19 @@ constexpr std::uint32_t kSystemMagic = 0x5543534D;  // "UCSM"
 // 4: the failures' states (FailureState) after the last inputs, the nodes of the broken ones with the others
 // 5: sized by the deck: the lines' state sizes after the header (as many as the system has lines), the
 //    outputs of the deck's lines beyond UC_MAX_LINES after the system's outputs
-constexpr std::uint32_t kSystemVersion = 5;
+// 6: a line's end that lets go alone is its own bare far end (the line's state says so), no free node
+constexpr std::uint32_t kSystemVersion = 6;
+
+// What the versions after `version` added, for the message that refuses an older state: " (version 4 added
+// ..., 5 ...)", or nothing for a state of a later version.
+std::string what_later_versions_added(std::uint32_t version) {
+    static const char* const added[] = {"4 added the line failures' state", "5 sized the state by the deck",
+                                        "6 made a broken line's bare end the line's own free end"};
+    std::string text;
+    for (std::uint32_t v = std::max<std::uint32_t>(version + 1, 4); v <= kSystemVersion; ++v)
+        text += std::string(text.empty() ? " (version " : ", ") + added[v - 4];
+    return text.empty() ? text : text + ")";
+}
 
 struct SystemHeader {
     std::uint32_t magic, version;
@@ -105,6 +117,9 @@ void set_mooring_line_outputs(UCMooringLine& out, double fairlead, double anchor
 void OneLineSystem::complete_outputs(UCOutputs& out) const {
     set_mooring_line_outputs(out.mooringLine[0], out.towTension, out.endTension, out,
                              line_strength(*this, 0, model().n_sections() - 1));
+    if (released() != 0) out.mooringLine[0].anchorTension = bare_end_force().norm();  // (as a system's broken line)
+    out.mooringLine[0].broken = released() != 0 ? 1.0 : 0.0;
+    out.mooringLine[0].breakTime = released() != 0 ? release_time() : 0.0;
 }
 
 MooringSystem::MooringSystem(const UCParams& base, const MooringDeck& deck)
@@ -133,6 +148,15 @@ bool MooringSystem::build(std::string& error) {
         }
         lines_.push_back(std::make_unique<CableSimulation>(p));
         if (currentGrid_) lines_.back()->set_current_grid(currentGrid_);
+        for (size_t f = 0; f < failures_.size(); ++f) {  // what the line becomes where its end lets go
+            const MooringFailure::End* e = released_end(static_cast<int>(f));
+            if (!e || e->line != static_cast<int>(k)) continue;
+            MooringDeck released = deck_;
+            released.lines[k] = released_line(deck_.lines[k], e->end == 0);
+            UCParams r;
+            if (!mooring_line_params(released, static_cast<int>(k), base_, r, error)) return false;
+            lines_.back()->prepare_release(r, e->end == 0);
+        }
         const CableModel& model = lines_.back()->model();
         std::vector<LineProfile::Segment> segments;
         double weight = 0.0;
@@ -309,7 +333,10 @@ MooringSystem::LineEnds MooringSystem::line_ends(int k, const UCInputs& in) cons
         return EndMotion{m.position, m.velocity, m.accelerationGiven ? m.acceleration : Vec3::Zero(),
                          m.accelerationGiven ? 1 : 0};
     };
-    return {drive(end_motion(l.fairlead, in)), drive(end_motion(l.far, in))};
+    LineEnds ends{drive(end_motion(l.fairlead, in)), drive(end_motion(l.far, in))};
+    // a line run from its anchor after its fairlead let go: its tow point held where the anchor held it
+    if (lines_[k]->released() == 2 && l.fairlead.kind == MooringEnd::Kind::Fixed) ends.tow.position = lines_[k]->tow_position();
+    return ends;
 }
 
 bool MooringSystem::check_inputs(const UCInputs& in, std::string& error) {
@@ -454,7 +481,9 @@ void MooringSystem::update_outputs() {
                 last = std::max(last, run.first + run.count - 1);
             }
             const double start = j == 0 ? o.towTension : lines_[k]->element_end_tension(first, false);
-            const double end = j + 1 == sections ? o.endTension : lines_[k]->element_end_tension(last, true);
+            // (a bare end after a break: the tension at it, the seabed's contact at its tip left out)
+            const double far = lines_[k]->released() != 0 ? lines_[k]->bare_end_force().norm() : o.endTension;
+            const double end = j + 1 == sections ? far : lines_[k]->element_end_tension(last, true);
             set_mooring_line_outputs(line_output(l.deckLines[j]), l.flipped[j] ? end : start,
                                      l.flipped[j] ? start : end, o, line_strength(*lines_[k], j, j));
         }
@@ -1373,7 +1402,7 @@ bool MooringSystem::restore_state(const void* buffer, size_t size, std::string& 
     if (header.version != kSystemVersion) {
         error = "saved state is a mooring system's state of format version " + std::to_string(header.version) +
                 ", this FMU reads version " + std::to_string(kSystemVersion) +
-                (header.version < kSystemVersion ? " (version 4 added the line failures' state, 5 sized the state by the deck)" : "") +
+                what_later_versions_added(header.version) +
                 ": it cannot be restored; initialize anew (or restore with the FMU that saved it)";
         return false;
     }

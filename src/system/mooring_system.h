@@ -56,12 +56,32 @@ void set_mooring_line_outputs(UCMooringLine& out, double fairlead, double anchor
 
 // One line given by its parameters, as the boundary sees it: a system of one line, whose line[1].* outputs
 // are its own (its outputs otherwise the line's), filled where the line makes its outputs.
+// With failure.line = 1 its far end (an anchor, a towed body, a driven end) lets go at failure.time or where the
+// far end's tension reaches failure.tension, whichever comes first, and the line goes on with a bare far end
+// (docs/line_failure.md, "One line"): the step that holds the break is taken in pieces that end at it, as a mooring
+// system's (src/system/failure.cpp).
 class OneLineSystem final : public CableSimulation {
 public:
-    using CableSimulation::CableSimulation;
+    explicit OneLineSystem(const UCParams& params);
+    // The failure.* parameters of one line: empty where they are accepted, else why not (one line).
+    static std::string check_failure(const UCParams& p);
+
+    using CableSimulation::step;
+    bool step(double t, double h, const UCInputs& in, std::string& error) override;
+    void set_stop_at_breaks(bool stop) override { stopAtBreaks_ = stop; }
+    std::string take_event() override;
+    // Trials of a step's piece that located the last step's break by tension.
+    int failure_evaluations() const { return failureEvaluations_; }
+    static constexpr int kLocateIterations = 40;  // as a mooring system's
 
 private:
     void complete_outputs(UCOutputs& out) const override;
+    bool breaks_ = false;  // failure.line = 1
+    double failTime_ = 0.0, failTension_ = 0.0;
+    bool stopAtBreaks_ = false;  // (a setting of the importer's, not of the state)
+    int failureEvaluations_ = 0;
+    std::string event_;
+    std::vector<unsigned char> buffer_;  // the state at a piece's start (a break by tension located)
 };
 
 // The motion of a free node (docs/systems_mooring.md, "Dynamics"): all of it that a step changes and the next
@@ -105,7 +125,12 @@ public:
     double time() const override { return lines_.empty() ? 0.0 : lines_[0]->time(); }
     // The system's outputs: the single-line outputs are line 1's, line[k].* each deck line's.
     const UCOutputs& outputs() const override { return outputs_; }
-    Vec3 tow_position() const override { return lines_[0]->tow_position(); }
+    // (line 1 run from its anchor after its fairlead let go: the fairlead is its bare far end)
+    Vec3 tow_position() const override {
+        const CableSimulation& l = *lines_[0];
+        return l.released() == 2 ? Vec3(l.outputs().endPosition[0], l.outputs().endPosition[1], l.outputs().endPosition[2])
+                                 : l.tow_position();
+    }
     // A coupled body's reference point (as its fairleads are extrapolated), a coupled point (the end of a
     // line that it holds).
     bool driven_position(int kind, int index, Vec3& p) const override;
@@ -311,8 +336,19 @@ private:
     // A communication step with failures pending: in pieces that end at each break (docs/line_failure.md).
     // taken: the step's length taken (h, or to a break within it where the step stops at breaks).
     bool step_with_failures(double t, double h, const UCInputs& in, double& taken, std::string& error);
-    // Failure f breaks now, at time t: its lines' ends go on a new free node that starts where they are.
-    void break_failure(int f, double t);
+    // Failure f breaks now, at time t: one line's end becomes the line's own bare far end (released_end), or the
+    // lines' ends go on a new free node that starts where they are. False (error) where the line cannot let go.
+    bool break_failure(int f, double t, std::string& error);
+    // The end of failure f that lets go as its line's own bare far end (the line built to release it:
+    // CableSimulation::prepare_release), or null where the failure's ends go on a free node (lines broken
+    // together, a break along a line, a line with a free far end broken at its fairlead).
+    const MooringFailure::End* released_end(int f) const;
+    // Line k as it goes on when its fairlead (flip) or its far end lets go: run from its far end, or with a
+    // free far end; the bare end has no point.
+    static MooringDeckLine released_line(const MooringDeckLine& l, bool flip);
+    // The free nodes with these failures' states: the deck's and one per broken failure that makes one.
+    size_t node_count(const std::vector<FailureState>& states) const;
+    std::vector<char> releases_;  // per failure: released_end's answer, decided once from the deck
     // The deck's lines and nodes as the failures' states make them (deck0_ with the broken failures' ends on
     // their nodes); motion_ must hold the nodes' motion in that order.
     void apply_failures();

@@ -123,7 +123,7 @@ TEST(LineFailureDeck, AMalformedRowIsRefusedNamingTheRow) {
     (void)p;
 }
 
-TEST(LineFailureDeck, TheFailureParametersAreCheckedAndTheOneLineModelRefusesThem) {
+TEST(LineFailureDeck, TheFailureParametersAreCheckedAndTheOneLineModelRefusesASecondLine) {
     UCParams p = system_parameters();
     p.failureLine = 2;
     uc::MooringDeck deck;
@@ -151,7 +151,7 @@ TEST(LineFailureDeck, TheFailureParametersAreCheckedAndTheOneLineModelRefusesThe
     char msg[512];
     UCCable* one = uc_create(&p, msg, sizeof msg);
     EXPECT_EQ(one, nullptr);
-    EXPECT_NE(std::string(msg).find("failure.line = 2: a line failure is supported in a mooring system"), std::string::npos) << msg;
+    EXPECT_NE(std::string(msg).find("failure.line = 2: one line (no deck of several lines) is line 1"), std::string::npos) << msg;
     uc_free(one);
 }
 
@@ -272,12 +272,13 @@ const double kElementWeight = kChainWeight * 835.35 / 10;
 // to the seabed: w (186 m), the fairlead 14 m below the surface over 200 m of water. The touchdown lies inside an
 // element, whose weight the seabed carries in part: half an element's weight is the comparison's accuracy.
 TEST(LineFailure, AnAnchorThatLetsGoLeavesTheLineHangingFromItsFairlead) {
-    const std::vector<double> T = anchor_lets_go(160.0, nullptr);
-    ASSERT_EQ(T.size(), 320u);
+    const std::vector<double> T = anchor_lets_go(240.0, nullptr);
+    ASSERT_EQ(T.size(), 480u);
     const double hanging = kChainWeight * (200.0 - 14.0);
-    std::printf("held platform: fairlead tension %.4g N at 140 s, %.4g N at 160 s; w (186 m) = %.4g N\n", T[279], T.back(),
-                hanging);
-    EXPECT_NEAR(T.back(), T[279], 0.01 * T.back()) << "the transient has died";
+    std::printf("held platform: fairlead tension %.4g N at 10 s, %.4g N at 60 s, %.4g N at 120 s, %.4g N at 140 s, %.4g N "
+                "at 160 s, %.4g N at 220 s, %.4g N at 240 s; w (186 m) = %.4g N\n", T[19], T[119], T[239], T[279], T[319],
+                T[439], T.back(), hanging);
+    EXPECT_NEAR(T.back(), T[439], 0.01 * T.back()) << "the transient has died";
     EXPECT_NEAR(T.back(), hanging, 0.5 * kElementWeight);
 }
 
@@ -450,7 +451,69 @@ TEST(LineFailure, StatesAcrossABreakRestoreBitForBitInAFreshInstance) {
     const std::uint32_t three = 3;
     std::memcpy(old.data() + sizeof(std::uint32_t), &three, sizeof three);
     EXPECT_FALSE(a.system->restore_state(old.data(), old.size(), error));
-    EXPECT_EQ(error.rfind("saved state is a mooring system's state of format version 3, this FMU reads version 5", 0), 0u) << error;
+    EXPECT_EQ(error.rfind("saved state is a mooring system's state of format version 3, this FMU reads version 6 (version 4 "
+                          "added the line failures' state, 5 sized the state by the deck, 6 made a broken line's bare end "
+                          "the line's own free end)", 0), 0u) << error;
+    // and one of version 4 (a broken line's bare end on a free node), saying why
+    const std::uint32_t four = 4;
+    std::memcpy(old.data() + sizeof(std::uint32_t), &four, sizeof four);
+    EXPECT_FALSE(a.system->restore_state(old.data(), old.size(), error));
+    EXPECT_EQ(error.rfind("saved state is a mooring system's state of format version 4, this FMU reads version 6 (version 5 "
+                          "sized the state by the deck, 6 made a broken line's bare end the line's own free end)", 0), 0u)
+        << error;
+    // and one of version 5 (sized by the deck, the bare end still on a free node)
+    const std::uint32_t five = 5;
+    std::memcpy(old.data() + sizeof(std::uint32_t), &five, sizeof five);
+    EXPECT_FALSE(a.system->restore_state(old.data(), old.size(), error));
+    EXPECT_EQ(error.rfind("saved state is a mooring system's state of format version 5, this FMU reads version 6 (version 6 "
+                          "made a broken line's bare end the line's own free end)", 0), 0u) << error;
+}
+
+// A line that breaks alone goes on by itself: its bare end is the line's own free far end, integrated inside the
+// line's own integrator (no free node, no coupled iteration), the line run from its anchor where its fairlead let
+// go, its far end let go where its anchor did. One integrator restart at the break.
+TEST(LineFailure, ALineThatBreaksAloneGoesOnWithItsOwnFreeEnd) {
+    for (const char* row : {"1  4  1  2.3  0\n", "1  1  1  2.3  0\n"}) {
+        const bool atFairlead = row[3] == '4';
+        Built b = build(spread(row));
+        uc::MooringSystem& s = *b.system;
+        std::string error;
+        ASSERT_TRUE(s.initialize(0.0, platform_at(0, 0, 0, 0), error)) << error;
+        const double T0 = s.outputs().mooringLine[0].fairleadTension;
+        const double A0 = s.outputs().mooringLine[0].anchorTension;
+        double t = 0.0;
+        const double h = 0.5;
+        std::string events;
+        FreePlatform held;
+        double stepsBefore = 0.0, stepsAfter = 0.0;
+        for (int k = 0; k < 12; ++k) {  // 6 s
+            ASSERT_TRUE(s.step(t, h, held.inputs(), error)) << error << " at t = " << t;
+            t += h;
+            events += s.take_event();
+            EXPECT_EQ(s.n_nodes(), 0) << "no free node at " << t;
+            EXPECT_EQ(s.line(0).released(), t < 2.3 ? 0 : atFairlead ? 2 : 1) << t;
+            if (t == 2.0) stepsBefore = s.line(0).outputs().nSteps;
+            if (t == 4.5) stepsAfter = s.line(0).outputs().nSteps;
+        }
+        EXPECT_NE(events.find("its end goes on bare, the line's own free end"), std::string::npos) << events;
+        const UCOutputs& o = s.outputs();
+        EXPECT_EQ(o.mooringLine[0].broken, 1.0);
+        EXPECT_EQ(o.mooringLine[0].breakTime, 2.3);
+        // the bare end carries nothing; the end still held carries the chain
+        // the bare end carries nothing (to the integrator's error in tension), the end still held the chain
+        const double tolerance = s.failure_tolerance(0);
+        if (atFairlead) {
+            EXPECT_LT(o.mooringLine[0].fairleadTension, tolerance);
+            EXPECT_GT(o.mooringLine[0].anchorTension, tolerance);
+        } else {
+            EXPECT_LT(o.mooringLine[0].anchorTension, tolerance);
+            EXPECT_GT(o.mooringLine[0].fairleadTension, 0.1 * T0);
+        }
+        (void)A0;
+        std::printf("%s: line 1's integrator took %.0f steps over the 2.5 s from 2 s (the break at 2.3 s); tensions at 6 s "
+                    "%.4g N at the fairlead, %.4g N at the anchor\n", atFairlead ? "fairlead" : "anchor",
+                    stepsAfter - stepsBefore, o.mooringLine[0].fairleadTension, o.mooringLine[0].anchorTension);
+    }
 }
 
 // The same across an anchor that lets go (line 1's far end, point 1).
@@ -665,7 +728,9 @@ TEST(LineFailure, ASystemToldToStopAtBreaksEndsTheStepAtTheBreak) {
     EXPECT_EQ(s.time(), 2.3);
     EXPECT_EQ(s.outputs().mooringLine[0].broken, 1.0);
     EXPECT_EQ(s.outputs().mooringLine[0].breakTime, 2.3);
-    EXPECT_GT(s.outputs().mooringLine[0].fairleadTension, 1e5) << "the state at the break: the line has not moved yet";
+    // the state at the break: the line has not moved yet (its anchor holds it as before), its bare end carries nothing
+    EXPECT_GT(s.outputs().mooringLine[0].anchorTension, 1e5) << "the state at the break: the line has not moved yet";
+    EXPECT_LT(s.outputs().mooringLine[0].fairleadTension, s.failure_tolerance(0));
     ASSERT_TRUE(s.step(2.3, 0.7, platform_at(0, 0, 0, 0), error)) << error;  // line 2 breaks at 3.0, the step's end
     EXPECT_NEAR(s.time(), 3.0, 1e-12) << "the step's end (to round-off), not earlier";
     EXPECT_EQ(s.outputs().mooringLine[1].broken, 1.0);

@@ -423,3 +423,23 @@ def test_an_fmi3_step_returns_early_at_a_line_failure_where_the_importer_allows_
     finally:
         plain.close()
         early.close()
+
+
+# One line whose far end lets go (docs/line_failure.md, "One line"): the same early return at its break.
+def test_an_fmi3_step_of_one_line_returns_early_where_its_far_end_lets_go(fmi3_file):
+    cable = Cable(fmi3_file, True, early=True)
+    try:
+        cable.set_parameters({"bottomEnd": 1, "anchor.x": 200.0, "anchor.z": -200.0, "failure.line": 1,
+                              "failure.time": 2.3})
+        cable.initialize({})
+        t = 0.0
+        for _ in range(4):
+            assert cable.fmu.doStep(t, 0.5)[2] is False
+            t += 0.5
+        _, _, back, last = cable.fmu.doStep(t, 0.5)
+        assert back is True and last == 2.3
+        assert _line_one(cable, "broken") == 1.0 and _line_one(cable, "breakTime") == 2.3
+        _, _, back, last = cable.fmu.doStep(last, 3.0 - last)
+        assert back is False and abs(last - 3.0) <= 1e-12
+    finally:
+        cable.close()

@@ -76,9 +76,11 @@ def _refusal(make_cable, parameters: dict) -> str:
     return "\n".join(text for status, _, text in c.messages if status == "ERROR")
 
 
-def test_a_failure_on_one_line_is_refused_at_the_start(make_cable):
-    log = _refusal(make_cable, {"lineFile": str(ms.DECKS / "chain.dat"), "failure.line": 1, "failure.time": 5.0})
-    assert "failure.line = 1: a line failure is supported in a mooring system" in log, log
+def test_a_failure_at_a_point_of_one_line_is_refused_at_the_start(make_cable):
+    # one line breaks at its far end (tests/python/test_one_line_failure.py); it has no deck points
+    log = _refusal(make_cable, {"lineFile": str(ms.DECKS / "chain.dat"), "failure.line": 1, "failure.point": 2,
+                                "failure.time": 5.0})
+    assert "failure.line = 1: failure.point = 2: one line has no deck points" in log, log
 
 
 def test_an_anchor_lets_go_at_its_time(make_cable):

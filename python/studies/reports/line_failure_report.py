@@ -72,7 +72,7 @@ def markdown(d: dict) -> str:
     out += ["",
             f"The front's centroid is t_a = t₁ − ∫ (T0 − T) dt / T0 over the release to t₁ = {v.CENTROID_UNTIL} L0/c "
             "(a step from T0 to 0 at t_a gives exactly t_a; a front the mesh disperses keeps its centroid where its "
-            "long waves, which travel at c, put it). It comes early by about 1.4 element transit times "
+            "long waves, which travel at c, put it). It comes early by about 1.5 element transit times "
             "(L0/(n c)) at every mesh: a first-order error in the element length, the anchor's element feeling the "
             "front when it enters the element, the released element unloading as a whole. The faster short waves "
             "of the element's dispersion reach the anchor earlier (the first 1 % change) and ring about the front "
