@@ -480,6 +480,62 @@ void MooringSystem::update_outputs() {
     stiffnessCurrent_ = false;  // body[k].stiffness: computed when read (update_stiffness)
 }
 
+namespace {
+
+// The tensions at the two ends of a line whose ends lie on one vertical, D apart (the catenary has no
+// answer there: LineProfile refuses "both ends on one vertical"), its segments from the upper end, under
+// water, without point loads: the elastic hanging line, T(s) = T0 + the weight below s. Where it would be
+// slack at its lower end, which rests on the seabed (`grounded`), the line hangs taut to the seabed and
+// the rest lies there without tension (T0 = 0); false where that does not apply (a buoyant segment, a
+// slack line in mid-water). upper and lower: the tensions at the two ends [N].
+bool vertical_line_tensions(const std::vector<LineProfile::Segment>& segments, double D, bool grounded,
+                            double& upper, double& lower) {
+    for (const LineProfile::Segment& s : segments)
+        if (!(s.weight >= 0.0) || !(s.EA > 0.0) || !(s.length > 0.0)) return false;
+    // the stretched length of the part hanging over the lowest `hanging` metres, at lower-end tension T0
+    auto stretched = [&](double hanging, double T0) {
+        double below = 0.0, weight = 0.0, length = 0.0;
+        for (auto s = segments.rbegin(); s != segments.rend() && below < hanging; ++s) {
+            const double l = std::min(s->length, hanging - below);
+            length += l + (T0 * l + weight * l + 0.5 * s->weight * l * l) / s->EA;
+            weight += s->weight * l;
+            below += l;
+        }
+        return length;
+    };
+    double L = 0.0, W = 0.0, compliance = 0.0;
+    for (const LineProfile::Segment& s : segments) {
+        L += s.length;
+        W += s.weight * s.length;
+        compliance += s.length / s.EA;
+    }
+    const double T0 = (D - stretched(L, 0.0)) / compliance;  // linear in T0
+    if (T0 >= 0.0) {
+        lower = T0;
+        upper = T0 + W;
+        return true;
+    }
+    if (!grounded || !(D > 0.0)) return false;
+    // slack: the hanging part's length h with stretched(h, 0) = D, by bisection (monotone in h)
+    double a = 0.0, b = L;
+    for (int i = 0; i < 200 && b - a > 1e-12 * L; ++i) {
+        const double h = 0.5 * (a + b);
+        (stretched(h, 0.0) < D ? a : b) = h;
+    }
+    const double h = 0.5 * (a + b);
+    double below = 0.0, weight = 0.0;
+    for (auto s = segments.rbegin(); s != segments.rend() && below < h; ++s) {
+        const double l = std::min(s->length, h - below);
+        weight += s->weight * l;
+        below += l;
+    }
+    lower = 0.0;
+    upper = weight;
+    return true;
+}
+
+}  // namespace
+
 bool MooringSystem::profile_end_forces(int k, const Vec3& top, const Vec3& far, Vec3& onTop, Vec3& onFar,
                                        std::string* why) const {
     const MooringDeckLine& l = deck_.lines[k];
@@ -497,13 +553,29 @@ bool MooringSystem::profile_end_forces(int k, const Vec3& top, const Vec3& far, 
         std::reverse(segments.begin(), segments.end());
         for (LineProfile::PointLoad& q : points) q.s = L - q.s;
     }
-    LineProfile profile;
     const Vec3& lower = topHigher ? far : top;
+    const Vec3& upper = topHigher ? top : far;
+    // both ends on one vertical, or within the central differences' reach of it (a slack line on the
+    // frictionless seabed has no catenary there): the hanging line's tensions, along its chord
+    auto vertical = [&] {
+        const Vec3 chord = upper - lower;
+        if (!(std::hypot(chord.x(), chord.y()) <= 1e-2 * chord.z()) || !points.empty() || upper.z() > 0.0) return false;
+        const double rest = lines_[k]->model().seabed_height(lower.x(), lower.y());
+        const bool grounded = p.enableSeabed != 0 && lower.z() <= rest + std::max(lines_[k]->model().line().diameter, 1e-3 * L);
+        double Tu = 0.0, Tl = 0.0;
+        if (!vertical_line_tensions(segments, chord.norm(), grounded, Tu, Tl)) return false;
+        const Vec3 t = chord.normalized();
+        onTop = topHigher ? Vec3(-Tu * t) : Vec3(Tl * t);
+        onFar = topHigher ? Vec3(Tl * t) : Vec3(-Tu * t);
+        return true;
+    };
+    if (std::hypot(upper.x() - lower.x(), upper.y() - lower.y()) <= 1e-9 * L && vertical()) return true;
+    LineProfile profile;
     profile.set_seabed_gradient(lines_[k]->model().seabed_gradient());
-    if (!profile.solve(topHigher ? top : far, lower, segments, points, p.enableSeabed != 0,
+    if (!profile.solve(upper, lower, segments, points, p.enableSeabed != 0,
                        lines_[k]->model().seabed_height(lower.x(), lower.y()),
                        std::max(lines_[k]->model().line().diameter, 1e-3 * L), why, 0.0))
-        return false;
+        return vertical();
     onTop = topHigher ? profile.top_force() : profile.bottom_force();
     onFar = topHigher ? profile.bottom_force() : profile.top_force();
     return true;

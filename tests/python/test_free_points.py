@@ -377,3 +377,25 @@ def test_a_refused_state_of_an_edited_deck_leaves_the_running_instance_as_it_was
             outputs.append(c.get_reals(names))
     assert np.isfinite(outputs[0]).all()
     assert np.array(outputs[:2]).tobytes() == np.array(outputs[2:]).tobytes()
+
+
+def test_a_buoy_on_a_chain_straight_above_its_anchor_rises_until_the_chain_is_taut(fmu_file):
+    """A free body on a chain whose ends lie on one vertical, the chain 2 m longer than the deck's distance
+    (its excess piled slack at the anchor: a start the line itself refuses): the free points' statics take
+    the hanging line's tensions there (the catenary has none for a vertical line), so the buoy rises until
+    the chain is taut. Closed form: the fairlead carries the buoy's net buoyancy, the anchor that less the
+    chain's weight in water, the buoy stands 50 m plus the chain's stretch under the mean tension above
+    the anchor; MoorPy's equilibrium of the same deck (which also has a chain from an anchor to its Vessel
+    point, started where the deck places the point) agrees."""
+    from studies.comparisons import public_decks as pd
+
+    path = fp.DECKS / "buoy_vertical_chain.dat"
+    result = pd.compare(fmu_file, path)
+    assert result["status"] == "ok", result.get("reason")
+    assert result["moorpy"] is None and result["worst"] < 1e-3, result["lines"]
+    g, rho = 9.80665, 1025.0
+    net = (rho * 15.0 - 3000.0) * g
+    chain = (60.0 - rho * np.pi / 4 * 0.1**2) * g * 50.0
+    (_, fairlead, _, anchor) = result["lines"][1]
+    assert fairlead == pytest.approx(net, rel=1e-6)
+    assert anchor == pytest.approx(net - chain, rel=1e-6)
