@@ -745,7 +745,12 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
                  deck_.nodes[n].point.mass * lines_[0]->model().fluid().gravity;
     const double maxStep = 0.25 * shortest;  // a Newton step moves a node by at most this [m]
     Eigen::MatrixXd J(m, m);
-    bool haveJacobian = false;
+    bool haveJacobian = false, fresh = false;  // fresh: J is that of the present x
+    // Levenberg-Marquardt's damping of the lines' phase, relative to each unknown's own stiffness (where no
+    // Newton step lowers |r|: a leg at the kink between slack and taut), and the Jacobian taken again where
+    // the chord method's old one no longer lowers |r| by half a step
+    double damping = 0.0;
+    constexpr int kStaticIterations = 200;
     nodeIterations_ = 0;
     // Newton's method with a backtracking line search on |r|; the Jacobian by central differences of
     // the residual (kept through the iterations with the lines' own static solutions, where each
@@ -753,10 +758,10 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
     // profiles' Jacobian being that of the lines' solutions within their discretization).
     auto newton = [&](bool profile, double tolerance, std::string& why) -> bool {
         if (!node_residual(x, in, profile, r, why)) return false;
-        for (int it = 0; it < 60; ++it, ++nodeIterations_) {
+        for (int it = 0; it < kStaticIterations; ++it, ++nodeIterations_) {
             if (r.lpNorm<Eigen::Infinity>() <= tolerance) return true;
             if (profile || !haveJacobian) {
-                const double d = 1e-3;  // [m]: the profiles are smooth; truncation ~d^2
+                const double d = profile ? 1e-3 : 1e-5;  // [m]: the profiles are smooth; truncation ~d^2
                 Eigen::VectorXd rp(m), rm(m);
                 for (int j = 0; j < m; ++j) {
                     xt = x;
@@ -767,8 +772,11 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
                     J.col(j) = (rp - rm) / (2.0 * d);
                 }
                 haveJacobian = true;
+                fresh = true;
             }
-            Eigen::VectorXd dx = -J.fullPivLu().solve(r);
+            Eigen::MatrixXd Jd = J;
+            for (int j = 0; j < m; ++j) Jd(j, j) -= damping * std::abs(J(j, j));
+            Eigen::VectorXd dx = -Jd.fullPivLu().solve(r);
             if (!dx.allFinite()) {
                 why = "the free points' stiffness is singular";
                 return false;
@@ -789,18 +797,31 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
                 std::string trial;
                 accepted = node_residual(xt, in, profile, rt, trial) && rt.norm() < (1.0 - 1e-4 * a) * r.norm();
             }
-            if (!accepted && !profile && dx.lpNorm<Eigen::Infinity>() < 10.0 * kNodeTolerance &&
+            if (!accepted && !profile && !fresh) {
+                haveJacobian = false;
+                continue;
+            }
+            if (!accepted && !profile && damping < 1e6) {
+                damping = std::max(4.0 * damping, 1e-3);
+                continue;
+            }
+            if (!accepted && !profile && damping == 0.0 && dx.lpNorm<Eigen::Infinity>() < 10.0 * kNodeTolerance &&
                 r.lpNorm<Eigen::Infinity>() < 1e-4 * scale)
                 return true;  // at the level of the lines' static solutions' own tolerance
             if (!accepted) {
                 why = "the line search found no smaller residual (" + std::to_string(r.norm()) + " N)";
                 return false;
             }
+            const double reduction = rt.norm() / r.norm();
             x = xt;
             r = rt;
-            if (!profile && (a * dx).lpNorm<Eigen::Infinity>() < kNodeTolerance) return true;
+            fresh = profile;
+            if (!profile && damping == 0.0 && (a * dx).lpNorm<Eigen::Infinity>() < kNodeTolerance) return true;
+            damping = damping < 1e-3 ? 0.0 : 0.25 * damping;
+            if (!profile && reduction > 0.5) haveJacobian = false;
         }
-        why = "no convergence in 60 iterations (residual " + std::to_string(r.lpNorm<Eigen::Infinity>()) + " N)";
+        why = "no convergence in " + std::to_string(kStaticIterations) + " iterations (residual " +
+              std::to_string(r.lpNorm<Eigen::Infinity>()) + " N)";
         return false;
     };
     std::string why;
