@@ -761,7 +761,9 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
         for (int it = 0; it < kStaticIterations; ++it, ++nodeIterations_) {
             if (r.lpNorm<Eigen::Infinity>() <= tolerance) return true;
             if (profile || !haveJacobian) {
-                const double d = profile ? 1e-3 : 1e-5;  // [m]: the profiles are smooth; truncation ~d^2
+                // [m]: the profiles are smooth (truncation ~d^2); the lines' solutions get 10 um, within the
+                // slack law's ramp of a stiff tether (1e-5 strain), which 1 mm steps straddle
+                const double d = profile ? 1e-3 : 1e-5;
                 Eigen::VectorXd rp(m), rm(m);
                 for (int j = 0; j < m; ++j) {
                     xt = x;
