@@ -541,6 +541,62 @@ void MooringSystem::update_outputs() {
     stiffnessCurrent_ = false;  // body[k].stiffness: computed when read (update_stiffness)
 }
 
+namespace {
+
+// The tensions at the two ends of a line whose ends lie on one vertical, D apart (the catenary has no
+// answer there: LineProfile refuses "both ends on one vertical"), its segments from the upper end, under
+// water, without point loads: the elastic hanging line, T(s) = T0 + the weight below s. Where it would be
+// slack at its lower end, which rests on the seabed (`grounded`), the line hangs taut to the seabed and
+// the rest lies there without tension (T0 = 0); false where that does not apply (a buoyant segment, a
+// slack line in mid-water). upper and lower: the tensions at the two ends [N].
+bool vertical_line_tensions(const std::vector<LineProfile::Segment>& segments, double D, bool grounded,
+                            double& upper, double& lower) {
+    for (const LineProfile::Segment& s : segments)
+        if (!(s.weight >= 0.0) || !(s.EA > 0.0) || !(s.length > 0.0)) return false;
+    // the stretched length of the part hanging over the lowest `hanging` metres, at lower-end tension T0
+    auto stretched = [&](double hanging, double T0) {
+        double below = 0.0, weight = 0.0, length = 0.0;
+        for (auto s = segments.rbegin(); s != segments.rend() && below < hanging; ++s) {
+            const double l = std::min(s->length, hanging - below);
+            length += l + (T0 * l + weight * l + 0.5 * s->weight * l * l) / s->EA;
+            weight += s->weight * l;
+            below += l;
+        }
+        return length;
+    };
+    double L = 0.0, W = 0.0, compliance = 0.0;
+    for (const LineProfile::Segment& s : segments) {
+        L += s.length;
+        W += s.weight * s.length;
+        compliance += s.length / s.EA;
+    }
+    const double T0 = (D - stretched(L, 0.0)) / compliance;  // linear in T0
+    if (T0 >= 0.0) {
+        lower = T0;
+        upper = T0 + W;
+        return true;
+    }
+    if (!grounded || !(D > 0.0)) return false;
+    // slack: the hanging part's length h with stretched(h, 0) = D, by bisection (monotone in h)
+    double a = 0.0, b = L;
+    for (int i = 0; i < 200 && b - a > 1e-12 * L; ++i) {
+        const double h = 0.5 * (a + b);
+        (stretched(h, 0.0) < D ? a : b) = h;
+    }
+    const double h = 0.5 * (a + b);
+    double below = 0.0, weight = 0.0;
+    for (auto s = segments.rbegin(); s != segments.rend() && below < h; ++s) {
+        const double l = std::min(s->length, h - below);
+        weight += s->weight * l;
+        below += l;
+    }
+    lower = 0.0;
+    upper = weight;
+    return true;
+}
+
+}  // namespace
+
 bool MooringSystem::profile_end_forces(int k, const Vec3& top, const Vec3& far, Vec3& onTop, Vec3& onFar,
                                        std::string* why) const {
     const MooringDeckLine& l = deck_.lines[k];
@@ -558,13 +614,29 @@ bool MooringSystem::profile_end_forces(int k, const Vec3& top, const Vec3& far, 
         std::reverse(segments.begin(), segments.end());
         for (LineProfile::PointLoad& q : points) q.s = L - q.s;
     }
-    LineProfile profile;
     const Vec3& lower = topHigher ? far : top;
+    const Vec3& upper = topHigher ? top : far;
+    // both ends on one vertical, or within the central differences' reach of it (a slack line on the
+    // frictionless seabed has no catenary there): the hanging line's tensions, along its chord
+    auto vertical = [&] {
+        const Vec3 chord = upper - lower;
+        if (!(std::hypot(chord.x(), chord.y()) <= 1e-2 * chord.z()) || !points.empty() || upper.z() > 0.0) return false;
+        const double rest = lines_[k]->model().seabed_height(lower.x(), lower.y());
+        const bool grounded = p.enableSeabed != 0 && lower.z() <= rest + std::max(lines_[k]->model().line().diameter, 1e-3 * L);
+        double Tu = 0.0, Tl = 0.0;
+        if (!vertical_line_tensions(segments, chord.norm(), grounded, Tu, Tl)) return false;
+        const Vec3 t = chord.normalized();
+        onTop = topHigher ? Vec3(-Tu * t) : Vec3(Tl * t);
+        onFar = topHigher ? Vec3(Tl * t) : Vec3(-Tu * t);
+        return true;
+    };
+    if (std::hypot(upper.x() - lower.x(), upper.y() - lower.y()) <= 1e-9 * L && vertical()) return true;
+    LineProfile profile;
     profile.set_seabed_gradient(lines_[k]->model().seabed_gradient());
-    if (!profile.solve(topHigher ? top : far, lower, segments, points, p.enableSeabed != 0,
+    if (!profile.solve(upper, lower, segments, points, p.enableSeabed != 0,
                        lines_[k]->model().seabed_height(lower.x(), lower.y()),
                        std::max(lines_[k]->model().line().diameter, 1e-3 * L), why, 0.0))
-        return false;
+        return vertical();
     onTop = topHigher ? profile.top_force() : profile.bottom_force();
     onFar = topHigher ? profile.bottom_force() : profile.top_force();
     return true;
@@ -799,7 +871,12 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
                  deck_.nodes[n].point.mass * lines_[0]->model().fluid().gravity;
     const double maxStep = 0.25 * shortest;  // a Newton step moves a node by at most this [m]
     Eigen::MatrixXd J(m, m);
-    bool haveJacobian = false;
+    bool haveJacobian = false, fresh = false;  // fresh: J is that of the present x
+    // Levenberg-Marquardt's damping of the lines' phase, relative to each unknown's own stiffness (where no
+    // Newton step lowers |r|: a leg at the kink between slack and taut), and the Jacobian taken again where
+    // the chord method's old one no longer lowers |r| by half a step
+    double damping = 0.0;
+    constexpr int kStaticIterations = 200;
     nodeIterations_ = 0;
     // Newton's method with a backtracking line search on |r|; the Jacobian by central differences of
     // the residual (kept through the iterations with the lines' own static solutions, where each
@@ -807,10 +884,12 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
     // profiles' Jacobian being that of the lines' solutions within their discretization).
     auto newton = [&](bool profile, double tolerance, std::string& why) -> bool {
         if (!node_residual(x, in, profile, r, why)) return false;
-        for (int it = 0; it < 60; ++it, ++nodeIterations_) {
+        for (int it = 0; it < kStaticIterations; ++it, ++nodeIterations_) {
             if (r.lpNorm<Eigen::Infinity>() <= tolerance) return true;
             if (profile || !haveJacobian) {
-                const double d = 1e-3;  // [m]: the profiles are smooth; truncation ~d^2
+                // [m]: the profiles are smooth (truncation ~d^2); the lines' solutions get 10 um, within the
+                // slack law's ramp of a stiff tether (1e-5 strain), which 1 mm steps straddle
+                const double d = profile ? 1e-3 : 1e-5;
                 Eigen::VectorXd rp(m), rm(m);
                 for (int j = 0; j < m; ++j) {
                     xt = x;
@@ -821,10 +900,13 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
                     J.col(j) = (rp - rm) / (2.0 * d);
                 }
                 haveJacobian = true;
+                fresh = true;
             }
+            Eigen::MatrixXd Jd = J;
+            for (int j = 0; j < m; ++j) Jd(j, j) -= damping * std::abs(J(j, j));
             // (a pinned body hanging still has no stiffness about its vertical axis: the least-norm step there)
-            Eigen::VectorXd dx = pinned ? Eigen::VectorXd(-J.completeOrthogonalDecomposition().solve(r))
-                                        : Eigen::VectorXd(-J.fullPivLu().solve(r));
+            Eigen::VectorXd dx = pinned ? Eigen::VectorXd(-Jd.completeOrthogonalDecomposition().solve(r))
+                                        : Eigen::VectorXd(-Jd.fullPivLu().solve(r));
             if (!dx.allFinite()) {
                 why = "the free points' stiffness is singular";
                 return false;
@@ -849,18 +931,31 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
                 std::string trial;
                 accepted = node_residual(xt, in, profile, rt, trial) && rt.norm() < (1.0 - 1e-4 * a) * r.norm();
             }
-            if (!accepted && !profile && dx.lpNorm<Eigen::Infinity>() < 10.0 * kNodeTolerance &&
+            if (!accepted && !profile && !fresh) {
+                haveJacobian = false;
+                continue;
+            }
+            if (!accepted && !profile && damping < 1e6) {
+                damping = std::max(4.0 * damping, 1e-3);
+                continue;
+            }
+            if (!accepted && !profile && damping == 0.0 && dx.lpNorm<Eigen::Infinity>() < 10.0 * kNodeTolerance &&
                 r.lpNorm<Eigen::Infinity>() < 1e-4 * scale)
                 return true;  // at the level of the lines' static solutions' own tolerance
             if (!accepted) {
                 why = "the line search found no smaller residual (" + std::to_string(r.norm()) + " N)";
                 return false;
             }
+            const double reduction = rt.norm() / r.norm();
             x = xt;
             r = rt;
-            if (!profile && (a * dx).lpNorm<Eigen::Infinity>() < kNodeTolerance) return true;
+            fresh = profile;
+            if (!profile && damping == 0.0 && (a * dx).lpNorm<Eigen::Infinity>() < kNodeTolerance) return true;
+            damping = damping < 1e-3 ? 0.0 : 0.25 * damping;
+            if (!profile && reduction > 0.5) haveJacobian = false;
         }
-        why = "no convergence in 60 iterations (residual " + std::to_string(r.lpNorm<Eigen::Infinity>()) + " N)";
+        why = "no convergence in " + std::to_string(kStaticIterations) + " iterations (residual " +
+              std::to_string(r.lpNorm<Eigen::Infinity>()) + " N)";
         return false;
     };
     std::string why;

@@ -377,3 +377,90 @@ def test_a_refused_state_of_an_edited_deck_leaves_the_running_instance_as_it_was
             outputs.append(c.get_reals(names))
     assert np.isfinite(outputs[0]).all()
     assert np.array(outputs[:2]).tobytes() == np.array(outputs[2:]).tobytes()
+
+
+def test_a_buoy_on_a_chain_straight_above_its_anchor_rises_until_the_chain_is_taut(fmu_file):
+    """A free body on a chain whose ends lie on one vertical, the chain 2 m longer than the deck's distance
+    (its excess piled slack at the anchor: a start the line itself refuses): the free points' statics take
+    the hanging line's tensions there (the catenary has none for a vertical line), so the buoy rises until
+    the chain is taut. Closed form: the fairlead carries the buoy's net buoyancy, the anchor that less the
+    chain's weight in water, the buoy stands 50 m plus the chain's stretch under the mean tension above
+    the anchor; MoorPy's equilibrium of the same deck (which also has a chain from an anchor to its Vessel
+    point, started where the deck places the point) agrees."""
+    from studies.comparisons import public_decks as pd
+
+    path = fp.DECKS / "buoy_vertical_chain.dat"
+    result = pd.compare(fmu_file, path)
+    assert result["status"] == "ok", result.get("reason")
+    assert result["moorpy"] is None and result["worst"] < 1e-3, result["lines"]
+    g, rho = 9.80665, 1025.0
+    net = (rho * 15.0 - 3000.0) * g
+    chain = (60.0 - rho * np.pi / 4 * 0.1**2) * g * 50.0
+    (_, fairlead, _, anchor) = result["lines"][1]
+    assert fairlead == pytest.approx(net, rel=1e-6)
+    assert anchor == pytest.approx(net - chain, rel=1e-6)
+
+
+_LAZY_WAVE = """lazy wave of the riser deck from its lower end, held where the FMU's body puts it
+------------------------- LINE TYPES --------------------------------------------------
+LineType  Diam    MassDenInAir    EA       BA/-zeta    EI    Can   Cat  Cdn   Cdt
+(-)       (m)       (kg/m)        (N)      (Pa-s/-)  (n-m^2) (-)   (-)  (-)   (-)
+cable     0.116      25         362e6      -1.0      38e3    1.0   0.0  1.1   0.008
+bouyancy  0.361      59         362e6      -1.0      38e3    1.0  0.469 2.617 0.345
+----------------------- POINTS ----------------------------------------------
+Node      Type      X        Y         Z        M        V         CdA   CA
+(-)       (-)      (m)      (m)       (m)      (kg)     (m^3)     (m^2)  (-)
+1         Fixed    {x:.9f}     0      {z:.9f}      0        0          0     0
+2         Free     375.0     0      -250.0      0        0          0     0
+3         Free     290.0     0      -215.0      0        0          0     0
+4         Vessel   0.0       0       -63.6       0        0          0     0
+-------------------------- LINES -------------------------------------------------
+Line     LineType NodeA     NodeB  UnstrLen   NumSegs     Flags/Outputs
+(-)      (-)       (-)       (-)    (m)         (-)          (-)
+1        cable       1       2    110.0       11           -
+2        bouyancy    2       3     80.0        8           -
+3        cable       3       4    340.0       34           -
+-------------------------- SOLVER OPTIONS---------------------------------------------------
+320        WtrDpth      - water depth
+--------------------------- need this line -------------------------------------------------
+"""
+
+
+@pytest.mark.slow  # about 2 min on a loaded machine: the free body's Newton steps with the lines' solutions
+def test_a_lazy_wave_riser_on_a_tethered_free_body_finds_its_equilibrium(fmu_file, tmp_path):
+    """MoorDyn's riser deck: a free body 7 m above the seabed on a stiff tether (EA 362 MN, one element) to
+    an anchor below it, held by a heavy cable to a second anchor and pulled by a lazy-wave riser (a buoyant
+    section between two zero-length free rods) from a hang-off 63.6 m under water. At the deck's positions
+    the tether sits exactly at its length (at the kink between slack and taut, 50 MN/m taut) and the free
+    points' Newton steps find no smaller residual; damped steps with the Jacobian taken again find the
+    equilibrium: the riser draws the body 1.6 m towards the hang-off, the cable to the anchor taut, the
+    tether taut. The riser's tensions are those of MoorPy's statics of the lazy wave alone with its lower end
+    held where the FMU's body puts it (MoorPy cannot read the whole deck)."""
+    from studies.comparisons import public_decks as pd
+    from studies.peers import moorpy
+    from ucable.fmu import CableFMU
+
+    path = fp.DECKS / "md_tests_Mooring_riser_riser_ic1.txt"
+    given = pd.parameters(path, {}, 0.116)
+    inputs = {f"point[{k}].{c}": v for k, xyz in pd.coupled_points(path).items() for c, v in zip("xyz", xyz)}
+    c = CableFMU(fmu_file, parameters=given)
+    try:
+        c.initialize(inputs=inputs)
+        tensions = [(c.get(f"line[{k}].fairleadTension"), c.get(f"line[{k}].anchorTension")) for k in range(1, 6)]
+        x, z, pitch = (c.get(f"body[1].pose.{n}") for n in ("x", "z", "pitch"))
+    finally:
+        c.free()
+    assert 449.0 < x < 452.0 and -314.0 < z < -312.0, (x, z)
+    # the riser's lower end: rod 1's end B, 0.1 m behind the body's reference point along its x axis
+    deck = tmp_path / "lazy_wave.txt"
+    deck.write_text(_LAZY_WAVE.format(x=x - 0.1 * np.cos(pitch), z=z + 0.1 * np.sin(pitch)))
+    with moorpy.silenced():
+        s = moorpy.system(deck, rho=1025.0, g=9.80665)
+        s.depth = 320.0
+        s.initialize()
+        assert s.solveEquilibrium(tol=1e-8, maxIter=5000) is not False
+    ref = [(ln.TA, ln.TB) for ln in s.lineList]  # from the body's end up
+    ours = [(tensions[2][1], tensions[2][0]), (tensions[3][1], tensions[3][0]), (tensions[4][1], tensions[4][0])]
+    for (ra, rb), (oa, ob) in zip(ref, ours):
+        assert oa == pytest.approx(ra, rel=5e-3) and ob == pytest.approx(rb, rel=5e-3), (ours, ref)
+    assert tensions[0][0] > 0.0 and tensions[1][0] > 10e3  # the tether and the cable to the anchor taut

@@ -102,6 +102,28 @@ def tow_point(s):
     return max(fixed, key=lambda p: (float(p.r[2]), at_b(p)))
 
 
+def coupled_points(path: Path) -> dict:
+    """The deck's Coupled (Vessel) points as it places them, read from its POINTS table (MoorDyn v2's
+    `POINTS`, v1's `CONNECTION` or `NODE` tables): {ID: (x, y, z)}. Read from the file itself, not through
+    MoorPy, which fails on some decks the FMU reads (a body's `CdA` of two values)."""
+    points, in_points = {}, False
+    for line in path.read_text(errors="replace").splitlines():
+        words = line.split()
+        if line.lstrip().startswith("---"):
+            upper = line.upper()
+            in_points = any(k in upper for k in ("POINT", "CONNECTION", "NODE"))
+            continue
+        if not in_points or len(words) < 5:
+            continue
+        try:
+            number, xyz = int(words[0]), tuple(float(v) for v in words[2:5])
+        except ValueError:
+            continue  # a header row
+        if words[1].lower() in ("vessel", "coupled", "cpld"):
+            points[number] = xyz
+    return points
+
+
 def parameters(path: Path, options: dict, diameter: float) -> dict:
     return {"lineFile": str(path), "enableSeabed": True,
             "seabedStiffness": float(options.get("kbot", 3.0e6)) * diameter,
@@ -152,6 +174,9 @@ def load(fmu, path: Path, s=None, options=None, given=None) -> dict:
         tow = tow_point(s) if not s.bodyList else None
         if tow is not None:
             inputs.update({f"tow.{c}": float(v) for c, v in zip("xyz", tow.r)})
+    # a system's Coupled points where the deck puts them (the inputs' default is the origin)
+    for k, xyz in coupled_points(path).items():
+        inputs.update({f"point[{k}].{c}": v for c, v in zip("xyz", xyz)})
     c = CableFMU(fmu, parameters=given if given is not None else parameters(path, options, diameter),
                  logging_on=True)
     warned = lambda: [text for status, _, text in c.messages if status == "WARNING"]  # noqa: E731
