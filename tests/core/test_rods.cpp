@@ -401,11 +401,13 @@ TEST(Rods, APinnedBodyAndAPinnedRodTurnAboutTheirPinsWithTheirRodsLoadsAboutIt) 
     EXPECT_FALSE(uc::read_mooring_deck(edited(kPinned, "Body2Pinned", "CoupledPinned"), 0, deck, error));
     EXPECT_NE(error.find("rod 2 is coupled and pinned ('CoupledPinned'"), std::string::npos) << error;
     // a pin on a coupled body beyond the body[k] inputs
-    const std::string five = edited(edited(kPinned, "0.000e+00  0.00     0.00  0.00\n---------------------- RODS",
-                                           "0.000e+00  0.00     0.00  0.00\n3 Coupled 0 0 -30 0 0 0\n4 Coupled 0 0 -30 0 0 0\n"
-                                           "5 Coupled 0 0 -30 0 0 0\n---------------------- RODS"),
-                                    "Body2Pinned", "Body5Pinned");
-    EXPECT_FALSE(uc::read_mooring_deck(five, 0, deck, error));
-    EXPECT_NE(error.find("it is pinned to coupled body 5: the bodies' inputs body[k].* go up to k = 4"),
+    std::string bodies;
+    for (int k = 3; k <= UC_MAX_BODIES + 1; ++k) bodies += std::to_string(k) + " Coupled 0 0 -30 0 0 0\n";
+    const std::string beyond = edited(edited(kPinned, "0.000e+00  0.00     0.00  0.00\n---------------------- RODS",
+                                             "0.000e+00  0.00     0.00  0.00\n" + bodies + "---------------------- RODS"),
+                                      "Body2Pinned", "Body" + std::to_string(UC_MAX_BODIES + 1) + "Pinned");
+    EXPECT_FALSE(uc::read_mooring_deck(beyond, 0, deck, error));
+    EXPECT_NE(error.find("it is pinned to coupled body " + std::to_string(UC_MAX_BODIES + 1) +
+                         ": the bodies' inputs body[k].* go up to k = " + std::to_string(UC_MAX_BODIES)),
               std::string::npos) << error;
 }

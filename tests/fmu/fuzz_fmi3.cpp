@@ -85,6 +85,7 @@ namespace {
     X(EnterEventMode, fmi3Status, (fmi3Instance))                                                              \
     X(EnterStepMode, fmi3Status, (fmi3Instance))                                                               \
     X(EnterConfigurationMode, fmi3Status, (fmi3Instance))                                                      \
+    X(ExitConfigurationMode, fmi3Status, (fmi3Instance))                                                       \
     X(GetFloat32, fmi3Status, (fmi3Instance, const fmi3ValueReference*, size_t, fmi3Float32*, size_t))         \
     X(SetInt64, fmi3Status, (fmi3Instance, const fmi3ValueReference*, size_t, const fmi3Int64*, size_t))       \
     X(GetUInt8, fmi3Status, (fmi3Instance, const fmi3ValueReference*, size_t, fmi3UInt8*, size_t))             \
@@ -983,7 +984,20 @@ private:
         switch (which) {
             case 0: st = api().EnterEventMode(s.c); break;
             case 1: st = api().EnterStepMode(s.c); break;
-            case 2: st = api().EnterConfigurationMode(s.c); break;
+            case 2: {  // provided where the structural parameters are set: legal in the instantiated state only
+                const bool legal = s.phase == Phase::Instantiated;
+                st = api().EnterConfigurationMode(s.c);
+                if (!legal && s.phase != Phase::Unknown) break;  // a wrong call: checked below
+                after(s, kNames[which], st, OnError::Unchanged);
+                if (legal && st != fmi3OK) violation("fmi3EnterConfigurationMode refused in the instantiated state", s);
+                if (st == fmi3OK) {
+                    trace("fmi3ExitConfigurationMode");
+                    const fmi3Status out = api().ExitConfigurationMode(s.c);
+                    after(s, "fmi3ExitConfigurationMode", out, OnError::ErrorState);
+                    if (out != fmi3OK) violation("fmi3ExitConfigurationMode refused after fmi3EnterConfigurationMode", s);
+                }
+                return;
+            }
             case 3: st = api().GetFloat32(s.c, vr, 2, f, 2); break;
             case 4: st = api().SetInt64(s.c, vr, 2, i64, 2); break;
             case 5: st = api().GetUInt8(s.c, vr, 2, u8, 2); break;
