@@ -90,16 +90,21 @@ def test_a_deck_with_currents_2_reads_its_file_beside_it_and_warns_once_past_the
 
 
 def test_saved_states_hold_no_data_and_restore_where_the_file_is(fmu_file, tmp_path):
-    """The data are parameters outside the saved state: a state is as large with them as without, a
+    """The data are parameters outside the saved state: a state is as large with 4920 values as with 4 (to
+    1 % of the data's size), a
     restore into a new instance continues bit for bit (the file read again), and without the file the
     restore is refused naming currents.file."""
     data = tmp_path / "c.txt"
     data.write_text(dynamic_profile(list(np.linspace(-200.0, 0.0, 41)), list(np.arange(0.0, 60.0, 0.5)),
                                     lambda z, t: 0.3 + 0.002 * z + 0.2 * np.sin(0.3 * t)))
+    # the same kind of current from four values: the serialized state stores runs of zeros compactly, so its
+    # size depends on what is zero in it; a current of the same kind leaves the same entries zero
+    small = tmp_path / "small.txt"
+    small.write_text(dynamic_profile([-200.0, 0.0], [0.0, 59.5], lambda z, t: 0.3 + 0.002 * z + 0.2 * np.sin(0.3 * t)))
     base = {"length": 40.0, "nElements": 8}
     with_data = {**base, "currents.mode": 2, "currents.file": str(data)}
     a = CableFMU(fmu_file, parameters=with_data)
-    plain = CableFMU(fmu_file, parameters=base)
+    plain = CableFMU(fmu_file, parameters={**base, "currents.mode": 2, "currents.file": str(small)})
     fresh = CableFMU(fmu_file, parameters=with_data, logging_on=True)
     try:
         a.initialize()
@@ -108,7 +113,9 @@ def test_saved_states_hold_no_data_and_restore_where_the_file_is(fmu_file, tmp_p
         run(a, 4, 0.5)
         run(plain, 4, 0.5)
         saved = a.serialize_state(a.get_state())
-        assert len(saved) == len(plain.serialize_state(plain.get_state()))  # 4920 values of data not in it
+        # 4920 values of data against 4: in the state they would add (4920 - 4) x 8 bytes; the run-length
+        # coding of zeros moves the sizes by a few words
+        assert abs(len(saved) - len(plain.serialize_state(plain.get_state()))) < 0.01 * (4920 - 4) * 8
         expected = run(a, 6, 0.5, t0=2.0)
         fresh.set_state(fresh.deserialize_state(saved))
         assert run(fresh, 6, 0.5, t0=2.0) == expected  # bit for bit

@@ -88,6 +88,8 @@ NO_OUT_OF_RANGE_VALUE = {
                 "at initialization (tests/python/test_line_file.py)",
     "waves.file": "String: any path is admissible; a file that cannot be read, a refused row or set without "
                   "waves.mode 3 is an error at initialization (tests/python/test_wave_components.py)",
+    "currents.file": "String: any path is admissible; a file that cannot be read or refused data with "
+                     "currents.mode 2 or 5 is an error at initialization (tests/python/test_current_data.py)",
 }
 
 

@@ -42,8 +42,11 @@ class Instance:
         self.fmu.doStep(0.0, 0.5)
 
     def count(self, v):
+        """An array's number of values: its dimensions' sizes, given or its structural parameters' starts."""
         dims = getattr(v, "dimensions", None) or []
-        return int(np.prod([int(d.start) for d in dims])) if dims else 1
+        starts = {u.valueReference: u.start for u in self.md.modelVariables}
+        return int(np.prod([int(d.start if d.start is not None else starts[d.valueReference]) for d in dims])) \
+            if dims else 1
 
     def snapshot(self, outputs=True):
         """Every variable's value (outputs too unless in initialization mode, where reading them computes)."""
@@ -55,8 +58,8 @@ class Instance:
                 continue
             vr = [v.valueReference]
             if self.fmi3:
-                get = {"Float64": self.fmu.getFloat64, "Int32": self.fmu.getInt32, "Boolean": self.fmu.getBoolean,
-                       "String": self.fmu.getString}[v.type]
+                get = {"Float64": self.fmu.getFloat64, "Int32": self.fmu.getInt32, "UInt64": self.fmu.getUInt64,
+                       "Boolean": self.fmu.getBoolean, "String": self.fmu.getString}[v.type]
                 values[v.name] = list(get(vr, nValues=self.count(v)))
             else:
                 get = {"Real": self.fmu.getReal, "Integer": self.fmu.getInteger, "Boolean": self.fmu.getBoolean,
