@@ -282,6 +282,8 @@ def census(fmu, moordyn: Path, moorpy: Path, progress=None) -> list:
 
 # The reasons of the census table: (pattern on the FMU's message or MoorPy's failure, the reason shown).
 REASONS = [
+    (r"pushes the line into its anchor", "a current pushing a line into its anchor at the start"),
+    (r"through or above the waterline", "a rod through the waterline on a body"),
     (r"rod \d+ is coupled and pinned|pinned to Free", "a pinned rod"),
     (r"the Syrope model", "Syrope lines"),
     (r"SeafloorFile|bathymetry", "a bathymetry file"),
