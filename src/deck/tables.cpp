@@ -137,7 +137,8 @@ bool parse_deck(std::string_view text, bool system, const LineFileCompanions& co
     deck.seabed = options.seabed;
     for (const Point& p : points) {
         if (p.kind != PointKind::Body && -p.position[2] > deck.waterDepth) {
-            if (options.waterDepth > 0.0) {
+            // (with a SeafloorFile the seabed is the file's, its depth under the origin the water depth: no note)
+            if (options.waterDepth > 0.0 && options.seabed.seafloorFile.empty()) {
                 notes.push_back(at_line(p.row, "point " + std::to_string(p.id) + " lies below WtrDpth: the water "
                                                "depth is set to its depth, " + number_text(-p.position[2]) +
                                                " m (as MoorDyn does)"));

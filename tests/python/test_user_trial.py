@@ -43,3 +43,16 @@ def test_every_leg_matches_moordyn_refined_and_run_to_rest(flat, tmp_path):
                             refine=4)
     theirs = ut.moordyn_rest(settled, 100.0)
     assert ours["B"][3:] == pytest.approx(theirs["B"], rel=5e-3)
+
+
+def test_on_its_slope_the_deck_starts_and_its_log_names_the_seabed_it_uses(fmu_file, tmp_path):
+    """The anchors down the slope lie below WtrDpth: with a SeafloorFile that is where its seabed is, and the
+    log says the plane it uses, not that the water depth moved to the deepest anchor."""
+    from ucable.fmu import CableFMU
+
+    path = ut.write_case(tmp_path, waves=False, current=False)
+    with CableFMU(fmu_file, parameters={"lineFile": str(path)}, logging_on=True) as c:
+        c.initialize()
+        log = [text for _, _, text in c.messages]
+    assert any("SeafloorFile: its grid is a plane, the seabed 150" in m for m in log), log
+    assert not any("lies below WtrDpth" in m for m in log), [m for m in log if "WtrDpth" in m]
