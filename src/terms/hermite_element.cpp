@@ -188,6 +188,24 @@ double projected_tension(const ElementTables& e, const ModeTensions& m, int g) {
     return T;
 }
 
+// Strain mode k's derivatives in the nodal values: G_b = sum_g w_g phi_k dN_b t_g (times the element's length)
+// and, for its rate, H_b = sum_g w_g phi_k dN_b (I - t t^T) r'dot / |r'|.
+void mode_gradients(const ElementTables& e, const AxialSamples& s, int k, Vec3 G[4], Vec3 H[4]) {
+    for (int a = 0; a < 4; ++a) {
+        G[a].setZero();
+        H[a].setZero();
+    }
+    for (int g = 0; g < ElementTables::nAxial; ++g) {
+        const QuadPoint& q = e.axial[g];
+        const double wphi = q.weight * e.legendre[k][g];
+        const Vec3 rotationRate = (s.rpd[g] - s.t[g] * s.t[g].dot(s.rpd[g])) / s.stretch[g];
+        for (int a = 0; a < 4; ++a) {
+            G[a] += (wphi * q.shape.dN[a]) * s.t[g];
+            H[a] += (wphi * q.shape.dN[a]) * rotationRate;
+        }
+    }
+}
+
 }  // namespace
 
 void add_axial_force(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
@@ -219,19 +237,7 @@ void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const doubl
     // strain rate additionally H_kb = sum_g w_g l phi_k dN_b (I - t t^T) r'dot / |r'|.
     for (int k = 0; k < e.axialModes; ++k) {
         Vec3 G[4], H[4];
-        for (int a = 0; a < 4; ++a) {
-            G[a].setZero();
-            H[a].setZero();
-        }
-        for (int g = 0; g < ElementTables::nAxial; ++g) {
-            const QuadPoint& q = e.axial[g];
-            const double wphi = q.weight * e.legendre[k][g];
-            const Vec3 rotationRate = (s.rpd[g] - s.t[g] * s.t[g].dot(s.rpd[g])) / s.stretch[g];
-            for (int a = 0; a < 4; ++a) {
-                G[a] += (wphi * q.shape.dN[a]) * s.t[g];
-                H[a] += (wphi * q.shape.dN[a]) * rotationRate;
-            }
-        }
+        mode_gradients(e, s, k, G, H);
         // d(mode tension)/d(two-sided mode value): 1, or the tension-only law's slope for mode 0.
         const double weight = mode_weight(e, p, k) / l * m.mode[k].slope;
         for (int a = 0; a < 4; ++a) {
@@ -294,20 +300,8 @@ void visco_jacobian(const ElementTables& e, const AxialProps& p, const double* X
     const ViscoProps& v = *p.visco;
     const double e1 = p.internal[0], l = e.length;
     const ViscoStiffness k = visco_stiffness(v, e1);
-    // G_b = sum_g w_g l dN_b t_g (the mean mode's d(strain)/dX_b times l), H_b its rate's part in X
     Vec3 G[4], H[4];
-    for (int a = 0; a < 4; ++a) {
-        G[a].setZero();
-        H[a].setZero();
-    }
-    for (int g = 0; g < ElementTables::nAxial; ++g) {
-        const QuadPoint& q = e.axial[g];
-        const Vec3 rotationRate = (s.rpd[g] - s.t[g] * s.t[g].dot(s.rpd[g])) / s.stretch[g];
-        for (int a = 0; a < 4; ++a) {
-            G[a] += (q.weight * q.shape.dN[a]) * s.t[g];
-            H[a] += (q.weight * q.shape.dN[a]) * rotationRate;
-        }
-    }
+    mode_gradients(e, s, 0, G, H);  // (the mean mode: phi_0 = 1)
     const double scale = mode_weight(e, p, 0) * m.mode[0].slope;
     for (int a = 0; a < 4; ++a)
         for (int c = 0; c < 3; ++c) {
