@@ -189,6 +189,14 @@ struct MooringDeckLine {
     double fairleadTangent[3] = {0.0, 0.0, 0.0};  // its direction there, into the line
 };
 
+// A rod fixed to a free or pinned body (docs/lines.md, "Rods"): its mass and inertia are the body's; its
+// buoyancy, drag and added mass follow its part below z = 0 as the body moves (system/body_rods.h).
+struct MooringRod {
+    int id = 0;                                  // the deck's rod ID
+    double a[3] = {0.0, 0.0, 0.0}, b[3] = {0.0, 0.0, 0.0};  // its ends in the body's frame [m]
+    double diameter = 0.0, Cd = 0.0, Ca = 0.0, CdEnd = 0.0, CaEnd = 0.0;
+};
+
 // A Free point where three or more lines meet: its position is an unknown of the system, found from the
 // equilibrium of its weight, buoyancy, drag and the lines' forces.
 struct MooringNode {
@@ -202,7 +210,7 @@ struct MooringNode {
     double CdA[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // a body's drag areas in its axes: translations, rotations [m2]
     double Ca[3] = {0.0, 0.0, 0.0};      // a body's added-mass coefficients of translation in its axes (of rho V)
     // A pinned body (a CoupledPinned body, a pinned rod): its reference point held where `pin` is (on a coupled
-    // body, or fixed), free to turn about it; its three unknowns its rotation. Its buoyancy acts at cb (its
+    // body, on a free body: a node, or fixed), free to turn about it; its three unknowns its rotation. Its buoyancy acts at cb (its
     // centre of buoyancy in its frame; a free body's at its centre of gravity, as MoorDyn's).
     bool pinned = false;
     MooringEnd pin;
@@ -210,6 +218,7 @@ struct MooringNode {
     double rodLength = 0.0;              // > 0: a free rod (docs/lines.md, "Rods") along the body's x axis, from
                                          // -rodLength/2 to rodLength/2: its buoyancy, drag and added mass follow
                                          // the part of it below z = 0
+    std::vector<MooringRod> rods;        // the rods fixed to a free or pinned body (their loads apart from its own)
 };
 
 // A line failure (docs/line_failure.md): the ends of lines held at a deck point detach from it, at a time

@@ -183,11 +183,16 @@ void add_free_nodes(Roles& roles, std::vector<MooringNode>& nodes) {
         MooringNode node;
         node.body = true;
         node.pinned = b.kind == BodyKind::Pinned;
-        if (node.pinned) {  // held on coupled body pinBody at pinAt in its frame, or fixed at pinAt (pinBody 0)
+        if (node.pinned) {  // held on body pinBody at pinAt in its frame (coupled, or free: a node), or fixed at pinAt
             node.pin.kind = b.pinBody > 0 ? MooringEnd::Kind::Body : MooringEnd::Kind::Fixed;
             node.pin.body = b.pinBody;
+            if (b.pinBody > 0 && roles.bodies[b.pinBody - 1].kind == BodyKind::Free) {  // (listed before it)
+                node.pin.kind = MooringEnd::Kind::Node;
+                node.pin.node = roles.bodyNode[b.pinBody - 1];
+            }
             std::copy(b.pinAt, b.pinAt + 3, node.pin.position);
         }
+        node.rods = b.rods;
         std::copy(b.cb, b.cb + 3, node.cb);
         node.point.id = b.id;
         node.point.mass = b.mass;

@@ -359,6 +359,32 @@ int body_axis(const double v[3]) {
     return -1;
 }
 
+// A rod of type t from ea to eb in body b's frame: its mass at its centre and its inertia (m d^2 / 8 about its
+// axis, m (L^2 / 12 + d^2 / 16) across) added to the body's, the centre of gravity and the inertia about it
+// recombined. False (b unchanged) where the sum is not diagonal in the body's axes.
+bool add_rod_mass(DeckBody& b, const RodType& t, const Vec3& ea, const Vec3& eb) {
+    const double d = t.diameter, L = (eb - ea).norm();
+    const double m = t.massPerLength * L;
+    const Vec3 cRod = 0.5 * (ea + eb), cBody(b.cg[0], b.cg[1], b.cg[2]), along = (eb - ea) / L;
+    const double M = b.mass + m;
+    const Vec3 cg = M > 0.0 ? Vec3((b.mass * cBody + m * cRod) / M) : Vec3::Zero();
+    const Mat3 rodInertia = m * (L * L / 12.0 + d * d / 16.0) * (Mat3::Identity() - along * along.transpose()) +
+                            m * d * d / 8.0 * along * along.transpose();
+    auto shifted = [](const Mat3& I, double mass, const Vec3& by) {
+        return Mat3(I + mass * (by.squaredNorm() * Mat3::Identity() - by * by.transpose()));
+    };
+    const Mat3 I = shifted(Vec3(b.inertia[0], b.inertia[1], b.inertia[2]).asDiagonal(), b.mass, cBody - cg) +
+                   shifted(rodInertia, m, cRod - cg);
+    const double scale = I.diagonal().cwiseAbs().maxCoeff();
+    if ((I - Mat3(I.diagonal().asDiagonal())).cwiseAbs().maxCoeff() > 1e-9 * std::max(scale, 1e-300)) return false;
+    for (int k = 0; k < 3; ++k) {
+        b.inertia[k] = I(k, k);
+        b.cg[k] = cg[k];
+    }
+    b.mass = M;
+    return true;
+}
+
 // A rod of type t added to pinned body b, along body axis `axis` from s1 to s2 on it (its axis through the body's reference
 // point, the pin): its mass at its centre (the body's centre of gravity and inertia about it recombined), its
 // buoyancy at its centre (the body's centre of buoyancy recombined), its added mass of translation at the
@@ -367,23 +393,13 @@ int body_axis(const double v[3]) {
 // integrals of r^2 and |r|^3 along it). False where the combined inertia is not diagonal in the body's axes.
 bool add_rod_to_pinned(DeckBody& b, const RodType& t, int axis, double s1, double s2, double rho) {
     const double d = t.diameter, L = s2 - s1, A = 0.25 * kPi * d * d;
-    const double m = t.massPerLength * L, V = A * L, sc = 0.5 * (s1 + s2);
-    const Vec3 cRod = sc * Vec3::Unit(axis), cBody(b.cg[0], b.cg[1], b.cg[2]);
-    const double M = b.mass + m;
-    const Vec3 cg = M > 0.0 ? Vec3((b.mass * cBody + m * cRod) / M) : Vec3::Zero();
-    Mat3 rodInertia = Mat3::Zero();
-    for (int k = 0; k < 3; ++k) rodInertia(k, k) = k == axis ? m * d * d / 8.0 : m * (L * L / 12.0 + d * d / 16.0);
-    auto shifted = [](const Mat3& I, double mass, const Vec3& by) {
-        return Mat3(I + mass * (by.squaredNorm() * Mat3::Identity() - by * by.transpose()));
-    };
-    Mat3 I = shifted(Vec3(b.inertia[0], b.inertia[1], b.inertia[2]).asDiagonal(), b.mass, cBody - cg) +
-             shifted(rodInertia, m, cRod - cg);
+    const double V = A * L, sc = 0.5 * (s1 + s2);
+    const Vec3 cRod = sc * Vec3::Unit(axis);
     const double addedInertia = t.Ca * rho * A * (s2 * s2 * s2 - s1 * s1 * s1) / 3.0;
+    if (!add_rod_mass(b, t, Vec3(s1 * Vec3::Unit(axis)), Vec3(s2 * Vec3::Unit(axis)))) return false;
     for (int k = 0; k < 3; ++k) {
-        if (k != axis) I(k, k) += addedInertia;
+        if (k != axis) b.inertia[k] += addedInertia;
     }
-    const double scale = I.diagonal().cwiseAbs().maxCoeff();
-    if ((I - Mat3(I.diagonal().asDiagonal())).cwiseAbs().maxCoeff() > 1e-9 * std::max(scale, 1e-300)) return false;
     const double Vb = b.volume;
     const Vec3 cb = Vb + V > 0.0 ? Vec3((Vb * Vec3(b.cb[0], b.cb[1], b.cb[2]) + V * cRod) / (Vb + V)) : Vec3::Zero();
     const double endVolume = 2.0 * t.CaEnd * kPi * d * d * d / 12.0;
@@ -394,12 +410,29 @@ bool add_rod_to_pinned(DeckBody& b, const RodType& t, int axis, double s1, doubl
         b.Ca[k] = Vb + V > 0.0 ? (b.Ca[k] * Vb + addedVolume) / (Vb + V) : 0.0;
         b.CdA[k] += along ? 2.0 * t.CdEnd * A : t.Cd * d * L;
         b.CdA[3 + k] += along ? 0.0 : t.Cd * d * (cube(s2) - cube(s1)) / 4.0;
-        b.inertia[k] = I(k, k);
-        b.cg[k] = cg[k];
         b.cb[k] = cb[k];
     }
-    b.mass = M;
     b.volume = Vb + V;
+    return true;
+}
+
+// A rod of type t from ea to eb (the body's frame) fixed to body b whose buoyancy, drag and added mass follow
+// its part under water (a rod on a Free body, a pinned rod): its mass and inertia added to the body's, the rest
+// a MooringRod of the body (system/body_rods.h). False where the inertia is not diagonal in the body's axes.
+bool add_wet_rod(DeckBody& b, const Rod& r, const RodType& t, const Vec3& ea, const Vec3& eb) {
+    if (!add_rod_mass(b, t, ea, eb)) return false;
+    MooringRod rod;
+    rod.id = r.id;
+    for (int k = 0; k < 3; ++k) {
+        rod.a[k] = ea[k];
+        rod.b[k] = eb[k];
+    }
+    rod.diameter = t.diameter;
+    rod.Cd = t.Cd;
+    rod.Ca = t.Ca;
+    rod.CdEnd = t.CdEnd;
+    rod.CaEnd = t.CaEnd;
+    b.rods.push_back(rod);
     return true;
 }
 
@@ -437,11 +470,10 @@ bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vect
                 if (r.body > static_cast<int>(bodies.size()))
                     return refuse("it is pinned to body " + std::to_string(r.body) + ", which the BODIES table does not have");
                 holder = &bodies[r.body - 1];
-                if (holder->kind == BodyKind::Free || holder->kind == BodyKind::Pinned)
-                    return refuse("it is pinned to " + std::string(holder->kind == BodyKind::Free ? "Free" : "CoupledPinned") +
-                                  " body " + std::to_string(r.body) + ": a pinned rod on a body that moves with its "
-                                  "loads is not supported (its pin's reaction would load that body; pinned rods are held by "
-                                  "a Coupled or Fixed body or by the ground)");
+                if (holder->kind == BodyKind::Pinned)
+                    return refuse("it is pinned to CoupledPinned body " + std::to_string(r.body) + ": a pinned rod on a "
+                                  "pinned body is not supported (pinned rods are held by a Coupled, Fixed or Free body or "
+                                  "by the ground)");
             }
             for (int e = 0; e < 2; ++e) {
                 const double* at = e == 0 ? r.a : r.b;
@@ -474,10 +506,10 @@ bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vect
             }
         }
         const double top = std::max(ends[0][2], ends[1][2]) + 0.5 * t.diameter;
-        if (top > 0.0 && r.kind != RodKind::Free)
+        if (top > 0.0 && r.kind == RodKind::Body && bodies[r.body - 1].kind == BodyKind::Pinned)
             return refuse("it reaches z = " + short_number(top) + " m (its top end and radius) at the deck's pose: a rod "
-                          "through or above the waterline is not supported (a rod read as a rigid body keeps its full "
-                          "buoyancy; its draft would change it: only a free rod follows the waterline)");
+                          "on a CoupledPinned body through or above the waterline is not supported (it keeps its full "
+                          "buoyancy there; a rod on a Free body, a free rod and a pinned rod follow the waterline)");
         if (r.kind == RodKind::Body && bodies[r.body - 1].kind == BodyKind::Pinned) {
             DeckBody& b = bodies[r.body - 1];
             const int axis = body_axis(ax);
@@ -508,7 +540,10 @@ bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vect
             b.pose[5] = std::asin(std::clamp(axis[1], -1.0, 1.0));
             b.pose[4] = std::cos(b.pose[5]) > 1e-12 ? std::atan2(-axis[2], axis[0]) : 0.0;
             const DeckBody* holder = r.body > 0 ? &bodies[r.body - 1] : nullptr;
-            if (holder && holder->kind == BodyKind::Coupled) {
+            if (holder && holder->kind == BodyKind::Free) {  // its pin moves with the free body, its reaction loads it
+                b.pinBody = r.body;
+                std::copy(r.a, r.a + 3, b.pinAt);
+            } else if (holder && holder->kind == BodyKind::Coupled) {
                 if (r.body > UC_MAX_BODIES)
                     return refuse("it is pinned to coupled body " + std::to_string(r.body) + ": the bodies' inputs "
                                   "body[k].* go up to k = " + std::to_string(UC_MAX_BODIES));
@@ -518,42 +553,30 @@ bool rods_into_bodies(const Deck& deck, std::vector<DeckBody>& bodies, std::vect
                 b.pinBody = 0;
                 std::copy(ends[0], ends[0] + 3, b.pinAt);
             }
-            add_rod_to_pinned(b, t, 0, 0.0, r.length, rho);  // a rod alone: its inertia is diagonal
+            // a rod alone (its inertia diagonal): its buoyancy, drag and added mass from its part under water
+            add_wet_rod(b, r, t, Vec3::Zero(), Vec3(r.length, 0.0, 0.0));
             if (!(t.massPerLength > 0.0)) return refuse("a pinned rod needs Mass/m > 0 (its moments of inertia)");
             append_body(bodies, b);
             notes.push_back(at_line(r.row, name + ": pinned body " + std::to_string(b.id) + " of mass " +
-                                               short_number(b.mass) + " kg and volume " + short_number(b.volume) +
+                                               short_number(b.mass) + " kg and volume " +
+                                               short_number(0.25 * kPi * t.diameter * t.diameter * r.length) +
                                                " m3, turning about its end A (" +
-                                               (b.pinBody > 0 ? "held by body " + std::to_string(b.pinBody)
+                                               (b.pinBody > 0 ? std::string(holder && holder->kind == BodyKind::Free
+                                                                                ? "held by free body "
+                                                                                : "held by body ") +
+                                                                    std::to_string(b.pinBody)
                                                               : std::string("held still")) +
-                                               "), its drag and added mass integrated along it"));
+                                               "), its buoyancy, drag and added mass from its part under water"));
         } else if (r.kind == RodKind::Body) {
             DeckBody& b = bodies[r.body - 1];
-            const int axis = body_axis(ax);
-            if (axis < 0)
-                return refuse("its axis is not along one of body " + std::to_string(b.id) + "'s axes: its drag and added "
-                              "mass have no per-axis form in the body's axes");
-            double centre[3];
-            for (int k = 0; k < 3; ++k) centre[k] = 0.5 * (r.a[k] + r.b[k]);
-            for (int k = 0; k < 3; ++k) {
-                if (std::abs(centre[k]) > 1e-9 || std::abs(b.cg[k]) > 1e-9)
-                    return refuse("its centre (" + short_number(centre[0]) + ", " + short_number(centre[1]) + ", " +
-                                  short_number(centre[2]) + ") m and body " + std::to_string(b.id) + "'s centre of gravity "
-                                  "must both be at the body's reference point: a free body's weight and buoyancy act at "
-                                  "one centre of gravity, its drag at the reference point");
-            }
-            const RodBody rb = rod_body(r, t, axis, rho);
-            const double volume = b.volume + rb.volume;
-            for (int k = 0; k < 3; ++k) {
-                b.Ca[k] = volume > 0.0 ? (b.Ca[k] * b.volume + rb.addedVolume[k]) / volume : 0.0;
-                b.inertia[k] += rb.inertia[k];
-            }
-            for (int k = 0; k < 6; ++k) b.CdA[k] += rb.CdA[k];
-            b.mass += rb.mass;
-            b.volume = volume;
+            if (!add_wet_rod(b, r, t, Vec3(r.a[0], r.a[1], r.a[2]), Vec3(r.b[0], r.b[1], r.b[2])))
+                return refuse("added to Free body " + std::to_string(b.id) + " it makes an inertia that is not diagonal in "
+                              "the body's axes (a free body's I* is about its axes; the rod's axis or its centre off them)");
             notes.push_back(at_line(r.row, name + ": added to Free body " + std::to_string(b.id) + ": mass " +
-                                               short_number(rb.mass) + " kg, volume " + short_number(rb.volume) +
-                                               " m3, its inertia, drag and added mass along the body's axes"));
+                                               short_number(t.massPerLength * r.length) + " kg (the body's centre of "
+                                               "gravity now at " + short_number(b.cg[0]) + ", " + short_number(b.cg[1]) +
+                                               ", " + short_number(b.cg[2]) + " m), its inertia; its buoyancy, drag and "
+                                               "added mass from its part under water as the body moves"));
         } else {
             DeckBody b;
             b.id = r.freeBody;

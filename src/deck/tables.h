@@ -160,6 +160,7 @@ struct DeckBody {
     int pinBody = 0;
     double pinAt[3] = {0.0, 0.0, 0.0};
     double cb[3] = {0.0, 0.0, 0.0};
+    std::vector<MooringRod> rods;  // rods fixed to a Free body, a pinned rod: loads from their part under water
     int row = 0;
 };
 

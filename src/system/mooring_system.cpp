@@ -1,6 +1,7 @@
 // mooring_system.cpp - the lines of a mooring system driven by the coupled bodies and points
 // (docs/systems_mooring.md).
 #include "system/mooring_system.h"
+#include "system/body_rods.h"
 
 #include <algorithm>
 #include <cmath>
@@ -666,18 +667,8 @@ namespace {
 void rod_under_water(const MooringNode& node, const Vec3& x, const Mat3& R, double& fraction, Vec3& centre,
                      int& wetEnds) {
     const Vec3 half = 0.5 * node.rodLength * R.col(0);
-    const Vec3 a = x - half, b = x + half;
-    const Vec3& low = a.z() < b.z() ? a : b;
-    const Vec3& high = a.z() < b.z() ? b : a;
-    if (high.z() <= 0.0) {
-        fraction = 1.0, centre = x, wetEnds = 2;
-    } else if (low.z() >= 0.0) {
-        fraction = 0.0, centre = x, wetEnds = 0;
-    } else {
-        fraction = -low.z() / (high.z() - low.z());
-        centre = low + 0.5 * fraction * (high - low);
-        wetEnds = 1;
-    }
+    const RodWetPart wet = rod_wet_part(x - half, x + half);
+    fraction = wet.fraction, centre = wet.centre, wetEnds = wet.wet_ends();
 }
 
 }  // namespace
@@ -709,9 +700,11 @@ void MooringSystem::body_load(int n, const Vec3& x, const Mat3& R, const Vec3& v
         force = weight + buoyancy + 0.5 * fluid.rho * u.norm() * (R * dragArea.cwiseProduct(u));
         moment = (R * vec3(node.cg)).cross(weight) + (R * vec3(node.cb)).cross(buoyancy) -
                  0.5 * fluid.rho * spin.norm() * (R * turnArea.cwiseProduct(spin));
+        add_body_rod_loads(n, x, R, v, omega, in, force, moment);
         return;
     }
-    // weight and buoyancy together at the centre of gravity, as MoorDyn v2 applies them
+    // weight and buoyancy together at the centre of gravity, as MoorDyn v2 applies them (with rods on it, whose
+    // mass moved its centre of gravity, its own buoyancy at its own centre, cb)
     const Vec3 net(0.0, 0.0, (fluid.rho * node.point.volume - node.point.mass) * fluid.gravity);
     // drag in the body's axes: of translation at the reference point in the water's velocity relative to it,
     // of rotation against the angular velocity (MoorDyn's CdA* of rotation, its moment 1/2 rho CdA w |w|)
@@ -720,6 +713,10 @@ void MooringSystem::body_load(int n, const Vec3& x, const Mat3& R, const Vec3& v
     force = net + 0.5 * fluid.rho * u.norm() * (R * dragArea.cwiseProduct(u));
     moment = (R * Vec3(node.cg[0], node.cg[1], node.cg[2])).cross(net) -
              0.5 * fluid.rho * spin.norm() * (R * turnArea.cwiseProduct(spin));
+    if (!node.rods.empty()) {
+        moment += (R * (vec3(node.cb) - vec3(node.cg))).cross(Vec3(0.0, 0.0, fluid.rho * node.point.volume * fluid.gravity));
+        add_body_rod_loads(n, x, R, v, omega, in, force, moment);
+    }
 }
 
 Mat3 MooringSystem::body_added_mass(int n, const Vec3& x, const Mat3& R) const {
@@ -738,6 +735,10 @@ Mat3 MooringSystem::body_added_mass(int n, const Vec3& x, const Mat3& R) const {
 
 void MooringSystem::pin_motion(int n, const UCInputs& in, double tau, Vec3& x, Vec3& v, Vec3& a) const {
     const MooringEnd& pin = deck_.nodes[n].pin;
+    if (pin.kind == MooringEnd::Kind::Node) {  // on a free body: its point in the body's present motion
+        body_point_motion(pin, x, v, a);
+        return;
+    }
     const Motion m = end_motion(pin, in);
     a = m.acceleration;
     if (!m.accelerationGiven)  // as a driven end estimates it: the difference of the last two velocity inputs
@@ -763,6 +764,7 @@ Vec3 MooringSystem::pin_force(int n, const UCInputs& in) const {
         }
     }
     const Vec3 acg = a + vec3(m.alpha).cross(c) + w.cross(w.cross(c));
+    add_body_rod_inertia(n, x, R, a, vec3(m.alpha), force, moment);
     // its added mass at its centre of buoyancy, moved by the pin and by its turning
     return force - node.point.mass * acg - body_added_mass(n, x, R) * (a + vec3(m.alpha).cross(R * vec3(node.cb)));
 }
@@ -806,6 +808,7 @@ bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, 
         r.segment<3>(o + 3) = moment;
     }
     const LineEnvironment env = line_environment(in);
+    std::vector<Vec3> onPinned(motion_.size(), Vec3::Zero());  // the lines' forces on each pinned body
     for (size_t k = 0; k < lines_.size(); ++k) {
         const MooringDeckLine& l = deck_.lines[k];
         if (!on_free_node(l)) continue;
@@ -833,11 +836,19 @@ bool MooringSystem::node_residual(const Eigen::VectorXd& x, const UCInputs& in, 
             const Vec3 arm = end_motion(*ends[e], in).position - node_position(n);
             if (deck_.nodes[n].pinned) {  // its moment about its pin only
                 r.segment<3>(o) += arm.cross(onEnd[e]);
+                onPinned[n] += onEnd[e];
                 continue;
             }
             r.segment<3>(o) += onEnd[e];
             if (deck_.nodes[n].body) r.segment<3>(o + 3) += arm.cross(onEnd[e]);
         }
+    }
+    for (size_t n = 0; n < motion_.size(); ++n) {  // a pinned body on a free body: its load at rest on its pin
+        if (!deck_.nodes[n].pinned || deck_.nodes[n].pin.kind != MooringEnd::Kind::Node) continue;
+        Vec3 force, moment;
+        body_load(static_cast<int>(n), node_position(static_cast<int>(n)), rotation(motion_[n]), Vec3::Zero(),
+                  Vec3::Zero(), in, force, moment);
+        add_pin_reaction(static_cast<int>(n), force + onPinned[n], r);
     }
     return true;
 }
@@ -1124,6 +1135,7 @@ bool MooringSystem::node_step(double h, double shift, const UCInputs& in, int& w
                 // the water its added mass moves as the pin accelerates, at its centre of buoyancy (a rod's
                 // transverse added mass along it: its moment about the pin; its share as it turns is in I)
                 const Vec3 fluid = body_added_mass(static_cast<int>(n), x1, R) * a;
+                add_body_rod_inertia(static_cast<int>(n), x1, R, a, alpha, force, moment);
                 r.segment<3>(o) = moment - c.cross(node.point.mass * acg) - I * alpha - w.cross(I * w) -
                                   (R * vec3(node.cb)).cross(fluid);
                 continue;
@@ -1157,6 +1169,7 @@ bool MooringSystem::node_step(double h, double shift, const UCInputs& in, int& w
             const Vec3 acg = a + alpha.cross(c) + w.cross(w.cross(c));
             Vec3 force, moment;
             body_load(static_cast<int>(n), x1, R, v1[n], w, in, force, moment);
+            add_body_rod_inertia(static_cast<int>(n), x1, R, a, alpha, force, moment);
             r.segment<3>(o) = force - p.mass * acg - body_added_mass(static_cast<int>(n), x1, R) * a;
             r.segment<3>(o + 3) = moment - c.cross(p.mass * acg) - I * alpha - w.cross(I * w);
         }
@@ -1187,6 +1200,10 @@ bool MooringSystem::node_step(double h, double shift, const UCInputs& in, int& w
             }
         }
         for (size_t n = 0; n < motion_.size(); ++n) put(motion_[n].velocity, v1[n]);
+        for (size_t n = 0; n < motion_.size(); ++n) {  // a pinned body on a free body: its load on its pin
+            if (deck_.nodes[n].pinned && deck_.nodes[n].pin.kind == MooringEnd::Kind::Node)
+                add_pin_reaction(static_cast<int>(n), pin_force(static_cast<int>(n), in), r);
+        }
         return true;
     };
     Eigen::VectorXd A(m), r(m), rp(m);

@@ -300,6 +300,16 @@ private:
     Vec3 pin_force(int n, const UCInputs& in) const;
     // Free body n's added mass of translation (rho V Ca in its axes) in the earth axes at orientation R.
     Mat3 body_added_mass(int n, const Vec3& x, const Mat3& R) const;
+    // The rods fixed to body n (system/body_rods.cpp): force and moment about x += their buoyancy and drag, or
+    // the load of their added mass as the body accelerates at acc and alpha, from their parts under water.
+    void add_body_rod_loads(int n, const Vec3& x, const Mat3& R, const Vec3& v, const Vec3& omega, const UCInputs& in,
+                            Vec3& force, Vec3& moment) const;
+    void add_body_rod_inertia(int n, const Vec3& x, const Mat3& R, const Vec3& acc, const Vec3& alpha, Vec3& force,
+                              Vec3& moment) const;
+    // A point of a free body (end.node, at end.position in its frame) in the body's present motion.
+    void body_point_motion(const MooringEnd& end, Vec3& x, Vec3& v, Vec3& a) const;
+    // r += force, pinned body n's load on its pin, on the free body holding it (and its moment there).
+    void add_pin_reaction(int n, const Vec3& force, Eigen::VectorXd& r) const;
     // One communication step of the lines that end at free nodes, coupled implicitly through the nodes'
     // equations of motion (docs/systems_mooring.md, "Dynamics").
     // The error of the step just taken from start over h in the nodes' positions (a body's: at the reach
