@@ -245,7 +245,10 @@ bool LineProfile::solve(const Eigen::Vector3d& top, const Eigen::Vector3d& botto
     seabedOn_ = seabed;
     seabedHeight_ = seabedZ - bottom.z();
     surfaceHeight_ = surfaceZ - bottom.z();
-    if (seabed_ && slope_ == 0.0 && Z > 0.0 && length_ >= X + Z && weight > 0.0) {
+    bool sinks = weight > 0.0;  // every part of it (a buoyant part, a lazy wave's, may hold the rest up)
+    for (const Segment& s : segments) sinks = sinks && s.weight >= 0.0;
+    for (const PointLoad& p : points_) sinks = sinks && p.weight >= 0.0;
+    if (seabed_ && slope_ == 0.0 && Z > 0.0 && length_ >= X + Z && sinks) {
         // Even inextensible it reaches down and across with length to spare: resting on a
         // frictionless seabed it has no tension and no one shape.
         return fail("longer than the way down and across");

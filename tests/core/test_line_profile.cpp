@@ -135,6 +135,13 @@ TEST(LineProfile, RefusesShapesItCannotHave) {
     // longer than the way down to the seabed and across it: no tension, no one shape
     EXPECT_FALSE(p.solve(Vector3d(0, 0, -10), Vector3d(-100, 0, -100), {{200.0, 100.0, 1e8}}, {}, true, -100.0, 0.1, &why));
     EXPECT_EQ(why, "longer than the way down and across");
+    // a lazy wave longer than that (BodiesAndRods' cable: 200 m of cable, 50 m buoyant, 50 m of cable from an
+    // anchor 193 m across and 61.5 m down) is held up by its buoyant part: a shape with tension, balanced
+    const std::vector<LineProfile::Segment> lazy = {{50.0, 150.5, 7.51e8}, {50.0, -141.2, 7.51e8}, {200.0, 150.5, 7.51e8}};
+    ASSERT_TRUE(p.solve(Vector3d(-7.0566, 0, -8.4687), Vector3d(-200, 0, -70), lazy, {}, true, -70.0, 0.175, &why)) << why;
+    const double weight = 50.0 * 150.5 - 50.0 * 141.2 + 200.0 * 150.5;
+    EXPECT_NEAR((p.top_force() + p.bottom_force()).x(), 0.0, 1e-6 * weight);
+    EXPECT_GT(p.top_force().norm(), 0.0);
     // the same line without the seabed hangs free below it
     EXPECT_TRUE(p.solve(Vector3d(0, 0, -10), Vector3d(-100, 0, -100), {{200.0, 100.0, 1e8}}, {}, false, -100.0, 0.1));
     EXPECT_LT(p.lowest_clearance(), 0.0);
