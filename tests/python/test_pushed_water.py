@@ -44,8 +44,13 @@ class Cable3:
             self.fmu.setUInt64([self.vr[k] for k in sizes], list(sizes.values()))
             self.fmu.exitConfigurationMode()
         for name, value in parameters.items():
-            if self.types[name] == "Int32":
+            kind = self.types[name]
+            if kind == "Int32":
                 self.fmu.setInt32([self.vr[name]], [int(value)])
+            elif kind == "Boolean":
+                self.fmu.setBoolean([self.vr[name]], [bool(value)])
+            elif kind == "String":
+                self.fmu.setString([self.vr[name]], [str(value)])
             else:
                 self.fmu.setFloat64([self.vr[name]], [float(value)])
 
@@ -239,3 +244,41 @@ def test_fmi2_refuses_pushed_water_naming_the_parameter(make_cable):
     with pytest.raises(FMICallException):
         c.initialize(0.0, parameters={"water.source": 1})
     assert "water.source = 1" in c.log_text() and "FMI 3.0" in c.log_text()
+
+
+
+def test_a_mooring_systems_lines_take_the_pushed_water_one_after_the_other(fmi3_file):
+    """The OC4 platform's three chains (scenes/oc4_semi.dat) with the platform at rest: 3 load points per
+    element of every line, the lines one after the other; a uniform current of 0.5 m/s along x pushed at all
+    of them gives the built-in current's fairlead tensions through the statics and 10 s of steps."""
+    from studies.comparisons import mooring_system as ms
+
+    params = ms.fmu_parameters(ms.read_system_deck(ms.OC4))
+    current = np.array([0.5, 0.0, 0.0])
+    runs = []
+    for pushed in (False, True):
+        c = Cable3(fmi3_file, {**params, **({"water.source": 1} if pushed else {})})
+        flow = {} if pushed else {"current.x": current[0]}
+        if pushed:
+            c.push(np.tile(current, (c.n, 1)), np.zeros((c.n, 3)))
+        c.initialize(flow)
+        if pushed:
+            count = int(c.get("waterPointCount"))
+            r = c.positions()[:count]
+            per_line = count // 3
+            assert count == 3 * per_line and per_line % 3 == 0 and not c.positions()[count:].any()
+            ends = [r[k * per_line] for k in range(3)] + [r[(k + 1) * per_line - 1] for k in range(3)]
+            # each line's points run from one end to the other: near its fairlead (14 m deep) or its anchor (200 m)
+            assert sorted(round(e[2] / 100) for e in ends) == [-2, -2, -2, 0, 0, 0], ends
+        rows = []
+        for k in range(20):
+            if pushed:
+                c.push(np.tile(current, (c.n, 1)), np.zeros((c.n, 3)))
+            else:
+                c.set(flow)
+            c.fmu.doStep(0.5 * k, 0.5)
+            rows.append(c.fmu.getFloat64([c.vr["line.fairleadTension"]], nValues=64)[:3])
+        runs.append(np.array(rows))
+        c.close()
+    assert np.ptp(runs[0][-1]) > 100.0  # the current loads line 2 (along x) unlike lines 1 and 3 (symmetric)
+    assert np.array_equal(runs[0], runs[1]), np.max(np.abs(runs[0] - runs[1]))
