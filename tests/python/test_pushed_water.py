@@ -282,3 +282,24 @@ def test_a_mooring_systems_lines_take_the_pushed_water_one_after_the_other(fmi3_
         c.close()
     assert np.ptp(runs[0][-1]) > 100.0  # the current loads line 2 (along x) unlike lines 1 and 3 (symmetric)
     assert np.array_equal(runs[0], runs[1]), np.max(np.abs(runs[0] - runs[1]))
+
+
+def test_water_set_in_initialization_mode_makes_the_statics_anew(fmi3_file):
+    """In initialization mode the importer reads waterPoint.* (the statics with the water set so far: none),
+    sets the water there and leaves: the statics are made again with it. A uniform 0.6 m/s current so set
+    gives the built-in current's statics (initMode 0) to the bit."""
+    current = {"current.x": 0.6}
+    own = Cable3(fmi3_file, {"nElements": N_ELEMENTS})
+    own.initialize({**TOW, **current})
+    expected = [own.get(n) for n in OUT]
+    own.close()
+    c = Cable3(fmi3_file, {"nElements": N_ELEMENTS, "water.source": 1})
+    c.set(TOW)
+    c.fmu.enterInitializationMode(startTime=0.0)
+    still = c.positions()[:POINTS]  # the statics in still water: the line hangs straight down
+    assert np.ptp(still[:, 0]) < 1e-6 and c.get("towForce.x") == pytest.approx(0.0, abs=1e-6)
+    c.push(np.tile([0.6, 0.0, 0.0], (POINTS, 1)), np.zeros((POINTS, 3)))
+    c.fmu.exitInitializationMode()
+    assert [c.get(n) for n in OUT] == expected
+    assert np.ptp(c.positions()[:POINTS, 0]) > 10.0  # the current has swept the line aside
+    c.close()
