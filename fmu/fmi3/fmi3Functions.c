@@ -272,6 +272,10 @@ FMI3_EXPORT fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentComm
         if (inst != NULL) uc_log_status(&inst->log, fmi2Error, "fmi3DoStep: a result pointer is NULL");
         return fmi3Error;
     }
+    if (!ensure_water((UC3Instance*)instance)) { /* a state set into a fresh instance: no water arrays yet */
+        uc_log_status(&inst->log, fmi2Error, "fmi3DoStep: out of memory for the water arrays");
+        return fmi3Error;
+    }
     const fmi2Status status = fmi2DoStep(inst, currentCommunicationPoint, communicationStepSize,
                                          noSetFMUStatePriorToCurrentPoint);
     *eventHandlingNeeded = false;
