@@ -237,6 +237,11 @@ def test_too_short_arrays_and_bad_water_are_refused_naming_them(fmi3_file):
         c.fmu.doStep(0.0, 0.5)
     assert any("waterVelocity.z[7] = nan m/s" in m for m in c.messages), c.messages
     c.close()
+    c = Cable3(fmi3_file, {"water.source": 1, "winchMode": 1})  # a winch changes the elements, so the points
+    with pytest.raises(Exception):
+        c.initialize(TOW)
+    assert any("water.source = 1 is outside {0} with winchMode != 0" in m for m in c.messages), c.messages
+    c.close()
     for vr_name, count, said in [("waterPoint.x", 3072, "cannot be set"), ("waterVelocity.x", 3071, "3072 elements")]:
         c = Cable3(fmi3_file, {"water.source": 1})
         with pytest.raises(Exception):
