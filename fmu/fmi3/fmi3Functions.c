@@ -187,8 +187,14 @@ FMI3_EXPORT void fmi3FreeInstance(fmi3Instance instance) {
 
 /* ---- the water pushed by the importer (water.source 1, docs/waves.md) ------------------------------ */
 
-/* The structural parameter sizedBy's value (the maximum if it names none). */
+/* The structural parameter sizedBy's value (0 if it names none). */
 static size_t structural_value(const UC3Instance* self, fmi3ValueReference sizedBy);
+
+/* The slots below: the positions are the first vector (group 0), the velocity and the acceleration the next two. */
+#define UC_FMI3_ADAPTER_SLOTS(avr, name, out, component, group, sizedBy) \
+    _Static_assert((out) ? (group) == 0 : ((group) == 1 || (group) == 2), name " has its slot");
+UC_FMI3_ADAPTER_ARRAYS(UC_FMI3_ADAPTER_SLOTS)
+#undef UC_FMI3_ADAPTER_SLOTS
 
 /* Whether vr is one of the arrays the adapter holds itself; *output, *slot (0..5 the inputs, 6..8 the
  * positions) and *length (the structural parameter's value) when it is. */
