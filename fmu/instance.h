@@ -41,6 +41,12 @@ typedef struct UCInstance {
     int towMismatchWarned;       /* the tow position / velocity mismatch was reported in this run */
     UCInputChecks inputChecks;   /* the inputs of the last step and what was reported (input_checks.h) */
 
+    /* The water pushed by the importer (water.source 1): the FMI 3.0 adapter's arrays waterVelocity.x/y/z and
+       waterAcceleration.x/y/z (its own memory, waterCapacity = nWaterPoints values each), given to the core
+       before its initialization and every step; NULL in FMI 2.0, which has no such arrays. */
+    const double* water[6];
+    size_t waterCapacity;
+
     unsigned char* setByImporter; /* one flag per row of the variable table (variables.h): the importer set it
                                      since instantiation or fmi2Reset (uc_instance_mark_set) */
 

@@ -25,6 +25,37 @@ static fmi2Status fail_with_core_message(UCInstance* inst, const char* function,
     return status;
 }
 
+/* The water the importer pushed (water.source 1) to the core, for its time t: refused (fmi2Error, logged) in FMI
+ * 2.0, with arrays shorter than the lines' load points, or with a value that is not a number. */
+static fmi2Status push_water(UCInstance* inst, const char* function, double t) {
+    const size_t n = uc_water_points(inst->cable);
+    if (n == 0) return fmi2OK;
+    if (inst->water[0] == NULL) {
+        uc_log_status(&inst->log, fmi2Error, "%s: water.source = 1 (water pushed by the importer) needs the FMI 3.0 "
+                      "arrays waterVelocity.* and waterAcceleration.*, which this FMI 2.0 interface does not have: use "
+                      "the FMI 3.0 FMU, or water.source = 0 (the FMU's own current and waves)", function);
+        return fmi2Error;
+    }
+    if (n > inst->waterCapacity) {
+        uc_log_status(&inst->log, fmi2Error, "%s: water.source = 1: the lines have %zu load points (3 per element), "
+                      "more than nWaterPoints = %zu, the length of the water arrays: set nWaterPoints to %zu in "
+                      "configuration mode (at most %d)", function, n, inst->waterCapacity, n, UC_MAX_WATER_POINTS);
+        return fmi2Error;
+    }
+    static const char* const names[6] = {"waterVelocity.x", "waterVelocity.y", "waterVelocity.z",
+                                         "waterAcceleration.x", "waterAcceleration.y", "waterAcceleration.z"};
+    for (int c = 0; c < 6; ++c)
+        for (size_t i = 0; i < n; ++i)
+            if (!isfinite(inst->water[c][i])) {
+                uc_log_status(&inst->log, fmi2Error, "%s: %s[%zu] = %g %s is not a number: the importer's water at "
+                              "waterPoint[%zu] (water.source = 1) must be finite", function, names[c], i + 1,
+                              inst->water[c][i], c < 3 ? "m/s" : "m/s2", i + 1);
+                return fmi2Error;
+            }
+    uc_set_water(inst->cable, t, inst->water, inst->water + 3);
+    return fmi2OK;
+}
+
 /* The initialization from the present parameters and inputs. Invalid parameters are errors; a failure of the
  * initialization itself (which the inputs may still change) is logged and returned with status `failure`. */
 static fmi2Status initialize_core(UCInstance* inst, const char* function, fmi2Status failure) {
@@ -60,6 +91,10 @@ static fmi2Status initialize_core(UCInstance* inst, const char* function, fmi2St
             uc_instance_drop_core(inst);
             return fmi2Error;
         }
+    }
+    if (push_water(inst, function, inst->startTime) != fmi2OK) {
+        uc_instance_drop_core(inst);
+        return fmi2Error;
     }
     if (uc_initialize(inst->cable, inst->startTime, &inst->inputs, inst->msg, sizeof inst->msg) != 0) {
         return fail_with_core_message(inst, function, "initialization failed", failure);
@@ -171,6 +206,7 @@ fmi2Status uc_sim_do_step(UCInstance* inst, double tc, double h) {
     const UCInputChecks* checks = &inst->inputChecks;
     inst->inputs.stepBudget = checks->implausible ? UC_IMPLAUSIBLE_STEP_BUDGET : 0;
     uc_set_stop_at_breaks(inst->cable, inst->earlyReturnAllowed);
+    if (push_water(inst, "fmi2DoStep", inst->time) != fmi2OK) return fmi2Error;
     if (uc_do_step(inst->cable, inst->time, h, &inst->inputs, inst->msg, sizeof inst->msg) != 0) {
         if (checks->implausible) {
             uc_log_status(&inst->log, fmi2Error, "fmi2DoStep: step from t = %.17g to %.17g failed with %s = %.6g %s "

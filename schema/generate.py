@@ -753,13 +753,43 @@ def fmi3_variables(data, entries) -> list:
     return variables
 
 
+@dataclass
+class Fmi3AdapterArray:
+    """An FMI 3.0 array that the FMI 3.0 adapter holds itself ([[fmi3.adapterArray]]): no FMI 2.0 scalars behind
+    it; one dimension, the structural parameter of its count."""
+    name: str
+    vr: int
+    causality: str
+    unit: str
+    count: str
+    component: int          # 0, 1, 2: x, y, z of a vector
+    group: int              # index of its [[fmi3.adapterArray]] entry
+    description: str
+
+
+def fmi3_adapter_arrays(data) -> list:
+    """[[fmi3.adapterArray]]: a vector (components "xyz", "{c}" in name and description) is one array per
+    component, at consecutive value references from its valueReference."""
+    out = []
+    for group, raw in enumerate(data.get("fmi3", {}).get("adapterArray", [])):
+        comps = raw.get("components", "")
+        if raw["causality"] not in ("input", "output") or not comps:
+            raise SystemExit(f"schema: fmi3.adapterArray {raw['name']}: a vector (components) input or output")
+        for j, c in enumerate(comps):
+            out.append(Fmi3AdapterArray(raw["name"].replace("{c}", c), int(raw["valueReference"]) + j,
+                                        raw["causality"], raw.get("unit", ""), raw["count"], j, group,
+                                        raw["description"].replace("{c}", c)))
+    return out
+
+
 def fmi3_structural(data) -> dict:
     """[fmi3.structuralParameters]: constant -> (name, value reference, maximum, description): the UInt64
     structural parameter that sizes the first dimension of the arrays counted by that constant."""
     constants = data.get("constants", {})
+    adapter_counts = {a.count for a in fmi3_adapter_arrays(data)}
     out = {}
     for const, sp in data.get("fmi3", {}).get("structuralParameters", {}).items():
-        if const not in data["fmi3"].get("arrayCounts", []) or const not in constants:
+        if (const not in data["fmi3"].get("arrayCounts", []) and const not in adapter_counts) or const not in constants:
             raise SystemExit(f"schema: fmi3.structuralParameters: {const} is not one of the arrayCounts")
         out[const] = (sp["name"], int(sp["valueReference"]), int(constants[const]), sp["description"])
     return out
@@ -827,14 +857,37 @@ def fmi3_xml_text(data, entries) -> str:
             out.append(f"    </{kind}>")
         else:
             out.append(f"    <{kind} {attrs}/>")
+    adapter = fmi3_adapter_arrays(data)
+    constants = data.get("constants", {})
+    for a in adapter:
+        if a.vr in taken or a.count not in structural:
+            raise SystemExit(f"schema: fmi3.adapterArray {a.name}: value reference {a.vr} taken or {a.count} "
+                             "has no structural parameter")
+        taken.add(a.vr)
+        attrs = (f'name="{a.name}" valueReference="{a.vr}" causality="{a.causality}" variability="continuous"'
+                 f' description="{xml_attr(a.description)}"')
+        if a.causality == "output":
+            attrs += ' initial="calculated"'
+        if a.unit:
+            attrs += f' unit="{xml_attr(a.unit)}"'
+        if a.causality == "input":  # every element's start (of the maximum), as the other input arrays'
+            attrs += f' start="{" ".join("0" for _ in range(int(constants[a.count])))}"'
+        out.append(f"    <Float64 {attrs}>")
+        out.append(f'      <Dimension valueReference="{structural[a.count][1]}"/>')
+        out.append("    </Float64>")
     out.append("  </ModelVariables>")
     fmi3_vr = {x.name: v.first.vr for v in variables for x in v.elements}  # an element's FMI 3.0 variable
     out.append("  <ModelStructure>")
     outputs = [v.first for v in variables if v.first.causality == "output"]
     for s in outputs:
         out.append(f'    <Output valueReference="{s.vr}"{fmi3_dependencies(s, fmi3_vr)}/>')
+    adapter_outputs = [a.vr for a in adapter if a.causality == "output"]
+    for vr in adapter_outputs:  # where the state puts the load points: no input feeds through
+        out.append(f'    <Output valueReference="{vr}" dependencies=""/>')
     for s in outputs:
         out.append(f'    <InitialUnknown valueReference="{s.vr}"/>')
+    for vr in adapter_outputs:
+        out.append(f'    <InitialUnknown valueReference="{vr}"/>')
     out.append("  </ModelStructure>")
     out.append("</fmiModelDescription>")
     return "\n".join(out) + "\n"
@@ -876,6 +929,17 @@ def fmi3_header_text(data, entries) -> str:
         out.append(f'    X({v.first.vr}, {len(v.elements)}, {v.stride}, "{v.name}", {v.kept}, '
                    f'{v.elements[v.kept].vr if v.kept < len(v.elements) else 0}, {sized}, {per}) \\')
     out[-1] = out[-1].rstrip(" \\")
+    adapter = fmi3_adapter_arrays(data)
+    if adapter:
+        out += ["",
+                "/* X(valueReference, name, output, component, group, sizedBy): the arrays the adapter holds itself (no FMI",
+                " * 2.0 scalars behind them): output 1 for an output, component 0..2 of its vector, group the index of its",
+                " * vector, as many elements as the structural parameter sizedBy says */",
+                "#define UC_FMI3_ADAPTER_ARRAYS(X) \\"]
+        for a in adapter:
+            out.append(f'    X({a.vr}, "{a.name}", {1 if a.causality == "output" else 0}, {a.component}, {a.group}, '
+                       f'{structural[a.count][1]}) \\')
+        out[-1] = out[-1].rstrip(" \\")
     out += ["", "#endif", ""]
     return "\n".join(out)
 

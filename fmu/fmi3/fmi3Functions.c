@@ -19,6 +19,7 @@
 #include "fmi3Types.h"
 #include "instance.h"
 #include "logging.h"
+#include "simulation.h"
 #include "uc_fmi3_arrays.h"
 
 #if defined(_WIN32)
@@ -47,6 +48,11 @@ typedef struct {
     fmi3InstanceEnvironment environment;
     fmi3UInt64 sizes[UC_FMI3_STRUCTURAL];
     int configuring;
+    /* The arrays the adapter holds itself (uc_fmi3_arrays.h, UC_FMI3_ADAPTER_ARRAYS: the water pushed by the
+     * importer): the 6 inputs waterVelocity.x/y/z, waterAcceleration.x/y/z, then 3 scratch arrays for the
+     * positions waterPoint.x/y/z, waterCapacity (nWaterPoints) values each; NULL until first needed. */
+    double* water;
+    size_t waterCapacity;
 } UC3Instance;
 
 static UCInstance* inner(fmi3Instance instance) { return instance ? ((UC3Instance*)instance)->inner : NULL; }
@@ -153,7 +159,7 @@ FMI3_EXPORT fmi3Instance fmi3InstantiateModelExchange(fmi3String instanceName, f
                                                       fmi3Boolean loggingOn, fmi3InstanceEnvironment instanceEnvironment,
                                                       fmi3LogMessageCallback logMessage) {
     (void)instantiationToken, (void)resourcePath, (void)visible, (void)loggingOn;
-    UC3Instance self = {NULL, logMessage, instanceEnvironment, {0}, 0};
+    UC3Instance self = {NULL, logMessage, instanceEnvironment, {0}, 0, NULL, 0};
     forward_log(&self, instanceName, fmi2Error, "logStatusError",
                 "fmi3InstantiateModelExchange: UnderwaterCable is a co-simulation FMU only");
     return NULL;
@@ -166,7 +172,7 @@ FMI3_EXPORT fmi3Instance fmi3InstantiateScheduledExecution(
     fmi3UnlockPreemptionCallback unlockPreemption) {
     (void)instantiationToken, (void)resourcePath, (void)visible, (void)loggingOn, (void)clockUpdate;
     (void)lockPreemption, (void)unlockPreemption;
-    UC3Instance self = {NULL, logMessage, instanceEnvironment, {0}, 0};
+    UC3Instance self = {NULL, logMessage, instanceEnvironment, {0}, 0, NULL, 0};
     forward_log(&self, instanceName, fmi2Error, "logStatusError",
                 "fmi3InstantiateScheduledExecution: UnderwaterCable is a co-simulation FMU only");
     return NULL;
@@ -175,7 +181,53 @@ FMI3_EXPORT fmi3Instance fmi3InstantiateScheduledExecution(
 FMI3_EXPORT void fmi3FreeInstance(fmi3Instance instance) {
     if (instance == NULL) return;
     fmi2FreeInstance(inner(instance));
+    free(((UC3Instance*)instance)->water);
     free(instance);
+}
+
+/* ---- the water pushed by the importer (water.source 1, docs/waves.md) ------------------------------ */
+
+/* The structural parameter sizedBy's value (0 if it names none). */
+static size_t structural_value(const UC3Instance* self, fmi3ValueReference sizedBy);
+
+/* The slots below: the positions are the first vector (group 0), the velocity and the acceleration the next two. */
+#define UC_FMI3_ADAPTER_SLOTS(avr, name, out, component, group, sizedBy) \
+    _Static_assert((out) ? (group) == 0 : ((group) == 1 || (group) == 2), name " has its slot");
+UC_FMI3_ADAPTER_ARRAYS(UC_FMI3_ADAPTER_SLOTS)
+#undef UC_FMI3_ADAPTER_SLOTS
+
+/* Whether vr is one of the arrays the adapter holds itself; *output, *slot (0..5 the inputs, 6..8 the
+ * positions) and *length (the structural parameter's value) when it is. */
+static int adapter_array(const UC3Instance* self, fmi3ValueReference vr, int* output, int* slot, size_t* length) {
+#define UC_FMI3_ADAPTER_MATCH(avr, name, out, component, group, sizedBy) \
+    if (vr == (avr)) {                                                  \
+        *output = (out);                                                \
+        *slot = (out) ? 6 + (component) : 3 * ((group) - 1) + (component); \
+        *length = structural_value(self, (sizedBy));                     \
+        return 1;                                                       \
+    }
+    UC_FMI3_ADAPTER_ARRAYS(UC_FMI3_ADAPTER_MATCH)
+#undef UC_FMI3_ADAPTER_MATCH
+    return 0;
+}
+
+/* The water arrays at the present nWaterPoints (zeros when new or resized), given to the FMI 2.0 adapter;
+ * 0 when out of memory. */
+static int ensure_water(UC3Instance* self) {
+    size_t n = 0; /* every water array has the same length: the first one's */
+#define UC_FMI3_ADAPTER_LENGTH(avr, name, out, component, group, sizedBy) \
+    if (n == 0) n = structural_value(self, (sizedBy));
+    UC_FMI3_ADAPTER_ARRAYS(UC_FMI3_ADAPTER_LENGTH)
+#undef UC_FMI3_ADAPTER_LENGTH
+    if (self->water != NULL && self->waterCapacity == n) return 1;
+    double* water = calloc(9 * n + 1, sizeof *water);
+    if (water == NULL) return 0;
+    free(self->water);
+    self->water = water;
+    self->waterCapacity = n;
+    for (int c = 0; c < 6; ++c) self->inner->water[c] = water + (size_t)c * n;
+    self->inner->waterCapacity = n;
+    return 1;
 }
 
 FMI3_EXPORT fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Boolean toleranceDefined,
@@ -185,6 +237,10 @@ FMI3_EXPORT fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Bo
     if (inst != NULL && ((UC3Instance*)instance)->configuring) {
         uc_log_status(&inst->log, fmi2Error, "fmi3EnterInitializationMode: in configuration mode (call "
                       "fmi3ExitConfigurationMode first)");
+        return fmi3Error;
+    }
+    if (inst != NULL && !ensure_water((UC3Instance*)instance)) {
+        uc_log_status(&inst->log, fmi2Error, "fmi3EnterInitializationMode: out of memory for the water arrays");
         return fmi3Error;
     }
     const fmi2Status status = fmi2SetupExperiment(inst, toleranceDefined, tolerance, startTime, stopTimeDefined, stopTime);
@@ -207,6 +263,7 @@ FMI3_EXPORT fmi3Status fmi3Reset(fmi3Instance instance) {
 #define UC_FMI3_SIZE_RESET(name, vr, most) self->sizes[k++] = (most);
         UC_FMI3_STRUCTURAL_PARAMETERS(UC_FMI3_SIZE_RESET)
 #undef UC_FMI3_SIZE_RESET
+        if (self->water != NULL) memset(self->water, 0, 9 * self->waterCapacity * sizeof *self->water);
     }
     return (fmi3Status)status;
 }
@@ -219,6 +276,10 @@ FMI3_EXPORT fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentComm
     if (inst == NULL || eventHandlingNeeded == NULL || terminateSimulation == NULL || earlyReturn == NULL ||
         lastSuccessfulTime == NULL) {
         if (inst != NULL) uc_log_status(&inst->log, fmi2Error, "fmi3DoStep: a result pointer is NULL");
+        return fmi3Error;
+    }
+    if (!ensure_water((UC3Instance*)instance)) { /* a state set into a fresh instance: no water arrays yet */
+        uc_log_status(&inst->log, fmi2Error, "fmi3DoStep: out of memory for the water arrays");
         return fmi3Error;
     }
     const fmi2Status status = fmi2DoStep(inst, currentCommunicationPoint, communicationStepSize,
@@ -260,6 +321,9 @@ static size_t array_layout(fmi3Instance instance, fmi3ValueReference vr, ArrayLa
     layout->stride = 1;
     layout->kept = 1;
     layout->extension = 0;
+    int output, slot;
+    size_t length;
+    if (self != NULL && adapter_array(self, vr, &output, &slot, &length)) return length;
 #define UC_FMI3_ARRAY_LENGTH(first, count, step, name, keep, ext, sizedBy, perIndex)                  \
     if (vr == (first)) {                                                                            \
         layout->stride = (step);                                                                    \
@@ -271,6 +335,11 @@ static size_t array_layout(fmi3Instance instance, fmi3ValueReference vr, ArrayLa
     UC_FMI3_ARRAYS(UC_FMI3_ARRAY_LENGTH)
 #undef UC_FMI3_ARRAY_LENGTH
     return 1;
+}
+
+static size_t structural_value(const UC3Instance* self, fmi3ValueReference sizedBy) {
+    const int s = structural_index(sizedBy);
+    return s >= 0 ? (size_t)self->sizes[s] : 0;
 }
 
 /* The FMI 2.0 scalar of element i of the variable vr of that layout. */
@@ -313,17 +382,6 @@ static size_t total_elements(fmi3Instance instance, const fmi3ValueReference vr[
 UC_FMI3_ARRAYS(UC_FMI3_ARRAY_FITS)
 #undef UC_FMI3_ARRAY_FITS
 
-/* The FMI 2.0 scalars of the variables vr[0..nvr), in order (nScalars of them, the caller checked the count). */
-static void expand_scalars(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
-                           fmi2ValueReference scalars[]) {
-    size_t at = 0;
-    for (size_t k = 0; k < nvr; ++k) {
-        ArrayLayout layout;
-        const size_t n = array_layout(instance, vr[k], &layout);
-        for (size_t i = 0; i < n; ++i) scalars[at++] = element_vr(vr[k], &layout, i);
-    }
-}
-
 /* fmi3SetFloat64: the count is checked and every value goes to the FMI 2.0 adapter in one fmi2SetReal, which
  * checks them all before it writes any: a refusal leaves every variable as it was. */
 static fmi3Status set_float64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
@@ -344,15 +402,92 @@ static fmi3Status set_float64(fmi3Instance instance, const fmi3ValueReference vr
             return (fmi3Status)uc_instance_finish(inst, fmi2Error);
         }
     }
+    /* the water arrays (the adapter's own): inputs only, in the states where inputs may be set */
+    UC3Instance* self = (UC3Instance*)instance;
+    size_t own = 0;
+    for (size_t k = 0; k < nvr; ++k) {
+        int output, slot;
+        size_t length;
+        if (!adapter_array(self, vr[k], &output, &slot, &length)) continue;
+        if (output || !(inst->state & UC_MASK_SET)) {
+            uc_log_status(&inst->log, fmi2Error, "%s: value reference %u is %s", function, (unsigned)vr[k],
+                          output ? "the output waterPoint.*, which cannot be set"
+                                 : "a water input, which can be set after instantiation, in initialization mode and "
+                                   "between steps only");
+            return (fmi3Status)uc_instance_finish(inst, fmi2Error);
+        }
+        own += length;
+    }
+    if (own > 0 && !ensure_water(self)) {
+        uc_log_status(&inst->log, fmi2Error, "%s: out of memory for the water arrays", function);
+        return (fmi3Status)uc_instance_finish(inst, fmi2Error);
+    }
     fmi2ValueReference* scalars = malloc((nValues + 1) * sizeof *scalars);
-    if (scalars == NULL) {
+    fmi2Real* rest = malloc((nValues + 1) * sizeof *rest);
+    if (scalars == NULL || rest == NULL) {
+        free(scalars);
+        free(rest);
         uc_log_status(&inst->log, fmi2Error, "%s: out of memory for %zu values", function, nValues);
         return (fmi3Status)uc_instance_finish(inst, fmi2Error);
     }
-    expand_scalars(instance, vr, nvr, scalars);
-    const fmi2Status status = fmi2SetReal(inst, scalars, nValues, values);
+    /* the FMI 2.0 scalars of the others, set first (checked all before any is written); then the water */
+    size_t at = 0, nRest = 0;
+    for (size_t k = 0; k < nvr; ++k) {
+        ArrayLayout layout;
+        const size_t n = array_layout(instance, vr[k], &layout);
+        int output, slot;
+        size_t length;
+        if (!adapter_array(self, vr[k], &output, &slot, &length)) {
+            for (size_t i = 0; i < n; ++i) {
+                scalars[nRest] = element_vr(vr[k], &layout, i);
+                rest[nRest++] = values[at + i];
+            }
+        }
+        at += n;
+    }
+    fmi2Status status = fmi2OK;
+    if (nRest > 0 || own == 0) status = fmi2SetReal(inst, scalars, nRest, rest);
     free(scalars);
+    free(rest);
+    if (status > fmi2Warning || own == 0) return (fmi3Status)status;
+    at = 0;
+    for (size_t k = 0; k < nvr; ++k) {
+        int output, slot;
+        size_t length;
+        if (adapter_array(self, vr[k], &output, &slot, &length)) {
+            memcpy(self->water + (size_t)slot * self->waterCapacity, values + at, length * sizeof *values);
+            at += length;
+        } else {
+            at += elements(instance, vr[k]);
+        }
+    }
+    /* before the first step the initialization is computed again from the new water, as for any input */
+    if (inst->state != UC_STATE_STEP_COMPLETE) uc_instance_drop_core(inst);
     return (fmi3Status)status;
+}
+
+/* waterPoint.x/y/z (slot 6, 7, 8) into values (length of them): the load points where the state has them, 0
+ * beyond the lines' load points and before the initialization is computed. */
+static fmi2Status water_positions(fmi3Instance instance, int slot, size_t length, fmi3Float64* values) {
+    UC3Instance* self = (UC3Instance*)instance;
+    UCInstance* inst = self->inner;
+    if (inst->state & UC_STATE_INIT_MODE) {
+        const fmi2Status status = uc_sim_initial_outputs(inst, "fmi3GetFloat64");
+        if (status > fmi2Warning) return status;
+    }
+    memset(values, 0, length * sizeof *values);
+    if (!inst->coreReady || inst->cable == NULL) return fmi2OK;
+    const size_t n = uc_water_points(inst->cable);
+    if (n == 0) return fmi2OK;
+    if (!ensure_water(self)) {
+        uc_log_status(&inst->log, fmi2Error, "fmi3GetFloat64: out of memory for the water arrays");
+        return fmi2Error;
+    }
+    if (n > self->waterCapacity) return fmi2OK; /* refused at the initialization: nWaterPoints too short */
+    double* p = self->water + 6 * self->waterCapacity;
+    uc_water_positions(inst->cable, p, p + self->waterCapacity, p + 2 * self->waterCapacity);
+    memcpy(values, p + (size_t)(slot - 6) * self->waterCapacity, (n < length ? n : length) * sizeof *values);
+    return fmi2OK;
 }
 
 static fmi3Status get_float64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Float64* values,
@@ -372,9 +507,26 @@ static fmi3Status get_float64(fmi3Instance instance, const fmi3ValueReference vr
         ArrayLayout layout;
         const size_t n = array_layout(instance, vr[k], &layout);
         fmi2Status status;
+        int output, slot;
+        size_t length;
         if (vr[k] == UC_FMI3_TIME_VR) {
             values[at] = inst->time;
             status = fmi2OK;
+        } else if (adapter_array((UC3Instance*)instance, vr[k], &output, &slot, &length)) {
+            if (!(inst->state & UC_MASK_GET)) {
+                uc_log_status(&inst->log, fmi2Error, "fmi3GetFloat64: the water arrays cannot be read in this state");
+                return fmi3Error;
+            }
+            UC3Instance* self = (UC3Instance*)instance;
+            if (output) {
+                status = water_positions(instance, slot, n, values + at);
+            } else if (self->water != NULL && self->waterCapacity == n) {
+                memcpy(values + at, self->water + (size_t)slot * n, n * sizeof *values);
+                status = fmi2OK;
+            } else {
+                memset(values + at, 0, n * sizeof *values); /* the start values */
+                status = fmi2OK;
+            }
         } else {
             fmi2ValueReference scalars[UC_FMI3_MAX_ELEMENTS];
             for (size_t i = 0; i < n; ++i) scalars[i] = element_vr(vr[k], &layout, i);
@@ -548,6 +700,16 @@ FMI3_EXPORT fmi3Status fmi3GetDirectionalDerivative(fmi3Instance instance, const
     if ((nUnknowns > 0 && (unknowns == NULL || sensitivity == NULL)) || (nKnowns > 0 && (knowns == NULL || seed == NULL))) {
         uc_log_status(&inst->log, fmi2Error, "fmi3GetDirectionalDerivative: NULL array");
         return fmi3Error;
+    }
+    for (size_t k = 0; k < nUnknowns + nKnowns; ++k) {
+        int output, slot;
+        size_t length;
+        const fmi3ValueReference vr = k < nUnknowns ? unknowns[k] : knowns[k - nUnknowns];
+        if (adapter_array((UC3Instance*)instance, vr, &output, &slot, &length)) {
+            uc_log_status(&inst->log, fmi2Error, "fmi3GetDirectionalDerivative: value reference %u is a water array "
+                          "(waterPoint.*, waterVelocity.*, waterAcceleration.*), which has no derivatives", (unsigned)vr);
+            return fmi3Error;
+        }
     }
     int arrays = 0;
     for (size_t k = 0; k < nUnknowns; ++k) arrays |= elements(instance, unknowns[k]) > 1;

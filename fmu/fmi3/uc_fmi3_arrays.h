@@ -12,7 +12,8 @@
 #define UC_FMI3_STRUCTURAL_PARAMETERS(X) \
     X("nLines", 30001, 64) \
     X("nBodies", 30002, 16) \
-    X("nPoints", 30003, 64)
+    X("nPoints", 30003, 64) \
+    X("nWaterPoints", 30004, 3072)
 
 /* X(valueReference, elements, stride, name, kept, extension, sizedBy, perIndex): element i < kept is the
  * FMI 2.0 scalar valueReference + i * stride, element i >= kept the scalar extension + (i - kept) * stride
@@ -77,5 +78,19 @@
     X(2573, 64, 1, "line.maxUtilisation", 16, 21201, 30001, 1) \
     X(2589, 64, 1, "line.broken", 16, 21249, 30001, 1) \
     X(2605, 64, 1, "line.breakTime", 16, 21297, 30001, 1)
+
+/* X(valueReference, name, output, component, group, sizedBy): the arrays the adapter holds itself (no FMI
+ * 2.0 scalars behind them): output 1 for an output, component 0..2 of its vector, group the index of its
+ * vector, as many elements as the structural parameter sizedBy says */
+#define UC_FMI3_ADAPTER_ARRAYS(X) \
+    X(40001, "waterPoint.x", 1, 0, 0, 30004) \
+    X(40002, "waterPoint.y", 1, 1, 0, 30004) \
+    X(40003, "waterPoint.z", 1, 2, 0, 30004) \
+    X(40004, "waterVelocity.x", 0, 0, 1, 30004) \
+    X(40005, "waterVelocity.y", 0, 1, 1, 30004) \
+    X(40006, "waterVelocity.z", 0, 2, 1, 30004) \
+    X(40007, "waterAcceleration.x", 0, 0, 2, 30004) \
+    X(40008, "waterAcceleration.y", 0, 1, 2, 30004) \
+    X(40009, "waterAcceleration.z", 0, 2, 2, 30004)
 
 #endif

@@ -14,6 +14,7 @@ MAX_BODIES = 16
 MAX_POINTS = 64
 MAX_WAVE_COMPONENTS = 1024
 AXIAL_CURVE_POINTS = 30
+MAX_WATER_POINTS = 3072
 
 
 class Variable(NamedTuple):
@@ -763,6 +764,8 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              'Section 7: damping c_d of the dynamic spring of the viscoelastic model, as axialDampingDynamic'),
     Variable('section[8].axialDampingDynamic', 367, 'parameter', 'Real', 'N.s', 0.0, 0.0, 10000000000000.0,
              'Section 8: damping c_d of the dynamic spring of the viscoelastic model, as axialDampingDynamic'),
+    Variable('water.source', 368, 'parameter', 'Integer', None, 0, 0.0, 1.0,
+             "Water at the lines' load points: 0 the FMU's current and waves, 1 pushed by the importer through the FMI 3.0 arrays waterVelocity.* and waterAcceleration.* at waterPoint.* (FMI 3.0 only)"),
     Variable('tow.x', 1001, 'input', 'Real', 'm', 0.0, None, None,
              'x coordinate of the tow point'),
     Variable('tow.y', 1002, 'input', 'Real', 'm', 0.0, None, None,
@@ -2409,6 +2412,8 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              'Line 15 of a mooring system: time at which an end of it detached (0 while line[k].broken is 0)'),
     Variable('line[16].breakTime', 2620, 'output', 'Real', 's', None, None, None,
              'Line 16 of a mooring system: time at which an end of it detached (0 while line[k].broken is 0)'),
+    Variable('waterPointCount', 2621, 'output', 'Real', None, None, None, None,
+             'Load points whose water the importer pushes with water.source 1 (3 per element of every line; the first elements of waterPoint.*, waterVelocity.*, waterAcceleration.*); 0 with water.source 0'),
     Variable('body[5].x', 10001, 'input', 'Real', 'm', 0.0, None, None,
              'Coupled body 5 of a mooring system: x of its reference point'),
     Variable('body[5].y', 10002, 'input', 'Real', 'm', 0.0, None, None,

@@ -146,6 +146,18 @@ extern "C" void uc_set_stop_at_breaks(UCCable* c, int on) {
     if (c) c->simulation->set_stop_at_breaks(on != 0);
 }
 
+extern "C" size_t uc_water_points(const UCCable* c) {
+    return c ? c->simulation->water_points() : 0;
+}
+
+extern "C" void uc_water_positions(const UCCable* c, double* x, double* y, double* z) {
+    if (c && x && y && z) c->simulation->water_positions(x, y, z);
+}
+
+extern "C" void uc_set_water(UCCable* c, double t, const double* const u[3], const double* const a[3]) {
+    if (c && u && a) c->simulation->set_water(t, u, a);
+}
+
 extern "C" double uc_time(const UCCable* c) {
     return c ? c->simulation->time() : 0.0;
 }
@@ -153,6 +165,7 @@ extern "C" double uc_time(const UCCable* c) {
 extern "C" void uc_get_outputs(const UCCable* c, UCOutputs* out) {
     if (!c || !out) return;
     *out = c->simulation->outputs();
+    out->waterPointCount = static_cast<double>(c->simulation->water_points());
 }
 
 extern "C" int uc_update_stiffness(UCCable* c, UCOutputs* out, char* msg, size_t msgSize) {

@@ -109,6 +109,15 @@ int uc_do_step(UCCable* c, double t, double h, const UCInputs* in, char* msg, si
  * the state at the break, and the next uc_do_step goes on from there. 0 (the default): every step reaches t + h. */
 void uc_set_stop_at_breaks(UCCable* c, int on);
 
+/* The water pushed by the importer (water.source 1, docs/waves.md "Water pushed by the importer"): the number of
+ * the lines' load points (3 per element from the tow end, the lines one after the other; 0 with water.source 0),
+ * where they stand at uc_time (that many values into each of x, y, z), and their water from time t on (velocity u
+ * and local acceleration a, one array per component, the first uc_water_points values of each, copied). Not in
+ * the saved state: call uc_set_water before uc_initialize and before every uc_do_step. */
+size_t uc_water_points(const UCCable* c);
+void uc_water_positions(const UCCable* c, double* x, double* y, double* z);
+void uc_set_water(UCCable* c, double t, const double* const u[3], const double* const a[3]);
+
 /* The interface derivatives over the next communication step (taken as long as the last one) in the
  * direction seed: out[i] = sum_j d output_i(t + h) / d input_j(t) seed[j] for the outputs towForce x, y, z,
  * endForce x, y, z (i = 0..5) and the inputs tow x, y, z, vx, vy, vz (j = 0..5), end x, y, z, vx, vy, vz

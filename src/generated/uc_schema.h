@@ -16,6 +16,7 @@
 #define UC_MAX_POINTS 64
 #define UC_MAX_WAVE_COMPONENTS 1024
 #define UC_AXIAL_CURVE_POINTS 30
+#define UC_MAX_WATER_POINTS 3072
 
 typedef struct UCSection {
     double length; /* section[k].length [m]: unstretched length (must be > 0 when k <= nSections >= 2) */
@@ -191,6 +192,7 @@ typedef struct UCParams {
     double EAdynamic; /* EAdynamic [N]: dynamic axial stiffness EA_d of MoorDyn's viscoelastic model of a uniform line (`nSections` 1): 0 (the default), off; above `EA`, the static stiffness, each element gets an internal strain (a Kelvin–Voigt pair of `EA`'s series spring and `axialDamping`, in series with EA_d and `axialDampingDynamic`): `EA` at rest, EA_d in fast motion ([docs/model.md](docs/model.md)) */
     double EAdynamicSlope; /* EAdynamicSlope: slope β of the dynamic stiffness in the mean load (MoorDyn's `EA_s|EA_Dc|EA_D_Lm`): EA_d = `EAdynamic` + β × the element's mean tension (the tension of its static spring); 0 (the default), a constant `EAdynamic` */
     double axialDampingDynamic; /* axialDampingDynamic [N.s]: damping c_d in parallel with the dynamic spring `EAdynamic` (MoorDyn's BA_d in `BA_s|BA_d`); `axialDamping` is then the damping beside the static spring; used only with `EAdynamic` > 0 */
+    int waterSource; /* water.source: water at the lines' load points: 0 the FMU's own current and waves, 1 pushed by the importer (FMI 3.0 only: `waterVelocity.*`, `waterAcceleration.*` at `waterPoint.*`; [docs/waves.md](docs/waves.md), "Water pushed by the importer") */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
     int waveComponentCount; /* (not an FMU variable) waves.mode 3: the number of given wave components in waveComponents (from waves.file or a lineFile deck) */
@@ -270,6 +272,7 @@ typedef struct UCOutputs {
     UCBodyLoad bodyLoad[UC_MAX_BODIES];
     UCPointLoad pointLoad[UC_MAX_POINTS];
     double bodyForceEstimate[3]; /* bodyForceEstimate.x/y/z [N]: the external body's forces other than the cable's (weight and buoyancy included) as the proxy far end estimates them (`bottomEnd` 4; 0 otherwise) */
+    double waterPointCount; /* waterPointCount: load points whose water the importer pushes with `water.source` 1: 3 per element of every line, the first elements of the FMI 3.0 arrays `waterPoint.*`, `waterVelocity.*`, `waterAcceleration.*`; 0 with `water.source` 0 */
 } UCOutputs;
 
 /* X(vr, name, TYPE, CAUSALITY, member): every variable in value-reference order; TYPE is REAL, INTEGER, BOOLEAN or STRING (a NUL-terminated char array), CAUSALITY PARAMETER, INPUT or OUTPUT, member the field of UCParams, UCInputs or UCOutputs */
@@ -641,6 +644,7 @@ typedef struct UCOutputs {
     X(365, "section[6].axialDampingDynamic", REAL, PARAMETER, section[5].axialDampingDynamic) \
     X(366, "section[7].axialDampingDynamic", REAL, PARAMETER, section[6].axialDampingDynamic) \
     X(367, "section[8].axialDampingDynamic", REAL, PARAMETER, section[7].axialDampingDynamic) \
+    X(368, "water.source", INTEGER, PARAMETER, waterSource) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -1464,6 +1468,7 @@ typedef struct UCOutputs {
     X(2618, "line[14].breakTime", REAL, OUTPUT, mooringLine[13].breakTime) \
     X(2619, "line[15].breakTime", REAL, OUTPUT, mooringLine[14].breakTime) \
     X(2620, "line[16].breakTime", REAL, OUTPUT, mooringLine[15].breakTime) \
+    X(2621, "waterPointCount", REAL, OUTPUT, waterPointCount) \
     X(10001, "body[5].x", REAL, INPUT, coupledBody[4].position[0]) \
     X(10002, "body[5].y", REAL, INPUT, coupledBody[4].position[1]) \
     X(10003, "body[5].z", REAL, INPUT, coupledBody[4].position[2]) \
@@ -3655,6 +3660,7 @@ typedef struct UCOutputs {
     X(section[5].axialDampingDynamic, 0.0) \
     X(section[6].axialDampingDynamic, 0.0) \
     X(section[7].axialDampingDynamic, 0.0) \
+    X(waterSource, 0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -4035,6 +4041,7 @@ typedef struct UCOutputs {
     X(section[5].axialDampingDynamic, "section[6].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
     X(section[6].axialDampingDynamic, "section[7].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
     X(section[7].axialDampingDynamic, "section[8].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(waterSource, "water.source", 0.0, 1.0, 0, 0, "{0 the FMU's own current and waves, 1 pushed by the importer}", "unknown source of the water's motion") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

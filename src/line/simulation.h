@@ -106,6 +106,9 @@ public:
     std::string take_event() override;
     void set_current_grid(std::shared_ptr<const CurrentGrid> grid) override;
     const CurrentGrid* current_grid() const { return currentGrid_.get(); }
+    std::size_t water_points() const override;
+    void water_positions(double* x, double* y, double* z) const override;
+    void set_water(double t, const double* const u[3], const double* const a[3]) override;
 
     size_t state_size() const override;
     void save_state(void* buffer) override;
@@ -323,6 +326,10 @@ private:
     // The current given as data (shared by the lines of a system; parameters, not state) and the
     // CurrentGrid::Outside bits already warned of (a message, not state).
     std::shared_ptr<const CurrentGrid> currentGrid_;
+    // The water pushed by the importer (water.source 1): 6 values per load point (CurrentField::pushed), and a
+    // scratch of the state's global vectors for water_positions (sized on first use, not in the hot path).
+    std::vector<double> pushedWater_;
+    mutable std::vector<double> waterScratch_;
     unsigned currentGridWarned_ = 0;
     StaticLayout layout_;  // the graded mesh's nodes (made again from state_.grading at a restore)
     bool profileApplies_ = false;  // an anchored line, or a far end held at rest

@@ -51,6 +51,22 @@ public:
     // A current given as data (currents.mode 2 or 5, or a deck's Currents 2 or 5), added to the water
     // of every line from here on; null: none. Not state: a restored instance is given it again.
     virtual void set_current_grid(std::shared_ptr<const CurrentGrid> grid) = 0;
+    // The water pushed by the importer (water.source 1, docs/waves.md "Water pushed by the importer"): the
+    // load points of every line (3 per element from the tow end, lines in deck order; 0 with water.source 0),
+    // where they stand at time() (n of them in each of x, y, z), and their water from time t on (velocity u
+    // and local acceleration a, one array per component, the first water_points() values of each). Not state:
+    // the importer pushes it before every step.
+    virtual std::size_t water_points() const { return 0; }
+    virtual void water_positions(double* x, double* y, double* z) const {
+        (void)x;
+        (void)y;
+        (void)z;
+    }
+    virtual void set_water(double t, const double* const u[3], const double* const a[3]) {
+        (void)t;
+        (void)u;
+        (void)a;
+    }
 
     // The exact state (uc_state_save): its size in bytes, written into buffer, taken back. restore_state
     // refuses (false, error) a state of another size, version or model before anything changes; *changed

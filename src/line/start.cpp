@@ -446,7 +446,8 @@ bool CableSimulation::verify_statics(std::string& error) const {
         // Without bending stiffness the line's force on its anchor is its axial tension there: where
         // the two differ, the elements at the anchor do not hold the line's shape; where the axial force
         // is a compression, the loads along the line push it into its anchor.
-        const bool current = !loads_.current.uniform.isZero(0.0) || p.currentProfileRows > 0 || loads_.current.grid != nullptr;
+        const bool current = !loads_.current.uniform.isZero(0.0) || p.currentProfileRows > 0 || loads_.current.grid != nullptr ||
+                             loads_.current.pushed != nullptr;
         if (axial < 0.0 && current) {
             std::snprintf(text, sizeof text,
                           "the static equilibrium found pushes the line into its anchor: its axial force there is a "
@@ -476,7 +477,7 @@ bool CableSimulation::verify_statics(std::string& error) const {
                                                         kWeakBending * model_.line().length);
     // The elastic catenary has a constant EA: it is no answer for a line on a tension-strain curve.
     const bool exact = profileApplies_ && weakBending && !model_.axial_curve() && loads_.current.uniform.isZero(0.0) &&
-                       (p.currentProfileRows == 0 || loads_.current.scale == 0.0) && model_.sea().calm() && !loads_.current.grid &&
+                       (p.currentProfileRows == 0 || loads_.current.scale == 0.0) && model_.sea().calm() && !loads_.current.grid && !loads_.current.pushed &&
                        loads_.torque == 0.0 && profile_.solved &&
                        profile.lowest_clearance() > -model_.line().diameter &&
                        (seabedHeldStart_ || seabed_cross_slope().isZero(0.0));

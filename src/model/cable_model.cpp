@@ -9,7 +9,7 @@
 namespace uc {
 namespace {
 
-constexpr int kLoadQuadraturePoints = 3;
+constexpr int kLoadQuadraturePoints = CableModel::kLoadPoints;
 
 }  // namespace
 
@@ -620,6 +620,23 @@ void CableModel::restrict_to_free(const double* X, double* q) const {
     }
 }
 
+const double* CableModel::pushed_water(const Loads& loads, int e) {
+    return loads.current.pushed ? loads.current.pushed + static_cast<size_t>(6 * kLoadQuadraturePoints) * e : nullptr;
+}
+
+void CableModel::load_point_positions(const double* X, double* x, double* y, double* z) const {
+    for (int e = 0; e < nElements_; ++e) {
+        const ElementTables& tables = tables_[elementRun_[e]];
+        for (int g = 0; g < tables.nLoad; ++g) {
+            const Vec3 r = interpolate(tables.load[g].shape.N, X + elementOffset_[e]);
+            const size_t i = static_cast<size_t>(e) * kLoadQuadraturePoints + g;
+            x[i] = r.x();
+            y[i] = r.y();
+            z[i] = r.z();
+        }
+    }
+}
+
 WaveExpansion* CableModel::point_wave_cache(size_t i) const {
     return waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(nElements_) * kLoadQuadraturePoints + i];
 }
@@ -658,7 +675,8 @@ void CableModel::element_residual(int e, const double* X, const double* Xd, cons
     if (sec.bendingDamping > 0.0) add_bending_force(tables, sec.bendingDamping, xd, R);
     if (loads.torque != 0.0) add_torque_force(tables, loads.torque, x, R);
     add_hydro_force(tables, sec.fluid, loads.current, x, xd, xdd, R,
-                    waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
+                    waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints],
+                    pushed_water(loads, e));
     if (sec.seabed.enabled) add_seabed_force(tables, sec.seabed, x, xd, R, loads.axialContactOnly);
     if (loads.seabedHold && sec.seabed.enabled)
         add_seabed_hold(tables, sec.seabed, loads.seabedHoldAcross, x, loads.seabedHold + g0, R, loads.axialContactOnly);
@@ -694,7 +712,8 @@ void CableModel::element_jacobian_at(int e, const AxialProps& axial, const doubl
     if (sec.bendingDamping > 0.0) add_bending_jacobian(tables, sec.bendingDamping, C);
     if (loads.torque != 0.0) add_torque_jacobian(tables, loads.torque, x, K);
     add_hydro_jacobian(tables, sec.fluid, loads.current, x, xd, xdd, K, C, M,
-                       waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
+                       waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints],
+                       pushed_water(loads, e));
     if (sec.seabed.enabled) add_seabed_jacobian(tables, sec.seabed, x, xd, K, C, loads.axialContactOnly);
     if (loads.seabedHold && sec.seabed.enabled)
         add_seabed_hold_jacobian(tables, sec.seabed, loads.seabedHoldAcross, x, loads.seabedHold + elementOffset_[e], K,

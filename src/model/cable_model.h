@@ -240,6 +240,13 @@ public:
 
     const UCParams& params() const { return params_; }
     int n_elements() const { return nElements_; }
+    // The load points (the Morison terms' quadrature points): kLoadPoints per element, element-major.
+    static constexpr int kLoadPoints = 3;
+    int n_load_points() const { return kLoadPoints * nElements_; }
+    // Their positions at the global vector X, into x, y, z (n_load_points() each).
+    void load_point_positions(const double* X, double* x, double* y, double* z) const;
+    // Element e's slice of the water pushed by the importer (CurrentField::pushed), or null.
+    static const double* pushed_water(const Loads& loads, int e);
     int n_slots() const { return nSlots_; }  // node slots: nodes plus one per pinned joint
     int n_global() const { return 6 * nSlots_ + nInternal_; }
     int n_internal() const { return nInternal_; }  // internal strains (viscoelastic elements)

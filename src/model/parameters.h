@@ -51,6 +51,10 @@
 /* The body inputs of uc_body_derivatives: x, y, z, roll, pitch, yaw, vx, vy, vz, wx, wy, wz, q0, q1, q2, q3 */
 #define UC_BODY_DERIVATIVE_INPUTS 16
 
+/* water.source: the water at the lines' load points */
+#define UC_WATER_OWN 0    /* the FMU's current and waves */
+#define UC_WATER_PUSHED 1 /* pushed by the importer (FMI 3.0 arrays waterVelocity.*, waterAcceleration.*) */
+
 /* initMode values */
 #define UC_INIT_EQUILIBRIUM 0
 #define UC_INIT_STRAIGHT 1

@@ -118,6 +118,10 @@ std::string check_params(const UCParams& p) {
         if (!AxialCurve::build(p.axialCurveStrain, p.axialCurveTension, p.axialCurvePoints, curve, why))
             return "axialCurve.strain/tension[1.." + std::to_string(p.axialCurvePoints) + "], " + why;
     }
+    if (p.waterSource == UC_WATER_PUSHED && p.winchMode != 0)
+        return format_violation("water.source", p.waterSource, "{0} with winchMode != 0",
+                                "a winch's line changes its elements and so the load points whose water the importer "
+                                "pushes");
     // The viscoelastic model: a uniform line's (EAdynamic) or a section's (section[k].EAdynamic), its dynamic
     // stiffness above the static one.
     if (p.EAdynamic > 0.0 && p.nSections >= 2)

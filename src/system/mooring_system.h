@@ -119,6 +119,10 @@ public:
     bool step(double t, double h, const UCInputs& in, std::string& error) override;
     std::string take_event() override;
     void set_current_grid(std::shared_ptr<const CurrentGrid> grid) override;
+    // The water pushed by the importer: every line's load points one after the other (system/pushed_water.cpp).
+    std::size_t water_points() const override;
+    void water_positions(double* x, double* y, double* z) const override;
+    void set_water(double t, const double* const u[3], const double* const a[3]) override;
     // A step with a break strictly inside it ends at the break (time() then the break's), the state there.
     void set_stop_at_breaks(bool stop) override { stopAtBreaks_ = stop; }
 

@@ -270,26 +270,32 @@ Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& 
     return F;
 }
 
-void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentField& current, const double* X,
-                     const double* Xd, const double* Xdd, double* R, WaveExpansion* waveCache) {
+namespace {
+
+// The element's load points' loads, each with the water flow(g, r, U, A, dU, dA) gives it (dU, dA null: the
+// residual needs no gradients). One instance per source of water: the FMU's own water compiles as it did
+// before there was another.
+template <class Flow>
+void hydro_force(const ElementTables& e, const FluidProps& p, bool accelerates, const double* X, const double* Xd,
+                 const double* Xdd, double* R, Flow flow) {
     const bool waterline = reaches_waterline(e.length, p.diameter, X);
     if (waterline) add_waterline_buoyancy(e, p, X, R, nullptr);
     for (int g = 0; g < e.nLoad; ++g) {
         const QuadPoint& q = e.load[g];
         const Vec3 r = interpolate(q.shape.N, X);
         Vec3 U, A;
-        current.flow(r, U, A, waveCache ? waveCache + g : nullptr);  // the load without its Jacobian needs no gradients of the flow
+        flow(g, r, U, A, nullptr, nullptr);
         const Mat3 unused = Mat3::Zero();
         const Vec3 F = point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd),
-                                  interpolate(q.shape.N, Xdd), U, unused, current.accelerates(), A, unused, nullptr,
+                                  interpolate(q.shape.N, Xdd), U, unused, accelerates, A, unused, nullptr,
                                   !waterline);
         for (int a = 0; a < 4; ++a) Eigen::Map<Vec3>(R + 3 * a) += (q.weight * q.shape.N[a]) * F;
     }
 }
 
-void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const CurrentField& current,
-                        const double* X, const double* Xd, const double* Xdd, Mat12& K, Mat12& C,
-                        Mat12& M, WaveExpansion* waveCache) {
+template <class Flow>
+void hydro_jacobian(const ElementTables& e, const FluidProps& p, bool accelerates, const double* X, const double* Xd,
+                    const double* Xdd, Mat12& K, Mat12& C, Mat12& M, Flow flow) {
     PointLoadJacobian J;
     const bool waterline = reaches_waterline(e.length, p.diameter, X);
     if (waterline) add_waterline_buoyancy(e, p, X, nullptr, &K);
@@ -298,9 +304,9 @@ void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const Curre
         const Vec3 r = interpolate(q.shape.N, X);
         Vec3 U, A;
         Mat3 dU, dA;
-        current.flow(r, U, dU, A, dA, waveCache ? waveCache + g : nullptr);
+        flow(g, r, U, A, &dU, &dA);
         point_load(p, r, interpolate(q.shape.dN, X), interpolate(q.shape.N, Xd), interpolate(q.shape.N, Xdd), U,
-                   dU, current.accelerates(), A, dA, &J, !waterline);
+                   dU, accelerates, A, dA, &J, !waterline);
         for (int a = 0; a < 4; ++a) {
             const double wa = q.weight * q.shape.N[a];
             for (int b = 0; b < 4; ++b) {
@@ -310,6 +316,38 @@ void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const Curre
             }
         }
     }
+}
+
+}  // namespace
+
+void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentField& current, const double* X,
+                     const double* Xd, const double* Xdd, double* R, WaveExpansion* waveCache, const double* pushed) {
+    if (pushed) {  // the water the importer pushed, at each load point
+        hydro_force(e, p, true, X, Xd, Xdd, R, [&](int g, const Vec3&, Vec3& U, Vec3& A, Mat3*, Mat3*) {
+            current.pushed_flow(pushed + 6 * g, U, A);
+        });
+        return;
+    }
+    hydro_force(e, p, current.accelerates(), X, Xd, Xdd, R, [&](int g, const Vec3& r, Vec3& U, Vec3& A, Mat3*, Mat3*) {
+        current.flow(r, U, A, waveCache ? waveCache + g : nullptr);  // the load without its Jacobian needs no gradients of the flow
+    });
+}
+
+void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const CurrentField& current,
+                        const double* X, const double* Xd, const double* Xdd, Mat12& K, Mat12& C,
+                        Mat12& M, WaveExpansion* waveCache, const double* pushed) {
+    if (pushed) {  // the pushed water goes with the load point: no gradient
+        hydro_jacobian(e, p, true, X, Xd, Xdd, K, C, M, [&](int g, const Vec3&, Vec3& U, Vec3& A, Mat3* dU, Mat3* dA) {
+            current.pushed_flow(pushed + 6 * g, U, A);
+            dU->setZero();
+            dA->setZero();
+        });
+        return;
+    }
+    hydro_jacobian(e, p, current.accelerates(), X, Xd, Xdd, K, C, M,
+                   [&](int g, const Vec3& r, Vec3& U, Vec3& A, Mat3* dU, Mat3* dA) {
+                       current.flow(r, U, *dU, A, *dA, waveCache ? waveCache + g : nullptr);
+                   });
 }
 
 }  // namespace uc

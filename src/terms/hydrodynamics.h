@@ -52,6 +52,18 @@ struct CurrentField {
     // solver's continuation) but not currentScale; null: none.
     const CurrentGrid* grid = nullptr;
     double time = 0.0;              // of the wave kinematics and of the grid
+    // The water pushed by the importer (water.source 1, docs/waves.md): 6 values per load point of the line
+    // (velocity, local acceleration), given at pushedTime at the load points' positions then. The line's load
+    // points take it in place of everything else here (add_hydro_force's `pushed`); point bodies do not.
+    // Null: none.
+    const double* pushed = nullptr;
+    double pushedTime = 0.0;
+    // One load point's pushed water from its 6 values: the velocity carried on by the acceleration over the
+    // step, u + a (time - pushedTime), the acceleration held; times profileScale (the statics' continuation).
+    void pushed_flow(const double* values, Vec3& U, Vec3& A) const {
+        A = profileScale * Eigen::Map<const Vec3>(values + 3);
+        U = profileScale * Eigen::Map<const Vec3>(values) + (time - pushedTime) * A;
+    }
     // Where the points asked for lay against the grid since the owner last cleared it (CurrentGrid's
     // Outside bits): what the line warns of once.
     mutable unsigned gridOutside = 0;
@@ -103,10 +115,13 @@ Vec3 point_load(const FluidProps& p, const Vec3& r, const Vec3& rp, const Vec3& 
 // Bezier hull is entirely below z = 0 or above z = d takes its load points alone (phi is 1 or 0 on
 // it); one that reaches the ramp has its buoyancy integrated exactly, piecewise between the crossings
 // of z = 0 and z = d, with its exact Jacobian.
+// pushed (null, or 6 values per load point of the element: CurrentField::pushed) replaces the current's water
+// at the load points; its gradient is zero (the values go with the load point over the step).
 void add_hydro_force(const ElementTables& e, const FluidProps& p, const CurrentField& current, const double* X,
-                     const double* Xd, const double* Xdd, double* R, WaveExpansion* waveCache = nullptr);
+                     const double* Xd, const double* Xdd, double* R, WaveExpansion* waveCache = nullptr,
+                     const double* pushed = nullptr);
 void add_hydro_jacobian(const ElementTables& e, const FluidProps& p, const CurrentField& current,
                         const double* X, const double* Xd, const double* Xdd, Mat12& K, Mat12& C,
-                        Mat12& M, WaveExpansion* waveCache = nullptr);
+                        Mat12& M, WaveExpansion* waveCache = nullptr, const double* pushed = nullptr);
 
 }  // namespace uc

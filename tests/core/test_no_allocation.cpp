@@ -129,3 +129,45 @@ TEST(NoAllocation, CommunicationStepsWithProjectedErrorControlDoNotAllocate) {
     p.projectedErrorControl = 1;
     expect_steps_without_allocation(p);
 }
+
+// The water pushed by the importer (water.source 1): after the first step, the positions read and the water
+// set before every step allocate nothing, and neither do the steps.
+TEST(NoAllocation, StepsWithPushedWaterDoNotAllocate) {
+    UCParams p = busy_scene(0);
+    p.wavesMode = 0;
+    p.waterSource = UC_WATER_PUSHED;
+    CableSimulation sim(p);
+    const size_t n = sim.water_points();
+    ASSERT_EQ(n, 3u * static_cast<size_t>(p.nElements));
+    std::vector<double> buffer(9 * n, 0.0);
+    double* x = buffer.data() + 6 * n;
+    const double* const u[3] = {buffer.data(), buffer.data() + n, buffer.data() + 2 * n};
+    const double* const a[3] = {buffer.data() + 3 * n, buffer.data() + 4 * n, buffer.data() + 5 * n};
+    auto push = [&](double t) {  // a current along x that grows with depth and time, accelerating
+        sim.water_positions(x, x + n, x + 2 * n);
+        for (size_t i = 0; i < n; ++i) {
+            buffer[i] = 0.2 + 0.001 * t - 1e-4 * x[2 * n + i];
+            buffer[3 * n + i] = 0.001;
+        }
+        sim.set_water(t, u, a);
+    };
+    UCInputs in{};
+    in.towVelocity[0] = 1.0;
+    in.torque = 50.0;
+    std::string error;
+    push(0.0);
+    ASSERT_TRUE(sim.initialize(0.0, in, error)) << error;
+    push(0.0);
+    ASSERT_TRUE(sim.step(0.0, 0.5, in, error)) << error;
+    bool ok = true;
+    const long allocations = count_allocations([&] {
+        for (int k = 1; k < 20; ++k) {
+            in.tow[0] = 0.5 * k;
+            push(0.5 * k);
+            ok = ok && sim.step(0.5 * k, 0.5, in, error);
+        }
+    });
+    ASSERT_TRUE(ok) << error;
+    EXPECT_EQ(allocations, 0);
+    EXPECT_GT(sim.outputs().towTensionMax, sim.outputs().towTensionMin);
+}
