@@ -763,6 +763,8 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              'Section 7: damping c_d of the dynamic spring of the viscoelastic model, as axialDampingDynamic'),
     Variable('section[8].axialDampingDynamic', 367, 'parameter', 'Real', 'N.s', 0.0, 0.0, 10000000000000.0,
              'Section 8: damping c_d of the dynamic spring of the viscoelastic model, as axialDampingDynamic'),
+    Variable('seabed.file', 368, 'parameter', 'String', None, '', None, None,
+             "Path of a seabed grid in MoorDyn's SeafloorFile or MoorPy's bathymetry format (relative: against the FMU's resources directory, then the working directory), in place of the plane at waterDepth; empty: the plane (or a lineFile deck's SeafloorFile)"),
     Variable('tow.x', 1001, 'input', 'Real', 'm', 0.0, None, None,
              'x coordinate of the tow point'),
     Variable('tow.y', 1002, 'input', 'Real', 'm', 0.0, None, None,

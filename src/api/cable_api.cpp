@@ -246,6 +246,27 @@ extern "C" int uc_set_current_text(UCCable* c, int mode, const char* text, size_
     }
 }
 
+extern "C" int uc_set_seabed_text(UCCable* c, const char* text, size_t length, char* msg, size_t msgSize) {
+    try {
+        std::string error;
+        if (!c || (!text && length > 0)) {
+            write_message(msg, msgSize, "uc_set_seabed_text: NULL pointer");
+            return 1;
+        }
+        std::shared_ptr<const uc::SeabedGrid> grid = uc::SeabedGrid::read(std::string_view(text ? text : "", length), error);
+        if (!grid) {
+            write_message(msg, msgSize, error);
+            return 1;
+        }
+        write_message(msg, msgSize, grid->describe());
+        c->simulation->set_seabed_grid(std::move(grid));
+        return 0;
+    } catch (const std::exception& e) {
+        write_message(msg, msgSize, e.what());
+        return 1;
+    }
+}
+
 extern "C" int uc_line_file_apply(const char* text, size_t length, UCParams* p, double towPoint[3], char* notes,
                                   size_t notesSize, char* msg, size_t msgSize) {
     return uc_line_file_apply_with(text, length, nullptr, 0, p, towPoint, notes, notesSize, msg, msgSize);
