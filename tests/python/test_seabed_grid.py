@@ -123,3 +123,59 @@ def test_a_seabed_file_that_cannot_be_read_is_refused_naming_the_file_and_line(m
     with pytest.raises(Exception):
         c.initialize()
     assert any("seabedSlope = 3" in m and "seabed.file" in m for _, _, m in c.messages), c.messages
+
+
+def test_the_chain_on_a_valley_against_moorpy_and_across_a_ridge_against_moordyn(fmu_file, tmp_path):
+    """studies.comparisons.seabed_grid: on the valley (a floor of slope 0.04 along the line, on which MoorPy's
+    chord between the seabed under the ends is exact) the FMU's statics are MoorPy's with its bathymetry file
+    (measured 1.5e-5 at the fairlead, 1.7e-5 at the anchor: the catenary against 40 elements); across the
+    ridge MoorDyn after its relaxation (its contact vertical) holds the suspended part as the FMU does
+    (measured 3.4e-4 at the fairlead), the grounded length within a segment. Before, seabed.file and a
+    SeafloorFile that is not a plane did not exist."""
+    from studies.comparisons import seabed_grid as study
+
+    fmu = study.fmu_statics(fmu_file, study.valley, tmp_path)
+    moorpy = study.moorpy_statics(study.valley, tmp_path)
+    assert fmu["fairlead"] == pytest.approx(moorpy["fairlead"], rel=1e-4)
+    assert fmu["anchor"] == pytest.approx(moorpy["anchor"], rel=1e-4)
+    assert fmu["fairlead after 5 s"] == pytest.approx(fmu["fairlead"], rel=1e-9)  # the start is at rest
+    fmu = study.fmu_statics(fmu_file, study.ridge, tmp_path)
+    moordyn = study.moordyn_relaxed(study.ridge, tmp_path)
+    assert fmu["fairlead"] == pytest.approx(moordyn["fairlead"], rel=1e-3)
+    assert abs(fmu["grounded"] - moordyn["grounded"]) < 900.0 / 40
+
+
+def test_a_state_restored_into_a_new_instance_reads_the_grid_again(fmu_file, tmp_path):
+    """The grid is not in the saved state: a new instance reads seabed.file when the state is set into it and
+    runs on bit for bit."""
+    from studies.comparisons import seabed_grid as study
+
+    (tmp_path / "grid.txt").write_text(study.bathymetry_text(study.ridge))  # MoorPy's format
+    deck = tmp_path / "chain.dat"
+    deck.write_text(study.deck_text(study.ridge))
+    parameters = {"lineFile": str(deck), "seabed.file": str(tmp_path / "grid.txt")}
+    a = CableFMU(fmu_file, parameters=parameters)
+    fresh = CableFMU(fmu_file, parameters=parameters, logging_on=True)
+    try:
+        a.initialize(inputs={"tow.z": study.FAIRLEAD_Z})
+        fresh.initialize(inputs={"tow.z": study.FAIRLEAD_Z})
+        for k in range(2):
+            a.set({"tow.x": 0.5 * (k + 1), "tow.vx": 0.5})
+            a.do_step(1.0, float(k))
+        saved = a.serialize_state(a.get_state())
+        expected = []
+        for k in range(3):
+            a.set({"tow.x": 1.0 - 0.3 * k, "tow.vx": -0.3})
+            a.do_step(1.0, 2.0 + k)
+            expected.append(a.get_reals(OUTPUTS))
+        fresh.set_state(fresh.deserialize_state(saved))
+        got = []
+        for k in range(3):
+            fresh.set({"tow.x": 1.0 - 0.3 * k, "tow.vx": -0.3})
+            fresh.do_step(1.0, 2.0 + k)
+            got.append(fresh.get_reals(OUTPUTS))
+        assert np.array_equal(np.array(got), np.array(expected))
+        assert any("seabed.file" in m and "read: 49 x 13 points" in m for _, _, m in fresh.messages)
+    finally:
+        a.free()
+        fresh.free()

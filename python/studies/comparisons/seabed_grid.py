@@ -117,7 +117,7 @@ moordyn.Close(s)
 """
 
 
-def moordyn_relaxed(height, directory: Path, held: int = 60) -> dict:
+def moordyn_relaxed(height, directory: Path, held: int = 200) -> dict:
     """MoorDyn on the same deck with the grid as its SeafloorFile, after its dynamic relaxation and `held` s held
     (in a process of its own: peers.moordyn). grounded: the nodes with a seabed force times the segment length."""
     import subprocess
@@ -129,7 +129,7 @@ def moordyn_relaxed(height, directory: Path, held: int = 60) -> dict:
     script.write_text(MOORDYN_SCRIPT)
     done = subprocess.run([sys.executable, str(script), str(deck), "0", "0", str(FAIRLEAD_Z), str(held)],
                           cwd=directory, capture_output=True, text=True, check=True)
-    return json.loads(done.stdout.strip().splitlines()[-1])
+    return json.loads(done.stdout[done.stdout.rindex('{"fairlead"'):].splitlines()[0])
 
 
 def main(fmu_path: str | None = None) -> dict:
