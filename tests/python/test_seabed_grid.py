@@ -179,3 +179,29 @@ def test_a_state_restored_into_a_new_instance_reads_the_grid_again(fmu_file, tmp
     finally:
         a.free()
         fresh.free()
+
+
+def test_a_mooring_system_deck_gives_each_line_the_grid(fmu_file, tmp_path):
+    """The ridge deck with a second chain 40 m aside (on the valley's flank): a mooring system, each line on
+    the grid; the first line starts as the one-line deck does, to round-off."""
+    from studies.comparisons import seabed_grid as study
+
+    (tmp_path / "grid.txt").write_text(study.seafloor_text(study.ridge))
+    one = tmp_path / "one.dat"
+    one.write_text(study.deck_text(study.ridge, "grid.txt"))
+    point = "2    Coupled     0        0     -70     0      0       0      0"
+    text = one.read_text().replace(point, point + f"\n3    Fixed       -850     40    {study.ridge(-850.0, 40.0):.6f}"
+                                   "     0      0       0      0\n4    Coupled     0        40    -70     0      0       0      0")
+    line = "1    chain     1        2        900       40       -"
+    (tmp_path / "two.dat").write_text(text.replace(line, line + "\n2    chain     3        4        900       40       -"))
+    single = CableFMU(fmu_file, parameters={"lineFile": str(one)})
+    system = CableFMU(fmu_file, parameters={"lineFile": str(tmp_path / "two.dat")}, logging_on=True)
+    try:
+        single.initialize(inputs={"tow.z": study.FAIRLEAD_Z})
+        system.initialize()
+        lines = system.get_reals(["line[1].fairleadTension", "line[1].anchorTension", "line[2].fairleadTension"])
+        np.testing.assert_allclose(lines[:2], single.get_reals(["towTension", "endTension"]), rtol=1e-9)
+        assert lines[2] == pytest.approx(lines[0], rel=0.01)  # on the flank: its seabed 0.11 m higher
+    finally:
+        single.free()
+        system.free()
