@@ -148,13 +148,18 @@ void CableSimulation::check_seabed_hold() {
         }
     }
     if (!(worst > p.seabedFriction)) return;
-    char text[400];
+    char slope[200];
+    if (model_.seabed_grid())
+        std::snprintf(slope, sizeof slope, "the grid of seabed.file '%.80s'", p.seabedFile);
+    else
+        std::snprintf(slope, sizeof slope, "seabedSlope %.6g deg, seabedSlopeHeading %.6g deg", p.seabedSlope,
+                      p.seabedSlopeHeading);
+    char text[500];
     std::snprintf(text, sizeof text,
-                  "warning: seabedFriction = %.6g: the line rests across the slope (seabedSlope %.6g deg, "
-                  "seabedSlopeHeading %.6g deg) and its static profile holds there with a friction of %.3g of the "
-                  "seabed's normal force (in the element around arc length %.6g m); the line slides sideways down the slope once the "
-                  "run starts",
-                  p.seabedFriction, p.seabedSlope, p.seabedSlopeHeading, worst, at);
+                  "warning: seabedFriction = %.6g: the line rests across the slope (%s) and its static profile holds "
+                  "there with a friction of %.3g of the seabed's normal force (in the element around arc length "
+                  "%.6g m); the line slides sideways down the slope once the run starts",
+                  p.seabedFriction, slope, worst, at);
     add_event(text);
 }
 
