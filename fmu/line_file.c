@@ -149,6 +149,15 @@ static fmi2Status apply_text(UCInstance* inst, UCParams* p, const char* function
     read_companions(path, text, length, &companions);
     const int rc = uc_line_file_apply_with(text, length, companions.files, companions.n, p, vessel, notes,
                                            notes != NULL ? UC_NOTES_SIZE : 0, inst->msg, sizeof inst->msg);
+    /* a deck's SeafloorFile that is not a plane: likewise the path it was read from */
+    if (rc == 0 && p->seabedFile[0] != '\0' && inst->params.seabedFile[0] == '\0') {
+        for (int k = 0; k < companions.n; ++k) {
+            if (strcmp(companions.files[k].name, p->seabedFile) == 0 && strlen(companions.paths[k]) < sizeof p->seabedFile) {
+                strcpy(p->seabedFile, companions.paths[k]);
+                break;
+            }
+        }
+    }
     /* the deck's Currents 2 or 5 names its data file beside the deck: the path it was read from instead */
     if (rc == 0 && p->currentsMode != 0 && inst->params.currentsFile[0] == '\0') {
         for (int k = 0; k < companions.n; ++k) {
@@ -340,4 +349,13 @@ fmi2Status uc_current_file_load(UCInstance* inst, const UCParams* p, UCCable* ca
     if (p->currentsMode == 0) return fmi2OK;
     CurrentTarget target = {p, cable};
     return load_named_file(inst, "currents.file", p->currentsFile, function, apply_currents, &target);
+}
+
+static int apply_seabed(UCInstance* inst, const char* text, size_t length, void* context) {
+    return uc_set_seabed_text((UCCable*)context, text, length, inst->msg, sizeof inst->msg);
+}
+
+fmi2Status uc_seabed_file_load(UCInstance* inst, const UCParams* p, UCCable* cable, const char* function) {
+    if (p->seabedFile[0] == '\0') return fmi2OK;
+    return load_named_file(inst, "seabed.file", p->seabedFile, function, apply_seabed, cable);
 }

@@ -34,4 +34,11 @@ fmi2Status uc_wave_file_load(UCInstance* inst, UCParams* p, const char* function
  * its line) is fmi2Error, logged naming `function`. */
 fmi2Status uc_current_file_load(UCInstance* inst, const UCParams* p, UCCable* cable, const char* function);
 
+/* seabed.file (docs/model.md, "A seabed given as a grid"): reads p->seabedFile (looked up as lineFile; for a
+ * deck's SeafloorFile that is not a plane the path the deck's companion was read from) and gives its grid to
+ * the core (uc_set_seabed_text); nothing where it is empty. Logs the file used (logEvents); an unreadable
+ * file (naming every path tried) or a refused grid (naming the file and its line) is fmi2Error, logged
+ * naming `function`. */
+fmi2Status uc_seabed_file_load(UCInstance* inst, const UCParams* p, UCCable* cable, const char* function);
+
 #endif /* UNDERWATERCABLE_FMU_LINE_FILE_H */

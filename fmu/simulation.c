@@ -87,7 +87,8 @@ static fmi2Status initialize_core(UCInstance* inst, const char* function, fmi2St
     } else {
         inst->cable = uc_create(&inst->coreParams, inst->msg, sizeof inst->msg);
         if (inst->cable == NULL) return fail_with_core_message(inst, function, "cannot create the cable model", fmi2Error);
-        if (uc_current_file_load(inst, &inst->coreParams, inst->cable, function) != fmi2OK) {
+        if (uc_current_file_load(inst, &inst->coreParams, inst->cable, function) != fmi2OK ||
+            uc_seabed_file_load(inst, &inst->coreParams, inst->cable, function) != fmi2OK) {
             uc_instance_drop_core(inst);
             return fmi2Error;
         }
@@ -159,7 +160,7 @@ fmi2Status uc_sim_create_core(UCInstance* inst, const UCParams* p, UCCable** cab
         }
     }
     /* the current's data are parameters outside the saved state: read again for a new core */
-    if (uc_current_file_load(inst, p, *cable, function) != fmi2OK) {
+    if (uc_current_file_load(inst, p, *cable, function) != fmi2OK || uc_seabed_file_load(inst, p, *cable, function) != fmi2OK) {
         uc_free(*cable);
         *cable = NULL;
         return fmi2Error;

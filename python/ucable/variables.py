@@ -766,6 +766,8 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              'Section 8: damping c_d of the dynamic spring of the viscoelastic model, as axialDampingDynamic'),
     Variable('water.source', 368, 'parameter', 'Integer', None, 0, 0.0, 1.0,
              "Water at the lines' load points: 0 the FMU's current and waves, 1 pushed by the importer through the FMI 3.0 arrays waterVelocity.* and waterAcceleration.* at waterPoint.* (FMI 3.0 only)"),
+    Variable('seabed.file', 369, 'parameter', 'String', None, '', None, None,
+             "Path of a seabed grid in MoorDyn's SeafloorFile or MoorPy's bathymetry format (relative: against the FMU's resources directory, then the working directory), in place of the plane at waterDepth; empty: the plane (or a lineFile deck's SeafloorFile)"),
     Variable('tow.x', 1001, 'input', 'Real', 'm', 0.0, None, None,
              'x coordinate of the tow point'),
     Variable('tow.y', 1002, 'input', 'Real', 'm', 0.0, None, None,

@@ -238,25 +238,47 @@ extern "C" int uc_wave_file_apply(const char* text, size_t length, UCParams* p, 
     }
 }
 
-extern "C" int uc_set_current_text(UCCable* c, int mode, const char* text, size_t length, char* msg, size_t msgSize) {
+namespace {
+
+// Data read from a file's text and given to the simulation (a current's grid, a seabed's grid): `read`
+// turns the text into the data or null with error set, `give` hands the data to c's simulation.
+template <class Read, class Give>
+int set_text(const char* function, UCCable* c, const char* text, size_t length, char* msg, size_t msgSize, Read read,
+             Give give) {
     try {
         std::string error;
         if (!c || (!text && length > 0)) {
-            write_message(msg, msgSize, "uc_set_current_text: NULL pointer");
+            write_message(msg, msgSize, std::string(function) + ": NULL pointer");
             return 1;
         }
-        std::shared_ptr<const uc::CurrentGrid> grid = uc::CurrentGrid::read(mode, std::string_view(text ? text : "", length), error);
-        if (!grid) {
+        auto data = read(std::string_view(text ? text : "", length), error);
+        if (!data) {
             write_message(msg, msgSize, error);
             return 1;
         }
-        write_message(msg, msgSize, grid->describe());
-        c->simulation->set_current_grid(std::move(grid));
+        write_message(msg, msgSize, data->describe());
+        give(*c->simulation, std::move(data));
         return 0;
     } catch (const std::exception& e) {
         write_message(msg, msgSize, e.what());
         return 1;
     }
+}
+
+}  // namespace
+
+extern "C" int uc_set_current_text(UCCable* c, int mode, const char* text, size_t length, char* msg, size_t msgSize) {
+    return set_text(
+        "uc_set_current_text", c, text, length, msg, msgSize,
+        [mode](std::string_view t, std::string& error) { return uc::CurrentGrid::read(mode, t, error); },
+        [](uc::Simulation& s, std::shared_ptr<const uc::CurrentGrid> grid) { s.set_current_grid(std::move(grid)); });
+}
+
+extern "C" int uc_set_seabed_text(UCCable* c, const char* text, size_t length, char* msg, size_t msgSize) {
+    return set_text(
+        "uc_set_seabed_text", c, text, length, msg, msgSize,
+        [](std::string_view t, std::string& error) { return uc::SeabedGrid::read(t, error); },
+        [](uc::Simulation& s, std::shared_ptr<const uc::SeabedGrid> grid) { s.set_seabed_grid(std::move(grid)); });
 }
 
 extern "C" int uc_line_file_apply(const char* text, size_t length, UCParams* p, double towPoint[3], char* notes,

@@ -78,6 +78,13 @@ int uc_wave_file_apply(const char* text, size_t length, UCParams* p, char* msg, 
  * Returns 0 with msg = a description of the data, or 1 with msg = "line <n>: <what>". */
 int uc_set_current_text(UCCable* c, int mode, const char* text, size_t length, char* msg, size_t msgSize);
 
+/* The seabed given as a grid (seabed.file, a deck's SeafloorFile that is not a plane; docs/model.md "A seabed
+ * given as a grid"): the text of the file in MoorDyn's SeafloorFile or MoorPy's bathymetry format, read and
+ * given to every line of c in place of its seabed. Call it after uc_create or uc_create_system and before
+ * uc_initialize or uc_state_restore (the grid is not in the saved state). Returns 0 with msg = a description
+ * of the grid, or 1 with msg = "line <n>: <what>". */
+int uc_set_seabed_text(UCCable* c, const char* text, size_t length, char* msg, size_t msgSize);
+
 /* Defaults: the Hopland 1993 tow cable, free lower end, hinged top, 20 elements. */
 /* The inputs' start values (zero, but currentScale 1): initialize every UCInputs with it. */
 void uc_inputs_default(UCInputs* in);

@@ -458,11 +458,19 @@ bool read_seafloor(const LineFileCompanions& companions, LineFileSeabed& seabed,
     for (size_t k = 3; k < rows.size(); ++k)
         off = std::max(off, std::abs(abc[0] + abc[1] * rows[k].values[0] + abc[2] * rows[k].values[1] - rows[k].values[2]));
     const double tolerance = 1e-6 * std::max({extent, height, 1.0});  // the file's printed digits
-    if (!(off <= tolerance))
-        return refuse("its grid is not a plane (a point lies " + number_text(off) + " m off the best plane " +
-                      "z = " + number_text(abc[0]) + " + " + number_text(abc[1]) + " x + " + number_text(abc[2]) +
-                      " y): the FMU's seabed is a plane (seabedSlope, seabedSlopeHeading); a gridded bathymetry "
-                      "is not supported");
+    if (!(off <= tolerance)) {
+        // a grid: the seabed interpolated in it (seabed.file), the water depth its mean depth as MoorDyn's
+        std::string why;
+        seabed.grid = SeabedGrid::read(file->text, why);
+        if (!seabed.grid) return refuse(why);
+        seabed.meanDepth = -seabed.grid->mean_height();
+        notes.push_back(at_line(row, "SeafloorFile: its grid is not a plane (a point lies " + number_text(off) +
+                                         " m off the best plane): the seabed is the grid (seabed.file), " +
+                                         seabed.grid->describe() + ", interpolated bilinearly as MoorDyn does, contact "
+                                         "along its local normal; the water depth of the waves its mean depth " +
+                                         number_text(seabed.meanDepth) + " m (waterDepth, in place of WtrDpth's)"));
+        return true;
+    }
     seabed.plane = true;
     seabed.planeDepth = -abc[0];
     const double gradient = std::hypot(abc[1], abc[2]);

@@ -15,6 +15,7 @@
 #include "core/types.h"
 #include "model/parameters.h"
 #include "terms/current_grid.h"
+#include "terms/seabed_grid.h"
 
 namespace uc {
 
@@ -105,6 +106,10 @@ struct LineFileSeabed {
     int seafloorFileRow = 0;
     bool plane = false;
     double planeDepth = 0.0, slope = 0.0, heading = 0.0;  // [m], [deg], [deg]
+    // Where its grid is not a plane: the grid (seabed.file, the file by its name beside the deck) and the
+    // water depth MoorDyn takes for it, its mean depth.
+    std::shared_ptr<const SeabedGrid> grid;
+    double meanDepth = 0.0;
 };
 
 // The line of a deck: what the parameters need, plus notes for the log.

@@ -304,7 +304,11 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
     const int keep = p.deckKeep;
     const LineFileSeabed& bed = line.seabed;
     const double d = line.sections.back().diameter;  // the section on the seabed at the anchor
-    if (!(keep & UC_DECK_KEEP_WATER_DEPTH)) p.waterDepth = bed.plane ? bed.planeDepth : line.waterDepth;
+    if (!(keep & UC_DECK_KEEP_WATER_DEPTH))
+        p.waterDepth = bed.plane ? bed.planeDepth : bed.grid ? bed.meanDepth : line.waterDepth;
+    // a grid: the file by its name beside the deck (the FMU's adapter puts the path it read it from in its
+    // place), unless the importer set seabed.file
+    if (bed.grid && p.seabedFile[0] == '\0') std::snprintf(p.seabedFile, sizeof p.seabedFile, "%s", bed.seafloorFile.c_str());
     if (bed.plane) {  // the SeafloorFile's plane (read_seafloor)
         p.seabedSlope = bed.slope;
         p.seabedSlopeHeading = bed.heading;

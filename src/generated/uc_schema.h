@@ -193,6 +193,7 @@ typedef struct UCParams {
     double EAdynamicSlope; /* EAdynamicSlope: slope β of the dynamic stiffness in the mean load (MoorDyn's `EA_s|EA_Dc|EA_D_Lm`): EA_d = `EAdynamic` + β × the element's mean tension (the tension of its static spring); 0 (the default), a constant `EAdynamic` */
     double axialDampingDynamic; /* axialDampingDynamic [N.s]: damping c_d in parallel with the dynamic spring `EAdynamic` (MoorDyn's BA_d in `BA_s|BA_d`); `axialDamping` is then the damping beside the static spring; used only with `EAdynamic` > 0 */
     int waterSource; /* water.source: water at the lines' load points: 0 the FMU's own current and waves, 1 pushed by the importer (FMI 3.0 only: `waterVelocity.*`, `waterAcceleration.*` at `waterPoint.*`; [docs/waves.md](docs/waves.md), "Water pushed by the importer") */
+    char seabedFile[UC_STRING_CAPACITY]; /* seabed.file: path of a seabed given as a grid of heights, in MoorDyn's `SeafloorFile` format (a line `nx ny`, the x values, the y values, then `x y z` rows) or MoorPy's bathymetry format (a title line, `nGridX nx`, `nGridY ny`, the x values, then rows `y d_1 .. d_nx` of depths, positive down): interpolated bilinearly, held at the edge values outside the grid; contact along the local normal, friction along the local surface; in place of the plane at `waterDepth` (which still sets the water depth of the waves), with `seabedSlope` 0; a relative path is looked up as `lineFile`'s; read when the model is made and again when a saved state is restored into a new instance; empty (the default): the plane, or a `lineFile` deck's `SeafloorFile` that is not a plane ([docs/model.md](docs/model.md), "A seabed given as a grid") */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
     int waveComponentCount; /* (not an FMU variable) waves.mode 3: the number of given wave components in waveComponents (from waves.file or a lineFile deck) */
@@ -645,6 +646,7 @@ typedef struct UCOutputs {
     X(366, "section[7].axialDampingDynamic", REAL, PARAMETER, section[6].axialDampingDynamic) \
     X(367, "section[8].axialDampingDynamic", REAL, PARAMETER, section[7].axialDampingDynamic) \
     X(368, "water.source", INTEGER, PARAMETER, waterSource) \
+    X(369, "seabed.file", STRING, PARAMETER, seabedFile) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \

@@ -86,6 +86,12 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
     // under the origin; e_z where it is flat)
     const Vec3 n = model.seabed().normal;
     const double base = p.waterDepth * n.z();
+    // on a grid: the height along the local normal above the grid (seabed_height: the grid as given)
+    const bool grid = model.seabed_grid() != nullptr;
+    auto clearance_of = [&](const Vec3& r) {
+        if (!grid) return n.dot(r) + base;
+        return seabed_normal(model.seabed(), r.x(), r.y()).z() * (r.z() - model.seabed_height(r.x(), r.y()));
+    };
     for (int e = 0; e < model.n_elements(); ++e) {
         const SectionProps& section = model.element_section(e);
         const double l = model.element_length(e);
@@ -93,11 +99,13 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
         const double reach = resting_clearance(section);
         const double ds = l / kSeabedSamples;
         const double* Xe = X + model.element_offset(e);
-        out.minSeabedClearance = std::min(out.minSeabedClearance, lowest_height(Xe, l, n) + base);
+        if (!grid) out.minSeabedClearance = std::min(out.minSeabedClearance, lowest_height(Xe, l, n) + base);
         for (int k = e == 0 ? 0 : 1; k <= kSeabedSamples; ++k) {
             const double xi = static_cast<double>(k) / kSeabedSamples;
             const double s = model.runs().size() == 1 ? (e + xi) * l : s0 + xi * l;
-            const double clearance = n.dot(interpolate(shapes.at(k, l).N, Xe)) + base;
+            const Vec3 r = interpolate(shapes.at(k, l).N, Xe);
+            const double clearance = clearance_of(r);
+            if (grid) out.minSeabedClearance = std::min(out.minSeabedClearance, clearance);  // at the samples
             const double gap = clearance - reach;  // <= 0: resting on the seabed
             if (p.enableSeabed && s > 0.0) {
                 if (gap <= 0.0 && previousGap <= 0.0) {
@@ -122,8 +130,9 @@ void seabed_outputs(const CableModel& model, const double* X, const double* Xd, 
         const double* Xde = model.element_velocities(e, X, Xd, material);
         for (int g = 0; g < points.count; ++g) {  // the residual holds minus the load
             const QuadPoint& q = points.points[g];
-            out.seabedContactForce -=
-                q.weight * n.dot(seabed_load(section.seabed, interpolate(q.shape.N, Xe), interpolate(q.shape.N, Xde), nullptr));
+            const Vec3 r = interpolate(q.shape.N, Xe);
+            const Vec3 normal = grid ? seabed_normal(section.seabed, r.x(), r.y()) : n;
+            out.seabedContactForce -= q.weight * normal.dot(seabed_load(section.seabed, r, interpolate(q.shape.N, Xde), nullptr));
         }
     }
 }
@@ -143,10 +152,11 @@ void geometry_outputs(const CableModel& model, const double* X, const StationSha
         // resting on the seabed, as seabed_outputs counts it.
         const int last = model.n_elements() - 1;
         // heights and the angle along the seabed's normal (e_z where it is flat)
-        const Vec3 n = model.seabed().normal;
-        const double nearAnchor = n.dot(interpolate(shapes.near_bottom().N, X + gN - 6));
-        const bool grounded =
-            p.enableSeabed && nearAnchor + p.waterDepth * n.z() <= resting_clearance(model.element_section(last));
+        const Vec3 near = interpolate(shapes.near_bottom().N, X + gN - 6);
+        const Vec3 n = seabed_normal(model.seabed(), near.x(), near.y());
+        const double clearance = model.seabed_grid() ? n.z() * (near.z() - model.seabed_height(near.x(), near.y()))
+                                                     : n.dot(near) + p.waterDepth * n.z();
+        const bool grounded = p.enableSeabed && clearance <= resting_clearance(model.element_section(last));
         const Vec3 up = -at(X, gN + 3).normalized();  // from the anchor up the cable
         out.anchorUplift = grounded ? 0.0 : std::asin(std::clamp(n.dot(up), -1.0, 1.0));
     }

@@ -18,7 +18,7 @@ void CableSimulation::prepare_release(const UCParams& released, bool flip) {
 
 void CableSimulation::unrelease() {
     if (state_.released == 0) return;
-    replace_model(CableModel(*heldParams_, nullptr, state_.graded ? &layout_ : nullptr));
+    replace_model(CableModel(*heldParams_, nullptr, state_.graded ? &layout_ : nullptr, model_.seabed_grid()));
     state_.released = 0;
     std::string error;  // (the held model's tolerances were accepted when it was initialized)
     if (state_.tensionScale > 0.0) set_integrator_tolerances(error);
@@ -46,7 +46,7 @@ bool CableSimulation::build_released(int released, std::string& error) {
     } else if (state_.graded) {
         layout.nodes = layout_.nodes;
     }
-    CableModel model(*releasedParams_, nullptr, layout.nodes.empty() ? nullptr : &layout);
+    CableModel model(*releasedParams_, nullptr, layout.nodes.empty() ? nullptr : &layout, model_.seabed_grid());
     bool same = model.n_slots() == held.n_slots() && model.n_elements() == held.n_elements();
     const double L = held.line().length;
     for (int j = 0; same && j < model.n_slots(); ++j) {

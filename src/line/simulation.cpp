@@ -155,6 +155,10 @@ void CableSimulation::set_current_grid(std::shared_ptr<const CurrentGrid> grid) 
     currentGridWarned_ = 0;
 }
 
+void CableSimulation::set_seabed_grid(std::shared_ptr<const SeabedGrid> grid) {
+    replace_model(CableModel(model_.params(), nullptr, nullptr, std::move(grid)));
+}
+
 void CableSimulation::warn_outside_current_grid() {
     const unsigned fresh = loads_.current.gridOutside & ~currentGridWarned_;
     if (fresh == 0 || currentGrid_ == nullptr) return;
@@ -498,7 +502,7 @@ bool CableSimulation::restart_from(std::string& error) {
     return true;
 }
 
-void CableSimulation::rebuild(const WinchMesh& mesh) { replace_model(CableModel(model_.params(), &mesh)); }
+void CableSimulation::rebuild(const WinchMesh& mesh) { replace_model(CableModel(model_.params(), &mesh, nullptr, model_.seabed_grid())); }
 
 void CableSimulation::replace_model(CableModel&& model) {
     state_.statsBase = total_stats();

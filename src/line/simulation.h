@@ -105,6 +105,7 @@ public:
     // The event of the last step to log (a winch limit reached), or empty; cleared by the call.
     std::string take_event() override;
     void set_current_grid(std::shared_ptr<const CurrentGrid> grid) override;
+    void set_seabed_grid(std::shared_ptr<const SeabedGrid> grid) override;
     const CurrentGrid* current_grid() const { return currentGrid_.get(); }
     std::size_t water_points() const override;
     void water_positions(double* x, double* y, double* z) const override;

@@ -12,6 +12,7 @@
 #include "core/types.h"
 #include "model/parameters.h"
 #include "terms/current_grid.h"
+#include "terms/seabed_grid.h"
 
 namespace uc {
 
@@ -67,6 +68,11 @@ public:
         (void)u;
         (void)a;
     }
+
+    // The seabed given as a grid (seabed.file, a deck's SeafloorFile) in place of the plane of the
+    // parameters, before the first initialize; null: the plane. Not state: a restored instance is given it
+    // again.
+    virtual void set_seabed_grid(std::shared_ptr<const SeabedGrid> grid) = 0;
 
     // The exact state (uc_state_save): its size in bytes, written into buffer, taken back. restore_state
     // refuses (false, error) a state of another size, version or model before anything changes; *changed

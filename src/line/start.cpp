@@ -58,10 +58,35 @@ bool CableSimulation::static_profile(const Vec3& towPoint, const Vec3& anchor, L
     // the line weighs its dry weight above the water surface at z = 0, as the elements do; the
     // seabed's height under the lower end and its slope
     const Vec3& lower = towOnTop ? anchor : towPoint;
-    profile.set_seabed_gradient(model_.seabed_gradient());
-    return profile.solve(towOnTop ? towPoint : anchor, lower, segments, points, p.enableSeabed != 0,
-                         model_.seabed_height(lower.x(), lower.y()), std::max(model_.line().diameter, 1e-3 * L), why,
-                         0.0);
+    const Vec3& upper = towOnTop ? towPoint : anchor;
+    auto solve = [&](const Eigen::Vector2d& gradient) {
+        profile.set_seabed_gradient(gradient);
+        return profile.solve(upper, lower, segments, points, p.enableSeabed != 0,
+                             model_.seabed_height(lower.x(), lower.y()), std::max(model_.line().diameter, 1e-3 * L), why,
+                             0.0);
+    };
+    if (!model_.seabed_grid()) return solve(model_.seabed_gradient());
+    // A grid: the profile on the local plane at the touchdown, through the seabed under the lower end and
+    // under the touchdown (the profile sees the slope along its vertical plane only), found by a few
+    // solves from the grid's gradient under the lower end; the statics on the grid close the rest.
+    const Eigen::Vector2d toward(upper.x() - lower.x(), upper.y() - lower.y());
+    const double span = toward.norm();
+    if (!(span > 0.0)) return solve(model_.seabed_gradient(lower.x(), lower.y()));
+    const Eigen::Vector2d u = toward / span;
+    bool solved = solve(model_.seabed_gradient(lower.x(), lower.y()));
+    for (int pass = 0; pass < 4 && solved && profile.grounded_length() > 0.0; ++pass) {
+        Vec3 r, tangent;
+        profile.at(profile.touchdown(), r, tangent);
+        const double run = u.dot(Eigen::Vector2d(r.x() - lower.x(), r.y() - lower.y()));
+        if (!(run > 1e-6 * L)) break;
+        // the grid's height under the touchdown's point of the vertical plane, over the run from the lower end
+        const double slope = (model_.seabed_height(lower.x() + run * u.x(), lower.y() + run * u.y()) -
+                              model_.seabed_height(lower.x(), lower.y())) / run;
+        const double previous = profile.touchdown();
+        solved = solve(slope * u);
+        if (solved && std::abs(profile.touchdown() - previous) <= 1e-3 * L) break;
+    }
+    return solved;
 }
 
 // An anchored line starts from its static profile, into X; false where that does not apply. From
@@ -92,8 +117,12 @@ Vec3 CableSimulation::seabed_cross_slope() const {
         return Vec3::Zero();
     const Vec3 chord = state_.tow.p() - profile_.far;
     const Vec3 side = Vec3(-chord.y(), chord.x(), 0.0).normalized();  // horizontal, across the profile's plane
-    if (!side.allFinite() || side.dot(seabed.normal) == 0.0) return Vec3::Zero();
-    return (side - side.dot(seabed.normal) * seabed.normal).normalized();
+    // on a grid: its local plane under the touchdown
+    Vec3 touchdown = profile_.far, tangent;
+    if (seabed.grid) profile_.profile.at(profile_.profile.touchdown(), touchdown, tangent);
+    const Vec3 n = seabed_normal(seabed, touchdown.x(), touchdown.y());
+    if (!side.allFinite() || side.dot(n) == 0.0) return Vec3::Zero();
+    return (side - side.dot(n) * n).normalized();
 }
 
 void CableSimulation::check_seabed_hold() {
@@ -119,13 +148,18 @@ void CableSimulation::check_seabed_hold() {
         }
     }
     if (!(worst > p.seabedFriction)) return;
-    char text[400];
+    char slope[200];
+    if (model_.seabed_grid())
+        std::snprintf(slope, sizeof slope, "the grid of seabed.file '%.80s'", p.seabedFile);
+    else
+        std::snprintf(slope, sizeof slope, "seabedSlope %.6g deg, seabedSlopeHeading %.6g deg", p.seabedSlope,
+                      p.seabedSlopeHeading);
+    char text[500];
     std::snprintf(text, sizeof text,
-                  "warning: seabedFriction = %.6g: the line rests across the slope (seabedSlope %.6g deg, "
-                  "seabedSlopeHeading %.6g deg) and its static profile holds there with a friction of %.3g of the "
-                  "seabed's normal force (in the element around arc length %.6g m); the line slides sideways down the slope once the "
-                  "run starts",
-                  p.seabedFriction, p.seabedSlope, p.seabedSlopeHeading, worst, at);
+                  "warning: seabedFriction = %.6g: the line rests across the slope (%s) and its static profile holds "
+                  "there with a friction of %.3g of the seabed's normal force (in the element around arc length "
+                  "%.6g m); the line slides sideways down the slope once the run starts",
+                  p.seabedFriction, slope, worst, at);
     add_event(text);
 }
 
@@ -158,7 +192,7 @@ void CableSimulation::grade_mesh(const Vec3& towPoint, const Vec3& farPoint, boo
     if (graded != state_.graded || !(layout == layout_)) {
         state_.graded = graded;
         layout_ = layout;
-        replace_model(CableModel(model_.params(), nullptr, graded ? &layout_ : nullptr));
+        replace_model(CableModel(model_.params(), nullptr, graded ? &layout_ : nullptr, model_.seabed_grid()));
     }
     const Vec3 held = model_.far_end().anchored ? model_.anchor() : farPoint;
     if (apply && held != ps.far) solve_for(held);
@@ -222,8 +256,10 @@ bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
         if (steady) model_.straight_line(towPoint, d, X.data());
         // where the line along d meets the seabed (its height along the normal n falls at n.d per
         // metre); it trails along the seabed from there, the trail turned into its plane
-        const Vec3 n = model_.seabed().normal;
-        const double clearance = n.dot(towPoint) + p.waterDepth * n.z();
+        const Vec3 n = seabed_normal(model_.seabed(), towPoint.x(), towPoint.y());
+        const double clearance = model_.seabed_grid()
+                                     ? n.z() * (towPoint.z() - model_.seabed_height(towPoint.x(), towPoint.y()))
+                                     : n.dot(towPoint) + p.waterDepth * n.z();
         const double reach = n.dot(d) < 0.0 ? clearance / -n.dot(d) : INFINITY;
         if (model_.seabed().sloped) trail = (trail - trail.dot(n) * n).normalized();
         for (int i = 0; i < model_.n_slots(); ++i) {
@@ -290,7 +326,10 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
     // where the seabed is: "z = -waterDepth = ..." or, sloped, its height under the point
     auto seabed_at = [&](const Vec3& r) {
         char where[160];
-        if (model_.seabed().sloped)
+        if (model_.seabed_grid())
+            std::snprintf(where, sizeof where, "at z = %.6g m under (%.6g, %.6g) (the grid of seabed.file '%.60s')",
+                          model_.seabed_height(r.x(), r.y()), r.x(), r.y(), p.seabedFile);
+        else if (model_.seabed().sloped)
             std::snprintf(where, sizeof where, "at z = %.6g m under (%.6g, %.6g) (waterDepth %.6g m, seabedSlope %.6g deg)",
                           model_.seabed_height(r.x(), r.y()), r.x(), r.y(), p.waterDepth, p.seabedSlope);
         else
@@ -480,7 +519,8 @@ bool CableSimulation::verify_statics(std::string& error) const {
                        (p.currentProfileRows == 0 || loads_.current.scale == 0.0) && model_.sea().calm() && !loads_.current.grid && !loads_.current.pushed &&
                        loads_.torque == 0.0 && profile_.solved &&
                        profile.lowest_clearance() > -model_.line().diameter &&
-                       (seabedHeldStart_ || seabed_cross_slope().isZero(0.0));
+                       (seabedHeldStart_ || seabed_cross_slope().isZero(0.0)) &&
+                       !model_.seabed_grid();  // on a grid the profile lies on one local plane: a start, no answer
     if (!exact) return true;
     const double top = (towOnTop ? profile.top_force() : profile.bottom_force()).norm();
     const double bottom = (towOnTop ? profile.bottom_force() : profile.top_force()).norm();
@@ -511,6 +551,7 @@ std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const 
         beyond = !check_params(q).empty();
         if (beyond) return false;
         CableSimulation trial(q);
+        if (model_.seabed_grid()) trial.set_seabed_grid(model_.seabed_grid());
         trial.adviseMesh_ = false;
         std::string ignored;
         if (!trial.initialize(t0, tow, far, env, ignored)) return false;
@@ -571,6 +612,11 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
     if (p.currentsMode != 0 && currentGrid_ == nullptr) {
         error = "currents.mode = " + std::to_string(p.currentsMode) + ": the current's data (currents.file = '" +
                 std::string(p.currentsFile) + "') were not given to the model (uc_set_current_text)";
+        return false;
+    }
+    if (p.seabedFile[0] != '\0' && !model_.seabed_grid()) {
+        error = "seabed.file = '" + std::string(p.seabedFile) + "': the seabed's grid was not given to the model "
+                "(uc_set_seabed_text)";
         return false;
     }
     for (double v : {tow.position[0], tow.position[1], tow.position[2], tow.velocity[0], tow.velocity[1],

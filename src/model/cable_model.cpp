@@ -133,8 +133,9 @@ void TowTrajectory::evaluate(double t, Vec3& p, Vec3& v, Vec3& a) const {
     a = a0 + s * (6.0 * c3_ + s * (12.0 * c4_ + s * (20.0 * c5_)));
 }
 
-CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const StaticLayout* layout)
-    : params_(params), farEnd_(FarEnd::of(params.bottomEnd)) {
+CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const StaticLayout* layout,
+                       std::shared_ptr<const SeabedGrid> seabedGrid)
+    : params_(params), seabedGrid_(std::move(seabedGrid)), farEnd_(FarEnd::of(params.bottomEnd)) {
     if (params.winchMode != 0) {
         const int n0 = params.nSections <= 1 ? params.nElements : params.section[0].nElements;
         const double l0 = params.nSections <= 1 ? params.length : params.section[0].length;
@@ -176,6 +177,7 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const Sta
     if (farEnd_.body) {
         endContact_.footprint = body_footprint(body_.mass, body_.volume, last.fluid.diameter);
         endContact_.seabed.depth = params.waterDepth;
+        endContact_.seabed.restWeight = 0.0;
         endContact_.seabed.smoothing = 0.05 * std::max(body_size(body_.mass, body_.volume), last.fluid.diameter);
         if (params.seabedRest == 1)
             rest_at_depth(endContact_.seabed,
@@ -230,19 +232,28 @@ double CableModel::resting_height(double x, double y) const {
     const SectionProps& last = sections_.back();
     const double weight = submerged_weight(last.fluid);
     // the penetration is along the normal: its height is that over n_z
+    const double nz = seabed_normal(last.seabed, x, y).z();
     return uc::seabed_height(last.seabed, x, y) -
-           (weight > 0.0 ? resting_penetration(last.seabed, weight) / last.seabed.normal.z() : 0.0);
+           (weight > 0.0 ? resting_penetration(last.seabed, weight, nz) / nz : 0.0);
 }
 
 double CableModel::seabed_height(double x, double y) const {
     SeabedProps given = sections_[0].seabed;
     given.depth = params_.waterDepth;
+    given.restWeight = 0.0;
     return uc::seabed_height(given, x, y);
 }
 
 Eigen::Vector2d CableModel::seabed_gradient() const {
     const Vec3& n = sections_[0].seabed.normal;
     return Eigen::Vector2d(-n.x() / n.z(), -n.y() / n.z());
+}
+
+Eigen::Vector2d CableModel::seabed_gradient(double x, double y) const {
+    if (!seabedGrid_) return seabed_gradient();
+    double gx = 0.0, gy = 0.0;
+    seabedGrid_->height(x, y, &gx, &gy);
+    return Eigen::Vector2d(gx, gy);
 }
 
 void CableModel::build_sections(const UCParams& p) {
@@ -297,6 +308,7 @@ void CableModel::build_sections(const UCParams& p) {
         s.seabed.friction = p.seabedFriction;
         s.seabed.smoothing = 0.05 * in.diameter;
         set_slope(s.seabed, p.seabedSlope, p.seabedSlopeHeading);
+        set_grid(s.seabed, seabedGrid_.get());
         if (p.seabedRest == 1) rest_at_depth(s.seabed, submerged_weight(s.fluid));
         sections_.push_back(s);
         s0 += in.length;
@@ -444,6 +456,7 @@ void CableModel::place_attachments(const std::vector<std::pair<double, PointBody
         at.contact.footprint = body_footprint(at.body.mass, at.body.volume, d);
         at.contact.seabed = sections_[k].seabed;
         at.contact.seabed.depth = params_.waterDepth;
+        at.contact.seabed.restWeight = 0.0;
         at.contact.seabed.smoothing = 0.05 * std::max(body_size(at.body.mass, at.body.volume), d);
         if (params_.seabedRest == 1)
             rest_at_depth(at.contact.seabed, (at.body.mass - params_.waterDensity * at.body.volume) * params_.gravity /

@@ -14,6 +14,7 @@
 // The equations of prescribed DOFs are not solved: their residuals are the reaction forces.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "model/parameters.h"
@@ -212,8 +213,10 @@ public:
     // winch: the first section's mesh when winchMode != 0 (null: the start, all elements nominal).
     // layout: the mesh graded by the static profile and the anchor's resting height (null: each
     // section's elements of equal length between its attachments, the anchor where it is given).
+    // seabedGrid: the seabed given as a grid (seabed.file, a deck's SeafloorFile), null for the plane of
+    // the parameters.
     explicit CableModel(const UCParams& params, const WinchMesh* winch = nullptr,
-                        const StaticLayout* layout = nullptr);
+                        const StaticLayout* layout = nullptr, std::shared_ptr<const SeabedGrid> seabedGrid = nullptr);
 
     // The winch (winchMode != 0): only the top element's length changes between remeshes; it is
     // the one mutable part of the description (its tables and the arc lengths below it follow).
@@ -305,6 +308,9 @@ public:
     // -waterDepth where it is flat, and the horizontal gradient of that height (zero where flat).
     double seabed_height(double x, double y) const;
     Eigen::Vector2d seabed_gradient() const;
+    // The gradient under (x, y): the plane's, or the grid's local one.
+    Eigen::Vector2d seabed_gradient(double x, double y) const;
+    const std::shared_ptr<const SeabedGrid>& seabed_grid() const { return seabedGrid_; }
     // Torque of torqueMode 2 for a twist angle of the far end against the tow point: the line's
     // torsional compliance is the sum of L_k / GJ_k over its sections.
     double torque_for_twist(double twist) const;
@@ -373,6 +379,7 @@ private:
     void build_dof_map();
 
     UCParams params_;
+    std::shared_ptr<const SeabedGrid> seabedGrid_;
     FarEnd farEnd_;
     int nElements_ = 0;
     int nSlots_ = 0;

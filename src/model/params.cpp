@@ -97,6 +97,12 @@ std::string check_params(const UCParams& p) {
     if (p.currentsMode == 0 && p.currentsFile[0] != '\0')
         return "currents.file = '" + std::string(p.currentsFile) + "' is set with currents.mode = 0: set currents.mode 2 "
                "(a profile changing in time) or 5 (a grid in x, y, z and t), or leave currents.file empty";
+    if (p.seabedFile[0] != '\0' && p.seabedSlope != 0.0)
+        return "seabed.file = '" + std::string(p.seabedFile) + "' is set with seabedSlope = " + std::to_string(p.seabedSlope) +
+               " deg: the grid is the seabed in place of the plane (set seabedSlope 0, or leave seabed.file empty)";
+    if (p.seabedFile[0] != '\0' && p.enableSeabed == 0)
+        return "seabed.file = '" + std::string(p.seabedFile) + "' is set with enableSeabed = 0: set enableSeabed 1 for "
+               "the seabed of the grid, or leave seabed.file empty";
     if (ownSea && p.wavesHeight > 0.0) {  // breaking: H over the (peak) wavelength above 1/7
         const double k = wave_number(2.0 * kPi / p.wavesPeriod, p.waterDepth, p.gravity);
         const double limit = 2.0 * kPi / k / 7.0;

@@ -124,7 +124,12 @@ void OneLineSystem::complete_outputs(UCOutputs& out) const {
 }
 
 MooringSystem::MooringSystem(const UCParams& base, const MooringDeck& deck)
-    : base_(base), deck_(deck), currentGrid_(deck.sea.currentGrid) {}
+    : base_(base), deck_(deck), currentGrid_(deck.sea.currentGrid), seabedGrid_(deck.seabed.grid) {}
+
+void MooringSystem::set_seabed_grid(std::shared_ptr<const SeabedGrid> grid) {
+    seabedGrid_ = std::move(grid);
+    for (auto& line : lines_) line->set_seabed_grid(seabedGrid_);
+}
 
 void MooringSystem::set_current_grid(std::shared_ptr<const CurrentGrid> grid) {
     currentGrid_ = std::move(grid);
@@ -149,6 +154,7 @@ bool MooringSystem::build(std::string& error) {
         }
         lines_.push_back(std::make_unique<CableSimulation>(p));
         if (currentGrid_) lines_.back()->set_current_grid(currentGrid_);
+        if (seabedGrid_) lines_.back()->set_seabed_grid(seabedGrid_);
         for (size_t f = 0; f < failures_.size(); ++f) {  // what the line becomes where its end lets go
             const MooringFailure::End* e = released_end(static_cast<int>(f));
             if (!e || e->line != static_cast<int>(k)) continue;
@@ -633,7 +639,7 @@ bool MooringSystem::profile_end_forces(int k, const Vec3& top, const Vec3& far, 
     };
     if (std::hypot(upper.x() - lower.x(), upper.y() - lower.y()) <= 1e-9 * L && vertical()) return true;
     LineProfile profile;
-    profile.set_seabed_gradient(lines_[k]->model().seabed_gradient());
+    profile.set_seabed_gradient(lines_[k]->model().seabed_gradient(lower.x(), lower.y()));
     if (!profile.solve(upper, lower, segments, points, p.enableSeabed != 0,
                        lines_[k]->model().seabed_height(lower.x(), lower.y()),
                        std::max(lines_[k]->model().line().diameter, 1e-3 * L), why, 0.0))

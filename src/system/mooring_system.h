@@ -123,6 +123,7 @@ public:
     std::size_t water_points() const override;
     void water_positions(double* x, double* y, double* z) const override;
     void set_water(double t, const double* const u[3], const double* const a[3]) override;
+    void set_seabed_grid(std::shared_ptr<const SeabedGrid> grid) override;
     // A step with a break strictly inside it ends at the break (time() then the break's), the state there.
     void set_stop_at_breaks(bool stop) override { stopAtBreaks_ = stop; }
 
@@ -390,6 +391,8 @@ private:
     // The current given as data (the deck's Currents 2 or 5, or currents.file), every line's too, and the
     // time its free nodes take it at: the initial time, then the end of the step being taken.
     std::shared_ptr<const CurrentGrid> currentGrid_;
+    // The seabed given as a grid (the deck's SeafloorFile that is not a plane, or seabed.file), every line's.
+    std::shared_ptr<const SeabedGrid> seabedGrid_;
     double waterTime_ = 0.0;
     // per line: its sections and joints for its static profile, from the fairlead (s from there)
     std::vector<std::vector<LineProfile::Segment>> segments_;

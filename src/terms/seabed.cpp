@@ -1,4 +1,5 @@
-// seabed.cpp - penalty contact, damping and regularized friction on a plane seabed, flat or sloped.
+// seabed.cpp - penalty contact, damping and regularized friction on a plane seabed, flat or sloped, or on
+// the local plane of a grid.
 #include "terms/seabed.h"
 
 #include <algorithm>
@@ -57,16 +58,59 @@ void set_slope(SeabedProps& p, double slopeDeg, double headingDeg) {
     p.normal = p.sloped ? Vec3(std::sin(a) * std::cos(psi), std::sin(a) * std::sin(psi), std::cos(a)) : Vec3::UnitZ();
 }
 
-double resting_penetration(const SeabedProps& p, double weight) {
+void set_grid(SeabedProps& p, const SeabedGrid* grid) {
+    p.grid = grid;
+    if (grid) {
+        p.sloped = true;
+        p.normal = Vec3::UnitZ();
+    }
+}
+
+double resting_penetration(const SeabedProps& p, double weight, double nz) {
     // k g(p) = w n_z (the weight's part along the normal) on the branches of contact_ramp
-    const double ramp = weight * p.normal.z() / p.stiffness;
+    const double ramp = weight * nz / p.stiffness;
     if (ramp >= 0.5 * p.smoothing) return ramp + 0.5 * p.smoothing;
     return std::sqrt(2.0 * p.smoothing * ramp);
 }
 
+double resting_penetration(const SeabedProps& p, double weight) { return resting_penetration(p, weight, p.normal.z()); }
+
 void rest_at_depth(SeabedProps& p, double weight) {
+    if (!(p.enabled && p.stiffness > 0.0 && weight > 0.0)) return;
+    // a grid: raised under each point (local_penetration)
+    if (p.grid) {
+        p.restWeight = weight;
+        return;
+    }
     // raised by the penetration along the normal: the plane's depth under the origin by that over n_z
-    if (p.enabled && p.stiffness > 0.0 && weight > 0.0) p.depth -= resting_penetration(p, weight) / p.normal.z();
+    p.depth -= resting_penetration(p, weight) / p.normal.z();
+}
+
+double local_penetration(const SeabedProps& p, const Vec3& r, Vec3& n) {
+    if (!p.grid) {
+        n = p.sloped ? p.normal : Vec3::UnitZ();
+        return p.sloped ? -p.depth * n.z() - n.dot(r) : -p.depth - r.z();
+    }
+    double gx = 0.0, gy = 0.0;
+    const double h = p.grid->height(r.x(), r.y(), &gx, &gy);
+    const double nz = 1.0 / std::sqrt(1.0 + gx * gx + gy * gy);
+    n = Vec3(-gx * nz, -gy * nz, nz);
+    const double rest = p.restWeight > 0.0 ? resting_penetration(p, p.restWeight, nz) : 0.0;
+    return nz * (h - r.z()) + rest;
+}
+
+double grid_contact_height(const SeabedProps& p, double x, double y) {
+    double gx = 0.0, gy = 0.0;
+    const double h = p.grid->height(x, y, &gx, &gy);
+    if (!(p.restWeight > 0.0)) return h;
+    const double nz = 1.0 / std::sqrt(1.0 + gx * gx + gy * gy);
+    return h + resting_penetration(p, p.restWeight, nz) / nz;
+}
+
+Vec3 seabed_normal(const SeabedProps& p, double x, double y) {
+    Vec3 n;
+    local_penetration(p, Vec3(x, y, 0.0), n);
+    return n;
 }
 
 // The cubic Hermite curve is the Bezier curve with control points r0, r0 + l t0 / 3, r1 - l t1 / 3,
@@ -74,6 +118,25 @@ void rest_at_depth(SeabedProps& p, double weight) {
 // On a sloped plane the same holds for the height along its normal, n.r, a linear function.
 bool above_contact(const ElementTables& e, const SeabedProps& p, const double* X) {
     const double third = e.length / 3.0;
+    if (p.grid) {
+        // the control points' lowest height against the highest node of the cells under their box, raised
+        // by the largest rest penetration over the steepest cell's n_z (resting_penetration grows with n_z)
+        double lowest = HUGE_VAL, x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
+        for (int c = 0; c < 4; ++c) {
+            const double* r = X + (c < 2 ? 0 : 6);
+            const double* t = X + (c < 2 ? 3 : 9);
+            const double step = c == 1 ? third : c == 2 ? -third : 0.0;
+            const double x = r[0] + step * t[0], y = r[1] + step * t[1], z = r[2] + step * t[2];
+            lowest = std::min(lowest, z);
+            x0 = std::min(x0, x);
+            x1 = std::max(x1, x);
+            y0 = std::min(y0, y);
+            y1 = std::max(y1, y);
+        }
+        const double steepest = p.grid->steepest();
+        const double lift = p.restWeight > 0.0 ? resting_penetration(p, p.restWeight, 1.0) * std::sqrt(1.0 + steepest * steepest) : 0.0;
+        return lowest > p.grid->highest(x0, x1, y0, y1) + lift + kHullMargin;
+    }
     if (p.sloped) {
         const Vec3 n = p.normal;
         const double a = n.dot(Eigen::Map<const Vec3>(X)), ta = n.dot(Eigen::Map<const Vec3>(X + 3));
@@ -87,10 +150,13 @@ bool above_contact(const ElementTables& e, const SeabedProps& p, const double* X
 
 namespace {
 
-// The contact on a sloped plane: the flat seabed's law along its normal n, friction along its surface.
+// The contact on a local plane (a sloped plane, or a grid's under r): the flat seabed's law along its
+// normal n, friction along its surface. On a grid the Jacobian leaves out the normal's turning across a
+// cell (a force of the order of the weight per length times the cell's twist, beside the contact's
+// stiffness).
 Vec3 sloped_load(const SeabedProps& p, const Vec3& r, const Vec3& rd, SeabedJacobian* J) {
-    const Vec3& n = p.normal;
-    const double penetration = -p.depth * n.z() - n.dot(r);
+    Vec3 n;
+    const double penetration = local_penetration(p, r, n);
     double fraction = 0.0;
     const double ramp = contact_ramp(penetration, p.smoothing, &fraction);
     if (fraction == 0.0) return Vec3::Zero();
@@ -184,9 +250,10 @@ void add_seabed_jacobian(const ElementTables& e, const SeabedProps& p, const dou
 
 namespace {
 
-// Penetration [m] along the normal of a plane seabed, flat or sloped.
+// Penetration [m] along the normal of the seabed's local plane.
 double penetration_at(const SeabedProps& p, const Vec3& r) {
-    return p.sloped ? -p.depth * p.normal.z() - p.normal.dot(r) : -p.depth - r.z();
+    Vec3 n;
+    return local_penetration(p, r, n);
 }
 
 }  // namespace
@@ -215,12 +282,12 @@ void add_seabed_hold(const ElementTables& e, const SeabedProps& p, const Vec3& a
 void add_seabed_hold_jacobian(const ElementTables& e, const SeabedProps& p, const Vec3& across, const double* X,
                               const double* held, Mat12& K, bool axialOnly) {
     if (above_contact(e, p, X)) return;
-    const Vec3 n = p.sloped ? p.normal : Vec3::UnitZ();
     const ContactPoints points = contact_points(e, axialOnly);
     for (int g = 0; g < points.count; ++g) {
         const QuadPoint& q = points.points[g];
         const Vec3 r = interpolate(q.shape.N, X);
-        const double pen = penetration_at(p, r);
+        Vec3 n;
+        const double pen = local_penetration(p, r, n);
         double fraction = 0.0;
         const double ramp = contact_ramp(pen, p.smoothing, &fraction);
         if (fraction == 0.0) continue;

@@ -1,6 +1,6 @@
-// seabed.h - a plane seabed through z = -waterDepth under the origin, flat or sloped: penalty contact
-// per unit length with damping and regularized Coulomb friction (docs/model.md). Residual sign:
-// F = -f_seabed.
+// seabed.h - a plane seabed through z = -waterDepth under the origin, flat or sloped, or a seabed given as a
+// grid of heights (SeabedGrid): penalty contact per unit length with damping and regularized Coulomb
+// friction (docs/model.md). Residual sign: F = -f_seabed.
 //
 // With the seabed's upward unit normal n (e_z where it is flat), the penetration is
 // p = -n.(r - (0, 0, -waterDepth)) (-waterDepth - z on a flat seabed). The normal force per length is
@@ -10,9 +10,14 @@
 // Friction opposes the velocity along the surface v_t = r_dot - (n.r_dot) n with magnitude
 // mu k g(p) |v_t| / sqrt(|v_t|^2 + v_eps^2): regularized Coulomb, the same coefficient axially and
 // laterally.
+//
+// On a grid the same law acts in the local plane under each contact point: the tangent plane of the grid's
+// bilinear interpolant at (x, y), its upward normal n = (-dz/dx, -dz/dy, 1) / |.|, the penetration along it
+// n_z (h(x, y) - z); one code path with the sloped plane, whose local plane is the plane itself.
 #pragma once
 
 #include "terms/hermite_element.h"
+#include "terms/seabed_grid.h"
 
 namespace uc {
 
@@ -27,15 +32,34 @@ struct SeabedProps {
     // descends. Flat: e_z, and the contact takes the flat seabed's shorter path.
     bool sloped = false;
     Vec3 normal = Vec3::UnitZ();
+    // A seabed given as a grid (seabed.file, a deck's SeafloorFile): its heights in place of the plane
+    // (`sloped` is set, `normal` is e_z and `depth` unused); `restWeight`, the weight per length of
+    // footprint the contact surface is raised for (rest_at_depth), 0 for none. Owned by the model.
+    const SeabedGrid* grid = nullptr;
+    double restWeight = 0.0;
 };
+
+// Gives the seabed the grid (null: the plane of its parameters): sets `grid` and `sloped`.
+void set_grid(SeabedProps& p, const SeabedGrid* grid);
+
+// The local plane of the contact under r: its upward unit normal n and the penetration along it [m]
+// (positive below the contact surface); the plane itself on a plane seabed.
+double local_penetration(const SeabedProps& p, const Vec3& r, Vec3& n);
+
+// The seabed's upward unit normal under (x, y): e_z flat, the plane's, the grid's local one.
+Vec3 seabed_normal(const SeabedProps& p, double x, double y);
 
 // The plane of seabedSlope [deg] descending along seabedSlopeHeading [deg] (from +x towards +y):
 // sets `sloped` and `normal` (flat at a zero slope).
 void set_slope(SeabedProps& p, double slopeDeg, double headingDeg);
 
-// Height [m] of the contact surface above (x, y): -depth on a flat seabed.
+double grid_contact_height(const SeabedProps& p, double x, double y);
+
+// Height [m] of the contact surface above (x, y): -depth on a flat seabed; on a grid its height raised by
+// the rest penetration (rest_at_depth) over its local n_z.
 inline double seabed_height(const SeabedProps& p, double x, double y) {
     if (!p.sloped) return -p.depth;
+    if (p.grid) return grid_contact_height(p, x, y);
     return -p.depth - (p.normal.x() * x + p.normal.y() * y) / p.normal.z();
 }
 
@@ -62,12 +86,15 @@ double body_footprint(double mass, double volume, double diameter);  // b^2 / d 
 Vec3 point_contact_load(const PointContact& c, const Vec3& r, const Vec3& rd, SeabedJacobian* J);
 
 // Penetration [m] at which a line of this submerged weight per length [N/m] rests on the seabed
-// (along its normal: a sloped seabed carries the weight's normal part, weight n_z).
+// (along its normal: a sloped seabed carries the weight's normal part, weight n_z; on a grid, where its
+// normal's vertical part is nz).
 double resting_penetration(const SeabedProps& p, double weight);
+double resting_penetration(const SeabedProps& p, double weight, double nz);
 
 // `seabedRest` 1: the contact surface raised by the rest penetration of this weight per length
-// (of contact footprint), so that what rests there lies at z = -waterDepth. Nothing for a buoyant
-// or weightless part, or a disabled seabed.
+// (of contact footprint), so that what rests there lies at z = -waterDepth (on a grid at its height,
+// raised under each point by the rest penetration of its local plane). Nothing for a buoyant or
+// weightless part, or a disabled seabed.
 void rest_at_depth(SeabedProps& p, double weight);
 
 // True when no point of the element (its 12 DOFs at X) can touch the contact band, so that

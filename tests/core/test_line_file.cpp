@@ -794,11 +794,27 @@ TEST(LineFileSeabed, ASeafloorFileThatIsAPlaneIsTheSlopedSeabed) {
     bool said = false;
     for (const std::string& n : r.line.notes) said |= n.find("SeafloorFile: its grid is a plane") != std::string::npos;
     EXPECT_TRUE(said);
-    // a grid that is not a plane, and a file that is missing, are refused naming the file
+    // a grid that is not a plane is the seabed as a grid (seabed.file, the file by its name beside the deck),
+    // the water depth its mean depth as MoorDyn takes it; a file that is missing is refused naming the file
     const Read bumpy = read_with(d, {{"Mooring/3D_seafloor/bed.txt", seafloor_grid(-320.0, 0.05, -0.02, 2.0)}});
-    ASSERT_FALSE(bumpy.ok);
-    EXPECT_NE(bumpy.error.find("SeafloorFile 'Mooring/3D_seafloor/bed.txt': its grid is not a plane"), std::string::npos)
-        << bumpy.error;
+    ASSERT_TRUE(bumpy.ok) << bumpy.error;
+    ASSERT_TRUE(bumpy.line.seabed.grid);
+    EXPECT_NEAR(bumpy.line.seabed.grid->height(0.0, 0.0), -318.0, 1e-9);
+    UCParams q;
+    uc_params_default(&q);
+    ASSERT_TRUE(uc::apply_line_file(bumpy.line, q, error)) << error;
+    EXPECT_STREQ(q.seabedFile, "Mooring/3D_seafloor/bed.txt");
+    EXPECT_EQ(q.seabedSlope, 0.0);
+    double mean = 0.0;
+    for (double x : {-1000.0, -400.0, 0.0, 250.0})
+        for (double y : {-300.0, 0.0, 500.0}) mean += (-320.0 + 0.05 * x - 0.02 * y) / 12.0;
+    EXPECT_NEAR(q.waterDepth, -(mean + 2.0 / 12.0), 1e-9);
+    said = false;
+    for (const std::string& n : bumpy.line.notes) said |= n.find("SeafloorFile: its grid is not a plane") != std::string::npos;
+    EXPECT_TRUE(said);
+    const Read broken = read_with(d, {{"Mooring/3D_seafloor/bed.txt", "4 3\n-1000 -400 250 0\n-300 0 500\n"}});
+    ASSERT_FALSE(broken.ok);
+    EXPECT_NE(broken.error.find("SeafloorFile 'Mooring/3D_seafloor/bed.txt': "), std::string::npos) << broken.error;
     const Read missing = read_with(d, {});
     ASSERT_FALSE(missing.ok);
     EXPECT_NE(missing.error.find("it could not be read"), std::string::npos) << missing.error;

@@ -90,6 +90,8 @@ NO_OUT_OF_RANGE_VALUE = {
                   "waves.mode 3 is an error at initialization (tests/python/test_wave_components.py)",
     "currents.file": "String: any path is admissible; a file that cannot be read or refused data with "
                      "currents.mode 2 or 5 is an error at initialization (tests/python/test_current_data.py)",
+    "seabed.file": "String: any path is admissible; a file that cannot be read, a refused grid or set with "
+                   "seabedSlope or without enableSeabed is an error at initialization (tests/python/test_seabed_grid.py)",
 }
 
 
