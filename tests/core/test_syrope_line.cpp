@@ -14,6 +14,7 @@
 #include "line/simulation.h"
 #include "model/cable_model.h"
 #include "model/params.h"
+#include "weightless_rope.h"
 
 using namespace uc;
 
@@ -46,18 +47,7 @@ double dynamic_strain(double T) { return std::log1p(kBeta * T / kAlpha) / kBeta;
 constexpr double kLength = 10.0;
 
 UCParams syrope_rope(int form, double k1, double k2) {
-    UCParams p;
-    uc_params_default(&p);
-    p.length = kLength;
-    p.nElements = 1;
-    p.diameter = 0.1;
-    p.massPerLength = 1.0;
-    p.gravity = 0.0;
-    p.Cdn = p.Cdt = p.Can = p.Cat = 0.0;
-    p.enableSeabed = 0;
-    p.enableBending = 0;
-    p.bottomEnd = UC_BOTTOM_ANCHORED;
-    p.anchor[0] = p.anchor[1] = p.anchor[2] = 0.0;
+    UCParams p = weightless_rope(kLength, 0.1, 1.0);
     p.axialCurvePoints = 2;
     p.axialCurveStrain[0] = 0.0;
     p.axialCurveStrain[1] = 0.06;
