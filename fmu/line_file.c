@@ -95,6 +95,10 @@ static void read_companions(const char* path, const char* text, size_t length, C
                 c->files[c->n].text = companion;
                 c->files[c->n].length = n;
                 ++c->n;
+                /* the files it names in turn (a Syrope settings file's curve) join the list, read in their turn */
+                char* tail = end + 1 + strlen(end + 1);
+                const size_t room = sizeof c->names - (size_t)(tail - c->names);
+                if (room > 1) uc_line_file_nested_companions(text, length, name, companion, n, tail, room);
             }
             free(full);
         }

@@ -222,6 +222,23 @@ extern "C" int uc_line_file_companions(const char* text, size_t length, char* na
     }
 }
 
+extern "C" int uc_line_file_nested_companions(const char* text, size_t length, const char* name, const char* companion,
+                                              size_t companionLength, char* names, size_t namesSize) {
+    try {
+        const std::vector<std::string> found =
+            text && name && companion ? uc::line_file_nested_companions(std::string_view(text, length), name,
+                                                                        std::string_view(companion, companionLength))
+                                      : std::vector<std::string>();
+        std::string joined;
+        for (const std::string& n : found) joined += n + "\n";
+        write_message(names, namesSize, joined);
+        return static_cast<int>(found.size());
+    } catch (...) {
+        write_message(names, namesSize, "");
+        return 0;
+    }
+}
+
 extern "C" int uc_wave_file_apply(const char* text, size_t length, UCParams* p, char* msg, size_t msgSize) {
     try {
         std::vector<std::array<double, 4>> components;

@@ -57,6 +57,10 @@ typedef struct UCLineFileCompanion {
 /* The names of the files next to the deck that its kinematics options ask for (docs/lines.md), each
  * followed by '\n', into names (NUL-terminated; may be NULL). Returns their number. */
 int uc_line_file_companions(const char* text, size_t length, char* names, size_t namesSize);
+/* The files the companion `name` of that deck (its text: companion, companionLength) names in turn (a Syrope
+ * settings file's original working curve), relative to the deck, as uc_line_file_companions. */
+int uc_line_file_nested_companions(const char* text, size_t length, const char* name, const char* companion,
+                                   size_t companionLength, char* names, size_t namesSize);
 
 /* uc_line_file_apply and uc_create_system with the companion files read (n of them; a file the deck needs
  * and the caller could not read is left out: the deck is then refused naming it). */

@@ -510,6 +510,27 @@ std::vector<std::string> line_file_companions(std::string_view text) {
     return names;
 }
 
+std::vector<std::string> line_file_nested_companions(std::string_view text, std::string_view name, std::string_view companion) {
+    using namespace deck;
+    std::vector<std::optional<Section>> sections;
+    std::string error;
+    std::vector<std::string> names;
+    if (!collect_sections(text, sections, error)) return names;
+    const auto& types = sections[static_cast<size_t>(Kind::LineTypes)];
+    if (!types) return names;
+    for (const Row& row : types->rows) {
+        // a Syrope settings file names its original working curve's file
+        if (row.tokens.size() < 4 || upper(row.tokens[3]).rfind("SYROPE:", 0) != 0 || tension_strain_file(row) != name) continue;
+        std::string owc, what;
+        int form = 0;
+        double k1 = 0.0, k2 = 0.0;
+        read_syrope_settings(companion, std::string(name), owc, form, k1, k2, what);
+        if (!owc.empty()) names.push_back(owc);
+        break;
+    }
+    return names;
+}
+
 }  // namespace uc
 
 namespace uc {

@@ -28,6 +28,9 @@ struct LineFileSection {
     double EA = 0.0;        // the constant EA, or the secant of the curve at its last point
     std::vector<double> curveStrain, curveTension;  // EA's tension-strain file (empty: none)
     double EAd = 0.0, EAslope = 0.0, BAd = 0.0;  // the viscoelastic model (EAd 0: none), as LineType's
+    // the Syrope model (form 0: none), as LineType's, and the line's SYROPE IC
+    int syropeForm = 0;
+    double syropeK1 = 0.0, syropeK2 = 0.0, syropeTmax0 = 0.0, syropeTmean0 = 0.0;
     double EI = 0.0;
     double axialDamping = 0.0;  // [N.s]: BA, or -zeta converted with MoorDyn's segment length
     double Cdn = 0.0, Cdt = 0.0, Can = 0.0, Cat = 0.0;  // Cd, CdAx, Ca, CaAx
@@ -92,6 +95,9 @@ using LineFileCompanions = std::vector<LineFileCompanion>;
 // The names of the files next to the deck that its options and line types ask for (empty when none): the caller reads
 // them from the deck's directory and hands their text to read_line_file or read_mooring_deck.
 std::vector<std::string> line_file_companions(std::string_view text);
+// The files a companion `name` (with the text `companion`) of the deck `text` names in turn, relative to the deck:
+// a Syrope settings file's original working curve (OWC); empty for any other file.
+std::vector<std::string> line_file_nested_companions(std::string_view text, std::string_view name, std::string_view companion);
 
 // MoorDyn's seabed, which is always there at WtrDpth (docs/lines.md, "Seabed"): kBot and cBot per unit of
 // projected area [Pa/m, Pa s/m], the friction options; the deck's values, MoorDyn's defaults where it is

@@ -92,6 +92,13 @@ LineFileSection section_of(const Line& l, const LineType& t) {
     s.EAd = t.EAd;
     s.EAslope = t.EAslope;
     s.BAd = t.BAd;
+    s.syropeForm = t.syropeForm;
+    s.syropeK1 = t.syropeK1;
+    s.syropeK2 = t.syropeK2;
+    if (t.syropeForm != 0) {  // (its SYROPE IC row is there: read_syrope_ic)
+        s.syropeTmax0 = l.syropeTmax0;
+        s.syropeTmean0 = l.syropeTmean0;
+    }
     s.EI = t.EI;
     // BA/-zeta < 0: a fraction of critical damping of one MoorDyn segment, converted as MoorDyn does,
     // BA = zeta (UnstrLen / NumSegs) sqrt(EA Mass/m) (docs/lines.md).

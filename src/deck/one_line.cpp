@@ -224,6 +224,12 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
         }
     }
     for (const LineFileSection& s : line.sections) {
+        if (s.syropeForm != 0 && line.sections.size() > 1) {
+            error = at_line(s.row, "line type " + quoted(s.type) + " has the Syrope model in a chain of " +
+                                   std::to_string(line.sections.size()) +
+                                   " lines: the FMU's Syrope model (syrope.*) describes a line of one type");
+            return false;
+        }
         if (!s.curveStrain.empty() && line.sections.size() > 1) {
             error = at_line(s.row, "line type " + quoted(s.type) + " has a tension-strain curve (EA from a file) in a "
                                    "chain of " + std::to_string(line.sections.size()) +
@@ -233,6 +239,7 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
     }
     p.axialCurvePoints = 0;
     p.EAdynamic = p.EAdynamicSlope = p.axialDampingDynamic = 0.0;
+    p.syropeWorkingCurve = 0;
     if (line.sections.size() == 1) {
         p.nSections = 1;
         copy_line_properties(line.sections[0], p);
@@ -240,6 +247,11 @@ bool apply_line_file(const LineFileLine& line, UCParams& p, std::string& error) 
         p.EAdynamic = s.EAd;
         p.EAdynamicSlope = s.EAslope;
         p.axialDampingDynamic = s.BAd;
+        p.syropeWorkingCurve = s.syropeForm;
+        p.syropeK1 = s.syropeK1;
+        p.syropeK2 = s.syropeK2;
+        p.syropeTensionMax0 = s.syropeTmax0;
+        p.syropeTensionMean0 = s.syropeTmean0;
         p.axialCurvePoints = static_cast<int>(s.curveStrain.size());
         for (size_t k = 0; k < s.curveStrain.size(); ++k) {
             p.axialCurveStrain[k] = s.curveStrain[k];

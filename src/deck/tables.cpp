@@ -13,7 +13,7 @@ bool parse_deck(std::string_view text, bool system, const LineFileCompanions& co
     if (!collect_sections(text, sections, error)) return false;
     auto section = [&](Kind kind) -> const std::optional<Section>& { return sections[static_cast<size_t>(kind)]; };
 
-    for (Kind kind : {Kind::Bodies, Kind::Failure, Kind::Control, Kind::ExternalLoads, Kind::SyropeIC}) {
+    for (Kind kind : {Kind::Bodies, Kind::Failure, Kind::Control, Kind::ExternalLoads}) {
         if (system && (kind == Kind::Bodies || kind == Kind::Failure)) continue;
         if (section(kind) && !section(kind)->rows.empty()) {
             error = at_line(section(kind)->rows[0].number, std::string(unsupported(kind)) + " (" + title(kind) +
@@ -118,6 +118,9 @@ bool parse_deck(std::string_view text, bool system, const LineFileCompanions& co
         lines.push_back(l);
     }
     if (!deck.rods.empty()) clamp_lines_to_rods(deck.rods, deck.rodTypes, types, points, lines, notes);
+    if (!read_syrope_ic(section(Kind::SyropeIC) ? section(Kind::SyropeIC)->rows : std::vector<Row>(), types, lines, notes,
+                        error))
+        return false;
 
     if (section(Kind::Failure)) {
         for (const Row& row : section(Kind::Failure)->rows) {

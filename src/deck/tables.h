@@ -54,6 +54,10 @@ struct LineType {
     // The viscoelastic model (EA as EA_s|EA_d or EA_s|EA_Dc|EA_D_Lm, BA as BA_s|BA_d): the dynamic stiffness
     // (0: none), its slope in the mean load, the dynamic damping [N s]; EA is EA_s, BA is BA_s.
     double EAd = 0.0, EAslope = 0.0, BAd = 0.0;
+    // The Syrope model (EA as SYROPE:<settings file>|EA_Dc|EA_D_Lm): the working curve's formula (0: none), k1,
+    // k2; the curve is then the original working curve, EAd and EAslope EA_Dc and EA_D_Lm, EA its secant.
+    int syropeForm = 0;
+    double syropeK1 = 0.0, syropeK2 = 0.0;
 };
 
 // A LINE TYPES row: a constant EA or a tension-strain file (one of companions), BA or -zeta, EI; other
@@ -62,8 +66,12 @@ struct LineType {
 // minimum breaking load [N], which must be positive.
 bool read_line_type(const Row& row, const Row& columns, const LineFileCompanions& companions, LineType& t,
                     std::string& error);
-// The name of the tension-strain file a LINE TYPES row gives as its EA (empty: none).
+// The name of the tension-strain file a LINE TYPES row gives as its EA, or of its Syrope settings file (empty: none).
 std::string_view tension_strain_file(const Row& row);
+// MoorDyn's Syrope settings file: rows "value name" for OWC (the original working curve's file, relative to the
+// deck), WCType (LINEAR, QUADRATIC, EXP), k1 and k2; false with what is wrong, naming the row or the field.
+bool read_syrope_settings(std::string_view text, const std::string& name, std::string& owc, int& form, double& k1,
+                          double& k2, std::string& what);
 
 // ------------------------------------------------------------------------------ breaking load (deck/breaking_load.cpp)
 // MoorPy's minimum breaking load of a line type named for its material (MoorProps_default.yaml: R4 studless
@@ -108,7 +116,12 @@ struct Line {
     int rod[2] = {0, 0};    // per end: the rod (its ID) whose end it is attached to, 0 for a point
     bool clamped[2] = {false, false};  // per end: on a rod with EI > 0: MoorDyn clamps the line's tangent to the rod's axis
     double tangent[2][3] = {};         // per end, where clamped: the line's direction away from the rod (unit)
+    double syropeTmax0 = -1.0, syropeTmean0 = -1.0;  // its SYROPE IC row (a Syrope line's; -1: none)
 };
+
+// The SYROPE IC rows (Line(s) Tmax0 Tmean0) onto the lines; notes for rows of lines without the model.
+bool read_syrope_ic(const std::vector<Row>& rows, const std::vector<LineType>& types, std::vector<Line>& lines,
+                    std::vector<std::string>& notes, std::string& error);
 
 struct Rod;
 

@@ -147,7 +147,6 @@ const char* unsupported(Kind kind) {
         case Kind::Failure: return "line failures are supported in a mooring system's deck only, not on one line (docs/line_failure.md)";
         case Kind::Control: return "line length control is not supported";
         case Kind::ExternalLoads: return "external loads on points, rods and bodies are not supported";
-        case Kind::SyropeIC: return "the Syrope model is not supported";
         default: return nullptr;
     }
 }

@@ -194,6 +194,11 @@ typedef struct UCParams {
     double axialDampingDynamic; /* axialDampingDynamic [N.s]: damping c_d in parallel with the dynamic spring `EAdynamic` (MoorDyn's BA_d in `BA_s|BA_d`); `axialDamping` is then the damping beside the static spring; used only with `EAdynamic` > 0 */
     int waterSource; /* water.source: water at the lines' load points: 0 the FMU's own current and waves, 1 pushed by the importer (FMI 3.0 only: `waterVelocity.*`, `waterAcceleration.*` at `waterPoint.*`; [docs/waves.md](docs/waves.md), "Water pushed by the importer") */
     char seabedFile[UC_STRING_CAPACITY]; /* seabed.file: path of a seabed given as a grid of heights, in MoorDyn's `SeafloorFile` format (a line `nx ny`, the x values, the y values, then `x y z` rows) or MoorPy's bathymetry format (a title line, `nGridX nx`, `nGridY ny`, the x values, then rows `y d_1 .. d_nx` of depths, positive down): interpolated bilinearly, held at the edge values outside the grid; contact along the local normal, friction along the local surface; in place of the plane at `waterDepth` (which still sets the water depth of the waves), with `seabedSlope` 0; a relative path is looked up as `lineFile`'s; read when the model is made and again when a saved state is restored into a new instance; empty (the default): the plane, or a `lineFile` deck's `SeafloorFile` that is not a plane ([docs/model.md](docs/model.md), "A seabed given as a grid") */
+    int syropeWorkingCurve; /* syrope.workingCurve: MoorDyn's Syrope model of a polyester rope for a uniform line (`nSections` 1): 0 (the default) off; 1 LINEAR, 2 QUADRATIC, 3 EXP, the formula of the working curve under the largest mean tension so far; `axialCurve.*` is then the original working curve, `EAdynamic` and `EAdynamicSlope` the dynamic stiffness EA_Dc + EA_D_Lm T, `axialDamping` and `axialDampingDynamic` MoorDyn's BA_s and BA_d ([docs/model.md](docs/model.md), "Syrope fibre-rope model") */
+    double syropeK1; /* syrope.k1: the working curve's k1: where it reaches zero tension, eps_min = k1 eps_max (below 1; LINEAR from 1 on: the curve's stiffness, eps_min = eps_max − Tmax / k1) */
+    double syropeK2; /* syrope.k2: the working curve's k2, its shape: QUADRATIC 0 < k2 ≤ 1, EXP k2 > 0; LINEAR ignores it */
+    double syropeTensionMax0; /* syrope.tensionMax0 [N]: the largest mean tension the rope has carried before the start (MoorDyn's `SYROPE IC` Tmax0): the top of every element's first working curve */
+    double syropeTensionMean0; /* syrope.tensionMean0 [N]: the mean tension at the start (MoorDyn's `SYROPE IC` Tmean0): every element's slow strain starts on the working curve of `syrope.tensionMax0` at it */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
     int waveComponentCount; /* (not an FMU variable) waves.mode 3: the number of given wave components in waveComponents (from waves.file or a lineFile deck) */
@@ -647,6 +652,11 @@ typedef struct UCOutputs {
     X(367, "section[8].axialDampingDynamic", REAL, PARAMETER, section[7].axialDampingDynamic) \
     X(368, "water.source", INTEGER, PARAMETER, waterSource) \
     X(369, "seabed.file", STRING, PARAMETER, seabedFile) \
+    X(370, "syrope.workingCurve", INTEGER, PARAMETER, syropeWorkingCurve) \
+    X(371, "syrope.k1", REAL, PARAMETER, syropeK1) \
+    X(372, "syrope.k2", REAL, PARAMETER, syropeK2) \
+    X(373, "syrope.tensionMax0", REAL, PARAMETER, syropeTensionMax0) \
+    X(374, "syrope.tensionMean0", REAL, PARAMETER, syropeTensionMean0) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -3663,6 +3673,11 @@ typedef struct UCOutputs {
     X(section[6].axialDampingDynamic, 0.0) \
     X(section[7].axialDampingDynamic, 0.0) \
     X(waterSource, 0) \
+    X(syropeWorkingCurve, 0) \
+    X(syropeK1, 0.0) \
+    X(syropeK2, 0.0) \
+    X(syropeTensionMax0, 0.0) \
+    X(syropeTensionMean0, 0.0) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -4044,6 +4059,11 @@ typedef struct UCOutputs {
     X(section[6].axialDampingDynamic, "section[7].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
     X(section[7].axialDampingDynamic, "section[8].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
     X(waterSource, "water.source", 0.0, 1.0, 0, 0, "{0 the FMU's own current and waves, 1 pushed by the importer}", "unknown source of the water's motion") \
+    X(syropeWorkingCurve, "syrope.workingCurve", 0.0, 3.0, 0, 0, "{0 off, 1 LINEAR, 2 QUADRATIC, 3 EXP}", "unknown working-curve formula") \
+    X(syropeK1, "syrope.k1", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "k1 is a fraction of the top strain or (LINEAR, from 1 on) a stiffness, never negative") \
+    X(syropeK2, "syrope.k2", 0.0, 1000.0, 0, 0, "[0, 1000]", "k2 shapes the working curve") \
+    X(syropeTensionMax0, "syrope.tensionMax0", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(syropeTensionMean0, "syrope.tensionMean0", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -68,7 +68,11 @@ bool CableSimulation::set_integrator_tolerances(std::string& error) {
         if (model_.internal_offset(e) < 0) continue;
         const ElementScales scales = element_scales(e, rms);
         const SectionProps& section = model_.element_section(e);
-        const ViscoStiffness k = visco_stiffness(section.visco, 0.0);
+        // (Syrope: the slow strain's tension slope is about the original working curve's secant EA, its
+        // relaxation through the dynamic stiffness EA_Dc)
+        const ViscoStiffness k = section.syrope.form != kSyropeNone
+                                     ? ViscoStiffness{section.axial.EA, section.syrope.alpha, 0.0, 0.0}
+                                     : visco_stiffness(section.visco, 0.0);
         const double relax = (section.axial.damping + section.visco.dampingDynamic) / (k.EA1 + k.EA2);
         const double wave = scales.length / std::sqrt(k.EA2 / section.fluid.massPerLength);
         const double a = scales.strain * section.axial.EA / k.EA1, tau = std::max(relax, wave);

@@ -195,6 +195,7 @@ void CableSimulation::step_completed(double t, const double* y, const double* yp
     stepTensionMax_ = std::max(stepTensionMax_, tension);
     stepTensionMin_ = std::min(stepTensionMin_, tension);
     if (sn_.area > 0.0) state_.rainflow.add(tension, sn_);
+    model_.advance_history(X_.data());  // (a Syrope line's: the largest mean tension so far)
 }
 
 bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::string& error) {
@@ -291,11 +292,13 @@ bool CableSimulation::step(double h, const EndMotion& tow, const EndMotion& far,
     const Vec3 proxyPosition = vec(state_.outputs.endPosition), proxyVelocity = vec(state_.outputs.endVelocity);
     stepTensionMax_ = stepTensionMin_ = state_.outputs.towTension;  // the tension at the step's start
     const RainflowCounter rainflowAtStart = state_.rainflow;
+    syropeAtStep_ = model_.history();  // (no allocation after the first step)
     winchTension_ = env.winchTension;
     const double topAtStart = model_.winch() ? model_.top_length() : 0.0;
     winchTopAtStep_ = topAtStart;
     if (!integrator_->advance(tEnd, error, env.stepBudget)) {
         state_.rainflow = rainflowAtStart;  // the state stays at the last communication point
+        model_.history() = syropeAtStep_;
         state_.restartPending = true;  // the state stays at the last communication point
         state_.winchLength = winchLengthAtStart;
         state_.winchRate = winchRateAtStart;

@@ -358,6 +358,7 @@ private:
     ElementForces forces_;
     OutputWorkspace outputWork_;
     std::vector<double> historyBuffer_;  // the integrator's history on its way to/from a saved state
+    std::vector<double> syropeAtStep_;   // the Syrope elements' history at the step's start (a failed step's)
     std::vector<double> toleranceBuffer_;
     // interface derivatives (allocated at their first use): the linearization at the present
     // state, the step matrices of the two substep sizes factored, and the columns computed so far

@@ -728,6 +728,17 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
                 return false;
             }
         }
+        if (!model_.history().empty()) {
+            // A Syrope line starts from the deck's history (Tmax0) and mean tension (Tmean0), not from the
+            // statics' rest: its slow strains at Tmean0 with the rates their equation gives (docs/model.md).
+            std::vector<double> zero(n, 0.0);
+            model_.reset_history();
+            model_.expand(q_.data(), v.data(), zero.data(), loads_, t0, X_.data(), Xd_.data(), Xdd_.data());
+            model_.settle_internal(X_.data(), Xd_.data());
+            model_.syrope_rates(X_.data(), Xd_.data());
+            model_.restrict_to_free(X_.data(), q_.data());
+            model_.restrict_to_free(Xd_.data(), v.data());
+        }
         if (!solve_consistent_acceleration(model_, *staticSolver_, loads_, t0, q_, v, a_)) {
             error = "the mass matrix is singular: check massPerLength and the end conditions";
             return false;

@@ -13,11 +13,15 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 14;  // 13: the viscoelastic elements' internal strains among the unknowns;
-                                             // 14: LineState::released
+constexpr std::uint32_t kStateVersion = 15;  // 13: the viscoelastic elements' internal strains among the unknowns;
+                                             // 14: LineState::released;
+                                             // 15: the Syrope elements' history after the integrator's
+const char* const kStateVersions =
+    "version 13 added the viscoelastic internal strains, 14 the released end, 15 the Syrope elements' history";
 
 // Fixed-layout header of a saved state: what it belongs to (the sizes and the winch's mesh, which
-// the model holds); followed by LineState, y, y' and the integrator's history.
+// the model holds); followed by LineState, y, y', the integrator's history and the Syrope elements' history
+// (CableModel::history, one per element of a line that has the model).
 struct StateHeader {
     std::uint32_t magic;
     std::uint32_t version;
@@ -31,7 +35,8 @@ struct StateHeader {
 }  // namespace
 
 size_t CableSimulation::state_size() const {
-    return sizeof(StateHeader) + sizeof(LineState) + (2 * y_.size() + integrator_->history_size()) * sizeof(double);
+    return sizeof(StateHeader) + sizeof(LineState) +
+           (2 * y_.size() + integrator_->history_size() + model_.history().size()) * sizeof(double);
 }
 
 void CableSimulation::save_state(void* buffer) {
@@ -63,6 +68,8 @@ void CableSimulation::save_state(void* buffer) {
     std::memcpy(out, yp_.data(), yp_.size() * sizeof(double));
     out += yp_.size() * sizeof(double);
     std::memcpy(out, historyBuffer_.data(), historyBuffer_.size() * sizeof(double));
+    out += historyBuffer_.size() * sizeof(double);
+    std::memcpy(out, model_.history().data(), model_.history().size() * sizeof(double));
 }
 
 bool CableSimulation::restore_state(const void* buffer, size_t size, std::string& error, bool* changed) {
@@ -116,6 +123,9 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     }
     if (!ours || header.nFree != model_.n_free() || header.nElements != model_.n_elements()) {
         error = "saved state does not belong to this cable model (magic, version or sizes differ)";
+        if (complete && header.magic == kStateMagic && header.version != kStateVersion)
+            error += ": it has format version " + std::to_string(header.version) + ", this FMU reads " +
+                     std::to_string(kStateVersion) + " (" + kStateVersions + ")";
         return false;
     }
     touched = true;
@@ -131,6 +141,9 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
         state_.restartPending = true;
         return false;
     }
+    // the Syrope elements' history, after the integrator's (which a state saved before any step leaves 0)
+    std::memcpy(model_.history().data(), in + integrator_->history_size() * sizeof(double),
+                model_.history().size() * sizeof(double));
     if (history) {
         historyBuffer_.resize(integrator_->history_size());
         std::memcpy(historyBuffer_.data(), in, historyBuffer_.size() * sizeof(double));

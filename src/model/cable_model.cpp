@@ -1,5 +1,6 @@
 // cable_model.cpp - DOF map, prescribed motion and assembly of the cable equations.
 #include "model/cable_model.h"
+#include "model/params.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,6 +32,10 @@ AxialProps CableModel::element_axial(int e, const double* X, const double* Xd) c
         p.visco = &sec.visco;
         p.internal[0] = X[gi];
         p.internal[1] = Xd[gi];
+        if (sec.syrope.form != kSyropeNone) {
+            p.syrope = &sec.syrope;
+            p.history = history_[e];
+        }
     }
     return p;
 }
@@ -39,9 +44,14 @@ AxialProps CableModel::axial_at(int e, const double* X, const double* Xd, const 
     AxialProps p = scaled_axial(sections_[runs_[elementRun_[e]].section], loads);
     const int gi = internal_offset(e);
     if (gi >= 0) {
-        p.visco = &sections_[runs_[elementRun_[e]].section].visco;
+        const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
+        p.visco = &sec.visco;
         p.internal[0] = X[gi];
         p.internal[1] = Xd[gi];
+        if (sec.syrope.form != kSyropeNone) {
+            p.syrope = &sec.syrope;
+            p.history = history_[e];
+        }
     }
     return p;
 }
@@ -51,6 +61,11 @@ void CableModel::settle_internal(double* X, double* Xd) const {
         const int gi = internal_offset(e);
         if (gi < 0) continue;
         const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
+        if (sec.syrope.form != kSyropeNone) {
+            X[gi] = syrope_slow_strain(sec.syrope, history_[e], sec.syrope.tensionMean0);
+            Xd[gi] = 0.0;
+            continue;
+        }
         const ElementTables& t = tables_[elementRun_[e]];
         // the mean strain of the element, then e1 with (EA_1 + EA_2) e1 = EA_2 e: EA_1 e1 = EA_s e, the
         // static spring's tension, so e1 = EA_s e / EA_1(e1), a fixed point (a contraction: EA_1 falls
@@ -67,6 +82,37 @@ void CableModel::settle_internal(double* X, double* Xd) const {
         }
         X[gi] = e1;
         Xd[gi] = 0.0;
+    }
+}
+
+void CableModel::syrope_rates(const double* X, double* Xd) const {
+    for (int e = 0; e < nElements_; ++e) {
+        const int gi = internal_offset(e);
+        if (gi < 0 || sections_[runs_[elementRun_[e]].section].syrope.form == kSyropeNone) continue;
+        Xd[gi] = 0.0;
+        double Xm[12];
+        AxialProps p = element_axial(e, X, Xd);
+        const double rest = visco_residual(tables_[elementRun_[e]], p, X + elementOffset_[e], element_velocities(e, X, Xd, Xm));
+        Xd[gi] = -rest / (p.damping + p.visco->dampingDynamic);
+    }
+}
+
+void CableModel::reset_history() {
+    history_.clear();
+    for (int e = 0; e < nElements_; ++e) {
+        const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
+        if (sec.syrope.form == kSyropeNone) continue;
+        if (history_.empty()) history_.assign(nElements_, 0.0);
+        history_[e] = syrope_initial_history(sec.syrope);
+    }
+}
+
+void CableModel::advance_history(const double* X) {
+    if (history_.empty()) return;
+    for (int e = 0; e < nElements_; ++e) {
+        const int gi = internal_offset(e);
+        const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
+        if (gi >= 0 && sec.syrope.form != kSyropeNone) history_[e] = syrope_history_after(sec.syrope, history_[e], X[gi]);
     }
 }
 
@@ -147,6 +193,7 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const Sta
     const bool laid = layout && params.winchMode == 0;
     build_mesh(params, laid && !layout->nodes.empty() ? &layout->nodes : nullptr);
     build_dof_map();
+    reset_history();
     if (this->winch()) {
         slotArcBase_ = slotArc_;
         for (const ElementRun& run : runs_) runStartBase_.push_back(run.s0);
@@ -289,6 +336,7 @@ void CableModel::build_sections(const UCParams& p) {
         s.axial.EA = in.EA;
         if (sections_.empty()) s.curve = curve;
         if (in.EAdynamic > 0.0) s.visco = ViscoProps{in.EA, in.EAdynamic, in.EAdynamicSlope, in.axialDampingDynamic};
+        if (sections_.empty()) syrope_from_params(p, s.syrope);  // (a uniform line's)
         s.axial.damping = in.axialDamping;
         s.axial.tensionOnly = p.enableCompression == 0;
         s.EI = p.enableBending ? in.EI : 0.0;

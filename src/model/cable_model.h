@@ -159,6 +159,7 @@ struct SectionProps {
     AxialProps axial{};
     AxialCurve curve{};    // n 0: the constant axial.EA; else the tension-strain curve (axial.EA its secant)
     ViscoProps visco{};    // EAd 0: none; else the viscoelastic model (axial.EA = visco.EAs, the static EA)
+    SyropeProps syrope{};  // form 0: none; else the Syrope model (visco: its internal strain, the slow strain)
     bool viscoelastic() const { return visco.EAd > 0.0; }
     SeabedProps seabed{};  // the contact's smoothing depends on the diameter
     double EI = 0.0;       // 0 when bending is disabled
@@ -255,8 +256,20 @@ public:
     int n_internal() const { return nInternal_; }  // internal strains (viscoelastic elements)
     // Global index of element e's internal strain, -1 where it has none.
     int internal_offset(int e) const { return internalOffset_.empty() ? -1 : internalOffset_[e]; }
-    // Every element's internal strain at equilibrium with its present mean strain (X), rate 0 (Xd).
+    // Every element's internal strain at equilibrium with its present mean strain (X), rate 0 (Xd); a Syrope
+    // element's slow strain at the start's mean tension (syrope.tensionMean0) on the working curve of its history.
     void settle_internal(double* X, double* Xd) const;
+    // A Syrope element's slow strain rate at X, Xd, from its internal equation with the rate term out (the start:
+    // the slow strain need not be at rest with the element's strain). Writes Xd of every Syrope element.
+    void syrope_rates(const double* X, double* Xd) const;
+    // The Syrope elements' history, the original working curve's strain at the largest mean tension so far
+    // (terms/syrope.h), one per element (empty: no Syrope element): a state of the line, saved with it.
+    std::vector<double>& history() { return history_; }
+    const std::vector<double>& history() const { return history_; }
+    void reset_history();  // to the start's (syrope.tensionMax0)
+    // After a step that reached X: the history of each Syrope element whose slow strain passed onto the
+    // original working curve grows to it.
+    void advance_history(const double* X);
     // The axial properties element e's tension comes from at X, Xd: the section's (with its
     // viscoelastic model and internal strain where it has one).
     AxialProps element_axial(int e, const double* X, const double* Xd) const;
@@ -418,6 +431,7 @@ private:
     std::vector<double> coef_;
     int nInternal_ = 0;
     std::vector<int> internalOffset_;  // per element (empty: no viscoelastic element)
+    std::vector<double> history_;      // per element (empty: no Syrope element)
     int nFree_ = 0;
     int bandwidth_ = 0;
 };

@@ -1,6 +1,7 @@
 // params.cpp - defaults (the start values of schema/variables.toml) and the single place where parameters are validated.
 #include "model/params.h"
 #include "terms/axial_curve.h"
+#include "terms/syrope.h"
 #include "terms/waves.h"
 
 #include <cmath>
@@ -128,6 +129,31 @@ std::string check_params(const UCParams& p) {
         return format_violation("water.source", p.waterSource, "{0} with winchMode != 0",
                                 "a winch's line changes its elements and so the load points whose water the importer "
                                 "pushes");
+    // The Syrope model: a uniform line's, its original working curve axialCurve.*, its dynamic stiffness
+    // EAdynamic + EAdynamicSlope T.
+    const bool syrope = p.syropeWorkingCurve != 0;
+    if (syrope) {
+        if (p.nSections >= 2)
+            return format_violation("syrope.workingCurve", p.syropeWorkingCurve, "{0} with nSections >= 2",
+                                    "the Syrope model describes a uniform line (nSections 1)");
+        if (p.axialCurvePoints == 0)
+            return format_violation("syrope.workingCurve", p.syropeWorkingCurve, "{0} with axialCurvePoints = 0",
+                                    "the Syrope model needs its original working curve in axialCurve.*");
+        if (!(p.EAdynamic > 0.0))
+            return format_violation("EAdynamic", p.EAdynamic, "(0, 1e13] with syrope.workingCurve != 0",
+                                    "the Syrope model's dynamic stiffness EA_Dc is above 0");
+        if (p.winchMode != 0)
+            return format_violation("syrope.workingCurve", p.syropeWorkingCurve, "{0} with winchMode != 0",
+                                    "a winch's line changes its elements, which would lose their tension history");
+        SyropeProps s;
+        syrope_from_params(p, s);
+        const std::string why = syrope_check(s, "syrope.");
+        if (!why.empty()) return why;
+        if (!(p.axialDamping + p.axialDampingDynamic > 0.0))
+            return format_violation("axialDamping", p.axialDamping, "(0, 1e13] with no axialDampingDynamic",
+                                    "the Syrope model's slow strain moves through a dashpot: the static or the "
+                                    "dynamic damping is above 0");
+    }
     // The viscoelastic model: a uniform line's (EAdynamic) or a section's (section[k].EAdynamic), its dynamic
     // stiffness above the static one.
     if (p.EAdynamic > 0.0 && p.nSections >= 2)
@@ -137,7 +163,7 @@ std::string check_params(const UCParams& p) {
     for (int k = 0; k < (p.nSections >= 2 ? p.nSections : 1) && k < UC_MAX_SECTIONS; ++k) {
         const bool line = p.nSections < 2;
         const double EAd = line ? p.EAdynamic : p.section[k].EAdynamic;
-        if (!(EAd > 0.0)) continue;
+        if (!(EAd > 0.0) || syrope) continue;
         const double EA = line ? p.EA : p.section[k].EA;
         const double c = line ? p.axialDamping : p.section[k].axialDamping;
         const double cd = line ? p.axialDampingDynamic : p.section[k].axialDampingDynamic;
@@ -250,6 +276,21 @@ std::string check_params(const UCParams& p) {
         return format_violation(name, p.currentProfileDepth[k], range, "profile depths must increase row by row");
     }
     return std::string();
+}
+
+bool syrope_from_params(const UCParams& p, SyropeProps& s) {
+    s = SyropeProps{};
+    if (p.syropeWorkingCurve == 0 || p.nSections >= 2) return false;
+    s.form = p.syropeWorkingCurve;
+    s.k1 = p.syropeK1;
+    s.k2 = p.syropeK2;
+    s.alpha = p.EAdynamic;
+    s.beta = p.EAdynamicSlope;
+    s.tensionMax0 = p.syropeTensionMax0;
+    s.tensionMean0 = p.syropeTensionMean0;
+    s.strain0 = p.axialCurvePoints > 0 ? p.axialCurveStrain[0] : 0.0;
+    std::string error;
+    return AxialCurve::build(p.axialCurveStrain, p.axialCurveTension, p.axialCurvePoints, s.owc, error);
 }
 
 }  // namespace uc

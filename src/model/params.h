@@ -4,6 +4,7 @@
 #include <string>
 
 #include "model/parameters.h"
+#include "terms/syrope.h"
 
 namespace uc {
 
@@ -15,5 +16,10 @@ constexpr double kHoplandModulus = 77.5e9;
 // Returns an empty string when every parameter is admissible, otherwise one message in the
 // format "<variable> = <value> is outside <range>: <why>" (the FMU log shows it verbatim).
 std::string check_params(const UCParams& p);
+
+// The Syrope model of a uniform line from its parameters (syrope.*, axialCurve.* its original working curve,
+// EAdynamic and EAdynamicSlope its dynamic stiffness); false (s off) when the line has none or its curve
+// does not build.
+bool syrope_from_params(const UCParams& p, SyropeProps& s);
 
 }  // namespace uc

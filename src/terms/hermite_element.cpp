@@ -171,7 +171,9 @@ ModeTensions mode_tensions(const ElementTables& e, const AxialProps& p, const Ax
         if (k == 0 && p.visco) {
             // the first Kelvin-Voigt pair carries the tension: no direct dependence on the strain
             m.stiffness[0] = 0.0;
-            P = mode_weight(e, p, 0) * (visco_stiffness(*p.visco, p.internal[0]).EA1 * p.internal[0] + p.damping * p.internal[1]);
+            const double held = p.syrope ? syrope_tension(*p.syrope, p.history, p.internal[0]).tension
+                                         : visco_stiffness(*p.visco, p.internal[0]).EA1 * p.internal[0];
+            P = mode_weight(e, p, 0) * (held + p.damping * p.internal[1]);
         } else {
             const double elastic = k == 0 && p.curve ? (*p.curve)(s.strainMode[0], &m.stiffness[0]) : p.EA * s.strainMode[k];
             P = mode_weight(e, p, k) * (elastic + p.damping * s.rateMode[k]);
@@ -289,6 +291,11 @@ double visco_residual(const ElementTables& e, const AxialProps& p, const double*
     const AxialSamples s = sample_axial(e, X, Xd);
     const ViscoProps& v = *p.visco;
     const double e1 = p.internal[0], r1 = p.internal[1];
+    if (p.syrope) {
+        const SyropeTension t = syrope_tension(*p.syrope, p.history, e1);
+        return (p.damping + v.dampingDynamic) * r1 - (p.syrope->alpha + p.syrope->beta * t.tension) * (s.strainMode[0] - t.curveStrain) -
+               v.dampingDynamic * s.rateMode[0];
+    }
     const ViscoStiffness k = visco_stiffness(v, e1);
     return (p.damping + v.dampingDynamic) * r1 - k.EA2 * s.strainMode[0] + (k.EA1 + k.EA2) * e1 -
            v.dampingDynamic * s.rateMode[0];
@@ -299,10 +306,25 @@ void visco_jacobian(const ElementTables& e, const AxialProps& p, const double* X
     const ModeTensions m = mode_tensions(e, p, s);
     const ViscoProps& v = *p.visco;
     const double e1 = p.internal[0], l = e.length;
-    const ViscoStiffness k = visco_stiffness(v, e1);
     Vec3 G[4], H[4];
     mode_gradients(e, s, 0, G, H);  // (the mean mode: phi_0 = 1)
     const double scale = mode_weight(e, p, 0) * m.mode[0].slope;
+    if (p.syrope) {
+        // eps_c(T(z)) = z + eps_d(T(z)): d/dz = 1 + T' / (alpha + beta T)
+        const SyropeTension t = syrope_tension(*p.syrope, p.history, e1);
+        const double K = p.syrope->alpha + p.syrope->beta * t.tension;
+        for (int a = 0; a < 4; ++a)
+            for (int c = 0; c < 3; ++c) {
+                J.dR_de1[3 * a + c] = scale * t.slope * G[a][c];
+                J.dR_dr1[3 * a + c] = scale * p.damping * G[a][c];
+                J.dI_dX[3 * a + c] = -(K * G[a][c] + v.dampingDynamic * H[a][c]) / l;
+                J.dI_dXd[3 * a + c] = -v.dampingDynamic * G[a][c] / l;
+            }
+        J.dI_de1 = -p.syrope->beta * t.slope * (s.strainMode[0] - t.curveStrain) + K + t.slope;
+        J.dI_dr1 = p.damping + v.dampingDynamic;
+        return;
+    }
+    const ViscoStiffness k = visco_stiffness(v, e1);
     for (int a = 0; a < 4; ++a)
         for (int c = 0; c < 3; ++c) {
             J.dR_de1[3 * a + c] = scale * (k.EA1 + e1 * k.dEA1) * G[a][c];

@@ -8,6 +8,7 @@
 
 #include "core/types.h"
 #include "terms/axial_curve.h"
+#include "terms/syrope.h"
 
 namespace uc {
 
@@ -120,6 +121,10 @@ struct AxialProps {
     // element's internal strain e1 and its rate e1' (internal[0], internal[1]), the higher modes EA (EA_s).
     const ViscoProps* visco = nullptr;
     double internal[2] = {0.0, 0.0};
+    // The Syrope model (with visco set; null: none): the internal strain is the slow strain z, the mean mode
+    // carries T(z) + damping z' with T on the curves of the element's history eps_max (terms/syrope.h).
+    const SyropeProps* syrope = nullptr;
+    double history = 0.0;
 };
 
 constexpr double kSlackStrain = 1e-5;
@@ -146,7 +151,8 @@ void add_axial_jacobian(const ElementTables& e, const AxialProps& p, const doubl
 void axial_tensions(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd,
                     double* T, Vec3* rp = nullptr);
 // The viscoelastic element's internal equation (its residual, in N): (c + c_d) e1' - EA_2 e + (EA_1 + EA_2) e1
-// - c_d e', with e the mean strain mode (p.visco set).
+// - c_d e', with e the mean strain mode (p.visco set); Syrope's (p.syrope set): (c + c_d) z' - (alpha + beta T)
+// (e - eps_c(T)) - c_d e', T = T(z).
 double visco_residual(const ElementTables& e, const AxialProps& p, const double* X, const double* Xd);
 // Its couplings: the element's 12 residuals in e1 (dR_de1) and e1' (dR_dr1); the internal residual in X
 // (dI_dX), Xdot (dI_dXd), e1 (dI_de1) and e1' (dI_dr1).

@@ -565,8 +565,8 @@ TEST(LineFileRefuses, NonLinearAndOtherUnsupportedLineProperties) {
     expect_refused(d, "7e8|9e8|x", "a viscoelastic EA is EA_s|EA_d or EA_s|EA_Dc|EA_D_Lm");
     d = edit(kSingleChain, "7.5e8   -0.8", "7e8|9e8 0|0");
     expect_refused(d, "0|0", "the viscoelastic model needs a damping");
-    d = edit(kSingleChain, "7.5e8   -0.8", "SYROPE:wc.txt|1e8|0.4 -0.8");
-    expect_refused(d, "SYROPE", "the Syrope model is not supported");
+    d = edit(kSingleChain, "7.5e8   -0.8", "SYROPE:wc.txt|1e8|0.4 -0.8");  // (LineFileSyrope below)
+    expect_refused(d, "SYROPE", "EA 'SYROPE:wc.txt|1e8|0.4': the Syrope settings file 'wc.txt' is not next to the deck");
     d = edit(kSingleChain, "7.5e8   -0.8", "7.5e8   1e5|2e5");
     expect_refused(d, "1e5|2e5", "BA_s|BA_d belongs to a viscoelastic EA");
     d = edit(kSingleChain, "7.5e8   -0.8", "7.5e8   ba.txt");
@@ -1042,4 +1042,106 @@ TEST(LineFileTensionStrain, ACurveOnAChainOfLinesIsRefused) {
     EXPECT_FALSE(uc::apply_line_file(r.line, p, error));
     EXPECT_NE(error.find("line type 'rope' has a tension-strain curve (EA from a file) in a chain of 2 lines"),
               std::string::npos) << error;
+}
+
+// ------------------------------------------------------------------ the Syrope model (SYROPE:..., SYROPE IC)
+namespace {
+
+// MoorDyn's tests/Mooring/syrope/linear_wc/line.txt, its syrope.dat and (the first rows of) ../owc.dat.
+const char* const kSyropeDeck = R"(One single segment.
+------------------------- LINE TYPES --------------------------------------------------
+LineType  Diam    MassDenInAir    EA                        BA/-zeta       EI     Can   Cat  Cdn   Cdt
+(-)       (m)       (kg/m)        (-)                       (Pa-s/-)      (n-m^2) (-)   (-)  (-)   (-)
+poly      0.203     40      SYROPE:syrope.dat|1.53e8|23.12  5.0e10|1.0e5   0.0    0.0   0.0   0.0  0.0
+----------------------- POINTS ----------------------------------------------
+Node      Type      X          Y         Z        M        V         CdA   CA
+(-)       (-)      (m)        (m)       (m)      (kg)     (m^3)     (m^2)  (-)
+1         Fixed    0.0         0       -5.0       0        0          0     0
+2         Coupled  1.0148657   0       -5.0       0        0          0     0
+-------------------------- LINES -------------------------------------------------
+Line     LineType NodeA     NodeB  UnstrLen   NumSegs     Flags/Outputs
+(-)      (-)       (-)       (-)    (m)         (-)          (-)
+1        poly       2         1     1.0          1           tsc
+-------------------------- SYROPE IC -------------------------------------------------------
+Line(s)   Tmax0    Tmean0
+(-)        (N)      (N)
+1       1.3886e6  4.339e5
+-------------------------- SOLVER OPTIONS---------------------------------------------------
+0        g            - gravitational acceleration
+1025     rho          - water density
+70       WtrDpth      - water depth
+--------------------------- need this line -------------------------------------------------
+)";
+const char* const kSyropeSettings = "../owc.dat  OWC     Original working curve lookup table path\n"
+                                    "LINEAR      WCType  Working curve formula\n"
+                                    "1.25e8      k1      First parameter\n"
+                                    "0.0         k2      Second parameter\n";
+const char* const kOwc = "Strain      Tension\n(-)         (N)\n0.00000e+00 0.00000e+00\n2.06897e-03 1.71768e+05\n"
+                         "4.13793e-03 3.30952e+05\n2.06897e-02 1.29964e+06\n4.13793e-02 2.45267e+06\n6.00000e-02 4.38601e+06\n";
+
+uc::LineFileCompanions syrope_files(const std::string& settings = kSyropeSettings) {
+    return {{"syrope.dat", settings}, {"../owc.dat", kOwc}};
+}
+
+}  // namespace
+
+TEST(LineFileSyrope, TheSyropeModelIsReadWithItsSettingsCurveAndInitialTensions) {
+    EXPECT_EQ(uc::line_file_companions(kSyropeDeck), std::vector<std::string>{"syrope.dat"});
+    EXPECT_EQ(uc::line_file_nested_companions(kSyropeDeck, "syrope.dat", kSyropeSettings),
+              std::vector<std::string>{"../owc.dat"});
+    EXPECT_TRUE(uc::line_file_nested_companions(kSyropeDeck, "other.dat", kSyropeSettings).empty());
+    const Read r = read_with(kSyropeDeck, syrope_files());
+    ASSERT_TRUE(r.ok) << r.error;
+    const uc::LineFileSection& s = r.line.sections[0];
+    EXPECT_EQ(s.syropeForm, uc::kSyropeLinear);
+    EXPECT_EQ(s.syropeK1, 1.25e8);
+    EXPECT_EQ(s.syropeTmax0, 1.3886e6);
+    EXPECT_EQ(s.syropeTmean0, 4.339e5);
+    EXPECT_EQ(s.EAd, 1.53e8);
+    EXPECT_EQ(s.EAslope, 23.12);
+    EXPECT_EQ(s.axialDamping, 5e10);
+    EXPECT_EQ(s.BAd, 1e5);
+    // MoorDyn's three header lines: the curve starts at its fourth line, as MoorDyn reads it
+    ASSERT_EQ(s.curveStrain.size(), 5u);
+    EXPECT_EQ(s.curveStrain[0], 2.06897e-03);
+    UCParams p;
+    uc_params_default(&p);
+    std::string error;
+    ASSERT_TRUE(uc::apply_line_file(r.line, p, error)) << error;
+    EXPECT_EQ(p.syropeWorkingCurve, uc::kSyropeLinear);
+    EXPECT_EQ(p.syropeTensionMax0, 1.3886e6);
+    EXPECT_EQ(p.syropeTensionMean0, 4.339e5);
+    EXPECT_EQ(p.EAdynamic, 1.53e8);
+    EXPECT_EQ(p.axialCurvePoints, 5);
+    EXPECT_EQ(uc::check_params(p), "");
+}
+
+TEST(LineFileSyrope, WhatMakesNoSyropeRopeIsRefusedNamingItsLine) {
+    const std::string ea = "SYROPE:syrope.dat|1.53e8|23.12";
+    auto refused = [&](const std::string& deck, const uc::LineFileCompanions& files, const std::string& marker,
+                       const std::string& what) {
+        const Read r = read_with(deck, files);
+        ASSERT_FALSE(r.ok) << "accepted: expected " << what;
+        EXPECT_EQ(r.error.rfind("line " + std::to_string(line_of(deck, marker)) + ": ", 0), 0u) << r.error;
+        EXPECT_NE(r.error.find(what), std::string::npos) << r.error;
+    };
+    refused(kSyropeDeck, {}, ea, "the Syrope settings file 'syrope.dat' is not next to the deck");
+    refused(kSyropeDeck, {{"syrope.dat", kSyropeSettings}}, ea,
+            "the original working curve's file OWC '../owc.dat' (syrope.dat, relative to the deck) cannot be read");
+    refused(kSyropeDeck, syrope_files(edit(kSyropeSettings, "LINEAR  ", "CUBIC   ")), ea,
+            "syrope.dat line 2: WCType 'CUBIC' is not a working-curve formula (LINEAR, QUADRATIC or EXP)");
+    refused(kSyropeDeck, syrope_files(edit(edit(kSyropeSettings, "LINEAR  ", "QUADRATIC"), "1.25e8", "1.5")), ea,
+            "k1 = 1.5, k2 = 0: QUADRATIC needs 0 <= k1 < 1 and 0 < k2 <= 1");
+    refused(kSyropeDeck, syrope_files(edit(kSyropeSettings, "0.0         k2", "0.0         k3")), ea,
+            "syrope.dat: no row \"<value> k2\" gives k2");
+    refused(edit(kSyropeDeck, ea, "SYROPE:syrope.dat|1.53e8"), syrope_files(), "SYROPE:syrope.dat|1.53e8",
+            "a Syrope EA is SYROPE:<settings file>|EA_Dc|EA_D_Lm");
+    refused(edit(kSyropeDeck, "1       1.3886e6  4.339e5", "1       1.3886e6  2e6"), syrope_files(), "1.3886e6  2e6",
+            "SYROPE IC of line 1: tensionMean0 = 2e+06 N: Tmean0 lies between 0 and Tmax0");
+    refused(edit(kSyropeDeck, "1       1.3886e6  4.339e5", "3       1.3886e6  4.339e5"), syrope_files(), "3       1.3886e6",
+            "Line(s) '3': '3' is not a line of the deck (1 to 1)");
+    refused(edit(kSyropeDeck, "1       1.3886e6  4.339e5\n", ""), syrope_files(), "1        poly",
+            "line 1 has the Syrope model (type 'poly') but no SYROPE IC row: give its Tmax0 and Tmean0 [N]");
+    // a SYROPE IC section in a deck without the model: refused, as MoorDyn does
+    refused(edit(kSyropeDeck, ea, "1.5e8|3e8"), {}, "1       1.3886e6", "a SYROPE IC section, but no line has the Syrope model");
 }

@@ -12,6 +12,7 @@
 #include "line/simulation.h"
 #include "model/cable_model.h"
 #include "model/params.h"
+#include "weightless_rope.h"
 
 using namespace uc;
 
@@ -23,18 +24,7 @@ constexpr double kLength = 10.0, kPrestrain = 0.01;
 constexpr double kEAs = 1e6, kEAd = 3e6, kDamping = 1e5, kDampingDynamic = 1e4;
 
 UCParams taut_rope() {
-    UCParams p;
-    uc_params_default(&p);
-    p.length = kLength;
-    p.nElements = 1;
-    p.diameter = 0.02;
-    p.massPerLength = 0.01;
-    p.gravity = 0.0;
-    p.Cdn = p.Cdt = p.Can = p.Cat = 0.0;
-    p.enableSeabed = 0;
-    p.enableBending = 0;
-    p.bottomEnd = UC_BOTTOM_ANCHORED;
-    p.anchor[0] = p.anchor[1] = p.anchor[2] = 0.0;
+    UCParams p = weightless_rope(kLength, 0.02, 0.01);
     p.EA = kEAs;
     p.axialDamping = kDamping;
     p.EAdynamic = kEAd;
