@@ -92,6 +92,10 @@ LineFileSection section_of(const Line& l, const LineType& t) {
     s.EAd = t.EAd;
     s.EAslope = t.EAslope;
     s.BAd = t.BAd;
+    // MoorDyn's lift acts on a line's internal nodes only: a line of one segment has none.
+    s.Cl = l.numSegs >= 2 ? t.Cl : 0.0;
+    s.vivFrequency = t.cF;
+    s.vivFrequencyRange = t.dF;
     s.EI = t.EI;
     // BA/-zeta < 0: a fraction of critical damping of one MoorDyn segment, converted as MoorDyn does,
     // BA = zeta (UnstrLen / NumSegs) sqrt(EA Mass/m) (docs/lines.md).

@@ -54,6 +54,9 @@ struct LineType {
     // The viscoelastic model (EA as EA_s|EA_d or EA_s|EA_Dc|EA_D_Lm, BA as BA_s|BA_d): the dynamic stiffness
     // (0: none), its slope in the mean load, the dynamic damping [N s]; EA is EA_s, BA is BA_s.
     double EAd = 0.0, EAslope = 0.0, BAd = 0.0;
+    // Vortex-induced vibration (MoorDyn's Cl, cF, dF columns after CaAx): Cl 0, none; cF and dF default to
+    // Thorsen's 0.18 and 0.08 as MoorDyn's.
+    double Cl = 0.0, cF = 0.18, dF = 0.08;
 };
 
 // A LINE TYPES row: a constant EA or a tension-strain file (one of companions), BA or -zeta, EI; other

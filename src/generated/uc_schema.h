@@ -35,6 +35,9 @@ typedef struct UCSection {
     double EAdynamic; /* section[k].EAdynamic [N]: dynamic axial stiffness EA_d of the section's viscoelastic model, as `EAdynamic` for a uniform line: 0 (the default), off; above `section[k].EA`, the static stiffness */
     double EAdynamicSlope; /* section[k].EAdynamicSlope: slope β of the section's dynamic stiffness in the mean load, as `EAdynamicSlope` */
     double axialDampingDynamic; /* section[k].axialDampingDynamic [N.s]: damping c_d beside the section's dynamic spring, as `axialDampingDynamic` */
+    double Cl; /* section[k].Cl: cross-flow lift coefficient of the section's vortex-induced vibration, as `Cl` for a uniform line */
+    double vivFrequency; /* section[k].vivFrequency: centre of the section's synchronisation frequencies, as `vivFrequency` */
+    double vivFrequencyRange; /* section[k].vivFrequencyRange: half width of the section's synchronisation frequencies, as `vivFrequencyRange` */
 } UCSection;
 
 typedef struct UCAttachment {
@@ -191,6 +194,9 @@ typedef struct UCParams {
     double EAdynamic; /* EAdynamic [N]: dynamic axial stiffness EA_d of MoorDyn's viscoelastic model of a uniform line (`nSections` 1): 0 (the default), off; above `EA`, the static stiffness, each element gets an internal strain (a Kelvin–Voigt pair of `EA`'s series spring and `axialDamping`, in series with EA_d and `axialDampingDynamic`): `EA` at rest, EA_d in fast motion ([docs/model.md](docs/model.md)) */
     double EAdynamicSlope; /* EAdynamicSlope: slope β of the dynamic stiffness in the mean load (MoorDyn's `EA_s|EA_Dc|EA_D_Lm`): EA_d = `EAdynamic` + β × the element's mean tension (the tension of its static spring); 0 (the default), a constant `EAdynamic` */
     double axialDampingDynamic; /* axialDampingDynamic [N.s]: damping c_d in parallel with the dynamic spring `EAdynamic` (MoorDyn's BA_d in `BA_s|BA_d`); `axialDamping` is then the damping beside the static spring; used only with `EAdynamic` > 0 */
+    double Cl; /* Cl: cross-flow lift coefficient of MoorDyn's vortex-induced vibration model for a uniform line (`nSections` 1): 0 (the default), off; above 0, each element carries the phase of its vortex shedding, synchronised with its cross-flow motion, and a lift per length 0.5 ρ d |u_n| Cl cos(phase) (t × u_n) ([docs/model.md](docs/model.md)) */
+    double vivFrequency; /* vivFrequency: centre f̂_0 of the synchronisation model's non-dimensional frequencies (MoorDyn's `cF`, Thorsen's 0.18): the phase turns at 2π (f̂_0 + Δf̂ sin(φ_ẏ − φ)) |u_n| / d; used only with `Cl` > 0 */
+    double vivFrequencyRange; /* vivFrequencyRange: half width Δf̂ of the non-dimensional frequencies the shedding synchronises with the cross-flow motion over (MoorDyn's `dF`, Thorsen's 0.08); used only with `Cl` > 0 */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
     int waveComponentCount; /* (not an FMU variable) waves.mode 3: the number of given wave components in waveComponents (from waves.file or a lineFile deck) */
@@ -641,6 +647,33 @@ typedef struct UCOutputs {
     X(365, "section[6].axialDampingDynamic", REAL, PARAMETER, section[5].axialDampingDynamic) \
     X(366, "section[7].axialDampingDynamic", REAL, PARAMETER, section[6].axialDampingDynamic) \
     X(367, "section[8].axialDampingDynamic", REAL, PARAMETER, section[7].axialDampingDynamic) \
+    X(368, "Cl", REAL, PARAMETER, Cl) \
+    X(369, "vivFrequency", REAL, PARAMETER, vivFrequency) \
+    X(370, "vivFrequencyRange", REAL, PARAMETER, vivFrequencyRange) \
+    X(371, "section[1].Cl", REAL, PARAMETER, section[0].Cl) \
+    X(372, "section[2].Cl", REAL, PARAMETER, section[1].Cl) \
+    X(373, "section[3].Cl", REAL, PARAMETER, section[2].Cl) \
+    X(374, "section[4].Cl", REAL, PARAMETER, section[3].Cl) \
+    X(375, "section[5].Cl", REAL, PARAMETER, section[4].Cl) \
+    X(376, "section[6].Cl", REAL, PARAMETER, section[5].Cl) \
+    X(377, "section[7].Cl", REAL, PARAMETER, section[6].Cl) \
+    X(378, "section[8].Cl", REAL, PARAMETER, section[7].Cl) \
+    X(379, "section[1].vivFrequency", REAL, PARAMETER, section[0].vivFrequency) \
+    X(380, "section[2].vivFrequency", REAL, PARAMETER, section[1].vivFrequency) \
+    X(381, "section[3].vivFrequency", REAL, PARAMETER, section[2].vivFrequency) \
+    X(382, "section[4].vivFrequency", REAL, PARAMETER, section[3].vivFrequency) \
+    X(383, "section[5].vivFrequency", REAL, PARAMETER, section[4].vivFrequency) \
+    X(384, "section[6].vivFrequency", REAL, PARAMETER, section[5].vivFrequency) \
+    X(385, "section[7].vivFrequency", REAL, PARAMETER, section[6].vivFrequency) \
+    X(386, "section[8].vivFrequency", REAL, PARAMETER, section[7].vivFrequency) \
+    X(387, "section[1].vivFrequencyRange", REAL, PARAMETER, section[0].vivFrequencyRange) \
+    X(388, "section[2].vivFrequencyRange", REAL, PARAMETER, section[1].vivFrequencyRange) \
+    X(389, "section[3].vivFrequencyRange", REAL, PARAMETER, section[2].vivFrequencyRange) \
+    X(390, "section[4].vivFrequencyRange", REAL, PARAMETER, section[3].vivFrequencyRange) \
+    X(391, "section[5].vivFrequencyRange", REAL, PARAMETER, section[4].vivFrequencyRange) \
+    X(392, "section[6].vivFrequencyRange", REAL, PARAMETER, section[5].vivFrequencyRange) \
+    X(393, "section[7].vivFrequencyRange", REAL, PARAMETER, section[6].vivFrequencyRange) \
+    X(394, "section[8].vivFrequencyRange", REAL, PARAMETER, section[7].vivFrequencyRange) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -3655,6 +3688,33 @@ typedef struct UCOutputs {
     X(section[5].axialDampingDynamic, 0.0) \
     X(section[6].axialDampingDynamic, 0.0) \
     X(section[7].axialDampingDynamic, 0.0) \
+    X(Cl, 0.0) \
+    X(vivFrequency, 0.18) \
+    X(vivFrequencyRange, 0.08) \
+    X(section[0].Cl, 0.0) \
+    X(section[1].Cl, 0.0) \
+    X(section[2].Cl, 0.0) \
+    X(section[3].Cl, 0.0) \
+    X(section[4].Cl, 0.0) \
+    X(section[5].Cl, 0.0) \
+    X(section[6].Cl, 0.0) \
+    X(section[7].Cl, 0.0) \
+    X(section[0].vivFrequency, 0.18) \
+    X(section[1].vivFrequency, 0.18) \
+    X(section[2].vivFrequency, 0.18) \
+    X(section[3].vivFrequency, 0.18) \
+    X(section[4].vivFrequency, 0.18) \
+    X(section[5].vivFrequency, 0.18) \
+    X(section[6].vivFrequency, 0.18) \
+    X(section[7].vivFrequency, 0.18) \
+    X(section[0].vivFrequencyRange, 0.08) \
+    X(section[1].vivFrequencyRange, 0.08) \
+    X(section[2].vivFrequencyRange, 0.08) \
+    X(section[3].vivFrequencyRange, 0.08) \
+    X(section[4].vivFrequencyRange, 0.08) \
+    X(section[5].vivFrequencyRange, 0.08) \
+    X(section[6].vivFrequencyRange, 0.08) \
+    X(section[7].vivFrequencyRange, 0.08) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -4035,6 +4095,33 @@ typedef struct UCOutputs {
     X(section[5].axialDampingDynamic, "section[6].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
     X(section[6].axialDampingDynamic, "section[7].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
     X(section[7].axialDampingDynamic, "section[8].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(Cl, "Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(vivFrequency, "vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(vivFrequencyRange, "vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[0].Cl, "section[1].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[1].Cl, "section[2].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[2].Cl, "section[3].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[3].Cl, "section[4].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[4].Cl, "section[5].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[5].Cl, "section[6].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[6].Cl, "section[7].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[7].Cl, "section[8].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[0].vivFrequency, "section[1].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[1].vivFrequency, "section[2].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[2].vivFrequency, "section[3].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[3].vivFrequency, "section[4].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[4].vivFrequency, "section[5].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[5].vivFrequency, "section[6].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[6].vivFrequency, "section[7].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[7].vivFrequency, "section[8].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[0].vivFrequencyRange, "section[1].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[1].vivFrequencyRange, "section[2].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[2].vivFrequencyRange, "section[3].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[3].vivFrequencyRange, "section[4].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[4].vivFrequencyRange, "section[5].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[5].vivFrequencyRange, "section[6].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[6].vivFrequencyRange, "section[7].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[7].vivFrequencyRange, "section[8].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -242,8 +242,23 @@ bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
         std::vector<double> Xd(X.size(), 0.0);
         model_.settle_internal(X.data(), Xd.data());
     }
+    for (int e = 0; e < model_.n_elements(); ++e)  // the VIV phases spread along the line
+        if (model_.phase_offset(e) >= 0) X[model_.phase_offset(e)] = model_.initial_phase(e);
     model_.restrict_to_free(X.data(), q.data());
     return profile;
+}
+
+void CableSimulation::settle_phase_rates(double t, std::vector<double>& v) {
+    // Each VIV phase starts turning at the rate its synchronisation model gives the line's start (q_, v and the
+    // consistent accelerations a_, which the rate sees through the cross-flow motion's phase): the rate is an
+    // algebraic unknown, and a start off it would be a jump the integrator's error test cannot pass.
+    model_.expand(q_.data(), v.data(), a_.data(), loads_, t, X_.data(), Xd_.data(), Xdd_.data());
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const int g = model_.phase_offset(e);
+        if (g < 0) continue;
+        Xd_[g] = 0.0;
+        v[model_.free_index(g)] = -model_.phase_residual(e, X_.data(), Xd_.data(), Xdd_.data(), loads_, nullptr);
+    }
 }
 
 bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) const {
@@ -685,6 +700,7 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
             error = "the mass matrix is singular: check massPerLength and the end conditions";
             return false;
         }
+        if (model_.n_phases() > 0) settle_phase_rates(t0, v);
         for (int j = 0; j < n; ++j) {
             y_[2 * (j + off_)] = q_[j];
             y_[2 * (j + off_) + 1] = v[j];

@@ -13,8 +13,11 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 14;  // 13: the viscoelastic elements' internal strains among the unknowns;
-                                             // 14: LineState::released
+constexpr std::uint32_t kStateVersion = 15;  // 13: the viscoelastic elements' internal strains among the unknowns;
+                                             // 14: LineState::released; 15: the VIV phases among the unknowns
+
+// What the present version adds to the one before (named when an older state is refused).
+constexpr const char* kStateVersionNews = "15: the vortex-induced vibration phases among the unknowns";
 
 // Fixed-layout header of a saved state: what it belongs to (the sizes and the winch's mesh, which
 // the model holds); followed by LineState, y, y' and the integrator's history.
@@ -80,6 +83,11 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     }
     const bool ours = complete && header.magic == kStateMagic && header.version == kStateVersion &&
                       header.stateBytes == static_cast<std::int32_t>(sizeof(LineState));
+    if (complete && header.magic == kStateMagic && header.version != kStateVersion) {
+        error = "saved state is of format version " + std::to_string(header.version) + ", this build reads version " +
+                std::to_string(kStateVersion) + " (" + kStateVersionNews + ")";
+        return false;
+    }
     if (model_.winch() && ours) {
         // A state of a winch's line may have another mesh than the present one: take its mesh first.
         const WinchMesh mesh = model_.winch_mesh();
