@@ -256,8 +256,14 @@ void CableSimulation::settle_phase_rates(double t, std::vector<double>& v) {
     for (int e = 0; e < model_.n_elements(); ++e) {
         const int g = model_.phase_offset(e);
         if (g < 0) continue;
-        Xd_[g] = 0.0;
-        v[model_.free_index(g)] = -model_.phase_residual(e, X_.data(), Xd_.data(), Xdd_.data(), loads_, nullptr);
+        // the rate sets the motion's phase it is pulled by: a fixed point, from the shedding frequency at rest
+        // (a contraction: the pull is the frequency range df, small against f0)
+        const SectionProps& section = model_.element_section(e);
+        Xd_[g] = 2.0 * kPi * section.viv.frequency * std::max(loads_.current.velocity(Vec3::Zero()).norm(), 0.01) /
+                 section.fluid.diameter;
+        for (int k = 0; k < 30; ++k)
+            Xd_[g] -= model_.phase_residual(e, X_.data(), Xd_.data(), Xdd_.data(), loads_, nullptr);
+        v[model_.free_index(g)] = Xd_[g];
     }
 }
 

@@ -460,7 +460,7 @@ void CableModel::jacobian(const double* X, const double* Xd, const double* Xdd, 
                 add(ja, jp, ca * dLift[a], 0.0, 0.0);
                 add(jp, ja, ca * P.dX[a], ca * P.dXd[a], ca * P.dXdd[a]);
             }
-            add(jp, jp, P.dPhase, loads.viv ? 1.0 : 0.0, 0.0);
+            add(jp, jp, P.dPhase, P.dPhaseRate, 0.0);
         }
         const int gi = internal_offset(e);
         if (gi < 0) continue;

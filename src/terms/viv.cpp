@@ -120,12 +120,13 @@ V3<T> lift(const FluidProps& p, const VivProps& v, const V3<T>& U, const T& z, c
 // phi' of the synchronisation model.
 template <class T>
 T phase_rate(const FluidProps& p, const VivProps& v, const V3<T>& U, const V3<T>& rp, const V3<T>& rd,
-             const V3<T>& rdd, const T& phase) {
+             const V3<T>& rdd, const T& phase, const T& phaseRate) {
     const CrossFlow<T> f = cross_flow(U, rp, rd);
     const V3<T> c = scaled(cross(f.t, f.un), T(1.0) / f.speed);
     const T yd = rd.dot(c), ydd = rdd.dot(c);
     const T shedding = T(2.0 * kPi / p.diameter) * f.speed;  // 2 pi |u_n| / d
-    const T y2 = ydd / (T(v.frequency) * shedding);         // y'' / w
+    // y'' / phi' (a rate that Newton's iterates took to zero or below: its floor, 1e-9 rad/s)
+    const T y2 = ydd / (value(phaseRate) > 1e-9 ? phaseRate : T(1e-9));
     const T m = sqrt(yd * yd + y2 * y2 + T(kVivMotionFloor * kVivMotionFloor));
     const T s = (T(0.0) - y2 * cos(phase) - yd * sin(phase)) / m;  // sin(phi_y - phi)
     return shedding * (T(v.frequency) + T(v.range) * s);
@@ -195,26 +196,28 @@ void add_viv_jacobian(const ElementTables& e, const FluidProps& p, const VivProp
 }
 
 double viv_phase_rate(const ElementTables& e, const FluidProps& p, const VivProps& v, const CurrentField& current,
-                      const double* X, const double* Xd, const double* Xdd, double phase) {
+                      const double* X, const double* Xd, const double* Xdd, double phase, double phaseRate) {
     const ShapeValues s = midpoint(e);
     const Vec3 r = interpolate(s.N, X);
     Vec3 U, A;
     current.flow(r, U, A);
-    return phase_rate(p, v, v3(U), v3(interpolate(s.dN, X)), v3(interpolate(s.N, Xd)), v3(interpolate(s.N, Xdd)), phase);
+    return phase_rate(p, v, v3(U), v3(interpolate(s.dN, X)), v3(interpolate(s.N, Xd)), v3(interpolate(s.N, Xdd)), phase,
+                      phaseRate);
 }
 
 double viv_phase_residual(const ElementTables& e, const FluidProps& p, const VivProps& v, const CurrentField& current,
                           const double* X, const double* Xd, const double* Xdd, double phase, double phaseRate,
                           VivPhaseJacobian* J) {
-    if (J == nullptr) return phaseRate - viv_phase_rate(e, p, v, current, X, Xd, Xdd, phase);
-    using D = Dual<13>;  // r, r', r_dot, r_ddot, phi
+    if (J == nullptr) return phaseRate - viv_phase_rate(e, p, v, current, X, Xd, Xdd, phase, phaseRate);
+    using D = Dual<14>;  // r, r', r_dot, r_ddot, phi, phi'
     const ShapeValues s = midpoint(e);
     const Vec3 r = interpolate(s.N, X);
     Vec3 U, A;
     Mat3 dU, dA;
     current.flow(r, U, dU, A, dA);
-    const D w = phase_rate(p, v, flow_of_r<13>(U, dU), seeded<13>(interpolate(s.dN, X), 3),
-                           seeded<13>(interpolate(s.N, Xd), 6), seeded<13>(interpolate(s.N, Xdd), 9), D::seed(phase, 12));
+    const D w = phase_rate(p, v, flow_of_r<14>(U, dU), seeded<14>(interpolate(s.dN, X), 3),
+                           seeded<14>(interpolate(s.N, Xd), 6), seeded<14>(interpolate(s.N, Xdd), 9), D::seed(phase, 12),
+                           D::seed(phaseRate, 13));
     for (int a = 0; a < 4; ++a)
         for (int j = 0; j < 3; ++j) {
             J->dX[3 * a + j] = -(s.N[a] * w.d[j] + s.dN[a] * w.d[3 + j]);
@@ -222,6 +225,7 @@ double viv_phase_residual(const ElementTables& e, const FluidProps& p, const Viv
             J->dXdd[3 * a + j] = -s.N[a] * w.d[9 + j];
         }
     J->dPhase = -w.d[12];
+    J->dPhaseRate = 1.0 - w.d[13];
     return phaseRate - w.v;
 }
 

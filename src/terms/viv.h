@@ -8,8 +8,9 @@
 // fraction; it enters the residual as -f_L. The phase turns at
 //   phi' = 2 pi |u_n| / d (f0 + df sin(phi_y - phi)),
 // where phi_y is the phase of the cross-flow motion at the element's midpoint, from its cross-flow velocity
-// y' and acceleration y'' along c = t x u_n / |u_n|: cos phi_y = y' / m, sin phi_y = -y'' / (w m), with
-// w = 2 pi f0 |u_n| / d (the shedding frequency at rest) and m = sqrt(y'^2 + (y'' / w)^2 + eps^2).
+// y' and acceleration y'' along c = t x u_n / |u_n|: cos phi_y = y' / m, sin phi_y = -y'' / (phi' m), with
+// m = sqrt(y'^2 + (y'' / phi')^2 + eps^2): for a motion at the shedding's frequency phi', the phase of its
+// velocity (MoorDyn divides y' and y'' by their running RMS values instead, whose ratio is the motion's frequency).
 #pragma once
 
 #include "terms/hydrodynamics.h"
@@ -35,12 +36,13 @@ void add_viv_jacobian(const ElementTables& e, const FluidProps& p, const VivProp
                       const double* X, const double* Xd, double phase, Mat12& K, Mat12& C, double* dPhase,
                       WaveExpansion* waveCache = nullptr);
 
-// The rate the synchronisation model gives the element's phase (phi' above), at its midpoint.
+// The rate the synchronisation model gives the element's phase (phi' above), at its midpoint, with the phase
+// turning at phaseRate (which sets the motion's phase).
 double viv_phase_rate(const ElementTables& e, const FluidProps& p, const VivProps& v, const CurrentField& current,
-                      const double* X, const double* Xd, const double* Xdd, double phase);
-// The phase's equation R = phaseRate - viv_phase_rate(...) and its derivatives (dR/d(phaseRate) = 1).
+                      const double* X, const double* Xd, const double* Xdd, double phase, double phaseRate);
+// The phase's equation R = phaseRate - viv_phase_rate(...) and its derivatives.
 struct VivPhaseJacobian {
-    double dX[12], dXd[12], dXdd[12], dPhase;
+    double dX[12], dXd[12], dXdd[12], dPhase, dPhaseRate;
 };
 double viv_phase_residual(const ElementTables& e, const FluidProps& p, const VivProps& v, const CurrentField& current,
                           const double* X, const double* Xd, const double* Xdd, double phase, double phaseRate,

@@ -110,6 +110,10 @@ TEST(VivTerm, PhaseDerivativesAreTheResidualsDerivatives) {
     };
     EXPECT_NEAR(J.dPhase, (at(kX, kXd, kXdd, phase + h) - at(kX, kXd, kXdd, phase - h)) / (2 * h), tol);
     EXPECT_GT(std::abs(J.dPhase), 0.1);  // the motion's phase pulls the shedding's
+    const double dRate = (viv_phase_residual(e, f, v, c.field, kX, kXd, kXdd, phase, rate + h) -
+                          viv_phase_residual(e, f, v, c.field, kX, kXd, kXdd, phase, rate - h)) / (2 * h);
+    EXPECT_NEAR(J.dPhaseRate, dRate, tol);
+    EXPECT_NE(J.dPhaseRate, 1.0);  // the rate sets the motion's phase too
     for (int b = 0; b < 12; ++b) {
         for (int which = 0; which < 3; ++which) {
             const double* base = which == 0 ? kX : which == 1 ? kXd : kXdd;
@@ -148,7 +152,7 @@ TEST(VivTerm, LiftOnAnElementAtRestIsTheClosedForm) {
     }
     // at rest the phase turns at the shedding frequency 2 pi f0 U / d
     const double Xdd[12] = {};
-    EXPECT_NEAR(viv_phase_rate(e, f, v, c, X, Xd, Xdd, 1.0), 2.0 * kPi * 0.18 * U / kD, 1e-9);
+    EXPECT_NEAR(viv_phase_rate(e, f, v, c, X, Xd, Xdd, 1.0, 5.0), 2.0 * kPi * 0.18 * U / kD, 1e-9);
 }
 
 namespace {
