@@ -34,6 +34,7 @@ struct LineFileSection {
     double EI = 0.0;
     double axialDamping = 0.0;  // [N.s]: BA, or -zeta converted with MoorDyn's segment length
     double Cdn = 0.0, Cdt = 0.0, Can = 0.0, Cat = 0.0;  // Cd, CdAx, Ca, CaAx
+    double Cl = 0.0, vivFrequency = 0.18, vivFrequencyRange = 0.08;  // vortex-induced vibration: Cl, cF, dF
     double MBL = 0.0;       // minimum breaking load [N]: its type's MBL column or MoorPy's default (0: none)
     int numSegs = 0;        // MoorDyn's NumSegs
     int elements = 0;       // our cubic elements (docs/lines.md: the rule, or lineFileElements)

@@ -271,12 +271,17 @@ bool read_line_type(const Row& deckRow, const Row& columns, const LineFileCompan
     t.Ca = f.non_negative(7, "Ca");
     t.CdAx = f.non_negative(8, "CdAx");
     t.CaAx = f.non_negative(9, "CaAx");
+    t.Cl = 0.0;
+    t.dF = 0.08;  // MoorDyn's defaults (Thorsen's synchronisation model) where the row gives Cl alone
+    t.cF = 0.18;
     if (n > 10) {
-        const double cl = f.number(10, "Cl");
-        if (f.ok() && cl != 0.0) return f.fail("Cl = " + shown(f.token(10)) + ": vortex-induced vibration is not supported");
+        t.Cl = f.non_negative(10, "Cl");
         if (n == 13) {
-            f.number(11, "dF");
-            f.number(12, "cF");
+            t.dF = f.non_negative(11, "dF");
+            t.cF = f.number(12, "cF");
+            if (f.ok() && t.Cl > 0.0 && !(t.cF > 0.0))
+                return f.fail("cF = " + shown(f.token(12)) + ": the centre of the VIV model's non-dimensional shedding "
+                              "frequencies is positive (Thorsen's 0.18)");
         }
     }
     return f.ok();

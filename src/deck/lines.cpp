@@ -99,6 +99,10 @@ LineFileSection section_of(const Line& l, const LineType& t) {
         s.syropeTmax0 = l.syropeTmax0;
         s.syropeTmean0 = l.syropeTmean0;
     }
+    // MoorDyn's lift acts on a line's internal nodes only: a line of one segment has none.
+    s.Cl = l.numSegs >= 2 ? t.Cl : 0.0;
+    s.vivFrequency = t.cF;
+    s.vivFrequencyRange = t.dF;
     s.EI = t.EI;
     // BA/-zeta < 0: a fraction of critical damping of one MoorDyn segment, converted as MoorDyn does,
     // BA = zeta (UnstrLen / NumSegs) sqrt(EA Mass/m) (docs/lines.md).

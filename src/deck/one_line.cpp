@@ -128,6 +128,9 @@ void copy_line_properties(const LineFileSection& s, Line& out) {
     out.Cdt = s.Cdt;
     out.Can = s.Can;
     out.Cat = s.Cat;
+    out.Cl = s.Cl;
+    out.vivFrequency = s.vivFrequency;
+    out.vivFrequencyRange = s.vivFrequencyRange;
     out.nElements = s.elements;
     if (s.MBL > 0.0) out.MBL = s.MBL;  // else the parameter's (a section's 0: the line's MBL)
 }

@@ -58,6 +58,9 @@ struct LineType {
     // k2; the curve is then the original working curve, EAd and EAslope EA_Dc and EA_D_Lm, EA its secant.
     int syropeForm = 0;
     double syropeK1 = 0.0, syropeK2 = 0.0;
+    // Vortex-induced vibration (MoorDyn's Cl, cF, dF columns after CaAx): Cl 0, none; cF and dF default to
+    // Thorsen's 0.18 and 0.08 as MoorDyn's.
+    double Cl = 0.0, cF = 0.18, dF = 0.08;
 };
 
 // A LINE TYPES row: a constant EA or a tension-strain file (one of companions), BA or -zeta, EI; other

@@ -36,6 +36,9 @@ typedef struct UCSection {
     double EAdynamic; /* section[k].EAdynamic [N]: dynamic axial stiffness EA_d of the section's viscoelastic model, as `EAdynamic` for a uniform line: 0 (the default), off; above `section[k].EA`, the static stiffness */
     double EAdynamicSlope; /* section[k].EAdynamicSlope: slope β of the section's dynamic stiffness in the mean load, as `EAdynamicSlope` */
     double axialDampingDynamic; /* section[k].axialDampingDynamic [N.s]: damping c_d beside the section's dynamic spring, as `axialDampingDynamic` */
+    double Cl; /* section[k].Cl: cross-flow lift coefficient of the section's vortex-induced vibration, as `Cl` for a uniform line */
+    double vivFrequency; /* section[k].vivFrequency: centre of the section's synchronisation frequencies, as `vivFrequency` */
+    double vivFrequencyRange; /* section[k].vivFrequencyRange: half width of the section's synchronisation frequencies, as `vivFrequencyRange` */
 } UCSection;
 
 typedef struct UCAttachment {
@@ -199,6 +202,9 @@ typedef struct UCParams {
     double syropeK2; /* syrope.k2: the working curve's k2, its shape: QUADRATIC 0 < k2 ≤ 1, EXP k2 > 0; LINEAR ignores it */
     double syropeTensionMax0; /* syrope.tensionMax0 [N]: the largest mean tension the rope has carried before the start (MoorDyn's `SYROPE IC` Tmax0): the top of every element's first working curve */
     double syropeTensionMean0; /* syrope.tensionMean0 [N]: the mean tension at the start (MoorDyn's `SYROPE IC` Tmean0): every element's slow strain starts on the working curve of `syrope.tensionMax0` at it */
+    double Cl; /* Cl: cross-flow lift coefficient of MoorDyn's vortex-induced vibration model for a uniform line (`nSections` 1): 0 (the default), off; above 0, each element carries the phase of its vortex shedding, synchronised with its cross-flow motion, and a lift per length 0.5 ρ d |u_n| Cl cos(phase) (t × u_n) ([docs/model.md](docs/model.md)) */
+    double vivFrequency; /* vivFrequency: centre f̂_0 of the synchronisation model's non-dimensional frequencies (MoorDyn's `cF`, Thorsen's 0.18): the phase turns at 2π (f̂_0 + Δf̂ sin(φ_ẏ − φ)) |u_n| / d; used only with `Cl` > 0 */
+    double vivFrequencyRange; /* vivFrequencyRange: half width Δf̂ of the non-dimensional frequencies the shedding synchronises with the cross-flow motion over (MoorDyn's `dF`, Thorsen's 0.08); used only with `Cl` > 0 */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
     int waveComponentCount; /* (not an FMU variable) waves.mode 3: the number of given wave components in waveComponents (from waves.file or a lineFile deck) */
@@ -657,6 +663,33 @@ typedef struct UCOutputs {
     X(372, "syrope.k2", REAL, PARAMETER, syropeK2) \
     X(373, "syrope.tensionMax0", REAL, PARAMETER, syropeTensionMax0) \
     X(374, "syrope.tensionMean0", REAL, PARAMETER, syropeTensionMean0) \
+    X(375, "Cl", REAL, PARAMETER, Cl) \
+    X(376, "vivFrequency", REAL, PARAMETER, vivFrequency) \
+    X(377, "vivFrequencyRange", REAL, PARAMETER, vivFrequencyRange) \
+    X(378, "section[1].Cl", REAL, PARAMETER, section[0].Cl) \
+    X(379, "section[2].Cl", REAL, PARAMETER, section[1].Cl) \
+    X(380, "section[3].Cl", REAL, PARAMETER, section[2].Cl) \
+    X(381, "section[4].Cl", REAL, PARAMETER, section[3].Cl) \
+    X(382, "section[5].Cl", REAL, PARAMETER, section[4].Cl) \
+    X(383, "section[6].Cl", REAL, PARAMETER, section[5].Cl) \
+    X(384, "section[7].Cl", REAL, PARAMETER, section[6].Cl) \
+    X(385, "section[8].Cl", REAL, PARAMETER, section[7].Cl) \
+    X(386, "section[1].vivFrequency", REAL, PARAMETER, section[0].vivFrequency) \
+    X(387, "section[2].vivFrequency", REAL, PARAMETER, section[1].vivFrequency) \
+    X(388, "section[3].vivFrequency", REAL, PARAMETER, section[2].vivFrequency) \
+    X(389, "section[4].vivFrequency", REAL, PARAMETER, section[3].vivFrequency) \
+    X(390, "section[5].vivFrequency", REAL, PARAMETER, section[4].vivFrequency) \
+    X(391, "section[6].vivFrequency", REAL, PARAMETER, section[5].vivFrequency) \
+    X(392, "section[7].vivFrequency", REAL, PARAMETER, section[6].vivFrequency) \
+    X(393, "section[8].vivFrequency", REAL, PARAMETER, section[7].vivFrequency) \
+    X(394, "section[1].vivFrequencyRange", REAL, PARAMETER, section[0].vivFrequencyRange) \
+    X(395, "section[2].vivFrequencyRange", REAL, PARAMETER, section[1].vivFrequencyRange) \
+    X(396, "section[3].vivFrequencyRange", REAL, PARAMETER, section[2].vivFrequencyRange) \
+    X(397, "section[4].vivFrequencyRange", REAL, PARAMETER, section[3].vivFrequencyRange) \
+    X(398, "section[5].vivFrequencyRange", REAL, PARAMETER, section[4].vivFrequencyRange) \
+    X(399, "section[6].vivFrequencyRange", REAL, PARAMETER, section[5].vivFrequencyRange) \
+    X(400, "section[7].vivFrequencyRange", REAL, PARAMETER, section[6].vivFrequencyRange) \
+    X(401, "section[8].vivFrequencyRange", REAL, PARAMETER, section[7].vivFrequencyRange) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -3678,6 +3711,33 @@ typedef struct UCOutputs {
     X(syropeK2, 0.0) \
     X(syropeTensionMax0, 0.0) \
     X(syropeTensionMean0, 0.0) \
+    X(Cl, 0.0) \
+    X(vivFrequency, 0.18) \
+    X(vivFrequencyRange, 0.08) \
+    X(section[0].Cl, 0.0) \
+    X(section[1].Cl, 0.0) \
+    X(section[2].Cl, 0.0) \
+    X(section[3].Cl, 0.0) \
+    X(section[4].Cl, 0.0) \
+    X(section[5].Cl, 0.0) \
+    X(section[6].Cl, 0.0) \
+    X(section[7].Cl, 0.0) \
+    X(section[0].vivFrequency, 0.18) \
+    X(section[1].vivFrequency, 0.18) \
+    X(section[2].vivFrequency, 0.18) \
+    X(section[3].vivFrequency, 0.18) \
+    X(section[4].vivFrequency, 0.18) \
+    X(section[5].vivFrequency, 0.18) \
+    X(section[6].vivFrequency, 0.18) \
+    X(section[7].vivFrequency, 0.18) \
+    X(section[0].vivFrequencyRange, 0.08) \
+    X(section[1].vivFrequencyRange, 0.08) \
+    X(section[2].vivFrequencyRange, 0.08) \
+    X(section[3].vivFrequencyRange, 0.08) \
+    X(section[4].vivFrequencyRange, 0.08) \
+    X(section[5].vivFrequencyRange, 0.08) \
+    X(section[6].vivFrequencyRange, 0.08) \
+    X(section[7].vivFrequencyRange, 0.08) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -4064,6 +4124,33 @@ typedef struct UCOutputs {
     X(syropeK2, "syrope.k2", 0.0, 1000.0, 0, 0, "[0, 1000]", "k2 shapes the working curve") \
     X(syropeTensionMax0, "syrope.tensionMax0", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
     X(syropeTensionMean0, "syrope.tensionMean0", 0.0, 1000000000000.0, 0, 0, "[0, 1000000000000]", "a tension of a line is positive and below a tera-newton") \
+    X(Cl, "Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(vivFrequency, "vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(vivFrequencyRange, "vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[0].Cl, "section[1].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[1].Cl, "section[2].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[2].Cl, "section[3].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[3].Cl, "section[4].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[4].Cl, "section[5].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[5].Cl, "section[6].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[6].Cl, "section[7].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[7].Cl, "section[8].Cl", 0.0, 10.0, 0, 0, "[0, 10]", "a lift coefficient is 0 (off) or positive") \
+    X(section[0].vivFrequency, "section[1].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[1].vivFrequency, "section[2].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[2].vivFrequency, "section[3].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[3].vivFrequency, "section[4].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[4].vivFrequency, "section[5].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[5].vivFrequency, "section[6].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[6].vivFrequency, "section[7].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[7].vivFrequency, "section[8].vivFrequency", 0.01, 1.0, 0, 0, "[0.01, 1]", "a shedding frequency is a positive Strouhal-like number") \
+    X(section[0].vivFrequencyRange, "section[1].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[1].vivFrequencyRange, "section[2].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[2].vivFrequencyRange, "section[3].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[3].vivFrequencyRange, "section[4].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[4].vivFrequencyRange, "section[5].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[5].vivFrequencyRange, "section[6].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[6].vivFrequencyRange, "section[7].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(section[7].vivFrequencyRange, "section[8].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

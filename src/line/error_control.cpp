@@ -7,6 +7,10 @@
 
 namespace uc {
 
+namespace {
+constexpr double kVivPhaseTolerance = 1e-3;  // [rad] the VIV phases' absolute error per step
+}  // namespace
+
 // The integrator's absolute tolerance of each unknown from the physical ones. A local error of
 // tensionTolerance x the tension scale in tension is a strain error eps = that / EA: eps x the
 // element length in a node position, eps in a tangent; positionTolerance bounds a node position,
@@ -81,6 +85,18 @@ bool CableSimulation::set_integrator_tolerances(std::string& error) {
         atol[2 * j + 1] = a / tau;
         magnitude[2 * j] = 1.0;
         magnitude[2 * j + 1] = 1.0 / tau;
+    }
+    // A VIV phase: an error of kVivPhaseTolerance rad moves the lift by that fraction of its amplitude; its
+    // rate's over the shedding period at 1 m/s of cross flow (2 pi f0 / d).
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        if (model_.phase_offset(e) < 0) continue;
+        const SectionProps& section = model_.element_section(e);
+        const double rate = 2.0 * kPi * section.viv.frequency / section.fluid.diameter;
+        const int j = model_.free_index(model_.phase_offset(e)) + off_;
+        atol[2 * j] = kVivPhaseTolerance;
+        atol[2 * j + 1] = kVivPhaseTolerance * rate;
+        magnitude[2 * j] = 2.0 * kPi;
+        magnitude[2 * j + 1] = rate;
     }
     if (!integrator_->set_tolerances(atol, p.relTol, p.absTol, error, &magnitude)) return false;
     if (!integrator_->set_max_order(p.solverMaxOrder, error)) return false;

@@ -73,7 +73,15 @@ bool CableSimulation::release(double time, std::string& error) {
     const std::vector<double> X = X_, Xd = Xd_;
     const int slots = model_.n_slots();
     const Vec3 far(X[model_.end_offset()], X[model_.end_offset() + 1], X[model_.end_offset() + 2]);
+    std::vector<int> heldPhase(model_.n_elements());
+    for (int e = 0; e < model_.n_elements(); ++e) heldPhase[e] = model_.phase_offset(e);
     if (!build_released(releaseFlip_ ? 2 : 1, error)) return false;
+    for (int e = 0; e < model_.n_elements(); ++e) {  // the VIV phases carried over, element by element
+        const int g = model_.phase_offset(e), h = heldPhase[releaseFlip_ ? model_.n_elements() - 1 - e : e];
+        if (g < 0 || h < 0) continue;
+        X_[g] = X[h];
+        Xd_[g] = Xd[h];
+    }
     for (int j = 0; j < slots; ++j) {  // flipped: slot j is the held slot slots - 1 - j, its tangent reversed
         const int i = releaseFlip_ ? slots - 1 - j : j;
         const double sign = releaseFlip_ ? -1.0 : 1.0;

@@ -230,6 +230,8 @@ private:
     // Largest relative difference between the anchor force and the axial tension at the anchor of
     // a line without bending stiffness: the acceptance's 0.2 % (both measure the anchor tension).
     static constexpr double kAnchorCheck = 2e-3;
+    // The VIV phases' rates (v, free) from the synchronisation model at q_, v, a_ at time t.
+    void settle_phase_rates(double t, std::vector<double>& v);
     bool check_geometry(const Vec3& farPoint, std::string& error) const;
     // After the static state is accepted: its largest strain (an element's chord over its length). Beyond
     // kStrainRefused, false with the section, its EA and the likely cause (EA in the wrong unit);

@@ -278,8 +278,29 @@ bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
         std::vector<double> Xd(X.size(), 0.0);
         model_.settle_internal(X.data(), Xd.data());
     }
+    for (int e = 0; e < model_.n_elements(); ++e)  // the VIV phases spread along the line
+        if (model_.phase_offset(e) >= 0) X[model_.phase_offset(e)] = model_.initial_phase(e);
     model_.restrict_to_free(X.data(), q.data());
     return profile;
+}
+
+void CableSimulation::settle_phase_rates(double t, std::vector<double>& v) {
+    // Each VIV phase starts turning at the rate its synchronisation model gives the line's start (q_, v and the
+    // consistent accelerations a_, which the rate sees through the cross-flow motion's phase): the rate is an
+    // algebraic unknown, and a start off it would be a jump the integrator's error test cannot pass.
+    model_.expand(q_.data(), v.data(), a_.data(), loads_, t, X_.data(), Xd_.data(), Xdd_.data());
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const int g = model_.phase_offset(e);
+        if (g < 0) continue;
+        // the rate sets the motion's phase it is pulled by: a fixed point, from the shedding frequency at rest
+        // (a contraction: the pull is the frequency range df, small against f0)
+        const SectionProps& section = model_.element_section(e);
+        Xd_[g] = 2.0 * kPi * section.viv.frequency * std::max(loads_.current.velocity(Vec3::Zero()).norm(), 0.01) /
+                 section.fluid.diameter;
+        for (int k = 0; k < 30; ++k)
+            Xd_[g] -= model_.phase_residual(e, X_.data(), Xd_.data(), Xdd_.data(), loads_, nullptr);
+        v[model_.free_index(g)] = Xd_[g];
+    }
 }
 
 bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) const {
@@ -743,6 +764,7 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
             error = "the mass matrix is singular: check massPerLength and the end conditions";
             return false;
         }
+        if (model_.n_phases() > 0) settle_phase_rates(t0, v);
         for (int j = 0; j < n; ++j) {
             y_[2 * (j + off_)] = q_[j];
             y_[2 * (j + off_) + 1] = v[j];

@@ -13,11 +13,14 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 15;  // 13: the viscoelastic elements' internal strains among the unknowns;
+constexpr std::uint32_t kStateVersion = 16;  // 13: the viscoelastic elements' internal strains among the unknowns;
                                              // 14: LineState::released;
-                                             // 15: the Syrope elements' history after the integrator's
+                                             // 15: the Syrope elements' history after the integrator's;
+                                             // 16: the VIV phases among the unknowns
+// What each version added (named when a state of another version is refused).
 const char* const kStateVersions =
-    "version 13 added the viscoelastic internal strains, 14 the released end, 15 the Syrope elements' history";
+    "version 13 added the viscoelastic internal strains, 14 the released end, 15 the Syrope elements' history, "
+    "16 the vortex-induced vibration phases among the unknowns";
 
 // Fixed-layout header of a saved state: what it belongs to (the sizes and the winch's mesh, which
 // the model holds); followed by LineState, y, y', the integrator's history and the Syrope elements' history
@@ -87,6 +90,11 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     }
     const bool ours = complete && header.magic == kStateMagic && header.version == kStateVersion &&
                       header.stateBytes == static_cast<std::int32_t>(sizeof(LineState));
+    if (complete && header.magic == kStateMagic && header.version != kStateVersion) {
+        error = "saved state is of format version " + std::to_string(header.version) + ", this FMU reads " +
+                std::to_string(kStateVersion) + " (" + kStateVersions + ")";
+        return false;
+    }
     if (model_.winch() && ours) {
         // A state of a winch's line may have another mesh than the present one: take its mesh first.
         const WinchMesh mesh = model_.winch_mesh();

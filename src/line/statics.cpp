@@ -187,9 +187,11 @@ bool final_stages(const CableModel& model, BandSolver& solver, const Loads& load
 
 }  // namespace
 
-StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solver, const Loads& loads,
+StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solver, const Loads& dynamicLoads,
                                        double t, const std::vector<double>& vSteady,
                                        std::vector<double>& q, bool nearGuess) {
+    Loads loads = dynamicLoads;
+    loads.viv = false;  // no lift at rest, the VIV phases held at their start (as MoorDyn's initial conditions)
     StaticsResult result;
     Workspace w(model);
     auto first_stage = [&] {
@@ -270,12 +272,17 @@ bool solve_consistent_acceleration(const CableModel& model, BandSolver& solver, 
     model.expand(q.data(), v.data(), w.zero.data(), loads, t, w.X.data(), w.Xd.data(), w.Xdd.data());
     model.residual(w.X.data(), w.Xd.data(), w.Xdd.data(), loads, w.R.data(), nullptr);
     solver.clear();
-    model.jacobian(w.X.data(), w.Xd.data(), w.Xdd.data(), loads,
-                   [&](int i, int j, double, double, double da) { solver.add(i, j, da); });
-    // An internal strain's equation has no acceleration (its rate is the given one): a' = 0 there.
+    // An internal strain's or a VIV phase's equation has no acceleration of its own (its rate is the given
+    // one): a' = 0 there (a phase's row, which sees the nodes' accelerations, left out).
+    std::vector<char> firstOrder(model.n_free(), 0);
     for (int e = 0; e < model.n_elements(); ++e)
-        if (model.internal_offset(e) >= 0) {
-            const int j = model.free_index(model.internal_offset(e));
+        for (const int g : {model.internal_offset(e), model.phase_offset(e)})
+            if (g >= 0) firstOrder[model.free_index(g)] = 1;
+    model.jacobian(w.X.data(), w.Xd.data(), w.Xdd.data(), loads, [&](int i, int j, double, double, double da) {
+        if (!firstOrder[i]) solver.add(i, j, da);
+    });
+    for (int j = 0; j < model.n_free(); ++j)
+        if (firstOrder[j]) {
             solver.add(j, j, 1.0);
             w.R[j] = 0.0;
         }

@@ -253,17 +253,19 @@ struct SectionInput {
     int nElements, joint;
     double MBL;
     double EAdynamic, EAdynamicSlope, axialDampingDynamic;  // the viscoelastic model (EAdynamic 0: none)
+    double Cl, vivFrequency, vivFrequencyRange;             // vortex-induced vibration (Cl 0: none)
 };
 
 SectionInput uniform_line(const UCParams& p) {
     return {p.length, p.diameter, p.massPerLength, p.EA, p.EI, p.axialDamping, p.GJ,
-            p.Cdn, p.Cdt, p.Can, p.Cat, p.nElements, 0, p.MBL, p.EAdynamic, p.EAdynamicSlope, p.axialDampingDynamic};
+            p.Cdn, p.Cdt, p.Can, p.Cat, p.nElements, 0, p.MBL, p.EAdynamic, p.EAdynamicSlope, p.axialDampingDynamic,
+            p.Cl, p.vivFrequency, p.vivFrequencyRange};
 }
 
 SectionInput section_input(const UCSection& s, double lineMBL) {
     return {s.length, s.diameter, s.massPerLength, s.EA, s.EI, s.axialDamping, s.GJ,
             s.Cdn, s.Cdt, s.Can, s.Cat, s.nElements, s.joint, s.MBL > 0.0 ? s.MBL : lineMBL,
-            s.EAdynamic, s.EAdynamicSlope, s.axialDampingDynamic};
+            s.EAdynamic, s.EAdynamicSlope, s.axialDampingDynamic, s.Cl, s.vivFrequency, s.vivFrequencyRange};
 }
 
 }  // namespace
@@ -337,6 +339,7 @@ void CableModel::build_sections(const UCParams& p) {
         if (sections_.empty()) s.curve = curve;
         if (in.EAdynamic > 0.0) s.visco = ViscoProps{in.EA, in.EAdynamic, in.EAdynamicSlope, in.axialDampingDynamic};
         if (sections_.empty()) syrope_from_params(p, s.syrope);  // (a uniform line's)
+        if (in.Cl > 0.0) s.viv = VivProps{in.Cl, in.vivFrequency, in.vivFrequencyRange};
         s.axial.damping = in.axialDamping;
         s.axial.tensionOnly = p.enableCompression == 0;
         s.EI = p.enableBending ? in.EI : 0.0;
@@ -519,18 +522,31 @@ void CableModel::build_dof_map() {
     // The internal strains of viscoelastic elements after the node slots (the free unknowns interleave them).
     nInternal_ = 0;
     internalOffset_.clear();
-    std::vector<int> startsAt(nSlots_, -1);  // the viscoelastic element starting at each slot
+    std::vector<int> startsAt(nSlots_, -1);  // the viscoelastic or VIV element starting at each slot
     for (int e = 0; e < nElements_; ++e) {
         if (!sections_[runs_[elementRun_[e]].section].viscoelastic()) continue;
         if (internalOffset_.empty()) internalOffset_.assign(nElements_, -1);
         internalOffset_[e] = 6 * nSlots_ + nInternal_++;
         startsAt[elementOffset_[e] / 6] = e;
     }
+    // The VIV phases after them, each also between its element's two nodes.
+    nPhase_ = 0;
+    phaseOffset_.clear();
+    for (int e = 0; e < nElements_; ++e) {
+        if (!sections_[runs_[elementRun_[e]].section].viv.on()) continue;
+        if (phaseOffset_.empty()) phaseOffset_.assign(nElements_, -1);
+        phaseOffset_[e] = 6 * nSlots_ + nInternal_ + nPhase_++;
+        startsAt[elementOffset_[e] / 6] = e;
+    }
     free_.assign(n_global(), -1);
     coef_.assign(n_global(), 1.0);
     int next = 0;
     for (int i = 0; i < nSlots_; ++i) {
-        if (i > 0 && startsAt[i - 1] >= 0) free_[internalOffset_[startsAt[i - 1]]] = next++;
+        if (i > 0 && startsAt[i - 1] >= 0) {
+            const int e = startsAt[i - 1];
+            if (internal_offset(e) >= 0) free_[internal_offset(e)] = next++;
+            if (phase_offset(e) >= 0) free_[phase_offset(e)] = next++;
+        }
         for (int k = 0; k < 6; ++k) {
             const int g = 6 * i + k;
             const bool position = k < 3;
@@ -563,6 +579,10 @@ void CableModel::build_dof_map() {
         if (internal_offset(e) >= 0) {
             lo = std::min(lo, free_[internal_offset(e)]);
             hi = std::max(hi, free_[internal_offset(e)]);
+        }
+        if (phase_offset(e) >= 0) {
+            lo = std::min(lo, free_[phase_offset(e)]);
+            hi = std::max(hi, free_[phase_offset(e)]);
         }
         if (hi >= lo) bandwidth_ = std::max(bandwidth_, hi - lo);
     }
@@ -741,6 +761,31 @@ void CableModel::element_residual(int e, const double* X, const double* Xd, cons
     if (sec.seabed.enabled) add_seabed_force(tables, sec.seabed, x, xd, R, loads.axialContactOnly);
     if (loads.seabedHold && sec.seabed.enabled)
         add_seabed_hold(tables, sec.seabed, loads.seabedHoldAcross, x, loads.seabedHold + g0, R, loads.axialContactOnly);
+    if (loads.viv && phase_offset(e) >= 0)
+        add_viv_force(tables, sec.fluid, sec.viv, loads.current, x, xd, X[phase_offset(e)], R,
+                      waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
+}
+
+double CableModel::phase_residual(int e, const double* X, const double* Xd, const double* Xdd, const Loads& loads,
+                                  VivPhaseJacobian* J) const {
+    const int gp = phase_offset(e), g0 = elementOffset_[e];
+    if (!loads.viv) {  // the statics: the phase held at its start
+        if (J) {
+            *J = VivPhaseJacobian{};
+            J->dPhase = 1.0;
+        }
+        return X[gp] - initial_phase(e);
+    }
+    const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
+    double Xm[12];
+    return viv_phase_residual(tables_[elementRun_[e]], sec.fluid, sec.viv, loads.current, X + g0,
+                              element_velocities(e, X, Xd, Xm), Xdd + g0, X[gp], Xd[gp], J);
+}
+
+double CableModel::initial_phase(int e) const {
+    // spread over 0 .. 2 pi along the line by the element's midpoint, so that the lift starts without a
+    // common phase (MoorDyn spreads its nodes' phases the same way)
+    return 2.0 * kPi * (element_start(e) + 0.5 * element_length(e)) / line_.length;
 }
 
 void CableModel::element_jacobian(int e, const double* X, const double* Xd, const double* Xdd,
@@ -758,6 +803,25 @@ void CableModel::element_jacobian(int e, const double* X, const double* Xd, cons
         return;
     }
     element_jacobian_at(e, axial_at(e, X, Xd, loads), X + g0, Xd + g0, Xdd + g0, loads, K, C, M);
+    if (loads.viv && phase_offset(e) >= 0) {
+        double unused[12] = {};
+        const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
+        add_viv_jacobian(tables_[elementRun_[e]], sec.fluid, sec.viv, loads.current, X + g0, Xd + g0, X[phase_offset(e)], K,
+                         C, unused, waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
+    }
+}
+
+void CableModel::element_viv_phase_column(int e, const double* X, const double* Xd, const Loads& loads,
+                                          double* dR) const {
+    for (int a = 0; a < 12; ++a) dR[a] = 0.0;
+    if (!loads.viv || phase_offset(e) < 0) return;
+    const int g0 = elementOffset_[e];
+    const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
+    Mat12 K = Mat12::Zero(), C = Mat12::Zero();
+    double Xm[12];
+    add_viv_jacobian(tables_[elementRun_[e]], sec.fluid, sec.viv, loads.current, X + g0, element_velocities(e, X, Xd, Xm),
+                     X[phase_offset(e)], K, C, dR,
+                     waveCache_.empty() ? nullptr : &waveCache_[static_cast<size_t>(e) * kLoadQuadraturePoints]);
 }
 
 void CableModel::element_jacobian_at(int e, const AxialProps& axial, const double* x, const double* xd,
@@ -955,6 +1019,8 @@ void CableModel::residual(const double* X, const double* Xd, const double* Xdd, 
             Rfree[free_[gi]] += visco_residual(tables_[elementRun_[e]], axial_at(e, X, Xd, loads), X + g0,
                                                element_velocities(e, X, Xd, Xm));
         }
+        const int gp = phase_offset(e);
+        if (gp >= 0) Rfree[free_[gp]] += phase_residual(e, X, Xd, Xdd, loads, nullptr);
     }
     const Vec6 end = end_node_residual(X, Xd, Xdd, loads);
     const int gN = end_offset();

@@ -21,6 +21,7 @@
 #include "terms/hermite_element.h"
 #include "terms/hydrodynamics.h"
 #include "terms/seabed.h"
+#include "terms/viv.h"
 
 namespace uc {
 
@@ -121,6 +122,9 @@ struct Loads {
     // direction along the seabed across the profile's plane.
     const double* seabedHold = nullptr;
     Vec3 seabedHoldAcross = Vec3::Zero();
+    // Vortex-induced vibration acts (the lift, the phases' synchronisation); false in the static solver:
+    // no lift, each phase held at its start (CableModel::initial_phase).
+    bool viv = true;
 };
 
 // Residual contributions of one element and of the far-end node terms, kept for outputs.
@@ -161,6 +165,7 @@ struct SectionProps {
     ViscoProps visco{};    // EAd 0: none; else the viscoelastic model (axial.EA = visco.EAs, the static EA)
     SyropeProps syrope{};  // form 0: none; else the Syrope model (visco: its internal strain, the slow strain)
     bool viscoelastic() const { return visco.EAd > 0.0; }
+    VivProps viv{};        // Cl 0: no vortex-induced vibration
     SeabedProps seabed{};  // the contact's smoothing depends on the diameter
     double EI = 0.0;       // 0 when bending is disabled
     double bendingDamping = 0.0;  // EI * axialDamping / EA [N.m2.s]
@@ -252,10 +257,21 @@ public:
     // Element e's slice of the water pushed by the importer (CurrentField::pushed), or null.
     static const double* pushed_water(const Loads& loads, int e);
     int n_slots() const { return nSlots_; }  // node slots: nodes plus one per pinned joint
-    int n_global() const { return 6 * nSlots_ + nInternal_; }
+    int n_global() const { return 6 * nSlots_ + nInternal_ + nPhase_; }
     int n_internal() const { return nInternal_; }  // internal strains (viscoelastic elements)
     // Global index of element e's internal strain, -1 where it has none.
     int internal_offset(int e) const { return internalOffset_.empty() ? -1 : internalOffset_[e]; }
+    // Global index of element e's VIV phase [rad] (its rate the phase's rate), -1 where it has none.
+    int phase_offset(int e) const { return phaseOffset_.empty() ? -1 : phaseOffset_[e]; }
+    int n_phases() const { return nPhase_; }
+    // The phase's equation of element e (R = phi' - the synchronisation model's rate; with loads.viv false
+    // R = phi - initial_phase(e)) and, J non-null, its derivatives.
+    double phase_residual(int e, const double* X, const double* Xd, const double* Xdd, const Loads& loads,
+                          VivPhaseJacobian* J) const;
+    // The phase element e starts with: 2 pi times the arc length of its midpoint over the line's length.
+    double initial_phase(int e) const;
+    // dR/dphi of element e's 12 residuals (the lift's phase column; zeros where it has none).
+    void element_viv_phase_column(int e, const double* X, const double* Xd, const Loads& loads, double* dR) const;
     // Every element's internal strain at equilibrium with its present mean strain (X), rate 0 (Xd); a Syrope
     // element's slow strain at the start's mean tension (syrope.tensionMean0) on the working curve of its history.
     void settle_internal(double* X, double* Xd) const;
@@ -432,6 +448,8 @@ private:
     int nInternal_ = 0;
     std::vector<int> internalOffset_;  // per element (empty: no viscoelastic element)
     std::vector<double> history_;      // per element (empty: no Syrope element)
+    int nPhase_ = 0;
+    std::vector<int> phaseOffset_;  // per element (empty: no element with VIV)
     int nFree_ = 0;
     int bandwidth_ = 0;
 };
@@ -453,6 +471,24 @@ void CableModel::jacobian(const double* X, const double* Xd, const double* Xdd, 
                 const double cab = ca * coef_[g0 + b];
                 add(ja, jb, cab * K(a, b), cab * C(a, b), cab * M(a, b));
             }
+        }
+        const int gp = phase_offset(e);
+        if (gp >= 0) {
+            // the VIV phase's couplings: its row (the rate, and the acceleration through the cross-flow
+            // motion's phase), its column in the element's rows (the lift)
+            const int jp = free_[gp];
+            VivPhaseJacobian P;
+            phase_residual(e, X, Xd, Xdd, loads, &P);
+            double dLift[12];
+            element_viv_phase_column(e, X, Xd, loads, dLift);
+            for (int a = 0; a < 12; ++a) {
+                const int ja = free_[g0 + a];
+                if (ja < 0) continue;
+                const double ca = coef_[g0 + a];
+                add(ja, jp, ca * dLift[a], 0.0, 0.0);
+                add(jp, ja, ca * P.dX[a], ca * P.dXd[a], ca * P.dXdd[a]);
+            }
+            add(jp, jp, P.dPhase, P.dPhaseRate, 0.0);
         }
         const int gi = internal_offset(e);
         if (gi < 0) continue;

@@ -187,6 +187,21 @@ std::string check_params(const UCParams& p) {
                                     "the viscoelastic model's internal strain moves through a dashpot: the static or the "
                                     "dynamic damping is above 0");
     }
+    // Vortex-induced vibration: a uniform line's (Cl) or a section's (section[k].Cl).
+    if (p.Cl > 0.0 && p.nSections >= 2)
+        return format_violation("Cl", p.Cl, "{0} with nSections >= 2",
+                                "the line's lift coefficient describes a uniform line (nSections 1; sections have "
+                                "section[k].Cl)");
+    for (int k = 0; k < (p.nSections >= 2 ? p.nSections : 1) && k < UC_MAX_SECTIONS; ++k) {
+        const bool line = p.nSections < 2;
+        const double Cl = line ? p.Cl : p.section[k].Cl;
+        if (!(Cl > 0.0)) continue;
+        char name[64];
+        std::snprintf(name, sizeof name, line ? "Cl" : "section[%d].Cl", k + 1);
+        if (p.winchMode != 0)
+            return format_violation(name, Cl, "{0} with winchMode != 0",
+                                    "a winch's line changes its elements, which would lose their vortex-shedding phases");
+    }
     // Sections and attachments: every section in use has a length; attachments lie on the line.
     double lineLength = p.length;
     if (p.nSections >= 2) {

@@ -573,10 +573,24 @@ TEST(LineFileRefuses, NonLinearAndOtherUnsupportedLineProperties) {
     expect_refused(d, "ba.txt", "a non-linear damping (table) is not supported");
     d = edit(kSingleChain, "-0.8      0    2.4", "-0.8      ei.txt 2.4");
     expect_refused(d, "ei.txt", "EI 'ei.txt': a non-linear bending stiffness");
-    d = edit(kSingleChain, "1.0   0.2   0.0\n", "1.0   0.2   0.0   0.8\n");
-    expect_refused(d, "0.0   0.8", "Cl = 0.8: vortex-induced vibration is not supported");
+    // vortex-induced vibration: Cl alone (MoorDyn's dF 0.08 and cF 0.18), or Cl dF cF
+    const Read viv = read(edit(kSingleChain, "1.0   0.2   0.0\n", "1.0   0.2   0.0   0.8\n"));
+    ASSERT_TRUE(viv.ok) << viv.error;
+    EXPECT_EQ(viv.line.sections[0].Cl, 0.8);
+    EXPECT_EQ(viv.line.sections[0].vivFrequencyRange, 0.08);
+    EXPECT_EQ(viv.line.sections[0].vivFrequency, 0.18);
+    const Read vivFull = read(edit(kSingleChain, "1.0   0.2   0.0\n", "1.0   0.2   0.0   0.7 0.05 0.2\n"));
+    ASSERT_TRUE(vivFull.ok) << vivFull.error;
+    EXPECT_EQ(vivFull.line.sections[0].Cl, 0.7);
+    EXPECT_EQ(vivFull.line.sections[0].vivFrequencyRange, 0.05);
+    EXPECT_EQ(vivFull.line.sections[0].vivFrequency, 0.2);
+    d = edit(kSingleChain, "1.0   0.2   0.0\n", "1.0   0.2   0.0   -0.8\n");
+    expect_refused(d, "-0.8\n", "Cl");
+    d = edit(kSingleChain, "1.0   0.2   0.0\n", "1.0   0.2   0.0   0.8 0.08 0\n");
+    expect_refused(d, "0.8 0.08 0", "cF = 0: the centre of the VIV model's non-dimensional shedding frequencies is positive");
     const Read r = read(edit(kSingleChain, "1.0   0.2   0.0\n", "1.0   0.2   0.0   0 0.08 0.18\n"));
     EXPECT_TRUE(r.ok) << r.error;  // Cl = 0: no VIV, dF and cF unused
+    EXPECT_EQ(r.line.sections[0].Cl, 0.0);
     d = edit(kSingleChain, "1.0   0.2   0.0\n", "1.0   0.2\n");
     expect_refused(d, "1.0   0.2\n", "this row has 9");
     d = edit(kSingleChain, "0.002    dtM", "2 WaveKin");

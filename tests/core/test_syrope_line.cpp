@@ -241,7 +241,7 @@ TEST(SyropeLine, ASavedStateCarriesTheHistory) {
     const std::uint32_t version = 14;
     std::memcpy(old.data() + sizeof(std::uint32_t), &version, sizeof version);
     EXPECT_FALSE(b.restore_state(old.data(), old.size(), error));
-    EXPECT_NE(error.find("format version 14, this FMU reads 15"), std::string::npos) << error;
+    EXPECT_NE(error.find("format version 14, this FMU reads 16"), std::string::npos) << error;
     EXPECT_NE(error.find("15 the Syrope elements' history"), std::string::npos) << error;
 }
 
