@@ -38,7 +38,7 @@ bool CableSimulation::proxy_statics(double t0, const std::vector<double>& v, boo
     const double tolerance = 1e-9 * std::max(model_.line().length, target.norm());
     for (int pass = 0; pass < kPasses; ++pass) {
         const StaticsResult statics =
-            solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile || pass > 0);
+            solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile || pass > 0, staticWork_);
         if (!statics.converged) {
             loads_.endSpring = 0.0;
             error = statics.message;

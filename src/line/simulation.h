@@ -222,6 +222,12 @@ private:
     // advice to append to the message; which knob to turn where no such mesh was found.
     std::string mesh_advice(double t0, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env) const;
     bool adviseMesh_ = true;  // off in the trial runs of mesh_advice
+    // The trials' shared work budget of mesh_advice [element iterations of the static solver]: a trial
+    // run's static solves draw on it (null: no limit).
+    double* staticWork_ = nullptr;
+    // The budget: 30 000 element iterations (a Newton iteration on a line of n elements counts n), about
+    // 3 s of one core (0.1 ms an element iteration, measured on chains of 25 to 100 elements).
+    static constexpr double kAdviceWork = 3e4;
     // Largest relative difference of the end tensions from the exact static profile [-].
     static constexpr double kStaticsCheck = 0.01;
     // The check applies to a line with bending stiffness whose bending length at its smallest
@@ -237,6 +243,12 @@ private:
     // kStrainRefused, false with the section, its EA and the likely cause (EA in the wrong unit);
     // beyond kStrainWarned, a warning event.
     bool check_static_strain(std::string& error);
+    // After it: false, with the section and the numbers, where the buoyancy the waterline's ramp adds
+    // (phi falling over one diameter above z = 0, docs/model.md, "Lines in air and water") exceeds
+    // kWaterlineRefused of the line's largest tension: a thick float standing through the surface,
+    // whose start would rest on the ramp, not on its submerged length.
+    bool check_waterline(std::string& error) const;
+    static constexpr double kWaterlineRefused = 0.1;
     // Appends a message to the step's event text (several are joined by "; ").
     void add_event(const std::string& text);
     // Before the static solver: false where the line's whole weight in water over a section's EA

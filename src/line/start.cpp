@@ -460,6 +460,45 @@ bool CableSimulation::check_static_strain(std::string& error) {
     return true;
 }
 
+bool CableSimulation::check_waterline(std::string& error) const {
+    // The ramp's buoyancy over that of the submerged length, rho A g int (phi(z) - [z <= 0]) ds, summed
+    // per element by the midpoint rule on the elements that reach the ramp (0 < z < d): 64 points an element.
+    constexpr int kPoints = 64;
+    double surplus = 0.0, thickest = 0.0;
+    int worstElement = -1;
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const FluidProps& fluid = model_.element_section(e).fluid;
+        const double* X = X_.data() + model_.element_offset(e);
+        const double l = model_.element_length(e);
+        if (std::max(X[2], X[8]) <= 0.0 || std::min(X[2], X[8]) >= fluid.diameter + 0.5 * l) continue;
+        double ramp = 0.0;
+        for (int k = 0; k < kPoints; ++k) {
+            const double z = interpolate(hermite_shape((k + 0.5) / kPoints, l).N, X).z();
+            if (z > 0.0) ramp += std::max(0.0, 1.0 - z / fluid.diameter);
+        }
+        const double added = fluid.rho * fluid.area * fluid.gravity * ramp * l / kPoints;
+        surplus += added;
+        if (added > 0.0 && fluid.diameter > thickest) {
+            thickest = fluid.diameter;
+            worstElement = e;
+        }
+    }
+    double largest = std::max(state_.outputs.towTension, state_.outputs.endTension);
+    for (double t : state_.outputs.tension) largest = std::max(largest, t);
+    if (worstElement < 0 || !(surplus > kWaterlineRefused * largest)) return true;
+    char text[700];
+    std::snprintf(text, sizeof text,
+                  "the static equilibrium found rests on the waterline's buoyancy ramp: where the line (diameter "
+                  "%.6g m, around arc length %.6g m) crosses the water surface, the buoyancy the model adds over "
+                  "one diameter above z = 0 is %.4g N, %.3g %% of the line's largest tension %.6g N; a float this "
+                  "thick standing through the surface is no slender line, and its start would depend on that ramp, "
+                  "not on its submerged length (MoorDyn takes the geometric submerged length); refusing the start",
+                  thickest, model_.element_start(worstElement) + 0.5 * model_.element_length(worstElement), surplus,
+                  100.0 * surplus / largest, largest);
+    error = text;
+    return false;
+}
+
 // A line without bending stiffness that is longer than the way down to the seabed and across to
 // its anchor rests on a frictionless seabed with no tension at all, in no one shape: refused with
 // the lengths that would give it one.
@@ -560,6 +599,18 @@ std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const 
                                          const LineEnvironment& env) const {
     const UCParams& p = model_.params();
     const bool sections = p.nSections > 1;
+    // The trials share a budget of the static solver's work (kAdviceWork), so that a refusal comes back
+    // within seconds: the element counts tried, and where the budget ran out, the advice says it was cut short.
+    double work = kAdviceWork;
+    std::string tried;
+    auto cut_short = [&] {
+        char text[300];
+        std::snprintf(text, sizeof text,
+                      "; the search for an element count that starts the line was cut short: its budget of %.0f "
+                      "element iterations of the static solver was spent (tried %s)",
+                      kAdviceWork, tried.c_str());
+        return std::string(text);
+    };
     // The same line with each section's elements as `count` gives them; true with the advice where it
     // starts. Out of the parameters' range: `beyond`.
     auto trial_starts = [&](auto&& count, const std::string& named, std::string& advice, bool& beyond) {
@@ -574,8 +625,11 @@ std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const 
         CableSimulation trial(q);
         if (model_.seabed_grid()) trial.set_seabed_grid(model_.seabed_grid());
         trial.adviseMesh_ = false;
+        trial.staticWork_ = &work;
+        tried += (tried.empty() ? "" : ", ") + std::to_string(sections ? q.section[0].nElements : q.nElements);
         std::string ignored;
-        if (!trial.initialize(t0, tow, far, env, ignored)) return false;
+        const bool starts = trial.initialize(t0, tow, far, env, ignored);
+        if (!starts) return false;
         std::string counts = named;
         if (counts.empty() && sections) {
             for (int k = 0; k < p.nSections; ++k)
@@ -604,12 +658,14 @@ std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const 
             if (trial_starts([count](int) { return count; }, "lineFileElements = " + std::to_string(count), advice,
                              beyond))
                 return advice;
+            if (work <= 0.0) return cut_short();
         }
         return "; neither more nor fewer elements (lineFileElements) resolve the line";
     }
     for (int factor : {2, 4}) {
         if (trial_starts([factor](int elements) { return factor * elements; }, "", advice, beyond)) return advice;
         if (beyond) break;  // beyond the elements a line may have
+        if (work <= 0.0) return cut_short();
     }
     return std::string("; neither twice nor four times the elements (") +
            (sections ? "section[k].nElements" : "nElements") +
@@ -741,7 +797,7 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
                 loads_.seabedHold = seabedHeld_.data();
                 loads_.seabedHoldAcross = across;
             }
-            const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile);
+            const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile, staticWork_);
             loads_.seabedHold = nullptr;
             if (!statics.converged) {
                 error = statics.message;
@@ -806,7 +862,7 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
             return false;
         }
     }
-    if (p.initMode == UC_INIT_EQUILIBRIUM && !check_static_strain(error)) return false;
+    if (p.initMode == UC_INIT_EQUILIBRIUM && (!check_static_strain(error) || !check_waterline(error))) return false;
     warn_beyond_curve();
     if (off_) {  // consistent: the winch runs at the rate of the initial tension
         double R[12];

@@ -63,9 +63,9 @@ double force_scale(const CableModel& model, const Loads& loads) {
 // little stiffness (a hanging cable swinging back in the flow); as the residual falls, dtau grows
 // and the iteration becomes Newton's method with quadratic convergence. Converged when the
 // correction reaches round-off (|dq| <= 1e-11 L) or the residual reaches the round-off level of
-// the axial forces.
+// the axial forces or its floor (StaticsResult::residualFloor).
 bool newton(const CableModel& model, BandSolver& solver, const Loads& loads, double t,
-            std::vector<double>& q, Workspace& w, StaticsResult& result) {
+            std::vector<double>& q, Workspace& w, StaticsResult& result, double* work) {
     const int n = model.n_free();
     const UCParams& p = model.params();
     const double length = model.line().length;
@@ -79,7 +79,7 @@ bool newton(const CableModel& model, BandSolver& solver, const Loads& loads, dou
     const double roundOff = std::max(1e-12 * force_scale(model, loads),
                                      64.0 * model.line().EA * std::min(1.0, loads.axialStiffnessScale) * std::numeric_limits<double>::epsilon() *
                                          (1.0 + coordinate / shortest));
-    std::vector<double> dq(n), trial(n);
+    std::vector<double> dq(n), trial(n), terms(n);
     double dtau = 0.1 * std::sqrt(length / std::max(p.gravity, 0.1));
     for (int it = 0; it < kMaxNewtonIterations; ++it) {
         result.residualNorm = norm;
@@ -87,13 +87,21 @@ bool newton(const CableModel& model, BandSolver& solver, const Loads& loads, dou
         if (norm <= roundOff) return true;
         solver.clear();
         const double inertia = dtau < kNewtonTimeScale ? 1.0 / (dtau * dtau) : 0.0;
+        std::fill(terms.begin(), terms.end(), 0.0);
         model.jacobian(w.X.data(), w.Xd.data(), w.Xdd.data(), loads,
                        [&](int i, int j, double dR_dq, double, double dR_da) {
                            solver.add(i, j, dR_dq + inertia * dR_da);
+                           terms[i] += std::abs(dR_dq * q[j]);
                        });
+        result.residualFloor = std::numeric_limits<double>::epsilon() * max_abs(terms);
+        if (norm <= result.residualFloor) return true;
         for (int j = 0; j < n; ++j) dq[j] = -w.R[j];
         if (!solver.factor_and_solve(dq.data())) return false;
         ++result.newtonIterations;
+        if (work && (*work -= model.n_elements()) <= 0.0) {
+            result.budgetSpent = true;
+            return false;
+        }
         if (inertia == 0.0 && max_abs(dq) <= 1e-11 * length) {
             for (int j = 0; j < n; ++j) q[j] += dq[j];
             result.residualNorm = residual_norm(model, loads, t, q, w);
@@ -156,11 +164,11 @@ StaticsResult failed(StaticsResult& result, const char* format, Args... args) {
 // The stages after the continuation, on the real EA: the dense seabed contact, then the
 // tension-only law, then the final Newton polish. False with the message set.
 bool final_stages(const CableModel& model, BandSolver& solver, const Loads& loads, double t, Loads& staged,
-                  std::vector<double>& q, Workspace& w, StaticsResult& result) {
+                  std::vector<double>& q, Workspace& w, StaticsResult& result, double* work) {
     if (staged.axialContactOnly) {
         staged.axialContactOnly = false;
         ++result.continuationSteps;
-        if (!newton(model, solver, staged, t, q, w, result)) {
+        if (!newton(model, solver, staged, t, q, w, result, work)) {
             failed(result, "static equilibrium not found with the seabed contact sampled every "
                            "seabedContactSpacing: residual %.3g N after %d iterations",
                    result.residualNorm, result.newtonIterations);
@@ -172,7 +180,7 @@ bool final_stages(const CableModel& model, BandSolver& solver, const Loads& load
         // within 1e-5 strain of it: start from that equilibrium.
         staged.twoSidedAxial = false;
         ++result.continuationSteps;
-        if (!newton(model, solver, staged, t, q, w, result)) {
+        if (!newton(model, solver, staged, t, q, w, result, work)) {
             failed(result, "static equilibrium not found with the tension-only law (enableCompression = "
                            "false): residual %.3g N after %d iterations; part of the line is slack at rest, "
                            "where a line without bending stiffness has no one shape",
@@ -189,7 +197,7 @@ bool final_stages(const CableModel& model, BandSolver& solver, const Loads& load
 
 StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solver, const Loads& dynamicLoads,
                                        double t, const std::vector<double>& vSteady,
-                                       std::vector<double>& q, bool nearGuess) {
+                                       std::vector<double>& q, bool nearGuess, double* work) {
     Loads loads = dynamicLoads;
     loads.viv = false;  // no lift at rest, the VIV phases held at their start (as MoorDyn's initial conditions)
     StaticsResult result;
@@ -212,8 +220,9 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
         // From the line's static profile: Newton's method on the real cable at the full loads,
         // with the continuation below only where that fails.
         ++result.continuationSteps;
-        if (newton(model, solver, staged, t, q, w, result) && final_stages(model, solver, loads, t, staged, q, w, result))
+        if (newton(model, solver, staged, t, q, w, result, work) && final_stages(model, solver, loads, t, staged, q, w, result, work))
             return result;
+        if (result.budgetSpent) return failed(result, "static equilibrium not found within the work budget");
         q = guess;
         result = StaticsResult();
         staged = first_stage();
@@ -232,11 +241,13 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
         Loads scaled = scaled_loads(staged, target);
         for (int j = 0; j < model.n_free(); ++j) w.v[j] = target * vSteady[j];
         ++result.continuationSteps;
-        if (newton(model, solver, scaled, t, q, w, result)) {
+        if (newton(model, solver, scaled, t, q, w, result, work)) {
             accepted = q;
             lambda = target;
             step = std::min(1.0, 2.0 * step);
             if (lambda >= 1.0) break;
+        } else if (result.budgetSpent) {
+            return failed(result, "static equilibrium not found within the work budget");
         } else {
             q = accepted;
             step = first ? 0.25 : 0.25 * step;
@@ -255,13 +266,13 @@ StaticsResult solve_static_equilibrium(const CableModel& model, BandSolver& solv
         stiffness = std::min(1.0, 10.0 * stiffness);
         staged.axialStiffnessScale = stiffness;
         ++result.continuationSteps;
-        if (!newton(model, solver, staged, t, q, w, result)) {
+        if (!newton(model, solver, staged, t, q, w, result, work)) {
             return failed(result, "static equilibrium not found: stiffening the cable to %.3g of EA failed "
                                   "(residual %.3g N after %d iterations)",
                           stiffness, result.residualNorm, result.newtonIterations);
         }
     }
-    final_stages(model, solver, loads, t, staged, q, w, result);
+    final_stages(model, solver, loads, t, staged, q, w, result, work);
     return result;
 }
 

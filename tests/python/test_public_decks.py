@@ -101,25 +101,41 @@ def test_a_chain_between_two_fixed_points_on_a_buoy_balances_its_loads(fmu_file)
         c.free()
 
 
-def test_a_refused_deck_names_the_element_count_on_which_it_starts(fmu_file):
-    """MoorDyn's tripod: a short, very stiff float (0.63 m, EI 9.3e7 N m2) on a tether from the node
-    where three bridles meet. At the deck's NumSegs its line's static solution is not found; the
-    refusal tries other element counts per deck line and names one that starts, and set as named the
-    deck loads, with every line in tension."""
-    path = pd.PUBLIC.parent / "refused" / "md_tests_Mooring_tripod.txt"
-    refused = CableFMU(fmu_file, parameters={"lineFile": str(path)}, logging_on=True)
+def _refusal(fmu_file, path, **parameters):
+    refused = CableFMU(fmu_file, parameters={"lineFile": str(path), **parameters}, logging_on=True)
     try:
         with pytest.raises(Exception):
             refused.initialize()
-        errors = [m[2] for m in refused.messages if m[0] == "ERROR"]
+        return " ".join(m[2] for m in refused.messages if m[0] == "ERROR")
     finally:
         refused.free()
-    named = re.search(r"with lineFileElements = (\d+) the same line starts", " ".join(errors))
-    assert named, errors
-    with CableFMU(fmu_file, parameters={"lineFile": str(path), "lineFileElements": int(named.group(1))}) as c:
-        c.initialize()
-        tensions = [c.get(f"line[{k}].fairleadTension") for k in (1, 2, 3)]
-    assert all(t > 0.0 and math.isfinite(t) for t in tensions), tensions
+
+
+def test_a_float_standing_through_the_water_surface_is_refused_naming_the_waterline(fmu_file):
+    """MoorDyn's tripod: a short, very stiff float (0.63 m of 0.82 m diameter, EI 9.3e7 N m2) on a tether
+    (EA 25.8 MN) from the node where three bridles meet, its top out of the water. The static solve of the
+    float's line stalled at the round-off of the float's bending forces (2.7e-5 N, about 1e-16 of the
+    bending terms EI B X that cancel there) and refused it as not found; converged at that floor, the float
+    stands straight up, carried by the waterline's buoyancy ramp over one diameter above z = 0 (1746 N of
+    its 1834 N, where MoorDyn, taking the geometric submerged length, leans it at 40 degrees with 708 N on
+    the tether): the start is refused, naming the ramp's share, within seconds."""
+    errors = _refusal(fmu_file, pd.PUBLIC.parent / "refused" / "md_tests_Mooring_tripod.txt")
+    found = re.search(r"rests on the waterline's buoyancy ramp: .*diameter 0\.82 m.* is (\S+) N, (\S+) %", errors)
+    assert found, errors
+    assert 1500.0 < float(found.group(1)) < 2000.0 and float(found.group(2)) > 10.0, errors
+
+
+def test_the_search_for_an_element_count_that_starts_a_line_is_cut_short_by_its_budget(fmu_file):
+    """MoorDyn's wave_surface: the highest of five chains (10 m above the water) has no static start in the
+    wave's flow at the deck's mesh, and neither at twice its elements, each trial running the continuation to
+    its end (the refusal took 25 s before the search had a budget). The trials share a budget of the static
+    solver's work; the refusal says the search was cut short and which element counts it tried."""
+    errors = _refusal(fmu_file, pd.PUBLIC.parent / "refused" / "md_tests_Mooring_wave_surface" / "wave_surface.txt")
+    assert "mooring line 5: static equilibrium not found" in errors, errors
+    found = re.search(r"the search for an element count that starts the line was cut short: its budget of "
+                      r"30000 element iterations of the static solver was spent \(tried ([0-9, ]+)\)", errors)
+    assert found, errors
+    assert found.group(1).split(", ")[0] == "50", errors  # twice the deck's 25 elements a line first
 
 
 def test_a_chain_with_a_nominal_bending_stiffness_is_checked_against_its_catenary(fmu_file, monkeypatch):

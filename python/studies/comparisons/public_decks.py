@@ -292,6 +292,7 @@ REASONS = [
     (r"WaveKin = (\d+)", "`WaveKin` {0}"),
     (r"Currents = (\d+)", "`Currents` {0}"),
     (r"the line is too short for where its ends are", "a line stretched beyond 10 % at the deck's positions"),
+    (r"rests on the waterline's buoyancy ramp", "a float standing through the water surface"),
     (r"no static equilibrium", "no static equilibrium (a line longer than the way down and across)"),
     (r"static equilibrium not found", "static equilibrium not found"),
     (r"pinned", "a pinned body"),
