@@ -46,15 +46,16 @@ def test_the_legs_drag_carries_the_buoy_further_downstream(fmu_file):
     assert drift["points"][4][0] > 0.2
 
 
-JOINTS = fp.DECKS / "clump_and_buoy_legs.dat"  # two legs, each of two lines joined at a free point
+JOINTS = fp.DECKS / "clump_and_buoy_legs.dat"  # two legs, each of two lines joined at a free point; a hanging weight
 
 
-def test_free_points_two_lines_join_report_their_positions(fmu_file):
+def test_free_points_one_or_two_lines_hold_report_their_positions(fmu_file):
     """A clump weight and a buoy where two lines meet are no free nodes (each leg is one line of two
-    sections, the point a mass on the node between them), yet point[k].position is where that node stands:
-    MoorPy's equilibrium of both points within 1 cm, every line's tensions within 0.5 %."""
+    sections, the point a mass on the node between them), yet point[k].position is where that node stands,
+    and a weight hanging at a line's free end where that end is: MoorPy's equilibrium of the three points
+    within 1 cm, every line's tensions within 0.5 %."""
     ours, ref = _check(fmu_file, JOINTS)
-    assert sorted(ref["points"]) == [2, 5]
+    assert sorted(ref["points"]) == [2, 5, 7]
     assert ours["points"][2][2] < ours["points"][5][2]  # the clump sinks, the buoy lifts its leg
 
 
