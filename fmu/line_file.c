@@ -130,18 +130,11 @@ static int candidate_paths(const UCInstance* inst, const char* lineFile, char* c
     return n;
 }
 
+/* "warning: ...": a deck option the FMU honours otherwise than MoorDyn (line_file.h) */
 static void log_notes(UCInstance* inst, const char* function, const char* path, const char* notes) {
-    for (const char* line = notes; *line != '\0';) {
-        const char* end = strchr(line, '\n');
-        const int length = end != NULL ? (int)(end - line) : (int)strlen(line);
-        /* "warning: ...": a deck option the FMU honours otherwise than MoorDyn (line_file.h) */
-        if (strncmp(line, "warning: ", 9) == 0) {
-            uc_log_status(&inst->log, fmi2Warning, "%s: lineFile %s, %.*s", function, path, length - 9, line + 9);
-        } else {
-            uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: lineFile %s, %.*s", function, path, length, line);
-        }
-        line += length + (end != NULL);
-    }
+    char prefix[1024];
+    snprintf(prefix, sizeof prefix, "%s: lineFile %s, ", function, path);
+    uc_log_lines(&inst->log, prefix, notes);
 }
 
 static fmi2Status apply_text(UCInstance* inst, UCParams* p, const char* function, const char* path,

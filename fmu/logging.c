@@ -98,3 +98,19 @@ void uc_log_status(const UCLogger* logger, fmi2Status status, const char* format
     log_va(logger, status, category_of_status(status), format, args);
     va_end(args);
 }
+
+int uc_log_lines(const UCLogger* logger, const char* prefix, const char* text) {
+    int warnings = 0;
+    for (const char* line = text; line != NULL && *line != '\0';) {
+        const char* end = strchr(line, '\n');
+        const int length = end != NULL ? (int)(end - line) : (int)strlen(line);
+        if (strncmp(line, "warning: ", 9) == 0) {
+            uc_log_status(logger, fmi2Warning, "%s%.*s", prefix, length - 9, line + 9);
+            ++warnings;
+        } else if (length > 0) {
+            uc_log(logger, fmi2OK, UC_LOG_EVENTS, "%s%.*s", prefix, length, line);
+        }
+        line += length + (end != NULL);
+    }
+    return warnings;
+}

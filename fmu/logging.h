@@ -50,6 +50,11 @@ void uc_log(const UCLogger* logger, fmi2Status status, UCLogCategory category, c
 void uc_log_status(const UCLogger* logger, fmi2Status status, const char* format, ...)
     UC_PRINTF_FORMAT(3, 4);
 
+/* Logs each line of text (the core's events of a step, a deck's notes), each after prefix: a line that starts
+ * "warning: " with status fmi2Warning (category logStatusWarning, the mark dropped), any other as an event
+ * (fmi2OK, logEvents). Returns the number of warnings. */
+int uc_log_lines(const UCLogger* logger, const char* prefix, const char* text);
+
 /* The same through a logger callback before an instance exists (fmi2Instantiate); callback may be NULL. */
 void uc_log_raw(fmi2CallbackLogger callback, fmi2ComponentEnvironment environment, const char* instanceName,
                 fmi2Status status, UCLogCategory category, const char* message);

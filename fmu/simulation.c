@@ -2,6 +2,7 @@
 #include "simulation.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "line_file.h"
@@ -15,6 +16,13 @@ static void log_solver_statistics(const UCInstance* inst, const char* when) {
            "nonlinear failures %.0f, error test failures %.0f",
            when, inst->time, o->nSteps, o->nResidualEvals, o->nJacobianEvals, o->nNonlinearFailures,
            o->nErrorTestFailures);
+}
+
+void uc_sim_log_events(UCInstance* inst, const char* function) {
+    char prefix[128];
+    if (!uc_take_event(inst->cable, inst->msg, sizeof inst->msg)) return;
+    snprintf(prefix, sizeof prefix, "%s: ", function);
+    uc_log_lines(&inst->log, prefix, inst->msg);
 }
 
 static fmi2Status fail_with_core_message(UCInstance* inst, const char* function, const char* what,
@@ -108,14 +116,8 @@ static fmi2Status initialize_core(UCInstance* inst, const char* function, fmi2St
     uc_input_checks_reset(&inst->inputChecks);
     uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: initialized at t = %.9g, towTension = %.6g N", function,
            inst->time, inst->outputs.towTension);
-    /* what the initialization found worth a word (a static strain beyond steel's): a warning */
-    if (uc_take_event(inst->cable, inst->msg, sizeof inst->msg)) {
-        if (strncmp(inst->msg, "warning: ", 9) == 0) {
-            uc_log_status(&inst->log, fmi2Warning, "%s: %s", function, inst->msg + 9);
-        } else {
-            uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: %s", function, inst->msg);
-        }
-    }
+    /* what the initialization found worth a word (a static strain beyond steel's: a warning) */
+    uc_sim_log_events(inst, function);
     log_solver_statistics(inst, "initialization");
     return fmi2OK;
 }
@@ -226,9 +228,9 @@ fmi2Status uc_sim_do_step(UCInstance* inst, double tc, double h) {
     inst->lastSuccessfulTime = inst->time;
     uc_input_checks_after_step(inst, h);
     uc_get_outputs(inst->cable, &inst->outputs);
-    if (uc_take_event(inst->cable, inst->msg, sizeof inst->msg)) {
-        uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "fmi2DoStep: %s", inst->msg);
-    }
+    /* the step's events; its warnings with status fmi2Warning, while fmi2DoStep returns fmi2OK: the step was
+     * taken (as for the input checks' warnings) */
+    uc_sim_log_events(inst, "fmi2DoStep");
     /* Input derivatives apply to one step only (fmi2SetRealInputDerivatives before each fmi2DoStep). */
     memset(inst->inputs.towAcceleration, 0, sizeof inst->inputs.towAcceleration);
     inst->inputs.towAccelerationGiven = 0;

@@ -29,6 +29,10 @@ fmi2Status uc_sim_initial_outputs(UCInstance* inst, const char* function);
  * temporary). Errors are logged naming `function`. */
 fmi2Status uc_sim_create_core(UCInstance* inst, const UCParams* p, UCCable** cable, const char* function);
 
+/* Logs the core's events since the last call, each after "function: ": its warnings (a line the core starts
+ * "warning: ") with status fmi2Warning, category logStatusWarning; the others as events (logEvents). */
+void uc_sim_log_events(UCInstance* inst, const char* function);
+
 /* fmi2DoStep after the state check: time checks, uc_do_step from the FMU's own time, outputs. */
 fmi2Status uc_sim_do_step(UCInstance* inst, double currentCommunicationPoint, double communicationStepSize);
 

@@ -76,9 +76,7 @@ static fmi2Status ensure_stiffness(UCInstance* inst, const UCVariable* v, const 
         uc_log_status(&inst->log, fmi2Error, "%s: body stiffness: %s", function, inst->msg);
         return fmi2Error;
     }
-    if (uc_take_event(inst->cable, inst->msg, sizeof inst->msg)) {
-        uc_log(&inst->log, fmi2OK, UC_LOG_EVENTS, "%s: %s", function, inst->msg);
-    }
+    uc_sim_log_events(inst, function);
     return fmi2OK;
 }
 

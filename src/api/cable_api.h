@@ -184,7 +184,8 @@ int uc_update_stiffness(UCCable* c, UCOutputs* out, char* msg, size_t msgSize);
  * continues without a restart; after uc_state_save and after uc_state_restore the next step
  * evaluates a new Jacobian, so a saved-and-continued run and a restored-and-continued run are
  * bit-identical. The buffer is only valid for a cable created with identical parameters. */
-/* The event of the last step worth a log line (a winch limit reached): 1 and the text, or 0. */
+/* The events since the last call worth a log line (a winch limit reached), one a line; a line starting
+ * "warning: " is a warning (a strain beyond the tension-strain curve): 1 and the text, or 0. */
 int uc_take_event(UCCable* c, char* text, size_t size);
 
 size_t uc_state_size(const UCCable* c);

@@ -97,7 +97,7 @@ typedef struct UCBodyLoad {
 
 typedef struct UCPointLoad {
     double force[3]; /* point[k].force.x/y/z [N]: coupled point k (its ID in the deck): force of the lines on it */
-    double position[3]; /* point[k].position.x/y/z [m]: a mooring system's Free point k (its ID in the deck) where three or more lines meet: its position (the statics' equilibrium at initialization, then where its motion is at each communication point; 0 for other points) */
+    double position[3]; /* point[k].position.x/y/z [m]: a mooring system's Free point k (its ID in the deck), whatever number of lines meet there (a free node of three or more, a clump or a buoy two lines join, a free far end): its position (the statics' equilibrium at initialization, then where it stands at each communication point; 0 for other points) */
 } UCPointLoad;
 
 typedef struct UCParams {

@@ -184,7 +184,7 @@ void CableSimulation::warn_outside_current_grid() {
 }
 
 void CableSimulation::add_event(const std::string& text) {
-    event_ = event_.empty() ? text : event_ + "; " + text;
+    append_event(event_, text);
 }
 
 void CableSimulation::step_completed(double t, const double* y, const double* yp) {
@@ -538,10 +538,17 @@ void CableSimulation::free_state(std::vector<double>& q, std::vector<double>& v,
     }
 }
 
+void CableSimulation::store_section_ends() {
+    sectionEnds_.assign(static_cast<size_t>(model_.n_sections()), Vec3::Zero());  // no allocation after the first call
+    for (const ElementRun& run : model_.runs())  // along the line: a section's last run its last
+        sectionEnds_[run.section] = Eigen::Map<const Vec3>(X_.data() + model_.element_offset(run.first + run.count - 1) + 6);
+}
+
 void CableSimulation::update_outputs() {
     expand_integrator_state(state_.time, y_.data(), yp_.data());
     model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), &forces_);
     compute_outputs(model_, X_.data(), Xd_.data(), forces_, loads_.torque, outputWork_, state_.outputs);
+    store_section_ends();
     const IntegratorStats s = total_stats();
     state_.outputs.nSteps = s.steps;
     state_.outputs.nResidualEvals = s.residualEvals;

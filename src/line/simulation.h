@@ -133,6 +133,9 @@ public:
     // The axial force at an end of element e (far: at its second node) in the state of the last outputs:
     // the tension a line of several sections has at its joints (a mooring system's line[k].* outputs).
     double element_end_tension(int e, bool far) const { return forces_.element[e].segment<3>(far ? 6 : 0).norm(); }
+    // Where section j's far end stands in the state of the last outputs (or of a restored state): the joint
+    // between sections j and j + 1 (a mooring system's point[k].position of a free point two lines join).
+    const Vec3& section_end_position(int j) const { return sectionEnds_[j]; }
 
     // A held end that lets go (docs/line_failure.md): the line goes on with a bare far end (bottomEnd 0) inside its
     // own integrator, the model made again and the nodes' state carried over, one restart of the integrator.
@@ -249,7 +252,7 @@ private:
     // whose start would rest on the ramp, not on its submerged length.
     bool check_waterline(std::string& error) const;
     static constexpr double kWaterlineRefused = 0.1;
-    // Appends a message to the step's event text (several are joined by "; ").
+    // Appends a message to the step's events (one a line, append_event).
     void add_event(const std::string& text);
     // Before the static solver: false where the line's whole weight in water over a section's EA
     // exceeds kWeightStrainRefused (EA in the wrong unit), which no static solve would settle.
@@ -371,6 +374,8 @@ private:
     std::vector<double> q_, v_, a_, X_, Xd_, Xdd_, R_;
     ElementForces forces_;
     OutputWorkspace outputWork_;
+    std::vector<Vec3> sectionEnds_;  // section_end_position, from X_ at update_outputs and restore_state
+    void store_section_ends();
     std::vector<double> historyBuffer_;  // the integrator's history on its way to/from a saved state
     std::vector<double> syropeAtStep_;   // the Syrope elements' history at the step's start (a failed step's)
     std::vector<double> toleranceBuffer_;

@@ -16,6 +16,11 @@
 
 namespace uc {
 
+// Appends one event (or the lines of several) to the events of a step, one a line (Simulation::take_event).
+inline void append_event(std::string& events, const std::string& text) {
+    if (!text.empty()) events += (events.empty() ? "" : "\n") + text;
+}
+
 class Simulation {
 public:
     virtual ~Simulation() = default;
@@ -47,7 +52,8 @@ public:
         bool external = false, driven = false;
     };
     virtual EndInputs end_inputs() const { return {}; }
-    // The event of the last step worth a log line, or empty; cleared by the call.
+    // The events of the last step worth a log line, one a line, or empty; cleared by the call. A line that
+    // starts "warning: " is a warning (the FMU logs it with status fmi2Warning), any other an event.
     virtual std::string take_event() = 0;
     // A current given as data (currents.mode 2 or 5, or a deck's Currents 2 or 5), added to the water
     // of every line from here on; null: none. Not state: a restored instance is given it again.

@@ -161,6 +161,8 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
         }
     }
     set_winch_time(state_.time);
+    expand_integrator_state(state_.time, y_.data(), yp_.data());  // the restored nodes (section_end_position)
+    store_section_ends();
     if (history) {
         // The restored integrator carries the saver's counters since its last restart.
         const IntegratorStats since = integrator_->stats();

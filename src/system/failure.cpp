@@ -303,7 +303,7 @@ bool MooringSystem::break_failure(int f, double t, std::string& error) {
                       "%.6g N (FailTime %.6g s, FailTen %.6g N); its end goes on bare, the line's own free end%s",
                       fail.id, t, e->deckLine + 1, fail.point, tension, fail.time, fail.tension,
                       e->end == 0 ? " (the line run from its anchor)" : "");
-        event_ += (event_.empty() ? "" : "; ") + std::string(text);
+        append_event(event_, text);
         return true;
     }
     // the new node starts where its ends stand and move (they share the point)
@@ -335,7 +335,7 @@ bool MooringSystem::break_failure(int f, double t, std::string& error) {
                       fail.ends.size() > 1 ? "s" : "", lines.c_str(), fail.point, tension, fail.time, fail.tension,
                       fail.ends.size() > 1 ? "they go on joined" : "its end goes on bare");
     }
-    event_ += (event_.empty() ? "" : "; ") + std::string(text);
+    append_event(event_, text);
     return true;
 }
 
@@ -407,7 +407,7 @@ bool MooringSystem::step_with_failures(double t, double h, const UCInputs& in, d
             std::snprintf(text, sizeof text, "the break by tension within the step from t = %.9g s was located to "
                           "%.3g of its tolerance after %d trials (at t = %.9g s)", t + done, g, kLocateIterations,
                           t + done + tau);
-            event_ += (event_.empty() ? "" : "; ") + std::string(text);
+            append_event(event_, text);
         }
         done += tau;  // the loop's start breaks what reached its threshold there
     }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <sstream>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -376,7 +377,7 @@ bool MooringSystem::check_inputs(const UCInputs& in, std::string& error) {
             char text[200];
             std::snprintf(text, sizeof text, "%s has norm %.12g at t = %g s: normalized (reported once)",
                           name.c_str(), norm, time());
-            event_ += (event_.empty() ? "" : "; ") + std::string(text);
+            append_event(event_, text);
         }
     }
     for (const MooringDeckLine& l : deck_.lines) {
@@ -462,8 +463,13 @@ std::string MooringSystem::take_event() {
     std::string events;
     events.swap(event_);
     for (size_t k = 0; k < lines_.size(); ++k) {
-        const std::string e = lines_[k]->take_event();
-        if (!e.empty()) events += (events.empty() ? "" : "; ") + ("mooring line " + std::to_string(deck_.lines[k].id) + ": " + e);
+        // each of the line's events named after it, after the "warning: " that marks a warning
+        std::istringstream lines(lines_[k]->take_event());
+        for (std::string e; std::getline(lines, e);) {
+            const bool warning = e.rfind("warning: ", 0) == 0;
+            append_event(events, std::string(warning ? "warning: " : "") + "mooring line " +
+                                     std::to_string(deck_.lines[k].id) + ": " + e.substr(warning ? 9 : 0));
+        }
     }
     return events;
 }
@@ -544,6 +550,15 @@ void MooringSystem::update_outputs() {
         }
         if (id > UC_MAX_POINTS) continue;  // beyond the outputs point[k].position.*
         for (int c = 0; c < 3; ++c) outputs_.pointLoad[id - 1].position[c] = motion_[n].position[c];
+    }
+    // the free points one or two lines meet at: a joint between two deck lines (a clump, a buoy), a free far end
+    for (size_t k = 0; k < lines_.size(); ++k) {
+        const MooringDeckLine& l = deck_.lines[k];
+        auto put_point = [&](int id, const Vec3& at) {
+            if (id >= 1 && id <= UC_MAX_POINTS) put(outputs_.pointLoad[id - 1].position, at);
+        };
+        for (size_t j = 0; j < l.joints.size(); ++j) put_point(l.joints[j].id, lines_[k]->section_end_position(static_cast<int>(j)));
+        if (l.farFree) put_point(l.farBody.id, vec3(lines_[k]->outputs().endPosition));
     }
     stiffnessCurrent_ = false;  // body[k].stiffness: computed when read (update_stiffness)
 }
@@ -1028,12 +1043,12 @@ bool MooringSystem::step_nodes(double t, double h, const UCInputs& in, std::stri
             nodeSubsteps_ = pieces;
             if (pieces > 1 && !substepsReported_) {
                 substepsReported_ = true;
-                event_ += std::string(event_.empty() ? "" : "; ") + "from t = " + std::to_string(t) + " s the free nodes' step of " + std::to_string(h) + " s is split into " +
+                append_event(event_, "from t = " + std::to_string(t) + " s the free nodes' step of " + std::to_string(h) + " s is split into " +
                          std::to_string(pieces) + " substeps where " +
                          (estimate > kNodeStepError ? "its estimated error in one piece (" + std::to_string(estimate) + " m) exceeds " +
                                                           std::to_string(kNodeStepError) + " m"
                                                     : std::string("its coupled iteration does not converge in one")) +
-                         " (reported once)";
+                         " (reported once)");
             }
             return true;
         }

@@ -49,8 +49,7 @@ OneLineSystem::OneLineSystem(const UCParams& params) : CableSimulation(params) {
 std::string OneLineSystem::take_event() {
     std::string events;
     events.swap(event_);
-    const std::string line = CableSimulation::take_event();
-    if (!line.empty()) events += (events.empty() ? "" : "; ") + line;
+    append_event(events, CableSimulation::take_event());
     return events;
 }
 
@@ -95,7 +94,7 @@ bool OneLineSystem::step(double t, double h, const UCInputs& in, std::string& er
                 std::snprintf(text, sizeof text, "line failure 1 at t = %.9g s: line 1's far end detached, tension there "
                               "%.6g N (failure.time %.6g s, failure.tension %.6g N); the line goes on with a bare far end",
                               at, tension, failTime_, failTension_);
-                event_ += (event_.empty() ? "" : "; ") + std::string(text);
+                append_event(event_, text);
                 if (stopAtBreaks_ && done > 0.0 && done < h) return true;  // the step ends at the break
             }
         }

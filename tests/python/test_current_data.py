@@ -89,6 +89,24 @@ def test_a_deck_with_currents_2_reads_its_file_beside_it_and_warns_once_past_the
         c.free()
 
 
+@pytest.mark.parametrize("logging_on", [True, False])
+def test_a_warning_of_a_step_reaches_the_logger_as_a_warning(fmu_file, tmp_path, logging_on):
+    """A warning the core raises while stepping (here: the run passes the current data's last sample) is
+    logged with status fmi2Warning in category logStatusWarning, its "warning: " mark dropped, whether
+    logging is on or off (a warning is always emitted). (fmi2DoStep returns fmi2OK: the step was taken, as
+    with the input checks' warnings, docs/interface.md.)"""
+    (tmp_path / "deck.txt").write_text(DECK)
+    (tmp_path / "current_profile_dynamic.txt").write_text(
+        dynamic_profile([-41.0, 0.0], [0.0, 2.0, 4.0], lambda z, t: 0.2 * t))
+    with CableFMU(fmu_file, parameters={"lineFile": str(tmp_path / "deck.txt")}, logging_on=logging_on) as c:
+        c.initialize(inputs=TOP)
+        run(c, 6, 1.0)
+        passes = [(status, category, m) for status, category, m in c.messages
+                  if "passes the current's last sample (t = 4 s)" in m]
+    assert passes == [("WARNING", "logStatusWarning", passes[0][2])], passes
+    assert passes[0][2].startswith("fmi2DoStep: at t = ")  # no "warning: " left in the text
+
+
 def test_saved_states_hold_no_data_and_restore_where_the_file_is(fmu_file, tmp_path):
     """The data are parameters outside the saved state: a state is as large with 4920 values as with 4 (to
     1 % of the data's size), a

@@ -12,7 +12,7 @@ import pytest
 from studies.comparisons import coupled_stiffness as cs
 from studies.comparisons import free_points as fp
 from studies.comparisons import mooring_system as ms
-from ucable.fmu import FMICallException
+from ucable.fmu import CableFMU, FMICallException
 
 
 def _check(fmu_file, path, current=0.0):
@@ -44,6 +44,41 @@ def test_the_legs_drag_carries_the_buoy_further_downstream(fmu_file):
     # the upstream leg (line 1, its anchor at +x) slackens, the two downstream legs tighten
     assert drift["fairlead"][0] < still["fairlead"][0] < drift["fairlead"][1]
     assert drift["points"][4][0] > 0.2
+
+
+JOINTS = fp.DECKS / "clump_and_buoy_legs.dat"  # two legs, each of two lines joined at a free point; a hanging weight
+
+
+def test_free_points_one_or_two_lines_hold_report_their_positions(fmu_file):
+    """A clump weight and a buoy where two lines meet are no free nodes (each leg is one line of two
+    sections, the point a mass on the node between them), yet point[k].position is where that node stands,
+    and a weight hanging at a line's free end where that end is: MoorPy's equilibrium of the three points
+    within 1 cm, every line's tensions within 0.5 %."""
+    ours, ref = _check(fmu_file, JOINTS)
+    assert sorted(ref["points"]) == [2, 5, 7]
+    assert ours["points"][2][2] < ours["points"][5][2]  # the clump sinks, the buoy lifts its leg
+
+
+def test_a_two_line_joints_position_follows_the_line_and_restores(fmu_file):
+    """The joints' positions are the lines' at each communication point (not held at their statics): the
+    platform drawn 5 m along -x over 10 s slackens leg 2, whose buoy rises, and a restored state reads back
+    the positions it was saved with, bit for bit."""
+    deck = ms.read_system_deck(JOINTS)
+    with CableFMU(fmu_file, parameters=ms.fmu_parameters(deck)) as c:
+        c.initialize()
+        position = lambda: np.array([[c.get(f"point[{k}].position.{a}") for a in "xyz"] for k in (2, 5)])
+        start, h = position(), 0.5
+        for k in range(20):
+            c.set({"body[1].x": -0.25 * (k + 1), "body[1].vx": -0.5})
+            c.do_step(h)
+            if k == 9:
+                state, saved = c.get_state(), position()
+        moved = position()
+        c.set_state(state)
+        restored = position()
+        c.free_state(state)
+    assert moved[1][2] > start[1][2] + 0.5, (start, moved)  # leg 2 slackens: its buoy rises
+    assert np.array_equal(restored, saved) and not np.array_equal(saved, moved)
 
 
 def test_a_bridle_of_two_anchor_legs_and_a_pennant_to_the_platform_matches_moorpy(fmu_file, tmp_path):

@@ -42,10 +42,10 @@ def without_line_drag(text: str) -> str:
 
 
 def free_point_ids(path: Path) -> list:
-    """IDs of the deck's Free points where three or more lines meet."""
+    """IDs of the deck's Free points that hold a line (whatever number of lines meet there: all have
+    point[k].position.*)."""
     s = _moorpy_system(path)
-    counts = {p.number: len(p.attached) for p in s.pointList}
-    return [p.number for p in s.pointList if p.type == 0 and counts[p.number] >= 3]
+    return [p.number for p in s.pointList if p.type == 0 and len(p.attached) >= 1]
 
 
 def free_bodies(path: Path) -> dict:
