@@ -191,6 +191,8 @@ typedef struct UCParams {
     double EAdynamic; /* EAdynamic [N]: dynamic axial stiffness EA_d of MoorDyn's viscoelastic model of a uniform line (`nSections` 1): 0 (the default), off; above `EA`, the static stiffness, each element gets an internal strain (a Kelvin–Voigt pair of `EA`'s series spring and `axialDamping`, in series with EA_d and `axialDampingDynamic`): `EA` at rest, EA_d in fast motion ([docs/model.md](docs/model.md)) */
     double EAdynamicSlope; /* EAdynamicSlope: slope β of the dynamic stiffness in the mean load (MoorDyn's `EA_s|EA_Dc|EA_D_Lm`): EA_d = `EAdynamic` + β × the element's mean tension (the tension of its static spring); 0 (the default), a constant `EAdynamic` */
     double axialDampingDynamic; /* axialDampingDynamic [N.s]: damping c_d in parallel with the dynamic spring `EAdynamic` (MoorDyn's BA_d in `BA_s|BA_d`); `axialDamping` is then the damping beside the static spring; used only with `EAdynamic` > 0 */
+    double wavesSpreading; /* waves.spreading: `waves.mode` 2: exponent s of the cos-2s directional spreading, D(θ) ∝ cos²ˢ((θ − `waves.direction`) / 2) over the full circle, discretized in `waves.nDirections` directions ([docs/waves.md](docs/waves.md), "A spread sea"); 0 (the default): long-crested, every component along `waves.direction` */
+    int wavesNDirections; /* waves.nDirections: `waves.spreading` > 0: number of directions of the spread sea, at the midpoints of equal bands over the full circle (the middle one along `waves.direction` when the number is odd), each carrying `waves.nComponents` components of its own phases */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
     int waveComponentCount; /* (not an FMU variable) waves.mode 3: the number of given wave components in waveComponents (from waves.file or a lineFile deck) */
@@ -641,6 +643,8 @@ typedef struct UCOutputs {
     X(365, "section[6].axialDampingDynamic", REAL, PARAMETER, section[5].axialDampingDynamic) \
     X(366, "section[7].axialDampingDynamic", REAL, PARAMETER, section[6].axialDampingDynamic) \
     X(367, "section[8].axialDampingDynamic", REAL, PARAMETER, section[7].axialDampingDynamic) \
+    X(368, "waves.spreading", REAL, PARAMETER, wavesSpreading) \
+    X(369, "waves.nDirections", INTEGER, PARAMETER, wavesNDirections) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -3655,6 +3659,8 @@ typedef struct UCOutputs {
     X(section[5].axialDampingDynamic, 0.0) \
     X(section[6].axialDampingDynamic, 0.0) \
     X(section[7].axialDampingDynamic, 0.0) \
+    X(wavesSpreading, 0.0) \
+    X(wavesNDirections, 15) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -4035,6 +4041,8 @@ typedef struct UCOutputs {
     X(section[5].axialDampingDynamic, "section[6].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
     X(section[6].axialDampingDynamic, "section[7].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
     X(section[7].axialDampingDynamic, "section[8].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
+    X(wavesSpreading, "waves.spreading", 0.0, 100.0, 0, 0, "[0, 100]", "the spreading exponent s of cos-2s is 0 (long-crested) or positive, up to 100 (almost long-crested)") \
+    X(wavesNDirections, "waves.nDirections", 1.0, 361.0, 0, 0, "[1, 361]", "a spread sea has 1 to 361 directions") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -87,6 +87,10 @@ std::string check_params(const UCParams& p) {
         return "waves.file = '" + std::string(p.wavesFile) + "' is set with waves.mode = " + std::to_string(p.wavesMode) +
                ": its components are the sea of waves.mode 3 only (set waves.mode 3, or leave waves.file empty)";
     }
+    if (p.wavesSpreading > 0.0 && p.wavesMode != 2 && p.wavesMode != 0)
+        return format_violation("waves.spreading", p.wavesSpreading, p.wavesMode == 1 ? "{0} with waves.mode 1" : "{0} with waves.mode 3",
+                                "the directional spreading spreads the JONSWAP sea of waves.mode 2 (given components "
+                                "carry their own directions, a regular wave has one)");
     if (p.currentsMode != 0 && p.currentsMode != 2 && p.currentsMode != 5)
         return format_violation("currents.mode", p.currentsMode, "{0, 2, 5}",
                                 "current data are a profile changing in time (2) or a grid in x, y, z and t (5), "
