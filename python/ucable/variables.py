@@ -765,7 +765,7 @@ VARIABLES: dict[str, Variable] = {v.name: v for v in (
              'Section 8: damping c_d of the dynamic spring of the viscoelastic model, as axialDampingDynamic'),
     Variable('waves.spreading', 368, 'parameter', 'Real', None, 0.0, 0.0, 100.0,
              'waves.mode 2: exponent s of the cos-2s directional spreading D(theta) proportional to cos^(2s)((theta - waves.direction) / 2); 0: long-crested (every component along waves.direction)'),
-    Variable('waves.nDirections', 369, 'parameter', 'Integer', None, 15, 1.0, 361.0,
+    Variable('waves.nDirections', 369, 'parameter', 'Integer', None, 15, 1.0, 72.0,
              'waves.spreading > 0: number of directions of the spread sea (equal bands over the circle, the middle one along waves.direction when odd), each with waves.nComponents components'),
     Variable('tow.x', 1001, 'input', 'Real', 'm', 0.0, None, None,
              'x coordinate of the tow point'),

@@ -4042,7 +4042,7 @@ typedef struct UCOutputs {
     X(section[6].axialDampingDynamic, "section[7].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
     X(section[7].axialDampingDynamic, "section[8].axialDampingDynamic", 0.0, 10000000000000.0, 0, 0, "[0, 10000000000000]", "internal damping must dissipate energy") \
     X(wavesSpreading, "waves.spreading", 0.0, 100.0, 0, 0, "[0, 100]", "the spreading exponent s of cos-2s is 0 (long-crested) or positive, up to 100 (almost long-crested)") \
-    X(wavesNDirections, "waves.nDirections", 1.0, 361.0, 0, 0, "[1, 361]", "a spread sea has 1 to 361 directions") \
+    X(wavesNDirections, "waves.nDirections", 1.0, 72.0, 0, 0, "[1, 72]", "a spread sea has 1 to 72 directions (bands of 5 degrees); each direction keeps a Taylor polynomial per load point") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

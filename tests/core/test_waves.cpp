@@ -804,6 +804,13 @@ TEST(WavesSpread, ASpreadSeaKeepsHsAndHasTheSpreadingsDirectionalMoments) {
     EXPECT_EQ(check_params(r).rfind("waves.spreading = 4 is outside {0} with waves.mode 1", 0), 0u) << check_params(r);
     r.wavesMode = 2;
     EXPECT_EQ(check_params(r), "");
+    // At most 20000 components in all, naming waves.nComponents.
+    r.wavesNComponents = 2000;
+    r.wavesNDirections = 11;
+    EXPECT_EQ(check_params(r).rfind("waves.nComponents = 2000 is outside [1, 1818] with waves.nDirections = 11", 0), 0u)
+        << check_params(r);
+    r.wavesNDirections = 10;
+    EXPECT_EQ(check_params(r), "");
 }
 
 TEST(WavesSpread, SpreadSeaKinematicsAreTheClosedFormAirySum) {
