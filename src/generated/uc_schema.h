@@ -205,6 +205,8 @@ typedef struct UCParams {
     double Cl; /* Cl: cross-flow lift coefficient of MoorDyn's vortex-induced vibration model for a uniform line (`nSections` 1): 0 (the default), off; above 0, each element carries the phase of its vortex shedding, synchronised with its cross-flow motion, and a lift per length 0.5 ρ d |u_n| Cl cos(phase) (t × u_n) ([docs/model.md](docs/model.md)) */
     double vivFrequency; /* vivFrequency: centre f̂_0 of the synchronisation model's non-dimensional frequencies (MoorDyn's `cF`, Thorsen's 0.18): the phase turns at 2π (f̂_0 + Δf̂ sin(φ_ẏ − φ)) |u_n| / d; used only with `Cl` > 0 */
     double vivFrequencyRange; /* vivFrequencyRange: half width Δf̂ of the non-dimensional frequencies the shedding synchronises with the cross-flow motion over (MoorDyn's `dF`, Thorsen's 0.08); used only with `Cl` > 0 */
+    double wavesSpreading; /* waves.spreading: `waves.mode` 2: exponent s of the cos-2s directional spreading, D(θ) ∝ cos²ˢ((θ − `waves.direction`) / 2) over the full circle, discretized in `waves.nDirections` directions ([docs/waves.md](docs/waves.md), "A spread sea"); 0 (the default): long-crested, every component along `waves.direction` */
+    int wavesNDirections; /* waves.nDirections: `waves.spreading` > 0: number of directions of the spread sea, at the midpoints of equal bands over the full circle (the middle one along `waves.direction` when the number is odd), each carrying `waves.nComponents` components of its own phases */
     int mooringSystem; /* (not an FMU variable) 1 when lineFile holds a mooring system (several lines, bodies; docs/systems_mooring.md): the core is made from the deck's text, not from these parameters alone */
     int deckKeep; /* (not an FMU variable) UC_DECK_KEEP_* bits (cable_api.h): the environment and seabed parameters the importer set explicitly, which keep their value over a lineFile deck's (docs/lines.md) */
     int waveComponentCount; /* (not an FMU variable) waves.mode 3: the number of given wave components in waveComponents (from waves.file or a lineFile deck) */
@@ -690,6 +692,8 @@ typedef struct UCOutputs {
     X(399, "section[6].vivFrequencyRange", REAL, PARAMETER, section[5].vivFrequencyRange) \
     X(400, "section[7].vivFrequencyRange", REAL, PARAMETER, section[6].vivFrequencyRange) \
     X(401, "section[8].vivFrequencyRange", REAL, PARAMETER, section[7].vivFrequencyRange) \
+    X(402, "waves.spreading", REAL, PARAMETER, wavesSpreading) \
+    X(403, "waves.nDirections", INTEGER, PARAMETER, wavesNDirections) \
     X(1001, "tow.x", REAL, INPUT, tow[0]) \
     X(1002, "tow.y", REAL, INPUT, tow[1]) \
     X(1003, "tow.z", REAL, INPUT, tow[2]) \
@@ -3738,6 +3742,8 @@ typedef struct UCOutputs {
     X(section[5].vivFrequencyRange, 0.08) \
     X(section[6].vivFrequencyRange, 0.08) \
     X(section[7].vivFrequencyRange, 0.08) \
+    X(wavesSpreading, 0.0) \
+    X(wavesNDirections, 15) \
 
 /* X(member, value): the start value of every input that does not start at zero (the others are zero-filled) */
 #define UC_SCHEMA_INPUT_DEFAULTS(X) \
@@ -4151,6 +4157,8 @@ typedef struct UCOutputs {
     X(section[5].vivFrequencyRange, "section[6].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
     X(section[6].vivFrequencyRange, "section[7].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
     X(section[7].vivFrequencyRange, "section[8].vivFrequencyRange", 0.0, 1.0, 0, 0, "[0, 1]", "a synchronisation range is not negative") \
+    X(wavesSpreading, "waves.spreading", 0.0, 100.0, 0, 0, "[0, 100]", "the spreading exponent s of cos-2s is 0 (long-crested) or positive, up to 100 (almost long-crested)") \
+    X(wavesNDirections, "waves.nDirections", 1.0, 72.0, 0, 0, "[1, 72]", "a spread sea has 1 to 72 directions (bands of 5 degrees); each direction keeps a Taylor polynomial per load point") \
 
 /* X(member, name): the Boolean parameters (0 or 1 in the structs) */
 #define UC_SCHEMA_BOOLEAN_PARAMETERS(X) \

@@ -235,7 +235,10 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const Sta
     }
     std::string waveError;  // the parameters' check has refused waves that cannot be built
     sea_.build(params, waveError);
-    if (!sea_.calm()) waveCache_.resize(static_cast<size_t>(nElements_) * kLoadQuadraturePoints + 1 + attachments_.size());
+    if (!sea_.calm()) {
+        waveCache_.resize(static_cast<size_t>(nElements_) * kLoadQuadraturePoints + 1 + attachments_.size());
+        for (WaveExpansion& cache : waveCache_) cache.groups.resize(sea_.groups().size());  // a polynomial per direction
+    }
     profile_.rows = params.currentProfileRows;
     for (int k = 0; k < kCurrentProfileRows; ++k) {
         profile_.depth[k] = params.currentProfileDepth[k];

@@ -11,6 +11,10 @@
 namespace uc {
 namespace {
 
+// The components of a spread sea, waves.nComponents in each of waves.nDirections directions: each carries
+// 91 Taylor weights (0.7 KB), summed per load point and cell.
+constexpr int kMaxSpreadComponents = 20000;
+
 std::string format_violation(const char* name, double value, const char* range, const char* why) {
     char buffer[512];
     std::snprintf(buffer, sizeof buffer, "%s = %.17g is outside %s: %s", name, value, range, why);
@@ -87,6 +91,19 @@ std::string check_params(const UCParams& p) {
     } else if (p.wavesFile[0] != '\0') {
         return "waves.file = '" + std::string(p.wavesFile) + "' is set with waves.mode = " + std::to_string(p.wavesMode) +
                ": its components are the sea of waves.mode 3 only (set waves.mode 3, or leave waves.file empty)";
+    }
+    if (p.wavesSpreading > 0.0 && p.wavesMode != 2 && p.wavesMode != 0)
+        return format_violation("waves.spreading", p.wavesSpreading, p.wavesMode == 1 ? "{0} with waves.mode 1" : "{0} with waves.mode 3",
+                                "the directional spreading spreads the JONSWAP sea of waves.mode 2 (given components "
+                                "carry their own directions, a regular wave has one)");
+    if (p.wavesMode == 2 && p.wavesSpreading > 0.0 && p.wavesNDirections > 1 &&
+        p.wavesNComponents * p.wavesNDirections > kMaxSpreadComponents) {
+        char range[160];
+        std::snprintf(range, sizeof range, "[1, %d] with waves.nDirections = %d (at most %d components in all)",
+                      kMaxSpreadComponents / p.wavesNDirections, p.wavesNDirections, kMaxSpreadComponents);
+        return format_violation("waves.nComponents", p.wavesNComponents, range,
+                                "a spread sea carries waves.nComponents components in each direction: fewer components "
+                                "or directions");
     }
     if (p.currentsMode != 0 && p.currentsMode != 2 && p.currentsMode != 5)
         return format_violation("currents.mode", p.currentsMode, "{0, 2, 5}",

@@ -95,6 +95,19 @@ std::string given_waves_violation(const UCParams& p) {
 }
 
 
+void spreading_directions(double s, int n, std::vector<double>& offsets, std::vector<double>& weights) {
+    offsets.assign(static_cast<size_t>(std::max(n, 0)), 0.0);
+    weights.assign(offsets.size(), 0.0);
+    // G(s) = Gamma(s + 1) / (2 sqrt(pi) Gamma(s + 1/2)), through lgamma for large s
+    const double G = std::exp(std::lgamma(s + 1.0) - std::lgamma(s + 0.5)) / (2.0 * std::sqrt(kPi));
+    const double band = 2.0 * kPi / n;
+    for (int j = 0; j < n; ++j) {
+        const double theta = -kPi + (j + 0.5) * band;
+        offsets[static_cast<size_t>(j)] = theta;
+        weights[static_cast<size_t>(j)] = G * std::pow(std::cos(0.5 * theta), 2.0 * s) * band;
+    }
+}
+
 unsigned long long SplitMix64::next() {
     std::uint64_t state = state_;
     const std::uint64_t z = pm_splitmix64_next(&state);
@@ -128,8 +141,39 @@ bool SeaState::build(const UCParams& p, std::string& error) {
     // own ladder.
     const double wp0 = 0.5 * wp;
     const double dwAll = p.wavesMode == 1 ? 0.0 : (3.0 * wp - wp0) / p.wavesNComponents;
+    if (p.wavesMode == 2 && p.wavesSpreading > 0.0 && p.wavesNDirections > 1) {
+        build_spread(p, components, wp0 + 0.5 * dwAll, dwAll);
+        return true;
+    }
     build_direction(std::move(components), p.wavesDirection, p.wavesMode == 1 ? wp : wp0 + 0.5 * dwAll, dwAll);
     return true;
+}
+
+void SeaState::build_spread(const UCParams& p, const std::vector<WaveComponent>& components, double alpha, double beta) {
+    std::vector<double> offsets, weights;
+    spreading_directions(p.wavesSpreading, p.wavesNDirections, offsets, weights);
+    double total = 0.0;  // 1 up to the midpoint rule's error: the sea keeps Hs exactly
+    for (double w : weights) total += w;
+    const size_t main = static_cast<size_t>(std::max_element(weights.begin(), weights.end()) - weights.begin());
+    // Phases: direction j, component i takes uniform number j n + i of the seed's sequence (direction 0's
+    // are the long-crested sea's).
+    SplitMix64 random(static_cast<unsigned long long>(p.wavesSeed));
+    std::vector<WaveComponent> mainComponents;
+    for (size_t j = 0; j < offsets.size(); ++j) {
+        const double scale = std::sqrt(weights[j] / total);
+        std::vector<WaveComponent> direction(components);
+        for (WaveComponent& c : direction) c.amplitude *= scale, c.phase = 2.0 * kPi * random.uniform();
+        if (!(weights[j] > 0.0)) continue;  // a direction the spreading leaves empty (underflow)
+        if (j == main) {
+            mainComponents = std::move(direction);
+            continue;
+        }
+        SeaState group;
+        group.depth_ = depth_, group.rampTime_ = rampTime_, group.wheeler_ = wheeler_, group.gravity_ = gravity_;
+        group.build_direction(std::move(direction), p.wavesDirection + offsets[j], alpha, beta);
+        groups_.push_back(std::move(group));
+    }
+    build_direction(std::move(mainComponents), p.wavesDirection + offsets[main], alpha, beta);
 }
 
 bool SeaState::build_given(const UCParams& p, std::string& error) {
@@ -576,32 +620,26 @@ const WaveExpansion::Polynomial& SeaState::cell_polynomial(size_t b, double z, d
     return e;
 }
 
-void SeaState::expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache, Vec3& u, Vec3& a, Mat3* du,
-                                   Mat3* da) const {
-    constexpr int D = WaveExpansion::kDegree;
-    // a short sum costs less than the polynomial; the seas of several directions are summed too
-    if (components_.size() < kPolynomialComponents || !groups_.empty()) {
-        kinematics(r, t, u, a, du, da);
-        return;
-    }
-    double z = std::min(r.z(), 0.0);
+bool SeaState::reachable(const Vec3& r, double t) const {
     const double s = cosb_ * r.x() + sinb_ * r.y();
-    // The lattice's indices of the point (the surface's: z = 0, band 0), unless beyond its reach (or
-    // not a number): then the sum itself.
     const double top = bands_[0].cell, window = bands_[0].window;
-    if (!(std::fabs(r.z() / top) < kLatticeReach && std::fabs(s / top) < kLatticeReach &&
-          std::fabs(t / window) < kLatticeReach)) {
-        kinematics(r, t, u, a, du, da);
-        return;
-    }
+    return std::fabs(r.z() / top) < kLatticeReach && std::fabs(s / top) < kLatticeReach && std::fabs(t / window) < kLatticeReach;
+}
+
+double SeaState::expanded_elevation(const Vec3& r, double t, WaveExpansion& cache) const {
+    constexpr int D = WaveExpansion::kDegree;
+    const double s = cosb_ * r.x() + sinb_ * r.y();
+    const WaveExpansion::Polynomial& e = cell_polynomial(0, 0.0, s, t, true, cache.surface);
+    Polynomial p;
+    horner_rows<D, D, false>(e.c, t - e.t, 0.0, s - e.s, p);
+    return p.U[0];
+}
+
+void SeaState::add_expanded(const Vec3& r, double z, double t, WaveExpansion& cache, Vec3& u, Vec3& a, Mat3* du,
+                            Mat3* da) const {
+    constexpr int D = WaveExpansion::kDegree;
     const double f = ramp(t);
-    if (wheeler_) {  // z stretched into the water column below the elevation, as kinematics() does
-        const WaveExpansion::Polynomial& e = cell_polynomial(0, 0.0, s, t, true, cache.surface);
-        Polynomial p;
-        horner_rows<D, D, false>(e.c, t - e.t, 0.0, s - e.s, p);
-        const double eta = f * p.U[0];
-        z = std::min(depth_ * (r.z() - eta) / (depth_ + eta), 0.0);
-    }
+    const double s = cosb_ * r.x() + sinb_ * r.y();
     size_t b = 0;
     while (b + 1 < bands_.size() && z < bands_[b + 1].top) ++b;
     const WaveExpansion::Polynomial& e = cell_polynomial(b, z, s, t, false, cache.water);
@@ -613,8 +651,8 @@ void SeaState::expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache
     } else {
         horner_rows<D, D, false>(e.c, dt, dz, ds, p);
     }
-    u = f * Vec3(p.U[0] * cosb_, p.U[0] * sinb_, p.U[1]);
-    a = f * Vec3(p.A[0] * cosb_, p.A[0] * sinb_, p.A[1]);
+    u += f * Vec3(p.U[0] * cosb_, p.U[0] * sinb_, p.U[1]);
+    a += f * Vec3(p.A[0] * cosb_, p.A[0] * sinb_, p.A[1]);
     if (!gradients) return;
     // U = u_s + i w is analytic in zeta = z + i s: d/dz = U', d/ds = i U'. Above the mean surface
     // without stretching the kinematics of z = 0, which do not change with z; the stretching's own
@@ -622,13 +660,41 @@ void SeaState::expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache
     const double zScale = r.z() < 0.0 || wheeler_ ? 1.0 : 0.0;
     auto gradient = [&](const Pair& d, Mat3& out) {
         const double dus_dz = zScale * d[0], dw_dz = zScale * d[1], dus_ds = -d[1], dw_ds = d[0];
-        out << dus_ds * cosb_ * cosb_, dus_ds * cosb_ * sinb_, dus_dz * cosb_,
-               dus_ds * sinb_ * cosb_, dus_ds * sinb_ * sinb_, dus_dz * sinb_,
-               dw_ds * cosb_, dw_ds * sinb_, dw_dz;
-        out *= f;
+        Mat3 g;
+        g << dus_ds * cosb_ * cosb_, dus_ds * cosb_ * sinb_, dus_dz * cosb_,
+             dus_ds * sinb_ * cosb_, dus_ds * sinb_ * sinb_, dus_dz * sinb_,
+             dw_ds * cosb_, dw_ds * sinb_, dw_dz;
+        out += f * g;
     };
     if (du) gradient(p.dU, *du);
     if (da) gradient(p.dA, *da);
+}
+
+void SeaState::expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache, Vec3& u, Vec3& a, Mat3* du,
+                                   Mat3* da) const {
+    // A short sum costs less than the polynomial: a sea (or a direction of a sea of several) of fewer
+    // components is summed, and so is a point beyond the lattice's reach (or not a number).
+    bool expand = components_.size() >= kPolynomialComponents && reachable(r, t);
+    for (size_t g = 0; g < groups_.size() && expand; ++g)
+        expand = groups_[g].components_.size() >= kPolynomialComponents && groups_[g].reachable(r, t);
+    if (!expand) {
+        kinematics(r, t, u, a, du, da);
+        return;
+    }
+    if (cache.groups.size() != groups_.size()) cache.groups.resize(groups_.size());
+    double z = std::min(r.z(), 0.0);
+    if (wheeler_) {  // z stretched into the water column below the elevation, as kinematics() does
+        double surface = expanded_elevation(r, t, cache);
+        for (size_t g = 0; g < groups_.size(); ++g) surface += groups_[g].expanded_elevation(r, t, cache.groups[g]);
+        const double eta = ramp(t) * surface;
+        z = std::min(depth_ * (r.z() - eta) / (depth_ + eta), 0.0);
+    }
+    u.setZero();
+    a.setZero();
+    if (du) du->setZero();
+    if (da) da->setZero();
+    add_expanded(r, z, t, cache, u, a, du, da);
+    for (size_t g = 0; g < groups_.size(); ++g) groups_[g].add_expanded(r, z, t, cache.groups[g], u, a, du, da);
 }
 
 }  // namespace uc

@@ -43,11 +43,21 @@ struct WaveExpansion {
     };
     Polynomial water;    // U = u_s + i w
     Polynomial surface;  // sum a e^{i (k s - w t + p)}, whose real part is the elevation (Wheeler stretching)
+    // The polynomials of the seas of the other directions of travel (SeaState::groups), one each, in order
+    std::vector<WaveExpansion> groups;
 };
 
 // The wavenumber of frequency omega in water of depth h: omega^2 = g k tanh(k h), solved by Newton's
 // method to round-off.
 double wave_number(double omega, double depth, double gravity);
+
+// The cos-2s directional spreading D(theta) = G(s) cos^{2s}(theta / 2) about the mean direction, with
+// G(s) = Gamma(s + 1) / (2 sqrt(pi) Gamma(s + 1/2)) so that it integrates to 1 over the circle, at the
+// midpoints theta_j = -pi + (j + 1/2) 2 pi / n of n equal bands: offsets[j] = theta_j and weights[j] =
+// D(theta_j) 2 pi / n (the midpoint rule, exact for a trigonometric polynomial of degree below n: for an
+// integer s and n > s the weights sum to 1, and for n > s + 1 their mean cos(theta) is s / (s + 1)).
+// For odd n the middle direction is the mean direction itself.
+void spreading_directions(double s, int n, std::vector<double>& offsets, std::vector<double>& weights);
 
 // waves.mode 3: empty when the given components (waveComponentCount, waveComponents) make a sea;
 // otherwise why not, naming the component, its value, unit and the likely cause.
@@ -87,7 +97,8 @@ public:
     // the local scale of each (docs/waves.md), at a fraction of the cost when a point stays in its
     // cell for many evaluations. A pure function of (r, t): the cache changes the cost, not the
     // result. With Wheeler stretching the elevation comes from a polynomial of its own (z stretched
-    // with it, as kinematics() does). A sea of fewer than 16 components is summed (kinematics()).
+    // with it, as kinematics() does). A sea of fewer than 16 components is summed (kinematics()); the seas
+    // of several directions are each expanded (cache.groups) and summed.
     void expanded_kinematics(const Vec3& r, double t, WaveExpansion& cache, Vec3& u, Vec3& a, Mat3* du = nullptr,
                              Mat3* da = nullptr) const;
     // The depth bands of the lattice: below its top z, the components after the first `count` move
@@ -105,6 +116,16 @@ private:
     // The components of one direction of travel (sorted here by frequency), their precomputed
     // factors, the ladder when the frequencies are equally spaced, and the expansions.
     bool build_given(const UCParams& p, std::string& error);
+    // waves.spreading > 0: the JONSWAP components (amplitudes and frequencies of the long-crested sea,
+    // its ladder alpha + beta i) in waves.nDirections directions, each scaled by the square root of its
+    // share of the spreading and given its own phases; the most energetic direction is this sea.
+    void build_spread(const UCParams& p, const std::vector<WaveComponent>& components, double alpha, double beta);
+    // The expansions of this direction's sea alone: its complex elevation's real part (not ramped), and
+    // its velocity, acceleration and gradients at r (z: the depth they are taken at) added, ramped, to
+    // u, a, du, da; false where the point lies beyond the lattice's reach (then the direct sum serves).
+    bool reachable(const Vec3& r, double t) const;
+    double expanded_elevation(const Vec3& r, double t, WaveExpansion& cache) const;
+    void add_expanded(const Vec3& r, double z, double t, WaveExpansion& cache, Vec3& u, Vec3& a, Mat3* du, Mat3* da) const;
     void build_direction(std::vector<WaveComponent> components, double direction);
     void build_direction(std::vector<WaveComponent> components, double direction, double ladderAlpha, double ladderBeta);
     // This direction's sum of the elevation, and its kinematics at r (z: the depth they are taken at,

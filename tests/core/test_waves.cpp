@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "api/cable_api.h"
+#include "model/params.h"
 #include "terms/hydrodynamics.h"
 #include "terms/waves.h"
 
@@ -684,4 +685,210 @@ TEST(WavesGiven, ComponentsThatMakeNoSeaAreRefusedNamingThem) {
     std::string error;
     ASSERT_TRUE(calm.build(given({{0.5, 0.0, 0.0, 0.0}}, 50.0), error)) << error;
     EXPECT_TRUE(calm.calm());
+}
+
+TEST(WavesSpread, SpreadingDiscretizationIntegratesToOneWithItsDirectionalSpread) {
+    // cos-2s: D(theta) = G(s) cos^{2s}(theta / 2) integrates to 1 over the circle, its mean cos(theta) is
+    // s / (s + 1), so its directional spread (Kuik's sigma = sqrt(2 (1 - m1))) is sqrt(2 / (s + 1)). For an
+    // integer s, D is a trigonometric polynomial of degree s: the midpoint rule of n > s + 1 directions
+    // integrates it and D cos(theta) exactly (to round-off).
+    std::vector<double> offsets, weights;
+    for (int s : {1, 2, 5, 10, 30}) {
+        for (int n : {s + 2, s + 7, 36}) {
+            if (n <= s + 1) continue;
+            spreading_directions(s, n, offsets, weights);
+            ASSERT_EQ(weights.size(), static_cast<size_t>(n));
+            double sum = 0.0, m1 = 0.0, sinMoment = 0.0;
+            for (int j = 0; j < n; ++j) sum += weights[j], m1 += weights[j] * std::cos(offsets[j]), sinMoment += weights[j] * std::sin(offsets[j]);
+            EXPECT_NEAR(sum, 1.0, 1e-13) << s << " " << n;
+            EXPECT_NEAR(m1, s / (s + 1.0), 1e-13) << s << " " << n;
+            EXPECT_NEAR(sinMoment, 0.0, 1e-14) << s << " " << n;  // symmetric about the mean direction
+            EXPECT_NEAR(std::sqrt(2.0 * (1.0 - m1)), std::sqrt(2.0 / (s + 1.0)), 1e-12) << s << " " << n;
+        }
+    }
+    // Odd n: the middle direction is the mean direction; the bands cover the circle once.
+    spreading_directions(4.0, 9, offsets, weights);
+    EXPECT_EQ(offsets[4], 0.0);
+    EXPECT_NEAR(offsets[0], -kPi + kPi / 9, 1e-15);
+    EXPECT_NEAR(offsets[8], kPi - kPi / 9, 1e-15);
+    // A non-integer s: |cos(theta / 2)|^{2s} is not smooth at theta = +-pi, where the midpoint rule's error
+    // is of order n^{-(2s + 1)} times D's tiny values there; the continuous G(s) is the normalization
+    // (the fine rule reaches it to round-off).
+    for (double s : {0.5, 1.5, 2.5, 7.3, 60.0}) {
+        for (int n : {72, 20001}) {
+            spreading_directions(s, n, offsets, weights);
+            double sum = 0.0, m1 = 0.0;
+            for (size_t j = 0; j < weights.size(); ++j) sum += weights[j], m1 += weights[j] * std::cos(offsets[j]);
+            // Near theta = +-pi, D = G (x / 2)^{2s} (x the distance from pi): the rule's error is of the order of
+            // that term over a band of width h, G 2^{-2s} h^{2s + 1}
+            const double G = std::exp(std::lgamma(s + 1.0) - std::lgamma(s + 0.5)) / (2.0 * std::sqrt(kPi));
+            const double bound = std::max(G * std::pow(2.0, -2.0 * s) * std::pow(2.0 * kPi / n, 2.0 * s + 1.0), 1e-14);
+            EXPECT_NEAR(sum, 1.0, bound) << s << " " << n;
+            EXPECT_NEAR(m1, s / (s + 1.0), bound) << s << " " << n;
+        }
+    }
+}
+
+namespace {
+
+// Every component of a sea with its direction of travel, as given components.
+std::vector<Given> all_components(const SeaState& sea) {
+    std::vector<Given> out;
+    for (const WaveComponent& c : sea.components()) out.push_back({c.omega, c.amplitude, c.phase, sea.direction()});
+    for (const SeaState& group : sea.groups())
+        for (const WaveComponent& c : group.components()) out.push_back({c.omega, c.amplitude, c.phase, group.direction()});
+    return out;
+}
+
+UCParams spread(double s, int directions, int components, double depth) {
+    UCParams p = regular(3.0, 9.0, depth, 0.6);
+    p.wavesMode = 2;
+    p.wavesNComponents = components;
+    p.wavesSpreading = s;
+    p.wavesNDirections = directions;
+    return p;
+}
+
+}  // namespace
+
+TEST(WavesSpread, ASpreadSeaKeepsHsAndHasTheSpreadingsDirectionalMoments) {
+    // Each direction carries the long-crested sea's amplitudes times sqrt(its weight): Hs = 4 sqrt(m0)
+    // exactly, and the energy's mean cos(beta - waves.direction) is s / (s + 1) (n > s + 1 directions).
+    for (int s : {1, 4, 10}) {
+        const int n = 2 * s + 5;  // odd: the middle direction is waves.direction
+        SeaState sea;
+        std::string error;
+        ASSERT_TRUE(sea.build(spread(s, n, 40, 80.0), error)) << error;
+        const std::vector<Given> waves = all_components(sea);
+        ASSERT_EQ(waves.size(), static_cast<size_t>(40 * n));
+        ASSERT_EQ(sea.groups().size(), static_cast<size_t>(n - 1));
+        double m0 = 0.0, c1 = 0.0, s1 = 0.0;
+        for (const Given& c : waves) {
+            m0 += 0.5 * c.amplitude * c.amplitude;
+            c1 += 0.5 * c.amplitude * c.amplitude * std::cos(c.direction - 0.6);
+            s1 += 0.5 * c.amplitude * c.amplitude * std::sin(c.direction - 0.6);
+        }
+        EXPECT_NEAR(4.0 * std::sqrt(m0), 3.0, 1e-12) << s;
+        EXPECT_NEAR(c1 / m0, s / (s + 1.0), 1e-12) << s;
+        EXPECT_NEAR(s1 / m0, 0.0, 1e-12) << s;
+        // the most energetic direction is waves.direction itself (odd n), the sea's first
+        EXPECT_NEAR(sea.direction(), 0.6, 1e-15);
+        // each direction has the JONSWAP frequencies, its own phases
+        EXPECT_EQ(sea.groups()[0].components()[3].omega, sea.components()[3].omega);
+        EXPECT_NE(sea.groups()[0].components()[3].phase, sea.components()[3].phase);
+    }
+    // No spreading, or a single direction: the long-crested sea, component by component.
+    SeaState longCrested, single;
+    std::string error;
+    ASSERT_TRUE(longCrested.build(spread(0.0, 15, 40, 80.0), error));
+    ASSERT_TRUE(single.build(spread(4.0, 1, 40, 80.0), error));
+    ASSERT_TRUE(longCrested.groups().empty());
+    ASSERT_TRUE(single.groups().empty());
+    for (size_t i = 0; i < 40; ++i) {
+        EXPECT_EQ(single.components()[i].amplitude, longCrested.components()[i].amplitude);
+        EXPECT_EQ(single.components()[i].phase, longCrested.components()[i].phase);
+    }
+    // The same seed, the same spread sea; another seed, other phases.
+    SeaState again, other;
+    ASSERT_TRUE(again.build(spread(4.0, 9, 40, 80.0), error));
+    UCParams q = spread(4.0, 9, 40, 80.0);
+    q.wavesSeed = 2;
+    ASSERT_TRUE(other.build(q, error));
+    SeaState first;
+    ASSERT_TRUE(first.build(spread(4.0, 9, 40, 80.0), error));
+    EXPECT_EQ(first.elevation(3.0, 4.0, 17.0), again.elevation(3.0, 4.0, 17.0));
+    EXPECT_NE(first.elevation(3.0, 4.0, 17.0), other.elevation(3.0, 4.0, 17.0));
+    // Refused with a regular wave or given components, naming waves.spreading.
+    UCParams r = regular(2.0, 9.0, 80.0);
+    r.wavesSpreading = 4.0;
+    EXPECT_EQ(check_params(r).rfind("waves.spreading = 4 is outside {0} with waves.mode 1", 0), 0u) << check_params(r);
+    r.wavesMode = 2;
+    EXPECT_EQ(check_params(r), "");
+    // At most 20000 components in all, naming waves.nComponents.
+    r.wavesNComponents = 2000;
+    r.wavesNDirections = 11;
+    EXPECT_EQ(check_params(r).rfind("waves.nComponents = 2000 is outside [1, 1818] with waves.nDirections = 11", 0), 0u)
+        << check_params(r);
+    r.wavesNDirections = 10;
+    EXPECT_EQ(check_params(r), "");
+}
+
+TEST(WavesSpread, SpreadSeaKinematicsAreTheClosedFormAirySum) {
+    // A cos-2s sea (s 4, 9 directions of 24 JONSWAP components each), in 40 m and 1500 m of water: the
+    // elevation, velocity and acceleration of the direct sum equal the closed-form Airy sum of all its
+    // components to 1e-12 of sum a w^2; the expansions (one polynomial per direction, summed) within their
+    // bounds per direction, summed (6e-12 of the velocity scale, 1e-10 of the acceleration's); their
+    // gradients equal those of the direct sum within theirs; with Wheeler stretching they follow the sum.
+    for (double depth : {40.0, 1500.0}) {
+        SeaState sea;
+        std::string error;
+        ASSERT_TRUE(sea.build(spread(4.0, 9, 24, depth), error)) << error;
+        const std::vector<Given> waves = all_components(sea);
+        double uScale = 0.0, aScale = 0.0;
+        for (const Given& c : waves) uScale += c.amplitude * c.omega, aScale += c.amplitude * c.omega * c.omega;
+        WaveExpansion moving;
+        for (const Vec3& r : {Vec3(0, 0, -0.5), Vec3(-40.0, 3.0, -12.0), Vec3(250.0, -70.0, -35.0), Vec3(5.0, 8.0, 0.4)}) {
+            for (double t : {0.0, 3.7, 41.2, 41.3}) {
+                double eta;
+                Vec3 u, a, uRef, aRef;
+                airy_sum(waves, depth, Vec3(r.x(), r.y(), std::min(r.z(), 0.0)), t, eta, uRef, aRef);
+                EXPECT_NEAR(sea.elevation(r.x(), r.y(), t), eta, 1e-12 * uScale);
+                sea.kinematics(r, t, u, a, nullptr, nullptr);
+                EXPECT_LT((u - uRef).norm(), 1e-12 * aScale) << depth << " " << t;
+                EXPECT_LT((a - aRef).norm(), 1e-12 * aScale) << depth << " " << t;
+                Vec3 ue, ae, uf, af;
+                sea.expanded_kinematics(r, t, moving, ue, ae);
+                EXPECT_LT((ue - uRef).norm(), 6e-12 * uScale) << depth << " " << r.transpose() << " " << t;
+                EXPECT_LT((ae - aRef).norm(), 1e-10 * aScale) << depth << " " << r.transpose() << " " << t;
+                WaveExpansion fresh;
+                sea.expanded_kinematics(r, t, fresh, uf, af);
+                EXPECT_EQ(ue, uf);  // the cache's history does not matter
+                EXPECT_EQ(ae, af);
+                ASSERT_EQ(fresh.groups.size(), sea.groups().size());  // one polynomial per direction
+                Mat3 du, da, due, dae;
+                sea.kinematics(r, t, u, a, &du, &da);
+                sea.expanded_kinematics(r, t, fresh, ue, ae, &due, &dae);
+                double kMax = 0.0;
+                for (const Given& c : waves) kMax = std::max(kMax, wave_number(c.omega, depth, g));
+                EXPECT_LT((due - du).norm(), 1.1e-10 * kMax * uScale) << depth << " " << r.transpose();
+                EXPECT_LT((dae - da).norm(), 3e-9 * kMax * aScale) << depth << " " << r.transpose();
+            }
+        }
+        // The gradients of the direct sum equal finite differences.
+        const Vec3 r(10.0, -5.0, -20.0);
+        Vec3 u, a, up, um, ap, am;
+        Mat3 du, da;
+        sea.kinematics(r, 5.0, u, a, &du, &da);
+        for (int c = 0; c < 3; ++c) {
+            const double h = 1e-4;
+            Vec3 e = Vec3::Zero();
+            e[c] = h;
+            sea.kinematics(r + e, 5.0, up, ap, nullptr, nullptr);
+            sea.kinematics(r - e, 5.0, um, am, nullptr, nullptr);
+            EXPECT_LT(((up - um) / (2 * h) - du.col(c)).norm(), 1e-8 * aScale) << c;
+            EXPECT_LT(((ap - am) / (2 * h) - da.col(c)).norm(), 1e-8 * aScale) << c;
+        }
+        // Wheeler: the stretched depth from the summed elevation of all directions
+        UCParams p = spread(4.0, 9, 24, depth);
+        p.wavesStretching = 1;
+        SeaState stretched;
+        ASSERT_TRUE(stretched.build(p, error)) << error;
+        for (const Vec3& q : {Vec3(1.0, 2.0, 0.3), Vec3(-30.0, 7.0, -2.0), Vec3(60.0, -20.0, -15.0)}) {
+            for (double t : {2.0, 19.5}) {
+                Vec3 us, as, ue, ae;
+                stretched.kinematics(q, t, us, as, nullptr, nullptr);
+                WaveExpansion cache;
+                stretched.expanded_kinematics(q, t, cache, ue, ae);
+                EXPECT_LT((ue - us).norm(), 1e-11 * uScale) << depth << " " << q.transpose();
+                EXPECT_LT((ae - as).norm(), 2e-10 * aScale) << depth << " " << q.transpose();
+                const double eta = sea.elevation(q.x(), q.y(), t);
+                double etaRef;
+                Vec3 uz, az;
+                // the stretched point's water is the closed form at the stretched depth
+                const double zs = std::min(depth * (q.z() - eta) / (depth + eta), 0.0);
+                airy_sum(waves, depth, Vec3(q.x(), q.y(), zs), t, etaRef, uz, az);
+                EXPECT_LT((us - uz).norm(), 1e-12 * aScale) << depth << " " << q.transpose();
+            }
+        }
+    }
 }

@@ -157,3 +157,34 @@ def test_wavekin_3_record_is_the_fmus_water_at_its_samples(fmu_file):
     finally:
         c.free()
     assert np.max(np.abs(np.array(ours) - record[0:12:2, 1])) < 1e-9, (ours, record[0:12:2, 1])
+
+
+def test_a_spread_sea_moves_the_cable_as_its_components_given_in_a_file(fmu_file, tmp_path):
+    """waves.spreading (a cos-2s sea in 5 directions of 20 components) against the same 100 components
+    given in waves.file with their directions (studies.references.sea, the documented generator): the same
+    elevation to 1e-12 of Hs, and a hanging 50 m cable's tow tension through 20 s of the residual's
+    kinematics (a polynomial per direction) the same within the integrator's local error bound,
+    tensionTolerance (1e-5) of the tension: the two paths differ by round-off only."""
+    from studies.references.sea import sea_state
+    spread = {"waves.mode": 2, "waves.height": 2.0, "waves.period": 8.0, "waves.nComponents": 20,
+              "waves.spreading": 2.0, "waves.nDirections": 5, "waves.direction": 0.5}
+    common = {"waterDepth": 60.0, "gravity": G, "length": 50.0, "nElements": 6, "tensionTolerance": 1e-5,
+              "initialDirection.x": 0.0, "initialDirection.z": -1.0}
+    sea = sea_state({**spread, **common})
+    assert sea.amplitude.size == 100 and len(set(sea.directions())) == 5
+    (tmp_path / "spread.txt").write_text("".join(
+        f"{float(w)!r} {float(a)!r} {float(p)!r} {float(b)!r}\n"
+        for w, a, p, b in zip(sea.omega, sea.amplitude, sea.phase, sea.directions())))
+    runs = []
+    for params in (spread, {"waves.mode": 3, "waves.file": str(tmp_path / "spread.txt")}):
+        with CableFMU(fmu_file, parameters={**params, **common}) as c:
+            c.initialize(inputs={"tow.x": 3.0, "tow.y": -2.0, "tow.z": -2.0})
+            record = []
+            for k in range(40):
+                c.do_step(0.5, 0.5 * k)
+                record.append((c.get("waveElevation"), c.get("towTension")))
+            runs.append(np.array(record))
+    spread_run, given_run = runs
+    assert np.ptp(spread_run[:, 0]) > 0.5 and np.ptp(spread_run[:, 1]) > 10.0  # the sea moves the cable
+    assert np.abs(spread_run[:, 0] - given_run[:, 0]).max() < 1e-12 * 2.0
+    assert np.abs(spread_run[:, 1] - given_run[:, 1]).max() < 1e-5 * spread_run[:, 1].mean()

@@ -30,6 +30,8 @@ def test_splitmix64_is_the_published_generator():
     {"waves.mode": 2, "waves.height": 3.0, "waves.period": 9.0, "waves.seed": 7, "waves.nComponents": 40,
      "waterDepth": 120.0, "waves.direction": 0.4, "waves.gamma": 2.0},
     {"waves.mode": 1, "waves.height": 2.5, "waves.period": 7.0, "waterDepth": 30.0, "waves.direction": -1.1},
+    {"waves.mode": 2, "waves.height": 3.0, "waves.period": 9.0, "waves.seed": 7, "waves.nComponents": 20,
+     "waterDepth": 120.0, "waves.direction": 0.4, "waves.spreading": 3.0, "waves.nDirections": 7},
 ])
 def test_the_fmu_sea_is_the_documented_generator(fmu_file, params):
     """waveElevation at the tow point of the FMU equals the elevation of studies.references.sea's components."""
@@ -48,7 +50,7 @@ def test_the_fmu_sea_is_the_documented_generator(fmu_file, params):
     assert np.abs(np.array(eta) - expected).max() < 1e-12 * params["waves.height"]
 
 
-@pytest.mark.parametrize("waves", [wm.REGULAR, wm.IRREGULAR], ids=lambda w: w.name)
+@pytest.mark.parametrize("waves", [wm.REGULAR, wm.IRREGULAR, wm.SPREAD], ids=lambda w: w.name)
 def test_moordyn_computes_the_same_water(waves):
     """MoorDyn's kinematics of the components (WaveKin 7, Wheeler stretching) are our closed form.
     MoorDyn solves the dispersion relation to seven digits (Newman's one-step method, its docs), so
@@ -122,3 +124,24 @@ def test_hanging_umbilical_in_a_regular_wave_agrees_with_moordyn(fmu_file):
     its last segment's, half a segment above: that offset is a discretization error of its own,
     which the two meshes measure like the others."""
     check_agreement(fmu_file, CASES["hanging, regular"], (5, 10), (20, 40))
+
+
+def test_spread_sea_reference_has_the_spreadings_moments():
+    """The Python generator of a spread sea (written from docs/waves.md): Hs = 4 sqrt(m0) and the energy's
+    mean cos(theta - beta) = s / (s + 1) of cos-2s (n > s + 1 directions: the midpoint rule is exact)."""
+    sea = sea_state({"waves.mode": 2, "waves.height": 3.0, "waves.period": 9.0, "waves.nComponents": 30,
+                     "waterDepth": 80.0, "waves.direction": 0.6, "waves.spreading": 4.0, "waves.nDirections": 9})
+    assert sea.amplitude.size == 270
+    assert abs(sea.hs() - 3.0) < 1e-12
+    energy = 0.5 * sea.amplitude ** 2
+    assert abs(np.sum(energy * np.cos(sea.directions() - 0.6)) / np.sum(energy) - 4.0 / 5.0) < 1e-12
+
+
+@pytest.mark.slow
+def test_riser_in_a_spread_sea_agrees_with_moordyn(fmu_file):
+    """The taut riser in a short-crested sea (cos-2s, s = 2, 5 directions of 20 components; 120 s,
+    statistics over the last 80 s): ours 5 and 10 elements, MoorDyn's 10 and 20 segments fed the same
+    100 components with their directions (about 30 s of CPU)."""
+    riser = wm.Riser()
+    ours, theirs = check_agreement(fmu_file, wm.Case("taut, spread", riser, wm.SPREAD), (5, 10), (10, 20))
+    assert np.all(np.abs(ours / theirs - 1.0) < 0.03)

@@ -73,16 +73,24 @@ class Waves:
     seed: int = 1
     t_end: float = 100.0
     t_from: float = 40.0          # statistics over [t_from, t_end]
+    spreading: float = 0.0        # waves.spreading (cos-2s exponent; 0: long-crested)
+    n_directions: int = 15        # waves.nDirections of a spread sea
 
     def parameters(self, riser: Riser) -> dict:
-        return {"waves.mode": self.mode, "waves.height": self.height, "waves.period": self.period,
-                "waves.nComponents": self.n_components, "waves.seed": self.seed, "waves.stretching": 1,
-                "waterDepth": riser.depth, "gravity": riser.g}
+        p = {"waves.mode": self.mode, "waves.height": self.height, "waves.period": self.period,
+             "waves.nComponents": self.n_components, "waves.seed": self.seed, "waves.stretching": 1,
+             "waterDepth": riser.depth, "gravity": riser.g}
+        if self.spreading > 0.0:
+            p.update({"waves.spreading": self.spreading, "waves.nDirections": self.n_directions})
+        return p
 
 
 REGULAR = Waves("regular", 1, 4.0, 10.0, t_end=100.0, t_from=40.0)
 # 50 components over [0.5, 3] wp: the record repeats after 2 pi / dw = 200 s, the window below.
 IRREGULAR = Waves("irregular", 2, 4.0, 10.0, n_components=50, t_end=240.0, t_from=40.0)
+# A short-crested sea: cos-2s, s = 2, in 5 directions of 20 components (100 in all; the record repeats
+# after 2 pi / dw = 80 s); not in CASES (the generated section), checked by tests/python/test_waves_moordyn.py.
+SPREAD = Waves("spread", 2, 4.0, 10.0, n_components=20, t_end=120.0, t_from=40.0, spreading=2.0, n_directions=5)
 
 
 @dataclass(frozen=True)
@@ -164,10 +172,11 @@ def wave_frequencies(sea: Sea) -> str:
     """MoorDyn's wave_frequencies.txt of the components: omega, Re and Im of the complex amplitude A,
     direction; MoorDyn's elevation is |A| sin(w t - k x + arg A), ours a cos(k x - w t + p), so
     A = a exp(i (pi/2 - p)). The first row must be omega = 0."""
-    rows = [f"0 0 0 {sea.direction:.17g}"]
-    for a, w, p in zip(sea.amplitude, sea.omega, sea.phase):
+    directions = sea.directions()
+    rows = [f"0 0 0 {directions[0] if len(directions) else 0.0:.17g}"]
+    for a, w, p, b in zip(sea.amplitude, sea.omega, sea.phase, directions):
         psi = 0.5 * math.pi - p
-        rows.append(f"{w:.17g} {a * math.cos(psi):.17g} {a * math.sin(psi):.17g} {sea.direction:.17g}")
+        rows.append(f"{w:.17g} {a * math.cos(psi):.17g} {a * math.sin(psi):.17g} {b:.17g}")
     return "\n".join(rows) + "\n"
 
 
