@@ -1,0 +1,381 @@
+"""The census's decks in motion: every public deck the FMU loads (studies.comparisons.public_decks, the
+census) run under one prescribed motion in the FMU and in MoorDyn v2 (PyPI `moordyn`) fed the same file,
+their fairlead and anchor tensions side by side.
+
+The motion (Settings): every coupled object of the deck surges along x by A (1 - cos 2 pi t / T) from rest
+(no jump in position or velocity at t = 0), T = 10 s, A = 1 % of the deck's longest line (its unstretched
+length), at most 2 m (a platform's wave-frequency surge); the first period is left out of the statistics.
+What moves:
+
+- a system's coupled bodies (the FMU's `body[k].*`, MoorDyn's coupled body), its Coupled points (with a
+  BODIES section the FMU's `point[k].*`; without one they are on the FMU's body 1, which moves);
+- a one-line deck's tow point (the FMU's `tow.*`, where the census puts it: its Vessel point, else its
+  higher Fixed point): in MoorDyn that point of the deck is made Coupled where it is Fixed;
+- a deck with none (a system with no coupled object, a one-line deck whose tow point MoorPy cannot name):
+  nothing, both run from their start unforced.
+
+The FMU starts from its static equilibrium (the census's start) and gets the position, velocity and
+acceleration (an input derivative) of what moves at each communication step; MoorDyn starts from its own
+initial conditions (moordyn.Init: its dynamic relaxation up to the deck's TmaxIC) and gets the position and
+velocity at the start of each of `calls` calls per communication step (it moves its coupled points linearly
+within a call), at the deck's mesh and dtM, in a process of its own (peers.moordyn.driven), so that its
+crash or blow-up is a result of the table. Each deck line's tension at its two ends is compared: a system's
+line k, its fairlead (FMU `line[k].fairleadTension`) with MoorDyn's end B and its anchor with end A, swapped
+where the other pairing is the closer in mean (the FMU walks a line between fixed points from its own end);
+a one-line deck's tow point and the far end of its chain of deck lines.
+
+compute() returns the numbers, markdown() the table of docs/systems_mooring.md, "The census in motion"
+(between its census_dynamics markers). Used by scripts/census_dynamics and
+tests/python/test_census_dynamics.py.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import re
+import sys
+import tempfile
+import time
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ucable.fmu import CableFMU, FMICallException
+from . import line_file_validation as lfv
+from . import public_decks as pd
+from ..doc_section import add_report_options, write_section
+from ..peers import moordyn
+
+NAME = "census_dynamics"
+
+
+@dataclass
+class Settings:
+    period: float = 10.0        # [s] of the surge
+    fraction: float = 0.01      # amplitude: this fraction of the deck's longest line ...
+    cap: float = 2.0            # [m] ... at most this
+    t_end: float = 40.0         # [s] simulated
+    t_from: float = 10.0        # [s] statistics over t >= t_from (the first period left out)
+    comm_step: float = 0.1      # [s] the FMU's communication step and the sampling of both
+    calls: int = 10             # moordyn.Step calls per communication step
+    moordyn_refine: int = 1     # MoorDyn on this many times the deck's NumSegs (dtM divided as much)
+    timeout: float = 900.0      # [s] for MoorDyn's process on one deck
+
+
+# ----------------------------------------------------------------------------- the deck
+def _sections(path: Path):
+    """(section header in upper case, the rows under it) of a deck, in order."""
+    header, rows = None, []
+    for line in Path(path).read_text(errors="replace").splitlines():
+        if line.lstrip().startswith("---"):
+            if header is not None:
+                yield header, rows
+            header, rows = line.upper(), []
+        elif header is not None:
+            rows.append(line)
+    if header is not None:
+        yield header, rows
+
+
+def _is_lines(header: str) -> bool:
+    return bool(re.search(r"\bLINES\b|LINE LIST|LINE PROPERTIES", header))
+
+
+def line_lengths(path: Path) -> list:
+    """The unstretched length of each deck line (the LINES table's UnstrLen column, found by its header)."""
+    for header, rows in _sections(path):
+        if not _is_lines(header):
+            continue
+        column, out = None, []
+        for row in rows:
+            words = row.split()
+            if column is None:
+                column = next((i for i, w in enumerate(words) if re.match(r"unstr|length", w, re.I)), None)
+                continue
+            try:
+                out.append(float(words[column]))
+            except (IndexError, ValueError):
+                continue  # the units row
+        return out
+    return []
+
+
+def has_bodies(path: Path) -> bool:
+    """Whether the deck has a BODIES section with a row (its Coupled points are then the FMU's point[k])."""
+    return any(re.search(r"\bBOD(Y|IES)\b", h) and any(r.split() and r.split()[0].isdigit() for r in rows)
+               for h, rows in _sections(path))
+
+
+def coupled_tow_text(path: Path, point: int) -> str:
+    """The deck's text with its point `point` (a Fixed point, the FMU's tow point) made Coupled, so that
+    MoorDyn takes its motion."""
+    out, in_points = [], False
+    for line in Path(path).read_text(errors="replace").splitlines():
+        if line.lstrip().startswith("---"):
+            in_points = any(k in line.upper() for k in ("POINT", "CONNECTION", "NODE"))
+        words = line.split()
+        if in_points and len(words) > 1 and words[0] == str(point):
+            line = re.sub(r"^(\s*\S+\s+)\S+", r"\1Coupled", line, count=1)
+        out.append(line)
+    return "\n".join(out) + "\n"
+
+
+def amplitude(path: Path, settings: Settings) -> float:
+    lengths = line_lengths(path)
+    return min(settings.fraction * max(lengths), settings.cap) if lengths else settings.cap
+
+
+# ----------------------------------------------------------------------------- the two runs
+def fmu_run(fmu, parameters: dict, inputs: dict, n_lines: int, moving, surge: lfv.Surge, settings: Settings) -> dict:
+    """The FMU from its static start (its inputs `inputs`), the objects moving(system) (input prefixes:
+    body[k], point[k], tow) surging: t, tension (2, times, lines: at the anchor end, at the fairlead end),
+    system, moved, cpu_init, cpu, error (refused: the start's; else the step's, the tensions NaN from there)."""
+    n = int(round(settings.t_end / settings.comm_step))
+    times = np.arange(n + 1) * settings.comm_step
+    c = CableFMU(fmu, parameters=parameters, logging_on=True)
+    out = {"t": times, "error": "", "refused": False, "cpu_init": 0.0, "cpu": 0.0, "system": False, "moved": [],
+           "tension": None}
+    try:
+        cpu0 = time.process_time()
+        try:
+            c.initialize(inputs=inputs)
+        except FMICallException:
+            out["refused"] = True
+            raise
+        out["cpu_init"] = time.process_time() - cpu0
+        out["system"] = system = any("a mooring system" in text for _, _, text in c.messages)
+        out["moved"] = moved = moving(system)
+        names = ([f"line[{k}].anchorTension" for k in range(1, n_lines + 1)] +
+                 [f"line[{k}].fairleadTension" for k in range(1, n_lines + 1)]) if system else ["endTension", "towTension"]
+        m = n_lines if system else 1
+        out["tension"] = tension = np.full((2, n + 1, m), np.nan)
+        tension[:, 0] = c.get_reals(names).reshape(2, m)
+        base = {p: inputs.get(f"{p}.x", 0.0) for p in moved}
+        cpu0 = time.process_time()
+        for k in range(n):
+            dx, v, a = surge.state(times[k])
+            c.set({**{f"{p}.x": x + dx[0] for p, x in base.items()}, **{f"{p}.vx": v[0] for p in moved}})
+            if moved:
+                c.set_input_derivatives([f"{p}.vx" for p in moved], 1, [a[0]] * len(moved))
+            c.do_step(settings.comm_step, t=times[k])
+            tension[:, k + 1] = c.get_reals(names).reshape(2, m)
+        out["cpu"] = time.process_time() - cpu0
+    except FMICallException:
+        errors = [text for status, _, text in c.messages if status == "ERROR"]
+        out["error"] = errors[0] if errors else "(no message)"
+    finally:
+        c.free()
+    return out
+
+
+def _attached(text: str) -> list:
+    """Per point (from 1), its (line, end) pairs from peers.moordyn.driven's `attached`."""
+    return [[tuple(int(v) for v in pair.split(".")) for pair in row.split()] for row in text.split(";")]
+
+
+def chain_ends(attached: list, tow: int) -> tuple:
+    """((line, end) at the tow point, (line, end) at the far end of its chain of deck lines through points
+    that join two lines), lines and ends as MoorDyn's (1-based lines, end 0 = A)."""
+    line, end = attached[tow - 1][0]
+    for _ in range(len(attached)):
+        far = next(i for i, pairs in enumerate(attached) if (line, 1 - end) in pairs)
+        others = [p for p in attached[far] if p != (line, 1 - end)]
+        if len(others) != 1:
+            return attached[tow - 1][0], (line, 1 - end)
+        line, end = others[0]
+    raise ValueError("the chain of lines from the tow point closes on itself")
+
+
+def pairs(fmu: dict, md: dict, tow: int | None) -> list:
+    """Per FMU line: (label, FMU anchor series, FMU fairlead series, MoorDyn's at the same ends)."""
+    T = md["tension"]
+    if not fmu["system"]:
+        (l1, e1), (l2, e2) = chain_ends(_attached(md["attached"]), tow) if tow else ((1, 1), (1, 0))
+        return [("tow point", fmu["tension"][0][:, 0], fmu["tension"][1][:, 0], T[e2][:, l2 - 1], T[e1][:, l1 - 1])]
+    out = []
+    for k in range(fmu["tension"].shape[2]):
+        fa, ff, a, b = fmu["tension"][0][:, k], fmu["tension"][1][:, k], T[0][:, k], T[1][:, k]
+        with np.errstate(invalid="ignore"):
+            kept = np.nanmean(np.abs(ff - b) + np.abs(fa - a))
+            swapped = np.nanmean(np.abs(ff - a) + np.abs(fa - b))
+        out.append((f"line {k + 1}", fa, ff, *((b, a) if swapped < 0.5 * kept else (a, b))))
+    return out
+
+
+def statistics(t, label, fa, ff, ma, mf, t_from: float) -> dict:
+    """Per end (anchor, fairlead): the peak difference (relative to MoorDyn's peak), the RMS difference
+    relative to MoorDyn's mean and range (line_file_validation.rms_difference), and the start (t = 0)."""
+    d = lfv.rms_difference(lfv.History("FMU", t, ff, fa, 0.0), lfv.History("MoorDyn", t, mf, ma, 0.0), t_from)
+    sel = t >= t_from - 1e-9
+    for end, ours, ref in (("fairlead", ff, mf), ("anchor", fa, ma)):
+        d[end]["peak"] = float(np.max(ours[sel]) / np.max(ref[sel]) - 1.0)
+        d[end]["start"] = float(ours[0] / ref[0] - 1.0) if ref[0] > 0 else float("nan")
+    d["label"] = label
+    return d
+
+
+def moordyn_run(path: Path, base: Path | None, tow, moved: list, surge: lfv.Surge, settings: Settings) -> dict:
+    """MoorDyn on the deck (peers.moordyn.driven), its coupled objects surging if `moved` (the FMU's moving
+    objects) is not empty; tow: MoorPy's point of a one-line deck's tow point, made Coupled where the deck
+    has it Fixed; at settings.moordyn_refine times the deck's NumSegs."""
+    text = coupled_tow_text(path, tow.number) if tow is not None and tow.type == 1 else None
+    if settings.moordyn_refine > 1:
+        with tempfile.TemporaryDirectory() as tmp:
+            source = Path(tmp) / path.name
+            source.write_text(text if text is not None else path.read_text(errors="replace"))
+            text = lfv.refined_deck_file(source, settings.moordyn_refine, Path(tmp)).read_text()
+        # a fileIC holds the deck's own mesh: the refined one makes its initial conditions itself
+        text = re.sub(r"^\s*\S+\s+fileIC\b.*$", "", text, flags=re.M | re.I)
+    n = int(round(settings.t_end / settings.comm_step))
+    starts = (np.arange(n * settings.calls) / settings.calls) * settings.comm_step
+    shift = np.array([[surge.state(t)[i][0] for t in starts] for i in (0, 1)]) if moved else None
+    return moordyn.driven(path, settings.comm_step, n, base=base, text=text, calls=settings.calls, shift=shift,
+                          timeout=settings.timeout)
+
+
+def run_deck(fmu, label: str, path: Path, base: Path | None = None, settings: Settings = Settings()) -> dict:
+    """One deck: both runs and their comparison, or why there is none (status: "refused" by the FMU, "moordyn"
+    fails, "fmu" fails in motion, "ok")."""
+    s, options, _ = pd.moorpy_system(path)
+    s = s if s is not None and s.lineList else None
+    parameters, inputs = pd.setup(path, s, options)
+    lengths = line_lengths(path)
+    result = {"deck": label, "amplitude": amplitude(path, settings), "lines": len(lengths)}
+    # what moves: decided on the deck; whether it is a system the FMU says at its start
+    tow = pd.tow_point(s) if s is not None and not s.bodyList else None
+    moved_system = ([k[:-2] for k in inputs if re.fullmatch(r"(body|point)\[\d+\]\.x", k)] if has_bodies(path)
+                    else ["body[1]"] if pd.coupled_points(path) else [])
+    moved_system = [p for p in moved_system if not p.startswith("point") or has_bodies(path)]
+    surge = lfv.Surge(amplitude=result["amplitude"], period=settings.period)
+    ours = fmu_run(fmu, parameters, inputs, len(lengths), lambda system: moved_system if system else
+                   (["tow"] if "tow.x" in inputs else []), surge, settings)
+    if ours["refused"]:
+        return {**result, "status": "refused", "reason": ours["error"]}
+    system, moved = ours["system"], ours["moved"]
+    result.update(system=system, moved=", ".join(moved) if moved else "nothing", t_end=settings.t_end)
+    md = moordyn_run(path, base, None if system or not moved else tow, moved, surge, settings)
+    result.update(cpu_fmu=ours["cpu_init"] + ours["cpu"], cpu_fmu_run=ours["cpu"], fmu_error=ours["error"],
+                  cpu_moordyn=md.get("cpu_init", 0.0) + md.get("cpu", 0.0), cpu_moordyn_init=md.get("cpu_init", 0.0),
+                  moordyn_error=md["error"], moordyn_layout=md.get("layout", ""), tmax_ic=_option(path, "TmaxIC"))
+    if "tension" not in md or ours["tension"] is None:
+        return {**result, "status": "moordyn" if "tension" not in md else "fmu"}
+    t = ours["t"]
+    usable = np.isfinite(md["tension"]).all(axis=(0, 2)) & np.isfinite(ours["tension"]).all(axis=(0, 2))
+    upto = int(np.argmin(usable)) if not usable.all() else len(t)
+    if upto * settings.comm_step <= settings.t_from:
+        return {**result, "status": "moordyn" if md["error"] else "fmu"}
+    rows = [statistics(t[:upto], lab, *(x[:upto] for x in series), settings.t_from)
+            for lab, *series in pairs(ours, md, tow.number if (not system and tow is not None) else None)]
+    result.update(status="ok", rows=rows, until=float(t[upto - 1]),
+                  worst={f"{end}.{key}": max((abs(r[end][key]) for r in rows if np.isfinite(r[end][key])), default=float("nan"))
+                         for end in ("fairlead", "anchor") for key in ("peak", "rel_mean", "rel_range", "start")})
+    return result
+
+
+def _option(path: Path, name: str):
+    for header, rows in _sections(path):
+        if "OPTION" in header:
+            for row in rows:
+                words = row.split()
+                if len(words) > 1 and words[1].lower() == name.lower():
+                    return words[0]
+    return None
+
+
+# ----------------------------------------------------------------------------- the census
+def census_cases(moordyn_root: Path, moorpy_root: Path) -> list:
+    """(label, path, base) of the census's decks (public_decks.census_decks), base the census folder MoorDyn's
+    copy holds (its SeafloorFile paths are relative to that folder's parent)."""
+    out = []
+    for label, path in pd.census_decks(moordyn_root, moorpy_root):
+        root = moordyn_root if label.startswith("md:") else moorpy_root
+        folders = pd.CENSUS_FOLDERS["moordyn" if label.startswith("md:") else "moorpy"]
+        folder = next(f for f in folders if label[3:].startswith(f + "/"))
+        out.append((label, path, root / folder))
+    return out
+
+
+def compute(fmu, cases, settings: Settings = Settings(), progress=None) -> dict:
+    decks = []
+    for label, path, base in cases:
+        if progress:
+            progress(label)
+        decks.append(run_deck(fmu, label, Path(path), base, settings))
+    from importlib.metadata import version
+    return {"settings": asdict(settings), "decks": decks, "moordyn_version": version("moordyn")}
+
+
+# ----------------------------------------------------------------------------- Markdown
+def _pct(x) -> str:
+    return "" if x is None or not np.isfinite(x) else f"{100.0 * x:.2f} %"
+
+
+def _note(d: dict) -> str:
+    notes = []
+    if d.get("moved") == "nothing":
+        notes.append("no coupled object: unforced")
+    if d.get("moordyn_error"):
+        notes.append(f"MoorDyn: {d['moordyn_error']}")
+    if d.get("fmu_error"):
+        notes.append(f"FMU: {d['fmu_error']}")
+    if d["status"] == "ok" and d["until"] < d.get("t_end", d["until"]):
+        notes.append(f"compared up to {d['until']:g} s")
+    return "; ".join(notes).replace("|", "\\|")
+
+
+def markdown(data: dict) -> str:
+    se = data["settings"]
+    decks = data["decks"]
+    loaded = [d for d in decks if d["status"] != "refused"]
+    ok = [d for d in loaded if d["status"] == "ok"]
+    out = [f"{len(loaded)} decks the FMU loads (of {len(decks)}); compared with MoorDyn {data['moordyn_version']}: "
+           f"{len(ok)}; MoorDyn fails on {sum(d['status'] == 'moordyn' for d in loaded)}, the FMU in motion on "
+           f"{sum(d['status'] == 'fmu' for d in loaded)}. Surge A (1 − cos 2πt/T), T {se['period']:g} s, A = "
+           f"{100 * se['fraction']:g} % of the deck's longest line, at most {se['cap']:g} m; {se['t_end']:g} s, "
+           f"statistics from {se['t_from']:g} s; the worst line of each deck. Peak: the FMU's largest tension over "
+           "MoorDyn's − 1; RMS: of the difference, over MoorDyn's mean and over its range (max − min); start: at "
+           "t = 0, the FMU's static start over MoorDyn's after its initial conditions − 1. CPU [s]: the FMU's start "
+           "and run; MoorDyn's initial conditions + run.", "",
+           "| deck | moves | A [m] | fairlead: peak | RMS / mean | RMS / range | anchor: peak | RMS / mean | "
+           "RMS / range | start | CPU FMU | CPU MoorDyn | note |", "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for d in sorted(loaded, key=lambda d: d["deck"]):
+        w = d.get("worst", {})
+        cells = [_pct(w.get(k)) for k in ("fairlead.peak", "fairlead.rel_mean", "fairlead.rel_range", "anchor.peak",
+                                           "anchor.rel_mean", "anchor.rel_range")]
+        start = max(w.get("fairlead.start", float("nan")), w.get("anchor.start", float("nan")))
+        cpu_md = (f"{d['cpu_moordyn_init']:.2f} + {d['cpu_moordyn'] - d['cpu_moordyn_init']:.2f}"
+                  if d.get("moordyn_error", "") == "" or d["status"] == "ok" else "")
+        out.append(f"| `{d['deck']}` | {d.get('moved', '')} | {d['amplitude']:.3g} | " + " | ".join(cells) +
+                   f" | {_pct(start)} | {d.get('cpu_fmu', 0.0):.2f} | {cpu_md} | {_note(d)} |")
+    return "\n".join(out)
+
+
+def main(argv=None) -> int:  # pragma: no cover
+    from ucable.paths import fmu_path
+
+    ap = argparse.ArgumentParser(prog="scripts/census_dynamics", description=__doc__.split("\n\n")[0])
+    ap.add_argument("--census", nargs=2, metavar=("MOORDYN", "MOORPY"), type=Path, required=True,
+                    help="checkouts of MoorDyn and MoorPy (the census's decks)")
+    ap.add_argument("--decks", nargs="*", default=None, help="only these decks (labels, e.g. md:tests/Mooring/lines.txt)")
+    ap.add_argument("--t-end", type=float, default=Settings.t_end)
+    add_report_options(ap, NAME)
+    a = ap.parse_args(argv)
+    cases = census_cases(*a.census)
+    if a.decks:
+        cases = [c for c in cases if c[0] in a.decks]
+    data = compute(a.fmu or fmu_path(), cases, Settings(t_end=a.t_end),
+                   progress=lambda d: print(d, file=sys.stderr, flush=True))
+    text = markdown(data)
+    if a.json:
+        a.json.write_text(json.dumps(data, indent=1, default=lambda x: x.tolist() if hasattr(x, "tolist") else str(x)))
+    if a.doc:
+        write_section(a.doc, text, NAME)
+    print(text)
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
