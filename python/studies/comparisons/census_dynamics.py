@@ -46,7 +46,7 @@ import numpy as np
 from ucable.fmu import CableFMU, FMICallException
 from . import line_file_validation as lfv
 from . import public_decks as pd
-from ..doc_section import add_report_options, write_section
+from ..doc_section import add_report_options, publish, write_json
 from ..peers import moordyn
 
 NAME = "census_dynamics"
@@ -211,7 +211,7 @@ def statistics(t, label, fa, ff, ma, mf, t_from: float) -> dict:
     d = lfv.rms_difference(lfv.History("FMU", t, ff, fa, 0.0), lfv.History("MoorDyn", t, mf, ma, 0.0), t_from)
     sel = t >= t_from - 1e-9
     for end, ours, ref in (("fairlead", ff, mf), ("anchor", fa, ma)):
-        d[end]["peak"] = float(np.max(ours[sel]) / np.max(ref[sel]) - 1.0)
+        d[end]["peak"] = float(np.max(ours[sel]) / np.max(ref[sel]) - 1.0) if np.max(ref[sel]) > 0 else math.nan
         d[end]["start"] = float(ours[0] / ref[0] - 1.0) if ref[0] > 0 else float("nan")
     d["label"] = label
     return d
@@ -236,9 +236,11 @@ def moordyn_run(path: Path, base: Path | None, tow, moved: list, surge: lfv.Surg
                           timeout=settings.timeout)
 
 
-def run_deck(fmu, label: str, path: Path, base: Path | None = None, settings: Settings = Settings()) -> dict:
+def run_deck(fmu, label: str, path: Path, base: Path | None = None, settings: Settings = Settings(),
+             series: bool = False) -> dict:
     """One deck: both runs and their comparison, or why there is none (status: "refused" by the FMU, "moordyn"
-    fails, "fmu" fails in motion, "ok")."""
+    fails, "fmu" fails in motion, "ok"); series: also the compared histories (t, then per line its label and
+    the FMU's anchor and fairlead tension, MoorDyn's at the same ends)."""
     s, options, _ = pd.moorpy_system(path)
     s = s if s is not None and s.lineList else None
     parameters, inputs = pd.setup(path, s, options)
@@ -267,8 +269,10 @@ def run_deck(fmu, label: str, path: Path, base: Path | None = None, settings: Se
     upto = int(np.argmin(usable)) if not usable.all() else len(t)
     if upto * settings.comm_step <= settings.t_from:
         return {**result, "status": "moordyn" if md["error"] else "fmu"}
-    rows = [statistics(t[:upto], lab, *(x[:upto] for x in series), settings.t_from)
-            for lab, *series in pairs(ours, md, tow.number if (not system and tow is not None) else None)]
+    compared = pairs(ours, md, tow.number if (not system and tow is not None) else None)
+    rows = [statistics(t[:upto], lab, *(x[:upto] for x in histories), settings.t_from) for lab, *histories in compared]
+    if series:
+        result["series"] = (t, compared)
     result.update(status="ok", rows=rows, until=float(t[upto - 1]),
                   worst={f"{end}.{key}": max((abs(r[end][key]) for r in rows if np.isfinite(r[end][key])), default=float("nan"))
                          for end in ("fairlead", "anchor") for key in ("peak", "rel_mean", "rel_range", "start")})
@@ -301,16 +305,16 @@ def census_cases(moordyn_root: Path, moorpy_root: Path) -> list:
 def compute(fmu, cases, settings: Settings = Settings(), progress=None) -> dict:
     decks = []
     for label, path, base in cases:
-        if progress:
-            progress(label)
         decks.append(run_deck(fmu, label, Path(path), base, settings))
+        if progress:
+            progress(decks[-1])
     from importlib.metadata import version
     return {"settings": asdict(settings), "decks": decks, "moordyn_version": version("moordyn")}
 
 
 # ----------------------------------------------------------------------------- Markdown
-def _pct(x) -> str:
-    return "" if x is None or not np.isfinite(x) else f"{100.0 * x:.2f} %"
+def _pct(x, sign: bool = False) -> str:
+    return "" if x is None or not np.isfinite(x) else f"{100.0 * x:{'+' if sign else ''}.2f} %"
 
 
 def _note(d: dict) -> str:
@@ -323,7 +327,23 @@ def _note(d: dict) -> str:
         notes.append(f"FMU: {d['fmu_error']}")
     if d["status"] == "ok" and d["until"] < d.get("t_end", d["until"]):
         notes.append(f"compared up to {d['until']:g} s")
+    starts = _starts(d)
+    if any(s > UNLOADED for s in starts):
+        notes.append(f"MoorDyn starts with its line unloaded (TmaxIC {d.get('tmax_ic')})")
+    elif any(abs(s) > 0.02 for s in starts):
+        notes.append(f"MoorDyn's start (TmaxIC {d.get('tmax_ic')}) off the FMU's statics")
+    if d["status"] == "ok" and not any(np.isfinite(v) for v in d["worst"].values() if v is not None):
+        notes.append("the motion does not reach the lines (MoorDyn's tensions constant)")
     return "; ".join(notes).replace("|", "\\|")
+
+
+UNLOADED = 99.0  # a start above MoorDyn's by this (MoorDyn's tension under 1 % of the FMU's): it starts unloaded
+
+
+def _starts(d: dict) -> list:
+    """The start differences (FMU / MoorDyn - 1 at t = 0) of every compared line end."""
+    return [r[end]["start"] for r in d.get("rows", []) for end in ("fairlead", "anchor")
+            if r[end]["start"] is not None and np.isfinite(r[end]["start"])]
 
 
 def markdown(data: dict) -> str:
@@ -345,35 +365,50 @@ def markdown(data: dict) -> str:
         w = d.get("worst", {})
         cells = [_pct(w.get(k)) for k in ("fairlead.peak", "fairlead.rel_mean", "fairlead.rel_range", "anchor.peak",
                                            "anchor.rel_mean", "anchor.rel_range")]
-        start = max(w.get("fairlead.start", float("nan")), w.get("anchor.start", float("nan")))
+        starts = [s for s in _starts(d) if s <= UNLOADED]
+        start = max(starts, key=abs) if starts else None
         cpu_md = (f"{d['cpu_moordyn_init']:.2f} + {d['cpu_moordyn'] - d['cpu_moordyn_init']:.2f}"
                   if d.get("moordyn_error", "") == "" or d["status"] == "ok" else "")
         out.append(f"| `{d['deck']}` | {d.get('moved', '')} | {d['amplitude']:.3g} | " + " | ".join(cells) +
-                   f" | {_pct(start)} | {d.get('cpu_fmu', 0.0):.2f} | {cpu_md} | {_note(d)} |")
+                   f" | {_pct(start, sign=True)} | {d.get('cpu_fmu', 0.0):.2f} | {cpu_md} | {_note(d)} |")
     return "\n".join(out)
+
+
+def _summary(d: dict) -> str:
+    w = d.get("worst", {})
+    return (f"{d['deck']}: {d['status']}" + (f", fairlead RMS/mean {_pct(w.get('fairlead.rel_mean'))}, peak "
+            f"{_pct(w.get('fairlead.peak'))}" if w else "") + (f" ({_note(d)})" if d["status"] != "refused" and _note(d) else ""))
 
 
 def main(argv=None) -> int:  # pragma: no cover
     from ucable.paths import fmu_path
 
     ap = argparse.ArgumentParser(prog="scripts/census_dynamics", description=__doc__.split("\n\n")[0])
-    ap.add_argument("--census", nargs=2, metavar=("MOORDYN", "MOORPY"), type=Path, required=True,
+    ap.add_argument("--census", nargs=2, metavar=("MOORDYN", "MOORPY"), type=Path,
                     help="checkouts of MoorDyn and MoorPy (the census's decks)")
     ap.add_argument("--decks", nargs="*", default=None, help="only these decks (labels, e.g. md:tests/Mooring/lines.txt)")
     ap.add_argument("--t-end", type=float, default=Settings.t_end)
+    ap.add_argument("--from-json", type=Path, help="write the table from a saved study (its --json) without running")
     add_report_options(ap, NAME)
     a = ap.parse_args(argv)
+    if a.from_json:
+        publish(markdown(json.loads(a.from_json.read_text())), NAME, a.doc)
+        return 0
+    if not a.census:
+        ap.error("--census MOORDYN MOORPY is needed (or --from-json)")
     cases = census_cases(*a.census)
     if a.decks:
         cases = [c for c in cases if c[0] in a.decks]
-    data = compute(a.fmu or fmu_path(), cases, Settings(t_end=a.t_end),
-                   progress=lambda d: print(d, file=sys.stderr, flush=True))
-    text = markdown(data)
-    if a.json:
-        a.json.write_text(json.dumps(data, indent=1, default=lambda x: x.tolist() if hasattr(x, "tolist") else str(x)))
-    if a.doc:
-        write_section(a.doc, text, NAME)
-    print(text)
+    done = []
+
+    def progress(d):
+        print(_summary(d), file=sys.stderr, flush=True)
+        done.append(d)
+        if a.json:  # the decks so far, should a later one stop the study
+            write_json(a.json, {"decks": done})
+
+    data = compute(a.fmu or fmu_path(), cases, Settings(t_end=a.t_end), progress=progress)
+    publish(markdown(data), NAME, a.doc, a.json, data)
     return 0
 
 

@@ -22,7 +22,6 @@ from kBot and cBot times the diameter, tension-only lines.
 from __future__ import annotations
 
 import argparse
-import json
 import re
 import sys
 from pathlib import Path
@@ -359,12 +358,8 @@ def main(argv=None) -> int:  # pragma: no cover
     else:
         results = survey(fmu)
         text, name = markdown(results), "public_decks"
-    if args.json:
-        args.json.write_text(json.dumps(results, indent=1, default=str))
-    if args.doc:
-        from ..doc_section import write_section
-        write_section(args.doc, text, name)
-    print(text)
+    from ..doc_section import publish
+    publish(text, name, args.doc, args.json, results)
     return 0
 
 
