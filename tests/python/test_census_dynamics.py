@@ -123,11 +123,20 @@ def _checkouts():
     return Path(md), Path(mp)
 
 
+# The decks whose difference from MoorDyn docs/systems_mooring.md ("The census in motion") explains: MoorDyn's
+# initial conditions, its seabed, its time scheme or its beam's vibration, not the FMU.
+EXPLAINED = {
+    "md:tests/Mooring/BeamSimplySupported.txt", "md:tests/Mooring/lifting.txt", "md:tests/Mooring/seafloor.txt",
+    "md:tests/Mooring/local_euler/complex_system.txt", "md:tests/Mooring/local_euler/duplicated.txt",
+    "md:tests/Mooring/local_euler/hanging.txt", "md:tests/Mooring/riser/riser_ic1.txt",
+}
+
+
 @pytest.mark.slow
 def test_the_whole_census_in_motion(fmu_file):
-    """Every deck the census loads runs in both codes or says why not; the decks kept for the tests that
-    MoorDyn runs agree with it within 5 % RMS of the mean at the fairleads (the outliers are explained in
-    docs/systems_mooring.md)."""
+    """Every deck the census loads runs in both codes or says why not; where both run, the FMU is within 5 % of
+    MoorDyn, RMS of the difference over MoorDyn's mean at every line end, but for the decks the documentation
+    explains (EXPLAINED)."""
     cases = cd.census_cases(*_checkouts())
     data = cd.compute(fmu_file, cases)
     loaded = [d for d in data["decks"] if d["status"] != "refused"]
@@ -136,5 +145,9 @@ def test_the_whole_census_in_motion(fmu_file):
         assert d["status"] in ("ok", "moordyn", "fmu")
         if d["status"] != "ok":
             assert d["moordyn_error"] or d["fmu_error"], d
+        elif d["deck"] not in EXPLAINED:
+            for end in ("fairlead", "anchor"):
+                worst = d["worst"][f"{end}.rel_mean"]
+                assert not worst > 0.05, (d["deck"], end, worst)
     text = cd.markdown(data)
     assert sum(r.startswith("| `") for r in text.splitlines()) == len(loaded)

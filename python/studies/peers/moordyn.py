@@ -355,7 +355,7 @@ def driven(deck: Path, h: float, n: int, *, base: Path | None = None, text: str 
             run = subprocess.run([sys.executable, "-c", _DRIVE_SCRIPT, str(Path(tmp) / "spec.json")],
                                  capture_output=True, timeout=timeout)
         except subprocess.TimeoutExpired:
-            return {"error": f"not done within {timeout:g} s of CPU and waiting"}
+            return {"error": f"not done within {timeout:g} s (wall clock)"}
         if not Path(spec["out"]).exists():
             said = (run.stderr or run.stdout).decode(errors="replace").strip().splitlines()
             how = f"signal {-run.returncode}" if run.returncode < 0 else f"exit status {run.returncode}"
