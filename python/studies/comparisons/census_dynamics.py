@@ -62,7 +62,7 @@ class Settings:
     comm_step: float = 0.1      # [s] the FMU's communication step and the sampling of both
     calls: int = 10             # moordyn.Step calls per communication step
     moordyn_refine: int = 1     # MoorDyn on this many times the deck's NumSegs (dtM divided as much)
-    timeout: float = 900.0      # [s] for MoorDyn's process on one deck
+    timeout: float = 900.0      # [s] of CPU for MoorDyn's process on one deck
 
 
 # ----------------------------------------------------------------------------- the deck
@@ -261,7 +261,8 @@ def run_deck(fmu, label: str, path: Path, base: Path | None = None, settings: Se
     md = moordyn_run(path, base, None if system or not moved else tow, moved, surge, settings)
     result.update(cpu_fmu=ours["cpu_init"] + ours["cpu"], cpu_fmu_run=ours["cpu"], fmu_error=ours["error"],
                   cpu_moordyn=md.get("cpu_init", 0.0) + md.get("cpu", 0.0), cpu_moordyn_init=md.get("cpu_init", 0.0),
-                  moordyn_error=md["error"], moordyn_layout=md.get("layout", ""), tmax_ic=_option(path, "TmaxIC"))
+                  moordyn_error=md["error"], moordyn_layout=md.get("layout", ""), tmax_ic=_option(path, "TmaxIC"),
+                  dtm=_option(path, "dtM"))
     if "tension" not in md or ours["tension"] is None:
         return {**result, "status": "moordyn" if "tension" not in md else "fmu"}
     t = ours["t"]
@@ -327,11 +328,16 @@ def _note(d: dict) -> str:
         notes.append(f"FMU: {d['fmu_error']}")
     if d["status"] == "ok" and d["until"] < d.get("t_end", d["until"]):
         notes.append(f"compared up to {d['until']:g} s")
+    try:
+        float(d.get("dtm") or 0.0)
+    except ValueError:
+        notes.append(f"its dtM is `{d['dtm']}`, not a number")
     starts = _starts(d)
+    tmax = f"TmaxIC {d['tmax_ic']} s" if d.get("tmax_ic") else "MoorDyn's default TmaxIC"
     if any(s > UNLOADED for s in starts):
-        notes.append(f"MoorDyn starts with its line unloaded (TmaxIC {d.get('tmax_ic')})")
+        notes.append(f"MoorDyn starts with a line unloaded ({tmax})")
     elif any(abs(s) > 0.02 for s in starts):
-        notes.append(f"MoorDyn's start (TmaxIC {d.get('tmax_ic')}) off the FMU's statics")
+        notes.append(f"MoorDyn's start ({tmax}) off the FMU's statics")
     if d["status"] == "ok" and not any(np.isfinite(v) for v in d["worst"].values() if v is not None):
         notes.append("the motion does not reach the lines (MoorDyn's tensions constant)")
     return "; ".join(notes).replace("|", "\\|")

@@ -14,6 +14,7 @@ runs it in a process of its own that loads nothing else (a self-contained script
 from __future__ import annotations
 
 import functools
+import math
 import os
 import shutil
 import sys
@@ -327,7 +328,7 @@ def driven(deck: Path, h: float, n: int, *, base: Path | None = None, text: str 
     MoorDyn reads a SeafloorFile from there, its wave and current files beside the deck); text: the deck's
     text replacing the copy's (a fileIC it names that is not there is left out: MoorDyn 2.7 fails then). Every coupled degree of freedom of x (bodies, points) moves by
     shift = (offset, velocity) along x, arrays of n calls values at the calls' starts (None: held at the deck's
-    positions). Returns t, tension (2, times, lines: each line's tension at end A and end B), position
+    positions); timeout: the limit of its CPU time [s]. Returns t, tension (2, times, lines: each line's tension at end A and end B), position
     (times, points, 3) of the 1-based `points`, cpu_init (moordyn.Init: its initial-condition generation),
     cpu (the steps), layout (the coupled objects), attached (per point its "line.end" pairs, end 0 = A),
     error ("" or why MoorDyn stopped: the arrays hold NaN from there; a crash or the timeout is one too)."""
@@ -351,12 +352,17 @@ def driven(deck: Path, h: float, n: int, *, base: Path | None = None, text: str 
             np.save(Path(tmp) / "motion.npy", np.asarray(shift, float))
             spec["motion"] = str(Path(tmp) / "motion.npy")
         (Path(tmp) / "spec.json").write_text(json.dumps(spec))
-        try:
-            run = subprocess.run([sys.executable, "-c", _DRIVE_SCRIPT, str(Path(tmp) / "spec.json")],
-                                 capture_output=True, timeout=timeout)
-        except subprocess.TimeoutExpired:
-            return {"error": f"not done within {timeout:g} s (wall clock)"}
+        def limit():  # the CPU time of the child, not the wall clock: the machine may be shared
+            import resource
+            resource.setrlimit(resource.RLIMIT_CPU, (math.ceil(timeout), math.ceil(timeout) + 5))
+
+        run = subprocess.run([sys.executable, "-c", _DRIVE_SCRIPT, str(Path(tmp) / "spec.json")],
+                             capture_output=True, preexec_fn=limit if timeout else None)
         if not Path(spec["out"]).exists():
+            import signal
+
+            if run.returncode in (-signal.SIGXCPU, -signal.SIGKILL) and timeout:
+                return {"error": f"not done within {timeout:g} s of CPU"}
             said = (run.stderr or run.stdout).decode(errors="replace").strip().splitlines()
             how = f"signal {-run.returncode}" if run.returncode < 0 else f"exit status {run.returncode}"
             return {"error": f"MoorDyn's process ended ({how})" + (f": {said[-1]}" if said else "")}
