@@ -128,7 +128,7 @@ def _checkouts():
 # initial conditions, its seabed, its time scheme or its beam's vibration, not the FMU.
 EXPLAINED = {
     # MoorDyn's initial conditions are not the statics
-    "md:tests/Mooring/lifting.txt", "md:tests/Mooring/local_euler/complex_system.txt",
+    "md:example/MHK_RM1_Floating/MHK_RM1_Floating_MoorDyn.dat", "md:tests/Mooring/lifting.txt", "md:tests/Mooring/local_euler/complex_system.txt",
     "md:tests/Mooring/local_euler/hanging.txt", "md:tests/Mooring/riser/riser_ic1.txt", "mp:tests/case2.dat",
     "mp:tests/case3.dat", "mp:tests/case4.dat", "mp:tests/case6.dat", "md:tests/Mooring/wavekin_7/wavekin_7.txt",
     # MoorDyn's local Euler step on the finer of two identical lines; its axially driven beam's vibration
