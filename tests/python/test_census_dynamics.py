@@ -45,6 +45,62 @@ def test_the_chain_of_deck_lines_from_the_tow_point():
     assert cd.chain_ends(cd._attached("1.0;1.1 2.1;2.0"), 1) == ((1, 0), (2, 0))
 
 
+# wavekin_4/hanging_lines's tables (two of its ten chains): each hangs from a Fixed point at its end A, its end B free
+HANGING_LINES = """----------------------- LINE TYPES ------------------------------------------
+TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
+(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
+chain       13.332E-3  1.1        7.51E6     -0.5        0        0.0    0.0      0.0     1.0
+----------------------- POINTS ------------------------------------------------
+Node      Type      X        Y         Z        M        V         CdA   CA
+(-)       (-)      (m)      (m)       (m)      (kg)     (m^3)     (m^2)  (-)
+1 fixed -50 0.0 -16.6 0 0 0 0
+2 free -50 0.0 -26.6 0 0 0 0
+3 fixed -40 0.0 -16.6 0 0 0 0
+4 free -40 0.0 -26.6 0 0 0 0
+-------------------------- LINES ----------------------------------------------
+Line     LineType NodeA     NodeB  UnstrLen  NumSegs     Flags/Outputs
+(-)      (-)       (-)       (-)   (m)         (-)          (-)
+1 chain 1 2 10 10 p,tUD
+2 chain 3 4 10 10 p,tUD
+-------------------------- SOLVER OPTIONS---------------------------------------
+0.00050   dtM          - time step to use in mooring integration
+------------------------- need this line --------------------------------------
+"""
+
+
+def test_the_fmu_line_ends_are_read_from_the_deck(tmp_path):
+    """Which MoorDyn line end each FMU line's fairlead and far end are, by the FMU's rule on the deck's points:
+    a chain hanging from a Fixed point at its end A has its fairlead there; a coupled end is the fairlead
+    (end B where both are); a line through a Free point that joins two deck lines is one FMU line; the FMU
+    numbers its lines coupled first, then from free nodes, then from Fixed points."""
+    deck = tmp_path / "hanging_lines.txt"
+    deck.write_text(HANGING_LINES)
+    assert cd.fmu_line_ends(deck) == [((1, 0), (1, 1)), ((2, 0), (2, 1))]
+    assert cd.fmu_line_ends(PUBLIC / "md_tests_Mooring_lines.txt") == [((k, 1), (k, 0)) for k in (1, 2, 3)]
+    # two lines from two Vessel points (both end A) joined at a Free point: one FMU line, end A to end A
+    assert cd.fmu_line_ends(PUBLIC / "md_tests_Mooring_local_euler_hanging.txt") == [((1, 0), (2, 0))]
+    # anchor segment (deck line 1) and upper segment (deck line 2, coupled at B) through a Free point
+    assert cd.fmu_line_ends(PUBLIC / "mp_examples_MoordynSemiTautUpd.dat") == [((2, 1), (1, 0)), ((4, 1), (3, 0)),
+                                                                              ((6, 1), (5, 0))]
+    # case8: the lines on the coupled body first, then those from the free body (deck lines 3, 6, 9)
+    assert [f for f, _ in cd.fmu_line_ends(PUBLIC / "mp_tests_case8.dat")] == \
+        [(k, 1) for k in (1, 2, 4, 5, 7, 8, 3, 6, 9)]
+
+
+def test_the_pairing_follows_the_deck_not_the_tensions(tmp_path):
+    """hanging_lines: the FMU's chain at rest at its wet weight (93.8 N at the Fixed end, nothing at the free
+    end) against MoorDyn's swinging 93.8 +- 200 N at its end A. A pairing by the closer mean would keep
+    MoorDyn's free end B against the FMU's fairlead; the deck says the fairlead is end A."""
+    deck = tmp_path / "hanging_lines.txt"
+    deck.write_text(HANGING_LINES)
+    t = np.arange(401) * 0.1
+    fmu = {"system": True, "tension": np.stack([np.zeros((401, 2)), np.full((401, 2), 93.8)])}
+    swing = 93.8 + 200.0 * np.sin(2.0 * np.pi * t / 3.0)
+    md = {"tension": np.stack([np.column_stack([swing, swing]), np.zeros((401, 2))])}
+    for label, fa, ff, ma, mf in cd.pairs(fmu, md, None, cd.fmu_line_ends(deck)):
+        assert np.array_equal(mf, swing) and not ma.any(), label
+
+
 def test_moordyn_driven_reports_its_coupled_objects_and_a_blow_up(tmp_path):
     """MoorDyn in its own process: lines.txt's three Vessel points are its coupled degrees of freedom and follow
     the surge (the force on them changes); the same deck at dtM 0.5 s blows up, which is a result, not a crash

@@ -20,8 +20,9 @@ initial conditions (moordyn.Init: its dynamic relaxation up to the deck's TmaxIC
 velocity at the start of each of `calls` calls per communication step (it moves its coupled points linearly
 within a call), at the deck's mesh and dtM, in a process of its own (peers.moordyn.driven), so that its
 crash or blow-up is a result of the table. Each deck line's tension at its two ends is compared: a system's
-line k, its fairlead (FMU `line[k].fairleadTension`) with MoorDyn's end B and its anchor with end A, swapped
-where the other pairing is the closer in mean (the FMU walks a line between fixed points from its own end);
+line k, its fairlead (FMU `line[k].fairleadTension`) with MoorDyn's line end at the point the FMU starts
+its line k from, its anchor with the end where it stops (fmu_line_ends: the FMU's own rule, read from the deck's
+point types and line ends);
 a one-line deck's tow point and the far end of its chain of deck lines.
 
 compute() returns the numbers, markdown() the table of docs/systems_mooring.md, "The census in motion"
@@ -123,6 +124,97 @@ def coupled_tow_text(path: Path, point: int) -> str:
     return "\n".join(out) + "\n"
 
 
+def _table(path: Path, is_table) -> list:
+    """The rows of the deck's first section is_table(header) picks, as (header words, data rows' words): the
+    header row is the first row, the units row and blank rows are dropped (a data row starts with a number)."""
+    for header, rows in _sections(path):
+        if not is_table(header):
+            continue
+        rows = [r.split() for r in rows if r.split()]
+        if not rows:
+            return [], []
+        return rows[0], [w for w in rows[1:] if re.fullmatch(r"\d+", w[0])]
+    return [], []
+
+
+def _attach(word: str) -> str:
+    """A deck line's end (AttachA/B, v1's NodeAnch/NodeFair) as a key: the point "12", a body "B1" or a rod "R1"."""
+    m = re.fullmatch(r"(?i)(body|b|rod|r)?(\d+)([ab])?", word)
+    if not m:
+        return word.upper()
+    return (m.group(1)[0].upper() if m.group(1) else "") + m.group(2)
+
+
+def line_end_roles(path: Path) -> list:
+    """Per deck line (in deck order): its two ends' (point key, role), end A first; role "coupled" (a Coupled or
+    Vessel point, a point on a Coupled body, a coupled body or rod itself), "node" (a Free point where three or
+    more lines meet, a point on a Free or Pinned body), "fixed" (a Fixed or Anchor point, a point on a Fixed
+    body), else "free"."""
+    head, rows = _table(path, lambda h: bool(re.search(r"\bBOD(Y|IES)\b", h)))
+    bodies = {w[0]: w[1].lower() for w in rows if len(w) > 1}
+    head, rows = _table(path, lambda h: any(k in h for k in ("POINT", "CONNECTION", "NODE")) and not _is_lines(h))
+    kinds = {w[0]: w[1].lower() for w in rows if len(w) > 1}
+    head, rows = _table(path, _is_lines)
+    lower = [h.lower() for h in head]
+    a = next((i for i, h in enumerate(lower) if re.match(r"(attach|node|end|con)\w*a(nch)?\w*$", h) and "fair" not in h), None)
+    b = next((i for i, h in enumerate(lower) if re.match(r"(attach|node|end|con)\w*(b|fair\w*)$", h)), None)
+    if a is None or b is None:
+        raise ValueError(f"{path.name}: its LINES table names no AttachA/AttachB (NodeA/NodeB, NodeAnch/NodeFair) "
+                         f"columns: {' '.join(head)}")
+    ends = [(_attach(w[a]), _attach(w[b])) for w in rows if len(w) > max(a, b)]
+    count = {}
+    for pair in ends:
+        for key in pair:
+            count[key] = count.get(key, 0) + 1
+
+    def role(key: str) -> str:
+        kind = kinds.get(key, "")
+        m = re.fullmatch(r"(?:body|b)(\d+)", kind)
+        body = bodies.get(m.group(1), "") if m else bodies.get(key[1:], "coupled") if key[:1] in "BR" else None
+        if kind in ("coupled", "vessel", "cpld", "fairlead", "vess") or body in ("coupled", "vessel", "cpld"):
+            return "coupled"
+        if body in ("free", "pinned", "cpldpin", "coupledpinned") or (kind in ("free", "connect", "con")
+                                                                        and count.get(key, 0) >= 3):
+            return "node"
+        if kind in ("fixed", "anchor", "fix") or body == "fixed":
+            return "fixed"
+        return "free"
+
+    return [((ka, role(ka)), (kb, role(kb))) for ka, kb in ends]
+
+
+def fmu_line_ends(path: Path) -> list:
+    """Per line of the FMU's system (its `line[k]`, in its order): ((deck line, end) of its fairlead, (deck line,
+    end) of its far end), deck lines from 1, ends MoorDyn's (0 = A, 1 = B). The FMU's rule
+    (src/deck/mooring_deck.cpp): a line starts on a coupled object, else (second pass) on a free node (a Free
+    point joining three or more lines, a Free body), else (third pass) at a Fixed point, deck lines in deck
+    order, end B before end A; it runs on through Free points that join two deck lines, to the first other
+    end. Read from the deck's point types and line ends (line_end_roles), never from the tensions."""
+    roles = line_end_roles(path)
+    at = {}
+    for k, ends in enumerate(roles):
+        for e, (key, _) in enumerate(ends):
+            at.setdefault(key, []).append((k, e))
+    used, out = [False] * len(roles), []
+    for wanted in ("coupled", "node", "fixed"):
+        for first in range(len(roles)):
+            if used[first]:
+                continue
+            start = next((e for e in (1, 0) if roles[first][e][1] == wanted), None)
+            if start is None:
+                continue
+            k, e = first, start
+            while True:
+                used[k] = True
+                key, role = roles[k][1 - e]
+                onward = [p for p in at[key] if p != (k, 1 - e)]
+                if role != "free" or len(onward) != 1 or used[onward[0][0]]:
+                    break
+                k, e = onward[0]
+            out.append(((first + 1, start), (k + 1, 1 - e)))
+    return out
+
+
 def amplitude(path: Path, settings: Settings) -> float:
     lengths = line_lengths(path)
     return min(settings.fraction * max(lengths), settings.cap) if lengths else settings.cap
@@ -189,19 +281,19 @@ def chain_ends(attached: list, tow: int) -> tuple:
     raise ValueError("the chain of lines from the tow point closes on itself")
 
 
-def pairs(fmu: dict, md: dict, tow: int | None) -> list:
-    """Per FMU line: (label, FMU anchor series, FMU fairlead series, MoorDyn's at the same ends)."""
+def pairs(fmu: dict, md: dict, tow: int | None, fairleads: list | None = None) -> list:
+    """Per FMU line: (label, FMU anchor series, FMU fairlead series, MoorDyn's at the same ends); fairleads: per
+    line of a system, MoorDyn's (deck line, end) at its fairlead and at its far end (fmu_line_ends; where not
+    given, line k's end B and end A)."""
     T = md["tension"]
     if not fmu["system"]:
         (l1, e1), (l2, e2) = chain_ends(_attached(md["attached"]), tow) if tow else ((1, 1), (1, 0))
         return [("tow point", fmu["tension"][0][:, 0], fmu["tension"][1][:, 0], T[e2][:, l2 - 1], T[e1][:, l1 - 1])]
     out = []
-    for k in range(fmu["tension"].shape[2]):
-        fa, ff, a, b = fmu["tension"][0][:, k], fmu["tension"][1][:, k], T[0][:, k], T[1][:, k]
-        with np.errstate(invalid="ignore"):
-            kept = np.nanmean(np.abs(ff - b) + np.abs(fa - a))
-            swapped = np.nanmean(np.abs(ff - a) + np.abs(fa - b))
-        out.append((f"line {k + 1}", fa, ff, *((b, a) if swapped < 0.5 * kept else (a, b))))
+    for k in range(min(fmu["tension"].shape[2], len(fairleads) if fairleads is not None else T.shape[2])):
+        (lf, ef), (la, ea) = fairleads[k] if fairleads is not None else ((k + 1, 1), (k + 1, 0))
+        fa, ff = fmu["tension"][0][:, k], fmu["tension"][1][:, k]
+        out.append((f"line {k + 1}", fa, ff, T[ea][:, la - 1], T[ef][:, lf - 1]))
     return out
 
 
@@ -270,11 +362,13 @@ def run_deck(fmu, label: str, path: Path, base: Path | None = None, settings: Se
     upto = int(np.argmin(usable)) if not usable.all() else len(t)
     if upto * settings.comm_step <= settings.t_from:
         return {**result, "status": "moordyn" if md["error"] else "fmu"}
-    compared = pairs(ours, md, tow.number if (not system and tow is not None) else None)
+    fairleads = fmu_line_ends(path) if system else None
+    compared = pairs(ours, md, tow.number if (not system and tow is not None) else None, fairleads)
     rows = [statistics(t[:upto], lab, *(x[:upto] for x in histories), settings.t_from) for lab, *histories in compared]
     if series:
         result["series"] = (t, compared)
-    result.update(status="ok", rows=rows, until=float(t[upto - 1]),
+    result.update(status="ok", rows=rows, until=float(t[upto - 1]), 
+                  ends=" ".join(f"{lf}{'AB'[ef]}-{la}{'AB'[ea]}" for (lf, ef), (la, ea) in fairleads or []),
                   worst={f"{end}.{key}": max((abs(r[end][key]) for r in rows if np.isfinite(r[end][key])), default=float("nan"))
                          for end in ("fairlead", "anchor") for key in ("peak", "rel_mean", "rel_range", "start")})
     return result
