@@ -87,6 +87,48 @@ def test_the_fmu_line_ends_are_read_from_the_deck(tmp_path):
         [(k, 1) for k in (1, 2, 4, 5, 7, 8, 3, 6, 9)]
 
 
+def test_the_fmu_line_ends_through_zero_length_rods(tmp_path):
+    """local_euler/complex_system's tables (its rods' and points' kinds, its lines' ends): a Free rod of no
+    segments is one free point joining two lines, a point on a Free body a free node; the FMU's line 1 runs
+    from the Coupled point 4 (line 7's end B) through rods 4, 3, 2 to the body (line 4's end A), then its
+    lines from the body's point 3 to the Fixed points 2 and 1 (through rod 1)."""
+    deck = tmp_path / "complex_system.txt"
+    deck.write_text("""---------------------------- BODIES ------------------------------
+ID   Attachment  X0     Y0    Z0     r0      p0     y0     Mass  CG*   I*      Volume   CdA*    Ca
+(#)     (-)      (m)    (m)   (m)   (deg)   (deg)  (deg)   (kg)  (m)  (kg-m^2)  (m^3)   (m^2)   (-)
+1      Free      452.0   0  -313.0   0       0      0      29.5   0    0.098    0.014   0.5|0.5 1.0
+---------------------- ROD TYPES ----------------------------------
+TypeName      Diam     Mass/m    Cd     Ca      CdEnd    CaEnd
+(name)        (m)      (kg/m)    (-)    (-)     (-)      (-)
+conn          0.1      0.0       0.0    0.0     0.0      0.0
+---------------------- RODS ----------------------------------------
+ID   RodType  Attachment  Xa    Ya    Za    Xb    Yb    Zb   NumSegs  RodOutputs
+(#)  (name)    (#/key)    (m)   (m)   (m)   (m)   (m)   (m)  (-)       (-)
+1    conn        Free     455.5  0  -313.0  455.5  0  -313.0  0         -
+2    conn        Free     448.5  0  -313.0  448.5  0  -313.0  0         -
+3    conn        Free     375.0  0  -250.0  375.0  0  -250.0  0         -
+4    conn        Free     290.0  0  -215.0  290.0  0  -215.0  0         -
+----------------------- POINTS ------------------------------------
+Node      Type      X        Y         Z        M        V         CdA   CA
+(-)       (-)      (m)      (m)       (m)      (kg)     (m^3)     (m^2)  (-)
+1         Fixed    600.0     0      -320.0       0        0          0     0
+2         Fixed    452.0     0      -320.0       0        0          0     0
+3         Body1    0.0       0         0.0       0        0          0     0
+4         Coupled  0.0       0       -63.6       0        0          0     0
+-------------------------- LINES ----------------------------------
+Line     LineType NodeA     NodeB  UnstrLen   NumSegs     Flags/Outputs
+(-)      (-)       (-)       (-)    (m)         (-)          (-)
+1        nylon       2         3      7.0        7           -
+2        cable       1       R1A    147.0       15           -
+3      stiffner    R1B         3     3.12        2           -
+4      stiffner    3         R2A     3.12        2           -
+5        cable     R2B       R3A    107.0       11           -
+6      bouyancy    R3B       R4A     80.0        8           -
+7        cable     R4B         4    340.0       34           -
+""")
+    assert cd.fmu_line_ends(deck) == [((7, 1), (4, 0)), ((1, 1), (1, 0)), ((3, 1), (2, 0))]
+
+
 def test_the_pairing_follows_the_deck_not_the_tensions(tmp_path):
     """hanging_lines: the FMU's chain at rest at its wet weight (93.8 N at the Fixed end, nothing at the free
     end) against MoorDyn's swinging 93.8 +- 200 N at its end A. A pairing by the closer mean would keep

@@ -137,12 +137,14 @@ def _table(path: Path, is_table) -> list:
     return [], []
 
 
-def _attach(word: str) -> str:
-    """A deck line's end (AttachA/B, v1's NodeAnch/NodeFair) as a key: the point "12", a body "B1" or a rod "R1"."""
-    m = re.fullmatch(r"(?i)(body|b|rod|r)?(\d+)([ab])?", word)
+def _attach(word: str, rods: dict) -> str:
+    """A deck line's end (AttachA/B, v1's NodeAnch/NodeFair) as a key: the point "12", a rod's end "R1A" ("R1" for
+    a rod of no segments: one point, as the FMU reads it)."""
+    m = re.fullmatch(r"(?i)(?:rod|r)(\d+)([ab])", word)
     if not m:
         return word.upper()
-    return (m.group(1)[0].upper() if m.group(1) else "") + m.group(2)
+    segments = rods.get(m.group(1), ("", "1"))[1]
+    return f"R{m.group(1)}" + ("" if segments == "0" else m.group(2).upper())
 
 
 def line_end_roles(path: Path) -> list:
@@ -152,6 +154,8 @@ def line_end_roles(path: Path) -> list:
     body), else "free"."""
     head, rows = _table(path, lambda h: bool(re.search(r"\bBOD(Y|IES)\b", h)))
     bodies = {w[0]: w[1].lower() for w in rows if len(w) > 1}
+    head, rows = _table(path, lambda h: bool(re.search(r"\bRODS?\b", h)) and "TYPE" not in h and not _is_lines(h))
+    rods = {w[0]: (w[2].lower(), w[9] if len(w) > 9 else "1") for w in rows if len(w) > 2}  # ID: (attachment, NumSegs)
     head, rows = _table(path, lambda h: any(k in h for k in ("POINT", "CONNECTION", "NODE")) and not _is_lines(h))
     kinds = {w[0]: w[1].lower() for w in rows if len(w) > 1}
     head, rows = _table(path, _is_lines)
@@ -161,16 +165,21 @@ def line_end_roles(path: Path) -> list:
     if a is None or b is None:
         raise ValueError(f"{path.name}: its LINES table names no AttachA/AttachB (NodeA/NodeB, NodeAnch/NodeFair) "
                          f"columns: {' '.join(head)}")
-    ends = [(_attach(w[a]), _attach(w[b])) for w in rows if len(w) > max(a, b)]
+    ends = [(_attach(w[a], rods), _attach(w[b], rods)) for w in rows if len(w) > max(a, b)]
     count = {}
     for pair in ends:
         for key in pair:
             count[key] = count.get(key, 0) + 1
 
     def role(key: str) -> str:
+        rod = re.fullmatch(r"R(\d+)([AB]?)", key)
         kind = kinds.get(key, "")
+        if rod:  # a rod of no segments is a point of its kind; one with segments a free body where it is Free
+            attachment, segments = rods.get(rod.group(1), ("", "1"))
+            kind = "free" if attachment == "free" and segments == "0" else "pinned" if attachment == "free" else attachment
+            kind = "body" + kind[4:] if kind.startswith("body") else kind
         m = re.fullmatch(r"(?:body|b)(\d+)", kind)
-        body = bodies.get(m.group(1), "") if m else bodies.get(key[1:], "coupled") if key[:1] in "BR" else None
+        body = bodies.get(m.group(1), "") if m else "pinned" if kind == "pinned" else None
         if kind in ("coupled", "vessel", "cpld", "fairlead", "vess") or body in ("coupled", "vessel", "cpld"):
             return "coupled"
         if body in ("free", "pinned", "cpldpin", "coupledpinned") or (kind in ("free", "connect", "con")
