@@ -10,6 +10,7 @@ census is a slow test: it needs the MoorDyn and MoorPy checkouts (UC_MOORDYN_CHE
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 
 import numpy as np
@@ -69,29 +70,31 @@ Line     LineType NodeA     NodeB  UnstrLen  NumSegs     Flags/Outputs
 
 
 def test_the_fmu_line_ends_are_read_from_the_deck(tmp_path):
-    """Which MoorDyn line end each FMU line's fairlead and far end are, by the FMU's rule on the deck's points:
-    a chain hanging from a Fixed point at its end A has its fairlead there; a coupled end is the fairlead
-    (end B where both are); a line through a Free point that joins two deck lines is one FMU line; the FMU
-    numbers its lines coupled first, then from free nodes, then from Fixed points."""
+    """Which MoorDyn end of deck line k the FMU's line[k].fairleadTension and anchorTension are, by the FMU's rule
+    on the deck's points: a chain hanging from a Fixed point at its end A has its fairlead there; a coupled end
+    is the fairlead (end B where both are); a deck line reached through a Free point that joins two deck lines
+    has its fairlead where the FMU's walk from the coupled end enters it."""
     deck = tmp_path / "hanging_lines.txt"
     deck.write_text(HANGING_LINES)
     assert cd.fmu_line_ends(deck) == [((1, 0), (1, 1)), ((2, 0), (2, 1))]
     assert cd.fmu_line_ends(PUBLIC / "md_tests_Mooring_lines.txt") == [((k, 1), (k, 0)) for k in (1, 2, 3)]
-    # two lines from two Vessel points (both end A) joined at a Free point: one FMU line, end A to end A
-    assert cd.fmu_line_ends(PUBLIC / "md_tests_Mooring_local_euler_hanging.txt") == [((1, 0), (2, 0))]
-    # anchor segment (deck line 1) and upper segment (deck line 2, coupled at B) through a Free point
-    assert cd.fmu_line_ends(PUBLIC / "mp_examples_MoordynSemiTautUpd.dat") == [((2, 1), (1, 0)), ((4, 1), (3, 0)),
-                                                                              ((6, 1), (5, 0))]
-    # case8: the lines on the coupled body first, then those from the free body (deck lines 3, 6, 9)
-    assert [f for f, _ in cd.fmu_line_ends(PUBLIC / "mp_tests_case8.dat")] == \
-        [(k, 1) for k in (1, 2, 4, 5, 7, 8, 3, 6, 9)]
+    # two lines from two Vessel points (both end A) joined at a Free point: each line's fairlead is its end A
+    assert cd.fmu_line_ends(PUBLIC / "md_tests_Mooring_local_euler_hanging.txt") == [((1, 0), (1, 1)), ((2, 0), (2, 1))]
+    # anchor segments (deck lines 1, 3, 5: Fixed A, Free B) entered at the Free point from the upper segments
+    assert cd.fmu_line_ends(PUBLIC / "mp_examples_MoordynSemiTautUpd.dat") == [((k, 1), (k, 0)) for k in range(1, 7)]
+    # the same anchor segment with its ends given the other way round: still entered at the Free point (end A)
+    flipped = tmp_path / "semitaut_flipped.dat"
+    text = (PUBLIC / "mp_examples_MoordynSemiTautUpd.dat").read_text()
+    flipped.write_text(re.sub(r"^(1\s+0\s+)1(\s+)2(\s)", r"\g<1>2\g<2>1\3", text, count=1, flags=re.M))
+    assert flipped.read_text() != text
+    assert cd.fmu_line_ends(flipped)[0] == ((1, 0), (1, 1))
 
 
 def test_the_fmu_line_ends_through_zero_length_rods(tmp_path):
     """local_euler/complex_system's tables (its rods' and points' kinds, its lines' ends): a Free rod of no
-    segments is one free point joining two lines, a point on a Free body a free node; the FMU's line 1 runs
-    from the Coupled point 4 (line 7's end B) through rods 4, 3, 2 to the body (line 4's end A), then its
-    lines from the body's point 3 to the Fixed points 2 and 1 (through rod 1)."""
+    segments is one free point joining two lines, a point on a Free body a free node; the FMU walks from the
+    Coupled point 4 (line 7's end B) through rods 4, 3, 2 to the body, entering each line at its end B, then
+    from the body's point 3 to the Fixed points 2 and 1 (through rod 1), again at end B."""
     deck = tmp_path / "complex_system.txt"
     deck.write_text("""---------------------------- BODIES ------------------------------
 ID   Attachment  X0     Y0    Z0     r0      p0     y0     Mass  CG*   I*      Volume   CdA*    Ca
@@ -126,7 +129,10 @@ Line     LineType NodeA     NodeB  UnstrLen   NumSegs     Flags/Outputs
 6      bouyancy    R3B       R4A     80.0        8           -
 7        cable     R4B         4    340.0       34           -
 """)
-    assert cd.fmu_line_ends(deck) == [((7, 1), (4, 0)), ((1, 1), (1, 0)), ((3, 1), (2, 0))]
+    assert cd.fmu_line_ends(deck) == [((k, 1), (k, 0)) for k in range(1, 8)]
+    assert [key for ends in cd.line_end_roles(deck) for key, _ in ends][:6] == ["2", "3", "1", "R1", "R1", "3"]
+    assert dict(e for ends in cd.line_end_roles(deck) for e in ends) == {
+        "1": "fixed", "2": "fixed", "3": "node", "4": "coupled", "R1": "free", "R2": "free", "R3": "free", "R4": "free"}
 
 
 def test_the_pairing_follows_the_deck_not_the_tensions(tmp_path):

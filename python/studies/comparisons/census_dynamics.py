@@ -20,9 +20,9 @@ initial conditions (moordyn.Init: its dynamic relaxation up to the deck's TmaxIC
 velocity at the start of each of `calls` calls per communication step (it moves its coupled points linearly
 within a call), at the deck's mesh and dtM, in a process of its own (peers.moordyn.driven), so that its
 crash or blow-up is a result of the table. Each deck line's tension at its two ends is compared: a system's
-line k, its fairlead (FMU `line[k].fairleadTension`) with MoorDyn's line end at the point the FMU starts
-its line k from, its anchor with the end where it stops (fmu_line_ends: the FMU's own rule, read from the deck's
-point types and line ends);
+line k, its fairlead (FMU `line[k].fairleadTension`) with MoorDyn's end of deck line k that the FMU takes
+for its fairlead, its anchor with the other end (fmu_line_ends: the FMU's own rule, read from the deck's point
+types and line ends);
 a one-line deck's tow point and the far end of its chain of deck lines.
 
 compute() returns the numbers, markdown() the table of docs/systems_mooring.md, "The census in motion"
@@ -193,18 +193,20 @@ def line_end_roles(path: Path) -> list:
 
 
 def fmu_line_ends(path: Path) -> list:
-    """Per line of the FMU's system (its `line[k]`, in its order): ((deck line, end) of its fairlead, (deck line,
-    end) of its far end), deck lines from 1, ends MoorDyn's (0 = A, 1 = B). The FMU's rule
-    (src/deck/mooring_deck.cpp): a line starts on a coupled object, else (second pass) on a free node (a Free
-    point joining three or more lines, a Free body), else (third pass) at a Fixed point, deck lines in deck
-    order, end B before end A; it runs on through Free points that join two deck lines, to the first other
-    end. Read from the deck's point types and line ends (line_end_roles), never from the tensions."""
+    """Per deck line (the FMU's `line[k]` is deck line k): ((k, end) of the FMU's `line[k].fairleadTension`, (k,
+    end) of its `anchorTension`), lines from 1, ends MoorDyn's (0 = A, 1 = B). The FMU's rule
+    (src/deck/mooring_deck.cpp): a deck line's fairlead is its end on a coupled object (end B where both are),
+    else the end where the FMU's walk enters it; the walk starts on a coupled object, else (second pass) on a
+    free node (a Free point joining three or more lines, a Free body), else (third pass) at a Fixed point, deck
+    lines in deck order, end B before end A, and runs on through Free points that join two deck lines. Read
+    from the deck's point types and line ends (line_end_roles), never from the tensions."""
     roles = line_end_roles(path)
     at = {}
     for k, ends in enumerate(roles):
         for e, (key, _) in enumerate(ends):
             at.setdefault(key, []).append((k, e))
-    used, out = [False] * len(roles), []
+    entered = [1] * len(roles)  # a line the FMU does not reach (it refuses such a deck): end B
+    used = [False] * len(roles)
     for wanted in ("coupled", "node", "fixed"):
         for first in range(len(roles)):
             if used[first]:
@@ -214,13 +216,16 @@ def fmu_line_ends(path: Path) -> list:
                 continue
             k, e = first, start
             while True:
-                used[k] = True
+                used[k], entered[k] = True, e
                 key, role = roles[k][1 - e]
                 onward = [p for p in at[key] if p != (k, 1 - e)]
                 if role != "free" or len(onward) != 1 or used[onward[0][0]]:
                     break
                 k, e = onward[0]
-            out.append(((first + 1, start), (k + 1, 1 - e)))
+    out = []
+    for k, ends in enumerate(roles):
+        fair = next((e for e in (1, 0) if ends[e][1] == "coupled"), entered[k])
+        out.append(((k + 1, fair), (k + 1, 1 - fair)))
     return out
 
 
@@ -292,7 +297,7 @@ def chain_ends(attached: list, tow: int) -> tuple:
 
 def pairs(fmu: dict, md: dict, tow: int | None, fairleads: list | None = None) -> list:
     """Per FMU line: (label, FMU anchor series, FMU fairlead series, MoorDyn's at the same ends); fairleads: per
-    line of a system, MoorDyn's (deck line, end) at its fairlead and at its far end (fmu_line_ends; where not
+    line of a system, MoorDyn's (deck line, end) at its fairlead and at its anchor (fmu_line_ends; where not
     given, line k's end B and end A)."""
     T = md["tension"]
     if not fmu["system"]:
