@@ -27,6 +27,23 @@ def add_report_options(parser, name: str, fmu_default: str = "the build's") -> N
     parser.add_argument("--json", type=Path, help="also write the numbers as JSON")
 
 
+def write_json(path: Path, data) -> None:
+    """The numbers of a report as JSON, arrays as lists."""
+    import json
+
+    path.write_text(json.dumps(data, indent=1, default=lambda x: x.tolist() if hasattr(x, "tolist") else str(x)))
+
+
+def publish(text: str, name: str, doc: Path | None = None, json_path: Path | None = None, data=None) -> None:
+    """A report's outputs: its numbers as JSON (arrays as lists) to json_path, its section `name` into doc, the
+    text to stdout."""
+    if json_path:
+        write_json(json_path, data)
+    if doc:
+        write_section(doc, text, name)
+    print(text)
+
+
 def bench_main(argv, name: str, description: str, quick_help: str, compute, markdown) -> int:
     """The command line of a scripts/<name> benchmark that prints a table: --quick, --fmu, --doc (the section `name`
     of a Markdown file); compute(fmu, quick=...) measures, markdown(data) writes the table."""

@@ -256,7 +256,8 @@ def rms_difference(a: History, b: History, t_from: float) -> dict:
     for end in ("fairlead", "anchor"):
         x, y = getattr(a, end)[sel], getattr(b, end)[sel]
         rms = float(np.sqrt(np.mean((x - y) ** 2)))
-        out[end] = {"rms": rms, "rel_mean": rms / float(np.mean(y)), "rel_range": rms / float(np.ptp(y)),
+        mean, spread = float(np.mean(y)), float(np.ptp(y))  # either 0: a line the motion leaves alone, unloaded
+        out[end] = {"rms": rms, "rel_mean": rms / mean if mean else math.nan, "rel_range": rms / spread if spread else math.nan,
                     "max": float(np.max(np.abs(x - y))), "mean_a": float(np.mean(x)), "mean_b": float(np.mean(y)),
                     "min_b": float(np.min(y)), "max_b": float(np.max(y))}
     return out

@@ -22,7 +22,6 @@ from kBot and cBot times the diameter, tension-only lines.
 from __future__ import annotations
 
 import argparse
-import json
 import re
 import sys
 from pathlib import Path
@@ -159,10 +158,10 @@ def _relative(ours: float, ref: float) -> float:
     return abs(ours - ref) / max(abs(ref), 1e-12)
 
 
-def load(fmu, path: Path, s=None, options=None, given=None) -> dict:
-    """The FMU's initialization of the deck, inputs from MoorPy's reading where it has one:
-    {"status": "refused", "reason", "warnings"} or {"status": "ok", "system", "outputs", "warnings"}.
-    given: the FMU's parameters (default: parameters(), the deck completed as MoorDyn has it)."""
+def setup(path: Path, s=None, options=None) -> tuple:
+    """The FMU's parameters (parameters(): the deck completed as MoorDyn has it) and initial inputs of the
+    deck, from MoorPy's reading where it has one: its coupled bodies at their X0 ... y0, a one-line deck's tow
+    point (tow_point), a system's Coupled points where the deck puts them."""
     options = options or {}
     inputs, diameter = {}, 0.1
     if s is not None and s.lineList:
@@ -177,8 +176,15 @@ def load(fmu, path: Path, s=None, options=None, given=None) -> dict:
     # a system's Coupled points where the deck puts them (the inputs' default is the origin)
     for k, xyz in coupled_points(path).items():
         inputs.update({f"point[{k}].{c}": v for c, v in zip("xyz", xyz)})
-    c = CableFMU(fmu, parameters=given if given is not None else parameters(path, options, diameter),
-                 logging_on=True)
+    return parameters(path, options, diameter), inputs
+
+
+def load(fmu, path: Path, s=None, options=None, given=None) -> dict:
+    """The FMU's initialization of the deck, inputs from MoorPy's reading where it has one (setup):
+    {"status": "refused", "reason", "warnings"} or {"status": "ok", "system", "outputs", "warnings"}.
+    given: the FMU's parameters (default: setup's, the deck completed as MoorDyn has it)."""
+    completed, inputs = setup(path, s, options)
+    c = CableFMU(fmu, parameters=given if given is not None else completed, logging_on=True)
     warned = lambda: [text for status, _, text in c.messages if status == "WARNING"]  # noqa: E731
     try:
         c.initialize(inputs=inputs)
@@ -353,12 +359,8 @@ def main(argv=None) -> int:  # pragma: no cover
     else:
         results = survey(fmu)
         text, name = markdown(results), "public_decks"
-    if args.json:
-        args.json.write_text(json.dumps(results, indent=1, default=str))
-    if args.doc:
-        from ..doc_section import write_section
-        write_section(args.doc, text, name)
-    print(text)
+    from ..doc_section import publish
+    publish(text, name, args.doc, args.json, results)
     return 0
 
 

@@ -14,6 +14,7 @@ runs it in a process of its own that loads nothing else (a self-contained script
 from __future__ import annotations
 
 import functools
+import math
 import os
 import shutil
 import sys
@@ -213,54 +214,173 @@ def drive(md: System, start, n: int, comm_step: float, calls: int, coupled, reco
 # ----------------------------------------------------------------------------- a process of its own
 # The child's whole program: moordyn and numpy only, nothing of this package (the release runs crashed with a
 # segmentation fault in the full test suite when the child ran this module with `-m`, which the
-# self-contained script never did).
-_RELEASE_SCRIPT = r"""
-import shutil, sys, tempfile, time
+# self-contained script never did). Its input: a JSON file (see driven()); its output: an npz file.
+_DRIVE_SCRIPT = r"""
+import json, os, shutil, sys, tempfile, time
 from pathlib import Path
 import numpy as np
 import moordyn
 
-deck, point, n_lines, t_end, h, out = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4]), \
-    float(sys.argv[5]), sys.argv[6]
-times = np.arange(0.0, t_end + 0.5 * h, h)
-tension = np.zeros((len(times), n_lines))
-position = np.zeros((len(times), 3))
+spec = json.loads(Path(sys.argv[1]).read_text())
+h, calls, n, out = spec["h"], spec["calls"], spec["n"], spec["out"]
+shift = np.load(spec["motion"]) if spec.get("motion") else np.zeros((2, n * calls))  # x offset, x velocity
+times = np.arange(n + 1) * h
+result = {"t": times, "cpu_init": 0.0, "cpu": 0.0, "error": "", "layout": "", "reached": 0.0}
+
+
+def save():
+    np.savez(out, **result)
+
+
 with tempfile.TemporaryDirectory() as tmp:
-    copy = Path(tmp) / Path(deck).name
-    shutil.copy(deck, copy)
-    system = moordyn.Create(str(copy))
-    moordyn.Init(system, [], [])
+    base = Path(spec["base"])
+    shutil.copytree(base, Path(tmp) / base.name)
+    deck = Path(tmp) / base.name / spec["deck"]
+    if spec.get("text") is not None:
+        deck.write_text(spec["text"])
+    os.chdir(tmp)  # MoorDyn reads a SeafloorFile from the working directory, its wave files beside the deck
+    system = moordyn.Create(str(deck))
+    n_lines, n_points = moordyn.GetNumberLines(system), moordyn.GetNumberPoints(system)
     lines = [moordyn.GetLine(system, k) for k in range(1, n_lines + 1)]
     ends = [moordyn.GetLineN(ln) for ln in lines]
-    handle = moordyn.GetPoint(system, point)
+    # the coupled degrees of freedom in MoorDyn's order (bodies, rods, points) and which of them are x
+    x0, xdof, layout = [], [], []
+    for k in range(1, moordyn.GetNumberBodies(system) + 1):
+        kind = moordyn.GetBodyType(moordyn.GetBody(system, k))
+        if kind in (-1, 2):  # coupled: 6 values; coupled pinned: its position (3 read, 6 counted)
+            r = list(moordyn.GetBodyState(moordyn.GetBody(system, k))[0])
+            xdof.append(len(x0))
+            x0 += r[:6] if kind == -1 else r[:3] + [0.0, 0.0, 0.0]
+            layout.append(f"body {k}" + (" (pinned)" if kind == 2 else ""))
+    for k in range(1, moordyn.GetNumberRods(system) + 1):
+        if moordyn.GetRodType(moordyn.GetRod(system, k)) < 0:
+            result["error"] = f"rod {k} is coupled: its motion is not driven here"
+    for k in range(1, n_points + 1):
+        if moordyn.GetPointType(moordyn.GetPoint(system, k)) == -1:
+            xdof.append(len(x0))
+            x0 += list(moordyn.GetPointPos(moordyn.GetPoint(system, k)))
+            layout.append(f"point {k}")
+    result["layout"] = ", ".join(layout)
+    # each point's lines: (line, end) pairs, end 0 = A, 1 = B, as "p:l.e l.e;..."
+    result["attached"] = ";".join(
+        " ".join(f"{moordyn.GetLineID(ln)}.{e}" for ln, e in (moordyn.GetPointAttached(moordyn.GetPoint(system, k), i)
+                                                          for i in range(moordyn.GetPointNAttached(moordyn.GetPoint(system, k)))))
+        for k in range(1, n_points + 1))
+    if not result["error"] and len(x0) != moordyn.NCoupledDOF(system):
+        result["error"] = f"{moordyn.NCoupledDOF(system)} coupled values, {len(x0)} found"
+    if result["error"]:
+        save()
+        sys.exit(0)
+    points = spec.get("points", [])
+    tension = np.full((2, n + 1, n_lines), np.nan)
+    position = np.full((n + 1, len(points), 3), np.nan)
 
     def record(i):
         # MoorDyn's tensions are its segments', half a segment from the end node: extrapolated linearly
-        # from the last two segments (node N - 1 has their mean) to node N
-        tension[i] = [2.0 * np.linalg.norm(moordyn.GetLineNodeTen(ln, n)) -
-                      np.linalg.norm(moordyn.GetLineNodeTen(ln, n - 1)) for ln, n in zip(lines, ends)]
-        position[i] = moordyn.GetPointPos(handle)
+        # from the last two segments (the next node has their mean) to the end node
+        for j, (ln, m) in enumerate(zip(lines, ends)):
+            a = [np.linalg.norm(moordyn.GetLineNodeTen(ln, node)) for node in (0, min(1, m), max(m - 1, 0), m)]
+            tension[0, i, j], tension[1, i, j] = 2.0 * a[0] - a[1], 2.0 * a[3] - a[2]
+        for j, k in enumerate(points):
+            position[i, j] = moordyn.GetPointPos(moordyn.GetPoint(system, k))
 
-    record(0)
-    cpu0 = time.process_time()
-    for k in range(len(times) - 1):
-        moordyn.Step(system, [], [], times[k], h)
-        record(k + 1)
-    cpu = time.process_time() - cpu0
+    def coupled(c):
+        x = list(x0)
+        for d in xdof:
+            x[d] += float(shift[0][c]) if c >= 0 else 0.0
+        v = [0.0] * len(x0)
+        for d in xdof:
+            v[d] = float(shift[1][c]) if c >= 0 else 0.0
+        return x, v
+
+    try:
+        cpu0 = time.process_time()
+        moordyn.Init(system, *coupled(-1))
+        result["cpu_init"] = time.process_time() - cpu0
+        moordyn.Step(system, *coupled(-1), 0.0, 1e-12)  # the forces of the state Init ends in
+        record(0)
+        cpu0 = time.process_time()
+        sub = h / calls
+        for k in range(n):
+            for c in range(calls):
+                moordyn.Step(system, *coupled(k * calls + c), times[k] + c * sub, sub)
+            record(k + 1)
+            if not np.all(np.isfinite(tension[:, k + 1])):
+                raise FloatingPointError("its tensions are not finite")
+            result["reached"] = times[k + 1]
+        result["cpu"] = time.process_time() - cpu0
+    except Exception as e:  # MoorDyn's failure is a result
+        result["error"] = f"{type(e).__name__}: {e} (at t = {result['reached']:g} s)"
+    result.update(tension=tension, position=position)
     moordyn.Close(system)
-np.savez(out, t=times, tension=tension, position=position, cpu=cpu)
+save()
 """
+
+
+def driven(deck: Path, h: float, n: int, *, base: Path | None = None, text: str | None = None, calls: int = 1,
+           shift=None, points=(), timeout: float | None = None) -> dict:
+    """MoorDyn fed a deck in a process that loads nothing else (loaded after MoorPy or the FMU's modules,
+    MoorDyn 2.7's Create crashes at random on some decks), n communication steps of h, each `calls` calls
+    of moordyn.Step (MoorDyn substepping at dtM within a call, moving its coupled points linearly from the
+    call's start).
+
+    base: the folder copied beside it (default the deck's own; the working directory is its parent copy:
+    MoorDyn reads a SeafloorFile from there, its wave and current files beside the deck); text: the deck's
+    text replacing the copy's (a fileIC it names that is not there is left out: MoorDyn 2.7 fails then). Every coupled degree of freedom of x (bodies, points) moves by
+    shift = (offset, velocity) along x, arrays of n calls values at the calls' starts (None: held at the deck's
+    positions); timeout: the limit of its CPU time [s]. Returns t, tension (2, times, lines: each line's tension at end A and end B), position
+    (times, points, 3) of the 1-based `points`, cpu_init (moordyn.Init: its initial-condition generation),
+    cpu (the steps), layout (the coupled objects), attached (per point its "line.end" pairs, end 0 = A),
+    error ("" or why MoorDyn stopped: the arrays hold NaN from there; a crash or the timeout is one too)."""
+    import json
+    import subprocess
+
+    import re
+
+    deck = Path(deck).resolve()
+    base = Path(base).resolve() if base is not None else deck.parent
+    ic = re.search(r"^\s*(\S+)\s+fileIC\b", text if text is not None else deck.read_text(errors="replace"),
+                   flags=re.M | re.I)
+    if ic and not any((d / ic.group(1)).is_file() for d in (deck.parent, base.parent)):
+        # MoorDyn 2.7 logs that it cannot read a missing fileIC, then fails writing its first outputs: left out,
+        # MoorDyn makes its initial conditions itself
+        text = (text if text is not None else deck.read_text(errors="replace")).replace(ic.group(0), "", 1)
+    with tempfile.TemporaryDirectory() as tmp:
+        spec = {"deck": str(deck.relative_to(base)), "base": str(base), "text": text, "h": h, "n": int(n),
+                "calls": int(calls), "points": list(points), "out": str(Path(tmp) / "moordyn.npz")}
+        if shift is not None:
+            np.save(Path(tmp) / "motion.npy", np.asarray(shift, float))
+            spec["motion"] = str(Path(tmp) / "motion.npy")
+        (Path(tmp) / "spec.json").write_text(json.dumps(spec))
+        def limit():  # the CPU time of the child, not the wall clock: the machine may be shared
+            import resource
+            resource.setrlimit(resource.RLIMIT_CPU, (math.ceil(timeout), math.ceil(timeout) + 5))
+
+        run = subprocess.run([sys.executable, "-c", _DRIVE_SCRIPT, str(Path(tmp) / "spec.json")],
+                             capture_output=True, preexec_fn=limit if timeout else None)
+        if not Path(spec["out"]).exists():
+            import signal
+
+            if run.returncode in (-signal.SIGXCPU, -signal.SIGKILL) and timeout:
+                return {"error": f"not done within {timeout:g} s of CPU"}
+            said = (run.stderr or run.stdout).decode(errors="replace").strip().splitlines()
+            how = f"signal {-run.returncode}" if run.returncode < 0 else f"exit status {run.returncode}"
+            return {"error": f"MoorDyn's process ended ({how})" + (f": {said[-1]}" if said else "")}
+        with np.load(spec["out"]) as data:
+            out = {k: data[k] for k in data.files}
+    for k in ("cpu", "cpu_init", "reached"):
+        out[k] = float(out[k])
+    for k in ("error", "layout", "attached"):
+        out[k] = str(out[k]) if k in out else ""
+    return out
 
 
 def release(deck: Path, point: int, n_lines: int, t_end: float, h: float) -> dict:
     """MoorDyn fed the deck, no coupled objects, one call per h (MoorDyn substepping at dtM), in a
-    process that loads nothing else: each line's tension at its end B and point `point`'s position at
+    process that loads nothing else (driven): each line's tension at its end B and point `point`'s position at
     t = 0, h, 2 h, ... and the CPU time of the steps."""
-    import subprocess
-
-    with tempfile.TemporaryDirectory() as tmp:
-        out = Path(tmp) / "moordyn.npz"
-        subprocess.run([sys.executable, "-c", _RELEASE_SCRIPT, str(deck), str(point), str(n_lines), str(t_end), str(h),
-                        str(out)], check=True, capture_output=True)
-        with np.load(out) as data:
-            return {k: (float(data[k]) if k == "cpu" else np.array(data[k])) for k in data.files}
+    run = driven(deck, h, int(round(t_end / h)), points=[point])
+    if run["error"]:
+        raise RuntimeError(f"MoorDyn on {deck}: {run['error']}")
+    return {"t": run["t"], "tension": run["tension"][1][:, :n_lines], "position": run["position"][:, 0],
+            "cpu": run["cpu"]}
