@@ -585,6 +585,23 @@ void airy_sum(const std::vector<Given>& components, double depth, const Vec3& r,
     }
 }
 
+// The water's velocity and acceleration gradients at one point equal central differences (to 1e-8 of scale).
+void expect_gradients_are_the_differences(const SeaState& sea, double scale) {
+    const Vec3 r(10.0, -5.0, -20.0);
+    Vec3 u, a, up, um, ap, am;
+    Mat3 du, da;
+    sea.kinematics(r, 5.0, u, a, &du, &da);
+    for (int c = 0; c < 3; ++c) {
+        const double h = 1e-4;
+        Vec3 e = Vec3::Zero();
+        e[c] = h;
+        sea.kinematics(r + e, 5.0, up, ap, nullptr, nullptr);
+        sea.kinematics(r - e, 5.0, um, am, nullptr, nullptr);
+        EXPECT_LT(((up - um) / (2 * h) - du.col(c)).norm(), 1e-8 * scale) << c;
+        EXPECT_LT(((ap - am) / (2 * h) - da.col(c)).norm(), 1e-8 * scale) << c;
+    }
+}
+
 }  // namespace
 
 TEST(WavesGiven, ComponentsOfSeveralDirectionsAndUnevenFrequenciesAreTheAirySum) {
@@ -615,19 +632,7 @@ TEST(WavesGiven, ComponentsOfSeveralDirectionsAndUnevenFrequenciesAreTheAirySum)
                 EXPECT_LT((ae - aRef).norm(), 1e-12 * scale);
             }
         }
-        const Vec3 r(10.0, -5.0, -20.0);
-        Vec3 u, a, up, um, ap, am;
-        Mat3 du, da;
-        sea.kinematics(r, 5.0, u, a, &du, &da);
-        for (int c = 0; c < 3; ++c) {
-            const double h = 1e-4;
-            Vec3 e = Vec3::Zero();
-            e[c] = h;
-            sea.kinematics(r + e, 5.0, up, ap, nullptr, nullptr);
-            sea.kinematics(r - e, 5.0, um, am, nullptr, nullptr);
-            EXPECT_LT(((up - um) / (2 * h) - du.col(c)).norm(), 1e-8 * scale) << c;
-            EXPECT_LT(((ap - am) / (2 * h) - da.col(c)).norm(), 1e-8 * scale) << c;
-        }
+        expect_gradients_are_the_differences(sea, scale);
     }
 }
 
@@ -854,20 +859,7 @@ TEST(WavesSpread, SpreadSeaKinematicsAreTheClosedFormAirySum) {
                 EXPECT_LT((dae - da).norm(), 3e-9 * kMax * aScale) << depth << " " << r.transpose();
             }
         }
-        // The gradients of the direct sum equal finite differences.
-        const Vec3 r(10.0, -5.0, -20.0);
-        Vec3 u, a, up, um, ap, am;
-        Mat3 du, da;
-        sea.kinematics(r, 5.0, u, a, &du, &da);
-        for (int c = 0; c < 3; ++c) {
-            const double h = 1e-4;
-            Vec3 e = Vec3::Zero();
-            e[c] = h;
-            sea.kinematics(r + e, 5.0, up, ap, nullptr, nullptr);
-            sea.kinematics(r - e, 5.0, um, am, nullptr, nullptr);
-            EXPECT_LT(((up - um) / (2 * h) - du.col(c)).norm(), 1e-8 * aScale) << c;
-            EXPECT_LT(((ap - am) / (2 * h) - da.col(c)).norm(), 1e-8 * aScale) << c;
-        }
+        expect_gradients_are_the_differences(sea, aScale);
         // Wheeler: the stretched depth from the summed elevation of all directions
         UCParams p = spread(4.0, 9, 24, depth);
         p.wavesStretching = 1;
