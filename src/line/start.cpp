@@ -35,6 +35,23 @@ double tension_scale(const CableModel& model, const UCOutputs& initial) {
                      1e-6 * line.EA});
 }
 
+// Waves have no static equilibrium: the start solves the line in the steady water (the current) and the
+// waves act from t0 on, as with waves.rampTime (MoorDyn's initial conditions leave them out too). Their
+// velocity and acceleration at t0 taken as a steady flow set the line where that instant's flow would
+// hold it: a grounded chain bowed across the waves, which the seabed's friction then keeps bowed, its
+// mean tension raised for the whole run (docs/waves.md, "Against MoorDyn on its public deck wavekin_7").
+class WavesAtRest {
+  public:
+    explicit WavesAtRest(CurrentField& water) : water_(water), sea_(water.sea) { water_.sea = nullptr; }
+    ~WavesAtRest() { water_.sea = sea_; }
+    WavesAtRest(const WavesAtRest&) = delete;
+    WavesAtRest& operator=(const WavesAtRest&) = delete;
+
+  private:
+    CurrentField& water_;
+    const SeaState* sea_;
+};
+
 }  // namespace
 
 // From the sections and attachments; the profile's top end is the higher of the two ends.
@@ -785,6 +802,7 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
         }
         if (p.initMode == UC_INIT_EQUILIBRIUM && !statics_applies(farPoint, error)) return false;
         if (p.initMode == UC_INIT_EQUILIBRIUM && farEnd.proxy) {
+            const WavesAtRest steadyWater(loads_.current);
             if (!proxy_statics(t0, v, fromProfile, error)) return false;
         } else if (p.initMode == UC_INIT_EQUILIBRIUM) {
             // A line resting on a slope that falls across its profile's plane: the seabed's static
@@ -797,7 +815,11 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
                 loads_.seabedHold = seabedHeld_.data();
                 loads_.seabedHoldAcross = across;
             }
-            const StaticsResult statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile, staticWork_);
+            StaticsResult statics;
+            {
+                const WavesAtRest steadyWater(loads_.current);
+                statics = solve_static_equilibrium(model_, *staticSolver_, loads_, t0, v, q_, fromProfile, staticWork_);
+            }
             loads_.seabedHold = nullptr;
             if (!statics.converged) {
                 error = statics.message;

@@ -129,3 +129,35 @@ TEST(Catenary, TouchdownMatchesTheElasticCatenary) {
         }
     }
 }
+
+TEST(Start, InWavesIsTheEquilibriumInCalmWater) {
+    // Waves have no static equilibrium: the line starts where it rests in the steady water (here calm)
+    // and the waves act on it from t0 on. A swell of 20 s reaching the chain's upper part (0.5 m/s at
+    // the fairlead), along the line and across it: the start's shape equals calm water's to the statics'
+    // round-off (its tensions, from the elements' reactions, also carry the waves' load at t0 and the
+    // line's acceleration), and the waves then move the line.
+    for (double direction : {0.0, 0.5 * kPi}) {
+        UCParams calm = chain(20);
+        UCParams waves = calm;
+        waves.wavesMode = 1;
+        waves.wavesHeight = 6.0;
+        waves.wavesPeriod = 20.0;
+        waves.wavesDirection = direction;
+        waves.wavesStretching = 1;
+        CableSimulation still(calm), moving(waves);
+        UCInputs in{};
+        in.tow[2] = -70;
+        std::string error;
+        ASSERT_TRUE(still.initialize(0.0, in, error)) << error;
+        ASSERT_TRUE(moving.initialize(0.0, in, error)) << error;
+        const UCOutputs &a = still.outputs(), &b = moving.outputs();
+        const double T0 = a.towTension;
+        for (int k = 0; k < UC_NUM_STATIONS; ++k) {
+            const double moved = std::hypot(b.shapeX[k] - a.shapeX[k], b.shapeY[k] - a.shapeY[k], b.shapeZ[k] - a.shapeZ[k]);
+            EXPECT_LT(moved, 1e-9 * calm.length) << direction << " station " << k + 1;
+        }
+        ASSERT_TRUE(still.step(0.0, 5.0, in, error)) << error;
+        ASSERT_TRUE(moving.step(0.0, 5.0, in, error)) << error;
+        EXPECT_GT(std::abs(moving.outputs().towTension - still.outputs().towTension), 1e-4 * T0) << direction;
+    }
+}
