@@ -787,8 +787,10 @@ double CableModel::phase_residual(int e, const double* X, const double* Xd, cons
 
 double CableModel::initial_phase(int e) const {
     // spread over 0 .. 2 pi along the line by the element's midpoint, so that the lift starts without a
-    // common phase (MoorDyn spreads its nodes' phases the same way)
-    return 2.0 * kPi * (element_start(e) + 0.5 * element_length(e)) / line_.length;
+    // common phase, rising from the far end to the tow point as MoorDyn's phases rise from a line's end A (its
+    // anchor) to its end B (its fairlead, our tow point): the locked-in mode depends on the direction
+    // (docs/model.md, "Vortex-induced vibration")
+    return 2.0 * kPi * (1.0 - (element_start(e) + 0.5 * element_length(e)) / line_.length);
 }
 
 void CableModel::element_jacobian(int e, const double* X, const double* Xd, const double* Xdd,
