@@ -559,7 +559,7 @@ bool CableSimulation::verify_statics(std::string& error) const {
         const bool current = !loads_.current.uniform.isZero(0.0) || p.currentProfileRows > 0 || loads_.current.grid != nullptr ||
                              loads_.current.pushed != nullptr;
         if (axial < 0.0 && current) {
-            flowCompression_ = -axial;
+            if (flowCompression_ == 0.0) flowCompression_ = -axial;  // the first grading's, as the refusal's
             std::snprintf(text, sizeof text,
                           "the static equilibrium found pushes the line into its anchor: its axial force there is a "
                           "compression of %.6g N (the force on the anchor %.6g N): the current's drag along the line "
@@ -704,15 +704,14 @@ bool CableSimulation::start_in_still_water(double t0, std::string& error) {
         yp_[2 * (j + off_) + 1] = a_[j];
     }
     update_outputs();
-    char text[900];
+    // within the FMU's message of 512 characters
+    char text[500];
     std::snprintf(text, sizeof text,
-                  "warning: no static equilibrium in the water's flow at t = %.6g s: the equilibrium found in it "
-                  "pushes the line into its anchor with a compression of %.6g N (the current's drag along the line "
-                  "near the anchor exceeds what the rest of the line holds), which a line that takes no compression "
-                  "cannot hold; the line starts instead from its static equilibrium in still water (no current, no "
-                  "waves; tow tension %.6g N, far end %.6g N), at rest, with the flow acting from t = %.6g s, as "
-                  "MoorDyn starts its decks: it is not at rest in the flow, and its first seconds are a start "
-                  "transient, not the line's response to the run's inputs",
+                  "warning: no static equilibrium in the flow at t = %.6g s: it would push the line into its anchor "
+                  "(a compression of %.6g N there: the current's drag along the line exceeds what the line holds); "
+                  "the line starts from its equilibrium in still water (tow %.6g N, far end %.6g N), at rest, the "
+                  "flow acting from t = %.6g s as in MoorDyn: not at rest in the flow, its first seconds are a start "
+                  "transient",
                   t0, flowCompression_, stillTow, stillEnd, t0);
     add_event(text);
     return true;
