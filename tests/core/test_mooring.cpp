@@ -135,24 +135,18 @@ namespace {
 // MoorDyn's wavekin_2 chain (410 m, 1 MN, EA 1.674 GN) between an anchor 400 m off and 50 m down and a fairlead at
 // the surface, tension-only, in a uniform current of `current` m/s along x (towards the anchor).
 UCParams taut_chain(double current, UCInputs& in) {
-    UCParams p;
-    uc_params_default(&p);
+    UCParams p = chain(20);  // anchored, without bending, on the seabed
     p.length = 410;
     p.diameter = 0.252;
     p.massPerLength = 390;
     p.EA = 1.674e9;
-    p.EI = 0;
-    p.enableBending = 0;
     p.enableCompression = 0;
     p.Cdn = 1.37;
     p.Cdt = 0.64;
-    p.nElements = 20;
-    p.bottomEnd = UC_BOTTOM_ANCHORED;
     p.anchor[0] = -400;
-    p.anchor[1] = 0;
     p.anchor[2] = -50;
-    p.enableSeabed = 1;
     p.waterDepth = 50;
+    p.seabedStiffness = 25200;  // the deck's kBot x Diam
     in = UCInputs{};
     in.current[0] = current;
     return p;
