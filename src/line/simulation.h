@@ -220,6 +220,14 @@ private:
     bool statics_applies(const Vec3& farPoint, std::string& error) const;
     // After it, on the outputs: false, with the reason, where its answer is not the line's state.
     bool verify_statics(std::string& error) const;
+    // No static equilibrium in the flow (verify_statics found the line pushed into its anchor by it): the
+    // compression found at the anchor [N], 0 where not. The start then falls back on the line's equilibrium in
+    // still water, at rest, the flow acting from the start (start_in_still_water; docs/model.md).
+    mutable double flowCompression_ = 0.0;
+    bool stillWaterStart_ = false;  // the statics of this start see still water (no current, no waves)
+    // After that start, the flow back on: the accelerations of the line at rest in it at t0, the outputs and
+    // the warning; false (with the reason) where the line at rest in the flow has no consistent accelerations.
+    bool start_in_still_water(double t0, std::string& error);
     // After a static state not found or refused, for a line given by parameters: the finer mesh
     // (twice, then four times the elements of every section) on which the same line starts, as
     // advice to append to the message; which knob to turn where no such mesh was found.

@@ -52,6 +52,17 @@ class WavesAtRest {
     const SeaState* sea_;
 };
 
+// The water at rest: no current (uniform, profile, data, pushed by the importer) and no waves.
+void still_water(CurrentField& current) {
+    current.uniform.setZero();
+    current.rate.setZero();
+    current.profileScale = 0.0;
+    current.scaleRate = 0.0;
+    current.sea = nullptr;
+    current.grid = nullptr;
+    current.pushed = nullptr;
+}
+
 }  // namespace
 
 // From the sections and attachments; the profile's top end is the higher of the two ends.
@@ -565,6 +576,7 @@ bool CableSimulation::verify_statics(std::string& error) const {
         const bool current = !loads_.current.uniform.isZero(0.0) || p.currentProfileRows > 0 || loads_.current.grid != nullptr ||
                              loads_.current.pushed != nullptr;
         if (axial < 0.0 && current) {
+            if (flowCompression_ == 0.0) flowCompression_ = -axial;  // the first grading's, as the refusal's
             std::snprintf(text, sizeof text,
                           "the static equilibrium found pushes the line into its anchor: its axial force there is a "
                           "compression of %.6g N (the force on the anchor %.6g N): the current's drag along the line "
@@ -592,9 +604,9 @@ bool CableSimulation::verify_statics(std::string& error) const {
                              (leastTension > 0.0 && std::sqrt(model_.line().EI / leastTension) <=
                                                         kWeakBending * model_.line().length);
     // The elastic catenary has a constant EA: it is no answer for a line on a tension-strain curve.
-    const bool exact = profileApplies_ && weakBending && !model_.axial_curve() && loads_.current.uniform.isZero(0.0) &&
-                       (p.currentProfileRows == 0 || loads_.current.scale == 0.0) && model_.sea().calm() && !loads_.current.grid && !loads_.current.pushed &&
-                       loads_.torque == 0.0 && profile_.solved &&
+    const bool still = stillWaterStart_ || (loads_.current.uniform.isZero(0.0) &&
+                       (p.currentProfileRows == 0 || loads_.current.scale == 0.0) && model_.sea().calm() && !loads_.current.grid && !loads_.current.pushed);
+    const bool exact = profileApplies_ && weakBending && !model_.axial_curve() && still && loads_.torque == 0.0 && profile_.solved &&
                        profile.lowest_clearance() > -model_.line().diameter &&
                        (seabedHeldStart_ || seabed_cross_slope().isZero(0.0)) &&
                        !model_.seabed_grid();  // on a grid the profile lies on one local plane: a start, no answer
@@ -689,6 +701,39 @@ std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const 
            ") resolve the line: initMode = 1 starts from the guessed shape without equilibrium";
 }
 
+// The start when the flow at t0 has no static equilibrium (verify_statics: it pushes the line into its anchor):
+// the line's equilibrium in still water, at rest, with the flow acting from t0, as MoorDyn starts every deck
+// (its initial conditions are solved in still water). The statics' state is in q_ and y_, the flow back on in
+// loads_; here the accelerations are those of the line at rest in it, and the start is warned of.
+bool CableSimulation::start_in_still_water(double t0, std::string& error) {
+    const double stillTow = state_.outputs.towTension, stillEnd = state_.outputs.endTension;
+    const int n = model_.n_free();
+    std::vector<double> v(n);
+    for (int j = 0; j < n; ++j) v[j] = y_[2 * (j + off_) + 1];
+    if (!solve_consistent_acceleration(model_, *staticSolver_, loads_, t0, q_, v, a_)) {
+        error = "the mass matrix is singular: check massPerLength and the end conditions";
+        return false;
+    }
+    if (model_.n_phases() > 0) settle_phase_rates(t0, v);
+    for (int j = 0; j < n; ++j) {
+        y_[2 * (j + off_) + 1] = v[j];
+        yp_[2 * (j + off_)] = v[j];
+        yp_[2 * (j + off_) + 1] = a_[j];
+    }
+    update_outputs();
+    // within the FMU's message of 512 characters
+    char text[500];
+    std::snprintf(text, sizeof text,
+                  "warning: no static equilibrium in the flow at t = %.6g s: it would push the line into its anchor "
+                  "(a compression of %.6g N there: the current's drag along the line exceeds what the line holds); "
+                  "the line starts from its equilibrium in still water (tow %.6g N, far end %.6g N), at rest, the "
+                  "flow acting from t = %.6g s as in MoorDyn: not at rest in the flow, its first seconds are a start "
+                  "transient",
+                  t0, flowCompression_, stillTow, stillEnd, t0);
+    add_event(text);
+    return true;
+}
+
 bool CableSimulation::far_end_held_at_start() const {
     const UCParams& p = model_.params();
     return model_.far_end().held || (model_.far_end().proxy && p.initMode == UC_INIT_EQUILIBRIUM);
@@ -773,6 +818,7 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
         retry = false;
         farPoint = givenFar;
         grade_mesh(state_.tow.p(), farPoint, profileApplies_, grading);
+        if (stillWaterStart_) still_water(loads_.current);  // after grade_mesh, which sets the model's water
         if (farEnd.anchored) farPoint = model_.anchor();  // on the seabed: where the line rests
         const int n = model_.n_free();
         const bool fromProfile = initial_guess(state_.tow.p(), farPoint, q_);
@@ -872,17 +918,44 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
     };
     // A graded mesh whose equilibrium fails is graded again by the other gradings, with the same
     // elements (docs/model.md, "Initial equilibrium"); the refusal gives the first grading's reason.
-    std::string firstError;
-    for (int grading = 0; !start(grading); ++grading) {
-        if (grading == 0) firstError = error;
-        if (!retry || !state_.graded || layout_.nodes.empty() || grading + 1 == kGradingCount) {
-            if (grading > 0) {
-                error = firstError;
-                grade_mesh(state_.tow.p(), givenFar, profileApplies_, 0);
+    auto settle = [&] {
+        std::string firstError;
+        for (int grading = 0; !start(grading); ++grading) {
+            if (grading == 0) firstError = error;
+            if (!retry || !state_.graded || layout_.nodes.empty() || grading + 1 == kGradingCount) {
+                if (grading > 0) {
+                    error = firstError;
+                    grade_mesh(state_.tow.p(), givenFar, profileApplies_, 0);
+                }
+                return false;
             }
-            if (retry && adviseMesh_) error += mesh_advice(t0, tow, far, env);
+        }
+        return true;
+    };
+    flowCompression_ = 0.0;
+    stillWaterStart_ = false;
+    bool settled = settle();
+    if (!settled && flowCompression_ > 0.0 && adviseMesh_) {
+        // No static equilibrium in the flow: the line starts from its equilibrium in still water, at rest,
+        // the flow acting from t0 (start_in_still_water). Not in mesh_advice's trials: they ask for the flow's.
+        const CurrentField flow = loads_.current;
+        const std::string inFlow = error;
+        stillWaterStart_ = true;
+        settled = settle();
+        stillWaterStart_ = false;
+        loads_.current = flow;  // the flow back on, in the water of the model as made again
+        loads_.current.profile = &model_.current_profile();
+        loads_.current.sea = &model_.sea();
+        loads_.current.grid = currentGrid_.get();
+        if (!settled) {
+            error = inFlow + "; its start in still water (the flow acting from the start) failed too: " + error;
             return false;
         }
+        if (!start_in_still_water(t0, error)) return false;
+    }
+    if (!settled) {
+        if (retry && adviseMesh_) error += mesh_advice(t0, tow, far, env);
+        return false;
     }
     if (p.initMode == UC_INIT_EQUILIBRIUM && (!check_static_strain(error) || !check_waterline(error))) return false;
     warn_beyond_curve();

@@ -161,3 +161,87 @@ TEST(Start, InWavesIsTheEquilibriumInCalmWater) {
         EXPECT_GT(std::abs(moving.outputs().towTension - still.outputs().towTension), 1e-4 * T0) << direction;
     }
 }
+
+namespace {
+
+// MoorDyn's wavekin_2 chain (410 m, 1 MN, EA 1.674 GN) between an anchor 400 m off and 50 m down and a fairlead at
+// the surface, tension-only, in a uniform current of `current` m/s along x (towards the anchor).
+UCParams taut_chain(double current, UCInputs& in) {
+    UCParams p = chain(20);  // anchored, without bending, on the seabed
+    p.length = 410;
+    p.diameter = 0.252;
+    p.massPerLength = 390;
+    p.EA = 1.674e9;
+    p.enableCompression = 0;
+    p.Cdn = 1.37;
+    p.Cdt = 0.64;
+    p.anchor[0] = -400;
+    p.anchor[2] = -50;
+    p.waterDepth = 50;
+    p.seabedStiffness = 25200;  // the deck's kBot x Diam
+    in = UCInputs{};
+    in.current[0] = current;
+    return p;
+}
+
+}  // namespace
+
+TEST(StillWaterStart, NoEquilibriumInTheFlowStartsFromStillWaterAtRestAndWarns) {
+    // At -5 m/s along x the tangential drag along the chain towards its anchor (about 6.5 kN/m over 410 m) is
+    // more than the fairlead's pull: the equilibrium in that flow would push the chain into its anchor, which
+    // a chain cannot hold. The line starts from its equilibrium in still water, at rest, the flow acting from
+    // t = 0, and the start says so.
+    UCInputs flowing, still;
+    CableSimulation sim(taut_chain(-5.0, flowing));
+    std::string error;
+    ASSERT_TRUE(sim.initialize(0.0, flowing, error)) << error;
+    const std::string event = sim.take_event();
+    EXPECT_NE(event.find("warning: no static equilibrium in the flow at t = 0 s: it would push the line into its anchor"), std::string::npos) << event;
+    EXPECT_NE(event.find("(a compression of "), std::string::npos) << event;
+    EXPECT_NE(event.find("the line starts from its equilibrium in still water"), std::string::npos) << event;
+    EXPECT_NE(event.find("start transient"), std::string::npos) << event;
+
+    CableSimulation calm(taut_chain(0.0, still));
+    ASSERT_TRUE(calm.initialize(0.0, still, error)) << error;
+    EXPECT_EQ(calm.take_event().find("still water"), std::string::npos);
+    // the same shape as the still-water start (the same statics), to round-off, at rest (the tensions, the
+    // elements' end forces, also carry the flow's load on the line at rest in it: not compared)
+    for (int k = 0; k < UC_NUM_STATIONS; ++k) {
+        EXPECT_NEAR(sim.outputs().shapeX[k], calm.outputs().shapeX[k], 1e-9) << k;
+        EXPECT_NEAR(sim.outputs().shapeZ[k], calm.outputs().shapeZ[k], 1e-9) << k;
+    }
+    for (double v : sim.outputs().endVelocity) EXPECT_EQ(v, 0.0);
+
+    // The flow acts from t = 0: within a second the current drags the chain towards its anchor (the middle
+    // station moves along -x by centimetres) and unloads the anchor, where the line at rest in still water
+    // does not move.
+    ASSERT_TRUE(sim.step(0.0, 1.0, flowing, error)) << error;
+    ASSERT_TRUE(calm.step(0.0, 1.0, still, error)) << error;
+    const int mid = UC_NUM_STATIONS / 2;
+    EXPECT_LT(sim.outputs().shapeX[mid] - calm.outputs().shapeX[mid], -0.01);
+    EXPECT_LT(sim.outputs().endTension, 0.9 * calm.outputs().endTension);
+}
+
+TEST(StillWaterStart, AFlowWithAnEquilibriumStartsInIt) {
+    // At -0.5 m/s the drag along the chain (65 N/m) is held by the fairlead: the line starts in the flow, no
+    // warning, its anchor tension below the still water's by about the drag along the line.
+    UCInputs flowing, still;
+    CableSimulation sim(taut_chain(-0.5, flowing)), calm(taut_chain(0.0, still));
+    std::string error;
+    ASSERT_TRUE(sim.initialize(0.0, flowing, error)) << error;
+    ASSERT_TRUE(calm.initialize(0.0, still, error)) << error;
+    EXPECT_EQ(sim.take_event().find("still water"), std::string::npos);
+    EXPECT_LT(sim.outputs().endTension, calm.outputs().endTension - 1e4);
+}
+
+TEST(StillWaterStart, OtherRefusalsStayRefusals) {
+    // EA in MN where N is meant, in the flow that has no equilibrium: refused for EA, as without the flow.
+    UCInputs flowing;
+    UCParams p = taut_chain(-5.0, flowing);
+    p.EA = 1674;
+    CableSimulation sim(p);
+    std::string error;
+    EXPECT_FALSE(sim.initialize(0.0, flowing, error));
+    EXPECT_EQ(error.find("EA = 1674 N: "), 0u) << error;
+    EXPECT_EQ(sim.take_event().find("still water"), std::string::npos);
+}

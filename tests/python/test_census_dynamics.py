@@ -264,6 +264,9 @@ EXPLAINED = {
     "md:tests/Mooring/wavekin_2/wavekin_2_curr2.txt", "md:tests/Mooring/wavekin_2/wavekin_3.txt",
     "md:tests/Mooring/wavekin_2/wavekin_3_curr2.txt", "md:tests/Mooring/wavekin_current_1.txt",
     "md:tests/Mooring/wavekin_wave_1.txt",
+    # a current with no static equilibrium: both start in still water; MoorDyn reads the 4-D file one row short,
+    # the friction models differ under the current's drag along the grounded chain (docs/waves.md)
+    "md:tests/Mooring/wavekin_2/wavekin_2_curr5.txt", "md:tests/Mooring/wavekin_2/wavekin_3_curr5.txt",
     # an anchor that is a free end with no tension; MoorDyn's axial chatter at the deck's dtM (hanging_lines)
     "md:tests/Mooring/wavekin_3/test_dynamic_currents.txt", "md:tests/Mooring/wavekin_4/hanging_lines.txt",
 }
