@@ -250,7 +250,8 @@ TEST(SyropeLine, RestoringAStateFromBeforeAPeakTakesTheHistoryBack) {
     // LINEAR k1 0.5 (the curves of the ramp test above): stretched from Tmean0's strain 0.0075 to 0.009, below the
     // top of Tmax0's working curve (0.01), saved; on to 0.03 (the history grows to it), then the state of 0.009 set
     // back into the same instance: its history is Tmax0's again, and unloading to 0.006 runs bit for bit as a twin
-    // that never passed the peak (kept at Tmax = 3e6 N it would unload on a curve whose foot is 0.015: no tension).
+    // that never passed the peak (kept at the peak's history, 0.03, it unloads on that working curve: 1.23e6 N
+    // against 7.5e5 N at the first step).
     const UCParams p = syrope_rope(kSyropeLinear, 0.5, 0.0);
     ASSERT_EQ(check_params(p), "");
     const double e0 = 0.0075, h = 0.02;

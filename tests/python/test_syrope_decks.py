@@ -84,10 +84,11 @@ def _run(c, deck_strain, t0, t1, s):
 
 
 def test_a_state_set_back_before_the_peak_takes_the_history_back(fmu_file):
-    """The largest tension so far (the working curve's top) is part of the FMU state: a state got at 150 s, before
-    the ramp to 3 eps0 (which raises Tmax from 1.39e6 N to about 3.6e6 N), set back after the peak, continues bit for
-    bit as a second instance that stopped at 150 s, over the next 150 s of the profile at eps0 (kept at the peak's
-    Tmax, the rope would unload there on a lower working curve; so also through serialization)."""
+    """The largest mean tension so far (the working curve's top) is part of the FMU state: a state got at 150 s,
+    before the ramp to 3 eps0 (its tension peaks at 5.0e6 N, far above Tmax0 = 1.39e6 N: the history grows), set back
+    after the peak, continues bit for bit as a second instance that stopped at 150 s, over the next 150 s held at
+    eps0; so does the state serialized and deserialized. (With the history left out of the state the set-back rope
+    unloads on the peak's working curve: 4.7e5 N off.)"""
     deck = FOLDER / "linear_wc" / "line.txt"
     eps0 = syrope.initial_strain(deck)
     s = syrope.Settings(segment=150.0)
