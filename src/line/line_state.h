@@ -1,6 +1,7 @@
 // line_state.h - everything that evolves in one line, in one trivially copyable struct: a saved state
-// is a header (magic, version, sizes) and one copy of LineState, followed by the integrator's vectors
-// and history (line/state.cpp). What a line holds beside it is the model (rebuilt from the state's
+// is a header (magic, version, sizes) and one copy of LineState, followed by the line's vectors sized by the
+// mesh (the unknowns y, y' and the Syrope elements' history: CableSimulation::line_vectors) and the
+// integrator's history (line/state.cpp). What a line holds beside it is the model (rebuilt from the state's
 // winch mesh and grading where those change), derived data and per-step workspace; a field that a
 // step changes belongs here, or a state restored into a fresh instance continues differently
 // (tests/core/test_line_state.cpp catches that).
@@ -43,7 +44,7 @@ struct DrivenEndState {
 // The evolving state of one line (CableSimulation). Not in it: the event text of a step (a message
 // taken by the caller, not state), the model (its winch mesh is in the saved header, its graded mesh
 // is made again from graded/grading/meshTow/meshFar), the static profile and layout of the start
-// (derived), the integrator's vectors and history (saved after this struct) and every per-step
+// (derived), the line's vectors and the integrator's history (saved after this struct) and every per-step
 // workspace.
 struct LineState {
     double time = 0.0;

@@ -211,8 +211,8 @@ Vec3 internal_moment(const CableModel& model, int e, const double* X, const Shap
     return model.element_section(e).EI * rp.cross(interpolate(sv.d2N, Xe)) / (n * n * n) - torque * rp / n;
 }
 
-void compute_outputs(const CableModel& model, const double* X, const double* Xd, const ElementForces& forces,
-                     double torque, OutputWorkspace& work, UCOutputs& out) {
+void compute_outputs(const CableModel& model, const double* X, const double* Xd, const double* syropeHistory,
+                     const ElementForces& forces, double torque, OutputWorkspace& work, UCOutputs& out) {
     const int N = model.n_elements();
     const int gN = model.end_offset();
     const Vec3 towForce = -forces.element[0].segment<3>(0);
@@ -271,7 +271,7 @@ void compute_outputs(const CableModel& model, const double* X, const double* Xd,
         double axialTension[ElementTables::nAxial];
         Vec3 rp[ElementTables::nAxial];  // r' at the axial points, which the tensions interpolate anyway
         double material[12];  // the winch's top element: the velocities of the material in it
-        axial_tensions(tables, model.internal_offset(e) >= 0 ? model.element_axial(e, X, Xd) : section.axial, Xe,
+        axial_tensions(tables, model.internal_offset(e) >= 0 ? model.element_axial(e, X, Xd, syropeHistory) : section.axial, Xe,
                        model.element_velocities(e, X, Xd, material), axialTension, rp);
         double mean = 0.0, elementCurvature = 0.0;
         for (int g = 0; g < ElementTables::nAxial; ++g) {

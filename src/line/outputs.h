@@ -44,10 +44,11 @@ struct OutputWorkspace {
     StationShapes stations;
 };
 
-// X, Xd, Xdd: global configuration; forces: per-element residuals at that configuration
+// X, Xd, Xdd: global configuration; syropeHistory: the Syrope elements' history (CableModel::history_size
+// values, null without a Syrope element); forces: per-element residuals at that configuration
 // (CableModel::residual), so reported forces close the discrete equilibrium exactly.
-void compute_outputs(const CableModel& model, const double* X, const double* Xd, const ElementForces& forces,
-                     double torque, OutputWorkspace& work, UCOutputs& out);
+void compute_outputs(const CableModel& model, const double* X, const double* Xd, const double* syropeHistory,
+                     const ElementForces& forces, double torque, OutputWorkspace& work, UCOutputs& out);
 
 // Axial force at every node: T_i = F_i . t_i with F_i the force that the cable beyond node i
 // exerts on the cable before it (node 0: the tow point's pull), t_i the unit tangent.

@@ -104,6 +104,9 @@ void CableSimulation::allocate() {
     staticSolver_ = std::make_unique<BandSolver>(context_, n, model_.free_bandwidth());
     y_.assign(2 * unknowns, 0.0);
     yp_.assign(2 * unknowns, 0.0);
+    syropeHistory_.assign(model_.history_size(), 0.0);
+    model_.initial_history(syropeHistory_.data());
+    loads_.syropeHistory = syropeHistory_.empty() ? nullptr : syropeHistory_.data();
     q_.assign(n, 0.0);
     v_.assign(n, 0.0);
     a_.assign(n, 0.0);
@@ -195,7 +198,7 @@ void CableSimulation::step_completed(double t, const double* y, const double* yp
     stepTensionMax_ = std::max(stepTensionMax_, tension);
     stepTensionMin_ = std::min(stepTensionMin_, tension);
     if (sn_.area > 0.0) state_.rainflow.add(tension, sn_);
-    model_.advance_history(X_.data());  // (a Syrope line's: the largest mean tension so far)
+    model_.advance_history(X_.data(), syropeHistory_.data());  // (a Syrope line's: the largest mean tension so far)
 }
 
 bool CableSimulation::step(double /*t*/, double h, const UCInputs& in, std::string& error) {
@@ -292,13 +295,13 @@ bool CableSimulation::step(double h, const EndMotion& tow, const EndMotion& far,
     const Vec3 proxyPosition = vec(state_.outputs.endPosition), proxyVelocity = vec(state_.outputs.endVelocity);
     stepTensionMax_ = stepTensionMin_ = state_.outputs.towTension;  // the tension at the step's start
     const RainflowCounter rainflowAtStart = state_.rainflow;
-    syropeAtStep_ = model_.history();  // (no allocation after the first step)
+    syropeAtStep_ = syropeHistory_;  // (no allocation after the first step)
     winchTension_ = env.winchTension;
     const double topAtStart = model_.winch() ? model_.top_length() : 0.0;
     winchTopAtStep_ = topAtStart;
     if (!integrator_->advance(tEnd, error, env.stepBudget)) {
         state_.rainflow = rainflowAtStart;  // the state stays at the last communication point
-        model_.history() = syropeAtStep_;
+        std::copy(syropeAtStep_.begin(), syropeAtStep_.end(), syropeHistory_.begin());  // (loads_ points at it)
         state_.restartPending = true;  // the state stays at the last communication point
         state_.winchLength = winchLengthAtStart;
         state_.winchRate = winchRateAtStart;
@@ -547,7 +550,8 @@ void CableSimulation::store_section_ends() {
 void CableSimulation::update_outputs() {
     expand_integrator_state(state_.time, y_.data(), yp_.data());
     model_.residual(X_.data(), Xd_.data(), Xdd_.data(), loads_, R_.data(), &forces_);
-    compute_outputs(model_, X_.data(), Xd_.data(), forces_, loads_.torque, outputWork_, state_.outputs);
+    compute_outputs(model_, X_.data(), Xd_.data(), syropeHistory_.data(), forces_, loads_.torque, outputWork_,
+                    state_.outputs);
     store_section_ends();
     const IntegratorStats s = total_stats();
     state_.outputs.nSteps = s.steps;

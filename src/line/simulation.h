@@ -3,6 +3,7 @@
 // copy (the MuJoCo mjModel/mjData split).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -75,6 +76,8 @@ public:
     CableSimulation& operator=(const CableSimulation&) = delete;
 
     const CableModel& model() const { return model_; }
+    // The Syrope elements' history (eps_max per element; empty without a Syrope element): part of the state.
+    const std::vector<double>& syrope_history() const { return syropeHistory_; }
     double time() const override { return state_.time; }
     const UCOutputs& outputs() const override { return state_.outputs; }
     Vec3 tow_position() const override { return state_.tow.p(); }
@@ -346,6 +349,15 @@ private:
     // --- state (what save/restore copies: line/line_state.h) ---
     LineState state_;
     std::vector<double> y_, yp_;  // IDA vectors at state_.time: y = [q_0, v_0, q_1, v_1, ...]
+    // The Syrope elements' history at state_.time (CableModel::history_size values: eps_max per element, beside
+    // the internal strains among the unknowns it pairs with; empty without a Syrope element). Made again with
+    // the model (allocate), grown after each internal step (step_completed), read by the model through
+    // loads_.syropeHistory.
+    std::vector<double> syropeHistory_;
+    // The line's vectors (all sized by the model), in the order a saved state holds them after LineState: what
+    // save_state and restore_state copy besides LineState and the integrator's history.
+    std::array<std::vector<double>*, 3> line_vectors() { return {&y_, &yp_, &syropeHistory_}; }
+    std::array<const std::vector<double>*, 3> line_vectors() const { return {&y_, &yp_, &syropeHistory_}; }
 
     // --- derived at initialization or from the state (not saved) ---
     std::string event_;  // the step's event text (taken by the caller; a message, not state)
@@ -385,7 +397,7 @@ private:
     std::vector<Vec3> sectionEnds_;  // section_end_position, from X_ at update_outputs and restore_state
     void store_section_ends();
     std::vector<double> historyBuffer_;  // the integrator's history on its way to/from a saved state
-    std::vector<double> syropeAtStep_;   // the Syrope elements' history at the step's start (a failed step's)
+    std::vector<double> syropeAtStep_;   // syropeHistory_ at the step's start (a failed step's)
     std::vector<double> toleranceBuffer_;
     // interface derivatives (allocated at their first use): the linearization at the present
     // state, the step matrices of the two substep sizes factored, and the columns computed so far

@@ -304,7 +304,7 @@ bool CableSimulation::initial_guess(const Vec3& towPoint, const Vec3& farPoint, 
     }
     if (model_.n_internal() > 0) {  // the viscoelastic elements' internal strains at rest with the guess
         std::vector<double> Xd(X.size(), 0.0);
-        model_.settle_internal(X.data(), Xd.data());
+        model_.settle_internal(X.data(), Xd.data(), syropeHistory_.data());
     }
     for (int e = 0; e < model_.n_elements(); ++e)  // the VIV phases spread along the line
         if (model_.phase_offset(e) >= 0) X[model_.phase_offset(e)] = model_.initial_phase(e);
@@ -873,14 +873,14 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
                 return false;
             }
         }
-        if (!model_.history().empty()) {
+        if (!syropeHistory_.empty()) {
             // A Syrope line starts from the deck's history (Tmax0) and mean tension (Tmean0), not from the
             // statics' rest: its slow strains at Tmean0 with the rates their equation gives (docs/model.md).
             std::vector<double> zero(n, 0.0);
-            model_.reset_history();
+            model_.initial_history(syropeHistory_.data());
             model_.expand(q_.data(), v.data(), zero.data(), loads_, t0, X_.data(), Xd_.data(), Xdd_.data());
-            model_.settle_internal(X_.data(), Xd_.data());
-            model_.syrope_rates(X_.data(), Xd_.data());
+            model_.settle_internal(X_.data(), Xd_.data(), syropeHistory_.data());
+            model_.syrope_rates(X_.data(), Xd_.data(), syropeHistory_.data());
             model_.restrict_to_free(X_.data(), q_.data());
             model_.restrict_to_free(Xd_.data(), v.data());
         }

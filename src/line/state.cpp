@@ -1,5 +1,6 @@
-// state.cpp - save and restore of a line's state: a header, one copy of LineState, the integrator's
-// vectors and history (line/line_state.h).
+// state.cpp - save and restore of a line's state: a header, one copy of LineState, the line's vectors (the
+// unknowns y, y' and the Syrope elements' history) and the integrator's history (line/line_state.h).
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -13,18 +14,20 @@ namespace uc {
 namespace {
 
 constexpr std::uint32_t kStateMagic = 0x55434142;  // "UCAB"
-constexpr std::uint32_t kStateVersion = 16;  // 13: the viscoelastic elements' internal strains among the unknowns;
+constexpr std::uint32_t kStateVersion = 17;  // 13: the viscoelastic elements' internal strains among the unknowns;
                                              // 14: LineState::released;
                                              // 15: the Syrope elements' history after the integrator's;
-                                             // 16: the VIV phases among the unknowns
+                                             // 16: the VIV phases among the unknowns;
+                                             // 17: the Syrope elements' history beside y, y' (before the
+                                             // integrator's history)
 // What each version added (named when a state of another version is refused).
 const char* const kStateVersions =
     "version 13 added the viscoelastic internal strains, 14 the released end, 15 the Syrope elements' history, "
-    "16 the vortex-induced vibration phases among the unknowns";
+    "16 the vortex-induced vibration phases among the unknowns, 17 moved the Syrope history before the integrator's";
 
 // Fixed-layout header of a saved state: what it belongs to (the sizes and the winch's mesh, which
-// the model holds); followed by LineState, y, y', the integrator's history and the Syrope elements' history
-// (CableModel::history, one per element of a line that has the model).
+// the model holds); followed by LineState, the line's vectors (y, y' and the Syrope elements' history, one per
+// element of a line that has the model: CableSimulation::line_vectors) and the integrator's history.
 struct StateHeader {
     std::uint32_t magic;
     std::uint32_t version;
@@ -38,8 +41,9 @@ struct StateHeader {
 }  // namespace
 
 size_t CableSimulation::state_size() const {
-    return sizeof(StateHeader) + sizeof(LineState) +
-           (2 * y_.size() + integrator_->history_size() + model_.history().size()) * sizeof(double);
+    size_t doubles = integrator_->history_size();
+    for (const std::vector<double>* v : line_vectors()) doubles += v->size();
+    return sizeof(StateHeader) + sizeof(LineState) + doubles * sizeof(double);
 }
 
 void CableSimulation::save_state(void* buffer) {
@@ -66,13 +70,11 @@ void CableSimulation::save_state(void* buffer) {
     out += sizeof header;
     std::memcpy(out, &saved, sizeof saved);
     out += sizeof saved;
-    std::memcpy(out, y_.data(), y_.size() * sizeof(double));
-    out += y_.size() * sizeof(double);
-    std::memcpy(out, yp_.data(), yp_.size() * sizeof(double));
-    out += yp_.size() * sizeof(double);
+    for (const std::vector<double>* v : line_vectors()) {
+        std::memcpy(out, v->data(), v->size() * sizeof(double));
+        out += v->size() * sizeof(double);
+    }
     std::memcpy(out, historyBuffer_.data(), historyBuffer_.size() * sizeof(double));
-    out += historyBuffer_.size() * sizeof(double);
-    std::memcpy(out, model_.history().data(), model_.history().size() * sizeof(double));
 }
 
 bool CableSimulation::restore_state(const void* buffer, size_t size, std::string& error, bool* changed) {
@@ -138,10 +140,10 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
     }
     touched = true;
     in += sizeof header + sizeof saved;
-    std::memcpy(y_.data(), in, y_.size() * sizeof(double));
-    in += y_.size() * sizeof(double);
-    std::memcpy(yp_.data(), in, yp_.size() * sizeof(double));
-    in += yp_.size() * sizeof(double);
+    for (std::vector<double>* v : line_vectors()) {  // (sized by the model: no reallocation, loads_ points at them)
+        std::memcpy(v->data(), in, v->size() * sizeof(double));
+        in += v->size() * sizeof(double);
+    }
     const bool history = saved.integratorStarted;
     state_ = saved;
     complete_outputs(state_.outputs);
@@ -149,9 +151,6 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
         state_.restartPending = true;
         return false;
     }
-    // the Syrope elements' history, after the integrator's (which a state saved before any step leaves 0)
-    std::memcpy(model_.history().data(), in + integrator_->history_size() * sizeof(double),
-                model_.history().size() * sizeof(double));
     if (history) {
         historyBuffer_.resize(integrator_->history_size());
         std::memcpy(historyBuffer_.data(), in, historyBuffer_.size() * sizeof(double));

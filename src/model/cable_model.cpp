@@ -24,7 +24,7 @@ AxialProps CableModel::scaled_axial(const SectionProps& section, const Loads& lo
                       section.curve.n > 0 ? &section.curve : nullptr};
 }
 
-AxialProps CableModel::element_axial(int e, const double* X, const double* Xd) const {
+AxialProps CableModel::element_axial(int e, const double* X, const double* Xd, const double* history) const {
     const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
     AxialProps p = sec.axial;
     const int gi = internal_offset(e);
@@ -34,7 +34,7 @@ AxialProps CableModel::element_axial(int e, const double* X, const double* Xd) c
         p.internal[1] = Xd[gi];
         if (sec.syrope.form != kSyropeNone) {
             p.syrope = &sec.syrope;
-            p.history = history_[e];
+            p.history = history[e];
         }
     }
     return p;
@@ -50,19 +50,19 @@ AxialProps CableModel::axial_at(int e, const double* X, const double* Xd, const 
         p.internal[1] = Xd[gi];
         if (sec.syrope.form != kSyropeNone) {
             p.syrope = &sec.syrope;
-            p.history = history_[e];
+            p.history = loads.syropeHistory[e];
         }
     }
     return p;
 }
 
-void CableModel::settle_internal(double* X, double* Xd) const {
+void CableModel::settle_internal(double* X, double* Xd, const double* history) const {
     for (int e = 0; e < nElements_; ++e) {
         const int gi = internal_offset(e);
         if (gi < 0) continue;
         const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
         if (sec.syrope.form != kSyropeNone) {
-            X[gi] = syrope_slow_strain(sec.syrope, history_[e], sec.syrope.tensionMean0);
+            X[gi] = syrope_slow_strain(sec.syrope, history[e], sec.syrope.tensionMean0);
             Xd[gi] = 0.0;
             continue;
         }
@@ -85,34 +85,32 @@ void CableModel::settle_internal(double* X, double* Xd) const {
     }
 }
 
-void CableModel::syrope_rates(const double* X, double* Xd) const {
+void CableModel::syrope_rates(const double* X, double* Xd, const double* history) const {
     for (int e = 0; e < nElements_; ++e) {
         const int gi = internal_offset(e);
         if (gi < 0 || sections_[runs_[elementRun_[e]].section].syrope.form == kSyropeNone) continue;
         Xd[gi] = 0.0;
         double Xm[12];
-        AxialProps p = element_axial(e, X, Xd);
+        AxialProps p = element_axial(e, X, Xd, history);
         const double rest = visco_residual(tables_[elementRun_[e]], p, X + elementOffset_[e], element_velocities(e, X, Xd, Xm));
         Xd[gi] = -rest / (p.damping + p.visco->dampingDynamic);
     }
 }
 
-void CableModel::reset_history() {
-    history_.clear();
+void CableModel::initial_history(double* history) const {
+    if (!syrope_) return;  // (history_size() 0)
     for (int e = 0; e < nElements_; ++e) {
         const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
-        if (sec.syrope.form == kSyropeNone) continue;
-        if (history_.empty()) history_.assign(nElements_, 0.0);
-        history_[e] = syrope_initial_history(sec.syrope);
+        history[e] = sec.syrope.form == kSyropeNone ? 0.0 : syrope_initial_history(sec.syrope);
     }
 }
 
-void CableModel::advance_history(const double* X) {
-    if (history_.empty()) return;
+void CableModel::advance_history(const double* X, double* history) const {
+    if (!syrope_) return;
     for (int e = 0; e < nElements_; ++e) {
         const int gi = internal_offset(e);
         const SectionProps& sec = sections_[runs_[elementRun_[e]].section];
-        if (gi >= 0 && sec.syrope.form != kSyropeNone) history_[e] = syrope_history_after(sec.syrope, history_[e], X[gi]);
+        if (gi >= 0 && sec.syrope.form != kSyropeNone) history[e] = syrope_history_after(sec.syrope, history[e], X[gi]);
     }
 }
 
@@ -193,7 +191,7 @@ CableModel::CableModel(const UCParams& params, const WinchMesh* winch, const Sta
     const bool laid = layout && params.winchMode == 0;
     build_mesh(params, laid && !layout->nodes.empty() ? &layout->nodes : nullptr);
     build_dof_map();
-    reset_history();
+    for (int e = 0; e < nElements_ && !syrope_; ++e) syrope_ = sections_[runs_[elementRun_[e]].section].syrope.form != kSyropeNone;
     if (this->winch()) {
         slotArcBase_ = slotArc_;
         for (const ElementRun& run : runs_) runStartBase_.push_back(run.s0);

@@ -125,6 +125,9 @@ struct Loads {
     // Vortex-induced vibration acts (the lift, the phases' synchronisation); false in the static solver:
     // no lift, each phase held at its start (CableModel::initial_phase).
     bool viv = true;
+    // The Syrope elements' history, eps_max per element (the line's state, beside the internal strains it pairs
+    // with; CableModel::history_size); null where the model has no Syrope element.
+    const double* syropeHistory = nullptr;
 };
 
 // Residual contributions of one element and of the far-end node terms, kept for outputs.
@@ -274,21 +277,22 @@ public:
     void element_viv_phase_column(int e, const double* X, const double* Xd, const Loads& loads, double* dR) const;
     // Every element's internal strain at equilibrium with its present mean strain (X), rate 0 (Xd); a Syrope
     // element's slow strain at the start's mean tension (syrope.tensionMean0) on the working curve of its history.
-    void settle_internal(double* X, double* Xd) const;
+    void settle_internal(double* X, double* Xd, const double* history) const;
     // A Syrope element's slow strain rate at X, Xd, from its internal equation with the rate term out (the start:
     // the slow strain need not be at rest with the element's strain). Writes Xd of every Syrope element.
-    void syrope_rates(const double* X, double* Xd) const;
-    // The Syrope elements' history, the original working curve's strain at the largest mean tension so far
-    // (terms/syrope.h), one per element (empty: no Syrope element): a state of the line, saved with it.
-    std::vector<double>& history() { return history_; }
-    const std::vector<double>& history() const { return history_; }
-    void reset_history();  // to the start's (syrope.tensionMax0)
+    void syrope_rates(const double* X, double* Xd, const double* history) const;
+    // The Syrope elements' history: per element the original working curve's strain at the largest mean tension
+    // so far (terms/syrope.h), history_size() values (0: no Syrope element; 0 for an element of another model).
+    // The model holds none: it is the line's state (CableSimulation, saved with the unknowns), which the model
+    // reads through Loads::syropeHistory or the argument `history`.
+    int history_size() const { return syrope_ ? nElements_ : 0; }
+    void initial_history(double* history) const;  // the start's (syrope.tensionMax0)
     // After a step that reached X: the history of each Syrope element whose slow strain passed onto the
     // original working curve grows to it.
-    void advance_history(const double* X);
-    // The axial properties element e's tension comes from at X, Xd: the section's (with its
-    // viscoelastic model and internal strain where it has one).
-    AxialProps element_axial(int e, const double* X, const double* Xd) const;
+    void advance_history(const double* X, double* history) const;
+    // The axial properties element e's tension comes from at X, Xd (and the Syrope history): the section's (with
+    // its viscoelastic model and internal strain where it has one).
+    AxialProps element_axial(int e, const double* X, const double* Xd, const double* history) const;
     int n_free() const { return nFree_; }
     int free_bandwidth() const { return bandwidth_; }  // max |i - j| of coupled free DOFs
     const LineScales& line() const { return line_; }
@@ -447,7 +451,7 @@ private:
     std::vector<double> coef_;
     int nInternal_ = 0;
     std::vector<int> internalOffset_;  // per element (empty: no viscoelastic element)
-    std::vector<double> history_;      // per element (empty: no Syrope element)
+    bool syrope_ = false;              // an element has the Syrope model (history_size)
     int nPhase_ = 0;
     std::vector<int> phaseOffset_;  // per element (empty: no element with VIV)
     int nFree_ = 0;

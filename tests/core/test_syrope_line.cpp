@@ -1,7 +1,8 @@
 // The Syrope model of a polyester rope (syrope.*, axialCurve.* its original working curve, EAdynamic and
 // EAdynamicSlope its dynamic stiffness; docs/model.md, "Syrope fibre-rope model"): the working curves' closed
 // forms, the element's couplings against finite differences, a ramp then unload and reload against the
-// hand-computed curves, the history in the saved state, and the parameters' checks.
+// hand-computed curves, the history in the saved state (carried forward into a fresh instance, and set back
+// before a peak), and the parameters' checks.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -204,8 +205,8 @@ TEST(SyropeLine, ARampThenUnloadFollowsTheOriginalThenTheWorkingCurve) {
     }
     EXPECT_NEAR(Tmax, 3.5e6, 1.0);
     // the history: the top of the working curve at the largest strain of the OWC reached
-    ASSERT_EQ(sim.model().history().size(), 1u);
-    EXPECT_NEAR(sim.model().history()[0], 0.035, 1e-5);
+    ASSERT_EQ(sim.syrope_history().size(), 1u);
+    EXPECT_NEAR(sim.syrope_history()[0], 0.035, 1e-5);
     RecordProperty("largest difference [N]", std::to_string(worst));
 }
 
@@ -226,8 +227,8 @@ TEST(SyropeLine, ASavedStateCarriesTheHistory) {
     CableSimulation b(p);
     ASSERT_TRUE(b.initialize(0.0, tow_at(kLength * (1.0 + e0), 0.0), error)) << error;
     ASSERT_TRUE(b.restore_state(saved.data(), saved.size(), error)) << error;
-    EXPECT_EQ(b.model().history(), a.model().history());
-    EXPECT_GT(a.model().history()[0], 0.0249);
+    EXPECT_EQ(b.syrope_history(), a.syrope_history());
+    EXPECT_GT(a.syrope_history()[0], 0.0249);
     for (int s = 0; s < 20; ++s, t += 0.02) {
         const UCInputs in = tow_at(kLength * (1.0 + 0.025 - 0.005 * s / 20), -kLength * 0.25);
         ASSERT_TRUE(a.step(t, 0.02, in, error)) << error;
@@ -241,8 +242,56 @@ TEST(SyropeLine, ASavedStateCarriesTheHistory) {
     const std::uint32_t version = 14;
     std::memcpy(old.data() + sizeof(std::uint32_t), &version, sizeof version);
     EXPECT_FALSE(b.restore_state(old.data(), old.size(), error));
-    EXPECT_NE(error.find("format version 14, this FMU reads 16"), std::string::npos) << error;
+    EXPECT_NE(error.find("format version 14, this FMU reads 17"), std::string::npos) << error;
     EXPECT_NE(error.find("15 the Syrope elements' history"), std::string::npos) << error;
+}
+
+TEST(SyropeLine, RestoringAStateFromBeforeAPeakTakesTheHistoryBack) {
+    // LINEAR k1 0.5 (the curves of the ramp test above): stretched from Tmean0's strain 0.0075 to 0.009, below the
+    // top of Tmax0's working curve (0.01), saved; on to 0.03 (the history grows to it), then the state of 0.009 set
+    // back into the same instance: its history is Tmax0's again, and unloading to 0.006 runs bit for bit as a twin
+    // that never passed the peak (kept at the peak's history, 0.03, it unloads on that working curve: 1.23e6 N
+    // against 7.5e5 N at the first step).
+    const UCParams p = syrope_rope(kSyropeLinear, 0.5, 0.0);
+    ASSERT_EQ(check_params(p), "");
+    const double e0 = 0.0075, h = 0.02;
+    CableSimulation a(p), twin(p);
+    std::string error;
+    ASSERT_TRUE(a.initialize(0.0, tow_at(kLength * (1.0 + e0), 0.0), error)) << error;
+    ASSERT_TRUE(twin.initialize(0.0, tow_at(kLength * (1.0 + e0), 0.0), error)) << error;
+    // the strain from `from` to `to` in n steps of h from time t (the inputs at each step's start)
+    auto leg = [&](CableSimulation& s, double from, double to, int n, double& t) {
+        for (int k = 0; k < n; ++k, t += h)
+            ASSERT_TRUE(s.step(t, h, tow_at(kLength * (1.0 + from + (to - from) * k / n), kLength * (to - from) / (n * h)),
+                               error)) << error;
+    };
+    double ta = 0.0, tt = 0.0;
+    leg(a, e0, 0.009, 20, ta);
+    leg(twin, e0, 0.009, 20, tt);
+    ASSERT_EQ(a.syrope_history().size(), 1u);
+    const std::vector<double> before = a.syrope_history();
+    EXPECT_NEAR(before[0], 0.01, 1e-12);  // Tmax0's: not passed yet
+    std::vector<unsigned char> saved(a.state_size()), twinSaved(twin.state_size());
+    a.save_state(saved.data());
+    twin.save_state(twinSaved.data());  // (a save makes the next step evaluate a new Jacobian: the twin's too)
+    EXPECT_TRUE(saved == twinSaved);
+    const double tSaved = ta;
+    leg(a, 0.009, 0.03, 50, ta);
+    EXPECT_GT(a.syrope_history()[0], 0.029);  // the peak moved the history
+    ASSERT_TRUE(a.restore_state(saved.data(), saved.size(), error)) << error;
+    EXPECT_EQ(a.syrope_history(), before);
+    ta = tSaved;
+    for (int k = 0; k < 20; ++k, ta += h, tt += h) {
+        const UCInputs in = tow_at(kLength * (1.0 + 0.009 - 0.003 * k / 20), -kLength * 0.003 / (20 * h));
+        ASSERT_TRUE(a.step(ta, h, in, error)) << error;
+        ASSERT_TRUE(twin.step(tt, h, in, error)) << error;
+        ASSERT_EQ(a.outputs().towTension, twin.outputs().towTension) << "step " << k;
+    }
+    EXPECT_GT(a.outputs().towTension, 1e5);  // on Tmax0's working curve, T = 2e8 (0.006 - 0.005) less the dashpot
+    std::vector<unsigned char> bytesA(a.state_size()), bytesTwin(twin.state_size());
+    a.save_state(bytesA.data());
+    twin.save_state(bytesTwin.data());
+    EXPECT_TRUE(bytesA == bytesTwin) << "the set-back line saves other bytes than its twin";
 }
 
 TEST(SyropeLine, ParametersThatMakeNoRopeAreRefusedNamingTheField) {

@@ -69,3 +69,53 @@ def test_the_tension_follows_moordyns_through_a_stretch_unload_and_reload(case):
 def test_the_tension_follows_moordyns_over_the_documented_profile(case):
     pytest.importorskip("moordyn")
     _compare(case, syrope.Settings(), 0.002)
+
+
+def _run(c, deck_strain, t0, t1, s):
+    """Steps the Coupled point along the study's profile from t0 to t1; the tension after every step."""
+    out = []
+    for k in range(int(round((t1 - t0) / s.comm_step))):
+        t = t0 + k * s.comm_step
+        e, de = syrope.strain(t, deck_strain, s)
+        c.set({"tow.x": 1.0 + e, "tow.vx": de})
+        c.do_step(s.comm_step, t=t)
+        out.append(c.get("towTension"))
+    return np.array(out)
+
+
+def test_a_state_set_back_before_the_peak_takes_the_history_back(fmu_file):
+    """The largest mean tension so far (the working curve's top) is part of the FMU state: a state got at 150 s,
+    before the ramp to 3 eps0 (its tension peaks at 5.0e6 N, far above Tmax0 = 1.39e6 N: the history grows), set back
+    after the peak, continues bit for bit as a second instance that stopped at 150 s, over the next 150 s held at
+    eps0; so does the state serialized and deserialized. (With the history left out of the state the set-back rope
+    unloads on the peak's working curve: 4.7e5 N off.)"""
+    deck = FOLDER / "linear_wc" / "line.txt"
+    eps0 = syrope.initial_strain(deck)
+    s = syrope.Settings(segment=150.0)
+    start = {"tow.x": 1.0 + eps0, "tow.z": -5.0}
+    a = CableFMU(fmu_file, parameters={"lineFile": str(deck)})
+    b = CableFMU(fmu_file, parameters={"lineFile": str(deck)})
+    try:
+        a.initialize(inputs=start)
+        b.initialize(inputs=start)
+        _run(a, eps0, 0.0, 150.0, s)
+        _run(b, eps0, 0.0, 150.0, s)
+        state = a.get_state()
+        b.free_state(b.get_state())  # (getting a state makes the next step evaluate a new Jacobian: b's too)
+        serialized = a.serialize_state(state)
+        peak = _run(a, eps0, 150.0, 450.0, s)
+        assert peak.max() > 3e6
+        # the profile held at eps0 from 150 s on: the same inputs for both
+        flat = syrope.Settings(segment=1e9)
+        a.set_state(state, time=150.0)
+        after = _run(a, eps0, 150.0, 300.0, flat)
+        expected = _run(b, eps0, 150.0, 300.0, flat)
+        assert np.array_equal(after, expected), np.max(np.abs(after - expected))
+        restored = a.deserialize_state(serialized)
+        a.set_state(restored, time=150.0)
+        assert np.array_equal(_run(a, eps0, 150.0, 300.0, flat), expected)
+        a.free_state(restored)
+        a.free_state(state)
+    finally:
+        a.free()
+        b.free()
