@@ -270,6 +270,8 @@ private:
     static constexpr double kSteelStrainRefused = 0.10;
     static constexpr double kSteelDensity = 2000.0;  // [kg/m3]: mass per length over pi d^2 / 4
     static double strain_survived(const SectionProps& section);
+    // "the 25 % a fibre rope survives (...)": what a section survives at rest and why, for the messages.
+    static std::string survived_text(const SectionProps& section);
     // Beyond it every steel line and most fibre ropes are past breaking at rest: worth a word.
     static constexpr double kStrainWarned = 0.05;
     void update_outputs();

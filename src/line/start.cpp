@@ -307,6 +307,20 @@ double CableSimulation::strain_survived(const SectionProps& section) {
     return section.fluid.massPerLength / section.fluid.area > kSteelDensity ? kSteelStrainRefused : kStrainRefused;
 }
 
+std::string CableSimulation::survived_text(const SectionProps& section) {
+    char text[200];
+    if (strain_survived(section) == kStrainRefused)
+        std::snprintf(text, sizeof text,
+                      "the %.3g %% a fibre rope survives (nylon, the most extensible, breaks at 20-25 %%)",
+                      100.0 * kStrainRefused);
+    else
+        std::snprintf(text, sizeof text,
+                      "the %.3g %% a line with steel in it survives (%.4g kg/m3 for its diameter: chain, wire rope "
+                      "or an armoured cable, which break below 3 %%)",
+                      100.0 * kSteelStrainRefused, section.fluid.massPerLength / section.fluid.area);
+    return text;
+}
+
 bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) const {
     const UCParams& p = model_.params();
     char buffer[700];
@@ -322,20 +336,10 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
         const double stretch = stretched / unstretched;  // 1 + the line's strain survived
         const double reach = stretch * model_.line().length;
         if (d.norm() > reach) {
-            char survived[200];
-            const SectionProps& first = model_.section(0);
-            if (model_.n_sections() > 1)
-                std::snprintf(survived, sizeof survived, "the %.3g %% its sections survive together at rest",
-                              100.0 * (stretch - 1.0));
-            else if (strain_survived(first) == kStrainRefused)
-                std::snprintf(survived, sizeof survived,
-                              "the %.3g %% a fibre rope survives (nylon, the most extensible, breaks at 20-25 %%)",
-                              100.0 * kStrainRefused);
-            else
-                std::snprintf(survived, sizeof survived,
-                              "the %.3g %% a line with steel in it survives (%.4g kg/m3 for its diameter: chain, wire "
-                              "rope or an armoured cable, which break below 3 %%)",
-                              100.0 * kSteelStrainRefused, first.fluid.massPerLength / first.fluid.area);
+            char together[80];
+            std::snprintf(together, sizeof together, "the %.3g %% its sections survive together at rest",
+                          100.0 * (stretch - 1.0));
+            const std::string survived = model_.n_sections() > 1 ? together : survived_text(model_.section(0));
             if (p.lineFile[0] != '\0') {
                 // A deck's points are where its author put them: the line's length is what is short.
                 std::snprintf(buffer, sizeof buffer,
@@ -345,7 +349,8 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
                               "bring its ends within %.6g m of each other",
                               model_.line().length, farPoint.x(), farPoint.y(), farPoint.z(), d.norm(),
                               state_.tow.p().x(), state_.tow.p().y(), state_.tow.p().z(),
-                              100.0 * (d.norm() / model_.line().length - 1.0), survived, d.norm() / stretch, reach);
+                              100.0 * (d.norm() / model_.line().length - 1.0), survived.c_str(), d.norm() / stretch,
+                              reach);
             } else {
                 // Name the coordinate that is farthest off, with the range the others leave it, and the
                 // length the line would need where the anchor is meant to be there.
@@ -359,8 +364,9 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
                               "stretched cable, %.4g x length = %.6g m from the tow point (it is %.6g m away; more "
                               "than %s); or the line is too short: %s = %.6g m, at least %.6g m reaches it",
                               prefix, "xyz"[k], farPoint[k], state_.tow.p()[k] - half, state_.tow.p()[k] + half,
-                              stretch, reach, d.norm(), survived, p.nSections > 1 ? "the sections' length" : "length",
-                              model_.line().length, d.norm() / stretch);
+                              stretch, reach, d.norm(), survived.c_str(),
+                              p.nSections > 1 ? "the sections' length" : "length", model_.line().length,
+                              d.norm() / stretch);
             }
             error = buffer;
             return false;
@@ -480,19 +486,12 @@ bool CableSimulation::check_static_strain(std::string& error) {
     std::snprintf(what, sizeof what, "the line stretches %.3g %% at rest (%.6g N of tension over %.6g to %.6g m)",
                   100.0 * worst, section.axial.EA * worst, model_.element_start(worstElement),
                   model_.element_start(worstElement) + model_.element_length(worstElement));
-    char why[300];
-    if (!refuse)
-        std::snprintf(why, sizeof why, "more than steel wire or chain stretches before it breaks (about 3 %%)");
-    else if (strain_survived(section) == kStrainRefused)
-        std::snprintf(why, sizeof why,
-                      "more than any rope stretches before it breaks (nylon, the most extensible, at about 25 %%); "
-                      "refusing the start");
-    else
-        std::snprintf(why, sizeof why,
-                      "more than the %.3g %% a line with steel in it survives (%.4g kg/m3 for its diameter: chain, wire "
-                      "rope or an armoured cable, which break below 3 %%); refusing the start",
-                      100.0 * kSteelStrainRefused, section.fluid.massPerLength / section.fluid.area);
-    const std::string text = strain_message(model_, section_index(model_, section), worst, what, why);
+    std::string why = "more than steel wire or chain stretches before it breaks (about 3 %)";
+    if (refuse)
+        why = "more than " + survived_text(section) + "; refusing the start";
+    else if (strain_survived(section) == kStrainRefused)  // a rope: within what it survives, a pretension it may hold
+        why += ", within " + survived_text(section);
+    const std::string text = strain_message(model_, section_index(model_, section), worst, what, why.c_str());
     if (refuse) {
         error = text;
         return false;
