@@ -81,8 +81,8 @@ def test_a_spring_within_a_ropes_stretch_at_the_decks_pose_starts_there(fmu_file
     MoorPy's, not the start). Its weight in water, w L = 86.07 N, hangs from the body: the closed form of an
     elastic vertical line, T = EA (5 / 4.5 - 1) +- w L / 2, 98.590 N at the body and 12.521 N at the anchor,
     which the line's cubic elements represent exactly (its tension is linear along it); the strain of the
-    element at the body, 19.3 % (19.7 % at the body itself), is warned of. (At the deck's one segment the static solve does not settle, which the
-    refusal says.)"""
+    element at the body, 19.3 % (19.7 % at the body itself), is warned of. (At the deck's one segment the static
+    solve does not settle, which the refusal says.)"""
     c = CableFMU(fmu_file, parameters={"lineFile": str(BODY_DRAG), "lineFileElements": 16}, logging_on=True)
     try:
         c.initialize()
