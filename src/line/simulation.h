@@ -252,10 +252,13 @@ private:
     static constexpr double kAnchorCheck = 2e-3;
     // The VIV phases' rates (v, free) from the synchronisation model at q_, v, a_ at time t.
     void settle_phase_rates(double t, std::vector<double>& v);
+    // Before the statics: false, naming the line's length and the distance, where the held ends are farther
+    // apart than the line reaches stretched to what each section survives (strain_survived); false where an
+    // end is under the seabed.
     bool check_geometry(const Vec3& farPoint, std::string& error) const;
-    // After the static state is accepted: its largest strain (an element's chord over its length). Beyond
-    // kStrainRefused, false with the section, its EA and the likely cause (EA in the wrong unit);
-    // beyond kStrainWarned, a warning event.
+    // After the static state is accepted: its strains (an element's chord over its length). Beyond what a
+    // section survives (strain_survived), false with the section, its EA and the likely cause (EA in the
+    // wrong unit); beyond kStrainWarned, a warning event.
     bool check_static_strain(std::string& error);
     // After it: false, with the section and the numbers, where the buoyancy the waterline's ramp adds
     // (phi falling over one diameter above z = 0, docs/model.md, "Lines in air and water") exceeds
@@ -269,9 +272,17 @@ private:
     // exceeds kWeightStrainRefused (EA in the wrong unit), which no static solve would settle.
     bool check_weight_strain(std::string& error) const;
     static constexpr double kWeightStrainRefused = 1.0;
-    // Nylon, the most extensible rope moored or towed with, breaks at about 20-25 % elongation; steel
-    // wire and chain below 3 %: a static strain beyond a quarter is no line's (docs/model.md).
+    // The strain a line survives at rest, one policy for where its ends are (check_geometry) and for its
+    // static state (check_static_strain; docs/model.md, "Strain at rest"): nylon, the most extensible rope
+    // moored or towed with, breaks at about 20-25 % elongation, so no fibre rope rests beyond a quarter ...
     static constexpr double kStrainRefused = 0.25;
+    // ... and a section as heavy for its diameter as a line with steel in it (above kSteelDensity: chain,
+    // wire rope, an armoured cable; fibre ropes are 1000-1400 kg/m3) breaks below 3 %: none rests beyond 10 %.
+    static constexpr double kSteelStrainRefused = 0.10;
+    static constexpr double kSteelDensity = 2000.0;  // [kg/m3]: mass per length over pi d^2 / 4
+    static double strain_survived(const SectionProps& section);
+    // "the 25 % a fibre rope survives (...)": what a section survives at rest and why, for the messages.
+    static std::string survived_text(const SectionProps& section);
     // Beyond it every steel line and most fibre ropes are past breaking at rest: worth a word.
     static constexpr double kStrainWarned = 0.05;
     void update_outputs();

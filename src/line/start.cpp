@@ -331,24 +331,54 @@ void CableSimulation::settle_phase_rates(double t, std::vector<double>& v) {
     }
 }
 
+double CableSimulation::strain_survived(const SectionProps& section) {
+    return section.fluid.massPerLength / section.fluid.area > kSteelDensity ? kSteelStrainRefused : kStrainRefused;
+}
+
+std::string CableSimulation::survived_text(const SectionProps& section) {
+    char text[200];
+    if (strain_survived(section) == kStrainRefused)
+        std::snprintf(text, sizeof text,
+                      "the %.3g %% a fibre rope survives (nylon, the most extensible, breaks at 20-25 %%)",
+                      100.0 * kStrainRefused);
+    else
+        std::snprintf(text, sizeof text,
+                      "the %.3g %% a line with steel in it survives (%.4g kg/m3 for its diameter: chain, wire rope "
+                      "or an armoured cable, which break below 3 %%)",
+                      100.0 * kSteelStrainRefused, section.fluid.massPerLength / section.fluid.area);
+    return text;
+}
+
 bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) const {
     const UCParams& p = model_.params();
-    char buffer[600];
+    char buffer[700];
     const char* farName = model_.far_end().anchored ? "anchor.x/y/z" : "end.x/y/z";
     if (model_.far_end().held) {
         const Vec3 d = farPoint - state_.tow.p();
-        const double reach = 1.1 * model_.line().length;
+        // the line stretched to what each section survives at rest: no rope or steel line reaches farther
+        double stretched = 0.0, unstretched = 0.0;
+        for (int k = 0; k < model_.n_sections(); ++k) {
+            stretched += (1.0 + strain_survived(model_.section(k))) * model_.section(k).length;
+            unstretched += model_.section(k).length;
+        }
+        const double stretch = stretched / unstretched;  // 1 + the line's strain survived
+        const double reach = stretch * model_.line().length;
         if (d.norm() > reach) {
+            char together[80];
+            std::snprintf(together, sizeof together, "the %.3g %% its sections survive together at rest",
+                          100.0 * (stretch - 1.0));
+            const std::string survived = model_.n_sections() > 1 ? together : survived_text(model_.section(0));
             if (p.lineFile[0] != '\0') {
                 // A deck's points are where its author put them: the line's length is what is short.
                 std::snprintf(buffer, sizeof buffer,
                               "the line is too short for where its ends are: %.6g m unstretched (the deck's "
                               "UnstrLen), its far end (%.6g, %.6g, %.6g) is %.6g m from the tow point (%.6g, %.6g, "
-                              "%.6g), a stretch of %.3g %%, more than the 10 %% any cable survives; lengthen the "
-                              "line to at least %.6g m or bring its ends within %.6g m of each other",
+                              "%.6g), a stretch of %.3g %%, more than %s; lengthen the line to at least %.6g m or "
+                              "bring its ends within %.6g m of each other",
                               model_.line().length, farPoint.x(), farPoint.y(), farPoint.z(), d.norm(),
                               state_.tow.p().x(), state_.tow.p().y(), state_.tow.p().z(),
-                              100.0 * (d.norm() / model_.line().length - 1.0), d.norm() / 1.1, reach);
+                              100.0 * (d.norm() / model_.line().length - 1.0), survived.c_str(), d.norm() / stretch,
+                              reach);
             } else {
                 // Name the coordinate that is farthest off, with the range the others leave it, and the
                 // length the line would need where the anchor is meant to be there.
@@ -359,12 +389,12 @@ bool CableSimulation::check_geometry(const Vec3& farPoint, std::string& error) c
                 const char* prefix = model_.far_end().anchored ? "anchor" : "end";
                 std::snprintf(buffer, sizeof buffer,
                               "%s.%c = %.17g is outside [%.6g, %.6g]: the far end must lie within the reach of the "
-                              "stretched cable, 1.1 x length = %.6g m from the tow point (it is %.6g m away; more "
-                              "than 10 %% strain, which no cable survives); or the line is too short: %s = %.6g m, "
-                              "at least %.6g m reaches it",
-                              prefix, "xyz"[k], farPoint[k], state_.tow.p()[k] - half, state_.tow.p()[k] + half, reach,
-                              d.norm(), p.nSections > 1 ? "the sections' length" : "length", model_.line().length,
-                              d.norm() / 1.1);
+                              "stretched cable, %.4g x length = %.6g m from the tow point (it is %.6g m away; more "
+                              "than %s); or the line is too short: %s = %.6g m, at least %.6g m reaches it",
+                              prefix, "xyz"[k], farPoint[k], state_.tow.p()[k] - half, state_.tow.p()[k] + half,
+                              stretch, reach, d.norm(), survived.c_str(),
+                              p.nSections > 1 ? "the sections' length" : "length", model_.line().length,
+                              d.norm() / stretch);
             }
             error = buffer;
             return false;
@@ -456,9 +486,10 @@ bool CableSimulation::check_weight_strain(std::string& error) const {
 
 bool CableSimulation::check_static_strain(std::string& error) {
     // Each element's mean strain from its chord (at most its arc: a curved element's is underestimated,
-    // never over): the nodes' tangents carry the element's bending too, and are no measure of it.
-    double worst = 0.0;
-    int worstElement = -1;
+    // never over): the nodes' tangents carry the element's bending too, and are no measure of it. Refused
+    // beyond what its section survives (the element farthest beyond it named), else warned of (the largest).
+    double worst = 0.0, beyond = 1.0;
+    int worstElement = -1, refusedElement = -1;
     for (int e = 0; e < model_.n_elements(); ++e) {
         const int g = model_.element_offset(e);
         const double chord = (Eigen::Map<const Vec3>(X_.data() + g + 6) - Eigen::Map<const Vec3>(X_.data() + g)).norm();
@@ -467,19 +498,28 @@ bool CableSimulation::check_static_strain(std::string& error) {
             worst = strain;
             worstElement = e;
         }
+        if (strain / strain_survived(model_.element_section(e)) > beyond) {
+            beyond = strain / strain_survived(model_.element_section(e));
+            refusedElement = e;
+        }
+    }
+    const bool refuse = refusedElement >= 0;
+    if (refuse) {
+        worstElement = refusedElement;
+        worst = beyond * strain_survived(model_.element_section(refusedElement));
     }
     if (worstElement < 0 || !(worst > kStrainWarned)) return true;
     const SectionProps& section = model_.element_section(worstElement);
-    const bool refuse = worst > kStrainRefused;
     char what[200];
     std::snprintf(what, sizeof what, "the line stretches %.3g %% at rest (%.6g N of tension over %.6g to %.6g m)",
                   100.0 * worst, section.axial.EA * worst, model_.element_start(worstElement),
                   model_.element_start(worstElement) + model_.element_length(worstElement));
-    const std::string text =
-        strain_message(model_, section_index(model_, section), worst, what,
-                       refuse ? "more than any cable, chain or rope stretches before it breaks (nylon, the most "
-                                "extensible, at about 25 %); refusing the start"
-                              : "more than steel wire or chain stretches before it breaks (about 3 %)");
+    std::string why = "more than steel wire or chain stretches before it breaks (about 3 %)";
+    if (refuse)
+        why = "more than " + survived_text(section) + "; refusing the start";
+    else if (strain_survived(section) == kStrainRefused)  // a rope: within what it survives, a pretension it may hold
+        why += ", within " + survived_text(section);
+    const std::string text = strain_message(model_, section_index(model_, section), worst, what, why.c_str());
     if (refuse) {
         error = text;
         return false;

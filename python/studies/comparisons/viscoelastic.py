@@ -1,8 +1,8 @@
 """The viscoelastic axial model (EAdynamic, EAdynamicSlope, axialDampingDynamic; docs/model.md) against
 MoorDyn v2 and MoorPy fed the same deck: MoorDyn's own test deck tests/Mooring/polyester/visco.txt (its
 rope, EA_s|EA_Dc|EA_D_Lm = 1.424e8|1.586e8|0.4 N and BA_s|BA_d = 4e9|11e6 N s, one segment, no gravity),
-with the unstretched length set for a strain of 1 % (the deck's own 100 % is beyond the FMU's 10 % check of
-the ends' positions), the fairlead moved sinusoidally along the line.
+with the unstretched length set for a strain of 1 % (the deck's own 100 % is beyond the 25 % a rope survives,
+refused at the ends' positions), the fairlead moved sinusoidally along the line.
 
 compute() returns the numbers, markdown() the section of docs/model.md between its BEGIN/END marks
 (`python -m studies.comparisons.viscoelastic /path/to/MoorDyn --write`).
