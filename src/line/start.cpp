@@ -596,7 +596,7 @@ bool CableSimulation::verify_statics(std::string& error) const {
 }
 
 std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const EndMotion& far,
-                                         const LineEnvironment& env) const {
+                                         const LineEnvironment& env, std::optional<UCParams>* starts) const {
     const UCParams& p = model_.params();
     const bool sections = p.nSections > 1;
     // The trials share a budget of the static solver's work (kAdviceWork), so that a refusal comes back
@@ -628,8 +628,8 @@ std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const 
         trial.staticWork_ = &work;
         tried += (tried.empty() ? "" : ", ") + std::to_string(sections ? q.section[0].nElements : q.nElements);
         std::string ignored;
-        const bool starts = trial.initialize(t0, tow, far, env, ignored);
-        if (!starts) return false;
+        if (!trial.initialize(t0, tow, far, env, ignored)) return false;
+        if (starts) *starts = q;
         std::string counts = named;
         if (counts.empty() && sections) {
             for (int k = 0; k < p.nSections; ++k)
@@ -650,7 +650,8 @@ std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const 
         // A deck's line: lineFileElements gives every deck line (section) the same count. More
         // elements resolve a sharp touchdown; fewer can settle a short, very stiff line whose
         // elements are far stiffer in bending than its weight can bend.
-        int n = p.nElements;
+        // (n: the most of a section's, where the line has sections; nElements is not theirs)
+        int n = sections ? 1 : p.nElements;
         if (sections)
             for (int k = 0; k < p.nSections; ++k) n = std::max(n, p.section[k].nElements);
         for (int count : {2 * n, 4 * n, 8 * n, 16 * n, n / 2, 1}) {
@@ -858,8 +859,10 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
                 error = firstError;
                 grade_mesh(state_.tow.p(), givenFar, profileApplies_, 0);
             }
-            if (retry && adviseMesh_) error += mesh_advice(t0, tow, far, env);
-            return false;
+            if (!retry || !adviseMesh_) return false;
+            std::optional<UCParams> finer;
+            const std::string advice = mesh_advice(t0, tow, far, env, &finer);
+            return start_on_finer_mesh(t0, tow, far, env, finer, advice, error);
         }
     }
     if (p.initMode == UC_INIT_EQUILIBRIUM && (!check_static_strain(error) || !check_waterline(error))) return false;

@@ -1,0 +1,55 @@
+// deck_mesh.cpp - a deck's line whose NumSegs give too coarse a mesh for a right start: started on the finer
+// mesh the mesh advice finds, with a warning (docs/lines.md, "Elements from NumSegs").
+#include <cstdio>
+#include <string>
+
+#include "line/simulation.h"
+
+namespace uc {
+
+namespace {
+
+// The elements of each section of p, "3" or "6, 3, 3".
+std::string element_counts(const UCParams& p) {
+    if (p.nSections <= 1) return std::to_string(p.nElements);
+    std::string counts;
+    for (int k = 0; k < p.nSections; ++k) counts += (k ? ", " : "") + std::to_string(p.section[k].nElements);
+    return counts;
+}
+
+}  // namespace
+
+bool CableSimulation::start_on_finer_mesh(double t0, const EndMotion& tow, const EndMotion& far,
+                                          const LineEnvironment& env, const std::optional<UCParams>& finer,
+                                          const std::string& advice, std::string& error) {
+    const UCParams deck = model_.params();
+    // Only the elements the deck's NumSegs gave: an explicit lineFileElements is the user's choice, kept and refused.
+    if (!finer || !refineDeckMesh_ || deck.lineFile[0] == '\0' || deck.lineFileElements != 0) {
+        error += advice;
+        return false;
+    }
+    std::string refusal = error;  // the start's check at the deck's elements, without its own "refusing ..."
+    const size_t refusing = refusal.find("; refusing");
+    if (refusing != std::string::npos) refusal.erase(refusing);
+    // the line made again on finer's elements (as the trial that started it), its graded layout anew
+    replace_model(CableModel(*finer, nullptr, nullptr, model_.seabed_grid()));
+    state_.graded = false;
+    layout_ = StaticLayout();
+    const int count = finer->nSections > 1 ? finer->section[0].nElements : finer->nElements;
+    if (releasedParams_) {  // what the line becomes where its end lets go: on the same elements
+        releasedParams_->nElements = count;
+        for (int k = 0; k < releasedParams_->nSections; ++k) releasedParams_->section[k].nElements = count;
+    }
+    if (!initialize(t0, tow, far, env, error)) return false;
+    char text[1600];
+    std::snprintf(text, sizeof text,
+                  "warning: the deck's NumSegs give the line %s elements, too coarse for its start (%s); started on "
+                  "%s elements instead, the first count that passes (tow tension %.6g N, far end %.6g N); set "
+                  "lineFileElements to choose (an explicit one is kept, and refused where wrong)",
+                  element_counts(deck).c_str(), refusal.c_str(), element_counts(*finer).c_str(),
+                  state_.outputs.towTension, state_.outputs.endTension);
+    add_event(text);
+    return true;
+}
+
+}  // namespace uc
