@@ -233,6 +233,14 @@ private:
                             std::optional<UCParams>* starts = nullptr) const;
     bool adviseMesh_ = true;  // off in the trial runs of mesh_advice
     bool refineDeckMesh_ = true;
+    // The deck's own parameters of a line started on a finer mesh (start_on_finer_mesh), else null.
+    std::unique_ptr<UCParams> deckParams_;
+    // A restore of a state whose line has `elements` elements where this deck line (its elements from NumSegs)
+    // has others: the line made again on the state's mesh, the deck's or a finer one that started it (every
+    // deck line the same count). False where it is neither.
+    bool adopt_deck_mesh(int elements);
+    // The line made again on p's elements (what it becomes where its end lets go too).
+    void remesh_deck_line(const UCParams& p);
     // A deck's line on its NumSegs' elements (lineFileElements 0) whose start was refused (refusal) and
     // on which finer (mesh_advice's trial) starts: the line made again on finer's elements and started,
     // with a warning naming both counts and the refusal (deck_mesh.cpp). False (error the refusal with

@@ -102,3 +102,13 @@ def test_bodies_and_rods_starts_its_lazy_wave_cable_on_a_finer_mesh_balanced(fmu
     assert max(r["points"].values()) < 0.05  # the cable's free points [m] (measured 8 mm)
     assert np.abs(r["force"]).max() < 1e-6 and np.abs(r["moment"]).max() < 1e-6, (r["force"], r["moment"])
     assert np.abs(r["pin_moment"]).max() < 1e-6, r["pin_moment"]
+
+
+def test_a_state_on_the_finer_mesh_continues_in_an_instance_started_on_the_decks(graded_state_continuation, lazy_wave):
+    """The cable started with its top at (0, 0, -8) m runs on the finer mesh (the warning above); a fresh
+    instance started with its top 20 m farther out, where the deck's 6 + 3 + 3 elements pass the check, takes
+    its serialized state (the line made again on the state's mesh) and continues exactly as the first."""
+    parameters = {"lineFile": str(lazy_wave), "enableSeabed": True, "seabedStiffness": 3e6 * 0.175,
+                  "seabedDamping": 3e5 * 0.175, "enableCompression": False}
+    first, second = graded_state_continuation(parameters, -8.0, {"tow.x": 20.0}, ["towTension", "endTension"])
+    np.testing.assert_array_equal(first, second)
