@@ -36,7 +36,10 @@ bool CableSimulation::start_on_finer_mesh(double t0, const EndMotion& tow, const
     // the line made again on finer's elements (as the trial that started it)
     if (!deckParams_) deckParams_ = std::make_unique<UCParams>(deck);
     remesh_deck_line(*finer);
-    if (!initialize(t0, tow, far, env, error)) return false;
+    refineDeckMesh_ = false;  // (the trial's start, repeated: no second refinement from there)
+    const bool started = initialize(t0, tow, far, env, error);
+    refineDeckMesh_ = true;
+    if (!started) return false;
     char text[1600];
     std::snprintf(text, sizeof text,
                   "warning: the deck's NumSegs give the line %s elements, too coarse for its start (%s); started on "

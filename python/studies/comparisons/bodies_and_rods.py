@@ -30,6 +30,7 @@ from ucable.fmu import CableFMU
 from ucable.paths import REPO_ROOT
 from ucable.units import STANDARD_GRAVITY as G, WATER_DENSITY as RHO
 from . import public_decks as pd
+from ..peers import moorpy
 
 DECK = REPO_ROOT / "tests" / "data" / "decks" / "md_tests_Mooring_BodiesAndRods.dat"
 # the deck's body and rods (BODIES, ROD TYPES, RODS)
@@ -74,8 +75,10 @@ def can_loads(a: np.ndarray, b: np.ndarray, d: float, mass_per_length: float):
 
 
 def fmu_start(fmu: Path, path: Path) -> dict:
-    s, options, _ = pd.moorpy_system(path)
-    parameters, inputs = pd.setup(path, s if s is not None and s.lineList else None, options)
+    """The FMU's start as the census makes it (public_decks.setup from MoorPy's reading of the deck, not its
+    statics, which fail on this deck)."""
+    s = moorpy.system(path, rho=RHO, g=G)
+    parameters, inputs = pd.setup(path, s, {k.lower(): v for k, v in s.MDoptions.items()})
     c = CableFMU(fmu, parameters=parameters, logging_on=True)
     try:
         c.initialize(inputs=inputs)
