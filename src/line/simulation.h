@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -99,6 +100,10 @@ public:
     // given accelerations seed the tow point's trajectory.
     bool initialize(double t0, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env,
                     std::string& error);
+    // Whether initialize may start a deck line refused on its NumSegs' elements on the finer mesh the
+    // mesh advice finds, with a warning (on by default; a mooring system's trial positions of its free
+    // points turn it off: a refusal there only rejects the trial).
+    void refine_deck_mesh(bool on) { refineDeckMesh_ = on; }
     // The FMU's step: unpacks in into the ends' motion and the environment and takes step below.
     bool step(double t, double h, const UCInputs& in, std::string& error) override;
     // One communication step of h seconds from time() with the tow end and the far end (its motion
@@ -234,8 +239,25 @@ private:
     // After a static state not found or refused, for a line given by parameters: the finer mesh
     // (twice, then four times the elements of every section) on which the same line starts, as
     // advice to append to the message; which knob to turn where no such mesh was found.
-    std::string mesh_advice(double t0, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env) const;
+    // starts (if given): the parameters of the trial that started, where one did.
+    std::string mesh_advice(double t0, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env,
+                            std::optional<UCParams>* starts = nullptr) const;
     bool adviseMesh_ = true;  // off in the trial runs of mesh_advice
+    bool refineDeckMesh_ = true;
+    // The deck's own parameters of a line started on a finer mesh (start_on_finer_mesh), else null.
+    std::unique_ptr<UCParams> deckParams_;
+    // A restore of a state whose line has `elements` elements where this deck line (its elements from NumSegs)
+    // has others: the line made again on the state's mesh, the deck's or a finer one that started it (every
+    // deck line the same count). False where it is neither.
+    bool adopt_deck_mesh(int elements);
+    // The line made again on p's elements (what it becomes where its end lets go too).
+    void remesh_deck_line(const UCParams& p);
+    // A deck's line on its NumSegs' elements (lineFileElements 0) whose start was refused (refusal) and
+    // on which finer (mesh_advice's trial) starts: the line made again on finer's elements and started,
+    // with a warning naming both counts and the refusal (deck_mesh.cpp). False (error the refusal with
+    // the advice) where the elements are the user's or no count started the line.
+    bool start_on_finer_mesh(double t0, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env,
+                             const std::optional<UCParams>& finer, const std::string& advice, std::string& error);
     // The trials' shared work budget of mesh_advice [element iterations of the static solver]: a trial
     // run's static solves draw on it (null: no limit).
     double* staticWork_ = nullptr;

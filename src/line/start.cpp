@@ -665,7 +665,7 @@ bool CableSimulation::verify_statics(std::string& error) const {
 }
 
 std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const EndMotion& far,
-                                         const LineEnvironment& env) const {
+                                         const LineEnvironment& env, std::optional<UCParams>* starts) const {
     const UCParams& p = model_.params();
     const bool sections = p.nSections > 1;
     // The trials share a budget of the static solver's work (kAdviceWork), so that a refusal comes back
@@ -697,8 +697,8 @@ std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const 
         trial.staticWork_ = &work;
         tried += (tried.empty() ? "" : ", ") + std::to_string(sections ? q.section[0].nElements : q.nElements);
         std::string ignored;
-        const bool starts = trial.initialize(t0, tow, far, env, ignored);
-        if (!starts) return false;
+        if (!trial.initialize(t0, tow, far, env, ignored)) return false;
+        if (starts) *starts = q;
         std::string counts = named;
         if (counts.empty() && sections) {
             for (int k = 0; k < p.nSections; ++k)
@@ -719,7 +719,8 @@ std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const 
         // A deck's line: lineFileElements gives every deck line (section) the same count. More
         // elements resolve a sharp touchdown; fewer can settle a short, very stiff line whose
         // elements are far stiffer in bending than its weight can bend.
-        int n = p.nElements;
+        // (n: the most of a section's, where the line has sections; nElements is not theirs)
+        int n = sections ? 1 : p.nElements;
         if (sections)
             for (int k = 0; k < p.nSections; ++k) n = std::max(n, p.section[k].nElements);
         for (int count : {2 * n, 4 * n, 8 * n, 16 * n, n / 2, 1}) {
@@ -993,9 +994,11 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
         }
         if (!start_in_still_water(t0, error)) return false;
     }
-    if (!settled) {
-        if (retry && adviseMesh_) error += mesh_advice(t0, tow, far, env);
-        return false;
+    if (!settled) {  // a deck's line on too coarse a mesh starts on the first finer one that passes (deck_mesh.cpp)
+        if (!retry || !adviseMesh_) return false;
+        std::optional<UCParams> finer;
+        const std::string advice = mesh_advice(t0, tow, far, env, &finer);
+        return start_on_finer_mesh(t0, tow, far, env, finer, advice, error);
     }
     if (p.initMode == UC_INIT_EQUILIBRIUM && (!check_static_strain(error) || !check_waterline(error))) return false;
     warn_beyond_curve();

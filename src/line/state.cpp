@@ -107,6 +107,8 @@ bool CableSimulation::restore_state(const void* buffer, size_t size, std::string
             rebuild(WinchMesh{header.winchElements, header.winchMeshTop});
         }
     }
+    if (ours && header.nElements != model_.n_elements() && adopt_deck_mesh(header.nElements))
+        touched = true;  // a deck line's state on a finer mesh than its NumSegs' (deck_mesh.cpp), or the other way
     if (ours) {
         // A graded mesh is graded again for the tow point it was made for (on the held line: a released
         // line's mesh is its held mesh's, made again from it).

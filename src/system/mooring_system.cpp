@@ -914,10 +914,17 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
     // the residual (kept through the iterations with the lines' own static solutions, where each
     // evaluation is a static solve of the lines: a chord method that converges linearly and fast, the
     // profiles' Jacobian being that of the lines' solutions within their discretization).
+    // a deck's line refused on its NumSegs' elements at the nodes' positions starts on a finer mesh, with a warning
+    // (docs/lines.md), at those positions (the nodes' first and last residuals), not at a Newton step's trial
+    auto refine_lines = [&](bool on) {
+        for (auto& line : lines_) line->refine_deck_mesh(on);
+    };
     auto newton = [&](bool profile, double tolerance, std::string& why) -> bool {
+        refine_lines(true);
         if (!node_residual(x, in, profile, r, why)) return false;
         for (int it = 0; it < kStaticIterations; ++it, ++nodeIterations_) {
             if (r.lpNorm<Eigen::Infinity>() <= tolerance) return true;
+            refine_lines(false);  // a trial position's refusal rejects the trial (not the deck's mesh)
             if (profile || !haveJacobian) {
                 // [m]: the profiles are smooth (truncation ~d^2); the lines' solutions get 10 um, within the
                 // slack law's ramp of a stiff tether (1e-5 strain), which 1 mm steps straddle
@@ -963,6 +970,7 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
                 std::string trial;
                 accepted = node_residual(xt, in, profile, rt, trial) && rt.norm() < (1.0 - 1e-4 * a) * r.norm();
             }
+            refine_lines(true);
             if (!accepted && !profile && !fresh) {
                 haveJacobian = false;
                 continue;
@@ -1000,6 +1008,7 @@ bool MooringSystem::solve_nodes(double t0, const UCInputs& in, std::string& erro
         return false;
     }
     // the lines stand initialized where the last residual put them: at x, unless a trial came after it
+    refine_lines(true);
     if (!node_residual(x, in, false, r, error)) return false;
     nodeResidual_ = r.lpNorm<Eigen::Infinity>();
     return true;

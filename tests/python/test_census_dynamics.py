@@ -256,6 +256,8 @@ EXPLAINED = {
     "md:example/MHK_RM1_Floating/MHK_RM1_Floating_MoorDyn.dat", "md:tests/Mooring/lifting.txt", "md:tests/Mooring/local_euler/complex_system.txt",
     "md:tests/Mooring/local_euler/hanging.txt", "md:tests/Mooring/riser/riser_ic1.txt", "mp:tests/case2.dat",
     "mp:tests/case3.dat", "mp:tests/case4.dat", "mp:tests/case6.dat", "md:tests/Mooring/wavekin_7/wavekin_7.txt",
+    # (BodiesAndRods: MoorDyn's run drops its free body from the deck's pose, its cans 2 m above the water)
+    "md:tests/Mooring/BodiesAndRods.dat",
     # MoorDyn's local Euler step on the finer of two identical lines; its axially driven beam's vibration
     "md:tests/Mooring/local_euler/duplicated.txt", "md:tests/Mooring/BeamSimplySupported.txt",
     # seabed: MoorDyn's vertical contact on a slope; its friction against the FMU's Coulomb friction at the anchors
