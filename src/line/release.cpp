@@ -1,6 +1,6 @@
 // release.cpp - a held end that lets go (docs/line_failure.md): the line's model made again with a bare far end,
-// its nodes' state carried over (node by node, or mirrored where the tow end lets go and the line is run from its
-// far end), the integrator restarted once from there.
+// its state carried over (node by node and element by element: internal strains, VIV phases and Syrope history;
+// mirrored where the tow end lets go and the line is run from its far end), the integrator restarted once from there.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +9,45 @@
 #include "line/simulation_internal.h"
 
 namespace uc {
+
+namespace {
+
+// What an element carries besides its nodes: its own unknowns (the internal strain of a viscoelastic element or
+// the slow strain of a Syrope element, the VIV phase), each with its rate, and its Syrope history (the largest mean
+// tension so far, as a strain). A released line's element takes it over from the held line's element it is.
+struct ElementState {
+    double unknown[2][2] = {};      // [internal strain, phase][value, rate]
+    bool has[2] = {false, false};   // the element has the unknown
+    double history = 0.0;           // (a line without a Syrope element has none)
+
+    static int offset(const CableModel& model, int e, int k) {
+        return k == 0 ? model.internal_offset(e) : model.phase_offset(e);
+    }
+    ElementState(const CableModel& model, int e, const std::vector<double>& X, const std::vector<double>& Xd,
+                 const std::vector<double>& histories) {
+        for (int k = 0; k < 2; ++k) {
+            const int g = offset(model, e, k);
+            has[k] = g >= 0;
+            if (has[k]) {
+                unknown[k][0] = X[g];
+                unknown[k][1] = Xd[g];
+            }
+        }
+        if (!histories.empty()) history = histories[e];
+    }
+    void put(const CableModel& model, int e, std::vector<double>& X, std::vector<double>& Xd,
+             std::vector<double>& histories) const {
+        for (int k = 0; k < 2; ++k) {
+            const int g = offset(model, e, k);
+            if (g < 0 || !has[k]) continue;
+            X[g] = unknown[k][0];
+            Xd[g] = unknown[k][1];
+        }
+        if (!histories.empty()) histories[e] = history;
+    }
+};
+
+}  // namespace
 
 void CableSimulation::prepare_release(const UCParams& released, bool flip) {
     releasedParams_ = std::make_unique<UCParams>(released);
@@ -73,15 +112,12 @@ bool CableSimulation::release(double time, std::string& error) {
     const std::vector<double> X = X_, Xd = Xd_;
     const int slots = model_.n_slots();
     const Vec3 far(X[model_.end_offset()], X[model_.end_offset() + 1], X[model_.end_offset() + 2]);
-    std::vector<int> heldPhase(model_.n_elements());
-    for (int e = 0; e < model_.n_elements(); ++e) heldPhase[e] = model_.phase_offset(e);
+    std::vector<ElementState> held;
+    for (int e = 0; e < model_.n_elements(); ++e) held.emplace_back(model_, e, X, Xd, syropeHistory_);
     if (!build_released(releaseFlip_ ? 2 : 1, error)) return false;
-    for (int e = 0; e < model_.n_elements(); ++e) {  // the VIV phases carried over, element by element
-        const int g = model_.phase_offset(e), h = heldPhase[releaseFlip_ ? model_.n_elements() - 1 - e : e];
-        if (g < 0 || h < 0) continue;
-        X_[g] = X[h];
-        Xd_[g] = Xd[h];
-    }
+    const int elements = model_.n_elements();
+    for (int e = 0; e < elements; ++e)  // flipped: element e is the held element elements - 1 - e
+        held[releaseFlip_ ? elements - 1 - e : e].put(model_, e, X_, Xd_, syropeHistory_);
     for (int j = 0; j < slots; ++j) {  // flipped: slot j is the held slot slots - 1 - j, its tangent reversed
         const int i = releaseFlip_ ? slots - 1 - j : j;
         const double sign = releaseFlip_ ? -1.0 : 1.0;

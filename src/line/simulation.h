@@ -169,6 +169,9 @@ public:
 
     // Free positions q and velocities v of the current state (for tests).
     void free_state(std::vector<double>& q, std::vector<double>& v, std::vector<double>& a) const;
+    // The global coordinates X and their rates Xd the last outputs were made from (for tests).
+    const std::vector<double>& global_coordinates() const { return X_; }
+    const std::vector<double>& global_rates() const { return Xd_; }
     // The time integrator (for tests of its linear algebra paths).
     Integrator& integrator() { return *integrator_; }
 
