@@ -291,6 +291,17 @@ private:
     // whose start would rest on the ramp, not on its submerged length.
     bool check_waterline(std::string& error) const;
     static constexpr double kWaterlineRefused = 0.1;
+    // After it, in waves (the line's own sea, not water pushed by the importer): false, with the length
+    // and the load, where the line's length within the waves' reach of the surface (|z| below the sum of
+    // the components' amplitudes, or Hs where that is less), times the buoyancy and the normal drag of the fastest surface water per
+    // metre, exceeds kWaveZoneRefused of the line's largest tension. The model wets a line below z = 0,
+    // not below the moving surface (docs/waves.md, "The waterline"): that load is what it may put on the
+    // wrong side of the surface. A tenth keeps the error this may make in the line's tension near a tenth
+    // (a load moved on a line changes its end forces by at most about as much, less over a catenary's
+    // slope), as kWaterlineRefused does for the ramp; wave_surface's chains through the crest, whose
+    // misplaced load is several times their tension, are 19-27 % off MoorDyn in mean tension.
+    bool check_wave_zone(std::string& error) const;
+    static constexpr double kWaveZoneRefused = 0.1;
     // Appends a message to the step's events (one a line, append_event).
     void add_event(const std::string& text);
     // Before the static solver: false where the line's whole weight in water over a section's EA
