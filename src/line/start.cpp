@@ -620,7 +620,7 @@ bool CableSimulation::check_wave_zone(std::string& error) const {
                   "%.4g m of the line lie within the waves' reach of the surface (|z| < %.4g m; the water there "
                   "up to %.4g m/s): the FMU wets a line below the mean water "
                   "level z = 0, not below the wave's surface, which would misplace up to %.4g N of buoyancy and wave "
-                  "drag there, %.3g %% of its largest tension %.6g N; refusing the start (set the waves off "
+                  "drag there, %.1f %% of its largest tension %.6g N; refusing the start (set the waves off "
                   "(waves.mode 0, a deck's WaveKin 0) or keep the line below z = -%.4g m)",
                   length, reach, speed, load, 100.0 * load / largest, largest, reach);
     error = text;
