@@ -242,9 +242,12 @@ private:
     // After a static state not found or refused, for a line given by parameters: the finer mesh
     // (twice, then four times the elements of every section) on which the same line starts, as
     // advice to append to the message; which knob to turn where no such mesh was found.
-    // starts (if given): the parameters of the trial that started, where one did.
+    // starts (if given): the parameters of the trial that started, where one did. waveZone (if given): where a
+    // trial's start is found but lies in the wave zone (check_wave_zone), that refusal (no mesh helps it):
+    // the search stops there.
     std::string mesh_advice(double t0, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env,
-                            std::optional<UCParams>* starts = nullptr) const;
+                            std::optional<UCParams>* starts = nullptr, std::string* waveZone = nullptr) const;
+    std::string waveZoneRefusal_;  // check_wave_zone's refusal of this start, else empty
     bool adviseMesh_ = true;  // off in the trial runs of mesh_advice
     bool refineDeckMesh_ = true;
     // The deck's own parameters of a line started on a finer mesh (start_on_finer_mesh), else null.

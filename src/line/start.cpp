@@ -725,7 +725,8 @@ bool CableSimulation::verify_statics(std::string& error) const {
 }
 
 std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const EndMotion& far,
-                                         const LineEnvironment& env, std::optional<UCParams>* starts) const {
+                                         const LineEnvironment& env, std::optional<UCParams>* starts,
+                                         std::string* waveZone) const {
     const UCParams& p = model_.params();
     const bool sections = p.nSections > 1;
     // The trials share a budget of the static solver's work (kAdviceWork), so that a refusal comes back
@@ -757,7 +758,11 @@ std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const 
         trial.staticWork_ = &work;
         tried += (tried.empty() ? "" : ", ") + std::to_string(sections ? q.section[0].nElements : q.nElements);
         std::string ignored;
-        if (!trial.initialize(t0, tow, far, env, ignored)) return false;
+        if (!trial.initialize(t0, tow, far, env, ignored)) {
+            if (waveZone && !trial.waveZoneRefusal_.empty())
+                *waveZone = trial.waveZoneRefusal_ + " (its start found on " + std::to_string(sections ? q.section[0].nElements : q.nElements) + " elements)";
+            return false;
+        }
         if (starts) *starts = q;
         std::string counts = named;
         if (counts.empty() && sections) {
@@ -788,12 +793,14 @@ std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const 
             if (trial_starts([count](int) { return count; }, "lineFileElements = " + std::to_string(count), advice,
                              beyond))
                 return advice;
+            if (waveZone && !waveZone->empty()) return std::string();
             if (work <= 0.0) return cut_short();
         }
         return "; neither more nor fewer elements (lineFileElements) resolve the line";
     }
     for (int factor : {2, 4}) {
         if (trial_starts([factor](int elements) { return factor * elements; }, "", advice, beyond)) return advice;
+        if (waveZone && !waveZone->empty()) return std::string();
         if (beyond) break;  // beyond the elements a line may have
         if (work <= 0.0) return cut_short();
     }
@@ -1057,11 +1064,20 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
     if (!settled) {  // a deck's line on too coarse a mesh starts on the first finer one that passes (deck_mesh.cpp)
         if (!retry || !adviseMesh_) return false;
         std::optional<UCParams> finer;
-        const std::string advice = mesh_advice(t0, tow, far, env, &finer);
+        std::string waveZone;
+        const std::string advice = mesh_advice(t0, tow, far, env, &finer, &waveZone);
+        if (!waveZone.empty()) {  // found on a finer mesh, and in the wave zone on any
+            error = waveZone;
+            return false;
+        }
         return start_on_finer_mesh(t0, tow, far, env, finer, advice, error);
     }
-    if (p.initMode == UC_INIT_EQUILIBRIUM && (!check_static_strain(error) || !check_waterline(error) ||
-                                               !check_wave_zone(error))) return false;
+    if (p.initMode == UC_INIT_EQUILIBRIUM && (!check_static_strain(error) || !check_waterline(error))) return false;
+    waveZoneRefusal_.clear();
+    if (p.initMode == UC_INIT_EQUILIBRIUM && !check_wave_zone(error)) {
+        waveZoneRefusal_ = error;
+        return false;
+    }
     warn_beyond_curve();
     if (off_) {  // consistent: the winch runs at the rate of the initial tension
         double R[12];
