@@ -242,9 +242,12 @@ private:
     // After a static state not found or refused, for a line given by parameters: the finer mesh
     // (twice, then four times the elements of every section) on which the same line starts, as
     // advice to append to the message; which knob to turn where no such mesh was found.
-    // starts (if given): the parameters of the trial that started, where one did.
+    // starts (if given): the parameters of the trial that started, where one did. waveZone (if given): where a
+    // trial's start is found but lies in the wave zone (check_wave_zone), that refusal (no mesh helps it):
+    // the search stops there.
     std::string mesh_advice(double t0, const EndMotion& tow, const EndMotion& far, const LineEnvironment& env,
-                            std::optional<UCParams>* starts = nullptr) const;
+                            std::optional<UCParams>* starts = nullptr, std::string* waveZone = nullptr) const;
+    std::string waveZoneRefusal_;  // check_wave_zone's refusal of this start, else empty
     bool adviseMesh_ = true;  // off in the trial runs of mesh_advice
     bool refineDeckMesh_ = true;
     // The deck's own parameters of a line started on a finer mesh (start_on_finer_mesh), else null.
@@ -291,6 +294,17 @@ private:
     // whose start would rest on the ramp, not on its submerged length.
     bool check_waterline(std::string& error) const;
     static constexpr double kWaterlineRefused = 0.1;
+    // After it, in waves (the line's own sea, not water pushed by the importer): false, with the length
+    // and the load, where the line's length within the waves' reach of the surface (|z| below the sum of
+    // the components' amplitudes, or Hs where that is less), times the buoyancy and the normal drag of the fastest surface water per
+    // metre, exceeds kWaveZoneRefused of the line's largest tension. The model wets a line below z = 0,
+    // not below the moving surface (docs/waves.md, "The waterline"): that load is what it may put on the
+    // wrong side of the surface. A tenth keeps the error this may make in the line's tension near a tenth
+    // (a load moved on a line changes its end forces by at most about as much, less over a catenary's
+    // slope), as kWaterlineRefused does for the ramp; wave_surface's chains through the crest, whose
+    // misplaced load is several times their tension, are 19-27 % off MoorDyn in mean tension.
+    bool check_wave_zone(std::string& error) const;
+    static constexpr double kWaveZoneRefused = 0.1;
     // Appends a message to the step's events (one a line, append_event).
     void add_event(const std::string& text);
     // Before the static solver: false where the line's whole weight in water over a section's EA

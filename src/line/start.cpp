@@ -567,6 +567,66 @@ bool CableSimulation::check_waterline(std::string& error) const {
     return false;
 }
 
+namespace {
+
+// The sums over a sea's components (the seas of the other directions of travel added) of the amplitudes
+// a and of the squares a^2, and of the horizontal speeds of the water at the mean level,
+// u = a w coth(k h) = velocityScale (1 + e^{-2kh}) (a w in deep water), and of their squares.
+void wave_sums(const SeaState& sea, double sums[4]) {
+    for (const WaveComponent& c : sea.components()) {
+        const double u = c.velocityScale * (1.0 + c.bottom);
+        sums[0] += c.amplitude;
+        sums[1] += c.amplitude * c.amplitude;
+        sums[2] += u;
+        sums[3] += u * u;
+    }
+    for (const SeaState& group : sea.groups()) wave_sums(group, sums);
+}
+
+}  // namespace
+
+bool CableSimulation::check_wave_zone(std::string& error) const {
+    // The line's length within the waves' reach of the surface (|z| < eta, 64 points an element, midpoint
+    // rule), each metre weighted by the buoyancy and the normal drag of the fastest surface water, the loads
+    // the waterline z = 0 puts on the wrong side of the moving surface (docs/waves.md, "The waterline").
+    const SeaState& sea = model_.sea();
+    if (sea.calm() || model_.params().waterSource == 1) return true;
+    // The surface's reach and the water's speed there: at most the sum of the components' (all in phase);
+    // for many components in random phases the surface is Gaussian of variance sum a^2 / 2, whose crests
+    // pass 4 sigma (Hs) once in e^8 = 3000 waves: that bound is taken where it is the smaller.
+    double sums[4] = {0.0, 0.0, 0.0, 0.0};
+    wave_sums(sea, sums);
+    const double reach = std::min(sums[0], 4.0 * std::sqrt(0.5 * sums[1]));
+    const double speed = std::min(sums[2], 4.0 * std::sqrt(0.5 * sums[3]));
+    constexpr int kPoints = 64;
+    double length = 0.0, load = 0.0;
+    for (int e = 0; e < model_.n_elements(); ++e) {
+        const FluidProps& fluid = model_.element_section(e).fluid;
+        const double* X = X_.data() + model_.element_offset(e);
+        const double l = model_.element_length(e);
+        if (std::min(X[2], X[8]) >= reach + 0.5 * l || std::max(X[2], X[8]) <= -reach - 0.5 * l) continue;
+        int inside = 0;
+        for (int k = 0; k < kPoints; ++k)
+            if (std::abs(interpolate(hermite_shape((k + 0.5) / kPoints, l).N, X).z()) < reach) ++inside;
+        const double zone = inside * l / kPoints;
+        length += zone;
+        load += zone * (fluid.rho * fluid.area * fluid.gravity + 0.5 * fluid.rho * fluid.Cdn * fluid.diameter * speed * speed);
+    }
+    double largest = std::max(state_.outputs.towTension, state_.outputs.endTension);
+    for (double t : state_.outputs.tension) largest = std::max(largest, t);
+    if (!(load > kWaveZoneRefused * largest)) return true;
+    char text[800];
+    std::snprintf(text, sizeof text,
+                  "%.4g m of the line lie within the waves' reach of the surface (|z| < %.4g m; the water there "
+                  "up to %.4g m/s): the FMU wets a line below the mean water "
+                  "level z = 0, not below the wave's surface, which would misplace up to %.4g N of buoyancy and wave "
+                  "drag there, %.1f %% of its largest tension %.6g N; refusing the start (set the waves off "
+                  "(waves.mode 0, a deck's WaveKin 0) or keep the line below z = -%.4g m)",
+                  length, reach, speed, load, 100.0 * load / largest, largest, reach);
+    error = text;
+    return false;
+}
+
 // A line without bending stiffness that is longer than the way down to the seabed and across to
 // its anchor rests on a frictionless seabed with no tension at all, in no one shape: refused with
 // the lengths that would give it one.
@@ -665,7 +725,8 @@ bool CableSimulation::verify_statics(std::string& error) const {
 }
 
 std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const EndMotion& far,
-                                         const LineEnvironment& env, std::optional<UCParams>* starts) const {
+                                         const LineEnvironment& env, std::optional<UCParams>* starts,
+                                         std::string* waveZone) const {
     const UCParams& p = model_.params();
     const bool sections = p.nSections > 1;
     // The trials share a budget of the static solver's work (kAdviceWork), so that a refusal comes back
@@ -697,7 +758,11 @@ std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const 
         trial.staticWork_ = &work;
         tried += (tried.empty() ? "" : ", ") + std::to_string(sections ? q.section[0].nElements : q.nElements);
         std::string ignored;
-        if (!trial.initialize(t0, tow, far, env, ignored)) return false;
+        if (!trial.initialize(t0, tow, far, env, ignored)) {
+            if (waveZone && !trial.waveZoneRefusal_.empty())
+                *waveZone = trial.waveZoneRefusal_ + " (its start found on " + std::to_string(sections ? q.section[0].nElements : q.nElements) + " elements)";
+            return false;
+        }
         if (starts) *starts = q;
         std::string counts = named;
         if (counts.empty() && sections) {
@@ -728,12 +793,14 @@ std::string CableSimulation::mesh_advice(double t0, const EndMotion& tow, const 
             if (trial_starts([count](int) { return count; }, "lineFileElements = " + std::to_string(count), advice,
                              beyond))
                 return advice;
+            if (waveZone && !waveZone->empty()) return std::string();
             if (work <= 0.0) return cut_short();
         }
         return "; neither more nor fewer elements (lineFileElements) resolve the line";
     }
     for (int factor : {2, 4}) {
         if (trial_starts([factor](int elements) { return factor * elements; }, "", advice, beyond)) return advice;
+        if (waveZone && !waveZone->empty()) return std::string();
         if (beyond) break;  // beyond the elements a line may have
         if (work <= 0.0) return cut_short();
     }
@@ -997,10 +1064,20 @@ bool CableSimulation::initialize(double t0, const EndMotion& tow, const EndMotio
     if (!settled) {  // a deck's line on too coarse a mesh starts on the first finer one that passes (deck_mesh.cpp)
         if (!retry || !adviseMesh_) return false;
         std::optional<UCParams> finer;
-        const std::string advice = mesh_advice(t0, tow, far, env, &finer);
+        std::string waveZone;
+        const std::string advice = mesh_advice(t0, tow, far, env, &finer, &waveZone);
+        if (!waveZone.empty()) {  // found on a finer mesh, and in the wave zone on any
+            error = waveZone;
+            return false;
+        }
         return start_on_finer_mesh(t0, tow, far, env, finer, advice, error);
     }
     if (p.initMode == UC_INIT_EQUILIBRIUM && (!check_static_strain(error) || !check_waterline(error))) return false;
+    waveZoneRefusal_.clear();
+    if (p.initMode == UC_INIT_EQUILIBRIUM && !check_wave_zone(error)) {
+        waveZoneRefusal_ = error;
+        return false;
+    }
     warn_beyond_curve();
     if (off_) {  // consistent: the winch runs at the rate of the initial tension
         double R[12];

@@ -245,3 +245,61 @@ TEST(StillWaterStart, OtherRefusalsStayRefusals) {
     EXPECT_EQ(error.find("EA = 1674 N: "), 0u) << error;
     EXPECT_EQ(sim.take_event().find("still water"), std::string::npos);
 }
+
+namespace {
+
+// A 13.3 mm chain (1.1 kg/m, EA 7.51 MN, Cdn 2.4) in 30 m of water, from the tow point `top` to the anchor
+// `anchor`, in a regular wave 10 m high of 0.4 rad/s (surface water up to a w coth(k h) = 3.1 m/s): the
+// chain of MoorDyn's wave_surface deck. Calm with height 0.
+UCParams surface_chain(double length, const Vec3& anchor, double waveHeight) {
+    UCParams p;
+    uc_params_default(&p);
+    p.length = length;
+    p.diameter = 13.332e-3;
+    p.massPerLength = 1.1;
+    p.EA = 7.51e6;
+    p.EI = 0;
+    p.enableBending = 0;
+    p.Cdn = 2.4;
+    p.Cdt = 1.15;
+    p.nElements = 25;
+    p.bottomEnd = UC_BOTTOM_ANCHORED;
+    for (int i = 0; i < 3; ++i) p.anchor[i] = anchor[i];
+    p.waterDepth = 30;
+    p.wavesMode = waveHeight > 0.0 ? 1 : 0;
+    p.wavesHeight = waveHeight;
+    p.wavesPeriod = 2.0 * kPi / 0.4;
+    return p;
+}
+
+}  // namespace
+
+TEST(WaveZone, AChainHangingThroughTheWavesIsRefusedNamingTheConvention) {
+    // 50 m between points 40 m apart, 3 m above the water (wave_surface's line 4): it sags to about 9 m down,
+    // some 20 m of it within 5 m of the surface, where each metre may take 1.4 N of buoyancy and about
+    // 160 N of wave drag on the wrong side of the moving surface: ten times its tension (about 290 N).
+    UCInputs in{};
+    in.tow[2] = 3.0;
+    std::string error;
+    CableSimulation sim(surface_chain(50.0, Vec3(-40.0, 0.0, 3.0), 10.0));
+    EXPECT_FALSE(sim.initialize(0.0, in, error));
+    EXPECT_NE(error.find("m of the line lie within the waves' reach of the surface (|z| < 5 m;"), std::string::npos) << error;
+    EXPECT_NE(error.find("the FMU wets a line below the mean water level z = 0, not below the wave's surface"),
+              std::string::npos) << error;
+    EXPECT_NE(error.find("refusing the start (set the waves off (waves.mode 0"), std::string::npos) << error;
+    // The same line in calm water starts, partly in air.
+    CableSimulation calm(surface_chain(50.0, Vec3(-40.0, 0.0, 3.0), 0.0));
+    ASSERT_TRUE(calm.initialize(0.0, in, error)) << error;
+    EXPECT_GT(calm.outputs().towTension, 200.0);
+}
+
+TEST(WaveZone, ALineGoingSteeplyDownFromTheSurfaceStartsInTheSameWaves) {
+    // From the surface to an anchor 28 m down and 10 m across, stretched 0.3 % (about 22 kN): some 5.3 m of
+    // it lie within the waves' reach, whose misplaced load (about 0.85 kN) is under a tenth of its tension.
+    UCInputs in{};
+    const Vec3 anchor(-10.0, 0.0, -28.0);
+    std::string error;
+    CableSimulation sim(surface_chain(anchor.norm() / 1.003, anchor, 10.0));
+    ASSERT_TRUE(sim.initialize(0.0, in, error)) << error;
+    EXPECT_GT(sim.outputs().towTension, 1.5e4);
+}

@@ -301,6 +301,7 @@ REASONS = [
      "a line stretched beyond what it survives at the deck's positions"),
     (r"the line stretches \S+ % at rest", "a line stretched beyond what it survives at its equilibrium"),
     (r"rests on the waterline's buoyancy ramp", "a float standing through the water surface"),
+    (r"within the waves' reach of the surface", "a line in the wave zone (wetted below z = 0, not below the waves)"),
     (r"no static equilibrium", "no static equilibrium (a line longer than the way down and across)"),
     (r"static equilibrium not found", "static equilibrium not found"),
     (r"pinned", "a pinned body"),
