@@ -303,8 +303,12 @@ private:
     // (a load moved on a line changes its end forces by at most about as much, less over a catenary's
     // slope), as kWaterlineRefused does for the ramp; wave_surface's chains through the crest, whose
     // misplaced load is several times their tension, are 19-27 % off MoorDyn in mean tension.
-    bool check_wave_zone(std::string& error) const;
+    // A line that only goes through the zone (at most kWaveZoneAlong times its height 2 eta in it: from an end at
+    // the surface, or across it steeper than 30 degrees) starts with a warning; the tow cable hanging from a
+    // vessel at the surface has its few metres there, the misplaced loads by its tow point.
+    bool check_wave_zone(std::string& error);
     static constexpr double kWaveZoneRefused = 0.1;
+    static constexpr double kWaveZoneAlong = 2.0;
     // Appends a message to the step's events (one a line, append_event).
     void add_event(const std::string& text);
     // Before the static solver: false where the line's whole weight in water over a section's EA

@@ -585,7 +585,7 @@ void wave_sums(const SeaState& sea, double sums[4]) {
 
 }  // namespace
 
-bool CableSimulation::check_wave_zone(std::string& error) const {
+bool CableSimulation::check_wave_zone(std::string& error) {
     // The line's length within the waves' reach of the surface (|z| < eta, 64 points an element, midpoint
     // rule), each metre weighted by the buoyancy and the normal drag of the fastest surface water, the loads
     // the waterline z = 0 puts on the wrong side of the moving surface (docs/waves.md, "The waterline").
@@ -615,14 +615,24 @@ bool CableSimulation::check_wave_zone(std::string& error) const {
     double largest = std::max(state_.outputs.towTension, state_.outputs.endTension);
     for (double t : state_.outputs.tension) largest = std::max(largest, t);
     if (!(load > kWaveZoneRefused * largest)) return true;
+    // A line that goes through the zone (from a tow point or fairlead at the surface, or across it at more
+    // than 30 degrees) has the misplaced loads over a few metres by its end; one that runs along it, over
+    // more than twice the zone's height 2 eta, has them along much of its length: that one is refused.
+    const bool along = length > kWaveZoneAlong * 2.0 * reach;
     char text[800];
     std::snprintf(text, sizeof text,
-                  "%.4g m of the line lie within the waves' reach of the surface (|z| < %.4g m; the water there "
+                  "%s%.4g m of the line lie within the waves' reach of the surface (|z| < %.4g m; the water there "
                   "up to %.4g m/s): the FMU wets a line below the mean water "
                   "level z = 0, not below the wave's surface, which would misplace up to %.4g N of buoyancy and wave "
-                  "drag there, %.1f %% of its largest tension %.6g N; refusing the start (set the waves off "
+                  "drag there, %.1f %% of its largest tension %.6g N; %s (set the waves off "
                   "(waves.mode 0, a deck's WaveKin 0) or keep the line below z = -%.4g m)",
-                  length, reach, speed, load, 100.0 * load / largest, largest, reach);
+                  along ? "" : "warning: ", length, reach, speed, load, 100.0 * load / largest, largest,
+                  along ? "refusing the start of a line that runs along the surface" : "near the surface its loads are approximate",
+                  reach);
+    if (!along) {
+        add_event(text);
+        return true;
+    }
     error = text;
     return false;
 }

@@ -286,7 +286,8 @@ TEST(WaveZone, AChainHangingThroughTheWavesIsRefusedNamingTheConvention) {
     EXPECT_NE(error.find("m of the line lie within the waves' reach of the surface (|z| < 5 m;"), std::string::npos) << error;
     EXPECT_NE(error.find("the FMU wets a line below the mean water level z = 0, not below the wave's surface"),
               std::string::npos) << error;
-    EXPECT_NE(error.find("refusing the start (set the waves off (waves.mode 0"), std::string::npos) << error;
+    EXPECT_NE(error.find("refusing the start of a line that runs along the surface (set the waves off (waves.mode 0"),
+              std::string::npos) << error;
     // The same line in calm water starts, partly in air.
     CableSimulation calm(surface_chain(50.0, Vec3(-40.0, 0.0, 3.0), 0.0));
     ASSERT_TRUE(calm.initialize(0.0, in, error)) << error;
@@ -302,4 +303,23 @@ TEST(WaveZone, ALineGoingSteeplyDownFromTheSurfaceStartsInTheSameWaves) {
     CableSimulation sim(surface_chain(anchor.norm() / 1.003, anchor, 10.0));
     ASSERT_TRUE(sim.initialize(0.0, in, error)) << error;
     EXPECT_GT(sim.outputs().towTension, 1.5e4);
+}
+
+TEST(WaveZone, ALineHangingFromTheSurfaceThroughTheWavesStartsWithAWarning) {
+    // A slack chain from the surface to an anchor 28 m down and 5 m across: about 5 m of it lie within the
+    // waves' reach (less than twice the zone's height, 20 m: it goes through the zone, not along it), whose
+    // misplaced load (some 800 N) is several times its tension (about 300 N): a start, with a warning.
+    UCInputs in{};
+    const Vec3 anchor(-5.0, 0.0, -28.0);
+    std::string error;
+    UCParams p = surface_chain(1.05 * anchor.norm(), anchor, 10.0);
+    p.nElements = 50;  // (25 leave the slack chain's anchor force 0.25 % off its tension)
+    CableSimulation sim(p);
+    ASSERT_TRUE(sim.initialize(0.0, in, error)) << error;
+    std::string events;
+    for (std::string e = sim.take_event(); !e.empty(); e = sim.take_event()) events += e + "\n";
+    EXPECT_NE(events.find("warning: "), std::string::npos) << events;
+    EXPECT_NE(events.find("m of the line lie within the waves' reach of the surface (|z| < 5 m;"), std::string::npos)
+        << events;
+    EXPECT_NE(events.find("near the surface its loads are approximate"), std::string::npos) << events;
 }
