@@ -63,6 +63,14 @@ void still_water(CurrentField& current) {
     current.pushed = nullptr;
 }
 
+// The midpoint rule along an element: the height z of its centreline at kHeightPoints points, each standing
+// for l / kHeightPoints of it (the waterline's and the wave zone's checks of the static shape).
+constexpr int kHeightPoints = 64;
+template <class F>
+void for_each_height(const double* X, double l, F f) {
+    for (int k = 0; k < kHeightPoints; ++k) f(interpolate(hermite_shape((k + 0.5) / kHeightPoints, l).N, X).z());
+}
+
 }  // namespace
 
 // From the sections and attachments; the profile's top end is the higher of the two ends.
@@ -531,7 +539,6 @@ bool CableSimulation::check_static_strain(std::string& error) {
 bool CableSimulation::check_waterline(std::string& error) const {
     // The ramp's buoyancy over that of the submerged length, rho A g int (phi(z) - [z <= 0]) ds, summed
     // per element by the midpoint rule on the elements that reach the ramp (0 < z < d): 64 points an element.
-    constexpr int kPoints = 64;
     double surplus = 0.0, thickest = 0.0;
     int worstElement = -1;
     for (int e = 0; e < model_.n_elements(); ++e) {
@@ -540,11 +547,10 @@ bool CableSimulation::check_waterline(std::string& error) const {
         const double l = model_.element_length(e);
         if (std::max(X[2], X[8]) <= 0.0 || std::min(X[2], X[8]) >= fluid.diameter + 0.5 * l) continue;
         double ramp = 0.0;
-        for (int k = 0; k < kPoints; ++k) {
-            const double z = interpolate(hermite_shape((k + 0.5) / kPoints, l).N, X).z();
+        for_each_height(X, l, [&](double z) {
             if (z > 0.0) ramp += std::max(0.0, 1.0 - z / fluid.diameter);
-        }
-        const double added = fluid.rho * fluid.area * fluid.gravity * ramp * l / kPoints;
+        });
+        const double added = fluid.rho * fluid.area * fluid.gravity * ramp * l / kHeightPoints;
         surplus += added;
         if (added > 0.0 && fluid.diameter > thickest) {
             thickest = fluid.diameter;
@@ -598,7 +604,6 @@ bool CableSimulation::check_wave_zone(std::string& error) {
     wave_sums(sea, sums);
     const double reach = std::min(sums[0], 4.0 * std::sqrt(0.5 * sums[1]));
     const double speed = std::min(sums[2], 4.0 * std::sqrt(0.5 * sums[3]));
-    constexpr int kPoints = 64;
     double length = 0.0, load = 0.0;
     for (int e = 0; e < model_.n_elements(); ++e) {
         const FluidProps& fluid = model_.element_section(e).fluid;
@@ -606,9 +611,8 @@ bool CableSimulation::check_wave_zone(std::string& error) {
         const double l = model_.element_length(e);
         if (std::min(X[2], X[8]) >= reach + 0.5 * l || std::max(X[2], X[8]) <= -reach - 0.5 * l) continue;
         int inside = 0;
-        for (int k = 0; k < kPoints; ++k)
-            if (std::abs(interpolate(hermite_shape((k + 0.5) / kPoints, l).N, X).z()) < reach) ++inside;
-        const double zone = inside * l / kPoints;
+        for_each_height(X, l, [&](double z) { inside += std::abs(z) < reach; });
+        const double zone = inside * l / kHeightPoints;
         length += zone;
         load += zone * (fluid.rho * fluid.area * fluid.gravity + 0.5 * fluid.rho * fluid.Cdn * fluid.diameter * speed * speed);
     }
